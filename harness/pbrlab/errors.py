@@ -1,0 +1,22 @@
+"""The one exception type for user mistakes and missing system pieces.
+
+Anything raised as a ``PbrlabError`` is a message for a person: the CLI prints it
+without a traceback and exits non-zero. Everything else is a bug in pbrlab and keeps
+its traceback.
+"""
+
+
+class PbrlabError(Exception):
+    """A problem the user can fix: bad input, a missing file or package, a shader error."""
+
+
+class GLUnavailableError(PbrlabError):
+    """No OpenGL implementation could be loaded."""
+
+
+class ShaderCompileError(PbrlabError):
+    """GLSL failed to compile or link; the message names the original file and line."""
+
+
+class SceneError(PbrlabError):
+    """A scene file is malformed; the message names the offending field."""

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Installs what pbrlab needs on a Debian/Ubuntu machine, then exits 0.
+#   1. System packages (Mesa EGL + OSMesa + llvmpipe, glslang, spirv-cross, python3-venv):
+#      installed with apt-get when run as root, otherwise the exact command is printed and
+#      the script stops with exit 1.
+#   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
+#      pbrlab itself in editable mode. Skipped when .venv is up to date with the
+#      requirements (a stamp records their hash).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Debian package -> a file that proves it is installed (works without dpkg too).
+declare -A need=(
+  [libegl1]=/usr/lib/x86_64-linux-gnu/libEGL.so.1
+  [libegl-mesa0]=/usr/lib/x86_64-linux-gnu/libEGL_mesa.so.0
+  [libgl1-mesa-dri]=/usr/lib/x86_64-linux-gnu/dri/swrast_dri.so
+  [libosmesa6]=/usr/lib/x86_64-linux-gnu/libOSMesa.so.8
+  [glslang-tools]=/usr/bin/glslangValidator
+  [spirv-cross]=/usr/bin/spirv-cross
+)
+missing=()
+for pkg in "${!need[@]}"; do
+  if command -v dpkg-query >/dev/null 2>&1; then
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+  else
+    [ -e "${need[$pkg]}" ] || missing+=("$pkg")
+  fi
+done
+python3 -c 'import venv, ensurepip' 2>/dev/null || missing+=(python3-venv)
+
+if [ ${#missing[@]} -gt 0 ]; then
+  IFS=$'\n' missing=($(sort <<<"${missing[*]}")); unset IFS
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "setup: installing system packages: ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "setup: pbrlab needs these system packages, which are not installed:" >&2
+    echo "    sudo apt-get install -y ${missing[*]}" >&2
+    echo "Run that line (or run this script as root), then run the command again." >&2
+    exit 1
+  fi
+fi
+
+stamp=.venv/.pbrlab-installed
+want=$(cat requirements.txt pyproject.toml | sha256sum | cut -c1-16)
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] && [ -x .venv/bin/python ]; then
+  exit 0
+fi
+echo "setup: creating the virtualenv .venv"
+python3 -m venv .venv
+.venv/bin/python -m pip install -q --upgrade pip
+.venv/bin/python -m pip install -q -r requirements.txt
+# pyrender 0.1.45 pins PyOpenGL==3.1.0 (broken EGL/OSMesa here); its other dependencies
+# are in requirements.txt with PyOpenGL 3.1.10, so it is installed without its pin.
+.venv/bin/python -m pip install -q --no-deps pyrender==0.1.45
+.venv/bin/python -m pip install -q --no-deps -e .
+echo "$want" > "$stamp"
+echo "setup: .venv is ready"
