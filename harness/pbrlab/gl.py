@@ -7,6 +7,9 @@
 * ``osmesa``: libOSMesa with a core-profile 3.3 context, adopted by moderngl through a
   function loader (``moderngl.init_context(loader=...)``).
 
+Library locations: glcontext's ``GLCONTEXT_LINUX_LIBEGL`` / ``GLCONTEXT_LINUX_LIBGL`` pick
+the EGL and GL libraries, ``$PBRLAB_OSMESA_LIBRARY`` picks libOSMesa.
+
 The default backend comes from ``$PBRLAB_GL_BACKEND``; when that is unset, EGL is tried
 first and OSMesa second, and when neither loads a single paragraph names the packages.
 
@@ -149,8 +152,12 @@ class _OSMesaLoader:
         return None
 
 
+OSMESA_LIBRARY_ENV = "PBRLAB_OSMESA_LIBRARY"  # a libOSMesa path, to use another Mesa build
+
+
 def _create_osmesa() -> moderngl.Context:
-    path = ctypes.util.find_library("OSMesa") or "libOSMesa.so.8"
+    path = (os.environ.get(OSMESA_LIBRARY_ENV)
+            or ctypes.util.find_library("OSMesa") or "libOSMesa.so.8")
     try:
         lib = ctypes.CDLL(path)
     except OSError as exc:

@@ -55,7 +55,7 @@ class Source:
                     continue
                 kind = m.group(4) or "error"
                 out.append(f"{self.files[file_index]}:{line_number}:{m.group(3)}: {kind}: {m.group(5)}")
-            elif line.strip():
+            elif line.strip() and not set(line.strip()) <= {"="} and line.strip() != "GLSL Compiler failed":
                 out.append(line.rstrip())
         return "\n".join(out)
 
@@ -151,5 +151,8 @@ def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> mo
         return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
     except moderngl.Error as exc:
         log = str(exc)
-        stage = fragment if "fragment_shader" in log or "GL_FRAGMENT_SHADER" in log else vertex
-        raise ShaderCompileError("shader compilation failed:\n" + stage.map_messages(log)) from None
+        stage, stage_name = ((fragment, "fragment") if "fragment_shader" in log
+                             else (vertex, "vertex"))
+        messages = "\n".join(line for line in stage.map_messages(log).splitlines()
+                             if line.strip() not in ("fragment_shader", "vertex_shader"))
+        raise ShaderCompileError(f"{stage_name} shader failed to compile:\n{messages}") from None

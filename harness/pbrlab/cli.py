@@ -1,0 +1,47 @@
+"""The `pbrlab` command. Each subcommand lives in pbrlab/commands/<name>.py and exposes
+``register(subparsers, common)``, where ``common`` is the parent parser carrying the
+options every command takes (``--backend``).
+
+User mistakes arrive as PbrlabError and are printed as one message, exit status 2,
+without a traceback. A command's own "no" (e.g. images over tolerance) is exit 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from .errors import PbrlabError
+from .gl import BACKENDS
+
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument(
+        "--backend", choices=BACKENDS, default=None,
+        help="OpenGL backend (default: $PBRLAB_GL_BACKEND, else EGL then OSMesa)")
+    parser = argparse.ArgumentParser(
+        prog="pbrlab", description="Render, evaluate and verify the pbrlab shading library.")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name in COMMANDS:
+        importlib.import_module(f"pbrlab.commands.{name}").register(sub, common)
+    return parser
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.run(args) or 0)
+    except PbrlabError as exc:
+        print(f"pbrlab {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,36 @@
+"""`pbrlab amalgamate ENTRY -o single.glsl`: inline every include into one file."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .. import shaders
+from ..errors import PbrlabError
+
+
+def run(args) -> int:
+    entry = Path(args.entry)
+    if not entry.is_file():
+        candidate = shaders.resolve_include(args.entry, shaders.include_path(args.include_dir))
+        if candidate is None:
+            raise PbrlabError(f"{args.entry}: no such file (also searched the include path)")
+        entry = candidate
+    text = shaders.amalgamate(entry, include_dirs=args.include_dir)
+    if args.output == "-":
+        print(text, end="")
+        return 0
+    from ..images import atomic_output  # the one atomic-write mechanism
+    with atomic_output(args.output) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+    print(f"wrote {args.output} ({len(text.splitlines())} lines)")
+    return 0
+
+
+def register(sub, common):
+    p = sub.add_parser("amalgamate", parents=[common], help="write one self-contained GLSL file",
+                       description=__doc__.splitlines()[0])
+    p.add_argument("entry", help="a GLSL file, or an include name such as pbr/pbr.glsl")
+    p.add_argument("-o", "--output", default="-", help="output file (default: stdout)")
+    p.add_argument("-I", "--include-dir", action="append", default=[],
+                   help="another include directory, searched before glsl/")
+    p.set_defaults(run=run)

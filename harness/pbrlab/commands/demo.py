@@ -1,0 +1,47 @@
+"""`pbrlab demo [--out DIR]`: render the default material charts, check them against
+the goldens, and say where the images are."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def run(args) -> int:
+    from .. import gl, goldens, images
+    from ..charts import CHARTS
+    from ..render import render_scene
+    from ..scene import parse_scene
+    from .render import check_finite
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    ctx = gl.shared_context(args.backend)
+    info = gl.context_info(ctx)
+    print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']})")
+    failures = 0
+    for name, build in CHARTS.items():
+        scene = parse_scene(build(), origin=f"chart {name}")
+        rendering = render_scene(scene, ctx)
+        check_finite(rendering.linear, name)
+        png, exr = out / f"{name}.png", out / f"{name}.exr"
+        images.write_png(png, rendering.srgb8)
+        images.write_exr(exr, rendering.linear, metadata=rendering.info)
+        try:
+            result = goldens.check_golden(name, rendering.linear, rendering.srgb8, info=info,
+                                          update=False, root=args.goldens,
+                                          output_dir=out / "golden-diffs")
+            verdict = f"matches goldens/{name} (max abs {result.max_abs:.2g})"
+        except goldens.GoldenFailure as failure:
+            failures += 1
+            verdict = f"DIFFERS from its golden: {str(failure).splitlines()[0]}"
+        print(f"  {png}  {exr}  {verdict}")
+    print(f"{len(CHARTS)} charts in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
+    return 1 if failures else 0
+
+
+def register(sub, common):
+    p = sub.add_parser("demo", parents=[common], help="render the default material charts",
+                       description=__doc__.splitlines()[0])
+    p.add_argument("--out", default="out", help="output folder (default: out)")
+    p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
+    p.set_defaults(run=run)

@@ -1,0 +1,90 @@
+"""`pbrlab eval 'EXPR' --var NAME=start:stop:count ...`: a GLSL expression as a table.
+
+Several --var options form a grid (every combination), one row per sample. Values may
+also be listed: --var x=0,0.5,1. Vector inputs take --vec3 NAME=r,g,b (a constant).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from ..errors import PbrlabError
+
+MAX_ROWS = 10000
+
+
+def _parse_var(text: str):
+    name, sep, spec = text.partition("=")
+    if not sep or not name:
+        raise PbrlabError(f"--var {text!r}: expected NAME=start:stop:count or NAME=v1,v2,...")
+    try:
+        if ":" in spec:
+            start, stop, count = spec.split(":")
+            values = np.linspace(float(start), float(stop), int(count))
+        else:
+            values = np.array([float(v) for v in spec.split(",")])
+    except ValueError:
+        raise PbrlabError(f"--var {text!r}: expected NAME=start:stop:count or NAME=v1,v2,...") from None
+    if values.size == 0:
+        raise PbrlabError(f"--var {text!r}: no values")
+    return name.strip(), values
+
+
+def _parse_vec(text: str, n: int):
+    name, sep, spec = text.partition("=")
+    try:
+        values = [float(v) for v in spec.split(",")]
+    except ValueError:
+        values = []
+    if not sep or len(values) != n:
+        raise PbrlabError(f"--vec{n} {text!r}: expected NAME=" + ",".join("x" * n))
+    return name.strip(), np.array(values, np.float32)
+
+
+def _format(value: float) -> str:
+    return f"{value:.9g}" if math.isfinite(value) else str(value)
+
+
+def run(args) -> int:
+    from .. import evaluator
+
+    grid = [_parse_var(v) for v in args.var]
+    rows = math.prod(len(values) for _, values in grid)
+    if rows > MAX_ROWS:
+        raise PbrlabError(f"the grid has {rows} rows; a table is limited to {MAX_ROWS}")
+    names = [name for name, _ in grid]
+    combos = np.array(list(itertools.product(*[values for _, values in grid])), np.float64)
+    inputs = {name: combos[:, i].astype(np.float32) for i, name in enumerate(names)}
+    for n, specs in ((2, args.vec2), (3, args.vec3), (4, args.vec4)):
+        for spec in specs:
+            name, value = _parse_vec(spec, n)
+            inputs[name] = getattr(evaluator, f"vec{n}")(value)
+    includes = args.include or None
+    result = evaluator.evaluate(args.expression, includes=includes, backend=args.backend, **inputs)
+    result = result.reshape(len(combos), -1) if names else result.reshape(1, -1)
+    header = names + [args.expression if result.shape[1] == 1 else f"{args.expression}[{i}]"
+                      for i in range(result.shape[1])]
+    table = [[_format(v) for v in row] + [_format(float(r)) for r in res]
+             for row, res in zip(combos if names else [[]], result)]
+    widths = [max(len(h), *(len(r[i]) for r in table)) for i, h in enumerate(header)]
+    print("  ".join(h.rjust(w) for h, w in zip(header, widths)))
+    for r in table:
+        print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
+    return 0
+
+
+def register(sub, common):
+    p = sub.add_parser("eval", parents=[common], help="evaluate a GLSL expression over a grid",
+                       description=__doc__.splitlines()[0])
+    p.add_argument("expression", help="a GLSL expression, e.g. 'pbr_D_GGX(NdotH, alpha)'")
+    p.add_argument("--include", action="append", default=[],
+                   help="an include such as pbr/brdf/d_ggx.glsl (default: the umbrella pbr/pbr.glsl)")
+    p.add_argument("--var", action="append", default=[], metavar="NAME=SPEC",
+                   help="a float input: start:stop:count or v1,v2,...")
+    for n in (2, 3, 4):
+        p.add_argument(f"--vec{n}", action="append", default=[], metavar="NAME=" + ",".join("x" * n),
+                       help=f"a constant vec{n} input")
+    p.set_defaults(run=run)

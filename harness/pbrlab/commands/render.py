@@ -1,0 +1,60 @@
+"""`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH]`: render a scene file.
+
+Writes atomically: a failed render leaves no partial file and never replaces a good one.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from ..errors import PbrlabError
+
+
+def parse_size(text: str | None):
+    if text is None:
+        return None
+    m = re.fullmatch(r"(\d+)x(\d+)", text.strip())
+    if not m or not (1 <= int(m.group(1)) <= 16384 and 1 <= int(m.group(2)) <= 16384):
+        raise PbrlabError(f"--size {text!r}: expected WIDTHxHEIGHT, each 1..16384 (e.g. 640x480)")
+    return int(m.group(1)), int(m.group(2))
+
+
+def check_finite(linear: np.ndarray, what: str):
+    bad = int((~np.isfinite(linear)).any(axis=-1).sum())
+    if bad:
+        raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf; nothing was written")
+
+
+def run(args) -> int:
+    from .. import gl, images
+    from ..render import render_scene
+    from ..scene import load_scene
+
+    if not args.output and not args.hdr:
+        raise PbrlabError("nothing to write: give -o OUT.png and/or --hdr OUT.exr")
+    for path, suffix in ((args.output, ".png"), (args.hdr, ".exr")):
+        if path and not path.lower().endswith(suffix):
+            raise PbrlabError(f"{path}: expected a {suffix} file name")
+    size = parse_size(args.size)
+    scene = load_scene(args.scene)
+    rendering = render_scene(scene, gl.shared_context(args.backend), size=size)
+    check_finite(rendering.linear, args.scene)
+    if args.hdr:
+        images.write_exr(args.hdr, rendering.linear, metadata=rendering.info)
+        print(f"wrote {args.hdr}")
+    if args.output:
+        images.write_png(args.output, rendering.srgb8)
+        print(f"wrote {args.output}")
+    return 0
+
+
+def register(sub, common):
+    p = sub.add_parser("render", parents=[common], help="render a JSON scene",
+                       description=__doc__.splitlines()[0])
+    p.add_argument("scene", help="a JSON scene file (see README: Scene files)")
+    p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
+    p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
+    p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")
+    p.set_defaults(run=run)

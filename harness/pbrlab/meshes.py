@@ -1,0 +1,131 @@
+"""Meshes for the rasteriser: files read with trimesh, generated primitives, and the
+per-vertex attributes the mesh program needs (positions, normals, UVs, tangents)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import SceneError
+
+_PRIMITIVE_DEFAULTS = {
+    "box": {"size": 1.0},
+    "icosphere": {"radius": 1.0, "subdivisions": 3},
+    "uv_sphere": {"radius": 1.0},
+    "cylinder": {"radius": 0.5, "height": 1.0},
+    "plane": {"size": 1.0},
+    "torus": {"major_radius": 1.0, "minor_radius": 0.25},
+}
+
+
+def _primitive(spec: dict):
+    import trimesh
+
+    kind = spec["primitive"]
+    params = dict(_PRIMITIVE_DEFAULTS[kind])
+    for key, value in spec.items():
+        if key == "primitive":
+            continue
+        if key not in params:
+            raise SceneError(f"mesh primitive {kind}: unknown parameter {key}; "
+                             f"use {', '.join(params) or 'none'}")
+        params[key] = value
+    if kind == "box":
+        return trimesh.creation.box(extents=[params["size"]] * 3)
+    if kind == "icosphere":
+        return trimesh.creation.icosphere(subdivisions=int(params["subdivisions"]), radius=params["radius"])
+    if kind == "uv_sphere":
+        return trimesh.creation.uv_sphere(radius=params["radius"])
+    if kind == "cylinder":
+        return trimesh.creation.cylinder(radius=params["radius"], height=params["height"])
+    if kind == "torus":
+        return trimesh.creation.torus(major_radius=params["major_radius"],
+                                      minor_radius=params["minor_radius"])
+    s = params["size"] / 2  # plane: a square in XZ facing +Y, UVs over [0, 1]^2
+    vertices = np.array([[-s, 0, -s], [s, 0, -s], [s, 0, s], [-s, 0, s]], float)
+    mesh = trimesh.Trimesh(vertices, [[0, 2, 1], [0, 3, 2]], process=False)
+    mesh.visual = trimesh.visual.TextureVisuals(uv=np.array([[0, 1], [1, 1], [1, 0], [0, 0]], float))
+    return mesh
+
+
+def load_mesh(obj):
+    """The trimesh.Trimesh of a scene object (file or primitive)."""
+    import trimesh
+
+    if obj.primitive is not None:
+        return _primitive(obj.primitive)
+    try:
+        mesh = trimesh.load(obj.mesh_path, force="mesh", process=False)
+    except Exception as exc:  # trimesh raises many types for unreadable files
+        raise SceneError(f"{obj.mesh_path}: trimesh cannot read this mesh ({exc})") from None
+    if len(mesh.faces) == 0:
+        raise SceneError(f"{obj.mesh_path}: the mesh has no triangles")
+    return mesh
+
+
+def bounding_radius(obj) -> float:
+    mesh = load_mesh(obj)
+    scale = np.abs(np.linalg.eigvals(obj.transform[:3, :3])).max()
+    return float(np.linalg.norm(mesh.vertices, axis=1).max() * scale)
+
+
+def tangents(positions, normals, uvs, faces) -> np.ndarray:
+    """Per-vertex tangents (xyz) with bitangent sign (w) from UVs.
+
+    Lengyel 2001, "Computing Tangent Space Basis Vectors for an Arbitrary Mesh": sum the
+    per-triangle UV gradients at each vertex, Gram-Schmidt against the normal, and store
+    the handedness of (n, t, b). Vertices with degenerate UVs get any unit vector
+    orthogonal to n.
+    """
+    p0, p1, p2 = (positions[faces[:, i]] for i in range(3))
+    w0, w1, w2 = (uvs[faces[:, i]] for i in range(3))
+    e1, e2 = p1 - p0, p2 - p0
+    d1, d2 = w1 - w0, w2 - w0
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    r = np.where(np.abs(det) > 1e-20, 1.0 / np.where(det == 0, 1, det), 0.0)[:, None]
+    sdir = (e1 * d2[:, 1:2] - e2 * d1[:, 1:2]) * r
+    tdir = (e2 * d1[:, 0:1] - e1 * d2[:, 0:1]) * r
+    tan1 = np.zeros_like(positions)
+    tan2 = np.zeros_like(positions)
+    for i in range(3):
+        np.add.at(tan1, faces[:, i], sdir)
+        np.add.at(tan2, faces[:, i], tdir)
+    t = tan1 - normals * np.sum(normals * tan1, axis=1, keepdims=True)
+    length = np.linalg.norm(t, axis=1, keepdims=True)
+    fallback = np.cross(normals, np.where(np.abs(normals[:, :1]) < 0.9, [[1.0, 0, 0]], [[0, 1.0, 0]]))
+    t = np.where(length > 1e-12, t / np.maximum(length, 1e-30), fallback / np.linalg.norm(fallback, axis=1, keepdims=True))
+    w = np.where(np.sum(np.cross(normals, t) * tan2, axis=1) < 0.0, -1.0, 1.0)
+    return np.concatenate([t, w[:, None]], axis=1)
+
+
+def vertex_arrays(mesh):
+    """Flat float32 arrays (positions, normals, uvs, tangents) and int32 indices."""
+    positions = np.asarray(mesh.vertices, np.float64)
+    faces = np.asarray(mesh.faces, np.int64)
+    normals = np.asarray(mesh.vertex_normals, np.float64)
+    uv = getattr(mesh.visual, "uv", None)
+    if uv is None or len(uv) != len(positions):
+        uv = np.zeros((len(positions), 2))
+    uv = np.asarray(uv, np.float64)
+    tan = tangents(positions, normals, uv, faces)
+    return (positions.astype(np.float32), normals.astype(np.float32), uv.astype(np.float32),
+            tan.astype(np.float32), faces.astype(np.int32).reshape(-1))
+
+
+def vertex_array(ctx, program, obj):
+    """A moderngl VertexArray for ``obj`` on ``program``, plus the buffers to release."""
+    positions, normals, uv, tan, indices = vertex_arrays(load_mesh(obj))
+    data = np.concatenate([positions, normals, uv, tan], axis=1).astype(np.float32)
+    vbo = ctx.buffer(data.tobytes())
+    ibo = ctx.buffer(indices.tobytes())
+    layout = []
+    names = [("in_position", "3f"), ("in_normal", "3f"), ("in_uv", "2f"), ("in_tangent", "4f")]
+    fmt = []
+    for name, f in names:
+        if program.get(name, None) is not None:
+            fmt.append(f)
+            layout.append(name)
+        else:
+            fmt.append(f[0] + "x4")  # skip the attribute's bytes
+    fmt_string = " ".join(fmt)
+    vao = ctx.vertex_array(program, [(vbo, fmt_string, *layout)], index_buffer=ibo)
+    return vao, [vbo, ibo]

@@ -1,0 +1,364 @@
+"""The JSON scene format, parsed into plain dataclasses with every field validated.
+
+A bad field raises SceneError naming its path, e.g.
+``scenes/x.json: materials.gold.smoothness: expected a number in [0, 1], got 1.5``.
+Unknown fields are errors too (a typo must not be silently ignored). Relative file
+paths (meshes, textures, environments) are resolved against the scene file's folder.
+
+Format (README.md, "Scene files", has the annotated version)::
+
+    camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
+    lights      [{type: directional, direction (the way light travels), color, intensity}
+                 {type: point, position, color, intensity, range}
+                 {type: spot, position, direction, color, intensity, range,
+                  inner_cone_deg, outer_cone_deg}]
+    environment null | {color: [r,g,b]} | {path: "sky.hdr", intensity: 1}
+    materials   {name: {workflow: metallic|specular, albedo, metallic, specular,
+                        smoothness, emission, occlusion, alpha, textures: {albedo, ...}}}
+    objects     [{sphere: {center, radius}, material}
+                 {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
+                  material, transform: {translate, rotate_deg, scale}}]
+    render      {quality: high, tonemap: none|reinhard|aces_fitted|hable|khronos_neutral,
+                 exposure: 0 (EV stops, multiplier 2^exposure)}
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .errors import SceneError
+
+TONEMAPPERS = ("none", "reinhard", "aces_fitted", "hable", "khronos_neutral")
+QUALITIES = ("high",)  # tiers arrive with the surface API (issue 4)
+PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
+TEXTURE_SLOTS = {  # slot -> colour (sRGB-decoded on sampling) or linear data
+    "albedo": "srgb",
+    "metallic_smoothness": "linear",  # Unity's packing: R = metallic, A = smoothness
+}
+
+
+@dataclass
+class Camera:
+    position: np.ndarray
+    target: np.ndarray
+    up: np.ndarray
+    fov_y_deg: float
+    size: tuple[int, int]
+
+
+@dataclass
+class Light:
+    type: str
+    color: np.ndarray
+    intensity: float
+    direction: np.ndarray | None = None  # the way light travels (directional, spot)
+    position: np.ndarray | None = None
+    range: float = math.inf
+    inner_cone_deg: float = 0.0
+    outer_cone_deg: float = 45.0
+
+
+@dataclass
+class Environment:
+    color: np.ndarray | None = None  # constant radiance
+    path: Path | None = None  # equirectangular image
+    intensity: float = 1.0
+
+
+@dataclass
+class Material:
+    name: str
+    workflow: str = "metallic"
+    albedo: np.ndarray = field(default_factory=lambda: np.array([0.8, 0.8, 0.8]))
+    metallic: float = 0.0
+    specular: np.ndarray = field(default_factory=lambda: np.array([0.04, 0.04, 0.04]))
+    smoothness: float = 0.5
+    emission: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    occlusion: float = 1.0
+    alpha: float = 1.0
+    textures: dict[str, Path] = field(default_factory=dict)
+
+
+@dataclass
+class SceneObject:
+    material: str
+    sphere: tuple[np.ndarray, float] | None = None  # (center, radius)
+    mesh_path: Path | None = None
+    primitive: dict | None = None
+    transform: np.ndarray = field(default_factory=lambda: np.eye(4))
+
+
+@dataclass
+class RenderSettings:
+    quality: str = "high"
+    tonemap: str = "none"
+    exposure: float = 0.0
+
+
+@dataclass
+class Scene:
+    camera: Camera
+    lights: list[Light]
+    environment: Environment | None
+    materials: dict[str, Material]
+    objects: list[SceneObject]
+    render: RenderSettings
+    source: str = "<scene>"
+
+    @property
+    def spheres(self):
+        return [o for o in self.objects if o.sphere is not None]
+
+    @property
+    def meshes(self):
+        return [o for o in self.objects if o.sphere is None]
+
+
+class _Reader:
+    """Typed access to one JSON object, with error messages that carry the field path."""
+
+    def __init__(self, data, path: str, origin: str):
+        self.path, self.origin = path, origin
+        if not isinstance(data, dict):
+            self.fail(f"expected an object, got {type(data).__name__}")
+        self.data = dict(data)
+        self.used: set[str] = set()
+
+    def fail(self, message: str, key: str | None = None):
+        where = f"{self.path}.{key}" if key else self.path
+        raise SceneError(f"{self.origin}: {where.lstrip('.') or '(top level)'}: {message}")
+
+    def has(self, key):
+        return key in self.data
+
+    def raw(self, key, default=None):
+        self.used.add(key)
+        return self.data.get(key, default)
+
+    def child(self, key, default=None):
+        value = self.raw(key, default)
+        return _Reader(value, f"{self.path}.{key}", self.origin)
+
+    def number(self, key, default=None, lo=-math.inf, hi=math.inf, lo_open=False):
+        value = self.raw(key, default)
+        if value is None:
+            self.fail("is required", key)
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            self.fail(f"expected a number, got {json.dumps(value)}", key)
+        value = float(value)
+        if math.isnan(value):
+            self.fail("is NaN", key)
+        if not (lo < value if lo_open else lo <= value) or value > hi:
+            bound = f"({lo}, {hi}]" if lo_open else f"[{lo}, {hi}]"
+            self.fail(f"expected a number in {bound}, got {value:g}", key)
+        return value
+
+    def vector(self, key, n=3, default=None, lo=-math.inf, hi=math.inf, nonzero=False):
+        value = self.raw(key, default)
+        if value is None:
+            self.fail("is required", key)
+        if (not isinstance(value, (list, tuple)) or len(value) != n
+                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)):
+            self.fail(f"expected a list of {n} numbers, got {json.dumps(value)}", key)
+        arr = np.array(value, dtype=np.float64)
+        if not np.all(np.isfinite(arr)):
+            self.fail(f"has a non-finite component: {json.dumps(value)}", key)
+        if np.any(arr < lo) or np.any(arr > hi):
+            self.fail(f"components must lie in [{lo:g}, {hi:g}], got {json.dumps(value)}", key)
+        if nonzero and not np.any(arr):
+            self.fail("must not be the zero vector", key)
+        return arr
+
+    def choice(self, key, options, default=None):
+        value = self.raw(key, default)
+        if value not in options:
+            self.fail(f"expected one of {', '.join(options)}, got {json.dumps(value)}", key)
+        return value
+
+    def file(self, key, base: Path, value=None):
+        value = self.raw(key) if value is None else value
+        if not isinstance(value, str) or not value:
+            self.fail(f"expected a file path, got {json.dumps(value)}", key)
+        path = (base / value).resolve()
+        if not path.is_file():
+            self.fail(f"file not found: {path}", key)
+        return path
+
+    def finish(self):
+        unknown = sorted(set(self.data) - self.used)
+        if unknown:
+            self.fail(f"unknown field{'s' if len(unknown) > 1 else ''}: {', '.join(unknown)}")
+
+
+def _camera(r: _Reader) -> Camera:
+    position = r.vector("position")
+    target = r.vector("target")
+    if np.allclose(position, target):
+        r.fail("position and target coincide")
+    up = r.vector("up", default=[0, 1, 0], nonzero=True)
+    forward = target - position
+    if np.linalg.norm(np.cross(forward, up)) < 1e-9 * np.linalg.norm(forward) * np.linalg.norm(up):
+        r.fail("up is parallel to the view direction", "up")
+    fov = r.number("fov_y_deg", default=45.0, lo=0.0, hi=179.0, lo_open=True)
+    size = r.raw("size", [512, 512])
+    if (not isinstance(size, list) or len(size) != 2
+            or not all(isinstance(s, int) and not isinstance(s, bool) and 1 <= s <= 16384 for s in size)):
+        r.fail(f"expected [width, height], integers in 1..16384, got {json.dumps(size)}", "size")
+    r.finish()
+    return Camera(position, target, up, fov, (size[0], size[1]))
+
+
+def _light(r: _Reader) -> Light:
+    kind = r.choice("type", ("directional", "point", "spot"))
+    light = Light(type=kind, color=r.vector("color", default=[1, 1, 1], lo=0.0),
+                  intensity=r.number("intensity", default=1.0, lo=0.0))
+    if kind in ("directional", "spot"):
+        light.direction = r.vector("direction", nonzero=True)
+        light.direction = light.direction / np.linalg.norm(light.direction)
+    if kind in ("point", "spot"):
+        light.position = r.vector("position")
+        light.range = r.number("range", default=math.inf, lo=0.0, lo_open=True)
+    if kind == "spot":
+        light.inner_cone_deg = r.number("inner_cone_deg", default=0.0, lo=0.0, hi=90.0)
+        light.outer_cone_deg = r.number("outer_cone_deg", default=45.0, lo=0.0, hi=90.0, lo_open=True)
+        if light.inner_cone_deg >= light.outer_cone_deg:
+            r.fail("inner_cone_deg must be smaller than outer_cone_deg", "inner_cone_deg")
+    r.finish()
+    return light
+
+
+def _environment(r: _Reader, base: Path) -> Environment:
+    env = Environment(intensity=r.number("intensity", default=1.0, lo=0.0))
+    if r.has("color") == r.has("path"):
+        r.fail("give exactly one of color (constant radiance) or path (equirectangular image)")
+    if r.has("color"):
+        env.color = r.vector("color", lo=0.0)
+    else:
+        env.path = r.file("path", base)
+    r.finish()
+    return env
+
+
+def _material(r: _Reader, name: str, base: Path) -> Material:
+    m = Material(name=name)
+    m.workflow = r.choice("workflow", ("metallic", "specular"), default="metallic")
+    m.albedo = r.vector("albedo", default=[0.8, 0.8, 0.8], lo=0.0, hi=1.0)
+    if m.workflow == "metallic":
+        m.metallic = r.number("metallic", default=0.0, lo=0.0, hi=1.0)
+        if r.has("specular"):
+            r.fail("specular belongs to the specular workflow; use metallic here", "specular")
+    else:
+        m.specular = r.vector("specular", default=[0.04, 0.04, 0.04], lo=0.0, hi=1.0)
+        if r.has("metallic"):
+            r.fail("metallic belongs to the metallic workflow; use specular here", "metallic")
+    m.smoothness = r.number("smoothness", default=0.5, lo=0.0, hi=1.0)
+    m.emission = r.vector("emission", default=[0, 0, 0], lo=0.0)
+    m.occlusion = r.number("occlusion", default=1.0, lo=0.0, hi=1.0)
+    m.alpha = r.number("alpha", default=1.0, lo=0.0, hi=1.0)
+    textures = r.child("textures", {})
+    for slot in list(textures.data):
+        if slot not in TEXTURE_SLOTS:
+            textures.fail(f"unknown texture slot; use one of {', '.join(TEXTURE_SLOTS)}", slot)
+        m.textures[slot] = textures.file(slot, base)
+    textures.finish()
+    r.finish()
+    return m
+
+
+def _transform(r: _Reader) -> np.ndarray:
+    translate = r.vector("translate", default=[0, 0, 0])
+    rx, ry, rz = np.radians(r.vector("rotate_deg", default=[0, 0, 0]))
+    scale = r.raw("scale", 1.0)
+    if isinstance(scale, (int, float)) and not isinstance(scale, bool):
+        scale = [scale] * 3
+    r.data["scale"] = scale
+    scale = r.vector("scale", lo=0.0)
+    if np.any(scale == 0):
+        r.fail("scale components must be positive", "scale")
+    r.finish()
+    cx, sx, cy, sy, cz, sz = np.cos(rx), np.sin(rx), np.cos(ry), np.sin(ry), np.cos(rz), np.sin(rz)
+    rot_x = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
+    rot_y = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
+    rot_z = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
+    m = np.eye(4)
+    m[:3, :3] = rot_z @ rot_y @ rot_x @ np.diag(scale)  # scale, then X, Y, Z rotations
+    m[:3, 3] = translate
+    return m
+
+
+def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
+    material = r.raw("material")
+    if material not in materials:
+        r.fail(f"unknown material {json.dumps(material)}; defined: {', '.join(materials) or 'none'}",
+               "material")
+    obj = SceneObject(material=material)
+    if r.has("sphere") == r.has("mesh"):
+        r.fail("give exactly one of sphere or mesh")
+    if r.has("sphere"):
+        s = r.child("sphere")
+        obj.sphere = (s.vector("center"), s.number("radius", lo=0.0, lo_open=True))
+        s.finish()
+        if r.has("transform"):
+            r.fail("spheres are placed by center and radius, not transform", "transform")
+    else:
+        mesh = r.raw("mesh")
+        if isinstance(mesh, str):
+            obj.mesh_path = r.file("mesh", base)
+        else:
+            p = r.child("mesh")
+            kind = p.choice("primitive", PRIMITIVES)
+            obj.primitive = {"primitive": kind}
+            for key in list(p.data):
+                if key != "primitive":
+                    obj.primitive[key] = p.number(key, lo=0.0, lo_open=True)
+            p.finish()
+        obj.transform = _transform(r.child("transform", {}))
+    r.finish()
+    return obj
+
+
+def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
+    """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
+    base = Path(base or ".")
+    top = _Reader(data, "", origin)
+    camera = _camera(top.child("camera"))
+    lights_raw = top.raw("lights", [])
+    if not isinstance(lights_raw, list):
+        top.fail("expected a list of lights", "lights")
+    lights = [_light(_Reader(l, f"lights[{i}]", origin)) for i, l in enumerate(lights_raw)]
+    env_raw = top.raw("environment")
+    environment = None if env_raw is None else _environment(top.child("environment"), base)
+    mats = top.child("materials", {})
+    materials = {name: _material(mats.child(name), name, base) for name in list(mats.data)}
+    mats.finish()
+    objects_raw = top.raw("objects", [])
+    if not isinstance(objects_raw, list) or not objects_raw:
+        top.fail("expected a non-empty list of objects", "objects")
+    objects = [_object(_Reader(o, f"objects[{i}]", origin), materials, base)
+               for i, o in enumerate(objects_raw)]
+    rs = top.child("render", {})
+    render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
+                            tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),
+                            exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0))
+    rs.finish()
+    top.finish()
+    return Scene(camera, lights, environment, materials, objects, render, origin)
+
+
+def load_scene(path) -> Scene:
+    """Read and validate a scene file."""
+    path = Path(path)
+    if not path.is_file():
+        raise SceneError(f"{path}: no such scene file")
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except json.JSONDecodeError as exc:
+        raise SceneError(f"{path}:{exc.lineno}:{exc.colno}: invalid JSON: {exc.msg}") from None
+    except UnicodeDecodeError:
+        raise SceneError(f"{path}: not a UTF-8 text file") from None
+    return parse_scene(data, str(path), path.parent)

@@ -1,0 +1,101 @@
+"""Render targets and readback: the lecture's "let the GPU handle it" path.
+
+* Display output: a GL_SRGB8_ALPHA8 colour attachment with GL_FRAMEBUFFER_SRGB enabled,
+  so shaders write linear values and the hardware encodes them (lecture: "Pixel write:
+  GL_EXT_framebuffer_sRGB").
+* Colour textures are uploaded as sRGB (hardware decode on sampling); data textures
+  (normals, roughness, masks) as linear: the lecture's "when to bypass sRGB sampling".
+* HDR: linear RGBA16F or RGBA32F targets, read back as float32.
+
+Every readback returns a top-row-first array (image order), flipping GL's bottom-up rows.
+"""
+
+from __future__ import annotations
+
+import moderngl
+import numpy as np
+
+from .errors import PbrlabError
+
+GL_SRGB8_ALPHA8 = 0x8C43  # OpenGL 3.3 core, table 8.13 (sized internal formats)
+GL_FRAMEBUFFER_SRGB = 0x8DB9  # OpenGL 3.3 core, section 4.1.8 (sRGB conversion)
+HDR_DTYPES = {"f16": "f2", "f32": "f4"}
+
+
+class Target:
+    """A framebuffer with one colour attachment (and optionally depth) of a given size."""
+
+    def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True):
+        self.ctx, self.size, self.kind = ctx, tuple(int(s) for s in size), kind
+        w, h = self.size
+        if w <= 0 or h <= 0 or w > 16384 or h > 16384:
+            raise PbrlabError(f"render size {w}x{h} is out of range (1..16384 per side)")
+        if kind == "srgb8":
+            self.color = ctx.texture(self.size, 4, dtype="f1", internal_format=GL_SRGB8_ALPHA8)
+        elif kind in HDR_DTYPES:
+            self.color = ctx.texture(self.size, 4, dtype=HDR_DTYPES[kind])
+        else:
+            raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, f16 or f32")
+        self.depth = ctx.depth_renderbuffer(self.size) if depth else None
+        self.fbo = ctx.framebuffer([self.color], self.depth)
+
+    def use(self):
+        """Bind for drawing; sRGB encoding is on exactly while an sRGB target is bound."""
+        self.fbo.use()
+        self.ctx.viewport = (0, 0) + self.size
+        if self.kind == "srgb8":
+            self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+        else:
+            self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
+
+    def read(self) -> np.ndarray:
+        """Top-row-first HxWx4: uint8 sRGB codes for srgb8, float32 linear otherwise."""
+        w, h = self.size
+        if self.kind == "srgb8":
+            data = self.fbo.read(components=4, dtype="f1")
+            img = np.frombuffer(data, np.uint8).reshape(h, w, 4)
+        else:
+            data = self.fbo.read(components=4, dtype="f4")
+            img = np.frombuffer(data, np.float32).reshape(h, w, 4)
+        return img[::-1].copy()
+
+    def release(self):
+        self.fbo.release()
+        self.color.release()
+        if self.depth is not None:
+            self.depth.release()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc_info):
+        self.release()
+
+
+def upload_texture(ctx: moderngl.Context, image: np.ndarray, *, srgb: bool) -> moderngl.Texture:
+    """Upload a top-row-first image: uint8 colour as sRGB (srgb=True) or linear data.
+
+    ``srgb=True`` is for colour (albedo, emission): sampling decodes to linear in
+    hardware. ``srgb=False`` is for data (normal maps, metallic/smoothness, masks) and
+    for float images, which are linear by definition.
+    """
+    image = np.ascontiguousarray(image[::-1])  # GL rows are bottom-up
+    if image.ndim == 2:
+        image = image[..., None]
+    h, w, c = image.shape
+    if image.dtype == np.uint8:
+        if srgb:
+            if c not in (3, 4):
+                raise PbrlabError("an sRGB colour texture needs 3 or 4 channels")
+            if c == 3:
+                image = np.concatenate([image, np.full((h, w, 1), 255, np.uint8)], axis=2)
+            tex = ctx.texture((w, h), 4, image.tobytes(), dtype="f1", internal_format=GL_SRGB8_ALPHA8)
+        else:
+            tex = ctx.texture((w, h), c, image.tobytes(), dtype="f1")
+    else:
+        if srgb:
+            raise PbrlabError("float images are linear; upload them with srgb=False")
+        tex = ctx.texture((w, h), c, image.astype(np.float32).tobytes(), dtype="f4")
+    tex.build_mipmaps()
+    tex.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+    return tex
