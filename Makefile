@@ -12,7 +12,7 @@ demo: setup
 	@$(PY) -m pbrlab.cli demo --out out
 
 test: setup
-	@$(PY) -m pytest -n auto -p no:cacheprovider
+	@$(PY) -m pytest -n auto -p no:cacheprovider $(PYTEST_ARGS)
 
 bench: setup
 	@$(PY) benchmarks/evaluator_throughput.py

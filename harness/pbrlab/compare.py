@@ -1,0 +1,277 @@
+"""Image comparison: one tolerance type, one diff, one heatmap.
+
+A ``Tolerance`` is a pair plus its reason (STYLE 12): a pixel *fails* when any channel's
+``|obtained - expected|`` exceeds ``max_abs``; the comparison *passes* when the fraction of
+failing pixels is at most ``max_fraction``. A pixel holding NaN or Inf (in either image)
+always fails, and any such pixel in ``obtained`` fails the whole comparison whatever the
+fraction allowed. Units follow the images:
+
+* float images (EXR): linear values, compared in float64 after reading the float32 data;
+* uint8 images (PNG): 8-bit sRGB code values (0..255), compared as integers.
+
+Comparing two images of different shapes is not an error: it is a failing ``DiffResult``
+whose ``problem`` says so. Comparing an 8-bit image with a float one *is* an error
+(``TypeError``): the numbers would mean different things.
+
+FLIP (Andersson et al. 2020, "FLIP: A Difference Evaluator for Alternating Images",
+HPG 2020) is reported for 8-bit sRGB images when the ``flip-evaluator`` package is
+installed and ``diff(..., flip=True)`` asks for it; it is informative only, never part of
+pass/fail.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+# Smallest step of the 8-bit sRGB encoding in linear units: code 0 -> 1 lies on the linear
+# segment of IEC 61966-2-1, 1/255/12.92 = 3.04e-4. Larger codes have larger steps.
+SRGB_SMALLEST_STEP_LINEAR = 1.0 / 255.0 / 12.92
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """How far an obtained image may stray from the expected one, and why.
+
+    max_abs: largest allowed per-channel deviation, in the images' units (linear for float
+        images, code values for uint8 images); a pixel over it *fails*.
+    max_fraction: fraction of pixels (0..1) allowed to fail.
+    reason: one line saying why the numbers are this size (measured drift, conditioning).
+    """
+
+    max_abs: float
+    max_fraction: float
+    reason: str
+
+    def __post_init__(self):
+        if not (np.isfinite(self.max_abs) and self.max_abs >= 0):
+            raise ValueError(f"Tolerance.max_abs must be finite and >= 0, got {self.max_abs}")
+        if not (0.0 <= self.max_fraction <= 1.0):
+            raise ValueError(f"Tolerance.max_fraction must be in [0, 1], got {self.max_fraction}")
+        if not self.reason.strip():
+            raise ValueError("Tolerance.reason must say why the tolerance is this size")
+
+    def describe(self, units: str = "") -> str:
+        units = f" {units}" if units else ""
+        return (f"max_abs {self.max_abs:g}{units}, max_fraction {self.max_fraction:g} "
+                f"({self.reason})")
+
+
+# Golden tolerance for linear EXR renders, in linear units. The tests pin llvmpipe's code
+# generation (pbrlab.gl.pin_llvmpipe_cpu_caps), so with the same Mesa the renders are
+# bit-identical on every x86-64 host and this bound only has to absorb a different Mesa
+# build reordering or contracting (FMA) a few float32 operations. 1e-5 is ~84 float32 ulps
+# at 1.0 and 30x below the smallest step an 8-bit sRGB display can show (3.04e-4 at
+# black), so any visible change still fails. No pixel may exceed it. It is absolute: for
+# HDR values above ~100 it is below one float32 ulp and acts as "bit-exact".
+GOLDEN_TOLERANCE = Tolerance(
+    max_abs=1e-5,
+    max_fraction=0.0,
+    reason="pinned llvmpipe CPU caps make renders bit-identical; 1e-5 linear absorbs "
+           "float32 reordering between Mesa builds and is 30x below one 8-bit sRGB step",
+)
+
+# Golden tolerance for the 8-bit sRGB PNG next to each EXR, in code values: a linear
+# difference inside GOLDEN_TOLERANCE can still cross a rounding boundary of the sRGB
+# encode (llvmpipe's hardware encode is not always round-to-nearest), moving one code.
+GOLDEN_SRGB_TOLERANCE = Tolerance(
+    max_abs=1.0,
+    max_fraction=0.0,
+    reason="8-bit sRGB code values: a sub-tolerance linear change may cross one rounding "
+           "boundary of the encode",
+)
+
+UNITS_LINEAR = "linear"
+UNITS_CODES = "8-bit code values"
+
+# Heatmap colours (see DiffResult.heatmap).
+_HEAT_NONFINITE = (255, 0, 255)
+_HEAT_DECADES = 4.0  # over-tolerance errors from 1x to 10^4 x the tolerance span the ramp
+
+
+@dataclass(frozen=True)
+class DiffResult:
+    """Metrics of one comparison. ``passed`` is the verdict; the rest explains it.
+
+    max_abs: largest per-channel |obtained - expected| over pixels finite in both images
+        (``units``); inf when the shapes differ.
+    rmse: root mean square of the per-channel differences over the same finite pixels.
+    fraction_over / pixels_over / pixel_count: pixels that fail (over ``tolerance.max_abs``
+        or non-finite in either image).
+    worst_pixel: (y, x) of the largest error, a non-finite pixel first; None if none.
+    nonfinite_obtained / nonfinite_expected: pixels with a NaN or Inf channel.
+    problem: "" or why the images could not be compared (shape mismatch).
+    flip_mean: mean FLIP for 8-bit sRGB images when requested and available, else None.
+    """
+
+    passed: bool
+    max_abs: float
+    rmse: float
+    fraction_over: float
+    pixels_over: int
+    pixel_count: int
+    worst_pixel: tuple[int, int] | None
+    nonfinite_obtained: int
+    nonfinite_expected: int
+    tolerance: Tolerance
+    units: str
+    shape_expected: tuple
+    shape_obtained: tuple
+    problem: str = ""
+    flip_mean: float | None = None
+    error: np.ndarray | None = field(default=None, repr=False, compare=False)
+
+    def summary(self) -> str:
+        """One line of metrics, for failure messages and the CLI."""
+        if self.problem:
+            return f"{self.problem} (cannot compare pixels)"
+        where = f" at (y={self.worst_pixel[0]}, x={self.worst_pixel[1]})" if self.worst_pixel else ""
+        text = (f"max abs {self.max_abs:.6g} {self.units}{where}, RMSE {self.rmse:.6g}, "
+                f"{self.pixels_over} of {self.pixel_count} pixels ({100 * self.fraction_over:.4g}%) "
+                f"over {self.tolerance.max_abs:g} (allowed {100 * self.tolerance.max_fraction:.4g}%)")
+        if self.nonfinite_obtained or self.nonfinite_expected:
+            text += (f", non-finite pixels: {self.nonfinite_obtained} obtained, "
+                     f"{self.nonfinite_expected} expected")
+        if self.flip_mean is not None:
+            text += f", FLIP mean {self.flip_mean:.6g}"
+        return text
+
+    def to_dict(self) -> dict:
+        """The metrics as JSON-ready values plus ``summary`` (no per-pixel data)."""
+        data = asdict(self)
+        data.pop("error")
+        data["summary"] = self.summary()
+        data["worst_pixel"] = list(self.worst_pixel) if self.worst_pixel else None
+        data["shape_expected"] = list(self.shape_expected)
+        data["shape_obtained"] = list(self.shape_obtained)
+        for key in ("max_abs", "rmse"):  # JSON has no inf/nan
+            if not np.isfinite(data[key]):
+                data[key] = str(data[key])
+        return data
+
+    def heatmap(self) -> np.ndarray:
+        """uint8 RGB picture of the per-pixel max abs error (H x W x 3).
+
+        black: identical; blue, brighter with the error: within tolerance; red through
+        yellow: over tolerance, log scale from 1x to 10^4 x ``tolerance.max_abs``;
+        magenta: NaN or Inf. When the shapes differ, a magenta image of the expected size.
+        """
+        if self.error is None:
+            height, width = self.shape_expected[:2]
+            return np.broadcast_to(np.array(_HEAT_NONFINITE, np.uint8), (height, width, 3)).copy()
+        err = self.error
+        tol = self.tolerance.max_abs
+        out = np.zeros(err.shape + (3,), np.uint8)
+        nonfinite = ~np.isfinite(err)
+        within = np.isfinite(err) & (err > 0) & (err <= tol)
+        over = np.isfinite(err) & (err > tol)
+        if tol > 0:
+            out[within, 2] = (96 + 159 * err[within] / tol).astype(np.uint8)
+            ratio = err[over] / tol
+        else:  # every non-zero error is over; scale from the smallest one present
+            ratio = err[over] / err[over].min() if over.any() else err[over]
+        t = np.clip(np.log10(ratio) / _HEAT_DECADES, 0.0, 1.0)
+        out[over, 0] = (160 + 95 * np.minimum(1.0, 2 * t)).astype(np.uint8)
+        out[over, 1] = (255 * t).astype(np.uint8)
+        out[nonfinite] = _HEAT_NONFINITE
+        return out
+
+
+def _as_hwc(image) -> np.ndarray:
+    image = np.asarray(image)
+    if image.ndim == 2:
+        image = image[:, :, np.newaxis]
+    if image.ndim != 3:
+        raise ValueError(f"images must be HxW or HxWxC arrays, got shape {image.shape}")
+    return image
+
+
+def _kind(image: np.ndarray) -> str:
+    if image.dtype == np.uint8:
+        return UNITS_CODES
+    if np.issubdtype(image.dtype, np.floating):
+        return UNITS_LINEAR
+    raise TypeError(f"images must be uint8 (sRGB code values) or float (linear), got {image.dtype}")
+
+
+def _nonfinite_pixels(image: np.ndarray) -> np.ndarray:
+    return ~np.isfinite(image).all(axis=2)
+
+
+def flip_available() -> bool:
+    try:
+        import flip_evaluator  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def flip_mean(expected: np.ndarray, obtained: np.ndarray) -> float | None:
+    """Mean LDR FLIP of two 8-bit sRGB images (RGB channels), or None without flip-evaluator."""
+    try:
+        import flip_evaluator
+    except ImportError:
+        return None
+    expected, obtained = _as_hwc(expected), _as_hwc(obtained)
+    if expected.dtype != np.uint8 or obtained.dtype != np.uint8 or expected.shape != obtained.shape:
+        raise ValueError("FLIP compares two 8-bit sRGB images of one shape")
+    if expected.shape[2] < 3:
+        expected = np.repeat(expected[:, :, :1], 3, axis=2)
+        obtained = np.repeat(obtained[:, :, :1], 3, axis=2)
+    reference = np.ascontiguousarray(expected[:, :, :3], dtype=np.float32) / 255.0
+    test = np.ascontiguousarray(obtained[:, :, :3], dtype=np.float32) / 255.0
+    _, mean, _ = flip_evaluator.evaluate(reference, test, "LDR", inputsRGB=True,
+                                         applyMagma=False, computeMeanError=True)
+    return float(mean)
+
+
+def diff(expected, obtained, tolerance: Tolerance, *, flip: bool = False) -> DiffResult:
+    """Compare ``obtained`` against ``expected`` (both HxW or HxWxC, top row first).
+
+    ``flip=True`` adds the mean FLIP for 8-bit images when flip-evaluator is installed.
+    """
+    expected, obtained = _as_hwc(expected), _as_hwc(obtained)
+    units = _kind(expected)
+    if _kind(obtained) != units:
+        raise TypeError(f"cannot compare {expected.dtype} (expected) with {obtained.dtype} "
+                        "(obtained): compare 8-bit with 8-bit, float with float")
+    nonfinite_obt = _nonfinite_pixels(obtained)
+    nonfinite_exp = _nonfinite_pixels(expected)
+    common = dict(tolerance=tolerance, units=units, shape_expected=tuple(expected.shape),
+                  shape_obtained=tuple(obtained.shape),
+                  nonfinite_obtained=int(nonfinite_obt.sum()),
+                  nonfinite_expected=int(nonfinite_exp.sum()))
+    if expected.shape != obtained.shape:
+        count = expected.shape[0] * expected.shape[1]
+        return DiffResult(
+            passed=False, max_abs=float("inf"), rmse=float("inf"), fraction_over=1.0,
+            pixels_over=count, pixel_count=count, worst_pixel=None,
+            problem=(f"shape mismatch: expected {_shape_text(expected.shape)}, "
+                     f"obtained {_shape_text(obtained.shape)}"),
+            **common)
+
+    with np.errstate(invalid="ignore", over="ignore"):
+        delta = np.abs(obtained.astype(np.float64) - expected.astype(np.float64))
+    finite = ~(nonfinite_obt | nonfinite_exp)
+    pixel_error = np.where(finite, delta.max(axis=2), np.inf)  # non-finite pixels: inf
+    finite_delta = delta[finite]
+    max_abs = float(finite_delta.max()) if finite_delta.size else 0.0
+    rmse = float(np.sqrt(np.mean(finite_delta ** 2))) if finite_delta.size else 0.0
+    failing = ~finite | (pixel_error > tolerance.max_abs)
+    pixels_over = int(failing.sum())
+    pixel_count = int(pixel_error.size)
+    fraction_over = pixels_over / pixel_count if pixel_count else 0.0
+    worst_pixel = None
+    if pixel_count and pixel_error.max() > 0:
+        y, x = np.unravel_index(int(np.argmax(pixel_error)), pixel_error.shape)
+        worst_pixel = (int(y), int(x))
+    passed = bool(common["nonfinite_obtained"] == 0 and fraction_over <= tolerance.max_fraction)
+    flip_value = flip_mean(expected, obtained) if (flip and units == UNITS_CODES) else None
+    return DiffResult(passed=passed, max_abs=max_abs, rmse=rmse, fraction_over=fraction_over,
+                      pixels_over=pixels_over, pixel_count=pixel_count, worst_pixel=worst_pixel,
+                      flip_mean=flip_value, error=pixel_error, **common)
+
+
+def _shape_text(shape) -> str:
+    return f"{shape[1]}x{shape[0]} with {shape[2]} channel{'s' if shape[2] != 1 else ''}"

@@ -1,0 +1,242 @@
+"""pytest plugin for projects that test shaders with pbrlab (entry point ``pytest11: pbrlab``).
+
+Options:
+  --update-goldens       write goldens from this run's renders: the only way goldens change
+  --pbrlab-output DIR    failure artefacts and index.html (default: test-output/ in the rootdir)
+  --pbrlab-goldens DIR   the golden root (default: goldens/ in the rootdir)
+
+Fixtures:
+  gl_context   the process's shared moderngl context (session scope; under pytest-xdist
+               each worker process has its own)
+  golden       ``golden.check(name, linear, srgb8, tolerance)``: ``pbrlab.goldens.check_golden``
+               with this run's renderer info, update flag and folders
+
+The run header prints GL_RENDERER, GL_VERSION, Mesa, moderngl and OpenImageIO versions and
+the pinned llvmpipe CPU caps. llvmpipe is pinned in ``pytest_configure``, before any test
+can create a context.
+
+At the end of the session the controller (also under ``-n auto``) writes
+``test-output/index.html`` with expected / obtained / diff side by side for every golden
+failure; each failing check (in whichever process) leaves a small JSON record in
+``test-output/.pbrlab-records/`` for it. No failure, no page.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import os
+import secrets
+import shutil
+from importlib import resources
+from pathlib import Path
+from string import Template
+
+import pytest
+
+from . import gl, goldens, images
+from .compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, DiffResult, Tolerance
+from .errors import PbrlabError
+
+RECORDS_DIR = ".pbrlab-records"
+INDEX_NAME = "index.html"
+_SETTINGS = pytest.StashKey["_Settings"]()
+_SUMMARY = pytest.StashKey[dict]()
+
+
+class _Settings:
+    def __init__(self, config: pytest.Config):
+        self.update = bool(config.getoption("update_goldens"))
+        self.output_dir = _folder(config, "pbrlab_output", goldens.DEFAULT_OUTPUT_DIR)
+        self.root = _folder(config, "pbrlab_goldens", goldens.DEFAULT_ROOT)
+        self.records_dir = self.output_dir / RECORDS_DIR
+
+
+def _folder(config: pytest.Config, option: str, default: str) -> Path:
+    """A folder option: relative to where pytest was started; the default is in the rootdir."""
+    value = config.getoption(option)
+    if value is None:
+        return config.rootpath / default
+    return Path(config.invocation_params.dir, value).absolute()
+
+
+def _is_xdist_worker(config: pytest.Config) -> bool:
+    return hasattr(config, "workerinput")
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    group = parser.getgroup("pbrlab", "pbrlab goldens")
+    group.addoption("--update-goldens", action="store_true", default=False,
+                    help="write goldens from this run's renders instead of comparing "
+                         "(the only way goldens change); review them before committing")
+    group.addoption("--pbrlab-output", metavar="DIR", default=None,
+                    help="where golden failures leave expected/obtained/diff images and "
+                         "index.html (default: test-output in the rootdir)")
+    group.addoption("--pbrlab-goldens", metavar="DIR", default=None,
+                    help="golden root (default: goldens in the rootdir)")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    gl.pin_llvmpipe_cpu_caps()  # before anything can create a GL context in this process
+    settings = _Settings(config)
+    config.stash[_SETTINGS] = settings
+    if not _is_xdist_worker(config):  # workers start after this, so they never lose a record
+        shutil.rmtree(settings.records_dir, ignore_errors=True)
+        try:
+            (settings.output_dir / INDEX_NAME).unlink()
+        except FileNotFoundError:
+            pass
+
+
+def pytest_report_header(config: pytest.Config) -> list[str]:
+    try:
+        info = gl.context_info(gl.shared_context())
+    except PbrlabError as exc:  # no GL library: say so instead of failing collection
+        return [f"pbrlab: {exc}"]
+    return [
+        f"pbrlab: GL_RENDERER {info['GL_RENDERER']}; GL_VERSION {info['GL_VERSION']}",
+        f"pbrlab: Mesa {info['mesa']}, moderngl {info['moderngl']}, "
+        f"OpenImageIO {info['openimageio']}, backend {info['backend']}, "
+        f"llvmpipe CPU caps {info['llvmpipe_cpu_caps']}",
+    ]
+
+
+@pytest.fixture(scope="session")
+def gl_context():
+    """The process's shared moderngl context (``pbrlab.gl.shared_context()``)."""
+    try:
+        return gl.shared_context()
+    except PbrlabError as exc:
+        pytest.fail(str(exc), pytrace=False)
+
+
+class GoldenFixture:
+    """``check(name, linear, srgb8, tolerance)`` against the golden store of this run."""
+
+    def __init__(self, settings: _Settings, info: dict, nodeid: str):
+        self.settings = settings
+        self.info = info
+        self.nodeid = nodeid
+        self.update = settings.update
+        self.root = settings.root
+        self.output_dir = settings.output_dir
+
+    def check(self, name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERANCE, *,
+              srgb_tolerance: Tolerance = GOLDEN_SRGB_TOLERANCE) -> DiffResult:
+        __tracebackhide__ = True
+        try:
+            result = goldens.check_golden(
+                name, linear, srgb8, tolerance, self.info, update=self.update, root=self.root,
+                output_dir=self.output_dir, srgb_tolerance=srgb_tolerance, nodeid=self.nodeid)
+        except goldens.GoldenFailure as failure:
+            self._record(failure.kind, name, message=str(failure), linear=failure.linear,
+                         srgb=failure.srgb, artefacts=failure.artefacts)
+            raise
+        if self.update:
+            self._record("updated", name)
+        return result
+
+    def _record(self, kind, name, *, message="", linear=None, srgb=None, artefacts=None):
+        record = {
+            "kind": kind, "name": name, "nodeid": self.nodeid, "message": message,
+            "linear": linear.to_dict() if linear else None,
+            "srgb": srgb.to_dict() if srgb else None,
+            "artefacts": {label: os.path.relpath(path, self.output_dir)
+                          for label, path in (artefacts or {}).items()},
+            "golden": str(goldens.golden_paths(self.root, name).exr),
+        }
+        records = self.settings.records_dir
+        records.mkdir(parents=True, exist_ok=True)
+        with images.atomic_output(records / f"{secrets.token_hex(8)}.json") as tmp:
+            tmp.write_text(json.dumps(record, indent=1, default=str), encoding="utf-8")
+
+
+@pytest.fixture(scope="session")
+def _pbrlab_renderer_info(gl_context) -> dict:
+    return gl.context_info(gl_context)
+
+
+@pytest.fixture
+def golden(request, _pbrlab_renderer_info) -> GoldenFixture:
+    """Compare renders against goldens (writes them under ``--update-goldens``)."""
+    return GoldenFixture(request.config.stash[_SETTINGS], _pbrlab_renderer_info,
+                         request.node.nodeid)
+
+
+def _load_records(records_dir: Path) -> list[dict]:
+    if not records_dir.is_dir():
+        return []
+    records = [json.loads(p.read_text(encoding="utf-8"))
+               for p in records_dir.glob("*.json") if not p.name.startswith(".")]
+    return sorted(records, key=lambda r: (r["nodeid"], r["name"]))
+
+
+def pytest_sessionfinish(session: pytest.Session, exitstatus) -> None:
+    config = session.config
+    if _is_xdist_worker(config) or _SETTINGS not in config.stash:
+        return
+    settings = config.stash[_SETTINGS]
+    records = _load_records(settings.records_dir)
+    failures = [r for r in records if r["kind"] != "updated"]
+    updated = sorted({r["name"] for r in records if r["kind"] == "updated"})
+    index = None
+    if failures:
+        index = settings.output_dir / INDEX_NAME
+        write_index(index, failures)
+    config.stash[_SUMMARY] = {"failures": len(failures), "index": index, "updated": updated,
+                              "root": settings.root}
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config: pytest.Config) -> None:
+    summary = config.stash.get(_SUMMARY, None)
+    if not summary:
+        return
+    if summary["updated"]:
+        terminalreporter.write_line(
+            f"pbrlab: wrote {len(summary['updated'])} golden(s) under {summary['root']}; "
+            f"look at them (git status, git diff --stat) before committing")
+    if summary["failures"]:
+        terminalreporter.write_line(
+            f"pbrlab: {summary['failures']} golden failure(s): expected / obtained / diff "
+            f"side by side in {summary['index']}", red=True)
+
+
+def _cell_image(record: dict, label: str) -> str:
+    path = record["artefacts"].get(label)
+    if not path:
+        return '<td class="none">no golden yet</td>' if label == "expected" else "<td>-</td>"
+    src = html.escape(Path(path).as_posix(), quote=True)
+    return f'<td><a href="{src}"><img src="{src}" alt="{label}"></a></td>'
+
+
+def _metrics(record: dict) -> str:
+    lines = []
+    for key, title in (("linear", "linear EXR"), ("srgb", "sRGB PNG")):
+        result = record.get(key)
+        if result:
+            verdict = "ok" if result["passed"] else "FAIL"
+            lines.append(f"<li><b>{title}: {verdict}</b> {html.escape(result['summary'])}<br>"
+                         f"<small>tolerance: {html.escape(result['tolerance']['reason'])}</small></li>")
+    return "<ul>" + "".join(lines) + "</ul>" if lines else ""
+
+
+def write_index(path: Path, failures: list[dict]) -> None:
+    """The HTML summary of golden failures: one row each, images side by side."""
+    rows = []
+    for record in failures:
+        rows.append(
+            "<tr>"
+            f'<td class="what"><h2>{html.escape(record["name"])}</h2>'
+            f'<p class="kind">{html.escape(record["kind"])}</p>'
+            f'<p><code>{html.escape(record["nodeid"])}</code></p>'
+            f'{_metrics(record)}<details><summary>message</summary>'
+            f'<pre>{html.escape(record["message"])}</pre></details></td>'
+            f'{_cell_image(record, "expected")}{_cell_image(record, "obtained")}'
+            f'{_cell_image(record, "diff")}'
+            "</tr>")
+    template = Template(resources.files("pbrlab").joinpath("templates", "report.html")
+                        .read_text(encoding="utf-8"))
+    page = template.substitute(count=len(failures), rows="\n".join(rows))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with images.atomic_output(path) as tmp:
+        tmp.write_text(page, encoding="utf-8")
