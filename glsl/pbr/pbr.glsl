@@ -1,1 +1,62 @@
-// placeholder
+// pbr/pbr.glsl: the umbrella include: every public file of the pbrlab shading library.
+//
+// Provides: everything below.
+// Include:  "pbr/pbr.glsl" (path relative to glsl/), or the individual files you need
+// Config macros read: PBR_COLOR_TRANSFER (pbr/color/transfer.glsl); PBR_QUALITY,
+//           PBR_SPECULAR_D, PBR_SPECULAR_V, PBR_SPECULAR_F, PBR_DIFFUSE
+//           (pbr/shading/dispatch.glsl); PBR_TONEMAP (pbr/tonemap/tonemap.glsl).
+//           Define them before this include.
+// Conventions: pbr/common/conventions.glsl. Naming rule and function table: glsl/README.md.
+// tests/library/test_glsl_layout.py checks that every .glsl file under pbr/ is listed here.
+#ifndef PBR_PBR_GLSL
+#define PBR_PBR_GLSL
+
+// conventions and maths
+#include "pbr/common/constants.glsl"
+#include "pbr/common/math.glsl"
+#include "pbr/common/conventions.glsl"
+
+// colour
+#include "pbr/color/srgb.glsl"
+#include "pbr/color/gamma.glsl"
+#include "pbr/color/luminance.glsl"
+#include "pbr/color/transfer.glsl"
+
+// material remapping
+#include "pbr/material/remap.glsl"
+#include "pbr/material/workflow.glsl"
+#include "pbr/material/f0_tables.glsl"
+#include "pbr/material/ior.glsl"
+
+// BRDF terms
+#include "pbr/brdf/fd_lambert.glsl"
+#include "pbr/brdf/fd_burley.glsl"
+#include "pbr/brdf/blinn_phong.glsl"
+#include "pbr/brdf/d_blinn_phong.glsl"
+#include "pbr/brdf/d_ggx.glsl"
+#include "pbr/brdf/d_beckmann.glsl"
+#include "pbr/brdf/g_cook_torrance.glsl"
+#include "pbr/brdf/g_smith_ggx.glsl"
+#include "pbr/brdf/g_schlick_ggx.glsl"
+#include "pbr/brdf/v_smith_ggx_correlated.glsl"
+#include "pbr/brdf/v_implicit.glsl"
+#include "pbr/brdf/v_kelemen.glsl"
+#include "pbr/brdf/f_schlick.glsl"
+#include "pbr/brdf/f_dielectric.glsl"
+
+// shading models
+#include "pbr/shading/dispatch.glsl"
+#include "pbr/shading/standard.glsl"
+
+// light integration
+#include "pbr/lighting/punctual.glsl"
+
+// HDR
+#include "pbr/tonemap/exposure.glsl"
+#include "pbr/tonemap/reinhard.glsl"
+#include "pbr/tonemap/hable.glsl"
+#include "pbr/tonemap/aces.glsl"
+#include "pbr/tonemap/khronos_neutral.glsl"
+#include "pbr/tonemap/tonemap.glsl"
+
+#endif // PBR_PBR_GLSL

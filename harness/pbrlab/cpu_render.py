@@ -13,6 +13,7 @@ from .camera import camera_frame, camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
 from .reference import material as ref_material
+from .reference import remap as ref_remap
 from .reference import shading as ref_shading
 
 MIN_LIGHT_DISTANCE2 = 1e-8  # same guard as templates/scene_shading.glsl
@@ -57,7 +58,7 @@ def _surface(material):
     else:
         diffuse = ref_material.diffuse_from_specular(material.albedo, material.specular)
         f0 = material.specular
-    rough = ref_material.perceptual_roughness_from_smoothness(material.smoothness)
+    rough = ref_remap.perceptual_roughness_from_smoothness(material.smoothness)
     return np.asarray(diffuse, float), np.asarray(f0, float), float(rough)
 
 

@@ -121,6 +121,7 @@ class Evaluator:
         return np.frombuffer(data, dtype=np.float32).reshape(size[1], size[0], 4)
 
     def __call__(self, expression: str, includes=None, defines=None, **inputs) -> np.ndarray:
+        gl.make_current(self.ctx)
         if includes is None:
             includes = (shaders.UMBRELLA_INCLUDE,)
         includes = tuple(includes)

@@ -80,7 +80,7 @@ def create_context(backend: str | None = None) -> moderngl.Context:
             failures.append(f"{name}: {exc}")
             continue
         ctx.extra = dict(ctx.extra or {}, backend=name)
-        return ctx
+        return make_current(ctx)
     raise GLUnavailableError(_INSTALL_HINT.format(details="; ".join(failures)))
 
 
@@ -176,12 +176,23 @@ _CREATE = {"egl": _create_egl, "osmesa": _create_osmesa}
 _shared: dict[str | None, moderngl.Context] = {}
 
 
+def make_current(ctx: moderngl.Context) -> moderngl.Context:
+    """Make ``ctx`` the thread's current GL context and return it.
+
+    moderngl issues GL calls on whatever context is current; with EGL and OSMesa
+    contexts in one process, each entry point (evaluator, renderer) calls this first.
+    """
+    ctx.mglo.__enter__()
+    return ctx
+
+
 def shared_context(backend: str | None = None) -> moderngl.Context:
-    """One context per backend per process, created on first use (for the evaluator, the CLI)."""
+    """One context per backend per process, created on first use (for the evaluator,
+    the renderer, the CLI), made current on every call."""
     key = backend or default_backend()
     if key not in _shared:
         _shared[key] = create_context(key)
-    return _shared[key]
+    return make_current(_shared[key])
 
 
 def context_info(ctx: moderngl.Context) -> dict:

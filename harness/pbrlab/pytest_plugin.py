@@ -101,9 +101,10 @@ def pytest_report_header(config: pytest.Config) -> list[str]:
     ]
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture
 def gl_context():
-    """The process's shared moderngl context (``pbrlab.gl.shared_context()``)."""
+    """The process's shared moderngl context (``pbrlab.gl.shared_context()``), made
+    current for this test (another test may have made an OSMesa context current)."""
     try:
         return gl.shared_context()
     except PbrlabError as exc:
@@ -152,8 +153,11 @@ class GoldenFixture:
 
 
 @pytest.fixture(scope="session")
-def _pbrlab_renderer_info(gl_context) -> dict:
-    return gl.context_info(gl_context)
+def _pbrlab_renderer_info() -> dict:
+    try:
+        return gl.context_info(gl.shared_context())
+    except PbrlabError as exc:
+        pytest.fail(str(exc), pytrace=False)
 
 
 @pytest.fixture

@@ -131,7 +131,7 @@ def _upload_material(program, material):
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  hdr_format: str = "f32") -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared)."""
-    ctx = ctx or gl.shared_context()
+    ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
         scene.camera.size = tuple(size)
     frame = camera_frame(scene.camera, scene_radius(scene))

@@ -1,9 +1,12 @@
 """GPU renders (GLSL library, float32) against the independent float64 CPU renderer
 (numpy ray-sphere + pbrlab.reference), on analytic scenes."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
+from pbrlab.images import read_image
 from pbrlab.charts import CHARTS
 from pbrlab.cpu_render import render_scene_cpu
 from pbrlab.render import render_scene
@@ -11,34 +14,56 @@ from pbrlab.scene import parse_scene
 
 from scenes import light_zoo, one_sphere
 
-# GPU vs float64 CPU, linear radiance. Away from silhouettes the two differ by float32
-# rounding of the same formulas: measured max relative 2e-5 (see test comments), so a
-# pixel passes within 1e-4 * (1 + |expected|)... expressed as an absolute bound on these
-# scenes (radiance <= ~3): 3e-4. Silhouette pixels may hit in one renderer and miss in
-# the other (the ray grazes the sphere within float32 rounding), so a small fraction of
-# pixels may exceed it: measured at most 0.15 % of pixels on the charts.
-CPU_ABS = 3e-4
-CPU_SILHOUETTE_FRACTION = 0.004
+# GPU (float32) vs float64 CPU, linear radiance, per channel: |gpu - cpu| <= ATOL +
+# rtol * |cpu|. ATOL = 1e-5 is 1/30 of the smallest 8-bit sRGB step (3.04e-4), so it is
+# invisible; it covers silhouette pixels (radiance ~1e-4 at grazing angles) where float32
+# conditioning gives a few % relative. Measured on Mesa 22.3 llvmpipe: both renderers
+# hit exactly the same pixels (same ray algebra); 99.99 % of pixels agree within 1.1e-3
+# relative; the worst, 2.4 %, sit in the highlights of smoothness-1 spheres, where
+# float32 1 - NdotH^2 cancels against alpha^2 = 4e-6 inside D_GGX (issue 5's
+# cancellation-free form removes this). So: rtol 2e-3 for all but 0.05 % of pixels,
+# rtol 3e-2 for every pixel, and no coverage difference.
+ATOL = 1e-5
+RTOL_TYPICAL = 2e-3
+RTOL_WORST = 3e-2
+FRACTION_OVER_TYPICAL = 5e-4
 
 
-def _compare(scene_dict, gl_context):
-    gpu = render_scene(parse_scene(scene_dict), gl_context).linear.astype(np.float64)
+def _compare(scene_dict, gl_context, gpu=None):
+    if gpu is None:
+        gpu = render_scene(parse_scene(scene_dict), gl_context).linear
+    gpu = gpu.astype(np.float64)
     cpu = render_scene_cpu(parse_scene(scene_dict))
     assert np.isfinite(gpu).all()
-    over = (np.abs(gpu - cpu) > CPU_ABS).any(axis=-1)
-    return gpu, cpu, over
+    covered_gpu = gpu[..., :3].sum(-1) > 0
+    covered_cpu = cpu[..., :3].sum(-1) > 0
+    assert np.array_equal(covered_gpu, covered_cpu), (covered_gpu != covered_cpu).sum()
+    err = np.abs(gpu - cpu)[..., :3]
+    ref = np.abs(cpu)[..., :3]
+    assert np.all(err <= ATOL + RTOL_WORST * ref), ((err - ATOL) / ref).max()
+    over_typical = (err > ATOL + RTOL_TYPICAL * ref).any(axis=-1)
+    assert over_typical.mean() <= FRACTION_OVER_TYPICAL, over_typical.mean()
+    return gpu, cpu
 
 
 @pytest.mark.parametrize("chart", sorted(CHARTS))
 def test_chart_matches_float64_cpu_render(chart, gl_context):
-    gpu, cpu, over = _compare(CHARTS[chart](), gl_context)
-    assert over.mean() <= CPU_SILHOUETTE_FRACTION, (over.mean(), np.abs(gpu - cpu).max())
+    _compare(CHARTS[chart](), gl_context)
+
+
+@pytest.mark.parametrize("chart", sorted(CHARTS))
+def test_chart_golden_file_matches_float64_cpu_render(chart, gl_context):
+    # The stored golden itself, not only today's render, must agree with the
+    # independent reference: a golden is never just "whatever the shader printed".
+    path = Path(__file__).resolve().parents[2] / "goldens" / f"{chart}.exr"
+    if not path.exists():
+        pytest.fail(f"{path} is missing; create it with make test PYTEST_ARGS=--update-goldens")
+    _compare(CHARTS[chart](), gl_context, gpu=read_image(path))
 
 
 def test_point_and_spot_lights_match_float64_cpu_render(gl_context):
-    gpu, cpu, over = _compare(light_zoo(), gl_context)
+    gpu, cpu = _compare(light_zoo(), gl_context)
     assert cpu[..., :3].max() > 0.1  # the lights do reach the spheres
-    assert over.mean() <= CPU_SILHOUETTE_FRACTION, (over.mean(), np.abs(gpu - cpu).max())
 
 
 def test_white_lambert_under_unit_light_along_normal_is_exactly_one(gl_context):
@@ -61,8 +86,6 @@ def test_constant_environment_lights_white_lambert_to_its_radiance(gl_context):
     scene = one_sphere({"workflow": "specular", "albedo": [1, 1, 1], "specular": [0, 0, 0]},
                        [], environment={"color": [0.25, 0.5, 0.75]}, size=(32, 32))
     linear = render_scene(parse_scene(scene), gl_context).linear
-    hit = linear[..., 3] > 0
-    background = ~hit | (linear[..., :3].sum(-1) == 0)
-    shaded = linear[~background, :3]
+    shaded = linear[linear[..., :3].sum(-1) > 0, :3]
     assert shaded.shape[0] > 300
     np.testing.assert_allclose(shaded, np.broadcast_to([0.25, 0.5, 0.75], shaded.shape), rtol=1e-5)

@@ -1,0 +1,41 @@
+// pbr/brdf/blinn_phong.glsl: the lecture's Blinn-Phong lighting models (not microfacet).
+//
+// Provides: float pbr_BRDF_BlinnPhongClassic(float NdotH, float NdotL, float specPower)
+//           float pbr_BRDF_BlinnPhongModified(float NdotH, float specPower)
+//           float pbr_BRDF_BlinnPhongNormalized(float NdotH, float specPower)
+// Include:  "pbr/brdf/blinn_phong.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// Each returns the BRDF divided by the specular colour M_spec (1/sr); multiply by M_spec.
+// Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures"; the forms
+// and names are the lecture's (slides "Classic Blinn-Phong", "Modified Blinn-Phong",
+// "Normalized modified Blinn-Phong", after McAuley 2011 and Driscoll 2009):
+//   classic     (1/π) · NdotH^s / NdotL  for NdotL > 0 (0 otherwise). The 1/NdotL cancels
+//               the lighting cosine so that C = C_light · M_spec · NdotH^s, the fixed-
+//               function result; it makes the BRDF NOT reciprocal (tested).
+//   modified    (1/π) · NdotH^s: reciprocal (tested), but not normalised: its
+//               directional albedo falls like ~8/s as s grows, so sharper highlights
+//               get dimmer (the lecture's "Without Normalization Factor").
+//   normalized  (s + 8) / (8π) · NdotH^s: Akenine-Möller, Haines, Hoffman 2008,
+//               "Real-Time Rendering" 3rd ed., eq. 7.49; the (s+8)/8 factor is an
+//               approximation of the exact normalisation; its directional albedo is
+//               measured by the white-furnace test (tests/library/test_brdf_properties.py).
+// NdotH in [0, 1], specPower > 0 (pow(0, 0) is undefined in GLSL).
+#ifndef PBR_BRDF_BLINN_PHONG_GLSL
+#define PBR_BRDF_BLINN_PHONG_GLSL
+
+#include "pbr/common/constants.glsl"
+
+float pbr_BRDF_BlinnPhongClassic(float NdotH, float NdotL, float specPower) {
+    return NdotL > 0.0 ? PBR_INV_PI * pow(NdotH, specPower) / NdotL : 0.0;
+}
+
+float pbr_BRDF_BlinnPhongModified(float NdotH, float specPower) {
+    return PBR_INV_PI * pow(NdotH, specPower);
+}
+
+float pbr_BRDF_BlinnPhongNormalized(float NdotH, float specPower) {
+    return (specPower + 8.0) / (8.0 * PBR_PI) * pow(NdotH, specPower);
+}
+
+#endif // PBR_BRDF_BLINN_PHONG_GLSL

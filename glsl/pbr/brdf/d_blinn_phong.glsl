@@ -1,0 +1,22 @@
+// pbr/brdf/d_blinn_phong.glsl: the Blinn-Phong microfacet distribution.
+//
+// Provides: float pbr_D_BlinnPhong(float NdotH, float specPower)
+// Include:  "pbr/brdf/d_blinn_phong.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// D_BP(h) = (s + 2) / (2π) · NdotH^s: the lecture's "Blinn-Phong microfacet distribution";
+// Blinn 1977 for the shape, the (s+2)/(2π) normalisation makes ∫ D (n·h) dω_h = 1 exactly
+// (Akenine-Möller, Haines, Hoffman 2008, RTR 3rd ed., eq. 7.47; tested by quadrature).
+// Use pbr_specPower_from_alpha (pbr/material/remap.glsl) to match a GGX/Beckmann alpha.
+// NdotH in [0, 1], specPower > 0. pow(x, s) with s up to 8192 (Call of Duty range) loses
+// relative accuracy ~ s · 2^-24 · |log x| on GPUs that implement pow as exp2(s · log2 x).
+#ifndef PBR_BRDF_D_BLINN_PHONG_GLSL
+#define PBR_BRDF_D_BLINN_PHONG_GLSL
+
+#include "pbr/common/constants.glsl"
+
+float pbr_D_BlinnPhong(float NdotH, float specPower) {
+    return (specPower + 2.0) * (0.5 * PBR_INV_PI) * pow(NdotH, specPower);
+}
+
+#endif // PBR_BRDF_D_BLINN_PHONG_GLSL

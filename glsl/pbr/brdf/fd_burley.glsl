@@ -1,0 +1,29 @@
+// pbr/brdf/fd_burley.glsl: the Disney ("Burley") diffuse BRDF.
+//
+// Provides: float pbr_Fd_Burley(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
+// Include:  "pbr/brdf/fd_burley.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// Burley 2012, "Physically-Based Shading at Disney", §5.3 (diffuse model details):
+//   f_d = (1/π) · (1 + (F_D90 - 1)(1 - NdotL)^5) · (1 + (F_D90 - 1)(1 - NdotV)^5),
+//   F_D90 = 0.5 + 2 · roughness · LdotH²,
+// where Burley's "roughness" is our perceptualRoughness. Returns the 1/π but not the base
+// colour. Reciprocal (symmetric in NdotL, NdotV; LdotH == VdotH). Not energy conserving
+// by design (retro-reflection lifts grazing albedo above 1 for rough surfaces, Burley
+// 2012 §5.3); the white-furnace test reports it rather than asserting <= 1.
+#ifndef PBR_BRDF_FD_BURLEY_GLSL
+#define PBR_BRDF_FD_BURLEY_GLSL
+
+#include "pbr/common/constants.glsl"
+#include "pbr/common/math.glsl"
+
+#define PBR_BURLEY_FD90_BASE 0.5  // F_D90 at roughness 0 or LdotH = 0 (Burley 2012 §5.3)
+
+float pbr_Fd_Burley(float NdotV, float NdotL, float LdotH, float perceptualRoughness) {
+    float fd90 = PBR_BURLEY_FD90_BASE + 2.0 * perceptualRoughness * LdotH * LdotH;
+    float lightScatter = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - NdotL);
+    float viewScatter  = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - NdotV);
+    return lightScatter * viewScatter * PBR_INV_PI;
+}
+
+#endif // PBR_BRDF_FD_BURLEY_GLSL

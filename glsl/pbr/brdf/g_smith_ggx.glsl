@@ -1,0 +1,40 @@
+// pbr/brdf/g_smith_ggx.glsl: the exact separable Smith masking-shadowing for GGX.
+//
+// Provides: float pbr_G1_SmithGGX(float NdotX, float alpha)
+//           float pbr_G_SmithGGX(float NdotL, float NdotV, float alpha)
+//           float pbr_V_SmithGGX(float NdotL, float NdotV, float alpha)
+// Include:  "pbr/brdf/g_smith_ggx.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 34:
+//   G1(x) = 2 / (1 + sqrt(1 + alpha² tan²θx)),
+// multiplied by cos θx / cos θx to avoid the tangent (the lecture's "GGX-based geometric
+// term", used in The Order: 1886, Neubelt & Pettineo 2013):
+//   G1(x) = 2 NdotX / (NdotX + sqrt(alpha² + (1 - alpha²) NdotX²)),
+//   G = G1(l) · G1(v)  (separable: masking and shadowing assumed uncorrelated).
+// pbr_V_SmithGGX = G / (4 NdotL NdotV), the lecture's Viz_GGX-R, written without the
+// cosines so it stays finite as NdotL, NdotV -> 0:
+//   V = 1 / ((NdotV + sqrt(alpha² + (1 - alpha²) NdotV²)) (NdotL + sqrt(...NdotL...))).
+// Domain: cosines in [0, 1], alpha in [0, 1].
+#ifndef PBR_BRDF_G_SMITH_GGX_GLSL
+#define PBR_BRDF_G_SMITH_GGX_GLSL
+
+// NdotX + sqrt(alpha² + (1 - alpha²) NdotX²): the common denominator of G1 and V.
+float pbr_SmithGGX_denominator(float NdotX, float alpha) {
+    float a2 = alpha * alpha;
+    return NdotX + sqrt(a2 + (1.0 - a2) * NdotX * NdotX);
+}
+
+float pbr_G1_SmithGGX(float NdotX, float alpha) {
+    return 2.0 * NdotX / pbr_SmithGGX_denominator(NdotX, alpha);
+}
+
+float pbr_G_SmithGGX(float NdotL, float NdotV, float alpha) {
+    return pbr_G1_SmithGGX(NdotL, alpha) * pbr_G1_SmithGGX(NdotV, alpha);
+}
+
+float pbr_V_SmithGGX(float NdotL, float NdotV, float alpha) {
+    return 1.0 / (pbr_SmithGGX_denominator(NdotV, alpha) * pbr_SmithGGX_denominator(NdotL, alpha));
+}
+
+#endif // PBR_BRDF_G_SMITH_GGX_GLSL

@@ -1,0 +1,23 @@
+// pbr/brdf/v_kelemen.glsl: the Kelemen / Szirmay-Kalos geometric term.
+//
+// Provides: float pbr_G_Kelemen(float NdotL, float NdotV, float VdotH), float pbr_V_Kelemen(float VdotH)
+// Include:  "pbr/brdf/v_kelemen.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// Kelemen & Szirmay-Kalos 2001, "A Microfacet Based Coupled Specular-Matte BRDF Model
+// with Importance Sampling" (Eurographics short paper): G / (NdotL NdotV) ≈ 1 / (VdotH)²,
+//   G_K = NdotL NdotV / VdotH²,   V_K = G_K / (4 NdotL NdotV) = 1 / (4 VdotH²).
+// V_K matches the lecture's Viz_K = 1/(4 (V·H)²) (and Filament's V_Kelemen). Lecture
+// discrepancy: its slide writes G_K = (n·L)(n·V) / (4 (V·H)²), which with the lecture's own
+// Viz = G / (4 (n·L)(n·V)) would give 1/(16 (V·H)²); the extra 1/4 in G_K is a typo. Cheap
+// (no dependence on roughness) and fast with VdotH = LdotH. Domain VdotH in (0, 1].
+#ifndef PBR_BRDF_V_KELEMEN_GLSL
+#define PBR_BRDF_V_KELEMEN_GLSL
+
+float pbr_G_Kelemen(float NdotL, float NdotV, float VdotH) {
+    return NdotL * NdotV / (VdotH * VdotH);
+}
+
+float pbr_V_Kelemen(float VdotH) { return 0.25 / (VdotH * VdotH); }
+
+#endif // PBR_BRDF_V_KELEMEN_GLSL

@@ -1,0 +1,40 @@
+// pbr/tonemap/khronos_neutral.glsl: the Khronos PBR Neutral tone mapper.
+//
+// Provides: vec3 pbr_tonemap_khronos_neutral(vec3 color)
+// Include:  "pbr/tonemap/khronos_neutral.glsl" (path relative to glsl/)
+// Config macros read: none.
+//
+// Khronos Group 2024, "PBR Neutral" specification (github.com/KhronosGroup/ToneMapping,
+// PBR_Neutral/README.md), with F90 = 0.04, K_s = 0.8 - F90, K_d = 0.15:
+//   x = min(R, G, B);  f = x - x²/(4 F90) if x <= 2 F90, else F90
+//   p = max(c - f);    p_n = 1 - (1 - K_s)² / (p + 1 - 2 K_s);   g = 1 / (K_d (p - p_n) + 1)
+//   out = c - f                                   if p <= K_s
+//       = (c - f) (p_n / p) g + p_n (1 - g)       otherwise.
+// Written like the specification's sample code (mix(c·p_n/p, p_n, 1 - g)). Input:
+// non-negative linear Rec. 709; output linear Rec. 709 in [0, 1]. Colours up to K_s pass
+// through nearly unchanged (only the offset f), which keeps base colours true.
+#ifndef PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
+#define PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
+
+#include "pbr/common/math.glsl"
+
+#define PBR_KHRONOS_NEUTRAL_F90 0.04                                // spec: F90
+#define PBR_KHRONOS_NEUTRAL_START_COMPRESSION (0.8 - PBR_KHRONOS_NEUTRAL_F90)  // spec: K_s
+#define PBR_KHRONOS_NEUTRAL_DESATURATION 0.15                       // spec: K_d
+
+vec3 pbr_tonemap_khronos_neutral(vec3 color) {
+    float x = pbr_min3(color);
+    float offset = x <= 2.0 * PBR_KHRONOS_NEUTRAL_F90
+        ? x - x * x / (4.0 * PBR_KHRONOS_NEUTRAL_F90)
+        : PBR_KHRONOS_NEUTRAL_F90;
+    color -= offset;
+    float peak = pbr_max3(color);
+    if (peak <= PBR_KHRONOS_NEUTRAL_START_COMPRESSION) return color;
+    float d = 1.0 - PBR_KHRONOS_NEUTRAL_START_COMPRESSION;
+    float newPeak = 1.0 - d * d / (peak + d - PBR_KHRONOS_NEUTRAL_START_COMPRESSION);
+    color *= newPeak / peak;
+    float g = 1.0 - 1.0 / (PBR_KHRONOS_NEUTRAL_DESATURATION * (peak - newPeak) + 1.0);
+    return mix(color, vec3(newPeak), g);
+}
+
+#endif // PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL

@@ -1,0 +1,49 @@
+// pbr/tonemap/tonemap.glsl: tonemapper selection.
+//
+// Provides: vec3 pbr_tonemap(vec3 color) and the selector values PBR_TONEMAP_*.
+// Include:  "pbr/tonemap/tonemap.glsl" (path relative to glsl/)
+// Config macros read: PBR_TONEMAP (default PBR_TONEMAP_KHRONOS_NEUTRAL).
+//
+// One dispatcher over the tonemappers of this folder (the library's one variant
+// mechanism, pbr/common/conventions.glsl §8). PBR_TONEMAP_NONE is saturate only.
+// Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
+// light) nearly unchanged, which is what material charts want.
+#ifndef PBR_TONEMAP_TONEMAP_GLSL
+#define PBR_TONEMAP_TONEMAP_GLSL
+
+#include "pbr/common/math.glsl"
+#include "pbr/tonemap/reinhard.glsl"
+#include "pbr/tonemap/hable.glsl"
+#include "pbr/tonemap/aces.glsl"
+#include "pbr/tonemap/khronos_neutral.glsl"
+
+#define PBR_TONEMAP_NONE            0
+#define PBR_TONEMAP_REINHARD        1
+#define PBR_TONEMAP_HABLE           2
+#define PBR_TONEMAP_ACES_FITTED     3
+#define PBR_TONEMAP_ACES_NARKOWICZ  4
+#define PBR_TONEMAP_KHRONOS_NEUTRAL 5
+
+#ifndef PBR_TONEMAP
+#define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
+#endif
+
+vec3 pbr_tonemap(vec3 color) {
+#if PBR_TONEMAP == PBR_TONEMAP_NONE
+    return pbr_saturate(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_REINHARD
+    return pbr_tonemap_reinhard(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_HABLE
+    return pbr_tonemap_hable(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_ACES_FITTED
+    return pbr_tonemap_aces_fitted(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_ACES_NARKOWICZ
+    return pbr_tonemap_aces_narkowicz(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_KHRONOS_NEUTRAL
+    return pbr_tonemap_khronos_neutral(color);
+#else
+#error "PBR_TONEMAP: unknown value"
+#endif
+}
+
+#endif // PBR_TONEMAP_TONEMAP_GLSL

@@ -1,0 +1,21 @@
+"""float64 numpy references of the pbrlab GLSL shading library, one module per layer.
+
+Each module mirrors a folder of ``glsl/pbr/`` with the same semantics (same clamps,
+same edge cases, same variant defaults) but in float64 and in the textbook form of each
+formula, so that ``tests/library`` can compare the GPU against it:
+
+  constants  PI, INV_PI, LIGHT_UNIT_SCALE          (glsl/pbr/common/)
+  color      sRGB curves, pow 2.2 / fast gamma, luminance, transfer paths (glsl/pbr/color/)
+  remap      smoothness / perceptual roughness / alpha / gloss remaps (material/remap.glsl)
+  material   metallic & specular workflows, F0 tables, F0 <-> IOR (material/)
+  brdf       every D, G, V, F and Fd term           (glsl/pbr/brdf/)
+  shading    variant dispatch, standard BRDF, punctual lights (shading/, lighting/)
+  tonemap    exposure and tonemappers              (glsl/pbr/tonemap/)
+
+Arrays broadcast like numpy; colours and directions carry their 3 components on the last
+axis. Functions return float64 arrays.
+"""
+
+from . import brdf, color, constants, material, remap, shading, tonemap
+
+__all__ = ["brdf", "color", "constants", "material", "remap", "shading", "tonemap"]

@@ -1,0 +1,147 @@
+"""Variant dispatch, the standard BRDF and punctual lighting:
+glsl/pbr/shading/dispatch.glsl, standard.glsl and glsl/pbr/lighting/punctual.glsl.
+
+Variant keywords mirror the GLSL selectors: ``specular_d="BECKMANN"`` is
+``#define PBR_SPECULAR_D PBR_SPECULAR_D_BECKMANN``; ``glsl_defines`` builds that dict for
+``pbrlab.evaluate(..., defines=...)``.
+"""
+
+import numpy as np
+
+from . import brdf, remap
+from .constants import LIGHT_UNIT_SCALE
+
+# Edge constants, shared with glsl/pbr/shading/standard.glsl (tested equal).
+MIN_PERCEPTUAL_ROUGHNESS = 0.045        # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
+MIN_NDOTV = 1e-4                        # PBR_MIN_NDOTV (Filament MIN_N_DOT_V)
+MIN_HALF_VECTOR_LENGTH_SQUARED = 1e-12  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
+
+# Selector values in #define order (PBR_SPECULAR_D_GGX = 0, ...).
+SPECULAR_D = ("GGX", "BECKMANN", "BLINN_PHONG")
+SPECULAR_V = ("SMITH_GGX_CORRELATED", "SMITH_GGX_CORRELATED_FAST", "SMITH_GGX", "SCHLICK_GGX",
+              "COOK_TORRANCE", "KELEMEN", "IMPLICIT")
+SPECULAR_F = ("SCHLICK", "SCHLICK_SG", "NONE")
+DIFFUSE = ("LAMBERT", "BURLEY")
+QUALITY = ("LOW", "HIGH")
+# PBR_QUALITY -> default PBR_SPECULAR_V (the tier block of dispatch.glsl)
+QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "HIGH": "SMITH_GGX_CORRELATED"}
+
+
+def _variants(specular_d, specular_v, specular_f, diffuse, quality):
+    if specular_v is None:
+        specular_v = QUALITY_DEFAULT_V[quality]
+    for value, allowed, name in ((specular_d, SPECULAR_D, "specular_d"), (specular_v, SPECULAR_V, "specular_v"),
+                                 (specular_f, SPECULAR_F, "specular_f"), (diffuse, DIFFUSE, "diffuse"),
+                                 (quality, QUALITY, "quality")):
+        if value not in allowed:
+            raise ValueError(f"{name}={value!r}: expected one of {allowed}")
+    return specular_d, specular_v, specular_f, diffuse
+
+
+def glsl_defines(specular_d=None, specular_v=None, specular_f=None, diffuse=None, quality=None):
+    """The #defines selecting these variants in GLSL (unset arguments keep the GLSL default)."""
+    out = {}
+    for macro, value in (("PBR_SPECULAR_D", specular_d), ("PBR_SPECULAR_V", specular_v),
+                         ("PBR_SPECULAR_F", specular_f), ("PBR_DIFFUSE", diffuse),
+                         ("PBR_QUALITY", quality)):
+        if value is not None:
+            out[macro] = f"{macro}_{value}"
+    return out
+
+
+def specular_D(NdotH, alpha, variant="GGX"):
+    if variant == "GGX":
+        return brdf.D_GGX(NdotH, alpha)
+    if variant == "BECKMANN":
+        return brdf.D_Beckmann(NdotH, alpha)
+    if variant == "BLINN_PHONG":
+        return brdf.D_BlinnPhong(NdotH, remap.specPower_from_alpha(alpha))
+    raise ValueError(variant)
+
+
+def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"):
+    if variant == "SMITH_GGX_CORRELATED":
+        return brdf.V_SmithGGXCorrelated(NdotL, NdotV, alpha)
+    if variant == "SMITH_GGX_CORRELATED_FAST":
+        return brdf.V_SmithGGXCorrelatedFast(NdotL, NdotV, alpha)
+    if variant == "SMITH_GGX":
+        return brdf.V_SmithGGX(NdotL, NdotV, alpha)
+    if variant == "SCHLICK_GGX":
+        return brdf.V_SchlickGGX(NdotL, NdotV, brdf.k_SchlickGGX_from_alpha(alpha))
+    if variant == "COOK_TORRANCE":
+        return brdf.V_CookTorrance(NdotL, NdotV, NdotH, VdotH)
+    if variant == "KELEMEN":
+        return brdf.V_Kelemen(VdotH)
+    if variant == "IMPLICIT":
+        return np.full(np.shape(NdotL), brdf.V_Implicit())
+    raise ValueError(variant)
+
+
+def specular_F(f0, VdotH, variant="SCHLICK"):
+    if variant == "SCHLICK":
+        return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None])
+    if variant == "SCHLICK_SG":
+        return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None])
+    if variant == "NONE":
+        return np.ones(np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
+    raise ValueError(variant)
+
+
+def diffuse_Fd(NdotV, NdotL, LdotH, perceptual_roughness, variant="LAMBERT"):
+    if variant == "LAMBERT":
+        return np.full(np.broadcast_shapes(np.shape(NdotV), np.shape(NdotL)), brdf.Fd_Lambert())
+    if variant == "BURLEY":
+        return brdf.Fd_Burley(NdotV, NdotL, LdotH, perceptual_roughness)
+    raise ValueError(variant)
+
+
+def clamp_perceptual_roughness(perceptual_roughness):
+    return np.clip(np.asarray(perceptual_roughness, dtype=np.float64), MIN_PERCEPTUAL_ROUGHNESS, 1.0)
+
+
+def _dot(a, b):
+    return np.sum(a * b, axis=-1)
+
+
+def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_d="GGX",
+                  specular_v=None, specular_f="SCHLICK", diffuse="LAMBERT", quality="HIGH"):
+    """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
+    (NdotL <= 0 -> 0; roughness clamp; NdotV clamp; LdotH = |l+v|/2; l = -v -> no specular)."""
+    d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
+    n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
+    shape = np.broadcast_shapes(n.shape, v.shape, l.shape, diffuse_color.shape, f0.shape,
+                                np.shape(perceptual_roughness) + (3,))
+    n, v, l, diffuse_color, f0 = (np.broadcast_to(x, shape) for x in (n, v, l, diffuse_color, f0))
+    roughness = np.broadcast_to(clamp_perceptual_roughness(perceptual_roughness), shape[:-1])
+    alpha = remap.alpha_from_perceptual_roughness(roughness)
+
+    NdotL = np.minimum(_dot(n, l), 1.0)
+    lit = NdotL > 0.0
+    NdotL_safe = np.where(lit, NdotL, 1.0)
+    NdotV = np.clip(_dot(n, v), MIN_NDOTV, 1.0)
+    half_sum = l + v
+    half_length2 = _dot(half_sum, half_sum)
+    LdotH = np.minimum(0.5 * np.sqrt(half_length2), 1.0)
+    diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
+
+    has_half = half_length2 >= MIN_HALF_VECTOR_LENGTH_SQUARED
+    h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
+    NdotH = np.clip(_dot(n, h), 0.0, 1.0)
+    VdotH = np.where(has_half, LdotH, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        D = specular_D(NdotH, alpha, d_var)
+        V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
+    F = specular_F(f0, VdotH, f_var)
+    specular_part = np.where(has_half[..., None], (D * V)[..., None] * F, 0.0)
+    return np.where(lit[..., None], diffuse_part + specular_part, 0.0)
+
+
+def shade_punctual(n, v, l, light_radiance, diffuse_color, f0, perceptual_roughness, **variants):
+    """pbr_shade_punctual: light_radiance * π * BRDF * max(0, NdotL) (the lecture's convention).
+
+    ``variants``: specular_d, specular_v, specular_f, diffuse, quality (see ``glsl_defines``).
+    """
+    n, l = np.asarray(n, dtype=np.float64), np.asarray(l, dtype=np.float64)
+    NdotL = np.clip(_dot(n, l), 0.0, 1.0)
+    value = brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, **variants)
+    return np.asarray(light_radiance, dtype=np.float64) * value * (LIGHT_UNIT_SCALE * NdotL)[..., None]

@@ -1,0 +1,101 @@
+"""`pbrlab render` and `pbrlab demo`: outputs, atomic writes, and clear errors."""
+
+import json
+
+import numpy as np
+import pytest
+
+from pbrlab import cli
+from pbrlab.charts import CHARTS
+from pbrlab.images import read_image
+
+from scenes import one_sphere
+
+LIT_SPHERE = one_sphere({"albedo": [0.8, 0.3, 0.2], "smoothness": 0.6},
+                        [{"type": "directional", "direction": [0.2, -0.4, -1]}], size=(40, 30))
+
+
+@pytest.fixture
+def scene_file(tmp_path):
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(LIT_SPHERE))
+    return path
+
+
+def test_render_writes_png_and_exr_of_the_requested_size(scene_file, tmp_path, capsys):
+    png, exr = tmp_path / "o.png", tmp_path / "o.exr"
+    assert cli.main(["render", str(scene_file), "-o", str(png), "--hdr", str(exr), "--size", "24x20"]) == 0
+    srgb, linear = read_image(png), read_image(exr)
+    assert srgb.shape == (20, 24, 4) and srgb.dtype == np.uint8
+    assert linear.shape == (20, 24, 4) and linear.dtype == np.float32
+    assert linear[10, 12, 0] > 0.05 and linear[0, 0, :3].sum() == 0  # sphere centre lit, corner empty
+
+
+@pytest.mark.parametrize("backend", ["egl", "osmesa"])
+def test_render_backends_write_identical_files(scene_file, tmp_path, backend):
+    out = tmp_path / f"{backend}.exr"
+    assert cli.main(["render", str(scene_file), "--hdr", str(out), "--backend", backend]) == 0
+    reference = tmp_path / "reference.exr"
+    cli.main(["render", str(scene_file), "--hdr", str(reference), "--backend", "egl"])
+    np.testing.assert_array_equal(read_image(out), read_image(reference))
+
+
+def test_failed_render_keeps_the_previous_output(scene_file, tmp_path, capsys):
+    png = tmp_path / "keep.png"
+    png.write_bytes(b"previous good image")
+    broken = json.loads(scene_file.read_text())
+    broken["objects"] = [{"mesh": "broken.obj", "material": "m"}]
+    (tmp_path / "broken.obj").write_text("this is not a mesh\n")
+    bad_scene = tmp_path / "bad.json"
+    bad_scene.write_text(json.dumps(broken))
+    assert cli.main(["render", str(bad_scene), "-o", str(png)]) == 2
+    assert png.read_bytes() == b"previous good image"
+    assert "Traceback" not in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "broken.obj", "keep.png", "scene.json"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--size", "12", "-o", "x.png"], "expected WIDTHxHEIGHT"),
+    (["-o", "picture.jpg"], "expected a .png file name"),
+    ([], "nothing to write"),
+    (["-o", "/nonexistent-dir/x.png"], "cannot write"),
+])
+def test_render_mistakes_get_one_line_messages(scene_file, args, message, capsys):
+    assert cli.main(["render", str(scene_file), *args] if args != [] else ["render", str(scene_file)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err
+
+
+def test_render_names_the_bad_scene_field(tmp_path, capsys):
+    bad = dict(LIT_SPHERE, materials={"m": {"albedo": [0.8, 0.3, 0.2], "smoothness": -1}})
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(bad))
+    assert cli.main(["render", str(path), "-o", str(tmp_path / "x.png")]) == 2
+    assert "materials.m.smoothness: expected a number in [0.0, 1.0], got -1" in capsys.readouterr().err
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_demo_writes_every_chart_and_matches_goldens(tmp_path, capsys):
+    assert cli.main(["demo", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    for chart in CHARTS:
+        assert (tmp_path / f"{chart}.png").is_file() and (tmp_path / f"{chart}.exr").is_file()
+        assert f"matches goldens/{chart}" in out
+
+
+def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
+    goldens = tmp_path / "goldens"
+    goldens.mkdir()
+    from pbrlab import goldens as store
+    from pbrlab.render import render_scene
+    from pbrlab.scene import parse_scene
+
+    for chart, build in CHARTS.items():
+        rendering = render_scene(parse_scene(build()))
+        linear = rendering.linear.copy()
+        if chart == "chart_f0":
+            linear[10, 10, 0] += 0.01  # one changed pixel
+        store.check_golden(chart, linear, rendering.srgb8, update=True, root=goldens)
+    assert cli.main(["demo", "--out", str(tmp_path / "out"), "--goldens", str(goldens)]) == 1
+    out = capsys.readouterr().out
+    assert "chart_f0" in out and "DIFFERS" in out and "1 differ" in out
