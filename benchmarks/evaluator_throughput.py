@@ -5,7 +5,8 @@ figures and asserts nothing about time.
     .venv/bin/python benchmarks/evaluator_throughput.py [--samples 1000000] [--repeats 7]
 
 Reports the median and spread of wall time per sweep and the derived ns/sample, after a
-warm-up call (which compiles the program). On llvmpipe the draw uses LP_NUM_THREADS
+warm-up call per term (which compiles the program); terms run interleaved in a shuffled
+order each round, so machine-load drift spreads over all of them. On llvmpipe the draw uses LP_NUM_THREADS
 threads (default: all cores); set LP_NUM_THREADS=1 for single-thread figures.
 """
 
@@ -42,16 +43,20 @@ def main(argv=None) -> int:
     print(f"{info['GL_RENDERER']} | {info['GL_VERSION']} | backend {info['backend']} | "
           f"llvmpipe caps {info['llvmpipe_cpu_caps']} | {args.samples} samples, {args.repeats} repeats")
     print(f"{'term':28s} {'median s':>9s} {'min s':>8s} {'max s':>8s} {'ns/sample':>10s}")
-    for name, (expression, make_inputs) in TERMS.items():
-        inputs = make_inputs(rng, args.samples)
+    prepared = {name: (expression, make_inputs(rng, args.samples))
+                for name, (expression, make_inputs) in TERMS.items()}
+    for expression, inputs in prepared.values():
         evaluate(expression, backend=args.backend, **inputs)  # warm-up: compile + first draw
-        times = []
-        for _ in range(args.repeats):
+    times = {name: [] for name in prepared}
+    for _ in range(args.repeats):  # interleaved, in a shuffled order each round
+        for name in rng.permutation(list(prepared)):
+            expression, inputs = prepared[name]
             start = time.perf_counter()
             evaluate(expression, backend=args.backend, **inputs)
-            times.append(time.perf_counter() - start)
-        median = statistics.median(times)
-        print(f"{name:28s} {median:9.4f} {min(times):8.4f} {max(times):8.4f} "
+            times[name].append(time.perf_counter() - start)
+    for name, samples in times.items():
+        median = statistics.median(samples)
+        print(f"{name:28s} {median:9.4f} {min(samples):8.4f} {max(samples):8.4f} "
               f"{median / args.samples * 1e9:10.1f}")
     return 0
 

@@ -108,7 +108,9 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 raise PbrlabError(f"{display}:{number}: #version is allowed only in the entry shader")
             m = _INCLUDE.match(line)
             if not m:
-                lines_out.append(line)
+                # moderngl resolves '#include' wherever it appears, comments included;
+                # what is left after expansion is commentary, so it is neutralised.
+                lines_out.append(line.replace("#include", "# include"))
                 continue
             target = resolve_include(m.group(1), search)
             if target is None:

@@ -64,6 +64,12 @@ def test_user_directories_are_searched_before_the_library(tmp_path):
     assert "// user override" in text
 
 
+def test_include_mentioned_in_a_comment_compiles(gl_context):
+    source = ('#version 330 core\n// usage: #include "pbr/pbr.glsl"\nout vec4 c;\n'
+              'void main() { c = vec4(1.0); }\n')
+    assert fullscreen_program(gl_context, source)[0] is not None
+
+
 def test_library_umbrella_include_compiles(gl_context):
     program, _ = fullscreen_program(
         gl_context, '#version 330 core\n#include "pbr/pbr.glsl"\nout vec4 c;\nvoid main() { c = vec4(PBR_PI); }\n')

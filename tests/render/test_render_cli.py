@@ -99,3 +99,14 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     assert cli.main(["demo", "--out", str(tmp_path / "out"), "--goldens", str(goldens)]) == 1
     out = capsys.readouterr().out
     assert "chart_f0" in out and "DIFFERS" in out and "1 differ" in out
+
+
+def test_readme_example_scene_renders_finite(tmp_path):
+    from pathlib import Path
+
+    example = Path(__file__).resolve().parents[2] / "scenes" / "example.json"
+    exr, png = tmp_path / "example.exr", tmp_path / "example.png"
+    assert cli.main(["render", str(example), "--hdr", str(exr), "-o", str(png), "--size", "160x100"]) == 0
+    linear = read_image(exr)
+    assert np.isfinite(linear).all() and (linear[..., :3] >= 0).all()
+    assert (linear[..., :3].sum(-1) > 0).mean() > 0.5  # spheres, torus and floor cover most of it
