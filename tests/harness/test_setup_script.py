@@ -1,0 +1,37 @@
+"""scripts/setup.sh: without root, missing system packages are named in one exact
+apt-get line and the script stops before touching the virtualenv."""
+
+import os
+import subprocess
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _fake_bin(tmp_path, uid: str, installed: bool) -> Path:
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    (bin_dir / "id").write_text(f"#!/bin/sh\necho {uid}\n")
+    status = "install ok installed" if installed else "unknown ok not-installed"
+    (bin_dir / "dpkg-query").write_text(f"#!/bin/sh\nprintf '{status}'\n")
+    for tool in bin_dir.iterdir():
+        tool.chmod(0o755)
+    return bin_dir
+
+
+def test_non_root_user_gets_the_exact_install_line_and_exit_1(tmp_path):
+    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=False)}:{os.environ['PATH']}")
+    out = subprocess.run(["bash", str(ROOT / "scripts" / "setup.sh")], capture_output=True,
+                         text=True, env=env, cwd=tmp_path)
+    assert out.returncode == 1
+    assert ("sudo apt-get install -y glslang-tools libegl-mesa0 libegl1 libgl1-mesa-dri "
+            "libosmesa6 spirv-cross") in out.stderr
+    assert "setup: creating the virtualenv" not in out.stdout
+
+
+def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
+    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:{os.environ['PATH']}")
+    out = subprocess.run(["bash", str(ROOT / "scripts" / "setup.sh")], capture_output=True,
+                         text=True, env=env, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout == "" and out.stderr == ""
