@@ -18,7 +18,7 @@ from . import gl, meshes, shaders, targets
 from .camera import camera_frame
 from .environment import environment_sh
 from .images import read_image
-from .scene import TEXTURE_SLOTS, TONEMAPPERS, Scene
+from .scene import TEXTURE_SLOTS, Scene
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
 _LIGHT_TYPE = {"directional": 0, "point": 1, "spot": 2}
@@ -192,7 +192,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
         # Resolve: exposure + tonemap, hardware sRGB encode.
         resolve = _program(ctx, "fullscreen.vert",
-                           "resolve.frag", {"PBRLAB_TONEMAP": TONEMAPPERS.index(scene.render.tonemap)})
+                           "resolve.frag", {"PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}"})
         with targets.Target(ctx, (w, h), "srgb8", depth=False) as display:
             display.use()
             hdr.color.use(0)

@@ -18,7 +18,8 @@ Format (README.md, "Scene files", has the annotated version)::
     objects     [{sphere: {center, radius}, material}
                  {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
                   material, transform: {translate, rotate_deg, scale}}]
-    render      {quality: high, tonemap: none|reinhard|aces_fitted|hable|khronos_neutral,
+    render      {quality: high, tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|
+                 khronos_neutral,
                  exposure: 0 (EV stops, multiplier 2^exposure)}
 """
 
@@ -33,7 +34,7 @@ import numpy as np
 
 from .errors import SceneError
 
-TONEMAPPERS = ("none", "reinhard", "aces_fitted", "hable", "khronos_neutral")
+TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
 QUALITIES = ("high",)  # tiers arrive with the surface API (issue 4)
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
 TEXTURE_SLOTS = {  # slot -> colour (sRGB-decoded on sampling) or linear data

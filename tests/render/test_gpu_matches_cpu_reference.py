@@ -7,6 +7,9 @@ import numpy as np
 import pytest
 
 from pbrlab.images import read_image
+from pbrlab.reference import tonemap as ref_tonemap
+from pbrlab.reference.color import linear_to_srgb
+from pbrlab.scene import TONEMAPPERS
 from pbrlab.charts import CHARTS
 from pbrlab.cpu_render import render_scene_cpu
 from pbrlab.render import render_scene
@@ -89,3 +92,23 @@ def test_constant_environment_lights_white_lambert_to_its_radiance(gl_context):
     shaded = linear[linear[..., :3].sum(-1) > 0, :3]
     assert shaded.shape[0] > 300
     np.testing.assert_allclose(shaded, np.broadcast_to([0.25, 0.5, 0.75], shaded.shape), rtol=1e-5)
+
+
+@pytest.mark.parametrize("tonemap", TONEMAPPERS)
+def test_display_image_is_exposure_tonemap_and_srgb_of_the_linear_render(tonemap, gl_context):
+    # The PNG must be exactly the library's display transform of the EXR: exposure,
+    # then the tonemapper, then the sRGB encode. Reference: float64 of all three on the
+    # GPU's own linear output. Tolerance: the hardware encode picks one of the two codes
+    # bracketing the exact value (tests/harness/test_srgb_hardware.py), so 1 code.
+    scene = one_sphere({"albedo": [0.9, 0.6, 0.3], "smoothness": 0.8},
+                       [{"type": "directional", "direction": [0.3, -0.4, -1], "intensity": 6.0}],
+                       size=(48, 48), tonemap=tonemap)
+    scene["render"]["exposure"] = 0.5
+    rendering = render_scene(parse_scene(scene), gl_context)
+    linear = rendering.linear[..., :3].astype(np.float64)
+    exposed = ref_tonemap.apply_exposure(linear, 0.5)
+    mapped = exposed if tonemap == "none" else ref_tonemap.tonemap(exposed, tonemap.upper())
+    expected = linear_to_srgb(np.clip(mapped, 0.0, 1.0)) * 255.0
+    got = rendering.srgb8[..., :3].astype(np.float64)
+    assert exposed.max() > 1.5  # the input is HDR, so the tonemappers differ from clamping
+    assert np.abs(got - expected).max() < 1.0 + 1e-6

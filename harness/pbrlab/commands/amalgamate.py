@@ -6,6 +6,7 @@ from pathlib import Path
 
 from .. import shaders
 from ..errors import PbrlabError
+from ..images import atomic_output
 
 
 def run(args) -> int:
@@ -19,7 +20,6 @@ def run(args) -> int:
     if args.output == "-":
         print(text, end="")
         return 0
-    from ..images import atomic_output  # the one atomic-write mechanism
     with atomic_output(args.output) as tmp:
         Path(tmp).write_text(text, encoding="utf-8")
     print(f"wrote {args.output} ({len(text.splitlines())} lines)")
