@@ -92,8 +92,25 @@ def f0_chart() -> dict:
     return _grid_scene(rows)
 
 
+def terms_chart() -> dict:
+    """Each BRDF term variant side by side on one material, the others at their defaults:
+    rows D, G/V, F and diffuse (selected per material through its ``brdf`` field)."""
+    from .scene import BRDF_TERMS
+
+    specular_base = {"workflow": "metallic", "albedo": METAL_F0["gold"], "metallic": 1.0,
+                     "smoothness": 0.55}  # specular only: the D, V and F rows
+    diffuse_base = {"workflow": "metallic", "albedo": [0.75, 0.35, 0.15], "metallic": 0.0,
+                    "smoothness": 0.2}  # rough dielectric: Burley's retro-reflection shows
+    rows = [[(f"{term}_{variant.lower()}",
+              dict(diffuse_base if term == "diffuse" else specular_base, brdf={term: variant.lower()}))
+             for variant in BRDF_TERMS[term]]
+            for term in ("specular_d", "specular_v", "specular_f", "diffuse")]
+    return _grid_scene(rows)
+
+
 CHARTS = {
     "chart_metallic": metallic_chart,
     "chart_specular": specular_chart,
     "chart_f0": f0_chart,
+    "chart_terms": terms_chart,
 }

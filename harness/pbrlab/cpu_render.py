@@ -74,8 +74,7 @@ def render_scene_cpu(scene) -> np.ndarray:
     hits = np.stack([_intersect(origin, d, c, r) for c, r in (o.sphere for o in scene.spheres)])
     nearest = np.argmin(hits, axis=0)
     t = np.min(hits, axis=0)
-    out = np.zeros(d.shape[:2] + (4,))
-    out[..., 3] = 1.0
+    out = np.zeros(d.shape[:2] + (4,))  # alpha 0 where no sphere is hit, as on the GPU
     env_sh = environment_sh(scene.environment) if scene.environment is not None else None
     for index, obj in enumerate(scene.spheres):
         mask = (nearest == index) & np.isfinite(t)
@@ -92,7 +91,8 @@ def render_scene_cpu(scene) -> np.ndarray:
         color = np.broadcast_to(material.emission, p.shape).copy()
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
-            color += ref_shading.shade_punctual(n, v, l, radiance, diffuse, f0, rough)
+            color += ref_shading.shade_punctual(n, v, l, radiance, diffuse, f0, rough,
+                                                **material.brdf)
         if env_sh is not None:
             color += diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
         out[mask, :3] = color

@@ -6,7 +6,7 @@ Options:
   --pbrlab-goldens DIR   the golden root (default: goldens/ in the rootdir)
 
 Fixtures:
-  gl_context   the process's shared moderngl context (session scope; under pytest-xdist
+  gl_context   the process's shared moderngl context, made current for each test (under pytest-xdist
                each worker process has its own)
   golden       ``golden.check(name, linear, srgb8, tolerance)``: ``pbrlab.goldens.check_golden``
                with this run's renderer info, update flag and folders

@@ -18,6 +18,7 @@ from . import gl, meshes, shaders, targets
 from .camera import camera_frame
 from .environment import environment_sh
 from .images import read_image
+from .reference.shading import glsl_defines
 from .scene import TEXTURE_SLOTS, Scene
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
@@ -31,7 +32,7 @@ _CUBE_TRIANGLES = np.array([
 
 @dataclass
 class Rendering:
-    linear: np.ndarray  # HxWx4 float32 radiance (alpha = coverage * material alpha)
+    linear: np.ndarray  # HxWx4 float32 radiance; alpha = material alpha where covered, 0 elsewhere
     srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + hardware sRGB encode
     info: dict
 
@@ -91,6 +92,11 @@ def _scene_defines(scene: Scene) -> dict:
     return defines
 
 
+def _material_defines(material) -> dict:
+    """The library's variant selectors for this material's BRDF terms."""
+    return glsl_defines(**material.brdf)
+
+
 def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
     _set(program, "u_camera_position", tuple(frame.position))
     _set(program, "u_camera_forward", tuple(frame.forward))
@@ -128,9 +134,19 @@ def _upload_material(program, material):
     _set(program, "u_alpha", material.alpha)
 
 
+COLOR_TRANSFERS = ("HARDWARE", "SRGB", "GAMMA22", "FAST")  # PBR_COLOR_TRANSFER_*
+
+
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
-                 hdr_format: str = "f32") -> Rendering:
-    """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared)."""
+                 hdr_format: str = "f32", transfer: str = "HARDWARE") -> Rendering:
+    """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
+
+    ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
+    (sRGB framebuffer encodes) or a DIY shader encode into a plain 8-bit target: SRGB
+    (exact curve), GAMMA22 (pow 1/2.2) or FAST (sqrt).
+    """
+    if transfer not in COLOR_TRANSFERS:
+        raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
     ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
         scene.camera.size = tuple(size)
@@ -141,14 +157,14 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
     with targets.Target(ctx, (w, h), hdr_format) as hdr:
         hdr.use()
-        ctx.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
+        ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
         ctx.enable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
         ctx.front_face = "ccw"
 
         # Meshes: rasterised with the material's texture slots compiled in.
         for obj in scene.meshes:
             material = scene.materials[obj.material]
-            defines = dict(base_defines)
+            defines = dict(base_defines, **_material_defines(material))
             for slot in material.textures:
                 defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
             program = _program(ctx, "mesh.vert", "mesh.frag", defines)
@@ -168,32 +184,38 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             for resource in [vao, *buffers, *textures]:
                 resource.release()
 
-        # Spheres: back faces of each bounding cube, ray-traced in the fragment shader.
+        # Spheres: back faces of each bounding cube, ray-traced in the fragment shader;
+        # one program per set of material BRDF variants (compiled once, cached).
         if scene.spheres:
-            program = _program(ctx, "sphere.vert", "sphere.frag", base_defines)
-            _upload_scene_uniforms(program, scene, frame, env_sh)
             vbo = ctx.buffer(_UNIT_CUBE.tobytes())
             ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
-            vao = ctx.vertex_array(program, [(vbo, "3f", "in_position")], index_buffer=ibo)
             ctx.cull_face = "front"
             for obj in scene.spheres:
+                material = scene.materials[obj.material]
+                program = _program(ctx, "sphere.vert", "sphere.frag",
+                                   dict(base_defines, **_material_defines(material)))
+                _upload_scene_uniforms(program, scene, frame, env_sh)
+                _upload_material(program, material)
                 centre, radius = obj.sphere
-                _upload_material(program, scene.materials[obj.material])
                 _set(program, "u_sphere", (*centre, radius))
                 inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
                 _set(program, "u_fullscreen", inside)
                 ctx.disable(moderngl.CULL_FACE) if inside else ctx.enable(moderngl.CULL_FACE)
+                vao = ctx.vertex_array(program, [(vbo, "3f", "in_position")], index_buffer=ibo)
                 vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
+                vao.release()
             ctx.cull_face = "back"
-            for resource in (vao, vbo, ibo):
-                resource.release()
+            vbo.release()
+            ibo.release()
         ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
         linear = hdr.read()
 
         # Resolve: exposure + tonemap, hardware sRGB encode.
-        resolve = _program(ctx, "fullscreen.vert",
-                           "resolve.frag", {"PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}"})
-        with targets.Target(ctx, (w, h), "srgb8", depth=False) as display:
+        resolve = _program(ctx, "fullscreen.vert", "resolve.frag", {
+            "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
+            "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{transfer}"})
+        display_kind = "srgb8" if transfer == "HARDWARE" else "unorm8"
+        with targets.Target(ctx, (w, h), display_kind, depth=False) as display:
             display.use()
             hdr.color.use(0)
             _set(resolve, "u_hdr", 0)

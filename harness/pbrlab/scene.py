@@ -14,7 +14,8 @@ Format (README.md, "Scene files", has the annotated version)::
                   inner_cone_deg, outer_cone_deg}]
     environment null | {color: [r,g,b]} | {path: "sky.hdr", intensity: 1}
     materials   {name: {workflow: metallic|specular, albedo, metallic, specular,
-                        smoothness, emission, occlusion, alpha, textures: {albedo, ...}}}
+                        smoothness, emission, occlusion, alpha, textures: {albedo, ...},
+                        brdf: {specular_d, specular_v, specular_f, diffuse}}}
     objects     [{sphere: {center, radius}, material}
                  {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
                   material, transform: {translate, rotate_deg, scale}}]
@@ -33,6 +34,12 @@ from pathlib import Path
 import numpy as np
 
 from .errors import SceneError
+from .reference import shading as _shading
+
+# Per-material BRDF variants: scene key -> the library's selector values (lower case in
+# scenes; the same names as pbrlab.reference.shading and the PBR_SPECULAR_* defines).
+BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR_V,
+              "specular_f": _shading.SPECULAR_F, "diffuse": _shading.DIFFUSE}
 
 TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
 QUALITIES = ("high",)  # tiers arrive with the surface API (issue 4)
@@ -83,6 +90,7 @@ class Material:
     occlusion: float = 1.0
     alpha: float = 1.0
     textures: dict[str, Path] = field(default_factory=dict)
+    brdf: dict[str, str] = field(default_factory=dict)  # e.g. {"specular_d": "BECKMANN"}
 
 
 @dataclass
@@ -267,6 +275,13 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
             textures.fail(f"unknown texture slot; use one of {', '.join(TEXTURE_SLOTS)}", slot)
         m.textures[slot] = textures.file(slot, base)
     textures.finish()
+    brdf = r.child("brdf", {})
+    for term in list(brdf.data):
+        if term not in BRDF_TERMS:
+            brdf.fail(f"unknown BRDF term; use one of {', '.join(BRDF_TERMS)}", term)
+        options = tuple(v.lower() for v in BRDF_TERMS[term])
+        m.brdf[term] = brdf.choice(term, options).upper()
+    brdf.finish()
     r.finish()
     return m
 

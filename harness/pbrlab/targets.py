@@ -32,10 +32,12 @@ class Target:
             raise PbrlabError(f"render size {w}x{h} is out of range (1..16384 per side)")
         if kind == "srgb8":
             self.color = ctx.texture(self.size, 4, dtype="f1", internal_format=GL_SRGB8_ALPHA8)
+        elif kind == "unorm8":
+            self.color = ctx.texture(self.size, 4, dtype="f1")
         elif kind in HDR_DTYPES:
             self.color = ctx.texture(self.size, 4, dtype=HDR_DTYPES[kind])
         else:
-            raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, f16 or f32")
+            raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, unorm8, f16 or f32")
         self.depth = ctx.depth_renderbuffer(self.size) if depth else None
         self.fbo = ctx.framebuffer([self.color], self.depth)
 
@@ -49,9 +51,9 @@ class Target:
             self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
 
     def read(self) -> np.ndarray:
-        """Top-row-first HxWx4: uint8 sRGB codes for srgb8, float32 linear otherwise."""
+        """Top-row-first HxWx4: uint8 codes for srgb8/unorm8, float32 linear otherwise."""
         w, h = self.size
-        if self.kind == "srgb8":
+        if self.kind in ("srgb8", "unorm8"):
             data = self.fbo.read(components=4, dtype="f1")
             img = np.frombuffer(data, np.uint8).reshape(h, w, 4)
         else:

@@ -90,3 +90,17 @@ def test_relative_paths_resolve_against_the_scene_folder(tmp_path):
     scene_file = tmp_path / "scene.json"
     scene_file.write_text(json.dumps(_with("objects", [{"mesh": "m/tri.obj", "material": "white"}])))
     assert load_scene(scene_file).objects[0].mesh_path == (tmp_path / "m" / "tri.obj").resolve()
+
+
+def test_material_brdf_variants_parse_to_library_selectors():
+    scene = parse_scene(_with("materials.white.brdf", {"specular_d": "beckmann", "diffuse": "burley"}))
+    assert scene.materials["white"].brdf == {"specular_d": "BECKMANN", "diffuse": "BURLEY"}
+
+
+@pytest.mark.parametrize("brdf, message", [
+    ({"specular_x": "ggx"}, r"materials\.white\.brdf\.specular_x: unknown BRDF term"),
+    ({"specular_d": "phong"}, r"materials\.white\.brdf\.specular_d: expected one of ggx, beckmann, blinn_phong"),
+])
+def test_bad_brdf_variant_is_named(brdf, message):
+    with pytest.raises(SceneError, match=message):
+        parse_scene(_with("materials.white.brdf", brdf))

@@ -38,8 +38,8 @@ def _compare(scene_dict, gl_context, gpu=None):
     gpu = gpu.astype(np.float64)
     cpu = render_scene_cpu(parse_scene(scene_dict))
     assert np.isfinite(gpu).all()
-    covered_gpu = gpu[..., :3].sum(-1) > 0
-    covered_cpu = cpu[..., :3].sum(-1) > 0
+    covered_gpu = gpu[..., 3] > 0
+    covered_cpu = cpu[..., 3] > 0
     assert np.array_equal(covered_gpu, covered_cpu), (covered_gpu != covered_cpu).sum()
     err = np.abs(gpu - cpu)[..., :3]
     ref = np.abs(cpu)[..., :3]
@@ -89,7 +89,7 @@ def test_constant_environment_lights_white_lambert_to_its_radiance(gl_context):
     scene = one_sphere({"workflow": "specular", "albedo": [1, 1, 1], "specular": [0, 0, 0]},
                        [], environment={"color": [0.25, 0.5, 0.75]}, size=(32, 32))
     linear = render_scene(parse_scene(scene), gl_context).linear
-    shaded = linear[linear[..., :3].sum(-1) > 0, :3]
+    shaded = linear[linear[..., 3] > 0, :3]
     assert shaded.shape[0] > 300
     np.testing.assert_allclose(shaded, np.broadcast_to([0.25, 0.5, 0.75], shaded.shape), rtol=1e-5)
 

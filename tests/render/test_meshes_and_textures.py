@@ -20,9 +20,10 @@ def test_tessellated_sphere_converges_to_the_ray_traced_one(gl_context):
     mesh = one_sphere(material, KEY, size=(96, 96))
     mesh["objects"] = [{"mesh": {"primitive": "icosphere", "subdivisions": 5, "radius": 1.0},
                         "material": "m"}]
-    a = render_scene(parse_scene(analytic), gl_context).linear[..., :3]
-    m = render_scene(parse_scene(mesh), gl_context).linear[..., :3]
-    covered_a, covered_m = a.sum(-1) > 0, m.sum(-1) > 0
+    a_rgba = render_scene(parse_scene(analytic), gl_context).linear
+    m_rgba = render_scene(parse_scene(mesh), gl_context).linear
+    a, m = a_rgba[..., :3], m_rgba[..., :3]
+    covered_a, covered_m = a_rgba[..., 3] > 0, m_rgba[..., 3] > 0
     # Measured (96x96, 20480 triangles): both cover the same 2848 pixels. Inside (two
     # pixels away from the silhouette, where grazing angles amplify the polygonal
     # deviation), interpolated normals stay within a fraction of a degree of the exact

@@ -28,7 +28,8 @@ def test_render_writes_png_and_exr_of_the_requested_size(scene_file, tmp_path, c
     srgb, linear = read_image(png), read_image(exr)
     assert srgb.shape == (20, 24, 4) and srgb.dtype == np.uint8
     assert linear.shape == (20, 24, 4) and linear.dtype == np.float32
-    assert linear[10, 12, 0] > 0.05 and linear[0, 0, :3].sum() == 0  # sphere centre lit, corner empty
+    assert linear[10, 12, 0] > 0.05 and linear[10, 12, 3] == 1.0  # sphere centre: lit, covered
+    assert linear[0, 0].sum() == 0  # corner: empty, alpha 0
 
 
 @pytest.mark.parametrize("backend", ["egl", "osmesa"])
@@ -109,4 +110,4 @@ def test_readme_example_scene_renders_finite(tmp_path):
     assert cli.main(["render", str(example), "--hdr", str(exr), "-o", str(png), "--size", "160x100"]) == 0
     linear = read_image(exr)
     assert np.isfinite(linear).all() and (linear[..., :3] >= 0).all()
-    assert (linear[..., :3].sum(-1) > 0).mean() > 0.5  # spheres, torus and floor cover most of it
+    assert (linear[..., 3] > 0).mean() > 0.5  # spheres, torus and floor cover most of it
