@@ -14,6 +14,7 @@
 // conventions and maths
 #include "pbr/common/constants.glsl"
 #include "pbr/common/math.glsl"
+#include "pbr/common/guards.glsl"
 #include "pbr/common/conventions.glsl"
 
 // colour
@@ -50,6 +51,16 @@
 
 // light integration
 #include "pbr/lighting/punctual.glsl"
+#include "pbr/lighting/attenuation.glsl"
+#include "pbr/lighting/sh9.glsl"
+
+// image-based light
+#include "pbr/ibl/importance_sampling.glsl"
+#include "pbr/ibl/equirect.glsl"
+#include "pbr/ibl/environment_brdf.glsl"
+
+// the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
+#include "pbr/surface/lighting_standard.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

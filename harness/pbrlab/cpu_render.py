@@ -3,6 +3,11 @@
 Same camera rays (camera.camera_rays), ray-sphere intersection, lights and shading as
 the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of the
 GLSL library. Goldens of analytic scenes are checked against it.
+
+Scope: opaque spheres with the default surface (no texture maps); environments of
+constant radiance, whose prefiltered radiance is that constant at every roughness and
+whose environment BRDF is integrated here in float64 at each pixel's exact (NdotV,
+roughness) (the GPU interpolates a 32x32 table, or uses the analytic fit at LOW quality).
 """
 
 from __future__ import annotations
@@ -12,11 +17,12 @@ import numpy as np
 from .camera import camera_frame, camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
+from .ibl import integrate_dfg
+from .reference import lighting as ref_lighting
 from .reference import material as ref_material
 from .reference import remap as ref_remap
 from .reference import shading as ref_shading
-
-MIN_LIGHT_DISTANCE2 = 1e-8  # same guard as templates/scene_shading.glsl
+from .reference import surface as ref_surface
 
 
 def _intersect(origin, d, centre, radius):
@@ -37,17 +43,14 @@ def _light_terms(light, p):
     if light.type == "directional":
         return np.broadcast_to(-light.direction, p.shape), np.broadcast_to(radiance, p.shape)
     to_light = light.position - p
-    d2 = np.maximum(np.sum(to_light * to_light, axis=-1, keepdims=True), MIN_LIGHT_DISTANCE2)
-    l = to_light / np.sqrt(d2)
-    # Karis 2013 range window without the +1 (see scene_shading.glsl)
-    window = np.clip(1 - d2 * d2 / light.range ** 4, 0, 1) ** 2 if np.isfinite(light.range) else 1.0
-    atten = window / d2
+    d2 = np.sum(to_light * to_light, axis=-1, keepdims=True)
+    l = to_light / np.sqrt(np.maximum(d2, ref_lighting.MIN_LIGHT_DISTANCE_SQUARED))
+    atten = ref_lighting.distance_attenuation(d2, light.range)
     if light.type == "spot":
         cos_outer = np.cos(np.radians(light.outer_cone_deg))
         cos_inner = np.cos(np.radians(light.inner_cone_deg))
-        t = np.clip((np.sum(-l * light.direction, axis=-1, keepdims=True) - cos_outer)
-                    / max(cos_inner - cos_outer, 1e-4), 0, 1)
-        atten = atten * t * t
+        atten = atten * ref_lighting.spot_attenuation(
+            l, light.direction, cos_outer, 1.0 / max(cos_inner - cos_outer, 1e-4))[..., None]
     return l, radiance * atten
 
 
@@ -68,6 +71,13 @@ def render_scene_cpu(scene) -> np.ndarray:
 
     if scene.meshes:
         raise PbrlabError("the CPU reference renders analytic scenes (spheres) only")
+    if scene.environment is not None and scene.environment.color is None:
+        raise PbrlabError("the CPU reference handles constant environments only")
+    for name, material in scene.materials.items():
+        if material.textures or material.surface or material.alpha_mode != "opaque":
+            raise PbrlabError(f"material {name}: the CPU reference renders opaque, untextured "
+                              "materials with the default surface")
+    quality = scene.render.quality.upper()
     frame = camera_frame(scene.camera, scene_radius(scene))
     d = camera_rays(frame)
     origin = frame.position
@@ -92,9 +102,17 @@ def render_scene_cpu(scene) -> np.ndarray:
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
             color += ref_shading.shade_punctual(n, v, l, radiance, diffuse, f0, rough,
-                                                **material.brdf)
+                                                quality=quality, **material.brdf)
         if env_sh is not None:
             color += diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
+            r = ref_shading.clamp_perceptual_roughness(rough)
+            NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+            dfg = (integrate_dfg(NdotV, np.full_like(NdotV, r)) if quality != "LOW"
+                   else ref_surface.env_brdf_approx(NdotV, r))
+            prefiltered = scene.environment.color * scene.environment.intensity
+            color += ref_surface.indirect_specular_split_sum(
+                np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
+                energy_compensated=scene.render.energy_compensation)
         out[mask, :3] = color
-        out[mask, 3] = material.alpha
+        out[mask, 3] = 1.0  # opaque: coverage
     return out

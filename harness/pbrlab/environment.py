@@ -69,10 +69,12 @@ def sh_irradiance(sh: np.ndarray, n: np.ndarray) -> np.ndarray:
             + 2 * SH_C2 * (sh[3] * x + sh[1] * y + sh[2] * z))
 
 
-def environment_sh(environment) -> np.ndarray:
-    """SH9 (9x3 float64) of a scene's environment, scaled by its intensity."""
+def environment_image(environment) -> np.ndarray:
+    """The environment as an equirectangular float32 radiance image (HxWx3), intensity
+    applied; a constant colour becomes a tiny constant image."""
     if environment.color is not None:
-        return constant_sh(environment.color) * environment.intensity
+        image = np.broadcast_to(np.asarray(environment.color, np.float32), (4, 8, 3))
+        return (image * environment.intensity).astype(np.float32)
     from .images import read_image
 
     if environment.path.suffix.lower() not in (".hdr", ".exr"):
@@ -82,4 +84,11 @@ def environment_sh(environment) -> np.ndarray:
         raise SceneError(f"{environment.path}: an environment needs RGB channels")
     if not np.all(np.isfinite(image[..., :3])):
         raise SceneError(f"{environment.path}: the environment has non-finite texels")
-    return project_equirect(image) * environment.intensity
+    return (image[..., :3] * environment.intensity).astype(np.float32)
+
+
+def environment_sh(environment) -> np.ndarray:
+    """SH9 (9x3 float64) of a scene's environment, scaled by its intensity."""
+    if environment.color is not None:
+        return constant_sh(environment.color) * environment.intensity
+    return project_equirect(environment_image(environment))

@@ -57,8 +57,10 @@ def _template(name: str) -> str:
     return resources.files("pbrlab").joinpath("templates", name).read_text(encoding="utf-8")
 
 
-def _fragment_source(expression, includes, input_types, defines, probe) -> shaders.Source:
-    text = _template("evaluate.frag")
+def _fragment_source(expression, includes, input_types, defines, probe, include_dirs,
+                     extensions=()) -> shaders.Source:
+    text = _template("evaluate.frag").replace(
+        "//@EXTENSIONS", "\n".join(f"#extension {name} : require" for name in extensions))
     define_lines = [f"#define {k} {v}".rstrip() for k, v in sorted(defines.items())]
     if probe:
         define_lines.append("#define PBRLAB_PROBE_WIDTH 1")
@@ -72,7 +74,7 @@ def _fragment_source(expression, includes, input_types, defines, probe) -> shade
                 .replace("//@UNIFORMS", uniforms)
                 .replace("//@FETCHES", fetches)
                 .replace("//@EXPRESSION", expression))
-    return shaders.expand(text, "<evaluate>", include_dirs=())
+    return shaders.expand(text, "<evaluate>", include_dirs=include_dirs)
 
 
 class Evaluator:
@@ -84,17 +86,22 @@ class Evaluator:
         self._vertex = shaders.expand(_template("fullscreen.vert"), "<fullscreen.vert>")
         self._vao_cache: dict = {}
 
-    def _program(self, expression, includes, input_types, defines, probe):
-        key = (expression, includes, input_types, tuple(sorted(defines.items())), probe)
+    def _program(self, expression, includes, input_types, defines, probe, include_dirs=(),
+                 extensions=()):
+        key = (expression, includes, input_types, tuple(sorted(defines.items())), probe,
+               include_dirs, extensions)
         if key not in self._programs:
-            fragment = _fragment_source(expression, includes, input_types, defines, probe)
+            fragment = _fragment_source(expression, includes, input_types, defines, probe,
+                                        include_dirs, extensions)
             program = shaders.build_program(self.ctx, self._vertex, fragment)
             self._programs[key] = (program, self.ctx.vertex_array(program, []))
         return self._programs[key]
 
-    def result_width(self, expression, includes, input_types, defines) -> int:
+    def result_width(self, expression, includes, input_types, defines, include_dirs=(),
+                     extensions=()) -> int:
         """Components of the expression's type (1 for float/int/bool, n for vecn)."""
-        program, vao = self._program(expression, includes, input_types, defines, probe=True)
+        program, vao = self._program(expression, includes, input_types, defines, True,
+                                     include_dirs, extensions)
         textures = [self.ctx.texture((1, 1), n if n != 3 else 4, dtype="f4")
                     for _, n in input_types]
         out = self._run(program, vao, input_types, textures, (1, 1))
@@ -120,8 +127,11 @@ class Evaluator:
             target.release()
         return np.frombuffer(data, dtype=np.float32).reshape(size[1], size[0], 4)
 
-    def __call__(self, expression: str, includes=None, defines=None, **inputs) -> np.ndarray:
+    def __call__(self, expression: str, includes=None, defines=None, include_dirs=(),
+                 extensions=(), **inputs) -> np.ndarray:
         gl.make_current(self.ctx)
+        include_dirs = tuple(str(d) for d in include_dirs)
+        extensions = tuple(extensions)
         if includes is None:
             includes = (shaders.UMBRELLA_INCLUDE,)
         includes = tuple(includes)
@@ -140,7 +150,7 @@ class Evaluator:
             a.shape[:-1] if n > 1 else a.shape for (_, n), a in zip(input_types, arrays.values())
         ]) if arrays else ()
         count = int(np.prod(shape, dtype=np.int64))
-        width = self.result_width(expression, includes, input_types, defines)
+        width = self.result_width(expression, includes, input_types, defines, include_dirs, extensions)
         if count == 0:
             return np.zeros(shape + ((width,) if width > 1 else ()), np.float32)
 
@@ -154,7 +164,8 @@ class Evaluator:
                 padded = np.zeros((rows * cols, channels), np.float32)
                 padded[:count, :n] = full
                 textures.append(self.ctx.texture((cols, rows), channels, padded.tobytes(), dtype="f4"))
-            program, vao = self._program(expression, includes, input_types, defines, probe=False)
+            program, vao = self._program(expression, includes, input_types, defines, False,
+                                         include_dirs, extensions)
             out = self._run(program, vao, input_types, textures, (cols, rows))
         finally:
             for tex in textures:
@@ -168,10 +179,15 @@ def _shared_evaluator(backend):
     return Evaluator(gl.shared_context(backend))
 
 
-def evaluate(expression: str, includes=None, *, defines=None, backend=None, **inputs) -> np.ndarray:
+def evaluate(expression: str, includes=None, *, defines=None, include_dirs=(), extensions=(),
+             backend=None, **inputs) -> np.ndarray:
     """Evaluate ``expression`` for every element of the broadcast ``inputs``.
 
     ``includes`` defaults to the umbrella ``pbr/pbr.glsl``; ``defines`` maps macro names
-    to values; ``backend`` picks the GL backend (default: ``gl.default_backend()``).
+    to values; ``include_dirs`` are searched for includes before the library's glsl/
+    (your own shader files); ``extensions`` names GLSL extensions to require (e.g.
+    ``GL_ARB_shading_language_packing``); ``backend`` picks the GL backend (default:
+    ``gl.default_backend()``).
     """
-    return _shared_evaluator(backend)(expression, includes=includes, defines=defines, **inputs)
+    return _shared_evaluator(backend)(expression, includes=includes, defines=defines,
+                                      include_dirs=include_dirs, extensions=extensions, **inputs)

@@ -91,8 +91,12 @@ def tangents(positions, normals, uvs, faces) -> np.ndarray:
         np.add.at(tan2, faces[:, i], tdir)
     t = tan1 - normals * np.sum(normals * tan1, axis=1, keepdims=True)
     length = np.linalg.norm(t, axis=1, keepdims=True)
+    # Degenerate UVs (or a zero normal at a collapsed pole): any unit vector orthogonal
+    # to the normal, or +x when the normal itself is zero.
     fallback = np.cross(normals, np.where(np.abs(normals[:, :1]) < 0.9, [[1.0, 0, 0]], [[0, 1.0, 0]]))
-    t = np.where(length > 1e-12, t / np.maximum(length, 1e-30), fallback / np.linalg.norm(fallback, axis=1, keepdims=True))
+    fallback_length = np.linalg.norm(fallback, axis=1, keepdims=True)
+    fallback = np.where(fallback_length > 1e-12, fallback / np.maximum(fallback_length, 1e-30), [[1.0, 0, 0]])
+    t = np.where(length > 1e-12, t / np.maximum(length, 1e-30), fallback)
     w = np.where(np.sum(np.cross(normals, t) * tan2, axis=1) < 0.0, -1.0, 1.0)
     return np.concatenate([t, w[:, None]], axis=1)
 

@@ -14,12 +14,12 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import gl, meshes, shaders, targets
+from . import gl, ibl, meshes, shaders, targets
 from .camera import camera_frame
-from .environment import environment_sh
+from .environment import environment_image, environment_sh
 from .images import read_image
 from .reference.shading import glsl_defines
-from .scene import TEXTURE_SLOTS, Scene
+from .scene import Scene
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
 _LIGHT_TYPE = {"directional": 0, "point": 1, "spot": 2}
@@ -44,20 +44,23 @@ def _defines_block(defines: dict) -> str:
 _PROGRAMS: dict = {}
 
 
-def _program(ctx, vert: str, frag: str, defines: dict):
-    """Compile (once per context, shader pair and defines) a harness program."""
-    key = (id(ctx), vert, frag, tuple(sorted(defines.items())))
+def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Path | None = None):
+    """Compile (once per context, shader pair, defines and surface file) a harness program.
+
+    ``surface`` is a GLSL file defining ``surf(Input IN, inout ...)``; None uses the
+    harness's default_surface.glsl. Errors are reported at the original file and line.
+    """
+    key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
     if key not in _PROGRAMS:
-        _PROGRAMS[key] = _compile(ctx, vert, frag, defines)
+        include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
+        surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.glsl"'
+
+        def load(name):
+            text = (TEMPLATES / name).read_text(encoding="utf-8")
+            text = text.replace("//@DEFINES", _defines_block(defines)).replace("//@SURFACE", surface_line)
+            return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
+        _PROGRAMS[key] = shaders.build_program(ctx, load(vert), load(frag))
     return _PROGRAMS[key]
-
-
-def _compile(ctx, vert: str, frag: str, defines: dict):
-    def load(name):
-        text = (TEMPLATES / name).read_text(encoding="utf-8")
-        return shaders.expand(text.replace("//@DEFINES", _defines_block(defines)),
-                              f"pbrlab/templates/{name}", include_dirs=[TEMPLATES])
-    return shaders.build_program(ctx, load(vert), load(frag))
 
 
 def _set(program, name, value):
@@ -86,15 +89,65 @@ def scene_radius(scene: Scene) -> float:
 
 
 def _scene_defines(scene: Scene) -> dict:
-    defines = {"PBRLAB_LIGHT_COUNT": len(scene.lights)}
+    defines = {"PBRLAB_LIGHT_COUNT": len(scene.lights),
+               "PBR_QUALITY": f"PBR_QUALITY_{scene.render.quality.upper()}",
+               "PBR_ENERGY_COMPENSATION": int(scene.render.energy_compensation)}
     if scene.environment is not None:
-        defines["PBRLAB_ENV_SH"] = 1
+        defines["PBRLAB_ENV"] = 1
     return defines
 
 
-def _material_defines(material) -> dict:
-    """The library's variant selectors for this material's BRDF terms."""
-    return glsl_defines(**material.brdf)
+def material_defines(material) -> dict:
+    """The library's selectors and the harness's switches for one material."""
+    defines = dict(glsl_defines(**material.brdf))
+    defines["PBR_ALPHA_MODE"] = f"PBR_ALPHA_MODE_{material.alpha_mode.upper()}"
+    if material.workflow == "specular":
+        defines["PBRLAB_WORKFLOW_SPECULAR"] = 1
+    if material.surface is None:
+        for slot in material.textures:
+            defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
+    return defines
+
+
+class _SceneResources:
+    """GPU data shared by every draw of one render: environment, DFG table, textures."""
+
+    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1}
+    FIRST_MATERIAL_UNIT = 2
+
+    def __init__(self, ctx, scene: Scene):
+        self.ctx = ctx
+        self.env_sh = None
+        self.textures: dict[tuple[Path, bool], moderngl.Texture] = {}
+        self.env_textures = {}
+        if scene.environment is not None:
+            self.env_sh = environment_sh(scene.environment)
+            self.env_textures["u_dfg_lut"] = ibl.dfg_texture(ctx)
+            self.env_textures["u_env_prefiltered"] = ibl.prefiltered_environment(
+                ctx, environment_image(scene.environment))
+
+    def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
+        key = (path, srgb)
+        if key not in self.textures:
+            self.textures[key] = targets.upload_texture(self.ctx, read_image(path), srgb=srgb)
+        return self.textures[key]
+
+    def bind(self, program, scene, frame, material):
+        _upload_scene_uniforms(program, scene, frame, self.env_sh)
+        for name, unit in self.ENV_UNITS.items():
+            if name in self.env_textures:
+                self.env_textures[name].use(unit)
+                _set(program, name, unit)
+        _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
+        _upload_material(program, material)
+        for offset, (name, path) in enumerate(sorted(material.textures.items())):
+            unit = self.FIRST_MATERIAL_UNIT + offset
+            self.texture(path, material.texture_srgb[name]).use(unit)
+            _set(program, f"u_{name}_map" if material.surface is None else name, unit)
+
+    def release(self):
+        for tex in [*self.textures.values(), *self.env_textures.values()]:
+            tex.release()
 
 
 def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
@@ -124,7 +177,6 @@ def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
 
 
 def _upload_material(program, material):
-    _set(program, "u_workflow", 0 if material.workflow == "metallic" else 1)
     _set(program, "u_albedo", tuple(material.albedo))
     _set(program, "u_specular", tuple(material.specular))
     _set(program, "u_metallic", material.metallic)
@@ -132,9 +184,27 @@ def _upload_material(program, material):
     _set(program, "u_emission", tuple(material.emission))
     _set(program, "u_occlusion", material.occlusion)
     _set(program, "u_alpha", material.alpha)
+    _set(program, "u_alpha_cutoff", material.alpha_cutoff)
 
 
+# Blending per alpha mode (Unity's Standard shader): fade blends colour by alpha;
+# transparent is premultiplied (the shader scaled the diffuse, the specular stays).
+# The target's alpha accumulates coverage: ONE, ONE_MINUS_SRC_ALPHA for both.
+_BLEND = {
+    "fade": (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
+    "transparent": (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
+}
 COLOR_TRANSFERS = ("HARDWARE", "SRGB", "GAMMA22", "FAST")  # PBR_COLOR_TRANSFER_*
+
+
+def _draw_order(scene: Scene, frame):
+    """Opaque and cutout objects first, then blended ones from far to near."""
+    def centre(obj):
+        return obj.sphere[0] if obj.sphere is not None else obj.transform[:3, 3]
+    opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
+    blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in _BLEND]
+    blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
+    return opaque + blended
 
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
@@ -151,78 +221,92 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if size is not None:
         scene.camera.size = tuple(size)
     frame = camera_frame(scene.camera, scene_radius(scene))
-    env_sh = environment_sh(scene.environment) if scene.environment is not None else None
     base_defines = _scene_defines(scene)
     w, h = frame.size
-
-    with targets.Target(ctx, (w, h), hdr_format) as hdr:
-        hdr.use()
-        ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
-        ctx.enable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
-        ctx.front_face = "ccw"
-
-        # Meshes: rasterised with the material's texture slots compiled in.
-        for obj in scene.meshes:
-            material = scene.materials[obj.material]
-            defines = dict(base_defines, **_material_defines(material))
-            for slot in material.textures:
-                defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
-            program = _program(ctx, "mesh.vert", "mesh.frag", defines)
-            _upload_scene_uniforms(program, scene, frame, env_sh)
-            _upload_material(program, material)
-            _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
-            normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
-            _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
-            textures = []
-            for unit, (slot, path) in enumerate(sorted(material.textures.items())):
-                tex = targets.upload_texture(ctx, read_image(path), srgb=TEXTURE_SLOTS[slot] == "srgb")
-                tex.use(unit)
-                _set(program, f"u_{slot}_map", unit)
-                textures.append(tex)
-            vao, buffers = meshes.vertex_array(ctx, program, obj)
-            vao.render(moderngl.TRIANGLES)
-            for resource in [vao, *buffers, *textures]:
-                resource.release()
-
-        # Spheres: back faces of each bounding cube, ray-traced in the fragment shader;
-        # one program per set of material BRDF variants (compiled once, cached).
-        if scene.spheres:
-            vbo = ctx.buffer(_UNIT_CUBE.tobytes())
-            ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
-            ctx.cull_face = "front"
-            for obj in scene.spheres:
+    resources = _SceneResources(ctx, scene)
+    cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
+    cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
+    try:
+        with targets.Target(ctx, (w, h), hdr_format) as hdr:
+            hdr.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
+            ctx.enable(moderngl.DEPTH_TEST)
+            ctx.front_face = "ccw"
+            for obj in _draw_order(scene, frame):
                 material = scene.materials[obj.material]
-                program = _program(ctx, "sphere.vert", "sphere.frag",
-                                   dict(base_defines, **_material_defines(material)))
-                _upload_scene_uniforms(program, scene, frame, env_sh)
-                _upload_material(program, material)
-                centre, radius = obj.sphere
-                _set(program, "u_sphere", (*centre, radius))
-                inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
-                _set(program, "u_fullscreen", inside)
-                ctx.disable(moderngl.CULL_FACE) if inside else ctx.enable(moderngl.CULL_FACE)
-                vao = ctx.vertex_array(program, [(vbo, "3f", "in_position")], index_buffer=ibo)
-                vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
-                vao.release()
-            ctx.cull_face = "back"
-            vbo.release()
-            ibo.release()
-        ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
-        linear = hdr.read()
-
-        # Resolve: exposure + tonemap, hardware sRGB encode.
-        resolve = _program(ctx, "fullscreen.vert", "resolve.frag", {
-            "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
-            "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{transfer}"})
-        display_kind = "srgb8" if transfer == "HARDWARE" else "unorm8"
-        with targets.Target(ctx, (w, h), display_kind, depth=False) as display:
-            display.use()
-            hdr.color.use(0)
-            _set(resolve, "u_hdr", 0)
-            _set(resolve, "u_exposure_ev", scene.render.exposure)
-            vao = ctx.vertex_array(resolve, [])
-            vao.render(moderngl.TRIANGLES, vertices=3)
-            vao.release()
-            srgb8 = display.read()
-            ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
+                defines = dict(base_defines, **material_defines(material))
+                blended = material.alpha_mode in _BLEND
+                if blended:
+                    ctx.enable(moderngl.BLEND)
+                    ctx.blend_func = _BLEND[material.alpha_mode]
+                    hdr.fbo.depth_mask = False
+                else:
+                    ctx.disable(moderngl.BLEND)
+                    hdr.fbo.depth_mask = True
+                if obj.sphere is not None:
+                    _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo, cube_ibo)
+                else:
+                    _draw_mesh(ctx, obj, material, defines, scene, frame, resources)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            hdr.fbo.depth_mask = True
+            linear = hdr.read()
+            srgb8 = _resolve(ctx, hdr, scene, transfer)
+    finally:
+        resources.release()
+        cube_vbo.release()
+        cube_ibo.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx))
+
+
+def _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo, cube_ibo):
+    """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
+    program = program_from_templates(ctx, "sphere.vert", "sphere.frag", defines, material.surface)
+    resources.bind(program, scene, frame, material)
+    centre, radius = obj.sphere
+    _set(program, "u_sphere", (*centre, radius))
+    inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
+    _set(program, "u_fullscreen", inside)
+    if inside:
+        ctx.disable(moderngl.CULL_FACE)
+    else:
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = "front"
+    vao = ctx.vertex_array(program, [(cube_vbo, "3f", "in_position")], index_buffer=cube_ibo)
+    vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
+    vao.release()
+
+
+def _draw_mesh(ctx, obj, material, defines, scene, frame, resources):
+    program = program_from_templates(ctx, "mesh.vert", "mesh.frag", defines, material.surface)
+    resources.bind(program, scene, frame, material)
+    _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
+    normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
+    _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
+    if material.alpha_mode in _BLEND:
+        ctx.disable(moderngl.CULL_FACE)  # see-through: back faces show
+    else:
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = "back"
+    vao, buffers = meshes.vertex_array(ctx, program, obj)
+    vao.render(moderngl.TRIANGLES)
+    for resource in [vao, *buffers]:
+        resource.release()
+
+
+def _resolve(ctx, hdr, scene, transfer):
+    """Exposure + tonemap, then the display encode (hardware sRGB or a DIY curve)."""
+    resolve = program_from_templates(ctx, "fullscreen.vert", "resolve.frag", {
+        "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
+        "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{transfer}"})
+    display_kind = "srgb8" if transfer == "HARDWARE" else "unorm8"
+    with targets.Target(ctx, hdr.size, display_kind, depth=False) as display:
+        display.use()
+        hdr.color.use(0)
+        _set(resolve, "u_hdr", 0)
+        _set(resolve, "u_exposure_ev", scene.render.exposure)
+        vao = ctx.vertex_array(resolve, [])
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        vao.release()
+        srgb8 = display.read()
+        ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
+    return srgb8

@@ -42,11 +42,15 @@ BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR
               "specular_f": _shading.SPECULAR_F, "diffuse": _shading.DIFFUSE}
 
 TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
-QUALITIES = ("high",)  # tiers arrive with the surface API (issue 4)
+QUALITIES = ("high", "low")  # PBR_QUALITY_HIGH / PBR_QUALITY_LOW (pbr/shading/dispatch.glsl)
+ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
-TEXTURE_SLOTS = {  # slot -> colour (sRGB-decoded on sampling) or linear data
+TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data
     "albedo": "srgb",
     "metallic_smoothness": "linear",  # Unity's packing: R = metallic, A = smoothness
+    "normal": "linear",               # tangent space, RGB = xyz * 0.5 + 0.5
+    "emission": "srgb",
+    "occlusion": "linear",
 }
 
 
@@ -90,7 +94,11 @@ class Material:
     occlusion: float = 1.0
     alpha: float = 1.0
     textures: dict[str, Path] = field(default_factory=dict)
+    texture_srgb: dict[str, bool] = field(default_factory=dict)  # per texture: decode sRGB?
     brdf: dict[str, str] = field(default_factory=dict)  # e.g. {"specular_d": "BECKMANN"}
+    alpha_mode: str = "opaque"
+    alpha_cutoff: float = 0.5
+    surface: Path | None = None  # a GLSL file defining surf(Input, inout SurfaceOutput...)
 
 
 @dataclass
@@ -107,6 +115,7 @@ class RenderSettings:
     quality: str = "high"
     tonemap: str = "none"
     exposure: float = 0.0
+    energy_compensation: bool = True  # PBR_ENERGY_COMPENSATION
 
 
 @dataclass
@@ -269,11 +278,29 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.emission = r.vector("emission", default=[0, 0, 0], lo=0.0)
     m.occlusion = r.number("occlusion", default=1.0, lo=0.0, hi=1.0)
     m.alpha = r.number("alpha", default=1.0, lo=0.0, hi=1.0)
+    m.alpha_mode = r.choice("alpha_mode", ALPHA_MODES, default="opaque")
+    m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
+    if r.has("surface"):
+        m.surface = r.file("surface", base)
     textures = r.child("textures", {})
-    for slot in list(textures.data):
-        if slot not in TEXTURE_SLOTS:
-            textures.fail(f"unknown texture slot; use one of {', '.join(TEXTURE_SLOTS)}", slot)
-        m.textures[slot] = textures.file(slot, base)
+    for name in list(textures.data):
+        value = textures.data[name]
+        if m.surface is None and name not in TEXTURE_SLOTS:
+            textures.fail(f"unknown texture slot; use one of {', '.join(TEXTURE_SLOTS)} "
+                          "(or give the material a surface file declaring its own samplers)", name)
+        if isinstance(value, dict):  # {"path": ..., "srgb": true|false}
+            t = textures.child(name)
+            m.textures[name] = t.file("path", base)
+            srgb = t.raw("srgb")
+            if not isinstance(srgb, bool):
+                t.fail("expected true (colour, sRGB-encoded) or false (linear data)", "srgb")
+            m.texture_srgb[name] = srgb
+            t.finish()
+        elif name in TEXTURE_SLOTS:
+            m.textures[name] = textures.file(name, base)
+            m.texture_srgb[name] = TEXTURE_SLOTS[name] == "srgb"
+        else:
+            textures.fail('a surface file\'s texture needs {"path": ..., "srgb": true|false}', name)
     textures.finish()
     brdf = r.child("brdf", {})
     for term in list(brdf.data):
@@ -360,7 +387,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     rs = top.child("render", {})
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),
-                            exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0))
+                            exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0),
+                            energy_compensation=rs.choice("energy_compensation", (True, False), default=True))
     rs.finish()
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin)

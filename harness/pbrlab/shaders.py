@@ -1,9 +1,10 @@
 """GLSL source assembly: ``#include`` resolution, ``#line`` bookkeeping, error mapping.
 
 ``#include "pbr/brdf/d_ggx.glsl"`` is resolved against the include path: the caller's
-directories first, then the library root ``glsl/``. Every file is expanded where it is
-included (the library files guard themselves against double inclusion, so a second
-include costs nothing); a file that includes itself, directly or not, is an error.
+directories first, then the library root ``glsl/``. A file is expanded where it is
+included; a file wrapped in its own include guard is expanded once when its first
+inclusion was outside any ``#if`` (a second copy would preprocess to nothing), so the
+compiler reads each library file once. A file that includes itself is an error.
 
 Each expanded file k gets a GLSL source-string number k and its lines are numbered
 from ``k * LINE_BLOCK``, both announced with ``#line``. The file is recovered from the
@@ -32,6 +33,14 @@ LINE_BLOCK = 100000  # lines per file in the #line numbering; files are far shor
 
 _INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*(//.*)?$')
 _VERSION = re.compile(r"^\s*#\s*version\b")
+_IF = re.compile(r"^\s*#\s*if(n?def)?\b")
+_ENDIF = re.compile(r"^\s*#\s*endif\b")
+_GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*ifndef\s+(\w+)\s*\n\s*#\s*define\s+\1\b.*#\s*endif[^\n]*\s*\Z", re.S)
+
+
+def _is_guarded(text: str) -> bool:
+    """True when the whole file sits inside its own #ifndef/#define/#endif guard."""
+    return _GUARD.match(text) is not None
 # Mesa: "0:12(5): error: ...";  glslang: "ERROR: 0:12: ..."
 _MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(error|warning)?:?\s*(.*)$")
 
@@ -88,6 +97,9 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
     """
     search = include_path(include_dirs)
     source = Source("", [])
+    # A guarded file included once outside any #if is written once: a second copy would
+    # be empty after preprocessing. Includes inside conditionals are always expanded.
+    emitted_guarded: set[Path] = set()
     lines_out: list[str] = []
     version_line: list[str] = []
 
@@ -95,11 +107,16 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
         if line_directives:
             lines_out.append(f"#line {file_index * LINE_BLOCK + next_line} {file_index}")
 
-    def walk(body: str, display: str, stack: tuple[Path, ...]):
+    def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool):
         file_index = len(source.files)
         source.files.append(display)
         emit_line_marker(file_index, 1)
+        depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
         for number, line in enumerate(body.splitlines(), start=1):
+            if _IF.match(line):
+                depth += 1
+            elif _ENDIF.match(line):
+                depth -= 1
             if _VERSION.match(line):
                 if not version_line and not stack[:-1]:
                     version_line.append(line.strip())
@@ -120,15 +137,22 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             if target in stack:
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
+            body = target.read_text(encoding="utf-8")
+            inside_conditional = conditional or depth > 0
+            if target in emitted_guarded:
+                lines_out.append(f"// ---- {m.group(1)}: already above (include guard)")
+                continue
+            if _is_guarded(body) and not inside_conditional:
+                emitted_guarded.add(target)
             if not line_directives:
                 lines_out.append(f"// ---- begin {m.group(1)}")
-            walk(target.read_text(encoding="utf-8"), _display_name(target), stack + (target,))
+            walk(body, _display_name(target), stack + (target,), inside_conditional)
             if line_directives:
                 emit_line_marker(file_index, number + 1)
             else:
                 lines_out.append(f"// ---- end {m.group(1)}")
 
-    walk(text, name, (Path("<entry>"),))
+    walk(text, name, (Path("<entry>"),), False)
     head = version_line or []
     source.text = "\n".join(head + lines_out) + "\n"
     return source

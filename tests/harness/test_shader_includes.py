@@ -95,3 +95,13 @@ def test_amalgamate_missing_entry_is_a_clear_error(tmp_path, capsys):
     assert cli.main(["amalgamate", str(tmp_path / "nope.glsl"), "-o", str(tmp_path / "x.glsl")]) == 2
     assert "no such file" in capsys.readouterr().err
     assert not (tmp_path / "x.glsl").exists()
+
+
+def test_guarded_file_is_expanded_once_unless_first_included_conditionally(tmp_path):
+    (tmp_path / "g.glsl").write_text("#ifndef G_GLSL\n#define G_GLSL\nfloat g() { return 1.0; }\n#endif\n")
+    once = shaders.expand('#include "g.glsl"\n#include "g.glsl"\n', "e", include_dirs=[tmp_path]).text
+    assert once.count("float g()") == 1
+    # first inclusion inside a conditional that may be false: the later one must stay
+    conditional = shaders.expand('#ifdef NEVER\n#include "g.glsl"\n#endif\n#include "g.glsl"\n',
+                                 "e", include_dirs=[tmp_path]).text
+    assert conditional.count("float g()") == 2

@@ -45,6 +45,13 @@ def cosines(n: int = 2049) -> np.ndarray:
     return np.unique(np.concatenate([uniform, near_one, near_zero]).astype(np.float32)).astype(np.float64)
 
 
+def v_cosines(n: int = 257) -> np.ndarray:
+    """Cosines where the V terms are unguarded, [PBR_MIN_NDOTV, 1]: every V clamps NdotL
+    and NdotV below 1e-4 (guards.glsl; the guard itself is tested in tests/hardcases)."""
+    c = cosines(n)
+    return c[c >= shading.MIN_NDOTV]
+
+
 def alphas(n: int = 33) -> np.ndarray:
     """alpha from the shading model's minimum to 1, log-spaced (float32-exact)."""
     return np.geomspace(MIN_ALPHA, 1.0, n).astype(np.float32).astype(np.float64)
@@ -146,5 +153,5 @@ def phi_quadrature(count: int = 96):
 
 
 __all__ = ["F32_EPS", "RTOL_WELL_CONDITIONED", "MIN_ALPHA", "assert_close", "record", "cosines",
-           "alphas", "perceptual_roughnesses", "grid", "as_f32", "unit_vectors", "evaluate", "vec3",
+           "alphas", "v_cosines", "perceptual_roughnesses", "grid", "as_f32", "unit_vectors", "evaluate", "vec3",
            "theta_quadrature", "phi_quadrature", "remap"]

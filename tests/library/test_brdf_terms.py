@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from library_helpers import (seeded_rng, F32_EPS, MIN_ALPHA, RTOL_WELL_CONDITIONED, alphas, as_f32, assert_close,
-                             cosines, evaluate, grid, perceptual_roughnesses, unit_vectors, vec3)
+                             cosines, evaluate, grid, perceptual_roughnesses, unit_vectors, v_cosines, vec3)
 from pbrlab.reference import brdf, remap
 
 # Blinn-Phong exponents: the Call of Duty range 1..8192 plus the exponents the shading
@@ -58,7 +58,9 @@ def test_BRDF_BlinnPhong_matches_reference(name):
 
 
 def test_BRDF_BlinnPhongClassic_matches_reference():
-    NdotH, NdotL, s = grid(cosines(257), np.concatenate([[-0.5, 0.0], cosines(33)[1:]]), SPEC_POWERS[::4])
+    # NdotL <= 0 (the 0 branch) and NdotL >= PBR_MIN_NDOTV: below 1e-4 the classic form
+    # divides by the floor instead (guards.glsl; tested in tests/hardcases)
+    NdotH, NdotL, s = grid(cosines(257), np.concatenate([[-0.5, 0.0], v_cosines(33)]), SPEC_POWERS[::4])
     got = evaluate("pbr_BRDF_BlinnPhongClassic(NdotH, NdotL, s)", NdotH=NdotH, NdotL=NdotL, s=s)
     ref = brdf.BRDF_BlinnPhongClassic(NdotH, NdotL, s)
     assert_close("pbr_BRDF_BlinnPhongClassic", got, ref, rtol=pow_rtol(NdotH, s), atol=1e-30)
@@ -137,7 +139,7 @@ def test_G1_SmithGGX_matches_reference():
 
 @pytest.mark.parametrize("term", ["G_SmithGGX", "V_SmithGGX", "V_SmithGGXCorrelated", "V_SmithGGXCorrelatedFast"])
 def test_smith_GGX_terms_match_reference(term):
-    c = cosines(257)[1:]  # NdotL, NdotV > 0: the references divide by the cosines
+    c = v_cosines(257)  # the unguarded domain of V, NdotL, NdotV >= PBR_MIN_NDOTV
     NdotL, NdotV, alpha = grid(c, c, alphas(17))
     got = evaluate(f"pbr_{term}(NdotL, NdotV, alpha)", NdotL=NdotL, NdotV=NdotV, alpha=alpha)
     ref = getattr(brdf, term)(NdotL, NdotV, alpha)
@@ -147,7 +149,7 @@ def test_smith_GGX_terms_match_reference(term):
 def test_V_SmithGGXCorrelated_is_G2_over_4_NdotL_NdotV():
     """The GLSL's rearranged form equals Heitz's G2 / (4 NdotL NdotV) (same check as above,
     from the other side: G2 recovered from the GPU value stays in [0, 1])."""
-    c = cosines(257)[1:]
+    c = v_cosines(257)
     NdotL, NdotV, alpha = grid(c, c, alphas(17))
     V = evaluate("pbr_V_SmithGGXCorrelated(NdotL, NdotV, alpha)", NdotL=NdotL, NdotV=NdotV, alpha=alpha)
     G2 = V * 4.0 * NdotL * NdotV
@@ -175,7 +177,7 @@ def test_G1_SchlickGGX_matches_reference(term):
 
 @pytest.mark.parametrize("term", ["G_SchlickGGX", "V_SchlickGGX"])
 def test_SchlickGGX_terms_match_reference(term):
-    c = cosines(257)
+    c = v_cosines(257) if term.startswith("V") else cosines(257)  # V: unguarded domain
     k = np.concatenate([alphas(9) / 2, brdf.k_SchlickGGX_hotness(perceptual_roughnesses(5))])
     NdotL, NdotV, k = grid(c, c, k)
     got = evaluate(f"pbr_{term}(NdotL, NdotV, k)", NdotL=NdotL, NdotV=NdotV, k=k)

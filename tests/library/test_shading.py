@@ -102,12 +102,18 @@ def test_shade_punctual_variant_matches_reference(scene, selector, value):
 
 
 def test_quality_tier_selects_visibility_and_explicit_selector_wins(scene):
+    """LOW = fast V + the half-safe roughness floor (0.089) + the D·V cap at 65504
+    (dispatch.glsl): identical to HIGH with the fast V wherever those two guards are idle."""
     subset = {k: v[:5_000] for k, v in scene.items()}
     low = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW"})
     fast = gpu_shade(subset, shading.glsl_defines(specular_v="SMITH_GGX_CORRELATED_FAST"))
-    np.testing.assert_array_equal(low, fast)
+    rough = subset["roughness"] >= shading.MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
+    np.testing.assert_array_equal(low[rough], fast[rough])
+    assert not np.array_equal(low[~rough], fast[~rough])  # the LOW floor acts below 0.089
+    check_against_reference("pbr_shade_punctual quality=LOW", subset, quality="LOW")
     explicit = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW", **shading.glsl_defines(specular_v="KELEMEN")})
-    np.testing.assert_array_equal(explicit, gpu_shade(subset, shading.glsl_defines(specular_v="KELEMEN")))
+    kelemen = gpu_shade(subset, shading.glsl_defines(specular_v="KELEMEN"))
+    np.testing.assert_array_equal(explicit[rough], kelemen[rough])  # the tier's floor still applies
     assert not np.array_equal(low, gpu_shade(subset))
 
 

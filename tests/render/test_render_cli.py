@@ -1,6 +1,7 @@
 """`pbrlab render` and `pbrlab demo`: outputs, atomic writes, and clear errors."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -79,9 +80,9 @@ def test_render_names_the_bad_scene_field(tmp_path, capsys):
 def test_demo_writes_every_chart_and_matches_goldens(tmp_path, capsys):
     assert cli.main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
-    for chart in CHARTS:
-        assert (tmp_path / f"{chart}.png").is_file() and (tmp_path / f"{chart}.exr").is_file()
-        assert f"matches goldens/{chart}" in out
+    for name in [*CHARTS, "lit_scene_high"]:
+        assert (tmp_path / f"{name}.png").is_file() and (tmp_path / f"{name}.exr").is_file()
+        assert f"matches goldens/{name}" in out
 
 
 def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
@@ -91,12 +92,16 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     from pbrlab.render import render_scene
     from pbrlab.scene import parse_scene
 
+    import shutil
     for chart, build in CHARTS.items():
         rendering = render_scene(parse_scene(build()))
         linear = rendering.linear.copy()
         if chart == "chart_f0":
             linear[10, 10, 0] += 0.01  # one changed pixel
         store.check_golden(chart, linear, rendering.srgb8, update=True, root=goldens)
+    repo_goldens = Path(__file__).resolve().parents[2] / "goldens"
+    for suffix in (".exr", ".png", ".json"):
+        shutil.copy(repo_goldens / f"lit_scene_high{suffix}", goldens)
     assert cli.main(["demo", "--out", str(tmp_path / "out"), "--goldens", str(goldens)]) == 1
     out = capsys.readouterr().out
     assert "chart_f0" in out and "DIFFERS" in out and "1 differ" in out
@@ -111,3 +116,18 @@ def test_readme_example_scene_renders_finite(tmp_path):
     linear = read_image(exr)
     assert np.isfinite(linear).all() and (linear[..., :3] >= 0).all()
     assert (linear[..., 3] > 0).mean() > 0.5  # spheres, torus and floor cover most of it
+
+
+def test_error_in_a_surface_file_is_reported_at_its_line(tmp_path, capsys):
+    (tmp_path / "bad_surface.glsl").write_text(
+        "void surf(Input IN, inout SurfaceOutputStandard o) {\n"
+        "    o.Albedo = vec3(1.0);\n"
+        "    o.Smoothness = undeclared_gloss;\n"
+        "}\n")
+    scene = dict(LIT_SPHERE)
+    scene["materials"] = {"m": {"surface": "bad_surface.glsl"}}
+    (tmp_path / "s.json").write_text(json.dumps(scene))
+    assert cli.main(["render", str(tmp_path / "s.json"), "-o", str(tmp_path / "x.png")]) == 2
+    err = capsys.readouterr().err
+    assert "bad_surface.glsl:3:" in err and "undeclared_gloss" in err
+    assert not (tmp_path / "x.png").exists()

@@ -20,22 +20,33 @@
 //               "Real-Time Rendering" 3rd ed., eq. 7.49; the (s+8)/8 factor is an
 //               approximation of the exact normalisation; its directional albedo is
 //               measured by the white-furnace test (tests/library/test_brdf_properties.py).
-// NdotH in [0, 1], specPower > 0 (pow(0, 0) is undefined in GLSL).
+// Guards (pbr/common/guards.glsl): NdotH saturated, specPower >= 0, pow through
+// pbr_pow_safe (0^0 = 1); the classic form divides by max(NdotL, PBR_MIN_NDOTV) (its 1/NdotL
+// would be 1/denormal at grazing; the lit value pow · NdotL / max(NdotL, 1e-4) still goes
+// to 0 with NdotL). Bit-identical for NdotH in [2^-126, 1], specPower >= 0, NdotL >= 1e-4.
 #ifndef PBR_BRDF_BLINN_PHONG_GLSL
 #define PBR_BRDF_BLINN_PHONG_GLSL
 
 #include "pbr/common/constants.glsl"
+#include "pbr/common/guards.glsl"
+
+// NdotH^s with the guards above.
+float pbr_blinn_phong_lobe(float NdotH, float specPower) {
+    return pbr_pow_safe(pbr_saturate(NdotH), max(specPower, 0.0));
+}
 
 float pbr_BRDF_BlinnPhongClassic(float NdotH, float NdotL, float specPower) {
-    return NdotL > 0.0 ? PBR_INV_PI * pow(NdotH, specPower) / NdotL : 0.0;
+    return NdotL > 0.0
+        ? PBR_INV_PI * pbr_blinn_phong_lobe(NdotH, specPower) / max(NdotL, PBR_MIN_NDOTV)
+        : 0.0;
 }
 
 float pbr_BRDF_BlinnPhongModified(float NdotH, float specPower) {
-    return PBR_INV_PI * pow(NdotH, specPower);
+    return PBR_INV_PI * pbr_blinn_phong_lobe(NdotH, specPower);
 }
 
 float pbr_BRDF_BlinnPhongNormalized(float NdotH, float specPower) {
-    return (specPower + 8.0) / (8.0 * PBR_PI) * pow(NdotH, specPower);
+    return (max(specPower, 0.0) + 8.0) / (8.0 * PBR_PI) * pbr_blinn_phong_lobe(NdotH, specPower);
 }
 
 #endif // PBR_BRDF_BLINN_PHONG_GLSL

@@ -1,6 +1,8 @@
 // pbr/brdf/d_beckmann.glsl: the Beckmann normal distribution.
 //
 // Provides: float pbr_D_Beckmann(float NdotH, float alpha)
+//           float pbr_D_Beckmann_fromOneMinusNdotH2(float NdotH, float oneMinusNdotH2, float alpha)
+//           PBR_BECKMANN_MIN_NDOTH
 // Include:  "pbr/brdf/d_beckmann.glsl" (path relative to glsl/)
 // Config macros read: none.
 //
@@ -9,8 +11,10 @@
 //   D_B = exp(-tan²θ / alpha²) / (π alpha² cos⁴θ),  cos θ = NdotH,
 //       = exp((NdotH² - 1) / (alpha² NdotH²)) / (π alpha² NdotH⁴).
 // tan²θ·cos²θ = 1 - NdotH² is computed as (1 - NdotH)(1 + NdotH) (exact cancellation, see
-// d_ggx.glsl). At NdotH = 0 the formula is 0/0 while the limit is 0: returned as 0 (the
-// limit, not a clamp). alpha here is the Beckmann RMS slope; using the GGX alpha gives a
+// d_ggx.glsl; the fromOneMinusNdotH2 form takes |n × h|² like D_GGX). Guards: NdotH is
+// saturated and alpha clamped to [PBR_MIN_ALPHA, 1] (as D_GGX); below
+// PBR_BECKMANN_MIN_NDOTH the result is 0 (at NdotH = 0 the formula is 0/0 while the limit
+// is 0, and NdotH² underflows long before). alpha here is the Beckmann RMS slope; using the GGX alpha gives a
 // similar highlight for small alpha (Walter 2007 §5.2). Domain NdotH in [0, 1],
 // alpha in (0, 1]. Normalised (tested by quadrature). float32: exp(x) carries a relative
 // error ~ |x| · 2^-24 from the rounding of its argument x = -tan²θ/alpha².
@@ -18,13 +22,24 @@
 #define PBR_BRDF_D_BECKMANN_GLSL
 
 #include "pbr/common/constants.glsl"
+#include "pbr/common/guards.glsl"
+
+// NdotH below which D_Beckmann returns 0: for alpha <= 1, exp(-tan²θ/alpha²) < e^-99 there,
+// below float32's smallest normal (e^-87.3), and D < e^-99 / (π · 0.1⁴) = 3.2e-40 1/sr.
+// Cost: an absolute error below 3.2e-40 1/sr (a float32 denormal).
+#define PBR_BECKMANN_MIN_NDOTH 0.1
+
+float pbr_D_Beckmann_fromOneMinusNdotH2(float NdotH, float oneMinusNdotH2, float alpha) {
+    if (!(NdotH >= PBR_BECKMANN_MIN_NDOTH)) return 0.0;
+    alpha = clamp(alpha, PBR_MIN_ALPHA, 1.0);
+    float a2 = alpha * alpha;
+    float NdotH2 = min(NdotH * NdotH, 1.0);
+    return exp(-oneMinusNdotH2 / (a2 * NdotH2)) / (PBR_PI * a2 * NdotH2 * NdotH2);
+}
 
 float pbr_D_Beckmann(float NdotH, float alpha) {
-    if (NdotH <= 0.0) return 0.0;
-    float a2 = alpha * alpha;
-    float NdotH2 = NdotH * NdotH;
-    float oneMinusNdotH2 = (1.0 - NdotH) * (1.0 + NdotH);
-    return exp(-oneMinusNdotH2 / (a2 * NdotH2)) / (PBR_PI * a2 * NdotH2 * NdotH2);
+    NdotH = pbr_saturate(NdotH);
+    return pbr_D_Beckmann_fromOneMinusNdotH2(NdotH, (1.0 - NdotH) * (1.0 + NdotH), alpha);
 }
 
 #endif // PBR_BRDF_D_BECKMANN_GLSL

@@ -10,13 +10,17 @@
 // Use pbr_specPower_from_alpha (pbr/material/remap.glsl) to match a GGX/Beckmann alpha.
 // NdotH in [0, 1], specPower > 0. pow(x, s) with s up to 8192 (Call of Duty range) loses
 // relative accuracy ~ s · 2^-24 · |log x| on GPUs that implement pow as exp2(s · log2 x).
+// Guards: NdotH saturated, specPower >= 0, pow through pbr_pow_safe (0^0 = 1: power 0 is
+// the uniform lobe 1/π); bit-identical on NdotH in [2^-126, 1], specPower >= 0.
 #ifndef PBR_BRDF_D_BLINN_PHONG_GLSL
 #define PBR_BRDF_D_BLINN_PHONG_GLSL
 
 #include "pbr/common/constants.glsl"
+#include "pbr/common/guards.glsl"
 
 float pbr_D_BlinnPhong(float NdotH, float specPower) {
-    return (specPower + 2.0) * (0.5 * PBR_INV_PI) * pow(NdotH, specPower);
+    specPower = max(specPower, 0.0);
+    return (specPower + 2.0) * (0.5 * PBR_INV_PI) * pbr_pow_safe(pbr_saturate(NdotH), specPower);
 }
 
 #endif // PBR_BRDF_D_BLINN_PHONG_GLSL

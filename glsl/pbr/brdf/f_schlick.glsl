@@ -22,6 +22,8 @@
 // 0.00377 · (1 - F0), at VdotH = 0.0554 (float64, 1e5 samples); exact at VdotH = 0.
 // Bound PBR_F_SCHLICK_SG_MAX_ABS_ERROR, checked on the GPU by
 // tests/library/test_brdf_terms.py::test_F_SchlickSG_error_bound.
+// Guard: VdotH is saturated in every form (VdotH slightly above 1 from rounding would make
+// (1 - VdotH)^5 negative and F < F0, below 0 for F0 = 0); bit-identical on [0, 1].
 #ifndef PBR_BRDF_F_SCHLICK_GLSL
 #define PBR_BRDF_F_SCHLICK_GLSL
 
@@ -32,18 +34,19 @@
 #define PBR_F_SCHLICK_SG_MAX_ABS_ERROR 0.0038  // bound on |SG - Schlick|, see above
 
 float pbr_F_Schlick(float f0, float VdotH) {
-    return f0 + (1.0 - f0) * pbr_pow5(1.0 - VdotH);
+    return f0 + (1.0 - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
 vec3 pbr_F_Schlick(vec3 f0, float VdotH) {
-    return f0 + (vec3(1.0) - f0) * pbr_pow5(1.0 - VdotH);
+    return f0 + (vec3(1.0) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
 vec3 pbr_F_Schlick(vec3 f0, float f90, float VdotH) {
-    return f0 + (vec3(f90) - f0) * pbr_pow5(1.0 - VdotH);
+    return f0 + (vec3(f90) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
 vec3 pbr_F_SchlickSG(vec3 f0, float VdotH) {
+    VdotH = pbr_saturate(VdotH);
     float w = exp2((PBR_F_SCHLICK_SG_A * VdotH + PBR_F_SCHLICK_SG_B) * VdotH);
     return f0 + (vec3(1.0) - f0) * w;
 }

@@ -11,6 +11,8 @@
 // colour. Reciprocal (symmetric in NdotL, NdotV; LdotH == VdotH). Not energy conserving
 // by design (retro-reflection lifts grazing albedo above 1 for rough surfaces, Burley
 // 2012 §5.3); the white-furnace test reports it rather than asserting <= 1.
+// Guard: the three cosines and perceptualRoughness are saturated, so Fd stays in
+// [0.25/π, 6.25/π] whatever the normal; bit-identical on [0, 1].
 #ifndef PBR_BRDF_FD_BURLEY_GLSL
 #define PBR_BRDF_FD_BURLEY_GLSL
 
@@ -20,9 +22,10 @@
 #define PBR_BURLEY_FD90_BASE 0.5  // F_D90 at roughness 0 or LdotH = 0 (Burley 2012 §5.3)
 
 float pbr_Fd_Burley(float NdotV, float NdotL, float LdotH, float perceptualRoughness) {
-    float fd90 = PBR_BURLEY_FD90_BASE + 2.0 * perceptualRoughness * LdotH * LdotH;
-    float lightScatter = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - NdotL);
-    float viewScatter  = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - NdotV);
+    LdotH = pbr_saturate(LdotH);
+    float fd90 = PBR_BURLEY_FD90_BASE + 2.0 * pbr_saturate(perceptualRoughness) * LdotH * LdotH;
+    float lightScatter = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - pbr_saturate(NdotL));
+    float viewScatter  = 1.0 + (fd90 - 1.0) * pbr_pow5(1.0 - pbr_saturate(NdotV));
     return lightScatter * viewScatter * PBR_INV_PI;
 }
 

@@ -9,16 +9,22 @@
 // Computer Graphics", ACM ToG 1(1), the geometrical attenuation factor G:
 //   G_CT = min(1, 2 NdotH NdotV / VdotH, 2 NdotH NdotL / LdotH),  LdotH == VdotH.
 // V_CookTorrance = G_CT / (4 NdotL NdotV) (the visibility convention). Domain: cosines in
-// (0, 1]; VdotH = 0 cannot occur for a half vector of two directions above the surface.
+// (0, 1]. Guards (pbr/common/guards.glsl): cosines saturated, VdotH floored at
+// PBR_MIN_VDOTH (VdotH -> 0 only as l -> -v), V's NdotL, NdotV floored at PBR_MIN_NDOTV.
+// Bit-identical for cosines in [0, 1], VdotH >= 5e-7 (G) and NdotL, NdotV >= 1e-4 (V).
 #ifndef PBR_BRDF_G_COOK_TORRANCE_GLSL
 #define PBR_BRDF_G_COOK_TORRANCE_GLSL
 
+#include "pbr/common/guards.glsl"
+
 float pbr_G_CookTorrance(float NdotL, float NdotV, float NdotH, float VdotH) {
-    return min(1.0, 2.0 * NdotH * min(NdotV, NdotL) / VdotH);
+    float VdotHSafe = clamp(VdotH, PBR_MIN_VDOTH, 1.0);
+    return min(1.0, 2.0 * pbr_saturate(NdotH) * pbr_saturate(min(NdotV, NdotL)) / VdotHSafe);
 }
 
 float pbr_V_CookTorrance(float NdotL, float NdotV, float NdotH, float VdotH) {
-    return pbr_G_CookTorrance(NdotL, NdotV, NdotH, VdotH) / (4.0 * NdotL * NdotV);
+    return pbr_G_CookTorrance(NdotL, NdotV, NdotH, VdotH)
+         / (4.0 * clamp(NdotL, PBR_MIN_NDOTV, 1.0) * clamp(NdotV, PBR_MIN_NDOTV, 1.0));
 }
 
 #endif // PBR_BRDF_G_COOK_TORRANCE_GLSL

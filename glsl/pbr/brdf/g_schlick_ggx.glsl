@@ -17,11 +17,19 @@
 // (Burley 2012 §5.6; Karis 2013 p. 3).
 // pbr_V_SchlickGGX = G / (4 NdotL NdotV) = 1 / (4 (NdotL(1-k)+k)(NdotV(1-k)+k)), finite as
 // the cosines go to 0 when k > 0. Domain: cosines in [0, 1], k in (0, 1].
+// Guards (pbr/common/guards.glsl): cosines saturated, k clamped to [PBR_MIN_ALPHA / 2, 1]
+// (k = alpha/2; k = 0 with NdotX = 0 is 0/0), V's cosines floored at PBR_MIN_NDOTV like
+// every V. G1 is capped at 1: near NdotX = 1 the division rounds up to 1 + 1 ulp (found by
+// the sweep). Bit-identical otherwise for cosines in [0, 1] (V: [1e-4, 1]), k in [5e-8, 1].
 #ifndef PBR_BRDF_G_SCHLICK_GGX_GLSL
 #define PBR_BRDF_G_SCHLICK_GGX_GLSL
 
+#include "pbr/common/guards.glsl"
+
 float pbr_G1_SchlickGGX(float NdotX, float k) {
-    return NdotX / (NdotX * (1.0 - k) + k);
+    NdotX = pbr_saturate(NdotX);
+    k = clamp(k, 0.5 * PBR_MIN_ALPHA, 1.0);
+    return min(NdotX / (NdotX * (1.0 - k) + k), 1.0);
 }
 
 float pbr_G_SchlickGGX(float NdotL, float NdotV, float k) {
@@ -29,6 +37,9 @@ float pbr_G_SchlickGGX(float NdotL, float NdotV, float k) {
 }
 
 float pbr_V_SchlickGGX(float NdotL, float NdotV, float k) {
+    NdotL = clamp(NdotL, PBR_MIN_NDOTV, 1.0);
+    NdotV = clamp(NdotV, PBR_MIN_NDOTV, 1.0);
+    k = clamp(k, 0.5 * PBR_MIN_ALPHA, 1.0);
     return 0.25 / ((NdotL * (1.0 - k) + k) * (NdotV * (1.0 - k) + k));
 }
 

@@ -15,18 +15,26 @@
 // pbr_V_SmithGGX = G / (4 NdotL NdotV), the lecture's Viz_GGX-R, written without the
 // cosines so it stays finite as NdotL, NdotV -> 0:
 //   V = 1 / ((NdotV + sqrt(alpha² + (1 - alpha²) NdotV²)) (NdotL + sqrt(...NdotL...))).
-// Domain: cosines in [0, 1], alpha in [0, 1].
+// Domain: cosines in [0, 1], alpha in [0, 1]. Guards (pbr/common/guards.glsl): cosines
+// saturated, alpha clamped to [PBR_MIN_ALPHA, 1] (G1(0, 0) is 0/0; decided 0: no light
+// reaches along the horizon), V's cosines floored at PBR_MIN_NDOTV, G1 capped at 1 against
+// rounding (2c / (c + sqrt(c²)) at alpha -> 0 may round to 1 + 1 ulp). Bit-identical for
+// cosines in [0, 1] (V: [1e-4, 1]) and alpha in [1e-7, 1].
 #ifndef PBR_BRDF_G_SMITH_GGX_GLSL
 #define PBR_BRDF_G_SMITH_GGX_GLSL
 
-// NdotX + sqrt(alpha² + (1 - alpha²) NdotX²): the common denominator of G1 and V.
+#include "pbr/common/guards.glsl"
+
+// NdotX + sqrt(alpha² + (1 - alpha²) NdotX²): the common denominator of G1 and V
+// (NdotX in [0, 1], alpha in [PBR_MIN_ALPHA, 1]: >= 1e-7).
 float pbr_SmithGGX_denominator(float NdotX, float alpha) {
     float a2 = alpha * alpha;
     return NdotX + sqrt(a2 + (1.0 - a2) * NdotX * NdotX);
 }
 
 float pbr_G1_SmithGGX(float NdotX, float alpha) {
-    return 2.0 * NdotX / pbr_SmithGGX_denominator(NdotX, alpha);
+    NdotX = pbr_saturate(NdotX);
+    return min(2.0 * NdotX / pbr_SmithGGX_denominator(NdotX, clamp(alpha, PBR_MIN_ALPHA, 1.0)), 1.0);
 }
 
 float pbr_G_SmithGGX(float NdotL, float NdotV, float alpha) {
@@ -34,7 +42,9 @@ float pbr_G_SmithGGX(float NdotL, float NdotV, float alpha) {
 }
 
 float pbr_V_SmithGGX(float NdotL, float NdotV, float alpha) {
-    return 1.0 / (pbr_SmithGGX_denominator(NdotV, alpha) * pbr_SmithGGX_denominator(NdotL, alpha));
+    alpha = clamp(alpha, PBR_MIN_ALPHA, 1.0);
+    return 1.0 / (pbr_SmithGGX_denominator(clamp(NdotV, PBR_MIN_NDOTV, 1.0), alpha)
+                * pbr_SmithGGX_denominator(clamp(NdotL, PBR_MIN_NDOTV, 1.0), alpha));
 }
 
 #endif // PBR_BRDF_G_SMITH_GGX_GLSL

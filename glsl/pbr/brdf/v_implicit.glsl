@@ -14,10 +14,14 @@
 // energy it receives (tests/library/test_brdf_properties.py). We keep the visibility
 // convention V = G / (4 NdotL NdotV) of every other term and Hoffman's G, hence 1/4;
 // the lecture's Viz_I = 1 equals 4 · pbr_V_Implicit().
+// Guard: G's cosines are saturated (G stays in [0, 1] for unnormalised or back-facing
+// normals); bit-identical on [0, 1].
 #ifndef PBR_BRDF_V_IMPLICIT_GLSL
 #define PBR_BRDF_V_IMPLICIT_GLSL
 
-float pbr_G_Implicit(float NdotL, float NdotV) { return NdotL * NdotV; }
+#include "pbr/common/math.glsl"
+
+float pbr_G_Implicit(float NdotL, float NdotV) { return pbr_saturate(NdotL) * pbr_saturate(NdotV); }
 
 float pbr_V_Implicit() { return 0.25; }
 

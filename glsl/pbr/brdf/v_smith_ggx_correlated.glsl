@@ -22,14 +22,22 @@
 // scipy; the GPU is checked against PBR_V_SMITH_GGX_CORRELATED_FAST_MAX_REL_ERROR by
 // tests/library/test_brdf_terms.py::test_V_SmithGGXCorrelatedFast_error_bound). Away from
 // grazing it is closer but not close: 13 % for cosines >= 0.5, 5 % for cosines >= 0.8. Domain: cosines in (0, 1], alpha in (0, 1].
+// Guards (pbr/common/guards.glsl): both cosines clamped to [PBR_MIN_NDOTV, 1] (at
+// NdotL = NdotV = 0 both forms are 0.5/0), alpha to [PBR_MIN_ALPHA, 1]; bit-identical for
+// cosines in [1e-4, 1] and alpha in [1e-7, 1].
 #ifndef PBR_BRDF_V_SMITH_GGX_CORRELATED_GLSL
 #define PBR_BRDF_V_SMITH_GGX_CORRELATED_GLSL
+
+#include "pbr/common/guards.glsl"
 
 // Bound on the fast form's relative error (measured 0.2922, see above); shared with
 // reference/brdf.py V_SMITH_GGX_CORRELATED_FAST_MAX_REL_ERROR.
 #define PBR_V_SMITH_GGX_CORRELATED_FAST_MAX_REL_ERROR 0.293
 
 float pbr_V_SmithGGXCorrelated(float NdotL, float NdotV, float alpha) {
+    NdotL = clamp(NdotL, PBR_MIN_NDOTV, 1.0);
+    NdotV = clamp(NdotV, PBR_MIN_NDOTV, 1.0);
+    alpha = clamp(alpha, PBR_MIN_ALPHA, 1.0);
     float a2 = alpha * alpha;
     float lambdaV = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2);
     float lambdaL = NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
@@ -37,6 +45,9 @@ float pbr_V_SmithGGXCorrelated(float NdotL, float NdotV, float alpha) {
 }
 
 float pbr_V_SmithGGXCorrelatedFast(float NdotL, float NdotV, float alpha) {
+    NdotL = clamp(NdotL, PBR_MIN_NDOTV, 1.0);
+    NdotV = clamp(NdotV, PBR_MIN_NDOTV, 1.0);
+    alpha = clamp(alpha, PBR_MIN_ALPHA, 1.0);
     float lambdaV = NdotL * (NdotV * (1.0 - alpha) + alpha);
     float lambdaL = NdotV * (NdotL * (1.0 - alpha) + alpha);
     return 0.5 / (lambdaV + lambdaL);

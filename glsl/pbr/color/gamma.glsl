@@ -12,19 +12,22 @@
 // against the exact curve, in 8-bit steps over linear [0, 1] (measured by
 // tests/library/test_color_space.py::test_gamma_approximations_error_reported): pow 1/2.2
 // 9 LSB, sqrt 10 LSB, both in the dark toe where sRGB is a linear segment; the exact DIY
-// path is 0 LSB off the hardware path. Negative inputs are clamped to 0 because pow()
-// and sqrt() are undefined there (GLSL 4.60 §8.2).
+// path is 0 LSB off the hardware path. Guard: inputs pass through pbr_sanitize(c, 1.0)
+// (pbr/common/guards.glsl): NaN and negatives -> 0 (pow() and sqrt() are undefined below 0,
+// GLSL 4.60 §8.2), above 1 and +Inf -> 1, so outputs are in [0, 1]; bit-identical on [0, 1].
 #ifndef PBR_COLOR_GAMMA_GLSL
 #define PBR_COLOR_GAMMA_GLSL
+
+#include "pbr/common/guards.glsl"
 
 // The CRT-era display gamma the lecture uses. Shared with reference/color.py DISPLAY_GAMMA.
 #define PBR_DISPLAY_GAMMA 2.2
 
-vec3 pbr_degamma(vec3 c) { return pow(max(c, vec3(0.0)), vec3(PBR_DISPLAY_GAMMA)); }
-vec3 pbr_regamma(vec3 c) { return pow(max(c, vec3(0.0)), vec3(1.0 / PBR_DISPLAY_GAMMA)); }
+vec3 pbr_degamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), vec3(PBR_DISPLAY_GAMMA)); }
+vec3 pbr_regamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), vec3(1.0 / PBR_DISPLAY_GAMMA)); }
 
 // Gamma 2.0: the cheapest pair; exact inverses of each other.
-vec3 pbr_degamma_fast(vec3 c) { return c * c; }
-vec3 pbr_regamma_fast(vec3 c) { return sqrt(max(c, vec3(0.0))); }
+vec3 pbr_degamma_fast(vec3 c) { c = pbr_sanitize(c, 1.0); return c * c; }
+vec3 pbr_regamma_fast(vec3 c) { return sqrt(pbr_sanitize(c, 1.0)); }
 
 #endif // PBR_COLOR_GAMMA_GLSL

@@ -12,12 +12,16 @@
 //          = 1.055 · linear^(1/2.4) - 0.055        otherwise
 // The two thresholds are the standard's rounded values (the curves meet within 1e-7, not
 // exactly: 0.04045/12.92 = 0.0031308 to 5 digits). Inputs below the threshold, negative
-// ones included, take the linear segment, so pow() never sees a negative base. Values
-// above 1 follow the power segment (HDR-safe). float64 twin:
+// Guard: both curves are defined on [0, 1] (IEC 61966-2-1) and their input is passed
+// through pbr_sanitize(c, 1.0) first (pbr/common/guards.glsl): decided NaN -> 0, negative
+// -> 0, above 1 and +Inf -> 1, so the output is always in [0, 1] (a UNORM target clamps the
+// same way). Bit-identical on [0, 1]. float64 twin:
 // harness/pbrlab/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
 // GL_SRGB8_ALPHA8 textures implement in hardware (the "let the GPU handle it" path).
 #ifndef PBR_COLOR_SRGB_GLSL
 #define PBR_COLOR_SRGB_GLSL
+
+#include "pbr/common/guards.glsl"
 
 #define PBR_SRGB_DECODE_THRESHOLD 0.04045    // IEC 61966-2-1 §5.2, sRGB' breakpoint
 #define PBR_SRGB_ENCODE_THRESHOLD 0.0031308  // IEC 61966-2-1 §5.3, linear breakpoint
@@ -26,6 +30,7 @@
 #define PBR_SRGB_EXPONENT         2.4        // exponent of the power segment
 
 float pbr_srgb_to_linear(float c) {
+    c = pbr_sanitize(c, 1.0);
     return c <= PBR_SRGB_DECODE_THRESHOLD
         ? c / PBR_SRGB_LINEAR_SLOPE
         : pow((c + PBR_SRGB_OFFSET) / (1.0 + PBR_SRGB_OFFSET), PBR_SRGB_EXPONENT);
@@ -36,6 +41,7 @@ vec3 pbr_srgb_to_linear(vec3 c) {
 }
 
 float pbr_linear_to_srgb(float c) {
+    c = pbr_sanitize(c, 1.0);
     return c <= PBR_SRGB_ENCODE_THRESHOLD
         ? c * PBR_SRGB_LINEAR_SLOPE
         : (1.0 + PBR_SRGB_OFFSET) * pow(c, 1.0 / PBR_SRGB_EXPONENT) - PBR_SRGB_OFFSET;

@@ -17,11 +17,15 @@
 //   FAST      DIY with c·c / sqrt(c).
 // Only colour data takes this path; normal maps, roughness, metallic and other data
 // textures are linear already ("When to bypass sRGB sampling").
+// Guard: pbr_encode_final_color returns a value in [0, 1] on every path (HARDWARE included:
+// pbr_sanitize(c, 1.0), which a UNORM/sRGB8 target would apply anyway, but with NaN
+// defined as 0 instead of left to the hardware); bit-identical on [0, 1].
 #ifndef PBR_COLOR_TRANSFER_GLSL
 #define PBR_COLOR_TRANSFER_GLSL
 
 #include "pbr/color/srgb.glsl"
 #include "pbr/color/gamma.glsl"
+#include "pbr/common/guards.glsl"
 
 #define PBR_COLOR_TRANSFER_HARDWARE 0
 #define PBR_COLOR_TRANSFER_SRGB     1
@@ -50,7 +54,7 @@ vec3 pbr_decode_color_texel(vec3 texel) {
 // The final linear colour -> the value written to the colour attachment.
 vec3 pbr_encode_final_color(vec3 linearColor) {
 #if PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_HARDWARE
-    return linearColor;
+    return pbr_sanitize(linearColor, 1.0);
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_SRGB
     return pbr_linear_to_srgb(linearColor);
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_GAMMA22

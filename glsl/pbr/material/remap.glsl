@@ -10,8 +10,16 @@
 // Vocabulary (pbr/common/conventions.glsl §3): smoothness = gloss g (0 rough .. 1 smooth)
 // -> perceptualRoughness = 1 - g -> alpha = perceptualRoughness². The lecture's "gloss" g
 // is the same quantity as Unity's smoothness. float64 twin: reference/remap.py.
+//
+// Guards (pbr/common/guards.glsl): pbr_perceptual_roughness_from_alpha takes sqrt(max(alpha, 0))
+// (sqrt of a negative is undefined); pbr_specPower_from_alpha clamps alpha to
+// [PBR_MIN_ALPHA, 1] (alpha = 0 is 2/0: decided s = 2e14, the power of the narrowest
+// representable lobe; alpha > 1 would give s < 0); pbr_alpha_from_specPower takes s >= 0.
+// Bit-identical inside those ranges. The other remaps are polynomials on [0, 1].
 #ifndef PBR_MATERIAL_REMAP_GLSL
 #define PBR_MATERIAL_REMAP_GLSL
+
+#include "pbr/common/guards.glsl"
 
 // Unity Standard shader: perceptualRoughness = 1 - smoothness (UnityStandardBRDF.cginc,
 // SmoothnessToPerceptualRoughness).
@@ -24,7 +32,7 @@ float pbr_alpha_from_perceptual_roughness(float perceptualRoughness) {
     return perceptualRoughness * perceptualRoughness;
 }
 
-float pbr_perceptual_roughness_from_alpha(float alpha) { return sqrt(alpha); }
+float pbr_perceptual_roughness_from_alpha(float alpha) { return sqrt(max(alpha, 0.0)); }
 
 float pbr_alpha_from_smoothness(float smoothness) {
     return pbr_alpha_from_perceptual_roughness(pbr_perceptual_roughness_from_smoothness(smoothness));
@@ -57,7 +65,10 @@ float pbr_alpha_from_gloss_Unreal(float gloss) {
 // Refraction through Rough Surfaces", §5.2 (after eq. 33): s = 2 / alpha² - 2 makes the
 // Phong/Blinn-Phong distribution match Beckmann of width alpha (and is the usual match for
 // GGX). Valid for alpha in (0, 1]: alpha = 1 gives s = 0; alpha -> 0 gives s -> infinity.
-float pbr_specPower_from_alpha(float alpha) { return 2.0 / (alpha * alpha) - 2.0; }
-float pbr_alpha_from_specPower(float specPower) { return sqrt(2.0 / (specPower + 2.0)); }
+float pbr_specPower_from_alpha(float alpha) {
+    alpha = clamp(alpha, PBR_MIN_ALPHA, 1.0);
+    return 2.0 / (alpha * alpha) - 2.0;
+}
+float pbr_alpha_from_specPower(float specPower) { return sqrt(2.0 / (max(specPower, 0.0) + 2.0)); }
 
 #endif // PBR_MATERIAL_REMAP_GLSL

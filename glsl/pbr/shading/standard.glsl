@@ -3,7 +3,8 @@
 // Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
 //                                   float perceptualRoughness)
 //           float pbr_clamp_perceptual_roughness(float perceptualRoughness)
-//           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_NDOTV, PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
+//           (through its includes: PBR_MIN_PERCEPTUAL_ROUGHNESS[_MEDIUMP] from dispatch.glsl,
+//           PBR_MIN_NDOTV and PBR_MIN_HALF_VECTOR_LENGTH_SQUARED from common/guards.glsl)
 // Include:  "pbr/shading/standard.glsl" (path relative to glsl/)
 // Config macros read: those of pbr/shading/dispatch.glsl (PBR_QUALITY, PBR_SPECULAR_D,
 //           PBR_SPECULAR_V, PBR_SPECULAR_F, PBR_DIFFUSE).
@@ -16,14 +17,17 @@
 //
 // Edges (all mirrored in harness/pbrlab/reference/shading.py):
 //  - NdotL <= 0: the light is below the horizon; returns 0.
-//  - perceptualRoughness is clamped to [PBR_MIN_PERCEPTUAL_ROUGHNESS, 1] here, not in the
-//    raw D functions: alpha = 0 makes D a Dirac (0/0 at NdotH = 1).
-//  - NdotV is clamped below to PBR_MIN_NDOTV where it divides (V terms), so back-facing
-//    views from normal mapping or interpolated normals stay finite.
+//  - perceptualRoughness is clamped to [PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1] here (0.045,
+//    or 0.089 in the LOW tier), far above the raw terms' PBR_MIN_ALPHA floor.
+//  - NdotV is clamped to [PBR_MIN_NDOTV, 1], so back-facing views from normal mapping or
+//    interpolated normals stay finite; every V term also floors NdotL at PBR_MIN_NDOTV.
+//  - 1 - NdotH² for D is |n × h|² (pbr_one_minus_dot2), not 1 - NdotH²: no cancellation at
+//    the peak of sharp lobes (d_ggx.glsl).
+//  - D · V passes through the tier's pbr_specular_lobe_limit (identity in HIGH).
 //  - LdotH = VdotH = |l + v| / 2, the exact identity for unit l and v
 //    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2). It needs no normalised h and is
 //    continuous at l = -v.
-//  - l = -v (|l + v|² < PBR_MIN_HALF_VECTOR_LENGTH_SQUARED): no half vector exists; the
+//  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-12; 2^-14 in LOW): no half vector exists; the
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
 //    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
 //  - NdotH and VdotH are clamped to [0, 1] against rounding.
@@ -31,34 +35,18 @@
 #define PBR_SHADING_STANDARD_GLSL
 
 #include "pbr/common/conventions.glsl"
+#include "pbr/common/guards.glsl"
 #include "pbr/material/remap.glsl"
 #include "pbr/shading/dispatch.glsl"
 
-// Smallest perceptual roughness used by the shading model: Filament's
-// MIN_PERCEPTUAL_ROUGHNESS (Guy & Agopian, "Physically Based Rendering in Filament",
-// §4.8.3.3, common_material.fs): alpha = 0.045² = 2.0e-3, alpha² = 4.1e-6 keeps D_GGX's peak
-// 1/(π alpha²) ≈ 7.8e4 and alpha² · NdotH² far inside float32 range.
-// Shared with reference/shading.py MIN_PERCEPTUAL_ROUGHNESS.
-#define PBR_MIN_PERCEPTUAL_ROUGHNESS 0.045
-
-// Lower clamp of NdotV where it divides: Filament's MIN_N_DOT_V (shading_model_standard.fs,
-// clampNoV). Shared with reference/shading.py MIN_NDOTV.
-#define PBR_MIN_NDOTV 1e-4
-
-// |l + v|² below which l and v are treated as opposite (no half vector): |l + v| < 1e-6,
-// i.e. l and -v within 1e-6 rad, the order of float32's direction resolution (2^-24 ≈ 6e-8
-// per component, amplified by normalisation). Keeps inversesqrt away from 0 and denormals.
-// Shared with reference/shading.py MIN_HALF_VECTOR_LENGTH_SQUARED.
-#define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED 1e-12
-
 float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
-    return clamp(perceptualRoughness, PBR_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+    return clamp(perceptualRoughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 }
 
 vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
                        float perceptualRoughness) {
     float NdotL = min(dot(n, l), 1.0);
-    if (NdotL <= 0.0) return vec3(0.0);
+    if (!(NdotL > 0.0)) return vec3(0.0);
     float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float alpha = pbr_alpha_from_perceptual_roughness(roughness);
@@ -68,15 +56,15 @@ vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
     float LdotH = min(0.5 * sqrt(halfLength2), 1.0);  // == VdotH, see header
 
     vec3 diffuse = diffuseColor * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
-    if (halfLength2 < PBR_MIN_HALF_VECTOR_LENGTH_SQUARED) return diffuse;
+    if (!(halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED)) return diffuse;
 
     vec3 h = halfSum * inversesqrt(halfLength2);
     float NdotH = clamp(dot(n, h), 0.0, 1.0);
     float VdotH = LdotH;
-    float D = pbr_specular_D(NdotH, alpha);
+    float D = pbr_specular_D(NdotH, pbr_one_minus_dot2(n, h), alpha);
     float V = pbr_specular_V(NdotL, NdotV, NdotH, VdotH, alpha);
     vec3  F = pbr_specular_F(f0, VdotH);
-    return diffuse + (D * V) * F;
+    return diffuse + pbr_specular_lobe_limit(D * V) * F;
 }
 
 #endif // PBR_SHADING_STANDARD_GLSL

@@ -16,10 +16,15 @@
 // (knarkowicz.wordpress.com, 2016-01-06): saturate(x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14))
 // per channel. The post pre-scales the input by 0.6 to match the ACES reference white;
 // that belongs to exposure (pbr_apply_exposure(c, log2(0.6))) and is not applied here.
+// Guard (every tonemapper of this folder): the input passes through
+// pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.glsl): decided NaN -> 0, negative
+// -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
+// curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
 #ifndef PBR_TONEMAP_ACES_GLSL
 #define PBR_TONEMAP_ACES_GLSL
 
 #include "pbr/common/math.glsl"
+#include "pbr/common/guards.glsl"
 
 // Hill 2016 input matrix rows (sRGB => XYZ => D65_2_D60 => AP1 => RRT_SAT)
 #define PBR_ACES_INPUT_ROW0 vec3(0.59719, 0.35458, 0.04823)
@@ -37,6 +42,7 @@ vec3 pbr_aces_rrt_odt_fit(vec3 v) {
 }
 
 vec3 pbr_tonemap_aces_fitted(vec3 color) {
+    color = pbr_sanitize(color, PBR_HALF_MAX);
     vec3 aces = vec3(dot(PBR_ACES_INPUT_ROW0, color),
                      dot(PBR_ACES_INPUT_ROW1, color),
                      dot(PBR_ACES_INPUT_ROW2, color));
@@ -52,8 +58,15 @@ vec3 pbr_tonemap_aces_fitted(vec3 color) {
 #define PBR_ACES_NARKOWICZ_C 2.43
 #define PBR_ACES_NARKOWICZ_D 0.59
 #define PBR_ACES_NARKOWICZ_E 0.14
+// Input cap of the Narkowicz curve: f(x) reaches 1 at x = 7.24 (root of
+// 0.08 x² - 0.56 x - 0.14) and increases everywhere (f' ∝ 1.408 x² + 0.703 x + 0.004 > 0)
+// towards 2.51/2.43, so saturate(f(min(x, 16))) == saturate(f(x)) for every x >= 0: no
+// accuracy cost; it keeps x (2.51 x + 0.03) <= 643 so the curve is finite in half precision
+// (uncapped it overflows for x > ~160: measured, glsl/README.md).
+#define PBR_ACES_NARKOWICZ_MAX_INPUT 16.0
 
 vec3 pbr_tonemap_aces_narkowicz(vec3 x) {
+    x = pbr_sanitize(x, PBR_ACES_NARKOWICZ_MAX_INPUT);
     return pbr_saturate((x * (PBR_ACES_NARKOWICZ_A * x + PBR_ACES_NARKOWICZ_B))
                       / (x * (PBR_ACES_NARKOWICZ_C * x + PBR_ACES_NARKOWICZ_D) + PBR_ACES_NARKOWICZ_E));
 }

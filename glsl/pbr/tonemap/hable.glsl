@@ -13,8 +13,18 @@
 // also multiplies the input by ExposureBias = 2.0 and applies pow(1/2.2): here exposure
 // is the caller's (pbr_apply_exposure(c, 1.0) reproduces the bias) and the output stays
 // linear (encode with pbr/color/). Applied per channel; input non-negative linear HDR.
+// Guard (every tonemapper of this folder): the input passes through
+// pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.glsl): decided NaN -> 0, negative
+// -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
+// curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
+// The curve passes 1 above W (Hable's code leaves that to the 8-bit target's clamp); the
+// input is capped at W, which is exactly saturate(f(x) / f(W)) because f increases, and
+// keeps x² from overflowing in half precision (x <= 11.2: x² <= 126). Output saturated
+// against rounding at W.
 #ifndef PBR_TONEMAP_HABLE_GLSL
 #define PBR_TONEMAP_HABLE_GLSL
+
+#include "pbr/common/guards.glsl"
 
 #define PBR_HABLE_A 0.15  // shoulder strength
 #define PBR_HABLE_B 0.50  // linear strength
@@ -31,8 +41,9 @@ float pbr_hable_curve(float x) {
 }
 
 vec3 pbr_tonemap_hable(vec3 color) {
+    color = pbr_sanitize(color, PBR_HABLE_WHITE);
     vec3 curve = vec3(pbr_hable_curve(color.r), pbr_hable_curve(color.g), pbr_hable_curve(color.b));
-    return curve / pbr_hable_curve(PBR_HABLE_WHITE);
+    return pbr_saturate(curve / pbr_hable_curve(PBR_HABLE_WHITE));
 }
 
 #endif // PBR_TONEMAP_HABLE_GLSL

@@ -13,16 +13,22 @@
 // Written like the specification's sample code (mix(c·p_n/p, p_n, 1 - g)). Input:
 // non-negative linear Rec. 709; output linear Rec. 709 in [0, 1]. Colours up to K_s pass
 // through nearly unchanged (only the offset f), which keeps base colours true.
+// Guard (every tonemapper of this folder): the input passes through
+// pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.glsl): decided NaN -> 0, negative
+// -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
+// curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
 #ifndef PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
 #define PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
 
 #include "pbr/common/math.glsl"
+#include "pbr/common/guards.glsl"
 
 #define PBR_KHRONOS_NEUTRAL_F90 0.04                                // spec: F90
 #define PBR_KHRONOS_NEUTRAL_START_COMPRESSION (0.8 - PBR_KHRONOS_NEUTRAL_F90)  // spec: K_s
 #define PBR_KHRONOS_NEUTRAL_DESATURATION 0.15                       // spec: K_d
 
 vec3 pbr_tonemap_khronos_neutral(vec3 color) {
+    color = pbr_sanitize(color, PBR_HALF_MAX);
     float x = pbr_min3(color);
     float offset = x <= 2.0 * PBR_KHRONOS_NEUTRAL_F90
         ? x - x * x / (4.0 * PBR_KHRONOS_NEUTRAL_F90)

@@ -5,13 +5,15 @@
 // Config macros read: PBR_TONEMAP (default PBR_TONEMAP_KHRONOS_NEUTRAL).
 //
 // One dispatcher over the tonemappers of this folder (the library's one variant
-// mechanism, pbr/common/conventions.glsl §8). PBR_TONEMAP_NONE is saturate only.
+// mechanism, pbr/common/conventions.glsl §8). PBR_TONEMAP_NONE is pbr_sanitize(c, 1.0):
+// saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
 // Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
 // light) nearly unchanged, which is what material charts want.
 #ifndef PBR_TONEMAP_TONEMAP_GLSL
 #define PBR_TONEMAP_TONEMAP_GLSL
 
 #include "pbr/common/math.glsl"
+#include "pbr/common/guards.glsl"
 #include "pbr/tonemap/reinhard.glsl"
 #include "pbr/tonemap/hable.glsl"
 #include "pbr/tonemap/aces.glsl"
@@ -30,7 +32,7 @@
 
 vec3 pbr_tonemap(vec3 color) {
 #if PBR_TONEMAP == PBR_TONEMAP_NONE
-    return pbr_saturate(color);
+    return pbr_sanitize(color, 1.0);
 #elif PBR_TONEMAP == PBR_TONEMAP_REINHARD
     return pbr_tonemap_reinhard(color);
 #elif PBR_TONEMAP == PBR_TONEMAP_HABLE

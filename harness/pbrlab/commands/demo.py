@@ -1,16 +1,19 @@
-"""`pbrlab demo [--out DIR]`: render the default material charts, check them against
-the goldens, and say where the images are."""
+"""`pbrlab demo [--out DIR]`: render the default material charts and the lit example
+scene (the Unity-style surface API), check them against the goldens, and say where the
+images are."""
 
 from __future__ import annotations
 
 from pathlib import Path
+
+LIT_SCENE = Path(__file__).resolve().parents[3] / "scenes" / "unity_example" / "scene.json"
 
 
 def run(args) -> int:
     from .. import gl, goldens, images
     from ..charts import CHARTS
     from ..render import render_scene
-    from ..scene import parse_scene
+    from ..scene import load_scene, parse_scene
     from .render import check_finite
 
     out = Path(args.out)
@@ -19,9 +22,11 @@ def run(args) -> int:
     info = gl.context_info(ctx)
     print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']})")
     failures = 0
-    for name, build in CHARTS.items():
-        scene = parse_scene(build(), origin=f"chart {name}")
-        rendering = render_scene(scene, ctx)
+    jobs = [(name, lambda build=build, name=name: parse_scene(build(), origin=f"chart {name}"))
+            for name, build in CHARTS.items()]
+    jobs.append(("lit_scene_high", lambda: load_scene(LIT_SCENE)))
+    for name, make_scene in jobs:
+        rendering = render_scene(make_scene(), ctx)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
         images.write_png(png, rendering.srgb8)
@@ -35,7 +40,7 @@ def run(args) -> int:
             failures += 1
             verdict = f"DIFFERS from its golden: {str(failure).splitlines()[0]}"
         print(f"  {png}  {exr}  {verdict}")
-    print(f"{len(CHARTS)} charts in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
+    print(f"{len(jobs)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
     return 1 if failures else 0
 
 

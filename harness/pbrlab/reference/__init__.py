@@ -5,6 +5,7 @@ same edge cases, same variant defaults) but in float64 and in the textbook form 
 formula, so that ``tests/library`` can compare the GPU against it:
 
   constants  PI, INV_PI, LIGHT_UNIT_SCALE          (glsl/pbr/common/)
+  guards     the numeric guards' constants and helpers (common/guards.glsl)
   color      sRGB curves, pow 2.2 / fast gamma, luminance, transfer paths (glsl/pbr/color/)
   remap      smoothness / perceptual roughness / alpha / gloss remaps (material/remap.glsl)
   material   metallic & specular workflows, F0 tables, F0 <-> IOR (material/)
@@ -16,6 +17,6 @@ Arrays broadcast like numpy; colours and directions carry their 3 components on 
 axis. Functions return float64 arrays.
 """
 
-from . import brdf, color, constants, material, remap, shading, tonemap
+from . import brdf, color, constants, guards, material, remap, shading, tonemap
 
-__all__ = ["brdf", "color", "constants", "material", "remap", "shading", "tonemap"]
+__all__ = ["brdf", "color", "constants", "guards", "material", "remap", "shading", "tonemap"]

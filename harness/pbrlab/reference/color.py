@@ -2,6 +2,8 @@
 
 import numpy as np
 
+from .guards import sanitize
+
 # IEC 61966-2-1:1999 §5.2/§5.3 (PBR_SRGB_* in glsl/pbr/color/srgb.glsl)
 SRGB_DECODE_THRESHOLD = 0.04045
 SRGB_ENCODE_THRESHOLD = 0.0031308
@@ -64,5 +66,6 @@ def decode_color_texel(texel, transfer="HARDWARE"):
 
 
 def encode_final_color(linear_color, transfer="HARDWARE"):
-    """pbr_encode_final_color under PBR_COLOR_TRANSFER = PBR_COLOR_TRANSFER_<transfer>."""
-    return _ENCODE[transfer](linear_color)
+    """pbr_encode_final_color under PBR_COLOR_TRANSFER = PBR_COLOR_TRANSFER_<transfer>, with
+    the shader's guard: the input is sanitised to [0, 1] first (NaN -> 0, +Inf -> 1)."""
+    return _ENCODE[transfer](sanitize(linear_color, 1.0))

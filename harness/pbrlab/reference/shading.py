@@ -10,11 +10,12 @@ import numpy as np
 
 from . import brdf, remap
 from .constants import LIGHT_UNIT_SCALE
+from .guards import HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOTV, MIN_VDOTH  # noqa: F401
 
-# Edge constants, shared with glsl/pbr/shading/standard.glsl (tested equal).
-MIN_PERCEPTUAL_ROUGHNESS = 0.045        # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
-MIN_NDOTV = 1e-4                        # PBR_MIN_NDOTV (Filament MIN_N_DOT_V)
-MIN_HALF_VECTOR_LENGTH_SQUARED = 1e-12  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
+# Edge constants, shared with glsl/pbr/shading/dispatch.glsl (tested equal).
+MIN_PERCEPTUAL_ROUGHNESS = 0.045          # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
+MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP = 0.089  # PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP (Filament mobile)
+MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP = 2.0 ** -14  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
 
 # Selector values in #define order (PBR_SPECULAR_D_GGX = 0, ...).
 SPECULAR_D = ("GGX", "BECKMANN", "BLINN_PHONG")
@@ -25,6 +26,11 @@ DIFFUSE = ("LAMBERT", "BURLEY")
 QUALITY = ("LOW", "HIGH")
 # PBR_QUALITY -> default PBR_SPECULAR_V (the tier block of dispatch.glsl)
 QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "HIGH": "SMITH_GGX_CORRELATED"}
+# PBR_QUALITY -> PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the cap of pbr_specular_lobe_limit
+QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
+QUALITY_MAX_SPECULAR_LOBE = {"LOW": HALF_MAX, "HIGH": np.inf}
+QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED = {"LOW": MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP,
+                                          "HIGH": MIN_HALF_VECTOR_LENGTH_SQUARED}
 
 
 def _variants(specular_d, specular_v, specular_f, diffuse, quality):
@@ -60,6 +66,14 @@ def specular_D(NdotH, alpha, variant="GGX"):
 
 
 def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"):
+    """pbr_specular_V, with the guards of the GLSL V terms: NdotL, NdotV clamped to
+    [MIN_NDOTV, 1], VdotH to [MIN_VDOTH, 1] (guards.glsl); the brdf.V_* stay exact."""
+    VdotH = np.clip(VdotH, MIN_VDOTH, 1.0)
+    if variant == "COOK_TORRANCE":  # G takes the saturated cosines, only the 1/(4 NdotL NdotV) is floored
+        G = brdf.G_CookTorrance(np.clip(NdotL, 0.0, 1.0), np.clip(NdotV, 0.0, 1.0), NdotH, VdotH)
+        return G / (4.0 * np.clip(NdotL, MIN_NDOTV, 1.0) * np.clip(NdotV, MIN_NDOTV, 1.0))
+    NdotL = np.clip(NdotL, MIN_NDOTV, 1.0)
+    NdotV = np.clip(NdotV, MIN_NDOTV, 1.0)
     if variant == "SMITH_GGX_CORRELATED":
         return brdf.V_SmithGGXCorrelated(NdotL, NdotV, alpha)
     if variant == "SMITH_GGX_CORRELATED_FAST":
@@ -95,8 +109,9 @@ def diffuse_Fd(NdotV, NdotL, LdotH, perceptual_roughness, variant="LAMBERT"):
     raise ValueError(variant)
 
 
-def clamp_perceptual_roughness(perceptual_roughness):
-    return np.clip(np.asarray(perceptual_roughness, dtype=np.float64), MIN_PERCEPTUAL_ROUGHNESS, 1.0)
+def clamp_perceptual_roughness(perceptual_roughness, quality="HIGH"):
+    return np.clip(np.asarray(perceptual_roughness, dtype=np.float64),
+                   QUALITY_MIN_PERCEPTUAL_ROUGHNESS[quality], 1.0)
 
 
 def _dot(a, b):
@@ -106,13 +121,15 @@ def _dot(a, b):
 def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_d="GGX",
                   specular_v=None, specular_f="SCHLICK", diffuse="LAMBERT", quality="HIGH"):
     """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
-    (NdotL <= 0 -> 0; roughness clamp; NdotV clamp; LdotH = |l+v|/2; l = -v -> no specular)."""
+    (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
+    specular; V's cosine floors; D · V capped at HALF_MAX in the LOW tier). 1 - NdotH² is
+    exact here, so the GLSL's |n x h|² form and its 1 - NdotH² agree for unit n."""
     d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
     n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
     shape = np.broadcast_shapes(n.shape, v.shape, l.shape, diffuse_color.shape, f0.shape,
                                 np.shape(perceptual_roughness) + (3,))
     n, v, l, diffuse_color, f0 = (np.broadcast_to(x, shape) for x in (n, v, l, diffuse_color, f0))
-    roughness = np.broadcast_to(clamp_perceptual_roughness(perceptual_roughness), shape[:-1])
+    roughness = np.broadcast_to(clamp_perceptual_roughness(perceptual_roughness, quality), shape[:-1])
     alpha = remap.alpha_from_perceptual_roughness(roughness)
 
     NdotL = np.minimum(_dot(n, l), 1.0)
@@ -124,7 +141,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     LdotH = np.minimum(0.5 * np.sqrt(half_length2), 1.0)
     diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
 
-    has_half = half_length2 >= MIN_HALF_VECTOR_LENGTH_SQUARED
+    has_half = half_length2 >= QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED[quality]
     h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
     NdotH = np.clip(_dot(n, h), 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
@@ -132,7 +149,8 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
         D = specular_D(NdotH, alpha, d_var)
         V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var)
-    specular_part = np.where(has_half[..., None], (D * V)[..., None] * F, 0.0)
+    lobe = np.minimum(D * V, QUALITY_MAX_SPECULAR_LOBE[quality])
+    specular_part = np.where(has_half[..., None], lobe[..., None] * F, 0.0)
     return np.where(lit[..., None], diffuse_part + specular_part, 0.0)
 
 

@@ -2,6 +2,8 @@
 
 import numpy as np
 
+from .guards import HALF_MAX, sanitize
+
 HABLE = dict(A=0.15, B=0.50, C=0.10, D=0.20, E=0.02, F=0.30)  # PBR_HABLE_A..F (Hable 2010)
 HABLE_WHITE = 11.2                                          # PBR_HABLE_WHITE
 # Hill 2016 (BakingLab ACES.hlsl) matrices, rows as written there (PBR_ACES_*_ROW*)
@@ -74,8 +76,11 @@ def tonemap_khronos_neutral(color):
 
 
 def tonemap(color, variant="KHRONOS_NEUTRAL"):
-    """pbr_tonemap under PBR_TONEMAP = PBR_TONEMAP_<variant>."""
+    """pbr_tonemap under PBR_TONEMAP = PBR_TONEMAP_<variant>, with the shader's guards: input
+    sanitised to [0, HALF_MAX] (NaN -> 0, +Inf -> 65504), output in [0, 1] (Hable and the
+    curves that pass 1 are saturated). The tonemap_* functions above stay exact."""
+    color = sanitize(color, HALF_MAX)
     table = {"NONE": lambda c: np.clip(_f(c), 0.0, 1.0), "REINHARD": tonemap_reinhard,
              "HABLE": tonemap_hable, "ACES_FITTED": tonemap_aces_fitted,
              "ACES_NARKOWICZ": tonemap_aces_narkowicz, "KHRONOS_NEUTRAL": tonemap_khronos_neutral}
-    return table[variant](color)
+    return np.clip(table[variant](color), 0.0, 1.0)

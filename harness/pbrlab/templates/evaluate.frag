@@ -1,4 +1,5 @@
 #version 330 core
+//@EXTENSIONS
 // pbrlab evaluator: one expression per fragment. Inputs are fetched bit-exactly from
 // float textures with texelFetch (no filtering, no interpolation, nothing the compiler
 // can fold); the result is written to an RGBA32F target and read back as float32.

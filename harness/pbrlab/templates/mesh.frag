@@ -1,37 +1,30 @@
 #version 330 core
-// A rasterised mesh. Texture slots are compiled in only when the material has them:
-//   PBRLAB_ALBEDO_MAP               sRGB colour texture (hardware decode), multiplies albedo
-//   PBRLAB_METALLIC_SMOOTHNESS_MAP  linear data texture: R metallic, A smoothness (Unity)
+// A rasterised mesh shaded through a Unity-style surface function (default_surface.glsl
+// or the material's own file, included as PBRLAB_SURFACE).
 //@DEFINES
 #include "scene_shading.glsl"
 #include "camera_ray.glsl"
+//@SURFACE
 
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-#ifdef PBRLAB_ALBEDO_MAP
-uniform sampler2D u_albedo_map;
-#endif
-#ifdef PBRLAB_METALLIC_SMOOTHNESS_MAP
-uniform sampler2D u_metallic_smoothness_map;
-#endif
 out vec4 out_radiance;
 
 void main() {
     vec3 n = normalize(v_normal);
-    vec3 v = normalize(u_camera_position - v_position);
-    vec3 albedo = u_albedo;
-    float metallic = u_metallic;
-    float smoothness = u_smoothness;
-#ifdef PBRLAB_ALBEDO_MAP
-    albedo *= texture(u_albedo_map, v_uv).rgb;
+    Input IN;
+    IN.uv = v_uv;
+    IN.worldPos = v_position;
+    IN.worldNormal = n;
+    IN.viewDir = normalize(u_camera_position - v_position);
+    PbrlabSurfaceOutput o = pbrlab_default_output();
+    surf(IN, o);
+#if PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
+    if (o.Alpha < u_alpha_cutoff) discard;
 #endif
-#ifdef PBRLAB_METALLIC_SMOOTHNESS_MAP
-    vec4 ms = texture(u_metallic_smoothness_map, v_uv);
-    metallic *= ms.r;
-    smoothness *= ms.a;
-#endif
-    PbrlabSurface s = pbrlab_surface(albedo, metallic, smoothness);
-    out_radiance = vec4(pbrlab_shade(v_position, n, v, s), u_alpha);
+    o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, v_tangent);
+    vec4 c = pbrlab_shade_surface(o, v_position, IN.viewDir);
+    out_radiance = vec4(c.rgb, pbrlab_output_alpha(c));
 }

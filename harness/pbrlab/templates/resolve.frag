@@ -11,5 +11,6 @@ out vec4 out_color;
 void main() {
     vec4 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0);
     vec3 c = pbr_tonemap(pbr_apply_exposure(hdr.rgb, u_exposure_ev));
-    out_color = vec4(pbr_encode_final_color(clamp(c, 0.0, 1.0)), clamp(hdr.a, 0.0, 1.0));
+    // The display image is opaque: coverage alpha stays in the float render (EXR).
+    out_color = vec4(pbr_encode_final_color(clamp(c, 0.0, 1.0)), 1.0);
 }

@@ -1,110 +1,141 @@
-// pbrlab harness: scene-level shading shared by the sphere and mesh programs.
-// Declares the harness's uniforms (the library itself declares none) and lights one
-// surface point with the library's pbr_shade_punctual. Compile-time configuration:
-//   PBRLAB_LIGHT_COUNT   number of punctual lights (0..)
-//   PBRLAB_ENV_SH        defined when the scene has an environment (SH9 irradiance)
+// pbrlab harness: scene-level shading shared by the sphere and mesh programs. Declares
+// the harness's resources (the library declares none), builds Unity's UnityGI for each
+// light and the environment, and shades a surface with the library's LightingStandard /
+// LightingStandardSpecular (pbr/unity/surface_standard.glsl). Compile-time configuration:
+//   PBRLAB_LIGHT_COUNT        number of punctual lights (0..)
+//   PBRLAB_ENV                defined when the scene has an environment
+//   PBRLAB_WORKFLOW_SPECULAR  defined for the specular workflow (else metallic)
+//   PBR_QUALITY, PBR_ALPHA_MODE, PBR_SPECULAR_*, PBR_DIFFUSE: the library's selectors
+
+#ifdef PBRLAB_ENV
+uniform sampler2D u_dfg_lut;          // harness/pbrlab/ibl.py dfg_lut: (A, B)
+uniform sampler2D u_env_prefiltered;  // GGX-prefiltered equirect mip chain
+uniform float u_env_lod_count;
+uniform vec3 u_env_sh[9];             // SH9 of the environment radiance
+// The library samples no textures itself: this hook hands it the DFG table.
+#define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) texture(u_dfg_lut, vec2(NdotV, perceptualRoughness)).rg
+#endif
+
 #include "pbr/pbr.glsl"
+#include "pbr/lighting/attenuation.glsl"
+#include "pbr/lighting/sh9.glsl"
+#include "pbr/ibl/equirect.glsl"
+#include "pbr/ibl/importance_sampling.glsl"
+#include "pbr/unity/surface_standard.glsl"
+
+#ifdef PBRLAB_WORKFLOW_SPECULAR
+#define PbrlabSurfaceOutput SurfaceOutputStandardSpecular
+#define PBRLAB_LIGHTING LightingStandardSpecular
+#else
+#define PbrlabSurfaceOutput SurfaceOutputStandard
+#define PBRLAB_LIGHTING LightingStandard
+#endif
+
+// What a surface function receives (Unity's Input, with one UV set: IN.uv).
+struct Input {
+    vec2 uv;
+    vec3 worldPos;
+    vec3 worldNormal;
+    vec3 viewDir;
+};
 
 #define PBRLAB_LIGHT_DIRECTIONAL 0
 #define PBRLAB_LIGHT_POINT 1
 #define PBRLAB_LIGHT_SPOT 2
 
-// Lights: xyz = position (point, spot) or the way light travels (directional); w = type.
 #if PBRLAB_LIGHT_COUNT > 0
-uniform vec4 u_light_position_type[PBRLAB_LIGHT_COUNT];
-uniform vec3 u_light_direction[PBRLAB_LIGHT_COUNT];   // the way light travels (spot)
-uniform vec3 u_light_radiance[PBRLAB_LIGHT_COUNT];    // color * intensity
-uniform vec3 u_light_range_cones[PBRLAB_LIGHT_COUNT]; // range, cos(outer), 1/(cos(inner)-cos(outer))
-#endif
-#ifdef PBRLAB_ENV_SH
-uniform vec3 u_env_sh[9];  // order-2 SH of the environment radiance (harness/pbrlab/environment.py)
-#endif
+uniform vec4 u_light_position_type[PBRLAB_LIGHT_COUNT]; // xyz position, or the way a directional light travels; w type
+uniform vec3 u_light_direction[PBRLAB_LIGHT_COUNT];     // the way a spot light travels
+uniform vec3 u_light_radiance[PBRLAB_LIGHT_COUNT];      // color * intensity
+uniform vec3 u_light_range_cones[PBRLAB_LIGHT_COUNT];   // range, cos(outer), 1/(cos(inner)-cos(outer))
 
-struct PbrlabSurface {
-    vec3 diffuseColor;
-    vec3 f0;
-    float perceptualRoughness;
-    vec3 emission;
-    float occlusion;
-};
-
-// Smooth range window: (1 - (d/range)^4)^2 clamped, Karis 2013, "Real Shading in Unreal
-// Engine 4", eq. 9 (without its +1 in the denominator: pbrlab keeps the inverse square).
-float pbrlab_range_window(float distance2, float range) {
-    float x = distance2 * distance2 / (range * range * range * range);
-    float w = clamp(1.0 - x, 0.0, 1.0);
-    return w * w;
-}
-
-// Spot cone: smoothstep-free square of a linear ramp in cos(angle) between the outer
-// and inner cones (Filament, "Physically Based Rendering in Filament", 5.2.2.2).
-float pbrlab_spot_cone(vec3 l, vec3 spotDirection, float cosOuter, float invCosRange) {
-    float t = clamp((dot(-l, spotDirection) - cosOuter) * invCosRange, 0.0, 1.0);
-    return t * t;
-}
-
-// Irradiance E(n) from 9 SH coefficients of radiance: Ramamoorthi & Hanrahan 2001, "An
-// Efficient Representation for Irradiance Environment Maps", eq. 13.
-#ifdef PBRLAB_ENV_SH
-vec3 pbrlab_sh_irradiance(vec3 n) {
-    const float c1 = 0.429043, c2 = 0.511664, c3 = 0.743125, c4 = 0.886227, c5 = 0.247708;
-    return c1 * u_env_sh[8] * (n.x * n.x - n.y * n.y) + c3 * u_env_sh[6] * n.z * n.z
-         + c4 * u_env_sh[0] - c5 * u_env_sh[6]
-         + 2.0 * c1 * (u_env_sh[4] * n.x * n.y + u_env_sh[7] * n.x * n.z + u_env_sh[5] * n.y * n.z)
-         + 2.0 * c2 * (u_env_sh[3] * n.x + u_env_sh[1] * n.y + u_env_sh[2] * n.z);
+UnityLight pbrlab_light(int i, vec3 p) {
+    UnityLight light;
+    light.color = u_light_radiance[i];
+    if (u_light_position_type[i].w == float(PBRLAB_LIGHT_DIRECTIONAL)) {
+        light.dir = -u_light_position_type[i].xyz;
+        return light;
+    }
+    vec3 toLight = u_light_position_type[i].xyz - p;
+    float d2 = dot(toLight, toLight);
+    light.dir = toLight * inversesqrt(max(d2, PBR_MIN_LIGHT_DISTANCE_SQUARED));
+    light.color *= pbr_distance_attenuation(d2, u_light_range_cones[i].x);
+    if (u_light_position_type[i].w == float(PBRLAB_LIGHT_SPOT)) {
+        light.color *= pbr_spot_attenuation(light.dir, u_light_direction[i],
+                                            u_light_range_cones[i].y, u_light_range_cones[i].z);
+    }
+    return light;
 }
 #endif
 
-vec3 pbrlab_shade(vec3 p, vec3 n, vec3 v, PbrlabSurface s) {
-    vec3 color = s.emission;
+// The environment's light: irradiance / pi from SH9, prefiltered radiance along the
+// mirror direction at the mip of this roughness. Unoccluded (LightingStandard applies
+// the surface's Occlusion).
+UnityIndirect pbrlab_indirect(vec3 n, vec3 v, float perceptualRoughness) {
+    UnityIndirect indirect;
+    indirect.diffuse = vec3(0.0);
+    indirect.specular = vec3(0.0);
+#ifdef PBRLAB_ENV
+    indirect.diffuse = max(pbr_sh9_irradiance(u_env_sh, n), vec3(0.0)) * PBR_INV_PI;
+    float lod = pbr_ibl_lod_from_perceptual_roughness(
+        pbr_clamp_perceptual_roughness(perceptualRoughness), u_env_lod_count);
+    indirect.specular = textureLod(u_env_prefiltered, pbr_equirect_uv(reflect(-v, n)), lod).rgb;
+#endif
+    return indirect;
+}
+
+// The surface lit by every light (the environment counted once) plus its emission.
+vec4 pbrlab_shade_surface(PbrlabSurfaceOutput o, vec3 p, vec3 v) {
+    UnityGI gi;
+    gi.indirect = pbrlab_indirect(o.Normal, v, SmoothnessToPerceptualRoughness(o.Smoothness));
+    gi.light.color = vec3(0.0);
+    gi.light.dir = o.Normal;
+    vec4 c = PBRLAB_LIGHTING(o, v, gi);
 #if PBRLAB_LIGHT_COUNT > 0
+    gi.indirect.diffuse = vec3(0.0);
+    gi.indirect.specular = vec3(0.0);
     for (int i = 0; i < PBRLAB_LIGHT_COUNT; ++i) {
-        vec3 radiance = u_light_radiance[i];
-        vec3 l;
-        if (u_light_position_type[i].w == float(PBRLAB_LIGHT_DIRECTIONAL)) {
-            l = -u_light_position_type[i].xyz;
-        } else {
-            vec3 toLight = u_light_position_type[i].xyz - p;
-            float d2 = max(dot(toLight, toLight), 1e-8);
-            l = toLight * inversesqrt(d2);
-            radiance *= pbrlab_range_window(d2, u_light_range_cones[i].x) / d2;
-            if (u_light_position_type[i].w == float(PBRLAB_LIGHT_SPOT)) {
-                radiance *= pbrlab_spot_cone(l, u_light_direction[i],
-                                             u_light_range_cones[i].y, u_light_range_cones[i].z);
-            }
-        }
-        color += pbr_shade_punctual(n, v, l, radiance, s.diffuseColor, s.f0, s.perceptualRoughness);
+        gi.light = pbrlab_light(i, p);
+        c.rgb += PBRLAB_LIGHTING(o, v, gi).rgb;
     }
 #endif
-#ifdef PBRLAB_ENV_SH
-    // Lambert under the environment: diffuseColor/pi * E(n). Specular image-based light
-    // arrives with the surface API (issue 4).
-    color += s.diffuseColor * PBR_INV_PI * max(pbrlab_sh_irradiance(n), vec3(0.0)) * s.occlusion;
+    c.rgb += o.Emission;
+    return c;
+}
+
+PbrlabSurfaceOutput pbrlab_default_output() {
+    PbrlabSurfaceOutput o;
+    o.Albedo = vec3(0.0);
+    o.Normal = vec3(0.0, 0.0, 1.0);  // tangent space: the interpolated normal
+    o.Emission = vec3(0.0);
+#ifdef PBRLAB_WORKFLOW_SPECULAR
+    o.Specular = vec3(0.0);
+#else
+    o.Metallic = 0.0;
 #endif
-    return color;
+    o.Smoothness = 0.0;
+    o.Occlusion = 1.0;
+    o.Alpha = 1.0;
+    return o;
 }
 
-// Material uniforms -> surface, for both workflows (Unity's metallic and specular setups).
-uniform vec3 u_albedo;
-uniform vec3 u_specular;
-uniform float u_metallic;
-uniform float u_smoothness;
-uniform vec3 u_emission;
-uniform float u_occlusion;
-uniform float u_alpha;
-uniform int u_workflow;  // 0 metallic, 1 specular
-
-PbrlabSurface pbrlab_surface(vec3 albedo, float metallic, float smoothness) {
-    PbrlabSurface s;
-    if (u_workflow == 0) {
-        s.diffuseColor = pbr_diffuse_from_metallic(albedo, metallic);
-        s.f0 = pbr_f0_from_metallic(albedo, metallic);
-    } else {
-        s.diffuseColor = pbr_diffuse_from_specular(albedo, u_specular);
-        s.f0 = u_specular;
-    }
-    s.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(smoothness);
-    s.emission = u_emission;
-    s.occlusion = u_occlusion;
-    return s;
+// Tangent-space normal (what a surface function writes) -> world space, Gram-Schmidt
+// against the interpolated normal (Lengyel 2001; bitangent sign in tangent.w).
+vec3 pbrlab_tangent_to_world_normal(vec3 tangentNormal, vec3 n, vec4 tangent) {
+    vec3 t = tangent.xyz - n * dot(n, tangent.xyz);
+    float tl = dot(t, t);
+    t = tl > 1e-12 ? t * inversesqrt(tl) : pbr_tangent_to_world(vec3(1.0, 0.0, 0.0), n);
+    vec3 b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    return normalize(mat3(t, b, n) * tangentNormal);
 }
+
+// The render target's alpha: coverage for opaque and cutout, the blend weight otherwise.
+float pbrlab_output_alpha(vec4 shaded) {
+#if PBR_ALPHA_MODE == PBR_ALPHA_MODE_OPAQUE || PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
+    return 1.0;
+#else
+    return shaded.a;
+#endif
+}
+
+uniform float u_alpha_cutoff;

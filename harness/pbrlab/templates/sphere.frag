@@ -1,8 +1,10 @@
 #version 330 core
-// One analytic sphere, ray-traced per pixel: exact normals, no tessellation.
+// One analytic sphere, ray-traced per pixel (exact normals), shaded through a Unity-style
+// surface function. UVs are the equirectangular coordinates of the normal.
 //@DEFINES
 #include "scene_shading.glsl"
 #include "camera_ray.glsl"
+//@SURFACE
 
 uniform vec4 u_sphere;  // xyz centre, w radius
 out vec4 out_radiance;
@@ -23,8 +25,20 @@ void main() {
     if (t <= 0.0) discard;
     vec3 p = u_camera_position + t * d;
     vec3 n = normalize(p - u_sphere.xyz);
-    PbrlabSurface s = pbrlab_surface(u_albedo, u_metallic, u_smoothness);
-    out_radiance = vec4(pbrlab_shade(p, n, -d, s), u_alpha);
+    Input IN;
+    IN.uv = pbr_equirect_uv(n);
+    IN.worldPos = p;
+    IN.worldNormal = n;
+    IN.viewDir = -d;
+    PbrlabSurfaceOutput o = pbrlab_default_output();
+    surf(IN, o);
+#if PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
+    if (o.Alpha < u_alpha_cutoff) discard;
+#endif
+    float phi = 2.0 * PBR_PI * IN.uv.x;  // tangent along increasing u (pbr_equirect_direction)
+    o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, vec4(cos(phi), 0.0, sin(phi), 1.0));
+    vec4 c = pbrlab_shade_surface(o, p, -d);
+    out_radiance = vec4(c.rgb, pbrlab_output_alpha(c));
     vec4 clip = u_view_proj * vec4(p, 1.0);
     gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
 }

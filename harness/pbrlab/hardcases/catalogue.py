@@ -1,0 +1,401 @@
+"""The hard-case catalogue: every public function of the library (pbr_shade_punctual and
+pbr_brdf_standard at each quality tier and variant), its argument kinds, the physical bound of
+its value, and its hard cases, each with a sentence saying why it is hard.
+
+Cases come from two places: every argument's kind contributes its catalogued edge values
+(domains.KINDS, the other arguments at their typical value), and ``EXTRA_CASES`` adds the
+cases that need several arguments at once (V = -L, a light at the shaded point, ...) and the
+values the library decides where the maths has none, which are checked exactly.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..reference import color, shading
+from . import domains
+
+
+@dataclass(frozen=True)
+class Bound:
+    """lo <= value <= hi for every component, and finite (NaN and Inf always fail)."""
+    text: str
+    lo: float = -math.inf
+    hi: float = math.inf
+
+    def holds(self, values: np.ndarray) -> np.ndarray:
+        """Per sample (first axis): all components finite and within [lo, hi]. NaN fails
+        because every comparison with NaN is False; nothing here uses min/max."""
+        v = np.asarray(values, np.float64).reshape(len(values), -1)
+        return (np.isfinite(v) & (v >= self.lo) & (v <= self.hi)).all(axis=1)
+
+
+def _ge0(what): return Bound(f"{what} >= 0", 0.0)
+def _unit(what): return Bound(f"0 <= {what} <= 1", 0.0, 1.0)
+
+
+D = _ge0("D")
+G = _unit("G")
+V = _ge0("V")
+F = _unit("F")
+BRDF = _ge0("BRDF")
+COLOUR = _ge0("colour")
+ENCODED = Bound("0 <= sRGB <= 1", 0.0, 1.0)
+TONEMAPPED = Bound("0 <= tonemapped <= 1", 0.0, 1.0)
+# |n x h|² <= |n|²|h|² = 1 for unit vectors; float32 unit vectors are unit within a few ulps
+ONE_MINUS_DOT2 = Bound("0 <= 1 - (n.h)^2 <= 1 (+4 ulp)", 0.0, 1.0 + 4 * 2.0 ** -23)
+# |v| of a normalised float32 vector: 1 within a few ulps (or exactly 0, see pbr_safe_normalize)
+UNIT_OR_ZERO = Bound("each |component| <= 1 (+4 ulp)", -1.0 - 4 * 2.0 ** -23, 1.0 + 4 * 2.0 ** -23)
+
+
+@dataclass(frozen=True)
+class Arg:
+    name: str
+    kind: str          # a domains.KINDS key, or "dir" (a direction for the shading model)
+    vec3: bool = False
+
+
+@dataclass(frozen=True)
+class Function:
+    name: str                   # the GLSL function
+    expression: str             # the call, in the argument names
+    args: tuple[Arg, ...]
+    bound: Bound
+    variant: str = ""           # e.g. "quality=LOW" for the shading model
+    defines: tuple = ()         # ((macro, value), ...)
+
+    @property
+    def label(self) -> str:
+        return f"{self.name} [{self.variant}]" if self.variant else self.name
+
+
+@dataclass(frozen=True)
+class SameAs:
+    """The decided value is, bit for bit, the value of another case of the same function."""
+    case_name: str
+
+
+@dataclass(frozen=True)
+class Case:
+    function: Function
+    name: str
+    why: str
+    inputs: dict = field(hash=False)
+    exact: object = None        # None, a float, a GLSL expression in the same inputs, or SameAs
+    expression: str = ""        # overrides the function's call (e.g. to normalise an input)
+
+    @property
+    def call(self) -> str:
+        return self.expression or self.function.expression
+
+
+def _a(spec: str) -> tuple[Arg, ...]:
+    """'NdotH:cosine alpha:alpha f0:unit3' -> args (a kind ending in 3 is a vec3)."""
+    out = []
+    for item in spec.split():
+        name, kind = item.split(":")
+        out.append(Arg(name, kind.rstrip("3"), kind.endswith("3")))
+    return tuple(out)
+
+
+def _f(name, args, bound, call=None):
+    arg_list = _a(args)
+    return Function(name, call or f"{name}({', '.join(a.name for a in arg_list)})", arg_list, bound)
+
+
+# Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
+# complete), with its argument kinds and bound.
+TERMS: tuple[Function, ...] = (
+    # common/
+    _f("pbr_saturate", "x:signed", _unit("saturate")),
+    _f("pbr_sq", "x:signed", _ge0("x²")),
+    _f("pbr_pow5", "x:unit", _unit("x^5")),
+    _f("pbr_max3", "c:unit3", _unit("max3")),
+    _f("pbr_min3", "c:unit3", _unit("min3")),
+    _f("pbr_pow_safe", "x:unit s:specPower", _unit("x^s")),
+    _f("pbr_sanitize", "c:hdr3", _unit("sanitised"), "pbr_sanitize(c, 1.0)"),
+    _f("pbr_safe_normalize", "d:coordinate3", UNIT_OR_ZERO),
+    _f("pbr_one_minus_dot2", "n:dir h:dir", ONE_MINUS_DOT2),
+    # color/
+    _f("pbr_srgb_to_linear", "c:hdr3", ENCODED),
+    _f("pbr_linear_to_srgb", "c:hdr3", ENCODED),
+    _f("pbr_degamma", "c:hdr3", ENCODED), _f("pbr_regamma", "c:hdr3", ENCODED),
+    _f("pbr_degamma_fast", "c:hdr3", ENCODED), _f("pbr_regamma_fast", "c:hdr3", ENCODED),
+    _f("pbr_luminance", "c:radiance3", _ge0("luminance")),
+    # material/
+    _f("pbr_perceptual_roughness_from_smoothness", "s:unit", _unit("perceptualRoughness")),
+    _f("pbr_alpha_from_perceptual_roughness", "r:unit", _unit("alpha")),
+    _f("pbr_perceptual_roughness_from_alpha", "a:alpha", Bound("0 <= perceptualRoughness <= sqrt(huge)", 0.0)),
+    _f("pbr_alpha_from_smoothness", "s:unit", _unit("alpha")),
+    _f("pbr_specPower_from_gloss_CallOfDuty", "g:unit", Bound("1 <= s <= 8192", 1.0, 8192.0)),
+    _f("pbr_alpha_from_gloss_Crytek", "g:unit", _unit("alpha")),
+    _f("pbr_alpha_from_gloss_Unreal", "g:unit", _unit("alpha")),
+    _f("pbr_specPower_from_alpha", "a:alpha", _ge0("specPower")),
+    _f("pbr_alpha_from_specPower", "s:specPower", Bound("0 < alpha <= 1", 0.0, 1.0)),
+    _f("pbr_f0_from_metallic", "albedo:unit3 m:unit", F),
+    _f("pbr_diffuse_from_metallic", "albedo:unit3 m:unit", _unit("diffuse")),
+    _f("pbr_diffuse_from_specular", "albedo:unit3 s:unit3", _unit("diffuse")),
+    _f("pbr_diffuse_from_specular_per_channel", "albedo:unit3 s:unit3", _unit("diffuse")),
+    _f("pbr_f0_from_ior", "eta:eta", F),
+    _f("pbr_ior_from_f0", "f0:unit", Bound("1 <= eta <= PBR_MAX_IOR", 1.0, 2.0 ** 25)),
+    # brdf/
+    _f("pbr_Fd_Lambert", "", Bound("Fd = 1/π", 1 / math.pi - 1e-7, 1 / math.pi + 1e-7), "pbr_Fd_Lambert()"),
+    _f("pbr_Fd_Burley", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness",
+       Bound("0.25/π <= Fd <= 6.25/π", 0.25 / math.pi * (1 - 1e-6), 6.25 / math.pi * (1 + 1e-6))),
+    _f("pbr_BRDF_BlinnPhongClassic", "NdotH:cosine NdotL:cosine s:specPower", BRDF),
+    _f("pbr_BRDF_BlinnPhongModified", "NdotH:cosine s:specPower", BRDF),
+    _f("pbr_BRDF_BlinnPhongNormalized", "NdotH:cosine s:specPower", BRDF),
+    _f("pbr_blinn_phong_lobe", "NdotH:cosine s:specPower", _unit("NdotH^s")),
+    _f("pbr_D_BlinnPhong", "NdotH:cosine s:specPower", D),
+    _f("pbr_D_GGX", "NdotH:cosine alpha:alpha", D),
+    Function("pbr_D_GGX", "pbr_D_GGX(n, h, alpha)", _a("n:dir h:dir alpha:alpha"), D, "vec3"),
+    _f("pbr_D_GGX_fromOneMinusNdotH2", "NdotH:cosine s2:unit alpha:alpha", D),
+    _f("pbr_D_Beckmann", "NdotH:cosine alpha:alpha", D),
+    _f("pbr_D_Beckmann_fromOneMinusNdotH2", "NdotH:cosine s2:unit alpha:alpha", D),
+    _f("pbr_G_CookTorrance", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine", G),
+    _f("pbr_V_CookTorrance", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine", V),
+    _f("pbr_SmithGGX_denominator", "NdotX:unit alpha:unit", _ge0("denominator")),
+    _f("pbr_G1_SmithGGX", "NdotX:cosine alpha:alpha", G),
+    _f("pbr_G_SmithGGX", "NdotL:cosine NdotV:cosine alpha:alpha", G),
+    _f("pbr_V_SmithGGX", "NdotL:cosine NdotV:cosine alpha:alpha", V),
+    _f("pbr_G1_SchlickGGX", "NdotX:cosine k:k", G),
+    _f("pbr_G_SchlickGGX", "NdotL:cosine NdotV:cosine k:k", G),
+    _f("pbr_V_SchlickGGX", "NdotL:cosine NdotV:cosine k:k", V),
+    _f("pbr_k_SchlickGGX_from_alpha", "a:unit", _unit("k")),
+    _f("pbr_k_SchlickGGX_hotness", "r:unit", _unit("k")),
+    _f("pbr_V_SmithGGXCorrelated", "NdotL:cosine NdotV:cosine alpha:alpha", V),
+    _f("pbr_V_SmithGGXCorrelatedFast", "NdotL:cosine NdotV:cosine alpha:alpha", V),
+    _f("pbr_G_Implicit", "NdotL:cosine NdotV:cosine", G),
+    _f("pbr_V_Implicit", "", Bound("V = 1/4", 0.25, 0.25), "pbr_V_Implicit()"),
+    _f("pbr_G_Kelemen", "NdotL:cosine NdotV:cosine VdotH:cosine", G),
+    _f("pbr_V_Kelemen", "VdotH:cosine", V),
+    _f("pbr_F_Schlick", "f0:unit VdotH:cosine", F),
+    Function("pbr_F_Schlick", "pbr_F_Schlick(f0, VdotH)", _a("f0:unit3 VdotH:cosine"), F, "vec3"),
+    Function("pbr_F_Schlick", "pbr_F_Schlick(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
+    _f("pbr_F_SchlickSG", "f0:unit3 VdotH:cosine", F),
+    _f("pbr_F_Dielectric", "c:cosine eta:eta", F),
+    # tonemap/
+    _f("pbr_apply_exposure", "c:radiance3 ev:ev", COLOUR),
+    _f("pbr_tonemap_reinhard", "c:hdr3", TONEMAPPED),
+    _f("pbr_tonemap_reinhard_extended", "c:hdr3 w:whitePoint", TONEMAPPED),
+    _f("pbr_hable_curve", "x:unit", Bound("Hable f(x) on [0, 1] >= -1 ulp", -1e-7)),
+    _f("pbr_tonemap_hable", "c:hdr3", TONEMAPPED),
+    _f("pbr_aces_rrt_odt_fit", "v:unit3", Bound("RRT+ODT fit on [0, 1] in [-4e-4, 1]", -4e-4, 1.0)),
+    _f("pbr_tonemap_aces_fitted", "c:hdr3", TONEMAPPED),
+    _f("pbr_tonemap_aces_narkowicz", "c:hdr3", TONEMAPPED),
+    _f("pbr_tonemap_khronos_neutral", "c:hdr3", TONEMAPPED),
+)
+
+# Dispatchers and tier helpers, per variant (the selector macro and its values).
+_DISPATCH_TEMPLATES = (
+    (_f("pbr_specular_D", "NdotH:cosine s2:unit alpha:alpha", D), "PBR_SPECULAR_D", shading.SPECULAR_D),
+    (_f("pbr_specular_V", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine alpha:alpha", V),
+     "PBR_SPECULAR_V", shading.SPECULAR_V),
+    (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
+    (_f("pbr_diffuse_Fd", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness", Bound("0 <= Fd <= 6.25/π", 0.0, 2.0)),
+     "PBR_DIFFUSE", shading.DIFFUSE),
+    (_f("pbr_specular_lobe_limit", "DV:radiance", _ge0("D·V")), "PBR_QUALITY", shading.QUALITY),
+    (_f("pbr_clamp_perceptual_roughness", "r:roughness", _unit("perceptualRoughness")), "PBR_QUALITY", shading.QUALITY),
+    (_f("pbr_decode_color_texel", "c:unit3", _unit("linear")), "PBR_COLOR_TRANSFER", color.TRANSFERS),
+    (_f("pbr_encode_final_color", "c:hdr3", ENCODED), "PBR_COLOR_TRANSFER", color.TRANSFERS),
+    (_f("pbr_tonemap", "c:hdr3", TONEMAPPED), "PBR_TONEMAP", ("NONE", "REINHARD", "HABLE", "ACES_FITTED",
+                                                               "ACES_NARKOWICZ", "KHRONOS_NEUTRAL")),
+)
+
+SHADE_ARGS = _a("n:dir v:dir l:dir radiance:radiance3 diffuseColor:unit3 f0:unit3 roughness:roughness")
+_SHADING_TEMPLATES = (
+    Function("pbr_brdf_standard", "pbr_brdf_standard(n, v, l, diffuseColor, f0, roughness)",
+             tuple(a for a in SHADE_ARGS if a.name != "radiance"), BRDF),
+    Function("pbr_shade_punctual", "pbr_shade_punctual(n, v, l, radiance, diffuseColor, f0, roughness)",
+             SHADE_ARGS, COLOUR),
+)
+
+
+def shading_variants() -> list[tuple[str, dict]]:
+    """Each quality tier, and each non-default selector value at the HIGH tier."""
+    out = [(f"quality={q}", shading.glsl_defines(quality=q)) for q in shading.QUALITY]
+    for selector, values in (("specular_d", shading.SPECULAR_D), ("specular_v", shading.SPECULAR_V),
+                             ("specular_f", shading.SPECULAR_F), ("diffuse", shading.DIFFUSE)):
+        out += [(f"{selector}={v}", shading.glsl_defines(**{selector: v})) for v in values[1:]]
+    return out
+
+
+def functions() -> list[Function]:
+    """The catalogue's functions: terms, each dispatcher per variant, the shading model per
+    tier and variant."""
+    out = list(TERMS)
+    for template, macro, values in _DISPATCH_TEMPLATES:
+        out += [Function(template.name, template.expression, template.args, template.bound, f"{macro}={v}",
+                         ((macro, f"{macro}_{v}"),)) for v in values]
+    for template in _SHADING_TEMPLATES:
+        out += [Function(template.name, template.expression, template.args, template.bound, label,
+                         tuple(sorted(defines.items()))) for label, defines in shading_variants()]
+    return out
+
+
+# ---- cases ---------------------------------------------------------------------------
+
+UP = (0.0, 0.0, 1.0)
+_S = math.sqrt(0.5)
+TYPICAL_GEOMETRY = {"n": UP, "v": (0.6, 0.0, 0.8), "l": (-0.28, 0.0, 0.96)}
+
+
+def typical_inputs(function: Function) -> dict:
+    out = {}
+    for a in function.args:
+        if a.kind == "dir":
+            out[a.name] = TYPICAL_GEOMETRY.get(a.name, UP if a.name == "n" else (_S, 0.0, _S))
+        else:
+            t = domains.KINDS[a.kind].typical
+            out[a.name] = (t, t, t) if a.vec3 else t
+    return out
+
+
+def _edge_cases(function: Function) -> list[Case]:
+    cases = []
+    for a in function.args:
+        if a.kind == "dir":
+            continue
+        for edge in domains.KINDS[a.kind].edges:
+            inputs = typical_inputs(function)
+            inputs[a.name] = (edge.value,) * 3 if a.vec3 else edge.value
+            cases.append(Case(function, f"{a.name} = {edge.name}", edge.why, inputs))
+    return cases
+
+
+# The shading model's geometric hard cases: (name, why, n, v, l, exact value or None).
+# "exact" GLSL expressions restate the library's decided value with the same operations.
+_DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), min(dot(n, l), 1.0), "
+                 "0.0, pbr_clamp_perceptual_roughness(roughness))")
+_GEOMETRY_CASES = (
+    ("V = -L", "l and v opposite: no half vector exists (l + v = 0); decided: no specular, diffuse kept",
+     UP, (-0.6, 0.0, -0.8), (0.6, 0.0, 0.8), "diffuse"),
+    ("V ≈ -L", "|l + v|² just above the 1e-12 threshold: h from a vector of length 1e-6, VdotH = 5e-7",
+     UP, (-0.6, 0.0, -0.8 + 2e-6), (0.6, 0.0, 0.8), None),
+    ("NdotL = 0", "light exactly at the horizon: decided 0", UP, (0.6, 0.0, 0.8), (1.0, 0.0, 0.0), 0.0),
+    ("NdotL < 0", "light behind the surface: decided 0", UP, (0.6, 0.0, 0.8), (0.6, 0.0, -0.8), 0.0),
+    ("light at the shaded point", "l = pbr_safe_normalize(0) = 0 (a point light touching the surface): "
+     "no direction, decided 0", UP, (0.6, 0.0, 0.8), (0.0, 0.0, 0.0), 0.0),
+    ("zero view vector", "v = pbr_safe_normalize(0) (camera at the point): NdotV clamps, finite",
+     UP, (0.0, 0.0, 0.0), (0.6, 0.0, 0.8), None),
+    ("NdotV = 0", "grazing view: V divides by NdotV", UP, (1.0, 0.0, 0.0), (0.6, 0.0, 0.8), None),
+    ("NdotV < 0", "back-facing view from a normal map", UP, (0.8, 0.0, -0.6), (0.6, 0.0, 0.8), None),
+    ("mirror, NdotH = 1", "the peak of the sharpest lobe: 1 - NdotH² = 0 exactly", UP,
+     (-0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
+    ("mirror at grazing", "peak of the lobe with NdotL = NdotV = 1e-3: D and V both near their maxima",
+     UP, (-0.9999995, 0.0, 1e-3), (0.9999995, 0.0, 1e-3), None),
+    ("l = v", "retro-reflection: h = v, VdotH = 1 exactly", UP, (0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
+    ("|n| = 1.01", "unnormalised interpolated normal: NdotL, NdotV, NdotH above 1 near the peak",
+     (0.0, 0.0, 1.01), (0.0, 0.0, 1.0), (0.0, 0.0, 1.0), None),
+    ("|n| = 1 + ulp", "interpolated normal one ulp long: dot products exceed 1 by one rounding",
+     (0.0, 0.0, domains.ULP_ABOVE_ONE), (-0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
+    ("far camera", "v = pbr_safe_normalize(1e30 · direction): dot(v, v) would overflow in normalize()",
+     UP, (-6e29, 0.0, 8e29), (0.6, 0.0, 0.8), "safe_normalize_v"),
+)
+_MATERIAL_CASES = (
+    ("roughness = 0 (smoothness 1)", {"roughness": 0.0}, "roughness_floor"),
+    ("roughness < 0", {"roughness": -0.5}, "roughness_floor"),
+    ("roughness = 1", {"roughness": 1.0}, None),
+    ("metal F0 = 1", {"f0": (1.0, 1.0, 1.0), "diffuseColor": (0.0, 0.0, 0.0)}, None),
+    ("F0 = 0", {"f0": (0.0, 0.0, 0.0)}, None),
+    ("albedo 0", {"diffuseColor": (0.0, 0.0, 0.0)}, None),
+    ("albedo 1", {"diffuseColor": (1.0, 1.0, 1.0)}, None),
+)
+_MATERIAL_WHY = {
+    "roughness = 0 (smoothness 1)": "a perfect mirror: D is a Dirac; decided: the tier's minimum roughness, exactly",
+    "roughness < 0": "an out-of-range texture value; decided: the tier's minimum roughness, exactly",
+    "roughness = 1": "the roughest lobe",
+    "metal F0 = 1": "a perfect metal: F = 1 at every angle, the largest specular",
+    "F0 = 0": "no specular at normal incidence: F is all Fresnel rise",
+    "albedo 0": "black diffuse: exact zeros",
+    "albedo 1": "white diffuse: the energy limit",
+}
+
+
+def _shading_cases(function: Function) -> list[Case]:
+    cases = []
+    base = typical_inputs(function)
+    base.update(n=UP, v=(-0.6, 0.0, 0.8), l=(0.6, 0.0, 0.8), roughness=0.0)
+    wrap = ((lambda e: f"radiance * ({e}) * (PBR_LIGHT_UNIT_SCALE * clamp(dot(n, l), 0.0, 1.0))")
+            if "radiance" in function.expression else (lambda e: e))
+    # The decided values live in pbr_brdf_standard before any variant's term is called:
+    # checked exactly at each tier and diffuse variant, by bound for the other selectors.
+    exact_here = function.variant.startswith(("quality=", "diffuse="))
+    for name, why, n, v, l, exact in _GEOMETRY_CASES:
+        if isinstance(exact, str) and not exact_here:
+            exact = None
+        inputs = dict(base, n=n, v=v, l=l, roughness=0.3)
+        expression = ""
+        if exact == "diffuse":
+            exact = wrap(_DIFFUSE_ONLY)
+        elif exact == "safe_normalize_v":  # the far camera normalised by the library's guard
+            exact, expression = None, function.expression.replace("(n, v,", "(n, pbr_safe_normalize(v),")
+        cases.append(Case(function, name, why, inputs, exact, expression))
+    quality = dict(function.defines).get("PBR_QUALITY", "PBR_QUALITY_HIGH").removeprefix("PBR_QUALITY_")
+    floor = float(np.float32(shading.QUALITY_MIN_PERCEPTUAL_ROUGHNESS[quality]))
+    cases.append(Case(function, "roughness = tier minimum", "the guard itself: the smallest roughness the "
+                      "tier uses, reference for the clamped cases", dict(base, roughness=floor)))
+    for name, change, exact in _MATERIAL_CASES:
+        if exact == "roughness_floor":
+            exact = SameAs("roughness = tier minimum")
+        cases.append(Case(function, name, _MATERIAL_WHY[name], dict(base, **change), exact))
+    return cases
+
+
+# Values the library decides where the maths has none, per function (checked exactly).
+DECIDED = {
+    "pbr_D_GGX": [("alpha = 0 at the peak", "D_GGX(1, 0) is 0/0 (a Dirac); decided: D at PBR_MIN_ALPHA",
+                   {"NdotH": 1.0, "alpha": 0.0}, "pbr_D_GGX(1.0, PBR_MIN_ALPHA)")],
+    "pbr_D_Beckmann": [("NdotH = 0", "0/0 (exp(-inf) / 0); decided: 0, the limit", {"NdotH": 0.0, "alpha": 0.5}, 0.0)],
+    "pbr_G1_SmithGGX": [("NdotX = 0, alpha = 0", "2·0/(0 + 0); decided 0: no light along the horizon",
+                         {"NdotX": 0.0, "alpha": 0.0}, 0.0)],
+    "pbr_G1_SchlickGGX": [("NdotX = 0, k = 0", "0/0; decided 0", {"NdotX": 0.0, "k": 0.0}, 0.0)],
+    "pbr_F_Dielectric": [("eta = 1 at grazing", "0/0: F = 0 for eta = 1, F -> 1 at grazing for eta != 1; "
+                          "decided 0 (no interface)", {"c": 0.0, "eta": 1.0}, 0.0)],
+    "pbr_ior_from_f0": [("F0 = 1", "a perfect mirror: eta = 2/0; decided PBR_MAX_IOR", {"f0": 1.0}, "PBR_MAX_IOR")],
+    "pbr_specPower_from_alpha": [("alpha = 0", "s = 2/0; decided: s at PBR_MIN_ALPHA (2e14)", {"a": 0.0},
+                                  "pbr_specPower_from_alpha(PBR_MIN_ALPHA)")],
+    "pbr_D_BlinnPhong": [("NdotH = 0, s = 0", "pow(0, 0) is undefined in GLSL; decided 0^0 = 1 (uniform lobe 1/π)",
+                          {"NdotH": 0.0, "s": 0.0}, "PBR_INV_PI")],
+    "pbr_pow_safe": [("0^0", "undefined in GLSL; decided 1", {"x": 0.0, "s": 0.0}, 1.0),
+                     ("0^s", "pow(0, s) = exp2(s · log2 0); decided 0, the limit", {"x": 0.0, "s": 2.0}, 0.0)],
+    "pbr_safe_normalize": [("zero vector", "no direction; decided the zero vector", {"d": (0.0, 0.0, 0.0)}, 0.0),
+                           ("denormal vector", "GPUs may flush denormals, so its direction is not portable; "
+                            "decided the zero vector on every GPU", {"d": (domains.DENORMAL, 0.0, 0.0)}, 0.0),
+                           ("tiny vector", "dot(d, d) = 1e-60 underflows to 0 in normalize()",
+                            {"d": (1e-30, 0.0, 0.0)}, "vec3(1.0, 0.0, 0.0)"),
+                           ("huge vector", "dot(d, d) overflows to Inf in normalize(): a camera 1e30 away",
+                            {"d": (0.0, 1e30, 0.0)}, "vec3(0.0, 1.0, 0.0)")],
+    "pbr_linear_to_srgb": [("NaN", "decided: NaN encodes as 0 (black)", {"c": (np.nan,) * 3}, 0.0),
+                           ("+Inf", "decided: +Inf encodes like 1 (white)", {"c": (np.inf,) * 3},
+                            "pbr_linear_to_srgb(vec3(1.0))"),
+                           ("negative", "decided: negatives encode as 0", {"c": (-1.0,) * 3}, 0.0)],
+    "pbr_encode_final_color": [("NaN", "decided: NaN encodes as 0 on every transfer path", {"c": (np.nan,) * 3}, 0.0),
+                               ("+Inf", "decided: +Inf encodes like 1", {"c": (np.inf,) * 3},
+                                "pbr_encode_final_color(vec3(1.0))")],
+}
+for _name in ("pbr_tonemap", "pbr_tonemap_reinhard", "pbr_tonemap_hable", "pbr_tonemap_aces_fitted", "pbr_tonemap_aces_narkowicz",
+              "pbr_tonemap_khronos_neutral"):
+    DECIDED[_name] = [("NaN", "decided: NaN maps to black, like 0", {"c": (np.nan,) * 3}, f"{_name}(vec3(0.0))"),
+                      ("+Inf", "decided: +Inf maps like 65504, the white of every curve", {"c": (np.inf,) * 3},
+                       f"{_name}(vec3(PBR_HALF_MAX))")]
+
+
+def cases_of(function: Function) -> list[Case]:
+    if function.name in ("pbr_brdf_standard", "pbr_shade_punctual"):
+        return _shading_cases(function) + _edge_cases(function)
+    if not function.args:
+        return [Case(function, "constant", "no inputs: the value itself must be exact", {"x": 0.0})]
+    arg_names = {a.name for a in function.args}
+    decided = [Case(function, name, why, dict(typical_inputs(function), **inputs), exact)
+               for name, why, inputs, exact in DECIDED.get(function.name, []) if set(inputs) <= arg_names]
+    dirs = [] if not any(a.kind == "dir" for a in function.args) else [
+        Case(function, "typical directions", "unit vectors at a typical angle", typical_inputs(function))]
+    return decided + dirs + _edge_cases(function)
+
+
+def catalogue() -> list[Case]:
+    return [case for function in functions() for case in cases_of(function)]
