@@ -42,7 +42,7 @@ BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR
               "specular_f": _shading.SPECULAR_F, "diffuse": _shading.DIFFUSE}
 
 TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
-QUALITIES = ("high", "low")  # PBR_QUALITY_HIGH / PBR_QUALITY_LOW (pbr/shading/dispatch.glsl)
+QUALITIES = ("high", "medium", "low")  # PBR_QUALITY_* (pbr/shading/dispatch.glsl)
 ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
 TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data

@@ -10,13 +10,14 @@
 //           PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED and the selector values below.
 // Include:  "pbr/shading/dispatch.glsl" (path relative to glsl/)
 // Config macros read: (each has a default, set with #ifndef below)
-//   PBR_QUALITY     PBR_QUALITY_HIGH (default, float32) | PBR_QUALITY_LOW (half-safe: runs
-//                   at mediump/half; see the tier block below); picks the defaults below
+//   PBR_QUALITY     PBR_QUALITY_HIGH (default, float32) | PBR_QUALITY_MEDIUM (float32,
+//                   cheaper V and F) | PBR_QUALITY_LOW (half-safe: runs at mediump/half);
+//                   see the tier block below; picks the defaults below
 //   PBR_SPECULAR_D  PBR_SPECULAR_D_GGX (default) | _BECKMANN | _BLINN_PHONG
 //   PBR_SPECULAR_V  PBR_SPECULAR_V_SMITH_GGX_CORRELATED (HIGH default)
-//                   | _SMITH_GGX_CORRELATED_FAST (LOW default) | _SMITH_GGX | _SCHLICK_GGX
+//                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
-//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG | _NONE (F = 1, for
+//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
 //                   white-furnace checks and debugging)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //
@@ -67,8 +68,9 @@
 #define PBR_DIFFUSE_LAMBERT 0
 #define PBR_DIFFUSE_BURLEY  1
 
-#define PBR_QUALITY_LOW  0
-#define PBR_QUALITY_HIGH 1
+#define PBR_QUALITY_LOW    0
+#define PBR_QUALITY_HIGH   1
+#define PBR_QUALITY_MEDIUM 2
 
 #ifndef PBR_QUALITY
 #define PBR_QUALITY PBR_QUALITY_HIGH
@@ -95,6 +97,9 @@
 // Quality tiers -> selector defaults and tier guards: the only place tiers are
 // interpreted. An explicit selector always wins over the tier.
 //   HIGH  float32: every default above.
+//   MEDIUM float32, cheaper terms (Unity's BRDF2 idea): V -> SMITH_GGX_CORRELATED_FAST
+//         (Hammon 2017, no square roots), F -> SCHLICK_SG (exp2 instead of pow5); the
+//         HIGH tier's guards; the environment BRDF still from the DFG table.
 //   LOW   half-safe (mediump): V -> SMITH_GGX_CORRELATED_FAST (no square roots), minimum
 //         perceptual roughness 0.089, l = -v threshold 2^-14, D · V capped at PBR_HALF_MAX (pbr_specular_lobe_limit;
 //         Filament's saturateMediump): with NdotV, NdotL >= 1e-4 the fast V reaches 3e5,
@@ -106,6 +111,15 @@
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
+#elif PBR_QUALITY == PBR_QUALITY_MEDIUM
+#  ifndef PBR_SPECULAR_V
+#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+#  endif
+#  ifndef PBR_SPECULAR_F
+#  define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK_SG
+#  endif
+#  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
+#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
 #elif PBR_QUALITY == PBR_QUALITY_HIGH
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED

@@ -23,19 +23,27 @@ SPECULAR_V = ("SMITH_GGX_CORRELATED", "SMITH_GGX_CORRELATED_FAST", "SMITH_GGX", 
               "COOK_TORRANCE", "KELEMEN", "IMPLICIT")
 SPECULAR_F = ("SCHLICK", "SCHLICK_SG", "NONE")
 DIFFUSE = ("LAMBERT", "BURLEY")
-QUALITY = ("LOW", "HIGH")
-# PBR_QUALITY -> default PBR_SPECULAR_V (the tier block of dispatch.glsl)
-QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "HIGH": "SMITH_GGX_CORRELATED"}
+QUALITY = ("LOW", "HIGH", "MEDIUM")
+# PBR_QUALITY -> default PBR_SPECULAR_V and PBR_SPECULAR_F (the tier block of dispatch.glsl)
+QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "MEDIUM": "SMITH_GGX_CORRELATED_FAST",
+                     "HIGH": "SMITH_GGX_CORRELATED"}
+QUALITY_DEFAULT_F = {"LOW": "SCHLICK", "MEDIUM": "SCHLICK_SG", "HIGH": "SCHLICK"}
 # PBR_QUALITY -> PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the cap of pbr_specular_lobe_limit
-QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
-QUALITY_MAX_SPECULAR_LOBE = {"LOW": HALF_MAX, "HIGH": np.inf}
+QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
+                                    "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
+QUALITY_MAX_SPECULAR_LOBE = {"LOW": HALF_MAX, "MEDIUM": np.inf, "HIGH": np.inf}
 QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED = {"LOW": MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP,
+                                          "MEDIUM": MIN_HALF_VECTOR_LENGTH_SQUARED,
                                           "HIGH": MIN_HALF_VECTOR_LENGTH_SQUARED}
 
 
 def _variants(specular_d, specular_v, specular_f, diffuse, quality):
+    if quality not in QUALITY:
+        raise ValueError(f"quality={quality!r}: expected one of {QUALITY}")
     if specular_v is None:
         specular_v = QUALITY_DEFAULT_V[quality]
+    if specular_f is None:
+        specular_f = QUALITY_DEFAULT_F[quality]
     for value, allowed, name in ((specular_d, SPECULAR_D, "specular_d"), (specular_v, SPECULAR_V, "specular_v"),
                                  (specular_f, SPECULAR_F, "specular_f"), (diffuse, DIFFUSE, "diffuse"),
                                  (quality, QUALITY, "quality")):
@@ -119,7 +127,7 @@ def _dot(a, b):
 
 
 def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_d="GGX",
-                  specular_v=None, specular_f="SCHLICK", diffuse="LAMBERT", quality="HIGH"):
+                  specular_v=None, specular_f=None, diffuse="LAMBERT", quality="HIGH"):
     """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
     (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
     specular; V's cosine floors; D · V capped at HALF_MAX in the LOW tier). 1 - NdotH² is
