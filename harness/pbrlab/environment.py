@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from .errors import SceneError
+from .reference.guards import HALF_MAX
 
 # Ramamoorthi & Hanrahan 2001, eq. 3 (constants of the real SH basis).
 SH_Y00 = 0.282095
@@ -82,9 +83,16 @@ def environment_image(environment) -> np.ndarray:
     image = read_image(environment.path)
     if image.ndim != 3 or image.shape[2] < 3:
         raise SceneError(f"{environment.path}: an environment needs RGB channels")
-    if not np.all(np.isfinite(image[..., :3])):
-        raise SceneError(f"{environment.path}: the environment has non-finite texels")
-    return (image[..., :3] * environment.intensity).astype(np.float32)
+    return (sanitize_radiance(image[..., :3]) * environment.intensity).astype(np.float32)
+
+
+def sanitize_radiance(image: np.ndarray) -> np.ndarray:
+    """Radiance the renderer can integrate: NaN and negative texels become 0 and +Inf
+    (or anything above it) the largest half float, 65504, the library's pbr_sanitize rule
+    (PBR_HALF_MAX). An HDR capture with a clipped or broken texel must not turn every
+    pixel that integrates it into NaN."""
+    clean = np.nan_to_num(np.asarray(image, np.float64), nan=0.0, posinf=HALF_MAX, neginf=0.0)
+    return np.clip(clean, 0.0, HALF_MAX)
 
 
 def environment_sh(environment) -> np.ndarray:

@@ -19,7 +19,7 @@ from .camera import camera_frame
 from .environment import environment_image, environment_sh
 from .images import read_image
 from .reference.shading import glsl_defines
-from .scene import Scene
+from .scene import HDR_TARGETS, Scene
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
 _LIGHT_TYPE = {"directional": 0, "point": 1, "spot": 2}
@@ -94,6 +94,8 @@ def _scene_defines(scene: Scene) -> dict:
                "PBR_ENERGY_COMPENSATION": int(scene.render.energy_compensation)}
     if scene.environment is not None:
         defines["PBRLAB_ENV"] = 1
+    if scene.render.hdr_target == "rgba16f":
+        defines["PBRLAB_HDR_HALF"] = 1
     return defines
 
 
@@ -208,7 +210,7 @@ def _draw_order(scene: Scene, frame):
 
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
-                 hdr_format: str = "f32", transfer: str = "HARDWARE") -> Rendering:
+                 transfer: str = "HARDWARE") -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
@@ -222,6 +224,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         scene.camera.size = tuple(size)
     frame = camera_frame(scene.camera, scene_radius(scene))
     base_defines = _scene_defines(scene)
+    hdr_format = HDR_TARGETS[scene.render.hdr_target]
     w, h = frame.size
     resources = _SceneResources(ctx, scene)
     cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())

@@ -44,6 +44,7 @@ BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR
 TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
 QUALITIES = ("high", "medium", "low")  # PBR_QUALITY_* (pbr/shading/dispatch.glsl)
 ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
+HDR_TARGETS = {"rgba32f": "f32", "rgba16f": "f16"}  # render.hdr_target -> targets.Target kind
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
 TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data
     "albedo": "srgb",
@@ -116,6 +117,7 @@ class RenderSettings:
     tonemap: str = "none"
     exposure: float = 0.0
     energy_compensation: bool = True  # PBR_ENERGY_COMPENSATION
+    hdr_target: str = "rgba32f"  # the float target: rgba32f, or rgba16f (values clamped to 65504)
 
 
 @dataclass
@@ -388,7 +390,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),
                             exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0),
-                            energy_compensation=rs.choice("energy_compensation", (True, False), default=True))
+                            energy_compensation=rs.choice("energy_compensation", (True, False), default=True),
+                            hdr_target=rs.choice("hdr_target", HDR_TARGETS, default="rgba32f"))
     rs.finish()
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin)

@@ -103,9 +103,24 @@ def cushion():
     (HERE / "cushion.obj").write_text("\n".join(lines) + "\n")
 
 
+def torture():
+    """For the torture chart: a normal map whose tangent-space normal points into the
+    surface and sideways (normals facing away from the viewer), and a small sky with one
+    +Inf and one NaN texel."""
+    n = np.array([0.0, 0.85, -0.53])
+    n /= np.linalg.norm(n)
+    images.write_png(HERE / "away_normal.png",
+                     np.tile(np.round((n * 0.5 + 0.5) * 255).astype(np.uint8), (8, 8, 1)))
+    sky_image = np.full((8, 16, 3), [0.3, 0.4, 0.6], np.float32)
+    sky_image[2, 5] = np.inf
+    sky_image[5, 11] = np.nan
+    images.write_exr(HERE / "broken_sky.exr", sky_image)
+
+
 if __name__ == "__main__":
     bricks()
     leaf()
     sky()
     cushion()
+    torture()
     print(f"wrote assets to {HERE}")

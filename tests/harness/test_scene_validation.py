@@ -104,3 +104,9 @@ def test_material_brdf_variants_parse_to_library_selectors():
 def test_bad_brdf_variant_is_named(brdf, message):
     with pytest.raises(SceneError, match=message):
         parse_scene(_with("materials.white.brdf", brdf))
+
+
+def test_render_hdr_target_is_validated():
+    assert parse_scene(_with("render", {"hdr_target": "rgba16f"})).render.hdr_target == "rgba16f"
+    with pytest.raises(SceneError, match=r"render\.hdr_target: expected one of rgba32f, rgba16f"):
+        parse_scene(_with("render", {"hdr_target": "rgb9e5"}))

@@ -26,5 +26,5 @@ void main() {
 #endif
     o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, v_tangent);
     vec4 c = pbrlab_shade_surface(o, v_position, IN.viewDir);
-    out_radiance = vec4(c.rgb, pbrlab_output_alpha(c));
+    out_radiance = vec4(pbrlab_target_radiance(c.rgb), pbrlab_output_alpha(c));
 }

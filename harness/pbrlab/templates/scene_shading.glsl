@@ -5,6 +5,7 @@
 //   PBRLAB_LIGHT_COUNT        number of punctual lights (0..)
 //   PBRLAB_ENV                defined when the scene has an environment
 //   PBRLAB_WORKFLOW_SPECULAR  defined for the specular workflow (else metallic)
+//   PBRLAB_HDR_HALF           defined when the float target is RGBA16F
 //   PBR_QUALITY, PBR_ALPHA_MODE, PBR_SPECULAR_*, PBR_DIFFUSE: the library's selectors
 
 #ifdef PBRLAB_ENV
@@ -127,6 +128,16 @@ vec3 pbrlab_tangent_to_world_normal(vec3 tangentNormal, vec3 n, vec4 tangent) {
     t = tl > 1e-12 ? t * inversesqrt(tl) : pbr_tangent_to_world(vec3(1.0, 0.0, 0.0), n);
     vec3 b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
     return normalize(mat3(t, b, n) * tangentNormal);
+}
+
+// What the float target stores: radiance, clamped to the largest half (PBR_HALF_MAX) when
+// the target is RGBA16F (PBRLAB_HDR_HALF), where a larger value would become +Inf.
+vec3 pbrlab_target_radiance(vec3 c) {
+#ifdef PBRLAB_HDR_HALF
+    return pbr_sanitize(c, PBR_HALF_MAX);
+#else
+    return c;
+#endif
 }
 
 // The render target's alpha: coverage for opaque and cutout, the blend weight otherwise.

@@ -38,7 +38,7 @@ void main() {
     float phi = 2.0 * PBR_PI * IN.uv.x;  // tangent along increasing u (pbr_equirect_direction)
     o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, vec4(cos(phi), 0.0, sin(phi), 1.0));
     vec4 c = pbrlab_shade_surface(o, p, -d);
-    out_radiance = vec4(c.rgb, pbrlab_output_alpha(c));
+    out_radiance = vec4(pbrlab_target_radiance(c.rgb), pbrlab_output_alpha(c));
     vec4 clip = u_view_proj * vec4(p, 1.0);
     gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
 }
