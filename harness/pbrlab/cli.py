@@ -15,7 +15,7 @@ import sys
 from .errors import PbrlabError
 from .gl import BACKENDS
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "hardcases")
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -41,6 +41,9 @@ def main(argv=None) -> int:
         return 2
     except KeyboardInterrupt:
         return 130
+    except BrokenPipeError:  # e.g. `pbrlab features x.json | head`: the reader left
+        sys.stderr.close()
+        return 0
 
 
 if __name__ == "__main__":

@@ -14,15 +14,13 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import gl, ibl, meshes, shaders, targets
+from . import features, gl, ibl, meshes, shaders, targets
 from .camera import camera_frame
 from .environment import environment_image, environment_sh
 from .images import read_image
-from .reference.shading import glsl_defines
 from .scene import HDR_TARGETS, Scene
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
-_LIGHT_TYPE = {"directional": 0, "point": 1, "spot": 2}
 _UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
 # Triangles of the unit cube, counter-clockwise seen from outside.
 _CUBE_TRIANGLES = np.array([
@@ -35,6 +33,7 @@ class Rendering:
     linear: np.ndarray  # HxWx4 float32 radiance; alpha = material alpha where covered, 0 elsewhere
     srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + hardware sRGB encode
     info: dict
+    programs: "features.ProgramPlan" = None  # what was compiled
 
 
 def _defines_block(defines: dict) -> str:
@@ -52,15 +51,18 @@ def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Pa
     """
     key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
     if key not in _PROGRAMS:
-        include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-        surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.glsl"'
-
-        def load(name):
-            text = (TEMPLATES / name).read_text(encoding="utf-8")
-            text = text.replace("//@DEFINES", _defines_block(defines)).replace("//@SURFACE", surface_line)
-            return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
-        _PROGRAMS[key] = shaders.build_program(ctx, load(vert), load(frag))
+        _PROGRAMS[key] = shaders.build_program(ctx, template_source(vert, defines, surface),
+                                               template_source(frag, defines, surface))
     return _PROGRAMS[key]
+
+
+def template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
+    """A harness template with its defines and surface function, includes expanded."""
+    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
+    surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.glsl"'
+    text = (TEMPLATES / name).read_text(encoding="utf-8")
+    text = text.replace("//@DEFINES", _defines_block(defines)).replace("//@SURFACE", surface_line)
+    return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
 
 
 def _set(program, name, value):
@@ -71,9 +73,14 @@ def _set(program, name, value):
 
 
 def _set_array(program, name, values):
+    """Set a uniform array; entries past ``values`` (the full program's spare light
+    slots) are zero and never read (its loops stop at the runtime count)."""
     uniform = program.get(name, None)
     if uniform is not None:
-        uniform.write(np.ascontiguousarray(values, dtype=np.float32).tobytes())
+        data = np.ascontiguousarray(values, dtype=np.float32).reshape(len(values), -1)
+        padded = np.zeros((uniform.array_length, data.shape[1]), np.float32)
+        padded[:len(data)] = data
+        uniform.write(padded.tobytes())
 
 
 def scene_radius(scene: Scene) -> float:
@@ -88,51 +95,43 @@ def scene_radius(scene: Scene) -> float:
     return radius
 
 
-def _scene_defines(scene: Scene) -> dict:
-    defines = {"PBRLAB_LIGHT_COUNT": len(scene.lights),
-               "PBR_QUALITY": f"PBR_QUALITY_{scene.render.quality.upper()}",
-               "PBR_ENERGY_COMPENSATION": int(scene.render.energy_compensation)}
-    if scene.environment is not None:
-        defines["PBRLAB_ENV"] = 1
-    if scene.render.hdr_target == "rgba16f":
-        defines["PBRLAB_HDR_HALF"] = 1
-    return defines
-
-
-def material_defines(material) -> dict:
-    """The library's selectors and the harness's switches for one material."""
-    defines = dict(glsl_defines(**material.brdf))
-    defines["PBR_ALPHA_MODE"] = f"PBR_ALPHA_MODE_{material.alpha_mode.upper()}"
-    if material.workflow == "specular":
-        defines["PBRLAB_WORKFLOW_SPECULAR"] = 1
-    if material.surface is None:
-        for slot in material.textures:
-            defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
-    return defines
-
-
 class _SceneResources:
-    """GPU data shared by every draw of one render: environment, DFG table, textures."""
+    """GPU data shared by every draw of one render: environment, DFG table, textures, and
+    the neutral stand-ins the full program reads where the scene has nothing."""
 
     ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1}
     FIRST_MATERIAL_UNIT = 2
+    # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
+    NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
-    def __init__(self, ctx, scene: Scene):
+    def __init__(self, ctx, scene: Scene, full: bool):
         self.ctx = ctx
+        self.full = full
         self.env_sh = None
         self.textures: dict[tuple[Path, bool], moderngl.Texture] = {}
         self.env_textures = {}
+        self.neutral: dict[str, moderngl.Texture] = {}
         if scene.environment is not None:
             self.env_sh = environment_sh(scene.environment)
             self.env_textures["u_dfg_lut"] = ibl.dfg_texture(ctx)
             self.env_textures["u_env_prefiltered"] = ibl.prefiltered_environment(
                 ctx, environment_image(scene.environment))
+        elif full:  # the full program always samples an environment: a black one
+            self.env_sh = np.zeros((9, 3))
+            self.env_textures["u_dfg_lut"] = ibl.dfg_texture(ctx)
+            self.env_textures["u_env_prefiltered"] = ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")
 
     def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
         key = (path, srgb)
         if key not in self.textures:
             self.textures[key] = targets.upload_texture(self.ctx, read_image(path), srgb=srgb)
         return self.textures[key]
+
+    def neutral_texture(self, slot: str) -> moderngl.Texture:
+        if slot not in self.neutral:
+            texel = np.array(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)), np.float32)
+            self.neutral[slot] = self.ctx.texture((1, 1), 4, texel.tobytes(), dtype="f4")
+        return self.neutral[slot]
 
     def bind(self, program, scene, frame, material):
         _upload_scene_uniforms(program, scene, frame, self.env_sh)
@@ -142,13 +141,20 @@ class _SceneResources:
                 _set(program, name, unit)
         _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
         _upload_material(program, material)
-        for offset, (name, path) in enumerate(sorted(material.textures.items())):
-            unit = self.FIRST_MATERIAL_UNIT + offset
+        unit = self.FIRST_MATERIAL_UNIT
+        for name, path in sorted(material.textures.items()):
             self.texture(path, material.texture_srgb[name]).use(unit)
             _set(program, f"u_{name}_map" if material.surface is None else name, unit)
+            unit += 1
+        if self.full and material.surface is None:
+            for slot in features.FULL_MAP_SLOTS:
+                if slot not in material.textures:
+                    self.neutral_texture(slot).use(unit)
+                    _set(program, f"u_{slot}_map", unit)
+                    unit += 1
 
     def release(self):
-        for tex in [*self.textures.values(), *self.env_textures.values()]:
+        for tex in [*self.textures.values(), *self.env_textures.values(), *self.neutral.values()]:
             tex.release()
 
 
@@ -159,21 +165,27 @@ def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
     _set(program, "u_camera_up", tuple(frame.up))
     _set(program, "u_viewport_size", tuple(float(s) for s in frame.size))
     _set(program, "u_view_proj", tuple(frame.view_proj.T.reshape(-1)))  # GL is column-major
-    if scene.lights:
-        pos_type, direction, radiance, range_cones = [], [], [], []
-        for light in scene.lights:
-            xyz = light.direction if light.type == "directional" else light.position
-            pos_type.append([*xyz, _LIGHT_TYPE[light.type]])
-            direction.append(light.direction if light.direction is not None else [0, 0, -1])
-            radiance.append(light.color * light.intensity)
+    by_type = {t: [light for light in scene.lights if light.type == t] for t in features.LIGHT_TYPES}
+    for light_type, lights in by_type.items():
+        _set(program, f"u_{light_type}_active", len(lights))
+    if by_type["directional"]:
+        _set_array(program, "u_directional_direction", [l.direction for l in by_type["directional"]])
+        _set_array(program, "u_directional_radiance", [l.color * l.intensity for l in by_type["directional"]])
+    for light_type in ("point", "spot"):
+        lights = by_type[light_type]
+        if not lights:
+            continue
+        _set_array(program, f"u_{light_type}_position", [l.position for l in lights])
+        _set_array(program, f"u_{light_type}_radiance", [l.color * l.intensity for l in lights])
+        _set_array(program, f"u_{light_type}_range", [min(l.range, 3.0e38) for l in lights])
+    if by_type["spot"]:
+        cones = []
+        for light in by_type["spot"]:
             cos_outer = np.cos(np.radians(light.outer_cone_deg))
             cos_inner = np.cos(np.radians(light.inner_cone_deg))
-            range_cones.append([min(light.range, 3.0e38), cos_outer,
-                                1.0 / max(cos_inner - cos_outer, 1e-4)])
-        _set_array(program, "u_light_position_type", pos_type)
-        _set_array(program, "u_light_direction", direction)
-        _set_array(program, "u_light_radiance", radiance)
-        _set_array(program, "u_light_range_cones", range_cones)
+            cones.append([cos_outer, 1.0 / max(cos_inner - cos_outer, 1e-4)])
+        _set_array(program, "u_spot_direction", [l.direction for l in by_type["spot"]])
+        _set_array(program, "u_spot_cone", cones)
     if env_sh is not None:
         _set_array(program, "u_env_sh", env_sh)
 
@@ -185,7 +197,8 @@ def _upload_material(program, material):
     _set(program, "u_smoothness", material.smoothness)
     _set(program, "u_emission", tuple(material.emission))
     _set(program, "u_occlusion", material.occlusion)
-    _set(program, "u_alpha", material.alpha)
+    # opaque materials show no alpha: the full program is fed the neutral 1
+    _set(program, "u_alpha", material.alpha if material.alpha_mode != "opaque" else 1.0)
     _set(program, "u_alpha_cutoff", material.alpha_cutoff)
 
 
@@ -210,12 +223,14 @@ def _draw_order(scene: Scene, frame):
 
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
-                 transfer: str = "HARDWARE") -> Rendering:
+                 transfer: str = "HARDWARE", specialise: bool = True) -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
     (sRGB framebuffer encodes) or a DIY shader encode into a plain 8-bit target: SRGB
-    (exact curve), GAMMA22 (pow 1/2.2) or FAST (sqrt).
+    (exact curve), GAMMA22 (pow 1/2.2) or FAST (sqrt). ``specialise=False`` renders every
+    material with the full program (every effect compiled in, fed neutral values):
+    the same image, at the full program's cost (harness/pbrlab/features.py).
     """
     if transfer not in COLOR_TRANSFERS:
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
@@ -223,10 +238,10 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if size is not None:
         scene.camera.size = tuple(size)
     frame = camera_frame(scene.camera, scene_radius(scene))
-    base_defines = _scene_defines(scene)
+    plan = features.plan_programs(scene, specialise)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
     w, h = frame.size
-    resources = _SceneResources(ctx, scene)
+    resources = _SceneResources(ctx, scene, full=not plan.specialised)
     cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
     cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
     try:
@@ -237,7 +252,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             ctx.front_face = "ccw"
             for obj in _draw_order(scene, frame):
                 material = scene.materials[obj.material]
-                defines = dict(base_defines, **material_defines(material))
+                defines = plan.defines[obj.material]
                 blended = material.alpha_mode in _BLEND
                 if blended:
                     ctx.enable(moderngl.BLEND)
@@ -258,7 +273,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         resources.release()
         cube_vbo.release()
         cube_ibo.release()
-    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx))
+    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
 
 
 def _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo, cube_ibo):

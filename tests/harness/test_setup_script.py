@@ -30,8 +30,23 @@ def test_non_root_user_gets_the_exact_install_line_and_exit_1(tmp_path):
 
 
 def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
+    # A copy of the script in a scratch tree whose .venv stamp matches its requirements:
+    # the real .venv is never touched by the test suite.
+    import hashlib
+    import shutil
+
+    tree = tmp_path / "tree"
+    (tree / "scripts").mkdir(parents=True)
+    shutil.copy(ROOT / "scripts" / "setup.sh", tree / "scripts")
+    for name in ("requirements.txt", "pyproject.toml"):
+        shutil.copy(ROOT / name, tree)
+    (tree / ".venv" / "bin").mkdir(parents=True)
+    (tree / ".venv" / "bin" / "python").write_text("#!/bin/sh\nexit 0\n")
+    (tree / ".venv" / "bin" / "python").chmod(0o755)
+    digest = hashlib.sha256((tree / "requirements.txt").read_bytes() + (tree / "pyproject.toml").read_bytes())
+    (tree / ".venv" / ".pbrlab-installed").write_text(digest.hexdigest()[:16] + "\n")
     env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:{os.environ['PATH']}")
-    out = subprocess.run(["bash", str(ROOT / "scripts" / "setup.sh")], capture_output=True,
+    out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, timeout=60)
     assert out.returncode == 0, out.stderr
     assert out.stdout == "" and out.stderr == ""

@@ -39,7 +39,10 @@ def run(args) -> int:
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
     scene = load_scene(args.scene)
-    rendering = render_scene(scene, gl.shared_context(args.backend), size=size)
+    rendering = render_scene(scene, gl.shared_context(args.backend), size=size,
+                             specialise=not args.no_specialise)
+    kind = "specialised" if rendering.programs.specialised else "full"
+    print(f"{rendering.programs.distinct} {kind} program(s)")
     check_finite(rendering.linear, args.scene)
     if args.hdr:
         images.write_exr(args.hdr, rendering.linear, metadata=rendering.info)
@@ -57,4 +60,6 @@ def register(sub, common):
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")
+    p.add_argument("--no-specialise", action="store_true",
+                   help="render with the full program (every effect compiled in) to compare")
     p.set_defaults(run=run)

@@ -22,7 +22,7 @@ void main() {
     PbrlabSurfaceOutput o = pbrlab_default_output();
     surf(IN, o);
 #if PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
-    if (o.Alpha < u_alpha_cutoff) discard;
+    if (o.Alpha < u_alpha_cutoff) discard;  // PBRLAB_ALPHA is always on in cutout mode
 #endif
     o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, v_tangent);
     vec4 c = pbrlab_shade_surface(o, v_position, IN.viewDir);

@@ -2,8 +2,10 @@
 // the harness's resources (the library declares none), builds Unity's UnityGI for each
 // light and the environment, and shades a surface with the library's LightingStandard /
 // LightingStandardSpecular (pbr/unity/surface_standard.glsl). Compile-time configuration:
-//   PBRLAB_LIGHT_COUNT        number of punctual lights (0..)
+//   PBRLAB_DIRECTIONAL_COUNT, PBRLAB_POINT_COUNT, PBRLAB_SPOT_COUNT  lights per type
 //   PBRLAB_ENV                defined when the scene has an environment
+//   PBRLAB_EMISSION, PBRLAB_OCCLUSION, PBRLAB_ALPHA  the material's optional effects
+//   PBRLAB_FULL               the runtime-branching program (harness/pbrlab/features.py)
 //   PBRLAB_WORKFLOW_SPECULAR  defined for the specular workflow (else metallic)
 //   PBRLAB_HDR_HALF           defined when the float target is RGBA16F
 //   PBR_QUALITY, PBR_ALPHA_MODE, PBR_SPECULAR_*, PBR_DIFFUSE: the library's selectors
@@ -40,34 +42,48 @@ struct Input {
     vec3 viewDir;
 };
 
-#define PBRLAB_LIGHT_DIRECTIONAL 0
-#define PBRLAB_LIGHT_POINT 1
-#define PBRLAB_LIGHT_SPOT 2
+// Punctual lights, one array set per type. Specialised programs size each type to the
+// scene's count (a type the scene lacks compiles to nothing); the full program
+// (PBRLAB_FULL) holds PBRLAB_*_COUNT = capacity and loops to a runtime count instead.
+#ifdef PBRLAB_FULL
+uniform int u_directional_active;
+uniform int u_point_active;
+uniform int u_spot_active;
+#define PBRLAB_DIRECTIONAL_ACTIVE u_directional_active
+#define PBRLAB_POINT_ACTIVE u_point_active
+#define PBRLAB_SPOT_ACTIVE u_spot_active
+#else
+#define PBRLAB_DIRECTIONAL_ACTIVE PBRLAB_DIRECTIONAL_COUNT
+#define PBRLAB_POINT_ACTIVE PBRLAB_POINT_COUNT
+#define PBRLAB_SPOT_ACTIVE PBRLAB_SPOT_COUNT
+#endif
 
-#if PBRLAB_LIGHT_COUNT > 0
-uniform vec4 u_light_position_type[PBRLAB_LIGHT_COUNT]; // xyz position, or the way a directional light travels; w type
-uniform vec3 u_light_direction[PBRLAB_LIGHT_COUNT];     // the way a spot light travels
-uniform vec3 u_light_radiance[PBRLAB_LIGHT_COUNT];      // color * intensity
-uniform vec3 u_light_range_cones[PBRLAB_LIGHT_COUNT];   // range, cos(outer), 1/(cos(inner)-cos(outer))
+#if PBRLAB_DIRECTIONAL_COUNT > 0
+uniform vec3 u_directional_direction[PBRLAB_DIRECTIONAL_COUNT];  // the way light travels
+uniform vec3 u_directional_radiance[PBRLAB_DIRECTIONAL_COUNT];   // color * intensity
+#endif
+#if PBRLAB_POINT_COUNT > 0
+uniform vec3 u_point_position[PBRLAB_POINT_COUNT];
+uniform vec3 u_point_radiance[PBRLAB_POINT_COUNT];
+uniform float u_point_range[PBRLAB_POINT_COUNT];
+#endif
+#if PBRLAB_SPOT_COUNT > 0
+uniform vec3 u_spot_position[PBRLAB_SPOT_COUNT];
+uniform vec3 u_spot_direction[PBRLAB_SPOT_COUNT];                // the way light travels
+uniform vec3 u_spot_radiance[PBRLAB_SPOT_COUNT];
+uniform float u_spot_range[PBRLAB_SPOT_COUNT];
+uniform vec2 u_spot_cone[PBRLAB_SPOT_COUNT];                     // cos(outer), 1/(cos(inner)-cos(outer))
+#endif
 
-UnityLight pbrlab_light(int i, vec3 p) {
+// A light at a position: direction from p, and radiance with inverse-square falloff.
+UnityLight pbrlab_positional_light(vec3 position, vec3 radiance, float range, vec3 p) {
     UnityLight light;
-    light.color = u_light_radiance[i];
-    if (u_light_position_type[i].w == float(PBRLAB_LIGHT_DIRECTIONAL)) {
-        light.dir = -u_light_position_type[i].xyz;
-        return light;
-    }
-    vec3 toLight = u_light_position_type[i].xyz - p;
+    vec3 toLight = position - p;
     float d2 = dot(toLight, toLight);
     light.dir = toLight * inversesqrt(max(d2, PBR_MIN_LIGHT_DISTANCE_SQUARED));
-    light.color *= pbr_distance_attenuation(d2, u_light_range_cones[i].x);
-    if (u_light_position_type[i].w == float(PBRLAB_LIGHT_SPOT)) {
-        light.color *= pbr_spot_attenuation(light.dir, u_light_direction[i],
-                                            u_light_range_cones[i].y, u_light_range_cones[i].z);
-    }
+    light.color = radiance * pbr_distance_attenuation(d2, range);
     return light;
 }
-#endif
 
 // The environment's light: irradiance / pi from SH9, prefiltered radiance along the
 // mirror direction at the mip of this roughness. Unoccluded (LightingStandard applies
@@ -85,22 +101,40 @@ UnityIndirect pbrlab_indirect(vec3 n, vec3 v, float perceptualRoughness) {
     return indirect;
 }
 
-// The surface lit by every light (the environment counted once) plus its emission.
+// The surface lit by the environment (once) and every light, type by type, plus its
+// emission. The order of the sums is the same in specialised and full programs.
 vec4 pbrlab_shade_surface(PbrlabSurfaceOutput o, vec3 p, vec3 v) {
     UnityGI gi;
     gi.indirect = pbrlab_indirect(o.Normal, v, SmoothnessToPerceptualRoughness(o.Smoothness));
     gi.light.color = vec3(0.0);
     gi.light.dir = o.Normal;
     vec4 c = PBRLAB_LIGHTING(o, v, gi);
-#if PBRLAB_LIGHT_COUNT > 0
     gi.indirect.diffuse = vec3(0.0);
     gi.indirect.specular = vec3(0.0);
-    for (int i = 0; i < PBRLAB_LIGHT_COUNT; ++i) {
-        gi.light = pbrlab_light(i, p);
+#if PBRLAB_DIRECTIONAL_COUNT > 0
+    for (int i = 0; i < PBRLAB_DIRECTIONAL_ACTIVE; ++i) {
+        gi.light.dir = -u_directional_direction[i];
+        gi.light.color = u_directional_radiance[i];
         c.rgb += PBRLAB_LIGHTING(o, v, gi).rgb;
     }
 #endif
+#if PBRLAB_POINT_COUNT > 0
+    for (int i = 0; i < PBRLAB_POINT_ACTIVE; ++i) {
+        gi.light = pbrlab_positional_light(u_point_position[i], u_point_radiance[i], u_point_range[i], p);
+        c.rgb += PBRLAB_LIGHTING(o, v, gi).rgb;
+    }
+#endif
+#if PBRLAB_SPOT_COUNT > 0
+    for (int i = 0; i < PBRLAB_SPOT_ACTIVE; ++i) {
+        gi.light = pbrlab_positional_light(u_spot_position[i], u_spot_radiance[i], u_spot_range[i], p);
+        gi.light.color *= pbr_spot_attenuation(gi.light.dir, u_spot_direction[i],
+                                               u_spot_cone[i].x, u_spot_cone[i].y);
+        c.rgb += PBRLAB_LIGHTING(o, v, gi).rgb;
+    }
+#endif
+#ifdef PBRLAB_EMISSION
     c.rgb += o.Emission;
+#endif
     return c;
 }
 
@@ -149,4 +183,6 @@ float pbrlab_output_alpha(vec4 shaded) {
 #endif
 }
 
+#if PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
 uniform float u_alpha_cutoff;
+#endif

@@ -33,7 +33,7 @@ void main() {
     PbrlabSurfaceOutput o = pbrlab_default_output();
     surf(IN, o);
 #if PBR_ALPHA_MODE == PBR_ALPHA_MODE_CUTOUT
-    if (o.Alpha < u_alpha_cutoff) discard;
+    if (o.Alpha < u_alpha_cutoff) discard;  // PBRLAB_ALPHA is always on in cutout mode
 #endif
     float phi = 2.0 * PBR_PI * IN.uv.x;  // tangent along increasing u (pbr_equirect_direction)
     o.Normal = pbrlab_tangent_to_world_normal(o.Normal, n, vec4(cos(phi), 0.0, sin(phi), 1.0));

@@ -1,0 +1,165 @@
+"""Scene-driven specialisation: programs compile only the effects a scene can show, and
+change nothing but the cost (harness/pbrlab/features.py)."""
+
+import json
+import re
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pbrlab import cli, features, render
+from pbrlab.charts import CHARTS
+from pbrlab.scene import load_scene, parse_scene
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tests" / "render"))
+from scenes import light_zoo, one_sphere  # noqa: E402
+
+TEST_SCENES = {
+    **{name: (lambda build=build: parse_scene(build())) for name, build in CHARTS.items()},
+    "light_zoo": lambda: parse_scene(light_zoo()),
+    "unity_example": lambda: load_scene(ROOT / "scenes" / "unity_example" / "scene.json"),
+    "torture": lambda: load_scene(ROOT / "scenes" / "torture" / "scene.json"),
+    "readme_example": lambda: load_scene(ROOT / "scenes" / "example.json"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(TEST_SCENES))
+def test_specialised_and_full_programs_render_bit_identical_images(name, gl_context):
+    # The full program adds exact neutral values (0 emission, x1 occlusion and maps, a
+    # black environment, zero spare lights) in the same order of operations, so the
+    # images agree bit for bit (measured: 0 ulp on every scene here).
+    specialised = render.render_scene(TEST_SCENES[name](), gl_context)
+    full = render.render_scene(TEST_SCENES[name](), gl_context, specialise=False)
+    assert specialised.programs.specialised and not full.programs.specialised
+    np.testing.assert_array_equal(specialised.linear.view(np.uint32), full.linear.view(np.uint32))
+    np.testing.assert_array_equal(specialised.srgb8, full.srgb8)
+
+
+MINIMAL = one_sphere({"albedo": [0.8, 0.5, 0.3], "smoothness": 0.6},
+                     [{"type": "directional", "direction": [0.2, -0.3, -1]}], size=(16, 16))
+ABSENT_WHEN_UNUSED = ["u_emission", "u_occlusion", "u_alpha", "u_point_", "u_spot_", "u_env_sh",
+                      "u_env_prefiltered", "u_dfg_lut", "u_albedo_map", "u_normal_map",
+                      # call sites (the library's definitions stay, unused):
+                      "pbr_spot_attenuation(gi.light.dir", "pbr_sh9_irradiance(u_env_sh",
+                      "u_directional_active"]
+
+
+def _preprocessed(source_text: str, tmp_path) -> str:
+    """The fragment shader after the C preprocessor (glslangValidator -E)."""
+    path = tmp_path / "shader.frag"
+    path.write_text(source_text)
+    out = subprocess.run(["glslangValidator", "-E", str(path)], capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    return re.sub(r"\s+", "", out.stdout)  # glslang re-spaces tokens ("gi . light")
+
+
+def _programs_for(scene, specialise):
+    plan = features.plan_programs(scene, specialise)
+    defines = plan.defines["m"]
+    source = render.template_source("sphere.frag", defines).text
+    return defines, source
+
+
+def test_unused_effects_are_absent_from_the_specialised_source_and_uniforms(gl_context, tmp_path):
+    scene = parse_scene(MINIMAL)
+    defines, source = _programs_for(scene, specialise=True)
+    text = _preprocessed(source, tmp_path)
+    for token in ABSENT_WHEN_UNUSED:
+        assert token not in text, token
+    program = render.program_from_templates(gl_context, "sphere.vert", "sphere.frag", defines)
+    members = set(program)
+    assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env|dfg)", m)]
+    assert "u_directional_radiance" in members
+
+
+def test_the_full_program_contains_every_effect(gl_context, tmp_path):
+    _, source = _programs_for(parse_scene(MINIMAL), specialise=False)
+    text = _preprocessed(source, tmp_path)
+    for token in ABSENT_WHEN_UNUSED:
+        assert token in text, token
+
+
+def test_material_and_scene_features_follow_what_the_scene_can_show():
+    scene = load_scene(ROOT / "scenes" / "unity_example" / "scene.json")
+    report = features.features_report(scene)
+    assert report["scene"]["directional"] == 1 and report["scene"]["point"] == 1 and report["scene"]["spot"] == 1
+    assert report["scene"]["environment"] is True
+    m = report["materials"]
+    assert m["neon"]["emission"] and not m["neon"]["occlusion"] and not m["neon"]["alpha"]
+    assert m["glass"]["alpha"] and m["smoke"]["alpha"] and m["leaf"]["alpha"]
+    assert list(m["leaf"]["maps"]) == ["albedo"] and list(m["leaf"]["srgb_maps"]) == ["albedo"]
+    assert not m["floor"]["emission"] and not m["floor"]["alpha"]
+    assert m["bricks"]["custom_surface"].endswith("brick_surface.glsl") and m["bricks"]["emission"]
+
+
+def test_programs_are_cached_across_renders(gl_context):
+    scene = parse_scene(CHARTS["chart_f0"]())
+    render.render_scene(scene, gl_context)
+    compiled = len(render._PROGRAMS)
+    render.render_scene(parse_scene(CHARTS["chart_f0"]()), gl_context)
+    assert len(render._PROGRAMS) == compiled
+
+
+def test_variant_explosion_falls_back_to_the_full_program_with_a_warning():
+    scene = parse_scene(CHARTS["chart_terms"]())  # 15 distinct specialised programs
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        plan = features.plan_programs(scene, limit=8)
+    assert not plan.specialised and "15 specialised programs, more than 8" in str(caught[0].message)
+    assert features.plan_programs(scene, limit=15).specialised
+
+
+def test_features_command_prints_json_for_a_scene(capsys):
+    assert cli.main(["features", str(ROOT / "scenes" / "example.json")]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["programs"] == {"specialised": True, "distinct": 2, "limit": features.MAX_SPECIALISED_PROGRAMS}
+
+
+def test_render_no_specialise_writes_the_same_image(tmp_path, capsys):
+    scene_file = ROOT / "scenes" / "example.json"
+    a, b = tmp_path / "a.exr", tmp_path / "b.exr"
+    assert cli.main(["render", str(scene_file), "--hdr", str(a), "--size", "64x40"]) == 0
+    assert cli.main(["render", str(scene_file), "--hdr", str(b), "--size", "64x40", "--no-specialise"]) == 0
+    out = capsys.readouterr().out
+    assert "2 specialised program(s)" in out and "2 full program(s)" in out
+    assert a.read_bytes() != b"" and a.read_bytes() == b.read_bytes()
+
+
+def _write_gltf(tmp_path) -> Path:
+    import trimesh
+
+    box = trimesh.creation.box()
+    box.visual = trimesh.visual.TextureVisuals(material=trimesh.visual.material.PBRMaterial(
+        name="painted", baseColorFactor=[200, 30, 30, 255], metallicFactor=0.0, roughnessFactor=0.4))
+    files = trimesh.Scene(box).export(file_type="gltf")
+    for name, data in files.items():
+        (tmp_path / name).write_bytes(data)
+    doc = json.loads((tmp_path / "model.gltf").read_text())
+    doc["materials"].append({"name": "lamp", "emissiveFactor": [1.0, 0.8, 0.5], "alphaMode": "BLEND",
+                             "normalTexture": {"index": 0}})
+    doc.setdefault("extensionsUsed", []).append("KHR_lights_punctual")
+    doc.setdefault("extensions", {})["KHR_lights_punctual"] = {"lights": [
+        {"type": "directional"}, {"type": "spot", "spot": {}}, {"type": "spot", "spot": {}}]}
+    (tmp_path / "model.gltf").write_text(json.dumps(doc))
+    return tmp_path / "model.gltf"
+
+
+def test_gltf_features_read_materials_and_punctual_lights(tmp_path, capsys):
+    path = _write_gltf(tmp_path)
+    assert cli.main(["features", str(path)]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["scene"]["directional"] == 1 and report["scene"]["spot"] == 2 and report["scene"]["point"] == 0
+    painted, lamp = report["materials"]["painted"], report["materials"]["lamp"]
+    assert not painted["emission"] and painted["alpha_mode"] == "opaque" and not painted["alpha"]
+    assert lamp["emission"] and lamp["alpha_mode"] == "fade" and lamp["maps"] == ["normal"]
+
+
+def test_bad_gltf_is_a_clear_error(tmp_path, capsys):
+    (tmp_path / "broken.gltf").write_text("{not json")
+    assert cli.main(["features", str(tmp_path / "broken.gltf")]) == 2
+    assert "not a readable glTF 2.0 file" in capsys.readouterr().err
