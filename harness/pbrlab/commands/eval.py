@@ -63,7 +63,8 @@ def run(args) -> int:
             name, value = _parse_vec(spec, n)
             inputs[name] = getattr(evaluator, f"vec{n}")(value)
     includes = args.include or None
-    result = evaluator.evaluate(args.expression, includes=includes, backend=args.backend, **inputs)
+    result = evaluator.evaluate(args.expression, includes=includes, backend=args.backend,
+                                language=args.language, **inputs)
     result = result.reshape(len(combos), -1) if names else result.reshape(1, -1)
     header = names + [args.expression if result.shape[1] == 1 else f"{args.expression}[{i}]"
                       for i in range(result.shape[1])]
@@ -79,9 +80,11 @@ def run(args) -> int:
 def register(sub, common):
     p = sub.add_parser("eval", parents=[common], help="evaluate a GLSL expression over a grid",
                        description=__doc__.splitlines()[0])
-    p.add_argument("expression", help="a GLSL expression, e.g. 'pbr_D_GGX(NdotH, alpha)'")
+    p.add_argument("expression", help="a GLSL (or HLSL) expression, e.g. 'pbr_D_GGX(NdotH, alpha)'")
+    p.add_argument("--language", choices=("glsl", "hlsl"), default="glsl",
+                   help="evaluate the GLSL library or its HLSL port (HLSL -> SPIR-V -> GLSL)")
     p.add_argument("--include", action="append", default=[],
-                   help="an include such as pbr/brdf/d_ggx.glsl (default: the umbrella pbr/pbr.glsl)")
+                   help="an include such as pbr/brdf/d_ggx.glsl (default: the umbrella pbr/pbr.glsl or .hlsl)")
     p.add_argument("--var", action="append", default=[], metavar="NAME=SPEC",
                    help="a float input: start:stop:count or v1,v2,...")
     for n in (2, 3, 4):

@@ -1,0 +1,123 @@
+"""The HLSL toolchain: HLSL -> SPIR-V (glslang's HLSL front end) -> GLSL 330 (spirv-cross).
+
+    glsl_text = hlsl_to_glsl(hlsl_text, name="<evaluate>")
+
+``pbrlab.evaluate(..., language="hlsl")`` runs HLSL through this path and then through the
+same GL evaluator as GLSL (one readback path, STYLE 10). The commands are
+
+    glslangValidator -D -V -e main -S frag [-Od] -I<dirs> --auto-sampled-textures FILE -o OUT.spv
+    spirv-cross --version 330 --no-es OUT.spv
+
+``--auto-sampled-textures`` turns the template's ``Texture2D`` inputs into combined image
+samplers, so spirv-cross writes ``uniform sampler2D pbrlab_in_<name>`` and ``texelFetch``:
+the names and the bit-exact fetch of the GLSL template. ``#include "pbr/..."`` is resolved
+by glslang against the caller's directories, then ``hlsl_ports/``; compile errors are
+reported at the original file and line (``pbr/brdf/d_ggx.hlsl:41: error: ...``).
+
+Optimisation: by default glslang legalises HLSL with SPIRV-Tools passes that also fold and
+reassociate float arithmetic (e.g. ``y / 2.4`` becomes ``y * 0.41666666``), which a D3D
+compiler need not do in the same way. The evaluator passes ``-Od`` (``optimize=False``) so
+the SPIR-V keeps the port's arithmetic as written and the comparison with the GLSL twin
+tests the port, not SPIRV-Tools; the compilation matrix (tests/hlsl) compiles every port
+with the optimising default as well.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+from .errors import PbrlabError, ShaderCompileError
+from .shaders import GLSL_ROOT
+
+HLSL_ROOT = Path(os.environ.get("PBRLAB_HLSL_ROOT", GLSL_ROOT.parent / "hlsl_ports"))
+UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
+GLSLANG = "glslangValidator"
+SPIRV_CROSS = "spirv-cross"
+_INSTALL_HINT = ("install it with scripts/setup.sh (Debian/Ubuntu packages glslang-tools and "
+                 "spirv-cross)")
+_TIMEOUT_S = 60
+# glslang: "ERROR: path:line: message" / "WARNING: path:line: message"
+_GLSLANG_MESSAGE = re.compile(r"^(ERROR|WARNING): (.+?):(\d+): (.*)$")
+_ENTRY_NAME = "pbrlab_entry.hlsl"
+
+
+def tool(name: str) -> str:
+    """Absolute path of ``name`` on PATH, or a PbrlabError saying how to get it."""
+    path = shutil.which(name)
+    if path is None:
+        raise PbrlabError(f"{name} not found on PATH: the HLSL path needs it; {_INSTALL_HINT}")
+    return path
+
+
+def _display(path: str, name: str, include_dirs) -> str:
+    if Path(path).name == _ENTRY_NAME:
+        return name
+    p = Path(path)
+    for root in (HLSL_ROOT, *[Path(d) for d in include_dirs]):
+        try:
+            return p.resolve().relative_to(Path(root).resolve()).as_posix()
+        except ValueError:
+            continue
+    return path
+
+
+def map_messages(log: str, name: str, include_dirs=()) -> str:
+    """glslang's messages as ``file:line: error: message`` (the library file, not a temp)."""
+    out = []
+    for line in log.splitlines():
+        line = line.rstrip()
+        m = _GLSLANG_MESSAGE.match(line)
+        if m:
+            kind = "error" if m.group(1) == "ERROR" else "warning"
+            out.append(f"{_display(m.group(2), name, include_dirs)}:{m.group(3)}: {kind}: {m.group(4)}")
+        elif line and not line.endswith(_ENTRY_NAME) and "SPIR-V is not generated" not in line \
+                and not re.match(r"^ERROR: \d+ compilation errors", line):
+            out.append(line.replace(_ENTRY_NAME, name))
+    return "\n".join(out)
+
+
+def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
+                  extra_args=(), stage: str = "frag", entry: str = "main") -> bytes:
+    """HLSL source -> SPIR-V bytes; ShaderCompileError (mapped messages) if it fails."""
+    glslang = tool(GLSLANG)
+    include_args = [f"-I{Path(d).resolve()}" for d in include_dirs] + [f"-I{HLSL_ROOT.resolve()}"]
+    with tempfile.TemporaryDirectory(prefix="pbrlab-hlsl-") as tmp:
+        src = Path(tmp) / _ENTRY_NAME
+        out = Path(tmp) / "out.spv"
+        src.write_text(text, encoding="utf-8")
+        cmd = [glslang, "-D", "-V", "-e", entry, "-S", stage, "--auto-sampled-textures",
+               *([] if optimize else ["-Od"]), *extra_args, *include_args, src.name, "-o", out.name]
+        proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=_TIMEOUT_S)
+        if proc.returncode != 0 or not out.is_file():
+            messages = map_messages(proc.stdout + proc.stderr, name, include_dirs)
+            raise ShaderCompileError(f"HLSL failed to compile (glslang):\n{messages}")
+        return out.read_bytes()
+
+
+def cross_to_glsl(spirv: bytes, version: int = 330) -> str:
+    """SPIR-V -> desktop GLSL ``#version <version>`` with spirv-cross."""
+    cross = tool(SPIRV_CROSS)
+    with tempfile.TemporaryDirectory(prefix="pbrlab-spirv-") as tmp:
+        path = Path(tmp) / "in.spv"
+        path.write_bytes(spirv)
+        proc = subprocess.run([cross, "--version", str(version), "--no-es", str(path)],
+                              capture_output=True, text=True, timeout=_TIMEOUT_S)
+    if proc.returncode != 0:
+        raise ShaderCompileError(f"spirv-cross failed:\n{(proc.stdout + proc.stderr).strip()}")
+    return proc.stdout
+
+
+@lru_cache(maxsize=256)
+def _hlsl_to_glsl_cached(text: str, name: str, include_dirs: tuple, optimize: bool) -> str:
+    return cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize))
+
+
+def hlsl_to_glsl(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False) -> str:
+    """A pixel shader (entry ``main``) in HLSL -> the GLSL 330 that spirv-cross writes."""
+    return _hlsl_to_glsl_cached(text, name, tuple(str(d) for d in include_dirs), optimize)

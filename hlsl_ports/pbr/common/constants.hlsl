@@ -1,0 +1,19 @@
+// pbr/common/constants.hlsl: mathematical constants of the pbrlab shading library.
+//
+// Provides: PBR_PI, PBR_INV_PI, PBR_TWO_PI, PBR_HALF_PI.
+// Include:  "pbr/common/constants.hlsl" (path relative to hlsl_ports/)
+// Config macros read: none.
+//
+// Values are written to 9 significant digits (more than float32 resolves); the float64
+// twins live in harness/pbrlab/reference/constants.py and tests/library/test_glsl_layout.py
+// checks that the GPU sees the float32 rounding of the same numbers.
+#ifndef PBR_COMMON_CONSTANTS_HLSL
+#define PBR_COMMON_CONSTANTS_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/constants.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#define PBR_PI      3.14159265358979
+#define PBR_INV_PI  0.318309886183791
+#define PBR_TWO_PI  6.28318530717959
+#define PBR_HALF_PI 1.57079632679490
+
+#endif // PBR_COMMON_CONSTANTS_HLSL

@@ -1,0 +1,30 @@
+// pbr/lighting/punctual.hlsl: punctual (directional, point, spot) light integration.
+//
+// Provides: vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
+//                                   vec3 diffuseColor, vec3 f0, float perceptualRoughness)
+// Include:  "pbr/lighting/punctual.hlsl" (path relative to hlsl_ports/)
+// Config macros read: those of pbr/shading/dispatch.hlsl.
+//
+// The lecture's "Bidirectional Reflectance Functions" slide, for punctual lights:
+//   C_final = C_light ⊗ π · BRDF(l, v) · max(0, NdotL)
+// with the π named PBR_LIGHT_UNIT_SCALE (pbr/common/conventions.hlsl §5: "lights are π
+// times too bright"). A white Lambert surface (diffuseColor 1, f0 0) lit by
+// lightRadiance = 1 along n returns exactly 1 (tested). lightRadiance is the light's
+// colour times intensity, already attenuated (distance, spot cone, shadow) by the caller;
+// l points from the surface to the light. NdotL <= 0 returns 0; l = -v returns the
+// diffuse part only (see pbr/shading/standard.hlsl for every edge).
+#ifndef PBR_LIGHTING_PUNCTUAL_HLSL
+#define PBR_LIGHTING_PUNCTUAL_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/punctual.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#include "pbr/common/conventions.hlsl"
+#include "pbr/shading/standard.hlsl"
+
+vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
+                        vec3 diffuseColor, vec3 f0, float perceptualRoughness) {
+    float NdotL = clamp(dot(n, l), 0.0, 1.0);
+    vec3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
+    return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
+}
+
+#endif // PBR_LIGHTING_PUNCTUAL_HLSL

@@ -1,0 +1,206 @@
+// pbr/shading/dispatch.hlsl: variant selection for the specular D, V, F and diffuse terms.
+//
+// Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
+//           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)
+//           vec3  pbr_specular_F(vec3 f0, float VdotH)
+//           float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
+//           float pbr_specular_lobe_limit(float DV)  (the tier's cap on D · V)
+//           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
+//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS,
+//           PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED and the selector values below.
+// Include:  "pbr/shading/dispatch.hlsl" (path relative to hlsl_ports/)
+// Config macros read: (each has a default, set with #ifndef below)
+//   PBR_QUALITY     PBR_QUALITY_HIGH (default, float32) | PBR_QUALITY_MEDIUM (float32,
+//                   cheaper V and F) | PBR_QUALITY_LOW (half-safe: runs at mediump/half);
+//                   see the tier block below; picks the defaults below
+//   PBR_SPECULAR_D  PBR_SPECULAR_D_GGX (default) | _BECKMANN | _BLINN_PHONG
+//   PBR_SPECULAR_V  PBR_SPECULAR_V_SMITH_GGX_CORRELATED (HIGH default)
+//                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
+//                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
+//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
+//                   white-furnace checks and debugging)
+//   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
+//
+// The one variant mechanism of the library (pbr/common/conventions.hlsl §8): every
+// alternative is its own function in pbr/brdf/; a numbered #define selects it; each
+// dispatcher below holds the only #if chain of its term. Every dispatcher takes the same
+// parameters whatever the variant, so callers never change. Parameter mapping:
+//   D GGX, Beckmann: take 1 - NdotH² separately (pbr_one_minus_dot2: |n × h|², see d_ggx.hlsl).
+//   D Blinn-Phong: specPower = pbr_specPower_from_alpha(alpha) (Walter 2007 §5.2).
+//   D Beckmann:    the GGX alpha is used as the Beckmann RMS slope.
+//   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
+//   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
+// The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+#ifndef PBR_SHADING_DISPATCH_HLSL
+#define PBR_SHADING_DISPATCH_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/dispatch.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#include "pbr/common/guards.hlsl"
+#include "pbr/material/remap.hlsl"
+#include "pbr/brdf/fd_lambert.hlsl"
+#include "pbr/brdf/fd_burley.hlsl"
+#include "pbr/brdf/d_ggx.hlsl"
+#include "pbr/brdf/d_beckmann.hlsl"
+#include "pbr/brdf/d_blinn_phong.hlsl"
+#include "pbr/brdf/v_smith_ggx_correlated.hlsl"
+#include "pbr/brdf/g_smith_ggx.hlsl"
+#include "pbr/brdf/g_schlick_ggx.hlsl"
+#include "pbr/brdf/g_cook_torrance.hlsl"
+#include "pbr/brdf/v_kelemen.hlsl"
+#include "pbr/brdf/v_implicit.hlsl"
+#include "pbr/brdf/f_schlick.hlsl"
+
+#define PBR_SPECULAR_D_GGX         0
+#define PBR_SPECULAR_D_BECKMANN    1
+#define PBR_SPECULAR_D_BLINN_PHONG 2
+
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      0
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 1
+#define PBR_SPECULAR_V_SMITH_GGX                 2
+#define PBR_SPECULAR_V_SCHLICK_GGX               3
+#define PBR_SPECULAR_V_COOK_TORRANCE             4
+#define PBR_SPECULAR_V_KELEMEN                   5
+#define PBR_SPECULAR_V_IMPLICIT                  6
+
+#define PBR_SPECULAR_F_SCHLICK    0
+#define PBR_SPECULAR_F_SCHLICK_SG 1
+#define PBR_SPECULAR_F_NONE       2
+
+#define PBR_DIFFUSE_LAMBERT 0
+#define PBR_DIFFUSE_BURLEY  1
+
+#define PBR_QUALITY_LOW    0
+#define PBR_QUALITY_HIGH   1
+#define PBR_QUALITY_MEDIUM 2
+
+#ifndef PBR_QUALITY
+#define PBR_QUALITY PBR_QUALITY_HIGH
+#endif
+
+// Smallest perceptual roughness of the HIGH tier: Filament's MIN_PERCEPTUAL_ROUGHNESS
+// (Guy & Agopian, "Physically Based Rendering in Filament", §4.8.3.3, common_material.fs):
+// alpha = 0.045² = 2.0e-3, alpha² = 4.1e-6 keeps D_GGX's peak 1/(π alpha²) ≈ 7.8e4 and
+// alpha² · NdotH² far inside float32 range. Shared with reference/shading.py.
+#define PBR_MIN_PERCEPTUAL_ROUGHNESS 0.045
+// Smallest perceptual roughness of the half-safe LOW tier: Filament's mobile value
+// (common_material.fs, TARGET_MOBILE): alpha = 0.089² = 7.92e-3, alpha² = 6.27e-5 is just
+// above half's smallest normal 6.10e-5 (below it alpha² loses bits as a half denormal), and
+// D's peak 1/(π alpha²) = 5073 fits half (max 65504) with a 12x margin. Measured cost and
+// the half-precision study: glsl/README.md. Shared with reference/shading.py.
+#define PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP 0.089
+// The LOW tier's l = -v threshold on |l + v|²: 2^-14, half's smallest normal. The HIGH
+// value 1e-12 is 0 in half, so |l + v|² = 0 would reach inversesqrt(0). Cost: LOW drops the
+// specular lobe where |l + v| < 2^-7, i.e. l within 0.45° of -v (a back-facing view), and
+// mirror configurations within 0.22° of the horizon (NdotL < 3.9e-3), where a half h would
+// be built from a denormal-length vector anyway. Shared with reference/shading.py.
+#define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP 6.103515625e-5
+
+// Quality tiers -> selector defaults and tier guards: the only place tiers are
+// interpreted. An explicit selector always wins over the tier.
+//   HIGH  float32: every default above.
+//   MEDIUM float32, cheaper terms (Unity's BRDF2 idea): V -> SMITH_GGX_CORRELATED_FAST
+//         (Hammon 2017, no square roots), F -> SCHLICK_SG (exp2 instead of pow5); the
+//         HIGH tier's guards; the environment BRDF still from the DFG table.
+//   LOW   half-safe (mediump): V -> SMITH_GGX_CORRELATED_FAST (no square roots), minimum
+//         perceptual roughness 0.089, l = -v threshold 2^-14, D · V capped at PBR_HALF_MAX (pbr_specular_lobe_limit;
+//         Filament's saturateMediump): with NdotV, NdotL >= 1e-4 the fast V reaches 3e5,
+//         so grazing near-mirror lobes would overflow half. Cost: lobes brighter than 65504
+//         1/sr are capped (float32 LOW included, so both precisions agree).
+#if PBR_QUALITY == PBR_QUALITY_LOW
+#  ifndef PBR_SPECULAR_V
+#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+#  endif
+#  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
+#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
+#elif PBR_QUALITY == PBR_QUALITY_MEDIUM
+#  ifndef PBR_SPECULAR_V
+#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+#  endif
+#  ifndef PBR_SPECULAR_F
+#  define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK_SG
+#  endif
+#  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
+#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
+#elif PBR_QUALITY == PBR_QUALITY_HIGH
+#  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
+#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
+#else
+#  error "PBR_QUALITY: unknown value"
+#endif
+
+#ifndef PBR_SPECULAR_D
+#define PBR_SPECULAR_D PBR_SPECULAR_D_GGX
+#endif
+#ifndef PBR_SPECULAR_V
+#define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED
+#endif
+#ifndef PBR_SPECULAR_F
+#define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK
+#endif
+#ifndef PBR_DIFFUSE
+#define PBR_DIFFUSE PBR_DIFFUSE_LAMBERT
+#endif
+
+float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha) {
+#if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX
+    return pbr_D_GGX_fromOneMinusNdotH2(NdotH, oneMinusNdotH2, alpha);
+#elif PBR_SPECULAR_D == PBR_SPECULAR_D_BECKMANN
+    return pbr_D_Beckmann_fromOneMinusNdotH2(NdotH, oneMinusNdotH2, alpha);
+#elif PBR_SPECULAR_D == PBR_SPECULAR_D_BLINN_PHONG
+    return pbr_D_BlinnPhong(NdotH, pbr_specPower_from_alpha(alpha));
+#else
+#error "PBR_SPECULAR_D: unknown value"
+#endif
+}
+
+float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha) {
+#if PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED
+    return pbr_V_SmithGGXCorrelated(NdotL, NdotV, alpha);
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+    return pbr_V_SmithGGXCorrelatedFast(NdotL, NdotV, alpha);
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX
+    return pbr_V_SmithGGX(NdotL, NdotV, alpha);
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_SCHLICK_GGX
+    return pbr_V_SchlickGGX(NdotL, NdotV, pbr_k_SchlickGGX_from_alpha(alpha));
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_COOK_TORRANCE
+    return pbr_V_CookTorrance(NdotL, NdotV, NdotH, VdotH);
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_KELEMEN
+    return pbr_V_Kelemen(VdotH);
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_IMPLICIT
+    return pbr_V_Implicit();
+#else
+#error "PBR_SPECULAR_V: unknown value"
+#endif
+}
+
+vec3 pbr_specular_F(vec3 f0, float VdotH) {
+#if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
+    return pbr_F_Schlick(f0, VdotH);
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
+    return pbr_F_SchlickSG(f0, VdotH);
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
+    return ((vec3)(1.0));
+#else
+#error "PBR_SPECULAR_F: unknown value"
+#endif
+}
+
+float pbr_specular_lobe_limit(float DV) {
+#if PBR_QUALITY == PBR_QUALITY_LOW
+    return min(DV, PBR_HALF_MAX);  // also maps a half +Inf to 65504 (min of Inf is defined)
+#else
+    return DV;
+#endif
+}
+
+float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoughness) {
+#if PBR_DIFFUSE == PBR_DIFFUSE_LAMBERT
+    return pbr_Fd_Lambert();
+#elif PBR_DIFFUSE == PBR_DIFFUSE_BURLEY
+    return pbr_Fd_Burley(NdotV, NdotL, LdotH, perceptualRoughness);
+#else
+#error "PBR_DIFFUSE: unknown value"
+#endif
+}
+
+#endif // PBR_SHADING_DISPATCH_HLSL

@@ -1,0 +1,71 @@
+// pbr/shading/standard.hlsl: the standard shading model, diffuse + Cook-Torrance specular.
+//
+// Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+//                                   float perceptualRoughness)
+//           float pbr_clamp_perceptual_roughness(float perceptualRoughness)
+//           (through its includes: PBR_MIN_PERCEPTUAL_ROUGHNESS[_MEDIUMP] from dispatch.hlsl,
+//           PBR_MIN_NDOTV and PBR_MIN_HALF_VECTOR_LENGTH_SQUARED from common/guards.hlsl)
+// Include:  "pbr/shading/standard.hlsl" (path relative to hlsl_ports/)
+// Config macros read: those of pbr/shading/dispatch.hlsl (PBR_QUALITY, PBR_SPECULAR_D,
+//           PBR_SPECULAR_V, PBR_SPECULAR_F, PBR_DIFFUSE).
+//
+// The lecture's "General Cook-Torrance specular" (Cook & Torrance 1982; the lecture's
+// combined BRDF, RTR 3rd ed. eq. 7.49 generalised):
+//   BRDF = diffuseColor · Fd + D(NdotH) · V(l, v) · F(VdotH),   V = G / (4 NdotL NdotV),
+// with Fd = 1/π for Lambert. Returns the BRDF in 1/sr (no light, no cosine: see
+// pbr/lighting/punctual.hlsl). Variants through pbr/shading/dispatch.hlsl.
+//
+// Edges (all mirrored in harness/pbrlab/reference/shading.py):
+//  - NdotL <= 0: the light is below the horizon; returns 0.
+//  - perceptualRoughness is clamped to [PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1] here (0.045,
+//    or 0.089 in the LOW tier), far above the raw terms' PBR_MIN_ALPHA floor.
+//  - NdotV is clamped to [PBR_MIN_NDOTV, 1], so back-facing views from normal mapping or
+//    interpolated normals stay finite; every V term also floors NdotL at PBR_MIN_NDOTV.
+//  - 1 - NdotH² for D is |n × h|² (pbr_one_minus_dot2), not 1 - NdotH²: no cancellation at
+//    the peak of sharp lobes (d_ggx.hlsl).
+//  - D · V passes through the tier's pbr_specular_lobe_limit (identity in HIGH).
+//  - LdotH = VdotH = |l + v| / 2, the exact identity for unit l and v
+//    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2). It needs no normalised h and is
+//    continuous at l = -v.
+//  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-12; 2^-14 in LOW): no half vector exists; the
+//    specular lobe is defined as 0 (it would reflect light back into the surface: with
+//    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
+//  - NdotH and VdotH are clamped to [0, 1] against rounding.
+#ifndef PBR_SHADING_STANDARD_HLSL
+#define PBR_SHADING_STANDARD_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#include "pbr/common/conventions.hlsl"
+#include "pbr/common/guards.hlsl"
+#include "pbr/material/remap.hlsl"
+#include "pbr/shading/dispatch.hlsl"
+
+float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
+    return clamp(perceptualRoughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+}
+
+vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+                       float perceptualRoughness) {
+    float NdotL = min(dot(n, l), 1.0);
+    if (!(NdotL > 0.0)) return ((vec3)(0.0));
+    float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    float alpha = pbr_alpha_from_perceptual_roughness(roughness);
+
+    vec3 halfSum = l + v;
+    float halfLength2 = dot(halfSum, halfSum);
+    float LdotH = min(0.5 * sqrt(halfLength2), 1.0);  // == VdotH, see header
+
+    vec3 diffuse = diffuseColor * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
+    if (!(halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED)) return diffuse;
+
+    vec3 h = halfSum * inversesqrt(halfLength2);
+    float NdotH = clamp(dot(n, h), 0.0, 1.0);
+    float VdotH = LdotH;
+    float D = pbr_specular_D(NdotH, pbr_one_minus_dot2(n, h), alpha);
+    float V = pbr_specular_V(NdotL, NdotV, NdotH, VdotH, alpha);
+    vec3  F = pbr_specular_F(f0, VdotH);
+    return diffuse + pbr_specular_lobe_limit(D * V) * F;
+}
+
+#endif // PBR_SHADING_STANDARD_HLSL

@@ -1,0 +1,16 @@
+// pbr/tonemap/exposure.hlsl: photographic exposure in stops.
+//
+// Provides: vec3 pbr_apply_exposure(vec3 color, float exposureEV)
+// Include:  "pbr/tonemap/exposure.hlsl" (path relative to hlsl_ports/)
+// Config macros read: none.
+//
+// color · 2^EV: each EV (stop) doubles the light reaching the tonemapper. Exact in float32
+// for integer EV (exp2 of an integer is a power of two). Apply before the tonemapper, to
+// linear HDR colour.
+#ifndef PBR_TONEMAP_EXPOSURE_HLSL
+#define PBR_TONEMAP_EXPOSURE_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/exposure.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+vec3 pbr_apply_exposure(vec3 color, float exposureEV) { return color * exp2(exposureEV); }
+
+#endif // PBR_TONEMAP_EXPOSURE_HLSL

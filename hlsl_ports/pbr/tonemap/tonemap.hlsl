@@ -1,0 +1,52 @@
+// pbr/tonemap/tonemap.hlsl: tonemapper selection.
+//
+// Provides: vec3 pbr_tonemap(vec3 color) and the selector values PBR_TONEMAP_*.
+// Include:  "pbr/tonemap/tonemap.hlsl" (path relative to hlsl_ports/)
+// Config macros read: PBR_TONEMAP (default PBR_TONEMAP_KHRONOS_NEUTRAL).
+//
+// One dispatcher over the tonemappers of this folder (the library's one variant
+// mechanism, pbr/common/conventions.hlsl §8). PBR_TONEMAP_NONE is pbr_sanitize(c, 1.0):
+// saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
+// Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
+// light) nearly unchanged, which is what material charts want.
+#ifndef PBR_TONEMAP_TONEMAP_HLSL
+#define PBR_TONEMAP_TONEMAP_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/tonemap.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#include "pbr/common/math.hlsl"
+#include "pbr/common/guards.hlsl"
+#include "pbr/tonemap/reinhard.hlsl"
+#include "pbr/tonemap/hable.hlsl"
+#include "pbr/tonemap/aces.hlsl"
+#include "pbr/tonemap/khronos_neutral.hlsl"
+
+#define PBR_TONEMAP_NONE            0
+#define PBR_TONEMAP_REINHARD        1
+#define PBR_TONEMAP_HABLE           2
+#define PBR_TONEMAP_ACES_FITTED     3
+#define PBR_TONEMAP_ACES_NARKOWICZ  4
+#define PBR_TONEMAP_KHRONOS_NEUTRAL 5
+
+#ifndef PBR_TONEMAP
+#define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
+#endif
+
+vec3 pbr_tonemap(vec3 color) {
+#if PBR_TONEMAP == PBR_TONEMAP_NONE
+    return pbr_sanitize(color, 1.0);
+#elif PBR_TONEMAP == PBR_TONEMAP_REINHARD
+    return pbr_tonemap_reinhard(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_HABLE
+    return pbr_tonemap_hable(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_ACES_FITTED
+    return pbr_tonemap_aces_fitted(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_ACES_NARKOWICZ
+    return pbr_tonemap_aces_narkowicz(color);
+#elif PBR_TONEMAP == PBR_TONEMAP_KHRONOS_NEUTRAL
+    return pbr_tonemap_khronos_neutral(color);
+#else
+#error "PBR_TONEMAP: unknown value"
+#endif
+}
+
+#endif // PBR_TONEMAP_TONEMAP_HLSL

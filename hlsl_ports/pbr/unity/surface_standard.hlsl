@@ -1,0 +1,162 @@
+// pbr/unity/surface_standard.hlsl: Unity's Standard-shader surface API, by Unity's names.
+//
+// Provides: struct SurfaceOutputStandard, struct SurfaceOutputStandardSpecular;
+//           UnityLight, UnityIndirect, UnityGI (aliases of pbr_Light, pbr_Indirect, pbr_GI);
+//           unity_ColorSpaceDielectricSpec;
+//           vec4 LightingStandard(SurfaceOutputStandard s, vec3 viewDir, UnityGI gi)
+//           vec4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, vec3 viewDir, UnityGI gi)
+//           vec3 DiffuseAndSpecularFromMetallic(vec3 albedo, float metallic, out vec3 specColor,
+//                                               out float oneMinusReflectivity)
+//           vec3 EnergyConservationBetweenDiffuseAndSpecular(vec3 albedo, vec3 specColor,
+//                                                            out float oneMinusReflectivity)
+//           float OneMinusReflectivityFromMetallic(float metallic)
+//           float SpecularStrength(vec3 specular)
+//           float SmoothnessToPerceptualRoughness(float smoothness)
+//           float PerceptualRoughnessToRoughness(float perceptualRoughness)
+//           float PerceptualRoughnessToSmoothness(float perceptualRoughness)
+//           vec3 PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivity,
+//                                 out float outModifiedAlpha)
+//           vec3 UnpackNormal(vec4 packednormal), vec3 UnpackScaleNormal(vec4 packednormal, float bumpScale)
+// Include:  "pbr/unity/surface_standard.hlsl" (path relative to hlsl_ports/). Not part of the
+//           umbrella pbr/pbr.hlsl: these names are Unity's, and an engine that already
+//           defines them skips this one file and calls pbr_lighting_standard directly.
+// Config macros read: PBR_ALPHA_MODE (PBR_ALPHA_MODE_OPAQUE default, _CUTOUT, _FADE,
+//           _TRANSPARENT: Unity's Rendering Mode; TRANSPARENT premultiplies the diffuse
+//           by alpha and keeps the specular, Unity's _ALPHAPREMULTIPLY_ON); those of
+//           pbr/surface/lighting_standard.hlsl.
+//
+// Semantics are Unity's (docs.unity3d.com, "Writing Surface Shaders"; UnityPBSLighting.cginc
+// and UnityStandardUtils.cginc of Unity 5-2019), with two documented differences
+// (README.md, "Unity surface API"): gi.indirect arrives without occlusion and
+// LightingStandard applies s.Occlusion (Unity applies it in LightingStandard_GI); and the
+// BRDF is pbrlab's (exact height-correlated Smith, split-sum environment BRDF, energy
+// compensation) unless PBR_INDIRECT_SPECULAR selects Unity's legacy look. s.Normal is in
+// world space when LightingStandard runs, as in Unity (the caller transforms the tangent-
+// space normal a surface function writes).
+#ifndef PBR_UNITY_SURFACE_STANDARD_HLSL
+#define PBR_UNITY_SURFACE_STANDARD_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/surface_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/surface/lighting_standard.hlsl"
+#include "pbr/material/workflow.hlsl"
+#include "pbr/material/remap.hlsl"
+#include "pbr/common/math.hlsl"
+
+#define PBR_ALPHA_MODE_OPAQUE 0
+#define PBR_ALPHA_MODE_CUTOUT 1
+#define PBR_ALPHA_MODE_FADE 2
+#define PBR_ALPHA_MODE_TRANSPARENT 3
+#ifndef PBR_ALPHA_MODE
+#define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
+#endif
+
+#define UnityLight pbr_Light
+#define UnityIndirect pbr_Indirect
+#define UnityGI pbr_GI
+// Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.
+#define unity_ColorSpaceDielectricSpec vec4(((vec3)(PBR_DIELECTRIC_F0)), 1.0 - PBR_DIELECTRIC_F0)
+
+struct SurfaceOutputStandard {
+    vec3 Albedo;      // base (diffuse or specular) colour
+    vec3 Normal;      // tangent-space normal when written by a surface function
+    vec3 Emission;
+    float Metallic;   // 0 = dielectric, 1 = metal
+    float Smoothness; // 0 = rough, 1 = smooth
+    float Occlusion;  // 1 = unoccluded (default)
+    float Alpha;
+};
+
+struct SurfaceOutputStandardSpecular {
+    vec3 Albedo;      // diffuse colour
+    vec3 Specular;    // specular colour (F0)
+    vec3 Normal;
+    vec3 Emission;
+    float Smoothness;
+    float Occlusion;
+    float Alpha;
+};
+
+// Unity's UnpackNormal for RGB normal maps (UnityCG.cginc without UNITY_NO_DXT5nm
+// swizzling): tangent-space xyz = rgb * 2 - 1. Maps stored as BC5/DXT5nm (x in a, y in g)
+// need Unity's UnpackNormalmapRGorAG, which is not provided.
+vec3 UnpackNormal(vec4 packednormal) {
+    return packednormal.xyz * 2.0 - 1.0;
+}
+
+vec3 UnpackScaleNormal(vec4 packednormal, float bumpScale) {
+    vec3 n = packednormal.xyz * 2.0 - 1.0;
+    n.xy *= bumpScale;
+    return n;
+}
+
+float SmoothnessToPerceptualRoughness(float smoothness) {
+    return pbr_perceptual_roughness_from_smoothness(smoothness);
+}
+
+float PerceptualRoughnessToRoughness(float perceptualRoughness) {
+    return pbr_alpha_from_perceptual_roughness(perceptualRoughness);
+}
+
+float PerceptualRoughnessToSmoothness(float perceptualRoughness) {
+    return 1.0 - perceptualRoughness;
+}
+
+float SpecularStrength(vec3 specular) {
+    return pbr_max3(specular);
+}
+
+float OneMinusReflectivityFromMetallic(float metallic) {
+    float oneMinusDielectricSpec = unity_ColorSpaceDielectricSpec.a;
+    return oneMinusDielectricSpec - metallic * oneMinusDielectricSpec;
+}
+
+vec3 DiffuseAndSpecularFromMetallic(vec3 albedo, float metallic, out vec3 specColor,
+                                    out float oneMinusReflectivity) {
+    specColor = pbr_f0_from_metallic(albedo, metallic);
+    oneMinusReflectivity = OneMinusReflectivityFromMetallic(metallic);
+    return pbr_diffuse_from_metallic(albedo, metallic);
+}
+
+vec3 EnergyConservationBetweenDiffuseAndSpecular(vec3 albedo, vec3 specColor,
+                                                 out float oneMinusReflectivity) {
+    oneMinusReflectivity = 1.0 - SpecularStrength(specColor);
+    return pbr_diffuse_from_specular(albedo, specColor);
+}
+
+// Transparent mode: the diffuse part fades with alpha, the specular (reflection) does not;
+// the output alpha grows with reflectivity (Unity: UnityStandardUtils.cginc).
+vec3 PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivity,
+                      out float outModifiedAlpha) {
+#if PBR_ALPHA_MODE == PBR_ALPHA_MODE_TRANSPARENT
+    diffColor *= alpha;
+    outModifiedAlpha = 1.0 - oneMinusReflectivity + alpha * oneMinusReflectivity;
+#else
+    outModifiedAlpha = alpha;
+#endif
+    return diffColor;
+}
+
+vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
+                        float smoothness, float occlusion, float alpha, vec3 normal,
+                        vec3 viewDir, UnityGI gi) {
+    float outputAlpha;
+    diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
+    vec3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
+                                   occlusion, normalize(normal), viewDir, gi);
+    return vec4(c, outputAlpha);
+}
+
+vec4 LightingStandard(SurfaceOutputStandard s, vec3 viewDir, UnityGI gi) {
+    vec3 specColor;
+    float oneMinusReflectivity;
+    vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return pbr_unity_lighting(diffColor, specColor, oneMinusReflectivity, s.Smoothness,
+                              s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
+}
+
+vec4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, vec3 viewDir, UnityGI gi) {
+    float oneMinusReflectivity;
+    vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    return pbr_unity_lighting(diffColor, s.Specular, oneMinusReflectivity, s.Smoothness,
+                              s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
+}
+#endif
