@@ -15,7 +15,7 @@ import sys
 from .errors import PbrlabError
 from .gl import BACKENDS
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases")
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench")
 
 
 def build_parser() -> argparse.ArgumentParser:

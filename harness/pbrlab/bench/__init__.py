@@ -1,0 +1,161 @@
+"""`pbrlab bench`: what accuracy costs in time, for every variant and tier (issue 7).
+
+For each family (``families.FAMILIES``) every variant gets
+
+* **error** against the family's float64 reference over a documented input domain (a
+  regular grid; GPU results through ``pbrlab.evaluate``, bit-exact float32): max abs, max
+  relative (where |reference| exceeds the family's floor), 99th-percentile relative, RMSE,
+  and the inputs of the worst absolute and relative error; plus, for approximations that
+  have one, the float32 error against the variant's *own* float64 twin (``self_error``);
+* **instructions per evaluation** (the deterministic cost): callgrind's ``Ir`` (x86
+  instructions executed) of a draw of the timing kernel (``kernel.py``) at two loop trip
+  counts T1 < T2, variant minus the family's baseline kernel, divided by
+  pixels x evaluations per iteration x (T2 - T1). It counts the code llvmpipe actually
+  compiled (the worker under valgrind loads it from Mesa's shader cache, filled by the
+  native timing run with the same CPU-caps pin), amortised over its 4-wide SIMD;
+* **time per evaluation** (ns): CPU time (``time.process_time``) around draw + glFinish in
+  a worker with ``LP_NUM_THREADS=1``, every kernel warmed, kernels interleaved in a fresh
+  random order each round, the family baseline of the same round subtracted; median,
+  quartiles, min, max over rounds. Differences below about 20 % are noise.
+
+Plus the default scene per quality tier: frame CPU time at 1024x1024 (and the shading
+part: minus the same render with no objects) and image error against the HIGH tier.
+
+Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``.
+
+JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
+
+    {"schema": "pbrlab-bench/1", "quick": bool, "generated": ISO time,
+     "machine": {"GL_RENDERER", "GL_VERSION", "mesa", "llvm", "backend", "llvmpipe_cpu_caps",
+                 "cpu", "cpu_features": [...], "cpu_count", "python", "valgrind"},
+     "method": {"evals_per_iteration", "time_size", "time_trips", "time_rounds",
+                "count_size", "count_trips": [T1, T2], "noise_note", ...},
+     "families": [{"name", "title", "reference", "domain", "exact", "unit",
+                   "variants": [{"name", "expression" (null: not an expression), "note",
+                                 "defines": {...},
+                                 "error": ERROR, "self_error": ERROR | null,
+                                 "lsb_8bit": int (sRGB encode only),
+                                 "time_ns": {"median", "p25", "p75", "min", "max", "rounds",
+                                             "ratio_to_exact"},
+                                 "instructions": {"per_eval", "ratio_to_exact"}}]}],
+     "frame": {"scene", "size": [w, h], "rounds", "setup_ms_median",
+               "tiers": {tier: {"total_ms_median", "shading_ms_median", "shading_ms_p25",
+                                "shading_ms_p75", "ratio_to_high"}}},
+     "tier_images": {"reference", "size": [w, h],
+                     "tiers": {tier: {"max_abs", "max_rel", "median_rel", "rmse",
+                                      "worst_rel_pixel": [x, y], "max_srgb8_codes",
+                                      "fraction_over_2_codes"}}},
+     "specialisation": {"rounds", "size",
+                        "scenes": {scene: {"programs_specialised", "programs_full",
+                                           "specialised_ms_median", "full_ms_median",
+                                           "full_over_specialised"}}}}
+
+    ERROR = {"max_abs", "max_rel", "p99_rel", "rmse", "worst_abs_at": {input: value},
+             "worst_rel_at": {input: value}, "nonfinite", "samples", "rel_floor"}
+
+``instructions.per_eval`` is null where valgrind is missing and under ``--quick`` (a
+callgrind worker spends ~55 s in start-up whatever it counts). Time units: ns per
+evaluation, except the hardware sRGB encode (ns per pixel: one encode per pixel).
+"""
+
+from __future__ import annotations
+
+import datetime
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from . import families as families_mod
+from . import kernel, measure, report
+
+
+def _ratio(value, exact):
+    if value is None or exact is None or exact == 0:
+        return None
+    return float(value / exact)
+
+
+def _time_stats(ns):
+    if ns is None:
+        return {"median": None, "p25": None, "p75": None, "min": None, "max": None, "rounds": 0}
+    return {"median": float(np.median(ns)), "p25": float(np.percentile(ns, 25)),
+            "p75": float(np.percentile(ns, 75)), "min": float(np.min(ns)), "max": float(np.max(ns)),
+            "rounds": int(len(ns))}
+
+
+def run(out_dir, family: str | None = None, quick: bool = False, progress=measure.progress) -> dict:
+    """Measure, write the outputs into ``out_dir`` and return the JSON document."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    if family is not None and family not in families_mod.BY_NAME:
+        from ..errors import PbrlabError
+        raise PbrlabError(f"unknown family {family!r}; choose from {', '.join(families_mod.BY_NAME)}")
+    fams = [families_mod.BY_NAME[family]] if family else list(families_mod.FAMILIES)
+    settings = measure.Settings.make(quick)
+    steps = len(fams) + 5  # + time, instructions, frame, specialisation, tier images
+    step = iter(range(1, steps + 1))
+
+    def tick(what):
+        progress(f"[{next(step)}/{steps}] {what}")
+
+    machine = measure.machine_info()
+    errors = {}
+    for fam in fams:
+        tick(f"error: {fam.name} ({len(fam.variants)} variants)")
+        errors[fam.name] = measure.measure_errors(fam, settings)
+    kernels, plans = measure.kernel_specs(fams)
+    with tempfile.TemporaryDirectory(prefix="pbrlab-bench-") as tmp:
+        tmp = Path(tmp)
+        tick(f"time: {len(kernels)} kernels x {settings.time_rounds} interleaved rounds (LP_NUM_THREADS=1)")
+        times = measure.measure_time(kernels, plans, settings, tmp)
+        tick("instructions: skipped under --quick" if settings.count_families == () else
+             f"instructions: callgrind of {len(kernels)} kernels x 2 trip counts (~1-2 min)")
+        counts = measure.measure_instructions(kernels, plans, settings, tmp)
+        tick(f"frame cost: default scene at {settings.frame_size}^2 per tier")
+        frame = measure.measure_frame(settings, tmp)
+        tick("specialised vs full programs: frame cost per test scene")
+        specialisation = measure.measure_specialisation(settings, tmp)
+    frame["scene"] = str(measure.DEFAULT_SCENE.relative_to(measure.DEFAULT_SCENE.parents[2]))
+    tick("tier image error against the HIGH tier")
+    tier_images = measure.tier_image_error(scale=settings.tier_image_scale)
+
+    doc_families = []
+    for fam in fams:
+        exact_t = times.get((fam.name, fam.exact))
+        exact_t = float(np.median(exact_t)) if exact_t is not None else None
+        exact_c = counts.get((fam.name, fam.exact))
+        variants = []
+        for v in fam.variants:
+            ns = times.get((fam.name, v.name))
+            t = _time_stats(ns)
+            t["ratio_to_exact"] = _ratio(t["median"], exact_t)
+            c = counts.get((fam.name, v.name))
+            record = {"name": v.name, "expression": v.expression, "note": v.note,
+                      "defines": dict(v.defines), **errors[fam.name][v.name],
+                      "time_ns": t,
+                      "instructions": {"per_eval": c, "ratio_to_exact": _ratio(c, exact_c)}}
+            variants.append(record)
+        doc_families.append({"name": fam.name, "title": fam.title, "reference": fam.reference_name,
+                             "domain": fam.domain_note, "exact": fam.exact,
+                             "unit": "per evaluation (hardware sRGB encode: per pixel)", "variants": variants})
+    doc = {"schema": report.SCHEMA_ID, "quick": quick,
+           "generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+           "machine": machine,
+           "method": {"evals_per_iteration": kernel.EVALS_PER_ITERATION,
+                      "time_size": settings.time_size, "time_trips": settings.time_trips,
+                      "time_rounds": settings.time_rounds, "count_size": settings.count_size,
+                      "count_trips": list(settings.count_trips), "lp_num_threads_timing": 1,
+                      "noise_note": report.NOISE_NOTE},
+           "families": doc_families, "frame": frame, "tier_images": tier_images,
+           "specialisation": specialisation}
+    problems = report.validate(doc)
+    if problems:
+        raise RuntimeError("bench produced an invalid document:\n" + "\n".join(problems))
+    report.write_json(doc, out_dir / "accuracy_cost.json")
+    (out_dir / "accuracy_cost.md").write_text(report.markdown(doc), encoding="utf-8")
+    for fam in doc_families:
+        report.pareto_plot(fam, out_dir / f"{fam['name']}.png", quick)
+    progress(f"wrote {out_dir / 'accuracy_cost.md'}, accuracy_cost.json and {len(doc_families)} plots")
+    return doc

@@ -1,0 +1,74 @@
+"""`pbrlab bench --quick` runs end to end and writes a report that follows its schema.
+
+A benchmark is not a timed test: nothing here asserts a time or a ratio. What is checked:
+the command exits 0, accuracy_cost.json validates (pbrlab.bench.report.validate), every
+variant of every family the library ships has an error and a time (instruction counts are
+skipped under --quick, see pbrlab.bench), the markdown has a table per family and every
+family has a plot.
+"""
+
+import json
+
+import pytest
+
+from pbrlab import cli
+from pbrlab.bench import families, report
+
+
+@pytest.fixture(scope="module")
+def quick_report(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    assert cli.main(["bench", "--quick", "--out", str(out)]) == 0
+    return out, json.loads((out / "accuracy_cost.json").read_text(encoding="utf-8"))
+
+
+def test_bench_quick_json_follows_the_schema(quick_report):
+    _, doc = quick_report
+    assert report.validate(doc) == []
+    assert doc["quick"] is True
+
+
+def test_bench_quick_covers_every_family_and_variant_with_error_and_time(quick_report):
+    _, doc = quick_report
+    measured = {f["name"]: {v["name"]: v for v in f["variants"]} for f in doc["families"]}
+    for family in families.FAMILIES:
+        assert set(measured[family.name]) == {v.name for v in family.variants}, family.name
+        for name, v in measured[family.name].items():
+            assert v["error"]["max_rel"] is not None and v["error"]["samples"] > 0, (family.name, name)
+            assert v["time_ns"]["median"] is not None, (family.name, name)
+            assert "per_eval" in v["instructions"], (family.name, name)
+
+
+def test_bench_quick_writes_a_table_and_a_plot_per_family(quick_report):
+    out, doc = quick_report
+    text = (out / "accuracy_cost.md").read_text(encoding="utf-8")
+    for fam in doc["families"]:
+        assert f"(`{fam['name']}`)" in text
+        png = out / f"{fam['name']}.png"
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "noise" in text
+
+
+def test_bench_validate_rejects_a_variant_without_error():
+    doc = {"schema": report.SCHEMA_ID, "quick": False, "machine": {"valgrind": "valgrind-3.19.0"},
+           "method": {}, "frame": {"tiers": {}}, "tier_images": {"tiers": {}},
+           "specialisation": {"scenes": {}},
+           "families": [{"name": "f", "title": "t", "reference": "r", "domain": "d", "exact": "a",
+                         "unit": "u", "variants": [{"name": "a", "expression": "x", "note": "",
+                                                    "defines": {}, "self_error": None,
+                                                    "time_ns": {}, "instructions": {}}]}]}
+    problems = report.validate(doc)
+    assert any("missing 'error'" in p for p in problems)
+    assert any("instructions.per_eval: not counted" in p for p in problems)
+    assert any("frame.tiers: missing high" in p for p in problems)
+
+
+def test_bench_quick_reports_specialised_against_full_programs_per_scene(quick_report):
+    from pbrlab.bench.measure import SPECIALISATION_SCENES
+
+    _, doc = quick_report
+    scenes = doc["specialisation"]["scenes"]
+    assert set(scenes) == set(SPECIALISATION_SCENES)
+    for name, record in scenes.items():
+        assert record["programs_specialised"] >= 1 and record["programs_full"] >= 1
+        assert record["specialised_ms_median"] > 0 and record["full_ms_median"] > 0
