@@ -15,7 +15,7 @@ test: setup
 	@$(PY) -m pytest -n auto -p no:cacheprovider $(PYTEST_ARGS)
 
 bench: setup
-	@$(PY) benchmarks/evaluator_throughput.py
+	@$(PY) -m pbrlab.cli bench --out docs/bench
 
 clean:
 	rm -rf out test-output .venv

@@ -46,9 +46,12 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
                                       "worst_rel_pixel": [x, y], "max_srgb8_codes",
                                       "fraction_over_2_codes"}}},
      "specialisation": {"rounds", "size",
+                        "instructions_size": [w, h],
                         "scenes": {scene: {"programs_specialised", "programs_full",
                                            "specialised_ms_median", "full_ms_median",
-                                           "full_over_specialised"}}}}
+                                           "full_over_specialised",
+                                           "specialised_instructions": int | null (quick),
+                                           "full_instructions": int | null (quick)}}}}
 
     ERROR = {"max_abs", "max_rel", "p99_rel", "rmse", "worst_abs_at": {input: value},
              "worst_rel_at": {input: value}, "nonfinite", "samples", "rel_floor"}

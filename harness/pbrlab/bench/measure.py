@@ -404,7 +404,9 @@ def measure_specialisation(settings: Settings, workdir: Path) -> dict:
     cmd, out_path = _worker_command("specialise", spec, workdir)
     proc = subprocess.Popen(cmd, env=_worker_env(1), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     result = _wait([(proc, cmd, out_path)])[0]
-    out = {"rounds": settings.frame_rounds, "size": spec["size"] or "each scene's own", "scenes": {}}
+    instructions = _count_frames(settings, workdir)
+    out = {"rounds": settings.frame_rounds, "size": spec["size"] or "each scene's own",
+           "instructions_size": list(SPECIALISATION_COUNT_SIZE), "scenes": {}}
     for name in SPECIALISATION_SCENES:
         spec_s = np.array(result["seconds"][f"{name}|specialised"])
         full_s = np.array(result["seconds"][f"{name}|full"])
@@ -414,8 +416,38 @@ def measure_specialisation(settings: Settings, workdir: Path) -> dict:
             "specialised_ms_median": float(np.median(spec_s) * 1e3),
             "full_ms_median": float(np.median(full_s) * 1e3),
             "full_over_specialised": float(np.median(full_s) / np.median(spec_s)),
+            "specialised_instructions": instructions.get(f"{name}|specialised"),
+            "full_instructions": instructions.get(f"{name}|full"),
         }
     return out
+
+
+SPECIALISATION_COUNT_SIZE = (64, 48)  # frames counted under callgrind are small: ~50x slower
+# Scenes whose frames callgrind can count: valgrind 3.19 stops on a GFNI instruction
+# (GF2P8AFFINEQB) that a library on this host executes on the environment and image paths
+# (DFG table, prefilter, image decoding), so scenes with an environment or textures keep
+# only their times.
+SPECIALISATION_COUNT_SCENES = ("chart_metallic", "chart_terms")
+
+
+def _count_frames(settings: Settings, workdir: Path) -> dict:
+    """callgrind instructions (Ir, whole process) of one frame per (scene, program kind) at
+    SPECIALISATION_COUNT_SIZE, for SPECIALISATION_COUNT_SCENES; empty under --quick
+    (callgrind start-up alone is ~55 s)."""
+    valgrind = shutil.which("valgrind")
+    if valgrind is None or settings.count_families == ():
+        return {}
+    spec = {"scenes": list(SPECIALISATION_COUNT_SCENES), "size": list(SPECIALISATION_COUNT_SIZE)}
+    outdir = workdir / "callgrind_frames"
+    outdir.mkdir()
+    prefix = (valgrind, "--tool=callgrind", "--dump-before=getppid", "--dump-instr=no",
+              f"--callgrind-out-file={outdir}/cg.out")
+    cmd, out_path = _worker_command("count_frames", spec, workdir, prefix=prefix, tag="frames")
+    proc = subprocess.Popen(cmd, env=_worker_env(0), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    result = _wait([(proc, cmd, out_path)])[0]
+    dumps = sorted(outdir.glob("cg.out.*"), key=lambda p: int(p.suffix[1:]))
+    totals = [int(re.search(r"^summary:\s*(\d+)", p.read_text(), re.M).group(1)) for p in dumps]
+    return dict(zip(result["sequence"], totals[1:]))  # dump 1: start-up to the first marker
 
 
 def tier_image_error(scene_path=DEFAULT_SCENE, scale: float = 1.0) -> dict:

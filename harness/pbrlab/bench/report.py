@@ -165,12 +165,21 @@ def markdown(doc: dict) -> str:
               f"with the full program (every effect compiled in, fed neutral values; bit-identical "
               f"images). CPU time per frame, LP_NUM_THREADS=1, median of {sp['rounds']} interleaved "
               f"rounds, size: {sp['size']}.", "",
-              "| scene | programs (specialised / full) | specialised ms | full ms | full / specialised |",
-              "|---|---|---|---|---|"]
+              f"Instructions: callgrind Ir of the whole process for one frame at "
+              f"{sp.get('instructions_size', ['?', '?'])[0]}x{sp.get('instructions_size', ['?', '?'])[1]} "
+              f"(uniform uploads, draws, readback, resolve; not counted under --quick; scenes with an "
+              f"environment or textures are not countable here: valgrind 3.19 cannot decode a GFNI "
+              f"instruction a library executes on those paths on this host).", "",
+              "| scene | programs (specialised / full) | specialised ms | full ms | full / specialised | "
+              "specialised Ir | full Ir | full / specialised Ir |",
+              "|---|---|---|---|---|---|---|---|"]
     for name, r in sp["scenes"].items():
+        si, fi = r.get("specialised_instructions"), r.get("full_instructions")
+        ratio = _g(fi / si) if si and fi else "–"
         lines.append(f"| `{name}` | {r['programs_specialised']} / {r['programs_full']} | "
                      f"{_g(r['specialised_ms_median'], 1)} | {_g(r['full_ms_median'], 1)} | "
-                     f"{_g(r['full_over_specialised'])} |")
+                     f"{_g(r['full_over_specialised'])} | {_g(si, 1) if si else '–'} | "
+                     f"{_g(fi, 1) if fi else '–'} | {ratio} |")
     lines += ["", f"> {NOISE_NOTE}", ""]
     return "\n".join(lines)
 

@@ -137,15 +137,38 @@ def _bench_scene(name):
     return scene_mod.load_scene(Path(__file__).resolve().parents[3] / "scenes" / name)
 
 
+def _specialisation_jobs(spec):
+    jobs = {}
+    for name in spec["scenes"]:
+        for specialise in (True, False):
+            jobs[f"{name}|{'specialised' if specialise else 'full'}"] = (_bench_scene(name), specialise)
+    return jobs
+
+
+def run_count_frames(spec):
+    """Under callgrind: one frame per job between two markers (after a warm-up frame that
+    compiles its programs), so each dump holds the instructions of exactly one frame."""
+    from pbrlab import gl, render
+    ctx = gl.create_context(None)
+    jobs = _specialisation_jobs(spec)
+    size = tuple(spec["size"])
+    for scene, specialise in jobs.values():
+        render.render_scene(scene, ctx, size=size, specialise=specialise)
+    sequence = []
+    for key, (scene, specialise) in jobs.items():
+        os.getppid()  # marker: callgrind dumps the counts since the previous marker
+        render.render_scene(scene, ctx, size=size, specialise=specialise)
+        sequence.append(key)
+    os.getppid()
+    return {"sequence": sequence}
+
+
 def run_specialise(spec):
     """Each scene rendered with its specialised programs and with the full program,
     interleaved in a shuffled order each round (features.py; the images are identical)."""
     from pbrlab import gl, render
     ctx = gl.create_context(None)
-    jobs = {}
-    for name in spec["scenes"]:
-        for specialise in (True, False):
-            jobs[f"{name}|{'specialised' if specialise else 'full'}"] = (_bench_scene(name), specialise)
+    jobs = _specialisation_jobs(spec)
     size = tuple(spec["size"]) if spec.get("size") else None
     programs = {}
     for key, (s, specialise) in jobs.items():  # warm-up: compile every program
@@ -163,7 +186,8 @@ def run_specialise(spec):
     return {"seconds": seconds, "programs": programs}
 
 
-MODES = {"time": run_time, "count": run_count, "frame": run_frame, "specialise": run_specialise}
+MODES = {"time": run_time, "count": run_count, "frame": run_frame, "specialise": run_specialise,
+         "count_frames": run_count_frames}
 
 
 def main(argv=None) -> int:
