@@ -92,7 +92,7 @@ def test_default_configuration_agrees(entries, hlsl_wrappers, batch_index):
     batches = A.batches(entries)
     assert len(batches) <= 4, "more entries than 4 batches: add a parametrize index"
     if batch_index >= len(batches):
-        pytest.skip("fewer batches")
+        pytest.skip(f"the entries fill {len(batches)} batches of 32; batch {batch_index} is empty")
     batch = batches[batch_index]
     glsl, hlsl = A.run(batch, {}, hlsl_wrappers)
     check(batch, glsl, hlsl, "default")
