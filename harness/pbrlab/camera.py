@@ -49,7 +49,7 @@ def camera_frame(camera, scene_radius: float) -> CameraFrame:
 
 def camera_rays(frame: CameraFrame) -> np.ndarray:
     """Unit ray directions through every pixel centre, top row first: HxWx3 float64.
-    Same formula as templates/camera_ray.glsl."""
+    Same formula as templates/surface_pixel.inc."""
     w, h = frame.size
     x = (np.arange(w) + 0.5) / w * 2 - 1
     y = (np.arange(h)[::-1] + 0.5) / h * 2 - 1  # GL rows count from the bottom

@@ -26,7 +26,7 @@ from .reference import surface as ref_surface
 
 
 def _intersect(origin, d, centre, radius):
-    """Nearest positive hit distance per ray (inf where missed); same algebra as sphere.frag."""
+    """Nearest positive hit distance per ray (inf where missed); same algebra as templates/surface_pixel.inc."""
     oc = origin - centre
     b = d @ oc
     q = oc[None, None] - b[..., None] * d

@@ -47,7 +47,7 @@ def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Pa
     """Compile (once per context, shader pair, defines and surface file) a harness program.
 
     ``surface`` is a GLSL file defining ``surf(Input IN, inout ...)``; None uses the
-    harness's default_surface.glsl. Errors are reported at the original file and line.
+    harness's default_surface.inc. Errors are reported at the original file and line.
     """
     key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
     if key not in _PROGRAMS:
@@ -59,7 +59,7 @@ def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Pa
 def template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
     """A harness template with its defines and surface function, includes expanded."""
     include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-    surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.glsl"'
+    surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.inc"'
     text = (TEMPLATES / name).read_text(encoding="utf-8")
     text = text.replace("//@DEFINES", _defines_block(defines)).replace("//@SURFACE", surface_line)
     return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
