@@ -100,13 +100,15 @@ def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize:
         return out.read_bytes()
 
 
-def cross_to_glsl(spirv: bytes, version: int = 330) -> str:
-    """SPIR-V -> desktop GLSL ``#version <version>`` with spirv-cross."""
+def cross_to_glsl(spirv: bytes, version: int = 330, *, plain_uniforms: bool = False) -> str:
+    """SPIR-V -> desktop GLSL ``#version <version>`` with spirv-cross; ``plain_uniforms``
+    writes the cbuffers as uniform structs (set with glUniform) instead of uniform blocks."""
     cross = tool(SPIRV_CROSS)
     with tempfile.TemporaryDirectory(prefix="pbrlab-spirv-") as tmp:
         path = Path(tmp) / "in.spv"
         path.write_bytes(spirv)
-        proc = subprocess.run([cross, "--version", str(version), "--no-es", str(path)],
+        flags = ["--glsl-emit-ubo-as-plain-uniforms"] if plain_uniforms else []
+        proc = subprocess.run([cross, "--version", str(version), "--no-es", *flags, str(path)],
                               capture_output=True, text=True, timeout=_TIMEOUT_S)
     if proc.returncode != 0:
         raise ShaderCompileError(f"spirv-cross failed:\n{(proc.stdout + proc.stderr).strip()}")
@@ -114,10 +116,14 @@ def cross_to_glsl(spirv: bytes, version: int = 330) -> str:
 
 
 @lru_cache(maxsize=256)
-def _hlsl_to_glsl_cached(text: str, name: str, include_dirs: tuple, optimize: bool) -> str:
-    return cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize))
+def _hlsl_to_glsl_cached(text: str, name: str, include_dirs: tuple, optimize: bool,
+                         plain_uniforms: bool) -> str:
+    return cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize),
+                         plain_uniforms=plain_uniforms)
 
 
-def hlsl_to_glsl(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False) -> str:
+def hlsl_to_glsl(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
+                 plain_uniforms: bool = False) -> str:
     """A pixel shader (entry ``main``) in HLSL -> the GLSL 330 that spirv-cross writes."""
-    return _hlsl_to_glsl_cached(text, name, tuple(str(d) for d in include_dirs), optimize)
+    return _hlsl_to_glsl_cached(text, name, tuple(str(d) for d in include_dirs), optimize,
+                                plain_uniforms)

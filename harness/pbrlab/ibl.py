@@ -21,7 +21,8 @@ from functools import lru_cache
 import moderngl
 import numpy as np
 
-from . import shaders, targets
+from . import targets
+from .programs import program_from_templates
 from .reference import brdf as ref_brdf
 
 DFG_LUT_SIZE = 32          # texels per axis; sampled at texel centres with bilinear filtering
@@ -86,8 +87,6 @@ def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
 def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.Texture:
     """The GGX-prefiltered mip chain of an equirectangular radiance image (HxWx3, linear),
     as an RGBA32F texture with PREFILTER_LEVELS levels (see module docstring)."""
-    from .render import program_from_templates  # noqa: E402 (render imports ibl)
-
     source = targets.upload_texture(ctx, np.concatenate(
         [image[..., :3], np.ones(image.shape[:2] + (1,), image.dtype)], axis=2).astype(np.float32),
         srgb=False)

@@ -309,7 +309,7 @@ _TERM_PROGRAMS: dict = {}
 
 def _terms_program(ctx, terms: dict):
     from . import shaders
-    from .render import TEMPLATES
+    from .programs import TEMPLATES
 
     unknown = set(terms) - set(TERM_SWITCHES)
     if unknown:

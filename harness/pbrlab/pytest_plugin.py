@@ -123,17 +123,20 @@ class GoldenFixture:
         self.output_dir = settings.output_dir
 
     def check(self, name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERANCE, *,
-              srgb_tolerance: Tolerance = GOLDEN_SRGB_TOLERANCE) -> DiffResult:
+              srgb_tolerance: Tolerance = GOLDEN_SRGB_TOLERANCE, read_only: bool = False) -> DiffResult:
+        """``read_only``: a render that must match a golden another path made (the HLSL twin
+        of a GLSL render) compares, and never writes, even under --update-goldens."""
         __tracebackhide__ = True
+        update = self.update and not read_only
         try:
             result = goldens.check_golden(
-                name, linear, srgb8, tolerance, self.info, update=self.update, root=self.root,
+                name, linear, srgb8, tolerance, self.info, update=update, root=self.root,
                 output_dir=self.output_dir, srgb_tolerance=srgb_tolerance, nodeid=self.nodeid)
         except goldens.GoldenFailure as failure:
             self._record(failure.kind, name, message=str(failure), linear=failure.linear,
                          srgb=failure.srgb, artefacts=failure.artefacts)
             raise
-        if self.update:
+        if update:
             self._record("updated", name)
         return result
 

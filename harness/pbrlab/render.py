@@ -8,19 +8,20 @@ radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 displa
 from __future__ import annotations
 
 from dataclasses import dataclass
-from importlib import resources
 from pathlib import Path
 
 import moderngl
 import numpy as np
 
-from . import features, gl, ibl, meshes, shaders, targets
+from . import features, gl, ibl, meshes, targets
 from .camera import camera_frame
 from .environment import environment_image, environment_sh
 from .images import read_image
+from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
+from .programs import set_uniform as _set
+from .programs import set_uniform_array as _set_array
 from .scene import HDR_TARGETS, Scene
 
-TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
 _UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
 # Triangles of the unit cube, counter-clockwise seen from outside.
 _CUBE_TRIANGLES = np.array([
@@ -34,53 +35,6 @@ class Rendering:
     srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + hardware sRGB encode
     info: dict
     programs: "features.ProgramPlan" = None  # what was compiled
-
-
-def _defines_block(defines: dict) -> str:
-    return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
-
-
-_PROGRAMS: dict = {}
-
-
-def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Path | None = None):
-    """Compile (once per context, shader pair, defines and surface file) a harness program.
-
-    ``surface`` is a GLSL file defining ``surf(Input IN, inout ...)``; None uses the
-    harness's default_surface.inc. Errors are reported at the original file and line.
-    """
-    key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
-    if key not in _PROGRAMS:
-        _PROGRAMS[key] = shaders.build_program(ctx, template_source(vert, defines, surface),
-                                               template_source(frag, defines, surface))
-    return _PROGRAMS[key]
-
-
-def template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
-    """A harness template with its defines and surface function, includes expanded."""
-    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-    surface_line = f'#include "{surface.name}"' if surface else '#include "default_surface.inc"'
-    text = (TEMPLATES / name).read_text(encoding="utf-8")
-    text = text.replace("//@DEFINES", _defines_block(defines)).replace("//@SURFACE", surface_line)
-    return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
-
-
-def _set(program, name, value):
-    """Set a uniform if the compiler kept it (unused uniforms are optimised away)."""
-    uniform = program.get(name, None)
-    if uniform is not None:
-        uniform.value = value
-
-
-def _set_array(program, name, values):
-    """Set a uniform array; entries past ``values`` (the full program's spare light
-    slots) are zero and never read (its loops stop at the runtime count)."""
-    uniform = program.get(name, None)
-    if uniform is not None:
-        data = np.ascontiguousarray(values, dtype=np.float32).reshape(len(values), -1)
-        padded = np.zeros((uniform.array_length, data.shape[1]), np.float32)
-        padded[:len(data)] = data
-        uniform.write(padded.tobytes())
 
 
 def scene_radius(scene: Scene) -> float:
@@ -223,7 +177,8 @@ def _draw_order(scene: Scene, frame):
 
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
-                 transfer: str = "HARDWARE", specialise: bool = True) -> Rendering:
+                 transfer: str = "HARDWARE", specialise: bool = True,
+                 language: str = "glsl") -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
@@ -231,9 +186,15 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     (exact curve), GAMMA22 (pow 1/2.2) or FAST (sqrt). ``specialise=False`` renders every
     material with the full program (every effect compiled in, fed neutral values):
     the same image, at the full program's cost (harness/pbrlab/features.py).
+    ``language="hlsl"`` shades with the HLSL library (hlsl_ports/) and the harness's HLSL
+    pixel shaders, cross-compiled by glslang and spirv-cross (harness/pbrlab/programs.py);
+    a material's ``surface`` file then needs its ``.hlsl`` twin beside it.
     """
     if transfer not in COLOR_TRANSFERS:
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
+    if language not in LANGUAGES:
+        raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
     ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
         scene.camera.size = tuple(size)
@@ -261,14 +222,15 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
+                shading = (defines, surfaces[obj.material], language)
                 if obj.sphere is not None:
-                    _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo, cube_ibo)
+                    _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
-                    _draw_mesh(ctx, obj, material, defines, scene, frame, resources)
+                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
             linear = hdr.read()
-            srgb8 = _resolve(ctx, hdr, scene, transfer)
+            srgb8 = _resolve(ctx, hdr, scene, transfer, language)
     finally:
         resources.release()
         cube_vbo.release()
@@ -276,9 +238,11 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
 
 
-def _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo, cube_ibo):
+def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    program = program_from_templates(ctx, "sphere.vert", "sphere.frag", defines, material.surface)
+    defines, surface, language = shading
+    program = program_from_templates(ctx, "sphere.vert", fragment_template("sphere", language),
+                                     defines, surface)
     resources.bind(program, scene, frame, material)
     centre, radius = obj.sphere
     _set(program, "u_sphere", (*centre, radius))
@@ -294,8 +258,10 @@ def _draw_sphere(ctx, obj, material, defines, scene, frame, resources, cube_vbo,
     vao.release()
 
 
-def _draw_mesh(ctx, obj, material, defines, scene, frame, resources):
-    program = program_from_templates(ctx, "mesh.vert", "mesh.frag", defines, material.surface)
+def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
+    defines, surface, language = shading
+    program = program_from_templates(ctx, "mesh.vert", fragment_template("mesh", language),
+                                     defines, surface)
     resources.bind(program, scene, frame, material)
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
@@ -311,9 +277,9 @@ def _draw_mesh(ctx, obj, material, defines, scene, frame, resources):
         resource.release()
 
 
-def _resolve(ctx, hdr, scene, transfer):
+def _resolve(ctx, hdr, scene, transfer, language):
     """Exposure + tonemap, then the display encode (hardware sRGB or a DIY curve)."""
-    resolve = program_from_templates(ctx, "fullscreen.vert", "resolve.frag", {
+    resolve = program_from_templates(ctx, "fullscreen.vert", fragment_template("resolve", language), {
         "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
         "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{transfer}"})
     display_kind = "srgb8" if transfer == "HARDWARE" else "unorm8"

@@ -65,6 +65,22 @@ def test_update_goldens_is_the_only_way_a_golden_is_written(project):
     assert not (project.path / "test-output" / "index.html").exists()
 
 
+def test_read_only_check_never_writes_even_under_update_goldens(project):
+    """The HLSL renders compare with the GLSL goldens and must never replace them."""
+    read_only = CHART_TEST.format(level=0.5).replace('srgb8)', 'srgb8, read_only=True)')
+    project.makepyfile(test_chart=read_only)
+    goldens_dir = project.path / "goldens" / "charts"
+    project.runpytest("--update-goldens").assert_outcomes(failed=1)  # missing, and not written
+    assert not goldens_dir.exists()
+
+    project.makepyfile(test_chart=CHART_TEST.format(level=0.5))
+    project.runpytest("--update-goldens").assert_outcomes(passed=1)
+    before = {p.name: p.read_bytes() for p in goldens_dir.iterdir()}
+    project.makepyfile(test_chart=read_only.replace("LEVEL = 0.5", "LEVEL = 0.75"))
+    project.runpytest("--update-goldens").assert_outcomes(failed=1)  # a mismatch stays one
+    assert {p.name: p.read_bytes() for p in goldens_dir.iterdir()} == before
+
+
 def _assert_failure_page(project):
     output = project.path / "test-output"
     page = (output / "index.html").read_text()

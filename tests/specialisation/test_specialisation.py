@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, features, render
+from pbrlab import cli, features, programs, render
 from pbrlab.charts import CHARTS
 from pbrlab.scene import load_scene, parse_scene
 
@@ -61,7 +61,7 @@ def _preprocessed(source_text: str, tmp_path) -> str:
 def _programs_for(scene, specialise):
     plan = features.plan_programs(scene, specialise)
     defines = plan.defines["m"]
-    source = render.template_source("sphere.frag", defines).text
+    source = programs.template_source("sphere.frag", defines).text
     return defines, source
 
 
@@ -71,7 +71,7 @@ def test_unused_effects_are_absent_from_the_specialised_source_and_uniforms(gl_c
     text = _preprocessed(source, tmp_path)
     for token in ABSENT_WHEN_UNUSED:
         assert token not in text, token
-    program = render.program_from_templates(gl_context, "sphere.vert", "sphere.frag", defines)
+    program = programs.program_from_templates(gl_context, "sphere.vert", "sphere.frag", defines)
     members = set(program)
     assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env|dfg)", m)]
     assert "u_directional_radiance" in members
@@ -100,9 +100,9 @@ def test_material_and_scene_features_follow_what_the_scene_can_show():
 def test_programs_are_cached_across_renders(gl_context):
     scene = parse_scene(CHARTS["chart_f0"]())
     render.render_scene(scene, gl_context)
-    compiled = len(render._PROGRAMS)
+    compiled = len(programs._PROGRAMS)
     render.render_scene(parse_scene(CHARTS["chart_f0"]()), gl_context)
-    assert len(render._PROGRAMS) == compiled
+    assert len(programs._PROGRAMS) == compiled
 
 
 def test_variant_explosion_falls_back_to_the_full_program_with_a_warning():

@@ -1,10 +1,12 @@
-"""`pbrlab demo [--out DIR]`: render the default material charts and the lit example
-scene (the Unity-style surface API), check them against the goldens, and say where the
-images are."""
+"""`pbrlab demo [--out DIR] [--language hlsl]`: render the default material charts and the lit
+example scene (the Unity-style surface API), check them against the goldens, and say where
+the images are. ``--language hlsl`` shades with the HLSL twins against the same goldens."""
 
 from __future__ import annotations
 
 from pathlib import Path
+
+from .render import add_language_option
 
 LIT_SCENE = Path(__file__).resolve().parents[3] / "scenes" / "unity_example" / "scene.json"
 
@@ -20,13 +22,14 @@ def run(args) -> int:
     out.mkdir(parents=True, exist_ok=True)
     ctx = gl.shared_context(args.backend)
     info = gl.context_info(ctx)
-    print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']})")
+    print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
+          f"shading in {args.language.upper()}")
     failures = 0
     jobs = [(name, lambda build=build, name=name: parse_scene(build(), origin=f"chart {name}"))
             for name, build in CHARTS.items()]
     jobs.append(("lit_scene_high", lambda: load_scene(LIT_SCENE)))
     for name, make_scene in jobs:
-        rendering = render_scene(make_scene(), ctx)
+        rendering = render_scene(make_scene(), ctx, language=args.language)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
         images.write_png(png, rendering.srgb8)
@@ -49,4 +52,5 @@ def register(sub, common):
                        description=__doc__.splitlines()[0])
     p.add_argument("--out", default="out", help="output folder (default: out)")
     p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
+    add_language_option(p)
     p.set_defaults(run=run)

@@ -1,4 +1,4 @@
-"""`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH]`: render a scene file.
+"""`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH] [--language hlsl]`: render a scene file.
 
 Writes atomically: a failed render leaves no partial file and never replaces a good one.
 """
@@ -40,7 +40,7 @@ def run(args) -> int:
     size = parse_size(args.size)
     scene = load_scene(args.scene)
     rendering = render_scene(scene, gl.shared_context(args.backend), size=size,
-                             specialise=not args.no_specialise)
+                             specialise=not args.no_specialise, language=args.language)
     kind = "specialised" if rendering.programs.specialised else "full"
     print(f"{rendering.programs.distinct} {kind} program(s)")
     check_finite(rendering.linear, args.scene)
@@ -62,4 +62,13 @@ def register(sub, common):
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")
     p.add_argument("--no-specialise", action="store_true",
                    help="render with the full program (every effect compiled in) to compare")
+    add_language_option(p)
     p.set_defaults(run=run)
+
+
+def add_language_option(parser):
+    from ..programs import LANGUAGES
+    parser.add_argument("--language", choices=LANGUAGES, default="glsl",
+                        help="shade with the GLSL library (default) or its HLSL twins in hlsl_ports/, "
+                             "compiled by glslang and spirv-cross; a material's surface file then "
+                             "needs its .hlsl twin beside it")

@@ -1,0 +1,156 @@
+"""Harness programs built from ``templates/``, with the fragment stage in GLSL or HLSL.
+
+    program = program_from_templates(ctx, "sphere.vert", "sphere.hlsl", defines, surface)
+    set_uniform(program, "u_albedo", (1.0, 0.5, 0.2))
+
+The fragment template's suffix picks the language (``FRAGMENT_SUFFIX``):
+
+* ``.frag`` (GLSL): ``//@DEFINES`` and ``//@SURFACE`` filled in, includes expanded by
+  ``shaders.expand``; errors are reported at the original file and line.
+* ``.hlsl``: the same markers, then glslang's HLSL front end to SPIR-V and spirv-cross to
+  GLSL 330 (``hlsl.py``): the Direct3D path of the library, run on this GL. Errors are
+  glslang's, at the original file and line (a ``#line`` follows the defines). The vertex
+  stage stays the harness's GLSL: it only places geometry, and the HLSL pixel shader's
+  inputs keep its output names, which spirv-cross keeps.
+
+HLSL globals form the ``$Global`` cbuffer. spirv-cross writes it as one uniform struct
+(``--glsl-emit-ubo-as-plain-uniforms``: ``uniform _Global _29;``), so its members are GL
+uniforms named ``_29.u_albedo``; ``set_uniform`` sets a value by its template name on the
+loose uniform (GLSL, or the GLSL vertex stage) and on the struct member (the HLSL stage)
+alike. Matrices: glslang declares HLSL's ``float4x4`` row-major in SPIR-V (HLSL indexes
+rows first) and spirv-cross, with no layout to say so in a plain uniform, multiplies as
+``v * M``; so a struct member receives the transpose of what a GLSL ``mat4`` receives,
+and ``mul(M, v)`` in HLSL computes the same ``M v`` as ``M * v`` in GLSL
+(tests/hlsl/test_scene_renders.py renders depth-tested scenes both ways).
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from . import hlsl, shaders
+from .errors import PbrlabError
+
+TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
+FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
+LANGUAGES = tuple(FRAGMENT_SUFFIX)
+DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
+_GL_FLOAT_MATRICES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}  # GL_FLOAT_MAT2, MAT3, MAT4
+_PROGRAMS: dict = {}
+
+
+def fragment_template(stem: str, language: str) -> str:
+    """The fragment template of ``stem`` ('sphere', 'mesh', 'resolve') in ``language``."""
+    if language not in FRAGMENT_SUFFIX:
+        raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    return stem + FRAGMENT_SUFFIX[language]
+
+
+def surface_file(surface: Path | None, language: str) -> Path | None:
+    """A material's surface function in ``language``: the file the scene names for GLSL,
+    its twin with the suffix ``.hlsl`` beside it for HLSL."""
+    if surface is None or language == "glsl":
+        return surface
+    twin = surface.with_suffix(".hlsl")
+    if not twin.is_file():
+        raise PbrlabError(f"surface {surface}: rendering in HLSL needs its HLSL twin {twin.name} "
+                          f"beside it, and there is none (scenes/unity_example/brick_surface.hlsl "
+                          "is an example)")
+    return twin
+
+
+def _defines_block(defines: dict) -> str:
+    return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
+
+
+def _fill(text: str, defines: dict, surface: Path | None, display: str, line_marker: bool) -> str:
+    """The template with its defines and surface include; with ``line_marker``, a #line
+    after the defines keeps the template's own line numbers in error messages."""
+    surface_line = f'#include "{surface.name}"' if surface else f'#include "{DEFAULT_SURFACE}"'
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        if line.strip() == "//@DEFINES":
+            block = _defines_block(defines)
+            if line_marker:
+                block += f'\n#line {i + 2} "{display}"'
+            lines[i] = block
+        elif line.strip() == "//@SURFACE":
+            lines[i] = surface_line
+    return "\n".join(lines) + "\n"
+
+
+def template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
+    """A GLSL harness template with its defines and surface function, includes expanded."""
+    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
+    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface,
+                 f"pbrlab/templates/{name}", line_marker=False)
+    return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
+
+
+def hlsl_template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
+    """An HLSL pixel-shader template, compiled to SPIR-V and cross-compiled to GLSL 330."""
+    display = f"pbrlab/templates/{name}"
+    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
+    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface, display,
+                 line_marker=True)
+    glsl = hlsl.hlsl_to_glsl(text, display, include_dirs, plain_uniforms=True)
+    return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+
+
+def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Path | None = None):
+    """Compile (once per context, shader pair, defines and surface file) a harness program.
+
+    ``frag`` ending in ``.hlsl`` builds the HLSL twin (module doc). ``surface`` is a file
+    defining ``surf(Input IN, inout ...)`` in the fragment's language; None uses the
+    harness's default_surface.inc.
+    """
+    key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
+    if key not in _PROGRAMS:
+        vertex = template_source(vert, defines)
+        if frag.endswith(FRAGMENT_SUFFIX["hlsl"]):
+            fragment = hlsl_template_source(frag, defines, surface)
+        else:
+            fragment = template_source(frag, defines, surface)
+        program = shaders.build_program(ctx, vertex, fragment)
+        program.extra = {"members": _struct_members(program)}
+        _PROGRAMS[key] = program
+    return _PROGRAMS[key]
+
+
+def _struct_members(program) -> dict:
+    """Template name -> GL name of the uniforms inside a uniform struct (HLSL's $Global)."""
+    return {name.split(".", 1)[1]: name for name in program if "." in name}
+
+
+def _uniforms(program, name):
+    """(uniform, transposed) for each GL uniform that holds the template uniform ``name``."""
+    found = []
+    loose = program.get(name, None)
+    if loose is not None:
+        found.append((loose, False))
+    member = (getattr(program, "extra", None) or {}).get("members", {}).get(name)
+    if member is not None:
+        found.append((program[member], True))
+    return found
+
+
+def set_uniform(program, name, value):
+    """Set a uniform if the compiler kept it (unused uniforms are optimised away)."""
+    for uniform, in_struct in _uniforms(program, name):
+        size = _GL_FLOAT_MATRICES.get(uniform.gl_type)
+        if in_struct and size is not None:  # column-major data of M -> that of M^T (module doc)
+            value = tuple(np.asarray(value, np.float32).reshape(size, size).T.reshape(-1).tolist())
+        uniform.value = value
+
+
+def set_uniform_array(program, name, values):
+    """Set a uniform array; entries past ``values`` (the full program's spare light
+    slots) are zero and never read (its loops stop at the runtime count)."""
+    for uniform, _ in _uniforms(program, name):
+        data = np.ascontiguousarray(values, dtype=np.float32).reshape(len(values), -1)
+        padded = np.zeros((uniform.array_length, data.shape[1]), np.float32)
+        padded[:len(data)] = data
+        uniform.write(padded.tobytes())

@@ -1,0 +1,35 @@
+// pbrlab harness, HLSL side: the twin of scene_shading.glsl. What the scene programs need
+// that HLSL spells differently from GLSL (textures, a basis change, the library's include
+// paths); the shading itself is scene_lighting.inc, shared word for word with the GLSL
+// programs and made valid HLSL by the library's pbr/common/shim.hlsl. Compile-time
+// configuration: see scene_lighting.inc. Globals are HLSL uniforms ($Global cbuffer).
+
+// Textures, as the shared files spell them (GLSL: sampler2D, texture/textureLod).
+#define PBRLAB_DECLARE_TEX2D(name) Texture2D name; SamplerState sampler_##name
+#define PBRLAB_SAMPLE_TEX2D(name, uv) name.Sample(sampler_##name, uv)
+#define PBRLAB_SAMPLE_TEX2D_LOD(name, uv, lod) name.SampleLevel(sampler_##name, uv, lod)
+// The columns t, b, n times v: a tangent-space vector in the world (rows of float3x3).
+#define PBRLAB_FROM_BASIS(t, b, n, v) mul(v, float3x3(t, b, n))
+// Unity's names for the same (HLSLSupport.cginc, Direct3D 11 path), so a ported surface
+// function keeps them; inside Unity its own definitions stand.
+#ifndef UNITY_DECLARE_TEX2D
+#define UNITY_DECLARE_TEX2D(name) PBRLAB_DECLARE_TEX2D(name)
+#endif
+#ifndef UNITY_SAMPLE_TEX2D
+#define UNITY_SAMPLE_TEX2D(name, uv) PBRLAB_SAMPLE_TEX2D(name, uv)
+#endif
+
+#ifdef PBRLAB_ENV
+PBRLAB_DECLARE_TEX2D(u_dfg_lut);  // harness/pbrlab/ibl.py dfg_lut: (A, B)
+// The library samples no textures itself: this hook hands it the DFG table.
+#define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_dfg_lut, float2(NdotV, perceptualRoughness)).rg
+#endif
+
+#include "pbr/pbr.hlsl"
+#include "pbr/lighting/attenuation.hlsl"
+#include "pbr/lighting/sh9.hlsl"
+#include "pbr/ibl/equirect.hlsl"
+#include "pbr/ibl/importance_sampling.hlsl"
+#include "pbr/unity/surface_standard.hlsl"
+
+#include "scene_lighting.inc"
