@@ -3,8 +3,13 @@ per-vertex attributes the mesh program needs (positions, normals, UVs, tangents)
 
 from __future__ import annotations
 
+import json
+from collections import OrderedDict
+from dataclasses import dataclass
+
 import numpy as np
 
+from . import resource_cache
 from .errors import SceneError
 
 _PRIMITIVE_DEFAULTS = {
@@ -62,10 +67,43 @@ def load_mesh(obj):
     return mesh
 
 
+@dataclass(frozen=True)
+class MeshData:
+    """What the renderer needs of a mesh: ``vertex_arrays`` and the largest vertex norm."""
+    arrays: tuple
+    max_vertex_norm: float
+
+
+def _mesh_key(obj) -> tuple:
+    if obj.primitive is not None:
+        return ("primitive", json.dumps(obj.primitive, sort_keys=True))
+    return ("file", *resource_cache.file_key(obj.mesh_path))
+
+
+_MESH_DATA: OrderedDict = OrderedDict()
+MESHES_KEPT = 32
+
+
+def mesh_data(obj) -> MeshData:
+    """``obj``'s mesh, read (or generated) and prepared once per file version or primitive
+    (the last MESHES_KEPT are kept)."""
+    key = _mesh_key(obj)
+    if key in _MESH_DATA:
+        _MESH_DATA.move_to_end(key)
+    else:
+        mesh = load_mesh(obj)
+        arrays = vertex_arrays(mesh)
+        for array in arrays:
+            array.flags.writeable = False  # shared by every render of this mesh
+        _MESH_DATA[key] = MeshData(arrays, float(np.linalg.norm(mesh.vertices, axis=1).max()))
+        while len(_MESH_DATA) > MESHES_KEPT:
+            _MESH_DATA.popitem(last=False)
+    return _MESH_DATA[key]
+
+
 def bounding_radius(obj) -> float:
-    mesh = load_mesh(obj)
     scale = np.abs(np.linalg.eigvals(obj.transform[:3, :3])).max()
-    return float(np.linalg.norm(mesh.vertices, axis=1).max() * scale)
+    return float(mesh_data(obj).max_vertex_norm * scale)
 
 
 def tangents(positions, normals, uvs, faces) -> np.ndarray:
@@ -117,7 +155,7 @@ def vertex_arrays(mesh):
 
 def vertex_array(ctx, program, obj):
     """A moderngl VertexArray for ``obj`` on ``program``, plus the buffers to release."""
-    positions, normals, uv, tan, indices = vertex_arrays(load_mesh(obj))
+    positions, normals, uv, tan, indices = mesh_data(obj).arrays
     data = np.concatenate([positions, normals, uv, tan], axis=1).astype(np.float32)
     vbo = ctx.buffer(data.tobytes())
     ibo = ctx.buffer(indices.tobytes())

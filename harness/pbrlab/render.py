@@ -8,15 +8,12 @@ radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 displa
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import moderngl
 import numpy as np
 
-from . import features, gl, ibl, meshes, targets
+from . import features, gl, ibl, meshes, resource_cache, targets
 from .camera import camera_frame
-from .environment import environment_image, environment_sh
-from .images import read_image
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
 from .programs import set_uniform_array as _set_array
@@ -50,8 +47,9 @@ def scene_radius(scene: Scene) -> float:
 
 
 class _SceneResources:
-    """GPU data shared by every draw of one render: environment, DFG table, textures, and
-    the neutral stand-ins the full program reads where the scene has nothing."""
+    """GPU data of every draw of one render: environment, DFG table, textures, and the
+    neutral stand-ins the full program reads where the scene has nothing; kept between
+    renders by the context's resource_cache."""
 
     ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1}
     FIRST_MATERIAL_UNIT = 2
@@ -59,33 +57,21 @@ class _SceneResources:
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
     def __init__(self, ctx, scene: Scene, full: bool):
-        self.ctx = ctx
         self.full = full
+        self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
-        self.textures: dict[tuple[Path, bool], moderngl.Texture] = {}
         self.env_textures = {}
-        self.neutral: dict[str, moderngl.Texture] = {}
         if scene.environment is not None:
-            self.env_sh = environment_sh(scene.environment)
-            self.env_textures["u_dfg_lut"] = ibl.dfg_texture(ctx)
-            self.env_textures["u_env_prefiltered"] = ibl.prefiltered_environment(
-                ctx, environment_image(scene.environment))
+            environment = self.cache.environment(scene.environment)
         elif full:  # the full program always samples an environment: a black one
-            self.env_sh = np.zeros((9, 3))
-            self.env_textures["u_dfg_lut"] = ibl.dfg_texture(ctx)
-            self.env_textures["u_env_prefiltered"] = ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")
-
-    def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
-        key = (path, srgb)
-        if key not in self.textures:
-            self.textures[key] = targets.upload_texture(self.ctx, read_image(path), srgb=srgb)
-        return self.textures[key]
+            environment = self.cache.black_environment()
+        else:
+            return
+        self.env_sh = environment.sh
+        self.env_textures = {"u_dfg_lut": self.cache.dfg(), "u_env_prefiltered": environment.prefiltered}
 
     def neutral_texture(self, slot: str) -> moderngl.Texture:
-        if slot not in self.neutral:
-            texel = np.array(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)), np.float32)
-            self.neutral[slot] = self.ctx.texture((1, 1), 4, texel.tobytes(), dtype="f4")
-        return self.neutral[slot]
+        return self.cache.constant_texture(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)))
 
     def bind(self, program, scene, frame, material):
         _upload_scene_uniforms(program, scene, frame, self.env_sh)
@@ -97,7 +83,7 @@ class _SceneResources:
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
-            self.texture(path, material.texture_srgb[name]).use(unit)
+            self.cache.texture(path, material.texture_srgb[name]).use(unit)
             _set(program, f"u_{name}_map" if material.surface is None else name, unit)
             unit += 1
         if self.full and material.surface is None:
@@ -106,10 +92,6 @@ class _SceneResources:
                     self.neutral_texture(slot).use(unit)
                     _set(program, f"u_{slot}_map", unit)
                     unit += 1
-
-    def release(self):
-        for tex in [*self.textures.values(), *self.env_textures.values(), *self.neutral.values()]:
-            tex.release()
 
 
 def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
@@ -232,7 +214,6 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             linear = hdr.read()
             srgb8 = _resolve(ctx, hdr, scene, transfer, language)
     finally:
-        resources.release()
         cube_vbo.release()
         cube_ibo.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)

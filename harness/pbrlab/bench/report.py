@@ -150,7 +150,8 @@ def markdown(doc: dict) -> str:
               f"Scene `{fr['scene']}`. Image error at {ti['size'][0]}x{ti['size'][1]} against {ti['reference']}; "
               f"frame cost at {fr['size'][0]}x{fr['size'][1]}, CPU time, LP_NUM_THREADS=1, median of "
               f"{fr['rounds']} interleaved rounds; *shading* = frame minus the same render with no objects "
-              f"(environment prefilter, clear, readback, resolve: {_g(fr['setup_ms_median'], 1)} ms).", "",
+              f"(clear, readback, resolve: {_g(fr['setup_ms_median'], 1)} ms; the environment's prefilter, textures "
+              f"and meshes are made once, at warm-up, and cached: pbrlab.resource_cache).", "",
               "| tier | max abs (linear) | max rel | median rel | max sRGB codes | pixels > 2 codes | "
               "frame ms | shading ms [25th–75th] | ×high |", "|---|---|---|---|---|---|---|---|---|"]
     for tier in ("high", "medium", "low"):

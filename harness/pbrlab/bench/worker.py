@@ -108,7 +108,8 @@ def run_frame(spec):
         s.render.quality = tier
         scenes[tier] = s
     setup = scene_mod.load_scene(spec["scene"])
-    setup.objects = []  # clear, environment prefilter, readback and resolve: no shading
+    setup.objects = []  # clear, readback and resolve: no shading (the environment,
+                        # textures and meshes are cached from the warm-up on: resource_cache)
     scenes["_setup"] = setup
     for tier, s in scenes.items():  # warm-up: compile every program of the tier
         render.render_scene(s, ctx, size=(spec["size"], spec["size"]))
