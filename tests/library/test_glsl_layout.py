@@ -114,6 +114,7 @@ SHARED_CONSTANTS = [
     ("PBR_SRGB_ENCODE_THRESHOLD", color.SRGB_ENCODE_THRESHOLD),
     ("PBR_SRGB_LINEAR_SLOPE", color.SRGB_LINEAR_SLOPE), ("PBR_SRGB_OFFSET", color.SRGB_OFFSET),
     ("PBR_SRGB_EXPONENT", color.SRGB_EXPONENT), ("PBR_DISPLAY_GAMMA", color.DISPLAY_GAMMA),
+    ("PBR_INV_DISPLAY_GAMMA", 1.0 / color.DISPLAY_GAMMA),  # written out: fl32 of the exact quotient
     ("PBR_CALLOFDUTY_LOG2_MAX_SPEC_POWER", remap.CALLOFDUTY_LOG2_MAX_SPEC_POWER),
     ("PBR_CRYTEK_GLOSS_SCALE", remap.CRYTEK_GLOSS_SCALE), ("PBR_DIELECTRIC_F0", material.DIELECTRIC_F0),
     ("PBR_BURLEY_FD90_BASE", brdf.BURLEY_FD90_BASE), ("PBR_F_SCHLICK_SG_A", brdf.F_SCHLICK_SG_A),
@@ -126,6 +127,11 @@ SHARED_CONSTANTS = [
     *guards.SHARED.items(),
     ("PBR_HABLE_WHITE", tonemap.HABLE_WHITE),
     *[(f"PBR_HABLE_{k}", v) for k, v in tonemap.HABLE.items()],
+    # the curve's constant products, written out: fl32 of the exact (float64) products
+    ("PBR_HABLE_CB", tonemap.HABLE["C"] * tonemap.HABLE["B"]),
+    ("PBR_HABLE_DE", tonemap.HABLE["D"] * tonemap.HABLE["E"]),
+    ("PBR_HABLE_DF", tonemap.HABLE["D"] * tonemap.HABLE["F"]),
+    ("PBR_HABLE_E_OVER_F", tonemap.HABLE["E"] / tonemap.HABLE["F"]),
     *[(f"PBR_ACES_NARKOWICZ_{k.upper()}", v) for k, v in tonemap.ACES_NARKOWICZ.items()],
     ("PBR_KHRONOS_NEUTRAL_F90", tonemap.KHRONOS_NEUTRAL_F90),
     ("PBR_KHRONOS_NEUTRAL_START_COMPRESSION", tonemap.KHRONOS_NEUTRAL_KS),

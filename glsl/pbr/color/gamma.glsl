@@ -22,9 +22,13 @@
 
 // The CRT-era display gamma the lecture uses. Shared with reference/color.py DISPLAY_GAMMA.
 #define PBR_DISPLAY_GAMMA 2.2
+// 1 / PBR_DISPLAY_GAMMA written out: compilers fold 1.0 / 2.2 at different precisions
+// (glslang in double: 0.45454547; Mesa in float32: 0.45454544), which put the HLSL twin
+// 1 ulp of exponent away from the GLSL; the literal is the same float everywhere.
+#define PBR_INV_DISPLAY_GAMMA 0.45454545454545453
 
 vec3 pbr_degamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), vec3(PBR_DISPLAY_GAMMA)); }
-vec3 pbr_regamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), vec3(1.0 / PBR_DISPLAY_GAMMA)); }
+vec3 pbr_regamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), vec3(PBR_INV_DISPLAY_GAMMA)); }
 
 // Gamma 2.0: the cheapest pair; exact inverses of each other.
 vec3 pbr_degamma_fast(vec3 c) { c = pbr_sanitize(c, 1.0); return c * c; }

@@ -34,11 +34,18 @@
 #define PBR_HABLE_E 0.02  // toe numerator
 #define PBR_HABLE_F 0.30  // toe denominator
 #define PBR_HABLE_WHITE 11.2  // linear white point W
+// The curve's constant products, written out (exact decimal values, rounded once): compilers
+// fold C * B etc. at different precisions (glslang in double, Mesa in float32), which put
+// the HLSL twin up to 1 ulp per constant away from the GLSL.
+#define PBR_HABLE_CB 0.05                    // C * B
+#define PBR_HABLE_DE 0.004                   // D * E
+#define PBR_HABLE_DF 0.06                    // D * F
+#define PBR_HABLE_E_OVER_F 0.066666666666666667  // E / F
 
 float pbr_hable_curve(float x) {
-    return ((x * (PBR_HABLE_A * x + PBR_HABLE_C * PBR_HABLE_B) + PBR_HABLE_D * PBR_HABLE_E)
-          / (x * (PBR_HABLE_A * x + PBR_HABLE_B) + PBR_HABLE_D * PBR_HABLE_F))
-          - PBR_HABLE_E / PBR_HABLE_F;
+    return ((x * (PBR_HABLE_A * x + PBR_HABLE_CB) + PBR_HABLE_DE)
+          / (x * (PBR_HABLE_A * x + PBR_HABLE_B) + PBR_HABLE_DF))
+          - PBR_HABLE_E_OVER_F;
 }
 
 vec3 pbr_tonemap_hable(vec3 color) {
