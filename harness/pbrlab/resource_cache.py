@@ -54,7 +54,7 @@ class _LRU:
 
 
 @dataclass
-class Environment:
+class PreparedEnvironment:
     """The environment's light as the scene programs read it."""
     sh: np.ndarray                 # 9x3 float64, SH9 of the radiance
     prefiltered: moderngl.Texture  # GGX-prefiltered equirect mip chain (ibl.py)
@@ -69,7 +69,7 @@ class ContextCache:
     def __init__(self, ctx: moderngl.Context):
         self.ctx = ctx
         self._dfg = None
-        self._environments = _LRU(ENVIRONMENTS_PER_CONTEXT, Environment.release)
+        self._environments = _LRU(ENVIRONMENTS_PER_CONTEXT, PreparedEnvironment.release)
         self._textures = _LRU(TEXTURES_PER_CONTEXT, moderngl.Texture.release)
 
     def dfg(self) -> moderngl.Texture:
@@ -77,20 +77,20 @@ class ContextCache:
             self._dfg = ibl.dfg_texture(self.ctx)
         return self._dfg
 
-    def environment(self, environment) -> Environment:
+    def environment(self, environment) -> PreparedEnvironment:
         """A scene's environment (constant colour or image file, times its intensity)."""
         if environment.color is not None:
             source = ("color", tuple(float(c) for c in environment.color))
         else:
             source = ("file", *file_key(environment.path))
         key = (source, float(environment.intensity))
-        return self._environments.get(key, lambda: Environment(
+        return self._environments.get(key, lambda: PreparedEnvironment(
             environment_sh(environment),
             ibl.prefiltered_environment(self.ctx, environment_image(environment))))
 
-    def black_environment(self) -> Environment:
+    def black_environment(self) -> PreparedEnvironment:
         """No light at all: what the full program samples in a scene without environment."""
-        return self._environments.get(("black",), lambda: Environment(
+        return self._environments.get(("black",), lambda: PreparedEnvironment(
             np.zeros((9, 3)), self.ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")))
 
     def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
