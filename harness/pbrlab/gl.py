@@ -195,6 +195,31 @@ def shared_context(backend: str | None = None) -> moderngl.Context:
     return make_current(_shared[key])
 
 
+_GL_FUNCTION_TYPES = {
+    # name: (restype, argtypes), from the OpenGL 3.3 core specification
+    "glTexImage2D": (None, [ctypes.c_uint, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+                            ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ctypes.c_void_p]),
+    "glPixelStorei": (None, [ctypes.c_uint, ctypes.c_int]),
+}
+
+
+def gl_function(ctx: moderngl.Context, name: str):
+    """A GL entry point moderngl does not wrap, for ``ctx`` (which must be current), as a
+    ctypes function: OSMesaGetProcAddress for OSMesa, eglGetProcAddress otherwise."""
+    restype, argtypes = _GL_FUNCTION_TYPES[name]
+    loader = (ctx.extra or {}).get("osmesa_loader")
+    if loader is not None:
+        address = loader.load_opengl_function(name)
+    else:
+        egl = ctypes.CDLL(os.environ.get("GLCONTEXT_LINUX_LIBEGL", "libEGL.so.1"))
+        egl.eglGetProcAddress.restype = ctypes.c_void_p
+        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+        address = egl.eglGetProcAddress(name.encode("ascii"))
+    if not address:
+        raise PbrlabError(f"the GL driver does not provide {name}")
+    return ctypes.CFUNCTYPE(restype, *argtypes)(address)
+
+
 def context_info(ctx: moderngl.Context) -> dict:
     """Renderer facts for report headers and golden sidecars."""
     import OpenImageIO

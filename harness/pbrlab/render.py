@@ -1,8 +1,11 @@
 """GPU rendering of a scene: spheres ray-traced per pixel, meshes rasterised, one HDR
-float pass, then exposure + tonemap into an sRGB framebuffer (hardware encode).
+float pass, then exposure + tonemap, then the display encode to 8-bit sRGB.
 
 ``render_scene(scene)`` returns a ``Rendering`` with ``linear`` (HxWx4 float32 scene
 radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 display image).
+By default the tonemapped display values are rendered to float and encoded on the CPU with
+the exact curve (``pbrlab.srgb8``), so the display image is the same on every machine;
+``transfer="HARDWARE"`` takes the lecture's sRGB-framebuffer path instead.
 """
 
 from __future__ import annotations
@@ -13,6 +16,7 @@ import moderngl
 import numpy as np
 
 from . import features, gl, ibl, meshes, resource_cache, targets
+from . import srgb8 as srgb8_codes
 from .camera import camera_frame
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
@@ -29,7 +33,7 @@ _CUBE_TRIANGLES = np.array([
 @dataclass
 class Rendering:
     linear: np.ndarray  # HxWx4 float32 radiance; alpha = material alpha where covered, 0 elsewhere
-    srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + hardware sRGB encode
+    srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + sRGB encode (see ``transfer``)
     info: dict
     programs: "features.ProgramPlan" = None  # what was compiled
 
@@ -145,7 +149,9 @@ _BLEND = {
     "fade": (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
     "transparent": (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
 }
-COLOR_TRANSFERS = ("HARDWARE", "SRGB", "GAMMA22", "FAST")  # PBR_COLOR_TRANSFER_*
+# The display encodes: EXACT (the shader writes linear display values to a float target,
+# pbrlab.srgb8 rounds them on the exact curve) or a PBR_COLOR_TRANSFER_* path of the shader.
+COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 
 
 def _draw_order(scene: Scene, frame):
@@ -159,13 +165,15 @@ def _draw_order(scene: Scene, frame):
 
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
-                 transfer: str = "HARDWARE", specialise: bool = True,
+                 transfer: str = "EXACT", specialise: bool = True,
                  language: str = "glsl") -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
-    ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
-    (sRGB framebuffer encodes) or a DIY shader encode into a plain 8-bit target: SRGB
-    (exact curve), GAMMA22 (pow 1/2.2) or FAST (sqrt). ``specialise=False`` renders every
+    ``transfer`` picks the display encode: EXACT (default: float display values rounded
+    to the nearest code of the exact sRGB curve on the CPU, identical on every machine),
+    HARDWARE (the lecture's sRGB framebuffer: llvmpipe's encode, whose last bit depends on
+    the CPU vendor) or a DIY shader encode into a plain 8-bit target: SRGB (exact curve),
+    GAMMA22 (pow 1/2.2) or FAST (sqrt). ``specialise=False`` renders every
     material with the full program (every effect compiled in, fed neutral values):
     the same image, at the full program's cost (harness/pbrlab/features.py).
     ``language="hlsl"`` shades with the HLSL library (hlsl_ports/) and the harness's HLSL
@@ -259,11 +267,12 @@ def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
 
 
 def _resolve(ctx, hdr, scene, transfer, language):
-    """Exposure + tonemap, then the display encode (hardware sRGB or a DIY curve)."""
+    """Exposure + tonemap, then the display encode (see render_scene's ``transfer``)."""
+    shader_transfer = "HARDWARE" if transfer == "EXACT" else transfer  # EXACT: shader writes linear
     resolve = program_from_templates(ctx, "fullscreen.vert", fragment_template("resolve", language), {
         "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
-        "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{transfer}"})
-    display_kind = "srgb8" if transfer == "HARDWARE" else "unorm8"
+        "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{shader_transfer}"})
+    display_kind = {"EXACT": "f32", "HARDWARE": "srgb8"}.get(transfer, "unorm8")
     with targets.Target(ctx, hdr.size, display_kind, depth=False) as display:
         display.use()
         hdr.color.use(0)
@@ -272,6 +281,10 @@ def _resolve(ctx, hdr, scene, transfer, language):
         vao = ctx.vertex_array(resolve, [])
         vao.render(moderngl.TRIANGLES, vertices=3)
         vao.release()
-        srgb8 = display.read()
+        pixels = display.read()
         ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
+    if transfer != "EXACT":
+        return pixels
+    srgb8 = srgb8_codes.encode(pixels)
+    srgb8[..., 3] = 255  # the display image is opaque (the shader writes alpha 1)
     return srgb8

@@ -15,6 +15,7 @@ from __future__ import annotations
 import moderngl
 import numpy as np
 
+from . import gl, mipmaps
 from .errors import PbrlabError
 
 GL_SRGB8_ALPHA8 = 0x8C43  # OpenGL 3.3 core, table 8.13 (sized internal formats)
@@ -74,30 +75,67 @@ class Target:
         self.release()
 
 
+# Pixel transfer enums of the OpenGL 3.3 core specification (tables 8.2, 8.3, 8.12).
+_GL_TEXTURE_2D = 0x0DE1
+_GL_UNPACK_ALIGNMENT = 0x0CF5
+_GL_FORMATS = {1: 0x1903, 2: 0x8227, 3: 0x1907, 4: 0x1908}  # RED, RG, RGB, RGBA
+_GL_UNSIGNED_BYTE, _GL_FLOAT = 0x1401, 0x1406
+_GL_INTERNAL_FORMATS = {
+    "f1": {1: 0x8229, 2: 0x822B, 3: 0x8051, 4: 0x8058},  # R8, RG8, RGB8, RGBA8
+    "f4": {1: 0x822E, 2: 0x8230, 3: 0x8815, 4: 0x8814},  # R32F, RG32F, RGB32F, RGBA32F
+}
+
+
 def upload_texture(ctx: moderngl.Context, image: np.ndarray, *, srgb: bool) -> moderngl.Texture:
-    """Upload a top-row-first image: uint8 colour as sRGB (srgb=True) or linear data.
+    """Upload a top-row-first image with its full mip chain: uint8 colour as sRGB
+    (srgb=True) or linear data.
 
     ``srgb=True`` is for colour (albedo, emission): sampling decodes to linear in
     hardware. ``srgb=False`` is for data (normal maps, metallic/smoothness, masks) and
-    for float images, which are linear by definition.
+    for float images, which are linear by definition. The mip levels are computed on the
+    CPU (``pbrlab.mipmaps``: exact, the same on every machine), not by glGenerateMipmap,
+    whose sRGB encode differs between CPU vendors on llvmpipe.
     """
     image = np.ascontiguousarray(image[::-1])  # GL rows are bottom-up
     if image.ndim == 2:
         image = image[..., None]
     h, w, c = image.shape
     if image.dtype == np.uint8:
+        dtype = "f1"
         if srgb:
             if c not in (3, 4):
                 raise PbrlabError("an sRGB colour texture needs 3 or 4 channels")
             if c == 3:
                 image = np.concatenate([image, np.full((h, w, 1), 255, np.uint8)], axis=2)
-            tex = ctx.texture((w, h), 4, image.tobytes(), dtype="f1", internal_format=GL_SRGB8_ALPHA8)
+                c = 4
+            internal_format = GL_SRGB8_ALPHA8
         else:
-            tex = ctx.texture((w, h), c, image.tobytes(), dtype="f1")
+            internal_format = _GL_INTERNAL_FORMATS["f1"][c]
     else:
         if srgb:
             raise PbrlabError("float images are linear; upload them with srgb=False")
-        tex = ctx.texture((w, h), c, image.astype(np.float32).tobytes(), dtype="f4")
-    tex.build_mipmaps()
+        dtype, internal_format = "f4", _GL_INTERNAL_FORMATS["f4"][c]
+        image = image.astype(np.float32)
+    levels = mipmaps.mip_chain(image, srgb=srgb)
+    tex = ctx.texture((w, h), c, np.ascontiguousarray(levels[0]).tobytes(), dtype=dtype,
+                      internal_format=internal_format)
+    _upload_levels(ctx, tex, levels[1:], internal_format)
     tex.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     return tex
+
+
+def _upload_levels(ctx, tex, levels, internal_format) -> None:
+    """glTexImage2D for mip levels 1.. (moderngl only writes levels that already exist)."""
+    if not levels:
+        return
+    tex_image_2d = gl.gl_function(ctx, "glTexImage2D")
+    gl.gl_function(ctx, "glPixelStorei")(_GL_UNPACK_ALIGNMENT, 1)
+    # Bind on the last unit, as moderngl does for its own writes, so that no texture a
+    # caller has bound for drawing is displaced.
+    tex.use(ctx.info["GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS"] - 1)
+    for index, level in enumerate(levels, start=1):
+        data = np.ascontiguousarray(level)
+        height, width, channels = data.shape
+        gl_type = _GL_UNSIGNED_BYTE if data.dtype == np.uint8 else _GL_FLOAT
+        tex_image_2d(_GL_TEXTURE_2D, index, internal_format, width, height, 0,
+                     _GL_FORMATS[channels], gl_type, data.ctypes.data)  # copies before returning

@@ -144,8 +144,10 @@ def test_white_furnace_metal_reflects_the_environment_with_energy_compensation(s
 def test_display_image_is_exposure_tonemap_and_srgb_of_the_linear_render(tonemap, gl_context):
     # The PNG must be exactly the library's display transform of the EXR: exposure,
     # then the tonemapper, then the sRGB encode. Reference: float64 of all three on the
-    # GPU's own linear output. Tolerance: the hardware encode picks one of the two codes
-    # bracketing the exact value (tests/harness/test_srgb_hardware.py), so 1 code.
+    # GPU's own linear output. Tolerance: the display encode rounds to the nearest code of
+    # the exact curve (0.5 code); the shader's float32 exposure and tonemap may move a
+    # value that sits on a rounding midpoint by a few thousandths of a code, so 0.504
+    # (measured max 0.49986 over the six tonemappers; the hardware encode needed 1 code).
     scene = one_sphere({"albedo": [0.9, 0.6, 0.3], "smoothness": 0.8},
                        [{"type": "directional", "direction": [0.3, -0.4, -1], "intensity": 6.0}],
                        size=(48, 48), tonemap=tonemap)
@@ -157,4 +159,5 @@ def test_display_image_is_exposure_tonemap_and_srgb_of_the_linear_render(tonemap
     expected = linear_to_srgb(np.clip(mapped, 0.0, 1.0)) * 255.0
     got = rendering.srgb8[..., :3].astype(np.float64)
     assert exposed.max() > 1.5  # the input is HDR, so the tonemappers differ from clamping
-    assert np.abs(got - expected).max() < 1.0 + 1e-6
+    print(f"{tonemap}: max |code - exact| {np.abs(got - expected).max():.6f}")
+    assert np.abs(got - expected).max() <= 0.504

@@ -1,0 +1,74 @@
+"""Every scene the repository's goldens are rendered from, by golden name, in one place.
+
+The golden tests, ``pbrlab demo``, the code-path independence test and the GPU tolerance
+measurement all render these; ``python -m pbrlab.golden_scenes OUT`` writes each one as
+``OUT/NAME.exr`` (linear float32) and ``OUT/NAME.png`` (display sRGB) on the default GL
+context, so a render can be made in a process with another environment (another llvmpipe
+code path, another GPU) and compared with the goldens.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .charts import CHARTS
+from .scene import QUALITIES, Scene, load_scene, parse_scene
+
+SCENES_DIR = Path(__file__).resolve().parents[2] / "scenes"
+LIT_SCENE = SCENES_DIR / "unity_example" / "scene.json"
+TORTURE_SCENE = SCENES_DIR / "torture" / "scene.json"
+
+
+def lit_scene(quality: str = "high") -> Scene:
+    """The Unity-style example (textured, three light types, HDR environment) at a tier."""
+    scene = load_scene(LIT_SCENE)
+    scene.render.quality = quality
+    return scene
+
+
+def _chart(name):
+    return lambda: parse_scene(CHARTS[name](), origin=f"chart {name}")
+
+
+GOLDEN_SCENES = {name: _chart(name) for name in CHARTS}
+GOLDEN_SCENES.update({f"lit_scene_{q}": (lambda q=q: lit_scene(q)) for q in QUALITIES})
+GOLDEN_SCENES["torture_chart"] = lambda: load_scene(TORTURE_SCENE)
+
+
+def render_all(out: Path, names=None, backend: str | None = None, language: str = "glsl") -> list[str]:
+    """Render the named golden scenes (default: all) into ``out``, shading in ``language``;
+    returns the names."""
+    from . import gl, images
+    from .render import render_scene
+
+    names = list(names or GOLDEN_SCENES)
+    out.mkdir(parents=True, exist_ok=True)
+    ctx = gl.shared_context(backend)
+    for name in names:
+        rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=language)
+        images.write_exr(out / f"{name}.exr", rendering.linear, metadata=gl.context_info(ctx))
+        images.write_png(out / f"{name}.png", rendering.srgb8)
+    return names
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m pbrlab.golden_scenes",
+                                     description="Render the golden scenes to EXR and PNG files.")
+    parser.add_argument("out", type=Path, help="folder for NAME.exr and NAME.png")
+    parser.add_argument("names", nargs="*", help=f"golden names (default: all of {', '.join(GOLDEN_SCENES)})")
+    parser.add_argument("--backend", choices=("egl", "osmesa"), default=None,
+                        help="GL backend (default: $PBRLAB_GL_BACKEND, else EGL then OSMesa)")
+    parser.add_argument("--language", choices=("glsl", "hlsl"), default="glsl",
+                        help="shade with the GLSL library or its HLSL twins (default: glsl)")
+    args = parser.parse_args(argv)
+    unknown = sorted(set(args.names) - set(GOLDEN_SCENES))
+    if unknown:
+        parser.error(f"no golden scene named {', '.join(unknown)}")
+    for name in render_all(args.out, args.names, args.backend, args.language):
+        print(args.out / f"{name}.exr")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
