@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what pbrlab needs on a Debian/Ubuntu machine, then exits 0.
-#   1. System packages (Mesa EGL + OSMesa + llvmpipe, glslang, spirv-cross, python3-venv):
+#   1. System packages (Mesa EGL + OSMesa + llvmpipe, glslang, spirv-cross, binutils'
+#      objdump for pbrlab.codescan, python3-venv):
 #      installed with apt-get when run as root, otherwise the exact command is printed and
 #      the script stops with exit 1.
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
@@ -17,6 +18,7 @@ declare -A need=(
   [libosmesa6]=/usr/lib/x86_64-linux-gnu/libOSMesa.so.8
   [glslang-tools]=/usr/bin/glslangValidator
   [spirv-cross]=/usr/bin/spirv-cross
+  [binutils]=/usr/bin/objdump
 )
 missing=()
 for pkg in "${!need[@]}"; do

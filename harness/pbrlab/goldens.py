@@ -7,8 +7,13 @@ files under the golden root (``goldens/`` at the repository root by default):
 * ``NAME.png``  the exact 8-bit sRGB encode of the same render: what people look at, also
   diffed, in code values (``GOLDEN_SRGB_TOLERANCE``);
 * ``NAME.json`` sidecar: the renderer that made it (GL_RENDERER, GL_VERSION, Mesa,
-  moderngl, OpenImageIO, llvmpipe CPU caps, as the caller passes them) and the
-  tolerances it is checked with.
+  moderngl, OpenImageIO, llvmpipe CPU caps, as the caller passes them), the tolerance
+  profile it was made and checked with (``tolerance_profile``, see
+  ``pbrlab.compare.TOLERANCE_PROFILES``) and every profile's numbers.
+
+Which tolerances a check uses: explicit ``tolerance`` / ``srgb_tolerance`` arguments, else
+those of ``profile`` (default ``auto``: ``llvmpipe`` when ``info['GL_RENDERER']`` is
+llvmpipe or absent, ``gpu`` otherwise).
 
 ``check_golden`` writes goldens only when ``update`` is true; a missing golden fails and
 says how to create it; a mismatch leaves ``expected.png``, ``obtained.png``, ``diff.png``
@@ -27,7 +32,8 @@ from pathlib import Path
 import numpy as np
 
 from . import images
-from .compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, DiffResult, Tolerance, diff
+from .compare import (GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, TOLERANCE_PROFILES, DiffResult,
+                      Tolerance, ToleranceProfile, diff, tolerance_profile)
 from .errors import PbrlabError
 
 DEFAULT_ROOT = "goldens"
@@ -47,16 +53,19 @@ __all__ = ["GOLDEN_TOLERANCE", "GOLDEN_SRGB_TOLERANCE", "GoldenFailure", "Golden
 class GoldenFailure(AssertionError):
     """A golden check failed. ``kind`` is 'missing', 'mismatch' or 'nonfinite'.
 
-    ``linear`` / ``srgb`` hold the DiffResults (None where no comparison ran) and
-    ``artefacts`` maps 'expected', 'obtained', 'diff', 'obtained_exr' to the files written.
+    ``linear`` / ``srgb`` hold the DiffResults (None where no comparison ran),
+    ``artefacts`` maps 'expected', 'obtained', 'diff', 'obtained_exr' to the files written,
+    and ``figures`` is the message without the how-to-update hint (for tools that are not
+    pytest, such as ``pbrlab demo``).
     """
 
     kind = "failure"
 
     def __init__(self, message: str, *, name: str, paths: "GoldenPaths",
                  linear: DiffResult | None = None, srgb: DiffResult | None = None,
-                 artefacts: dict[str, Path] | None = None):
+                 artefacts: dict[str, Path] | None = None, figures: str | None = None):
         super().__init__(message)
+        self.figures = figures or message
         self.name = name
         self.paths = paths
         self.linear = linear
@@ -117,14 +126,16 @@ def _mkdir(folder: Path) -> None:
         raise PbrlabError(f"cannot create directory {folder}: {exc.strerror or exc}") from None
 
 
-def _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info) -> str:
+def _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info, profile) -> str:
     data = {
         "format": SIDECAR_FORMAT,
         "name": name,
         "shape": list(linear.shape),
         "srgb_shape": list(srgb8.shape),
+        "tolerance_profile": profile.name,
         "tolerance": asdict(tolerance) | {"units": "linear"},
         "srgb_tolerance": asdict(srgb_tolerance) | {"units": "8-bit code values"},
+        "tolerance_profiles": {p.name: p.to_dict() for p in TOLERANCE_PROFILES.values()},
         "renderer": info,
     }
     return json.dumps(data, indent=2, sort_keys=True, default=str) + "\n"
@@ -177,11 +188,22 @@ def _check_inputs(linear, srgb8) -> tuple[np.ndarray, np.ndarray]:
     return linear, srgb8
 
 
-def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERANCE,
+def resolve_profile(profile: "str | ToleranceProfile", info: dict) -> ToleranceProfile:
+    """The profile a check uses: by name, or ``auto`` from ``info['GL_RENDERER']``."""
+    if isinstance(profile, ToleranceProfile):
+        return profile
+    try:
+        return tolerance_profile(profile, info.get("GL_RENDERER", "llvmpipe"))
+    except ValueError as exc:
+        raise PbrlabError(str(exc)) from None
+
+
+def check_golden(name: str, linear, srgb8, tolerance: Tolerance | None = None,
                  info: dict | None = None, *, update: bool, root=DEFAULT_ROOT,
                  output_dir=DEFAULT_OUTPUT_DIR,
-                 srgb_tolerance: Tolerance = GOLDEN_SRGB_TOLERANCE,
-                 nodeid: str | None = None) -> DiffResult:
+                 srgb_tolerance: Tolerance | None = None,
+                 nodeid: str | None = None,
+                 profile: "str | ToleranceProfile" = "auto") -> DiffResult:
     """Check a render against golden ``name``, or store it as the golden when ``update``.
 
     ``linear`` is the float render (HxWxC), ``srgb8`` its 8-bit sRGB encode (same HxW).
@@ -194,6 +216,9 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERAN
     paths = golden_paths(root, name)
     artefact_dir = Path(output_dir) / name
     info = dict(info or {})
+    profile = resolve_profile(profile, info)
+    tolerance = tolerance or profile.linear
+    srgb_tolerance = srgb_tolerance or profile.srgb
 
     if update:
         bad = int((~np.isfinite(linear).all(axis=2)).sum())
@@ -206,7 +231,8 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERAN
         _mkdir(paths.exr.parent)
         images.write_exr(paths.exr, linear, {"golden": name, **info})
         images.write_png(paths.png, srgb8)
-        _write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info))
+        _write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info,
+                                            profile))
         _remove_artefacts(artefact_dir)
         return diff(linear, linear, tolerance)
 
@@ -218,7 +244,9 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERAN
             f"Goldens are written only on request: create it, look at the new files and "
             f"commit them:\n{_hint(nodeid)}\n"
             f"The render that would be stored is {_display(artefacts['obtained'])}.",
-            name=name, paths=paths, artefacts=artefacts)
+            name=name, paths=paths, artefacts=artefacts,
+            figures=f"golden {name!r} is missing ({', '.join(_display(p) for p in missing)} "
+                    f"not found); the render is {_display(artefacts['obtained'])}")
 
     expected_linear = images.read_image(paths.exr)
     expected_srgb = images.read_image(paths.png)
@@ -238,17 +266,21 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERAN
     artefacts["diff"] = artefact_dir / "diff.png"
     shown = linear_result if not linear_result.passed else srgb_result
     images.write_png(artefacts["diff"], shown.heatmap())
-    raise GoldenMismatch(
-        f"golden {name!r} does not match {_display(paths.exr)}:\n"
+    figures = (
+        f"golden {name!r} does not match {_display(paths.exr)} "
+        f"(tolerance profile {profile.name}):\n"
         f"  linear EXR  {'ok  ' if linear_result.passed else 'FAIL'}  {linear_result.summary()}\n"
         f"              tolerance {tolerance.describe('linear')}\n"
         f"  sRGB PNG    {'ok  ' if srgb_result.passed else 'FAIL'}  {srgb_result.summary()}\n"
         f"              tolerance {srgb_tolerance.describe('code values')}\n"
         f"  expected / obtained / diff: {_display(artefact_dir)}/"
-        f"{{expected,obtained,diff}}.png, obtained.exr\n"
+        f"{{expected,obtained,diff}}.png, obtained.exr")
+    raise GoldenMismatch(
+        f"{figures}\n"
         f"If the change is intended, update the golden and review it before committing:\n"
         f"{_hint(nodeid)}",
-        name=name, paths=paths, linear=linear_result, srgb=srgb_result, artefacts=artefacts)
+        name=name, paths=paths, linear=linear_result, srgb=srgb_result, artefacts=artefacts,
+        figures=figures)
 
 
 def _write_obtained(folder: Path, linear: np.ndarray, srgb8: np.ndarray) -> dict[str, Path]:

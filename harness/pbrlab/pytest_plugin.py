@@ -35,7 +35,7 @@ from string import Template
 import pytest
 
 from . import gl, goldens, images
-from .compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, DiffResult, Tolerance
+from .compare import TOLERANCE_PROFILES, DiffResult, Tolerance
 from .errors import PbrlabError
 
 RECORDS_DIR = ".pbrlab-records"
@@ -50,6 +50,7 @@ class _Settings:
         self.output_dir = _folder(config, "pbrlab_output", goldens.DEFAULT_OUTPUT_DIR)
         self.root = _folder(config, "pbrlab_goldens", goldens.DEFAULT_ROOT)
         self.records_dir = self.output_dir / RECORDS_DIR
+        self.profile = config.getoption("pbrlab_tolerance_profile")
 
 
 def _folder(config: pytest.Config, option: str, default: str) -> Path:
@@ -72,6 +73,11 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--pbrlab-output", metavar="DIR", default=None,
                     help="where golden failures leave expected/obtained/diff images and "
                          "index.html (default: test-output in the rootdir)")
+    group.addoption("--pbrlab-tolerance-profile", metavar="NAME", default="auto",
+                    choices=("auto", *TOLERANCE_PROFILES),
+                    help="tolerances goldens are checked with: llvmpipe (bit-identical "
+                         "renders), gpu (measured on a real GPU), or auto (by GL_RENDERER; "
+                         "the default)")
     group.addoption("--pbrlab-goldens", metavar="DIR", default=None,
                     help="golden root (default: goldens in the rootdir)")
 
@@ -122,16 +128,18 @@ class GoldenFixture:
         self.root = settings.root
         self.output_dir = settings.output_dir
 
-    def check(self, name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERANCE, *,
-              srgb_tolerance: Tolerance = GOLDEN_SRGB_TOLERANCE, read_only: bool = False) -> DiffResult:
+    def check(self, name: str, linear, srgb8, tolerance: Tolerance | None = None, *,
+              srgb_tolerance: Tolerance | None = None, read_only: bool = False) -> DiffResult:
         """``read_only``: a render that must match a golden another path made (the HLSL twin
-        of a GLSL render) compares, and never writes, even under --update-goldens."""
+        of a GLSL render) compares, and never writes, even under --update-goldens.
+        Tolerances not given come from ``--pbrlab-tolerance-profile``."""
         __tracebackhide__ = True
         update = self.update and not read_only
         try:
             result = goldens.check_golden(
                 name, linear, srgb8, tolerance, self.info, update=update, root=self.root,
-                output_dir=self.output_dir, srgb_tolerance=srgb_tolerance, nodeid=self.nodeid)
+                output_dir=self.output_dir, srgb_tolerance=srgb_tolerance, nodeid=self.nodeid,
+                profile=self.settings.profile)
         except goldens.GoldenFailure as failure:
             self._record(failure.kind, name, message=str(failure), linear=failure.linear,
                          srgb=failure.srgb, artefacts=failure.artefacts)

@@ -8,14 +8,12 @@ from pathlib import Path
 
 from .render import add_language_option
 
-LIT_SCENE = Path(__file__).resolve().parents[3] / "scenes" / "unity_example" / "scene.json"
-
 
 def run(args) -> int:
     from .. import gl, goldens, images
     from ..charts import CHARTS
+    from ..golden_scenes import GOLDEN_SCENES
     from ..render import render_scene
-    from ..scene import load_scene, parse_scene
     from .render import check_finite
 
     out = Path(args.out)
@@ -25,11 +23,9 @@ def run(args) -> int:
     print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
           f"shading in {args.language.upper()}")
     failures = 0
-    jobs = [(name, lambda build=build, name=name: parse_scene(build(), origin=f"chart {name}"))
-            for name, build in CHARTS.items()]
-    jobs.append(("lit_scene_high", lambda: load_scene(LIT_SCENE)))
-    for name, make_scene in jobs:
-        rendering = render_scene(make_scene(), ctx, language=args.language)
+    names = [*CHARTS, "lit_scene_high"]
+    for name in names:
+        rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
         images.write_png(png, rendering.srgb8)
@@ -37,13 +33,14 @@ def run(args) -> int:
         try:
             result = goldens.check_golden(name, rendering.linear, rendering.srgb8, info=info,
                                           update=False, root=args.goldens,
-                                          output_dir=out / "golden-diffs")
-            verdict = f"matches goldens/{name} (max abs {result.max_abs:.2g})"
+                                          output_dir=out / "golden-diffs",
+                                          profile=args.tolerance_profile)
+            print(f"  {png}  {exr}  matches goldens/{name} (max abs {result.max_abs:.2g})")
         except goldens.GoldenFailure as failure:
             failures += 1
-            verdict = f"DIFFERS from its golden: {str(failure).splitlines()[0]}"
-        print(f"  {png}  {exr}  {verdict}")
-    print(f"{len(jobs)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
+            print(f"  {png}  {exr}  DIFFERS from its golden:")
+            print("\n".join("      " + line for line in failure.figures.splitlines()))
+    print(f"{len(names)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
     return 1 if failures else 0
 
 
@@ -52,5 +49,8 @@ def register(sub, common):
                        description=__doc__.splitlines()[0])
     p.add_argument("--out", default="out", help="output folder (default: out)")
     p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
+    p.add_argument("--tolerance-profile", default="auto", choices=("auto", "llvmpipe", "gpu"),
+                   help="tolerances to check the goldens with: auto picks llvmpipe or gpu "
+                        "from the GL renderer (default: auto)")
     add_language_option(p)
     p.set_defaults(run=run)
