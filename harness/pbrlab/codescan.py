@@ -19,8 +19,9 @@ reported with its address and neighbours so it can be checked, and the positive 
 (``CONTROLS``: a draw into an sRGB framebuffer, glGenerateMipmap of an sRGB texture) must
 find the estimate instructions, or the scan itself is broken.
 
-Run: ``python -m pbrlab.codescan [--json] [GOLDEN ...]`` (each scene in a fresh process, so
-nothing is already compiled). Needs objdump (Debian's binutils) and Linux's /proc.
+Run: ``python -m pbrlab.codescan [--json] [GOLDEN ...]`` (each scene shaded in GLSL and in
+HLSL, each in a fresh process, so nothing is already compiled). Needs objdump (Debian's
+binutils) and Linux's /proc.
 """
 
 from __future__ import annotations
@@ -165,8 +166,9 @@ class StageScanner:
         return stages
 
 
-def scan_golden_scene(name: str) -> dict:
-    """Render golden scene ``name`` once, in this process, recording each stage's code."""
+def scan_golden_scene(name: str, language: str = "glsl") -> dict:
+    """Render golden scene ``name`` once in ``language``, in this process, recording each
+    stage's code."""
     from . import golden_scenes, gl, ibl, render
 
     gl.shared_context()
@@ -176,7 +178,7 @@ def scan_golden_scene(name: str) -> dict:
     scanner.wrap(render, "_draw_mesh", "scene draws (float target)")
     scanner.wrap(render, "_resolve", "display resolve (float target, CPU encode)")
     with scanner.stage("texture upload and the rest of the render"):
-        render.render_scene(golden_scenes.GOLDEN_SCENES[name]())
+        render.render_scene(golden_scenes.GOLDEN_SCENES[name](), language=language)
     return scanner.report()
 
 
@@ -199,7 +201,8 @@ def scan_controls() -> dict:
 
 
 def run_in_fresh_process(job: str) -> dict:
-    """Scan one job ('controls' or a golden name) in a new interpreter: an empty JIT."""
+    """Scan one job ('controls', a golden name, or NAME:hlsl) in a new interpreter: an
+    empty JIT."""
     result = subprocess.run([sys.executable, "-m", "pbrlab.codescan", "--one", job],
                             check=True, capture_output=True, text=True)
     return json.loads(result.stdout)
@@ -217,13 +220,15 @@ def main(argv=None) -> int:
     parser.add_argument("--one", help=argparse.SUPPRESS)  # internal: scan in this process
     args = parser.parse_args(argv)
     if args.one:
-        report = scan_controls() if args.one == "controls" else scan_golden_scene(args.one)
+        name, _, language = args.one.partition(":")
+        report = scan_controls() if name == "controls" else scan_golden_scene(name, language or "glsl")
         print(json.dumps(report))
         return 0
     unknown = sorted(set(args.names) - set(GOLDEN_SCENES))
     if unknown:
         parser.error(f"no golden scene named {', '.join(unknown)}")
-    jobs = ["controls", *(args.names or GOLDEN_SCENES)]
+    names = args.names or list(GOLDEN_SCENES)
+    jobs = ["controls", *names, *(f"{name}:hlsl" for name in names)]
     reports = {job: run_in_fresh_process(job) for job in jobs}
     if args.json:
         print(json.dumps(reports, indent=2))

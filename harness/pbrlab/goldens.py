@@ -268,7 +268,7 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance | None = None,
     images.write_png(artefacts["diff"], shown.heatmap())
     figures = (
         f"golden {name!r} does not match {_display(paths.exr)} "
-        f"(tolerance profile {profile.name}):\n"
+        f"(tolerance profile {profile.name})\n"
         f"  linear EXR  {'ok  ' if linear_result.passed else 'FAIL'}  {linear_result.summary()}\n"
         f"              tolerance {tolerance.describe('linear')}\n"
         f"  sRGB PNG    {'ok  ' if srgb_result.passed else 'FAIL'}  {srgb_result.summary()}\n"

@@ -83,9 +83,10 @@ def test_scan_finds_the_estimate_instructions_in_the_controls(code_scan):
         assert data["approximate"].get("rsqrtps", 0) > 0, stage
 
 
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
 @pytest.mark.parametrize("name", sorted(GOLDEN_SCENES))
-def test_golden_scene_code_holds_no_estimate_instruction(name, code_scan):
-    stages = code_scan[name]
+def test_golden_scene_code_holds_no_estimate_instruction(name, language, code_scan):
+    stages = code_scan[name if language == "glsl" else f"{name}:hlsl"]
     assert sum(data["instructions"] for data in stages.values()) > 1000  # the scan saw code
     for stage, data in stages.items():
         assert data["approximate"] == {}, f"{name}, {stage}: {data['approximate_at']}"

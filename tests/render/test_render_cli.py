@@ -105,6 +105,11 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     assert cli.main(["demo", "--out", str(tmp_path / "out"), "--goldens", str(goldens)]) == 1
     out = capsys.readouterr().out
     assert "chart_f0" in out and "DIFFERS" in out and "1 differ" in out
+    # the same figures as the test failure: where, how much, how many pixels, the tolerance
+    assert "max abs 0.01 linear at (y=10, x=10)" in out
+    assert "1 of 184320 pixels" in out and "tolerance max_abs 1e-05 linear" in out
+    assert "tolerance profile llvmpipe" in out
+    assert not any(line.rstrip().endswith(":") for line in out.splitlines())
 
 
 def test_readme_example_scene_renders_finite(tmp_path):

@@ -2,7 +2,7 @@
 // derivation and its accuracy cost, and the helpers that apply them.
 //
 // Provides: PBR_FLT_MIN, PBR_HALF_MAX, PBR_MIN_ALPHA, PBR_MIN_NDOTV, PBR_MIN_VDOTH,
-//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED,
+//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, PBR_SAFE_NORMALIZE_HUGE,
 //           pbr_pow_safe(float, float), pbr_sanitize(float|vec3, float hi),
 //           pbr_safe_normalize(vec3), pbr_one_minus_dot2(vec3, vec3).
 // Include:  "pbr/common/guards.glsl" (path relative to glsl/)
@@ -88,11 +88,17 @@ vec3 pbr_sanitize(vec3 x, float hi) {
 // vectors (1e-30, a camera 1e30 away) normalise correctly because the vector is first
 // scaled by its largest component, so dot(v, v) can neither underflow nor overflow.
 // Finite inputs. Cost: one extra rounding per component (<= 1 ulp more than normalize()).
+// GLSL only bounds the error of a / b for |b| in [2^-126, 2^126] (GLSL 4.60 §4.7.1), and
+// NVIDIA's compiler does divide as a * (1/b): for m > 2^126, 1/m is a denormal, flushed to 0,
+// and s came out 0 and the result NaN (seen on an H200, driver 580). Above
+// PBR_SAFE_NORMALIZE_HUGE both are first scaled by 2^-4 (exact: powers of two), which keeps
+// the divisor inside the range; below it the scale is 1 and the result is unchanged.
+#define PBR_SAFE_NORMALIZE_HUGE 4.2535296e37  // 2^125
 vec3 pbr_safe_normalize(vec3 v) {
     float m = pbr_max3(abs(v));
     if (!(m >= PBR_FLT_MIN)) return vec3(0.0);
-    vec3 s = v / m;  // largest component exactly ±1: 1 <= dot(s, s) <= 3 (not v * (1/m):
-                     // 1/m is a denormal, flushed to 0, for m > 2^126)
+    float k = m > PBR_SAFE_NORMALIZE_HUGE ? 0.0625 : 1.0;
+    vec3 s = (v * k) / (m * k);  // largest component exactly ±1: 1 <= dot(s, s) <= 3
     return s * inversesqrt(dot(s, s));
 }
 

@@ -38,7 +38,7 @@ def run(args) -> int:
             print(f"  {png}  {exr}  matches goldens/{name} (max abs {result.max_abs:.2g})")
         except goldens.GoldenFailure as failure:
             failures += 1
-            print(f"  {png}  {exr}  DIFFERS from its golden:")
+            print(f"  {png}  {exr}  DIFFERS from goldens/{name}")
             print("\n".join("      " + line for line in failure.figures.splitlines()))
     print(f"{len(names)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
     return 1 if failures else 0

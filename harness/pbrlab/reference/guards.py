@@ -6,6 +6,7 @@ transfer and tonemap dispatchers). The raw term references (brdf.py, ...) stay e
 import numpy as np
 
 FLT_MIN = 2.0 ** -126                   # PBR_FLT_MIN: smallest normal float32
+SAFE_NORMALIZE_HUGE = 2.0 ** 125        # PBR_SAFE_NORMALIZE_HUGE: pre-scale the divisor above it
 HALF_MAX = 65504.0                      # PBR_HALF_MAX: largest finite binary16
 MIN_ALPHA = 1e-7                        # PBR_MIN_ALPHA: raw D/G/V alpha floor
 MIN_NDOTV = 1e-4                        # PBR_MIN_NDOTV (Filament MIN_N_DOT_V): V cosine floor
@@ -39,7 +40,7 @@ def safe_normalize(v):
 ACES_NARKOWICZ_MAX_INPUT = 16.0         # PBR_ACES_NARKOWICZ_MAX_INPUT (tonemap/aces.glsl)
 
 # GLSL macro -> value, for the shared-constant test (tests/library/test_glsl_layout.py).
-SHARED = {"PBR_FLT_MIN": FLT_MIN, "PBR_HALF_MAX": HALF_MAX, "PBR_MIN_ALPHA": MIN_ALPHA,
+SHARED = {"PBR_FLT_MIN": FLT_MIN, "PBR_SAFE_NORMALIZE_HUGE": SAFE_NORMALIZE_HUGE, "PBR_HALF_MAX": HALF_MAX, "PBR_MIN_ALPHA": MIN_ALPHA,
           "PBR_MIN_NDOTV": MIN_NDOTV, "PBR_MIN_HALF_VECTOR_LENGTH_SQUARED": MIN_HALF_VECTOR_LENGTH_SQUARED,
           "PBR_MIN_VDOTH": MIN_VDOTH, "PBR_BECKMANN_MIN_NDOTH": BECKMANN_MIN_NDOTH, "PBR_MAX_IOR": MAX_IOR,
           "PBR_ACES_NARKOWICZ_MAX_INPUT": ACES_NARKOWICZ_MAX_INPUT}
