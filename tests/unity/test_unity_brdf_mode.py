@@ -81,8 +81,6 @@ K = 64
 # 1e-7 absolute: black outputs (albedo 0 and no specular) must stay black within 1e-7.
 ATOL = 1e-7
 MEASURED = []
-# 1e-7 absolute: black outputs (albedo 0 and no specular) must stay black within 1e-7.
-ATOL = 1e-7
 
 
 def assert_within_float32_rounding(got, want, sensitivity):
@@ -223,9 +221,10 @@ def test_nhxroughness_baked_into_a_texture_stays_close_to_the_analytic_function(
     baked = ((table[j0, i0] * (1 - tx) + table[j0, i0 + 1] * tx) * (1 - ty)
              + (table[j0 + 1, i0] * (1 - tx) + table[j0 + 1, i0 + 1] * tx) * ty)
     diff = np.abs(baked - U.nhx_roughness(x, y))
-    # README, "Unity BRDF model": median 0.0039, p99 0.83, worst 12.9 (the clamp edge of the
-    # sharpest lobes, where the lobe is narrower than a texel).
-    assert np.median(diff) < 0.01 and np.quantile(diff, 0.99) < 1.0 and diff.max() < 16.0
+    # README, "Unity BRDF model": measured median 1.6e-5, p99 0.017, mean 0.014; the largest
+    # differences (up to the full range 16) are the sharpest lobes, narrower than a texel, so
+    # only the median, p99 and mean are bounded (3x-6x the measured values).
+    assert np.median(diff) < 1e-4 and np.quantile(diff, 0.99) < 0.05 and diff.mean() < 0.05
 
 
 def test_unknown_brdf_model_is_a_compile_error_naming_the_selector():
@@ -234,3 +233,26 @@ def test_unknown_brdf_model_is_a_compile_error_naming_the_selector():
     with pytest.raises(PbrlabError, match="PBR_BRDF_MODEL"):  # an undefined name reads as 0
         evaluate("pbr_unity_gi_occlusion(x)", UNITY, x=np.zeros(1, np.float32),
                  defines={"PBR_BRDF_MODEL": "PBR_BRDF_MODEL_UNREAL"})
+
+
+@pytest.mark.parametrize("macro,value", [
+    ("PBR_UNITY_GGX_EPSILON", U.GGX_EPSILON), ("PBR_UNITY_SMITH_JOINT_EPSILON", U.SMITH_JOINT_EPSILON),
+    ("PBR_UNITY_BRDF1_MIN_ROUGHNESS", U.BRDF1_MIN_ROUGHNESS),
+    ("PBR_UNITY_SAFE_NORMALIZE_MIN_LENGTH2", U.SAFE_NORMALIZE_MIN_LENGTH2),
+    ("PBR_UNITY_BRDF2_D_OFFSET", U.BRDF2_D_OFFSET), ("PBR_UNITY_BRDF2_MIN_LH2", U.BRDF2_MIN_LH2),
+    ("PBR_UNITY_SPEC_POWER_MIN_M2", U.SPEC_POWER_MIN_M2), ("PBR_UNITY_SPEC_POWER_MIN", U.SPEC_POWER_MIN),
+    ("PBR_UNITY_NHXROUGHNESS_LUT_RANGE", U.NHXROUGHNESS_LUT_RANGE),
+    ("PBR_UNITY_NHXROUGHNESS_WARP_EXPONENT", U.NHXROUGHNESS_WARP_EXPONENT),
+    ("PBR_UNITY_TWO_PI_SQUARED", 2.0 * np.pi ** 2),
+    ("unity_ColorSpaceDielectricSpec.r", U.DIELECTRIC_SPEC),
+])
+def test_unity_constants_equal_the_transcription(macro, value):
+    got = evaluate(macro, UNITY, x=np.zeros(1, np.float32))
+    assert got[0] == np.float32(value), macro
+
+
+def test_tiers_select_unity_brdfs_through_the_tier_block():
+    for quality, tier in TIERS:
+        got = evaluate("float(PBR_UNITY_BRDF)", UNITY, x=np.zeros(1, np.float32),
+                       defines={"PBR_QUALITY": f"PBR_QUALITY_{quality}"})
+        assert got[0] == U.TIER_BRDF[quality] == tier

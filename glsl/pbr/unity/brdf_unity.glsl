@@ -53,6 +53,12 @@
 #define UnityIndirect pbr_Indirect
 #define UnityGI pbr_GI
 
+// The tier block of pbr/shading/dispatch.glsl (included above) has set PBR_UNITY_BRDF from
+// PBR_QUALITY; this file's own default is the same as the HIGH tier's.
+#ifndef PBR_UNITY_BRDF
+#define PBR_UNITY_BRDF PBR_UNITY_BRDF_1
+#endif
+
 // Unity's epsilons and clamps, each as UnityStandardBRDF.cginc writes it (shared with
 // harness/pbrlab/reference/unity_brdf.py, tested equal).
 #define PBR_UNITY_GGX_EPSILON 1e-7            // GGXTerm: a² / (π (d² + 1e-7)); caps the peak
@@ -65,6 +71,9 @@
 #define PBR_UNITY_SPEC_POWER_MIN 1e-4         // ... and max(n, 1e-4)
 #define PBR_UNITY_NHXROUGHNESS_LUT_RANGE 16.0 // BRDF3_Direct: texture value * LUT_RANGE
 #define PBR_UNITY_NHXROUGHNESS_WARP_EXPONENT 4.0  // the texture's x is (R·L)^4 (kHorizontalWarpExp)
+// 2 π², the normalisation's denominator, written out: compilers fold 2.0 * PBR_PI * PBR_PI at
+// different precisions (the GLSL and HLSL twins differed by 3 ulp).
+#define PBR_UNITY_TWO_PI_SQUARED 19.7392088021787
 
 // ---- Unity's terms (UnityStandardBRDF.cginc) ----------------------------------------------
 
@@ -141,7 +150,7 @@ vec3 Unity_SafeNormalize(vec3 inVec) {
 float pbr_unity_NHxRoughness(float rlPow4, float perceptualRoughness) {
     float n = PerceptualRoughnessToSpecPower(perceptualRoughness) * 0.25;
     float lobe = pow(max(rlPow4, 0.0), n / PBR_UNITY_NHXROUGHNESS_WARP_EXPONENT);
-    return min((n + 2.0) / (2.0 * PBR_PI * PBR_PI) * lobe, PBR_UNITY_NHXROUGHNESS_LUT_RANGE);
+    return min((n + 2.0) / PBR_UNITY_TWO_PI_SQUARED * lobe, PBR_UNITY_NHXROUGHNESS_LUT_RANGE);
 }
 
 float pbr_unity_NHxRoughness_lookup(float rlPow4, float perceptualRoughness) {

@@ -57,6 +57,12 @@
 #include "pbr/material/remap.hlsl"
 #include "pbr/common/math.hlsl"
 
+// pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
+// this file's own default is the same.
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+#endif
+
 #define PBR_ALPHA_MODE_OPAQUE 0
 #define PBR_ALPHA_MODE_CUTOUT 1
 #define PBR_ALPHA_MODE_FADE 2
