@@ -80,7 +80,6 @@ def peak_sensitivity(x, tier):
 K = 64
 # 1e-7 absolute: black outputs (albedo 0 and no specular) must stay black within 1e-7.
 ATOL = 1e-7
-MEASURED = []
 
 
 def assert_within_float32_rounding(got, want, sensitivity):
@@ -88,7 +87,6 @@ def assert_within_float32_rounding(got, want, sensitivity):
     assert np.isfinite(got).all()
     bound = K * EPS32 * (1.0 + sensitivity[:, None]) * (np.abs(want) + ATOL)
     excess = np.abs(got - want) / bound
-    MEASURED.append(excess.max() * K)
     assert excess.max() <= 1.0, (excess.max(), np.unravel_index(np.argmax(excess), excess.shape))
 
 
@@ -257,3 +255,18 @@ def test_tiers_select_unity_brdfs_through_the_tier_block():
         got = evaluate("float(PBR_UNITY_BRDF)", UNITY, x=np.zeros(1, np.float32),
                        defines={"PBR_QUALITY": f"PBR_QUALITY_{quality}"})
         assert got[0] == U.TIER_BRDF[quality] == tier
+
+
+@pytest.mark.parametrize("shaded_with", ["PBRLAB", "neighbour tier"])
+def test_the_bound_rejects_a_different_brdf(shaded_with):
+    """The comparison can fail: the pbrlab model, or Unity's BRDF of another tier, against the
+    BRDF1 transcription is far outside the float32 bound."""
+    x = lighting_inputs(np.random.default_rng(5), 20_000)
+    defines = ({"PBR_BRDF_MODEL": "PBR_BRDF_MODEL_PBRLAB"} if shaded_with == "PBRLAB"
+               else dict(unity_defines("HIGH"), PBR_UNITY_BRDF="PBR_UNITY_BRDF_2"))
+    got = evaluate(LIGHTING_STANDARD, UNITY, defines=defines, **_gpu(x))
+    f = _as_float32(x)
+    want = U.lighting_standard(f["albedo"], f["metallic"], f["smoothness"], f["normal"], f["v"], f["light"],
+                               f["l"], f["idiff"], f["ispec"], tier=1)
+    with pytest.raises(AssertionError):
+        assert_within_float32_rounding(got[:, :3], want, peak_sensitivity(f, 1) + grazing_sensitivity(f))
