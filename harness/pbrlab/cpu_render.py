@@ -8,6 +8,8 @@ Scope: opaque spheres with the default surface (no texture maps); environments o
 constant radiance, whose prefiltered radiance is that constant at every roughness and
 whose environment BRDF is integrated here in float64 at each pixel's exact (NdotV,
 roughness) (the GPU interpolates a 32x32 table, or uses the analytic fit at LOW quality).
+With ``render.brdf_model: unity`` the shading is the float64 transcription of Unity's
+BRDF of the tier (pbrlab.reference.unity_brdf), occlusion applied in the GI step.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from .reference import material as ref_material
 from .reference import remap as ref_remap
 from .reference import shading as ref_shading
 from .reference import surface as ref_surface
+from .reference import unity_brdf as ref_unity
 
 
 def _intersect(origin, d, centre, radius):
@@ -65,6 +68,33 @@ def _surface(material):
     return np.asarray(diffuse, float), np.asarray(f0, float), float(rough)
 
 
+def _unity_shading(scene, material, n, v, p, env_sh, quality):
+    """Unity's LightingStandard[Specular] with the tier's BRDF: once for the environment (GI
+    step: SH irradiance / pi and the constant radiance, both times occlusion; no light) and
+    once per light (no indirect), summed in the GPU's order."""
+    tier = ref_unity.TIER_BRDF[quality]
+    if material.workflow == "metallic":
+        def lit(*light_and_gi):
+            return ref_unity.lighting_standard(material.albedo, np.full(len(n), material.metallic),
+                                               np.full(len(n), material.smoothness), n, v, *light_and_gi, tier=tier)
+    else:
+        def lit(*light_and_gi):
+            return ref_unity.lighting_standard_specular(material.albedo, material.specular,
+                                                        np.full(len(n), material.smoothness), n, v,
+                                                        *light_and_gi, tier=tier)
+    color = np.zeros(p.shape)
+    zero = np.zeros(p.shape)
+    if env_sh is not None:
+        sh_diffuse = np.maximum(sh_irradiance(env_sh, n), 0) / np.pi
+        prefiltered = np.broadcast_to(scene.environment.color * scene.environment.intensity, p.shape)
+        gi_diffuse, gi_specular = ref_unity.gi_indirect(sh_diffuse, prefiltered, np.full(len(n), material.occlusion))
+        color += lit(zero, n, gi_diffuse, gi_specular)
+    for light in scene.lights:
+        l, radiance = _light_terms(light, p)
+        color += lit(radiance, l, zero, zero)
+    return color
+
+
 def render_scene_cpu(scene) -> np.ndarray:
     """HxWx4 float64 radiance of an analytic scene, top row first."""
     from .render import scene_radius
@@ -97,8 +127,12 @@ def render_scene_cpu(scene) -> np.ndarray:
         n = p - centre
         n /= np.linalg.norm(n, axis=-1, keepdims=True)
         v = -dm
-        diffuse, f0, rough = _surface(material)
         color = np.broadcast_to(material.emission, p.shape).copy()
+        if scene.render.brdf_model == "unity":
+            out[mask, :3] = color + _unity_shading(scene, material, n, v, p, env_sh, quality)
+            out[mask, 3] = 1.0
+            continue
+        diffuse, f0, rough = _surface(material)
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
             color += ref_shading.shade_punctual(n, v, l, radiance, diffuse, f0, rough,

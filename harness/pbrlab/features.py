@@ -4,7 +4,7 @@ feature sets, and the #defines that select them.
 Two kinds of compile-time configuration reach a program:
 
 * settings: choices the scene makes (workflow, alpha mode, BRDF variants, quality tier,
-  energy compensation, HDR target). Both the specialised and the full program compile
+  BRDF model, energy compensation, HDR target). Both the specialised and the full program compile
   them; they change the image.
 * effects: work a scene may or may not call for: punctual lights of each type, the
   environment (indirect diffuse and specular), emission, occlusion, an alpha value,
@@ -60,6 +60,7 @@ class SceneFeatures:
     environment: bool          # indirect diffuse (SH9) and specular (prefiltered + DFG)
     energy_compensation: bool
     quality: str
+    brdf_model: str            # "pbrlab" or "unity" (PBR_BRDF_MODEL)
     tonemap: str
     exposure: bool             # exposure != 0 (a multiply in the resolve pass)
     hdr_target: str
@@ -88,6 +89,7 @@ def scene_features(scene) -> SceneFeatures:
         environment=scene.environment is not None,
         energy_compensation=scene.render.energy_compensation,
         quality=scene.render.quality,
+        brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
         exposure=scene.render.exposure != 0.0,
         hdr_target=scene.render.hdr_target,
@@ -98,6 +100,7 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
     defines = dict(glsl_defines(**dict(m.brdf)))
     defines["PBR_ALPHA_MODE"] = f"PBR_ALPHA_MODE_{m.alpha_mode.upper()}"
     defines["PBR_QUALITY"] = f"PBR_QUALITY_{s.quality.upper()}"
+    defines["PBR_BRDF_MODEL"] = f"PBR_BRDF_MODEL_{s.brdf_model.upper()}"
     defines["PBR_ENERGY_COMPENSATION"] = int(s.energy_compensation)
     if m.workflow == "specular":
         defines["PBRLAB_WORKFLOW_SPECULAR"] = 1

@@ -19,8 +19,8 @@ Format (README.md, "Scene files", has the annotated version)::
     objects     [{sphere: {center, radius}, material}
                  {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
                   material, transform: {translate, rotate_deg, scale}}]
-    render      {quality: high, tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|
-                 khronos_neutral,
+    render      {quality: high, brdf_model: pbrlab|unity,
+                 tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|khronos_neutral,
                  exposure: 0 (EV stops, multiplier 2^exposure)}
 """
 
@@ -43,6 +43,9 @@ BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR
 
 TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
 QUALITIES = ("high", "medium", "low")  # PBR_QUALITY_* (pbr/shading/dispatch.glsl)
+# render.brdf_model -> PBR_BRDF_MODEL_* (pbr/shading/dispatch.glsl): pbrlab's physical shading,
+# or Unity's built-in BRDF1/2/3 by tier (pbr/unity/brdf_unity.glsl)
+BRDF_MODELS = ("pbrlab", "unity")
 ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
 HDR_TARGETS = {"rgba32f": "f32", "rgba16f": "f16"}  # render.hdr_target -> targets.Target kind
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
@@ -118,6 +121,7 @@ class RenderSettings:
     exposure: float = 0.0
     energy_compensation: bool = True  # PBR_ENERGY_COMPENSATION
     hdr_target: str = "rgba32f"  # the float target: rgba32f, or rgba16f (values clamped to 65504)
+    brdf_model: str = "pbrlab"  # PBR_BRDF_MODEL: "pbrlab" or "unity" (Unity's BRDF1/2/3 by tier)
 
 
 @dataclass
@@ -391,7 +395,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),
                             exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0),
                             energy_compensation=rs.choice("energy_compensation", (True, False), default=True),
-                            hdr_target=rs.choice("hdr_target", HDR_TARGETS, default="rgba32f"))
+                            hdr_target=rs.choice("hdr_target", HDR_TARGETS, default="rgba32f"),
+                            brdf_model=rs.choice("brdf_model", BRDF_MODELS, default="pbrlab"))
     rs.finish()
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin)

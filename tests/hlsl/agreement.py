@@ -44,6 +44,8 @@ STRUCT_BUILDERS = {
         ("float", "smoothness"), ("float", "occlusion"), ("float", "alpha"))),
 }
 STRUCT_BUILDERS["UnityGI"] = STRUCT_BUILDERS["pbr_GI"]
+STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
+STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
 
 # Functions with out parameters or array parameters: evaluated through wrappers.
 SPECIAL = {
@@ -61,7 +63,8 @@ SPECIAL = {
 VARIANT_DEPENDENT = {
     "pbr_specular_D", "pbr_specular_V", "pbr_specular_F", "pbr_specular_lobe_limit", "pbr_diffuse_Fd",
     "pbr_clamp_perceptual_roughness", "pbr_brdf_standard", "pbr_shade_punctual", "pbr_env_brdf",
-    "pbr_indirect_specular", "pbr_lighting_standard", "pbr_unity_lighting", "LightingStandard",
+    "pbr_indirect_specular_split_sum", "pbr_lighting_standard", "pbr_unity_lighting", "LightingStandard",
+    "pbr_unity_brdf_pbs", "pbr_unity_gi_occlusion", "pbr_unity_environment_lod",
     "LightingStandardSpecular", "PreMultiplyAlpha", "pbr_tonemap", "pbr_decode_color_texel",
     "pbr_encode_final_color",
 }
@@ -80,7 +83,8 @@ SELECTOR_VALUES = {
     "PBR_DIFFUSE": ["PBR_DIFFUSE_BURLEY"],
     "PBR_COLOR_TRANSFER": [f"PBR_COLOR_TRANSFER_{v}" for v in ("SRGB", "GAMMA22", "FAST")],
     "PBR_TONEMAP": [f"PBR_TONEMAP_{v}" for v in ("NONE", "REINHARD", "HABLE", "ACES_FITTED", "ACES_NARKOWICZ")],
-    "PBR_INDIRECT_SPECULAR": ["PBR_INDIRECT_SPECULAR_UNITY_LEGACY"],
+    "PBR_BRDF_MODEL": ["PBR_BRDF_MODEL_UNITY"] * 3,
+    "PBR_UNITY_BRDF": [f"PBR_UNITY_BRDF_{i}" for i in (3, 2, 1)],
     "PBR_ENERGY_COMPENSATION": ["0"],
     "PBR_ALPHA_MODE": [f"PBR_ALPHA_MODE_{v}" for v in ("CUTOUT", "FADE", "TRANSPARENT")],
     "PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness)": ["vec2(NdotV, perceptualRoughness * 0.5)"],

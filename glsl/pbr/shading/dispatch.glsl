@@ -20,6 +20,11 @@
 //   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
 //                   white-furnace checks and debugging)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
+//   PBR_BRDF_MODEL  PBR_BRDF_MODEL_PBRLAB (default: the library's physical shading) |
+//                   PBR_BRDF_MODEL_UNITY (Unity's built-in BRDFs formula for formula,
+//                   pbr/unity/brdf_unity.glsl; read by pbr/unity/surface_standard.glsl)
+//   PBR_UNITY_BRDF  PBR_UNITY_BRDF_1 (HIGH default) | _2 (MEDIUM) | _3 (LOW): which of Unity's
+//                   BRDF1/2/3_Unity_PBS the unity model uses (the tier block below)
 //
 // The one variant mechanism of the library (pbr/common/conventions.glsl §8): every
 // alternative is its own function in pbr/brdf/; a numbered #define selects it; each
@@ -76,6 +81,22 @@
 #define PBR_QUALITY PBR_QUALITY_HIGH
 #endif
 
+// The BRDF model: non-zero values, so that an undefined name (which the preprocessor reads
+// as 0) is an error rather than a silent choice.
+#define PBR_BRDF_MODEL_PBRLAB 1
+#define PBR_BRDF_MODEL_UNITY  2
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+#endif
+#if PBR_BRDF_MODEL != PBR_BRDF_MODEL_PBRLAB && PBR_BRDF_MODEL != PBR_BRDF_MODEL_UNITY
+#error "PBR_BRDF_MODEL: unknown value (PBR_BRDF_MODEL_PBRLAB or PBR_BRDF_MODEL_UNITY)"
+#endif
+
+// Unity's three BRDFs (UnityStandardBRDF.cginc), used by the unity model only.
+#define PBR_UNITY_BRDF_1 1
+#define PBR_UNITY_BRDF_2 2
+#define PBR_UNITY_BRDF_3 3
+
 // Smallest perceptual roughness of the HIGH tier: Filament's MIN_PERCEPTUAL_ROUGHNESS
 // (Guy & Agopian, "Physically Based Rendering in Filament", §4.8.3.3, common_material.fs):
 // alpha = 0.045² = 2.0e-3, alpha² = 4.1e-6 keeps D_GGX's peak 1/(π alpha²) ≈ 7.8e4 and
@@ -105,13 +126,22 @@
 //         Filament's saturateMediump): with NdotV, NdotL >= 1e-4 the fast V reaches 3e5,
 //         so grazing near-mirror lobes would overflow half. Cost: lobes brighter than 65504
 //         1/sr are capped (float32 LOW included, so both precisions agree).
+//   In the unity model (PBR_BRDF_MODEL_UNITY) the tiers pick Unity's BRDFs the way Unity's
+//   graphics tiers do (UNITY_PBS_USE_BRDF1/2/3): HIGH -> BRDF1, MEDIUM -> BRDF2, LOW -> BRDF3;
+//   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.
 #if PBR_QUALITY == PBR_QUALITY_LOW
+#  ifndef PBR_UNITY_BRDF
+#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_3
+#  endif
 #  ifndef PBR_SPECULAR_V
 #  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
 #elif PBR_QUALITY == PBR_QUALITY_MEDIUM
+#  ifndef PBR_UNITY_BRDF
+#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_2
+#  endif
 #  ifndef PBR_SPECULAR_V
 #  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
 #  endif
@@ -121,6 +151,9 @@
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
 #elif PBR_QUALITY == PBR_QUALITY_HIGH
+#  ifndef PBR_UNITY_BRDF
+#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_1
+#  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
 #else

@@ -17,28 +17,50 @@
 //           vec3 PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivity,
 //                                 out float outModifiedAlpha)
 //           vec3 UnpackNormal(vec4 packednormal), vec3 UnpackScaleNormal(vec4 packednormal, float bumpScale)
+//           The BRDF model's GI step, for the caller that builds UnityGI (Unity's
+//           LightingStandard_GI / UnityGlobalIllumination):
+//           float pbr_unity_gi_occlusion(float occlusion)  (the factor the GI step applies to
+//                 gi.indirect: occlusion in the unity model, 1 in the pbrlab model)
+//           float pbr_unity_environment_lod(float perceptualRoughness, float lodCount)  (the
+//                 mip of a prefiltered chain whose level i is filtered for perceptual roughness
+//                 i / (lodCount - 1): Unity_GlossyEnvironment's remap in the unity model)
+//           and, through pbr/unity/brdf_unity.glsl, Unity's BRDFs and UnityLight/UnityIndirect/UnityGI.
 // Include:  "pbr/unity/surface_standard.glsl" (path relative to glsl/). Not part of the
 //           umbrella pbr/pbr.glsl: these names are Unity's, and an engine that already
 //           defines them skips this one file and calls pbr_lighting_standard directly.
 // Config macros read: PBR_ALPHA_MODE (PBR_ALPHA_MODE_OPAQUE default, _CUTOUT, _FADE,
 //           _TRANSPARENT: Unity's Rendering Mode; TRANSPARENT premultiplies the diffuse
-//           by alpha and keeps the specular, Unity's _ALPHAPREMULTIPLY_ON); those of
-//           pbr/surface/lighting_standard.glsl.
+//           by alpha and keeps the specular, Unity's _ALPHAPREMULTIPLY_ON);
+//           PBR_BRDF_MODEL (pbr/shading/dispatch.glsl: PBR_BRDF_MODEL_PBRLAB default,
+//           PBR_BRDF_MODEL_UNITY: LightingStandard[Specular] shade with Unity's BRDF of the
+//           tier, pbr/unity/brdf_unity.glsl); those of pbr/surface/lighting_standard.glsl
+//           and pbr/unity/brdf_unity.glsl.
 //
 // Semantics are Unity's (docs.unity3d.com, "Writing Surface Shaders"; UnityPBSLighting.cginc
-// and UnityStandardUtils.cginc of Unity 5-2019), with two documented differences
-// (README.md, "Unity surface API"): gi.indirect arrives without occlusion and
-// LightingStandard applies s.Occlusion (Unity applies it in LightingStandard_GI); and the
-// BRDF is pbrlab's (exact height-correlated Smith, split-sum environment BRDF, energy
-// compensation) unless PBR_INDIRECT_SPECULAR selects Unity's legacy look. s.Normal is in
-// world space when LightingStandard runs, as in Unity (the caller transforms the tangent-
-// space normal a surface function writes).
+// and UnityStandardUtils.cginc of Unity 5-2019). Two models (PBR_BRDF_MODEL):
+//  - pbrlab (default): the BRDF is pbrlab's (exact height-correlated Smith, split-sum
+//    environment BRDF, energy compensation), and gi.indirect arrives without occlusion:
+//    LightingStandard applies s.Occlusion (pbr_unity_gi_occlusion returns 1);
+//  - unity: Unity's BRDF1/2/3_Unity_PBS formula for formula, and occlusion belongs to the GI
+//    step as in Unity's LightingStandard_GI (pbr_unity_gi_occlusion returns it; the caller
+//    multiplies gi.indirect by it), so LightingStandard does not apply it again.
+// README.md, "Unity surface API", lists the differences. s.Normal is in world space when
+// LightingStandard runs, as in Unity (the caller transforms the tangent-space normal a
+// surface function writes).
 #ifndef PBR_UNITY_SURFACE_STANDARD_GLSL
 #define PBR_UNITY_SURFACE_STANDARD_GLSL
 #include "pbr/surface/lighting_standard.glsl"
+#include "pbr/unity/brdf_unity.glsl"
+#include "pbr/ibl/environment_brdf.glsl"
 #include "pbr/material/workflow.glsl"
 #include "pbr/material/remap.glsl"
 #include "pbr/common/math.glsl"
+
+// pbr/shading/dispatch.glsl (included above) defines PBR_BRDF_MODEL's values and default;
+// this file's own default is the same.
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+#endif
 
 #define PBR_ALPHA_MODE_OPAQUE 0
 #define PBR_ALPHA_MODE_CUTOUT 1
@@ -48,9 +70,6 @@
 #define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
 #endif
 
-#define UnityLight pbr_Light
-#define UnityIndirect pbr_Indirect
-#define UnityGI pbr_GI
 // Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.
 #define unity_ColorSpaceDielectricSpec vec4(vec3(PBR_DIELECTRIC_F0), 1.0 - PBR_DIELECTRIC_F0)
 
@@ -134,13 +153,43 @@ vec3 PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivity,
     return diffColor;
 }
 
+// The GI step's occlusion factor for gi.indirect (see the header): Unity's
+// UnityGI_Base / UnityGI_IndirectSpecular multiply both indirect terms by occlusion.
+float pbr_unity_gi_occlusion(float occlusion) {
+#if PBR_BRDF_MODEL == PBR_BRDF_MODEL_UNITY
+    return occlusion;
+#else
+    return 1.0;
+#endif
+}
+
+// The mip of the prefiltered environment (level i filtered for perceptual roughness
+// i / (lodCount - 1)): pbrlab's tier-clamped roughness, or Unity_GlossyEnvironment's
+// remap r (1.7 - 0.7 r), whose mip r' · UNITY_SPECCUBE_LOD_STEPS is the same fraction of
+// Unity's chain.
+float pbr_unity_environment_lod(float perceptualRoughness, float lodCount) {
+#if PBR_BRDF_MODEL == PBR_BRDF_MODEL_UNITY
+    return pbr_ibl_lod_from_perceptual_roughness(
+        pbr_unity_glossy_environment_perceptual_roughness(perceptualRoughness), lodCount);
+#else
+    return pbr_ibl_lod_from_perceptual_roughness(pbr_clamp_perceptual_roughness(perceptualRoughness), lodCount);
+#endif
+}
+
+// LightingStandard's body after the workflow: Unity's premultiplied alpha, then the model's
+// BRDF (unity: UNITY_BRDF_PBS of the tier, gi.indirect already occluded by the GI step).
 vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
                         float smoothness, float occlusion, float alpha, vec3 normal,
                         vec3 viewDir, UnityGI gi) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
+#if PBR_BRDF_MODEL == PBR_BRDF_MODEL_UNITY
+    vec3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
+                                viewDir, gi.light.color, gi.light.dir, gi.indirect.diffuse, gi.indirect.specular);
+#else
     vec3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
                                    occlusion, normalize(normal), viewDir, gi);
+#endif
     return vec4(c, outputAlpha);
 }
 

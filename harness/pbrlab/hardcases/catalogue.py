@@ -214,6 +214,37 @@ _SHADING_TEMPLATES = (
 )
 
 
+# The unity BRDF model's lobes (pbr/unity/brdf_unity.glsl: Unity's BRDF1/2/3 with flat
+# parameters, and the tier dispatcher). The normal is normalised in the call, as
+# LightingStandard does (Unity: s.Normal = normalize(s.Normal)) before every Unity BRDF.
+# Bound: colour >= -1e-20, not 0: Unity's FresnelLerp extrapolates by (1 - cos)^5 when a
+# float32 cosine exceeds 1 by an ulp, (-1.2e-7)^5 = -2e-35 of the light, formula for formula.
+UNITY_COLOUR = Bound("colour >= -1e-20 (Unity's FresnelLerp at a cosine of 1 + ulp)", -1e-20)
+UNITY_SHADE_ARGS = _a("n:dir v:dir l:dir radiance:radiance3 diffuseColor:unit3 f0:unit3 omr:unit smoothness:unit "
+                      "idiff:radiance3 ispec:radiance3")
+UNITY_SHADE_CALL = "({}(diffuseColor, f0, omr, smoothness, normalize(n), v, radiance, l, idiff, ispec))"
+UNITY_INCLUDE = "pbr/unity/brdf_unity.glsl"
+
+
+def unity_functions() -> list[Function]:
+    out = [Function(name, UNITY_SHADE_CALL.format(name), UNITY_SHADE_ARGS, UNITY_COLOUR)
+           for name in ("pbr_unity_brdf1", "pbr_unity_brdf2", "pbr_unity_brdf3")]
+    out += [Function("pbr_unity_brdf_pbs", UNITY_SHADE_CALL.format("pbr_unity_brdf_pbs"), UNITY_SHADE_ARGS,
+                     UNITY_COLOUR, f"quality={q}", (("PBR_QUALITY", f"PBR_QUALITY_{q}"),))
+            for q in shading.QUALITY]
+    out += [_f("pbr_unity_NHxRoughness", "x:unit r:unit", Bound("0 <= specular <= LUT_RANGE 16", 0.0, 16.0)),
+            # Unity's terms take the cosines BRDF1 passes them: saturated (nv: |n.v|, within an
+            # ulp of [0, 1] for unit vectors)
+            _f("GGXTerm", "NdotH:cosine r:unit", D, "GGXTerm(pbr_saturate(NdotH), r)"),
+            _f("SmithJointGGXVisibilityTerm", "NdotL:cosine NdotV:cosine r:unit", V,
+               "SmithJointGGXVisibilityTerm(pbr_saturate(NdotL), pbr_saturate(NdotV), r)"),
+            _f("DisneyDiffuse", "NdotV:cosine NdotL:cosine LdotH:cosine r:unit",
+               Bound("0 <= DisneyDiffuse <= 6.25", 0.0, 6.25 * (1 + 1e-6)),
+               "DisneyDiffuse(pbr_saturate(NdotV), pbr_saturate(NdotL), pbr_saturate(LdotH), r)"),
+            _f("PerceptualRoughnessToSpecPower", "r:unit", Bound("1e-4 <= n <= 2e4", 1e-4 * (1 - 1e-6), 2e4))]
+    return out
+
+
 def shading_variants() -> list[tuple[str, dict]]:
     """Each quality tier, and each non-default selector value at the HIGH tier."""
     out = [(f"quality={q}", shading.glsl_defines(quality=q)) for q in shading.QUALITY]
@@ -233,7 +264,7 @@ def functions() -> list[Function]:
     for template in _SHADING_TEMPLATES:
         out += [Function(template.name, template.expression, template.args, template.bound, label,
                          tuple(sorted(defines.items()))) for label, defines in shading_variants()]
-    return out
+    return out + unity_functions()
 
 
 # ---- cases ---------------------------------------------------------------------------
@@ -384,9 +415,37 @@ for _name in ("pbr_tonemap", "pbr_tonemap_reinhard", "pbr_tonemap_hable", "pbr_t
                        f"{_name}(vec3(PBR_HALF_MAX))")]
 
 
+# The unity model's material corners (Unity decides nothing here that pbrlab's tests could
+# restate exactly: these are checked against the bound, the values against the transcription
+# in tests/unity/).
+_UNITY_MATERIAL_CASES = (
+    ("smoothness 1", {"smoothness": 1.0}, "a mirror: BRDF1's roughness floor 0.002 and GGXTerm's 1e-7 "
+     "bound the peak; BRDF2's a² = 0 kills its lobe; BRDF3's lookup saturates at 16"),
+    ("smoothness 0", {"smoothness": 0.0}, "the roughest lobe; spec power 1e-4: pow(x, 6e-6)"),
+    ("black specular", {"f0": (0.0, 0.0, 0.0), "omr": 1.0}, "Unity's any(specColor) = false: no direct "
+     "highlight, while the environment still lerps towards the grazing term"),
+    ("dark metal", {"f0": (0.02, 0.02, 0.02), "diffuseColor": (0.0, 0.0, 0.0), "omr": 0.0},
+     "metal with albedo 0.02: grazing term saturate(smoothness + 1) = 1 from a dark F0"),
+)
+
+
+def _unity_cases(function: Function) -> list[Case]:
+    cases = []
+    base = dict(typical_inputs(function), n=UP, v=(-0.6, 0.0, 0.8), l=(0.6, 0.0, 0.8))
+    for name, why, n, v, l, _ in _GEOMETRY_CASES:
+        if name == "far camera":  # Unity's BRDFs take a unit viewDir (the caller normalises)
+            continue
+        cases.append(Case(function, name, why, dict(base, n=n, v=v, l=l)))
+    for name, change, why in _UNITY_MATERIAL_CASES:
+        cases.append(Case(function, name, why, dict(base, **change)))
+    return cases
+
+
 def cases_of(function: Function) -> list[Case]:
     if function.name in ("pbr_brdf_standard", "pbr_shade_punctual"):
         return _shading_cases(function) + _edge_cases(function)
+    if function.expression.startswith("(pbr_unity_brdf"):
+        return _unity_cases(function) + _edge_cases(function)
     if not function.args:
         return [Case(function, "constant", "no inputs: the value itself must be exact", {"x": 0.0})]
     arg_names = {a.name for a in function.args}

@@ -65,6 +65,9 @@ def includes_for(function: catalogue.Function) -> tuple[str, ...]:
     smaller program compiles ~40 % faster than the umbrella. Expressions of decided values
     use the same file's macros; pbr/common/guards.glsl is added for the guard constants."""
     path = _defining_files().get(function.name)
+    if path is None and function.expression.startswith(("(pbr_unity_", "GGXTerm", "SmithJoint", "Disney",
+                                                        "PerceptualRoughnessToSpecPower")):
+        path = catalogue.UNITY_INCLUDE  # Unity's names (pbr/unity/, outside the umbrella)
     if path is None:  # not a library function (e.g. a test's deliberately broken entry)
         return (shaders.UMBRELLA_INCLUDE,)
     return (path, "pbr/common/guards.glsl", "pbr/shading/dispatch.glsl")
@@ -156,7 +159,7 @@ def sweep_inputs(function: catalogue.Function, count: int, seed: int) -> dict[st
     """Randomised inputs (float32) mixing each argument's normal domain with adversarial values."""
     rng = np.random.default_rng(seed)
     out = {}
-    if function.name in ("pbr_brdf_standard", "pbr_shade_punctual"):
+    if function.name in ("pbr_brdf_standard", "pbr_shade_punctual") or function.name.startswith("pbr_unity_brdf"):
         out.update(_shading_geometry(count))
     elif any(a.kind == "dir" for a in function.args):
         out["n"], out["h"] = _directions(rng, count)

@@ -12,11 +12,14 @@ formula, so that ``tests/library`` can compare the GPU against it:
   brdf       every D, G, V, F and Fd term           (glsl/pbr/brdf/)
   shading    variant dispatch, standard BRDF, punctual lights (shading/, lighting/)
   tonemap    exposure and tonemappers              (glsl/pbr/tonemap/)
+  surface    environment BRDF, pbr_lighting_standard, Unity helpers (ibl/, surface/, unity/)
+  unity_brdf Unity's BRDF1/2/3 and GI inputs, transcribed from Unity's .cginc sources
+             (not from glsl/pbr/unity/, which tests/unity/ checks against it)
 
 Arrays broadcast like numpy; colours and directions carry their 3 components on the last
 axis. Functions return float64 arrays.
 """
 
-from . import brdf, color, constants, guards, material, remap, shading, tonemap
+from . import brdf, color, constants, guards, material, remap, shading, tonemap, unity_brdf
 
-__all__ = ["brdf", "color", "constants", "guards", "material", "remap", "shading", "tonemap"]
+__all__ = ["brdf", "color", "constants", "guards", "material", "remap", "shading", "tonemap", "unity_brdf"]

@@ -2,14 +2,16 @@
 // the environment (indirect diffuse and specular): the core of the Unity-style API.
 //
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
+//           vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
+//                                                float NdotV, float occlusion)
 //           vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
 //                                      float occlusion, vec3 n, vec3 v, pbr_GI gi)
 // Include:  "pbr/surface/lighting_standard.hlsl" (path relative to hlsl_ports/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
 //           in the environment specular; 0: single scattering only);
-//           PBR_INDIRECT_SPECULAR (PBR_INDIRECT_SPECULAR_SPLIT_SUM default;
-//           PBR_INDIRECT_SPECULAR_UNITY_LEGACY: Unity's built-in BRDF1 look, see below);
 //           those of pbr/shading/dispatch.hlsl and pbr/ibl/environment_brdf.hlsl.
+//           (Unity's own BRDFs, its environment term included, are a model of their own:
+//           PBR_BRDF_MODEL_UNITY, pbr/unity/brdf_unity.hlsl.)
 //
 // The structs mirror Unity's UnityLight / UnityIndirect / UnityGI (pbr/unity/ aliases
 // them), with pbrlab's units: light.color is the radiance arriving from a punctual light
@@ -28,12 +30,6 @@
 
 #ifndef PBR_ENERGY_COMPENSATION
 #define PBR_ENERGY_COMPENSATION 1
-#endif
-
-#define PBR_INDIRECT_SPECULAR_SPLIT_SUM 0
-#define PBR_INDIRECT_SPECULAR_UNITY_LEGACY 1
-#ifndef PBR_INDIRECT_SPECULAR
-#define PBR_INDIRECT_SPECULAR PBR_INDIRECT_SPECULAR_SPLIT_SUM
 #endif
 
 struct pbr_Light {
@@ -65,32 +61,6 @@ vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
     return specular;
 }
 
-// Unity's built-in BRDF1_Unity_PBS (UnityStandardBRDF.cginc, Unity 5-2019) for the
-// legacy look: surfaceReduction = 1 / (alpha^2 + 1) darkens rough reflections, and a
-// Fresnel lerp from F0 to grazingTerm = saturate(smoothness + reflectivity) at NdotV
-// replaces the environment BRDF. Reflectivity is taken as max(f0): Unity's exact value in
-// the specular workflow; in the metallic workflow Unity uses lerp(0.04, 1, metallic),
-// which max(f0) matches for grey albedo. Occlusion multiplies the specular, as Unity's
-// GI step does. Not energy-conserving: the default split sum is the physical choice.
-vec3 pbr_indirect_specular_unity_legacy(vec3 prefiltered, vec3 f0, float roughness,
-                                        float NdotV, float occlusion) {
-    float alpha = roughness * roughness;
-    float surfaceReduction = 1.0 / (alpha * alpha + 1.0);
-    float grazingTerm = clamp(1.0 - roughness + pbr_max3(f0), 0.0, 1.0);
-    vec3 fresnel = mix(f0, ((vec3)(grazingTerm)), pbr_pow5(1.0 - NdotV));
-    return surfaceReduction * prefiltered * occlusion * fresnel;
-}
-
-vec3 pbr_indirect_specular(vec3 prefiltered, vec3 f0, float roughness, float NdotV, float occlusion) {
-#if PBR_INDIRECT_SPECULAR == PBR_INDIRECT_SPECULAR_SPLIT_SUM
-    return pbr_indirect_specular_split_sum(prefiltered, f0, roughness, NdotV, occlusion);
-#elif PBR_INDIRECT_SPECULAR == PBR_INDIRECT_SPECULAR_UNITY_LEGACY
-    return pbr_indirect_specular_unity_legacy(prefiltered, f0, roughness, NdotV, occlusion);
-#else
-#error "PBR_INDIRECT_SPECULAR: unknown value"
-#endif
-}
-
 // Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL). Indirect:
 // diffuse * occlusion, plus the split-sum specular (prefiltered radiance * directional
 // albedo, Karis 2013) with specular occlusion and, by default, multiple-scattering
@@ -101,7 +71,7 @@ vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness
     float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
     vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
                                      diffuseColor, f0, roughness);
-    vec3 specular = pbr_indirect_specular(gi.indirect.specular, f0, roughness, NdotV, occlusion);
+    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion);
     return direct + diffuseColor * gi.indirect.diffuse * occlusion + specular;
 }
 #endif

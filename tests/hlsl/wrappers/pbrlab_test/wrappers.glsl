@@ -1,7 +1,7 @@
 // pbrlab_test/wrappers.glsl: what the evaluator (one expression over float and vector
 // inputs) needs to call the library functions that take arrays, structs or out parameters.
 //
-// Provides: test_gi, test_surface, test_surface_specular (struct builders), test_sh9_irradiance,
+// Provides: test_light, test_indirect, test_gi, test_surface, test_surface_specular (struct builders), test_sh9_irradiance,
 //           test_DiffuseAndSpecularFromMetallic[_specColor],
 //           test_EnergyConservationBetweenDiffuseAndSpecular, test_PreMultiplyAlpha.
 // Include:  "pbrlab_test/wrappers.glsl" (path relative to tests/hlsl/wrappers/)
@@ -14,6 +14,20 @@
 
 #include "pbr/pbr.glsl"
 #include "pbr/unity/surface_standard.glsl"
+
+pbr_Light test_light(vec3 lightColor, vec3 lightDir) {
+    pbr_Light light;
+    light.color = lightColor;
+    light.dir = lightDir;
+    return light;
+}
+
+pbr_Indirect test_indirect(vec3 indirectDiffuse, vec3 indirectSpecular) {
+    pbr_Indirect indirect;
+    indirect.diffuse = indirectDiffuse;
+    indirect.specular = indirectSpecular;
+    return indirect;
+}
 
 pbr_GI test_gi(vec3 lightColor, vec3 lightDir, vec3 indirectDiffuse, vec3 indirectSpecular) {
     pbr_GI gi;
