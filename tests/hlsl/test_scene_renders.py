@@ -15,18 +15,12 @@ import pytest
 from pbrlab import cli, programs
 from pbrlab.charts import CHARTS
 from pbrlab.errors import PbrlabError, ShaderCompileError
+from pbrlab.golden_scenes import GOLDEN_SCENES, lit_scene
 from pbrlab.render import render_scene
 from pbrlab.scene import QUALITIES, load_scene, parse_scene
 
 REPO = Path(__file__).resolve().parents[2]
-LIT_SCENE = REPO / "scenes" / "unity_example" / "scene.json"
-TORTURE = REPO / "scenes" / "torture" / "scene.json"
-
-
-def _lit_scene(quality="high"):
-    scene = load_scene(LIT_SCENE)
-    scene.render.quality = quality
-    return scene
+_lit_scene = lit_scene
 
 
 @pytest.mark.parametrize("chart", sorted(CHARTS))
@@ -42,7 +36,7 @@ def test_hlsl_lit_scene_matches_glsl_golden(quality, gl_context, golden):
 
 
 def test_hlsl_torture_chart_matches_glsl_golden(gl_context, golden):
-    rendering = render_scene(load_scene(TORTURE), gl_context, language="hlsl")
+    rendering = render_scene(GOLDEN_SCENES["torture_chart"](), gl_context, language="hlsl")
     golden.check("torture_chart", rendering.linear, rendering.srgb8, read_only=True)
 
 

@@ -3,24 +3,19 @@ albedo, normal, metallic/smoothness and emission maps, metallic, dielectric, cut
 faded and transparent materials, three light types and an HDR environment, at each
 quality tier."""
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 
+from pbrlab.golden_scenes import lit_scene
 from pbrlab.render import render_scene
-from pbrlab.scene import QUALITIES, load_scene
-
-SCENE = Path(__file__).resolve().parents[2] / "scenes" / "unity_example" / "scene.json"
+from pbrlab.scene import QUALITIES
 
 
 @pytest.fixture(scope="module")
 def renders():
     out = {}
     for quality in QUALITIES:
-        scene = load_scene(SCENE)
-        scene.render.quality = quality
-        out[quality] = render_scene(scene)
+        out[quality] = render_scene(lit_scene(quality))
     return out
 
 

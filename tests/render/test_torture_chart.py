@@ -7,15 +7,12 @@ the objects along the view axis (v = -l); a point light on a sphere's surface (d
 the viewer); an environment with a +Inf and a NaN texel; an RGBA16F target.
 """
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 
+from pbrlab.golden_scenes import GOLDEN_SCENES
 from pbrlab.render import render_scene
-from pbrlab.scene import load_scene
 
-SCENE = Path(__file__).resolve().parents[2] / "scenes" / "torture" / "scene.json"
 # A sparkle: a display pixel brighter than every one of its 8 neighbours by more than this
 # many 8-bit codes (a lone NaN-turned-white or overflow pixel; real highlights on these
 # spheres span several pixels, so their centre exceeds its brightest neighbour by < 20).
@@ -34,7 +31,7 @@ def sparkles(srgb8: np.ndarray) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def torture():
-    return render_scene(load_scene(SCENE))
+    return render_scene(GOLDEN_SCENES["torture_chart"]())
 
 
 def test_torture_chart_float_render_has_no_nonfinite_or_negative_value(torture):
