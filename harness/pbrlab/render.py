@@ -41,7 +41,8 @@ def scene_radius(scene: Scene) -> float:
         if obj.sphere is not None:
             centre, r = obj.sphere
         else:
-            centre, r = obj.transform[:3, 3], meshes.bounding_radius(obj)
+            centre = obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
+            r = meshes.bounding_radius(obj)
         radius = max(radius, float(np.linalg.norm(centre - scene.camera.target)) + r)
     return radius
 
@@ -83,7 +84,7 @@ class _SceneResources:
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
-            self.cache.texture(path, material.texture_srgb[name]).use(unit)
+            self.cache.texture(path, material.texture_srgb[name], material.texture_sampler.get(name)).use(unit)
             _set(program, f"u_{name}_map" if material.surface is None else name, unit)
             unit += 1
         if self.full and material.surface is None:
@@ -136,6 +137,10 @@ def _upload_material(program, material):
     # opaque materials show no alpha: the full program is fed the neutral 1
     _set(program, "u_alpha", material.alpha if material.alpha_mode != "opaque" else 1.0)
     _set(program, "u_alpha_cutoff", material.alpha_cutoff)
+    _set(program, "u_normal_scale", material.normal_scale)
+    _set(program, "u_occlusion_strength", material.occlusion_strength)
+    for slot, transform in material.texture_transform.items():
+        _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 
 
 # Blending per alpha mode (Unity's Standard shader): fade blends colour by alpha;
@@ -151,7 +156,9 @@ COLOR_TRANSFERS = ("HARDWARE", "SRGB", "GAMMA22", "FAST")  # PBR_COLOR_TRANSFER_
 def _draw_order(scene: Scene, frame):
     """Opaque and cutout objects first, then blended ones from far to near."""
     def centre(obj):
-        return obj.sphere[0] if obj.sphere is not None else obj.transform[:3, 3]
+        if obj.sphere is not None:
+            return obj.sphere[0]
+        return obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in _BLEND]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
@@ -247,8 +254,9 @@ def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
     _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
-    if material.alpha_mode in _BLEND:
-        ctx.disable(moderngl.CULL_FACE)  # see-through: back faces show
+    two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
+    if two_sided:
+        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended) or glTF doubleSided
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"

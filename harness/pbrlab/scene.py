@@ -49,6 +49,7 @@ PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
 TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data
     "albedo": "srgb",
     "metallic_smoothness": "linear",  # Unity's packing: R = metallic, A = smoothness
+    "metallic_roughness": "linear",   # glTF's packing: G = perceptual roughness, B = metallic
     "normal": "linear",               # tangent space, RGB = xyz * 0.5 + 0.5
     "emission": "srgb",
     "occlusion": "linear",
@@ -62,6 +63,7 @@ class Camera:
     up: np.ndarray
     fov_y_deg: float
     size: tuple[int, int]
+    ortho_half_height: float | None = None  # orthographic (glTF ymag): half the view's height
 
 
 @dataclass
@@ -100,6 +102,15 @@ class Material:
     alpha_mode: str = "opaque"
     alpha_cutoff: float = 0.5
     surface: Path | None = None  # a GLSL file defining surf(Input, inout SurfaceOutput...)
+    # Per texture slot, set by the glTF importer (pbrlab/gltf): UV set 0 or 1, a 2x3 UV
+    # transform, a sampler (wrap_s, wrap_t, min_filter, mag_filter as GL enums).
+    texture_uv_set: dict[str, int] = field(default_factory=dict)
+    texture_transform: dict[str, np.ndarray] = field(default_factory=dict)
+    texture_sampler: dict[str, tuple] = field(default_factory=dict)
+    normal_scale: float = 1.0
+    occlusion_strength: float = 1.0
+    vertex_color: bool = False
+    double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
 
 
 @dataclass
@@ -109,6 +120,7 @@ class SceneObject:
     mesh_path: Path | None = None
     primitive: dict | None = None
     transform: np.ndarray = field(default_factory=lambda: np.eye(4))
+    geometry: object = None  # meshes.Geometry: vertex data held in memory (glTF primitives)
 
 
 @dataclass

@@ -1,21 +1,26 @@
 """`pbrlab features SCENE`: the effects a scene (JSON or glTF 2.0) calls for, per material
-and per scene, and how many programs specialisation compiles for it, as JSON."""
+and per scene, and how many programs specialisation compiles for it, as JSON. For a glTF
+file, "warnings" lists every extension or feature not honoured (as `pbrlab render` warns)."""
 
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 
 def run(args) -> int:
-    from ..features import features_report, gltf_features
+    from ..features import features_report
+    from ..gltf import is_gltf, load_gltf
+    from ..gltf.settings import read_settings
     from ..scene import load_scene
+    from pathlib import Path
 
-    path = Path(args.scene)
-    if path.suffix.lower() in (".gltf", ".glb"):
-        report = gltf_features(path)
+    if is_gltf(args.scene):
+        environment, render = read_settings(Path(args.scene))
+        result = load_gltf(args.scene, environment=environment, render=render, emit_warnings=False)
+        report = features_report(result.scene)
+        report["warnings"] = result.warnings
     else:
-        report = features_report(load_scene(path))
+        report = features_report(load_scene(args.scene))
     print(json.dumps(report, indent=2, default=str))
     return 0
 
