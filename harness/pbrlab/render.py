@@ -14,6 +14,7 @@ import numpy as np
 
 from . import features, gl, ibl, meshes, resource_cache, targets
 from .camera import camera_frame
+from .errors import SceneError
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
 from .programs import set_uniform_array as _set_array
@@ -167,7 +168,7 @@ def _draw_order(scene: Scene, frame):
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  transfer: str = "HARDWARE", specialise: bool = True,
-                 language: str = "glsl") -> Rendering:
+                 language: str = "glsl", mesh_fragment: str | None = None) -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the lecture's linear-space path for the display image: HARDWARE
@@ -178,11 +179,16 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     ``language="hlsl"`` shades with the HLSL library (hlsl_ports/) and the harness's HLSL
     pixel shaders, cross-compiled by glslang and spirv-cross (harness/pbrlab/programs.py);
     a material's ``surface`` file then needs its ``.hlsl`` twin beside it.
+    ``mesh_fragment`` replaces the meshes' fragment template (the pyrender cross-check's
+    composition, templates/pyrender_mesh.frag).
     """
     if transfer not in COLOR_TRANSFERS:
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    if scene.camera.ortho_half_height is not None and scene.spheres:
+        raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
+    mesh_fragment = mesh_fragment or fragment_template("mesh", language)
     surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
     ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
@@ -211,7 +217,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
-                shading = (defines, surfaces[obj.material], language)
+                shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
@@ -228,7 +234,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
 def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    defines, surface, language = shading
+    defines, surface, language, _ = shading
     program = program_from_templates(ctx, "sphere.vert", fragment_template("sphere", language),
                                      defines, surface)
     resources.bind(program, scene, frame, material)
@@ -247,9 +253,8 @@ def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo,
 
 
 def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
-    defines, surface, language = shading
-    program = program_from_templates(ctx, "mesh.vert", fragment_template("mesh", language),
-                                     defines, surface)
+    defines, surface, language, fragment = shading
+    program = program_from_templates(ctx, "mesh.vert", fragment, defines, surface)
     resources.bind(program, scene, frame, material)
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T

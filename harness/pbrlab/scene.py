@@ -379,11 +379,46 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     return obj
 
 
+def _gltf_subscene(r: _Reader, base: Path):
+    """An object ``{"gltf": "model.glb", "transform": {...}}``: the file's whole scene
+    (nodes, materials, lights, camera) placed by the transform. Its materials are named
+    "<file name>/<material>"; its camera serves when the scene gives none."""
+    from .gltf import load_gltf
+
+    path = r.file("gltf", base)
+    transform = _transform(r.child("transform", {}))
+    r.finish()
+    sub = load_gltf(path)
+    prefix = f"{path.name}/"
+    materials = {}
+    for name, material in sub.scene.materials.items():
+        material.name = prefix + name
+        materials[material.name] = material
+    objects = []
+    for obj in sub.scene.objects:
+        obj.material = prefix + obj.material
+        obj.transform = transform @ obj.transform
+        objects.append(obj)
+    for light in sub.scene.lights:
+        if light.position is not None:
+            light.position = transform[:3, :3] @ light.position + transform[:3, 3]
+        if light.direction is not None:
+            d = transform[:3, :3] @ light.direction
+            light.direction = d / np.linalg.norm(d)
+    camera = None
+    if sub.cameras:
+        camera = sub.scene.camera
+        camera.position = transform[:3, :3] @ camera.position + transform[:3, 3]
+        camera.target = transform[:3, :3] @ camera.target + transform[:3, 3]
+        camera.up = transform[:3, :3] @ camera.up
+    return objects, materials, sub.scene.lights, camera
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
     base = Path(base or ".")
     top = _Reader(data, "", origin)
-    camera = _camera(top.child("camera"))
+    camera = _camera(top.child("camera")) if top.has("camera") else None
     lights_raw = top.raw("lights", [])
     if not isinstance(lights_raw, list):
         top.fail("expected a list of lights", "lights")
@@ -396,8 +431,19 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     objects_raw = top.raw("objects", [])
     if not isinstance(objects_raw, list) or not objects_raw:
         top.fail("expected a non-empty list of objects", "objects")
-    objects = [_object(_Reader(o, f"objects[{i}]", origin), materials, base)
-               for i, o in enumerate(objects_raw)]
+    objects = []
+    for i, o in enumerate(objects_raw):
+        if isinstance(o, dict) and "gltf" in o:
+            sub_objects, sub_materials, sub_lights, sub_camera = _gltf_subscene(
+                _Reader(o, f"objects[{i}]", origin), base)
+            objects += sub_objects
+            materials.update(sub_materials)
+            lights += sub_lights
+            camera = camera or sub_camera
+        else:
+            objects.append(_object(_Reader(o, f"objects[{i}]", origin), materials, base))
+    if camera is None:
+        top.fail("is required (or a gltf object with a camera)", "camera")
     rs = top.child("render", {})
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),

@@ -142,6 +142,12 @@ def _grid():
     return u, v
 
 
+def _rgba8(*rgba) -> list:
+    """A baseColorFactor on the 8-bit grid: trimesh's glTF reader stores the factor as
+    8-bit RGBA, so pyrender would otherwise shade a colour up to half a code away."""
+    return [round(c * 255) / 255 for c in rgba]
+
+
 def _quaternion(axis, angle) -> list:
     axis = np.asarray(axis, np.float64) / np.linalg.norm(axis)
     return [*(axis * math.sin(angle / 2)).tolist(), math.cos(angle / 2)]
@@ -219,8 +225,9 @@ def glow() -> np.ndarray:
 
 
 def disc_alpha() -> np.ndarray:
+    """Alpha 1 inside a disc, 0.2 outside: a MASK at 0.45 keeps the disc only."""
     u, v = _grid()
-    return np.clip(1.2 - np.hypot(u - 0.5, v - 0.5) * 2.4, 0, 1)  # 1 at the centre, 0 past r = 0.5
+    return np.where(np.hypot(u - 0.5, v - 0.5) < 0.42, 1.0, 0.2)
 
 
 def occlusion() -> np.ndarray:
@@ -234,13 +241,13 @@ def occlusion() -> np.ndarray:
 def hierarchy_lights():
     b = Builder()
     materials = [
-        {"name": "red_dielectric", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.08, 1],
+        {"name": "red_dielectric", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.8, 0.1, 0.08, 1),
                                                             "metallicFactor": 0.0, "roughnessFactor": 0.45}},
-        {"name": "gold_metal", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.766, 0.336, 1],
+        {"name": "gold_metal", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(1.0, 0.766, 0.336, 1),
                                                         "metallicFactor": 1.0, "roughnessFactor": 0.3}},
-        {"name": "blue_half_metal", "pbrMetallicRoughness": {"baseColorFactor": [0.15, 0.3, 0.8, 1],
+        {"name": "blue_half_metal", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.15, 0.3, 0.8, 1),
                                                              "metallicFactor": 0.5, "roughnessFactor": 0.7}},
-        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.6, 0.6, 0.6, 1],
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.6, 0.6, 0.6, 1),
                                                    "metallicFactor": 0.0, "roughnessFactor": 0.8}},
     ]
     b.json["materials"] = materials
@@ -310,10 +317,10 @@ def textured():
         {"name": "checker_mr", "pbrMetallicRoughness": {"baseColorTexture": {"index": tex["base"]},
                                                         "metallicRoughnessTexture": {"index": tex["mr"]},
                                                         "metallicFactor": 1.0, "roughnessFactor": 1.0}},
-        {"name": "bumpy", "pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.7, 0.72, 1], "metallicFactor": 0.0,
+        {"name": "bumpy", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.7, 0.7, 0.72, 1), "metallicFactor": 0.0,
                                                    "roughnessFactor": 0.35},
          "normalTexture": {"index": tex["normal"]}},
-        {"name": "glowing", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.2, 0.2, 1], "metallicFactor": 0.0,
+        {"name": "glowing", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.2, 0.2, 0.2, 1), "metallicFactor": 0.0,
                                                      "roughnessFactor": 0.6},
          "emissiveTexture": {"index": tex["glow"]}, "emissiveFactor": [1.0, 1.0, 1.0]},
     ]
@@ -372,12 +379,12 @@ def alpha_modes():
     b = Builder()
     disc = b.texture(b.image(checker(colours=((0.2, 0.7, 0.2), (0.9, 0.85, 0.2)), alpha=disc_alpha()), embed=True))
     b.json["materials"] = [
-        {"name": "backdrop", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.5, 0.45, 1], "metallicFactor": 0.0,
+        {"name": "backdrop", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.55, 0.5, 0.45, 1), "metallicFactor": 0.0,
                                                       "roughnessFactor": 0.8}},
         {"name": "mask", "alphaMode": "MASK", "alphaCutoff": 0.45,
          "pbrMetallicRoughness": {"baseColorTexture": {"index": disc}, "metallicFactor": 0.0, "roughnessFactor": 0.5}},
         {"name": "blend", "alphaMode": "BLEND",
-         "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.3, 0.9, 0.5], "metallicFactor": 0.0,
+         "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.1, 0.3, 0.9, 0.5), "metallicFactor": 0.0,
                                   "roughnessFactor": 0.4}},
     ]
     p, n, uv, f = _quad(1.8)
@@ -397,7 +404,7 @@ def features():
     normal = b.texture(b.image(bumps(), embed=True))
     b.json["materials"] = [
         {"name": "vertex_coloured", "pbrMetallicRoughness": {"metallicFactor": 0.0, "roughnessFactor": 0.5}},
-        {"name": "glass_like", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.25, 0.3, 1], "metallicFactor": 0.0,
+        {"name": "glass_like", "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.2, 0.25, 0.3, 1), "metallicFactor": 0.0,
                                                         "roughnessFactor": 0.15},
          "extensions": {"KHR_materials_ior": {"ior": 1.8},
                         "KHR_materials_specular": {"specularFactor": 0.9, "specularColorFactor": [1.0, 0.9, 0.8]},
@@ -408,7 +415,7 @@ def features():
          "normalTexture": {"index": normal, "scale": 0.5}},
         {"name": "two_sided_glow", "doubleSided": True, "emissiveFactor": [0.3, 0.6, 1.0],
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 2.0}},
-         "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0.0,
+         "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.8, 0.8, 0.8, 1), "metallicFactor": 0.0,
                                   "roughnessFactor": 0.5}},
     ]
     b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_specular", "KHR_materials_clearcoat",
