@@ -150,6 +150,10 @@ def specialised_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
 
 
 FULL_MAP_SLOTS = ("albedo", "emission", "metallic_smoothness", "normal", "occlusion")
+# Two packings of metallic and smoothness: a material has at most one (scene validation),
+# and the full program of a glTF material leaves Unity's out (its neutral multiply after
+# glTF's 1 - (1 - s) g lets the compiler contract differently: 1e-6 relative, measured).
+FULL_MAP_EXCLUDED_BY = {"metallic_smoothness": "metallic_roughness"}
 
 
 def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
@@ -161,6 +165,8 @@ def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                     "PBRLAB_POINT_COUNT": MAX_LIGHTS_PER_TYPE, "PBRLAB_SPOT_COUNT": MAX_LIGHTS_PER_TYPE})
     if m.custom_surface is None:
         for slot in FULL_MAP_SLOTS:
+            if slot in FULL_MAP_EXCLUDED_BY and FULL_MAP_EXCLUDED_BY[slot] in m.maps:
+                continue
             defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
     return defines
 

@@ -316,6 +316,9 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         else:
             textures.fail('a surface file\'s texture needs {"path": ..., "srgb": true|false}', name)
     textures.finish()
+    if "metallic_smoothness" in m.textures and "metallic_roughness" in m.textures:
+        textures.fail("give one packing: metallic_smoothness (Unity: R metallic, A smoothness) or "
+                      "metallic_roughness (glTF: B metallic, G roughness), not both")
     brdf = r.child("brdf", {})
     for term in list(brdf.data):
         if term not in BRDF_TERMS:
