@@ -413,9 +413,9 @@ def features():
                                                             "metallicFactor": 0.0, "roughnessFactor": 0.5},
          "occlusionTexture": {"index": ao, "texCoord": 1, "strength": 0.7},
          "normalTexture": {"index": normal, "scale": 0.5}},
-        {"name": "two_sided_glow", "doubleSided": True, "emissiveFactor": [0.3, 0.6, 1.0],
+        {"name": "two_sided_glow", "doubleSided": True, "emissiveFactor": [0.15, 0.3, 0.5],
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 2.0}},
-         "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.8, 0.8, 0.8, 1), "metallicFactor": 0.0,
+         "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.1, 0.1, 0.1, 1), "metallicFactor": 0.0,
                                   "roughnessFactor": 0.5}},
     ]
     b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_specular", "KHR_materials_clearcoat",
@@ -441,7 +441,7 @@ def features():
     nodes.append({"rotation": _look_rotation([0.2, -0.4, -1.0]), "extensions": {"KHR_lights_punctual": {"light": 0}}})
     nodes.append({"translation": [0.8, 1.5, 2.5], "rotation": _look_rotation([0.0, -1.5, -2.5]),
                   "extensions": {"KHR_lights_punctual": {"light": 1}}})
-    b.json["cameras"] = [{"type": "orthographic", "orthographic": {"xmag": 3.4, "ymag": 1.3, "znear": 0.1,
+    b.json["cameras"] = [{"type": "orthographic", "orthographic": {"xmag": 3.4, "ymag": 1.7, "znear": 0.1,
                                                                    "zfar": 20}},
                          {"type": "perspective", "perspective": {"yfov": 0.7}}]
     nodes.append({"camera": 0, "translation": [0, 0.5, 6], "rotation": _quaternion([1, 0, 0], -0.08)})
