@@ -8,6 +8,7 @@ paths (meshes, textures, environments) are resolved against the scene file's fol
 Format (README.md, "Scene files", has the annotated version)::
 
     camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
+                (may be left out when a gltf object brings a camera)
     lights      [{type: directional, direction (the way light travels), color, intensity}
                  {type: point, position, color, intensity, range}
                  {type: spot, position, direction, color, intensity, range,
@@ -18,7 +19,8 @@ Format (README.md, "Scene files", has the annotated version)::
                         brdf: {specular_d, specular_v, specular_f, diffuse}}}
     objects     [{sphere: {center, radius}, material}
                  {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
-                  material, transform: {translate, rotate_deg, scale}}]
+                  material, transform: {translate, rotate_deg, scale}}
+                 {gltf: "model.glb", transform}]  (a whole glTF scene: pbrlab.gltf)
     render      {quality: high, tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|
                  khronos_neutral,
                  exposure: 0 (EV stops, multiplier 2^exposure)}

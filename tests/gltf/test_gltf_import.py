@@ -259,3 +259,35 @@ def test_gltf_sub_scene_in_a_json_scene(tmp_path, gl_context):
     moved = [o.transform[:3, 3] for o in scene.objects[1:]]
     np.testing.assert_allclose(moved, [o.transform[:3, 3] + [0, 0, -1] for o in direct.objects])
     assert render_scene(scene, gl_context, size=(32, 16)).linear[..., 3].any()
+
+
+def test_zero_emissive_strength_reports_no_emission(tmp_path, capsys):
+    doc = quad_document()
+    doc["materials"][0]["emissiveFactor"] = [1.0, 0.5, 0.2]
+    doc["materials"][0]["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": 0.0}}
+    assert cli.main(["features", str(write(tmp_path, doc))]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["materials"]["paint"]["emission"] is False and report["warnings"] == []
+
+
+def test_ior_on_a_partly_metallic_material_is_named(tmp_path):
+    doc = quad_document()
+    doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.5
+    doc["materials"][0]["extensions"] = {"KHR_materials_ior": {"ior": 1.33}}
+    result = load_gltf(write(tmp_path, doc), emit_warnings=False)
+    assert result.scene.materials["paint"].workflow == "metallic"
+    assert result.warnings == ['KHR_materials_ior/KHR_materials_specular ignored in material "paint" '
+                               "(metallic > 0: the specular workflow holds dielectrics only)"]
+
+
+def test_metallic_roughness_slot_in_a_json_scene_and_one_packing_only(tmp_path):
+    from pbrlab.errors import SceneError
+
+    png = ASSETS / "textured_mr.png"
+    scene = {"camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+             "materials": {"m": {"textures": {"metallic_roughness": str(png)}}},
+             "objects": [{"mesh": {"primitive": "plane"}, "material": "m"}]}
+    assert parse_scene(scene).materials["m"].texture_srgb == {"metallic_roughness": False}
+    scene["materials"]["m"]["textures"]["metallic_smoothness"] = str(png)
+    with pytest.raises(SceneError, match="give one packing"):
+        parse_scene(scene)
