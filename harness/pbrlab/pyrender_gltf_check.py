@@ -35,20 +35,27 @@ COMPOSITION_TEMPLATE = "pyrender_mesh.frag"
 PYRENDER_ZFAR = 1000.0  # the assets' cameras give no zfar (infinite); pyrender needs one
 
 
-def _worker(platform: str, path: str, size: str, out_path: str) -> None:
-    """pyrender's render of the glTF file (this process only): srgb8, coverage, info."""
-    import math
-
-    import trimesh
-
+def _worker(platform: str, size: str, out_folder: str, paths: list[str]) -> None:
+    """pyrender's renders of glTF files (this process only): out_folder/<i>.npz each
+    with srgb8, coverage, info."""
     from . import gl
-    from .gltf.document import read_document
-    from .gltf.nodes import walk
     from .pyrender_compat import import_pyrender
 
     gl.pin_llvmpipe_cpu_caps()
     pyrender = import_pyrender(platform)
     w, h = (int(x) for x in size.split("x"))
+    for i, path in enumerate(paths):
+        _render_one(pyrender, platform, path, w, h, str(Path(out_folder) / f"{i}.npz"))
+
+
+def _render_one(pyrender, platform, path, w, h, out_path) -> None:
+    import math
+
+    import trimesh
+
+    from .gltf.document import read_document
+    from .gltf.nodes import walk
+
     loaded = trimesh.load(path, force="scene")
     scene = pyrender.Scene.from_trimesh_scene(loaded, bg_color=[0.0, 0.0, 0.0, 0.0], ambient_light=[0.0, 0.0, 0.0])
     doc = read_document(path)
@@ -91,20 +98,29 @@ def _worker(platform: str, path: str, size: str, out_path: str) -> None:
 
 
 def render_pyrender_gltf(path, platform: str, size, timeout: float = 120.0) -> PyrenderImage:
-    """pyrender's render of a glTF file with a perspective camera, at ``size`` (w, h)."""
+    """pyrender's render of a glTF file with its perspective camera, at ``size`` (w, h)."""
+    return render_pyrender_gltf_files([path], platform, size, timeout)[0]
+
+
+def render_pyrender_gltf_files(paths, platform: str, size, timeout: float = 300.0) -> list[PyrenderImage]:
+    """pyrender's renders of several glTF files, in one subprocess on ``platform``."""
     if platform not in ("egl", "osmesa"):
         raise ValueError(f"platform must be 'egl' or 'osmesa', got {platform!r}")
     with tempfile.TemporaryDirectory(prefix="pbrlab-pyrender-gltf-") as tmp:
-        out_path = Path(tmp) / "out.npz"
         env = dict(os.environ, PYOPENGL_PLATFORM=platform)
         proc = subprocess.run([sys.executable, "-m", "pbrlab.pyrender_gltf_check", "--worker", platform,
-                               str(path), f"{size[0]}x{size[1]}", str(out_path)],
+                               f"{size[0]}x{size[1]}", tmp, *(str(p) for p in paths)],
                               capture_output=True, text=True, env=env, timeout=timeout)
-        if proc.returncode != 0 or not out_path.is_file():
-            raise PbrlabError(f"pyrender ({platform}) failed on {path} with exit code {proc.returncode}:\n"
-                              f"{proc.stderr[-3000:]}")
-        with np.load(out_path) as data:
-            return PyrenderImage(data["rgb8"].copy(), data["coverage"].copy(), json.loads(str(data["info"])))
+        outs = [Path(tmp) / f"{i}.npz" for i in range(len(paths))]
+        if proc.returncode != 0 or not all(o.is_file() for o in outs):
+            raise PbrlabError(f"pyrender ({platform}) failed on {[str(p) for p in paths]} with exit code "
+                              f"{proc.returncode}:\n{proc.stderr[-3000:]}")
+        images = []
+        for out in outs:
+            with np.load(out) as data:
+                images.append(PyrenderImage(data["rgb8"].copy(), data["coverage"].copy(),
+                                            json.loads(str(data["info"]))))
+        return images
 
 
 def render_pbrlab_gltf_terms(path, ctx=None, size=None) -> np.ndarray:
@@ -125,9 +141,10 @@ def render_pbrlab_gltf_terms(path, ctx=None, size=None) -> np.ndarray:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description="pyrender glTF cross-check (worker entry point)")
-    parser.add_argument("--worker", nargs=4, metavar=("PLATFORM", "GLTF", "WxH", "OUT_NPZ"), required=True)
+    parser.add_argument("--worker", nargs=3, metavar=("PLATFORM", "WxH", "OUT_FOLDER"), required=True)
+    parser.add_argument("files", nargs="+", help="glTF files")
     args = parser.parse_args(argv)
-    _worker(*args.worker)
+    _worker(*args.worker, args.files)
     return 0
 
 
