@@ -291,3 +291,30 @@ def test_metallic_roughness_slot_in_a_json_scene_and_one_packing_only(tmp_path):
     scene["materials"]["m"]["textures"]["metallic_smoothness"] = str(png)
     with pytest.raises(SceneError, match="give one packing"):
         parse_scene(scene)
+
+
+def test_environment_from_the_command_line_or_a_side_file(tmp_path, capsys):
+    from pbrlab.images import read_image
+
+    path = write(tmp_path, quad_document())  # no light: black without an environment
+    out = tmp_path / "out.exr"
+
+    def centre(*options):
+        assert cli.main(["render", str(path), "--hdr", str(out), "--size", "16x16", *options]) == 0
+        return read_image(out)[8, 8, :3]
+
+    assert not centre().any()
+    (tmp_path / "model.pbrlab.json").write_text(json.dumps(
+        {"environment": {"color": [1, 1, 1]}, "render": {"tonemap": "aces_fitted"}}))
+    assert centre().min() > 0.1
+    assert not centre("--environment", "0,0,0").any()  # the command line wins
+    capsys.readouterr()
+    assert cli.main(["features", str(path)]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["scene"]["environment"] and report["scene"]["tonemap"] == "aces_fitted"
+    (tmp_path / "model.pbrlab.json").write_text(json.dumps({"lights": []}))
+    assert cli.main(["render", str(path), "--hdr", str(out)]) == 2
+    assert "expected an object with environment and/or render" in capsys.readouterr().err
+    (tmp_path / "model.pbrlab.json").unlink()
+    assert cli.main(["render", str(path), "--hdr", str(out), "--environment", "nowhere.exr"]) == 2
+    assert "--environment: environment.path: file not found" in capsys.readouterr().err
