@@ -318,3 +318,32 @@ def test_environment_from_the_command_line_or_a_side_file(tmp_path, capsys):
     (tmp_path / "model.pbrlab.json").unlink()
     assert cli.main(["render", str(path), "--hdr", str(out), "--environment", "nowhere.exr"]) == 2
     assert "--environment: environment.path: file not found" in capsys.readouterr().err
+
+
+def test_sparse_accessor_replaces_elements(tmp_path):
+    from gltf_helpers import blob, set_blob
+
+    doc = quad_document()
+    data = blob(doc)  # 140 bytes: the next view starts 4-aligned
+    extra = np.array([2], np.uint16).tobytes() + b"\0\0" + np.array([1.5, 1.5, 0.0], np.float32).tobytes()
+    doc["bufferViews"] += [{"buffer": 0, "byteOffset": len(data), "byteLength": 2},
+                           {"buffer": 0, "byteOffset": len(data) + 4, "byteLength": 12}]
+    set_blob(doc, data + extra)
+    doc["buffers"][0]["byteLength"] = len(data + extra)
+    doc["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": 4, "componentType": 5123},
+                                     "values": {"bufferView": 5}}
+    geometry = load_gltf(write(tmp_path, doc), emit_warnings=False).scene.objects[0].geometry
+    np.testing.assert_array_equal(geometry.positions[2], [1.5, 1.5, 0.0])
+    np.testing.assert_array_equal(geometry.positions[1], [1.0, -1.0, 0.0])
+    doc["accessors"][0]["sparse"]["count"] = 2
+    doc["bufferViews"][4]["byteLength"] = 4
+    from pbrlab.errors import SceneError
+    with pytest.raises(SceneError, match="sparse"):
+        load_gltf(write(tmp_path, doc), emit_warnings=False)
+
+
+def test_extension_used_where_nothing_looks_is_named(tmp_path):
+    doc = quad_document()
+    doc["extensionsUsed"] = ["EXT_texture_webp", "KHR_lights_punctual"]
+    assert load_gltf(write(tmp_path, doc), emit_warnings=False).warnings == [
+        "EXT_texture_webp ignored (listed in extensionsUsed)"]

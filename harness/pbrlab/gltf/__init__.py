@@ -130,6 +130,9 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             if geometry is None:
                 continue
             objects.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometry))
+    for name in doc.json.get("extensionsUsed", []):  # used where nothing above looked
+        if name not in HONOURED_EXTENSIONS and not any(m.startswith(f"{name} ") for m in messages):
+            warn(f"{name} ignored (listed in extensionsUsed)")
     if not objects:
         raise SceneError(f"{path}: the scene has no triangle to draw")
     by_name = {m.name: m for m in materials.values()}

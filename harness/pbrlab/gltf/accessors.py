@@ -62,12 +62,12 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     if count is not None and n_elements != count:
         doc.fail(where, f"{name} has {n_elements} elements, expected {count}")
     dtype = np.dtype(COMPONENT_TYPES[component]).newbyteorder("<")
-    if "sparse" in accessor:
-        doc.fail(where, f"{name} is sparse; sparse accessors are not read")
     if "bufferView" not in accessor:
         values = np.zeros((n_elements, n), dtype)  # spec 3.6.2.4: no buffer view means zeros
     else:
         values = _from_buffer_view(doc, accessor, name, where, dtype, n, n_elements)
+    if "sparse" in accessor:
+        values = _apply_sparse(doc, accessor["sparse"], values, f"{where} ({name}.sparse)", dtype, n)
     if use == "indices":
         return values[:, 0].astype(np.int64)
     out = _normalised(values, component) if normalized else values.astype(np.float64)
@@ -75,6 +75,29 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         bad = int(np.argmax(~np.all(np.isfinite(out), axis=1)))
         doc.fail(where, f"{name} holds a non-finite value (element {bad}: {out[bad].tolist()})")
     return out
+
+
+def _apply_sparse(doc, sparse, values, where, dtype, n) -> np.ndarray:
+    """spec 3.6.2.3 "Sparse Accessors": ``count`` (index, value) pairs replace elements."""
+    count = sparse.get("count") if isinstance(sparse, dict) else None
+    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
+        doc.fail(where, f"count must be a positive integer, got {json.dumps(count)}")
+    indices_spec, values_spec = sparse.get("indices", {}), sparse.get("values", {})
+    index_type = indices_spec.get("componentType")
+    if index_type not in (5121, 5123, 5125):
+        doc.fail(f"{where}.indices", f"componentType must be UNSIGNED_BYTE, _SHORT or _INT, got {index_type}")
+    index_dtype = np.dtype(COMPONENT_TYPES[index_type]).newbyteorder("<")
+    indices = _from_buffer_view(doc, {"bufferView": indices_spec.get("bufferView"),
+                                      "byteOffset": indices_spec.get("byteOffset", 0)},
+                                "indices", f"{where}.indices", index_dtype, 1, count)[:, 0].astype(np.int64)
+    replacements = _from_buffer_view(doc, {"bufferView": values_spec.get("bufferView"),
+                                           "byteOffset": values_spec.get("byteOffset", 0)},
+                                     "values", f"{where}.values", dtype, n, count)
+    if np.any(indices >= len(values)) or np.any(np.diff(indices) <= 0):
+        doc.fail(f"{where}.indices", f"must increase strictly and stay below {len(values)}")
+    values = values.copy()
+    values[indices] = replacements
+    return values
 
 
 def _from_buffer_view(doc, accessor, name, where, dtype, n, n_elements) -> np.ndarray:
