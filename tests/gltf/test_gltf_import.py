@@ -347,3 +347,57 @@ def test_extension_used_where_nothing_looks_is_named(tmp_path):
     doc["extensionsUsed"] = ["EXT_texture_webp", "KHR_lights_punctual"]
     assert load_gltf(write(tmp_path, doc), emit_warnings=False).warnings == [
         "EXT_texture_webp ignored (listed in extensionsUsed)"]
+
+
+def test_orthographic_camera_maps_ymag_to_half_the_image_height(tmp_path, gl_context):
+    # The 2 x 2 quad under an orthographic camera with ymag 2 (half-height 2) fills rows
+    # 25 %..75 % of the image and, with xmag 4, columns 37.5 %..62.5 % (glTF 3.10.3).
+    doc = quad_document()
+    doc["cameras"] = [{"type": "orthographic", "orthographic": {"xmag": 4.0, "ymag": 2.0, "znear": 0.1,
+                                                               "zfar": 10}}]
+    doc["nodes"].append({"camera": 0, "translation": [0, 0, 3]})
+    doc["scenes"][0]["nodes"].append(1)
+    scene = load_gltf(write(tmp_path, doc), emit_warnings=False).scene
+    assert scene.camera.size == (1024, 512)
+    covered = render_scene(scene, gl_context, size=(64, 32)).linear[..., 3] > 0
+    rows, cols = np.flatnonzero(covered.any(axis=1)), np.flatnonzero(covered.any(axis=0))
+    assert (rows.min(), rows.max()) == (8, 23) and (cols.min(), cols.max()) == (24, 39)
+
+
+def test_given_tangents_are_used_and_missing_ones_are_computed(tmp_path, gl_context):
+    # A normal map tilted towards +Y of the image: with no TANGENT the computed frame is
+    # (+x, w = +1) on this quad, so a TANGENT of (1, 0, 0, 1) changes nothing and
+    # (1, 0, 0, -1) mirrors the bitangent.
+    import base64
+    import io
+
+    from PIL import Image
+
+    texel = np.round((np.array([0.0, 0.6, 0.8]) * 0.5 + 0.5) * 255).astype(np.uint8)
+    png = io.BytesIO()
+    Image.fromarray(np.tile(texel, (4, 4, 1))).save(png, format="PNG")
+    doc = quad_document()
+    doc["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png.getvalue()).decode()}]
+    doc["textures"] = [{"source": 0}]
+    doc["materials"][0]["normalTexture"] = {"index": 0}
+    doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0}]}}
+    doc["nodes"].append({"extensions": {"KHR_lights_punctual": {"light": 0}},
+                         "rotation": [math.sin(-0.4), 0, 0, math.cos(-0.4)]})  # from above-front
+    doc["scenes"][0]["nodes"].append(1)
+
+    def render(w=None):
+        d = json.loads(json.dumps(doc))
+        if w is not None:
+            raw = base64.b64decode(d["buffers"][0]["uri"].split(",", 1)[1])
+            raw += np.tile(np.array([1, 0, 0, w], np.float32), (4, 1)).tobytes()
+            d["buffers"][0] = {"byteLength": len(raw),
+                               "uri": "data:application/octet-stream;base64," + base64.b64encode(raw).decode()}
+            d["bufferViews"].append({"buffer": 0, "byteOffset": 140, "byteLength": 64})
+            d["accessors"].append({"bufferView": 4, "componentType": 5126, "count": 4, "type": "VEC4"})
+            d["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = 4
+        scene = load_gltf(write(tmp_path, d), size=(16, 16), emit_warnings=False).scene
+        return render_scene(scene, gl_context).linear[8, 8, :3]
+
+    computed, given, mirrored = render(), render(1.0), render(-1.0)
+    np.testing.assert_array_equal(computed, given)
+    assert mirrored[0] < computed[0] * 0.8  # tilted away from the light instead of towards it
