@@ -1,10 +1,8 @@
 """Malformed glTF files are refused with one message naming the object, exit status 2,
 no traceback (pbrlab render and pbrlab features alike)."""
 
-import json
 import struct
 
-import numpy as np
 import pytest
 
 from pbrlab import cli

@@ -80,7 +80,6 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     materials: dict = {}
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
-    meshes = doc.items("meshes")
     for node_index, world in walk(doc, None):
         node = doc.json["nodes"][node_index]
         where = f"nodes[{node_index}]"
