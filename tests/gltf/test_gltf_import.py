@@ -401,3 +401,14 @@ def test_given_tangents_are_used_and_missing_ones_are_computed(tmp_path, gl_cont
     computed, given, mirrored = render(), render(1.0), render(-1.0)
     np.testing.assert_array_equal(computed, given)
     assert mirrored[0] < computed[0] * 0.8  # tilted away from the light instead of towards it
+
+
+def test_sub_scene_warnings_reach_render_and_features(tmp_path, capsys):
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text(json.dumps({"objects": [{"gltf": str(ASSETS / "features.gltf")}]}))
+    assert cli.main(["render", str(scene_file), "-o", str(tmp_path / "s.png"), "--size", "32x16"]) == 0
+    assert 'warning: features.gltf: KHR_materials_clearcoat ignored in material "glass_like"' in capsys.readouterr().err
+    assert cli.main(["features", str(scene_file)]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["warnings"] == ['features.gltf: KHR_materials_clearcoat ignored in material "glass_like"']
+    assert report["scene"]["orthographic"]  # the file's camera serves: the scene has none

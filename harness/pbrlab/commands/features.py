@@ -5,14 +5,14 @@ file, "warnings" lists every extension or feature not honoured (as `pbrlab rende
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 
 def run(args) -> int:
     from ..features import features_report
     from ..gltf import is_gltf, load_gltf
     from ..gltf.settings import read_settings
-    from ..scene import load_scene
-    from pathlib import Path
+    from .render import load_scene_with_gltf_warnings
 
     if is_gltf(args.scene):
         environment, render = read_settings(Path(args.scene))
@@ -20,7 +20,10 @@ def run(args) -> int:
         report = features_report(result.scene)
         report["warnings"] = result.warnings
     else:
-        report = features_report(load_scene(args.scene))
+        scene, messages = load_scene_with_gltf_warnings(args.scene)
+        report = features_report(scene)
+        if messages:  # from glTF files the scene takes in
+            report["warnings"] = messages
     print(json.dumps(report, indent=2, default=str))
     return 0
 

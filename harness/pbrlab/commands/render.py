@@ -27,6 +27,25 @@ def check_finite(linear: np.ndarray, what: str):
         raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf; nothing was written")
 
 
+def load_scene_with_gltf_warnings(path):
+    """A JSON scene and the warnings of the glTF files it takes in (GltfWarning)."""
+    import warnings
+
+    from ..gltf import GltfWarning
+    from ..scene import load_scene
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", GltfWarning)
+        scene = load_scene(path)
+    messages = []
+    for w in caught:
+        if issubclass(w.category, GltfWarning):
+            messages.append(str(w.message))
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return scene, messages
+
+
 def load_any_scene(path, camera=None, environment=None, size=None):
     """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
     import sys
@@ -34,12 +53,14 @@ def load_any_scene(path, camera=None, environment=None, size=None):
 
     from ..gltf import is_gltf, load_gltf
     from ..gltf.settings import read_settings
-    from ..scene import load_scene
 
     if not is_gltf(path):
         if camera is not None or environment is not None:
             raise PbrlabError("--camera and --environment are for glTF files; a JSON scene names its own")
-        return load_scene(path)
+        scene, messages = load_scene_with_gltf_warnings(path)
+        for message in messages:
+            print(f"warning: {message}", file=sys.stderr)
+        return scene
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False)
     for message in result.warnings:
