@@ -157,3 +157,12 @@ def test_unreadable_files_are_named(tmp_path, capsys, content, message):
     path.write_bytes(content)
     _refused(tmp_path, capsys, path, message)
     _refused(tmp_path, capsys, path, message, command="features")
+
+
+def test_texture_reading_a_missing_uv_set_is_named(tmp_path, capsys):
+    doc = quad_document()
+    doc["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC"}]
+    doc["textures"] = [{"source": 0}]
+    doc["materials"][0]["occlusionTexture"] = {"index": 0, "texCoord": 1}
+    _refused(tmp_path, capsys, doc, 'meshes[0].primitives[0]: material "paint" reads TEXCOORD_1 '
+                                    "(occlusion texture), which the primitive lacks")

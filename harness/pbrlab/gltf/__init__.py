@@ -123,6 +123,10 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
                 material_names[mkey] = name
                 materials[mkey] = material
             material = materials[mkey]
+            for slot, uv_set in sorted(material.texture_uv_set.items()):
+                if f"TEXCOORD_{uv_set}" not in primitive.get("attributes", {}):
+                    doc.fail(pwhere, f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
+                                     "which the primitive lacks")
             normal_uv = material.texture_uv_set.get("normal", 0) if "normal" in material.textures else None
             geometry = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                       (*key, mesh_index, p, flip))
