@@ -157,6 +157,14 @@ def _write_gltf(tmp_path) -> Path:
     doc["materials"].append({"name": "lamp", "emissiveFactor": [1.0, 0.8, 0.5], "alphaMode": "BLEND",
                              "normalTexture": {"index": 0}})
     lamp_primitive = dict(doc["meshes"][0]["primitives"][0], material=1)
+    count = doc["accessors"][lamp_primitive["attributes"]["POSITION"]]["count"]
+    uv = np.zeros((count, 2), np.float32).tobytes()  # the normal map reads TEXCOORD_0
+    doc["buffers"].append({"byteLength": len(uv),
+                           "uri": "data:application/octet-stream;base64," + base64.b64encode(uv).decode()})
+    doc["bufferViews"].append({"buffer": len(doc["buffers"]) - 1, "byteLength": len(uv)})
+    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                             "count": count, "type": "VEC2"})
+    lamp_primitive["attributes"] = dict(lamp_primitive["attributes"], TEXCOORD_0=len(doc["accessors"]) - 1)
     doc["meshes"].append({"primitives": [lamp_primitive]})
     doc.setdefault("extensionsUsed", []).append("KHR_lights_punctual")
     doc.setdefault("extensions", {})["KHR_lights_punctual"] = {"lights": [
