@@ -38,11 +38,20 @@ def camera_frame(camera, scene_radius: float) -> CameraFrame:
     view[0, :3], view[1, :3], view[2, :3] = right, up, -forward
     view[:3, 3] = -view[:3, :3] @ camera.position
     proj = np.zeros((4, 4))
-    proj[0, 0] = 1 / (tan_half * aspect)
-    proj[1, 1] = 1 / tan_half
-    proj[2, 2] = -(far + near) / (far - near)
-    proj[2, 3] = -2 * far * near / (far - near)
-    proj[3, 2] = -1
+    ortho = getattr(camera, "ortho_half_height", None)
+    if ortho is not None:  # orthographic (glTF 2.0, 3.10.3, with near = 0 moved to keep depth)
+        near = -(distance + scene_radius) * NEAR_FAR_MARGIN
+        proj[0, 0] = 1 / (ortho * aspect)
+        proj[1, 1] = 1 / ortho
+        proj[2, 2] = -2 / (far - near)
+        proj[2, 3] = -(far + near) / (far - near)
+        proj[3, 3] = 1
+    else:
+        proj[0, 0] = 1 / (tan_half * aspect)
+        proj[1, 1] = 1 / tan_half
+        proj[2, 2] = -(far + near) / (far - near)
+        proj[2, 3] = -2 * far * near / (far - near)
+        proj[3, 2] = -1
     return CameraFrame(camera.position.astype(np.float64), forward, right * tan_half * aspect,
                        up * tan_half, (w, h), proj @ view)
 

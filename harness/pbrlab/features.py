@@ -23,10 +23,8 @@ all compiled (its code decides what it writes).
 
 from __future__ import annotations
 
-import json
 import warnings
 from dataclasses import asdict, dataclass
-from pathlib import Path
 
 import numpy as np
 
@@ -50,6 +48,13 @@ class MaterialFeatures:
     occlusion: bool
     alpha: bool
     custom_surface: str | None  # a surface file: every effect compiled
+    # settings of the default surface (glTF materials: pbrlab/gltf), compiled in both programs
+    uv1_maps: tuple = ()        # slots reading the second UV set
+    uv_transforms: tuple = ()   # slots with a UV transform
+    normal_scale: bool = False  # normal scale != 1
+    occlusion_strength: bool = False  # occlusion strength != 1
+    vertex_color: bool = False
+    double_sided: bool = False
 
 
 @dataclass(frozen=True)
@@ -64,6 +69,7 @@ class SceneFeatures:
     tonemap: str
     exposure: bool             # exposure != 0 (a multiply in the resolve pass)
     hdr_target: str
+    orthographic: bool = False  # parallel projection: one view direction
 
 
 def material_features(material) -> MaterialFeatures:
@@ -79,6 +85,12 @@ def material_features(material) -> MaterialFeatures:
         occlusion=custom or material.occlusion != 1.0 or "occlusion" in maps,
         alpha=custom or material.alpha_mode != "opaque",
         custom_surface=str(material.surface) if custom else None,
+        uv1_maps=tuple(sorted(m for m in maps if material.texture_uv_set.get(m, 0) == 1)),
+        uv_transforms=tuple(sorted(m for m in maps if m in material.texture_transform)),
+        normal_scale="normal" in maps and material.normal_scale != 1.0,
+        occlusion_strength="occlusion" in maps and material.occlusion_strength != 1.0,
+        vertex_color=material.vertex_color,
+        double_sided=bool(material.double_sided),
     )
 
 
@@ -93,6 +105,7 @@ def scene_features(scene) -> SceneFeatures:
         tonemap=scene.render.tonemap,
         exposure=scene.render.exposure != 0.0,
         hdr_target=scene.render.hdr_target,
+        orthographic=scene.camera.ortho_half_height is not None,
     )
 
 
@@ -106,6 +119,21 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_WORKFLOW_SPECULAR"] = 1
     if s.hdr_target == "rgba16f":
         defines["PBRLAB_HDR_HALF"] = 1
+    if s.orthographic:
+        defines["PBRLAB_ORTHOGRAPHIC"] = 1
+    for slot in m.uv1_maps:
+        defines[f"PBRLAB_{slot.upper()}_UV1"] = 1
+    for slot in m.uv_transforms:
+        defines[f"PBRLAB_{slot.upper()}_UV_TRANSFORM"] = 1
+    for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
+                     ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided)):
+        if on:
+            defines[f"PBRLAB_{flag}"] = 1
+    # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)
+    # is compiled only where the material has it, in both programs.
+    for slot in m.maps:
+        if slot not in FULL_MAP_SLOTS:
+            defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
     return defines
 
 
@@ -125,6 +153,10 @@ def specialised_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
 
 
 FULL_MAP_SLOTS = ("albedo", "emission", "metallic_smoothness", "normal", "occlusion")
+# Two packings of metallic and smoothness: a material has at most one (scene validation),
+# and the full program of a glTF material leaves Unity's out (its neutral multiply after
+# glTF's 1 - (1 - s) g lets the compiler contract differently: 1e-6 relative, measured).
+FULL_MAP_EXCLUDED_BY = {"metallic_smoothness": "metallic_roughness"}
 
 
 def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
@@ -136,6 +168,8 @@ def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                     "PBRLAB_POINT_COUNT": MAX_LIGHTS_PER_TYPE, "PBRLAB_SPOT_COUNT": MAX_LIGHTS_PER_TYPE})
     if m.custom_surface is None:
         for slot in FULL_MAP_SLOTS:
+            if slot in FULL_MAP_EXCLUDED_BY and FULL_MAP_EXCLUDED_BY[slot] in m.maps:
+                continue
             defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
     return defines
 
@@ -177,71 +211,4 @@ def features_report(scene) -> dict:
         "materials": {name: asdict(material_features(m)) for name, m in scene.materials.items()},
         "programs": {"specialised": plan.specialised, "distinct": plan.distinct,
                      "limit": MAX_SPECIALISED_PROGRAMS},
-    }
-
-
-# --- glTF 2.0 -------------------------------------------------------------------------
-
-def _gltf_document(path: Path) -> dict:
-    """The JSON of a .gltf, or the JSON chunk of a .glb (glTF 2.0 spec, section 4.4)."""
-    data = path.read_bytes()
-    if data[:4] == b"glTF":
-        length = int.from_bytes(data[12:16], "little")
-        if data[16:20] != b"JSON":
-            raise SceneError(f"{path}: the first GLB chunk is not JSON")
-        return json.loads(data[20:20 + length])
-    return json.loads(data)
-
-
-def gltf_features(path) -> dict:
-    """Feature sets of a glTF 2.0 file: materials as trimesh reads them, lights from
-    KHR_lights_punctual (which trimesh does not read). glTF's metallic-roughness model maps
-    to the metallic workflow; its metallicRoughnessTexture packs roughness in G and
-    metallic in B (not Unity's R/A packing), recorded as its channels."""
-    import trimesh
-
-    path = Path(path)
-    if not path.is_file():
-        raise SceneError(f"{path}: no such glTF file")
-    try:
-        document = _gltf_document(path)
-        loaded = trimesh.load(path, force="scene")
-    except (ValueError, KeyError, json.JSONDecodeError) as exc:
-        raise SceneError(f"{path}: not a readable glTF 2.0 file ({exc})") from None
-    lights = (document.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", []))
-    counts = {t: sum(1 for light in lights if light.get("type") == t) for t in LIGHT_TYPES}
-    materials = {}
-    for index, spec in enumerate(document.get("materials", [])):
-        name = spec.get("name", f"material_{index}")
-        pbr = spec.get("pbrMetallicRoughness", {})
-        maps, channels = [], {}
-        if "baseColorTexture" in pbr:
-            maps.append("albedo")
-            channels["albedo"] = "RGBA, sRGB"
-        if "metallicRoughnessTexture" in pbr:
-            maps.append("metallic_roughness")
-            channels["metallic_roughness"] = "G roughness, B metallic, linear"
-        for key, slot, what in (("normalTexture", "normal", "RGB tangent space, linear"),
-                                ("occlusionTexture", "occlusion", "R, linear"),
-                                ("emissiveTexture", "emission", "RGB, sRGB")):
-            if key in spec:
-                maps.append(slot)
-                channels[slot] = what
-        emissive = spec.get("emissiveFactor", [0, 0, 0])
-        alpha_mode = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}[spec.get("alphaMode", "OPAQUE")]
-        materials[name] = {
-            "workflow": "metallic",
-            "alpha_mode": alpha_mode,
-            "maps": sorted(maps),
-            "channels": channels,
-            "srgb_maps": sorted(m for m in maps if m in ("albedo", "emission")),
-            # glTF multiplies the emissive texture by emissiveFactor (default 0): both needed
-            "emission": any(v != 0 for v in emissive),
-            "occlusion": "occlusionTexture" in spec,
-            "alpha": alpha_mode != "opaque",
-        }
-    return {
-        "scene": {"directional": counts["directional"], "point": counts["point"], "spot": counts["spot"],
-                  "environment": False, "meshes": len(loaded.geometry)},
-        "materials": materials,
     }

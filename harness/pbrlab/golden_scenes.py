@@ -18,6 +18,18 @@ from .scene import QUALITIES, Scene, load_scene, parse_scene
 SCENES_DIR = Path(__file__).resolve().parents[2] / "scenes"
 LIT_SCENE = SCENES_DIR / "unity_example" / "scene.json"
 TORTURE_SCENE = SCENES_DIR / "torture" / "scene.json"
+GLTF_DIR = SCENES_DIR / "gltf"
+GLTF_SIZE = (256, 128)
+# golden name -> (glTF asset, environment option or None); features.gltf also under a
+# constant environment (occlusion, image-based light)
+GLTF_GOLDENS = {
+    "gltf_hierarchy_lights": ("hierarchy_lights.glb", None),
+    "gltf_textured": ("textured.gltf", None),
+    "gltf_texture_transform": ("texture_transform.gltf", None),
+    "gltf_alpha_modes": ("alpha_modes.glb", None),
+    "gltf_features": ("features.gltf", None),
+    "gltf_features_environment": ("features.gltf", "0.25,0.3,0.35"),
+}
 
 
 def lit_scene(quality: str = "high") -> Scene:
@@ -27,6 +39,16 @@ def lit_scene(quality: str = "high") -> Scene:
     return scene
 
 
+def gltf_scene(asset: str, environment: str | None = None) -> Scene:
+    """A glTF test asset of scenes/gltf at the goldens' size, optionally lit by an
+    environment given as the command line's ``--environment`` value."""
+    from .gltf import load_gltf
+    from .gltf.settings import parse_environment_option
+
+    env = parse_environment_option(environment) if environment else None
+    return load_gltf(GLTF_DIR / asset, size=GLTF_SIZE, environment=env, emit_warnings=False).scene
+
+
 def _chart(name):
     return lambda: parse_scene(CHARTS[name](), origin=f"chart {name}")
 
@@ -34,6 +56,8 @@ def _chart(name):
 GOLDEN_SCENES = {name: _chart(name) for name in CHARTS}
 GOLDEN_SCENES.update({f"lit_scene_{q}": (lambda q=q: lit_scene(q)) for q in QUALITIES})
 GOLDEN_SCENES["torture_chart"] = lambda: load_scene(TORTURE_SCENE)
+GOLDEN_SCENES.update({name: (lambda a=asset, e=env: gltf_scene(a, e))
+                      for name, (asset, env) in GLTF_GOLDENS.items()})
 
 
 def render_all(out: Path, names=None, backend: str | None = None, language: str = "glsl") -> list[str]:

@@ -69,12 +69,31 @@ def load_mesh(obj):
 
 @dataclass(frozen=True)
 class MeshData:
-    """What the renderer needs of a mesh: ``vertex_arrays`` and the largest vertex norm."""
+    """What the renderer needs of a mesh: ``vertex_arrays`` and the largest vertex norm
+    (from ``centre``, the origin for files and primitives)."""
     arrays: tuple
     max_vertex_norm: float
+    centre: tuple = (0.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True, eq=False)
+class Geometry:
+    """Vertex data held in memory (a glTF primitive), ready for the mesh program: float32
+    positions, normals, uv, tangents (xyz, w sign), uv1, colours (RGBA) and int32 indices
+    of a triangle list. ``key`` identifies it in the mesh cache."""
+    key: tuple
+    positions: np.ndarray
+    normals: np.ndarray
+    uv: np.ndarray
+    tangents: np.ndarray
+    uv1: np.ndarray
+    colors: np.ndarray
+    indices: np.ndarray
 
 
 def _mesh_key(obj) -> tuple:
+    if getattr(obj, "geometry", None) is not None:
+        return ("geometry", *obj.geometry.key)
     if obj.primitive is not None:
         return ("primitive", json.dumps(obj.primitive, sort_keys=True))
     return ("file", *resource_cache.file_key(obj.mesh_path))
@@ -90,6 +109,13 @@ def mesh_data(obj) -> MeshData:
     key = _mesh_key(obj)
     if key in _MESH_DATA:
         _MESH_DATA.move_to_end(key)
+    elif getattr(obj, "geometry", None) is not None:
+        g = obj.geometry
+        lo, hi = g.positions.min(axis=0).astype(np.float64), g.positions.max(axis=0).astype(np.float64)
+        centre = (lo + hi) / 2
+        norm = float(np.linalg.norm(g.positions - centre, axis=1).max())
+        _MESH_DATA[key] = MeshData((g.positions, g.normals, g.uv, g.tangents, g.indices, g.uv1, g.colors),
+                                   norm, tuple(float(c) for c in centre))
     else:
         mesh = load_mesh(obj)
         arrays = vertex_arrays(mesh)
@@ -102,8 +128,17 @@ def mesh_data(obj) -> MeshData:
 
 
 def bounding_radius(obj) -> float:
-    scale = np.abs(np.linalg.eigvals(obj.transform[:3, :3])).max()
+    """A radius around ``local_centre(obj)`` (transformed) that holds the mesh."""
+    if getattr(obj, "geometry", None) is not None:  # the largest stretch (singular value)
+        scale = np.linalg.norm(obj.transform[:3, :3], ord=2)
+    else:  # files and primitives: kept as their goldens were made (equal for rotation x uniform scale)
+        scale = np.abs(np.linalg.eigvals(obj.transform[:3, :3])).max()
     return float(mesh_data(obj).max_vertex_norm * scale)
+
+
+def local_centre(obj) -> np.ndarray:
+    """The centre of the mesh's bounds in its own space (the origin for files and primitives)."""
+    return np.asarray(mesh_data(obj).centre, np.float64)
 
 
 def tangents(positions, normals, uvs, faces) -> np.ndarray:
@@ -154,13 +189,18 @@ def vertex_arrays(mesh):
 
 
 def vertex_array(ctx, program, obj):
-    """A moderngl VertexArray for ``obj`` on ``program``, plus the buffers to release."""
-    positions, normals, uv, tan, indices = mesh_data(obj).arrays
-    data = np.concatenate([positions, normals, uv, tan], axis=1).astype(np.float32)
+    """A moderngl VertexArray for ``obj`` on ``program``, plus the buffers to release.
+    Meshes without a second UV set read the first; without colours, white."""
+    arrays = mesh_data(obj).arrays
+    positions, normals, uv, tan, indices = arrays[:5]
+    uv1 = arrays[5] if len(arrays) > 5 else uv
+    colors = arrays[6] if len(arrays) > 6 else np.ones((len(positions), 4), np.float32)
+    data = np.concatenate([positions, normals, uv, tan, uv1, colors], axis=1).astype(np.float32)
     vbo = ctx.buffer(data.tobytes())
     ibo = ctx.buffer(indices.tobytes())
     layout = []
-    names = [("in_position", "3f"), ("in_normal", "3f"), ("in_uv", "2f"), ("in_tangent", "4f")]
+    names = [("in_position", "3f"), ("in_normal", "3f"), ("in_uv", "2f"), ("in_tangent", "4f"),
+             ("in_uv1", "2f"), ("in_color", "4f")]
     fmt = []
     for name, f in names:
         if program.get(name, None) is not None:

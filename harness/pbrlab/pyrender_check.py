@@ -232,9 +232,8 @@ def encode_pyrender(linear: np.ndarray) -> np.ndarray:
 # ---------------------------------------------------------------- pbrlab side
 
 _TERMS_FRAG = """#version 330 core
-// pyrender 0.1.45's metallic-roughness direct lighting (pyrender/shaders/mesh.frag,
-// compute_brdf, l. 238-262) composed from pbrlab's library terms. Each PYR_* switch picks
-// pyrender's form (1) or the one pbrlab's renderer uses with the nearest selectors (0).
+// pyrender 0.1.45's metallic-roughness direct lighting for one directional light and a
+// constant material: templates/pyrender_brdf.inc, which composes it from pbrlab's terms.
 //@DEFINES
 #include "pbr/common/conventions.glsl"
 #include "pbr/common/guards.glsl"
@@ -243,10 +242,7 @@ _TERMS_FRAG = """#version 330 core
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/fd_lambert.glsl"
-
-#define PYR_MIN_ROUGHNESS 0.04         // mesh.frag l. 146, 331
-#define PYR_COSINE_FLOOR 0.001         // l. 244-245
-#define PYR_SPECULAR_EPSILON 0.001     // l. 259
+#include "pyrender_brdf.inc"
 
 uniform vec3 u_camera_position;
 uniform vec3 u_light_l;          // unit, towards the light
@@ -263,44 +259,7 @@ out vec4 out_radiance;
 void main() {
     vec3 n = normalize(v_normal);
     vec3 v = normalize(u_camera_position - v_position);
-    vec3 l = u_light_l;
-    vec3 h = normalize(l + v);
-    float nl = dot(n, l);
-#if PYR_COSINE_FLOORS
-    float NdotL = clamp(nl, PYR_COSINE_FLOOR, 1.0);
-    float NdotV = clamp(abs(dot(n, v)), PYR_COSINE_FLOOR, 1.0);
-#else
-    if (!(nl > 0.0)) { out_radiance = vec4(0.0, 0.0, 0.0, 1.0); return; }
-    float NdotL = min(nl, 1.0);
-    float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
-#endif
-    float NdotH = clamp(dot(n, h), 0.0, 1.0);
-    float VdotH = clamp(dot(v, h), 0.0, 1.0);
-    float roughness = clamp(u_roughness, PYR_MIN_ROUGHNESS, 1.0);
-    float alpha = roughness * roughness;
-
-    vec3 f0 = pbr_f0_from_metallic(u_base_color, u_metallic);
-    vec3 diffuseColor = pbr_diffuse_from_metallic(u_base_color, u_metallic);
-    vec3 F = pbr_F_Schlick(f0, VdotH);
-#if PYR_G_HOTNESS
-    float k = pbr_k_SchlickGGX_hotness(roughness);
-#else
-    float k = pbr_k_SchlickGGX_from_alpha(alpha);
-#endif
-    float G = pbr_G_SchlickGGX(NdotL, NdotV, k);
-    float D = pbr_D_GGX(NdotH, alpha);
-#if PYR_DIFFUSE_ONE_MINUS_F
-    vec3 diffuse = (vec3(1.0) - F) * diffuseColor * pbr_Fd_Lambert();
-#else
-    vec3 diffuse = diffuseColor * pbr_Fd_Lambert();
-#endif
-#if PYR_DENOMINATOR_EPSILON
-    vec3 specular = F * (G * D / (4.0 * NdotL * NdotV + PYR_SPECULAR_EPSILON));
-#else
-    vec3 specular = F * (G * D / (4.0 * NdotL * NdotV));
-#endif
-    vec3 c = u_light_radiance * PBR_LIGHT_UNIT_SCALE * NdotL * (diffuse + specular);
-    out_radiance = vec4(c, 1.0);
+    out_radiance = vec4(pyr_direct(n, v, u_light_l, u_light_radiance, u_base_color, u_metallic, u_roughness), 1.0);
 }
 """
 
@@ -320,7 +279,8 @@ def _terms_program(ctx, terms: dict):
         defines = "\n".join(f"#define {k} {v}" for k, v in sorted(switches.items()))
         vert = shaders.expand((TEMPLATES / "mesh.vert").read_text(encoding="utf-8"),
                               "pbrlab/templates/mesh.vert")
-        frag = shaders.expand(_TERMS_FRAG.replace("//@DEFINES", defines), "pbrlab/pyrender_check.py")
+        frag = shaders.expand(_TERMS_FRAG.replace("//@DEFINES", defines), "pbrlab/pyrender_check.py",
+                              include_dirs=[TEMPLATES])
         _TERM_PROGRAMS[key] = shaders.build_program(ctx, vert, frag)
     return _TERM_PROGRAMS[key]
 

@@ -18,6 +18,7 @@ import numpy as np
 from . import features, gl, ibl, meshes, resource_cache, targets
 from . import srgb8 as srgb8_codes
 from .camera import camera_frame
+from .errors import SceneError
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
 from .programs import set_uniform_array as _set_array
@@ -45,7 +46,8 @@ def scene_radius(scene: Scene) -> float:
         if obj.sphere is not None:
             centre, r = obj.sphere
         else:
-            centre, r = obj.transform[:3, 3], meshes.bounding_radius(obj)
+            centre = obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
+            r = meshes.bounding_radius(obj)
         radius = max(radius, float(np.linalg.norm(centre - scene.camera.target)) + r)
     return radius
 
@@ -87,7 +89,7 @@ class _SceneResources:
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
-            self.cache.texture(path, material.texture_srgb[name]).use(unit)
+            self.cache.texture(path, material.texture_srgb[name], material.texture_sampler.get(name)).use(unit)
             _set(program, f"u_{name}_map" if material.surface is None else name, unit)
             unit += 1
         if self.full and material.surface is None:
@@ -140,6 +142,10 @@ def _upload_material(program, material):
     # opaque materials show no alpha: the full program is fed the neutral 1
     _set(program, "u_alpha", material.alpha if material.alpha_mode != "opaque" else 1.0)
     _set(program, "u_alpha_cutoff", material.alpha_cutoff)
+    _set(program, "u_normal_scale", material.normal_scale)
+    _set(program, "u_occlusion_strength", material.occlusion_strength)
+    for slot, transform in material.texture_transform.items():
+        _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 
 
 # Blending per alpha mode (Unity's Standard shader): fade blends colour by alpha;
@@ -157,7 +163,9 @@ COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 def _draw_order(scene: Scene, frame):
     """Opaque and cutout objects first, then blended ones from far to near."""
     def centre(obj):
-        return obj.sphere[0] if obj.sphere is not None else obj.transform[:3, 3]
+        if obj.sphere is not None:
+            return obj.sphere[0]
+        return obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in _BLEND]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
@@ -166,7 +174,7 @@ def _draw_order(scene: Scene, frame):
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  transfer: str = "EXACT", specialise: bool = True,
-                 language: str = "glsl") -> Rendering:
+                 language: str = "glsl", mesh_fragment: str | None = None) -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the display encode: EXACT (default: float display values rounded
@@ -179,11 +187,16 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     ``language="hlsl"`` shades with the HLSL library (hlsl_ports/) and the harness's HLSL
     pixel shaders, cross-compiled by glslang and spirv-cross (harness/pbrlab/programs.py);
     a material's ``surface`` file then needs its ``.hlsl`` twin beside it.
+    ``mesh_fragment`` replaces the meshes' fragment template (the pyrender cross-check's
+    composition, templates/pyrender_mesh.frag).
     """
     if transfer not in COLOR_TRANSFERS:
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    if scene.camera.ortho_half_height is not None and scene.spheres:
+        raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
+    mesh_fragment = mesh_fragment or fragment_template("mesh", language)
     surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
     ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
@@ -212,7 +225,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
-                shading = (defines, surfaces[obj.material], language)
+                shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
@@ -229,7 +242,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
 def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    defines, surface, language = shading
+    defines, surface, language, _ = shading
     program = program_from_templates(ctx, "sphere.vert", fragment_template("sphere", language),
                                      defines, surface)
     resources.bind(program, scene, frame, material)
@@ -248,15 +261,15 @@ def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo,
 
 
 def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
-    defines, surface, language = shading
-    program = program_from_templates(ctx, "mesh.vert", fragment_template("mesh", language),
-                                     defines, surface)
+    defines, surface, language, fragment = shading
+    program = program_from_templates(ctx, "mesh.vert", fragment, defines, surface)
     resources.bind(program, scene, frame, material)
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
     _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
-    if material.alpha_mode in _BLEND:
-        ctx.disable(moderngl.CULL_FACE)  # see-through: back faces show
+    two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
+    if two_sided:
+        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended) or glTF doubleSided
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"

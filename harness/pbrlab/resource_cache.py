@@ -93,10 +93,23 @@ class ContextCache:
         return self._environments.get(("black",), lambda: PreparedEnvironment(
             np.zeros((9, 3)), self.ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")))
 
-    def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
-        """An image file as a texture (colour data decoded from sRGB when ``srgb``)."""
-        return self._textures.get(("file", *file_key(path), srgb), lambda: targets.upload_texture(
-            self.ctx, read_image(path), srgb=srgb))
+    def texture(self, source, srgb: bool, sampler: tuple | None = None) -> moderngl.Texture:
+        """An image as a texture (colour data decoded from sRGB when ``srgb``): a file path,
+        or an in-memory image with ``key`` (a tuple naming it) and ``pixels()`` (glTF images:
+        pbrlab/gltf). ``sampler``: (repeat_x, repeat_y, min_filter, mag_filter) with
+        moderngl's filter constants; None is repeat with trilinear filtering."""
+        if isinstance(source, (str, Path)):
+            key, load = ("file", *file_key(source)), lambda: read_image(source)
+        else:
+            key, load = ("memory", *source.key), source.pixels
+
+        def make():
+            tex = targets.upload_texture(self.ctx, load(), srgb=srgb)
+            if sampler is not None:
+                tex.repeat_x, tex.repeat_y = bool(sampler[0]), bool(sampler[1])
+                tex.filter = (sampler[2], sampler[3])
+            return tex
+        return self._textures.get((key, srgb, sampler), make)
 
     def constant_texture(self, texel) -> moderngl.Texture:
         """A 1x1 RGBA32F texture holding ``texel``."""

@@ -8,6 +8,7 @@ paths (meshes, textures, environments) are resolved against the scene file's fol
 Format (README.md, "Scene files", has the annotated version)::
 
     camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
+                (may be left out when a gltf object brings a camera)
     lights      [{type: directional, direction (the way light travels), color, intensity}
                  {type: point, position, color, intensity, range}
                  {type: spot, position, direction, color, intensity, range,
@@ -18,7 +19,8 @@ Format (README.md, "Scene files", has the annotated version)::
                         brdf: {specular_d, specular_v, specular_f, diffuse}}}
     objects     [{sphere: {center, radius}, material}
                  {mesh: "file.obj" | {primitive: box|icosphere|cylinder|plane|torus, ...},
-                  material, transform: {translate, rotate_deg, scale}}]
+                  material, transform: {translate, rotate_deg, scale}}
+                 {gltf: "model.glb", transform}]  (a whole glTF scene: pbrlab.gltf)
     render      {quality: high, brdf_model: pbrlab|unity,
                  tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|khronos_neutral,
                  exposure: 0 (EV stops, multiplier 2^exposure)}
@@ -52,6 +54,7 @@ PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
 TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data
     "albedo": "srgb",
     "metallic_smoothness": "linear",  # Unity's packing: R = metallic, A = smoothness
+    "metallic_roughness": "linear",   # glTF's packing: G = perceptual roughness, B = metallic
     "normal": "linear",               # tangent space, RGB = xyz * 0.5 + 0.5
     "emission": "srgb",
     "occlusion": "linear",
@@ -65,6 +68,7 @@ class Camera:
     up: np.ndarray
     fov_y_deg: float
     size: tuple[int, int]
+    ortho_half_height: float | None = None  # orthographic (glTF ymag): half the view's height
 
 
 @dataclass
@@ -103,6 +107,15 @@ class Material:
     alpha_mode: str = "opaque"
     alpha_cutoff: float = 0.5
     surface: Path | None = None  # a GLSL file defining surf(Input, inout SurfaceOutput...)
+    # Per texture slot, set by the glTF importer (pbrlab/gltf): UV set 0 or 1, a 2x3 UV
+    # transform, a sampler (wrap_s, wrap_t, min_filter, mag_filter as GL enums).
+    texture_uv_set: dict[str, int] = field(default_factory=dict)
+    texture_transform: dict[str, np.ndarray] = field(default_factory=dict)
+    texture_sampler: dict[str, tuple] = field(default_factory=dict)
+    normal_scale: float = 1.0
+    occlusion_strength: float = 1.0
+    vertex_color: bool = False
+    double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
 
 
 @dataclass
@@ -112,6 +125,7 @@ class SceneObject:
     mesh_path: Path | None = None
     primitive: dict | None = None
     transform: np.ndarray = field(default_factory=lambda: np.eye(4))
+    geometry: object = None  # meshes.Geometry: vertex data held in memory (glTF primitives)
 
 
 @dataclass
@@ -308,6 +322,9 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         else:
             textures.fail('a surface file\'s texture needs {"path": ..., "srgb": true|false}', name)
     textures.finish()
+    if "metallic_smoothness" in m.textures and "metallic_roughness" in m.textures:
+        textures.fail("give one packing: metallic_smoothness (Unity: R metallic, A smoothness) or "
+                      "metallic_roughness (glTF: B metallic, G roughness), not both")
     brdf = r.child("brdf", {})
     for term in list(brdf.data):
         if term not in BRDF_TERMS:
@@ -371,11 +388,46 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     return obj
 
 
+def _gltf_subscene(r: _Reader, base: Path):
+    """An object ``{"gltf": "model.glb", "transform": {...}}``: the file's whole scene
+    (nodes, materials, lights, camera) placed by the transform. Its materials are named
+    "<file name>/<material>"; its camera serves when the scene gives none."""
+    from .gltf import load_gltf
+
+    path = r.file("gltf", base)
+    transform = _transform(r.child("transform", {}))
+    r.finish()
+    sub = load_gltf(path)
+    prefix = f"{path.name}/"
+    materials = {}
+    for name, material in sub.scene.materials.items():
+        material.name = prefix + name
+        materials[material.name] = material
+    objects = []
+    for obj in sub.scene.objects:
+        obj.material = prefix + obj.material
+        obj.transform = transform @ obj.transform
+        objects.append(obj)
+    for light in sub.scene.lights:
+        if light.position is not None:
+            light.position = transform[:3, :3] @ light.position + transform[:3, 3]
+        if light.direction is not None:
+            d = transform[:3, :3] @ light.direction
+            light.direction = d / np.linalg.norm(d)
+    camera = None
+    if sub.cameras:
+        camera = sub.scene.camera
+        camera.position = transform[:3, :3] @ camera.position + transform[:3, 3]
+        camera.target = transform[:3, :3] @ camera.target + transform[:3, 3]
+        camera.up = transform[:3, :3] @ camera.up
+    return objects, materials, sub.scene.lights, camera
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
     base = Path(base or ".")
     top = _Reader(data, "", origin)
-    camera = _camera(top.child("camera"))
+    camera = _camera(top.child("camera")) if top.has("camera") else None
     lights_raw = top.raw("lights", [])
     if not isinstance(lights_raw, list):
         top.fail("expected a list of lights", "lights")
@@ -388,8 +440,19 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     objects_raw = top.raw("objects", [])
     if not isinstance(objects_raw, list) or not objects_raw:
         top.fail("expected a non-empty list of objects", "objects")
-    objects = [_object(_Reader(o, f"objects[{i}]", origin), materials, base)
-               for i, o in enumerate(objects_raw)]
+    objects = []
+    for i, o in enumerate(objects_raw):
+        if isinstance(o, dict) and "gltf" in o:
+            sub_objects, sub_materials, sub_lights, sub_camera = _gltf_subscene(
+                _Reader(o, f"objects[{i}]", origin), base)
+            objects += sub_objects
+            materials.update(sub_materials)
+            lights += sub_lights
+            camera = camera or sub_camera
+        else:
+            objects.append(_object(_Reader(o, f"objects[{i}]", origin), materials, base))
+    if camera is None:
+        top.fail("is required (or a gltf object with a camera)", "camera")
     rs = top.child("render", {})
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),

@@ -1,6 +1,7 @@
 """Scene-driven specialisation: programs compile only the effects a scene can show, and
 change nothing but the cost (harness/pbrlab/features.py)."""
 
+import base64
 import json
 import re
 import subprocess
@@ -130,6 +131,16 @@ def test_render_no_specialise_writes_the_same_image(tmp_path, capsys):
     assert a.read_bytes() != b"" and a.read_bytes() == b.read_bytes()
 
 
+def _png_bytes(pixels) -> bytes:
+    import io
+
+    from PIL import Image
+
+    out = io.BytesIO()
+    Image.fromarray(pixels).save(out, format="PNG")
+    return out.getvalue()
+
+
 def _write_gltf(tmp_path) -> Path:
     import trimesh
 
@@ -140,11 +151,27 @@ def _write_gltf(tmp_path) -> Path:
     for name, data in files.items():
         (tmp_path / name).write_bytes(data)
     doc = json.loads((tmp_path / "model.gltf").read_text())
+    flat_normal_png = base64.b64encode(_png_bytes(np.full((1, 1, 3), (128, 128, 255), np.uint8))).decode()
+    doc["images"] = [{"uri": "data:image/png;base64," + flat_normal_png}]
+    doc["textures"] = [{"source": 0}]
     doc["materials"].append({"name": "lamp", "emissiveFactor": [1.0, 0.8, 0.5], "alphaMode": "BLEND",
                              "normalTexture": {"index": 0}})
+    lamp_primitive = dict(doc["meshes"][0]["primitives"][0], material=1)
+    count = doc["accessors"][lamp_primitive["attributes"]["POSITION"]]["count"]
+    uv = np.zeros((count, 2), np.float32).tobytes()  # the normal map reads TEXCOORD_0
+    doc["buffers"].append({"byteLength": len(uv),
+                           "uri": "data:application/octet-stream;base64," + base64.b64encode(uv).decode()})
+    doc["bufferViews"].append({"buffer": len(doc["buffers"]) - 1, "byteLength": len(uv)})
+    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                             "count": count, "type": "VEC2"})
+    lamp_primitive["attributes"] = dict(lamp_primitive["attributes"], TEXCOORD_0=len(doc["accessors"]) - 1)
+    doc["meshes"].append({"primitives": [lamp_primitive]})
     doc.setdefault("extensionsUsed", []).append("KHR_lights_punctual")
     doc.setdefault("extensions", {})["KHR_lights_punctual"] = {"lights": [
         {"type": "directional"}, {"type": "spot", "spot": {}}, {"type": "spot", "spot": {}}]}
+    doc["nodes"] += [{"mesh": 1, "translation": [2, 0, 0]}] + [
+        {"extensions": {"KHR_lights_punctual": {"light": i}}} for i in range(3)]
+    doc["scenes"][0]["nodes"] += list(range(1, len(doc["nodes"])))
     (tmp_path / "model.gltf").write_text(json.dumps(doc))
     return tmp_path / "model.gltf"
 

@@ -1,5 +1,6 @@
 """`pbrlab features SCENE`: the effects a scene (JSON or glTF 2.0) calls for, per material
-and per scene, and how many programs specialisation compiles for it, as JSON."""
+and per scene, and how many programs specialisation compiles for it, as JSON. For a glTF
+file, "warnings" lists every extension or feature not honoured (as `pbrlab render` warns)."""
 
 from __future__ import annotations
 
@@ -8,14 +9,21 @@ from pathlib import Path
 
 
 def run(args) -> int:
-    from ..features import features_report, gltf_features
-    from ..scene import load_scene
+    from ..features import features_report
+    from ..gltf import is_gltf, load_gltf
+    from ..gltf.settings import read_settings
+    from .render import load_scene_with_gltf_warnings
 
-    path = Path(args.scene)
-    if path.suffix.lower() in (".gltf", ".glb"):
-        report = gltf_features(path)
+    if is_gltf(args.scene):
+        environment, render = read_settings(Path(args.scene))
+        result = load_gltf(args.scene, environment=environment, render=render, emit_warnings=False)
+        report = features_report(result.scene)
+        report["warnings"] = result.warnings
     else:
-        report = features_report(load_scene(path))
+        scene, messages = load_scene_with_gltf_warnings(args.scene)
+        report = features_report(scene)
+        if messages:  # from glTF files the scene takes in
+            report["warnings"] = messages
     print(json.dumps(report, indent=2, default=str))
     return 0
 

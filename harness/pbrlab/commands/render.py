@@ -27,10 +27,50 @@ def check_finite(linear: np.ndarray, what: str):
         raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf; nothing was written")
 
 
+def load_scene_with_gltf_warnings(path):
+    """A JSON scene and the warnings of the glTF files it takes in (GltfWarning)."""
+    import warnings
+
+    from ..gltf import GltfWarning
+    from ..scene import load_scene
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", GltfWarning)
+        scene = load_scene(path)
+    messages = []
+    for w in caught:
+        if issubclass(w.category, GltfWarning):
+            messages.append(str(w.message))
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return scene, messages
+
+
+def load_any_scene(path, camera=None, environment=None, size=None):
+    """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
+    import sys
+    from pathlib import Path
+
+    from ..gltf import is_gltf, load_gltf
+    from ..gltf.settings import read_settings
+
+    if not is_gltf(path):
+        if camera is not None or environment is not None:
+            raise PbrlabError("--camera and --environment are for glTF files; a JSON scene names its own")
+        scene, messages = load_scene_with_gltf_warnings(path)
+        for message in messages:
+            print(f"warning: {message}", file=sys.stderr)
+        return scene
+    env, render = read_settings(Path(path), environment)
+    result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False)
+    for message in result.warnings:
+        print(f"warning: {message}", file=sys.stderr)
+    return result.scene
+
+
 def run(args) -> int:
     from .. import gl, images
     from ..render import render_scene
-    from ..scene import load_scene
 
     if not args.output and not args.hdr:
         raise PbrlabError("nothing to write: give -o OUT.png and/or --hdr OUT.exr")
@@ -38,7 +78,7 @@ def run(args) -> int:
         if path and not path.lower().endswith(suffix):
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
-    scene = load_scene(args.scene)
+    scene = load_any_scene(args.scene, args.camera, args.environment, size)
     rendering = render_scene(scene, gl.shared_context(args.backend), size=size,
                              specialise=not args.no_specialise, language=args.language)
     kind = "specialised" if rendering.programs.specialised else "full"
@@ -54,9 +94,13 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("render", parents=[common], help="render a JSON scene",
+    p = sub.add_parser("render", parents=[common], help="render a JSON scene or a glTF 2.0 file",
                        description=__doc__.splitlines()[0])
-    p.add_argument("scene", help="a JSON scene file (see README: Scene files)")
+    p.add_argument("scene", help="a JSON scene file (see README: Scene files) or a glTF 2.0 file (.gltf, .glb)")
+    p.add_argument("--camera", type=int, default=None, metavar="N",
+                   help="glTF: render from camera N (default: the first camera, else a framing view)")
+    p.add_argument("--environment", default=None, metavar="FILE|R,G,B",
+                   help="glTF: an equirectangular image or a constant radiance (overrides <model>.pbrlab.json)")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

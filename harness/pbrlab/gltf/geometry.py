@@ -1,0 +1,115 @@
+"""glTF mesh primitives (spec 3.7.2) as pbrlab Geometry: attributes read and checked,
+triangle strips and fans turned into lists, flat normals where NORMAL is absent (spec
+3.7.2.1), MikkTSpace tangents where a normal map needs them and TANGENT is absent."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..meshes import Geometry
+from .accessors import read_accessor
+from .document import Document
+from .tangents import mikktspace_tangents
+
+TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN = 4, 5, 6  # spec 3.7.2.1 "mode"
+MODE_NAMES = {0: "POINTS", 1: "LINES", 2: "LINE_LOOP", 3: "LINE_STRIP"}
+
+
+def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
+    if mode == TRIANGLES:
+        return indices[: len(indices) // 3 * 3].reshape(-1, 3)
+    n = len(indices) - 2
+    if n < 1:
+        return np.zeros((0, 3), np.int64)
+    i = np.arange(n)
+    if mode == TRIANGLE_STRIP:  # spec: even triangles (i, i+1, i+2), odd (i+1, i, i+2)... keep winding
+        a = np.where(i % 2 == 0, indices[i], indices[i + 1])
+        b = np.where(i % 2 == 0, indices[i + 1], indices[i])
+        return np.stack([a, b, indices[i + 2]], axis=1)
+    return np.stack([np.full(n, indices[0]), indices[i + 1], indices[i + 2]], axis=1)  # fan
+
+
+def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: dict, needs_tangents_from,
+                   warn, flip_winding: bool, key: tuple) -> Geometry | None:
+    """The primitive's Geometry (None, with a warning, for point and line modes).
+    ``needs_tangents_from``: the UV set of the material's normal map, or None."""
+    where = f"meshes[{mesh}].primitives[{prim_index}]"
+    mode = primitive.get("mode", TRIANGLES)
+    if mode in MODE_NAMES:
+        warn(f"{MODE_NAMES[mode]} primitive ignored in mesh {mesh} (pbrlab draws triangles)")
+        return None
+    if mode not in (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN):
+        doc.fail(where, f"mode must be 0..6, got {mode}")
+    attributes = primitive.get("attributes")
+    if not isinstance(attributes, dict) or "POSITION" not in attributes:
+        doc.fail(f"{where}.attributes", "has no POSITION")
+    attr_where = f"{where}.attributes"
+    positions = read_accessor(doc, attributes["POSITION"], f"{attr_where}.POSITION", "POSITION")
+    count = len(positions)
+
+    def optional(name, use):
+        if name not in attributes:
+            return None
+        return read_accessor(doc, attributes[name], f"{attr_where}.{name}", use, count)
+
+    normals = optional("NORMAL", "NORMAL")
+    tangents = optional("TANGENT", "TANGENT")
+    uv0 = optional("TEXCOORD_0", "TEXCOORD")
+    uv1 = optional("TEXCOORD_1", "TEXCOORD")
+    colors = optional("COLOR_0", "COLOR")
+    for name in sorted(attributes):
+        if name not in ("POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"):
+            warn(f"attribute {name} ignored in mesh {mesh} primitive {prim_index}")
+    if "targets" in primitive:
+        warn(f"morph targets ignored in mesh {mesh} primitive {prim_index} (the base shape is drawn)")
+    for ext in primitive.get("extensions", {}):
+        warn(f"{ext} ignored in mesh {mesh} primitive {prim_index}")
+
+    if "indices" in primitive:
+        indices = read_accessor(doc, primitive["indices"], f"{where}.indices", "indices")
+        bad = np.flatnonzero((indices < 0) | (indices >= count))
+        if len(bad):
+            doc.fail(f"{where}.indices", f"index {int(indices[bad[0]])} at position {int(bad[0])} is out of "
+                                         f"range (the primitive has {count} vertices)")
+    else:
+        indices = np.arange(count, dtype=np.int64)
+    if mode == TRIANGLES and len(indices) % 3:
+        doc.fail(where, f"a triangle list needs a multiple of 3 vertices, got {len(indices)}")
+    triangles = _triangle_list(indices, mode)
+    if len(triangles) == 0:
+        doc.fail(where, "has no triangle")
+    if flip_winding:  # a mirroring node transform (determinant < 0) turns front faces round
+        triangles = triangles[:, ::-1]
+
+    uv0 = np.zeros((count, 2)) if uv0 is None else uv0
+    uv1 = uv0 if uv1 is None else uv1
+    colors = np.ones((count, 4)) if colors is None else colors
+    if colors.shape[1] == 3:
+        colors = np.concatenate([colors, np.ones((count, 1))], axis=1)
+    if normals is None:  # flat shading: every triangle its own three vertices
+        corners = triangles.reshape(-1)
+        positions, uv0, uv1, colors = positions[corners], uv0[corners], uv1[corners], colors[corners]
+        tangents = None if tangents is None else tangents[corners]
+        p = positions.reshape(-1, 3, 3)
+        face = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        if flip_winding:
+            face = -face
+        length = np.linalg.norm(face, axis=1, keepdims=True)
+        face = np.where(length > 0, face / np.maximum(length, 1e-300), [[0.0, 0.0, 1.0]])
+        normals = np.repeat(face, 3, axis=0)
+        triangles = np.arange(len(corners)).reshape(-1, 3)
+    # glTF's v runs down the image; pbrlab's textures put the image's last row at v = 0
+    uv0_gl = np.stack([uv0[:, 0], 1.0 - uv0[:, 1]], axis=1)
+    uv1_gl = np.stack([uv1[:, 0], 1.0 - uv1[:, 1]], axis=1)
+    if tangents is None:
+        if needs_tangents_from is None:
+            tangents = np.tile([1.0, 0.0, 0.0, 1.0], (len(positions), 1))
+        else:
+            # with v up the image: the bitangent cross(n, t) w then points up the image, the
+            # normal map's +Y (spec 3.9.3: "+X is right and +Y is up")
+            uv = uv1_gl if needs_tangents_from == 1 else uv0_gl
+            tangents = mikktspace_tangents(positions, normals, uv, triangles)
+    f32 = lambda a: np.ascontiguousarray(a, np.float32)  # noqa: E731
+    return Geometry(key=key, positions=f32(positions), normals=f32(normals), uv=f32(uv0_gl),
+                    tangents=f32(tangents), uv1=f32(uv1_gl), colors=f32(colors),
+                    indices=np.ascontiguousarray(triangles.reshape(-1), np.int32))
