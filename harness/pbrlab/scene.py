@@ -33,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import unity
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -100,6 +101,9 @@ class Material:
     alpha_mode: str = "opaque"
     alpha_cutoff: float = 0.5
     surface: Path | None = None  # a GLSL file defining surf(Input, inout SurfaceOutput...)
+    unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
+                                 # `surface` is one (.shader, or text with #pragma surface)
+    properties: dict = field(default_factory=dict)  # its Properties' values (unity.properties)
 
 
 @dataclass
@@ -284,6 +288,12 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
     if r.has("surface"):
         m.surface = r.file("surface", base)
+    if m.surface is not None and unity.is_unity_surface(m.surface):
+        _unity_material(r, m, base)
+        return m
+    if r.has("properties"):
+        r.fail("properties belong to a Unity surface shader (a .shader file or text with "
+               "#pragma surface) named by `surface`", "properties")
     textures = r.child("textures", {})
     for name in list(textures.data):
         value = textures.data[name]
@@ -313,6 +323,30 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     brdf.finish()
     r.finish()
     return m
+
+
+def _unity_material(r: _Reader, m: Material, base: Path) -> None:
+    """A material whose surface is a Unity surface shader: its Properties, overridden by
+    `properties`; alpha mode and cutoff from its #pragma surface (harness/pbrlab/unity/)."""
+    try:
+        m.unity = unity.load_shader(m.surface)
+    except unity.UnityShaderError as exc:
+        r.fail(str(exc), "surface")
+    for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
+                "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow"):
+        if r.has(key):
+            r.fail(f"a Unity surface shader's material takes its values from `properties` "
+                   f"(the shader's Properties) and its alpha mode from #pragma surface; "
+                   f"remove `{key}`", key)
+    m.properties = unity.resolve_properties(m.unity, r.raw("properties", {}), base,
+                                            f"{r.origin}: {r.path.lstrip('.')}.properties")
+    m.alpha_mode = m.unity.pragma.alpha_mode
+    m.workflow = "specular" if m.unity.output_type == "SurfaceOutputStandardSpecular" else "metallic"
+    cutoff = m.unity.pragma.cutoff_property
+    if cutoff is not None:
+        value = m.properties.get(cutoff)
+        m.alpha_cutoff = float(value) if isinstance(value, float) else 0.5
+    r.finish()
 
 
 def _transform(r: _Reader) -> np.ndarray:
