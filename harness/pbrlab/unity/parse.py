@@ -88,6 +88,7 @@ def _property(line: str, where: str) -> M.Property:
         rng = (_number(m.group("lo"), where), _number(m.group("hi"), where))
         kind = "Range"
     default_text = m.group("default")
+    kind = {"cube": "Cube", "2d": "2D", "3d": "3D"}.get(kind.lower(), kind)
     if kind in ("Float", "Range", "Int", "Integer"):
         default = _number(default_text, where)
         kind = "Int" if kind == "Integer" else kind
