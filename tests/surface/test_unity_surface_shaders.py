@@ -20,14 +20,19 @@ MANUAL = Path(__file__).resolve().parents[2] / "scenes" / "unity_manual"
 SHADERS = sorted(p.name for p in MANUAL.glob("*.shader"))
 SIZE = 64
 LANGUAGES = ("hlsl", "glsl")
-# HLSL vs GLSL of the same shader: the two programs differ only in how glslang/SPIRV-Tools
-# and Mesa's GLSL compiler order float32 operations; measured worst 3.6e-7 abs on these
-# scenes (radiance <= ~2). Bound: 1e-5 absolute (the goldens' linear tolerance).
-LANGUAGE_BOUND = 1e-5
+# HLSL (the CGPROGRAM as written) vs GLSL (its port-unity port) of the same shader: measured
+# bit-identical (max abs 0) on every manual shader here, so the bound is 0.
+LANGUAGE_BOUND = 0.0
 # float32 GPU vs float64 reference on a ray-traced unit sphere (normal from one rsqrt, ray
-# direction normalised on the GPU): measured worst 2.1e-6; bound 1e-4 absolute, which is
-# 25x below one 8-bit sRGB step at mid grey and still fails on any formula change.
+# direction normalised on the GPU; radiance up to 2.4): measured worst 7.7e-6 (SimpleSpecular's
+# pow 48 near the highlight); bound 1e-4 absolute, 13x the measurement, 40x below one 8-bit
+# sRGB step at mid grey, and far below any formula change (Lambert vs wrap: 0.5).
 REFERENCE_BOUND = 1e-4
+# Same light, two programs (the front end's generated one and the harness's default surface)
+# calling the same library LightingStandard, with the environment fetched through
+# pbr/unity/global_illumination's hooks instead of scene_lighting.inc: measured 3.3e-6 abs;
+# bound 1e-5 (the goldens' linear tolerance).
+STANDARD_BOUND = 1e-5
 
 
 def _scene(surface, properties=None, lights=None, environment=None):
@@ -95,7 +100,7 @@ def test_lighting_model_matches_unitys_formula(name, reference, language):
 def test_rim_is_brightest_at_the_silhouette(language):
     """Emission only (no lights, no environment): 1 - saturate(viewDir . Normal) in tangent
     space, with a flat bump map, is (1 - NdotV)^3 * _RimColor: 0 facing the camera, largest at the rim."""
-    s = _scene("rim.shader", lights=[])
+    s = _scene("rim.shader", lights=[])  # measured 1.2e-6 against the float64 rim
     hit, n, v = _geometry(s)
     got = _render("rim.shader", language, lights=[])
     ndotv = np.sum(n * v, axis=-1)
@@ -138,8 +143,7 @@ def test_standard_template_matches_the_default_surface(language):
             "materials": {"m": {"albedo": [0.8, 0.3, 0.2], "smoothness": 0.7, "metallic": 0.25}},
             "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}]}
     want = render.render_scene(scene.parse_scene(data, "<test>", MANUAL), language=language).linear
-    # measured: 2.4e-7 (the two programs fold the same float32 arithmetic in a different order)
-    assert np.abs(got - want).max() <= LANGUAGE_BOUND
+    assert np.abs(got - want).max() <= STANDARD_BOUND
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -149,7 +153,8 @@ def test_cubemap_reflection_samples_the_environment(language):
     c = np.array([0.2, 0.4, 0.6])
     got = _render("cubemap_reflection.shader", language, lights=[], environment={"color": c.tolist()})
     covered = got[..., 3] > 0
-    # SH9 of a constant and the mipmapped cube of a constant are exact up to float32: 1e-5.
+    # SH9 of a constant and the mipmapped cube of a constant are exact up to float32:
+    # measured 3.3e-7; bound 1e-5.
     assert np.abs(got[..., :3][covered] - 1.5 * c).max() <= 1e-5
 
 
