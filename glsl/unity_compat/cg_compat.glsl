@@ -2,7 +2,7 @@
 //
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
-//           ddx / ddy (= dFdx / dFdy), mul(M, v) / mul(v, M) / mul(M, N) for mat3 and mat4,
+//           ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), tex2D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
@@ -24,8 +24,13 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define lerp mix
 #define frac fract
 #define rsqrt inversesqrt
+#ifdef PBR_UNITY_VERTEX_STAGE
+#define ddx(x) ((x) * 0.0)
+#define ddy(x) ((x) * 0.0)
+#else
 #define ddx dFdx
 #define ddy dFdy
+#endif
 #define samplerCUBE samplerCube
 
 float fmod(float x, float y) { return x - y * trunc(x / y); }
@@ -56,7 +61,11 @@ bool pbr_unity_clip_below_zero(vec4 x) { return any(lessThan(x, vec4(0.0))); }
 
 vec4 tex2D(sampler2D s, vec2 uv) { return texture(s, uv); }
 vec4 tex2Dlod(sampler2D s, vec4 uv) { return textureLod(s, uv.xy, uv.w); }
+#ifdef PBR_UNITY_VERTEX_STAGE
+vec4 tex2Dbias(sampler2D s, vec4 uv) { return textureLod(s, uv.xy, 0.0); }  // no LOD to bias
+#else
 vec4 tex2Dbias(sampler2D s, vec4 uv) { return texture(s, uv.xy, uv.w); }
+#endif
 vec4 tex2Dproj(sampler2D s, vec4 uv) { return textureProj(s, uv); }
 vec4 texCUBE(samplerCube s, vec3 dir) { return texture(s, dir); }
 vec4 texCUBElod(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, dir.w); }

@@ -15,6 +15,7 @@ import numpy as np
 from . import features, gl, ibl, meshes, resource_cache, targets
 from .unity import cubemap as unity_cubemap
 from .unity import program as unity_program
+from .unity import tessellate as unity_tessellate
 from .camera import camera_frame
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
@@ -218,7 +219,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 if material.unity is not None and material.unity.state.zwrite is not None:
                     hdr.fbo.depth_mask = material.unity.state.zwrite  # the shader's ZWrite line
                 shading = (defines, surfaces[obj.material], language)
-                if obj.sphere is not None:
+                if obj.sphere is not None and material.unity is not None and material.unity.vertex is not None:
+                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources)  # tessellated
+                elif obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
                     _draw_mesh(ctx, obj, material, shading, scene, frame, resources)
@@ -280,7 +283,10 @@ def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"
-    vao, buffers = meshes.vertex_array(ctx, program, obj)
+    if obj.sphere is not None:  # a sphere whose surface shader moves vertices
+        vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
+    else:
+        vao, buffers = meshes.vertex_array(ctx, program, obj)
     vao.render(moderngl.TRIANGLES)
     for resource in [vao, *buffers]:
         resource.release()

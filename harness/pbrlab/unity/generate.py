@@ -52,8 +52,8 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
             lines.append("    IN.screenPos = ComputeScreenPos(" + _mul(language, "unity_MatrixVP", "vec4(f.position, 1.0)") + ");")
         elif name == "color":
             lines.append("    IN.color = f.color;")
-        else:  # written by the vertex: function, interpolated
-            lines.append(f"    IN.{name} = f.custom_{name};")
+        else:  # written by the vertex: function, interpolated (mesh entry: pbrlab_custom_*)
+            lines.append(f"    IN.{name} = pbrlab_custom_{name};")
     if shader.internal_data:
         lines += ["    IN.internalSurfaceTtoW0 = vec3(t.x, b.x, f.normal.x);",
                   "    IN.internalSurfaceTtoW1 = vec3(t.y, b.y, f.normal.y);",
@@ -100,6 +100,11 @@ def glue(shader: M.SurfaceShader, language: str) -> str:
     cutoff = shader.pragma.cutoff_property
     if cutoff and cutoff not in shader.declared:
         out.append(f"uniform float {cutoff};  // #pragma surface alphatest:{cutoff}")
+    for kind, name in custom_varyings(shader, language):
+        if language == "hlsl":
+            out.append(f"static {kind} pbrlab_custom_{name};  // set by main from v_custom_{name}")
+        else:
+            out.append(f"in {kind} v_custom_{name};\n#define pbrlab_custom_{name} v_custom_{name}")
     out.append(_input_fill(shader, language))
     out.append(f"#define PBRLAB_UNITY_OUTPUT {shader.output_type}")
     out.append(f"#define PBRLAB_UNITY_LIGHT(o, v, gi) {_light_call(shader)}")
@@ -220,5 +225,94 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
     first = shader.program_line if language == "hlsl" else 1
     line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
-    tail = glue(shader, language) + _ENTRY[(language, stem)]
+    entry = _ENTRY[(language, stem)]
+    custom = custom_varyings(shader, language)
+    if custom and language == "hlsl":  # the vertex stage's custom Input members
+        params = "".join(f", {t} v_custom_{n} : TEXCOORD{4 + i}" for i, (t, n) in enumerate(custom))
+        sets = "".join(f"    pbrlab_custom_{n} = v_custom_{n};\n" for _, n in custom)
+        entry = entry.replace("float4 v_tangent : TEXCOORD3) : SV_Target0 {\n",
+                              f"float4 v_tangent : TEXCOORD3{params}) : SV_Target0 {{\n{sets}")
+    tail = glue(shader, language) + entry
     return "\n".join(head) + "\n" + line + "\n" + program + "\n" + tail
+
+
+def custom_varyings(shader: M.SurfaceShader, language: str):
+    """[(type in ``language``, member)] of the Input members a vertex: function writes."""
+    from .port import port_code_types
+    if shader.vertex is None:
+        return []
+    return [(t if language == "hlsl" else port_code_types(t), n) for t, n in shader.custom_members()]
+
+
+def vertex_source(shader: M.SurfaceShader, language: str, program: str, display: str, defines: dict) -> str:
+    """The vertex stage of a shader with a vertex: function: Unity's appdata_full from the
+    mesh, the user's function, then world position, normal, tangent, UV and the custom
+    Input members it wrote, as the mesh fragment program reads them."""
+    suffix = SUFFIX[language]
+    v = shader.vertex
+    head = ["#version 330 core"] if language == "glsl" else []
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, "PBRLAB_UNITY_VERTEX_STAGE": 1,
+                       "PBR_UNITY_VERTEX_STAGE": 1}),
+             f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
+    head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
+    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    first = shader.program_line if language == "hlsl" else 1
+    line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
+    custom = custom_varyings(shader, language)
+    call = f"{v.name}(v, o);" if v.input_param else f"{v.name}(v);"
+    if language == "hlsl":
+        outs = "".join(f", out {t} v_custom_{n} : TEXCOORD{4 + i}" for i, (t, n) in enumerate(custom))
+        body = f"""
+void main(float3 in_position : POSITION, float3 in_normal : NORMAL, float2 in_uv : TEXCOORD0,
+          float4 in_tangent : TANGENT, out float4 position : SV_Position, out float3 v_position : TEXCOORD0,
+          out float3 v_normal : TEXCOORD1, out float2 v_uv : TEXCOORD2, out float4 v_tangent : TEXCOORD3{outs}) {{
+    appdata_full v = (appdata_full)0;
+    v.vertex = float4(in_position, 1.0);
+    v.normal = in_normal;
+    v.tangent = in_tangent;
+    v.texcoord = float4(in_uv, 0.0, 0.0);
+    v.texcoord1 = v.texcoord;
+    v.color = float4(1.0, 1.0, 1.0, 1.0);
+    Input o = (Input)0;
+    {call}
+    float4 world = mul(unity_ObjectToWorld, v.vertex);
+    v_position = world.xyz;
+    v_normal = mul(v.normal, (float3x3)unity_WorldToObject);
+    v_tangent = float4(mul((float3x3)unity_ObjectToWorld, v.tangent.xyz), v.tangent.w);
+    v_uv = v.texcoord.xy;
+""" + "".join(f"    v_custom_{n} = o.{n};\n" for _, n in custom) + """    position = mul(unity_MatrixVP, world);
+}
+"""
+    else:
+        decls = "".join(f"out {t} v_custom_{n};\n" for t, n in custom)
+        body = f"""
+in vec3 in_position;
+in vec3 in_normal;
+in vec2 in_uv;
+in vec4 in_tangent;
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+out vec4 v_tangent;
+{decls}
+void main() {{
+    appdata_full v;
+    v.vertex = vec4(in_position, 1.0);
+    v.normal = in_normal;
+    v.tangent = in_tangent;
+    v.texcoord = vec4(in_uv, 0.0, 0.0);
+    v.texcoord1 = v.texcoord;
+    v.texcoord2 = vec4(0.0, 0.0, 0.0, 0.0);
+    v.texcoord3 = vec4(0.0, 0.0, 0.0, 0.0);
+    v.color = vec4(1.0, 1.0, 1.0, 1.0);
+    Input o;
+    {call}
+    vec4 world = unity_ObjectToWorld * v.vertex;
+    v_position = world.xyz;
+    v_normal = v.normal * mat3(unity_WorldToObject);
+    v_tangent = vec4(mat3(unity_ObjectToWorld) * v.tangent.xyz, v.tangent.w);
+    v_uv = v.texcoord.xy;
+""" + "".join(f"    v_custom_{n} = o.{n};\n" for _, n in custom) + """    gl_Position = unity_MatrixVP * world;
+}
+"""
+    return "\n".join(head) + "\n" + line + "\n" + program + "\n" + body

@@ -102,6 +102,11 @@ def _wrap_assignments(code: str, shader: M.SurfaceShader) -> str:
     return "".join(out)
 
 
+def port_code_types(code: str) -> str:
+    """Rule 1 alone (a type name, e.g. an Input member's)."""
+    return _rename_types(code)
+
+
 def port_code(code: str, shader: M.SurfaceShader) -> str:
     code = _rename_types(code)
     code = re.sub(r"(\w)\s*:\s*[A-Z][A-Z_]*\d*\s*(?=[;,)])", r"\1", code)

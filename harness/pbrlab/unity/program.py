@@ -11,6 +11,7 @@ vertex stage. Unity's stand-in ``.cginc`` files (``cginc/``) resolve the shader'
 
 from __future__ import annotations
 
+import re
 import tempfile
 from pathlib import Path
 
@@ -47,7 +48,29 @@ def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: di
     return text, dirs + [ported.parent]
 
 
+def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -> shaders.Source:
+    """The vertex stage running the shader's vertex: function (generate.vertex_source)."""
+    display = f"{shader.path.name} (generated {language} vertex stage)"
+    if language == "hlsl":
+        text = generate.vertex_source(shader, "hlsl", shader.program, shader.path.name, defines)
+        glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage="vert"), plain_uniforms=True)
+        # Both stages hold a `uniform _Global <id>;` of their own members: rename this one so
+        # the program links (programs.set_uniform then sets the member in each stage).
+        instance = re.search(r"uniform _Global (\w+);", glsl)
+        if instance:
+            glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
+            glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
+        return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+    ported = dirs[-1] / (shader.path.stem + ".glsl")
+    text = generate.vertex_source(shader, "glsl", f'#include "{ported.name}"', ported.name, defines)
+    return shaders.expand(text, display, include_dirs=dirs)
+
+
 def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, defines: dict):
+    """The program of ``shader`` for a sphere or mesh draw; with a vertex: function always
+    the mesh one (spheres are tessellated: tessellate.py)."""
+    if shader.vertex is not None:
+        stem = "mesh"
     key = (id(ctx), str(shader.path), shader.program, language, stem, tuple(sorted(defines.items())))
     if key not in _PROGRAMS:
         text, dirs = fragment_text(shader, language, stem, defines)
@@ -57,9 +80,15 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
             fragment = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
         else:
             fragment = shaders.expand(text, display, include_dirs=dirs)
-        vertex = template_source(VERTEX[stem], defines)
+        if shader.vertex is not None:
+            vertex = _vertex_stage(shader, language, defines, dirs)
+        else:
+            vertex = template_source(VERTEX[stem], defines)
         program = shaders.build_program(ctx, vertex, fragment)
-        program.extra = {"members": {n.split(".", 1)[1]: n for n in program if "." in n}}
+        members: dict = {}
+        for gl_name in (n for n in program if "." in n):
+            members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
+        program.extra = {"members": members}
         _PROGRAMS[key] = program
     return _PROGRAMS[key]
 
