@@ -6,7 +6,8 @@
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), tex2D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
-//           samplerCUBE (= samplerCube).
+//           samplerCUBE (= samplerCube); pbr_unity_pow (pow with HLSL's scalar promotion:
+//           port-unity renames pow to it), fmod(vecN, float).
 // Include:  "unity_compat/cg_compat.glsl" (path relative to glsl/), GLSL ONLY: HLSL has every
 //           one of these names itself, so this file has no HLSL twin
 //           (harness/pbrlab/port_hlsl.py ports pbr/ only). Never included by the pbr_ core;
@@ -37,6 +38,19 @@ float fmod(float x, float y) { return x - y * trunc(x / y); }
 vec2 fmod(vec2 x, vec2 y) { return x - y * trunc(x / y); }
 vec3 fmod(vec3 x, vec3 y) { return x - y * trunc(x / y); }
 vec4 fmod(vec4 x, vec4 y) { return x - y * trunc(x / y); }
+
+// HLSL promotes a scalar exponent (pow(float3, 2.2)); GLSL has no such overload and forbids
+// overloading its built-ins, so port-unity renames pow to pbr_unity_pow.
+float pbr_unity_pow(float x, float y) { return pow(x, y); }
+vec2 pbr_unity_pow(vec2 x, vec2 y) { return pow(x, y); }
+vec3 pbr_unity_pow(vec3 x, vec3 y) { return pow(x, y); }
+vec4 pbr_unity_pow(vec4 x, vec4 y) { return pow(x, y); }
+vec2 pbr_unity_pow(vec2 x, float y) { return pow(x, vec2(y)); }
+vec3 pbr_unity_pow(vec3 x, float y) { return pow(x, vec3(y)); }
+vec4 pbr_unity_pow(vec4 x, float y) { return pow(x, vec4(y)); }
+vec2 fmod(vec2 x, float y) { return fmod(x, vec2(y)); }
+vec3 fmod(vec3 x, float y) { return fmod(x, vec3(y)); }
+vec4 fmod(vec4 x, float y) { return fmod(x, vec4(y)); }
 
 float atan2(float y, float x) { return atan(y, x); }
 vec2 atan2(vec2 y, vec2 x) { return atan(y, x); }

@@ -47,7 +47,11 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
         elif name == "worldNormal":
             lines.append("    IN.worldNormal = f.normal;")
         elif name == "worldRefl":
-            lines.append("    IN.worldRefl = reflect(-f.view, f.normal);")
+            if shader.writes_normal and shader.internal_data:
+                # Unity: the incident direction, for WorldReflectionVector(IN, o.Normal) to reflect
+                lines.append("    IN.worldRefl = -f.view;")
+            else:
+                lines.append("    IN.worldRefl = reflect(-f.view, f.normal);")
         elif name == "screenPos":
             lines.append("    IN.screenPos = ComputeScreenPos(" + _mul(language, "unity_MatrixVP", "vec4(f.position, 1.0)") + ");")
         elif name == "color":

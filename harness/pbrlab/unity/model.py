@@ -113,7 +113,7 @@ class SurfaceShader:
         for _, name in self.input_members:
             for i, prefix in enumerate(UV_PREFIXES):
                 if name.startswith(prefix):
-                    out.append((name, i + 1, name[len(prefix):]))
+                    out.append((name, i + 1, name[len(prefix) - 1:]))  # uv_MainTex -> _MainTex
         return out
 
     def custom_members(self):

@@ -16,6 +16,8 @@ Rules, applied to code only (comments and strings untouched):
      a vector; ``return x;`` in a function returning a vector likewise.
   4. Casts ``(float3)x`` -> ``vec3(x)``.
   5. HLSL semantics after a member or parameter (``float4 color : COLOR;``) dropped.
+  6. ``pow`` -> ``pbr_unity_pow`` (cg_compat.glsl: HLSL's pow(float3, 2.2) promotes the
+     scalar; GLSL neither has that overload nor lets a shader overload a built-in).
 """
 
 from __future__ import annotations
@@ -111,6 +113,7 @@ def port_code(code: str, shader: M.SurfaceShader) -> str:
     code = _rename_types(code)
     code = re.sub(r"(\w)\s*:\s*[A-Z][A-Z_]*\d*\s*(?=[;,)])", r"\1", code)
     code = re.sub(r"\binline\s+", "", code)
+    code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
     code = _globals_uniform(code)
