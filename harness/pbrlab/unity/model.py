@@ -106,6 +106,8 @@ class SurfaceShader:
     declared: frozenset = frozenset()  # global names the program declares itself
     state: RenderState = field(default_factory=RenderState)
     warnings: list = field(default_factory=list)
+    language: str = "hlsl"          # the program's language: "hlsl" (Cg/HLSL, as in Unity) or
+                                    # "glsl" (a port-unity port)
 
     def uv_members(self):
         """[(member, uv set index 1..4, texture name)] of the Input."""

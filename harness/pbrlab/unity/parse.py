@@ -18,6 +18,8 @@ from pathlib import Path
 from ..errors import PbrlabError
 from . import model as M
 
+PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
+
 
 class UnityShaderError(PbrlabError):
     """A Unity shader the front end cannot run as Unity would; the message says where."""
@@ -241,7 +243,10 @@ def _members(body: str):
 
 def _component_count(kind: str) -> int:
     m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float)([234]?)", kind)
-    return _SIZE[m.group(1)] if m else 0
+    if m:
+        return _SIZE[m.group(1)]
+    m = re.fullmatch(r"[iub]?vec([234])", kind)  # a port-unity port's GLSL types
+    return int(m.group(1)) if m else (1 if kind in ("float", "int", "uint", "bool") else 0)
 
 
 def _lighting(masked: str, model: str, where) -> M.LightingFunction:
@@ -377,8 +382,19 @@ def _top_level(masked: str) -> str:
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
     masked = _blank_comments(text)
     starts = [m for m in re.finditer(r"\b(CGPROGRAM|HLSLPROGRAM|GLSLPROGRAM)\b", masked)]
-    if not starts:  # bare CGPROGRAM text
-        return parse_program(text, path, 1)
+    if not starts:  # bare CGPROGRAM text, or a port-unity port (its //@ lines: Properties, state)
+        shader = parse_program(text, path, 1)
+        if text.startswith(PORT_MARKER):
+            shader.language = "glsl"
+            for number, line in enumerate(text.splitlines(), start=1):
+                where = f"{path}:{number}"
+                if line.startswith("//@property "):
+                    prop = _property(line[len("//@property "):], where)
+                    shader.properties[prop.name] = prop
+                elif line.startswith("//@state "):
+                    state = " " * len("//@state ") + line[len("//@state "):]
+                    _pass_state(state, (0, 0), path, shader)
+        return shader
     if starts[0].group(1) != "CGPROGRAM":
         raise UnityShaderError(f"{path}:{_line_of(text, starts[0].start())}: {starts[0].group(1)} is not "
                                "supported: write the surface shader in a CGPROGRAM block")

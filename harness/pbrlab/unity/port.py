@@ -131,5 +131,35 @@ def port_program(shader: M.SurfaceShader) -> str:
     return code
 
 
+PORT_MARKER = "// pbrlab port-unity:"
+
+
+def _property_line(prop: M.Property) -> str:
+    attrs = "".join(f"[{a}] " for a in prop.attributes)
+    kind = f"Range({prop.range[0]:g}, {prop.range[1]:g})" if prop.kind == "Range" else prop.kind
+    if prop.is_texture:
+        default = f'"{prop.default}" {{}}'
+    elif isinstance(prop.default, tuple):
+        default = "(" + ", ".join(f"{x:g}" for x in prop.default) + ")"
+    else:
+        default = f"{prop.default:g}"
+    return f'//@property {attrs}{prop.name} ("{prop.display}", {kind}) = {default}'
+
+
+def port_file(shader: M.SurfaceShader) -> str:
+    """The text ``pbrlab port-unity`` writes: a header, the Properties and pass state as
+    ``//@property`` / ``//@state`` lines (the front end reads them back), and the renamed
+    program. A material's ``surface`` may name it for the GLSL path."""
+    lines = [f"{PORT_MARKER} GLSL port of {shader.path.name} (\"{shader.name}\"); regenerate with",
+             f"//   pbrlab port-unity {shader.path.name} -o {shader.path.stem}.glsl",
+             "// Needs unity_compat/cg_compat.glsl and the pbr/unity/ includes (the harness adds them).",
+             *(_property_line(p) for p in shader.properties.values())]
+    if shader.state.cull != "back":
+        lines.append(f"//@state Cull {shader.state.cull.capitalize()}")
+    if shader.state.zwrite is not None:
+        lines.append(f"//@state ZWrite {'On' if shader.state.zwrite else 'Off'}")
+    return "\n".join(lines) + "\n" + port_program(shader).strip("\n") + "\n"
+
+
 def _placeholder(i: int) -> str:
     return f"__PBRLAB_KEEP_{i}__"

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import hlsl, shaders
+from ..errors import PbrlabError
 from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
 from . import generate, port
@@ -39,6 +40,13 @@ SPECCUBE_HDR = (1.0, 1.0, 0.0, 0.0)
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
     """(text, include dirs) of the fragment program."""
     dirs = [TEMPLATES, CGINC, shader.path.parent]
+    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
+        if language == "hlsl":
+            raise PbrlabError(f"surface {shader.path}: a port-unity GLSL port renders only in GLSL; "
+                              "for --language hlsl name the original .shader file")
+        text = generate.fragment_source(shader, "glsl", stem, f'#include "{shader.path.name}"',
+                                        shader.path.name, defines)
+        return text, dirs + [shader.path.parent]
     if language == "hlsl":
         return generate.fragment_source(shader, "hlsl", stem, shader.program, shader.path.name, defines), dirs
     ported = _PORTS / f"{abs(hash((str(shader.path), shader.program)))}" / (shader.path.stem + ".glsl")
@@ -61,7 +69,7 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
             glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
             glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
         return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
-    ported = dirs[-1] / (shader.path.stem + ".glsl")
+    ported = dirs[-1] / (shader.path.name if shader.language == "glsl" else shader.path.stem + ".glsl")
     text = generate.vertex_source(shader, "glsl", f'#include "{ported.name}"', ported.name, defines)
     return shaders.expand(text, display, include_dirs=dirs)
 
