@@ -424,3 +424,46 @@ def test_lecture_diy_gamma_matches_the_hardware_srgb_path(language, tmp_path):
     print(f"DIY pow 2.2 vs hardware sRGB: predicted {predicted:.0f} codes, measured {measured} codes")
     assert predicted >= 1  # the two curves do differ on this image
     assert measured <= predicted + 1
+
+
+def test_bare_cgprogram_text_renders_like_its_shader(tmp_path):
+    """A surface may be the CGPROGRAM alone (no ShaderLab): the same program, same image."""
+    text = (MANUAL / "simple_specular.shader").read_text()
+    body = text.split("CGPROGRAM", 1)[1].split("ENDCG", 1)[0]
+    (tmp_path / "simple_specular.cginc").write_text(body)
+    for language in LANGUAGES:
+        a = _render(str(tmp_path / "simple_specular.cginc"), language)
+        b = _render("simple_specular.shader", language)
+        assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("alpha, mode", [("alpha:fade", "fade"), ("alpha:premul", "transparent"),
+                                         ("alphatest:_Cutoff", "cutout")])
+def test_alpha_options_set_the_alpha_mode(alpha, mode, tmp_path):
+    text = (MANUAL / "standard_template.shader").read_text().replace("fullforwardshadows", alpha)
+    text = text.replace('_Metallic ("Metallic", Range(0,1)) = 0.0',
+                        '_Metallic ("Metallic", Range(0,1)) = 0.0\n        _Cutoff ("Cutoff", Range(0,1)) = 0.5')
+    (tmp_path / "a.shader").write_text(text)
+    s = _scene(str(tmp_path / "a.shader"), properties={"_Color": [1, 1, 1, 0.3]})
+    assert s.materials["m"].alpha_mode == mode
+    got = render.render_scene(s).linear
+    covered = got[..., 3] > 0
+    if mode == "cutout":  # alpha 0.3 < _Cutoff 0.5: clipped everywhere
+        assert not covered.any()
+    else:  # blended: coverage alpha below 1
+        assert covered.any() and got[..., 3][covered].max() < 0.999
+
+
+def test_full_program_renders_unity_shaders_like_the_specialised_one():
+    s = _scene("final_color.shader", environment={"color": [0.2, 0.3, 0.4]})
+    a = render.render_scene(s).linear
+    b = render.render_scene(_scene("final_color.shader", environment={"color": [0.2, 0.3, 0.4]}),
+                            specialise=False).linear
+    assert np.array_equal(a, b)
+
+
+def test_unity_material_rejects_default_surface_fields():
+    with pytest.raises(scene.SceneError, match=r"materials\.m\.smoothness: a Unity surface shader's material takes"):
+        scene.parse_scene({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, "lights": [],
+                           "materials": {"m": {"surface": "simple.shader", "smoothness": 0.5}},
+                           "objects": []}, "<test>", MANUAL)

@@ -379,7 +379,23 @@ def _top_level(masked: str) -> str:
     return "".join(out)
 
 
+def _implicit_texture_properties(shader: M.SurfaceShader) -> None:
+    """A sampler the program declares without a Properties line still gets a texture, as in
+    Unity (its default, white here; a samplerCUBE the environment) and _ST (1, 1, 0, 0)."""
+    masked = _top_level(_blank_comments(shader.program))
+    for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + _IDENT + r")\s*;", masked):
+        if name not in shader.properties:
+            shader.properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
+                                                 ("implicit",))
+
+
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
+    shader = _parse_text(text, path)
+    _implicit_texture_properties(shader)
+    return shader
+
+
+def _parse_text(text: str, path: Path) -> M.SurfaceShader:
     masked = _blank_comments(text)
     starts = [m for m in re.finditer(r"\b(CGPROGRAM|HLSLPROGRAM|GLSLPROGRAM)\b", masked)]
     if not starts:  # bare CGPROGRAM text, or a port-unity port (its //@ lines: Properties, state)

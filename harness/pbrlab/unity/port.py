@@ -153,7 +153,7 @@ def port_file(shader: M.SurfaceShader) -> str:
     lines = [f"{PORT_MARKER} GLSL port of {shader.path.name} (\"{shader.name}\"); regenerate with",
              f"//   pbrlab port-unity {shader.path.name} -o {shader.path.stem}.glsl",
              "// Needs unity_compat/cg_compat.glsl and the pbr/unity/ includes (the harness adds them).",
-             *(_property_line(p) for p in shader.properties.values())]
+             *(_property_line(p) for p in shader.properties.values() if "implicit" not in p.attributes)]
     if shader.state.cull != "back":
         lines.append(f"//@state Cull {shader.state.cull.capitalize()}")
     if shader.state.zwrite is not None:
