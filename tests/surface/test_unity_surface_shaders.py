@@ -172,8 +172,11 @@ def test_properties_are_validated_with_the_field_named():
 def test_unknown_pragma_options_are_warned_not_dropped(tmp_path):
     text = (MANUAL / "simple.shader").read_text().replace("surf Lambert", "surf Lambert sparkle decal:add")
     (tmp_path / "x.shader").write_text(text)
-    with pytest.warns(UnityShaderWarning, match="'sparkle' is not supported"):
+    with pytest.warns(UnityShaderWarning) as record:
         _scene(str(tmp_path / "x.shader"))
+    messages = [str(w.message) for w in record]
+    assert any("x.shader:6: #pragma surface option 'sparkle' is not supported" in m for m in messages), messages
+    assert any("'decal:add'" in m for m in messages)
 
 
 def test_broken_shaders_fail_with_file_and_line(tmp_path):

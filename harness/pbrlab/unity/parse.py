@@ -157,7 +157,7 @@ def _pass_state(masked: str, program_span, path: Path, shader: M.SurfaceShader) 
 
 # --- CGPROGRAM ---------------------------------------------------------------------------
 
-def _pragma(program: str, where) -> M.Pragma:
+def _pragma(program: str, where) -> tuple:
     found = list(re.finditer(r"^[ \t]*#[ \t]*pragma[ \t]+surface[ \t]+(\w+)[ \t]+(\w+)([^\n]*)$", program, re.M))
     if not found:
         raise UnityShaderError(f"{where(0)}: no '#pragma surface <function> <LightingModel>' line: "
@@ -184,7 +184,7 @@ def _pragma(program: str, where) -> M.Pragma:
             unsupported.append(option)
     pragma.accepted = tuple(accepted)
     pragma.unsupported = tuple(unsupported)
-    return pragma
+    return pragma, m.start()
 
 
 def _function(masked: str, name: str):
@@ -290,13 +290,13 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + _line_of(program, index)}"
 
-    pragma = _pragma(masked, where)
+    pragma, pragma_at = _pragma(masked, where)
     if shader is None:
         shader = M.SurfaceShader(path=path, name=name or path.stem, program=program,
                                  program_line=first_line, pragma=pragma)
     shader.program, shader.program_line, shader.pragma = program, first_line, pragma
     for option in pragma.unsupported:
-        shader.warnings.append(f"{where(0)}: #pragma surface option {option!r} is not supported "
+        shader.warnings.append(f"{where(pragma_at)}: #pragma surface option {option!r} is not supported "
                                "by pbrlab and has no effect")
     # The surface function and the output struct it fills.
     found = _function(masked, pragma.function)
