@@ -470,3 +470,14 @@ def test_unity_material_rejects_default_surface_fields():
         scene.parse_scene({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, "lights": [],
                            "materials": {"m": {"surface": "simple.shader", "smoothness": 0.5}},
                            "objects": []}, "<test>", MANUAL)
+
+
+def test_example_scene_renders_alike_in_both_languages():
+    """scenes/unity_manual/scene.json: six Unity materials on spheres, a tessellated sphere,
+    a torus and a floor, with lights and an environment."""
+    s = scene.load_scene(MANUAL / "scene.json")
+    s.camera.size = (160, 100)
+    a = render.render_scene(s, language="hlsl").linear
+    b = render.render_scene(scene.load_scene(MANUAL / "scene.json"), size=(160, 100), language="glsl").linear
+    assert np.isfinite(a).all() and (a[..., 3] > 0).mean() > 0.3
+    assert np.abs(a - b).max() <= LANGUAGE_BOUND
