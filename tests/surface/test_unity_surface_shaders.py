@@ -25,6 +25,11 @@ LANGUAGES = ("hlsl", "glsl")
 # (glslang folds 1/2.2 in double, Mesa in float32: the library writes such constants out for
 # that reason, README "HLSL"); bound 1e-6 absolute.
 LANGUAGE_BOUND = 1e-6
+# ... and where a vertex: function runs, the two vertex stages (HLSL mul(M, v) vs GLSL M * v,
+# fused differently by Mesa) place vertices a few ulp apart, which moves interpolated values:
+# measured 9.6e-6 relative to the image's peak (scenes/unity_manual/scene.json, the extruded
+# sphere); bound 5e-5 relative.
+VERTEX_STAGE_BOUND = 5e-5
 # float32 GPU vs float64 reference on a ray-traced unit sphere (normal from one rsqrt, ray
 # direction normalised on the GPU; radiance up to 2.4): measured worst 7.7e-6 (SimpleSpecular's
 # pow 48 near the highlight); bound 1e-4 absolute, 13x the measurement, 40x below one 8-bit
@@ -75,7 +80,8 @@ def test_every_manual_shader_renders_the_same_in_hlsl_and_glsl(name):
     a, b = _render(name, "hlsl", **kw), _render(name, "glsl", **kw)
     assert np.isfinite(a).all() and (a[..., 3] > 0).sum() > 100, name
     assert np.array_equal(a[..., 3] > 0, b[..., 3] > 0), f"{name}: coverage differs"
-    assert np.abs(a - b).max() <= LANGUAGE_BOUND, (name, float(np.abs(a - b).max()))
+    bound = VERTEX_STAGE_BOUND * np.abs(a).max() if "vertex:" in (MANUAL / name).read_text() else LANGUAGE_BOUND
+    assert np.abs(a - b).max() <= bound, (name, float(np.abs(a - b).max()))
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -480,4 +486,4 @@ def test_example_scene_renders_alike_in_both_languages():
     a = render.render_scene(s, language="hlsl").linear
     b = render.render_scene(scene.load_scene(MANUAL / "scene.json"), size=(160, 100), language="glsl").linear
     assert np.isfinite(a).all() and (a[..., 3] > 0).mean() > 0.3
-    assert np.abs(a - b).max() <= LANGUAGE_BOUND
+    assert np.abs(a - b).max() <= VERTEX_STAGE_BOUND * np.abs(a).max()
