@@ -11,7 +11,9 @@ vertex stage. Unity's stand-in ``.cginc`` files (``cginc/``) resolve the shader'
 
 from __future__ import annotations
 
+import atexit
 import re
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -28,7 +30,9 @@ from .properties import TextureValue
 CGINC = Path(__file__).parent / "cginc"
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 _PROGRAMS: dict = {}
+# The GLSL path's in-memory ports, written where the include resolver finds them; removed at exit.
 _PORTS = Path(tempfile.mkdtemp(prefix="pbrlab-unity-ports-"))
+atexit.register(shutil.rmtree, _PORTS, ignore_errors=True)
 # Unity's _SpecColor when a shader's Properties lack it: Unity's legacy shaders' default
 # ("Specular Color", Color) = (0.5, 0.5, 0.5, 1).
 DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
