@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -401,6 +402,19 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     return obj
 
 
+def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
+    """A Unity shader's Cull Front/Off is applied to meshes; a ray-traced sphere shows its
+    front surface only (a sphere whose shader has a vertex: function is a mesh)."""
+    for i, obj in enumerate(objects):
+        shader = materials[obj.material].unity
+        if obj.sphere is not None and shader is not None and shader.vertex is None \
+                and shader.state.cull != "back":
+            warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
+                          "is not applied to a ray-traced sphere (its front surface only); use a mesh "
+                          "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
+                          unity.UnityShaderWarning, stacklevel=3)
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
     base = Path(base or ".")
@@ -420,6 +434,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
         top.fail("expected a non-empty list of objects", "objects")
     objects = [_object(_Reader(o, f"objects[{i}]", origin), materials, base)
                for i, o in enumerate(objects_raw)]
+    _warn_unhonoured_cull(objects, materials, origin)
     rs = top.child("render", {})
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),

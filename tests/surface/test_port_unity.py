@@ -42,6 +42,7 @@ def test_semantics_are_dropped_and_comments_kept():
     assert "vec4 color;" in out and "// half3 stays" in out
 
 
+@pytest.mark.filterwarnings("ignore:.*Cull Off is not applied to a ray-traced sphere")
 @pytest.mark.parametrize("name", SHADERS)
 def test_port_unity_output_renders_like_the_in_memory_port(name, tmp_path, capsys):
     out = tmp_path / (Path(name).stem + ".glsl")

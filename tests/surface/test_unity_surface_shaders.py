@@ -74,6 +74,7 @@ def _light_dir():
     return l / np.linalg.norm(l)
 
 
+@pytest.mark.filterwarnings("ignore:.*Cull Off is not applied to a ray-traced sphere")
 @pytest.mark.parametrize("name", SHADERS)
 def test_every_manual_shader_renders_the_same_in_hlsl_and_glsl(name):
     kw = {"environment": {"color": [0.2, 0.3, 0.4]}}
@@ -118,6 +119,7 @@ def test_rim_is_brightest_at_the_silhouette(language):
     assert centre < 1e-3 and edge > 0.1 > centre
 
 
+@pytest.mark.filterwarnings("ignore:.*Cull Off is not applied to a ray-traced sphere")
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_clip_cuts_exactly_the_stripes(language):
     s = _scene("slices.shader")
@@ -173,6 +175,11 @@ def test_properties_are_validated_with_the_field_named():
         _scene("standard_template.shader", properties={"_Nope": 1})
     with pytest.raises(scene.SceneError, match=r"properties\._Color: expected \[r, g, b, a\]"):
         _scene("standard_template.shader", properties={"_Color": "red"})
+
+
+def test_cull_off_on_a_sphere_is_reported():
+    with pytest.warns(UnityShaderWarning, match=r"slices.shader: Cull Off is not applied to a ray-traced sphere"):
+        _scene("slices.shader")
 
 
 def test_unknown_pragma_options_are_warned_not_dropped(tmp_path):
