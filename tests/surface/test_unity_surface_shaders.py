@@ -515,3 +515,12 @@ def test_custom_gi_function_changes_the_indirect_light(language):
                   properties={"_Gain": 3.0})
     covered = got[..., 3] > 0
     assert np.abs(got[..., :3][covered] - 0.5 * 3.0 * c).max() <= 1e-5  # SH9 of a constant: float32
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_vertex_colour_set_by_the_vertex_function_reaches_input_color(language):
+    """Input.color is the vertex colour after vertex: (here abs(normal)): the same image as the
+    custom per-vertex data example, which passes abs(normal) through its own Input member."""
+    a = _render("vertex_color.shader", language)
+    b = _render("custom_vertex_data.shader", language)
+    assert np.array_equal(a, b)

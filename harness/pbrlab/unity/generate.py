@@ -54,8 +54,8 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
                 lines.append("    IN.worldRefl = reflect(-f.view, f.normal);")
         elif name == "screenPos":
             lines.append("    IN.screenPos = ComputeScreenPos(" + _mul(language, "unity_MatrixVP", "vec4(f.position, 1.0)") + ");")
-        elif name == "color":
-            lines.append("    IN.color = f.color;")
+        elif name == "color":  # the vertex colour: white on meshes here, unless vertex: sets it
+            lines.append("    IN.color = pbrlab_custom_color;" if shader.vertex else "    IN.color = f.color;")
         else:  # written by the vertex: function, interpolated (mesh entry: pbrlab_custom_*)
             lines.append(f"    IN.{name} = pbrlab_custom_{name};")
     if shader.internal_data:
@@ -245,7 +245,17 @@ def custom_varyings(shader: M.SurfaceShader, language: str):
     from .port import port_code_types
     if shader.vertex is None:
         return []
-    return [(t if language == "hlsl" else port_code_types(t), n) for t, n in shader.custom_members()]
+    members = list(shader.custom_members())
+    members += [(t, n) for t, n in shader.input_members if n == "color"]  # from v.color
+    return [(t if language == "hlsl" else port_code_types(t), n) for t, n in members]
+
+
+def _vertex_value(shader: M.SurfaceShader, member: str) -> str:
+    """What the vertex stage passes for an Input member: what vertex: wrote, or for `color`
+    (unless written) the vertex colour v.color."""
+    if member == "color" and member not in shader.vertex.writes_input:
+        return "v.color"
+    return f"o.{member}"
 
 
 def vertex_source(shader: M.SurfaceShader, language: str, program: str, display: str, defines: dict) -> str:
@@ -284,7 +294,7 @@ void main(float3 in_position : POSITION, float3 in_normal : NORMAL, float2 in_uv
     v_normal = mul(v.normal, (float3x3)unity_WorldToObject);
     v_tangent = float4(mul((float3x3)unity_ObjectToWorld, v.tangent.xyz), v.tangent.w);
     v_uv = v.texcoord.xy;
-""" + "".join(f"    v_custom_{n} = o.{n};\n" for _, n in custom) + """    position = mul(unity_MatrixVP, world);
+""" + "".join(f"    v_custom_{n} = {_vertex_value(shader, n)};\n" for _, n in custom) + """    position = mul(unity_MatrixVP, world);
 }
 """
     else:
@@ -316,7 +326,7 @@ void main() {{
     v_normal = v.normal * mat3(unity_WorldToObject);
     v_tangent = vec4(mat3(unity_ObjectToWorld) * v.tangent.xyz, v.tangent.w);
     v_uv = v.texcoord.xy;
-""" + "".join(f"    v_custom_{n} = o.{n};\n" for _, n in custom) + """    gl_Position = unity_MatrixVP * world;
+""" + "".join(f"    v_custom_{n} = {_vertex_value(shader, n)};\n" for _, n in custom) + """    gl_Position = unity_MatrixVP * world;
 }
 """
     return "\n".join(head) + "\n" + line + "\n" + program + "\n" + body
