@@ -36,10 +36,11 @@ def test_renames(hlsl, glsl):
 
 
 def test_semantics_are_dropped_and_comments_kept():
-    shader = _program("void surf (Input IN, inout SurfaceOutput o) { o.Albedo = 1; } // half3 stays",
-                      inputs="float4 color : COLOR;")
+    shader = _program("void surf (Input IN, inout SurfaceOutput o) { o.Gloss = IN.uv_MainTex.x > 0.5 ? 1.0 : UNITY_PI; }"
+                      " // half3 stays", inputs="float4 color : COLOR; float2 uv_MainTex : TEXCOORD0;")
     out = port.port_program(shader)
-    assert "vec4 color;" in out and "// half3 stays" in out
+    assert "vec4 color;" in out and "vec2 uv_MainTex;" in out and "// half3 stays" in out
+    assert "? 1.0 : UNITY_PI;" in out  # a ternary's upper-case operand is not a semantic
 
 
 @pytest.mark.filterwarnings("ignore:.*Cull Off is not applied to a ray-traced sphere")

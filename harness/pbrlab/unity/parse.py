@@ -350,8 +350,6 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
             raise UnityShaderError(f"{where(found[0].start() if found else 0)}: finalcolor:{pragma.finalcolor} "
                                    f"needs void {pragma.finalcolor}(Input IN, {shader.output_type} o, "
                                    "inout fixed4 color)")
-    if pragma.cutoff_property and not re.search(r"\b" + re.escape(pragma.cutoff_property) + r"\b", masked):
-        shader.declared = shader.declared  # declared by the generator (generate.py)
     # Input members nothing fills.
     written = set(shader.vertex.writes_input) if shader.vertex else set()
     for kind, member in shader.custom_members():

@@ -25,10 +25,14 @@ from __future__ import annotations
 import re
 
 from . import model as M
+from .parse import PORT_MARKER
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
+# HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry.
+_SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?)\d*\s*(?=[;,)])")
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 
@@ -111,7 +115,7 @@ def port_code_types(code: str) -> str:
 
 def port_code(code: str, shader: M.SurfaceShader) -> str:
     code = _rename_types(code)
-    code = re.sub(r"(\w)\s*:\s*[A-Z][A-Z_]*\d*\s*(?=[;,)])", r"\1", code)
+    code = _SEMANTIC.sub(r"\1", code)
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
@@ -123,15 +127,12 @@ def port_code(code: str, shader: M.SurfaceShader) -> str:
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM with the renames, line for line (comments kept)."""
     segments = _code_segments(shader.program)
-    code = "".join(t if is_code else "\0" * 0 + _placeholder(i) for i, (is_code, t) in enumerate(segments))
+    code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = port_code(code, shader)
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)
     return code
-
-
-PORT_MARKER = "// pbrlab port-unity:"
 
 
 def _property_line(prop: M.Property) -> str:
