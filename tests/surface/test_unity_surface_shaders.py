@@ -424,7 +424,7 @@ def test_lecture_diy_gamma_matches_the_hardware_srgb_path(language, tmp_path):
     hw_scene = _scene(str(tmp_path / "hardware.shader"), properties={"_MainTex": {"path": path, "srgb": True}},
                       lights=lights)
     diy = render.render_scene(diy_scene, language=language)
-    hardware = render.render_scene(hw_scene, language=language)
+    hardware = render.render_scene(hw_scene, language=language, transfer="HARDWARE")
     hit, n, v = _geometry(diy_scene)
     hit = hit & (diy.linear[..., 3] > 0)
     # float64 model of each path (Lighting.cginc's BlinnPhong, the lecture's curves, IEC 61966-2-1)
