@@ -15,7 +15,7 @@ import sys
 from .errors import PbrlabError
 from .gl import BACKENDS
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench")
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -27,7 +27,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="pbrlab", description="Render, evaluate and verify the pbrlab shading library.")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name in COMMANDS:
-        importlib.import_module(f"pbrlab.commands.{name}").register(sub, common)
+        importlib.import_module(f"pbrlab.commands.{name.replace('-', '_')}").register(sub, common)
     return parser
 
 

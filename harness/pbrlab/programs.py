@@ -132,8 +132,8 @@ def _uniforms(program, name):
     if loose is not None:
         found.append((loose, False))
     member = (getattr(program, "extra", None) or {}).get("members", {}).get(name)
-    if member is not None:
-        found.append((program[member], True))
+    for gl_name in [member] if isinstance(member, str) else (member or []):  # one per HLSL stage
+        found.append((program[gl_name], True))
     return found
 
 

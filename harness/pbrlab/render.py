@@ -17,6 +17,9 @@ import numpy as np
 
 from . import features, gl, ibl, meshes, resource_cache, targets
 from . import srgb8 as srgb8_codes
+from .unity import cubemap as unity_cubemap
+from .unity import program as unity_program
+from .unity import tessellate as unity_tessellate
 from .camera import camera_frame
 from .errors import SceneError
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
@@ -197,7 +200,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if scene.camera.ortho_half_height is not None and scene.spheres:
         raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
     mesh_fragment = mesh_fragment or fragment_template("mesh", language)
-    surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
+    surfaces = {name: surface_file(m.surface, language) if m.unity is None else None
+                for name, m in scene.materials.items()}
     ctx = gl.make_current(ctx or gl.shared_context())
     if size is not None:
         scene.camera.size = tuple(size)
@@ -206,6 +210,14 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
     w, h = frame.size
     resources = _SceneResources(ctx, scene, full=not plan.specialised)
+    cube_holder = []
+
+    def environment_cube():  # made once per render, only if a shader samples a cube
+        if not cube_holder:
+            cube_holder.append(unity_cubemap.environment_cube(ctx, scene.environment))
+        return cube_holder[0]
+
+    resources.environment_cube = environment_cube
     cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
     cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
     try:
@@ -225,8 +237,12 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
+                if material.unity is not None and material.unity.state.zwrite is not None:
+                    hdr.fbo.depth_mask = material.unity.state.zwrite  # the shader's ZWrite line
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
-                if obj.sphere is not None:
+                if obj.sphere is not None and material.unity is not None and material.unity.vertex is not None:
+                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources)  # tessellated
+                elif obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
                     _draw_mesh(ctx, obj, material, shading, scene, frame, resources)
@@ -237,15 +253,29 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     finally:
         cube_vbo.release()
         cube_ibo.release()
+        for cube in cube_holder:
+            cube.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
+
+
+def _program(ctx, stem, material, shading, scene, frame, resources, obj):
+    """The object's program, bound: the harness's surface path or a Unity surface shader's."""
+    defines, surface, language, mesh_fragment = shading
+    if material.unity is not None:
+        program = unity_program.build_program(ctx, material.unity, language, stem, defines)
+        resources.bind(program, scene, frame, material)
+        unity_program.bind(program, material, obj, frame, resources.cache, resources.environment_cube,
+                           _SceneResources.FIRST_MATERIAL_UNIT)
+        return program
+    fragment = mesh_fragment if stem == "mesh" else fragment_template(stem, language)
+    program = program_from_templates(ctx, f"{stem}.vert", fragment, defines, surface)
+    resources.bind(program, scene, frame, material)
+    return program
 
 
 def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    defines, surface, language, _ = shading
-    program = program_from_templates(ctx, "sphere.vert", fragment_template("sphere", language),
-                                     defines, surface)
-    resources.bind(program, scene, frame, material)
+    program = _program(ctx, "sphere", material, shading, scene, frame, resources, obj)
     centre, radius = obj.sphere
     _set(program, "u_sphere", (*centre, radius))
     inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
@@ -261,19 +291,24 @@ def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo,
 
 
 def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
-    defines, surface, language, fragment = shading
-    program = program_from_templates(ctx, "mesh.vert", fragment, defines, surface)
-    resources.bind(program, scene, frame, material)
+    program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj)
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
     _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
+    cull = material.unity.state.cull if material.unity is not None else None
     two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
-    if two_sided:
-        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended) or glTF doubleSided
+    if cull in ("front", "back"):  # a Unity shader's Cull line
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = cull
+    elif two_sided or cull == "off":
+        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended), glTF doubleSided, Cull Off
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"
-    vao, buffers = meshes.vertex_array(ctx, program, obj)
+    if obj.sphere is not None:  # a sphere whose surface shader moves vertices
+        vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
+    else:
+        vao, buffers = meshes.vertex_array(ctx, program, obj)
     vao.render(moderngl.TRIANGLES)
     for resource in [vao, *buffers]:
         resource.release()

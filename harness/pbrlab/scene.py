@@ -30,11 +30,13 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
+from . import unity
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -116,6 +118,9 @@ class Material:
     occlusion_strength: float = 1.0
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
+    unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
+                                 # `surface` is one (.shader, or text with #pragma surface)
+    properties: dict = field(default_factory=dict)  # its Properties' values (unity.properties)
 
 
 @dataclass
@@ -302,6 +307,12 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
     if r.has("surface"):
         m.surface = r.file("surface", base)
+    if m.surface is not None and unity.is_unity_surface(m.surface):
+        _unity_material(r, m, base)
+        return m
+    if r.has("properties"):
+        r.fail("properties belong to a Unity surface shader (a .shader file or text with "
+               "#pragma surface) named by `surface`", "properties")
     textures = r.child("textures", {})
     for name in list(textures.data):
         value = textures.data[name]
@@ -334,6 +345,30 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     brdf.finish()
     r.finish()
     return m
+
+
+def _unity_material(r: _Reader, m: Material, base: Path) -> None:
+    """A material whose surface is a Unity surface shader: its Properties, overridden by
+    `properties`; alpha mode and cutoff from its #pragma surface (harness/pbrlab/unity/)."""
+    try:
+        m.unity = unity.load_shader(m.surface)
+    except unity.UnityShaderError as exc:
+        r.fail(str(exc), "surface")
+    for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
+                "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow"):
+        if r.has(key):
+            r.fail(f"a Unity surface shader's material takes its values from `properties` "
+                   f"(the shader's Properties) and its alpha mode from #pragma surface; "
+                   f"remove `{key}`", key)
+    m.properties = unity.resolve_properties(m.unity, r.raw("properties", {}), base,
+                                            f"{r.origin}: {r.path.lstrip('.')}.properties")
+    m.alpha_mode = m.unity.pragma.alpha_mode
+    m.workflow = "specular" if m.unity.output_type == "SurfaceOutputStandardSpecular" else "metallic"
+    cutoff = m.unity.pragma.cutoff_property
+    if cutoff is not None:
+        value = m.properties.get(cutoff)
+        m.alpha_cutoff = float(value) if isinstance(value, float) else 0.5
+    r.finish()
 
 
 def _transform(r: _Reader) -> np.ndarray:
@@ -423,6 +458,19 @@ def _gltf_subscene(r: _Reader, base: Path):
     return objects, materials, sub.scene.lights, camera
 
 
+def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
+    """A Unity shader's Cull Front/Off is applied to meshes; a ray-traced sphere shows its
+    front surface only (a sphere whose shader has a vertex: function is a mesh)."""
+    for i, obj in enumerate(objects):
+        shader = materials[obj.material].unity
+        if obj.sphere is not None and shader is not None and shader.vertex is None \
+                and shader.state.cull != "back":
+            warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
+                          "is not applied to a ray-traced sphere (its front surface only); use a mesh "
+                          "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
+                          unity.UnityShaderWarning, stacklevel=3)
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
     base = Path(base or ".")
@@ -453,6 +501,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
             objects.append(_object(_Reader(o, f"objects[{i}]", origin), materials, base))
     if camera is None:
         top.fail("is required (or a gltf object with a camera)", "camera")
+    _warn_unhonoured_cull(objects, materials, origin)
     rs = top.child("render", {})
     render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
                             tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),

@@ -46,6 +46,14 @@ STRUCT_BUILDERS = {
 STRUCT_BUILDERS["UnityGI"] = STRUCT_BUILDERS["pbr_GI"]
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
 STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
+STRUCT_BUILDERS["SurfaceOutput"] = ("test_surface_legacy", (
+    ("vec3", "albedo"), ("vec3", "normal"), ("vec3", "emission"), ("float", "specular"), ("float", "gloss"),
+    ("float", "alpha")))
+STRUCT_BUILDERS["UnityGIInput"] = ("test_gi_input", (
+    ("vec3", "lightColor"), ("vec3", "lightDir"), ("vec3", "worldPos"), ("vec3", "viewDir"), ("float", "atten"),
+    ("vec3", "ambient")))
+STRUCT_BUILDERS["Unity_GlossyEnvironmentData"] = ("test_glossy_environment", (("float", "roughness"),
+                                                                              ("vec3", "dir")))
 
 # Functions with out parameters or array parameters: evaluated through wrappers.
 SPECIAL = {
@@ -57,6 +65,20 @@ SPECIAL = {
         ("test_EnergyConservationBetweenDiffuseAndSpecular", (("vec3", "albedo"), ("vec3", "specColor")))],
     "PreMultiplyAlpha": [("test_PreMultiplyAlpha", (("vec3", "diffColor"), ("float", "alpha"),
                                                      ("float", "oneMinusReflectivity")))],
+    # pbr/unity/global_illumination: struct results and inout UnityGI, through wrappers
+    "UnityGlossyEnvironmentSetup": [("test_UnityGlossyEnvironmentSetup", (
+        ("float", "smoothness"), ("vec3", "viewDir"), ("vec3", "normal"), ("vec3", "fresnel0")))],
+    "UnityGlobalIllumination": [
+        ("test_UnityGlobalIllumination", (("UnityGIInput", "data"), ("float", "occlusion"), ("vec3", "normal"))),
+        ("test_UnityGlobalIllumination_indirect", (("UnityGIInput", "data"), ("float", "occlusion"),
+                                                   ("vec3", "normal"))),
+        ("test_UnityGlobalIllumination_gloss", (("UnityGIInput", "data"), ("float", "occlusion"), ("vec3", "normal"),
+                                                ("Unity_GlossyEnvironmentData", "glossIn")))],
+    # (the inout gi is overwritten by every _GI function: the wrapper starts it at ones)
+    **{f"Lighting{model}_GI": [(f"test_Lighting{model}_GI", ((output, "s"), ("UnityGIInput", "data")))]
+       for model, output in (("Standard", "SurfaceOutputStandard"),
+                             ("StandardSpecular", "SurfaceOutputStandardSpecular"),
+                             ("Lambert", "SurfaceOutput"), ("BlinnPhong", "SurfaceOutput"))},
 }
 
 # What the non-default configurations change: the dispatchers and everything above them.

@@ -1,7 +1,11 @@
 // pbrlab_test/wrappers.glsl: what the evaluator (one expression over float and vector
 // inputs) needs to call the library functions that take arrays, structs or out parameters.
 //
-// Provides: test_light, test_indirect, test_gi, test_surface, test_surface_specular (struct builders), test_sh9_irradiance,
+// Provides: test_gi, test_surface, test_surface_specular, test_light, test_indirect,
+//           test_surface_legacy, test_gi_input, test_glossy_environment (struct builders),
+//           test_sh9_irradiance,
+//           test_UnityGlossyEnvironmentSetup, test_UnityGlobalIllumination[_gloss][_indirect],
+//           test_Lighting*_GI (the pbr/unity/ functions with struct results or inout GI),
 //           test_DiffuseAndSpecularFromMetallic[_specColor],
 //           test_EnergyConservationBetweenDiffuseAndSpecular, test_PreMultiplyAlpha.
 // Include:  "pbrlab_test/wrappers.glsl" (path relative to tests/hlsl/wrappers/)
@@ -14,6 +18,8 @@
 
 #include "pbr/pbr.glsl"
 #include "pbr/unity/surface_standard.glsl"
+#include "pbr/unity/unity_cg.glsl"
+#include "pbr/unity/global_illumination.glsl"
 
 pbr_Light test_light(vec3 lightColor, vec3 lightDir) {
     pbr_Light light;
@@ -104,6 +110,87 @@ vec4 test_PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivi
     float outModifiedAlpha;
     vec3 c = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outModifiedAlpha);
     return vec4(c, outModifiedAlpha);
+}
+
+SurfaceOutput test_surface_legacy(vec3 albedo, vec3 normal, vec3 emission, float specular,
+                                  float gloss, float alpha) {
+    SurfaceOutput s;
+    s.Albedo = albedo;
+    s.Normal = normal;
+    s.Emission = emission;
+    s.Specular = specular;
+    s.Gloss = gloss;
+    s.Alpha = alpha;
+    return s;
+}
+
+UnityGIInput test_gi_input(vec3 lightColor, vec3 lightDir, vec3 worldPos, vec3 viewDir, float atten,
+                           vec3 ambient) {
+    UnityGIInput data;
+    data.light.color = lightColor;
+    data.light.dir = lightDir;
+    data.worldPos = worldPos;
+    data.worldViewDir = viewDir;
+    data.atten = atten;
+    data.ambient = ambient;
+    return data;
+}
+
+Unity_GlossyEnvironmentData test_glossy_environment(float roughness, vec3 dir) {
+    Unity_GlossyEnvironmentData g;
+    g.roughness = roughness;
+    g.reflUVW = dir;
+    return g;
+}
+
+vec4 test_UnityGlossyEnvironmentSetup(float smoothness, vec3 viewDir, vec3 normal, vec3 fresnel0) {
+    Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(smoothness, viewDir, normal, fresnel0);
+    return vec4(g.reflUVW, g.roughness);
+}
+
+vec4 test_gi_light(UnityGI gi) {
+    return vec4(gi.light.color, gi.light.dir.x + gi.light.dir.y + gi.light.dir.z);
+}
+
+vec4 test_gi_indirect(UnityGI gi) {
+    return vec4(gi.indirect.diffuse, gi.indirect.specular.x + gi.indirect.specular.y + gi.indirect.specular.z);
+}
+
+vec4 test_UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normal) {
+    return test_gi_light(UnityGlobalIllumination(data, occlusion, normal));
+}
+
+vec4 test_UnityGlobalIllumination_indirect(UnityGIInput data, float occlusion, vec3 normal) {
+    return test_gi_indirect(UnityGlobalIllumination(data, occlusion, normal));
+}
+
+vec4 test_UnityGlobalIllumination_gloss(UnityGIInput data, float occlusion, vec3 normal,
+                                        Unity_GlossyEnvironmentData glossIn) {
+    return test_gi_indirect(UnityGlobalIllumination(data, occlusion, normal, glossIn));
+}
+
+vec4 test_LightingStandard_GI(SurfaceOutputStandard s, UnityGIInput data) {
+    UnityGI gi = test_gi(vec3(1.0, 1.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 1.0), vec3(1.0, 1.0, 1.0));
+    LightingStandard_GI(s, data, gi);
+    return test_gi_light(gi) + test_gi_indirect(gi);
+}
+
+vec4 test_LightingStandardSpecular_GI(SurfaceOutputStandardSpecular s, UnityGIInput data) {
+    UnityGI gi = test_gi(vec3(1.0, 1.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 1.0), vec3(1.0, 1.0, 1.0));
+    LightingStandardSpecular_GI(s, data, gi);
+    return test_gi_light(gi) + test_gi_indirect(gi);
+}
+
+vec4 test_LightingLambert_GI(SurfaceOutput s, UnityGIInput data) {
+    UnityGI gi = test_gi(vec3(1.0, 1.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 1.0), vec3(1.0, 1.0, 1.0));
+    LightingLambert_GI(s, data, gi);
+    return test_gi_light(gi) + test_gi_indirect(gi);
+}
+
+vec4 test_LightingBlinnPhong_GI(SurfaceOutput s, UnityGIInput data) {
+    UnityGI gi = test_gi(vec3(1.0, 1.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 1.0), vec3(1.0, 1.0, 1.0));
+    LightingBlinnPhong_GI(s, data, gi);
+    return test_gi_light(gi) + test_gi_indirect(gi);
 }
 
 #endif // PBRLAB_TEST_WRAPPERS_GLSL

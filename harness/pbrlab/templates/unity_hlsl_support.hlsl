@@ -1,0 +1,17 @@
+// pbrlab harness, HLSL only: Unity's Direct3D 9-style sampler names (HLSLSupport.cginc) for
+// glslang's HLSL front end, included before a surface shader's CGPROGRAM. A `sampler2D`
+// or `samplerCUBE` is a texture object; tex2D/texCUBE sample it with one shared sampler state,
+// which glslang's --auto-sampled-textures combines into each texture (the GL texture's own
+// filtering applies). Inside Unity its own definitions stand.
+#ifndef PBRLAB_UNITY_HLSL_SUPPORT
+#define PBRLAB_UNITY_HLSL_SUPPORT
+SamplerState pbrlab_unity_sampler;
+#define sampler2D Texture2D
+#define samplerCUBE TextureCube
+#define tex2D(t, uv) (t).Sample(pbrlab_unity_sampler, (uv))
+#define tex2Dlod(t, uv) (t).SampleLevel(pbrlab_unity_sampler, (uv).xy, (uv).w)
+#define tex2Dbias(t, uv) (t).SampleBias(pbrlab_unity_sampler, (uv).xy, (uv).w)
+#define tex2Dproj(t, uv) (t).Sample(pbrlab_unity_sampler, (uv).xy / (uv).w)
+#define texCUBE(t, d) (t).Sample(pbrlab_unity_sampler, (d))
+#define texCUBElod(t, d) (t).SampleLevel(pbrlab_unity_sampler, (d).xyz, (d).w)
+#endif

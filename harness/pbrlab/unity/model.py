@@ -1,0 +1,123 @@
+"""What a Unity surface shader says, as data: the parse step's output and the generate
+step's input (``parse.py`` -> this -> ``generate.py``).
+
+Nothing here reads files or writes shader code.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+# Input members Unity's surface compiler fills by name (Unity manual, "Writing Surface
+# Shaders", Input structure); uv<N>_<Texture> take the texture's _ST tiling and offset.
+FILLED_INPUTS = ("viewDir", "worldPos", "worldNormal", "worldRefl", "screenPos", "color")
+UV_PREFIXES = ("uv_", "uv2_", "uv3_", "uv4_")
+
+# Built-in lighting models: the output struct each surface function must fill.
+BUILTIN_MODELS = {
+    "Standard": "SurfaceOutputStandard",
+    "StandardSpecular": "SurfaceOutputStandardSpecular",
+    "Lambert": "SurfaceOutput",
+    "BlinnPhong": "SurfaceOutput",
+}
+# Fields of Unity's output structs (Lighting.cginc, UnityPBSLighting.cginc) and their sizes.
+OUTPUT_FIELDS = {
+    "SurfaceOutput": {"Albedo": 3, "Normal": 3, "Emission": 3, "Specular": 1, "Gloss": 1, "Alpha": 1},
+    "SurfaceOutputStandard": {"Albedo": 3, "Normal": 3, "Emission": 3, "Metallic": 1,
+                              "Smoothness": 1, "Occlusion": 1, "Alpha": 1},
+    "SurfaceOutputStandardSpecular": {"Albedo": 3, "Specular": 3, "Normal": 3, "Emission": 3,
+                                      "Smoothness": 1, "Occlusion": 1, "Alpha": 1},
+}
+
+# Lighting function forms (Unity manual, "Custom lighting models in Surface Shaders").
+FORM_GI_VIEW = "s, viewDir, gi"          # + Lighting<Name>_GI(s, UnityGIInput data, inout UnityGI gi)
+FORM_GI = "s, gi"                        # + Lighting<Name>_GI
+FORM_LIGHT_DIR = "s, lightDir, atten"
+FORM_LIGHT_VIEW_DIR = "s, lightDir, viewDir, atten"
+
+
+@dataclass
+class Property:
+    """One line of a ShaderLab ``Properties`` block."""
+    name: str
+    display: str
+    kind: str                 # Float, Range, Int, Color, Vector, 2D, Cube, 3D
+    default: object           # float, 4-tuple, or a texture default name ("white", "bump", ...)
+    attributes: tuple = ()    # e.g. ("Normal", "HDR")
+    range: tuple | None = None
+
+    @property
+    def is_texture(self) -> bool:
+        return self.kind in ("2D", "Cube", "3D")
+
+
+@dataclass
+class Pragma:
+    """``#pragma surface <function> <Model> [options]``."""
+    function: str
+    model: str
+    vertex: str | None = None
+    finalcolor: str | None = None
+    alpha_mode: str = "opaque"      # pbrlab's names: opaque, cutout, fade, transparent
+    cutoff_property: str | None = None
+    accepted: tuple = ()            # options with no effect in this harness (no shadows, ...)
+    unsupported: tuple = ()         # options that would change the result: warned
+
+
+@dataclass
+class RenderState:
+    cull: str = "back"              # back, front, off
+    zwrite: bool | None = None      # None: the alpha mode decides
+    blend: str | None = None
+
+
+@dataclass
+class LightingFunction:
+    name: str                       # the model, without "Lighting"
+    form: str                       # one of the FORM_* constants
+    output_type: str
+    has_gi: bool
+
+
+@dataclass
+class VertexFunction:
+    name: str
+    appdata: str                    # appdata_full, appdata_base, appdata_tan or a user struct
+    writes_input: tuple = ()        # custom Input members it writes (Unity: out Input o)
+    input_param: str | None = None
+
+
+@dataclass
+class SurfaceShader:
+    path: Path
+    name: str
+    program: str                    # the CGPROGRAM text, unchanged
+    program_line: int               # its first line in the file (1-based)
+    pragma: Pragma
+    properties: dict = field(default_factory=dict)       # name -> Property
+    input_members: list = field(default_factory=list)    # [(type, name)]
+    internal_data: bool = False
+    output_type: str = "SurfaceOutputStandard"
+    output_fields: dict = field(default_factory=dict)    # field -> component count
+    writes_normal: bool = False
+    lighting: LightingFunction | None = None
+    vertex: VertexFunction | None = None
+    declared: frozenset = frozenset()  # global names the program declares itself
+    state: RenderState = field(default_factory=RenderState)
+    warnings: list = field(default_factory=list)
+    language: str = "hlsl"          # the program's language: "hlsl" (Cg/HLSL, as in Unity) or
+                                    # "glsl" (a port-unity port)
+
+    def uv_members(self):
+        """[(member, uv set index 1..4, texture name)] of the Input."""
+        out = []
+        for _, name in self.input_members:
+            for i, prefix in enumerate(UV_PREFIXES):
+                if name.startswith(prefix):
+                    out.append((name, i + 1, name[len(prefix) - 1:]))  # uv_MainTex -> _MainTex
+        return out
+
+    def custom_members(self):
+        filled = set(FILLED_INPUTS) | {m for m, _, _ in self.uv_members()}
+        return [(t, n) for t, n in self.input_members if n not in filled]

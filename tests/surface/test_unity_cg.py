@@ -1,0 +1,114 @@
+"""pbr/unity/unity_cg.glsl and lighting_legacy.glsl: Unity's helper functions against float64
+transcriptions of Unity's formulas (pbrlab.reference.unity_cg, .unity_lighting), in GLSL and in
+the generated HLSL twin (language="hlsl")."""
+
+import numpy as np
+import pytest
+
+from pbrlab import evaluate, vec3, vec4
+from pbrlab.reference import color as ref_color
+from pbrlab.reference import unity_cg as R
+from pbrlab.reference import unity_lighting as L
+
+RNG = np.random.default_rng(12)
+N = 20000
+LANGUAGES = ("glsl", "hlsl")
+INCLUDES = {"glsl": ["pbr/unity/unity_cg.glsl"], "hlsl": ["pbr/unity/unity_cg.hlsl"]}
+# float32 evaluation of short formulas on inputs in [0, 1]: a few ulp of values <= ~2; bound
+# 2e-6 absolute.
+BOUND = 2e-6
+# A rebuilt z = sqrt(1 - x^2 - y^2) is ill-conditioned where the radicand nears 0 (dz = d(r)/2z):
+# compare z^2, the radicand itself, a sum of three float32 terms <= 1: bound 4 ulp of 1.
+RADICAND_BOUND = 4.8e-7
+
+
+def _assert_normals(got, want):
+    assert np.abs(got[:, :2] - want[:, :2]).max() <= BOUND
+    assert np.abs(got[:, 2] ** 2 - want[:, 2] ** 2).max() <= RADICAND_BOUND
+
+
+def _eval(expr, language, **inputs):
+    return evaluate(expr, language=language, includes=INCLUDES[language], **inputs)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_unpack_normal_dxt5nm_and_bc5(language):
+    packed = RNG.uniform(0, 1, (N, 4))
+    packed[: N // 2, 3] = 1.0  # BC5 / RGB maps: alpha 1, x in r
+    got = _eval("vec4(UnpackNormalmapRGorAG(p), 0.0)", language, p=vec4(packed))
+    _assert_normals(got, R.unpack_normalmap_rg_or_ag(packed))
+    # DXT5nm stores x in alpha with r = 1: the swizzle recovers the same normal as BC5's (x, y)
+    xy = RNG.uniform(0.2, 0.8, (N, 2))
+    dxt5nm = np.stack([np.ones(N), xy[:, 1], np.zeros(N), xy[:, 0]], -1)
+    bc5 = np.stack([xy[:, 0], xy[:, 1], np.zeros(N), np.ones(N)], -1)
+    a = _eval("vec4(UnpackNormalmapRGorAG(p), 0.0)", language, p=vec4(dxt5nm))
+    b = _eval("vec4(UnpackNormalmapRGorAG(p), 0.0)", language, p=vec4(bc5))
+    np.testing.assert_array_equal(a, b)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_unpack_normal_with_scale_and_blend_normals(language):
+    packed = RNG.uniform(0, 1, (N, 4))
+    scale = RNG.uniform(0, 2, N)
+    got = _eval("vec4(UnpackNormalWithScale(p, s), 0.0)", language, p=vec4(packed), s=scale)
+    _assert_normals(got, R.unpack_normal_with_scale(packed, scale))
+    n1 = R.unpack_normalmap_rg_or_ag(RNG.uniform(0.1, 0.9, (N, 4)))
+    n2 = R.unpack_normalmap_rg_or_ag(RNG.uniform(0.1, 0.9, (N, 4)))
+    got = _eval("vec4(BlendNormals(a, b), 0.0)", language, a=vec3(n1), b=vec3(n2))
+    assert np.abs(got[:, :3] - R.blend_normals(n1, n2)).max() <= BOUND
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_luminance_and_unitys_gamma_fits(language):
+    c = RNG.uniform(0, 1, (N, 3))
+    got = _eval("vec4(Luminance(c), LinearRgbToLuminance(c), 0.0, 0.0)", language, c=vec3(c))
+    assert np.abs(got[:, 0] - R.luminance(c)).max() <= BOUND
+    assert np.abs(got[:, 1] - R.linear_rgb_to_luminance(c)).max() <= BOUND
+    g2l = _eval("vec4(GammaToLinearSpace(c), 0.0)", language, c=vec3(c))[:, :3]
+    l2g = _eval("vec4(LinearToGammaSpace(c), 0.0)", language, c=vec3(c))[:, :3]
+    assert np.abs(g2l - R.gamma_to_linear_space(c)).max() <= BOUND
+    assert np.abs(l2g - R.linear_to_gamma_space(c)).max() <= BOUND
+    # Unity's fits beside the exact curves: how far they are (README figures)
+    assert 1e-3 < np.abs(R.gamma_to_linear_space(c) - ref_color.srgb_to_linear(c)).max() < 5e-3
+    exact = _eval("vec4(GammaToLinearSpaceExact(c.x), LinearToGammaSpaceExact(c.y), 0.0, 0.0)", language, c=vec3(c))
+    assert np.abs(exact[:, 0] - ref_color.srgb_to_linear(c[:, 0])).max() <= BOUND
+    assert np.abs(exact[:, 1] - ref_color.linear_to_srgb(c[:, 1])).max() <= BOUND
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_decode_hdr(language):
+    data = RNG.uniform(0, 1, (N, 4))
+    instr = np.stack([RNG.uniform(0, 8, N), RNG.uniform(0.5, 2.2, N), np.zeros(N), RNG.integers(0, 2, N)], -1)
+    got = _eval("vec4(DecodeHDR(d, i), 0.0)", language, d=vec4(data), i=vec4(instr))
+    want = R.decode_hdr(data, instr)
+    assert np.abs(got[:, :3] - want).max() <= BOUND * max(1.0, np.abs(want).max())
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lambert_and_blinn_phong_are_lighting_cgincs(language, tmp_path):
+    n = RNG.normal(size=(N, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    l = RNG.normal(size=(N, 3))
+    l /= np.linalg.norm(l, axis=1, keepdims=True)
+    v = RNG.normal(size=(N, 3))
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    albedo = RNG.uniform(0, 1, (N, 3))
+    spec, gloss = RNG.uniform(0.03, 1, N), RNG.uniform(0, 1, N)
+    wrap = """#include "pbr/unity/lighting_legacy.SUFFIX"
+vec4 pbr_unity_test_lit(vec3 a, vec3 n, vec3 l, vec3 v, float sp, float gl) {
+    SurfaceOutput s; s.Albedo = a; s.Normal = n; s.Emission = vec3(0.0, 0.0, 0.0);
+    s.Specular = sp; s.Gloss = gl; s.Alpha = 1.0;
+    UnityLight light; light.color = vec3(1.0, 1.0, 1.0); light.dir = l;
+    return vec4(UnityLambertLight(s, light).r, UnityBlinnPhongLight(s, v, light).rgb);
+}
+"""
+    suffix = "glsl" if language == "glsl" else "hlsl"
+    (tmp_path / f"wrap.{suffix}").write_text(wrap.replace("SUFFIX", suffix))
+    got = evaluate("pbr_unity_test_lit(a, n, l, v, sp, gl)", language=language, includes=[f"wrap.{suffix}"],
+                   include_dirs=[tmp_path], a=vec3(albedo), n=vec3(n), l=vec3(l),
+                   v=vec3(v), sp=spec, gl=gloss)
+    lam = L.lambert(albedo, n, l, 1.0)[:, 0]
+    bp = L.blinn_phong(albedo, n, l, v, 1.0, spec[:, None], gloss[:, None], 0.5)
+    assert np.abs(got[:, 0] - lam).max() <= BOUND
+    # pow(NdotH, up to 128) in float32: relative 128 ulp at worst; bound 2e-5 abs on values <= ~1.5
+    assert np.abs(got[:, 1:] - bp).max() <= 2e-5
