@@ -26,7 +26,9 @@ shades a directional light as
 pbrlab's renderer expresses D, F, f0 and c_diff with its selectors (``specular_d: ggx``,
 ``specular_f: schlick``, the metallic workflow); two terms have no selector:
   * G with k = (r + 1)² / 8: ``specular_v: schlick_ggx`` takes k = alpha / 2;
-  * the (1 − F) weight on the diffuse: pbrlab's diffuse is unweighted;
+  * the (1 − F(VdotH)) weight on the diffuse: pbrlab couples the diffuse to the specular
+    lobe's directional albedo instead, ρ (1 − E(NdotV)) with E from the DFG table
+    (pbr/shading/energy_conservation.glsl), which this program reads as the renderer does;
 and pyrender's 0.001 additions (denominator, cosine floors) are not pbrlab's guards.
 ``render_pbrlab_terms`` therefore composes pyrender's BRDF from the library's own term
 functions (pbr_D_GGX, pbr_G_SchlickGGX + pbr_k_SchlickGGX_hotness, pbr_F_Schlick,
@@ -75,7 +77,7 @@ DEFAULT_SIZE = (288, 96)
 # The switches of render_pbrlab_terms: 1 = pyrender's term, 0 = pbrlab's renderer.
 TERM_SWITCHES = {
     "PYR_G_HOTNESS": "G's k = (r + 1)^2 / 8 (pyrender) instead of alpha / 2 (schlick_ggx)",
-    "PYR_DIFFUSE_ONE_MINUS_F": "diffuse weighted by 1 - F(VdotH)",
+    "PYR_DIFFUSE_ONE_MINUS_F": "diffuse weighted by 1 - F(VdotH) (pbrlab: rho (1 - E(NdotV)))",
     "PYR_DENOMINATOR_EPSILON": "specular denominator 4 NdotL NdotV + 0.001",
     "PYR_COSINE_FLOORS": "NdotL, |NdotV| floored at 0.001, no horizon cut",
 }
@@ -243,6 +245,8 @@ _TERMS_FRAG = """#version 330 core
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/fd_lambert.glsl"
+#include "pbr/ibl/environment_brdf.glsl"
+#include "pbr/shading/energy_conservation.glsl"
 
 #define PYR_MIN_ROUGHNESS 0.04         // mesh.frag l. 146, 331
 #define PYR_COSINE_FLOOR 0.001         // l. 244-245
@@ -254,6 +258,7 @@ uniform vec3 u_light_radiance;   // pbrlab units (pyrender's intensity / pi)
 uniform vec3 u_base_color;
 uniform float u_metallic;
 uniform float u_roughness;       // perceptual (pyrender's roughness factor)
+uniform sampler2D u_dfg_lut;     // harness/pbrlab/ibl.py dfg_lut, as the renderer binds it
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -291,8 +296,10 @@ void main() {
     float D = pbr_D_GGX(NdotH, alpha);
 #if PYR_DIFFUSE_ONE_MINUS_F
     vec3 diffuse = (vec3(1.0) - F) * diffuseColor * pbr_Fd_Lambert();
-#else
-    vec3 diffuse = diffuseColor * pbr_Fd_Lambert();
+#else  // the renderer's coupling (pbr_lighting_standard_dfg), E at its clamped NdotV
+    vec2 dfg = texture(u_dfg_lut, pbr_dfg_lut_uv(max(dot(n, v), PBR_MIN_NDOTV), roughness)).rg;
+    vec3 diffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo(f0, dfg))
+                 * pbr_Fd_Lambert();
 #endif
 #if PYR_DENOMINATOR_EPSILON
     vec3 specular = F * (G * D / (4.0 * NdotL * NdotV + PYR_SPECULAR_EPSILON));
@@ -331,7 +338,7 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     alpha = coverage. Same camera, meshes, vertex program and light units as render_scene."""
     import moderngl
 
-    from . import gl, meshes, targets
+    from . import gl, meshes, resource_cache, targets
     from .camera import camera_frame
     from .render import scene_radius
     from .scene import parse_scene
@@ -345,7 +352,8 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     frame = camera_frame(scene.camera, scene_radius(scene))
     values = {"u_camera_position": tuple(frame.position), "u_light_l": tuple(-light.direction),
               "u_light_radiance": tuple(light.color * light.intensity),
-              "u_view_proj": tuple(frame.view_proj.T.reshape(-1))}
+              "u_view_proj": tuple(frame.view_proj.T.reshape(-1)), "u_dfg_lut": 0}
+    resource_cache.context_cache(ctx).dfg().use(0)
     with targets.Target(ctx, frame.size, "f32") as hdr:
         hdr.use()
         ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)

@@ -100,10 +100,12 @@ def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"
 
 
 def specular_F(f0, VdotH, variant="SCHLICK"):
+    """pbr_specular_F: the Schlick forms take F90 = f90_from_f0(f0) (Schüler 2009 / Filament)."""
+    f90 = brdf.f90_from_f0(f0)[..., None]
     if variant == "SCHLICK":
-        return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None])
+        return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "SCHLICK_SG":
-        return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None])
+        return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "NONE":
         return np.ones(np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
     raise ValueError(variant)

@@ -18,7 +18,8 @@
 //                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
 //   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
-//                   white-furnace checks and debugging)
+//                   white-furnace checks and debugging); both Schlick forms take
+//                   F90 = pbr_f90_from_f0(f0)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //
 // The one variant mechanism of the library (pbr/common/conventions.hlsl §8): every
@@ -173,11 +174,12 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 #endif
 }
 
+// F90 follows F0 (pbr_f90_from_f0, Schüler 2009 / Filament): F0 = 0 reflects nothing.
 vec3 pbr_specular_F(vec3 f0, float VdotH) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
-    return pbr_F_Schlick(f0, VdotH);
+    return pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    return pbr_F_SchlickSG(f0, VdotH);
+    return pbr_F_SchlickSG(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((vec3)(1.0));
 #else
