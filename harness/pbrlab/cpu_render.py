@@ -103,7 +103,9 @@ def render_scene_cpu(scene) -> np.ndarray:
         r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
         NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
-        direct_diffuse = ref_surface.coupled_diffuse_color(diffuse, f0, ref_surface.specular_albedo(f0, dfg))
+        specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
+        direct_diffuse = ref_surface.coupled_diffuse_color(
+            diffuse, f0, ref_surface.specular_albedo_bound(f0, dfg, specular_f))
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,

@@ -6,6 +6,7 @@
 //           vec2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness)
 //           PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT and the table's axis constants
 //           vec3 pbr_specular_albedo(vec3 f0, vec2 dfg)
+//           vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg)
 //           vec3 pbr_energy_compensation(vec3 f0, vec2 dfg)
 //           float pbr_specular_occlusion(float NdotV, float occlusion, float alpha)
 //           float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount)
@@ -78,6 +79,22 @@ vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 // of the split sum, F90 = pbr_f90_from_f0(f0) as in the BRDF (pbr/shading/dispatch.glsl).
 vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
     return f0 * dfg.x + pbr_f90_from_f0(f0) * dfg.y;
+}
+
+// An upper bound of the albedo of the tier's own direct specular lobe, for the
+// diffuse-specular coupling of punctual lights. The table holds Schlick's weights; the
+// spherical-Gaussian Fresnel (PBR_SPECULAR_F_SCHLICK_SG, the MEDIUM tier) lies within
+// PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (f90 - f0) of Schlick at every VdotH (f_schlick.glsl), so
+// its albedo is at most f0 A + f90 B + that bound times A + B (measured without it: a white
+// F0 = 0.02 dielectric reflected 1.0025 of a direct light). The fast and separable V terms
+// have at most the albedo of the exact height-correlated V the table holds (their
+// denominators are larger, Hammon 2017 / Heitz 2014), so they need no margin.
+vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
+    vec3 albedo = pbr_specular_albedo(f0, dfg);
+#if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
+    albedo += PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (vec3(pbr_f90_from_f0(f0)) - f0) * (dfg.x + dfg.y);
+#endif
+    return albedo;
 }
 
 // Single-scattering GGX loses energy at high roughness (up to 69 % at roughness 1, see

@@ -71,11 +71,9 @@ def _panels(alpha, theta_full, theta_end):
     return edges[:-1], edges[1:]
 
 
-def split_sum_terms(mu, alpha, theta_nodes=THETA_NODES, phi_nodes=PHI_NODES):
-    """(A, B) in float64 for one mu in (0, 1] and one alpha in (0, 1]."""
-    mu, alpha = float(mu), float(alpha)
-    if not (0.0 < mu <= 1.0 and 0.0 < alpha <= 1.0):
-        raise ValueError(f"mu={mu}, alpha={alpha}: expected 0 < mu <= 1, 0 < alpha <= 1")
+def _half_vector_nodes(mu, alpha, theta_nodes, phi_nodes):
+    """Nodes (theta, phi >= 0) of the half vector over the region n.l > 0 and their weights
+    in dtheta dphi (times 2 for the mirrored phi < 0 half), with v = (sin theta_v, 0, mu)."""
     theta_v = np.arccos(mu)
     sin_v = np.sin(theta_v)
     theta_full = 0.25 * np.pi - 0.5 * theta_v
@@ -87,19 +85,44 @@ def split_sum_terms(mu, alpha, theta_nodes=THETA_NODES, phi_nodes=PHI_NODES):
     theta = lo[:, None] + (hi - lo)[:, None] * 0.5 * (1.0 - np.cos(np.pi * t_nodes))
     dtheta = (hi - lo)[:, None] * 0.5 * np.pi * np.sin(np.pi * t_nodes) * t_weights
     theta, dtheta = theta.ravel(), dtheta.ravel()
-    sin_t, cos_t = np.sin(theta), np.cos(theta)
     with np.errstate(divide="ignore", invalid="ignore"):
         c = -mu * np.cos(2 * theta) / (sin_v * np.sin(2 * theta))
     c = np.where(theta < theta_full, -1.0, np.where(np.isnan(c), 1.0, c))
     phi_max = np.arccos(np.clip(c, -1.0, 1.0))
     phi = phi_max[:, None] * p_nodes[None, :]
-    dphi = phi_max[:, None] * p_weights[None, :]
-    VdotH = sin_v * sin_t[:, None] * np.cos(phi) + mu * cos_t[:, None]
-    NdotL = 2.0 * VdotH * cos_t[:, None] - mu
+    weight = 2.0 * dtheta[:, None] * phi_max[:, None] * p_weights[None, :]
+    return theta[:, None] * np.ones_like(phi), phi, weight, sin_v
+
+
+def light_quadrature(mu, alpha, theta_nodes=THETA_NODES, phi_nodes=PHI_NODES):
+    """A quadrature over the light directions of the upper hemisphere, adapted to the GGX
+    lobe of alpha seen from v = (sqrt(1 - mu^2), 0, mu), n = +z: unit l (N, 3) and weights
+    (N,) in steradians such that int_{H2} g(l) dl ~ sum w g(l) for g symmetric about the
+    plane of n and v (isotropic BRDFs). The nodes of split_sum_terms mapped through
+    l = 2 (v.h) h - v, dl = 4 (v.h) dh."""
+    mu, alpha = float(mu), float(alpha)
+    theta, phi, weight, sin_v = _half_vector_nodes(mu, alpha, theta_nodes, phi_nodes)
+    h = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], -1)
+    v = np.array([sin_v, 0.0, mu])
+    VdotH = h @ v
+    l = 2.0 * VdotH[..., None] * h - v
+    keep = l[..., 2] > 0.0
+    return l[keep], (weight * np.sin(theta) * 4.0 * VdotH)[keep]
+
+
+def split_sum_terms(mu, alpha, theta_nodes=THETA_NODES, phi_nodes=PHI_NODES):
+    """(A, B) in float64 for one mu in (0, 1] and one alpha in (0, 1]."""
+    mu, alpha = float(mu), float(alpha)
+    if not (0.0 < mu <= 1.0 and 0.0 < alpha <= 1.0):
+        raise ValueError(f"mu={mu}, alpha={alpha}: expected 0 < mu <= 1, 0 < alpha <= 1")
+    theta, phi, weight, sin_v = _half_vector_nodes(mu, alpha, theta_nodes, phi_nodes)
+    sin_t, cos_t = np.sin(theta), np.cos(theta)
+    VdotH = sin_v * sin_t * np.cos(phi) + mu * cos_t
+    NdotL = 2.0 * VdotH * cos_t - mu
     G2 = 1.0 / (1.0 + _lambda_ggx(mu, alpha) + _lambda_ggx(NdotL, alpha))
     G2 = np.where(NdotL > 0.0, G2, 0.0)
-    # 2: the phi < 0 half, by symmetry about the plane of n and v
-    base = 2.0 * (_D_ggx(cos_t, sin_t, alpha) * sin_t * dtheta)[:, None] * dphi * G2 * VdotH / mu
+    # D V F (n.l) dl = D G2 F / (4 n.v) 4 (v.h) sin(theta) dtheta dphi
+    base = _D_ggx(cos_t, sin_t, alpha) * sin_t * weight * G2 * VdotH / mu
     fc = (1.0 - np.clip(VdotH, 0.0, 1.0)) ** 5
     return float(np.sum(base * (1.0 - fc))), float(np.sum(base * fc))
 

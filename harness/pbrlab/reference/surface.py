@@ -81,6 +81,16 @@ def specular_albedo(f0, dfg):
     return _f(f0) * _f(dfg)[..., 0:1] + f90 * _f(dfg)[..., 1:2]
 
 
+def specular_albedo_bound(f0, dfg, specular_f="SCHLICK"):
+    """pbr_specular_albedo_bound: + F_SCHLICK_SG_MAX_ABS_ERROR (f90 - f0)(A + B) for the
+    spherical-Gaussian Fresnel (its distance to Schlick's at any VdotH)."""
+    albedo = specular_albedo(f0, dfg)
+    if specular_f == "SCHLICK_SG":
+        f90 = brdf.f90_from_f0(f0)[..., None]
+        albedo = albedo + brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (f90 - _f(f0)) * (_f(dfg)[..., 0:1] + _f(dfg)[..., 1:2])
+    return albedo
+
+
 def indirect_specular_albedo(f0, dfg, energy_compensated=True):
     """Single-scattering albedo, times the compensation when it is applied."""
     albedo = specular_albedo(f0, dfg)
@@ -139,7 +149,8 @@ def lighting_standard(diffuse_color, f0, perceptual_roughness, occlusion, n, v, 
     shape (or are scalars)."""
     r = shading.clamp_perceptual_roughness(perceptual_roughness)
     NdotV = np.maximum(np.sum(_f(n) * v, axis=-1), shading.MIN_NDOTV)
-    direct_diffuse = coupled_diffuse_color(diffuse_color, f0, specular_albedo(f0, dfg))
+    specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[variants.get("quality", "HIGH")]
+    direct_diffuse = coupled_diffuse_color(diffuse_color, f0, specular_albedo_bound(f0, dfg, specular_f))
     direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, **variants)
     spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
     indirect_diffuse_color = coupled_diffuse_color(

@@ -123,7 +123,8 @@ vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg) {
 }
 
 // Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the diffuse
-// coupled to the single-scattering specular albedo. Indirect: coupled diffuse * occlusion,
+// coupled to the single-scattering specular albedo (pbr_specular_albedo_bound: the tier's
+// own lobe). Indirect: coupled diffuse * occlusion,
 // plus the split-sum specular (prefiltered radiance * directional albedo, Karis 2013) with
 // specular occlusion and, by default, multiple-scattering compensation. Occlusion darkens
 // only indirect light, as in Unity. dfg must be pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV),
@@ -133,7 +134,7 @@ vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, float perceptualRough
                                float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo(f0, dfg));
+    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo_bound(f0, dfg));
     vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
                                      directDiffuse, f0, roughness);
     vec3 specular = pbr_indirect_specular(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
