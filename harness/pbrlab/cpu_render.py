@@ -27,10 +27,11 @@ from .reference import surface as ref_surface
 
 
 def _intersect(origin, d, centre, radius):
-    """Nearest positive hit distance per ray (inf where missed); same algebra as templates/surface_pixel.inc."""
+    """Nearest positive hit distance per ray (inf where missed); the discriminant as
+    templates/surface_pixel.inc computes it (r^2 - |oc x d|^2)."""
     oc = origin - centre
     b = d @ oc
-    q = oc[None, None] - b[..., None] * d
+    q = np.cross(oc[None, None], d)  # |q|: the centre's distance from the ray
     disc = radius * radius - np.sum(q * q, axis=-1)
     h = np.sqrt(np.maximum(disc, 0.0))
     t = -b - h

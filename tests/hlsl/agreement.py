@@ -61,7 +61,8 @@ SPECIAL = {
 VARIANT_DEPENDENT = {
     "pbr_specular_D", "pbr_specular_V", "pbr_specular_F", "pbr_specular_lobe_limit", "pbr_diffuse_Fd",
     "pbr_clamp_perceptual_roughness", "pbr_brdf_standard", "pbr_shade_punctual", "pbr_env_brdf",
-    "pbr_indirect_specular", "pbr_lighting_standard", "pbr_unity_lighting", "LightingStandard",
+    "pbr_indirect_specular", "pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_lighting",
+    "LightingStandard", "pbr_specular_albedo_bound", "pbr_indirect_diffuse_color",
     "LightingStandardSpecular", "PreMultiplyAlpha", "pbr_tonemap", "pbr_decode_color_texel",
     "pbr_encode_final_color",
 }

@@ -75,8 +75,16 @@ def test_unused_effects_are_absent_from_the_specialised_source_and_uniforms(gl_c
         assert token not in text, token
     program = programs.program_from_templates(gl_context, "sphere.vert", "sphere.frag", defines)
     members = set(program)
-    assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env|dfg)", m)]
+    assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env)", m)]
     assert "u_directional_radiance" in members
+    assert "u_dfg_lut" in members  # the light's diffuse-specular coupling reads the table
+
+
+def test_a_scene_without_light_has_no_dfg_table(gl_context, tmp_path):
+    # emission only: no light, no environment, so nothing reads the DFG table
+    scene = parse_scene(one_sphere({"albedo": [0.5, 0.5, 0.5], "emission": [1, 0, 0]}, [], size=(8, 8)))
+    _, source = _programs_for(scene, specialise=True)
+    assert "u_dfg_lut" not in _preprocessed(source, tmp_path)
 
 
 def test_the_full_program_contains_every_effect(gl_context, tmp_path):

@@ -176,6 +176,11 @@ TERMS: tuple[Function, ...] = (
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, VdotH)", _a("f0:unit3 VdotH:cosine"), F, "vec3"),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
     _f("pbr_F_SchlickSG", "f0:unit3 VdotH:cosine", F),
+    Function("pbr_F_SchlickSG", "pbr_F_SchlickSG(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
+    _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
+    # shading/energy_conservation.glsl
+    _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
+    _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
     _f("pbr_F_Dielectric", "c:cosine eta:eta", F),
     # tonemap/
     _f("pbr_apply_exposure", "c:radiance3 ev:ev", COLOUR),
