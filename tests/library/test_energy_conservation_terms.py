@@ -7,6 +7,7 @@ import numpy as np
 from library_helpers import evaluate
 from pbrlab import vec2, vec3
 from pbrlab.reference import brdf as ref_brdf
+from pbrlab.reference import shading as ref_shading
 from pbrlab.reference import surface as ref_surface
 
 INCLUDES = ["pbr/pbr.glsl"]
@@ -47,10 +48,17 @@ def test_specular_albedo_coupling_and_bound_match_reference():
     f0, dfg, diffuse = (x.astype(np.float32).astype(np.float64) for x in (f0, dfg, diffuse))
     albedo = evaluate("pbr_specular_albedo(f0, dfg)", INCLUDES, f0=vec3(f0), dfg=vec2(dfg))
     np.testing.assert_allclose(albedo, ref_surface.specular_albedo(f0, dfg), rtol=2e-6, atol=1e-7)
-    for f in ("SCHLICK", "SCHLICK_SG"):
-        bound = evaluate("pbr_specular_albedo_bound(f0, dfg)", INCLUDES, f0=vec3(f0), dfg=vec2(dfg),
-                         defines={"PBR_SPECULAR_F": f"PBR_SPECULAR_F_{f}"})
+    for f in ("SCHLICK", "SCHLICK_SG", "NONE"):
+        defines = {"PBR_SPECULAR_F": f"PBR_SPECULAR_F_{f}"}
+        bound = evaluate("pbr_specular_albedo_bound(f0, dfg)", INCLUDES, f0=vec3(f0), dfg=vec2(dfg), defines=defines)
         np.testing.assert_allclose(bound, ref_surface.specular_albedo_bound(f0, dfg, f), rtol=2e-6, atol=1e-7)
+        deviation = evaluate("pbr_specular_F_deviation_bound(f0)", INCLUDES, f0=vec3(f0), defines=defines)
+        np.testing.assert_allclose(deviation, ref_shading.specular_F_deviation_bound(f0, f), rtol=2e-6, atol=1e-7)
+        # and it is a bound: |F - Schlick(f0, f90)| over a dense VdotH sweep stays within it
+        VdotH = np.linspace(0, 1, 2001)
+        fg = ref_shading.specular_F(f0[:50, None, :], VdotH[None, :], f)
+        fs = ref_brdf.F_Schlick(f0[:50, None, :], VdotH[None, :, None], ref_brdf.f90_from_f0(f0[:50])[:, None, None])
+        assert np.all(np.abs(fg - fs).max(axis=1) <= ref_shading.specular_F_deviation_bound(f0[:50], f) + 1e-12)
     spec = RNG.uniform(0, 1, (n, 3)).astype(np.float32).astype(np.float64)
     got = evaluate("pbr_coupled_diffuse_color(d, f0, e)", INCLUDES, d=vec3(diffuse), f0=vec3(f0), e=vec3(spec))
     want = ref_surface.coupled_diffuse_color(diffuse, f0, spec)

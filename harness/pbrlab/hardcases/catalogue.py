@@ -200,6 +200,7 @@ _DISPATCH_TEMPLATES = (
     (_f("pbr_specular_V", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine alpha:alpha", V),
      "PBR_SPECULAR_V", shading.SPECULAR_V),
     (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
+    (_f("pbr_specular_F_deviation_bound", "f0:unit3", _unit("F deviation")), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_diffuse_Fd", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness", Bound("0 <= Fd <= 6.25/π", 0.0, 2.0)),
      "PBR_DIFFUSE", shading.DIFFUSE),
     (_f("pbr_specular_lobe_limit", "DV:radiance", _ge0("D·V")), "PBR_QUALITY", shading.QUALITY),

@@ -111,6 +111,18 @@ def specular_F(f0, VdotH, variant="SCHLICK"):
     raise ValueError(variant)
 
 
+def specular_F_deviation_bound(f0, variant="SCHLICK"):
+    """pbr_specular_F_deviation_bound: max |F - Schlick(f0, f90)| over VdotH (last axis RGB)."""
+    f0 = np.asarray(f0, dtype=np.float64)
+    if variant == "SCHLICK":
+        return np.zeros_like(f0)
+    if variant == "SCHLICK_SG":
+        return brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (brdf.f90_from_f0(f0)[..., None] - f0)
+    if variant == "NONE":
+        return 1.0 - f0
+    raise ValueError(variant)
+
+
 def diffuse_Fd(NdotV, NdotL, LdotH, perceptual_roughness, variant="LAMBERT"):
     if variant == "LAMBERT":
         return np.full(np.broadcast_shapes(np.shape(NdotV), np.shape(NdotL)), brdf.Fd_Lambert())

@@ -82,13 +82,10 @@ def specular_albedo(f0, dfg):
 
 
 def specular_albedo_bound(f0, dfg, specular_f="SCHLICK"):
-    """pbr_specular_albedo_bound: + F_SCHLICK_SG_MAX_ABS_ERROR (f90 - f0)(A + B) for the
-    spherical-Gaussian Fresnel (its distance to Schlick's at any VdotH)."""
-    albedo = specular_albedo(f0, dfg)
-    if specular_f == "SCHLICK_SG":
-        f90 = brdf.f90_from_f0(f0)[..., None]
-        albedo = albedo + brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (f90 - _f(f0)) * (_f(dfg)[..., 0:1] + _f(dfg)[..., 1:2])
-    return albedo
+    """pbr_specular_albedo_bound: f0 A + f90 B + the F variant's largest distance from
+    Schlick's F (shading.specular_F_deviation_bound) times A + B."""
+    return specular_albedo(f0, dfg) + shading.specular_F_deviation_bound(f0, specular_f) * (
+        _f(dfg)[..., 0:1] + _f(dfg)[..., 1:2])
 
 
 def indirect_specular_albedo(f0, dfg, energy_compensated=True):

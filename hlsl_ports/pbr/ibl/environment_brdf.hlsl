@@ -83,19 +83,15 @@ vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
 }
 
 // An upper bound of the albedo of the tier's own direct specular lobe, for the
-// diffuse-specular coupling of punctual lights. The table holds Schlick's weights; the
-// spherical-Gaussian Fresnel (PBR_SPECULAR_F_SCHLICK_SG, the MEDIUM tier) lies within
-// PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (f90 - f0) of Schlick at every VdotH (f_schlick.hlsl), so
-// its albedo is at most f0 A + f90 B + that bound times A + B (measured without it: a white
-// F0 = 0.02 dielectric reflected 1.0025 of a direct light). The fast and separable V terms
+// diffuse-specular coupling of punctual lights. The table holds Schlick's weights; a
+// Fresnel within pbr_specular_F_deviation_bound(f0) of Schlick at every VdotH (the MEDIUM
+// tier's spherical-Gaussian form: PBR_F_SCHLICK_SG_MAX_ABS_ERROR (f90 - f0)) reflects at
+// most f0 A + f90 B + that deviation times A + B (measured without it: a white F0 = 0.02
+// dielectric reflected 1.0025 of a direct light at MEDIUM). The fast and separable V terms
 // have at most the albedo of the exact height-correlated V the table holds (their
 // denominators are larger, Hammon 2017 / Heitz 2014), so they need no margin.
 vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
-    vec3 albedo = pbr_specular_albedo(f0, dfg);
-#if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    albedo += PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((vec3)(pbr_f90_from_f0(f0))) - f0) * (dfg.x + dfg.y);
-#endif
-    return albedo;
+    return pbr_specular_albedo(f0, dfg) + pbr_specular_F_deviation_bound(f0) * (dfg.x + dfg.y);
 }
 
 // Single-scattering GGX loses energy at high roughness (up to 69 % at roughness 1, see
@@ -103,8 +99,8 @@ vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
 // f0 = 1: Fdez-Aguera 2019, "A Multiple-Scattering Microfacet Model for Real-Time
 // Image-based Lighting", as simplified in Filament ("Physically Based Rendering in
 // Filament", section 5.3.4.7). A white metal in a white furnace then reflects 1.
-// Lower bound of E in the division: the table's smallest E (rough, grazing) is about
-// 0.3, so the guard only protects against a caller's zero dfg.
+// Lower bound of E in the division: the table's smallest E (roughness 1, head-on) is
+// 0.307, so the guard only protects against a caller's zero dfg.
 #define PBR_MIN_SPECULAR_ALBEDO 1e-4
 
 vec3 pbr_energy_compensation(vec3 f0, vec2 dfg) {
