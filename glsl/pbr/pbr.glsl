@@ -48,6 +48,7 @@
 // shading models
 #include "pbr/shading/dispatch.glsl"
 #include "pbr/shading/standard.glsl"
+#include "pbr/shading/energy_conservation.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"

@@ -5,9 +5,10 @@ the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of
 GLSL library. Goldens of analytic scenes are checked against it.
 
 Scope: opaque spheres with the default surface (no texture maps); environments of
-constant radiance, whose prefiltered radiance is that constant at every roughness and
-whose environment BRDF is integrated here in float64 at each pixel's exact (NdotV,
-roughness) (the GPU interpolates a 32x32 table, or uses the analytic fit at LOW quality).
+constant radiance, whose prefiltered radiance is that constant at every roughness. The
+environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
+read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
+(NdotV, roughness); the GPU interpolates its 256 x 256 table (ibl.py) at every tier.
 With ``render.brdf_model: unity`` the shading is the float64 transcription of Unity's
 BRDF of the tier (pbrlab.reference.unity_brdf), occlusion applied in the GI step.
 """
@@ -19,8 +20,8 @@ import numpy as np
 from .camera import camera_frame, camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
-from .ibl import integrate_dfg
 from .reference import lighting as ref_lighting
+from .reference import directional_albedo as ref_albedo
 from .reference import material as ref_material
 from .reference import remap as ref_remap
 from .reference import shading as ref_shading
@@ -29,10 +30,11 @@ from .reference import unity_brdf as ref_unity
 
 
 def _intersect(origin, d, centre, radius):
-    """Nearest positive hit distance per ray (inf where missed); same algebra as templates/surface_pixel.inc."""
+    """Nearest positive hit distance per ray (inf where missed); the discriminant as
+    templates/surface_pixel.inc computes it (r^2 - |oc x d|^2)."""
     oc = origin - centre
     b = d @ oc
-    q = oc[None, None] - b[..., None] * d
+    q = np.cross(oc[None, None], d)  # |q|: the centre's distance from the ray
     disc = radius * radius - np.sum(q * q, axis=-1)
     h = np.sqrt(np.maximum(disc, 0.0))
     t = -b - h
@@ -133,20 +135,25 @@ def render_scene_cpu(scene) -> np.ndarray:
             out[mask, 3] = 1.0
             continue
         diffuse, f0, rough = _surface(material)
+        r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
+        NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+        dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
+        specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
+        direct_diffuse = ref_surface.coupled_diffuse_color(
+            diffuse, f0, ref_surface.specular_albedo_bound(f0, dfg, specular_f))
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
-            color += ref_shading.shade_punctual(n, v, l, radiance, diffuse, f0, rough,
+            color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
                                                 quality=quality, **material.brdf)
         if env_sh is not None:
-            color += diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
-            r = ref_shading.clamp_perceptual_roughness(rough)
-            NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
-            dfg = (integrate_dfg(NdotV, np.full_like(NdotV, r)) if quality != "LOW"
-                   else ref_surface.env_brdf_approx(NdotV, r))
+            compensated = scene.render.energy_compensation
+            indirect_diffuse = ref_surface.coupled_diffuse_color(
+                diffuse, f0, ref_surface.indirect_specular_albedo(f0, dfg, compensated))
+            color += indirect_diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
-                energy_compensated=scene.render.energy_compensation)
+                energy_compensated=compensated)
         out[mask, :3] = color
         out[mask, 3] = 1.0  # opaque: coverage
     return out

@@ -1,9 +1,10 @@
 """Image-based lighting data the harness generates for the library:
 
-* ``dfg_lut(n)``: the split-sum environment BRDF table (A, B) over (NdotV, perceptual
-  roughness), integrated in float64 numpy with the library's own default visibility
-  (exact height-correlated Smith GGX) by GGX importance sampling. Karis 2013, "Real
-  Shading in Unreal Engine 4", eq. 8 and its listing "IntegrateBRDF".
+* ``dfg_lut()``: the split-sum environment BRDF table (A, B) over warped (NdotV,
+  roughness) axes, integrated in float64 numpy with the library's own default visibility
+  (exact height-correlated Smith GGX) by a deterministic quadrature in GGX's sampling
+  variables (``integrate_dfg``). Karis 2013, "Real Shading in Unreal Engine 4", eq. 8 and
+  its listing "IntegrateBRDF".
 * ``prefiltered_environment(ctx, image)``: an equirectangular mip chain whose level i is
   the environment convolved with the GGX lobe of perceptual roughness i / (levels - 1),
   under Karis's n = v = r assumption, computed on the GPU by GGX importance sampling with
@@ -16,20 +17,32 @@ The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 
 from __future__ import annotations
 
+import argparse
 from functools import lru_cache
+from pathlib import Path
 
 import moderngl
 import numpy as np
 
 from . import targets
+from .errors import PbrlabError
 from .programs import program_from_templates
 from .reference import brdf as ref_brdf
+from .reference import surface as ref_surface
 
-DFG_LUT_SIZE = 32          # texels per axis; sampled at texel centres with bilinear filtering
-DFG_SAMPLES = 1024         # Hammersley points per texel
 PREFILTER_SIZE = (256, 128)  # level 0 of the prefiltered chain (equirect 2:1)
 PREFILTER_LEVELS = 6       # 256x128 ... 8x4: perceptual roughness 0, 0.2, ..., 1
 PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling)
+
+# The DFG table: layout (size and warped axes) in reference/surface.py and
+# glsl/pbr/ibl/environment_brdf.glsl; values from integrate_dfg, stored in
+# data/dfg_lut.npy (computing 256 x 256 texels takes about a minute, so it is made once by
+# `python -m pbrlab.ibl --write-dfg` and checked by tests/surface/test_dfg_table.py).
+DFG_LUT_FILE = Path(__file__).resolve().parent / "data" / "dfg_lut.npy"
+DFG_W_PANELS = 6       # equal panels in w = log(1 - u) over the partially visible band
+DFG_NODES = 24         # Gauss-Legendre nodes per panel
+DFG_PHI_NODES = 32     # Gauss-Legendre nodes in phi
+DFG_MIN_NDOTV = 1e-9   # column 0 is NdotV = 0: the limit, taken at 1e-9 (E changes ~1e-6 there)
 
 
 def hammersley(count: int) -> np.ndarray:
@@ -42,39 +55,92 @@ def hammersley(count: int) -> np.ndarray:
     return np.stack([i / count, rev.astype(np.float64) / 2.0**32], axis=1)
 
 
-def integrate_dfg(NdotV, perceptual_roughness, samples: int = DFG_SAMPLES) -> np.ndarray:
-    """(A, B) of the split sum for arrays of NdotV and perceptual roughness (float64).
+def _gauss_legendre(n):
+    x, w = np.polynomial.legendre.leggauss(n)
+    return 0.5 * (x + 1.0), 0.5 * w
 
-    A + B is the directional albedo of the specular lobe at f0 = 1; f0*A + B at f0.
+
+def integrate_dfg(NdotV, perceptual_roughness) -> np.ndarray:
+    """(A, B) of the split sum (..., 2) for arrays of NdotV and perceptual roughness, float64,
+    by deterministic quadrature in GGX's sampling variables (Karis 2013's IntegrateBRDF,
+    with quadrature nodes in place of random samples).
+
+    The half vector h is drawn from D(h) (n.h): u = the CDF in theta (Walter et al. 2007,
+    eq. 35: cos^2 theta = (1 - u) / (1 + (alpha^2 - 1) u)), phi uniform; then
+    f cos / pdf = V (n.l) 4 (v.h) / (n.h) and E = (1 / pi) int_0^1 du int_0^pi dphi of it
+    (the half plane phi < 0 mirrors phi > 0). The horizon n.l > 0 is done analytically: for
+    each u, phi runs over [0, phi_max(u)] (full for theta < pi/4 - theta_v/2, empty past
+    pi/4 + theta_v/2); u is integrated in w = log(1 - u), whose nodes spread over every
+    scale of D's tail, with Gauss-Legendre on [0, w_full] and on DFG_W_PANELS equal panels
+    of [w_full, w_end], each after x = a + (b - a)(1 - cos(pi t)) / 2 (clusters at both ends,
+    where phi_max has square-root behaviour). V is the library's exact height-correlated
+    Smith (reference/brdf.py). A + B is the albedo at F = 1; f0 A + f90 B at Schlick's F.
     """
-    NdotV = np.asarray(NdotV, np.float64)[..., None]
-    alpha = (np.asarray(perceptual_roughness, np.float64) ** 2)[..., None]
-    xi = hammersley(samples)
-    # GGX half vectors (Walter et al. 2007, eqs. 35-36), tangent space with n = +z.
-    phi = 2 * np.pi * xi[:, 0]
-    cos_h = np.sqrt((1 - xi[:, 1]) / (1 + (alpha * alpha - 1) * xi[:, 1]))
-    sin_h = np.sqrt(np.maximum(1 - cos_h * cos_h, 0))
-    hx, hy, hz = sin_h * np.cos(phi), sin_h * np.sin(phi), cos_h
-    vx, vz = np.sqrt(np.maximum(1 - NdotV * NdotV, 0)), NdotV  # v in the xz plane
-    VdotH = vx * hx + vz * hz
-    NdotL = 2 * VdotH * hz - vz  # l = 2 (v.h) h - v
-    valid = (NdotL > 0) & (VdotH > 0)
-    NdotL_c = np.where(valid, NdotL, 1.0)
-    vis = ref_brdf.V_SmithGGXCorrelated(NdotL_c, NdotV, alpha)
-    # f cos / pdf with pdf_l = D NdotH / (4 VdotH): V * F * NdotL * 4 VdotH / NdotH
-    weight = np.where(valid, vis * NdotL_c * 4 * VdotH / hz, 0.0)
-    fc = (1 - np.clip(VdotH, 0, 1)) ** 5
-    return np.stack([np.mean((1 - fc) * weight, axis=-1), np.mean(fc * weight, axis=-1)], axis=-1)
+    NdotV, rough = np.broadcast_arrays(np.asarray(NdotV, np.float64), np.asarray(perceptual_roughness, np.float64))
+    shape = NdotV.shape
+    mu = np.clip(NdotV.reshape(-1), DFG_MIN_NDOTV, 1.0)[:, None]
+    alpha = np.clip(rough.reshape(-1) ** 2, 1e-6, 1.0)[:, None]
+    theta_v = np.arccos(mu)
+    sin_v = np.sin(theta_v)
+
+    def w_of_theta(theta):  # w = log(1 - u), 1 - u = alpha^2 / (alpha^2 + tan^2)
+        t2 = np.tan(theta) ** 2
+        return -np.log1p(t2 / (alpha * alpha))
+
+    w_full = w_of_theta(0.25 * np.pi - 0.5 * theta_v)
+    w_end = w_of_theta(np.minimum(0.25 * np.pi + 0.5 * theta_v, 0.5 * np.pi - 1e-12))
+    t, tw = _gauss_legendre(DFG_NODES)
+    edges = [np.zeros_like(w_full), w_full] + [
+        w_full + (w_end - w_full) * k / DFG_W_PANELS for k in range(1, DFG_W_PANELS + 1)]
+    p_nodes, p_weights = _gauss_legendre(DFG_PHI_NODES)
+    out = np.zeros((mu.shape[0], 2))
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        w = lo + (hi - lo) * 0.5 * (1 - np.cos(np.pi * t))                  # (texels, nodes)
+        dw = (lo - hi) * 0.5 * np.pi * np.sin(np.pi * t) * tw                # du = -(1-u) dw >= 0
+        one_minus_u = np.exp(w)
+        du = one_minus_u * dw
+        u = -np.expm1(w)
+        cos2 = one_minus_u / (one_minus_u + alpha * alpha * u)               # eq. 35 rearranged
+        cos_h, sin_h = np.sqrt(cos2), np.sqrt(np.maximum(1 - cos2, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            c = mu * (2 * cos2 - 1) / (sin_v * 2 * sin_h * cos_h) * -1.0    # n.l > 0 <=> cos phi > c
+        c = np.where(np.isfinite(c), c, -1.0)
+        phi_max = np.arccos(np.clip(c, -1.0, 1.0))
+        phi = phi_max[..., None] * p_nodes
+        dphi = phi_max[..., None] * p_weights
+        VdotH = sin_v[..., None] * sin_h[..., None] * np.cos(phi) + mu[..., None] * cos_h[..., None]
+        NdotL = 2 * VdotH * cos_h[..., None] - mu[..., None]
+        lit = NdotL > 0
+        NdotL_c = np.where(lit, NdotL, 1.0)
+        vis = ref_brdf.V_SmithGGXCorrelated(NdotL_c, mu[..., None], alpha[..., None])
+        weight = np.where(lit, vis * NdotL_c * 4 * VdotH / cos_h[..., None], 0.0) * (du[..., None] * dphi) / np.pi
+        fc = (1 - np.clip(VdotH, 0, 1)) ** 5
+        out[:, 0] += np.sum((1 - fc) * weight, axis=(1, 2))
+        out[:, 1] += np.sum(fc * weight, axis=(1, 2))
+    return out.reshape(shape + (2,))
 
 
-@lru_cache(maxsize=4)
-def dfg_lut(size: int = DFG_LUT_SIZE) -> np.ndarray:
-    """size x size x 2 float32 table; row j is perceptual roughness (j+0.5)/size, column i
-    NdotV (i+0.5)/size (texel centres), top row first = roughness 1 (image order)."""
-    centres = (np.arange(size) + 0.5) / size
-    rough, ndotv = np.meshgrid(centres, centres, indexing="ij")
-    table = integrate_dfg(ndotv, rough)
-    return table[::-1].astype(np.float32)
+def compute_dfg_lut() -> np.ndarray:
+    """HEIGHT x WIDTH x 2 float32, image order (top row first = the last row, y = 1): texel
+    (i, j) of GL row j holds (A, B) at the warped axes x = i / (WIDTH - 1), y = j / (HEIGHT - 1)."""
+    xs = np.arange(ref_surface.DFG_LUT_WIDTH) / (ref_surface.DFG_LUT_WIDTH - 1)
+    ys = np.arange(ref_surface.DFG_LUT_HEIGHT) / (ref_surface.DFG_LUT_HEIGHT - 1)
+    y, x = np.meshgrid(ys, xs, indexing="ij")
+    NdotV, rough = ref_surface.dfg_lut_texel_coordinates(x, y)
+    rows = [integrate_dfg(NdotV[j], rough[j]) for j in range(len(ys))]
+    return np.stack(rows)[::-1].astype(np.float32)
+
+
+@lru_cache(maxsize=1)
+def dfg_lut() -> np.ndarray:
+    """The shipped table (data/dfg_lut.npy), HEIGHT x WIDTH x 2 float32, image order."""
+    if not DFG_LUT_FILE.exists():
+        raise PbrlabError(f"{DFG_LUT_FILE} is missing; create it with python -m pbrlab.ibl --write-dfg")
+    table = np.load(DFG_LUT_FILE)
+    if table.shape != (ref_surface.DFG_LUT_HEIGHT, ref_surface.DFG_LUT_WIDTH, 2):
+        raise PbrlabError(f"{DFG_LUT_FILE}: shape {table.shape} is not the layout's; "
+                          "regenerate it with python -m pbrlab.ibl --write-dfg")
+    return table
 
 
 def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
@@ -118,3 +184,18 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     result.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     result.repeat_x, result.repeat_y = True, False
     return result
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m pbrlab.ibl", description=__doc__.splitlines()[0])
+    parser.add_argument("--write-dfg", action="store_true", help=f"recompute {DFG_LUT_FILE.name}")
+    args = parser.parse_args(argv)
+    if args.write_dfg:
+        DFG_LUT_FILE.parent.mkdir(exist_ok=True)
+        np.save(DFG_LUT_FILE, compute_dfg_lut())
+        print(DFG_LUT_FILE)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

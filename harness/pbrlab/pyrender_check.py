@@ -26,7 +26,9 @@ shades a directional light as
 pbrlab's renderer expresses D, F, f0 and c_diff with its selectors (``specular_d: ggx``,
 ``specular_f: schlick``, the metallic workflow); two terms have no selector:
   * G with k = (r + 1)² / 8: ``specular_v: schlick_ggx`` takes k = alpha / 2;
-  * the (1 − F) weight on the diffuse: pbrlab's diffuse is unweighted;
+  * the (1 − F(VdotH)) weight on the diffuse: pbrlab couples the diffuse to the specular
+    lobe's directional albedo instead, ρ (1 − E(NdotV)) with E from the DFG table
+    (pbr/shading/energy_conservation.glsl), which this program reads as the renderer does;
 and pyrender's 0.001 additions (denominator, cosine floors) are not pbrlab's guards.
 ``render_pbrlab_terms`` therefore composes pyrender's BRDF from the library's own term
 functions (pbr_D_GGX, pbr_G_SchlickGGX + pbr_k_SchlickGGX_hotness, pbr_F_Schlick,
@@ -75,7 +77,7 @@ DEFAULT_SIZE = (288, 96)
 # The switches of render_pbrlab_terms: 1 = pyrender's term, 0 = pbrlab's renderer.
 TERM_SWITCHES = {
     "PYR_G_HOTNESS": "G's k = (r + 1)^2 / 8 (pyrender) instead of alpha / 2 (schlick_ggx)",
-    "PYR_DIFFUSE_ONE_MINUS_F": "diffuse weighted by 1 - F(VdotH)",
+    "PYR_DIFFUSE_ONE_MINUS_F": "diffuse weighted by 1 - F(VdotH) (pbrlab: rho (1 - E(NdotV)))",
     "PYR_DENOMINATOR_EPSILON": "specular denominator 4 NdotL NdotV + 0.001",
     "PYR_COSINE_FLOORS": "NdotL, |NdotV| floored at 0.001, no horizon cut",
 }
@@ -235,6 +237,8 @@ _TERMS_FRAG = """#version 330 core
 // pyrender 0.1.45's metallic-roughness direct lighting for one directional light and a
 // constant material: templates/pyrender_brdf.inc, which composes it from pbrlab's terms.
 //@DEFINES
+uniform sampler2D u_dfg_lut;     // harness/pbrlab/ibl.py dfg_lut, as the renderer binds it
+#define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) texture(u_dfg_lut, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg
 #include "pbr/common/conventions.glsl"
 #include "pbr/common/guards.glsl"
 #include "pbr/material/workflow.glsl"
@@ -242,6 +246,8 @@ _TERMS_FRAG = """#version 330 core
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/fd_lambert.glsl"
+#include "pbr/ibl/environment_brdf.glsl"
+#include "pbr/shading/energy_conservation.glsl"
 #include "pyrender_brdf.inc"
 
 uniform vec3 u_camera_position;
@@ -291,7 +297,7 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     alpha = coverage. Same camera, meshes, vertex program and light units as render_scene."""
     import moderngl
 
-    from . import gl, meshes, targets
+    from . import gl, meshes, resource_cache, targets
     from .camera import camera_frame
     from .render import scene_radius
     from .scene import parse_scene
@@ -305,7 +311,8 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     frame = camera_frame(scene.camera, scene_radius(scene))
     values = {"u_camera_position": tuple(frame.position), "u_light_l": tuple(-light.direction),
               "u_light_radiance": tuple(light.color * light.intensity),
-              "u_view_proj": tuple(frame.view_proj.T.reshape(-1))}
+              "u_view_proj": tuple(frame.view_proj.T.reshape(-1)), "u_dfg_lut": 0}
+    resource_cache.context_cache(ctx).dfg().use(0)
     with targets.Target(ctx, frame.size, "f32") as hdr:
         hdr.use()
         ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)

@@ -69,7 +69,8 @@ class _SceneResources:
         self.full = full
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
-        self.env_textures = {}
+        # the DFG table serves every light (diffuse-specular coupling), not only the environment
+        self.env_textures = {"u_dfg_lut": self.cache.dfg()}
         if scene.environment is not None:
             environment = self.cache.environment(scene.environment)
         elif full:  # the full program always samples an environment: a black one
@@ -77,7 +78,7 @@ class _SceneResources:
         else:
             return
         self.env_sh = environment.sh
-        self.env_textures = {"u_dfg_lut": self.cache.dfg(), "u_env_prefiltered": environment.prefiltered}
+        self.env_textures["u_env_prefiltered"] = environment.prefiltered
 
     def neutral_texture(self, slot: str) -> moderngl.Texture:
         return self.cache.constant_texture(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)))

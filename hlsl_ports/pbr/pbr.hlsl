@@ -49,6 +49,7 @@
 // shading models
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/shading/standard.hlsl"
+#include "pbr/shading/energy_conservation.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"

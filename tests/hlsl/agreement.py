@@ -85,8 +85,9 @@ SPECIAL = {
 VARIANT_DEPENDENT = {
     "pbr_specular_D", "pbr_specular_V", "pbr_specular_F", "pbr_specular_lobe_limit", "pbr_diffuse_Fd",
     "pbr_clamp_perceptual_roughness", "pbr_brdf_standard", "pbr_shade_punctual", "pbr_env_brdf",
-    "pbr_indirect_specular_split_sum", "pbr_lighting_standard", "pbr_unity_lighting", "LightingStandard",
-    "pbr_unity_brdf_pbs", "pbr_unity_gi_occlusion", "pbr_unity_environment_lod",
+    "pbr_indirect_specular_split_sum", "pbr_lighting_standard", "pbr_lighting_standard_dfg",
+    "pbr_unity_lighting", "LightingStandard", "pbr_unity_brdf_pbs", "pbr_unity_gi_occlusion",
+    "pbr_unity_environment_lod", "pbr_specular_albedo_bound", "pbr_indirect_diffuse_color",
     "LightingStandardSpecular", "PreMultiplyAlpha", "pbr_tonemap", "pbr_decode_color_texel",
     "pbr_encode_final_color",
 }

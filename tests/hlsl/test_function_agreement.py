@@ -29,8 +29,8 @@ STATED_BOUNDS = {}
 # Evidence: pbr_D_GGX_fromOneMinusNdotH2 differed by 1 ulp in a 123-entry program and by 0
 # in 32-entry batches. Measured worst 4 ulp, 4.2e-7 relative (LightingStandardSpecular,
 # LOW tier + Unity legacy specular); bound 1e-6 = 8 float32 roundings.
-for _name in ("pbr_lighting_standard", "pbr_unity_lighting", "LightingStandard", "LightingStandardSpecular",
-              "pbr_indirect_specular_split_sum"):
+for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_lighting", "LightingStandard",
+              "LightingStandardSpecular", "pbr_indirect_specular_split_sum"):
     STATED_BOUNDS[_name] = ("rel", 1e-6, "fma contraction differs between the two programs (see above)")
 
 

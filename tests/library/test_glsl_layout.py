@@ -12,7 +12,7 @@ import pytest
 
 from library_helpers import evaluate
 from pbrlab import shaders
-from pbrlab.reference import brdf, color, constants, guards, material, remap, shading, tonemap
+from pbrlab.reference import brdf, color, constants, guards, material, remap, shading, surface, tonemap
 
 ROOT = shaders.GLSL_ROOT
 FILES = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "pbr").rglob("*.glsl"))
@@ -124,6 +124,16 @@ SHARED_CONSTANTS = [
     ("PBR_MIN_PERCEPTUAL_ROUGHNESS", shading.MIN_PERCEPTUAL_ROUGHNESS),
     ("PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP", shading.MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP),
     ("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", shading.MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP),
+    ("PBR_F90_FROM_F0_SCALE", brdf.F90_FROM_F0_SCALE),
+    ("PBR_MIN_ONE_MINUS_REFLECTIVITY", surface.MIN_ONE_MINUS_REFLECTIVITY),
+    ("PBR_DFG_LUT_WIDTH", surface.DFG_LUT_WIDTH), ("PBR_DFG_LUT_HEIGHT", surface.DFG_LUT_HEIGHT),
+    # the table's axes, written out: fl32 of the exact (float64) values
+    ("PBR_DFG_LUT_NDOTV_INV_SCALE", 1 / surface.DFG_LUT_C_NDOTV),
+    ("PBR_DFG_LUT_NDOTV_LOG_NORM", 1 / np.log2(1 + 1 / surface.DFG_LUT_C_NDOTV)),
+    ("PBR_DFG_LUT_ALPHA_OFFSET", surface.DFG_LUT_C_ALPHA),
+    ("PBR_DFG_LUT_ALPHA_MIN_INV", 1 / (surface.DFG_LUT_ALPHA_MIN + surface.DFG_LUT_C_ALPHA)),
+    ("PBR_DFG_LUT_ALPHA_LOG_NORM", 1 / np.log2((1 + surface.DFG_LUT_C_ALPHA)
+                                               / (surface.DFG_LUT_ALPHA_MIN + surface.DFG_LUT_C_ALPHA))),
     *guards.SHARED.items(),
     ("PBR_HABLE_WHITE", tonemap.HABLE_WHITE),
     *[(f"PBR_HABLE_{k}", v) for k, v in tonemap.HABLE.items()],

@@ -46,18 +46,22 @@ def _tier_error(renders, tier):
 def test_medium_tier_error_against_high_tier_is_measured(renders):
     rel, srgb = _tier_error(renders, "medium")
     # MEDIUM swaps V for the fast correlated-Smith fit and F for the spherical-Gaussian
-    # Schlick (documented bounds 0.293 and 0.0038). Measured on this scene: median
-    # 0.0011, p99 0.0034, max 0.056 relative; display mean 0.044 codes, max 2 codes.
+    # Schlick (documented bounds 0.293 and 0.0038; the direct diffuse coupling adds the
+    # latter's albedo bound, pbr_specular_albedo_bound). Measured on this scene: median
+    # 0.0023, p99 0.0047, max 0.056 relative; display mean 0.097 codes, max 2 codes.
     assert 2e-4 < np.median(rel) < 3e-3 and np.quantile(rel, 0.99) < 0.01
     assert srgb.max() <= 3
 
 
 def test_low_tier_error_against_high_tier_is_measured(renders):
     rel, srgb = _tier_error(renders, "low")
-    # LOW swaps V for the fast correlated-Smith fit and the DFG table for Karis's fit
-    # (measured against the table in tests/surface). Measured on this scene: relative to
-    # 0.01 + |high|, median 0.0023, p99 0.053, max 2.5 (grazing floor far away, where
-    # Karis's fit is furthest from the height-correlated table); display mean 0.25 codes,
-    # max 29 codes. The tiers must differ (the selector works) and stay in that envelope.
-    assert 1e-3 < np.median(rel) < 5e-3 and np.quantile(rel, 0.99) < 0.08
-    assert 0.1 < srgb.mean() < 0.5
+    # LOW swaps V for the fast correlated-Smith fit, raises the minimum roughness to 0.089
+    # and caps D·V at 65504; it reads the same DFG table as HIGH (the diffuse-specular
+    # coupling needs the albedo of the library's V; Karis's fit, off by up to 0.48, is only
+    # the fallback without a table). Measured on this scene: relative to 0.01 + |high|,
+    # median 0.0013, p99 0.0068, max 2.5 (grazing floor far away, where the fast V and the
+    # roughness floor differ most); display mean 0.067 codes, max 29 codes (with Karis's fit:
+    # median 0.0023, p99 0.053, mean 0.25 codes). The tiers must differ (the selector works)
+    # and stay in that envelope.
+    assert 5e-4 < np.median(rel) < 3e-3 and np.quantile(rel, 0.99) < 0.02
+    assert 0.03 < srgb.mean() < 0.15

@@ -43,8 +43,10 @@ def test_specialised_and_full_programs_render_bit_identical_images(name, gl_cont
 
 MINIMAL = one_sphere({"albedo": [0.8, 0.5, 0.3], "smoothness": 0.6},
                      [{"type": "directional", "direction": [0.2, -0.3, -1]}], size=(16, 16))
+# (u_dfg_lut is not in the list: the diffuse-specular coupling of every light reads the DFG
+# table, so a lit scene without an environment uses it too.)
 ABSENT_WHEN_UNUSED = ["u_emission", "u_occlusion", "u_alpha", "u_point_", "u_spot_", "u_env_sh",
-                      "u_env_prefiltered", "u_dfg_lut", "u_albedo_map", "u_normal_map",
+                      "u_env_prefiltered", "u_albedo_map", "u_normal_map",
                       # call sites (the library's definitions stay, unused):
                       "pbr_spot_attenuation(gi.light.dir", "pbr_sh9_irradiance(u_env_sh",
                       "u_directional_active"]
@@ -74,8 +76,16 @@ def test_unused_effects_are_absent_from_the_specialised_source_and_uniforms(gl_c
         assert token not in text, token
     program = programs.program_from_templates(gl_context, "sphere.vert", "sphere.frag", defines)
     members = set(program)
-    assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env|dfg)", m)]
+    assert not [m for m in members if re.match(r"u_(emission|occlusion|alpha$|point|spot|env)", m)]
     assert "u_directional_radiance" in members
+    assert "u_dfg_lut" in members  # the light's diffuse-specular coupling reads the table
+
+
+def test_a_scene_without_light_has_no_dfg_table(gl_context, tmp_path):
+    # emission only: no light, no environment, so nothing reads the DFG table
+    scene = parse_scene(one_sphere({"albedo": [0.5, 0.5, 0.5], "emission": [1, 0, 0]}, [], size=(8, 8)))
+    _, source = _programs_for(scene, specialise=True)
+    assert "u_dfg_lut" not in _preprocessed(source, tmp_path)
 
 
 def test_the_full_program_contains_every_effect(gl_context, tmp_path):

@@ -3,9 +3,12 @@
 //
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
 //           vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
-//                                                float NdotV, float occlusion)
+//                                                float NdotV, float occlusion, vec2 dfg)
+//           vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg)
 //           vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
 //                                      float occlusion, vec3 n, vec3 v, pbr_GI gi)
+//           vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
+//                                          float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg)
 // Include:  "pbr/surface/lighting_standard.glsl" (path relative to glsl/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
 //           in the environment specular; 0: single scattering only);
@@ -20,11 +23,21 @@
 // Lambert surface reflects, e.g. pbr_sh9_irradiance(sh, n) / pi); indirect.specular is
 // the prefiltered environment radiance along reflect(-v, n), already at the mip of this
 // roughness. Without a light, set light.color to 0.
+//
+// Energy: diffuseColor is the workflow's diffuse colour (pbr_diffuse_from_metallic /
+// pbr_diffuse_from_specular, Unity's diffColor); the diffuse lobe is coupled to the
+// specular by pbr_coupled_diffuse_color (pbr/shading/energy_conservation.glsl): it gets
+// 1 - E of the light, E the specular lobe's directional albedo at NdotV from the same DFG
+// values as the split sum (single scattering for direct light, times the compensation for
+// the environment when PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
+// f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
+// (tests/render/test_white_furnace.py).
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #include "pbr/lighting/punctual.glsl"
 #include "pbr/ibl/environment_brdf.glsl"
 #include "pbr/shading/standard.glsl"
+#include "pbr/shading/energy_conservation.glsl"
 #include "pbr/common/math.glsl"
 
 #ifndef PBR_ENERGY_COMPENSATION
@@ -46,31 +59,55 @@ struct pbr_GI {
     pbr_Indirect indirect;
 };
 
-// The environment's specular reflection as pbrlab computes it: prefiltered radiance times
-// the split-sum albedo (Karis 2013), with specular occlusion and, by default,
-// multiple-scattering compensation.
-vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
-                                     float NdotV, float occlusion) {
-    vec2 dfg = pbr_env_brdf(NdotV, roughness);
-    vec3 specular = prefiltered * pbr_specular_albedo(f0, dfg)
-                  * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
+// The directional albedo of the specular lobe under environment light: single scattering
+// (pbr_specular_albedo) times, by default, the multiple-scattering compensation.
+vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
+    vec3 albedo = pbr_specular_albedo(f0, dfg);
 #if PBR_ENERGY_COMPENSATION
-    specular *= pbr_energy_compensation(f0, dfg);
+    albedo *= pbr_energy_compensation(f0, dfg);
 #endif
-    return specular;
+    return albedo;
 }
 
-// Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL). Indirect:
-// diffuse * occlusion, plus the split-sum specular (prefiltered radiance * directional
-// albedo, Karis 2013) with specular occlusion and, by default, multiple-scattering
-// compensation. Occlusion darkens only indirect light, as in Unity.
+// The environment's specular reflection as pbrlab computes it: prefiltered radiance times
+// the split-sum albedo (Karis 2013), with specular occlusion and, by default,
+// multiple-scattering compensation. dfg = pbr_env_brdf(NdotV, roughness).
+vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
+                                     float NdotV, float occlusion, vec2 dfg) {
+    return prefiltered * pbr_indirect_specular_albedo(f0, dfg)
+         * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
+}
+
+// The diffuse colour the environment lights: coupled to the environment specular's albedo
+// (with its compensation), as the split sum reflects it.
+vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg) {
+    return pbr_coupled_diffuse_color(diffuseColor, f0, pbr_indirect_specular_albedo(f0, dfg));
+}
+
+// Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the diffuse
+// coupled to the single-scattering specular albedo (pbr_specular_albedo_bound: the tier's
+// own lobe). Indirect: coupled diffuse * occlusion,
+// plus the split-sum specular (prefiltered radiance * directional albedo, Karis 2013) with
+// specular occlusion and, by default, multiple-scattering compensation. Occlusion darkens
+// only indirect light, as in Unity. dfg must be pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV),
+// pbr_clamp_perceptual_roughness(perceptualRoughness)): engines that fetch their own table
+// call this form; pbr_lighting_standard fetches it through PBR_DFG_LUT_LOOKUP.
+vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
+                               float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
+    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo_bound(f0, dfg));
+    vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
+                                     directDiffuse, f0, roughness);
+    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
+    return direct + pbr_indirect_diffuse_color(diffuseColor, f0, dfg) * gi.indirect.diffuse * occlusion
+         + specular;
+}
+
 vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
                            float occlusion, vec3 n, vec3 v, pbr_GI gi) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
-                                     diffuseColor, f0, roughness);
-    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion);
-    return direct + diffuseColor * gi.indirect.diffuse * occlusion + specular;
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_lighting_standard_dfg(diffuseColor, f0, roughness, occlusion, n, v, gi, dfg);
 }
 #endif

@@ -274,17 +274,19 @@ TONEMAP = Family(
 # ---- environment BRDF --------------------------------------------------------------------------
 ENV_BRDF = Family(
     name="env_brdf", title="Environment BRDF (split-sum DFG: scale A, bias B)",
-    inputs=(("NdotV", 0.01, 1.0), ("r", 0.0, 1.0)),
-    reference=None,  # set in measure.py: ibl.integrate_dfg with more samples (slow; cached per grid)
-    reference_name="ibl.integrate_dfg in float64 with 4096 Hammersley samples (the table uses 1024)",
+    inputs=(("NdotV", 1e-4, 1.0), ("r", 0.045, 1.0)),
+    reference=None,  # set in measure.py: reference.directional_albedo (slow; per grid)
+    reference_name="reference.directional_albedo: float64 quadrature of the integral (converged to 2e-8)",
     exact="dfg_lut", rel_floor=1e-3,
-    domain_note="NdotV in [0.01, 1] (the integral is 0/0 at 0) x perceptual roughness r in [0, 1]",
+    domain_note="NdotV in [1e-4, 1] x perceptual roughness r in [0.045, 1]: what the renderer reads "
+                "(PBR_MIN_NDOTV, PBR_MIN_PERCEPTUAL_ROUGHNESS)",
     grid_points=96,
     variants=(
-        Variant("dfg_lut", "texture(pbrlab_tex, vec2(NdotV, r)).rg",
-                "32x32 RG32F table, bilinear (the renderer's PBR_DFG_LUT_LOOKUP); cost = the filtered fetch",
+        Variant("dfg_lut", "texture(pbrlab_tex, pbr_dfg_lut_uv(NdotV, r)).rg",
+                "256x256 RG32F table on warped axes, bilinear at the texel centres (the renderer's "
+                "PBR_DFG_LUT_LOOKUP); cost = the coordinate warp and the filtered fetch",
                 kind="texture", texture="dfg"),
-        Variant("analytic", "pbr_env_brdf_approx(NdotV, r)", "Karis 2014 fit (LOW tier)"),
+        Variant("analytic", "pbr_env_brdf_approx(NdotV, r)", "Karis 2014 fit (the fallback without a table)"),
     ))
 
 FAMILIES = (SRGB_DECODE, SRGB_ENCODE, FRESNEL, DISTRIBUTION, VISIBILITY, BRDF_TIER, TONEMAP, ENV_BRDF)

@@ -39,7 +39,6 @@ class Settings:
     count_trips: tuple       # (T1, T2): per-iteration count = difference
     frame_size: int
     frame_rounds: int
-    dfg_samples: int
     tier_image_scale: float  # of the scene's own size
     # None: every family; (): none. A callgrind worker spends ~55 s in start-up whatever it
     # counts (llvmpipe's own LLVM code generation and Python, instrumented), so --quick skips it.
@@ -48,8 +47,8 @@ class Settings:
     @classmethod
     def make(cls, quick: bool) -> "Settings":
         if quick:
-            return cls(True, 4096, {2: 96, 3: 20, 4: 10}, 48, 4, 3, 16, (1, 2), 192, 2, 512, 0.5, ())
-        return cls(False, 65536, {2: 512, 3: 64, 4: 32}, 128, 32, 15, 32, (2, 4), 1024, 10, 4096, 1.0,
+            return cls(True, 4096, {2: 96, 3: 20, 4: 10}, 48, 4, 3, 16, (1, 2), 192, 2, 0.5, ())
+        return cls(False, 65536, {2: 512, 3: 64, 4: 32}, 128, 32, 15, 32, (2, 4), 1024, 10, 1.0,
                    None)
 
 
@@ -116,29 +115,16 @@ def _gpu_inputs(family: Family, d: dict) -> dict:
 
 def _reference(family: Family, d: dict, settings: Settings) -> np.ndarray:
     if family.name == "env_brdf":
-        chunks = [ibl.integrate_dfg(d["NdotV"][i:i + 512], d["r"][i:i + 512], settings.dfg_samples)
-                  for i in range(0, len(d["NdotV"]), 512)]
-        return np.concatenate(chunks)
+        from ..reference import directional_albedo
+        return directional_albedo.split_sum_terms_grid(d["NdotV"], d["r"] ** 2, theta_nodes=20, phi_nodes=24)
     return np.asarray(family.reference(d), np.float64)
 
 
 def _dfg_bilinear(ndotv, rough):
-    """The renderer's lookup in float64: texture(u_dfg_lut, vec2(NdotV, r)) with
-    bilinear filtering and clamp-to-edge on the 32x32 table (GL rows bottom-up)."""
-    table = ibl.dfg_lut()[::-1].astype(np.float64)  # row j: roughness (j + 0.5) / size
-    size = table.shape[0]
-
-    def coord(u):
-        x = np.clip(u * size - 0.5, 0.0, size - 1.0)
-        i0 = np.minimum(np.floor(x).astype(int), size - 2)
-        return i0, x - i0
-
-    ix, fx = coord(np.asarray(ndotv, np.float64))
-    iy, fy = coord(np.asarray(rough, np.float64))
-    t = table
-    top = t[iy, ix] * (1 - fx)[:, None] + t[iy, ix + 1] * fx[:, None]
-    bottom = t[iy + 1, ix] * (1 - fx)[:, None] + t[iy + 1, ix + 1] * fx[:, None]
-    return top * (1 - fy)[:, None] + bottom * fy[:, None]
+    """The renderer's lookup in float64: texture(u_dfg_lut, pbr_dfg_lut_uv(NdotV, r)) with
+    bilinear filtering and clamp to edge (reference/surface.py sample_dfg_lut)."""
+    from ..reference import surface
+    return surface.sample_dfg_lut(ibl.dfg_lut()[::-1], ndotv, rough)
 
 
 def _fullscreen_program(ctx, fragment: str):

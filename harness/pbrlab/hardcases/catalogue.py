@@ -176,6 +176,11 @@ TERMS: tuple[Function, ...] = (
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, VdotH)", _a("f0:unit3 VdotH:cosine"), F, "vec3"),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
     _f("pbr_F_SchlickSG", "f0:unit3 VdotH:cosine", F),
+    Function("pbr_F_SchlickSG", "pbr_F_SchlickSG(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
+    _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
+    # shading/energy_conservation.glsl
+    _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
+    _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
     _f("pbr_F_Dielectric", "c:cosine eta:eta", F),
     # tonemap/
     _f("pbr_apply_exposure", "c:radiance3 ev:ev", COLOUR),
@@ -195,6 +200,7 @@ _DISPATCH_TEMPLATES = (
     (_f("pbr_specular_V", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine alpha:alpha", V),
      "PBR_SPECULAR_V", shading.SPECULAR_V),
     (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
+    (_f("pbr_specular_F_deviation_bound", "f0:unit3", _unit("F deviation")), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_diffuse_Fd", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness", Bound("0 <= Fd <= 6.25/π", 0.0, 2.0)),
      "PBR_DIFFUSE", shading.DIFFUSE),
     (_f("pbr_specular_lobe_limit", "DV:radiance", _ge0("D·V")), "PBR_QUALITY", shading.QUALITY),

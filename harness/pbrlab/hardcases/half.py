@@ -200,7 +200,8 @@ LOW_MIN_HALF_VECTOR_LENGTH_SQUARED = HALF_MIN_NORMAL
 def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PERCEPTUAL_ROUGHNESS,
              d_form=d_ggx_cross, lobe_cap=HALF_MAX, min_half=LOW_MIN_HALF_VECTOR_LENGTH_SQUARED):
     """One colour channel of pbr_brdf_standard at the LOW tier (GGX with |n x h|², the fast
-    Smith-GGX-correlated V, Schlick F, Lambert), line for line with standard.glsl."""
+    Smith-GGX-correlated V, Schlick F with F90 from F0, Lambert), line for line with
+    standard.glsl."""
     NdotL = m.minimum(_dot(n, l), m.c(1.0))
     NdotV = _clamp(m, _dot(n, v), MIN_NDOTV, 1.0)
     r = _clamp(m, roughness, min_roughness, 1.0)
@@ -216,7 +217,8 @@ def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PER
     V = m.c(0.5) / (cl * (cv * (m.c(1.0) - alpha) + alpha) + cv * (cl * (m.c(1.0) - alpha) + alpha))
     w = m.c(1.0) - _clamp(m, LdotH, 0.0, 1.0)
     w2 = w * w
-    F = specular + (m.c(1.0) - specular) * (w2 * w2 * w)
+    f90 = m.minimum(specular * m.c(3.0 * 16.5), m.c(1.0))  # pbr_f90_from_f0 of a grey f0
+    F = specular + (f90 - specular) * (w2 * w2 * w)
     lobe = (D * V if lobe_cap is None else m.minimum(D * V, m.c(lobe_cap))) * F
     lit = m.where(hl2 >= m.c(min_half), diffuse_part + lobe, diffuse_part)
     return m.where(NdotL > m.c(0.0), lit, m.c(0.0))

@@ -175,10 +175,20 @@ def F_Schlick(f0, VdotH, f90=1.0):
     return f0 + (_f(f90) - f0) * (1.0 - _f(VdotH)) ** 5
 
 
-def F_SchlickSG(f0, VdotH):
+def F_SchlickSG(f0, VdotH, f90=1.0):
     """Lagarde 2012 / Karis 2013 spherical-Gaussian Schlick, elementwise."""
     f0, VdotH = _f(f0), _f(VdotH)
-    return f0 + (1.0 - f0) * 2.0 ** ((F_SCHLICK_SG_A * VdotH + F_SCHLICK_SG_B) * VdotH)
+    return f0 + (_f(f90) - f0) * 2.0 ** ((F_SCHLICK_SG_A * VdotH + F_SCHLICK_SG_B) * VdotH)
+
+
+# Schüler 2009 (ShaderX7 ch. 2.6) as written in Filament's brdf.fs: f90 = saturate(dot(f0,
+# vec3(50 * 0.33))). Shared with glsl/pbr/brdf/f_schlick.glsl PBR_F90_FROM_F0_SCALE.
+F90_FROM_F0_SCALE = 50 * 0.33
+
+
+def f90_from_f0(f0):
+    """Grazing reflectance that follows F0 (F0 = 0 -> 0; grey F0 >= 0.0202 -> 1); last axis RGB."""
+    return np.clip(np.sum(_f(f0), axis=-1) * F90_FROM_F0_SCALE, 0.0, 1.0)
 
 
 def F_Dielectric(cos_theta, eta):

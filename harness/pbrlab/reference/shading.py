@@ -100,12 +100,26 @@ def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"
 
 
 def specular_F(f0, VdotH, variant="SCHLICK"):
+    """pbr_specular_F: the Schlick forms take F90 = f90_from_f0(f0) (Schüler 2009 / Filament)."""
+    f90 = brdf.f90_from_f0(f0)[..., None]
     if variant == "SCHLICK":
-        return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None])
+        return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "SCHLICK_SG":
-        return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None])
+        return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "NONE":
         return np.ones(np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
+    raise ValueError(variant)
+
+
+def specular_F_deviation_bound(f0, variant="SCHLICK"):
+    """pbr_specular_F_deviation_bound: max |F - Schlick(f0, f90)| over VdotH (last axis RGB)."""
+    f0 = np.asarray(f0, dtype=np.float64)
+    if variant == "SCHLICK":
+        return np.zeros_like(f0)
+    if variant == "SCHLICK_SG":
+        return brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (brdf.f90_from_f0(f0)[..., None] - f0)
+    if variant == "NONE":
+        return 1.0 - f0
     raise ValueError(variant)
 
 

@@ -1,12 +1,64 @@
-"""Float64 references of pbr/ibl/environment_brdf.glsl, pbr/surface/lighting_standard.glsl
-and the helpers of pbr/unity/surface_standard.glsl (sources cited in the GLSL)."""
+"""Float64 references of pbr/ibl/environment_brdf.glsl, pbr/shading/energy_conservation.glsl,
+pbr/surface/lighting_standard.glsl and the helpers of pbr/unity/surface_standard.glsl
+(sources cited in the GLSL)."""
 
 import numpy as np
 
-from . import shading
+from . import brdf, shading
 from .material import DIELECTRIC_F0
 
 MIN_SPECULAR_ALBEDO = 1e-4  # PBR_MIN_SPECULAR_ALBEDO
+MIN_ONE_MINUS_REFLECTIVITY = 1e-4  # PBR_MIN_ONE_MINUS_REFLECTIVITY
+
+# The DFG table's layout (PBR_DFG_LUT_* of environment_brdf.glsl, tested equal): texel i, j
+# holds (A, B) at x = i / (WIDTH - 1), y = j / (HEIGHT - 1) of the warped axes
+#   x = log2(1 + NdotV / C_NDOTV) / log2(1 + 1 / C_NDOTV),
+#   y = log2((alpha + C_ALPHA) / (ALPHA_MIN + C_ALPHA)) / log2((1 + C_ALPHA) / (ALPHA_MIN + C_ALPHA)).
+DFG_LUT_WIDTH = 256
+DFG_LUT_HEIGHT = 256
+DFG_LUT_C_NDOTV = 0.003
+DFG_LUT_C_ALPHA = 0.003
+DFG_LUT_ALPHA_MIN = shading.MIN_PERCEPTUAL_ROUGHNESS ** 2
+
+
+def dfg_lut_axes(NdotV, perceptual_roughness):
+    """(x, y) in [0, 1] of the warped table axes (float64)."""
+    NdotV = np.clip(_f(NdotV), 0.0, 1.0)
+    alpha = np.clip(_f(perceptual_roughness) ** 2, 0.0, 1.0)
+    x = np.log2(1 + NdotV / DFG_LUT_C_NDOTV) / np.log2(1 + 1 / DFG_LUT_C_NDOTV)
+    y = (np.log2((alpha + DFG_LUT_C_ALPHA) / (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA))
+         / np.log2((1 + DFG_LUT_C_ALPHA) / (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA)))
+    return np.clip(x, 0.0, 1.0), np.clip(y, 0.0, 1.0)
+
+
+def dfg_lut_texel_coordinates(x, y):
+    """Inverse of dfg_lut_axes: the (NdotV, perceptual roughness) of table axes (x, y)."""
+    NdotV = DFG_LUT_C_NDOTV * (2.0 ** (_f(x) * np.log2(1 + 1 / DFG_LUT_C_NDOTV)) - 1)
+    scale = np.log2((1 + DFG_LUT_C_ALPHA) / (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA))
+    alpha = (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA) * 2.0 ** (_f(y) * scale) - DFG_LUT_C_ALPHA
+    return np.clip(NdotV, 0.0, 1.0), np.sqrt(np.clip(alpha, 0.0, 1.0))
+
+
+def dfg_lut_uv(NdotV, perceptual_roughness):
+    """pbr_dfg_lut_uv: texture coordinates of the texel-centre lookup."""
+    x, y = dfg_lut_axes(NdotV, perceptual_roughness)
+    return ((x * (DFG_LUT_WIDTH - 1) + 0.5) / DFG_LUT_WIDTH,
+            (y * (DFG_LUT_HEIGHT - 1) + 0.5) / DFG_LUT_HEIGHT)
+
+
+def sample_dfg_lut(table, NdotV, perceptual_roughness):
+    """What a GPU reads from ``table`` (HEIGHT x WIDTH x 2, row j = y j / (HEIGHT - 1), GL row
+    order) at pbr_dfg_lut_uv: bilinear filtering, clamp to edge, in float64."""
+    u, v = dfg_lut_uv(NdotV, perceptual_roughness)
+    h, w = table.shape[:2]
+    fx, fy = u * w - 0.5, v * h - 0.5
+    i0 = np.clip(np.floor(fx).astype(int), 0, w - 1)
+    j0 = np.clip(np.floor(fy).astype(int), 0, h - 1)
+    i1, j1 = np.minimum(i0 + 1, w - 1), np.minimum(j0 + 1, h - 1)
+    tx, ty = (fx - np.floor(fx))[..., None], (fy - np.floor(fy))[..., None]
+    t = _f(table)
+    return ((t[j0, i0] * (1 - tx) + t[j0, i1] * tx) * (1 - ty)
+            + (t[j1, i0] * (1 - tx) + t[j1, i1] * tx) * ty)
 
 
 def _f(x):
@@ -24,7 +76,34 @@ def env_brdf_approx(NdotV, perceptual_roughness):
 
 
 def specular_albedo(f0, dfg):
-    return _f(f0) * _f(dfg)[..., 0:1] + _f(dfg)[..., 1:2]
+    """f0 A + f90 B with F90 = f90_from_f0(f0) (Schüler 2009 / Filament, as the BRDF's F)."""
+    f90 = brdf.f90_from_f0(f0)[..., None]
+    return _f(f0) * _f(dfg)[..., 0:1] + f90 * _f(dfg)[..., 1:2]
+
+
+def specular_albedo_bound(f0, dfg, specular_f="SCHLICK"):
+    """pbr_specular_albedo_bound: f0 A + f90 B + the F variant's largest distance from
+    Schlick's F (shading.specular_F_deviation_bound) times A + B."""
+    return specular_albedo(f0, dfg) + shading.specular_F_deviation_bound(f0, specular_f) * (
+        _f(dfg)[..., 0:1] + _f(dfg)[..., 1:2])
+
+
+def indirect_specular_albedo(f0, dfg, energy_compensated=True):
+    """Single-scattering albedo, times the compensation when it is applied."""
+    albedo = specular_albedo(f0, dfg)
+    return albedo * energy_compensation(f0, dfg) if energy_compensated else albedo
+
+
+def diffuse_albedo_from_diffuse_color(diffuse_color, f0):
+    """rho = diffuseColor / (1 - max(f0)), capped at 1: the workflow's constant
+    1 - reflectivity undone (pbr/shading/energy_conservation.glsl)."""
+    one_minus = np.maximum(1 - np.max(_f(f0), axis=-1), MIN_ONE_MINUS_REFLECTIVITY)[..., None]
+    return np.minimum(_f(diffuse_color) / one_minus, 1.0)
+
+
+def coupled_diffuse_color(diffuse_color, f0, specular_albedo_):
+    """rho (1 - E_spec): Fdez-Aguera 2019 section 4; Kelemen & Szirmay-Kalos 2001."""
+    return diffuse_albedo_from_diffuse_color(diffuse_color, f0) * (1 - np.clip(_f(specular_albedo_), 0, 1))
 
 
 def energy_compensation(f0, dfg):
@@ -41,9 +120,8 @@ def specular_occlusion(NdotV, occlusion, alpha):
 def indirect_specular_split_sum(prefiltered, f0, perceptual_roughness, NdotV, occlusion, dfg,
                                 energy_compensated=True):
     """Scalars and arrays shaped like NdotV; colours with a last axis of 3."""
-    spec = _f(prefiltered) * specular_albedo(f0, dfg) * specular_occlusion(
+    return _f(prefiltered) * indirect_specular_albedo(f0, dfg, energy_compensated) * specular_occlusion(
         NdotV, _f(occlusion), _f(perceptual_roughness) ** 2)[..., None]
-    return spec * energy_compensation(f0, dfg) if energy_compensated else spec
 
 
 def one_minus_reflectivity_from_metallic(metallic):
@@ -61,12 +139,17 @@ def premultiply_alpha(diff_color, alpha, one_minus_reflectivity, transparent):
 def lighting_standard(diffuse_color, f0, perceptual_roughness, occlusion, n, v, light_dir,
                       light_color, indirect_diffuse, prefiltered, dfg, energy_compensated=True,
                       **variants):
-    """pbr_lighting_standard: direct (pbr_shade_punctual) + indirect diffuse * occlusion +
-    split-sum indirect specular. ``dfg`` is the environment BRDF at (NdotV, roughness).
+    """pbr_lighting_standard_dfg: direct (pbr_shade_punctual with the diffuse coupled to the
+    single-scattering specular albedo) + coupled indirect diffuse * occlusion + split-sum
+    indirect specular. ``dfg`` is the environment BRDF at (NdotV, roughness).
     Vectors and colours have a last axis of 3; roughness and occlusion have the leading
     shape (or are scalars)."""
     r = shading.clamp_perceptual_roughness(perceptual_roughness)
     NdotV = np.maximum(np.sum(_f(n) * v, axis=-1), shading.MIN_NDOTV)
-    direct = shading.shade_punctual(n, v, light_dir, light_color, diffuse_color, f0, r, **variants)
+    specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[variants.get("quality", "HIGH")]
+    direct_diffuse = coupled_diffuse_color(diffuse_color, f0, specular_albedo_bound(f0, dfg, specular_f))
+    direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, **variants)
     spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
-    return direct + _f(diffuse_color) * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
+    indirect_diffuse_color = coupled_diffuse_color(
+        diffuse_color, f0, indirect_specular_albedo(f0, dfg, energy_compensated))
+    return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec

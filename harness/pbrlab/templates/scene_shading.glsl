@@ -10,10 +10,14 @@
 // The columns t, b, n times v: a tangent-space vector in the world.
 #define PBRLAB_FROM_BASIS(t, b, n, v) (mat3(t, b, n) * (v))
 
-#ifdef PBRLAB_ENV
-PBRLAB_DECLARE_TEX2D(u_dfg_lut);  // harness/pbrlab/ibl.py dfg_lut: (A, B)
-// The library samples no textures itself: this hook hands it the DFG table.
-#define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_dfg_lut, vec2(NdotV, perceptualRoughness)).rg
+// The DFG table (harness/pbrlab/ibl.py dfg_lut: (A, B) on the warped axes of
+// pbr_dfg_lut_uv): the environment's split sum and, for every light, the diffuse-specular
+// coupling read it, so it is declared whenever the scene has light.
+#if defined(PBRLAB_ENV) || PBRLAB_DIRECTIONAL_COUNT + PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT > 0
+PBRLAB_DECLARE_TEX2D(u_dfg_lut);
+// The library samples no textures itself: this hook hands it the DFG table, read at the
+// texel-centre coordinates of the library's layout (pbr/ibl/environment_brdf.glsl).
+#define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_dfg_lut, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg
 #endif
 
 #include "pbr/pbr.glsl"

@@ -146,8 +146,7 @@ uniform float4x4 u_view_proj;
 void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out float depth : SV_Depth) {
     PbrlabFragment f;
     float3 d;
-    f.position = pbrlab_sphere_hit(position.xy, d);
-    f.normal = normalize(f.position - u_sphere.xyz);
+    f.position = pbrlab_sphere_hit(position.xy, d, f.normal);
     f.view = -d;
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);
@@ -164,8 +163,7 @@ out vec4 out_radiance;
 void main() {
     PbrlabFragment f;
     vec3 d;
-    f.position = pbrlab_sphere_hit(gl_FragCoord.xy, d);
-    f.normal = normalize(f.position - u_sphere.xyz);
+    f.position = pbrlab_sphere_hit(gl_FragCoord.xy, d, f.normal);
     f.view = -d;
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);

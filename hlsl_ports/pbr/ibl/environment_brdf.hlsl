@@ -3,24 +3,31 @@
 //
 // Provides: vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness)
 //           vec2 pbr_env_brdf(float NdotV, float perceptualRoughness)
+//           vec2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness)
+//           PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT and the table's axis constants
 //           vec3 pbr_specular_albedo(vec3 f0, vec2 dfg)
+//           vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg)
 //           vec3 pbr_energy_compensation(vec3 f0, vec2 dfg)
 //           float pbr_specular_occlusion(float NdotV, float occlusion, float alpha)
 //           float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount)
 // Include:  "pbr/ibl/environment_brdf.hlsl" (path relative to hlsl_ports/)
-// Config macros read: PBR_QUALITY (pbr/shading/dispatch.hlsl);
-//           PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness), a hook the caller may define
-//           to sample its DFG table (it owns the sampler), returning vec2(A, B). Undefined,
-//           or at PBR_QUALITY_LOW, the analytic fit is used.
+// Config macros read: PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness), a hook the caller
+//           may define to sample its DFG table (it owns the sampler), returning vec2(A, B):
+//           typically texture(table, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg with
+//           bilinear filtering and clamp to edge. Undefined, the analytic fit is used (every
+//           tier reads the table when it is given: the diffuse-specular coupling of
+//           pbr/surface/lighting_standard.hlsl needs the albedo of the library's own V).
 //
 // Split sum (Karis 2013, "Real Shading in Unreal Engine 4", eq. 8): the specular
 // reflection of an environment is prefiltered radiance times the directional albedo of
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
-// (harness/pbrlab/ibl.py integrates the table with the library's own V term).
+// (harness/pbrlab/ibl.py integrates the table with the library's own V term; the float64
+// reference of the integral is harness/pbrlab/reference/directional_albedo.py).
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/shading/dispatch.hlsl"
+#include "pbr/common/math.hlsl"
 
 // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox): a fit of the
 // table for GGX + Schlick-GGX visibility; takes perceptual roughness. Its worst error
@@ -33,17 +40,58 @@ vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
     return vec2(-1.04, 1.04) * a004 + r.zw;
 }
 
+// The DFG table's layout (harness/pbrlab/ibl.py writes it; shared constants tested equal).
+// Texel (i, j), i, j from 0, holds (A, B) exactly at x = i / (WIDTH - 1), y = j / (HEIGHT - 1)
+// of the warped axes below, so a bilinear fetch at the texel-centre coordinates
+// (x (WIDTH - 1) + 0.5) / WIDTH interpolates between exact values and never reads past the
+// table's edge values (a plain (NdotV, r) lookup reads NdotV = 1 half a texel short).
+// Axes: the directional albedo has a dip of width ~alpha near NdotV -> 0 (E -> 1 at
+// NdotV = 0, a minimum near NdotV ~ alpha) that a uniform grid misses by up to 5e-2, so
+//   x = log2(1 + NdotV / c) / log2(1 + 1 / c),                          c = 0.003,
+//   y = log2((alpha + c) / (alpha_min + c)) / log2((1 + c) / (alpha_min + c)),
+// with alpha_min = PBR_MIN_PERCEPTUAL_ROUGHNESS² (smaller roughness reads the first row,
+// which every tier clamps to anyway). Measured bilinear error: glsl/README.md.
+#define PBR_DFG_LUT_WIDTH 256.0
+#define PBR_DFG_LUT_HEIGHT 256.0
+#define PBR_DFG_LUT_NDOTV_INV_SCALE 333.333333       // 1 / c of the NdotV axis, c = 0.003
+#define PBR_DFG_LUT_NDOTV_LOG_NORM 0.119258545        // 1 / log2(1 + 1 / 0.003)
+#define PBR_DFG_LUT_ALPHA_OFFSET 0.003                // c of the alpha axis
+#define PBR_DFG_LUT_ALPHA_MIN_INV 199.004975          // 1 / (0.045² + 0.003)
+#define PBR_DFG_LUT_ALPHA_LOG_NORM 0.130873226        // 1 / log2((1 + 0.003) / (0.045² + 0.003))
+
+vec2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness) {
+    float alpha = perceptualRoughness * perceptualRoughness;
+    float x = log2(1.0 + pbr_saturate(NdotV) * PBR_DFG_LUT_NDOTV_INV_SCALE) * PBR_DFG_LUT_NDOTV_LOG_NORM;
+    float y = log2((pbr_saturate(alpha) + PBR_DFG_LUT_ALPHA_OFFSET) * PBR_DFG_LUT_ALPHA_MIN_INV)
+            * PBR_DFG_LUT_ALPHA_LOG_NORM;
+    vec2 size = vec2(PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT);
+    return (clamp(vec2(x, y), 0.0, 1.0) * (size - 1.0) + 0.5) / size;
+}
+
 vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
-#if defined(PBR_DFG_LUT_LOOKUP) && PBR_QUALITY != PBR_QUALITY_LOW
+#if defined(PBR_DFG_LUT_LOOKUP)
     return PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness);
 #else
     return pbr_env_brdf_approx(NdotV, perceptualRoughness);
 #endif
 }
 
-// Directional albedo of the specular lobe for F0 (f90 = 1: "everything has Fresnel").
+// Directional albedo of the single-scattering specular lobe: Schlick's F0 and F90 weights
+// of the split sum, F90 = pbr_f90_from_f0(f0) as in the BRDF (pbr/shading/dispatch.hlsl).
 vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
-    return f0 * dfg.x + dfg.y;
+    return f0 * dfg.x + pbr_f90_from_f0(f0) * dfg.y;
+}
+
+// An upper bound of the albedo of the tier's own direct specular lobe, for the
+// diffuse-specular coupling of punctual lights. The table holds Schlick's weights; a
+// Fresnel within pbr_specular_F_deviation_bound(f0) of Schlick at every VdotH (the MEDIUM
+// tier's spherical-Gaussian form: PBR_F_SCHLICK_SG_MAX_ABS_ERROR (f90 - f0)) reflects at
+// most f0 A + f90 B + that deviation times A + B (measured without it: a white F0 = 0.02
+// dielectric reflected 1.0025 of a direct light at MEDIUM). The fast and separable V terms
+// have at most the albedo of the exact height-correlated V the table holds (their
+// denominators are larger, Hammon 2017 / Heitz 2014), so they need no margin.
+vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
+    return pbr_specular_albedo(f0, dfg) + pbr_specular_F_deviation_bound(f0) * (dfg.x + dfg.y);
 }
 
 // Single-scattering GGX loses energy at high roughness (up to 69 % at roughness 1, see
@@ -51,8 +99,8 @@ vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
 // f0 = 1: Fdez-Aguera 2019, "A Multiple-Scattering Microfacet Model for Real-Time
 // Image-based Lighting", as simplified in Filament ("Physically Based Rendering in
 // Filament", section 5.3.4.7). A white metal in a white furnace then reflects 1.
-// Lower bound of E in the division: the table's smallest E (rough, grazing) is about
-// 0.3, so the guard only protects against a caller's zero dfg.
+// Lower bound of E in the division: the table's smallest E (roughness 1, head-on) is
+// 0.307, so the guard only protects against a caller's zero dfg.
 #define PBR_MIN_SPECULAR_ALBEDO 1e-4
 
 vec3 pbr_energy_compensation(vec3 f0, vec2 dfg) {

@@ -3,6 +3,7 @@
 // Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
 //           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)
 //           vec3  pbr_specular_F(vec3 f0, float VdotH)
+//           vec3  pbr_specular_F_deviation_bound(vec3 f0)  (max |F - Schlick's F| over VdotH)
 //           float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
 //           float pbr_specular_lobe_limit(float DV)  (the tier's cap on D · V)
 //           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
@@ -18,7 +19,8 @@
 //                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
 //   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
-//                   white-furnace checks and debugging)
+//                   white-furnace checks and debugging); both Schlick forms take
+//                   F90 = pbr_f90_from_f0(f0)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //   PBR_BRDF_MODEL  PBR_BRDF_MODEL_PBRLAB (default: the library's physical shading) |
 //                   PBR_BRDF_MODEL_UNITY (Unity's built-in BRDFs formula for formula,
@@ -206,13 +208,30 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 #endif
 }
 
+// F90 follows F0 (pbr_f90_from_f0, Schüler 2009 / Filament): F0 = 0 reflects nothing.
 vec3 pbr_specular_F(vec3 f0, float VdotH) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
-    return pbr_F_Schlick(f0, VdotH);
+    return pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    return pbr_F_SchlickSG(f0, VdotH);
+    return pbr_F_SchlickSG(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((vec3)(1.0));
+#else
+#error "PBR_SPECULAR_F: unknown value"
+#endif
+}
+
+// The largest |pbr_specular_F - pbr_F_Schlick(f0, f90, VdotH)| over VdotH in [0, 1]: how far
+// the selected F can reflect beyond the Schlick weights of the split-sum table (used by the
+// diffuse-specular coupling, pbr_specular_albedo_bound). SG: PBR_F_SCHLICK_SG_MAX_ABS_ERROR
+// times (f90 - f0) (f_schlick.hlsl); NONE (F = 1): 1 - f0, F's distance from Schlick at VdotH = 1.
+vec3 pbr_specular_F_deviation_bound(vec3 f0) {
+#if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
+    return ((vec3)(0.0));
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
+    return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((vec3)(pbr_f90_from_f0(f0))) - f0);
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
+    return ((vec3)(1.0)) - f0;
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif

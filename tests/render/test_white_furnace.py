@@ -1,0 +1,164 @@
+"""White furnace through the renderer: spheres of radius 1 in a uniform white environment
+{"color": [1, 1, 1]}, no lights, tonemap none, float target. Every covered pixel of every
+sphere is checked, with mu = n.v per pixel from the sphere geometry in float64 numpy, against
+the float64 directional albedo of pbrlab.reference.directional_albedo (written from the
+integral, independent of the DFG table and of the GLSL).
+
+Materials (rows), at smoothness 0, 0.125, ..., 1 (columns), every tier, with and without
+multiple-scattering compensation:
+  white metal         albedo 1, metallic 1: F0 = F90 = 1, no diffuse
+  white dielectric    albedo 1, metallic 0: F0 = 0.04, diffuse albedo 1 (0.96 / (1 - 0.04))
+  zero-F0 dielectric  specular workflow, albedo 1, specular 0: F0 = F90 = 0, no specular
+  black dielectric    albedo 0, metallic 0: the specular lobe of F0 = 0.04 alone
+"""
+
+import numpy as np
+import pytest
+
+from pbrlab.camera import camera_frame, camera_rays
+from pbrlab.reference import directional_albedo as ref_albedo
+from pbrlab.reference import shading as ref_shading
+from pbrlab.render import render_scene, scene_radius
+from pbrlab.scene import parse_scene
+
+SMOOTHNESS = [i / 8 for i in range(9)]
+MATERIALS = {
+    "white_metal": {"albedo": [1, 1, 1], "metallic": 1.0},
+    "white_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0},
+    "zero_f0_dielectric": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0, 0, 0]},
+    "black_dielectric": {"albedo": [0, 0, 0], "metallic": 0.0},
+}
+F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04}
+PIXELS_PER_SPHERE = 40
+SPACING = 2.2
+
+# Reflectance (radiance / environment radiance, unitless) bounds:
+# never more than what arrives, up to float32 sums (the prefilter and SH9 of a constant
+# and the shading are float32: measured excess <= 8.3e-7, so 1e-4 is 120x that);
+ENERGY_GAIN_LIMIT = 1e-4
+# against the float64 albedo at the pixel's mu: the issue's bound, 1e-3 absolute. What it
+# covers: the 256x256 table's bilinear error as sampled (4.0e-5 max, tests/surface/
+# test_dfg_table.py), float32 n.v at grazing pixels (E's slope reaches ~100 there) and the
+# cubic spline of the reference (< 1e-6). Measured worst: 6.5e-5 (F0 = 0.04 specular lobe).
+ALBEDO_TOLERANCE = 1e-3
+
+
+def _scene(quality, compensation):
+    rows = list(MATERIALS)
+    width, height = len(SMOOTHNESS) * PIXELS_PER_SPHERE, len(rows) * PIXELS_PER_SPHERE
+    distance = 40.0
+    fov = 2 * np.degrees(np.arctan(len(rows) * SPACING / 2 / distance))
+    materials, objects = {}, []
+    for i, name in enumerate(rows):
+        for j, s in enumerate(SMOOTHNESS):
+            key = f"{name}_{j}"
+            materials[key] = dict(MATERIALS[name], smoothness=s)
+            centre = [(j - (len(SMOOTHNESS) - 1) / 2) * SPACING, ((len(rows) - 1) / 2 - i) * SPACING, 0.0]
+            objects.append({"sphere": {"center": centre, "radius": 1.0}, "material": key})
+    return {
+        "camera": {"position": [0, 0, distance], "target": [0, 0, 0], "fov_y_deg": float(fov),
+                   "size": [width, height]},
+        "lights": [], "environment": {"color": [1, 1, 1]}, "materials": materials, "objects": objects,
+        "render": {"quality": quality, "tonemap": "none", "energy_compensation": compensation},
+    }
+
+
+def _pixel_geometry(scene):
+    """Per pixel: index of the nearest sphere hit (-1: none) and mu = n.v, float64 numpy."""
+    frame = camera_frame(scene.camera, scene_radius(scene))
+    d = camera_rays(frame)
+    origin = np.asarray(frame.position, np.float64)
+    best_t = np.full(d.shape[:2], np.inf)
+    index = np.full(d.shape[:2], -1)
+    mu = np.zeros(d.shape[:2])
+    for k, obj in enumerate(scene.spheres):
+        centre, radius = (np.asarray(x, np.float64) for x in obj.sphere)
+        oc = origin - centre
+        b = d @ oc
+        disc = b * b - (oc @ oc - radius * radius)
+        t = -b - np.sqrt(np.maximum(disc, 0.0))
+        hit = (disc >= 0) & (t > 0) & (t < best_t)
+        n = (origin + t[..., None] * d - centre) / radius
+        best_t = np.where(hit, t, best_t)
+        index = np.where(hit, k, index)
+        mu = np.where(hit, np.sum(n * -d, axis=-1), mu)
+    return index, mu
+
+
+def _expected(name, compensation, A, B):
+    """Reflectance of a uniform white environment, written from the sources: split sum
+    f0 A + f90 B (Karis 2013), F90 = saturate(16.5 * 3 f0) (Schüler 2009 / Filament),
+    compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E)."""
+    f0 = F0[name]
+    f90 = min(1.0, 16.5 * 3 * f0)
+    e = f0 * A + f90 * B
+    if compensation:
+        e = e * (1 + f0 * (1 / (A + B) - 1))
+    rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0}[name]
+    return e + rho * (1 - e)
+
+
+_RENDERS = {}  # (quality, compensation) -> (scene, linear): each variant rendered once per process
+
+
+class _Furnace:
+    def __init__(self, ctx):
+        self.ctx = ctx
+
+    def __getitem__(self, key):
+        if key not in _RENDERS:
+            scene = parse_scene(_scene(*key))
+            _RENDERS[key] = scene, render_scene(scene, self.ctx).linear.astype(np.float64)
+        return _RENDERS[key]
+
+
+@pytest.fixture
+def furnace(gl_context):
+    return _Furnace(gl_context)
+
+
+@pytest.mark.parametrize("quality", ["high", "medium", "low"])
+@pytest.mark.parametrize("compensation", [True, False], ids=["compensated", "single_scattering"])
+def test_white_furnace_never_reflects_more_than_it_receives(furnace, quality, compensation):
+    scene, linear = furnace[quality, compensation]
+    covered = linear[..., 3] > 0
+    index, _ = _pixel_geometry(scene)
+    assert np.array_equal(covered, index >= 0)  # every covered pixel is a sphere pixel, and back
+    assert np.isfinite(linear).all()
+    excess = linear[covered, :3].max() - 1.0
+    assert excess <= ENERGY_GAIN_LIMIT, excess
+
+
+@pytest.mark.parametrize("quality", ["high", "medium", "low"])
+@pytest.mark.parametrize("compensation", [True, False], ids=["compensated", "single_scattering"])
+def test_white_furnace_matches_the_float64_directional_albedo_at_every_pixel(furnace, quality, compensation):
+    scene, linear = furnace[quality, compensation]
+    index, mu = _pixel_geometry(scene)
+    tier = quality.upper()
+    worst = {}
+    for k, obj in enumerate(scene.spheres):
+        name, column = obj.material.rsplit("_", 1)
+        mask = index == k
+        assert mask.sum() > 500  # the whole disc, silhouette included
+        rough = ref_shading.clamp_perceptual_roughness(1.0 - SMOOTHNESS[int(column)], tier)
+        A, B = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
+            np.maximum(mu[mask], ref_shading.MIN_NDOTV), float(rough) ** 2), -1, 0)
+        want = _expected(name, compensation, A, B)
+        err = np.abs(linear[mask, :3] - want[:, None]).max()
+        worst[obj.material] = err
+    bad = {k: v for k, v in worst.items() if v > ALBEDO_TOLERANCE}
+    assert not bad, bad
+
+
+def test_white_metal_with_compensation_reflects_one_and_single_scattering_loses_energy(furnace):
+    # The compensated white metal is 1 everywhere; without compensation the rough one is
+    # visibly darker (E(mu = 1, alpha = 1) = 0.307), so the two renders really differ.
+    for quality in ("high", "medium", "low"):
+        scene, compensated = furnace[quality, True]
+        _, single = furnace[quality, False]
+        index, mu = _pixel_geometry(scene)
+        metal = np.isin(index, [k for k, o in enumerate(scene.spheres) if o.material.startswith("white_metal")])
+        np.testing.assert_allclose(compensated[metal, :3], 1.0, atol=ALBEDO_TOLERANCE)
+        rough_metal = index == [o.material for o in scene.spheres].index("white_metal_0")
+        centre = rough_metal & (mu > 0.99)
+        assert centre.any() and np.all(np.abs(single[centre, :3] - 0.307) < 5e-3)
