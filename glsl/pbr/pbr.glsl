@@ -1,4 +1,5 @@
 // pbr/pbr.glsl: the umbrella include: every public file of the pbrlab shading library.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: everything below.
 // Include:  "pbr/pbr.glsl" (path relative to glsl/), or the individual files you need

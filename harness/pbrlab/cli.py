@@ -12,10 +12,26 @@ import argparse
 import importlib
 import sys
 
+from . import __version__
 from .errors import PbrlabError
 from .gl import BACKENDS
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench")
+
+class _VersionAction(argparse.Action):
+    """``--version``: the package version and where its shaders are (``pbrlab paths``)."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS,
+                         help="print the version and where the shaders are, then exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from .commands import paths
+        print(f"pbrlab {__version__}")
+        for line in paths.lines():
+            print(f"  {line}")
+        parser.exit()
+
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "paths")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -25,6 +41,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="OpenGL backend (default: $PBRLAB_GL_BACKEND, else EGL then OSMesa)")
     parser = argparse.ArgumentParser(
         prog="pbrlab", description="Render, evaluate and verify the pbrlab shading library.")
+    parser.add_argument("--version", action=_VersionAction)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name in COMMANDS:
         importlib.import_module(f"pbrlab.commands.{name}").register(sub, common)

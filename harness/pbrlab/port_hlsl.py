@@ -36,9 +36,10 @@ import sys
 from pathlib import Path
 
 from .errors import PbrlabError
+from .locations import locate
 from .shaders import GLSL_ROOT
 
-HLSL_ROOT = GLSL_ROOT.parent / "hlsl_ports"
+HLSL_ROOT = locate("hlsl_ports")
 SHIM_INCLUDE = "pbr/common/shim.hlsl"
 GENERATOR = "harness/pbrlab/port_hlsl.py"
 

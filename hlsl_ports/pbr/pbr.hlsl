@@ -1,4 +1,5 @@
 // pbr/pbr.hlsl: the umbrella include: every public file of the pbrlab shading library.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: everything below.
 // Include:  "pbr/pbr.hlsl" (path relative to hlsl_ports/), or the individual files you need

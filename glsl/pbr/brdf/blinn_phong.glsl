@@ -1,4 +1,5 @@
 // pbr/brdf/blinn_phong.glsl: the lecture's Blinn-Phong lighting models (not microfacet).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_BRDF_BlinnPhongClassic(float NdotH, float NdotL, float specPower)
 //           float pbr_BRDF_BlinnPhongModified(float NdotH, float specPower)

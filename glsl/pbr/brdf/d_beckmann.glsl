@@ -1,4 +1,5 @@
 // pbr/brdf/d_beckmann.glsl: the Beckmann normal distribution.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_D_Beckmann(float NdotH, float alpha)
 //           float pbr_D_Beckmann_fromOneMinusNdotH2(float NdotH, float oneMinusNdotH2, float alpha)

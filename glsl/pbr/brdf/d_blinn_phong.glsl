@@ -1,4 +1,5 @@
 // pbr/brdf/d_blinn_phong.glsl: the Blinn-Phong microfacet distribution.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_D_BlinnPhong(float NdotH, float specPower)
 // Include:  "pbr/brdf/d_blinn_phong.glsl" (path relative to glsl/)

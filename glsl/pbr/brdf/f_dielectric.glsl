@@ -1,4 +1,5 @@
 // pbr/brdf/f_dielectric.glsl: exact unpolarised Fresnel reflectance of a dielectric interface.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_F_Dielectric(float cosTheta, float eta)
 // Include:  "pbr/brdf/f_dielectric.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/brdf/fd_lambert.glsl: the Lambertian diffuse BRDF.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_Fd_Lambert()
 // Include:  "pbr/brdf/fd_lambert.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/brdf/g_cook_torrance.glsl: the original Cook-Torrance geometric attenuation.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G_CookTorrance(float NdotL, float NdotV, float NdotH, float VdotH)
 //           float pbr_V_CookTorrance(float NdotL, float NdotV, float NdotH, float VdotH)

@@ -1,4 +1,5 @@
 // pbr/brdf/g_schlick_ggx.glsl: Schlick's approximation of Smith, matched to GGX.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G1_SchlickGGX(float NdotX, float k)
 //           float pbr_G_SchlickGGX(float NdotL, float NdotV, float k)

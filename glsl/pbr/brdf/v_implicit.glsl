@@ -1,4 +1,5 @@
 // pbr/brdf/v_implicit.glsl: the implicit geometric term.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G_Implicit(float NdotL, float NdotV), float pbr_V_Implicit()
 // Include:  "pbr/brdf/v_implicit.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/brdf/v_smith_ggx_correlated.glsl: height-correlated Smith GGX visibility.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_V_SmithGGXCorrelated(float NdotL, float NdotV, float alpha)      (exact)
 //           float pbr_V_SmithGGXCorrelatedFast(float NdotL, float NdotV, float alpha)  (approx.)

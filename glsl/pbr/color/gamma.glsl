@@ -1,4 +1,5 @@
 // pbr/color/gamma.glsl: the lecture's approximate "DIY linear space" helpers.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_degamma, pbr_regamma (pow 2.2 / pow 1/2.2), pbr_degamma_fast,
 //           pbr_regamma_fast (c·c / sqrt c), PBR_DISPLAY_GAMMA.

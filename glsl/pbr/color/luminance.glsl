@@ -1,4 +1,5 @@
 // pbr/color/luminance.glsl: relative luminance of a linear Rec. 709 / sRGB colour.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_luminance(vec3 linear), PBR_LUMINANCE_REC709.
 // Include:  "pbr/color/luminance.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/common/constants.glsl: mathematical constants of the pbrlab shading library.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_PI, PBR_INV_PI, PBR_TWO_PI, PBR_HALF_PI.
 // Include:  "pbr/common/constants.glsl" (path relative to glsl/)

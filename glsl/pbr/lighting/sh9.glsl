@@ -1,4 +1,5 @@
 // pbr/lighting/sh9.glsl: irradiance from order-2 spherical harmonics (9 RGB coefficients).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_sh9_irradiance(vec3 sh[9], vec3 n)
 // Include:  "pbr/lighting/sh9.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/material/ior.glsl: F0 <-> index of refraction at normal incidence.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_f0_from_ior(float eta), pbr_ior_from_f0(float f0).
 // Include:  "pbr/material/ior.glsl" (path relative to glsl/)

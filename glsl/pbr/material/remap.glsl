@@ -1,4 +1,5 @@
 // pbr/material/remap.glsl: roughness vocabulary converters and the lecture's gloss remaps.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_perceptual_roughness_from_smoothness, pbr_alpha_from_perceptual_roughness,
 //           pbr_perceptual_roughness_from_alpha, pbr_alpha_from_smoothness,

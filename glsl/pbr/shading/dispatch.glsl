@@ -1,4 +1,5 @@
 // pbr/shading/dispatch.glsl: variant selection for the specular D, V, F and diffuse terms.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
 //           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)

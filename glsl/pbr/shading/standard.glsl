@@ -1,4 +1,5 @@
 // pbr/shading/standard.glsl: the standard shading model, diffuse + Cook-Torrance specular.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
 //                                   float perceptualRoughness)

@@ -1,4 +1,5 @@
 // pbr/tonemap/aces.glsl: two fits of the ACES filmic transform (RRT + sRGB ODT).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap_aces_fitted(vec3 color)     (Hill 2016, with the colour matrices)
 //           vec3 pbr_tonemap_aces_narkowicz(vec3 color)  (Narkowicz 2015, luminance-only curve)

@@ -1,4 +1,5 @@
 // pbr/tonemap/exposure.glsl: photographic exposure in stops.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_apply_exposure(vec3 color, float exposureEV)
 // Include:  "pbr/tonemap/exposure.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/tonemap/hable.glsl: Hable's filmic curve from Uncharted 2.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap_hable(vec3 color), float pbr_hable_curve(float x)
 // Include:  "pbr/tonemap/hable.glsl" (path relative to glsl/)

@@ -1,4 +1,5 @@
 // pbr/tonemap/tonemap.glsl: tonemapper selection.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap(vec3 color) and the selector values PBR_TONEMAP_*.
 // Include:  "pbr/tonemap/tonemap.glsl" (path relative to glsl/)

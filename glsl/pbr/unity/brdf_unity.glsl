@@ -1,4 +1,5 @@
 // pbr/unity/brdf_unity.glsl: Unity's built-in Standard BRDFs, formula for formula.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: UnityLight, UnityIndirect, UnityGI (aliases of pbr_Light, pbr_Indirect, pbr_GI);
 //           Unity's terms by Unity's names: float Pow4(float), vec2 Pow4(vec2),

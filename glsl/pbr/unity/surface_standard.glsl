@@ -1,4 +1,5 @@
 // pbr/unity/surface_standard.glsl: Unity's Standard-shader surface API, by Unity's names.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: struct SurfaceOutputStandard, struct SurfaceOutputStandardSpecular;
 //           UnityLight, UnityIndirect, UnityGI (aliases of pbr_Light, pbr_Indirect, pbr_GI);

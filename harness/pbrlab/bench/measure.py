@@ -17,10 +17,11 @@ from pathlib import Path
 import numpy as np
 
 from .. import evaluator, gl, ibl, shaders, targets
+from ..locations import locate
 from . import kernel
 from .families import Family, Variant
 
-DEFAULT_SCENE = Path(__file__).resolve().parents[3] / "scenes" / "unity_example" / "scene.json"
+DEFAULT_SCENE = locate("scenes") / "unity_example" / "scene.json"
 TIERS = ("high", "medium", "low")
 
 

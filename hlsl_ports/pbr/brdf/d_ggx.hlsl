@@ -1,4 +1,5 @@
 // pbr/brdf/d_ggx.hlsl: the GGX / Trowbridge-Reitz normal distribution.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_D_GGX(float NdotH, float alpha)
 //           float pbr_D_GGX(vec3 n, vec3 h, float alpha)            (cancellation-free, preferred)

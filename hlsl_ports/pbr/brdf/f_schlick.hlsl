@@ -1,4 +1,5 @@
 // pbr/brdf/f_schlick.hlsl: Schlick's Fresnel approximation and its variants.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_F_Schlick(float f0, float VdotH)
 //           vec3  pbr_F_Schlick(vec3 f0, float VdotH)

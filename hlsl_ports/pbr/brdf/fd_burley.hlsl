@@ -1,4 +1,5 @@
 // pbr/brdf/fd_burley.hlsl: the Disney ("Burley") diffuse BRDF.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_Fd_Burley(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
 // Include:  "pbr/brdf/fd_burley.hlsl" (path relative to hlsl_ports/)

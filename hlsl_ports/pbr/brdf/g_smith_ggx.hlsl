@@ -1,4 +1,5 @@
 // pbr/brdf/g_smith_ggx.hlsl: the exact separable Smith masking-shadowing for GGX.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G1_SmithGGX(float NdotX, float alpha)
 //           float pbr_G_SmithGGX(float NdotL, float NdotV, float alpha)

@@ -1,4 +1,5 @@
 // pbr/brdf/v_implicit.hlsl: the implicit geometric term.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G_Implicit(float NdotL, float NdotV), float pbr_V_Implicit()
 // Include:  "pbr/brdf/v_implicit.hlsl" (path relative to hlsl_ports/)

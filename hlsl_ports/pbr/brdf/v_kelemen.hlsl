@@ -1,4 +1,5 @@
 // pbr/brdf/v_kelemen.hlsl: the Kelemen / Szirmay-Kalos geometric term.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_G_Kelemen(float NdotL, float NdotV, float VdotH), float pbr_V_Kelemen(float VdotH)
 // Include:  "pbr/brdf/v_kelemen.hlsl" (path relative to hlsl_ports/)

@@ -1,4 +1,5 @@
 // pbr/color/srgb.hlsl: the exact sRGB transfer functions of IEC 61966-2-1:1999.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_srgb_to_linear(float|vec3), pbr_linear_to_srgb(float|vec3) and the
 //           PBR_SRGB_* constants of the standard.

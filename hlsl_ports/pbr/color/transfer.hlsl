@@ -1,4 +1,5 @@
 // pbr/color/transfer.hlsl: the two ways of lighting in linear space, behind one selector.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_decode_color_texel(vec3), pbr_encode_final_color(vec3) and the selector
 //           values PBR_COLOR_TRANSFER_{HARDWARE,SRGB,GAMMA22,FAST}.

@@ -1,4 +1,5 @@
 // pbr/common/conventions.hlsl: the conventions every pbrlab file follows, written once.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_LIGHT_UNIT_SCALE (and, through its includes, PBR_PI and the math helpers).
 // Include:  "pbr/common/conventions.hlsl" (path relative to hlsl_ports/)

@@ -1,4 +1,5 @@
 // pbr/common/guards.hlsl: the numeric guards of the library, each a named constant with its
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // derivation and its accuracy cost, and the helpers that apply them.
 //
 // Provides: PBR_FLT_MIN, PBR_HALF_MAX, PBR_MIN_ALPHA, PBR_MIN_NDOTV, PBR_MIN_VDOTH,

@@ -1,4 +1,5 @@
 // pbr/common/math.hlsl: small scalar helpers shared by every layer.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_saturate, pbr_sq, pbr_pow5, pbr_max3, pbr_min3.
 // Include:  "pbr/common/math.hlsl" (path relative to hlsl_ports/)

@@ -1,4 +1,5 @@
 // pbr/common/shim.hlsl: the GLSL spellings the ported bodies use, defined for HLSL.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: the GLSL type names vec2..4, ivec2..4, uvec2..4, bvec2..4 (macros for the HLSL
 //           vector types); mix (lerp, and GLSL's boolean-select form), fract (frac),

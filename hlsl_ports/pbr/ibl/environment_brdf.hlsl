@@ -1,4 +1,5 @@
 // pbr/ibl/environment_brdf.hlsl: the split-sum environment BRDF and what surrounds it:
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // specular occlusion, multiple-scattering energy compensation, prefiltered-mip choice.
 //
 // Provides: vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness)

@@ -1,4 +1,5 @@
 // pbr/ibl/equirect.hlsl: direction <-> texture coordinates of an equirectangular map.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec2 pbr_equirect_uv(vec3 dir)
 //           vec3 pbr_equirect_direction(vec2 uv)

@@ -1,4 +1,5 @@
 // pbr/ibl/importance_sampling.hlsl: low-discrepancy points and GGX importance sampling,
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // for prefiltering environments and integrating the environment BRDF.
 //
 // Provides: vec2 pbr_hammersley(uint i, uint count)

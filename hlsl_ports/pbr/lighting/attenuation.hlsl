@@ -1,4 +1,5 @@
 // pbr/lighting/attenuation.hlsl: how much of a point or spot light reaches a point.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_range_window(float distance2, float range)
 //           float pbr_distance_attenuation(float distance2, float range)

@@ -1,4 +1,5 @@
 // pbr/lighting/punctual.hlsl: punctual (directional, point, spot) light integration.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
 //                                   vec3 diffuseColor, vec3 f0, float perceptualRoughness)

@@ -1,4 +1,5 @@
 // pbr/material/f0_tables.hlsl: the lecture's F0 tables (linear reflectance at normal incidence).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_F0_<DIELECTRIC> (float) and PBR_F0_<METAL> (vec3, linear RGB).
 // Include:  "pbr/material/f0_tables.hlsl" (path relative to hlsl_ports/)

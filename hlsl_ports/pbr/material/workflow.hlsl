@@ -1,4 +1,5 @@
 // pbr/material/workflow.hlsl: metallic and specular workflows (diffuse colour and F0).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_DIELECTRIC_F0, pbr_f0_from_metallic, pbr_diffuse_from_metallic,
 //           pbr_diffuse_from_specular (monochrome), pbr_diffuse_from_specular_per_channel.

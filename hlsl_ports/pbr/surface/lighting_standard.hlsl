@@ -1,4 +1,5 @@
 // pbr/surface/lighting_standard.hlsl: one surface point lit by one punctual light and by
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // the environment (indirect diffuse and specular): the core of the Unity-style API.
 //
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI

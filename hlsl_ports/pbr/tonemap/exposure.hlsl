@@ -1,4 +1,5 @@
 // pbr/tonemap/exposure.hlsl: photographic exposure in stops.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_apply_exposure(vec3 color, float exposureEV)
 // Include:  "pbr/tonemap/exposure.hlsl" (path relative to hlsl_ports/)

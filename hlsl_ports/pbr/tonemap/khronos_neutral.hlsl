@@ -1,4 +1,5 @@
 // pbr/tonemap/khronos_neutral.hlsl: the Khronos PBR Neutral tone mapper.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap_khronos_neutral(vec3 color)
 // Include:  "pbr/tonemap/khronos_neutral.hlsl" (path relative to hlsl_ports/)

@@ -1,4 +1,5 @@
 // pbr/tonemap/reinhard.hlsl: Reinhard's global operator.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap_reinhard(vec3 color)
 //           vec3 pbr_tonemap_reinhard_extended(vec3 color, float whitePoint)

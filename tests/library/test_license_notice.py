@@ -1,0 +1,24 @@
+"""Every shader file an engine copies carries the licence notice (README: Licence): the GLSL
+library, its generated HLSL twins (the generator copies the GLSL header) and the hand-written
+shim, and so does an amalgamated single file."""
+
+import pytest
+
+from pbrlab import hlsl, shaders
+
+NOTICE = "// SPDX-License-Identifier: MIT. Part of pbrlab"
+FILES = {f"{root.name}/{path.relative_to(root).as_posix()}": path
+         for root, suffix in ((shaders.GLSL_ROOT, "*.glsl"), (hlsl.HLSL_ROOT, "*.hlsl"))
+         for path in sorted((root / "pbr").rglob(suffix))}
+
+
+@pytest.mark.parametrize("name", sorted(FILES))
+def test_shader_file_carries_the_licence_notice_in_its_header(name):
+    path = FILES[name]
+    second_line = path.read_text(encoding="utf-8").splitlines()[1]
+    assert second_line.startswith(NOTICE), f"{path}: line 2 is {second_line!r}"
+
+
+def test_amalgamated_library_carries_the_notice():
+    text = shaders.expand('#include "pbr/pbr.glsl"\n', line_directives=False).text
+    assert NOTICE in text
