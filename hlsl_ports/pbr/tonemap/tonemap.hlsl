@@ -21,12 +21,12 @@
 #include "pbr/tonemap/aces.hlsl"
 #include "pbr/tonemap/khronos_neutral.hlsl"
 
-#define PBR_TONEMAP_NONE            0
-#define PBR_TONEMAP_REINHARD        1
-#define PBR_TONEMAP_HABLE           2
-#define PBR_TONEMAP_ACES_FITTED     3
-#define PBR_TONEMAP_ACES_NARKOWICZ  4
-#define PBR_TONEMAP_KHRONOS_NEUTRAL 5
+#define PBR_TONEMAP_NONE            1
+#define PBR_TONEMAP_REINHARD        2
+#define PBR_TONEMAP_HABLE           3
+#define PBR_TONEMAP_ACES_FITTED     4
+#define PBR_TONEMAP_ACES_NARKOWICZ  5
+#define PBR_TONEMAP_KHRONOS_NEUTRAL 6
 
 #ifndef PBR_TONEMAP
 #define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
