@@ -14,7 +14,7 @@ predefine and the SPIR-V validator run on the result:
   6.0: __SHADER_TARGET_MAJOR 6, __SHADER_TARGET_MINOR 0, __HLSL_VERSION 2018 (DXC ps_6_0),
        -Od (what the evaluator runs), --spirv-val.
 The ports use nothing shader-model dependent (no 16-bit types, no wave ops, no vector ?:
-which HLSL 2021 forbids: the shim's boolean mix selects per component), so both compile
+which HLSL 2021 forbids: the generator refuses a boolean mix), so both compile
 the same text; a real FXC/DXC run is not part of this toolchain.
 """
 
@@ -144,18 +144,3 @@ def test_unity_types_work_and_step_aside(prelude, sixteen_bit):
     text = prelude + '#include "pbr/unity/surface_standard.hlsl"\n' + HAVE_FIXED
     args = ["--hlsl-enable-16bit-types"] if sixteen_bit else []
     hlsl.compile_spirv(text, "<unity-types>", extra_args=args)
-
-
-def test_engine_glsl_names_are_respected():
-    """An engine header that already spells vec3 etc. as macros and defines the GLSL
-    functions (PBR_HLSL_NO_GLSL_FUNCTIONS) compiles with the library: the shim steps aside."""
-    prelude = ("#define vec2 float2\n#define vec3 float3\n#define vec4 float4\n"
-               "#define PBR_HLSL_NO_GLSL_FUNCTIONS\n"
-               "float3 mix(float3 x, float3 y, float a) { return lerp(x, y, a); }\n"
-               "float3 mix(float3 x, float3 y, bool3 a) { return float3(a.x ? y.x : x.x, a.y ? y.y : x.y, a.z ? y.z : x.z); }\n"
-               "float mix(float x, float y, float a) { return lerp(x, y, a); }\n"
-               "bool3 greaterThan(float3 a, float3 b) { return a > b; }\n"
-               "float fract(float x) { return frac(x); }\n"
-               "float3 inversesqrt(float3 x) { return rsqrt(x); }\n")
-    text = prelude + '#include "pbr/pbr.hlsl"\nfloat4 main(float4 p : SV_Position) : SV_Target0 { return p; }\n'
-    hlsl.compile_spirv(text, "<engine-names>")

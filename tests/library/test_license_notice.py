@@ -14,9 +14,10 @@ FILES = {f"{root.name}/{path.relative_to(root).as_posix()}": path
 
 @pytest.mark.parametrize("name", sorted(FILES))
 def test_shader_file_carries_the_licence_notice_in_its_header(name):
-    path = FILES[name]
-    second_line = path.read_text(encoding="utf-8").splitlines()[1]
-    assert second_line.startswith(NOTICE), f"{path}: line 2 is {second_line!r}"
+    """The notice closes the header comment, on the line before the include guard."""
+    lines = FILES[name].read_text(encoding="utf-8").splitlines()
+    guard = next(i for i, line in enumerate(lines) if line.startswith("#ifndef PBR_"))
+    assert lines[guard - 1].startswith(NOTICE), f"{name}: the line before the guard is {lines[guard - 1]!r}"
 
 
 def test_amalgamated_library_carries_the_notice():

@@ -1,5 +1,4 @@
 // pbr/brdf/d_ggx.glsl: the GGX / Trowbridge-Reitz normal distribution.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_D_GGX(float NdotH, float alpha)
 //           float pbr_D_GGX(vec3 n, vec3 h, float alpha)            (cancellation-free, preferred)
@@ -34,6 +33,7 @@
 // consistent 1 - NdotH² and keeps D <= 1/(π alpha²) when a caller passes an inconsistent one.
 // Bit-identical to the unguarded formula for NdotH in [0, 1], alpha in [1e-7, 1].
 // Normalised: ∫ D (n·h) dω_h = 1 (tested).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_GGX_GLSL
 #define PBR_BRDF_D_GGX_GLSL
 

@@ -1,5 +1,4 @@
 // pbr/brdf/f_schlick.glsl: Schlick's Fresnel approximation and its variants.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_F_Schlick(float f0, float VdotH)
 //           vec3  pbr_F_Schlick(vec3 f0, float VdotH)
@@ -25,6 +24,7 @@
 // tests/library/test_brdf_terms.py::test_F_SchlickSG_error_bound.
 // Guard: VdotH is saturated in every form (VdotH slightly above 1 from rounding would make
 // (1 - VdotH)^5 negative and F < F0, below 0 for F0 = 0); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_SCHLICK_GLSL
 #define PBR_BRDF_F_SCHLICK_GLSL
 

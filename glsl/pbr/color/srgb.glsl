@@ -1,5 +1,4 @@
 // pbr/color/srgb.glsl: the exact sRGB transfer functions of IEC 61966-2-1:1999.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_srgb_to_linear(float|vec3), pbr_linear_to_srgb(float|vec3) and the
 //           PBR_SRGB_* constants of the standard.
@@ -19,6 +18,7 @@
 // same way). Bit-identical on [0, 1]. float64 twin:
 // harness/pbrlab/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
 // GL_SRGB8_ALPHA8 textures implement in hardware (the "let the GPU handle it" path).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_SRGB_GLSL
 #define PBR_COLOR_SRGB_GLSL
 

@@ -1,5 +1,4 @@
 // pbr/color/transfer.glsl: the two ways of lighting in linear space, behind one selector.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_decode_color_texel(vec3), pbr_encode_final_color(vec3) and the selector
 //           values PBR_COLOR_TRANSFER_{HARDWARE,SRGB,GAMMA22,FAST}.
@@ -21,6 +20,7 @@
 // Guard: pbr_encode_final_color returns a value in [0, 1] on every path (HARDWARE included:
 // pbr_sanitize(c, 1.0), which a UNORM/sRGB8 target would apply anyway, but with NaN
 // defined as 0 instead of left to the hardware); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_TRANSFER_GLSL
 #define PBR_COLOR_TRANSFER_GLSL
 

@@ -1,5 +1,4 @@
 // pbr/common/constants.glsl: mathematical constants of the pbrlab shading library.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_PI, PBR_INV_PI, PBR_TWO_PI, PBR_HALF_PI.
 // Include:  "pbr/common/constants.glsl" (path relative to glsl/)
@@ -8,6 +7,7 @@
 // Values are written to 9 significant digits (more than float32 resolves); the float64
 // twins live in harness/pbrlab/reference/constants.py and tests/library/test_glsl_layout.py
 // checks that the GPU sees the float32 rounding of the same numbers.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONSTANTS_GLSL
 #define PBR_COMMON_CONSTANTS_GLSL
 

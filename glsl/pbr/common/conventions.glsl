@@ -1,5 +1,4 @@
 // pbr/common/conventions.glsl: the conventions every pbrlab file follows, written once.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_LIGHT_UNIT_SCALE (and, through its includes, PBR_PI and the math helpers).
 // Include:  "pbr/common/conventions.glsl" (path relative to glsl/)
@@ -34,6 +33,7 @@
 // 8. Variants: each alternative is its own function; a numbered #define selects it
 //    (e.g. PBR_SPECULAR_D = PBR_SPECULAR_D_GGX) and one dispatch function per term holds
 //    the only #if chain (pbr/shading/dispatch.glsl).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONVENTIONS_GLSL
 #define PBR_COMMON_CONVENTIONS_GLSL
 

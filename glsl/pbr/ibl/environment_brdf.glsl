@@ -1,5 +1,4 @@
 // pbr/ibl/environment_brdf.glsl: the split-sum environment BRDF and what surrounds it:
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // specular occlusion, multiple-scattering energy compensation, prefiltered-mip choice.
 //
 // Provides: vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness)
@@ -18,6 +17,7 @@
 // reflection of an environment is prefiltered radiance times the directional albedo of
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
 // (harness/pbrlab/ibl.py integrates the table with the library's own V term).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_GLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_GLSL
 #include "pbr/shading/dispatch.glsl"

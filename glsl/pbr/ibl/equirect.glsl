@@ -1,5 +1,4 @@
 // pbr/ibl/equirect.glsl: direction <-> texture coordinates of an equirectangular map.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec2 pbr_equirect_uv(vec3 dir)
 //           vec3 pbr_equirect_direction(vec2 uv)
@@ -10,6 +9,7 @@
 // looks at +Y; azimuth phi = 2 pi u is measured from -Z towards +X, so the image centre
 // looks at +Z. Texture coordinate t = 1 is the image's top row (images are uploaded
 // top row last, as OpenGL expects).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_EQUIRECT_GLSL
 #define PBR_IBL_EQUIRECT_GLSL
 #include "pbr/common/constants.glsl"

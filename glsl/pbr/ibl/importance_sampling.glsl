@@ -1,5 +1,4 @@
 // pbr/ibl/importance_sampling.glsl: low-discrepancy points and GGX importance sampling,
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // for prefiltering environments and integrating the environment BRDF.
 //
 // Provides: vec2 pbr_hammersley(uint i, uint count)
@@ -8,6 +7,7 @@
 //           vec3 pbr_tangent_to_world(vec3 v, vec3 n)
 // Include:  "pbr/ibl/importance_sampling.glsl" (path relative to glsl/)
 // Config macros read: none.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_IMPORTANCE_SAMPLING_GLSL
 #define PBR_IBL_IMPORTANCE_SAMPLING_GLSL
 #include "pbr/common/constants.glsl"

@@ -1,5 +1,4 @@
 // pbr/lighting/attenuation.glsl: how much of a point or spot light reaches a point.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_range_window(float distance2, float range)
 //           float pbr_distance_attenuation(float distance2, float range)
@@ -9,6 +8,7 @@
 //
 // Units follow the lecture's convention (pbr/common/conventions.glsl §5): a light of
 // intensity I at distance d delivers I / d^2 as the lightRadiance of pbr_shade_punctual.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_ATTENUATION_GLSL
 #define PBR_LIGHTING_ATTENUATION_GLSL
 

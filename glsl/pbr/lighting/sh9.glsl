@@ -1,5 +1,4 @@
 // pbr/lighting/sh9.glsl: irradiance from order-2 spherical harmonics (9 RGB coefficients).
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_sh9_irradiance(vec3 sh[9], vec3 n)
 // Include:  "pbr/lighting/sh9.glsl" (path relative to glsl/)
@@ -9,6 +8,7 @@
 // order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/environment.py
 // computes it). The result is the irradiance E(n); a Lambert surface reflects
 // diffuseColor * E(n) / pi. For a constant radiance L the result is exactly pi * L.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_SH9_GLSL
 #define PBR_LIGHTING_SH9_GLSL
 

@@ -1,5 +1,4 @@
 // pbr/material/workflow.glsl: metallic and specular workflows (diffuse colour and F0).
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_DIELECTRIC_F0, pbr_f0_from_metallic, pbr_diffuse_from_metallic,
 //           pbr_diffuse_from_specular (monochrome), pbr_diffuse_from_specular_per_channel.
@@ -9,6 +8,7 @@
 // Lecture, "Metals vs. dielectrics": dielectrics have a white (grey) specular and a
 // diffuse; metals are purely specular with a coloured F0. Both workflows give
 // (diffuseColor, f0) for pbr/shading/standard.glsl. float64 twin: reference/material.py.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_WORKFLOW_GLSL
 #define PBR_MATERIAL_WORKFLOW_GLSL
 

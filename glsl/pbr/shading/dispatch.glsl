@@ -1,5 +1,4 @@
 // pbr/shading/dispatch.glsl: variant selection for the specular D, V, F and diffuse terms.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
 //           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)
@@ -37,6 +36,7 @@
 //   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
 //   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
 // The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_DISPATCH_GLSL
 #define PBR_SHADING_DISPATCH_GLSL
 

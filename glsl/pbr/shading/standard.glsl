@@ -1,5 +1,4 @@
 // pbr/shading/standard.glsl: the standard shading model, diffuse + Cook-Torrance specular.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
 //                                   float perceptualRoughness)
@@ -32,6 +31,7 @@
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
 //    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
 //  - NdotH and VdotH are clamped to [0, 1] against rounding.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_STANDARD_GLSL
 #define PBR_SHADING_STANDARD_GLSL
 

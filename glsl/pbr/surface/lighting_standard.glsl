@@ -1,5 +1,4 @@
 // pbr/surface/lighting_standard.glsl: one surface point lit by one punctual light and by
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // the environment (indirect diffuse and specular): the core of the Unity-style API.
 //
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
@@ -21,6 +20,7 @@
 // Lambert surface reflects, e.g. pbr_sh9_irradiance(sh, n) / pi); indirect.specular is
 // the prefiltered environment radiance along reflect(-v, n), already at the mip of this
 // roughness. Without a light, set light.color to 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #include "pbr/lighting/punctual.glsl"

@@ -1,5 +1,4 @@
 // pbr/tonemap/hable.glsl: Hable's filmic curve from Uncharted 2.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap_hable(vec3 color), float pbr_hable_curve(float x)
 // Include:  "pbr/tonemap/hable.glsl" (path relative to glsl/)
@@ -22,6 +21,7 @@
 // input is capped at W, which is exactly saturate(f(x) / f(W)) because f increases, and
 // keeps x² from overflowing in half precision (x <= 11.2: x² <= 126). Output saturated
 // against rounding at W.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_HABLE_GLSL
 #define PBR_TONEMAP_HABLE_GLSL
 

@@ -1,5 +1,4 @@
 // pbr/tonemap/tonemap.glsl: tonemapper selection.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap(vec3 color) and the selector values PBR_TONEMAP_*.
 // Include:  "pbr/tonemap/tonemap.glsl" (path relative to glsl/)
@@ -10,6 +9,7 @@
 // saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
 // Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
 // light) nearly unchanged, which is what material charts want.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_TONEMAP_GLSL
 #define PBR_TONEMAP_TONEMAP_GLSL
 

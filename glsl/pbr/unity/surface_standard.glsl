@@ -1,5 +1,4 @@
 // pbr/unity/surface_standard.glsl: Unity's Standard-shader surface API, by Unity's names.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: struct SurfaceOutputStandard, struct SurfaceOutputStandardSpecular;
 //           UnityLight, UnityIndirect, UnityGI (aliases of pbr_Light, pbr_Indirect, pbr_GI);
@@ -48,6 +47,7 @@
 // README.md, "Unity surface API", lists the differences. s.Normal is in world space when
 // LightingStandard runs, as in Unity (the caller transforms the tangent-space normal a
 // surface function writes).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_STANDARD_GLSL
 #define PBR_UNITY_SURFACE_STANDARD_GLSL
 #include "pbr/surface/lighting_standard.glsl"

@@ -1,5 +1,4 @@
 // pbr/brdf/f_schlick.hlsl: Schlick's Fresnel approximation and its variants.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_F_Schlick(float f0, float VdotH)
 //           vec3  pbr_F_Schlick(vec3 f0, float VdotH)
@@ -25,6 +24,7 @@
 // tests/library/test_brdf_terms.py::test_F_SchlickSG_error_bound.
 // Guard: VdotH is saturated in every form (VdotH slightly above 1 from rounding would make
 // (1 - VdotH)^5 negative and F < F0, below 0 for F0 = 0); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_SCHLICK_HLSL
 #define PBR_BRDF_F_SCHLICK_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_schlick.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -39,18 +39,18 @@ float pbr_F_Schlick(float f0, float VdotH) {
     return f0 + (1.0 - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_Schlick(vec3 f0, float VdotH) {
-    return f0 + (((vec3)(1.0)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
+float3 pbr_F_Schlick(float3 f0, float VdotH) {
+    return f0 + (((float3)(1.0)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_Schlick(vec3 f0, float f90, float VdotH) {
-    return f0 + (((vec3)(f90)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
+float3 pbr_F_Schlick(float3 f0, float f90, float VdotH) {
+    return f0 + (((float3)(f90)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_SchlickSG(vec3 f0, float VdotH) {
+float3 pbr_F_SchlickSG(float3 f0, float VdotH) {
     VdotH = pbr_saturate(VdotH);
     float w = exp2((PBR_F_SCHLICK_SG_A * VdotH + PBR_F_SCHLICK_SG_B) * VdotH);
-    return f0 + (((vec3)(1.0)) - f0) * w;
+    return f0 + (((float3)(1.0)) - f0) * w;
 }
 
 #endif // PBR_BRDF_F_SCHLICK_HLSL

@@ -1,5 +1,4 @@
 // pbr/color/transfer.hlsl: the two ways of lighting in linear space, behind one selector.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: pbr_decode_color_texel(vec3), pbr_encode_final_color(vec3) and the selector
 //           values PBR_COLOR_TRANSFER_{HARDWARE,SRGB,GAMMA22,FAST}.
@@ -21,6 +20,7 @@
 // Guard: pbr_encode_final_color returns a value in [0, 1] on every path (HARDWARE included:
 // pbr_sanitize(c, 1.0), which a UNORM/sRGB8 target would apply anyway, but with NaN
 // defined as 0 instead of left to the hardware); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_TRANSFER_HLSL
 #define PBR_COLOR_TRANSFER_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/transfer.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -39,7 +39,7 @@
 #endif
 
 // A colour texel as fetched -> linear colour.
-vec3 pbr_decode_color_texel(vec3 texel) {
+float3 pbr_decode_color_texel(float3 texel) {
 #if PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_HARDWARE
     return texel;
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_SRGB
@@ -54,7 +54,7 @@ vec3 pbr_decode_color_texel(vec3 texel) {
 }
 
 // The final linear colour -> the value written to the colour attachment.
-vec3 pbr_encode_final_color(vec3 linearColor) {
+float3 pbr_encode_final_color(float3 linearColor) {
 #if PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_HARDWARE
     return pbr_sanitize(linearColor, 1.0);
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_SRGB

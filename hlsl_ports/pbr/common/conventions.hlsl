@@ -1,5 +1,4 @@
 // pbr/common/conventions.hlsl: the conventions every pbrlab file follows, written once.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: PBR_LIGHT_UNIT_SCALE (and, through its includes, PBR_PI and the math helpers).
 // Include:  "pbr/common/conventions.hlsl" (path relative to hlsl_ports/)
@@ -34,6 +33,7 @@
 // 8. Variants: each alternative is its own function; a numbered #define selects it
 //    (e.g. PBR_SPECULAR_D = PBR_SPECULAR_D_GGX) and one dispatch function per term holds
 //    the only #if chain (pbr/shading/dispatch.hlsl).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONVENTIONS_HLSL
 #define PBR_COMMON_CONVENTIONS_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/conventions.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -1,5 +1,4 @@
 // pbr/ibl/environment_brdf.hlsl: the split-sum environment BRDF and what surrounds it:
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // specular occlusion, multiple-scattering energy compensation, prefiltered-mip choice.
 //
 // Provides: vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness)
@@ -18,6 +17,7 @@
 // reflection of an environment is prefiltered radiance times the directional albedo of
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
 // (harness/pbrlab/ibl.py integrates the table with the library's own V term).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -26,15 +26,15 @@
 // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox): a fit of the
 // table for GGX + Schlick-GGX visibility; takes perceptual roughness. Its worst error
 // against pbrlab's table (height-correlated Smith) is measured in tests/surface/.
-vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
-    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
-    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
-    vec4 r = perceptualRoughness * c0 + c1;
+float2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
+    const float4 c0 = float4(-1.0, -0.0275, -0.572, 0.022);
+    const float4 c1 = float4(1.0, 0.0425, 1.04, -0.04);
+    float4 r = perceptualRoughness * c0 + c1;
     float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
-    return vec2(-1.04, 1.04) * a004 + r.zw;
+    return float2(-1.04, 1.04) * a004 + r.zw;
 }
 
-vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
+float2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 #if defined(PBR_DFG_LUT_LOOKUP) && PBR_QUALITY != PBR_QUALITY_LOW
     return PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness);
 #else
@@ -43,7 +43,7 @@ vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 }
 
 // Directional albedo of the specular lobe for F0 (f90 = 1: "everything has Fresnel").
-vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
+float3 pbr_specular_albedo(float3 f0, float2 dfg) {
     return f0 * dfg.x + dfg.y;
 }
 
@@ -56,7 +56,7 @@ vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
 // 0.3, so the guard only protects against a caller's zero dfg.
 #define PBR_MIN_SPECULAR_ALBEDO 1e-4
 
-vec3 pbr_energy_compensation(vec3 f0, vec2 dfg) {
+float3 pbr_energy_compensation(float3 f0, float2 dfg) {
     return 1.0 + f0 * (1.0 / max(dfg.x + dfg.y, PBR_MIN_SPECULAR_ALBEDO) - 1.0);
 }
 

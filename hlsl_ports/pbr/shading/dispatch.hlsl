@@ -1,5 +1,4 @@
 // pbr/shading/dispatch.hlsl: variant selection for the specular D, V, F and diffuse terms.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
 //           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)
@@ -37,6 +36,7 @@
 //   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
 //   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
 // The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_DISPATCH_HLSL
 #define PBR_SHADING_DISPATCH_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/dispatch.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -209,13 +209,13 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 #endif
 }
 
-vec3 pbr_specular_F(vec3 f0, float VdotH) {
+float3 pbr_specular_F(float3 f0, float VdotH) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
     return pbr_F_Schlick(f0, VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
     return pbr_F_SchlickSG(f0, VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
-    return ((vec3)(1.0));
+    return ((float3)(1.0));
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif

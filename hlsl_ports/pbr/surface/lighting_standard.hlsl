@@ -1,5 +1,4 @@
 // pbr/surface/lighting_standard.hlsl: one surface point lit by one punctual light and by
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 // the environment (indirect diffuse and specular): the core of the Unity-style API.
 //
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
@@ -21,6 +20,7 @@
 // Lambert surface reflects, e.g. pbr_sh9_irradiance(sh, n) / pi); indirect.specular is
 // the prefiltered environment radiance along reflect(-v, n), already at the mip of this
 // roughness. Without a light, set light.color to 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_HLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -34,13 +34,13 @@
 #endif
 
 struct pbr_Light {
-    vec3 color;
-    vec3 dir;
+    float3 color;
+    float3 dir;
 };
 
 struct pbr_Indirect {
-    vec3 diffuse;
-    vec3 specular;
+    float3 diffuse;
+    float3 specular;
 };
 
 struct pbr_GI {
@@ -51,10 +51,10 @@ struct pbr_GI {
 // The environment's specular reflection as pbrlab computes it: prefiltered radiance times
 // the split-sum albedo (Karis 2013), with specular occlusion and, by default,
 // multiple-scattering compensation.
-vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
+float3 pbr_indirect_specular_split_sum(float3 prefiltered, float3 f0, float roughness,
                                      float NdotV, float occlusion) {
-    vec2 dfg = pbr_env_brdf(NdotV, roughness);
-    vec3 specular = prefiltered * pbr_specular_albedo(f0, dfg)
+    float2 dfg = pbr_env_brdf(NdotV, roughness);
+    float3 specular = prefiltered * pbr_specular_albedo(f0, dfg)
                   * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
 #if PBR_ENERGY_COMPENSATION
     specular *= pbr_energy_compensation(f0, dfg);
@@ -66,13 +66,13 @@ vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
 // diffuse * occlusion, plus the split-sum specular (prefiltered radiance * directional
 // albedo, Karis 2013) with specular occlusion and, by default, multiple-scattering
 // compensation. Occlusion darkens only indirect light, as in Unity.
-vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
-                           float occlusion, vec3 n, vec3 v, pbr_GI gi) {
+float3 pbr_lighting_standard(float3 diffuseColor, float3 f0, float perceptualRoughness,
+                           float occlusion, float3 n, float3 v, pbr_GI gi) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
+    float3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
                                      diffuseColor, f0, roughness);
-    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion);
+    float3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion);
     return direct + diffuseColor * gi.indirect.diffuse * occlusion + specular;
 }
 #endif

@@ -1,5 +1,4 @@
 // pbr/tonemap/tonemap.hlsl: tonemapper selection.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 //
 // Provides: vec3 pbr_tonemap(vec3 color) and the selector values PBR_TONEMAP_*.
 // Include:  "pbr/tonemap/tonemap.hlsl" (path relative to hlsl_ports/)
@@ -10,6 +9,7 @@
 // saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
 // Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
 // light) nearly unchanged, which is what material charts want.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_TONEMAP_HLSL
 #define PBR_TONEMAP_TONEMAP_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/tonemap.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -32,7 +32,7 @@
 #define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
 #endif
 
-vec3 pbr_tonemap(vec3 color) {
+float3 pbr_tonemap(float3 color) {
 #if PBR_TONEMAP == PBR_TONEMAP_NONE
     return pbr_sanitize(color, 1.0);
 #elif PBR_TONEMAP == PBR_TONEMAP_REINHARD
