@@ -1,5 +1,5 @@
-"""Compilation matrix: every GLSL include alone as #version 330 core, #version 300 es
-(mediump default precision) and #version 450, plus all of them together as Vulkan GLSL 450
+"""Compilation matrix: every GLSL include alone as #version 330 core, #version 300 es,
+#version 100 (GLSL ES 1.00 / WebGL 1; both ES columns with mediump default precision) and #version 450, plus all of them together as Vulkan GLSL 450
 (-V --target-env vulkan1.0, SPIR-V generated); every HLSL port alone for pixel shader model
 5.0 and 6.0 with glslang's HLSL front end. "Alone" means a shader that includes only that
 file (it includes what it needs); glslang type-checks every function, called or not
@@ -38,6 +38,9 @@ HLSL_FILES = sorted(p.relative_to(hlsl.HLSL_ROOT).as_posix() for p in (hlsl.HLSL
 GLSL_TARGETS = {
     "330core": ("#version 330 core\n", []),
     "300es": ("#version 300 es\nprecision mediump float;\n", []),
+    # GLSL ES 1.00 (WebGL 1, GLES 2): no uint, no bit operations, no boolean-vector mix;
+    # the library has portable forms (pbr_hammersley_float, pbr_sanitize per component).
+    "100es": ("#version 100\nprecision mediump float;\n", []),
     "450": ("#version 450\n", []),
 }
 HLSL_TARGETS = {
