@@ -4,13 +4,15 @@ the images are. ``--language hlsl`` shades with the HLSL twins against the same 
 
 from __future__ import annotations
 
+import argparse
+
 from pathlib import Path
 
 from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import gl, goldens, images
+    from .. import console, gl, goldens, images
     from ..charts import CHARTS
     from ..golden_scenes import GOLDEN_SCENES
     from ..render import render_scene
@@ -20,7 +22,7 @@ def run(args) -> int:
     out.mkdir(parents=True, exist_ok=True)
     ctx = gl.shared_context(args.backend)
     info = gl.context_info(ctx)
-    print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
+    console.note(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
           f"shading in {args.language.upper()}")
     failures = 0
     names = [*CHARTS, "lit_scene_high"]
@@ -45,8 +47,9 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("demo", parents=[common], help="render the default material charts",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("demo", parents=[common], help="Render the material charts and the lit example, and check them against the goldens.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="out", help="output folder (default: out)")
     p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
     p.add_argument("--tolerance-profile", default="auto", choices=("auto", "llvmpipe", "gpu"),

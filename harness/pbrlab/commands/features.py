@@ -3,6 +3,8 @@ and per scene, and how many programs specialisation compiles for it, as JSON."""
 
 from __future__ import annotations
 
+import argparse
+
 import json
 from pathlib import Path
 
@@ -21,7 +23,8 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("features", parents=[common], help="print the effects a scene calls for",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("features", parents=[common], help="Print, as JSON, the effects a scene calls for and the programs it compiles.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", help="a JSON scene or a glTF 2.0 file (.gltf, .glb)")
     p.set_defaults(run=run)

@@ -7,6 +7,8 @@ package data of an installed wheel, or the checkout). Point an engine's include 
 
 from __future__ import annotations
 
+import argparse
+
 from ..errors import PbrlabError
 from ..locations import TREES, locate, origin
 
@@ -29,6 +31,7 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("paths", help="print where the shaders and example scenes are",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("paths", parents=[common], help="Print where the shader library, its HLSL twins and the example scenes are.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.set_defaults(run=run)
