@@ -6,10 +6,11 @@ asserts the tolerances).
     .venv/bin/python benchmarks/pyrender_crosscheck.py [--size 480x160] [--backends egl,osmesa]
         [--figure docs/pyrender_vs_pbrlab.png]
 
-The figure (from the first backend) stacks four panels: pyrender's output | pbrlab
-composing pyrender's terms (encoded with pyrender's gamma 2.2) | pbrlab's defaults (high
-tier, its sRGB output) | relative linear difference pyrender vs pbrlab default (black 0,
-red, yellow, white at 50 %; grey: not compared).
+The figure (from the first backend, pbrlab.pyrender_figure) stacks four titled panels:
+pyrender's output | pbrlab composing pyrender's terms (encoded with pyrender's gamma 2.2) |
+pbrlab's defaults (high tier, its sRGB output) | relative linear difference pyrender vs pbrlab
+default with a colour bar (black 0, red, yellow, white at 50 %; grey: not compared); rows
+and columns are labelled (base colour; metallic x roughness).
 """
 
 from __future__ import annotations
@@ -17,8 +18,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from pbrlab import images
 from pbrlab import pyrender_check as pc
+from pbrlab import pyrender_figure
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -40,8 +41,7 @@ def main(argv=None) -> int:
         status |= 0 if ok else 1
         if i == 0 and args.figure:
             args.figure.parent.mkdir(parents=True, exist_ok=True)
-            images.write_png(args.figure, pc.figure(results["pyrender"], results["matched"],
-                                                    results["default"].linear, results["default"].srgb8))
+            pyrender_figure.write(args.figure, results)
             print(f"  figure: {args.figure}")
     return status
 

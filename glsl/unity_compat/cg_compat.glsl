@@ -14,6 +14,7 @@
 //           `pbrlab port-unity` output includes it. Type renames (float3 -> vec3, ...) are
 //           not macros here: port-unity rewrites them, so an engine's own vec3 stays intact.
 // Config macros read: PBR_UNITY_VERTEX_STAGE (define it when compiling a vertex stage).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_CG_COMPAT_GLSL
 #define PBR_UNITY_COMPAT_CG_COMPAT_GLSL
 

@@ -28,6 +28,7 @@
 //           hlsl_ports/unity_compat/shader_variables.hlsl is hand-written (matrices: GLSL M * v
 //           is HLSL mul(M, v)); HLSL's instancing macro declares `type var;`.
 // Config macros read: none.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
 

@@ -12,19 +12,43 @@ import argparse
 import importlib
 import sys
 
+from . import __version__, console
 from .errors import PbrlabError
 from .gl import BACKENDS
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity")
+
+class _VersionAction(argparse.Action):
+    """``--version``: the package version and where its shaders are (``pbrlab paths``)."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS,
+                         help="print the version and where the shaders are, then exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from .commands import paths
+        print(f"pbrlab {__version__}")
+        for line in paths.lines():
+            print(f"  {line}")
+        parser.exit()
+
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths")
 
 
 def build_parser() -> argparse.ArgumentParser:
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--backend", choices=BACKENDS, default=None,
-        help="OpenGL backend (default: $PBRLAB_GL_BACKEND, else EGL then OSMesa)")
+        help="The OpenGL backend to render with (default: $PBRLAB_GL_BACKEND, else EGL, then OSMesa).")
+    loudness = common.add_mutually_exclusive_group()
+    loudness.add_argument("-q", "--quiet", dest="verbosity", action="store_const", const=console.QUIET,
+                          default=console.NORMAL,
+                          help="Print results and errors only: no progress and no 'wrote ...' lines.")
+    loudness.add_argument("-v", "--verbose", dest="verbosity", action="store_const", const=console.VERBOSE,
+                          help="Also print details, such as the renderer a command runs on.")
     parser = argparse.ArgumentParser(
-        prog="pbrlab", description="Render, evaluate and verify the pbrlab shading library.")
+        prog="pbrlab", description="Render, evaluate and verify the pbrlab shading library. "
+                                   "Run 'pbrlab COMMAND --help' for the options of a command.")
+    parser.add_argument("--version", action=_VersionAction)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name in COMMANDS:
         importlib.import_module(f"pbrlab.commands.{name.replace('-', '_')}").register(sub, common)
@@ -34,6 +58,7 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    console.set_level(getattr(args, "verbosity", console.NORMAL))
     try:
         return int(args.run(args) or 0)
     except PbrlabError as exc:

@@ -41,7 +41,7 @@ _INSTALL_HINT = (
     "pbrlab renders headless through Mesa, and neither of its OpenGL libraries could be "
     "loaded ({details}). On Debian or Ubuntu install them with "
     "`sudo apt-get install -y libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6` "
-    "(or run `make test`, which installs them when run as root), then try again. "
+    "(in a pbrlab checkout, scripts/setup.sh installs them when run as root), then try again. "
     "To choose one library, set PBRLAB_GL_BACKEND=egl or PBRLAB_GL_BACKEND=osmesa."
 )
 

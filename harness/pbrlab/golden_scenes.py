@@ -13,9 +13,10 @@ import argparse
 from pathlib import Path
 
 from .charts import CHARTS
+from .locations import locate
 from .scene import QUALITIES, Scene, load_scene, parse_scene
 
-SCENES_DIR = Path(__file__).resolve().parents[2] / "scenes"
+SCENES_DIR = locate("scenes")
 LIT_SCENE = SCENES_DIR / "unity_example" / "scene.json"
 TORTURE_SCENE = SCENES_DIR / "torture" / "scene.json"
 GLTF_DIR = SCENES_DIR / "gltf"

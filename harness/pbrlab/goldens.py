@@ -39,8 +39,8 @@ from .errors import PbrlabError
 DEFAULT_ROOT = "goldens"
 DEFAULT_OUTPUT_DIR = "test-output"
 SIDECAR_FORMAT = "pbrlab-golden/1"
-UPDATE_COMMAND = 'make test PYTEST_ARGS="--update-goldens"'
-PYTEST_UPDATE_COMMAND = ".venv/bin/python -m pytest --update-goldens"
+# The pytest option of pbrlab's plugin that writes goldens; hints name it, not a Makefile.
+UPDATE_OPTION = "--update-goldens"
 ARTEFACTS = ("expected.png", "obtained.png", "diff.png", "obtained.exr")
 
 _NAME_PART = r"[A-Za-z0-9_][A-Za-z0-9_.-]*"
@@ -164,10 +164,10 @@ def _remove_artefacts(folder: Path) -> None:
 
 
 def _hint(nodeid: str | None) -> str:
-    target = f" '{nodeid}'" if nodeid else " tests/..."
-    return (f"    {UPDATE_COMMAND}\n"
-            f"or, for this test alone:\n"
-            f"    {PYTEST_UPDATE_COMMAND}{target}")
+    target = f" '{nodeid}'" if nodeid else ""
+    return (f"rerun pytest with the option {UPDATE_OPTION} (pbrlab's pytest plugin), "
+            f"for this test alone:\n"
+            f"    python -m pytest {UPDATE_OPTION}{target}")
 
 
 def _check_inputs(linear, srgb8) -> tuple[np.ndarray, np.ndarray]:

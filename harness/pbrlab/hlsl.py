@@ -24,7 +24,6 @@ with the optimising default as well.
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import subprocess
@@ -33,9 +32,9 @@ from functools import lru_cache
 from pathlib import Path
 
 from .errors import PbrlabError, ShaderCompileError
-from .shaders import GLSL_ROOT
+from .locations import locate
 
-HLSL_ROOT = Path(os.environ.get("PBRLAB_HLSL_ROOT", GLSL_ROOT.parent / "hlsl_ports"))
+HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
 GLSLANG = "glslangValidator"
 SPIRV_CROSS = "spirv-cross"

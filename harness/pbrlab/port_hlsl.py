@@ -36,9 +36,10 @@ import sys
 from pathlib import Path
 
 from .errors import PbrlabError
+from .locations import locate
 from .shaders import GLSL_ROOT
 
-HLSL_ROOT = GLSL_ROOT.parent / "hlsl_ports"
+HLSL_ROOT = locate("hlsl_ports")
 SHIM_INCLUDE = "pbr/common/shim.hlsl"
 GENERATOR = "harness/pbrlab/port_hlsl.py"
 
@@ -57,7 +58,14 @@ HLSL_RESERVED = frozenset("""
     typedef unorm vector VertexShader volatile
 """.split())
 
-_VECTOR_CTOR = re.compile(r"\b(?:(?P<vec>[biu]?vec[234])|(?P<atan>atan))\s*\(")
+_VECTOR_CTOR = re.compile(r"\b(?:(?P<vec>(?:float|int|uint|bool)[234])|(?P<atan>atan))\s*\(")
+# Rule 3: GLSL spellings -> HLSL ones, in code only.
+_VECTOR_TYPE = re.compile(r"\b([biu]?)vec([234])\b")
+_SCALAR_OF = {"": "float", "i": "int", "u": "uint", "b": "bool"}
+_FUNCTION_NAMES = {"fract": "frac", "inversesqrt": "rsqrt", "mix": "lerp", "mod": "pbr_mod"}
+_FUNCTION_CALL = re.compile(r"\b(" + "|".join(_FUNCTION_NAMES) + r")(?=\s*\()")
+_COMPARISON = re.compile(r"\b(greaterThan|lessThan|greaterThanEqual|lessThanEqual|equal|notEqual|not)\s*\(")
+_BOOLEAN_HINT = re.compile(r"\bbvec[234]\b|\bbool\b|\btrue\b|\bfalse\b|[<>]|==|!=|&&|\|\|")
 _MATRIX = re.compile(r"\b[d]?mat[234](?:x[234])?\b")
 _ARRAY_CTOR = re.compile(r"\b\w+\s*\[\s*\w*\s*\]\s*\(")
 _STRUCT = re.compile(r"\bstruct\s+(\w+)")
@@ -141,7 +149,49 @@ def _rewrite_code(text: str, mask: str, start: int, end: int, where) -> str:
         i = close + 1
 
 
+def _split_arguments(mask: str, open_index: int, close: int) -> list[tuple[int, int]]:
+    """(start, end) of each top-level argument between the parentheses at open_index/close."""
+    spans, depth, start = [], 0, open_index + 1
+    for k in range(open_index + 1, close):
+        ch = mask[k]
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        elif ch == "," and depth == 0:
+            spans.append((start, k))
+            start = k + 1
+    spans.append((start, close))
+    return spans
+
+
+def _rename_tokens(text: str) -> str:
+    """Rule 3: vecN/ivecN/uvecN/bvecN -> floatN/intN/uintN/boolN, fract -> frac,
+    inversesqrt -> rsqrt, mix -> lerp, mod -> pbr_mod; in code, never in comments."""
+    mask = _mask(text)
+    edits = [(m.start(), m.end(), _SCALAR_OF[m.group(1)] + m.group(2)) for m in _VECTOR_TYPE.finditer(mask)]
+    edits += [(m.start(), m.end(), _FUNCTION_NAMES[m.group(1)]) for m in _FUNCTION_CALL.finditer(mask)]
+    out, i = [], 0
+    for start, end, word in sorted(edits):
+        out.append(text[i:start])
+        out.append(word)
+        i = end
+    out.append(text[i:])
+    return "".join(out)
+
+
 def _check_portable(mask: str, structs: set[str], where) -> None:
+    for m in _COMPARISON.finditer(mask):
+        raise PortError(f"{where(m.start())}: {m.group(1)}(): a component-wise comparison function has "
+                        "no HLSL name (nor a GLSL ES 1.00 form for a select); compare per component")
+    booleans = set(re.findall(r"\b(?:bvec[234]|bool)\s+(\w+)", mask))  # names declared boolean
+    for m in re.finditer(r"\bmix\s*\(", mask):
+        close = _closing(mask, m.end() - 1, where)
+        args = _split_arguments(mask, m.end() - 1, close)
+        selector = mask[args[-1][0]:args[-1][1]]
+        if len(args) == 3 and (_BOOLEAN_HINT.search(selector) or booleans & set(_IDENT.findall(selector))):
+            raise PortError(f"{where(m.start())}: mix() with a boolean selector: HLSL lerp has none "
+                            "(nor GLSL ES 1.00); select per component")
     for m in _MATRIX.finditer(mask):
         raise PortError(f"{where(m.start())}: matrix type {m.group(0)!r}: GLSL m * v and HLSL "
                         "mul() disagree on the order; the port refuses matrices")
@@ -172,9 +222,9 @@ def port_text(text: str, name: str = "<glsl>", structs: set[str] | None = None) 
     def where(index: int) -> str:
         return f"{name}:{text.count(chr(10), 0, index) + 1}"
 
-    mask = _mask(text)
-    _check_portable(mask, structs, where)
-    code = _rewrite_code(text, mask, 0, len(text), where)
+    _check_portable(_mask(text), structs, where)
+    renamed = _rename_tokens(text)
+    code = _rewrite_code(renamed, _mask(renamed), 0, len(renamed), where)
     code = _rename_files(code)
     guard = _GUARD_DEFINE.search(code)
     if guard is None:
@@ -188,9 +238,9 @@ def port_text(text: str, name: str = "<glsl>", structs: set[str] | None = None) 
 
 
 def port_expression(expression: str) -> str:
-    """Rules 3 and 4 on a GLSL expression (tests evaluate one expression in both languages)."""
-    mask = _mask(expression)
-    return _rewrite_code(expression, mask, 0, len(expression), lambda i: "<expression>")
+    """Rules 3 to 5 on a GLSL expression (tests evaluate one expression in both languages)."""
+    renamed = _rename_tokens(expression)
+    return _rewrite_code(renamed, _mask(renamed), 0, len(renamed), lambda i: "<expression>")
 
 
 def library_structs(glsl_root: Path = GLSL_ROOT) -> set[str]:

@@ -11,9 +11,12 @@ Fixtures:
   golden       ``golden.check(name, linear, srgb8, tolerance)``: ``pbrlab.goldens.check_golden``
                with this run's renderer info, update flag and folders
 
-The run header prints GL_RENDERER, GL_VERSION, Mesa, moderngl and OpenImageIO versions and
-the pinned llvmpipe CPU caps. llvmpipe is pinned in ``pytest_configure``, before any test
-can create a context.
+The plugin is inert until a test uses one of its fixtures or options: registering it (by
+installing pbrlab) opens no GL context, changes no environment variable (llvmpipe's CPU caps
+are pinned by ``gl.create_context``, when pbrlab makes a context) and prints nothing. When a
+test used ``gl_context`` or ``golden``, the summary names the renderer (GL_RENDERER,
+GL_VERSION, Mesa, moderngl and OpenImageIO versions, llvmpipe CPU caps); given a pbrlab
+option on the command line, the run header does, before the tests.
 
 At the end of the session the controller (also under ``-n auto``) writes
 ``test-output/index.html`` with expected / obtained / diff side by side for every golden
@@ -42,6 +45,9 @@ RECORDS_DIR = ".pbrlab-records"
 INDEX_NAME = "index.html"
 _SETTINGS = pytest.StashKey["_Settings"]()
 _SUMMARY = pytest.StashKey[dict]()
+_RENDERER = pytest.StashKey[dict]()  # this process's renderer, once a test used a pbrlab context
+_HEADER_SHOWN = pytest.StashKey[bool]()
+_WORKER_KEY = "pbrlab_renderer"  # xdist: a worker's renderer, sent back in workeroutput
 
 
 class _Settings:
@@ -83,10 +89,12 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    gl.pin_llvmpipe_cpu_caps()  # before anything can create a GL context in this process
     settings = _Settings(config)
     config.stash[_SETTINGS] = settings
-    if not _is_xdist_worker(config):  # workers start after this, so they never lose a record
+    # A failure page of an earlier pbrlab run goes, with the records it was built from; a
+    # project that never used pbrlab has no records folder, and nothing of its is touched.
+    # Workers start after this, so they never lose a record of this run.
+    if not _is_xdist_worker(config) and settings.records_dir.is_dir():
         shutil.rmtree(settings.records_dir, ignore_errors=True)
         try:
             (settings.output_dir / INDEX_NAME).unlink()
@@ -94,11 +102,15 @@ def pytest_configure(config: pytest.Config) -> None:
             pass
 
 
-def pytest_report_header(config: pytest.Config) -> list[str]:
-    try:
-        info = gl.context_info(gl.shared_context())
-    except PbrlabError as exc:  # no GL library: say so instead of failing collection
-        return [f"pbrlab: {exc}"]
+def _options_given(config: pytest.Config) -> bool:
+    """True when the command line names one of the plugin's options."""
+    return bool(config.getoption("update_goldens")
+                or config.getoption("pbrlab_output") is not None
+                or config.getoption("pbrlab_goldens") is not None
+                or config.getoption("pbrlab_tolerance_profile") != "auto")
+
+
+def _renderer_lines(info: dict) -> list[str]:
     return [
         f"pbrlab: GL_RENDERER {info['GL_RENDERER']}; GL_VERSION {info['GL_VERSION']}",
         f"pbrlab: Mesa {info['mesa']}, moderngl {info['moderngl']}, "
@@ -107,14 +119,33 @@ def pytest_report_header(config: pytest.Config) -> list[str]:
     ]
 
 
-@pytest.fixture
-def gl_context():
-    """The process's shared moderngl context (``pbrlab.gl.shared_context()``), made
-    current for this test (another test may have made an OSMesa context current)."""
+def pytest_report_header(config: pytest.Config) -> list[str]:
+    if not _options_given(config):
+        return []  # inert: no context, no line (the summary names the renderer if a test used one)
+    config.stash[_HEADER_SHOWN] = True
     try:
-        return gl.shared_context()
+        info = gl.context_info(gl.shared_context())
+    except PbrlabError as exc:  # no GL library: say so instead of failing collection
+        return [f"pbrlab: {exc}"]
+    return _renderer_lines(info)
+
+
+def _shared_context_for(config: pytest.Config):
+    """The shared context for a test, noting its renderer for the summary."""
+    try:
+        context = gl.shared_context()
     except PbrlabError as exc:
         pytest.fail(str(exc), pytrace=False)
+    if _RENDERER not in config.stash:
+        config.stash[_RENDERER] = gl.context_info(context)
+    return context
+
+
+@pytest.fixture
+def gl_context(request):
+    """The process's shared moderngl context (``pbrlab.gl.shared_context()``), made
+    current for this test (another test may have made an OSMesa context current)."""
+    return _shared_context_for(request.config)
 
 
 class GoldenFixture:
@@ -164,11 +195,8 @@ class GoldenFixture:
 
 
 @pytest.fixture(scope="session")
-def _pbrlab_renderer_info() -> dict:
-    try:
-        return gl.context_info(gl.shared_context())
-    except PbrlabError as exc:
-        pytest.fail(str(exc), pytrace=False)
+def _pbrlab_renderer_info(request) -> dict:
+    return gl.context_info(_shared_context_for(request.config))
 
 
 @pytest.fixture
@@ -186,9 +214,22 @@ def _load_records(records_dir: Path) -> list[dict]:
     return sorted(records, key=lambda r: (r["nodeid"], r["name"]))
 
 
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error) -> None:
+    """xdist controller: keep the renderer a worker used (the first one reported)."""
+    info = getattr(node, "workeroutput", {}).get(_WORKER_KEY)
+    if info and _RENDERER not in node.config.stash:
+        node.config.stash[_RENDERER] = info
+
+
+@pytest.hookimpl(tryfirst=True)  # before xdist sends workeroutput to the controller
 def pytest_sessionfinish(session: pytest.Session, exitstatus) -> None:
     config = session.config
-    if _is_xdist_worker(config) or _SETTINGS not in config.stash:
+    if _is_xdist_worker(config):
+        if _RENDERER in config.stash:
+            config.workeroutput[_WORKER_KEY] = config.stash[_RENDERER]
+        return
+    if _SETTINGS not in config.stash:
         return
     settings = config.stash[_SETTINGS]
     records = _load_records(settings.records_dir)
@@ -203,6 +244,9 @@ def pytest_sessionfinish(session: pytest.Session, exitstatus) -> None:
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config: pytest.Config) -> None:
+    if _RENDERER in config.stash and not config.stash.get(_HEADER_SHOWN, False):
+        for line in _renderer_lines(config.stash[_RENDERER]):
+            terminalreporter.write_line(line)
     summary = config.stash.get(_SUMMARY, None)
     if not summary:
         return

@@ -17,7 +17,6 @@ includer). A message "N:L(col): error: ..." maps back to ``path:line:col``.
 
 from __future__ import annotations
 
-import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -25,9 +24,9 @@ from pathlib import Path
 import moderngl
 
 from .errors import PbrlabError, ShaderCompileError
+from .locations import locate
 
-GLSL_ROOT = Path(
-    os.environ.get("PBRLAB_GLSL_ROOT", Path(__file__).resolve().parents[2] / "glsl"))
+GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.glsl"
 LINE_BLOCK = 100000  # lines per file in the #line numbering; files are far shorter
 

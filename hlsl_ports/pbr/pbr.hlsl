@@ -8,6 +8,7 @@
 //           Define them before this include.
 // Conventions: pbr/common/conventions.hlsl. Naming rule and function table: glsl/README.md.
 // tests/library/test_glsl_layout.py checks that every .glsl file under pbr/ is listed here.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_PBR_HLSL
 #define PBR_PBR_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/pbr.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

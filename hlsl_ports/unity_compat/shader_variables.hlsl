@@ -30,6 +30,7 @@
 //           generates pbr/ only); the per-light globals are `static` (mutable) here, and
 //           UNITY_INITIALIZE_OUTPUT zero-fills, as Unity's Direct3D 11 definition does.
 // Config macros read: none.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
 #include "pbr/common/shim.hlsl"

@@ -36,8 +36,8 @@ def test_missing_golden_fails_with_the_command_that_creates_it(store):
     with pytest.raises(goldens.GoldenMissing) as failure:
         check("charts/metal", *_render())
     message = str(failure.value)
-    assert 'make test PYTEST_ARGS="--update-goldens"' in message
-    assert ".venv/bin/python -m pytest --update-goldens" in message
+    assert "python -m pytest --update-goldens" in message
+    assert "make test" not in message and ".venv" not in message  # an installed plugin has neither
     assert "metal.exr" in message
     assert not root.exists()  # nothing is created without the flag
     assert (out / "charts/metal/obtained.png").exists()  # the render a person would approve

@@ -23,24 +23,60 @@ def project(pytester):
     return pytester
 
 
-def test_report_header_names_renderer_versions_and_cpu_caps(project):
-    project.makepyfile(test_nothing="def test_nothing(): pass")
-    result = project.runpytest()
-    result.assert_outcomes(passed=1)
-    header = "\n".join(line for line in result.outlines if line.startswith("pbrlab:"))
+def _assert_names_the_renderer(lines):
+    text = "\n".join(line for line in lines if line.startswith("pbrlab:"))
     info = gl.context_info(gl.shared_context())
     for fact in ("GL_RENDERER", "GL_VERSION", info["GL_RENDERER"], "Mesa", "moderngl",
                  info["moderngl"], "OpenImageIO", info["openimageio"],
                  f"llvmpipe CPU caps {info['llvmpipe_cpu_caps']}"):
-        assert fact in header, fact
+        assert fact in text, fact
 
 
-def test_report_header_without_gl_prints_the_reason_and_tests_still_run(project, monkeypatch):
+INERT_TEST = """
+import os
+
+def test_runs_without_pbrlab():
+    from pbrlab import gl
+    assert "GALLIUM_OVERRIDE_CPU_CAPS" not in os.environ
+    assert not gl._shared  # no GL context was made in this process
+"""
+
+
+def test_plugin_is_inert_in_a_project_that_uses_none_of_it(project, monkeypatch):
+    """Installing pbrlab registers the plugin in every project: there it must open no GL
+    context, set no environment variable, print nothing and write nothing."""
+    monkeypatch.delenv("GALLIUM_OVERRIDE_CPU_CAPS", raising=False)
+    (project.path / "test-output").mkdir()
+    (project.path / "test-output" / "index.html").write_text("the project's own page")
+    project.makepyfile(test_inert=INERT_TEST)
+    result = project.runpytest_subprocess()  # a fresh process: nothing inherited from this one
+    result.assert_outcomes(passed=1)
+    assert not [line for line in result.outlines if line.startswith("pbrlab")], result.outlines
+    assert (project.path / "test-output" / "index.html").read_text() == "the project's own page"
+    assert sorted(p.name for p in (project.path / "test-output").iterdir()) == ["index.html"]
+
+
+def test_summary_names_the_renderer_once_a_test_used_a_context(project):
+    project.makepyfile(test_gl="def test_gl(gl_context): assert gl_context.version_code >= 330")
+    result = project.runpytest()
+    result.assert_outcomes(passed=1)
+    _assert_names_the_renderer(result.outlines)
+
+
+def test_a_pbrlab_option_puts_the_renderer_in_the_header(project):
+    project.makepyfile(test_nothing="def test_nothing(): pass")
+    result = project.runpytest("--pbrlab-tolerance-profile", "llvmpipe")
+    result.assert_outcomes(passed=1)
+    header = result.outlines[:result.outlines.index(next(l for l in result.outlines if "collected" in l))]
+    _assert_names_the_renderer(header)
+
+
+def test_header_without_gl_prints_the_reason_and_tests_still_run(project, monkeypatch):
     def no_gl(backend=None):
         raise GLUnavailableError("no OpenGL library could be loaded (test)")
     monkeypatch.setattr(gl, "shared_context", no_gl)
     project.makepyfile(test_nothing="def test_nothing(): pass")
-    result = project.runpytest()
+    result = project.runpytest("--pbrlab-tolerance-profile", "llvmpipe")
     result.assert_outcomes(passed=1)
     result.stdout.fnmatch_lines(["pbrlab: no OpenGL library could be loaded (test)"])
 
@@ -52,7 +88,7 @@ def test_update_goldens_is_the_only_way_a_golden_is_written(project):
     missing = project.runpytest()
     missing.assert_outcomes(failed=1)
     missing.stdout.fnmatch_lines(["*golden 'charts/flat' is missing*",
-                                  '*make test PYTEST_ARGS="--update-goldens"*',
+                                  "*rerun pytest with the option --update-goldens*",
                                   "*pytest --update-goldens*test_chart.py::test_chart*"])
     assert not goldens_dir.exists()
 
@@ -113,3 +149,4 @@ def test_index_page_is_written_by_the_controller_under_xdist(project):
     result = project.runpytest("-n", "2")
     result.assert_outcomes(passed=1, failed=1)
     _assert_failure_page(project)
+    _assert_names_the_renderer(result.outlines)  # a worker's renderer reaches the controller

@@ -1,5 +1,5 @@
-"""Compilation matrix: every GLSL include alone as #version 330 core, #version 300 es
-(mediump default precision) and #version 450, plus all of them together as Vulkan GLSL 450
+"""Compilation matrix: every GLSL include alone as #version 330 core, #version 300 es,
+#version 100 (GLSL ES 1.00 / WebGL 1; both ES columns with mediump default precision) and #version 450, plus all of them together as Vulkan GLSL 450
 (-V --target-env vulkan1.0, SPIR-V generated); every HLSL port alone for pixel shader model
 5.0 and 6.0 with glslang's HLSL front end. "Alone" means a shader that includes only that
 file (it includes what it needs); glslang type-checks every function, called or not
@@ -14,7 +14,7 @@ predefine and the SPIR-V validator run on the result:
   6.0: __SHADER_TARGET_MAJOR 6, __SHADER_TARGET_MINOR 0, __HLSL_VERSION 2018 (DXC ps_6_0),
        -Od (what the evaluator runs), --spirv-val.
 The ports use nothing shader-model dependent (no 16-bit types, no wave ops, no vector ?:
-which HLSL 2021 forbids: the shim's boolean mix selects per component), so both compile
+which HLSL 2021 forbids: the generator refuses a boolean mix), so both compile
 the same text; a real FXC/DXC run is not part of this toolchain.
 """
 
@@ -38,6 +38,9 @@ HLSL_FILES = sorted(p.relative_to(hlsl.HLSL_ROOT).as_posix() for p in (hlsl.HLSL
 GLSL_TARGETS = {
     "330core": ("#version 330 core\n", []),
     "300es": ("#version 300 es\nprecision mediump float;\n", []),
+    # GLSL ES 1.00 (WebGL 1, GLES 2): no uint, no bit operations, no boolean-vector mix;
+    # the library has portable forms (pbr_hammersley_float, pbr_sanitize per component).
+    "100es": ("#version 100\nprecision mediump float;\n", []),
     "450": ("#version 450\n", []),
 }
 HLSL_TARGETS = {
@@ -144,18 +147,3 @@ def test_unity_types_work_and_step_aside(prelude, sixteen_bit):
     text = prelude + '#include "pbr/unity/surface_standard.hlsl"\n' + HAVE_FIXED
     args = ["--hlsl-enable-16bit-types"] if sixteen_bit else []
     hlsl.compile_spirv(text, "<unity-types>", extra_args=args)
-
-
-def test_engine_glsl_names_are_respected():
-    """An engine header that already spells vec3 etc. as macros and defines the GLSL
-    functions (PBR_HLSL_NO_GLSL_FUNCTIONS) compiles with the library: the shim steps aside."""
-    prelude = ("#define vec2 float2\n#define vec3 float3\n#define vec4 float4\n"
-               "#define PBR_HLSL_NO_GLSL_FUNCTIONS\n"
-               "float3 mix(float3 x, float3 y, float a) { return lerp(x, y, a); }\n"
-               "float3 mix(float3 x, float3 y, bool3 a) { return float3(a.x ? y.x : x.x, a.y ? y.y : x.y, a.z ? y.z : x.z); }\n"
-               "float mix(float x, float y, float a) { return lerp(x, y, a); }\n"
-               "bool3 greaterThan(float3 a, float3 b) { return a > b; }\n"
-               "float fract(float x) { return frac(x); }\n"
-               "float3 inversesqrt(float3 x) { return rsqrt(x); }\n")
-    text = prelude + '#include "pbr/pbr.hlsl"\nfloat4 main(float4 p : SV_Position) : SV_Target0 { return p; }\n'
-    hlsl.compile_spirv(text, "<engine-names>")

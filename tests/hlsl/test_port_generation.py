@@ -38,20 +38,34 @@ def test_bodies_read_line_for_line_the_same():
         assert len(inserted) == 1, rel
         i = inserted[0]
         for a, b in zip(g, h[:i] + h[i + 1:]):
-            assert a == b or port_hlsl._rename_files(a) == b or port_expression(port_hlsl._rename_files(a)) == b, (rel, a, b)
+            renamed = port_hlsl._rename_tokens(port_hlsl._rename_files(a))  # a line may open a call it does not close
+            assert a == b or renamed == b or _port_line(port_hlsl._rename_files(a)) == b, (rel, a, b)
+
+
+def _port_line(line):
+    """The code rules on one line, or None where the line alone is not an expression."""
+    try:
+        return port_expression(line)
+    except PortError:
+        return None
 
 
 @pytest.mark.parametrize("glsl, hlsl", [
-    ("return vec3(0.0);", "return ((vec3)(0.0));"),
-    ("x = vec3(a, b, c);", "x = vec3(a, b, c);"),
-    ("x = vec4(vec3(f), 1.0 - f);", "x = vec4(((vec3)(f)), 1.0 - f);"),
-    ("x = vec3(max(a, b)).x;", "x = ((vec3)(max(a, b))).x;"),
-    ("x = vec3(vec3(1.0));", "x = ((vec3)(((vec3)(1.0))));"),
+    ("return vec3(0.0);", "return ((float3)(0.0));"),
+    ("x = vec3(a, b, c);", "x = float3(a, b, c);"),
+    ("x = vec4(vec3(f), 1.0 - f);", "x = float4(((float3)(f)), 1.0 - f);"),
+    ("x = vec3(max(a, b)).x;", "x = ((float3)(max(a, b))).x;"),
+    ("x = vec3(vec3(1.0));", "x = ((float3)(((float3)(1.0))));"),
     ("u = atan(y, -x);", "u = atan2(y, -x);"),
     ("u = atan(y);", "u = atan(y);"),
-    ("u = atan(f(a, b), vec2(c).x);", "u = atan2(f(a, b), ((vec2)(c)).x);"),
-    ("float f(vec3 v) { return 1.0; }", "float f(vec3 v) { return 1.0; }"),
-    ("y = 1.0; // vec3(0.0) atan(a, b)", "y = 1.0; // vec3(0.0) atan(a, b)"),
+    ("u = atan(f(a, b), vec2(c).x);", "u = atan2(f(a, b), ((float2)(c)).x);"),
+    ("float f(vec3 v) { return 1.0; }", "float f(float3 v) { return 1.0; }"),
+    ("y = 1.0; // vec3(0.0) atan(a, b) mix fract", "y = 1.0; // vec3(0.0) atan(a, b) mix fract"),
+    ("ivec2 i; uvec3 u; bvec4 b;", "int2 i; uint3 u; bool4 b;"),
+    ("c = mix(a, b, t);", "c = lerp(a, b, t);"),
+    ("c = fract(x) + inversesqrt(y);", "c = frac(x) + rsqrt(y);"),
+    ("c = mod(x, 2.0);", "c = pbr_mod(x, 2.0);"),
+    ("float mixer = fractal;", "float mixer = fractal;"),
 ])
 def test_code_rules(glsl, hlsl):
     assert port_expression(glsl) == hlsl
@@ -65,7 +79,7 @@ def test_file_rules_and_the_shim_line():
         '#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/x.glsl by harness/pbrlab/port_hlsl.py: '
         "edit the GLSL, then regenerate",
         '#include "pbr/common/math.hlsl"  // see glsl/README.md, d_ggx.hlsl',
-        "vec3 f() { return ((vec3)(1.0)); }", "#endif // PBR_X_HLSL"]
+        "float3 f() { return ((float3)(1.0)); }", "#endif // PBR_X_HLSL"]
 
 
 @pytest.mark.parametrize("body, message", [
@@ -75,6 +89,9 @@ def test_file_rules_and_the_shim_line():
     ("float a[2] = float[2](1.0, 2.0);", "array constructor"),
     ("float sample = 1.0;", "'sample' is reserved in HLSL"),
     ("float line(float x) { return x; }", "'line' is reserved in HLSL"),
+    ("vec3 f(vec3 x) { return mix(vec3(0.0), x, greaterThan(x, vec3(0.0))); }", "greaterThan"),
+    ("vec3 f(vec3 x, bvec3 s) {\n return mix(vec3(0.0), x, s); }", "mix.. with a boolean selector"),
+    ("float f(float x) {\n return mix(0.0, x, x > 0.0); }", "mix.. with a boolean selector"),
 ])
 def test_unportable_glsl_is_refused_with_file_and_line(body, message):
     with pytest.raises(PortError, match=message) as info:

@@ -161,9 +161,10 @@ def test_constants_shared_with_the_reference_are_equal():
 
 
 def test_selector_values_match_the_reference_order():
+    """Values count from 1: 0 is what the preprocessor reads for a misspelt (undefined) name."""
     for prefix, names in (("PBR_SPECULAR_D_", shading.SPECULAR_D), ("PBR_SPECULAR_V_", shading.SPECULAR_V),
                           ("PBR_SPECULAR_F_", shading.SPECULAR_F), ("PBR_DIFFUSE_", shading.DIFFUSE),
                           ("PBR_QUALITY_", shading.QUALITY), ("PBR_TONEMAP_", tonemap.TONEMAPS),
                           ("PBR_COLOR_TRANSFER_", color.TRANSFERS)):
         for index, name in enumerate(names):
-            assert evaluate(f"{prefix}{name}", x=0.0) == index, prefix + name
+            assert evaluate(f"{prefix}{name}", x=0.0) == index + 1, prefix + name

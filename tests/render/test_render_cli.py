@@ -1,12 +1,13 @@
 """`pbrlab render` and `pbrlab demo`: outputs, atomic writes, and clear errors."""
 
+import html
 import json
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from pbrlab import cli
+from pbrlab import cli, contact_sheets
 from pbrlab.charts import CHARTS
 from pbrlab.images import read_image
 
@@ -80,9 +81,18 @@ def test_render_names_the_bad_scene_field(tmp_path, capsys):
 def test_demo_writes_every_chart_and_matches_goldens(tmp_path, capsys):
     assert cli.main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
+    index = (tmp_path / "index.html").read_text(encoding="utf-8")
     for name in [*CHARTS, "lit_scene_high"]:
         assert (tmp_path / f"{name}.png").is_file() and (tmp_path / f"{name}.exr").is_file()
         assert f"matches goldens/{name}" in out
+        # the labelled contact sheet beside the raw render, larger (titles, labels, caption)
+        sheet = read_image(tmp_path / f"{name}_sheet.png")
+        raw = read_image(tmp_path / f"{name}.png")
+        assert sheet.shape[0] > raw.shape[0] and sheet.shape[1] >= raw.shape[1]
+        info = contact_sheets.layout(name)
+        for text in (info.title, info.caption, f"golden: matches goldens/{name}", f"{name}_sheet.png",
+                     f"{name}.png", f"{name}.exr"):
+            assert html.escape(text) in index, text
 
 
 def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
@@ -109,6 +119,9 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     assert "max abs 0.01 linear at (y=10, x=10)" in out
     assert "1 of 184320 pixels" in out and "tolerance max_abs 1e-05 linear" in out
     assert "tolerance profile llvmpipe" in out
+    index = (tmp_path / "out" / "index.html").read_text(encoding="utf-8")
+    assert 'class="bad">golden: DIFFERS from goldens/chart_f0' in index
+    assert index.count('class="ok">golden: matches') == len(CHARTS)  # the three other charts and the lit scene
     assert not any(line.rstrip().endswith(":") for line in out.splitlines())
 
 

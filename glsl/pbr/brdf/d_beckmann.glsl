@@ -18,6 +18,7 @@
 // similar highlight for small alpha (Walter 2007 §5.2). Domain NdotH in [0, 1],
 // alpha in (0, 1]. Normalised (tested by quadrature). float32: exp(x) carries a relative
 // error ~ |x| · 2^-24 from the rounding of its argument x = -tan²θ/alpha².
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_BECKMANN_GLSL
 #define PBR_BRDF_D_BECKMANN_GLSL
 

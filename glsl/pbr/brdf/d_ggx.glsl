@@ -33,6 +33,7 @@
 // consistent 1 - NdotH² and keeps D <= 1/(π alpha²) when a caller passes an inconsistent one.
 // Bit-identical to the unguarded formula for NdotH in [0, 1], alpha in [1e-7, 1].
 // Normalised: ∫ D (n·h) dω_h = 1 (tested).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_GGX_GLSL
 #define PBR_BRDF_D_GGX_GLSL
 

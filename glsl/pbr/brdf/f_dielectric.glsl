@@ -20,6 +20,7 @@
 // interface, no reflection), by flooring g + c at PBR_FLT_MIN. |cosTheta| is capped at 1,
 // and F at 1 (at grazing (g - c)/(g + c) = 1 rounds to 1 + 2 ulp, found by the sweep).
 // Bit-identical elsewhere. Domain eta in [1/16, 16] (eta² must not overflow).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_DIELECTRIC_GLSL
 #define PBR_BRDF_F_DIELECTRIC_GLSL
 

@@ -33,6 +33,7 @@
 // or above 1 / (3 * 16.5) = 0.0202 keeps F90 = 1 ("everything has Fresnel").
 // Guard: VdotH is saturated in every form (VdotH slightly above 1 from rounding would make
 // (1 - VdotH)^5 negative and F < F0, below 0 for F0 = 0); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_SCHLICK_GLSL
 #define PBR_BRDF_F_SCHLICK_GLSL
 

@@ -16,6 +16,7 @@
 // the lecture's Viz_I = 1 equals 4 · pbr_V_Implicit().
 // Guard: G's cosines are saturated (G stays in [0, 1] for unnormalised or back-facing
 // normals); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_IMPLICIT_GLSL
 #define PBR_BRDF_V_IMPLICIT_GLSL
 

@@ -15,6 +15,7 @@
 // path is 0 LSB off the hardware path. Guard: inputs pass through pbr_sanitize(c, 1.0)
 // (pbr/common/guards.glsl): NaN and negatives -> 0 (pow() and sqrt() are undefined below 0,
 // GLSL 4.60 §8.2), above 1 and +Inf -> 1, so outputs are in [0, 1]; bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_GAMMA_GLSL
 #define PBR_COLOR_GAMMA_GLSL
 

@@ -18,6 +18,7 @@
 // same way). Bit-identical on [0, 1]. float64 twin:
 // harness/pbrlab/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
 // GL_SRGB8_ALPHA8 textures implement in hardware (the "let the GPU handle it" path).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_SRGB_GLSL
 #define PBR_COLOR_SRGB_GLSL
 

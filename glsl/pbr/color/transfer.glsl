@@ -20,6 +20,7 @@
 // Guard: pbr_encode_final_color returns a value in [0, 1] on every path (HARDWARE included:
 // pbr_sanitize(c, 1.0), which a UNORM/sRGB8 target would apply anyway, but with NaN
 // defined as 0 instead of left to the hardware); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_TRANSFER_GLSL
 #define PBR_COLOR_TRANSFER_GLSL
 
@@ -27,10 +28,10 @@
 #include "pbr/color/gamma.glsl"
 #include "pbr/common/guards.glsl"
 
-#define PBR_COLOR_TRANSFER_HARDWARE 0
-#define PBR_COLOR_TRANSFER_SRGB     1
-#define PBR_COLOR_TRANSFER_GAMMA22  2
-#define PBR_COLOR_TRANSFER_FAST     3
+#define PBR_COLOR_TRANSFER_HARDWARE 1
+#define PBR_COLOR_TRANSFER_SRGB     2
+#define PBR_COLOR_TRANSFER_GAMMA22  3
+#define PBR_COLOR_TRANSFER_FAST     4
 
 #ifndef PBR_COLOR_TRANSFER
 #define PBR_COLOR_TRANSFER PBR_COLOR_TRANSFER_HARDWARE

@@ -7,6 +7,7 @@
 // Values are written to 9 significant digits (more than float32 resolves); the float64
 // twins live in harness/pbrlab/reference/constants.py and tests/library/test_glsl_layout.py
 // checks that the GPU sees the float32 rounding of the same numbers.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONSTANTS_GLSL
 #define PBR_COMMON_CONSTANTS_GLSL
 

@@ -16,6 +16,7 @@
 // away under fast maths), so NaN is removed only by an ordered comparison, false for NaN in
 // IEEE 754 and in SPIR-V OpFOrdGreaterThan, used as a select (pbr_sanitize).
 // Every constant is shared with harness/pbrlab/reference/guards.py (tested equal).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_GUARDS_GLSL
 #define PBR_COMMON_GUARDS_GLSL
 
@@ -77,8 +78,10 @@ float pbr_sanitize(float x, float hi) {
     return min(x > 0.0 ? x : 0.0, hi);
 }
 
+// Per component, with the scalar form: the same operations, so the same bits; and portable
+// to GLSL ES 1.00 / WebGL 1 (no boolean-vector mix) and to HLSL without a select helper.
 vec3 pbr_sanitize(vec3 x, float hi) {
-    return min(mix(vec3(0.0), x, greaterThan(x, vec3(0.0))), vec3(hi));
+    return vec3(pbr_sanitize(x.x, hi), pbr_sanitize(x.y, hi), pbr_sanitize(x.z, hi));
 }
 
 // normalize() that is defined everywhere: the zero vector (a point light at the shaded

@@ -8,6 +8,7 @@
 // on most GPUs, which is slower, loses ~1e-6 relative accuracy, and is undefined for x < 0
 // and ambiguous at x == 0 (GLSL 4.6 §8.2: "results are undefined if x < 0, or if x = 0
 // and y <= 0"). Schlick's Fresnel and Burley's diffuse both need (1 - cos)^5.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_MATH_GLSL
 #define PBR_COMMON_MATH_GLSL
 

@@ -23,6 +23,7 @@
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
 // (harness/pbrlab/ibl.py integrates the table with the library's own V term; the float64
 // reference of the integral is harness/pbrlab/reference/directional_albedo.py).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_GLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_GLSL
 #include "pbr/shading/dispatch.glsl"

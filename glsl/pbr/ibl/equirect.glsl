@@ -9,6 +9,7 @@
 // looks at +Y; azimuth phi = 2 pi u is measured from -Z towards +X, so the image centre
 // looks at +Z. Texture coordinate t = 1 is the image's top row (images are uploaded
 // top row last, as OpenGL expects).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_EQUIRECT_GLSL
 #define PBR_IBL_EQUIRECT_GLSL
 #include "pbr/common/constants.glsl"

@@ -8,6 +8,7 @@
 //
 // Units follow the lecture's convention (pbr/common/conventions.glsl §5): a light of
 // intensity I at distance d delivers I / d^2 as the lightRadiance of pbr_shade_punctual.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_ATTENUATION_GLSL
 #define PBR_LIGHTING_ATTENUATION_GLSL
 

@@ -13,6 +13,7 @@
 // colour times intensity, already attenuated (distance, spot cone, shadow) by the caller;
 // l points from the surface to the light. NdotL <= 0 returns 0; l = -v returns the
 // diffuse part only (see pbr/shading/standard.glsl for every edge).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_PUNCTUAL_GLSL
 #define PBR_LIGHTING_PUNCTUAL_GLSL
 

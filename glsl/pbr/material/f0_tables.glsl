@@ -9,6 +9,7 @@
 // "F0 for metals (linear)". Dielectric F0 is grey (use vec3(PBR_F0_WATER)); metal F0 is
 // coloured. Copied digit for digit; shared with reference/material.py F0_DIELECTRICS and
 // F0_METALS and tested equal (tests/library/test_material.py).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_F0_TABLES_GLSL
 #define PBR_MATERIAL_F0_TABLES_GLSL
 

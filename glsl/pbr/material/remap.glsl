@@ -16,6 +16,7 @@
 // [PBR_MIN_ALPHA, 1] (alpha = 0 is 2/0: decided s = 2e14, the power of the narrowest
 // representable lobe; alpha > 1 would give s < 0); pbr_alpha_from_specPower takes s >= 0.
 // Bit-identical inside those ranges. The other remaps are polynomials on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_REMAP_GLSL
 #define PBR_MATERIAL_REMAP_GLSL
 

@@ -8,6 +8,7 @@
 // Lecture, "Metals vs. dielectrics": dielectrics have a white (grey) specular and a
 // diffuse; metals are purely specular with a coloured F0. Both workflows give
 // (diffuseColor, f0) for pbr/shading/standard.glsl. float64 twin: reference/material.py.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_WORKFLOW_GLSL
 #define PBR_MATERIAL_WORKFLOW_GLSL
 

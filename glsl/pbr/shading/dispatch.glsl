@@ -38,6 +38,7 @@
 //   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
 //   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
 // The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_DISPATCH_GLSL
 #define PBR_SHADING_DISPATCH_GLSL
 
@@ -56,28 +57,30 @@
 #include "pbr/brdf/v_implicit.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 
-#define PBR_SPECULAR_D_GGX         0
-#define PBR_SPECULAR_D_BECKMANN    1
-#define PBR_SPECULAR_D_BLINN_PHONG 2
+// Every selector family counts from 1: an undefined name (a typo) reads as 0 in #if, which
+// no value matches, so the dispatcher's #error names the selector instead of picking a term.
+#define PBR_SPECULAR_D_GGX         1
+#define PBR_SPECULAR_D_BECKMANN    2
+#define PBR_SPECULAR_D_BLINN_PHONG 3
 
-#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      0
-#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 1
-#define PBR_SPECULAR_V_SMITH_GGX                 2
-#define PBR_SPECULAR_V_SCHLICK_GGX               3
-#define PBR_SPECULAR_V_COOK_TORRANCE             4
-#define PBR_SPECULAR_V_KELEMEN                   5
-#define PBR_SPECULAR_V_IMPLICIT                  6
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      1
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 2
+#define PBR_SPECULAR_V_SMITH_GGX                 3
+#define PBR_SPECULAR_V_SCHLICK_GGX               4
+#define PBR_SPECULAR_V_COOK_TORRANCE             5
+#define PBR_SPECULAR_V_KELEMEN                   6
+#define PBR_SPECULAR_V_IMPLICIT                  7
 
-#define PBR_SPECULAR_F_SCHLICK    0
-#define PBR_SPECULAR_F_SCHLICK_SG 1
-#define PBR_SPECULAR_F_NONE       2
+#define PBR_SPECULAR_F_SCHLICK    1
+#define PBR_SPECULAR_F_SCHLICK_SG 2
+#define PBR_SPECULAR_F_NONE       3
 
-#define PBR_DIFFUSE_LAMBERT 0
-#define PBR_DIFFUSE_BURLEY  1
+#define PBR_DIFFUSE_LAMBERT 1
+#define PBR_DIFFUSE_BURLEY  2
 
-#define PBR_QUALITY_LOW    0
-#define PBR_QUALITY_HIGH   1
-#define PBR_QUALITY_MEDIUM 2
+#define PBR_QUALITY_LOW    1
+#define PBR_QUALITY_HIGH   2
+#define PBR_QUALITY_MEDIUM 3
 
 #ifndef PBR_QUALITY
 #define PBR_QUALITY PBR_QUALITY_HIGH

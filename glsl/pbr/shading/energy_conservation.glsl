@@ -26,6 +26,7 @@
 // (metallic 0, or any specular colour), at most the albedo in between (metallic m in
 // (0, 1): (1 - 0.04)(1 - m) <= 1 - max(f0)). rho is capped at 1, so any diffuseColor
 // conserves energy, also one that never went through a workflow.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_ENERGY_CONSERVATION_GLSL
 #define PBR_SHADING_ENERGY_CONSERVATION_GLSL
 

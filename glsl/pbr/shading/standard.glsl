@@ -31,6 +31,7 @@
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
 //    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
 //  - NdotH and VdotH are clamped to [0, 1] against rounding.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_STANDARD_GLSL
 #define PBR_SHADING_STANDARD_GLSL
 

@@ -32,6 +32,7 @@
 // the environment when PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
 // f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
 // (tests/render/test_white_furnace.py).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #include "pbr/lighting/punctual.glsl"

@@ -7,6 +7,7 @@
 // color · 2^EV: each EV (stop) doubles the light reaching the tonemapper. Exact in float32
 // for integer EV (exp2 of an integer is a power of two). Apply before the tonemapper, to
 // linear HDR colour.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_EXPOSURE_GLSL
 #define PBR_TONEMAP_EXPOSURE_GLSL
 

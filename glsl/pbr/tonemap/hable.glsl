@@ -21,6 +21,7 @@
 // input is capped at W, which is exactly saturate(f(x) / f(W)) because f increases, and
 // keeps x² from overflowing in half precision (x <= 11.2: x² <= 126). Output saturated
 // against rounding at W.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_HABLE_GLSL
 #define PBR_TONEMAP_HABLE_GLSL
 

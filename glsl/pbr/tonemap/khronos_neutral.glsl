@@ -17,6 +17,7 @@
 // pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.glsl): decided NaN -> 0, negative
 // -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
 // curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
 #define PBR_TONEMAP_KHRONOS_NEUTRAL_GLSL
 

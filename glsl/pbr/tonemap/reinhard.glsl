@@ -19,6 +19,7 @@
 // capped at whitePoint, which is exactly saturate(eq. 4) because the curve increases, and
 // keeps color / whitePoint² from overflowing; the output is saturated against rounding at
 // the white point (1 + 1 ulp, found by the sweep). whitePoint > 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_REINHARD_GLSL
 #define PBR_TONEMAP_REINHARD_GLSL
 

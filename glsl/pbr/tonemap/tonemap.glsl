@@ -9,6 +9,7 @@
 // saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
 // Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
 // light) nearly unchanged, which is what material charts want.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_TONEMAP_GLSL
 #define PBR_TONEMAP_TONEMAP_GLSL
 
@@ -19,12 +20,12 @@
 #include "pbr/tonemap/aces.glsl"
 #include "pbr/tonemap/khronos_neutral.glsl"
 
-#define PBR_TONEMAP_NONE            0
-#define PBR_TONEMAP_REINHARD        1
-#define PBR_TONEMAP_HABLE           2
-#define PBR_TONEMAP_ACES_FITTED     3
-#define PBR_TONEMAP_ACES_NARKOWICZ  4
-#define PBR_TONEMAP_KHRONOS_NEUTRAL 5
+#define PBR_TONEMAP_NONE            1
+#define PBR_TONEMAP_REINHARD        2
+#define PBR_TONEMAP_HABLE           3
+#define PBR_TONEMAP_ACES_FITTED     4
+#define PBR_TONEMAP_ACES_NARKOWICZ  5
+#define PBR_TONEMAP_KHRONOS_NEUTRAL 6
 
 #ifndef PBR_TONEMAP
 #define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL

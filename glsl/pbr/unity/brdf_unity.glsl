@@ -40,6 +40,7 @@
 // harness/pbrlab/reference/unity_brdf.py; tests/unity/ compares the two.
 // Where the maths is the library's, the pbr_ core is called (pbr_pow5, pbr_F_Schlick,
 // pbr_max3, the remaps); the core never includes this file.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_BRDF_UNITY_GLSL
 #define PBR_UNITY_BRDF_UNITY_GLSL
 #include "pbr/common/constants.glsl"

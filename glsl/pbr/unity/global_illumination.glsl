@@ -30,6 +30,7 @@
 // pbr_unity_gi_occlusion(s.Occlusion): s.Occlusion under the unity model, as Unity, and 1
 // under pbrlab's, whose LightingStandard applies s.Occlusion itself (README, "Unity surface
 // API"). Lambert and BlinnPhong apply occlusion 1, as Unity.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_GLOBAL_ILLUMINATION_GLSL
 #define PBR_UNITY_GLOBAL_ILLUMINATION_GLSL
 #include "pbr/unity/surface_standard.glsl"

@@ -47,6 +47,7 @@
 // README.md, "Unity surface API", lists the differences. s.Normal is in world space when
 // LightingStandard runs, as in Unity (the caller transforms the tangent-space normal a
 // surface function writes).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_STANDARD_GLSL
 #define PBR_UNITY_SURFACE_STANDARD_GLSL
 #include "pbr/surface/lighting_standard.glsl"
@@ -62,12 +63,15 @@
 #define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 
-#define PBR_ALPHA_MODE_OPAQUE 0
-#define PBR_ALPHA_MODE_CUTOUT 1
-#define PBR_ALPHA_MODE_FADE 2
-#define PBR_ALPHA_MODE_TRANSPARENT 3
+#define PBR_ALPHA_MODE_OPAQUE 1
+#define PBR_ALPHA_MODE_CUTOUT 2
+#define PBR_ALPHA_MODE_FADE 3
+#define PBR_ALPHA_MODE_TRANSPARENT 4
 #ifndef PBR_ALPHA_MODE
 #define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
+#endif
+#if PBR_ALPHA_MODE != PBR_ALPHA_MODE_OPAQUE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_CUTOUT && PBR_ALPHA_MODE != PBR_ALPHA_MODE_FADE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_TRANSPARENT
+#error "PBR_ALPHA_MODE: unknown value"
 #endif
 
 // Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.

@@ -16,11 +16,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import evaluator, gl, ibl, shaders, targets
+from .. import console, evaluator, gl, ibl, shaders, targets
+from ..locations import locate
 from . import kernel
 from .families import Family, Variant
 
-DEFAULT_SCENE = Path(__file__).resolve().parents[3] / "scenes" / "unity_example" / "scene.json"
+DEFAULT_SCENE = locate("scenes") / "unity_example" / "scene.json"
 TIERS = ("high", "medium", "low")
 
 
@@ -57,7 +58,7 @@ _START = time.monotonic()
 
 def progress(message: str) -> None:
     """The progress line on stderr, with the seconds elapsed since the bench started."""
-    print(f"pbrlab bench: {time.monotonic() - _START:6.1f}s {message}", file=sys.stderr, flush=True)
+    console.note(f"pbrlab bench: {time.monotonic() - _START:6.1f}s {message}", stream=sys.stderr)
 
 
 # ---- error -----------------------------------------------------------------------------------

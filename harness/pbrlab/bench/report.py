@@ -187,20 +187,28 @@ def markdown(doc: dict) -> str:
 
 def pareto_plot(fam: dict, path: Path, quick: bool) -> None:
     """Error (max relative, log) against instructions per evaluation (log), one point per
-    variant; the exact variant is ringed. Zero cost or error is drawn at the axis floor."""
+    variant; the exact variant is ringed. Zero cost or error is drawn at the axis floor.
+    Variants are told apart by colour and marker in a legend beside the axes, never by labels
+    next to the points (neighbouring variants overlapped into an unreadable smear)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.4), dpi=110)
+    fig, ax = plt.subplots(figsize=(8.4, 4.4), dpi=110)
     floor_x, floor_y = 0.3, 1e-8
-    for v in fam["variants"]:
+    markers = "osD^vP*Xh<>p"
+    colours = plt.get_cmap("tab10").colors
+    for i, v in enumerate(fam["variants"]):
         x = max(v["instructions"]["per_eval"] or 0.0, floor_x)
         y = max(v["error"]["max_rel"] or 0.0, floor_y)
         exact = v["name"] == fam["exact"]
-        ax.scatter([x], [y], s=70 if exact else 40, facecolors="none" if exact else "C0",
-                   edgecolors="C3" if exact else "C0", linewidths=2 if exact else 1, zorder=3)
-        ax.annotate(v["name"], (x, y), textcoords="offset points", xytext=(5, 4), fontsize=8)
+        colour = colours[i % len(colours)]
+        label = v["name"] + (" (exact)" if exact else "")
+        ax.scatter([x], [y], s=90 if exact else 45, marker="o" if exact else markers[i % len(markers)],
+                   facecolors="none" if exact else colour, edgecolors=colour,
+                   linewidths=2 if exact else 0.8, zorder=3, label=label, alpha=0.9)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8, frameon=False,
+              title="variant", title_fontsize=8, borderaxespad=0.0)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(f"x86 instructions per evaluation (callgrind; floor {floor_x})")

@@ -130,12 +130,11 @@ def run_frame(spec):
 
 def _bench_scene(name):
     """A test scene by name: a chart, or a scene file under scenes/."""
-    from pathlib import Path
-
     from pbrlab import charts, scene as scene_mod
+    from pbrlab.locations import locate
     if name in charts.CHARTS:
         return scene_mod.parse_scene(charts.CHARTS[name](), origin=name)
-    return scene_mod.load_scene(Path(__file__).resolve().parents[3] / "scenes" / name)
+    return scene_mod.load_scene(locate("scenes") / name)
 
 
 def _specialisation_jobs(spec):

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import argparse
+
 from pathlib import Path
 
-from .. import shaders
+from .. import console, shaders
 from ..errors import PbrlabError
 from ..images import atomic_output
 
@@ -22,13 +24,14 @@ def run(args) -> int:
         return 0
     with atomic_output(args.output) as tmp:
         Path(tmp).write_text(text, encoding="utf-8")
-    print(f"wrote {args.output} ({len(text.splitlines())} lines)")
+    console.note(f"wrote {args.output} ({len(text.splitlines())} lines)")
     return 0
 
 
 def register(sub, common):
-    p = sub.add_parser("amalgamate", parents=[common], help="write one self-contained GLSL file",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("amalgamate", parents=[common], help="Write one self-contained GLSL file with every include inlined.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("entry", help="a GLSL file, or an include name such as pbr/pbr.glsl")
     p.add_argument("-o", "--output", default="-", help="output file (default: stdout)")
     p.add_argument("-I", "--include-dir", action="append", default=[],

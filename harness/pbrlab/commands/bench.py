@@ -6,6 +6,8 @@ family. A benchmark: it asserts nothing about time.
 
 from __future__ import annotations
 
+import argparse
+
 
 def run(args) -> int:
     import os
@@ -19,8 +21,9 @@ def run(args) -> int:
 
 def register(sub, common):
     from ..bench.families import BY_NAME
-    p = sub.add_parser("bench", parents=[common], help="accuracy-versus-cost report of every variant",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("bench", parents=[common], help="Measure accuracy against cost for every variant and tier, and write the report.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--family", choices=sorted(BY_NAME), default=None,
                    help="measure one family only (the tier frame cost and image error always run)")
     p.add_argument("--quick", action="store_true",

@@ -1,8 +1,14 @@
 """`pbrlab demo [--out DIR] [--language hlsl]`: render the default material charts and the lit
 example scene (the Unity-style surface API), check them against the goldens, and say where
-the images are. ``--language hlsl`` shades with the HLSL twins against the same goldens."""
+the images are. ``--language hlsl`` shades with the HLSL twins against the same goldens.
+
+Per image it writes NAME.png (sRGB) and NAME.exr (linear radiance), the raw renders, and
+NAME_sheet.png, a contact sheet with the chart's title, row and column values, term names
+and golden verdict; OUT/index.html shows every sheet with its caption and golden status."""
 
 from __future__ import annotations
+
+import argparse
 
 from pathlib import Path
 
@@ -10,7 +16,7 @@ from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import gl, goldens, images
+    from .. import console, contact_sheets, gl, goldens, images
     from ..charts import CHARTS
     from ..golden_scenes import GOLDEN_SCENES
     from ..render import render_scene
@@ -20,9 +26,10 @@ def run(args) -> int:
     out.mkdir(parents=True, exist_ok=True)
     ctx = gl.shared_context(args.backend)
     info = gl.context_info(ctx)
-    print(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
+    console.note(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
           f"shading in {args.language.upper()}")
     failures = 0
+    entries = []
     names = [*CHARTS, "lit_scene_high"]
     for name in names:
         rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
@@ -35,18 +42,27 @@ def run(args) -> int:
                                           update=False, root=args.goldens,
                                           output_dir=out / "golden-diffs",
                                           profile=args.tolerance_profile)
-            print(f"  {png}  {exr}  matches goldens/{name} (max abs {result.max_abs:.2g})")
+            status = f"matches goldens/{name} (max abs {result.max_abs:.2g})"
+            print(f"  {png}  {exr}  {status}")
         except goldens.GoldenFailure as failure:
             failures += 1
+            status = f"DIFFERS from goldens/{name}: " + " ".join(failure.figures.split())
             print(f"  {png}  {exr}  DIFFERS from goldens/{name}")
             print("\n".join("      " + line for line in failure.figures.splitlines()))
-    print(f"{len(names)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else ""))
+        sheet = out / f"{name}_sheet.png"
+        contact_sheets.write_sheet(sheet, name, rendering.srgb8, status)
+        entries.append({"name": name, "status": status, "sheet": sheet.name, "png": png.name, "exr": exr.name})
+    index = out / "index.html"
+    contact_sheets.write_index(index, entries)
+    print(f"{len(names)} images in {out}/" + (f"; {failures} differ from their goldens" if failures else "")
+          + f"; labelled sheets and captions in {index}")
     return 1 if failures else 0
 
 
 def register(sub, common):
-    p = sub.add_parser("demo", parents=[common], help="render the default material charts",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("demo", parents=[common], help="Render the material charts and the lit example, and check them against the goldens.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="out", help="output folder (default: out)")
     p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
     p.add_argument("--tolerance-profile", default="auto", choices=("auto", "llvmpipe", "gpu"),

@@ -19,7 +19,7 @@ from ..errors import PbrlabError
 def register(subparsers, common) -> None:
     parser = subparsers.add_parser(
         "diff", parents=[common],
-        help="compare two images (EXR: linear, PNG: 8-bit codes); exit 1 when over tolerance",
+        help="Compare two images (EXR in linear units, PNG in 8-bit codes); exit 1 when over tolerance.",
         description=(
             "Compare OBTAINED against EXPECTED and print max abs, RMSE, the fraction of pixels "
             "over tolerance and (8-bit images) mean FLIP. EXR images are compared in linear "

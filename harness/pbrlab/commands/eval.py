@@ -6,6 +6,8 @@ also be listed: --var x=0,0.5,1. Vector inputs take --vec3 NAME=r,g,b (a constan
 
 from __future__ import annotations
 
+import argparse
+
 import itertools
 import math
 
@@ -78,8 +80,9 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("eval", parents=[common], help="evaluate a GLSL expression over a grid",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("eval", parents=[common], help="Evaluate a GLSL or HLSL expression over a grid of inputs and print a table.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("expression", help="a GLSL (or HLSL) expression, e.g. 'pbr_D_GGX(NdotH, alpha)'")
     p.add_argument("--language", choices=("glsl", "hlsl"), default="glsl",
                    help="evaluate the GLSL library or its HLSL port (HLSL -> SPIR-V -> GLSL)")

@@ -4,6 +4,8 @@ file, "warnings" lists every extension or feature not honoured (as `pbrlab rende
 
 from __future__ import annotations
 
+import argparse
+
 import json
 from pathlib import Path
 
@@ -29,7 +31,8 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("features", parents=[common], help="print the effects a scene calls for",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("features", parents=[common], help="Print, as JSON, the effects a scene calls for and the programs it compiles.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", help="a JSON scene or a glTF 2.0 file (.gltf, .glb)")
     p.set_defaults(run=run)

@@ -6,6 +6,8 @@ decided value where the maths has none), status. Exit 0 when every case holds, 1
 
 from __future__ import annotations
 
+import argparse
+
 import json
 import math
 
@@ -41,8 +43,9 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("hardcases", parents=[common], help="run the hard-case catalogue; exit 1 on any failure",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("hardcases", parents=[common], help="Run the hard-case catalogue on the GPU; exit 1 when a case fails.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--json", action="store_true", help="print the results as JSON")
     p.add_argument("--function", action="append", default=[], metavar="NAME",
                    help="only this GLSL function (repeatable), e.g. pbr_D_GGX")

@@ -10,6 +10,8 @@ state as //@ lines, so a scene material's `surface` may name it for the GLSL pat
 
 from __future__ import annotations
 
+import argparse
+
 from pathlib import Path
 
 from ..images import atomic_output
@@ -30,8 +32,9 @@ def run(args) -> int:
 
 
 def register(sub, common):
-    p = sub.add_parser("port-unity", parents=[common], help="rename a Unity surface shader to GLSL",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("port-unity", parents=[common],
+                       help="Rename a Unity surface shader's CGPROGRAM to GLSL for the GLSL path.",
+                       description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("shader", help="a Unity .shader file (or bare CGPROGRAM text with #pragma surface)")
     p.add_argument("-o", "--output", default="-", help="output .glsl file (default: stdout)")
     p.set_defaults(run=run)

@@ -5,10 +5,12 @@ Writes atomically: a failed render leaves no partial file and never replaces a g
 
 from __future__ import annotations
 
+import argparse
 import re
 
 import numpy as np
 
+from .. import console
 from ..errors import PbrlabError
 
 
@@ -79,23 +81,28 @@ def run(args) -> int:
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
     scene = load_any_scene(args.scene, args.camera, args.environment, size)
-    rendering = render_scene(scene, gl.shared_context(args.backend), size=size,
+    context = gl.shared_context(args.backend)
+    info = gl.context_info(context)
+    console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
+    rendering = render_scene(scene, context, size=size,
                              specialise=not args.no_specialise, language=args.language)
     kind = "specialised" if rendering.programs.specialised else "full"
-    print(f"{rendering.programs.distinct} {kind} program(s)")
+    console.note(f"{rendering.programs.distinct} {kind} program(s)")
     check_finite(rendering.linear, args.scene)
     if args.hdr:
         images.write_exr(args.hdr, rendering.linear, metadata=rendering.info)
-        print(f"wrote {args.hdr}")
+        console.note(f"wrote {args.hdr}")
     if args.output:
         images.write_png(args.output, rendering.srgb8)
-        print(f"wrote {args.output}")
+        console.note(f"wrote {args.output}")
     return 0
 
 
 def register(sub, common):
-    p = sub.add_parser("render", parents=[common], help="render a JSON scene or a glTF 2.0 file",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("render", parents=[common],
+                       help="Render a JSON scene or a glTF 2.0 file to a PNG and/or an EXR file.",
+                       description=__doc__,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", help="a JSON scene file (see README: Scene files) or a glTF 2.0 file (.gltf, .glb)")
     p.add_argument("--camera", type=int, default=None, metavar="N",
                    help="glTF: render from camera N (default: the first camera, else a framing view)")

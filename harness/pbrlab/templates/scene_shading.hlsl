@@ -1,7 +1,8 @@
 // pbrlab harness, HLSL side: the twin of scene_shading.glsl. What the scene programs need
 // that HLSL spells differently from GLSL (textures, a basis change, the library's include
 // paths); the shading itself is scene_lighting.inc, shared word for word with the GLSL
-// programs and made valid HLSL by the library's pbr/common/shim.hlsl. Compile-time
+// programs and made valid HLSL by the few GLSL spellings defined below (the harness's own:
+// the library's HLSL defines no GLSL names). Compile-time
 // configuration: see scene_lighting.inc. Globals are HLSL uniforms ($Global cbuffer).
 
 // Textures, as the shared files spell them (GLSL: sampler2D, texture/textureLod).
@@ -35,5 +36,11 @@ PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 #include "pbr/ibl/equirect.hlsl"
 #include "pbr/ibl/importance_sampling.hlsl"
 #include "pbr/unity/surface_standard.hlsl"
+
+// The GLSL spellings the shared .inc files use, for the harness's programs only.
+#define vec2 float2
+#define vec3 float3
+#define vec4 float4
+#define inversesqrt rsqrt
 
 #include "scene_lighting.inc"

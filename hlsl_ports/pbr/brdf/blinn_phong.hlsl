@@ -24,6 +24,7 @@
 // pbr_pow_safe (0^0 = 1); the classic form divides by max(NdotL, PBR_MIN_NDOTV) (its 1/NdotL
 // would be 1/denormal at grazing; the lit value pow · NdotL / max(NdotL, 1e-4) still goes
 // to 0 with NdotL). Bit-identical for NdotH in [2^-126, 1], specPower >= 0, NdotL >= 1e-4.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_BLINN_PHONG_HLSL
 #define PBR_BRDF_BLINN_PHONG_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/blinn_phong.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

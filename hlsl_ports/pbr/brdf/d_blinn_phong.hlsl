@@ -12,6 +12,7 @@
 // relative accuracy ~ s · 2^-24 · |log x| on GPUs that implement pow as exp2(s · log2 x).
 // Guards: NdotH saturated, specPower >= 0, pow through pbr_pow_safe (0^0 = 1: power 0 is
 // the uniform lobe 1/π); bit-identical on NdotH in [2^-126, 1], specPower >= 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_BLINN_PHONG_HLSL
 #define PBR_BRDF_D_BLINN_PHONG_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_blinn_phong.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -33,6 +33,7 @@
 // consistent 1 - NdotH² and keeps D <= 1/(π alpha²) when a caller passes an inconsistent one.
 // Bit-identical to the unguarded formula for NdotH in [0, 1], alpha in [1e-7, 1].
 // Normalised: ∫ D (n·h) dω_h = 1 (tested).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_GGX_HLSL
 #define PBR_BRDF_D_GGX_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_ggx.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -55,7 +56,7 @@ float pbr_D_GGX(float NdotH, float alpha) {
 }
 
 // n, h unit vectors (h = normalize(l + v)).
-float pbr_D_GGX(vec3 n, vec3 h, float alpha) {
+float pbr_D_GGX(float3 n, float3 h, float alpha) {
     return pbr_D_GGX_fromOneMinusNdotH2(dot(n, h), pbr_one_minus_dot2(n, h), alpha);
 }
 

@@ -33,6 +33,7 @@
 // or above 1 / (3 * 16.5) = 0.0202 keeps F90 = 1 ("everything has Fresnel").
 // Guard: VdotH is saturated in every form (VdotH slightly above 1 from rounding would make
 // (1 - VdotH)^5 negative and F < F0, below 0 for F0 = 0); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_SCHLICK_HLSL
 #define PBR_BRDF_F_SCHLICK_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_schlick.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -48,28 +49,28 @@ float pbr_F_Schlick(float f0, float VdotH) {
     return f0 + (1.0 - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_Schlick(vec3 f0, float VdotH) {
-    return f0 + (((vec3)(1.0)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
+float3 pbr_F_Schlick(float3 f0, float VdotH) {
+    return f0 + (((float3)(1.0)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_Schlick(vec3 f0, float f90, float VdotH) {
-    return f0 + (((vec3)(f90)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
+float3 pbr_F_Schlick(float3 f0, float f90, float VdotH) {
+    return f0 + (((float3)(f90)) - f0) * pbr_pow5(1.0 - pbr_saturate(VdotH));
 }
 
-vec3 pbr_F_SchlickSG(vec3 f0, float VdotH) {
+float3 pbr_F_SchlickSG(float3 f0, float VdotH) {
     VdotH = pbr_saturate(VdotH);
     float w = exp2((PBR_F_SCHLICK_SG_A * VdotH + PBR_F_SCHLICK_SG_B) * VdotH);
-    return f0 + (((vec3)(1.0)) - f0) * w;
+    return f0 + (((float3)(1.0)) - f0) * w;
 }
 
-vec3 pbr_F_SchlickSG(vec3 f0, float f90, float VdotH) {
+float3 pbr_F_SchlickSG(float3 f0, float f90, float VdotH) {
     VdotH = pbr_saturate(VdotH);
     float w = exp2((PBR_F_SCHLICK_SG_A * VdotH + PBR_F_SCHLICK_SG_B) * VdotH);
-    return f0 + (((vec3)(f90)) - f0) * w;
+    return f0 + (((float3)(f90)) - f0) * w;
 }
 
-float pbr_f90_from_f0(vec3 f0) {
-    return pbr_saturate(dot(f0, ((vec3)(PBR_F90_FROM_F0_SCALE))));
+float pbr_f90_from_f0(float3 f0) {
+    return pbr_saturate(dot(f0, ((float3)(PBR_F90_FROM_F0_SCALE))));
 }
 
 #endif // PBR_BRDF_F_SCHLICK_HLSL

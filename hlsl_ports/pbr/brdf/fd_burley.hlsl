@@ -13,6 +13,7 @@
 // 2012 §5.3); the white-furnace test reports it rather than asserting <= 1.
 // Guard: the three cosines and perceptualRoughness are saturated, so Fd stays in
 // [0.25/π, 6.25/π] whatever the normal; bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_FD_BURLEY_HLSL
 #define PBR_BRDF_FD_BURLEY_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/fd_burley.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

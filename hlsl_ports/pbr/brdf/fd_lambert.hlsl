@@ -7,6 +7,7 @@
 // Lambert 1760, "Photometria"; as a BRDF f = M_diff / π (the lecture's "classic diffuse
 // lighting model"). Returns the 1/π only; multiply by the diffuse colour. Reciprocal
 // (constant) and energy conserving: ∫ (1/π) cos dω = 1 over the hemisphere.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_FD_LAMBERT_HLSL
 #define PBR_BRDF_FD_LAMBERT_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/fd_lambert.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -21,6 +21,7 @@
 // (k = alpha/2; k = 0 with NdotX = 0 is 0/0), V's cosines floored at PBR_MIN_NDOTV like
 // every V. G1 is capped at 1: near NdotX = 1 the division rounds up to 1 + 1 ulp (found by
 // the sweep). Bit-identical otherwise for cosines in [0, 1] (V: [1e-4, 1]), k in [5e-8, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_G_SCHLICK_GGX_HLSL
 #define PBR_BRDF_G_SCHLICK_GGX_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/g_schlick_ggx.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -20,6 +20,7 @@
 // reaches along the horizon), V's cosines floored at PBR_MIN_NDOTV, G1 capped at 1 against
 // rounding (2c / (c + sqrt(c²)) at alpha -> 0 may round to 1 + 1 ulp). Bit-identical for
 // cosines in [0, 1] (V: [1e-4, 1]) and alpha in [1e-7, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_G_SMITH_GGX_HLSL
 #define PBR_BRDF_G_SMITH_GGX_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/g_smith_ggx.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

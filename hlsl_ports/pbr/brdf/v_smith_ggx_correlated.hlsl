@@ -25,6 +25,7 @@
 // Guards (pbr/common/guards.hlsl): both cosines clamped to [PBR_MIN_NDOTV, 1] (at
 // NdotL = NdotV = 0 both forms are 0.5/0), alpha to [PBR_MIN_ALPHA, 1]; bit-identical for
 // cosines in [1e-4, 1] and alpha in [1e-7, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_SMITH_GGX_CORRELATED_HLSL
 #define PBR_BRDF_V_SMITH_GGX_CORRELATED_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_smith_ggx_correlated.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -15,6 +15,7 @@
 // path is 0 LSB off the hardware path. Guard: inputs pass through pbr_sanitize(c, 1.0)
 // (pbr/common/guards.hlsl): NaN and negatives -> 0 (pow() and sqrt() are undefined below 0,
 // GLSL 4.60 §8.2), above 1 and +Inf -> 1, so outputs are in [0, 1]; bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_GAMMA_HLSL
 #define PBR_COLOR_GAMMA_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/gamma.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -28,11 +29,11 @@
 // 1 ulp of exponent away from the GLSL; the literal is the same float everywhere.
 #define PBR_INV_DISPLAY_GAMMA 0.45454545454545453
 
-vec3 pbr_degamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), ((vec3)(PBR_DISPLAY_GAMMA))); }
-vec3 pbr_regamma(vec3 c) { return pow(pbr_sanitize(c, 1.0), ((vec3)(PBR_INV_DISPLAY_GAMMA))); }
+float3 pbr_degamma(float3 c) { return pow(pbr_sanitize(c, 1.0), ((float3)(PBR_DISPLAY_GAMMA))); }
+float3 pbr_regamma(float3 c) { return pow(pbr_sanitize(c, 1.0), ((float3)(PBR_INV_DISPLAY_GAMMA))); }
 
 // Gamma 2.0: the cheapest pair; exact inverses of each other.
-vec3 pbr_degamma_fast(vec3 c) { c = pbr_sanitize(c, 1.0); return c * c; }
-vec3 pbr_regamma_fast(vec3 c) { return sqrt(pbr_sanitize(c, 1.0)); }
+float3 pbr_degamma_fast(float3 c) { c = pbr_sanitize(c, 1.0); return c * c; }
+float3 pbr_regamma_fast(float3 c) { return sqrt(pbr_sanitize(c, 1.0)); }
 
 #endif // PBR_COLOR_GAMMA_HLSL

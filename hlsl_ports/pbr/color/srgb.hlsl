@@ -18,6 +18,7 @@
 // same way). Bit-identical on [0, 1]. float64 twin:
 // harness/pbrlab/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
 // GL_SRGB8_ALPHA8 textures implement in hardware (the "let the GPU handle it" path).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_SRGB_HLSL
 #define PBR_COLOR_SRGB_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/srgb.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -37,8 +38,8 @@ float pbr_srgb_to_linear(float c) {
         : pow((c + PBR_SRGB_OFFSET) / (1.0 + PBR_SRGB_OFFSET), PBR_SRGB_EXPONENT);
 }
 
-vec3 pbr_srgb_to_linear(vec3 c) {
-    return vec3(pbr_srgb_to_linear(c.r), pbr_srgb_to_linear(c.g), pbr_srgb_to_linear(c.b));
+float3 pbr_srgb_to_linear(float3 c) {
+    return float3(pbr_srgb_to_linear(c.r), pbr_srgb_to_linear(c.g), pbr_srgb_to_linear(c.b));
 }
 
 float pbr_linear_to_srgb(float c) {
@@ -48,8 +49,8 @@ float pbr_linear_to_srgb(float c) {
         : (1.0 + PBR_SRGB_OFFSET) * pow(c, 1.0 / PBR_SRGB_EXPONENT) - PBR_SRGB_OFFSET;
 }
 
-vec3 pbr_linear_to_srgb(vec3 c) {
-    return vec3(pbr_linear_to_srgb(c.r), pbr_linear_to_srgb(c.g), pbr_linear_to_srgb(c.b));
+float3 pbr_linear_to_srgb(float3 c) {
+    return float3(pbr_linear_to_srgb(c.r), pbr_linear_to_srgb(c.g), pbr_linear_to_srgb(c.b));
 }
 
 #endif // PBR_COLOR_SRGB_HLSL

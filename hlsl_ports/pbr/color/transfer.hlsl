@@ -20,6 +20,7 @@
 // Guard: pbr_encode_final_color returns a value in [0, 1] on every path (HARDWARE included:
 // pbr_sanitize(c, 1.0), which a UNORM/sRGB8 target would apply anyway, but with NaN
 // defined as 0 instead of left to the hardware); bit-identical on [0, 1].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_TRANSFER_HLSL
 #define PBR_COLOR_TRANSFER_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/transfer.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -28,17 +29,17 @@
 #include "pbr/color/gamma.hlsl"
 #include "pbr/common/guards.hlsl"
 
-#define PBR_COLOR_TRANSFER_HARDWARE 0
-#define PBR_COLOR_TRANSFER_SRGB     1
-#define PBR_COLOR_TRANSFER_GAMMA22  2
-#define PBR_COLOR_TRANSFER_FAST     3
+#define PBR_COLOR_TRANSFER_HARDWARE 1
+#define PBR_COLOR_TRANSFER_SRGB     2
+#define PBR_COLOR_TRANSFER_GAMMA22  3
+#define PBR_COLOR_TRANSFER_FAST     4
 
 #ifndef PBR_COLOR_TRANSFER
 #define PBR_COLOR_TRANSFER PBR_COLOR_TRANSFER_HARDWARE
 #endif
 
 // A colour texel as fetched -> linear colour.
-vec3 pbr_decode_color_texel(vec3 texel) {
+float3 pbr_decode_color_texel(float3 texel) {
 #if PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_HARDWARE
     return texel;
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_SRGB
@@ -53,7 +54,7 @@ vec3 pbr_decode_color_texel(vec3 texel) {
 }
 
 // The final linear colour -> the value written to the colour attachment.
-vec3 pbr_encode_final_color(vec3 linearColor) {
+float3 pbr_encode_final_color(float3 linearColor) {
 #if PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_HARDWARE
     return pbr_sanitize(linearColor, 1.0);
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_SRGB

@@ -33,6 +33,7 @@
 // 8. Variants: each alternative is its own function; a numbered #define selects it
 //    (e.g. PBR_SPECULAR_D = PBR_SPECULAR_D_GGX) and one dispatch function per term holds
 //    the only #if chain (pbr/shading/dispatch.hlsl).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONVENTIONS_HLSL
 #define PBR_COMMON_CONVENTIONS_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/conventions.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -16,6 +16,7 @@
 // away under fast maths), so NaN is removed only by an ordered comparison, false for NaN in
 // IEEE 754 and in SPIR-V OpFOrdGreaterThan, used as a select (pbr_sanitize).
 // Every constant is shared with harness/pbrlab/reference/guards.py (tested equal).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_GUARDS_HLSL
 #define PBR_COMMON_GUARDS_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/guards.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -78,8 +79,10 @@ float pbr_sanitize(float x, float hi) {
     return min(x > 0.0 ? x : 0.0, hi);
 }
 
-vec3 pbr_sanitize(vec3 x, float hi) {
-    return min(mix(((vec3)(0.0)), x, greaterThan(x, ((vec3)(0.0)))), ((vec3)(hi)));
+// Per component, with the scalar form: the same operations, so the same bits; and portable
+// to GLSL ES 1.00 / WebGL 1 (no boolean-vector mix) and to HLSL without a select helper.
+float3 pbr_sanitize(float3 x, float hi) {
+    return float3(pbr_sanitize(x.x, hi), pbr_sanitize(x.y, hi), pbr_sanitize(x.z, hi));
 }
 
 // normalize() that is defined everywhere: the zero vector (a point light at the shaded
@@ -95,12 +98,12 @@ vec3 pbr_sanitize(vec3 x, float hi) {
 // PBR_SAFE_NORMALIZE_HUGE both are first scaled by 2^-4 (exact: powers of two), which keeps
 // the divisor inside the range; below it the scale is 1 and the result is unchanged.
 #define PBR_SAFE_NORMALIZE_HUGE 4.2535296e37  // 2^125
-vec3 pbr_safe_normalize(vec3 v) {
+float3 pbr_safe_normalize(float3 v) {
     float m = pbr_max3(abs(v));
-    if (!(m >= PBR_FLT_MIN)) return ((vec3)(0.0));
+    if (!(m >= PBR_FLT_MIN)) return ((float3)(0.0));
     float k = m > PBR_SAFE_NORMALIZE_HUGE ? 0.0625 : 1.0;
-    vec3 s = (v * k) / (m * k);  // largest component exactly ±1: 1 <= dot(s, s) <= 3
-    return s * inversesqrt(dot(s, s));
+    float3 s = (v * k) / (m * k);  // largest component exactly ±1: 1 <= dot(s, s) <= 3
+    return s * rsqrt(dot(s, s));
 }
 
 // 1 - (a·b)² for unit a, b without cancellation: |a × b|² (Lagrange's identity). Near
@@ -109,8 +112,8 @@ vec3 pbr_safe_normalize(vec3 v) {
 // an error relative to |a × b| itself (Guy & Agopian, "Physically Based Rendering in
 // Filament", §4.4.1, for mediump). Where a·b <= 0 it returns 1, the value for a cosine
 // clamped to 0 (h below the surface: otherwise h = -n would give 0 and D_GGX 1/0).
-float pbr_one_minus_dot2(vec3 a, vec3 b) {
-    vec3 c = cross(a, b);
+float pbr_one_minus_dot2(float3 a, float3 b) {
+    float3 c = cross(a, b);
     return dot(a, b) > 0.0 ? dot(c, c) : 1.0;
 }
 

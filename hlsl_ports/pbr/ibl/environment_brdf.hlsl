@@ -23,6 +23,7 @@
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
 // (harness/pbrlab/ibl.py integrates the table with the library's own V term; the float64
 // reference of the integral is harness/pbrlab/reference/directional_albedo.py).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -32,12 +33,12 @@
 // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox): a fit of the
 // table for GGX + Schlick-GGX visibility; takes perceptual roughness. Its worst error
 // against pbrlab's table (height-correlated Smith) is measured in tests/surface/.
-vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
-    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
-    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
-    vec4 r = perceptualRoughness * c0 + c1;
+float2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
+    const float4 c0 = float4(-1.0, -0.0275, -0.572, 0.022);
+    const float4 c1 = float4(1.0, 0.0425, 1.04, -0.04);
+    float4 r = perceptualRoughness * c0 + c1;
     float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
-    return vec2(-1.04, 1.04) * a004 + r.zw;
+    return float2(-1.04, 1.04) * a004 + r.zw;
 }
 
 // The DFG table's layout (harness/pbrlab/ibl.py writes it; shared constants tested equal).
@@ -59,16 +60,16 @@ vec2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
 #define PBR_DFG_LUT_ALPHA_MIN_INV 199.004975          // 1 / (0.045² + 0.003)
 #define PBR_DFG_LUT_ALPHA_LOG_NORM 0.130873226        // 1 / log2((1 + 0.003) / (0.045² + 0.003))
 
-vec2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness) {
+float2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness) {
     float alpha = perceptualRoughness * perceptualRoughness;
     float x = log2(1.0 + pbr_saturate(NdotV) * PBR_DFG_LUT_NDOTV_INV_SCALE) * PBR_DFG_LUT_NDOTV_LOG_NORM;
     float y = log2((pbr_saturate(alpha) + PBR_DFG_LUT_ALPHA_OFFSET) * PBR_DFG_LUT_ALPHA_MIN_INV)
             * PBR_DFG_LUT_ALPHA_LOG_NORM;
-    vec2 size = vec2(PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT);
-    return (clamp(vec2(x, y), 0.0, 1.0) * (size - 1.0) + 0.5) / size;
+    float2 size = float2(PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT);
+    return (clamp(float2(x, y), 0.0, 1.0) * (size - 1.0) + 0.5) / size;
 }
 
-vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
+float2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 #if defined(PBR_DFG_LUT_LOOKUP)
     return PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness);
 #else
@@ -78,7 +79,7 @@ vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 
 // Directional albedo of the single-scattering specular lobe: Schlick's F0 and F90 weights
 // of the split sum, F90 = pbr_f90_from_f0(f0) as in the BRDF (pbr/shading/dispatch.hlsl).
-vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
+float3 pbr_specular_albedo(float3 f0, float2 dfg) {
     return f0 * dfg.x + pbr_f90_from_f0(f0) * dfg.y;
 }
 
@@ -90,7 +91,7 @@ vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
 // dielectric reflected 1.0025 of a direct light at MEDIUM). The fast and separable V terms
 // have at most the albedo of the exact height-correlated V the table holds (their
 // denominators are larger, Hammon 2017 / Heitz 2014), so they need no margin.
-vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
+float3 pbr_specular_albedo_bound(float3 f0, float2 dfg) {
     return pbr_specular_albedo(f0, dfg) + pbr_specular_F_deviation_bound(f0) * (dfg.x + dfg.y);
 }
 
@@ -103,7 +104,7 @@ vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
 // 0.307, so the guard only protects against a caller's zero dfg.
 #define PBR_MIN_SPECULAR_ALBEDO 1e-4
 
-vec3 pbr_energy_compensation(vec3 f0, vec2 dfg) {
+float3 pbr_energy_compensation(float3 f0, float2 dfg) {
     return 1.0 + f0 * (1.0 / max(dfg.x + dfg.y, PBR_MIN_SPECULAR_ALBEDO) - 1.0);
 }
 

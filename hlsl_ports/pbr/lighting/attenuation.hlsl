@@ -8,6 +8,7 @@
 //
 // Units follow the lecture's convention (pbr/common/conventions.hlsl §5): a light of
 // intensity I at distance d delivers I / d^2 as the lightRadiance of pbr_shade_punctual.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_ATTENUATION_HLSL
 #define PBR_LIGHTING_ATTENUATION_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/attenuation.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -35,7 +36,7 @@ float pbr_distance_attenuation(float distance2, float range) {
 // inner cone (1). Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 4 (the
 // square gives a smoother edge); invCosRange = 1 / (cosInner - cosOuter).
 // l points from the surface to the light; spotDirection is the way the light travels.
-float pbr_spot_attenuation(vec3 l, vec3 spotDirection, float cosOuter, float invCosRange) {
+float pbr_spot_attenuation(float3 l, float3 spotDirection, float cosOuter, float invCosRange) {
     float t = clamp((dot(-l, spotDirection) - cosOuter) * invCosRange, 0.0, 1.0);
     return t * t;
 }

@@ -13,6 +13,7 @@
 // colour times intensity, already attenuated (distance, spot cone, shadow) by the caller;
 // l points from the surface to the light. NdotL <= 0 returns 0; l = -v returns the
 // diffuse part only (see pbr/shading/standard.hlsl for every edge).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_PUNCTUAL_HLSL
 #define PBR_LIGHTING_PUNCTUAL_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/punctual.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -20,10 +21,10 @@
 #include "pbr/common/conventions.hlsl"
 #include "pbr/shading/standard.hlsl"
 
-vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
-                        vec3 diffuseColor, vec3 f0, float perceptualRoughness) {
+float3 pbr_shade_punctual(float3 n, float3 v, float3 l, float3 lightRadiance,
+                        float3 diffuseColor, float3 f0, float perceptualRoughness) {
     float NdotL = clamp(dot(n, l), 0.0, 1.0);
-    vec3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
+    float3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
     return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
 }
 

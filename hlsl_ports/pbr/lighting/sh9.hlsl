@@ -8,6 +8,7 @@
 // order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/environment.py
 // computes it). The result is the irradiance E(n); a Lambert surface reflects
 // diffuseColor * E(n) / pi. For a constant radiance L the result is exactly pi * L.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_SH9_HLSL
 #define PBR_LIGHTING_SH9_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/sh9.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -20,7 +21,7 @@
 #define PBR_SH9_C4 0.886227
 #define PBR_SH9_C5 0.247708
 
-vec3 pbr_sh9_irradiance(vec3 sh[9], vec3 n) {
+float3 pbr_sh9_irradiance(float3 sh[9], float3 n) {
     return PBR_SH9_C1 * sh[8] * (n.x * n.x - n.y * n.y) + PBR_SH9_C3 * sh[6] * n.z * n.z
          + PBR_SH9_C4 * sh[0] - PBR_SH9_C5 * sh[6]
          + 2.0 * PBR_SH9_C1 * (sh[4] * n.x * n.y + sh[7] * n.x * n.z + sh[5] * n.y * n.z)

@@ -11,6 +11,7 @@
 // (tested). float64 twin: reference/material.py.
 // Guard: pbr_ior_from_f0 saturates F0 and caps eta at PBR_MAX_IOR: F0 = 1 is a perfect mirror,
 // eta = 2/0 = Inf (decided: PBR_MAX_IOR). Domain of pbr_f0_from_ior: finite eta >= 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_IOR_HLSL
 #define PBR_MATERIAL_IOR_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/ior.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate

@@ -8,6 +8,7 @@
 // Lecture, "Metals vs. dielectrics": dielectrics have a white (grey) specular and a
 // diffuse; metals are purely specular with a coloured F0. Both workflows give
 // (diffuseColor, f0) for pbr/shading/standard.hlsl. float64 twin: reference/material.py.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_WORKFLOW_HLSL
 #define PBR_MATERIAL_WORKFLOW_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/workflow.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -22,8 +23,8 @@
 
 // Metallic workflow (Burley 2012, the "metallic" parameter; Karis 2013, "Material Model"):
 // F0 = lerp(0.04, albedo, metallic).
-vec3 pbr_f0_from_metallic(vec3 albedo, float metallic) {
-    return mix(((vec3)(PBR_DIELECTRIC_F0)), albedo, metallic);
+float3 pbr_f0_from_metallic(float3 albedo, float metallic) {
+    return lerp(((float3)(PBR_DIELECTRIC_F0)), albedo, metallic);
 }
 
 // Diffuse colour of the metallic workflow, in Unity's form (UnityStandardUtils.cginc,
@@ -31,7 +32,7 @@ vec3 pbr_f0_from_metallic(vec3 albedo, float metallic) {
 //   diffuse = albedo · (1 - 0.04) · (1 - metallic).
 // Metals get no diffuse; a dielectric keeps 1 - F0 of its albedo, so that metallic = 0
 // equals the specular workflow with specular = 0.04 exactly (tested).
-vec3 pbr_diffuse_from_metallic(vec3 albedo, float metallic) {
+float3 pbr_diffuse_from_metallic(float3 albedo, float metallic) {
     return albedo * ((1.0 - PBR_DIELECTRIC_F0) * (1.0 - metallic));
 }
 
@@ -40,15 +41,15 @@ vec3 pbr_diffuse_from_metallic(vec3 albedo, float metallic) {
 // the Standard shader's default): diffuse = albedo · (1 - max(specular.r, .g, .b)).
 // Keeps the diffuse hue; guarantees diffuse + specular <= 1 in every channel when
 // albedo <= 1 (the lecture's "practical need M_diff + M_spec < 1").
-vec3 pbr_diffuse_from_specular(vec3 albedo, vec3 specular) {
+float3 pbr_diffuse_from_specular(float3 albedo, float3 specular) {
     return albedo * (1.0 - pbr_max3(specular));
 }
 
 // Per-channel form (Unity's same function without UNITY_CONSERVE_ENERGY_MONOCHROME):
 // diffuse = albedo · (1 - specular). Tighter per channel but shifts the diffuse hue
 // towards the complement of the specular colour.
-vec3 pbr_diffuse_from_specular_per_channel(vec3 albedo, vec3 specular) {
-    return albedo * (((vec3)(1.0)) - specular);
+float3 pbr_diffuse_from_specular_per_channel(float3 albedo, float3 specular) {
+    return albedo * (((float3)(1.0)) - specular);
 }
 
 #endif // PBR_MATERIAL_WORKFLOW_HLSL

@@ -38,6 +38,7 @@
 //   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
 //   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
 // The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_DISPATCH_HLSL
 #define PBR_SHADING_DISPATCH_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/dispatch.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -57,28 +58,30 @@
 #include "pbr/brdf/v_implicit.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"
 
-#define PBR_SPECULAR_D_GGX         0
-#define PBR_SPECULAR_D_BECKMANN    1
-#define PBR_SPECULAR_D_BLINN_PHONG 2
+// Every selector family counts from 1: an undefined name (a typo) reads as 0 in #if, which
+// no value matches, so the dispatcher's #error names the selector instead of picking a term.
+#define PBR_SPECULAR_D_GGX         1
+#define PBR_SPECULAR_D_BECKMANN    2
+#define PBR_SPECULAR_D_BLINN_PHONG 3
 
-#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      0
-#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 1
-#define PBR_SPECULAR_V_SMITH_GGX                 2
-#define PBR_SPECULAR_V_SCHLICK_GGX               3
-#define PBR_SPECULAR_V_COOK_TORRANCE             4
-#define PBR_SPECULAR_V_KELEMEN                   5
-#define PBR_SPECULAR_V_IMPLICIT                  6
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      1
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 2
+#define PBR_SPECULAR_V_SMITH_GGX                 3
+#define PBR_SPECULAR_V_SCHLICK_GGX               4
+#define PBR_SPECULAR_V_COOK_TORRANCE             5
+#define PBR_SPECULAR_V_KELEMEN                   6
+#define PBR_SPECULAR_V_IMPLICIT                  7
 
-#define PBR_SPECULAR_F_SCHLICK    0
-#define PBR_SPECULAR_F_SCHLICK_SG 1
-#define PBR_SPECULAR_F_NONE       2
+#define PBR_SPECULAR_F_SCHLICK    1
+#define PBR_SPECULAR_F_SCHLICK_SG 2
+#define PBR_SPECULAR_F_NONE       3
 
-#define PBR_DIFFUSE_LAMBERT 0
-#define PBR_DIFFUSE_BURLEY  1
+#define PBR_DIFFUSE_LAMBERT 1
+#define PBR_DIFFUSE_BURLEY  2
 
-#define PBR_QUALITY_LOW    0
-#define PBR_QUALITY_HIGH   1
-#define PBR_QUALITY_MEDIUM 2
+#define PBR_QUALITY_LOW    1
+#define PBR_QUALITY_HIGH   2
+#define PBR_QUALITY_MEDIUM 3
 
 #ifndef PBR_QUALITY
 #define PBR_QUALITY PBR_QUALITY_HIGH
@@ -209,13 +212,13 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 }
 
 // F90 follows F0 (pbr_f90_from_f0, Schüler 2009 / Filament): F0 = 0 reflects nothing.
-vec3 pbr_specular_F(vec3 f0, float VdotH) {
+float3 pbr_specular_F(float3 f0, float VdotH) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
     return pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
     return pbr_F_SchlickSG(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
-    return ((vec3)(1.0));
+    return ((float3)(1.0));
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif
@@ -225,13 +228,13 @@ vec3 pbr_specular_F(vec3 f0, float VdotH) {
 // the selected F can reflect beyond the Schlick weights of the split-sum table (used by the
 // diffuse-specular coupling, pbr_specular_albedo_bound). SG: PBR_F_SCHLICK_SG_MAX_ABS_ERROR
 // times (f90 - f0) (f_schlick.hlsl); NONE (F = 1): 1 - f0, F's distance from Schlick at VdotH = 1.
-vec3 pbr_specular_F_deviation_bound(vec3 f0) {
+float3 pbr_specular_F_deviation_bound(float3 f0) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
-    return ((vec3)(0.0));
+    return ((float3)(0.0));
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((vec3)(pbr_f90_from_f0(f0))) - f0);
+    return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((float3)(pbr_f90_from_f0(f0))) - f0);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
-    return ((vec3)(1.0)) - f0;
+    return ((float3)(1.0)) - f0;
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif

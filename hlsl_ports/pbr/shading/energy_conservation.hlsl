@@ -26,6 +26,7 @@
 // (metallic 0, or any specular colour), at most the albedo in between (metallic m in
 // (0, 1): (1 - 0.04)(1 - m) <= 1 - max(f0)). rho is capped at 1, so any diffuseColor
 // conserves energy, also one that never went through a workflow.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_ENERGY_CONSERVATION_HLSL
 #define PBR_SHADING_ENERGY_CONSERVATION_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/energy_conservation.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -36,15 +37,15 @@
 // both workflows (a nonzero one is capped at rho = 1). 1e-4 is a normal half (LOW tier).
 #define PBR_MIN_ONE_MINUS_REFLECTIVITY 1e-4
 
-vec3 pbr_diffuse_albedo_from_diffuse_color(vec3 diffuseColor, vec3 f0) {
+float3 pbr_diffuse_albedo_from_diffuse_color(float3 diffuseColor, float3 f0) {
     float oneMinusReflectivity = max(1.0 - pbr_max3(f0), PBR_MIN_ONE_MINUS_REFLECTIVITY);
-    return min(diffuseColor / oneMinusReflectivity, ((vec3)(1.0)));
+    return min(diffuseColor / oneMinusReflectivity, ((float3)(1.0)));
 }
 
 // specularAlbedo: the specular lobe's directional albedo at this NdotV (per channel).
-vec3 pbr_coupled_diffuse_color(vec3 diffuseColor, vec3 f0, vec3 specularAlbedo) {
+float3 pbr_coupled_diffuse_color(float3 diffuseColor, float3 f0, float3 specularAlbedo) {
     return pbr_diffuse_albedo_from_diffuse_color(diffuseColor, f0)
-         * (((vec3)(1.0)) - pbr_saturate(specularAlbedo));
+         * (((float3)(1.0)) - pbr_saturate(specularAlbedo));
 }
 
 #endif // PBR_SHADING_ENERGY_CONSERVATION_HLSL

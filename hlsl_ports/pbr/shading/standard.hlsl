@@ -31,6 +31,7 @@
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
 //    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
 //  - NdotH and VdotH are clamped to [0, 1] against rounding.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_STANDARD_HLSL
 #define PBR_SHADING_STANDARD_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -44,27 +45,27 @@ float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
     return clamp(perceptualRoughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 }
 
-vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, float3 f0,
                        float perceptualRoughness) {
     float NdotL = min(dot(n, l), 1.0);
-    if (!(NdotL > 0.0)) return ((vec3)(0.0));
+    if (!(NdotL > 0.0)) return ((float3)(0.0));
     float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float alpha = pbr_alpha_from_perceptual_roughness(roughness);
 
-    vec3 halfSum = l + v;
+    float3 halfSum = l + v;
     float halfLength2 = dot(halfSum, halfSum);
     float LdotH = min(0.5 * sqrt(halfLength2), 1.0);  // == VdotH, see header
 
-    vec3 diffuse = diffuseColor * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
+    float3 diffuse = diffuseColor * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
     if (!(halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED)) return diffuse;
 
-    vec3 h = halfSum * inversesqrt(halfLength2);
+    float3 h = halfSum * rsqrt(halfLength2);
     float NdotH = clamp(dot(n, h), 0.0, 1.0);
     float VdotH = LdotH;
     float D = pbr_specular_D(NdotH, pbr_one_minus_dot2(n, h), alpha);
     float V = pbr_specular_V(NdotL, NdotV, NdotH, VdotH, alpha);
-    vec3  F = pbr_specular_F(f0, VdotH);
+    float3  F = pbr_specular_F(f0, VdotH);
     return diffuse + pbr_specular_lobe_limit(D * V) * F;
 }
 

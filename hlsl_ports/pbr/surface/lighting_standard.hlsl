@@ -32,6 +32,7 @@
 // the environment when PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
 // f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
 // (tests/render/test_white_furnace.py).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_HLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -46,13 +47,13 @@
 #endif
 
 struct pbr_Light {
-    vec3 color;
-    vec3 dir;
+    float3 color;
+    float3 dir;
 };
 
 struct pbr_Indirect {
-    vec3 diffuse;
-    vec3 specular;
+    float3 diffuse;
+    float3 specular;
 };
 
 struct pbr_GI {
@@ -62,8 +63,8 @@ struct pbr_GI {
 
 // The directional albedo of the specular lobe under environment light: single scattering
 // (pbr_specular_albedo) times, by default, the multiple-scattering compensation.
-vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
-    vec3 albedo = pbr_specular_albedo(f0, dfg);
+float3 pbr_indirect_specular_albedo(float3 f0, float2 dfg) {
+    float3 albedo = pbr_specular_albedo(f0, dfg);
 #if PBR_ENERGY_COMPENSATION
     albedo *= pbr_energy_compensation(f0, dfg);
 #endif
@@ -73,15 +74,15 @@ vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
 // The environment's specular reflection as pbrlab computes it: prefiltered radiance times
 // the split-sum albedo (Karis 2013), with specular occlusion and, by default,
 // multiple-scattering compensation. dfg = pbr_env_brdf(NdotV, roughness).
-vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
-                                     float NdotV, float occlusion, vec2 dfg) {
+float3 pbr_indirect_specular_split_sum(float3 prefiltered, float3 f0, float roughness,
+                                     float NdotV, float occlusion, float2 dfg) {
     return prefiltered * pbr_indirect_specular_albedo(f0, dfg)
          * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
 }
 
 // The diffuse colour the environment lights: coupled to the environment specular's albedo
 // (with its compensation), as the split sum reflects it.
-vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg) {
+float3 pbr_indirect_diffuse_color(float3 diffuseColor, float3 f0, float2 dfg) {
     return pbr_coupled_diffuse_color(diffuseColor, f0, pbr_indirect_specular_albedo(f0, dfg));
 }
 
@@ -93,22 +94,22 @@ vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg) {
 // only indirect light, as in Unity. dfg must be pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV),
 // pbr_clamp_perceptual_roughness(perceptualRoughness)): engines that fetch their own table
 // call this form; pbr_lighting_standard fetches it through PBR_DFG_LUT_LOOKUP.
-vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
-                               float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg) {
+float3 pbr_lighting_standard_dfg(float3 diffuseColor, float3 f0, float perceptualRoughness,
+                               float occlusion, float3 n, float3 v, pbr_GI gi, float2 dfg) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo_bound(f0, dfg));
-    vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
+    float3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo_bound(f0, dfg));
+    float3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
                                      directDiffuse, f0, roughness);
-    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
+    float3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
     return direct + pbr_indirect_diffuse_color(diffuseColor, f0, dfg) * gi.indirect.diffuse * occlusion
          + specular;
 }
 
-vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
-                           float occlusion, vec3 n, vec3 v, pbr_GI gi) {
+float3 pbr_lighting_standard(float3 diffuseColor, float3 f0, float perceptualRoughness,
+                           float occlusion, float3 n, float3 v, pbr_GI gi) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    float2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
     return pbr_lighting_standard_dfg(diffuseColor, f0, roughness, occlusion, n, v, gi, dfg);
 }
 #endif

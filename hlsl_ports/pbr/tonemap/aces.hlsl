@@ -20,6 +20,7 @@
 // pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.hlsl): decided NaN -> 0, negative
 // -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
 // curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_ACES_HLSL
 #define PBR_TONEMAP_ACES_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/aces.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -28,27 +29,27 @@
 #include "pbr/common/guards.hlsl"
 
 // Hill 2016 input matrix rows (sRGB => XYZ => D65_2_D60 => AP1 => RRT_SAT)
-#define PBR_ACES_INPUT_ROW0 vec3(0.59719, 0.35458, 0.04823)
-#define PBR_ACES_INPUT_ROW1 vec3(0.07600, 0.90834, 0.01566)
-#define PBR_ACES_INPUT_ROW2 vec3(0.02840, 0.13383, 0.83777)
+#define PBR_ACES_INPUT_ROW0 float3(0.59719, 0.35458, 0.04823)
+#define PBR_ACES_INPUT_ROW1 float3(0.07600, 0.90834, 0.01566)
+#define PBR_ACES_INPUT_ROW2 float3(0.02840, 0.13383, 0.83777)
 // Hill 2016 output matrix rows (ODT_SAT => XYZ => D60_2_D65 => sRGB)
-#define PBR_ACES_OUTPUT_ROW0 vec3( 1.60475, -0.53108, -0.07367)
-#define PBR_ACES_OUTPUT_ROW1 vec3(-0.10208,  1.10813, -0.00605)
-#define PBR_ACES_OUTPUT_ROW2 vec3(-0.00327, -0.07276,  1.07602)
+#define PBR_ACES_OUTPUT_ROW0 float3( 1.60475, -0.53108, -0.07367)
+#define PBR_ACES_OUTPUT_ROW1 float3(-0.10208,  1.10813, -0.00605)
+#define PBR_ACES_OUTPUT_ROW2 float3(-0.00327, -0.07276,  1.07602)
 
-vec3 pbr_aces_rrt_odt_fit(vec3 v) {
-    vec3 a = v * (v + 0.0245786) - 0.000090537;
-    vec3 b = v * (0.983729 * v + 0.4329510) + 0.238081;
+float3 pbr_aces_rrt_odt_fit(float3 v) {
+    float3 a = v * (v + 0.0245786) - 0.000090537;
+    float3 b = v * (0.983729 * v + 0.4329510) + 0.238081;
     return a / b;
 }
 
-vec3 pbr_tonemap_aces_fitted(vec3 color) {
+float3 pbr_tonemap_aces_fitted(float3 color) {
     color = pbr_sanitize(color, PBR_HALF_MAX);
-    vec3 aces = vec3(dot(PBR_ACES_INPUT_ROW0, color),
+    float3 aces = float3(dot(PBR_ACES_INPUT_ROW0, color),
                      dot(PBR_ACES_INPUT_ROW1, color),
                      dot(PBR_ACES_INPUT_ROW2, color));
-    vec3 fitted = pbr_aces_rrt_odt_fit(aces);
-    vec3 rgb = vec3(dot(PBR_ACES_OUTPUT_ROW0, fitted),
+    float3 fitted = pbr_aces_rrt_odt_fit(aces);
+    float3 rgb = float3(dot(PBR_ACES_OUTPUT_ROW0, fitted),
                     dot(PBR_ACES_OUTPUT_ROW1, fitted),
                     dot(PBR_ACES_OUTPUT_ROW2, fitted));
     return pbr_saturate(rgb);
@@ -66,7 +67,7 @@ vec3 pbr_tonemap_aces_fitted(vec3 color) {
 // (uncapped it overflows for x > ~160: measured, glsl/README.md).
 #define PBR_ACES_NARKOWICZ_MAX_INPUT 16.0
 
-vec3 pbr_tonemap_aces_narkowicz(vec3 x) {
+float3 pbr_tonemap_aces_narkowicz(float3 x) {
     x = pbr_sanitize(x, PBR_ACES_NARKOWICZ_MAX_INPUT);
     return pbr_saturate((x * (PBR_ACES_NARKOWICZ_A * x + PBR_ACES_NARKOWICZ_B))
                       / (x * (PBR_ACES_NARKOWICZ_C * x + PBR_ACES_NARKOWICZ_D) + PBR_ACES_NARKOWICZ_E));

@@ -21,6 +21,7 @@
 // input is capped at W, which is exactly saturate(f(x) / f(W)) because f increases, and
 // keeps x² from overflowing in half precision (x <= 11.2: x² <= 126). Output saturated
 // against rounding at W.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_HABLE_HLSL
 #define PBR_TONEMAP_HABLE_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/hable.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -48,9 +49,9 @@ float pbr_hable_curve(float x) {
           - PBR_HABLE_E_OVER_F;
 }
 
-vec3 pbr_tonemap_hable(vec3 color) {
+float3 pbr_tonemap_hable(float3 color) {
     color = pbr_sanitize(color, PBR_HABLE_WHITE);
-    vec3 curve = vec3(pbr_hable_curve(color.r), pbr_hable_curve(color.g), pbr_hable_curve(color.b));
+    float3 curve = float3(pbr_hable_curve(color.r), pbr_hable_curve(color.g), pbr_hable_curve(color.b));
     return pbr_saturate(curve / pbr_hable_curve(PBR_HABLE_WHITE));
 }
 

@@ -17,6 +17,7 @@
 // pbr_sanitize(color, PBR_HALF_MAX) (pbr/common/guards.hlsl): decided NaN -> 0, negative
 // -> 0, +Inf and anything above 65504 (the largest RGBA16F value) -> 65504, where every
 // curve is already at its white; the output is in [0, 1]. Bit-identical on [0, 65504].
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_KHRONOS_NEUTRAL_HLSL
 #define PBR_TONEMAP_KHRONOS_NEUTRAL_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/khronos_neutral.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -28,7 +29,7 @@
 #define PBR_KHRONOS_NEUTRAL_START_COMPRESSION (0.8 - PBR_KHRONOS_NEUTRAL_F90)  // spec: K_s
 #define PBR_KHRONOS_NEUTRAL_DESATURATION 0.15                       // spec: K_d
 
-vec3 pbr_tonemap_khronos_neutral(vec3 color) {
+float3 pbr_tonemap_khronos_neutral(float3 color) {
     color = pbr_sanitize(color, PBR_HALF_MAX);
     float x = pbr_min3(color);
     float offset = x <= 2.0 * PBR_KHRONOS_NEUTRAL_F90
@@ -41,7 +42,7 @@ vec3 pbr_tonemap_khronos_neutral(vec3 color) {
     float newPeak = 1.0 - d * d / (peak + d - PBR_KHRONOS_NEUTRAL_START_COMPRESSION);
     color *= newPeak / peak;
     float g = 1.0 - 1.0 / (PBR_KHRONOS_NEUTRAL_DESATURATION * (peak - newPeak) + 1.0);
-    return mix(color, ((vec3)(newPeak)), g);
+    return lerp(color, ((float3)(newPeak)), g);
 }
 
 #endif // PBR_TONEMAP_KHRONOS_NEUTRAL_HLSL

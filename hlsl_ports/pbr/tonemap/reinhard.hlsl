@@ -19,6 +19,7 @@
 // capped at whitePoint, which is exactly saturate(eq. 4) because the curve increases, and
 // keeps color / whitePoint² from overflowing; the output is saturated against rounding at
 // the white point (1 + 1 ulp, found by the sweep). whitePoint > 0.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_REINHARD_HLSL
 #define PBR_TONEMAP_REINHARD_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/reinhard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -26,14 +27,14 @@
 #include "pbr/common/guards.hlsl"
 #include "pbr/common/math.hlsl"
 
-vec3 pbr_tonemap_reinhard(vec3 color) {
+float3 pbr_tonemap_reinhard(float3 color) {
     color = pbr_sanitize(color, PBR_HALF_MAX);
-    return color / (((vec3)(1.0)) + color);
+    return color / (((float3)(1.0)) + color);
 }
 
-vec3 pbr_tonemap_reinhard_extended(vec3 color, float whitePoint) {
+float3 pbr_tonemap_reinhard_extended(float3 color, float whitePoint) {
     color = pbr_sanitize(color, min(whitePoint, PBR_HALF_MAX));
-    return pbr_saturate(color * (((vec3)(1.0)) + color / (whitePoint * whitePoint)) / (((vec3)(1.0)) + color));
+    return pbr_saturate(color * (((float3)(1.0)) + color / (whitePoint * whitePoint)) / (((float3)(1.0)) + color));
 }
 
 #endif // PBR_TONEMAP_REINHARD_HLSL

@@ -9,6 +9,7 @@
 // saturate with NaN -> 0 defined (every tonemapper sanitises its input the same way).
 // Khronos PBR Neutral is the default because it keeps base colours (albedo under a white
 // light) nearly unchanged, which is what material charts want.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_TONEMAP_HLSL
 #define PBR_TONEMAP_TONEMAP_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/tonemap.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -20,18 +21,18 @@
 #include "pbr/tonemap/aces.hlsl"
 #include "pbr/tonemap/khronos_neutral.hlsl"
 
-#define PBR_TONEMAP_NONE            0
-#define PBR_TONEMAP_REINHARD        1
-#define PBR_TONEMAP_HABLE           2
-#define PBR_TONEMAP_ACES_FITTED     3
-#define PBR_TONEMAP_ACES_NARKOWICZ  4
-#define PBR_TONEMAP_KHRONOS_NEUTRAL 5
+#define PBR_TONEMAP_NONE            1
+#define PBR_TONEMAP_REINHARD        2
+#define PBR_TONEMAP_HABLE           3
+#define PBR_TONEMAP_ACES_FITTED     4
+#define PBR_TONEMAP_ACES_NARKOWICZ  5
+#define PBR_TONEMAP_KHRONOS_NEUTRAL 6
 
 #ifndef PBR_TONEMAP
 #define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
 #endif
 
-vec3 pbr_tonemap(vec3 color) {
+float3 pbr_tonemap(float3 color) {
 #if PBR_TONEMAP == PBR_TONEMAP_NONE
     return pbr_sanitize(color, 1.0);
 #elif PBR_TONEMAP == PBR_TONEMAP_REINHARD

@@ -40,6 +40,7 @@
 // harness/pbrlab/reference/unity_brdf.py; tests/unity/ compares the two.
 // Where the maths is the library's, the pbr_ core is called (pbr_pow5, pbr_F_Schlick,
 // pbr_max3, the remaps); the core never includes this file.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_BRDF_UNITY_HLSL
 #define PBR_UNITY_BRDF_UNITY_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/brdf_unity.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -79,21 +80,21 @@
 // ---- Unity's terms (UnityStandardBRDF.cginc) ----------------------------------------------
 
 float Pow4(float x) { return x * x * x * x; }
-vec2  Pow4(vec2 x)  { return x * x * x * x; }
+float2  Pow4(float2 x)  { return x * x * x * x; }
 
 // Schlick's Fresnel, Unity's FresnelTerm: F0 + (1 - F0) (1 - cosA)^5 (pbrlab's pbr_F_Schlick).
-vec3 FresnelTerm(vec3 F0, float cosA) {
+float3 FresnelTerm(float3 F0, float cosA) {
     return pbr_F_Schlick(F0, cosA);
 }
 
 // Schlick towards a chosen F90: lerp(F0, F90, (1 - cosA)^5).
-vec3 FresnelLerp(vec3 F0, vec3 F90, float cosA) {
-    return mix(F0, F90, pbr_pow5(1.0 - cosA));
+float3 FresnelLerp(float3 F0, float3 F90, float cosA) {
+    return lerp(F0, F90, pbr_pow5(1.0 - cosA));
 }
 
 // Unity's cheaper form with the fourth power.
-vec3 FresnelLerpFast(vec3 F0, vec3 F90, float cosA) {
-    return mix(F0, F90, Pow4(1.0 - cosA));
+float3 FresnelLerpFast(float3 F0, float3 F90, float cosA) {
+    return lerp(F0, F90, Pow4(1.0 - cosA));
 }
 
 // Burley's diffuse without its 1/π (Unity's diffuse carries none): Burley 2012,
@@ -132,9 +133,9 @@ float PerceptualRoughnessToSpecPower(float perceptualRoughness) {
     return max(n, PBR_UNITY_SPEC_POWER_MIN);
 }
 
-vec3 Unity_SafeNormalize(vec3 inVec) {
+float3 Unity_SafeNormalize(float3 inVec) {
     float dp3 = max(PBR_UNITY_SAFE_NORMALIZE_MIN_LENGTH2, dot(inVec, inVec));
-    return inVec * inversesqrt(dp3);
+    return inVec * rsqrt(dp3);
 }
 
 // What BRDF3 reads from Unity's lookup texture unity_NHxRoughness (.r * LUT_RANGE), as the
@@ -171,11 +172,11 @@ float pbr_unity_glossy_environment_perceptual_roughness(float perceptualRoughnes
 
 // ---- BRDF1_Unity_PBS: GGX, Unity's joint Smith, Disney diffuse ---------------------------
 
-vec3 pbr_unity_brdf1(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, vec3 lightColor, vec3 lightDir,
-                     vec3 indirectDiffuse, vec3 indirectSpecular) {
+float3 pbr_unity_brdf1(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, float3 lightColor, float3 lightDir,
+                     float3 indirectDiffuse, float3 indirectSpecular) {
     float perceptualRoughness = pbr_perceptual_roughness_from_smoothness(smoothness);
-    vec3 halfDir = Unity_SafeNormalize(lightDir + viewDir);
+    float3 halfDir = Unity_SafeNormalize(lightDir + viewDir);
     float nv = abs(dot(normal, viewDir));
     float nl = pbr_saturate(dot(normal, lightDir));
     float nh = pbr_saturate(dot(normal, halfDir));
@@ -193,17 +194,17 @@ vec3 pbr_unity_brdf1(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
     float grazingTerm = pbr_saturate(smoothness + (1.0 - oneMinusReflectivity));
     return diffColor * (indirectDiffuse + lightColor * diffuseTerm)
          + specularTerm * lightColor * FresnelTerm(specColor, lh)
-         + surfaceReduction * indirectSpecular * FresnelLerp(specColor, ((vec3)(grazingTerm)), nv);
+         + surfaceReduction * indirectSpecular * FresnelLerp(specColor, ((float3)(grazingTerm)), nv);
 }
 
 // ---- BRDF2_Unity_PBS: GGX with Unity's combined visibility-Fresnel approximation ----------
 // ("Optimizing PBR for Mobile", Siggraph 2015 course: D · V · F ≈ a² / (4 d² lh² (roughness +
 // 0.5)) with lh² floored at 0.1); polynomial surfaceReduction; Schlick with the 4th power.
 
-vec3 pbr_unity_brdf2(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, vec3 lightColor, vec3 lightDir,
-                     vec3 indirectDiffuse, vec3 indirectSpecular) {
-    vec3 halfDir = Unity_SafeNormalize(lightDir + viewDir);
+float3 pbr_unity_brdf2(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, float3 lightColor, float3 lightDir,
+                     float3 indirectDiffuse, float3 indirectSpecular) {
+    float3 halfDir = Unity_SafeNormalize(lightDir + viewDir);
     float nl = pbr_saturate(dot(normal, lightDir));
     float nh = pbr_saturate(dot(normal, halfDir));
     float nv = pbr_saturate(dot(normal, viewDir));
@@ -219,36 +220,36 @@ vec3 pbr_unity_brdf2(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
     float grazingTerm = pbr_saturate(smoothness + (1.0 - oneMinusReflectivity));
     return (diffColor + specularTerm * specColor) * lightColor * nl
          + indirectDiffuse * diffColor
-         + surfaceReduction * indirectSpecular * FresnelLerpFast(specColor, ((vec3)(grazingTerm)), nv);
+         + surfaceReduction * indirectSpecular * FresnelLerpFast(specColor, ((float3)(grazingTerm)), nv);
 }
 
 // ---- BRDF3_Unity_PBS: normalized Phong by lookup, implicit visibility, no direct Fresnel ----
 
-vec3 BRDF3_Direct(vec3 diffColor, vec3 specColor, float rlPow4, float smoothness) {
+float3 BRDF3_Direct(float3 diffColor, float3 specColor, float rlPow4, float smoothness) {
     float specular = pbr_unity_NHxRoughness_lookup(rlPow4, pbr_perceptual_roughness_from_smoothness(smoothness));
     return diffColor + specular * specColor;
 }
 
-vec3 BRDF3_Indirect(vec3 diffColor, vec3 specColor, UnityIndirect indirect, float grazingTerm,
+float3 BRDF3_Indirect(float3 diffColor, float3 specColor, UnityIndirect indirect, float grazingTerm,
                     float fresnelTerm) {
-    vec3 c = indirect.diffuse * diffColor;
-    c += indirect.specular * mix(specColor, ((vec3)(grazingTerm)), fresnelTerm);
+    float3 c = indirect.diffuse * diffColor;
+    c += indirect.specular * lerp(specColor, ((float3)(grazingTerm)), fresnelTerm);
     return c;
 }
 
 // reflect(viewDir, normal) with viewDir towards the eye is minus the mirror direction; R·L
 // only enters as (R·L)^4, so the sign is immaterial (as in Unity).
-vec3 pbr_unity_brdf3(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, vec3 lightColor, vec3 lightDir,
-                     vec3 indirectDiffuse, vec3 indirectSpecular) {
-    vec3 reflDir = reflect(viewDir, normal);
+float3 pbr_unity_brdf3(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, float3 lightColor, float3 lightDir,
+                     float3 indirectDiffuse, float3 indirectSpecular) {
+    float3 reflDir = reflect(viewDir, normal);
     float nl = pbr_saturate(dot(normal, lightDir));
     float nv = pbr_saturate(dot(normal, viewDir));
-    vec2 rlPow4AndFresnelTerm = Pow4(vec2(dot(reflDir, lightDir), 1.0 - nv));
+    float2 rlPow4AndFresnelTerm = Pow4(float2(dot(reflDir, lightDir), 1.0 - nv));
     float rlPow4 = rlPow4AndFresnelTerm.x;
     float fresnelTerm = rlPow4AndFresnelTerm.y;
     float grazingTerm = pbr_saturate(smoothness + (1.0 - oneMinusReflectivity));
-    vec3 color = BRDF3_Direct(diffColor, specColor, rlPow4, smoothness);
+    float3 color = BRDF3_Direct(diffColor, specColor, rlPow4, smoothness);
     color *= lightColor * nl;
     UnityIndirect gi;
     gi.diffuse = indirectDiffuse;
@@ -259,9 +260,9 @@ vec3 pbr_unity_brdf3(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
 
 // UNITY_BRDF_PBS: the BRDF of the tier (PBR_UNITY_BRDF, set by the tier block of
 // pbr/shading/dispatch.hlsl). The only #if chain of the unity model's BRDF.
-vec3 pbr_unity_brdf_pbs(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                        vec3 normal, vec3 viewDir, vec3 lightColor, vec3 lightDir,
-                        vec3 indirectDiffuse, vec3 indirectSpecular) {
+float3 pbr_unity_brdf_pbs(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                        float3 normal, float3 viewDir, float3 lightColor, float3 lightDir,
+                        float3 indirectDiffuse, float3 indirectSpecular) {
 #if PBR_UNITY_BRDF == PBR_UNITY_BRDF_1
     return pbr_unity_brdf1(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                            lightColor, lightDir, indirectDiffuse, indirectSpecular);
@@ -278,21 +279,21 @@ vec3 pbr_unity_brdf_pbs(vec3 diffColor, vec3 specColor, float oneMinusReflectivi
 
 // ---- Unity's entry points, Unity's signatures ---------------------------------------------
 
-vec4 BRDF1_Unity_PBS(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, UnityLight light, UnityIndirect gi) {
-    return vec4(pbr_unity_brdf1(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
+float4 BRDF1_Unity_PBS(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi) {
+    return float4(pbr_unity_brdf1(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                                 light.color, light.dir, gi.diffuse, gi.specular), 1.0);
 }
 
-vec4 BRDF2_Unity_PBS(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, UnityLight light, UnityIndirect gi) {
-    return vec4(pbr_unity_brdf2(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
+float4 BRDF2_Unity_PBS(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi) {
+    return float4(pbr_unity_brdf2(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                                 light.color, light.dir, gi.diffuse, gi.specular), 1.0);
 }
 
-vec4 BRDF3_Unity_PBS(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
-                     vec3 normal, vec3 viewDir, UnityLight light, UnityIndirect gi) {
-    return vec4(pbr_unity_brdf3(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
+float4 BRDF3_Unity_PBS(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                     float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi) {
+    return float4(pbr_unity_brdf3(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                                 light.color, light.dir, gi.diffuse, gi.specular), 1.0);
 }
 #endif

@@ -30,6 +30,7 @@
 // pbr_unity_gi_occlusion(s.Occlusion): s.Occlusion under the unity model, as Unity, and 1
 // under pbrlab's, whose LightingStandard applies s.Occlusion itself (README, "Unity surface
 // API"). Lambert and BlinnPhong apply occlusion 1, as Unity.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_GLOBAL_ILLUMINATION_HLSL
 #define PBR_UNITY_GLOBAL_ILLUMINATION_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/global_illumination.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -37,51 +38,51 @@
 #include "pbr/unity/lighting_legacy.hlsl"
 
 #ifndef PBR_UNITY_SH_IRRADIANCE
-#define PBR_UNITY_SH_IRRADIANCE(n) vec3(0.0, 0.0, 0.0)
+#define PBR_UNITY_SH_IRRADIANCE(n) float3(0.0, 0.0, 0.0)
 #endif
 #ifndef PBR_UNITY_GLOSSY_ENVIRONMENT
-#define PBR_UNITY_GLOSSY_ENVIRONMENT(dir, perceptualRoughness) vec3(0.0, 0.0, 0.0)
+#define PBR_UNITY_GLOSSY_ENVIRONMENT(dir, perceptualRoughness) float3(0.0, 0.0, 0.0)
 #endif
 
 struct UnityGIInput {
     UnityLight light;   // the pass's light, colour without atten
-    vec3 worldPos;
-    vec3 worldViewDir;  // unit, towards the camera
+    float3 worldPos;
+    float3 worldViewDir;  // unit, towards the camera
     float atten;        // the light's shadow and falloff factor
-    vec3 ambient;       // vertex ambient (added to ShadeSH9)
+    float3 ambient;       // vertex ambient (added to ShadeSH9)
 };
 
 struct Unity_GlossyEnvironmentData {
     float roughness;    // perceptual roughness, as in Unity
-    vec3 reflUVW;
+    float3 reflUVW;
 };
 
-Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(float smoothness, vec3 worldViewDir,
-                                                        vec3 normal, vec3 fresnel0) {
+Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(float smoothness, float3 worldViewDir,
+                                                        float3 normal, float3 fresnel0) {
     Unity_GlossyEnvironmentData g;
     g.roughness = SmoothnessToPerceptualRoughness(smoothness);
     g.reflUVW = reflect(-worldViewDir, normal);
     return g;
 }
 
-vec3 ShadeSH9(vec4 normal) {
+float3 ShadeSH9(float4 normal) {
     return PBR_UNITY_SH_IRRADIANCE(normal.xyz);
 }
 
-vec3 Unity_GlossyEnvironment(Unity_GlossyEnvironmentData glossIn) {
+float3 Unity_GlossyEnvironment(Unity_GlossyEnvironmentData glossIn) {
     return PBR_UNITY_GLOSSY_ENVIRONMENT(glossIn.reflUVW, glossIn.roughness);
 }
 
-UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normalWorld) {
+UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, float3 normalWorld) {
     UnityGI gi;
     gi.light = data.light;
     gi.light.color *= data.atten;
-    gi.indirect.diffuse = (data.ambient + ShadeSH9(vec4(normalWorld, 1.0))) * occlusion;
-    gi.indirect.specular = vec3(0.0, 0.0, 0.0);
+    gi.indirect.diffuse = (data.ambient + ShadeSH9(float4(normalWorld, 1.0))) * occlusion;
+    gi.indirect.specular = float3(0.0, 0.0, 0.0);
     return gi;
 }
 
-UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normalWorld,
+UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, float3 normalWorld,
                                 Unity_GlossyEnvironmentData glossIn) {
     UnityGI gi = UnityGlobalIllumination(data, occlusion, normalWorld);
     gi.indirect.specular = Unity_GlossyEnvironment(glossIn) * occlusion;
@@ -90,7 +91,7 @@ UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normalW
 
 void LightingStandard_GI(SurfaceOutputStandard s, UnityGIInput data, inout UnityGI gi) {
     Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(s.Smoothness, data.worldViewDir,
-                                                                s.Normal, vec3(0.0, 0.0, 0.0));
+                                                                s.Normal, float3(0.0, 0.0, 0.0));
     gi = UnityGlobalIllumination(data, pbr_unity_gi_occlusion(s.Occlusion), s.Normal, g);
 }
 

@@ -20,56 +20,57 @@
 // intensity-1 light along its normal gives 1 in both. The specular is not energy-normalised:
 // pow(NdotH, Specular * 128) * Gloss * _SpecColor, as Unity. Float64 references written from
 // Lighting.cginc: harness/pbrlab/reference/unity_lighting.py.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_LIGHTING_LEGACY_HLSL
 #define PBR_UNITY_LIGHTING_LEGACY_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/lighting_legacy.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/unity/surface_standard.hlsl"
 
 #ifndef PBR_UNITY_SPEC_COLOR
-#define PBR_UNITY_SPEC_COLOR vec4(0.5, 0.5, 0.5, 1.0)
+#define PBR_UNITY_SPEC_COLOR float4(0.5, 0.5, 0.5, 1.0)
 #endif
 
 // Unity's BlinnPhong exponent scale: Specular in [0, 1] maps to a power in [0, 128].
 #define PBR_UNITY_BLINN_PHONG_POWER_SCALE 128.0
 
 struct SurfaceOutput {
-    vec3 Albedo;
-    vec3 Normal;     // tangent space when written by a surface function; world space here
-    vec3 Emission;
+    float3 Albedo;
+    float3 Normal;     // tangent space when written by a surface function; world space here
+    float3 Emission;
     float Specular;  // exponent / 128
     float Gloss;     // specular intensity
     float Alpha;
 };
 
-vec4 UnityLambertLight(SurfaceOutput s, UnityLight light) {
+float4 UnityLambertLight(SurfaceOutput s, UnityLight light) {
     float diff = max(0.0, dot(s.Normal, light.dir));
-    vec4 c;
+    float4 c;
     c.rgb = s.Albedo * light.color * diff;
     c.a = s.Alpha;
     return c;
 }
 
-vec4 LightingLambert(SurfaceOutput s, UnityGI gi) {
-    vec4 c = UnityLambertLight(s, gi.light);
+float4 LightingLambert(SurfaceOutput s, UnityGI gi) {
+    float4 c = UnityLambertLight(s, gi.light);
 #ifdef UNITY_LIGHT_FUNCTION_APPLY_INDIRECT
     c.rgb += s.Albedo * gi.indirect.diffuse;
 #endif
     return c;
 }
 
-vec4 UnityBlinnPhongLight(SurfaceOutput s, vec3 viewDir, UnityLight light) {
-    vec3 h = normalize(light.dir + viewDir);
+float4 UnityBlinnPhongLight(SurfaceOutput s, float3 viewDir, UnityLight light) {
+    float3 h = normalize(light.dir + viewDir);
     float diff = max(0.0, dot(s.Normal, light.dir));
     float nh = max(0.0, dot(s.Normal, h));
     float spec = pow(nh, s.Specular * PBR_UNITY_BLINN_PHONG_POWER_SCALE) * s.Gloss;
-    vec4 c;
+    float4 c;
     c.rgb = s.Albedo * light.color * diff + light.color * PBR_UNITY_SPEC_COLOR.rgb * spec;
     c.a = s.Alpha;
     return c;
 }
 
-vec4 LightingBlinnPhong(SurfaceOutput s, vec3 viewDir, UnityGI gi) {
-    vec4 c = UnityBlinnPhongLight(s, viewDir, gi.light);
+float4 LightingBlinnPhong(SurfaceOutput s, float3 viewDir, UnityGI gi) {
+    float4 c = UnityBlinnPhongLight(s, viewDir, gi.light);
 #ifdef UNITY_LIGHT_FUNCTION_APPLY_INDIRECT
     c.rgb += s.Albedo * gi.indirect.diffuse;
 #endif

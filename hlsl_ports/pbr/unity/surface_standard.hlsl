@@ -47,6 +47,7 @@
 // README.md, "Unity surface API", lists the differences. s.Normal is in world space when
 // LightingStandard runs, as in Unity (the caller transforms the tangent-space normal a
 // surface function writes).
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_STANDARD_HLSL
 #define PBR_UNITY_SURFACE_STANDARD_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/surface_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -63,21 +64,24 @@
 #define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 
-#define PBR_ALPHA_MODE_OPAQUE 0
-#define PBR_ALPHA_MODE_CUTOUT 1
-#define PBR_ALPHA_MODE_FADE 2
-#define PBR_ALPHA_MODE_TRANSPARENT 3
+#define PBR_ALPHA_MODE_OPAQUE 1
+#define PBR_ALPHA_MODE_CUTOUT 2
+#define PBR_ALPHA_MODE_FADE 3
+#define PBR_ALPHA_MODE_TRANSPARENT 4
 #ifndef PBR_ALPHA_MODE
 #define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
 #endif
+#if PBR_ALPHA_MODE != PBR_ALPHA_MODE_OPAQUE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_CUTOUT && PBR_ALPHA_MODE != PBR_ALPHA_MODE_FADE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_TRANSPARENT
+#error "PBR_ALPHA_MODE: unknown value"
+#endif
 
 // Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.
-#define unity_ColorSpaceDielectricSpec vec4(((vec3)(PBR_DIELECTRIC_F0)), 1.0 - PBR_DIELECTRIC_F0)
+#define unity_ColorSpaceDielectricSpec float4(((float3)(PBR_DIELECTRIC_F0)), 1.0 - PBR_DIELECTRIC_F0)
 
 struct SurfaceOutputStandard {
-    vec3 Albedo;      // base (diffuse or specular) colour
-    vec3 Normal;      // tangent-space normal when written by a surface function
-    vec3 Emission;
+    float3 Albedo;      // base (diffuse or specular) colour
+    float3 Normal;      // tangent-space normal when written by a surface function
+    float3 Emission;
     float Metallic;   // 0 = dielectric, 1 = metal
     float Smoothness; // 0 = rough, 1 = smooth
     float Occlusion;  // 1 = unoccluded (default)
@@ -85,10 +89,10 @@ struct SurfaceOutputStandard {
 };
 
 struct SurfaceOutputStandardSpecular {
-    vec3 Albedo;      // diffuse colour
-    vec3 Specular;    // specular colour (F0)
-    vec3 Normal;
-    vec3 Emission;
+    float3 Albedo;      // diffuse colour
+    float3 Specular;    // specular colour (F0)
+    float3 Normal;
+    float3 Emission;
     float Smoothness;
     float Occlusion;
     float Alpha;
@@ -97,12 +101,12 @@ struct SurfaceOutputStandardSpecular {
 // Unity's UnpackNormal for RGB normal maps (UnityCG.cginc without UNITY_NO_DXT5nm
 // swizzling): tangent-space xyz = rgb * 2 - 1. Maps stored as BC5/DXT5nm (x in a, y in g)
 // need Unity's UnpackNormalmapRGorAG, which is not provided.
-vec3 UnpackNormal(vec4 packednormal) {
+float3 UnpackNormal(float4 packednormal) {
     return packednormal.xyz * 2.0 - 1.0;
 }
 
-vec3 UnpackScaleNormal(vec4 packednormal, float bumpScale) {
-    vec3 n = packednormal.xyz * 2.0 - 1.0;
+float3 UnpackScaleNormal(float4 packednormal, float bumpScale) {
+    float3 n = packednormal.xyz * 2.0 - 1.0;
     n.xy *= bumpScale;
     return n;
 }
@@ -119,7 +123,7 @@ float PerceptualRoughnessToSmoothness(float perceptualRoughness) {
     return 1.0 - perceptualRoughness;
 }
 
-float SpecularStrength(vec3 specular) {
+float SpecularStrength(float3 specular) {
     return pbr_max3(specular);
 }
 
@@ -128,14 +132,14 @@ float OneMinusReflectivityFromMetallic(float metallic) {
     return oneMinusDielectricSpec - metallic * oneMinusDielectricSpec;
 }
 
-vec3 DiffuseAndSpecularFromMetallic(vec3 albedo, float metallic, out vec3 specColor,
+float3 DiffuseAndSpecularFromMetallic(float3 albedo, float metallic, out float3 specColor,
                                     out float oneMinusReflectivity) {
     specColor = pbr_f0_from_metallic(albedo, metallic);
     oneMinusReflectivity = OneMinusReflectivityFromMetallic(metallic);
     return pbr_diffuse_from_metallic(albedo, metallic);
 }
 
-vec3 EnergyConservationBetweenDiffuseAndSpecular(vec3 albedo, vec3 specColor,
+float3 EnergyConservationBetweenDiffuseAndSpecular(float3 albedo, float3 specColor,
                                                  out float oneMinusReflectivity) {
     oneMinusReflectivity = 1.0 - SpecularStrength(specColor);
     return pbr_diffuse_from_specular(albedo, specColor);
@@ -143,7 +147,7 @@ vec3 EnergyConservationBetweenDiffuseAndSpecular(vec3 albedo, vec3 specColor,
 
 // Transparent mode: the diffuse part fades with alpha, the specular (reflection) does not;
 // the output alpha grows with reflectivity (Unity: UnityStandardUtils.cginc).
-vec3 PreMultiplyAlpha(vec3 diffColor, float alpha, float oneMinusReflectivity,
+float3 PreMultiplyAlpha(float3 diffColor, float alpha, float oneMinusReflectivity,
                       out float outModifiedAlpha) {
 #if PBR_ALPHA_MODE == PBR_ALPHA_MODE_TRANSPARENT
     diffColor *= alpha;
@@ -179,32 +183,32 @@ float pbr_unity_environment_lod(float perceptualRoughness, float lodCount) {
 
 // LightingStandard's body after the workflow: Unity's premultiplied alpha, then the model's
 // BRDF (unity: UNITY_BRDF_PBS of the tier, gi.indirect already occluded by the GI step).
-vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
-                        float smoothness, float occlusion, float alpha, vec3 normal,
-                        vec3 viewDir, UnityGI gi) {
+float4 pbr_unity_lighting(float3 diffColor, float3 specColor, float oneMinusReflectivity,
+                        float smoothness, float occlusion, float alpha, float3 normal,
+                        float3 viewDir, UnityGI gi) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
 #if PBR_BRDF_MODEL == PBR_BRDF_MODEL_UNITY
-    vec3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
+    float3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
                                 viewDir, gi.light.color, gi.light.dir, gi.indirect.diffuse, gi.indirect.specular);
 #else
-    vec3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
+    float3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
                                    occlusion, normalize(normal), viewDir, gi);
 #endif
-    return vec4(c, outputAlpha);
+    return float4(c, outputAlpha);
 }
 
-vec4 LightingStandard(SurfaceOutputStandard s, vec3 viewDir, UnityGI gi) {
-    vec3 specColor;
+float4 LightingStandard(SurfaceOutputStandard s, float3 viewDir, UnityGI gi) {
+    float3 specColor;
     float oneMinusReflectivity;
-    vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
     return pbr_unity_lighting(diffColor, specColor, oneMinusReflectivity, s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
 
-vec4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, vec3 viewDir, UnityGI gi) {
+float4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, float3 viewDir, UnityGI gi) {
     float oneMinusReflectivity;
-    vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
     return pbr_unity_lighting(diffColor, s.Specular, oneMinusReflectivity, s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
