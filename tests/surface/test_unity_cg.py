@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3, vec4
+from pbrlab.port_hlsl import port_expression, port_text
 from pbrlab.reference import color as ref_color
 from pbrlab.reference import unity_cg as R
 from pbrlab.reference import unity_lighting as L
@@ -28,6 +29,8 @@ def _assert_normals(got, want):
 
 
 def _eval(expr, language, **inputs):
+    """The GLSL expression, ported by the library's own generator for the HLSL run."""
+    expr = expr if language == "glsl" else port_expression(expr)
     return evaluate(expr, language=language, includes=INCLUDES[language], **inputs)
 
 
@@ -103,7 +106,10 @@ vec4 pbr_unity_test_lit(vec3 a, vec3 n, vec3 l, vec3 v, float sp, float gl) {
 }
 """
     suffix = "glsl" if language == "glsl" else "hlsl"
-    (tmp_path / f"wrap.{suffix}").write_text(wrap.replace("SUFFIX", suffix))
+    wrap = wrap.replace("SUFFIX", suffix)
+    if language == "hlsl":  # the same wrapper, ported as the library's files are
+        wrap = port_text(wrap, "wrap.glsl", set()).split("\n", 1)[1]  # without the shim's include line
+    (tmp_path / f"wrap.{suffix}").write_text(wrap)
     got = evaluate("pbr_unity_test_lit(a, n, l, v, sp, gl)", language=language, includes=[f"wrap.{suffix}"],
                    include_dirs=[tmp_path], a=vec3(albedo), n=vec3(n), l=vec3(l),
                    v=vec3(v), sp=spec, gl=gloss)
