@@ -3,7 +3,7 @@ GPU textures per GL context (the environment's GGX prefilter and SH9, the DFG ta
 material textures, neutral 1x1 stand-ins) and, in meshes.mesh_data, mesh vertex data per
 process.
 
-Entries are keyed by file identity (resolved path, size, modification time in ns), so a
+Entries are keyed by file identity (resolved path, size, modification time in ns, inode), so a
 file rewritten between renders is read again and an unchanged one is read once. GPU
 entries live in the context's ``extra`` dict and go with the context; each kind is a small
 LRU that releases the textures it evicts. Before this cache, ``render_scene`` read,
@@ -23,6 +23,7 @@ import numpy as np
 
 from . import ibl, targets
 from .environment import environment_image, environment_sh
+from .file_identity import file_key as _file_key
 from .images import read_image
 
 ENVIRONMENTS_PER_CONTEXT = 4
@@ -31,10 +32,9 @@ _EXTRA_KEY = "pbrlab_resource_cache"
 
 
 def file_key(path: Path) -> tuple:
-    """(resolved path, size, mtime_ns): changes when the file is rewritten."""
-    resolved = Path(path).resolve()
-    stat = resolved.stat()
-    return str(resolved), stat.st_size, stat.st_mtime_ns
+    """(resolved path, size, mtime_ns, inode): changes when the file is rewritten or
+    replaced (file_identity.file_key)."""
+    return _file_key(path)
 
 
 class _LRU:

@@ -51,6 +51,7 @@ class Source:
 
     text: str
     files: list[str] = field(default_factory=list)
+    paths: list[Path] = field(default_factory=list)  # every include file read (resolved)
 
     def map_messages(self, log: str) -> str:
         """Rewrite compiler messages from 'N:L(C)' to 'path:L:C'."""
@@ -137,7 +138,8 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             if target in stack:
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
-            body = target.read_text(encoding="utf-8")
+            body = read_source(target, f"{display}:{number}: ")
+            source.paths.append(target)
             inside_conditional = conditional or depth > 0
             if target in emitted_guarded:
                 lines_out.append(f"// ---- {m.group(1)}: already above (include guard)")
@@ -158,12 +160,29 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
     return source
 
 
+def read_source(path: Path, where: str = "") -> str:
+    """A shader file's text; unreadable or non-UTF-8 files raise PbrlabError naming it
+    (``where``: the includer's file and line, when there is one)."""
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise PbrlabError(f"{where}cannot read shader file {path}: {exc.strerror or exc}") from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise PbrlabError(f"{where}{path}:{line}: not UTF-8 text (byte 0x{data[exc.start]:02x} "
+                          f"at offset {exc.start}); save the shader as UTF-8") from None
+
+
 def expand_file(path: str | Path, include_dirs=(), line_directives: bool = True) -> Source:
     path = Path(path)
     if not path.is_file():
         raise PbrlabError(f"{path}: no such shader file")
-    return expand(path.read_text(encoding="utf-8"), str(path),
-                  include_dirs=(path.parent, *include_dirs), line_directives=line_directives)
+    source = expand(read_source(path), str(path),
+                    include_dirs=(path.parent, *include_dirs), line_directives=line_directives)
+    source.paths.insert(0, path.resolve())
+    return source
 
 
 def amalgamate(entry: str | Path, include_dirs=()) -> str:
