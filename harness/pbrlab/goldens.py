@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import images
+from . import images, outputs
 from .compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, DiffResult, Tolerance, diff
 from .errors import PbrlabError
 
@@ -130,11 +130,6 @@ def _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info) -> str:
     return json.dumps(data, indent=2, sort_keys=True, default=str) + "\n"
 
 
-def _write_text(path: Path, text: str) -> None:
-    with images.atomic_output(path) as tmp:
-        tmp.write_text(text, encoding="utf-8")
-
-
 def _remove_artefact_files(folder: Path) -> None:
     for artefact in ARTEFACTS:
         try:
@@ -204,9 +199,10 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance = GOLDEN_TOLERAN
                 f"see {_display(artefacts['obtained_exr'])}",
                 name=name, paths=paths, artefacts=artefacts)
         _mkdir(paths.exr.parent)
-        images.write_exr(paths.exr, linear, {"golden": name, **info})
-        images.write_png(paths.png, srgb8)
-        _write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info))
+        with outputs.transaction(paths.all()) as tx:  # EXR, PNG and JSON: all three or none
+            images.write_exr(paths.exr, linear, {"golden": name, **info}, tx=tx)
+            images.write_png(paths.png, srgb8, tx=tx)
+            tx.write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info))
         _remove_artefacts(artefact_dir)
         return diff(linear, linear, tolerance)
 

@@ -88,8 +88,9 @@ def _verify_readback(tmp: Path, pixels: np.ndarray, target: Path) -> None:
     try:
         back = read_image(tmp)
     except PbrlabError as exc:
-        raise PbrlabError(f"cannot write {target}: the file written does not read back "
-                          f"({str(exc).replace(str(tmp), str(target))})") from None
+        detail = str(exc).replace(f"cannot read {tmp}: ", "").splitlines()[0]
+        raise PbrlabError(f"cannot write {target}: the file written does not read back, the "
+                          f"disk may be full ({detail}); the old file is kept") from None
     if back.shape != pixels.shape or back.view(np.uint8).tobytes() != pixels.view(np.uint8).tobytes():
         raise PbrlabError(f"cannot write {target}: the file written reads back different pixels "
                           "(a full disk or a failing device?); the old file is kept")

@@ -19,7 +19,7 @@ Rules, each answering a fault seen on earlier versions (issue 14):
   (resolved path, or device and inode for hard links) is refused before any work.
 * **No litter.** Temporary files are named ``.NAME.PID-RANDOM.tmpSUFFIX`` beside their
   target (same file system, so the rename is atomic; the suffix keeps OpenImageIO's
-  format choice). ``install_signal_cleanup`` makes SIGTERM, SIGHUP and SIGINT unwind
+  format choice). ``signal_cleanup`` makes SIGTERM, SIGHUP and SIGINT unwind
   through the cleanup (the CLI installs it); a process killed outright (SIGKILL) leaves its
   temporaries, and the next transaction writing to that folder removes every one whose
   process no longer runs.
@@ -114,8 +114,8 @@ def refuse_inputs(targets: Iterable, inputs: Iterable) -> None:
         resolved, ident = _identity(Path(target))
         for in_resolved, in_ident, shown, what in known:
             if resolved == in_resolved or (ident is not None and ident == in_ident):
-                raise PbrlabError(f"refusing to write {target}: it is {what} of this command "
-                                  f"({shown}); choose another output name")
+                raise PbrlabError(f"refusing to write {target}: it is also an input of this command "
+                                  f"({what}: {shown}); choose another output name")
 
 
 def refuse_duplicates(targets: list[Path]) -> None:
@@ -233,7 +233,7 @@ def remove_live_temps() -> None:
 
 
 class Terminated(BaseException):
-    """Raised in the main thread by SIGTERM/SIGHUP once install_signal_cleanup ran."""
+    """Raised in the main thread by SIGTERM/SIGHUP inside signal_cleanup()."""
 
     def __init__(self, signum: int):
         super().__init__(f"terminated by signal {signum}")
@@ -244,9 +244,17 @@ def _on_signal(signum, frame):
     raise Terminated(signum)
 
 
-def install_signal_cleanup() -> None:
-    """Make SIGTERM and SIGHUP raise ``Terminated`` (SIGINT already raises
-    KeyboardInterrupt), so open transactions unwind and remove their temporaries."""
+@contextlib.contextmanager
+def signal_cleanup() -> Iterator[None]:
+    """Within the block, SIGTERM and SIGHUP raise ``Terminated`` (SIGINT already raises
+    KeyboardInterrupt), so open transactions unwind and remove their temporaries; the
+    previous handlers come back afterwards."""
+    previous = {}
     for signum in (signal.SIGTERM, signal.SIGHUP):
         with contextlib.suppress(ValueError, OSError):  # not the main thread
-            signal.signal(signum, _on_signal)
+            previous[signum] = signal.signal(signum, _on_signal)
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)

@@ -7,12 +7,19 @@ radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 displa
 
 from __future__ import annotations
 
+import dataclasses
+import os
 from dataclasses import dataclass
+from pathlib import Path
 
 import moderngl
 import numpy as np
 
-from . import features, gl, ibl, meshes, resource_cache, targets
+from . import features, gl, gl_limits, ibl, meshes, resource_cache, targets
+from .errors import PbrlabError
+from .file_identity import include_closure
+from .hlsl import HLSL_ROOT
+from .shaders import GLSL_ROOT
 from .camera import camera_frame
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
@@ -158,6 +165,39 @@ def _draw_order(scene: Scene, frame):
     return opaque + blended
 
 
+def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
+    """Every file a render of ``scene`` reads, with its role: what an output must not be."""
+    found = []
+    if scene.environment is not None and scene.environment.path is not None:
+        found.append((scene.environment.path, "the scene's environment image"))
+    for name, material in scene.materials.items():
+        for slot, path in material.textures.items():
+            found.append((path, f"material {name}'s {slot} texture"))
+        if material.surface is not None:
+            for surface in {material.surface, material.surface.with_suffix(".hlsl")}:
+                if surface.is_file():
+                    found.append((surface, f"material {name}'s surface file"))
+                    text = surface.read_text(encoding="utf-8", errors="replace")
+                    found += [(p, f"a file material {name}'s surface includes") for p in
+                              include_closure(text, [surface.parent, GLSL_ROOT, HLSL_ROOT], surface.parent)]
+    for i, obj in enumerate(scene.objects):
+        if obj.mesh_path is not None:
+            found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
+    return found
+
+
+def checked_size(size) -> tuple[int, int]:
+    """``size`` as (width, height): two integers >= 1 (numpy integers too)."""
+    try:
+        w, h = size
+    except (TypeError, ValueError):
+        raise PbrlabError(f"size={size!r}: expected (width, height)") from None
+    for v in (w, h):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise PbrlabError(f"size={size!r}: expected (width, height), two integers >= 1")
+    return int(w), int(h)
+
+
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  transfer: str = "HARDWARE", specialise: bool = True,
                  language: str = "glsl") -> Rendering:
@@ -176,10 +216,17 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    if not isinstance(scene, Scene):
+        hint = (" (a file path: read it with pbrlab.scene.load_scene first)"
+                if isinstance(scene, (str, os.PathLike)) else
+                " (a dict: check it with pbrlab.scene.parse_scene first)" if isinstance(scene, dict) else "")
+        raise PbrlabError(f"render_scene takes a Scene, got {type(scene).__name__}{hint}")
+    if size is not None:  # on a copy: the caller's Scene keeps its own size
+        scene = dataclasses.replace(scene, camera=dataclasses.replace(
+            scene.camera, size=checked_size(size)))
     surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
     ctx = gl.make_current(ctx or gl.shared_context())
-    if size is not None:
-        scene.camera.size = tuple(size)
+    gl_limits.check_scene(ctx, scene)
     frame = camera_frame(scene.camera, scene_radius(scene))
     plan = features.plan_programs(scene, specialise)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]

@@ -24,6 +24,7 @@ import numpy as np
 from . import ibl, targets
 from .environment import environment_image, environment_sh
 from .file_identity import file_key as _file_key
+from .errors import PbrlabError
 from .images import read_image
 
 ENVIRONMENTS_PER_CONTEXT = 4
@@ -95,14 +96,28 @@ class ContextCache:
 
     def texture(self, path: Path, srgb: bool) -> moderngl.Texture:
         """An image file as a texture (colour data decoded from sRGB when ``srgb``)."""
-        return self._textures.get(("file", *file_key(path), srgb), lambda: targets.upload_texture(
-            self.ctx, read_image(path), srgb=srgb))
+        return self._textures.get(("file", *file_key(path), srgb), lambda: _file_texture(
+            self.ctx, path, srgb))
 
     def constant_texture(self, texel) -> moderngl.Texture:
         """A 1x1 RGBA32F texture holding ``texel``."""
         texel = tuple(float(x) for x in texel)
         return self._textures.get(("constant", texel), lambda: self.ctx.texture(
             (1, 1), 4, np.array(texel, np.float32).tobytes(), dtype="f4"))
+
+
+def _file_texture(ctx, path: Path, srgb: bool) -> moderngl.Texture:
+    """Upload an image file; non-finite texels and oversize images are refused by name
+    (a NaN normal map once rendered black without a word)."""
+    image = read_image(path)
+    if image.dtype != np.uint8:
+        bad = int((~np.isfinite(image)).any(axis=-1).sum())
+        if bad:
+            raise PbrlabError(f"texture {path}: {bad} texel(s) are NaN or Inf; textures must be finite")
+    try:
+        return targets.upload_texture(ctx, image, srgb=srgb)
+    except PbrlabError as exc:
+        raise PbrlabError(f"texture {path}: {exc}") from None
 
 
 def context_cache(ctx: moderngl.Context) -> ContextCache:

@@ -23,6 +23,8 @@ def _parse_var(text: str):
     try:
         if ":" in spec:
             start, stop, count = spec.split(":")
+            if not 1 <= int(count) <= MAX_ROWS:
+                raise PbrlabError(f"--var {text!r}: count must be 1..{MAX_ROWS}")
             values = np.linspace(float(start), float(stop), int(count))
         else:
             values = np.array([float(v) for v in spec.split(",")])
@@ -52,6 +54,12 @@ def run(args) -> int:
     from .. import evaluator
 
     grid = [_parse_var(v) for v in args.var]
+    given = [name for name, _ in grid] + [
+        spec.partition("=")[0].strip() for specs in (args.vec2, args.vec3, args.vec4) for spec in specs]
+    twice = sorted({name for name in given if given.count(name) > 1})
+    if twice:
+        raise PbrlabError(f"input {twice[0]!r} is given more than once (--var/--vec); give each "
+                          "name once (list values with --var NAME=v1,v2,...)")
     rows = math.prod(len(values) for _, values in grid)
     if rows > MAX_ROWS:
         raise PbrlabError(f"the grid has {rows} rows; a table is limited to {MAX_ROWS}")
