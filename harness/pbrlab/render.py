@@ -15,7 +15,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, gl, gl_limits, ibl, meshes, resource_cache, targets
+from . import features, gl, gl_limits, ibl, meshes, resource_cache, surface_bindings, targets
 from .errors import PbrlabError
 from .file_identity import include_closure
 from .hlsl import HLSL_ROOT
@@ -225,6 +225,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         scene = dataclasses.replace(scene, camera=dataclasses.replace(
             scene.camera, size=checked_size(size)))
     surfaces = {name: surface_file(m.surface, language) for name, m in scene.materials.items()}
+    surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     ctx = gl.make_current(ctx or gl.shared_context())
     gl_limits.check_scene(ctx, scene)
     frame = camera_frame(scene.camera, scene_radius(scene))

@@ -28,7 +28,8 @@ def parse_size(text: str | None):
 def check_finite(linear: np.ndarray, what: str):
     bad = int((~np.isfinite(linear)).any(axis=-1).sum())
     if bad:
-        raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf; nothing was written")
+        raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf (a surface function writing NaN or "
+                          "Inf into an output field, or a non-finite input); nothing was written")
 
 
 def run(args) -> int:
