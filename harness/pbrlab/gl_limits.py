@@ -3,7 +3,7 @@
 Each limit is queried from the context (``ctx.info``), never assumed; llvmpipe (Mesa
 25) reports GL_MAX_TEXTURE_SIZE = GL_MAX_RENDERBUFFER_SIZE = 16384,
 GL_MAX_FRAGMENT_UNIFORM_VECTORS = 4096 and GL_MAX_TEXTURE_IMAGE_UNITS = 32. A scene
-past a limit raises SceneError with the number it may have: "at most 1919 directional
+past a limit raises SceneError with the number it may have: "at most 1920 directional
 lights" instead of a linker error, "at most 16384 pixels wide" instead of an incomplete
 framebuffer.
 """
