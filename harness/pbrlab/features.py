@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import json_input
 from .errors import SceneError
 from .reference.shading import glsl_defines
 
@@ -180,37 +181,74 @@ def features_report(scene) -> dict:
 # --- glTF 2.0 -------------------------------------------------------------------------
 
 def _gltf_document(path: Path) -> dict:
-    """The JSON of a .gltf, or the JSON chunk of a .glb (glTF 2.0 spec, section 4.4)."""
-    data = path.read_bytes()
+    """The JSON of a .gltf, or the JSON chunk of a .glb (glTF 2.0 spec, section 4.4),
+    through the same gate as scene files (json_input: duplicate keys, non-finite numbers)."""
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read: {exc.strerror or exc}") from None
     if data[:4] == b"glTF":
         length = int.from_bytes(data[12:16], "little")
         if data[16:20] != b"JSON":
             raise SceneError(f"{path}: the first GLB chunk is not JSON")
-        return json.loads(data[20:20 + length])
-    return json.loads(data)
+        data = data[20:20 + length]
+    try:
+        text = data.decode("utf-8")
+        document = json.loads(text, object_pairs_hook=json_input._pairs_hook,
+                              parse_constant=json_input._constant)
+    except UnicodeDecodeError:
+        raise SceneError(f"{path}: not a readable glTF 2.0 file (its JSON is not UTF-8 text)") from None
+    except json.JSONDecodeError as exc:
+        raise SceneError(f"{path}: not a readable glTF 2.0 file (invalid JSON at line "
+                         f"{exc.lineno}, column {exc.colno}: {exc.msg})") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not a readable glTF 2.0 file (JSON nested too deeply)") from None
+    document = json_input.normalize(document, str(path))
+    if not isinstance(document, dict):
+        raise SceneError(f"{path}: a glTF document is a JSON object, got {type(document).__name__}")
+    return document
+
+
+def _gltf_field(value, kind, path: Path, where: str, default):
+    """``value`` if it has JSON type ``kind`` (absent: ``default``), else SceneError naming it."""
+    if value is None:
+        return default
+    if not isinstance(value, kind) or isinstance(value, bool) and kind is not bool:
+        names = {dict: "an object", list: "an array", str: "a string"}
+        raise SceneError(f"{path}: {where}: expected {names.get(kind, kind.__name__)}, "
+                         f"got {json.dumps(value)[:60]}")
+    return value
 
 
 def gltf_features(path) -> dict:
     """Feature sets of a glTF 2.0 file: materials as trimesh reads them, lights from
     KHR_lights_punctual (which trimesh does not read). glTF's metallic-roughness model maps
     to the metallic workflow; its metallicRoughnessTexture packs roughness in G and
-    metallic in B (not Unity's R/A packing), recorded as its channels."""
+    metallic in B (not Unity's R/A packing), recorded as its channels. Every field read is
+    type-checked (SceneError naming its path: ``materials[0].alphaMode``)."""
     import trimesh
 
     path = Path(path)
     if not path.is_file():
         raise SceneError(f"{path}: no such glTF file")
-    try:
-        document = _gltf_document(path)
-        loaded = trimesh.load(path, force="scene")
-    except (ValueError, KeyError, json.JSONDecodeError) as exc:
-        raise SceneError(f"{path}: not a readable glTF 2.0 file ({exc})") from None
-    lights = (document.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", []))
+    document = _gltf_document(path)
+    extensions = _gltf_field(document.get("extensions"), dict, path, "extensions", {})
+    punctual = _gltf_field(extensions.get("KHR_lights_punctual"), dict, path,
+                           "extensions.KHR_lights_punctual", {})
+    lights = _gltf_field(punctual.get("lights"), list, path, "extensions.KHR_lights_punctual.lights", [])
+    for i, light in enumerate(lights):
+        where = f"extensions.KHR_lights_punctual.lights[{i}]"
+        _gltf_field(light, dict, path, where, {})
+        if light.get("type") not in LIGHT_TYPES:
+            raise SceneError(f"{path}: {where}.type: expected one of {', '.join(LIGHT_TYPES)}, "
+                             f"got {json.dumps(light.get('type'))}")
     counts = {t: sum(1 for light in lights if light.get("type") == t) for t in LIGHT_TYPES}
     materials = {}
-    for index, spec in enumerate(document.get("materials", [])):
-        name = spec.get("name", f"material_{index}")
-        pbr = spec.get("pbrMetallicRoughness", {})
+    for index, spec in enumerate(_gltf_field(document.get("materials"), list, path, "materials", [])):
+        where = f"materials[{index}]"
+        spec = _gltf_field(spec, dict, path, where, {})
+        name = _gltf_field(spec.get("name"), str, path, f"{where}.name", f"material_{index}")
+        pbr = _gltf_field(spec.get("pbrMetallicRoughness"), dict, path, f"{where}.pbrMetallicRoughness", {})
         maps, channels = [], {}
         if "baseColorTexture" in pbr:
             maps.append("albedo")
@@ -224,8 +262,16 @@ def gltf_features(path) -> dict:
             if key in spec:
                 maps.append(slot)
                 channels[slot] = what
-        emissive = spec.get("emissiveFactor", [0, 0, 0])
-        alpha_mode = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}[spec.get("alphaMode", "OPAQUE")]
+        emissive = _gltf_field(spec.get("emissiveFactor"), list, path, f"{where}.emissiveFactor", [0, 0, 0])
+        if len(emissive) != 3 or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                         for v in emissive):
+            raise SceneError(f"{path}: {where}.emissiveFactor: expected 3 numbers, got {json.dumps(emissive)}")
+        modes = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}
+        mode = spec.get("alphaMode", "OPAQUE")
+        if not isinstance(mode, str) or mode not in modes:
+            raise SceneError(f"{path}: {where}.alphaMode: expected one of {', '.join(modes)}, "
+                             f"got {json.dumps(mode)}")
+        alpha_mode = modes[mode]
         materials[name] = {
             "workflow": "metallic",
             "alpha_mode": alpha_mode,
@@ -237,6 +283,10 @@ def gltf_features(path) -> dict:
             "occlusion": "occlusionTexture" in spec,
             "alpha": alpha_mode != "opaque",
         }
+    try:
+        loaded = trimesh.load(path, force="scene")
+    except Exception as exc:  # trimesh raises many types for broken files (a missing .bin: OSError)
+        raise SceneError(f"{path}: trimesh cannot read this glTF ({type(exc).__name__}: {exc})") from None
     return {
         "scene": {"directional": counts["directional"], "point": counts["point"], "spot": counts["spot"],
                   "environment": False, "meshes": len(loaded.geometry)},
