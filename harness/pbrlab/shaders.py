@@ -19,12 +19,13 @@ from __future__ import annotations
 
 import os
 import re
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import moderngl
 
-from .errors import PbrlabError, ShaderCompileError
+from .errors import LoopLimitWarning, PbrlabError, ShaderCompileError
 
 GLSL_ROOT = Path(
     os.environ.get("PBRLAB_GLSL_ROOT", Path(__file__).resolve().parents[2] / "glsl"))
@@ -190,8 +191,44 @@ def amalgamate(entry: str | Path, include_dirs=()) -> str:
     return expand_file(entry, include_dirs, line_directives=False).text
 
 
+# llvmpipe (Mesa's gallivm) ends every loop after this many iterations, without an error:
+# LP_MAX_TGSI_LOOP_ITERATIONS in src/gallium/auxiliary/gallivm/lp_bld_limits.h.
+LLVMPIPE_LOOP_LIMIT = 65535
+# for (int i = START; i < N; ...) / i <= N with literal START and N
+_FOR_LOOP = re.compile(r"\bfor\s*\(\s*(?:int|uint|float)?\s*(\w+)\s*=\s*(-?\d+)[uU]?\s*;"
+                       r"\s*\1\s*(<=?)\s*(\d+)[uU]?\s*;")
+_LINE_DIRECTIVE = re.compile(r"^\s*#\s*line\s+(\d+)(?:\s+(\d+))?")
+
+
+def loop_limit_warnings(source: Source, limit: int = LLVMPIPE_LOOP_LIMIT) -> list[str]:
+    """``path:line: ...`` for each for-loop with literal bounds running past ``limit``.
+    Loops with bounds known only at run time are not seen."""
+    found = []
+    file_index, line_number = 0, 0
+    for raw in source.text.splitlines():
+        m = _LINE_DIRECTIVE.match(raw)
+        if m:  # the next line is line L of file K (#line K * LINE_BLOCK + L K)
+            file_index, next_line = divmod(int(m.group(1)), LINE_BLOCK)
+            line_number = next_line - 1
+            continue
+        line_number += 1
+        loop = _FOR_LOOP.search(raw)
+        if loop:
+            count = int(loop.group(4)) - int(loop.group(2)) + (1 if loop.group(3) == "<=" else 0)
+            if count > limit:
+                where = source.files[file_index] if file_index < len(source.files) else "<shader>"
+                found.append(f"{where}:{line_number}: a loop of {count} iterations; this renderer "
+                             f"stops every loop after {limit} and uses the partial result")
+    return found
+
+
 def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> moderngl.Program:
-    """Compile and link; errors are reported at the original file and line."""
+    """Compile and link; errors are reported at the original file and line. On llvmpipe a
+    loop with literal bounds past its iteration cap gives a LoopLimitWarning naming it."""
+    if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
+        for stage in (vertex, fragment):
+            for message in loop_limit_warnings(stage):
+                warnings.warn(message, LoopLimitWarning, stacklevel=2)
     try:
         return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
     except moderngl.Error as exc:

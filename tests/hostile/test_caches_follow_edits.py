@@ -6,6 +6,8 @@ would miss."""
 
 import json
 import os
+import re
+import warnings
 
 import numpy as np
 import pytest
@@ -116,7 +118,7 @@ def test_surface_mistakes_are_reported_by_name(surface_scene, capsys, surface, m
     assert cli.main(["render", str(surface_scene / "scene.json"), "-o", str(out)]) == 2
     err = capsys.readouterr().err
     assert "Traceback" not in err
-    assert __import__("re").search(message, err), err
+    assert re.search(message, err), err
     assert not out.exists()
     census["surface", "refused cleanly"] += 1
 
@@ -129,3 +131,25 @@ def test_an_evaluated_include_edited_on_disk_gives_the_new_value(tmp_path, censu
     _replace(inc, inc.read_bytes().replace(b"2.0", b"3.0"))
     np.testing.assert_array_equal(evaluator.evaluate("pbr_test_f(x)", ["f.glsl"], include_dirs=[tmp_path], x=x), x * 3)
     census["cache after edit", "handled"] += 1
+
+
+@pytest.mark.parametrize("loop, warned", [("for (int i = 0; i < 70000; ++i)", True),
+                                          ("for (int i = 0; i <= 65535; i++)", True),
+                                          ("for (int i = 1; i <= 65535; i++)", False)])
+def test_a_loop_past_llvmpipes_cap_is_a_named_warning(gl_context, tmp_path, loop, warned, census):
+    from pbrlab.errors import LoopLimitWarning
+    if "llvmpipe" not in gl_context.info["GL_RENDERER"].lower():
+        pytest.skip("the 65535-iteration cap is llvmpipe's")
+    (tmp_path / "loop.glsl").write_text(
+        "// header\nfloat pbr_test_count(float x) {\n    float s = 0.0;\n"
+        f"    {loop} {{ s += 1.0; }}\n    return s + x;\n}}\n")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        out = evaluator.evaluate(f"pbr_test_count(x) + {len(loop)}.0", ["loop.glsl"], include_dirs=[tmp_path],
+                                 x=np.zeros(1, np.float32))
+    messages = [str(w.message) for w in caught if issubclass(w.category, LoopLimitWarning)]
+    assert bool(messages) == warned, messages
+    if warned:
+        assert "loop.glsl:4: a loop of" in messages[0]
+        assert out[0] == 65535 + len(loop)  # the cap the warning talks about, measured
+    census["shader loop", "handled"] += 1
