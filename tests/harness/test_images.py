@@ -103,7 +103,7 @@ def test_failed_write_leaves_the_old_file_intact_and_no_temporary(tmp_path, monk
         raise OSError("disk full")
 
     monkeypatch.setattr(images, "_encode", encode_half_then_fail)
-    with pytest.raises(OSError, match="disk full"):
+    with pytest.raises(PbrlabError, match=r"cannot write .*chart\.png: disk full"):
         images.write_png(target, np.full((4, 4, 3), 200, np.uint8))
     assert target.read_bytes() == good
     assert [p.name for p in tmp_path.iterdir()] == ["chart.png"]
