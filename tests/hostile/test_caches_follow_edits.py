@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import evaluator, images
+from pbrlab import evaluator, images, meshes, programs, resource_cache
 from pbrlab.errors import PbrlabError
 from pbrlab.render import render_scene
 from pbrlab.scene import load_scene
@@ -76,7 +76,9 @@ def test_an_edit_between_two_renders_gives_the_new_image(surface_scene, gl_conte
     after = _render(folder, gl_context)
     assert not np.array_equal(before, after), f"the {edit} edit did not reach the image"
     # and the result is that of a fresh process's first render: drop every cache, render again
-    gl_context.extra = {}
+    programs._program_cache(gl_context).clear()
+    gl_context.extra.pop(resource_cache._EXTRA_KEY, None)
+    meshes._MESH_DATA.clear()
     np.testing.assert_array_equal(_render(folder, gl_context), after)
     census["cache after edit", "handled"] += 1
 
