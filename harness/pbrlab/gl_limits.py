@@ -10,7 +10,11 @@ framebuffer.
 
 from __future__ import annotations
 
+import numpy as np
+
 from .errors import PbrlabError, SceneError
+
+FLOAT32_MAX = float(np.finfo(np.float32).max)
 
 # Uniform vectors (vec4 slots) per light in scene_lighting.inc: a vec3 or a float array
 # element each takes one slot. directional: direction, radiance; point: position,
@@ -59,9 +63,23 @@ def max_lights(ctx, light_type: str) -> int:
     return budget // VECTORS_PER_LIGHT[light_type]
 
 
+def check_float32_products(scene) -> None:
+    """Light radiance (color x intensity) and environment radiance reach the GPU as float32:
+    each field is within float32 (json_input), their product must be too, or it is Inf."""
+    products = [(f"lights[{i}]", light.color * light.intensity) for i, light in enumerate(scene.lights)]
+    env = scene.environment
+    if env is not None and env.color is not None:
+        products.append(("environment", env.color * env.intensity))
+    for where, value in products:
+        if not np.all(np.abs(value) <= FLOAT32_MAX):
+            raise SceneError(f"{scene.source}: {where}: color x intensity = {np.max(value):.4g} is "
+                             f"beyond the float32 range (<= {FLOAT32_MAX:.8g}) the GPU computes in")
+
+
 def check_scene(ctx, scene) -> None:
     """Refuse a scene this context cannot render, naming the limit."""
     check_render_size(ctx, scene.camera.size, f"{scene.source}: camera.size")
+    check_float32_products(scene)
     budget = _limit(ctx, "GL_MAX_FRAGMENT_UNIFORM_VECTORS", 1024) - RESERVED_UNIFORM_VECTORS
     counts = {t: sum(1 for light in scene.lights if light.type == t) for t in VECTORS_PER_LIGHT}
     used = sum(VECTORS_PER_LIGHT[t] * n for t, n in counts.items())

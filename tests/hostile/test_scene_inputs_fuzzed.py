@@ -170,6 +170,15 @@ def test_a_parsed_hostile_scene_renders_finite_or_is_refused(gl_context, index, 
     assert repr(scene.camera) == camera_before, "render_scene changed the caller's Scene"
 
 
+def test_a_radiance_past_float32_is_refused_by_name(gl_context, census):
+    from pbrlab.render import render_scene
+    data = base_scene()
+    data["lights"][0].update(color=[3e38, 1, 1], intensity=10)
+    with pytest.raises(PbrlabError, match=r"lights\[0\]: color x intensity = 3e\+39 is beyond the float32"):
+        render_scene(parse_scene(data, "bright.json"), gl_context)
+    census["render", "refused cleanly"] += 1
+
+
 @pytest.mark.parametrize("scene", ["scenes/x.json", 42, {"camera": {}}, None])
 def test_render_scene_refuses_what_is_not_a_scene(gl_context, scene, census):
     from pbrlab.render import render_scene
