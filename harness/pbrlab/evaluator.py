@@ -81,7 +81,7 @@ def as_float32(name: str, value) -> np.ndarray:
         wide = arr.astype(np.float64, copy=False)
         over = np.isfinite(wide) & (np.abs(wide) > FLOAT32_MAX)
         if over.any():
-            raise PbrlabError(f"input {name!r}: {wide[over].flat[0]!r} is beyond the float32 "
+            raise PbrlabError(f"input {name!r}: {float(wide[over].flat[0]):g} is beyond the float32 "
                               f"range (|x| <= {FLOAT32_MAX:.8g}) and would become Inf")
         return arr.astype(np.float32)
     what = {"c": "complex numbers", "U": "strings", "S": "bytes", "O": "Python objects",

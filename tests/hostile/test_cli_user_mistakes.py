@@ -90,3 +90,16 @@ def test_many_lights_are_fine_for_features(folder, capsys, census):
     assert cli.main(["features", str(folder / "many_lights.json")]) == 0
     assert json.loads(capsys.readouterr().out)["scene"]["directional"] == 10000
     census["cli mistake", "handled"] += 1
+
+
+@pytest.mark.parametrize("args, message", [
+    (["eval", "x", "--var", "x=1e400"], "1e400 overflows to infinity"),
+    (["eval", "x", "--var", "x=1e39"], "1e+39 is beyond the float32 range"),
+    (["eval", "y.x", "--vec3", "y=1,2,1e39"], "beyond the float32 range"),
+    (["hardcases", "--function", "pbr_D_GGz"], "no hard case covers it"),
+])
+def test_values_that_would_be_silently_wrong_are_refused(capsys, args, message, census):
+    assert cli.main(args) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err, err
+    census["cli mistake", "refused cleanly"] += 1
