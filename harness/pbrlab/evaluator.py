@@ -92,18 +92,19 @@ def as_float32(name: str, value) -> np.ndarray:
 
 @dataclass(frozen=True)
 class VectorInput:
-    """A float vector input: ``values[..., n]`` holds the n components."""
+    """A float vector input: ``values[..., n]`` holds the n components (as given; made
+    float32 by the evaluator, which names the input when it refuses a value)."""
 
-    values: np.ndarray
+    values: object
     n: int
 
 
 def _vector(n: int):
     def wrap(values) -> VectorInput:
-        arr = as_float32(f"vec{n}", values)
+        arr = as_float32(f"vec{n}", values)  # checked again under the input's name
         if arr.ndim == 0 or arr.shape[-1] != n:
             raise PbrlabError(f"vec{n} input needs a last axis of length {n}, got shape {arr.shape}")
-        return VectorInput(arr, n)
+        return VectorInput(values, n)
     wrap.__name__ = f"vec{n}"
     wrap.__doc__ = f"Mark an array whose last axis holds vec{n} components."
     return wrap
@@ -235,7 +236,7 @@ class Evaluator:
             if not _IDENTIFIER.match(name) or name.startswith("gl_") or name.startswith("pbrlab_"):
                 raise PbrlabError(f"input name {name!r} is not usable as a {language.upper()} identifier")
             if isinstance(value, VectorInput):
-                arrays[name], n = value.values, value.n
+                arrays[name], n = as_float32(name, value.values), value.n
             else:
                 arrays[name], n = as_float32(name, value), 1
             input_types.append((name, n))

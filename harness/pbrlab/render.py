@@ -16,15 +16,15 @@ import moderngl
 import numpy as np
 
 from . import features, gl, gl_limits, ibl, meshes, resource_cache, surface_bindings, targets
+from .camera import camera_frame
 from .errors import PbrlabError
 from .file_identity import include_closure
 from .hlsl import HLSL_ROOT
-from .shaders import GLSL_ROOT
-from .camera import camera_frame
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
 from .programs import set_uniform_array as _set_array
 from .scene import HDR_TARGETS, Scene
+from .shaders import GLSL_ROOT
 
 _UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
 # Triangles of the unit cube, counter-clockwise seen from outside.
