@@ -14,6 +14,7 @@ import urllib.parse
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .. import json_input
 from ..errors import SceneError
 
 GLB_MAGIC = b"glTF"           # glTF 2.0, 4.4.3 "GLB Header"
@@ -114,13 +115,19 @@ def _parse_glb(path: Path, data: bytes) -> tuple[dict, bytes | None]:
 
 
 def _parse_json(path: Path, data: bytes) -> dict:
+    """The document through the same gate as scene files (pbrlab.json_input): duplicate
+    keys, NaN / Infinity / numbers beyond float32 and over-deep nesting are refused by path."""
     try:
-        document = json.loads(data.decode("utf-8"))
+        document = json.loads(data.decode("utf-8"), object_pairs_hook=json_input.pairs_hook,
+                              parse_constant=json_input.parse_constant)
     except UnicodeDecodeError:
         raise SceneError(f"{path}: not a readable glTF 2.0 file (the JSON is not UTF-8)") from None
     except json.JSONDecodeError as exc:
         raise SceneError(f"{path}: not a readable glTF 2.0 file (invalid JSON at line {exc.lineno} "
                          f"column {exc.colno}: {exc.msg})") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not a readable glTF 2.0 file (JSON nested too deeply)") from None
+    document = json_input.normalize(document, str(path))
     if not isinstance(document, dict):
         raise SceneError(f"{path}: not a readable glTF 2.0 file (the JSON is not an object)")
     return document
