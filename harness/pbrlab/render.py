@@ -188,7 +188,8 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
         found.append((scene.environment.path, "the scene's environment image"))
     for name, material in scene.materials.items():
         for slot, path in material.textures.items():
-            found.append((path, f"material {name}'s {slot} texture"))
+            if isinstance(path, (str, Path)):  # not a glTF image, decoded from the glTF file's bytes
+                found.append((path, f"material {name}'s {slot} texture"))
         if material.surface is not None:
             for surface in {material.surface, material.surface.with_suffix(".hlsl")}:
                 if surface.is_file():
