@@ -4,7 +4,9 @@
     result.scene       # a pbrlab.scene.Scene: one mesh object per primitive and node
     result.warnings    # one line per extension or feature not honoured
 
-``document`` reads the file and its buffers, ``accessors`` checks every accessor against
+``fields`` is the one typed reader every module reads the JSON through (type and range
+of each field, refused by path), ``document`` reads the file and its buffers and checks
+the top level, ``accessors`` checks every accessor against
 its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data,
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
 converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises

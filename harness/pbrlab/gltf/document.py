@@ -99,7 +99,7 @@ class Document:
     def uri_bytes(self, uri, where: str) -> bytes:
         """The bytes of a data: URI or of a file relative to the glTF file."""
         if not isinstance(uri, str) or not uri:
-            self.fail(where, f"uri must be a non-empty string, got {json.dumps(uri)}")
+            self.fail(where, f"uri must be a non-empty string, got {shown(uri)}")
         if uri.startswith("data:"):
             header, _, payload = uri.partition(",")
             if not header.endswith(";base64"):

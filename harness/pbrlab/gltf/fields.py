@@ -44,6 +44,12 @@ def _is_number(value) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
+def _option(option, names: dict | None) -> str:
+    if names and option in names:
+        return f"{option} ({names[option]})"  # a GL enum with its name: 33071 (CLAMP_TO_EDGE)
+    return option if isinstance(option, str) else json.dumps(option)
+
+
 def _interval(lo, hi, lo_open=False) -> str:
     return f"{'(' if lo_open else '['}{lo:g}, {hi:g}]"
 
@@ -153,8 +159,7 @@ class FieldReader:
 
     def enum(self, key, options, default=None, names: dict | None = None):
         """One of ``options``, same type and value (4.0 is not the mode 4)."""
-        shown_options = ", ".join(f"{o} ({names[o]})" if names and o in names else json.dumps(o) if not
-                                  isinstance(o, str) else o for o in options)
+        shown_options = ", ".join(_option(o, names) for o in options)
         value = self._value(key, default, f"one of {shown_options}")
         if not any(type(value) is type(o) and value == o for o in options):
             self._bad(key, f"one of {shown_options}", value)

@@ -55,7 +55,8 @@ def walk(doc: Document, scene_index: int | None):
         if index in seen:
             doc.fail(f"nodes[{index}]", "appears twice in the hierarchy (a cycle, or two parents)")
         seen.add(index)
-        world = parent @ local_matrix(node)
+        with np.errstate(over="ignore", invalid="ignore"):  # refused just below, by name
+            world = parent @ local_matrix(node)
         if not np.all(np.isfinite(world)):
             node.fail("its world matrix overflows (a product of huge scales or translations)")
         yield index, world
