@@ -3,7 +3,11 @@
 options every command takes (``--backend``).
 
 User mistakes arrive as PbrlabError and are printed as one message, exit status 2,
-without a traceback. A command's own "no" (e.g. images over tolerance) is exit 1.
+without a traceback. So are the machine's own refusals that name a file (an OSError such
+as a full disk or a permission denied while reading: "path: No space left on device")
+and running out of memory. A command's own "no" (e.g. images over tolerance) is exit 1.
+SIGTERM and SIGHUP unwind like Ctrl-C (outputs.signal_cleanup): temporary output
+files are removed and the exit status is 128 + the signal number.
 """
 
 from __future__ import annotations
@@ -12,7 +16,7 @@ import argparse
 import importlib
 import sys
 
-from . import __version__, console
+from . import __version__, console, outputs
 from .errors import PbrlabError
 from .gl import BACKENDS
 
@@ -60,15 +64,30 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     console.set_level(getattr(args, "verbosity", console.NORMAL))
     try:
-        return int(args.run(args) or 0)
+        with outputs.signal_cleanup():
+            return int(args.run(args) or 0)
     except PbrlabError as exc:
         print(f"pbrlab {args.command}: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        return 130
     except BrokenPipeError:  # e.g. `pbrlab features x.json | head`: the reader left
         sys.stderr.close()
         return 0
+    except OSError as exc:
+        if exc.filename is None and exc.errno is None:
+            raise  # not the system's word about a file: a bug, keep the traceback
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"pbrlab {args.command}: error: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print(f"pbrlab {args.command}: error: out of memory (try a smaller --size or fewer "
+              "samples)", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        outputs.remove_live_temps()
+        return 130
+    except outputs.Terminated as exc:
+        outputs.remove_live_temps()
+        return 128 + exc.signum
 
 
 if __name__ == "__main__":

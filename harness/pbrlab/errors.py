@@ -20,3 +20,8 @@ class ShaderCompileError(PbrlabError):
 
 class SceneError(PbrlabError):
     """A scene file is malformed; the message names the offending field."""
+
+
+class LoopLimitWarning(UserWarning):
+    """A shader loop asks for more iterations than the renderer runs (llvmpipe stops every
+    loop after 65535 iterations and carries on with the partial result)."""

@@ -14,7 +14,18 @@ inputs, target and readback included.
 Bit-exactness: each input travels in a float32 texture read with ``texelFetch``, and the
 result comes back from an RGBA32F target, so ±0, denormals, Inf and NaN pass unchanged
 (see tests/harness/test_evaluator.py). Programs are cached per expression, includes,
-defines and input types, so a sweep compiles once.
+defines and input types, so a sweep compiles once; the cache holds the
+``PROGRAMS_CACHED`` most recently used programs (older ones are released: 10,000 distinct
+expressions keep the process's memory flat, benchmarks/evaluator_cache_rss.py) and an
+entry is rebuilt when a file it includes changed on disk.
+
+Inputs become float32, and what float32 cannot hold is refused (PbrlabError naming the
+input), never rounded in silence: integers are taken when float32 holds them exactly (all
+of |n| <= 2^24, and larger ones that happen to be exact), floats are rounded to the
+nearest float32 (that is the evaluator's contract) unless finite and beyond the float32
+range (|x| > 3.4028235e38, which would become Inf; Inf and NaN themselves pass), booleans
+are 0 and 1; complex numbers, None, strings and other objects are refused. Broadcasts of
+more than ``CHUNK`` elements run as several draws of at most that many.
 """
 
 from __future__ import annotations
@@ -30,25 +41,70 @@ import numpy as np
 
 from . import gl, hlsl, shaders
 from .errors import PbrlabError
+from .file_identity import FileCache, include_closure
 
 _IDENTIFIER = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _MAX_WIDTH = 4096  # texels per row of the input/output textures (llvmpipe allows 16384)
+# Elements per draw: 1024 rows of _MAX_WIDTH, i.e. at most 64 MiB per vec4 input texture
+# and as much for the RGBA32F target; larger broadcasts are split into draws of this size.
+CHUNK = _MAX_WIDTH * 1024
+# Programs kept per evaluator (each expression takes two: the width probe and the
+# evaluation), about 0.5 MB of llvmpipe code each (issue 14: 2,002 programs, 1,186 MB).
+PROGRAMS_CACHED = 128
+FLOAT32_MAX = float(np.finfo(np.float32).max)
+_EXACT_INT = 2 ** 24  # float32's 24-bit significand holds every integer up to this
+
+
+def as_float32(name: str, value) -> np.ndarray:
+    """``value`` as a float32 array, refusing what float32 cannot hold (module doc)."""
+    if value is None:
+        raise PbrlabError(f"input {name!r} is None; give a number or an array of numbers")
+    try:
+        arr = np.asarray(value)
+    except (ValueError, TypeError) as exc:  # ragged nested lists
+        raise PbrlabError(f"input {name!r} is not a rectangular array of numbers ({exc})") from None
+    kind = arr.dtype.kind
+    if kind == "b":
+        return arr.astype(np.float32)
+    if kind in "iu":
+        out = arr.astype(np.float32)
+        big = np.abs(arr.astype(np.float64)) > _EXACT_INT
+        if big.any():
+            for original, converted in zip(arr[big].tolist(), out[big].tolist()):
+                if int(converted) != original:
+                    raise PbrlabError(
+                        f"input {name!r}: the integer {original} has no exact float32 value "
+                        f"(nearest: {int(converted)}); float32 holds every integer up to "
+                        f"2^24 = {_EXACT_INT}")
+        return out
+    if kind == "f":
+        wide = arr.astype(np.float64, copy=False)
+        over = np.isfinite(wide) & (np.abs(wide) > FLOAT32_MAX)
+        if over.any():
+            raise PbrlabError(f"input {name!r}: {float(wide[over].flat[0]):g} is beyond the float32 "
+                              f"range (|x| <= {FLOAT32_MAX:.8g}) and would become Inf")
+        return arr.astype(np.float32)
+    what = {"c": "complex numbers", "U": "strings", "S": "bytes", "O": "Python objects",
+            "M": "dates", "m": "time spans", "V": "structured records"}.get(kind, arr.dtype.name)
+    raise PbrlabError(f"input {name!r} holds {what} ({arr.dtype}); the evaluator takes real "
+                      "numbers (float32 on the GPU)")
 
 
 @dataclass(frozen=True)
 class VectorInput:
-    """A float vector input: ``values[..., n]`` holds the n components."""
+    """A float vector input: ``values[..., n]`` holds the n components (as given; made
+    float32 by the evaluator, which names the input when it refuses a value)."""
 
-    values: np.ndarray
+    values: object
     n: int
 
 
 def _vector(n: int):
     def wrap(values) -> VectorInput:
-        arr = np.asarray(values, dtype=np.float32)
+        arr = as_float32(f"vec{n}", values)  # checked again under the input's name
         if arr.ndim == 0 or arr.shape[-1] != n:
             raise PbrlabError(f"vec{n} input needs a last axis of length {n}, got shape {arr.shape}")
-        return VectorInput(arr, n)
+        return VectorInput(values, n)
     wrap.__name__ = f"vec{n}"
     wrap.__doc__ = f"Mark an array whose last axis holds vec{n} components."
     return wrap
@@ -102,7 +158,8 @@ def _hlsl_fragment_source(expression, includes, input_types, defines, probe,
             .replace("//@FETCHES", fetches)
             .replace("//@EXPRESSION", expression))
     glsl = hlsl.hlsl_to_glsl(text, "<evaluate>", include_dirs=include_dirs)
-    return shaders.Source(glsl, ["<evaluate.hlsl, cross-compiled by spirv-cross>"])
+    return shaders.Source(glsl, ["<evaluate.hlsl, cross-compiled by spirv-cross>"],
+                          include_closure(text, [*include_dirs, hlsl.HLSL_ROOT]))
 
 
 class Evaluator:
@@ -110,7 +167,7 @@ class Evaluator:
 
     def __init__(self, ctx: moderngl.Context):
         self.ctx = ctx
-        self._programs: dict = {}
+        self._programs = FileCache(PROGRAMS_CACHED, _release_program)
         self._vertex = shaders.expand(_template("fullscreen.vert"), "<fullscreen.vert>")
         self._vao_cache: dict = {}
 
@@ -118,7 +175,8 @@ class Evaluator:
                  extensions=(), language="glsl"):
         key = (expression, includes, input_types, tuple(sorted(defines.items())), probe,
                include_dirs, extensions, language)
-        if key not in self._programs:
+
+        def build():
             if language == "hlsl":
                 fragment = _hlsl_fragment_source(expression, includes, input_types, defines,
                                                  probe, include_dirs)
@@ -126,8 +184,9 @@ class Evaluator:
                 fragment = _fragment_source(expression, includes, input_types, defines, probe,
                                             include_dirs, extensions)
             program = shaders.build_program(self.ctx, self._vertex, fragment)
-            self._programs[key] = (program, self.ctx.vertex_array(program, []))
-        return self._programs[key]
+            return (program, self.ctx.vertex_array(program, [])), fragment.paths
+
+        return self._programs.get(key, build)
 
     def result_width(self, expression, includes, input_types, defines, include_dirs=(),
                      extensions=(), language="glsl") -> int:
@@ -177,38 +236,58 @@ class Evaluator:
             if not _IDENTIFIER.match(name) or name.startswith("gl_") or name.startswith("pbrlab_"):
                 raise PbrlabError(f"input name {name!r} is not usable as a {language.upper()} identifier")
             if isinstance(value, VectorInput):
-                arrays[name], n = value.values, value.n
+                arrays[name], n = as_float32(name, value.values), value.n
             else:
-                arrays[name], n = np.asarray(value, dtype=np.float32), 1
+                arrays[name], n = as_float32(name, value), 1
             input_types.append((name, n))
         input_types = tuple(input_types)
-        shape = np.broadcast_shapes(*[
-            a.shape[:-1] if n > 1 else a.shape for (_, n), a in zip(input_types, arrays.values())
-        ]) if arrays else ()
+        shapes = {name: a.shape[:-1] if n > 1 else a.shape
+                  for (name, n), a in zip(input_types, arrays.values())}
+        try:
+            shape = np.broadcast_shapes(*shapes.values()) if arrays else ()
+        except ValueError:
+            raise PbrlabError("inputs do not broadcast against each other: " + ", ".join(
+                f"{name} {shape}" for name, shape in shapes.items())) from None
         count = int(np.prod(shape, dtype=np.int64))
         width = self.result_width(expression, includes, input_types, defines, include_dirs,
                                   extensions, language)
         if count == 0:
             return np.zeros(shape + ((width,) if width > 1 else ()), np.float32)
 
+        flats = [np.broadcast_to(arr, shape + ((n,) if n > 1 else ())).reshape(count, n)
+                 for (_, n), arr in zip(input_types, arrays.values())]
+        program, vao = self._program(expression, includes, input_types, defines, False,
+                                     include_dirs, extensions, language)
+        result = np.empty((count, width), np.float32)
+        for start in range(0, count, CHUNK):
+            stop = min(start + CHUNK, count)
+            result[start:stop] = self._run_chunk(program, vao, input_types,
+                                                 [f[start:stop] for f in flats])[:, :width]
+        return result.reshape(shape + ((width,) if width > 1 else ()))
+
+    def _run_chunk(self, program, vao, input_types, flats) -> np.ndarray:
+        """One draw over ``flats`` (each count x n, count <= CHUNK): count x 4 results."""
+        count = len(flats[0]) if flats else 1
         cols = min(count, _MAX_WIDTH)
         rows = math.ceil(count / cols)
         textures = []
         try:
-            for (name, n), arr in zip(input_types, arrays.values()):
-                full = np.broadcast_to(arr, shape + ((n,) if n > 1 else ())).reshape(count, n)
+            for (name, n), full in zip(input_types, flats):
                 channels = 4 if n == 3 else n  # RGB32F rows are not 4-byte aligned in GL
                 padded = np.zeros((rows * cols, channels), np.float32)
                 padded[:count, :n] = full
                 textures.append(self.ctx.texture((cols, rows), channels, padded.tobytes(), dtype="f4"))
-            program, vao = self._program(expression, includes, input_types, defines, False,
-                                         include_dirs, extensions, language)
             out = self._run(program, vao, input_types, textures, (cols, rows))
         finally:
             for tex in textures:
                 tex.release()
-        flat = out.reshape(rows * cols, 4)[:count, :width]
-        return flat.reshape(shape + ((width,) if width > 1 else ())).copy()
+        return out.reshape(rows * cols, 4)[:count]
+
+
+def _release_program(entry) -> None:
+    program, vao = entry
+    vao.release()
+    program.release()
 
 
 @lru_cache(maxsize=None)

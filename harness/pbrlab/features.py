@@ -28,6 +28,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from . import json_input
 from .errors import SceneError
 from .reference.shading import glsl_defines
 

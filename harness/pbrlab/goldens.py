@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import images
+from . import images, outputs
 from .compare import (GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, TOLERANCE_PROFILES, DiffResult,
                       Tolerance, ToleranceProfile, diff, tolerance_profile)
 from .errors import PbrlabError
@@ -141,11 +141,6 @@ def _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info, profile) -> s
     return json.dumps(data, indent=2, sort_keys=True, default=str) + "\n"
 
 
-def _write_text(path: Path, text: str) -> None:
-    with images.atomic_output(path) as tmp:
-        tmp.write_text(text, encoding="utf-8")
-
-
 def _remove_artefact_files(folder: Path) -> None:
     for artefact in ARTEFACTS:
         try:
@@ -229,10 +224,11 @@ def check_golden(name: str, linear, srgb8, tolerance: Tolerance | None = None,
                 f"see {_display(artefacts['obtained_exr'])}",
                 name=name, paths=paths, artefacts=artefacts)
         _mkdir(paths.exr.parent)
-        images.write_exr(paths.exr, linear, {"golden": name, **info})
-        images.write_png(paths.png, srgb8)
-        _write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info,
-                                            profile))
+        with outputs.transaction(paths.all()) as tx:  # EXR, PNG and JSON: all three or none
+            images.write_exr(paths.exr, linear, {"golden": name, **info}, tx=tx)
+            images.write_png(paths.png, srgb8, tx=tx)
+            tx.write_text(paths.sidecar, _sidecar(name, linear, srgb8, tolerance, srgb_tolerance, info,
+                                                  profile))
         _remove_artefacts(artefact_dir)
         return diff(linear, linear, tolerance)
 

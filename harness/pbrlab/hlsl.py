@@ -28,11 +28,12 @@ import re
 import shutil
 import subprocess
 import tempfile
-from functools import lru_cache
 from pathlib import Path
 
 from .errors import PbrlabError, ShaderCompileError
+from .file_identity import FileCache, include_closure
 from .locations import locate
+from .shaders import GLSL_ROOT
 
 HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
@@ -114,15 +115,20 @@ def cross_to_glsl(spirv: bytes, version: int = 330, *, plain_uniforms: bool = Fa
     return proc.stdout
 
 
-@lru_cache(maxsize=256)
-def _hlsl_to_glsl_cached(text: str, name: str, include_dirs: tuple, optimize: bool,
-                         plain_uniforms: bool) -> str:
-    return cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize),
-                         plain_uniforms=plain_uniforms)
+# Cross-compiled shaders kept per process; each entry is rebuilt when a file the HLSL
+# includes changed on disk (file_identity.FileCache). Strings of a few tens of kB.
+CROSS_COMPILED_CACHED = 256
+_CROSS_COMPILED = FileCache(CROSS_COMPILED_CACHED)
 
 
 def hlsl_to_glsl(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
                  plain_uniforms: bool = False) -> str:
     """A pixel shader (entry ``main``) in HLSL -> the GLSL 330 that spirv-cross writes."""
-    return _hlsl_to_glsl_cached(text, name, tuple(str(d) for d in include_dirs), optimize,
-                                plain_uniforms)
+    include_dirs = tuple(str(d) for d in include_dirs)
+
+    def build():
+        glsl = cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize),
+                             plain_uniforms=plain_uniforms)
+        return glsl, include_closure(text, [*include_dirs, HLSL_ROOT])
+
+    return _CROSS_COMPILED.get((text, name, include_dirs, optimize, plain_uniforms), build)

@@ -12,9 +12,11 @@ Arrays are numpy, top row first, shaped ``(height, width, channels)``:
 Both writers are deterministic (the EXR ``capDate`` timestamp that OpenEXR would add is
 suppressed), so re-writing an unchanged golden leaves the same bytes for git.
 
-Every writer goes through ``atomic_output``: the image is written to a temporary file in
-the target's directory and moved over the target only when complete, so a failed write
-never leaves a partial file or destroys a good one. Problems a user can fix (a missing or
+Every writer goes through ``outputs.transaction``: the image is written to a temporary
+file in the target's directory, fsync'ed, read back and compared pixel for pixel, and
+moved over the target only then, so a failed write (a full disk included) never leaves a
+partial file or destroys a good one. Pass ``tx`` to make several files one
+all-or-nothing set (``pbrlab render -o a.png --hdr a.exr``). Problems a user can fix (a missing or
 unwritable directory, a missing or unreadable input) raise ``PbrlabError`` naming the
 path; a wrongly shaped array from calling code is a ``ValueError`` (a bug, not a message).
 """
@@ -22,14 +24,13 @@ path; a wrongly shaped array from calling code is a ``ValueError`` (a bug, not a
 from __future__ import annotations
 
 import contextlib
-import os
-import secrets
 from pathlib import Path
 from typing import Iterator
 
 import numpy as np
 import OpenImageIO as oiio
 
+from . import outputs
 from .errors import PbrlabError
 
 METADATA_PREFIX = "pbrlab:"
@@ -40,41 +41,18 @@ _UNASSOCIATED_ALPHA = "oiio:UnassociatedAlpha"
 _CHANNEL_NAMES = {1: ("Y",), 2: ("Y", "A"), 3: ("R", "G", "B"), 4: ("R", "G", "B", "A")}
 
 
-def _check_writable_target(path: Path) -> None:
-    """Raise PbrlabError when ``path`` cannot be written as a file."""
-    parent = path.parent
-    if not parent.exists():
-        raise PbrlabError(f"cannot write {path}: directory {parent} does not exist")
-    if not parent.is_dir():
-        raise PbrlabError(f"cannot write {path}: {parent} is not a directory")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise PbrlabError(f"cannot write {path}: directory {parent} is not writable")
-    if path.is_dir():
-        raise PbrlabError(f"cannot write {path}: it is a directory")
-
-
 @contextlib.contextmanager
-def atomic_output(path) -> Iterator[Path]:
+def atomic_output(path, inputs=()) -> Iterator[Path]:
     """Yield a temporary path beside ``path``; move it onto ``path`` when the block succeeds.
 
-    The temporary name keeps the target's extension (OpenImageIO picks the format from it).
-    If the block raises, the temporary file is removed, the target is left untouched and
-    the exception propagates unchanged.
+    A one-file ``outputs.transaction``: the temporary name keeps the target's extension
+    (OpenImageIO picks the format from it), the file is fsync'ed and must be non-empty
+    before the rename. If the block raises, the temporary file is removed, the target is
+    left untouched and the exception propagates unchanged.
     """
     path = Path(path)
-    _check_writable_target(path)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{path.suffix}")
-    try:
-        yield tmp
-        if not tmp.exists():
-            raise PbrlabError(f"cannot write {path}: the writer produced no file")
-        try:
-            os.replace(tmp, path)
-        except OSError as exc:
-            raise PbrlabError(f"cannot write {path}: {exc.strerror or exc}") from None
-    finally:
-        with contextlib.suppress(FileNotFoundError):
-            tmp.unlink()
+    with outputs.transaction([path], inputs) as tx:
+        yield tx.temp(path)
 
 
 def _as_hwc(array: np.ndarray, what: str) -> np.ndarray:
@@ -85,8 +63,10 @@ def _as_hwc(array: np.ndarray, what: str) -> np.ndarray:
     return np.ascontiguousarray(array)
 
 
-def _write(path, pixels: np.ndarray, fmt: str, attributes: dict) -> None:
-    """Write ``pixels`` (HxWxC, already in the file's pixel type) atomically to ``path``."""
+def _write(path, pixels: np.ndarray, fmt: str, attributes: dict, tx=None) -> None:
+    """Write ``pixels`` (HxWxC, already in the file's pixel type) atomically to ``path``,
+    read it back and compare before the rename; with ``tx`` (an outputs.Transaction
+    holding ``path``) the file becomes part of that all-or-nothing set."""
     height, width, channels = pixels.shape
     spec = oiio.ImageSpec(width, height, channels, fmt)
     spec.channelnames = _CHANNEL_NAMES[channels]
@@ -94,8 +74,41 @@ def _write(path, pixels: np.ndarray, fmt: str, attributes: dict) -> None:
         spec.alpha_channel = channels - 1
     for key, value in attributes.items():
         spec.attribute(key, value)
-    with atomic_output(path) as tmp:
-        _encode(tmp, spec, pixels, Path(path))
+    if tx is None:
+        with outputs.transaction([path]) as own:
+            _write(path, pixels, fmt, attributes, own)
+        return
+    target = Path(path)
+    try:
+        _encode(tx.temp(target), spec, pixels, target)
+    except OSError as exc:  # the device refused a write (ENOSPC, EIO) inside the encoder
+        raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}") from None
+    tx.verify(target, lambda tmp: _verify_readback(tmp, pixels, target))
+
+
+# A PNG ends with its IEND chunk: length 0, type "IEND", CRC AE 42 60 82 (PNG spec 11.2.5).
+# libpng reads a file truncated inside it without complaint, so the trailer is checked.
+_PNG_TRAILER = b"\x00\x00\x00\x00IEND\xaeB`\x82"
+
+
+def _verify_readback(tmp: Path, pixels: np.ndarray, target: Path) -> None:
+    """The file on disk decodes to exactly ``pixels`` (bit for bit: NaN, -0 included) and,
+    for PNG, ends with its IEND trailer."""
+    if tmp.suffix.lower() == ".png":
+        with open(tmp, "rb") as f:
+            f.seek(max(0, f.seek(0, 2) - len(_PNG_TRAILER)))
+            if f.read() != _PNG_TRAILER:
+                raise PbrlabError(f"cannot write {target}: the file written is cut short (no PNG "
+                                  "end marker), the disk may be full; the old file is kept")
+    try:
+        back = read_image(tmp)
+    except PbrlabError as exc:
+        detail = str(exc).replace(f"cannot read {tmp}: ", "").splitlines()[0]
+        raise PbrlabError(f"cannot write {target}: the file written does not read back, the "
+                          f"disk may be full ({detail}); the old file is kept") from None
+    if back.shape != pixels.shape or back.view(np.uint8).tobytes() != pixels.view(np.uint8).tobytes():
+        raise PbrlabError(f"cannot write {target}: the file written reads back different pixels "
+                          "(a full disk or a failing device?); the old file is kept")
 
 
 def _encode(tmp: Path, spec, pixels: np.ndarray, target: Path) -> None:
@@ -114,15 +127,16 @@ def _encode(tmp: Path, spec, pixels: np.ndarray, target: Path) -> None:
         raise PbrlabError(f"cannot write {target}: {error}")
 
 
-def write_png(path, rgba8: np.ndarray) -> None:
-    """Write already-encoded sRGB bytes (uint8, HxWx{1,2,3,4}) as a lossless PNG."""
+def write_png(path, rgba8: np.ndarray, tx=None) -> None:
+    """Write already-encoded sRGB bytes (uint8, HxWx{1,2,3,4}) as a lossless PNG
+    (``tx``: an outputs.Transaction that holds ``path``)."""
     rgba8 = np.asarray(rgba8)
     if rgba8.dtype != np.uint8:
         raise ValueError(f"write_png takes uint8 sRGB code values, got {rgba8.dtype}")
-    _write(path, _as_hwc(rgba8, "PNG image"), "uint8", {_UNASSOCIATED_ALPHA: 1})
+    _write(path, _as_hwc(rgba8, "PNG image"), "uint8", {_UNASSOCIATED_ALPHA: 1}, tx)
 
 
-def write_exr(path, linear: np.ndarray, metadata: dict | None = None) -> None:
+def write_exr(path, linear: np.ndarray, metadata: dict | None = None, tx=None) -> None:
     """Write linear float data (HxWx{1,2,3,4}) as a 32-bit float, ZIP-compressed EXR.
 
     ``metadata`` values are stored as strings (``str(value)``) under ``pbrlab:KEY``.
@@ -133,15 +147,53 @@ def write_exr(path, linear: np.ndarray, metadata: dict | None = None) -> None:
     attributes = {"compression": EXR_COMPRESSION, "DateTime": ""}  # "" = no capDate
     for key, value in (metadata or {}).items():
         attributes[METADATA_PREFIX + str(key)] = value if isinstance(value, str) else str(value)
-    _write(path, _as_hwc(linear, "EXR image"), "float", attributes)
+    _write(path, _as_hwc(linear, "EXR image"), "float", attributes, tx)
+
+
+# The first bytes of each format pbrlab reads, by file extension: a file whose content
+# does not match its name is refused (PNG bytes named sky.exr once rendered 150x too
+# bright). Sources: PNG spec section 5.2; OpenEXR "Technical Introduction", magic
+# 20000630 little-endian; Radiance RGBE header ("#?RADIANCE", "#?RGBE"); JPEG SOI marker.
+MAGIC = {
+    ".png": (b"\x89PNG\r\n\x1a\n",),
+    ".exr": (b"\x76\x2f\x31\x01",),
+    ".hdr": (b"#?RADIANCE", b"#?RGBE"),
+    ".jpg": (b"\xff\xd8\xff",),
+    ".jpeg": (b"\xff\xd8\xff",),
+}
+_FORMAT_NAMES = {".png": "PNG", ".exr": "OpenEXR", ".hdr": "Radiance HDR", ".jpg": "JPEG", ".jpeg": "JPEG"}
+
+
+def sniff_format(head: bytes) -> str | None:
+    """The extension whose magic bytes ``head`` starts with (None: none of ours)."""
+    for suffix, magics in MAGIC.items():
+        if any(head.startswith(m) for m in magics):
+            return suffix
+    return None
+
+
+def _check_readable_image_file(path: Path) -> None:
+    """Refuse a missing, unreadable or misnamed image file before OpenImageIO sees it."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(16)
+    except IsADirectoryError:
+        raise PbrlabError(f"cannot read {path}: it is a directory") from None
+    except FileNotFoundError:
+        raise PbrlabError(f"cannot read {path}: no such file") from None
+    except OSError as exc:  # permission, symlink loop, I/O error
+        raise PbrlabError(f"cannot read {path}: {exc.strerror or exc}") from None
+    suffix = path.suffix.lower()
+    if suffix in MAGIC and not any(head.startswith(m) for m in MAGIC[suffix]):
+        found = sniff_format(head)
+        what = f"{_FORMAT_NAMES[found]} data" if found else "not a valid file of that kind"
+        raise PbrlabError(f"cannot read {path}: named {suffix} but its content is {what}"
+                          + (f"; rename it to {path.stem}{found}" if found else ""))
 
 
 def _open(path) -> "oiio.ImageInput":
     path = Path(path)
-    if not path.exists():
-        raise PbrlabError(f"cannot read {path}: no such file")
-    if path.is_dir():
-        raise PbrlabError(f"cannot read {path}: it is a directory")
+    _check_readable_image_file(path)
     config = oiio.ImageSpec()
     config.attribute(_UNASSOCIATED_ALPHA, 1)  # give PNG bytes back as stored
     inp = oiio.ImageInput.open(str(path), config)

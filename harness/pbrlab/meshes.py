@@ -64,6 +64,13 @@ def load_mesh(obj):
         raise SceneError(f"{obj.mesh_path}: trimesh cannot read this mesh ({exc})") from None
     if len(mesh.faces) == 0:
         raise SceneError(f"{obj.mesh_path}: the mesh has no triangles")
+    bad = ~np.isfinite(np.asarray(mesh.vertices, dtype=np.float64)).all(axis=1)
+    if bad.any():
+        raise SceneError(f"{obj.mesh_path}: {int(bad.sum())} vertex position(s) are NaN or "
+                         f"infinite (first: vertex {int(np.argmax(bad)) + 1})")
+    if np.abs(np.asarray(mesh.vertices)).max() > FLOAT32_MAX:
+        raise SceneError(f"{obj.mesh_path}: vertex positions exceed the float32 range "
+                         f"(|x| <= {FLOAT32_MAX:.4g})")
     return mesh
 
 
@@ -99,6 +106,7 @@ def _mesh_key(obj) -> tuple:
     return ("file", *resource_cache.file_key(obj.mesh_path))
 
 
+FLOAT32_MAX = float(np.finfo(np.float32).max)
 _MESH_DATA: OrderedDict = OrderedDict()
 MESHES_KEPT = 32
 

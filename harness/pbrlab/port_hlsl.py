@@ -35,6 +35,7 @@ import re
 import sys
 from pathlib import Path
 
+from . import outputs
 from .errors import PbrlabError
 from .locations import locate
 from .shaders import GLSL_ROOT
@@ -276,13 +277,15 @@ def stale_files(glsl_root: Path = GLSL_ROOT, hlsl_root: Path = HLSL_ROOT) -> lis
 
 
 def write(glsl_root: Path = GLSL_ROOT, hlsl_root: Path = HLSL_ROOT) -> list[Path]:
-    written = []
-    for path, text in generate(glsl_root, hlsl_root).items():
-        if not path.is_file() or path.read_text(encoding="utf-8") != text:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(text, encoding="utf-8")
-            written.append(path)
-    return written
+    """Write the ports that changed, all or none (outputs.transaction)."""
+    changed = {path: text for path, text in generate(glsl_root, hlsl_root).items()
+               if not path.is_file() or path.read_text(encoding="utf-8") != text}
+    for path in changed:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    with outputs.transaction(changed) as tx:
+        for path, text in changed.items():
+            tx.write_text(path, text)
+    return list(changed)
 
 
 def main(argv=None) -> int:

@@ -33,13 +33,18 @@ import numpy as np
 
 from . import hlsl, shaders
 from .errors import PbrlabError
+from .file_identity import FileCache, include_closure
 
 TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
 FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
 LANGUAGES = tuple(FRAGMENT_SUFFIX)
 DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
 _GL_FLOAT_MATRICES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}  # GL_FLOAT_MAT2, MAT3, MAT4
-_PROGRAMS: dict = {}
+# Programs kept per GL context (in ctx.extra, so they go with it), least recently used
+# dropped and released beyond this: about 0.5 MB of llvmpipe code each (issue 14 measured
+# 2,002 programs in 1,186 MB), and a scene uses a few dozen at most.
+PROGRAMS_PER_CONTEXT = 128
+_EXTRA_KEY = "pbrlab_programs"
 
 
 def fragment_template(stem: str, language: str) -> str:
@@ -101,23 +106,40 @@ def hlsl_template_source(name: str, defines: dict, surface: Path | None = None) 
 
 
 def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Path | None = None):
-    """Compile (once per context, shader pair, defines and surface file) a harness program.
+    """Compile (once per context, shader pair, defines and surface file version) a program.
 
     ``frag`` ending in ``.hlsl`` builds the HLSL twin (module doc). ``surface`` is a file
     defining ``surf(Input IN, inout ...)`` in the fragment's language; None uses the
-    harness's default_surface.inc.
+    harness's default_surface.inc. The cached program is rebuilt when the surface file,
+    a template or any file they include changed on disk (file_identity.FileCache).
     """
-    key = (id(ctx), vert, frag, tuple(sorted(defines.items())), surface)
-    if key not in _PROGRAMS:
+    key = (vert, frag, tuple(sorted(defines.items())), surface)
+
+    def build():
         vertex = template_source(vert, defines)
+        paths = [TEMPLATES / vert, TEMPLATES / frag, *vertex.paths]
         if frag.endswith(FRAGMENT_SUFFIX["hlsl"]):
             fragment = hlsl_template_source(frag, defines, surface)
+            search = [TEMPLATES] + ([surface.parent] if surface is not None else []) + [hlsl.HLSL_ROOT]
+            paths += include_closure((TEMPLATES / frag).read_text(encoding="utf-8"), search)
+            if surface is not None:
+                paths += [surface, *include_closure(shaders.read_source(surface), search, surface.parent)]
         else:
             fragment = template_source(frag, defines, surface)
+            paths += fragment.paths
         program = shaders.build_program(ctx, vertex, fragment)
         program.extra = {"members": _struct_members(program)}
-        _PROGRAMS[key] = program
-    return _PROGRAMS[key]
+        return program, paths
+
+    return _program_cache(ctx).get(key, build)
+
+
+def _program_cache(ctx) -> FileCache:
+    extra = ctx.extra if isinstance(ctx.extra, dict) else {}
+    if _EXTRA_KEY not in extra:
+        extra[_EXTRA_KEY] = FileCache(PROGRAMS_PER_CONTEXT, lambda program: program.release())
+        ctx.extra = extra
+    return extra[_EXTRA_KEY]
 
 
 def _struct_members(program) -> dict:

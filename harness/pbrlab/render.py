@@ -10,22 +10,28 @@ the exact curve (``pbrlab.srgb8``), so the display image is the same on every ma
 
 from __future__ import annotations
 
+import dataclasses
+import os
 from dataclasses import dataclass
+from pathlib import Path
 
 import moderngl
 import numpy as np
 
-from . import features, gl, ibl, meshes, resource_cache, targets
+from . import features, gl, gl_limits, ibl, meshes, resource_cache, surface_bindings, targets
 from . import srgb8 as srgb8_codes
 from .unity import cubemap as unity_cubemap
 from .unity import program as unity_program
 from .unity import tessellate as unity_tessellate
 from .camera import camera_frame
-from .errors import SceneError
+from .errors import PbrlabError, SceneError
+from .file_identity import include_closure
+from .hlsl import HLSL_ROOT
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
 from .programs import set_uniform as _set
 from .programs import set_uniform_array as _set_array
 from .scene import HDR_TARGETS, Scene
+from .shaders import GLSL_ROOT
 
 _UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
 # Triangles of the unit cube, counter-clockwise seen from outside.
@@ -176,6 +182,40 @@ def _draw_order(scene: Scene, frame):
     return opaque + blended
 
 
+def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
+    """Every file a render of ``scene`` reads, with its role: what an output must not be."""
+    found = []
+    if scene.environment is not None and scene.environment.path is not None:
+        found.append((scene.environment.path, "the scene's environment image"))
+    for name, material in scene.materials.items():
+        for slot, path in material.textures.items():
+            if isinstance(path, (str, Path)):  # not a glTF image, decoded from the glTF file's bytes
+                found.append((path, f"material {name}'s {slot} texture"))
+        if material.surface is not None:
+            for surface in {material.surface, material.surface.with_suffix(".hlsl")}:
+                if surface.is_file():
+                    found.append((surface, f"material {name}'s surface file"))
+                    text = surface.read_text(encoding="utf-8", errors="replace")
+                    found += [(p, f"a file material {name}'s surface includes") for p in
+                              include_closure(text, [surface.parent, GLSL_ROOT, HLSL_ROOT], surface.parent)]
+    for i, obj in enumerate(scene.objects):
+        if obj.mesh_path is not None:
+            found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
+    return found
+
+
+def checked_size(size) -> tuple[int, int]:
+    """``size`` as (width, height): two integers >= 1 (numpy integers too)."""
+    try:
+        w, h = size
+    except (TypeError, ValueError):
+        raise PbrlabError(f"size={size!r}: expected (width, height)") from None
+    for v in (w, h):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise PbrlabError(f"size={size!r}: expected (width, height), two integers >= 1")
+    return int(w), int(h)
+
+
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  transfer: str = "EXACT", specialise: bool = True,
                  language: str = "glsl", mesh_fragment: str | None = None) -> Rendering:
@@ -198,14 +238,22 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    if not isinstance(scene, Scene):
+        hint = (" (a file path: read it with pbrlab.scene.load_scene first)"
+                if isinstance(scene, (str, os.PathLike)) else
+                " (a dict: check it with pbrlab.scene.parse_scene first)" if isinstance(scene, dict) else "")
+        raise PbrlabError(f"render_scene takes a Scene, got {type(scene).__name__}{hint}")
+    if size is not None:  # on a copy: the caller's Scene keeps its own size
+        scene = dataclasses.replace(scene, camera=dataclasses.replace(
+            scene.camera, size=checked_size(size)))
     if scene.camera.ortho_half_height is not None and scene.spheres:
         raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
     mesh_fragment = mesh_fragment or fragment_template("mesh", language)
     surfaces = {name: surface_file(m.surface, language) if m.unity is None else None
                 for name, m in scene.materials.items()}
+    surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     ctx = gl.make_current(ctx or gl.shared_context())
-    if size is not None:
-        scene.camera.size = tuple(size)
+    gl_limits.check_scene(ctx, scene)
     frame = camera_frame(scene.camera, scene_radius(scene))
     plan = features.plan_programs(scene, specialise)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]

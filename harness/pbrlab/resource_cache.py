@@ -3,7 +3,7 @@ GPU textures per GL context (the environment's GGX prefilter and SH9, the DFG ta
 material textures, neutral 1x1 stand-ins) and, in meshes.mesh_data, mesh vertex data per
 process.
 
-Entries are keyed by file identity (resolved path, size, modification time in ns), so a
+Entries are keyed by file identity (resolved path, size, modification time in ns, inode), so a
 file rewritten between renders is read again and an unchanged one is read once. GPU
 entries live in the context's ``extra`` dict and go with the context; each kind is a small
 LRU that releases the textures it evicts. Before this cache, ``render_scene`` read,
@@ -23,6 +23,8 @@ import numpy as np
 
 from . import ibl, targets
 from .environment import environment_image, environment_sh
+from .file_identity import file_key as _file_key
+from .errors import PbrlabError
 from .images import read_image
 
 ENVIRONMENTS_PER_CONTEXT = 4
@@ -31,10 +33,9 @@ _EXTRA_KEY = "pbrlab_resource_cache"
 
 
 def file_key(path: Path) -> tuple:
-    """(resolved path, size, mtime_ns): changes when the file is rewritten."""
-    resolved = Path(path).resolve()
-    stat = resolved.stat()
-    return str(resolved), stat.st_size, stat.st_mtime_ns
+    """(resolved path, size, mtime_ns, inode): changes when the file is rewritten or
+    replaced (file_identity.file_key)."""
+    return _file_key(path)
 
 
 class _LRU:
@@ -94,17 +95,19 @@ class ContextCache:
             np.zeros((9, 3)), self.ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")))
 
     def texture(self, source, srgb: bool, sampler: tuple | None = None) -> moderngl.Texture:
-        """An image as a texture (colour data decoded from sRGB when ``srgb``): a file path,
-        or an in-memory image with ``key`` (a tuple naming it) and ``pixels()`` (glTF images:
-        pbrlab/gltf). ``sampler``: (repeat_x, repeat_y, min_filter, mag_filter) with
-        moderngl's filter constants; None is repeat with trilinear filtering."""
+        """An image as a texture (colour data decoded from sRGB when ``srgb``): a file path
+        (checked by _file_texture), or an in-memory image with ``key`` (a tuple naming it)
+        and ``pixels()`` (glTF images: pbrlab/gltf). ``sampler``: (repeat_x, repeat_y,
+        min_filter, mag_filter) with moderngl's filter constants; None is repeat with
+        trilinear filtering."""
         if isinstance(source, (str, Path)):
-            key, load = ("file", *file_key(source)), lambda: read_image(source)
+            key, upload = ("file", *file_key(source)), lambda: _file_texture(self.ctx, source, srgb)
         else:
-            key, load = ("memory", *source.key), source.pixels
+            key = ("memory", *source.key)
+            upload = lambda: targets.upload_texture(self.ctx, source.pixels(), srgb=srgb)  # noqa: E731
 
         def make():
-            tex = targets.upload_texture(self.ctx, load(), srgb=srgb)
+            tex = upload()
             if sampler is not None:
                 tex.repeat_x, tex.repeat_y = bool(sampler[0]), bool(sampler[1])
                 tex.filter = (sampler[2], sampler[3])
@@ -116,6 +119,20 @@ class ContextCache:
         texel = tuple(float(x) for x in texel)
         return self._textures.get(("constant", texel), lambda: self.ctx.texture(
             (1, 1), 4, np.array(texel, np.float32).tobytes(), dtype="f4"))
+
+
+def _file_texture(ctx, path: Path, srgb: bool) -> moderngl.Texture:
+    """Upload an image file; non-finite texels and oversize images are refused by name
+    (a NaN normal map once rendered black without a word)."""
+    image = read_image(path)
+    if image.dtype != np.uint8:
+        bad = int((~np.isfinite(image)).any(axis=-1).sum())
+        if bad:
+            raise PbrlabError(f"texture {path}: {bad} texel(s) are NaN or Inf; textures must be finite")
+    try:
+        return targets.upload_texture(ctx, image, srgb=srgb)
+    except PbrlabError as exc:
+        raise PbrlabError(f"texture {path}: {exc}") from None
 
 
 def context_cache(ctx: moderngl.Context) -> ContextCache:

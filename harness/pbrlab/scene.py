@@ -2,6 +2,8 @@
 
 A bad field raises SceneError naming its path, e.g.
 ``scenes/x.json: materials.gold.smoothness: expected a number in [0, 1], got 1.5``.
+Every document first passes json_input (duplicate keys, non-finite or beyond-float32
+numbers, numpy values, nesting depth), so each field parser sees plain JSON types.
 Unknown fields are errors too (a typo must not be silently ignored). Relative file
 paths (meshes, textures, environments) are resolved against the scene file's folder.
 
@@ -36,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import unity
+from . import json_input, unity
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -219,17 +221,29 @@ class _Reader:
 
     def choice(self, key, options, default=None):
         value = self.raw(key, default)
-        if value not in options:
-            self.fail(f"expected one of {', '.join(options)}, got {json.dumps(value)}", key)
+        # same type and value: 0 is not False, 1.0 is not True, a list is no option at all
+        if not any(type(value) is type(o) and value == o for o in options):
+            shown = ", ".join(o if isinstance(o, str) else json.dumps(o) for o in options)
+            self.fail(f"expected one of {shown}, got {json.dumps(value)}", key)
         return value
 
     def file(self, key, base: Path, value=None):
         value = self.raw(key) if value is None else value
-        if not isinstance(value, str) or not value:
+        if not isinstance(value, str) or not value or "\x00" in value:
             self.fail(f"expected a file path, got {json.dumps(value)}", key)
-        path = (base / value).resolve()
+        try:
+            path = (base / value).resolve(strict=True)
+        except FileNotFoundError:
+            self.fail(f"file not found: {base / value}", key)
+        except (OSError, RuntimeError) as exc:  # a symlink loop, a component that is a file
+            self.fail(f"cannot open {base / value}: {getattr(exc, 'strerror', None) or exc}", key)
         if not path.is_file():
-            self.fail(f"file not found: {path}", key)
+            self.fail(f"not a file: {path}", key)
+        try:
+            with open(path, "rb"):
+                pass
+        except OSError as exc:
+            self.fail(f"cannot read {path}: {exc.strerror or exc}", key)
         return path
 
     def finish(self):
@@ -394,7 +408,7 @@ def _transform(r: _Reader) -> np.ndarray:
 
 def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     material = r.raw("material")
-    if material not in materials:
+    if not isinstance(material, str) or material not in materials:
         r.fail(f"unknown material {json.dumps(material)}; defined: {', '.join(materials) or 'none'}",
                "material")
     obj = SceneObject(material=material)
@@ -474,6 +488,7 @@ def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
     base = Path(base or ".")
+    data = json_input.normalize(data, origin)  # a checked copy: the caller's data is never changed
     top = _Reader(data, "", origin)
     camera = _camera(top.child("camera")) if top.has("camera") else None
     lights_raw = top.raw("lights", [])
@@ -517,12 +532,4 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
 def load_scene(path) -> Scene:
     """Read and validate a scene file."""
     path = Path(path)
-    if not path.is_file():
-        raise SceneError(f"{path}: no such scene file")
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except json.JSONDecodeError as exc:
-        raise SceneError(f"{path}:{exc.lineno}:{exc.colno}: invalid JSON: {exc.msg}") from None
-    except UnicodeDecodeError:
-        raise SceneError(f"{path}: not a UTF-8 text file") from None
-    return parse_scene(data, str(path), path.parent)
+    return parse_scene(json_input.read_json_file(path), str(path), path.parent)

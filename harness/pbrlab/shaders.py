@@ -18,12 +18,13 @@ includer). A message "N:L(col): error: ..." maps back to ``path:line:col``.
 from __future__ import annotations
 
 import re
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import moderngl
 
-from .errors import PbrlabError, ShaderCompileError
+from .errors import LoopLimitWarning, PbrlabError, ShaderCompileError
 from .locations import locate
 
 GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
@@ -50,6 +51,7 @@ class Source:
 
     text: str
     files: list[str] = field(default_factory=list)
+    paths: list[Path] = field(default_factory=list)  # every include file read (resolved)
 
     def map_messages(self, log: str) -> str:
         """Rewrite compiler messages from 'N:L(C)' to 'path:L:C'."""
@@ -136,7 +138,8 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             if target in stack:
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
-            body = target.read_text(encoding="utf-8")
+            body = read_source(target, f"{display}:{number}: ")
+            source.paths.append(target)
             inside_conditional = conditional or depth > 0
             if target in emitted_guarded:
                 lines_out.append(f"// ---- {m.group(1)}: already above (include guard)")
@@ -157,12 +160,29 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
     return source
 
 
+def read_source(path: Path, where: str = "") -> str:
+    """A shader file's text; unreadable or non-UTF-8 files raise PbrlabError naming it
+    (``where``: the includer's file and line, when there is one)."""
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise PbrlabError(f"{where}cannot read shader file {path}: {exc.strerror or exc}") from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise PbrlabError(f"{where}{path}:{line}: not UTF-8 text (byte 0x{data[exc.start]:02x} "
+                          f"at offset {exc.start}); save the shader as UTF-8") from None
+
+
 def expand_file(path: str | Path, include_dirs=(), line_directives: bool = True) -> Source:
     path = Path(path)
     if not path.is_file():
         raise PbrlabError(f"{path}: no such shader file")
-    return expand(path.read_text(encoding="utf-8"), str(path),
-                  include_dirs=(path.parent, *include_dirs), line_directives=line_directives)
+    source = expand(read_source(path), str(path),
+                    include_dirs=(path.parent, *include_dirs), line_directives=line_directives)
+    source.paths.insert(0, path.resolve())
+    return source
 
 
 def amalgamate(entry: str | Path, include_dirs=()) -> str:
@@ -170,8 +190,44 @@ def amalgamate(entry: str | Path, include_dirs=()) -> str:
     return expand_file(entry, include_dirs, line_directives=False).text
 
 
+# llvmpipe (Mesa's gallivm) ends every loop after this many iterations, without an error:
+# LP_MAX_TGSI_LOOP_ITERATIONS in src/gallium/auxiliary/gallivm/lp_bld_limits.h.
+LLVMPIPE_LOOP_LIMIT = 65535
+# for (int i = START; i < N; ...) / i <= N with literal START and N
+_FOR_LOOP = re.compile(r"\bfor\s*\(\s*(?:int|uint|float)?\s*(\w+)\s*=\s*(-?\d+)[uU]?\s*;"
+                       r"\s*\1\s*(<=?)\s*(\d+)[uU]?\s*;")
+_LINE_DIRECTIVE = re.compile(r"^\s*#\s*line\s+(\d+)(?:\s+(\d+))?")
+
+
+def loop_limit_warnings(source: Source, limit: int = LLVMPIPE_LOOP_LIMIT) -> list[str]:
+    """``path:line: ...`` for each for-loop with literal bounds running past ``limit``.
+    Loops with bounds known only at run time are not seen."""
+    found = []
+    file_index, line_number = 0, 0
+    for raw in source.text.splitlines():
+        m = _LINE_DIRECTIVE.match(raw)
+        if m:  # the next line is line L of file K (#line K * LINE_BLOCK + L K)
+            file_index, next_line = divmod(int(m.group(1)), LINE_BLOCK)
+            line_number = next_line - 1
+            continue
+        line_number += 1
+        loop = _FOR_LOOP.search(raw)
+        if loop:
+            count = int(loop.group(4)) - int(loop.group(2)) + (1 if loop.group(3) == "<=" else 0)
+            if count > limit:
+                where = source.files[file_index] if file_index < len(source.files) else "<shader>"
+                found.append(f"{where}:{line_number}: a loop of {count} iterations; this renderer "
+                             f"stops every loop after {limit} and uses the partial result")
+    return found
+
+
 def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> moderngl.Program:
-    """Compile and link; errors are reported at the original file and line."""
+    """Compile and link; errors are reported at the original file and line. On llvmpipe a
+    loop with literal bounds past its iteration cap gives a LoopLimitWarning naming it."""
+    if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
+        for stage in (vertex, fragment):
+            for message in loop_limit_warnings(stage):
+                warnings.warn(message, LoopLimitWarning, stacklevel=2)
     try:
         return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
     except moderngl.Error as exc:

@@ -21,6 +21,7 @@ from .errors import PbrlabError
 GL_SRGB8_ALPHA8 = 0x8C43  # OpenGL 3.3 core, table 8.13 (sized internal formats)
 GL_FRAMEBUFFER_SRGB = 0x8DB9  # OpenGL 3.3 core, section 4.1.8 (sRGB conversion)
 HDR_DTYPES = {"f16": "f2", "f32": "f4"}
+_BYTES_PER_PIXEL = {"srgb8": 4, "unorm8": 4, "f16": 8, "f32": 16}
 
 
 class Target:
@@ -39,8 +40,17 @@ class Target:
             self.color = ctx.texture(self.size, 4, dtype=HDR_DTYPES[kind])
         else:
             raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, unorm8, f16 or f32")
-        self.depth = ctx.depth_renderbuffer(self.size) if depth else None
-        self.fbo = ctx.framebuffer([self.color], self.depth)
+        self.depth = None
+        try:
+            self.depth = ctx.depth_renderbuffer(self.size) if depth else None
+            self.fbo = ctx.framebuffer([self.color], self.depth)
+        except moderngl.Error as exc:  # e.g. "framebuffer is incomplete": out of memory
+            self.color.release()
+            if self.depth is not None:
+                self.depth.release()
+            mib = w * h * (_BYTES_PER_PIXEL[kind] + (4 if depth else 0)) / 2**20
+            raise PbrlabError(f"cannot make a {w}x{h} {kind} render target ({mib:.0f} MiB): "
+                              f"{str(exc).strip() or 'GL error'}; render smaller (--size)") from None
 
     def use(self):
         """Bind for drawing; sRGB encoding is on exactly while an sRGB target is bound."""
@@ -100,6 +110,10 @@ def upload_texture(ctx: moderngl.Context, image: np.ndarray, *, srgb: bool) -> m
     if image.ndim == 2:
         image = image[..., None]
     h, w, c = image.shape
+    most = int(ctx.info.get("GL_MAX_TEXTURE_SIZE", 16384))
+    if w > most or h > most:
+        raise PbrlabError(f"a {w}x{h} texture: this GL's textures are at most {most} pixels "
+                          "per side (GL_MAX_TEXTURE_SIZE)")
     if image.dtype == np.uint8:
         dtype = "f1"
         if srgb:

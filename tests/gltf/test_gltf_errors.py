@@ -166,3 +166,31 @@ def test_texture_reading_a_missing_uv_set_is_named(tmp_path, capsys):
     doc["materials"][0]["occlusionTexture"] = {"index": 0, "texCoord": 1}
     _refused(tmp_path, capsys, doc, 'meshes[0].primitives[0]: material "paint" reads TEXCOORD_1 '
                                     "(occlusion texture), which the primitive lacks")
+
+
+@pytest.mark.parametrize("path, value, message", [
+    (("materials",), "gold", "materials: expected an array, got \"gold\""),
+    (("nodes", 0), 3, "nodes[0]: expected an object, got 3"),
+    (("nodes", 0, "mesh"), "a", "nodes[0].mesh: expected an index into meshes, got \"a\""),
+    (("nodes", 0, "mesh"), 0.0, "nodes[0].mesh: expected an index into meshes, got 0.0"),
+    (("accessors", 0, "count"), True, "accessors[0]: count must be a positive integer, got true"),
+    (("meshes", 0, "primitives", 0, "mode"), 4.0, "meshes[0].primitives[0]: mode must be one of 0 (POINTS)"),
+    (("materials", 0, "doubleSided"), "yes", "materials[0]: doubleSided must be true or false, got \"yes\""),
+    (("materials", 0, "name"), 5, "materials[0]: name must be a string, got 5"),
+    (("materials", 0, "alphaMode"), "opaque", "materials[0]: alphaMode must be one of OPAQUE, MASK, BLEND"),
+    (("materials", 0, "emissiveFactor"), [0, 0], "materials[0]: emissiveFactor must be 3 numbers in [0, 1]"),
+    (("bufferViews", 0, "byteStride"), 2, "bufferViews[0]: byteStride must be an integer in [4, 252], got 2"),
+    (("nodes", 0, "rotation"), [0, 0, 0, 2], "nodes[0]: rotation must be 4 numbers in [-1, 1]"),
+    (("scenes", 0, "nodes"), [0, 0], "scenes[0].nodes: names an index twice"),
+    (("extensionsUsed",), [1], "extensionsUsed[0]: expected a string, got 1"),
+    (("meshes", 0, "primitives", 0, "attributes"), [], "meshes[0].primitives[0].attributes: expected an object"),
+])
+def test_a_field_of_the_wrong_type_or_range_is_named_by_path(tmp_path, capsys, path, value, message):
+    """The schema's types and ranges (spec section 5), read through gltf/fields.py: no
+    Python exception escapes, the message names the field's path."""
+    doc = quad_document()
+    node = doc
+    for key in path[:-1]:
+        node = node[key]
+    node[path[-1]] = value
+    _refused(tmp_path, capsys, doc, message)

@@ -5,7 +5,7 @@ import os
 import numpy as np
 import pytest
 
-from pbrlab import images
+from pbrlab import images, outputs
 from pbrlab.errors import PbrlabError
 
 
@@ -86,7 +86,7 @@ def test_parent_that_is_a_file_is_a_clear_error(tmp_path):
 def test_unwritable_directory_is_a_clear_error(tmp_path, monkeypatch):
     # root may write anywhere, so the permission check is driven through os.access.
     real_access = os.access
-    monkeypatch.setattr(images.os, "access",
+    monkeypatch.setattr(outputs.os, "access",
                         lambda p, mode: False if str(p) == str(tmp_path) else real_access(p, mode))
     with pytest.raises(PbrlabError, match=r"cannot write .*x\.png: directory .* is not writable"):
         images.write_png(tmp_path / "x.png", np.zeros((2, 2, 3), np.uint8))
@@ -103,7 +103,7 @@ def test_failed_write_leaves_the_old_file_intact_and_no_temporary(tmp_path, monk
         raise OSError("disk full")
 
     monkeypatch.setattr(images, "_encode", encode_half_then_fail)
-    with pytest.raises(OSError, match="disk full"):
+    with pytest.raises(PbrlabError, match=r"cannot write .*chart\.png: disk full"):
         images.write_png(target, np.full((4, 4, 3), 200, np.uint8))
     assert target.read_bytes() == good
     assert [p.name for p in tmp_path.iterdir()] == ["chart.png"]

@@ -57,12 +57,12 @@ def test_compile_error_names_the_hlsl_file_and_line(tmp_path):
 
 def test_missing_toolchain_is_a_clear_error(monkeypatch):
     monkeypatch.setattr(hlsl, "GLSLANG", "glslangValidator-not-installed")
-    hlsl._hlsl_to_glsl_cached.cache_clear()
+    hlsl._CROSS_COMPILED.clear()
     with pytest.raises(PbrlabError, match="glslangValidator-not-installed not found on PATH.*setup.sh"):
         evaluate("x * 3.0", [], language="hlsl", x=1.0)
     monkeypatch.undo()
     monkeypatch.setattr(hlsl, "SPIRV_CROSS", "spirv-cross-not-installed")
-    hlsl._hlsl_to_glsl_cached.cache_clear()
+    hlsl._CROSS_COMPILED.clear()
     with pytest.raises(PbrlabError, match="spirv-cross-not-installed not found"):
         evaluate("x * 5.0", [], language="hlsl", x=1.0)
 
@@ -75,9 +75,9 @@ def test_language_and_extension_arguments_are_checked():
 
 
 def test_programs_are_cached():
-    hlsl._hlsl_to_glsl_cached.cache_clear()
+    hlsl._CROSS_COMPILED.clear()
     x = np.arange(4, dtype=np.float32)
     evaluate("x * 7.0", [], language="hlsl", x=x)
-    misses = hlsl._hlsl_to_glsl_cached.cache_info().misses
+    builds = hlsl._CROSS_COMPILED.builds
     evaluate("x * 7.0", [], language="hlsl", x=x + 1)
-    assert hlsl._hlsl_to_glsl_cached.cache_info().misses == misses  # no new glslang/spirv-cross run
+    assert hlsl._CROSS_COMPILED.builds == builds  # no new glslang/spirv-cross run

@@ -6,9 +6,8 @@ import argparse
 
 from pathlib import Path
 
-from .. import console, shaders
+from .. import console, outputs, shaders
 from ..errors import PbrlabError
-from ..images import atomic_output
 
 
 def run(args) -> int:
@@ -18,12 +17,14 @@ def run(args) -> int:
         if candidate is None:
             raise PbrlabError(f"{args.entry}: no such file (also searched the include path)")
         entry = candidate
-    text = shaders.amalgamate(entry, include_dirs=args.include_dir)
+    source = shaders.expand_file(entry, args.include_dir, line_directives=False)
+    text = source.text
     if args.output == "-":
         print(text, end="")
         return 0
-    with atomic_output(args.output) as tmp:
-        Path(tmp).write_text(text, encoding="utf-8")
+    inputs = [(path, "a file it amalgamates") for path in source.paths]
+    with outputs.transaction([args.output], inputs) as tx:
+        tx.write_text(args.output, text)
     console.note(f"wrote {args.output} ({len(text.splitlines())} lines)")
     return 0
 

@@ -16,14 +16,20 @@ from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import console, contact_sheets, gl, goldens, images
+    from .. import console, contact_sheets, gl, goldens, images, outputs
+    from ..errors import PbrlabError
     from ..charts import CHARTS
     from ..golden_scenes import GOLDEN_SCENES
     from ..render import render_scene
     from .render import check_finite
 
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise PbrlabError(f"--out {out}: exists and is not a directory") from None
+    except OSError as exc:
+        raise PbrlabError(f"--out {out}: cannot create the folder: {exc.strerror or exc}") from None
     ctx = gl.shared_context(args.backend)
     info = gl.context_info(ctx)
     console.note(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
@@ -35,8 +41,9 @@ def run(args) -> int:
         rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
-        images.write_png(png, rendering.srgb8)
-        images.write_exr(exr, rendering.linear, metadata=rendering.info)
+        with outputs.transaction([png, exr]) as tx:  # the pair, or neither
+            images.write_png(png, rendering.srgb8, tx=tx)
+            images.write_exr(exr, rendering.linear, metadata=rendering.info, tx=tx)
         try:
             result = goldens.check_golden(name, rendering.linear, rendering.srgb8, info=info,
                                           update=False, root=args.goldens,

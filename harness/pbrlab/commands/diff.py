@@ -9,10 +9,11 @@ with the files (printed by the cli).
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 
-from .. import compare, images
+from .. import compare, images, outputs
 from ..errors import PbrlabError
 
 
@@ -58,6 +59,10 @@ def _describe(image: np.ndarray) -> str:
 
 
 def run(args) -> int:
+    if args.heatmap:  # before any work: the heatmap must not replace an image it compares
+        outputs.refuse_inputs([args.heatmap], [(args.expected, "the expected image"),
+                                               (args.obtained, "the obtained image")])
+        outputs.check_writable_target(Path(args.heatmap))
     expected = images.read_image(args.expected)
     obtained = images.read_image(args.obtained)
     if expected.dtype != obtained.dtype:

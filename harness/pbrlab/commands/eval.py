@@ -18,6 +18,15 @@ from ..errors import PbrlabError
 MAX_ROWS = 10000
 
 
+def _number(text: str) -> float:
+    """A float from the command line; a finite literal that overflows (1e400) is refused
+    ('inf' and 'nan' spelled out are values the evaluator takes)."""
+    value = float(text)
+    if math.isinf(value) and "inf" not in text.strip().lower():
+        raise PbrlabError(f"{text.strip()} overflows to infinity; write inf if you mean it")
+    return value
+
+
 def _parse_var(text: str):
     name, sep, spec = text.partition("=")
     if not sep or not name:
@@ -25,9 +34,11 @@ def _parse_var(text: str):
     try:
         if ":" in spec:
             start, stop, count = spec.split(":")
-            values = np.linspace(float(start), float(stop), int(count))
+            if not 1 <= int(count) <= MAX_ROWS:
+                raise PbrlabError(f"--var {text!r}: count must be 1..{MAX_ROWS}")
+            values = np.linspace(_number(start), _number(stop), int(count))
         else:
-            values = np.array([float(v) for v in spec.split(",")])
+            values = np.array([_number(v) for v in spec.split(",")])
     except ValueError:
         raise PbrlabError(f"--var {text!r}: expected NAME=start:stop:count or NAME=v1,v2,...") from None
     if values.size == 0:
@@ -38,12 +49,12 @@ def _parse_var(text: str):
 def _parse_vec(text: str, n: int):
     name, sep, spec = text.partition("=")
     try:
-        values = [float(v) for v in spec.split(",")]
+        values = [_number(v) for v in spec.split(",")]
     except ValueError:
         values = []
     if not sep or len(values) != n:
         raise PbrlabError(f"--vec{n} {text!r}: expected NAME=" + ",".join("x" * n))
-    return name.strip(), np.array(values, np.float32)
+    return name.strip(), np.array(values, np.float64)  # the evaluator checks the float32 range
 
 
 def _format(value: float) -> str:
@@ -54,12 +65,18 @@ def run(args) -> int:
     from .. import evaluator
 
     grid = [_parse_var(v) for v in args.var]
+    given = [name for name, _ in grid] + [
+        spec.partition("=")[0].strip() for specs in (args.vec2, args.vec3, args.vec4) for spec in specs]
+    twice = sorted({name for name in given if given.count(name) > 1})
+    if twice:
+        raise PbrlabError(f"input {twice[0]!r} is given more than once (--var/--vec); give each "
+                          "name once (list values with --var NAME=v1,v2,...)")
     rows = math.prod(len(values) for _, values in grid)
     if rows > MAX_ROWS:
         raise PbrlabError(f"the grid has {rows} rows; a table is limited to {MAX_ROWS}")
     names = [name for name, _ in grid]
     combos = np.array(list(itertools.product(*[values for _, values in grid])), np.float64)
-    inputs = {name: combos[:, i].astype(np.float32) for i, name in enumerate(names)}
+    inputs = {name: combos[:, i] for i, name in enumerate(names)}  # float64: checked by the evaluator
     for n, specs in ((2, args.vec2), (3, args.vec3), (4, args.vec4)):
         for spec in specs:
             name, value = _parse_vec(spec, n)

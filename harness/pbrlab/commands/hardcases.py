@@ -11,6 +11,8 @@ import argparse
 import json
 import math
 
+from ..errors import PbrlabError
+
 
 def _json_value(x):
     x = [float(v) for v in (x if hasattr(x, "__len__") else [x])]
@@ -22,6 +24,11 @@ def run(args) -> int:
 
     cases = catalogue.catalogue()
     if args.function:
+        known = sorted({c.function.name for c in cases})
+        unknown = [name for name in args.function if name not in known]
+        if unknown:
+            raise PbrlabError(f"--function {unknown[0]}: no hard case covers it; the catalogue "
+                              f"covers {', '.join(known)}")
         cases = [c for c in cases if c.function.name in args.function]
     results = hardcases_run.run_catalogue(cases)
     failures = [r for r in results if not r.ok]

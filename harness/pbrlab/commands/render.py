@@ -1,6 +1,10 @@
 """`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH] [--language hlsl]`: render a scene file.
 
-Writes atomically: a failed render leaves no partial file and never replaces a good one.
+Writes atomically and all or nothing: the PNG and the EXR are written to temporary files,
+each fsync'ed and read back, and only then renamed over the targets, so a failed render or
+write (a full disk, SIGTERM) leaves no partial file and never replaces a good one. An
+output that is one of the scene's own files (the scene, a texture, a mesh, a surface or a
+file it includes, the environment) is refused before rendering.
 """
 
 from __future__ import annotations
@@ -26,7 +30,8 @@ def parse_size(text: str | None):
 def check_finite(linear: np.ndarray, what: str):
     bad = int((~np.isfinite(linear)).any(axis=-1).sum())
     if bad:
-        raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf; nothing was written")
+        raise PbrlabError(f"{what}: {bad} pixels are NaN or Inf (a surface function writing NaN or "
+                          "Inf into an output field, or a non-finite input); nothing was written")
 
 
 def load_scene_with_gltf_warnings(path):
@@ -71,8 +76,8 @@ def load_any_scene(path, camera=None, environment=None, size=None):
 
 
 def run(args) -> int:
-    from .. import gl, images
-    from ..render import render_scene
+    from .. import gl, images, outputs
+    from ..render import input_files, render_scene
 
     if not args.output and not args.hdr:
         raise PbrlabError("nothing to write: give -o OUT.png and/or --hdr OUT.exr")
@@ -84,17 +89,20 @@ def run(args) -> int:
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
-    rendering = render_scene(scene, context, size=size,
-                             specialise=not args.no_specialise, language=args.language)
-    kind = "specialised" if rendering.programs.specialised else "full"
-    console.note(f"{rendering.programs.distinct} {kind} program(s)")
-    check_finite(rendering.linear, args.scene)
-    if args.hdr:
-        images.write_exr(args.hdr, rendering.linear, metadata=rendering.info)
-        console.note(f"wrote {args.hdr}")
-    if args.output:
-        images.write_png(args.output, rendering.srgb8)
-        console.note(f"wrote {args.output}")
+    targets = [p for p in (args.hdr, args.output) if p]
+    with outputs.transaction(targets, [(args.scene, "the scene file")]
+                             + input_files(scene, args.language)) as tx:
+        rendering = render_scene(scene, context, size=size,
+                                 specialise=not args.no_specialise, language=args.language)
+        kind = "specialised" if rendering.programs.specialised else "full"
+        console.note(f"{rendering.programs.distinct} {kind} program(s)")
+        check_finite(rendering.linear, args.scene)
+        if args.hdr:
+            images.write_exr(args.hdr, rendering.linear, metadata=rendering.info, tx=tx)
+        if args.output:
+            images.write_png(args.output, rendering.srgb8, tx=tx)
+    for path in targets:
+        console.note(f"wrote {path}")
     return 0
 
 

@@ -4,7 +4,9 @@
     result.scene       # a pbrlab.scene.Scene: one mesh object per primitive and node
     result.warnings    # one line per extension or feature not honoured
 
-``document`` reads the file and its buffers, ``accessors`` checks every accessor against
+``fields`` is the one typed reader every module reads the JSON through (type and range
+of each field, refused by path), ``document`` reads the file and its buffers and checks
+the top level, ``accessors`` checks every accessor against
 its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data,
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
 converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises
@@ -24,7 +26,7 @@ from ..errors import SceneError
 from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
-from .document import read_document
+from .document import LIGHTS, read_document
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -64,14 +66,15 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         if message not in messages:
             messages.append(message)
 
-    for name in doc.json.get("extensionsRequired", []):
+    root = doc.root
+    for name in root.strings("extensionsRequired"):
         if name not in HONOURED_EXTENSIONS:
             doc.fail("extensionsRequired", f"{name} is required by the file and not supported "
                                            f"(supported: {', '.join(HONOURED_EXTENSIONS)})")
     for key in ("animations", "skins"):
-        if doc.json.get(key):
-            warn(f"{key} ignored ({len(doc.json[key])}; the rest pose is drawn)")
-    for name in doc.json.get("extensions", {}):
+        if doc.items(key):
+            warn(f"{key} ignored ({len(doc.items(key))}; the rest pose is drawn)")
+    for name, _ in root.extensions():
         if name != "KHR_lights_punctual":
             warn(f"{name} ignored (top level)")
 
@@ -81,39 +84,34 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
     for node_index, world in walk(doc, None):
-        node = doc.json["nodes"][node_index]
-        where = f"nodes[{node_index}]"
-        for ext, spec in node.get("extensions", {}).items():
+        node = doc.items("nodes")[node_index]
+        if node.has("name"):
+            node.string("name")
+        for ext, spec in node.extensions():
             if ext == "KHR_lights_punctual":
-                lights.append(punctual_light(doc, spec.get("light") if isinstance(spec, dict) else None,
-                                             world, f"{where}.extensions.KHR_lights_punctual.light"))
+                light = spec.index("light", LIGHTS, required=True)
+                lights.append(punctual_light(doc, light, world, node.path))
             else:
                 warn(f"{ext} ignored in node {node_index}")
-        if "camera" in node:
-            placed_cameras.append((node["camera"], world, f"{where}.camera"))
-        if "skin" in node:
+        camera_index = node.index("camera", "cameras")
+        if camera_index is not None:
+            placed_cameras.append((camera_index, world, f"{node.path}.camera"))
+        if node.index("skin", "skins") is not None:
             warn(f"skin ignored in node {node_index}")
-        if "mesh" not in node:
+        mesh_index = node.index("mesh", "meshes")
+        if mesh_index is None:
             continue
-        mesh_index = node["mesh"]
-        mesh = doc.get("meshes", mesh_index, f"{where}.mesh")
-        primitives = mesh.get("primitives")
-        if not isinstance(primitives, list) or not primitives:
-            doc.fail(f"meshes[{mesh_index}]", "needs a non-empty list of primitives")
+        mesh = doc.items("meshes")[mesh_index]
+        primitives = mesh.objects("primitives", min_items=1)
         flip = bool(np.linalg.det(world[:3, :3]) < 0)
         if abs(np.linalg.det(world[:3, :3])) < 1e-30:
             warn(f"node {node_index} ignored (its transform has zero scale)")
             continue
         for p, primitive in enumerate(primitives):
-            pwhere = f"meshes[{mesh_index}].primitives[{p}]"
-            if not isinstance(primitive, dict):
-                doc.fail(pwhere, "expected an object")
-            material_index = primitive.get("material")
-            has_colour = "COLOR_0" in primitive.get("attributes", {})
+            material_index = primitive.index("material", "materials")
+            has_colour = primitive.object("attributes").has("COLOR_0")
             mkey = (material_index, has_colour)
             if mkey not in materials:
-                if material_index is not None:
-                    doc.get("materials", material_index, f"{pwhere}.material")
                 material = reader.material(material_index, has_colour)
                 name = material.name
                 taken = set(material_names.values())
@@ -124,16 +122,16 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
                 materials[mkey] = material
             material = materials[mkey]
             for slot, uv_set in sorted(material.texture_uv_set.items()):
-                if f"TEXCOORD_{uv_set}" not in primitive.get("attributes", {}):
-                    doc.fail(pwhere, f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
-                                     "which the primitive lacks")
+                if not primitive.object("attributes").has(f"TEXCOORD_{uv_set}"):
+                    primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
+                                   "which the primitive lacks")
             normal_uv = material.texture_uv_set.get("normal", 0) if "normal" in material.textures else None
             geometry = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                       (*key, mesh_index, p, flip))
             if geometry is None:
                 continue
             objects.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometry))
-    for name in doc.json.get("extensionsUsed", []):  # used where nothing above looked
+    for name in root.strings("extensionsUsed"):  # used where nothing above looked
         if name not in HONOURED_EXTENSIONS and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
     if not objects:

@@ -6,11 +6,10 @@ values. Errors name the user and the accessor, e.g.
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 
 from .document import Document
+from .fields import FieldReader, shown
 
 # spec 3.6.2.2 "Accessor Data Types"
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
@@ -46,28 +45,28 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     accessor = doc.get("accessors", index, where)
     name = f"accessor {index}"
     types, components = USES[use]
-    element = accessor.get("type")
-    component = accessor.get("componentType")
-    normalized = bool(accessor.get("normalized", False))
+    element = accessor.data.get("type")
+    component = accessor.data.get("componentType")
+    normalized = accessor.boolean("normalized", False)
     if element not in types:
-        doc.fail(where, f"{name} has type {json.dumps(element)}, expected {' or '.join(types)}")
-    if (component, normalized) not in components:
+        doc.fail(where, f"{name} has type {shown(element)}, expected {' or '.join(types)}")
+    if (type(component) is not int or (component, normalized) not in components):
         allowed = ", ".join(f"{COMPONENT_NAMES[c]}{' normalized' if n else ''}" for c, n in sorted(components))
-        got = COMPONENT_NAMES.get(component, json.dumps(component))
+        got = COMPONENT_NAMES.get(component, shown(component)) if type(component) is int else shown(component)
         doc.fail(where, f"{name} has components {got}{' normalized' if normalized else ''}, expected {allowed}")
     n = ELEMENT_SIZES[element]
-    n_elements = accessor.get("count")
-    if isinstance(n_elements, bool) or not isinstance(n_elements, int) or n_elements < 1:
-        doc.fail(where, f"{name}: count must be a positive integer, got {json.dumps(n_elements)}")
+    n_elements = accessor.integer("count", None, lo=1)
     if count is not None and n_elements != count:
         doc.fail(where, f"{name} has {n_elements} elements, expected {count}")
     dtype = np.dtype(COMPONENT_TYPES[component]).newbyteorder("<")
-    if "bufferView" not in accessor:
+    view_index = accessor.index("bufferView", "bufferViews")
+    if view_index is None:
         values = np.zeros((n_elements, n), dtype)  # spec 3.6.2.4: no buffer view means zeros
     else:
-        values = _from_buffer_view(doc, accessor, name, where, dtype, n, n_elements)
-    if "sparse" in accessor:
-        values = _apply_sparse(doc, accessor["sparse"], values, f"{where} ({name}.sparse)", dtype, n)
+        offset = accessor.integer("byteOffset", 0)
+        values = _from_buffer_view(doc, view_index, offset, name, where, dtype, n, n_elements, strided=True)
+    if accessor.has("sparse"):
+        values = _apply_sparse(doc, accessor.object("sparse"), values, dtype, n)
     if use == "indices":
         return values[:, 0].astype(np.int64)
     out = _normalised(values, component) if normalized else values.astype(np.float64)
@@ -77,54 +76,43 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     return out
 
 
-def _apply_sparse(doc, sparse, values, where, dtype, n) -> np.ndarray:
+def _apply_sparse(doc: Document, sparse: FieldReader, values, dtype, n) -> np.ndarray:
     """spec 3.6.2.3 "Sparse Accessors": ``count`` (index, value) pairs replace elements."""
-    count = sparse.get("count") if isinstance(sparse, dict) else None
-    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
-        doc.fail(where, f"count must be a positive integer, got {json.dumps(count)}")
-    indices_spec, values_spec = sparse.get("indices", {}), sparse.get("values", {})
-    index_type = indices_spec.get("componentType")
-    if index_type not in (5121, 5123, 5125):
-        doc.fail(f"{where}.indices", f"componentType must be UNSIGNED_BYTE, _SHORT or _INT, got {index_type}")
+    count = sparse.integer("count", None, lo=1)
+    if count > len(values):
+        sparse.fail(f"count {count} exceeds the accessor's {len(values)} elements")
+    indices_spec, values_spec = sparse.object("indices"), sparse.object("values")
+    index_type = indices_spec.enum("componentType", (5121, 5123, 5125), None, COMPONENT_NAMES)
     index_dtype = np.dtype(COMPONENT_TYPES[index_type]).newbyteorder("<")
-    indices = _from_buffer_view(doc, {"bufferView": indices_spec.get("bufferView"),
-                                      "byteOffset": indices_spec.get("byteOffset", 0)},
-                                "indices", f"{where}.indices", index_dtype, 1, count)[:, 0].astype(np.int64)
-    replacements = _from_buffer_view(doc, {"bufferView": values_spec.get("bufferView"),
-                                           "byteOffset": values_spec.get("byteOffset", 0)},
-                                     "values", f"{where}.values", dtype, n, count)
+    indices = _from_buffer_view(doc, indices_spec.index("bufferView", "bufferViews", required=True),
+                                indices_spec.integer("byteOffset", 0), "indices", indices_spec.path,
+                                index_dtype, 1, count)[:, 0].astype(np.int64)
+    replacements = _from_buffer_view(doc, values_spec.index("bufferView", "bufferViews", required=True),
+                                     values_spec.integer("byteOffset", 0), "values", values_spec.path,
+                                     dtype, n, count)
     if np.any(indices >= len(values)) or np.any(np.diff(indices) <= 0):
-        doc.fail(f"{where}.indices", f"must increase strictly and stay below {len(values)}")
+        indices_spec.fail(f"must increase strictly and stay below {len(values)}")
     values = values.copy()
     values[indices] = replacements
     return values
 
 
-def _from_buffer_view(doc, accessor, name, where, dtype, n, n_elements) -> np.ndarray:
-    view_index = accessor["bufferView"]
-    view = doc.get("bufferViews", view_index, f"{where} ({name})")
-    view_where = f"bufferViews[{view_index}]"
-    buffer = doc.buffer(view.get("buffer"), view_where)
-    view_offset = view.get("byteOffset", 0)
-    view_length = view.get("byteLength")
-    for key, value in (("byteOffset", view_offset), ("byteLength", view_length)):
-        if isinstance(value, bool) or not isinstance(value, int) or value < 0:
-            doc.fail(view_where, f"{key} must be a non-negative integer, got {json.dumps(value)}")
-    if view_offset + view_length > len(buffer):
-        doc.fail(view_where, f"bytes {view_offset}..{view_offset + view_length} lie outside "
-                             f"buffers[{view.get('buffer')}] ({len(buffer)} bytes)")
+def _from_buffer_view(doc, view_index: int, offset: int, name, where, dtype, n, n_elements,
+                      strided: bool = False) -> np.ndarray:
+    """``n_elements`` elements of ``n`` components from a buffer view, ``offset`` bytes in
+    (byteStride honoured where ``strided``: spec 3.6.2.4, sparse data is tightly packed)."""
+    view, data = doc.buffer_view(view_index, f"{where} ({name})")
+    view_offset = view.integer("byteOffset", 0)
     element_bytes = dtype.itemsize * n
-    stride = view.get("byteStride", element_bytes)
-    if isinstance(stride, bool) or not isinstance(stride, int) or stride < element_bytes:
-        doc.fail(view_where, f"byteStride {json.dumps(stride)} is smaller than an element ({element_bytes} bytes)")
-    offset = accessor.get("byteOffset", 0)
-    if isinstance(offset, bool) or not isinstance(offset, int) or offset < 0:
-        doc.fail(where, f"{name}: byteOffset must be a non-negative integer, got {json.dumps(offset)}")
+    stride = element_bytes
+    if strided and view.has("byteStride"):
+        stride = view.integer("byteStride", None, lo=4, hi=252)  # spec 5.11: 4..252
+        if stride < element_bytes:
+            view.fail(f"byteStride {stride} is smaller than an element ({element_bytes} bytes)")
     if offset % dtype.itemsize or (view_offset + offset) % dtype.itemsize:
         doc.fail(where, f"{name}: byteOffset {offset} is not aligned to its {dtype.itemsize}-byte components")
     end = offset + stride * (n_elements - 1) + element_bytes
-    if end > view_length:
-        doc.fail(where, f"{name} needs {end} bytes of bufferViews[{view_index}], which has {view_length}")
-    raw = np.ndarray((n_elements, n), dtype=dtype, buffer=buffer, offset=view_offset + offset,
-                     strides=(stride, dtype.itemsize))
+    if end > len(data):
+        doc.fail(where, f"{name} needs {end} bytes of bufferViews[{view_index}], which has {len(data)}")
+    raw = np.ndarray((n_elements, n), dtype=dtype, buffer=data, offset=offset, strides=(stride, dtype.itemsize))
     return np.array(raw)

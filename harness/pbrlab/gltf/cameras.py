@@ -8,7 +8,6 @@ otherwise.
 
 from __future__ import annotations
 
-import json
 import math
 
 import numpy as np
@@ -19,26 +18,23 @@ DEFAULT_HEIGHT = 512
 FRAMING_FOV_DEG = 45.0
 FRAMING_DIRECTION = np.array([0.0, 0.35, 1.0])  # from the front (+Z, glTF's front), a little above
 FRAMING_MARGIN = 1.1                             # the bounding sphere fills 1/1.1 of the view
+MAX_WIDTH = 16384                                # the JSON scene's camera.size limit (scene.py)
 
 
-def _positive(doc, spec, key, where):
-    value = spec.get(key)
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0 or not math.isfinite(value):
-        doc.fail(where, f"{key} must be a positive number, got {json.dumps(value)}")
-    return float(value)
-
-
-def _size(aspect: float, size) -> tuple[int, int]:
+def _size(aspect: float, size, spec) -> tuple[int, int]:
     if size is not None:
         return tuple(size)
-    return max(1, round(DEFAULT_HEIGHT * aspect)), DEFAULT_HEIGHT
+    width = DEFAULT_HEIGHT * aspect
+    if not width <= MAX_WIDTH:
+        spec.fail(f"its aspect ratio {aspect:g} makes the image {width:g} pixels wide at height "
+                  f"{DEFAULT_HEIGHT} (at most {MAX_WIDTH}); give the size (--size)")
+    return max(1, round(width)), DEFAULT_HEIGHT
 
 
 def gltf_camera(doc, index, world: np.ndarray, where: str, scene, size) -> Camera:
     from . import bounds
 
     spec = doc.get("cameras", index, where)
-    cw = f"cameras[{index}]"
     position = world[:3, 3].copy()
     forward = world[:3, :3] @ np.array([0.0, 0.0, -1.0])
     up = world[:3, :3] @ np.array([0.0, 1.0, 0.0])
@@ -47,21 +43,20 @@ def gltf_camera(doc, index, world: np.ndarray, where: str, scene, size) -> Camer
     forward /= np.linalg.norm(forward)
     lo, hi = bounds(scene)
     distance = max(float(np.dot((lo + hi) / 2 - position, forward)), 1e-3)
-    kind = spec.get("type")
+    kind = spec.enum("type", ("perspective", "orthographic"))
     if kind == "perspective":
-        p = spec.get("perspective", {})
-        yfov = _positive(doc, p, "yfov", f"{cw}.perspective")
+        p = spec.object("perspective")
+        yfov = p.number("yfov", None, 0.0, math.pi, lo_open=True)
         if yfov >= math.pi:
-            doc.fail(f"{cw}.perspective", f"yfov must be below pi, got {yfov:g}")
-        aspect = _positive(doc, p, "aspectRatio", f"{cw}.perspective") if "aspectRatio" in p else 1.0
-        return Camera(position, position + forward * distance, up, math.degrees(yfov), _size(aspect, size))
-    if kind == "orthographic":
-        o = spec.get("orthographic", {})
-        xmag, ymag = _positive(doc, o, "xmag", f"{cw}.orthographic"), _positive(doc, o, "ymag", f"{cw}.orthographic")
-        camera = Camera(position, position + forward * distance, up, FRAMING_FOV_DEG, _size(xmag / ymag, size))
-        camera.ortho_half_height = ymag
-        return camera
-    doc.fail(cw, f"type must be perspective or orthographic, got {json.dumps(kind)}")
+            p.fail(f"yfov must be below pi, got {yfov:g}")
+        aspect = p.number("aspectRatio", 1.0, 0.0, lo_open=True)
+        return Camera(position, position + forward * distance, up, math.degrees(yfov), _size(aspect, size, p))
+    o = spec.object("orthographic")
+    xmag = o.number("xmag", None, 0.0, lo_open=True)
+    ymag = o.number("ymag", None, 0.0, lo_open=True)
+    camera = Camera(position, position + forward * distance, up, FRAMING_FOV_DEG, _size(xmag / ymag, size, o))
+    camera.ortho_half_height = ymag
+    return camera
 
 
 def framing_camera(scene, size) -> Camera:
@@ -74,4 +69,4 @@ def framing_camera(scene, size) -> Camera:
     distance = radius / math.sin(math.radians(FRAMING_FOV_DEG) / 2) * FRAMING_MARGIN
     direction = FRAMING_DIRECTION / np.linalg.norm(FRAMING_DIRECTION)
     return Camera(centre + direction * distance, centre, np.array([0.0, 1.0, 0.0]), FRAMING_FOV_DEG,
-                  _size(1.0, size))
+                  _size(1.0, size, None))

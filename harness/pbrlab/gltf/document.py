@@ -14,7 +14,9 @@ import urllib.parse
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .. import json_input
 from ..errors import SceneError
+from .fields import FieldReader, join, shown
 
 GLB_MAGIC = b"glTF"           # glTF 2.0, 4.4.3 "GLB Header"
 GLB_CHUNK_JSON = 0x4E4F534A   # 4.4.3.2 "Chunks": chunkType "JSON"
@@ -23,57 +25,81 @@ GLB_HEADER_BYTES = 12
 GLB_CHUNK_HEADER_BYTES = 8
 
 
+# spec 5.17 "glTF": the top-level arrays, each an array of objects where present.
+TOP_LEVEL_ARRAYS = ("accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
+                    "meshes", "nodes", "samplers", "scenes", "skins", "textures")
+LIGHTS = "extensions.KHR_lights_punctual.lights"  # the one collection outside the top level
+
+
 @dataclass
 class Document:
     path: Path
     json: dict
     glb_bin: bytes | None = None
     _buffers: dict = field(default_factory=dict)
+    _items: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        self.root = FieldReader(self.json, "", self)
 
     def fail(self, where: str, message: str):
         raise SceneError(f"{self.path}: {where}: {message}")
 
-    def items(self, key: str) -> list:
-        value = self.json.get(key, [])
-        if not isinstance(value, list):
-            self.fail(key, f"expected a list, got {type(value).__name__}")
-        for i, item in enumerate(value):
-            if not isinstance(item, dict):
-                self.fail(f"{key}[{i}]", f"expected an object, got {json.dumps(item)[:40]}")
-        return value
+    def items(self, key: str) -> list[FieldReader]:
+        """The top-level array ``key`` (or LIGHTS) as readers, checked once."""
+        if key not in self._items:
+            if key == LIGHTS:
+                self._items[key] = self.root.object("extensions").object("KHR_lights_punctual").objects("lights")
+            else:
+                self._items[key] = self.root.objects(key)
+        return self._items[key]
 
-    def get(self, key: str, index, where: str) -> dict:
-        """``json[key][index]``, refused by name when the index is not there."""
-        items = self.items(key)
-        if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < len(items):
-            self.fail(where, f"refers to {key}[{index}], but the file has {len(items)} {key}")
-        return items[index]
+    def check_index(self, key: str, index, where: str) -> int:
+        """``index`` as an index into ``key``, refused at ``where`` when it is not one."""
+        count = len(self.items(key))
+        if isinstance(index, bool) or not isinstance(index, int):
+            self.fail(where, f"expected an index into {key}, got {shown(index)}")
+        if not 0 <= index < count:
+            self.fail(where, f"refers to {key}[{index}], but the file has {count} {key}")
+        return index
 
-    def buffer(self, index: int, where: str) -> bytes:
+    def get(self, key: str, index, where: str) -> FieldReader:
+        """``key[index]``, refused by name (at ``where``) when the index is not there."""
+        return self.items(key)[self.check_index(key, index, where)]
+
+    def buffer(self, index, where: str) -> bytes:
+        spec = self.get("buffers", index, where)
         if index not in self._buffers:
-            spec = self.get("buffers", index, where)
-            self._buffers[index] = self._load_buffer(spec, f"buffers[{index}]")
+            self._buffers[index] = self._load_buffer(spec)
         return self._buffers[index]
 
-    def _load_buffer(self, spec: dict, where: str) -> bytes:
-        length = spec.get("byteLength")
-        if isinstance(length, bool) or not isinstance(length, int) or length < 1:
-            self.fail(where, f"byteLength must be a positive integer, got {json.dumps(length)}")
-        uri = spec.get("uri")
-        if uri is None:
+    def buffer_view(self, index, where: str) -> tuple[FieldReader, bytes]:
+        """Buffer view ``index`` and the bytes of its buffer it spans (spec 3.6.1)."""
+        view = self.get("bufferViews", index, where)
+        buffer_index = view.index("buffer", "buffers", required=True)
+        buffer = self.buffer(buffer_index, join(view.path, "buffer"))
+        offset = view.integer("byteOffset", 0)
+        length = view.integer("byteLength", None, lo=1)
+        if offset + length > len(buffer):
+            view.fail(f"bytes {offset}..{offset + length} lie outside buffers[{buffer_index}] ({len(buffer)} bytes)")
+        return view, buffer[offset:offset + length]
+
+    def _load_buffer(self, spec: FieldReader) -> bytes:
+        length = spec.integer("byteLength", None, lo=1)
+        if not spec.has("uri"):
             if self.glb_bin is None:
-                self.fail(where, "has no uri and the file has no GLB binary chunk")
+                spec.fail("has no uri and the file has no GLB binary chunk")
             data = self.glb_bin
         else:
-            data = self.uri_bytes(uri, where)
+            data = self.uri_bytes(spec.string("uri"), spec.path)
         if len(data) < length:
-            self.fail(where, f"holds {len(data)} bytes, byteLength says {length}")
+            spec.fail(f"holds {len(data)} bytes, byteLength says {length}")
         return data[:length]
 
     def uri_bytes(self, uri, where: str) -> bytes:
         """The bytes of a data: URI or of a file relative to the glTF file."""
         if not isinstance(uri, str) or not uri:
-            self.fail(where, f"uri must be a non-empty string, got {json.dumps(uri)}")
+            self.fail(where, f"uri must be a non-empty string, got {shown(uri)}")
         if uri.startswith("data:"):
             header, _, payload = uri.partition(",")
             if not header.endswith(";base64"):
@@ -84,10 +110,17 @@ class Document:
                 self.fail(where, "the data: URI is not valid base64")
         if "://" in uri:
             self.fail(where, f"only files beside the glTF and data: URIs are read, not {uri}")
-        file = (self.path.parent / urllib.parse.unquote(uri)).resolve()
-        if not file.is_file():
-            self.fail(where, f"file not found: {file}")
-        return file.read_bytes()
+        name = urllib.parse.unquote(uri)
+        if "\x00" in name:
+            self.fail(where, f"uri holds a NUL character: {shown(uri)}")
+        file = self.path.parent / name
+        try:
+            file = file.resolve()
+            if not file.is_file():
+                self.fail(where, f"file not found: {file}")
+            return file.read_bytes()
+        except (OSError, RuntimeError) as exc:  # a symlink loop, a name too long, no permission
+            self.fail(where, f"cannot read {file}: {getattr(exc, 'strerror', None) or exc}")
 
 
 def _parse_glb(path: Path, data: bytes) -> tuple[dict, bytes | None]:
@@ -114,13 +147,19 @@ def _parse_glb(path: Path, data: bytes) -> tuple[dict, bytes | None]:
 
 
 def _parse_json(path: Path, data: bytes) -> dict:
+    """The document through the same gate as scene files (pbrlab.json_input): duplicate
+    keys, NaN / Infinity / numbers beyond float32 and over-deep nesting are refused by path."""
     try:
-        document = json.loads(data.decode("utf-8"))
+        document = json.loads(data.decode("utf-8"), object_pairs_hook=json_input.pairs_hook,
+                              parse_constant=json_input.parse_constant)
     except UnicodeDecodeError:
         raise SceneError(f"{path}: not a readable glTF 2.0 file (the JSON is not UTF-8)") from None
     except json.JSONDecodeError as exc:
         raise SceneError(f"{path}: not a readable glTF 2.0 file (invalid JSON at line {exc.lineno} "
                          f"column {exc.colno}: {exc.msg})") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not a readable glTF 2.0 file (JSON nested too deeply)") from None
+    document = json_input.normalize(document, str(path))
     if not isinstance(document, dict):
         raise SceneError(f"{path}: not a readable glTF 2.0 file (the JSON is not an object)")
     return document
@@ -141,4 +180,22 @@ def read_document(path) -> Document:
     if not isinstance(version, str) or not version.startswith("2."):
         raise SceneError(f"{path}: not a readable glTF 2.0 file (asset.version is {json.dumps(version)}, "
                          "expected \"2.0\")")
-    return Document(path, document, binary)
+    doc = Document(path, document, binary)
+    _check_top_level(doc)
+    return doc
+
+
+def _check_top_level(doc: Document) -> None:
+    """The shape of the top level (spec 5.17), before any part is read: the arrays of
+    objects, the extension lists and objects, the default scene."""
+    for key in TOP_LEVEL_ARRAYS:
+        doc.items(key)
+    doc.root.object("asset").string("version")
+    for key in ("minVersion", "generator", "copyright"):
+        if doc.root.object("asset").has(key):
+            doc.root.object("asset").string(key)
+    doc.root.strings("extensionsUsed")
+    doc.root.strings("extensionsRequired")
+    doc.root.extensions()
+    doc.items(LIGHTS)
+    doc.root.index("scene", "scenes")

@@ -9,10 +9,12 @@ import numpy as np
 from ..meshes import Geometry
 from .accessors import read_accessor
 from .document import Document
+from .fields import FieldReader
 from .tangents import mikktspace_tangents
 
 TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN = 4, 5, 6  # spec 3.7.2.1 "mode"
-MODE_NAMES = {0: "POINTS", 1: "LINES", 2: "LINE_LOOP", 3: "LINE_STRIP"}
+MODES = {TRIANGLES: "TRIANGLES", TRIANGLE_STRIP: "TRIANGLE_STRIP", TRIANGLE_FAN: "TRIANGLE_FAN"}
+MODE_NAMES = {0: "POINTS", 1: "LINES", 2: "LINE_LOOP", 3: "LINE_STRIP"}  # not drawn
 
 
 def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
@@ -29,44 +31,44 @@ def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
     return np.stack([np.full(n, indices[0]), indices[i + 1], indices[i + 2]], axis=1)  # fan
 
 
-def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: dict, needs_tangents_from,
+def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldReader, needs_tangents_from,
                    warn, flip_winding: bool, key: tuple) -> Geometry | None:
     """The primitive's Geometry (None, with a warning, for point and line modes).
     ``needs_tangents_from``: the UV set of the material's normal map, or None."""
-    where = f"meshes[{mesh}].primitives[{prim_index}]"
-    mode = primitive.get("mode", TRIANGLES)
+    where = primitive.path
+    mode = primitive.enum("mode", tuple(range(7)), TRIANGLES, {**MODE_NAMES, **MODES})
     if mode in MODE_NAMES:
         warn(f"{MODE_NAMES[mode]} primitive ignored in mesh {mesh} (pbrlab draws triangles)")
         return None
-    if mode not in (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN):
-        doc.fail(where, f"mode must be 0..6, got {mode}")
-    attributes = primitive.get("attributes")
-    if not isinstance(attributes, dict) or "POSITION" not in attributes:
-        doc.fail(f"{where}.attributes", "has no POSITION")
-    attr_where = f"{where}.attributes"
-    positions = read_accessor(doc, attributes["POSITION"], f"{attr_where}.POSITION", "POSITION")
+    attributes = primitive.object("attributes")
+    if not attributes.has("POSITION"):
+        attributes.fail("has no POSITION")
+    attr_where = attributes.path
+    positions = read_accessor(doc, attributes.index("POSITION", "accessors"), f"{attr_where}.POSITION", "POSITION")
     count = len(positions)
 
     def optional(name, use):
-        if name not in attributes:
-            return None
-        return read_accessor(doc, attributes[name], f"{attr_where}.{name}", use, count)
+        index = attributes.index(name, "accessors")
+        return None if index is None else read_accessor(doc, index, f"{attr_where}.{name}", use, count)
 
     normals = optional("NORMAL", "NORMAL")
     tangents = optional("TANGENT", "TANGENT")
     uv0 = optional("TEXCOORD_0", "TEXCOORD")
     uv1 = optional("TEXCOORD_1", "TEXCOORD")
     colors = optional("COLOR_0", "COLOR")
-    for name in sorted(attributes):
+    for name in sorted(attributes.data):
         if name not in ("POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"):
+            attributes.index(name, "accessors")
             warn(f"attribute {name} ignored in mesh {mesh} primitive {prim_index}")
-    if "targets" in primitive:
+    if primitive.has("targets"):
+        primitive.objects("targets")
         warn(f"morph targets ignored in mesh {mesh} primitive {prim_index} (the base shape is drawn)")
-    for ext in primitive.get("extensions", {}):
+    for ext, _ in primitive.extensions():
         warn(f"{ext} ignored in mesh {mesh} primitive {prim_index}")
 
-    if "indices" in primitive:
-        indices = read_accessor(doc, primitive["indices"], f"{where}.indices", "indices")
+    index_accessor = primitive.index("indices", "accessors")
+    if index_accessor is not None:
+        indices = read_accessor(doc, index_accessor, f"{where}.indices", "indices")
         bad = np.flatnonzero((indices < 0) | (indices >= count))
         if len(bad):
             doc.fail(f"{where}.indices", f"index {int(indices[bad[0]])} at position {int(bad[0])} is out of "

@@ -25,18 +25,23 @@ Everything else a material carries is named in one warning each.
 from __future__ import annotations
 
 import io
-import json
 import math
 
 import numpy as np
 
 from ..scene import Material
 from .document import Document
+from .fields import FieldReader, join
 
 # glTF sampler enums (spec 3.8.4 "Samplers") -> moderngl: repeat flags and filters.
 REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT = 10497, 33071, 33648
-MAG_FILTERS = {9728, 9729}                                # NEAREST, LINEAR
-MIN_FILTERS = {9728, 9729, 9984, 9985, 9986, 9987}        # ... and the four mipmap modes
+WRAP_MODES = (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT)
+WRAP_NAMES = {REPEAT: "REPEAT", CLAMP_TO_EDGE: "CLAMP_TO_EDGE", MIRRORED_REPEAT: "MIRRORED_REPEAT"}
+MAG_FILTERS = (9728, 9729)                                # NEAREST, LINEAR
+MIN_FILTERS = (9728, 9729, 9984, 9985, 9986, 9987)        # ... and the four mipmap modes
+FILTER_NAMES = {9728: "NEAREST", 9729: "LINEAR", 9984: "NEAREST_MIPMAP_NEAREST", 9985: "LINEAR_MIPMAP_NEAREST",
+                9986: "NEAREST_MIPMAP_LINEAR", 9987: "LINEAR_MIPMAP_LINEAR"}
+ALPHA_MODES = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}  # glTF alphaMode -> Unity's modes
 DEFAULT_MIN_FILTER, DEFAULT_MAG_FILTER = 9987, 9729       # LINEAR_MIPMAP_LINEAR, LINEAR: pbrlab's default
 DEFAULT_IOR = 1.5                                         # KHR_materials_ior: glTF's dielectric (F0 = 0.04)
 
@@ -77,76 +82,50 @@ class MaterialReader:
         self.doc, self.file_key, self.warn = doc, file_key, warn
         self._images: dict[int, np.ndarray] = {}
 
-    # --- numbers ----------------------------------------------------------------------
-    def _number(self, spec, key, where, default, lo=0.0, hi=math.inf):
-        value = spec.get(key, default)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not lo <= value <= hi:
-            self.doc.fail(where, f"{key} must be a number in [{lo:g}, {hi:g}], got {json.dumps(value)}")
-        return float(value)
-
-    def _vector(self, spec, key, where, default, n, lo=0.0, hi=1.0):
-        value = spec.get(key, default)
-        if (not isinstance(value, list) or len(value) != n
-                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
-                or not all(lo <= v <= hi for v in value)):
-            self.doc.fail(where, f"{key} must be {n} numbers in [{lo:g}, {hi:g}], got {json.dumps(value)}")
-        return np.array(value, np.float64)
-
     # --- images and textures ----------------------------------------------------------
-    def image(self, index: int, where: str) -> np.ndarray:
+    def image(self, index: int) -> np.ndarray:
+        """Image ``index`` (checked by the caller) decoded, once per file."""
         if index not in self._images:
-            spec = self.doc.get("images", index, where)
-            image_where = f"images[{index}]"
-            if "uri" in spec:
-                data = self.doc.uri_bytes(spec["uri"], image_where)
-            elif "bufferView" in spec:
-                view = self.doc.get("bufferViews", spec["bufferView"], image_where)
-                buffer = self.doc.buffer(view.get("buffer"), f"bufferViews[{spec['bufferView']}]")
-                start = view.get("byteOffset", 0)
-                data = buffer[start:start + view.get("byteLength", 0)]
+            spec = self.doc.items("images")[index]
+            if spec.has("mimeType"):
+                spec.enum("mimeType", ("image/jpeg", "image/png"))
+            if spec.has("uri"):
+                data = self.doc.uri_bytes(spec.string("uri"), spec.path)
+            elif spec.has("bufferView"):
+                _, data = self.doc.buffer_view(spec.index("bufferView", "bufferViews"), join(spec.path, "bufferView"))
             else:
-                self.doc.fail(image_where, "has neither uri nor bufferView")
-            self._images[index] = _decode_image(self.doc, data, image_where)
+                spec.fail("has neither uri nor bufferView")
+            self._images[index] = _decode_image(self.doc, data, spec.path)
         return self._images[index]
 
-    def texture(self, info, where: str, material: Material, slot: str, srgb: bool, name: str):
+    def texture(self, info: FieldReader, material: Material, slot: str, srgb: bool, name: str):
         """Fill ``material``'s ``slot`` from a glTF textureInfo."""
-        if not isinstance(info, dict):
-            self.doc.fail(where, f"expected a textureInfo object, got {json.dumps(info)[:40]}")
-        texture_index = info.get("index")
-        texture = self.doc.get("textures", texture_index, f"{where}.index")
-        texture_where = f"textures[{texture_index}]"
-        for ext in texture.get("extensions", {}):
+        texture_index = info.index("index", "textures", required=True)
+        texture = self.doc.items("textures")[texture_index]
+        for ext, _ in texture.extensions():
             self.warn(f"{ext} ignored in texture {texture_index} (material \"{name}\")")
-        if "source" not in texture:
-            self.doc.fail(texture_where, "has no source image")
-        pixels = self.image(texture.get("source"), f"{texture_where}.source")
-        sampler = {}
-        if "sampler" in texture:
-            sampler = self.doc.get("samplers", texture["sampler"], f"{texture_where}.sampler")
-        wrap = []
-        for key in ("wrapS", "wrapT"):
-            mode = sampler.get(key, REPEAT)
-            if mode not in (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT):
-                self.doc.fail(f"samplers[{texture.get('sampler')}]", f"{key} {json.dumps(mode)} is not a glTF wrap mode")
-            wrap.append(mode)
-        min_filter = sampler.get("minFilter", DEFAULT_MIN_FILTER)
-        mag_filter = sampler.get("magFilter", DEFAULT_MAG_FILTER)
-        if min_filter not in MIN_FILTERS or mag_filter not in MAG_FILTERS:
-            self.doc.fail(f"samplers[{texture.get('sampler')}]",
-                          f"filters {min_filter}/{mag_filter} are not glTF filter modes")
+        source = texture.index("source", "images")
+        if source is None:
+            texture.fail("has no source image")
+        pixels = self.image(source)
+        sampler_index = texture.index("sampler", "samplers")
+        sampler = (FieldReader({}, "default sampler", self.doc) if sampler_index is None
+                   else self.doc.items("samplers")[sampler_index])
+        wrap = [sampler.enum(key, WRAP_MODES, REPEAT, WRAP_NAMES) for key in ("wrapS", "wrapT")]
+        min_filter = sampler.enum("minFilter", MIN_FILTERS, DEFAULT_MIN_FILTER, FILTER_NAMES)
+        mag_filter = sampler.enum("magFilter", MAG_FILTERS, DEFAULT_MAG_FILTER, FILTER_NAMES)
         mirror = (wrap[0] == MIRRORED_REPEAT, wrap[1] == MIRRORED_REPEAT)
-        key = (*self.file_key, texture.get("source"))
+        key = (*self.file_key, source)
         material.textures[slot] = GltfImage(key, pixels, mirror)
         material.texture_srgb[slot] = srgb
         material.texture_sampler[slot] = (wrap[0] != CLAMP_TO_EDGE, wrap[1] != CLAMP_TO_EDGE,
                                           min_filter, mag_filter)
-        uv_set = info.get("texCoord", 0)
+        uv_set = info.integer("texCoord", 0)
         transform = None
-        for ext, spec in info.get("extensions", {}).items():
+        for ext, spec in info.extensions():
             if ext == "KHR_texture_transform":
-                transform = self._uv_transform(spec, f"{where}.extensions.KHR_texture_transform")
-                uv_set = spec.get("texCoord", uv_set)
+                transform = self._uv_transform(spec, spec.path)
+                uv_set = spec.integer("texCoord", uv_set)
             else:
                 self.warn(f"{ext} ignored in {slot} texture of material \"{name}\"")
         if uv_set not in (0, 1):
@@ -163,9 +142,11 @@ class MaterialReader:
     def _uv_transform(self, spec, where) -> np.ndarray:
         """KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv (the extension's
         README, "Overview"), rotation counter-clockwise in UV space (v down)."""
-        offset = self._vector(spec, "offset", where, [0.0, 0.0], 2, -math.inf, math.inf)
-        scale = self._vector(spec, "scale", where, [1.0, 1.0], 2, -math.inf, math.inf)
-        rotation = self._number(spec, "rotation", where, 0.0, -math.inf, math.inf)
+        if not isinstance(spec, FieldReader):
+            spec = FieldReader(spec, where, self.doc)
+        offset = spec.numbers("offset", 2, [0.0, 0.0])
+        scale = spec.numbers("scale", 2, [1.0, 1.0])
+        rotation = spec.number("rotation", 0.0)
         c, s = math.cos(rotation), math.sin(rotation)
         translation = np.array([[1, 0, offset[0]], [0, 1, offset[1]], [0, 0, 1]], np.float64)
         rotate = np.array([[c, s, 0], [-s, c, 0], [0, 0, 1]], np.float64)
@@ -173,42 +154,34 @@ class MaterialReader:
 
     # --- the material -----------------------------------------------------------------
     def material(self, index: int | None, vertex_color: bool) -> Material:
-        """Material ``index`` (None: glTF's default material, spec 3.9.6)."""
-        spec = {} if index is None else self.doc.get("materials", index, "material")
-        where = "default material" if index is None else f"materials[{index}]"
-        name = spec.get("name") or ("default" if index is None else f"material_{index}")
+        """Material ``index`` (checked by the caller; None: glTF's default material, spec 3.9.6)."""
+        spec = FieldReader({}, "default material", self.doc) if index is None else self.doc.items("materials")[index]
+        name = spec.string("name", "") or ("default" if index is None else f"material_{index}")
         m = Material(name=name)
-        pbr = spec.get("pbrMetallicRoughness", {})
-        base = self._vector(pbr, "baseColorFactor", f"{where}.pbrMetallicRoughness", [1, 1, 1, 1], 4)
+        pbr = spec.object("pbrMetallicRoughness")
+        base = pbr.numbers("baseColorFactor", 4, [1, 1, 1, 1], 0.0, 1.0)
         m.albedo, m.alpha = base[:3], float(base[3])
-        m.metallic = self._number(pbr, "metallicFactor", f"{where}.pbrMetallicRoughness", 1.0, 0.0, 1.0)
-        m.smoothness = 1.0 - self._number(pbr, "roughnessFactor", f"{where}.pbrMetallicRoughness", 1.0, 0.0, 1.0)
-        mode = spec.get("alphaMode", "OPAQUE")
-        modes = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}
-        if mode not in modes:
-            self.doc.fail(where, f"alphaMode must be OPAQUE, MASK or BLEND, got {json.dumps(mode)}")
-        m.alpha_mode = modes[mode]
-        m.alpha_cutoff = self._number(spec, "alphaCutoff", where, 0.5, 0.0, 1.0)
-        m.double_sided = bool(spec.get("doubleSided", False))
+        m.metallic = pbr.number("metallicFactor", 1.0, 0.0, 1.0)
+        m.smoothness = 1.0 - pbr.number("roughnessFactor", 1.0, 0.0, 1.0)
+        m.alpha_mode = ALPHA_MODES[spec.enum("alphaMode", tuple(ALPHA_MODES), "OPAQUE")]
+        m.alpha_cutoff = spec.number("alphaCutoff", 0.5, 0.0, 1.0)
+        m.double_sided = spec.boolean("doubleSided", False)
         m.vertex_color = vertex_color
         for key, slot, srgb in TEXTURE_KEYS:
-            holder, holder_where = (pbr, f"{where}.pbrMetallicRoughness") if key in pbr else (spec, where)
-            if key in holder:
-                self.texture(holder[key], f"{holder_where}.{key}", m, slot, srgb, name)
-        if "normalTexture" in spec:
-            m.normal_scale = self._number(spec["normalTexture"], "scale", f"{where}.normalTexture", 1.0,
-                                          -math.inf, math.inf)
-        if "occlusionTexture" in spec:
-            m.occlusion_strength = self._number(spec["occlusionTexture"], "strength",
-                                                f"{where}.occlusionTexture", 1.0, 0.0, 1.0)
-        emissive = self._vector(spec, "emissiveFactor", where, [0, 0, 0], 3)
-        extensions = spec.get("extensions", {})
+            holder = pbr if pbr.has(key) else spec
+            if holder.has(key):
+                self.texture(holder.object(key), m, slot, srgb, name)
+        if spec.has("normalTexture"):
+            m.normal_scale = spec.object("normalTexture").number("scale", 1.0)
+        if spec.has("occlusionTexture"):
+            m.occlusion_strength = spec.object("occlusionTexture").number("strength", 1.0, 0.0, 1.0)
+        emissive = spec.numbers("emissiveFactor", 3, [0, 0, 0], 0.0, 1.0)
+        extensions = dict(spec.extensions())
         strength = 1.0
         if "KHR_materials_emissive_strength" in extensions:
-            strength = self._number(extensions["KHR_materials_emissive_strength"], "emissiveStrength",
-                                    f"{where}.extensions.KHR_materials_emissive_strength", 1.0)
+            strength = extensions["KHR_materials_emissive_strength"].number("emissiveStrength", 1.0, 0.0)
         m.emission = emissive * strength
-        self._specular(m, extensions, where, name, "metallicRoughnessTexture" in pbr)
+        self._specular(m, extensions, spec.path, name, pbr.has("metallicRoughnessTexture"))
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
@@ -217,16 +190,18 @@ class MaterialReader:
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
         """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from
         the IOR (Fresnel at normal incidence) times the specular colour and factor."""
-        ior_ext = extensions.get("KHR_materials_ior", {})
-        spec_ext = extensions.get("KHR_materials_specular", {})
         if "KHR_materials_ior" not in extensions and "KHR_materials_specular" not in extensions:
             return
-        ior = self._number(ior_ext, "ior", f"{where}.extensions.KHR_materials_ior", DEFAULT_IOR, 1.0)
-        factor = self._number(spec_ext, "specularFactor", f"{where}.extensions.KHR_materials_specular", 1.0, 0.0, 1.0)
-        colour = self._vector(spec_ext, "specularColorFactor", f"{where}.extensions.KHR_materials_specular",
-                              [1, 1, 1], 3, 0.0, math.inf)
+        absent = {key: FieldReader({}, f"{where}.extensions.{key}", self.doc)
+                  for key in ("KHR_materials_ior", "KHR_materials_specular")}
+        ior_ext = extensions.get("KHR_materials_ior", absent["KHR_materials_ior"])
+        spec_ext = extensions.get("KHR_materials_specular", absent["KHR_materials_specular"])
+        ior = ior_ext.number("ior", DEFAULT_IOR, 1.0)
+        factor = spec_ext.number("specularFactor", 1.0, 0.0, 1.0)
+        colour = spec_ext.numbers("specularColorFactor", 3, [1, 1, 1], 0.0)
         for key in ("specularTexture", "specularColorTexture"):
-            if key in spec_ext:
+            if spec_ext.has(key):
+                spec_ext.object(key)
                 self.warn(f"KHR_materials_specular.{key} ignored in material \"{name}\"")
         if m.metallic != 0.0:
             if m.metallic < 1.0 or metallic_map:
@@ -249,5 +224,5 @@ def _decode_image(doc: Document, data: bytes, where: str) -> np.ndarray:
             # grey images as RGB(A): a channel is read as R, G or B by the slot (spec 3.8.3)
             image = image.convert("RGBA" if "A" in image.getbands() else "RGB")
             return np.asarray(image, np.uint8)
-    except (UnidentifiedImageError, OSError, ValueError) as exc:
+    except (UnidentifiedImageError, Image.DecompressionBombError, OSError, ValueError) as exc:
         doc.fail(where, f"is not a readable PNG or JPEG image ({exc})")

@@ -4,22 +4,10 @@ nodes with two parents are refused by name."""
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 
 from .document import Document
-
-
-def _numbers(doc, node, key, n, where, default):
-    value = node.get(key, default)
-    if (not isinstance(value, list) or len(value) != n
-            or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)):
-        doc.fail(where, f"{key} must be {n} numbers, got {json.dumps(value)[:60]}")
-    arr = np.array(value, np.float64)
-    if not np.all(np.isfinite(arr)):
-        doc.fail(where, f"{key} holds a non-finite value")
-    return arr
+from .fields import FieldReader
 
 
 def quaternion_matrix(q: np.ndarray) -> np.ndarray:
@@ -31,16 +19,16 @@ def quaternion_matrix(q: np.ndarray) -> np.ndarray:
         [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
 
 
-def local_matrix(doc: Document, node: dict, where: str) -> np.ndarray:
-    if "matrix" in node:
-        if any(key in node for key in ("translation", "rotation", "scale")):
-            doc.fail(where, "has both matrix and translation/rotation/scale")
-        return _numbers(doc, node, "matrix", 16, where, None).reshape(4, 4).T  # column-major
-    t = _numbers(doc, node, "translation", 3, where, [0, 0, 0])
-    q = _numbers(doc, node, "rotation", 4, where, [0, 0, 0, 1])
-    s = _numbers(doc, node, "scale", 3, where, [1, 1, 1])
+def local_matrix(node: FieldReader) -> np.ndarray:
+    if node.has("matrix"):
+        if any(node.has(key) for key in ("translation", "rotation", "scale")):
+            node.fail("has both matrix and translation/rotation/scale")
+        return node.numbers("matrix", 16).reshape(4, 4).T  # column-major
+    t = node.numbers("translation", 3, [0, 0, 0])
+    q = node.numbers("rotation", 4, [0, 0, 0, 1], -1.0, 1.0)  # spec 5.25: unit quaternion components
+    s = node.numbers("scale", 3, [1, 1, 1])
     if not np.linalg.norm(q) > 0:
-        doc.fail(where, "rotation is the zero quaternion")
+        node.fail("rotation is the zero quaternion")
     m = np.eye(4)
     m[:3, :3] = quaternion_matrix(q) @ np.diag(s)
     m[:3, 3] = t
@@ -52,27 +40,25 @@ def walk(doc: Document, scene_index: int | None):
     nodes = doc.items("nodes")
     scenes = doc.items("scenes")
     if scenes:
-        index = doc.json.get("scene", 0) if scene_index is None else scene_index
-        scene = doc.get("scenes", index, "scene")
-        roots = scene.get("nodes", [])
-        roots_where = f"scenes[{index}].nodes"
+        if scene_index is None:
+            scene_index = doc.root.index("scene", "scenes")
+        index = 0 if scene_index is None else doc.check_index("scenes", scene_index, "scene")
+        roots = scenes[index].indices("nodes", "nodes")
     else:  # no scenes: every node that is nobody's child (spec 3.5.1 allows scene-less files)
-        children = {c for n in nodes for c in n.get("children", []) if isinstance(c, int)}
+        children = {c for n in nodes for c in n.indices("children", "nodes")}
         roots = [i for i in range(len(nodes)) if i not in children]
-        roots_where = "nodes"
-    if not isinstance(roots, list):
-        doc.fail(roots_where, "expected a list of node indices")
     seen: set[int] = set()
-    stack = [(r, np.eye(4), f"{roots_where}[{i}]") for i, r in enumerate(roots)][::-1]
+    stack = [(r, np.eye(4)) for r in reversed(roots)]
     while stack:
-        index, parent, where = stack.pop()
-        node = doc.get("nodes", index, where)
+        index, parent = stack.pop()
+        node = nodes[index]
         if index in seen:
             doc.fail(f"nodes[{index}]", "appears twice in the hierarchy (a cycle, or two parents)")
         seen.add(index)
-        world = parent @ local_matrix(doc, node, f"nodes[{index}]")
+        with np.errstate(over="ignore", invalid="ignore"):  # refused just below, by name
+            world = parent @ local_matrix(node)
+        if not np.all(np.isfinite(world)):
+            node.fail("its world matrix overflows (a product of huge scales or translations)")
         yield index, world
-        children = node.get("children", [])
-        if not isinstance(children, list):
-            doc.fail(f"nodes[{index}].children", "expected a list of node indices")
-        stack.extend((c, world, f"nodes[{index}].children[{i}]") for i, c in reversed(list(enumerate(children))))
+        children = node.indices("children", "nodes")
+        stack.extend((c, world) for c in reversed(children))

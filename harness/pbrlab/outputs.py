@@ -1,0 +1,260 @@
+"""Output files that survive faults: all-or-nothing, checked to the last byte, never an input.
+
+    with outputs.transaction([png, exr], inputs=[scene_file, texture]) as tx:
+        images.encode_png(tx.temp(png), pixels)   # any writer, into the temporary path
+        tx.verify(png, lambda tmp: ...)           # optional: check what landed on disk
+    # here every target holds its new content, or (an exception) every target is untouched
+
+Rules, each answering a fault seen on earlier versions (issue 14):
+
+* **Checked to the last byte.** After the writer closes a temporary file it is fsync'ed
+  (a full disk or an I/O error surfaces here, not after the rename) and its size must be
+  non-zero; callers that can (images.py) also read it back and compare. A write that
+  fails leaves the target as it was and raises PbrlabError naming the target.
+* **All or nothing.** Every temporary file of a transaction is written and checked before
+  the first rename; renames are ``os.replace`` (atomic per file on POSIX) and the folder
+  is fsync'ed afterwards. The renames themselves cannot run out of space; a rename that
+  still fails (the folder vanished) is reported with the targets already replaced.
+* **Never an input.** A target that is the same file as an input of the command
+  (resolved path, or device and inode for hard links) is refused before any work.
+* **No litter.** Temporary files are named ``.NAME.PID-RANDOM.tmpSUFFIX`` beside their
+  target (same file system, so the rename is atomic; the suffix keeps OpenImageIO's
+  format choice). ``signal_cleanup`` makes SIGTERM, SIGHUP and SIGINT unwind
+  through the cleanup (the CLI installs it); a process killed outright (SIGKILL) leaves its
+  temporaries, and the next transaction writing to that folder removes every one whose
+  process no longer runs.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import secrets
+import signal
+from pathlib import Path
+from typing import Callable, Iterable, Iterator
+
+from .errors import PbrlabError
+
+_TEMP_NAME = re.compile(r"^\.(?P<name>.+)\.(?P<pid>\d+)-[0-9a-f]{8}\.tmp(?P<suffix>\.[^.]*)?$")
+_LIVE: set[Path] = set()  # temporaries of this process not yet renamed or removed
+
+
+def temp_name(path: Path) -> Path:
+    return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{path.suffix}")
+
+
+def _pid_alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process: alive
+        return True
+    return True
+
+
+def remove_stale_temps(folder: Path) -> list[Path]:
+    """Remove our temporaries in ``folder`` left by processes that no longer run."""
+    removed = []
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return removed
+    for entry in entries:
+        m = _TEMP_NAME.match(entry.name)
+        if m and entry.is_file(follow_symlinks=False) and not _pid_alive(int(m.group("pid"))):
+            with contextlib.suppress(OSError):
+                os.unlink(entry.path)
+                removed.append(Path(entry.path))
+    return removed
+
+
+def check_writable_target(path: Path) -> None:
+    """Raise PbrlabError when ``path`` cannot be written as a file."""
+    parent = path.parent
+    if not parent.exists():
+        raise PbrlabError(f"cannot write {path}: directory {parent} does not exist")
+    if not parent.is_dir():
+        raise PbrlabError(f"cannot write {path}: {parent} is not a directory")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise PbrlabError(f"cannot write {path}: directory {parent} is not writable")
+    if path.is_dir():
+        raise PbrlabError(f"cannot write {path}: it is a directory")
+
+
+def _identity(path: Path):
+    """(resolved path, (device, inode) or None) of ``path``."""
+    try:
+        resolved = Path(os.path.realpath(path))
+    except (OSError, RuntimeError, ValueError):
+        resolved = Path(os.path.abspath(path))
+    try:
+        st = os.stat(resolved)
+        return resolved, (st.st_dev, st.st_ino)
+    except (OSError, ValueError):
+        return resolved, None
+
+
+def refuse_inputs(targets: Iterable, inputs: Iterable) -> None:
+    """Raise PbrlabError when a target is the same file as one of ``inputs``.
+
+    ``inputs`` holds paths or (path, what) pairs; ``what`` names the input's role in the
+    message ("the scene's albedo texture").
+    """
+    known = []
+    for item in inputs:
+        path, what = item if isinstance(item, tuple) else (item, "an input")
+        if path is not None:
+            known.append((*_identity(Path(path)), Path(path), what))
+    for target in targets:
+        resolved, ident = _identity(Path(target))
+        for in_resolved, in_ident, shown, what in known:
+            if resolved == in_resolved or (ident is not None and ident == in_ident):
+                raise PbrlabError(f"refusing to write {target}: it is also an input of this command "
+                                  f"({what}: {shown}); choose another output name")
+
+
+def refuse_duplicates(targets: list[Path]) -> None:
+    seen = {}
+    for target in targets:
+        resolved, _ = _identity(target)
+        if resolved in seen:
+            raise PbrlabError(f"{seen[resolved]} and {target} name the same output file")
+        seen[resolved] = target
+
+
+def fsync_file(path: Path, target: Path) -> int:
+    """fsync ``path`` and return its size; a failure names ``target``."""
+    try:
+        fd = os.open(path, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+            return os.fstat(fd).st_size
+        finally:
+            os.close(fd)
+    except OSError as exc:
+        raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}") from None
+
+
+def write_bytes_checked(path: Path, data: bytes, target: Path) -> None:
+    """Write ``data`` to ``path``, flush and fsync, and check the size on disk."""
+    try:
+        with open(path, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+    except OSError as exc:
+        raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}") from None
+    size = os.stat(path).st_size
+    if size != len(data):
+        raise PbrlabError(f"cannot write {target}: {size} of {len(data)} bytes reached the disk")
+
+
+class Transaction:
+    """Temporaries for a set of targets, renamed onto them together by ``commit``."""
+
+    def __init__(self, targets: Iterable, inputs: Iterable = ()):
+        self.targets = [Path(t) for t in targets]
+        refuse_duplicates(self.targets)
+        refuse_inputs(self.targets, inputs)
+        for target in self.targets:
+            check_writable_target(target)
+        for folder in {t.parent for t in self.targets}:
+            remove_stale_temps(folder)
+        self.temps = {t: temp_name(t) for t in self.targets}
+        self.checks: dict[Path, list[Callable[[Path], None]]] = {t: [] for t in self.targets}
+        _LIVE.update(self.temps.values())
+
+    def temp(self, target) -> Path:
+        return self.temps[Path(target)]
+
+    def verify(self, target, check: Callable[[Path], None]) -> None:
+        """Run ``check(temp)`` before commit (it raises PbrlabError on a bad file)."""
+        self.checks[Path(target)].append(check)
+
+    def write_text(self, target, text: str) -> None:
+        target = Path(target)
+        write_bytes_checked(self.temp(target), text.encode("utf-8"), target)
+
+    def commit(self) -> None:
+        for target, tmp in self.temps.items():
+            if not tmp.exists():
+                raise PbrlabError(f"cannot write {target}: the writer produced no file")
+            if fsync_file(tmp, target) == 0:
+                raise PbrlabError(f"cannot write {target}: the file written is empty")
+            for check in self.checks[target]:
+                check(tmp)
+        done = []
+        for target, tmp in self.temps.items():
+            try:
+                os.replace(tmp, target)
+            except OSError as exc:
+                already = f" ({', '.join(map(str, done))} already replaced)" if done else ""
+                raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}{already}") from None
+            _LIVE.discard(tmp)
+            done.append(target)
+        for folder in {t.parent for t in self.targets}:
+            with contextlib.suppress(OSError):  # not every file system syncs folders
+                fd = os.open(folder, os.O_RDONLY)
+                try:
+                    os.fsync(fd)
+                finally:
+                    os.close(fd)
+
+    def abort(self) -> None:
+        for tmp in self.temps.values():
+            with contextlib.suppress(OSError):
+                tmp.unlink()
+            _LIVE.discard(tmp)
+
+
+@contextlib.contextmanager
+def transaction(targets: Iterable, inputs: Iterable = ()) -> Iterator[Transaction]:
+    """A Transaction committed when the block succeeds, aborted (temporaries removed,
+    targets untouched) when it raises, including KeyboardInterrupt and SystemExit."""
+    tx = Transaction(targets, inputs)
+    try:
+        yield tx
+        tx.commit()
+    finally:
+        tx.abort()  # after a commit only temporaries that were never renamed remain
+
+
+def remove_live_temps() -> None:
+    """Remove every temporary of this process (the signal handler's last act)."""
+    for tmp in list(_LIVE):
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        _LIVE.discard(tmp)
+
+
+class Terminated(BaseException):
+    """Raised in the main thread by SIGTERM/SIGHUP inside signal_cleanup()."""
+
+    def __init__(self, signum: int):
+        super().__init__(f"terminated by signal {signum}")
+        self.signum = signum
+
+
+def _on_signal(signum, frame):
+    raise Terminated(signum)
+
+
+@contextlib.contextmanager
+def signal_cleanup() -> Iterator[None]:
+    """Within the block, SIGTERM and SIGHUP raise ``Terminated`` (SIGINT already raises
+    KeyboardInterrupt), so open transactions unwind and remove their temporaries; the
+    previous handlers come back afterwards."""
+    previous = {}
+    for signum in (signal.SIGTERM, signal.SIGHUP):
+        with contextlib.suppress(ValueError, OSError):  # not the main thread
+            previous[signum] = signal.signal(signum, _on_signal)
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
