@@ -97,18 +97,21 @@ def test_lambert_and_blinn_phong_are_lighting_cgincs(language, tmp_path):
     v /= np.linalg.norm(v, axis=1, keepdims=True)
     albedo = RNG.uniform(0, 1, (N, 3))
     spec, gloss = RNG.uniform(0.03, 1, N), RNG.uniform(0, 1, N)
-    wrap = """#include "pbr/unity/lighting_legacy.SUFFIX"
+    wrap = """#ifndef PBR_UNITY_TEST_LIT
+#define PBR_UNITY_TEST_LIT
+#include "pbr/unity/lighting_legacy.SUFFIX"
 vec4 pbr_unity_test_lit(vec3 a, vec3 n, vec3 l, vec3 v, float sp, float gl) {
     SurfaceOutput s; s.Albedo = a; s.Normal = n; s.Emission = vec3(0.0, 0.0, 0.0);
     s.Specular = sp; s.Gloss = gl; s.Alpha = 1.0;
     UnityLight light; light.color = vec3(1.0, 1.0, 1.0); light.dir = l;
     return vec4(UnityLambertLight(s, light).r, UnityBlinnPhongLight(s, v, light).rgb);
 }
+#endif
 """
     suffix = "glsl" if language == "glsl" else "hlsl"
     wrap = wrap.replace("SUFFIX", suffix)
     if language == "hlsl":  # the same wrapper, ported as the library's files are
-        wrap = port_text(wrap, "wrap.glsl", set()).split("\n", 1)[1]  # without the shim's include line
+        wrap = port_text(wrap, "wrap.glsl")
     (tmp_path / f"wrap.{suffix}").write_text(wrap)
     got = evaluate("pbr_unity_test_lit(a, n, l, v, sp, gl)", language=language, includes=[f"wrap.{suffix}"],
                    include_dirs=[tmp_path], a=vec3(albedo), n=vec3(n), l=vec3(l),
