@@ -382,6 +382,6 @@ def _resolve(ctx, hdr, scene, transfer, language):
         ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
     if transfer != "EXACT":
         return pixels
-    srgb8 = srgb8_codes.encode(pixels)
-    srgb8[..., 3] = 255  # the display image is opaque (the shader writes alpha 1)
+    srgb8 = np.full(pixels.shape, 255, np.uint8)  # the display image is opaque (alpha 1)
+    srgb8[..., :3] = srgb8_codes.encode(pixels[..., :3])
     return srgb8
