@@ -60,14 +60,17 @@ def _light_terms(light, p):
 
 
 def _surface(material):
+    """(diffuse colour, f0, coat F0, perceptual roughness): the coat is the dielectric over
+    the diffuse (0.04 in the metallic workflow, the specular colour in the specular one)."""
     if material.workflow == "metallic":
         diffuse = ref_material.diffuse_from_metallic(material.albedo, material.metallic)
         f0 = ref_material.f0_from_metallic(material.albedo, material.metallic)
+        coat_f0 = np.full(3, ref_material.DIELECTRIC_F0)
     else:
         diffuse = ref_material.diffuse_from_specular(material.albedo, material.specular)
-        f0 = material.specular
+        f0 = coat_f0 = material.specular
     rough = ref_remap.perceptual_roughness_from_smoothness(material.smoothness)
-    return np.asarray(diffuse, float), np.asarray(f0, float), float(rough)
+    return (np.asarray(diffuse, float), np.asarray(f0, float), np.asarray(coat_f0, float), float(rough))
 
 
 def _unity_shading(scene, material, n, v, p, env_sh, quality):
@@ -134,13 +137,13 @@ def render_scene_cpu(scene) -> np.ndarray:
             out[mask, :3] = color + _unity_shading(scene, material, n, v, p, env_sh, quality)
             out[mask, 3] = 1.0
             continue
-        diffuse, f0, rough = _surface(material)
+        diffuse, f0, coat_f0, rough = _surface(material)
         r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
         NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
         direct_diffuse = ref_surface.coupled_diffuse_color(
-            diffuse, f0, ref_surface.specular_albedo_bound(f0, dfg, specular_f))
+            diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f))
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
@@ -148,7 +151,7 @@ def render_scene_cpu(scene) -> np.ndarray:
         if env_sh is not None:
             compensated = scene.render.energy_compensation
             indirect_diffuse = ref_surface.coupled_diffuse_color(
-                diffuse, f0, ref_surface.indirect_specular_albedo(f0, dfg, compensated))
+                diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated))
             color += indirect_diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(

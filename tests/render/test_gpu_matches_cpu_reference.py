@@ -98,6 +98,7 @@ ENVIRONMENT_MATERIALS = [
     {"albedo": [0.8, 0.3, 0.2], "smoothness": 0.8},
     {"albedo": [1.0, 0.766, 0.336], "metallic": 1.0, "smoothness": 0.9},
     {"albedo": [0.9, 0.9, 0.9], "metallic": 1.0, "smoothness": 0.2, "occlusion": 0.5},
+    {"albedo": [0.9, 0.45, 0.2], "metallic": 0.5, "smoothness": 0.0},  # diffuse under the 0.04 coat only
 ]
 
 

@@ -10,6 +10,8 @@ multiple-scattering compensation:
   white dielectric    albedo 1, metallic 0: F0 = 0.04, diffuse albedo 1 (0.96 / (1 - 0.04))
   zero-F0 dielectric  specular workflow, albedo 1, specular 0: F0 = F90 = 0, no specular
   black dielectric    albedo 0, metallic 0: the specular lobe of F0 = 0.04 alone
+  white half-metal    albedo 1, metallic 0.5: F0 = 0.52, diffuse albedo 0.5 under the
+                      dielectric coat (F0 0.04): E(0.52) + 0.5 (1 - E(0.04)) <= 1
 """
 
 import numpy as np
@@ -27,8 +29,14 @@ MATERIALS = {
     "white_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0},
     "zero_f0_dielectric": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0, 0, 0]},
     "black_dielectric": {"albedo": [0, 0, 0], "metallic": 0.0},
+    "white_half_metal": {"albedo": [1, 1, 1], "metallic": 0.5},
 }
-F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04}
+F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
+      "white_half_metal": 0.52}
+# F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
+# metallic workflow, the specular colour in the specular workflow.
+COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
+           "white_half_metal": 0.04}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -88,14 +96,16 @@ def _pixel_geometry(scene):
 def _expected(name, compensation, A, B):
     """Reflectance of a uniform white environment, written from the sources: split sum
     f0 A + f90 B (Karis 2013), F90 = saturate(16.5 * 3 f0) (Schüler 2009 / Filament),
-    compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E)."""
-    f0 = F0[name]
-    f90 = min(1.0, 16.5 * 3 * f0)
-    e = f0 * A + f90 * B
-    if compensation:
-        e = e * (1 + f0 * (1 / (A + B) - 1))
-    rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0}[name]
-    return e + rho * (1 - e)
+    compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E_coat), E_coat
+    the albedo of the dielectric coat over the diffuse."""
+    def albedo(f0):
+        f90 = min(1.0, 16.5 * 3 * f0)
+        e = f0 * A + f90 * B
+        return e * (1 + f0 * (1 / (A + B) - 1)) if compensation else e
+
+    rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0,
+           "white_half_metal": 0.5}[name]  # albedo (1 - metallic): the dielectric's share
+    return albedo(F0[name]) + rho * (1 - albedo(COAT_F0[name]))
 
 
 _RENDERS = {}  # (quality, compensation) -> (scene, linear): each variant rendered once per process

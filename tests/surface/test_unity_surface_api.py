@@ -93,7 +93,8 @@ def test_lighting_standard_matches_the_float64_reference():
     r = shading.clamp_perceptual_roughness(rough)
     NdotV = np.maximum(x["v"][:, 2], shading.MIN_NDOTV)
     dfg = ref_surface.env_brdf_approx(NdotV, r)  # no DFG table hook: the analytic fit
-    want = ref_surface.lighting_standard(diffuse, f0, rough, x["occlusion"], x["n"], x["v"],
+    coat_f0 = np.full(3, ref_material.DIELECTRIC_F0)  # LightingStandard's coat: Unity's dielectric
+    want = ref_surface.lighting_standard(diffuse, f0, coat_f0, rough, x["occlusion"], x["n"], x["v"],
                                          x["l"], x["light"], x["idiff"], x["ispec"], dfg)
     # Tolerance: the direct specular of near-mirror lobes is float32-conditioned (see
     # tests/library/test_shading.py); relative to the lit total, measured 2e-3 at worst.

@@ -182,7 +182,10 @@ float pbr_unity_environment_lod(float perceptualRoughness, float lodCount) {
 
 // LightingStandard's body after the workflow: Unity's premultiplied alpha, then the model's
 // BRDF (unity: UNITY_BRDF_PBS of the tier, gi.indirect already occluded by the GI step).
-vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
+// coatF0: the dielectric coat over the diffuse (pbr_lighting_standard; the unity model,
+// whose diffuse is Unity's diffColor, does not read it): unity_ColorSpaceDielectricSpec.rgb
+// from LightingStandard, s.Specular from LightingStandardSpecular.
+vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, vec3 coatF0, float oneMinusReflectivity,
                         float smoothness, float occlusion, float alpha, vec3 normal,
                         vec3 viewDir, UnityGI gi) {
     float outputAlpha;
@@ -191,7 +194,7 @@ vec4 pbr_unity_lighting(vec3 diffColor, vec3 specColor, float oneMinusReflectivi
     vec3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
                                 viewDir, gi.light.color, gi.light.dir, gi.indirect.diffuse, gi.indirect.specular);
 #else
-    vec3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
+    vec3 c = pbr_lighting_standard(diffColor, specColor, coatF0, SmoothnessToPerceptualRoughness(smoothness),
                                    occlusion, normalize(normal), viewDir, gi);
 #endif
     return vec4(c, outputAlpha);
@@ -201,14 +204,15 @@ vec4 LightingStandard(SurfaceOutputStandard s, vec3 viewDir, UnityGI gi) {
     vec3 specColor;
     float oneMinusReflectivity;
     vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting(diffColor, specColor, oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb, oneMinusReflectivity,
+                              s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
 
 vec4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, vec3 viewDir, UnityGI gi) {
     float oneMinusReflectivity;
     vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting(diffColor, s.Specular, oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
 #endif

@@ -94,16 +94,21 @@ def indirect_specular_albedo(f0, dfg, energy_compensated=True):
     return albedo * energy_compensation(f0, dfg) if energy_compensated else albedo
 
 
-def diffuse_albedo_from_diffuse_color(diffuse_color, f0):
-    """rho = diffuseColor / (1 - max(f0)), capped at 1: the workflow's constant
-    1 - reflectivity undone (pbr/shading/energy_conservation.glsl)."""
-    one_minus = np.maximum(1 - np.max(_f(f0), axis=-1), MIN_ONE_MINUS_REFLECTIVITY)[..., None]
+def diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0):
+    """rho = diffuseColor / (1 - max(coatF0)), capped at 1: the workflow's constant
+    1 - reflectivity undone (pbr/shading/energy_conservation.glsl). coat_f0 is the F0 of the
+    dielectric over the diffuse: 0.04 in the metallic workflow (Unity's
+    unity_ColorSpaceDielectricSpec; diffuseColor = albedo 0.96 (1 - m) gives rho =
+    albedo (1 - m)), the specular colour in the specular workflow."""
+    one_minus = np.maximum(1 - np.max(_f(coat_f0), axis=-1), MIN_ONE_MINUS_REFLECTIVITY)[..., None]
     return np.minimum(_f(diffuse_color) / one_minus, 1.0)
 
 
-def coupled_diffuse_color(diffuse_color, f0, specular_albedo_):
-    """rho (1 - E_spec): Fdez-Aguera 2019 section 4; Kelemen & Szirmay-Kalos 2001."""
-    return diffuse_albedo_from_diffuse_color(diffuse_color, f0) * (1 - np.clip(_f(specular_albedo_), 0, 1))
+def coupled_diffuse_color(diffuse_color, coat_f0, coat_albedo):
+    """rho (1 - E_coat): Fdez-Aguera 2019 section 4; Kelemen & Szirmay-Kalos 2001. The
+    diffuse lies under the dielectric coat only; coat_albedo is that coat's directional
+    albedo E(coat_f0), so a metallic m reflects (1 - m)[rho (1 - E_coat) + E_coat] + m E_metal."""
+    return diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0) * (1 - np.clip(_f(coat_albedo), 0, 1))
 
 
 def energy_compensation(f0, dfg):
@@ -136,20 +141,20 @@ def premultiply_alpha(diff_color, alpha, one_minus_reflectivity, transparent):
     return _f(diff_color) * alpha, 1 - one_minus_reflectivity + alpha * one_minus_reflectivity
 
 
-def lighting_standard(diffuse_color, f0, perceptual_roughness, occlusion, n, v, light_dir,
+def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,
                       light_color, indirect_diffuse, prefiltered, dfg, energy_compensated=True,
                       **variants):
     """pbr_lighting_standard_dfg: direct (pbr_shade_punctual with the diffuse coupled to the
-    single-scattering specular albedo) + coupled indirect diffuse * occlusion + split-sum
-    indirect specular. ``dfg`` is the environment BRDF at (NdotV, roughness).
+    coat's single-scattering specular albedo) + coupled indirect diffuse * occlusion +
+    split-sum indirect specular (at f0, the whole surface's). ``dfg`` is the environment BRDF at (NdotV, roughness).
     Vectors and colours have a last axis of 3; roughness and occlusion have the leading
     shape (or are scalars)."""
     r = shading.clamp_perceptual_roughness(perceptual_roughness)
     NdotV = np.maximum(np.sum(_f(n) * v, axis=-1), shading.MIN_NDOTV)
     specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[variants.get("quality", "HIGH")]
-    direct_diffuse = coupled_diffuse_color(diffuse_color, f0, specular_albedo_bound(f0, dfg, specular_f))
+    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
     direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, **variants)
     spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
     indirect_diffuse_color = coupled_diffuse_color(
-        diffuse_color, f0, indirect_specular_albedo(f0, dfg, energy_compensated))
+        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec

@@ -4,11 +4,13 @@
 // Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
 //           vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
 //                                                float NdotV, float occlusion, vec2 dfg)
-//           vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 f0, vec2 dfg)
-//           vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
-//                                      float occlusion, vec3 n, vec3 v, pbr_GI gi)
-//           vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, float perceptualRoughness,
-//                                          float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg)
+//           vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec2 dfg)
+//           vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                      float perceptualRoughness, float occlusion, vec3 n,
+//                                      vec3 v, pbr_GI gi)
+//           vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                          float perceptualRoughness, float occlusion, vec3 n,
+//                                          vec3 v, pbr_GI gi, vec2 dfg)
 // Include:  "pbr/surface/lighting_standard.hlsl" (path relative to hlsl_ports/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
 //           in the environment specular; 0: single scattering only);
@@ -25,11 +27,14 @@
 // roughness. Without a light, set light.color to 0.
 //
 // Energy: diffuseColor is the workflow's diffuse colour (pbr_diffuse_from_metallic /
-// pbr_diffuse_from_specular, Unity's diffColor); the diffuse lobe is coupled to the
-// specular by pbr_coupled_diffuse_color (pbr/shading/energy_conservation.hlsl): it gets
-// 1 - E of the light, E the specular lobe's directional albedo at NdotV from the same DFG
-// values as the split sum (single scattering for direct light, times the compensation for
-// the environment when PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
+// pbr_diffuse_from_specular, Unity's diffColor); coatF0 is the F0 of the dielectric coat
+// over the diffuse: vec3(PBR_DIELECTRIC_F0) in the metallic workflow (f0 also holds the
+// metal's part, which has no diffuse under it), the specular colour (= f0) in the specular
+// workflow. The diffuse lobe is coupled to the coat by pbr_coupled_diffuse_color
+// (pbr/shading/energy_conservation.hlsl): it gets 1 - E of the light, E the coat's
+// directional albedo at NdotV from the same DFG values as the split sum (single
+// scattering for direct light, times the compensation for the environment when
+// PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
 // f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
 // (tests/render/test_white_furnace.py).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
@@ -80,36 +85,36 @@ float3 pbr_indirect_specular_split_sum(float3 prefiltered, float3 f0, float roug
          * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
 }
 
-// The diffuse colour the environment lights: coupled to the environment specular's albedo
+// The diffuse colour the environment lights: coupled to the coat's environment albedo
 // (with its compensation), as the split sum reflects it.
-float3 pbr_indirect_diffuse_color(float3 diffuseColor, float3 f0, float2 dfg) {
-    return pbr_coupled_diffuse_color(diffuseColor, f0, pbr_indirect_specular_albedo(f0, dfg));
+float3 pbr_indirect_diffuse_color(float3 diffuseColor, float3 coatF0, float2 dfg) {
+    return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo(coatF0, dfg));
 }
 
 // Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the diffuse
-// coupled to the single-scattering specular albedo (pbr_specular_albedo_bound: the tier's
-// own lobe). Indirect: coupled diffuse * occlusion,
+// coupled to the coat's single-scattering specular albedo (pbr_specular_albedo_bound: the
+// tier's own lobe). Indirect: coupled diffuse * occlusion,
 // plus the split-sum specular (prefiltered radiance * directional albedo, Karis 2013) with
 // specular occlusion and, by default, multiple-scattering compensation. Occlusion darkens
 // only indirect light, as in Unity. dfg must be pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV),
 // pbr_clamp_perceptual_roughness(perceptualRoughness)): engines that fetch their own table
 // call this form; pbr_lighting_standard fetches it through PBR_DFG_LUT_LOOKUP.
-float3 pbr_lighting_standard_dfg(float3 diffuseColor, float3 f0, float perceptualRoughness,
+float3 pbr_lighting_standard_dfg(float3 diffuseColor, float3 f0, float3 coatF0, float perceptualRoughness,
                                float occlusion, float3 n, float3 v, pbr_GI gi, float2 dfg) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    float3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, f0, pbr_specular_albedo_bound(f0, dfg));
+    float3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
     float3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
                                      directDiffuse, f0, roughness);
     float3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
-    return direct + pbr_indirect_diffuse_color(diffuseColor, f0, dfg) * gi.indirect.diffuse * occlusion
+    return direct + pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * gi.indirect.diffuse * occlusion
          + specular;
 }
 
-float3 pbr_lighting_standard(float3 diffuseColor, float3 f0, float perceptualRoughness,
+float3 pbr_lighting_standard(float3 diffuseColor, float3 f0, float3 coatF0, float perceptualRoughness,
                            float occlusion, float3 n, float3 v, pbr_GI gi) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    return pbr_lighting_standard_dfg(diffuseColor, f0, roughness, occlusion, n, v, gi, dfg);
+    return pbr_lighting_standard_dfg(diffuseColor, f0, coatF0, roughness, occlusion, n, v, gi, dfg);
 }
 #endif

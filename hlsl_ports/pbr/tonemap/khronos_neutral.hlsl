@@ -26,7 +26,11 @@
 #include "pbr/common/guards.hlsl"
 
 #define PBR_KHRONOS_NEUTRAL_F90 0.04                                // spec: F90
-#define PBR_KHRONOS_NEUTRAL_START_COMPRESSION (0.8 - PBR_KHRONOS_NEUTRAL_F90)  // spec: K_s
+// K_s = 0.8 - F90 and 1 - K_s, written out: a compiler folds 1.0 - (0.8 - 0.04) in float32
+// (Mesa: 0.24000001) or in double (the HLSL run: 0.24), which moved the compressed
+// highlight by 3 ulp between the two languages (tests/hlsl/test_function_agreement.py).
+#define PBR_KHRONOS_NEUTRAL_START_COMPRESSION 0.76                  // spec: K_s = 0.8 - F90
+#define PBR_KHRONOS_NEUTRAL_ONE_MINUS_START_COMPRESSION 0.24        // 1 - K_s
 #define PBR_KHRONOS_NEUTRAL_DESATURATION 0.15                       // spec: K_d
 
 float3 pbr_tonemap_khronos_neutral(float3 color) {
@@ -38,7 +42,7 @@ float3 pbr_tonemap_khronos_neutral(float3 color) {
     color -= offset;
     float peak = pbr_max3(color);
     if (peak <= PBR_KHRONOS_NEUTRAL_START_COMPRESSION) return color;
-    float d = 1.0 - PBR_KHRONOS_NEUTRAL_START_COMPRESSION;
+    float d = PBR_KHRONOS_NEUTRAL_ONE_MINUS_START_COMPRESSION;
     float newPeak = 1.0 - d * d / (peak + d - PBR_KHRONOS_NEUTRAL_START_COMPRESSION);
     color *= newPeak / peak;
     float g = 1.0 - 1.0 / (PBR_KHRONOS_NEUTRAL_DESATURATION * (peak - newPeak) + 1.0);

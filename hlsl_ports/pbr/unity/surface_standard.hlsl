@@ -183,7 +183,10 @@ float pbr_unity_environment_lod(float perceptualRoughness, float lodCount) {
 
 // LightingStandard's body after the workflow: Unity's premultiplied alpha, then the model's
 // BRDF (unity: UNITY_BRDF_PBS of the tier, gi.indirect already occluded by the GI step).
-float4 pbr_unity_lighting(float3 diffColor, float3 specColor, float oneMinusReflectivity,
+// coatF0: the dielectric coat over the diffuse (pbr_lighting_standard; the unity model,
+// whose diffuse is Unity's diffColor, does not read it): unity_ColorSpaceDielectricSpec.rgb
+// from LightingStandard, s.Specular from LightingStandardSpecular.
+float4 pbr_unity_lighting(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                         float smoothness, float occlusion, float alpha, float3 normal,
                         float3 viewDir, UnityGI gi) {
     float outputAlpha;
@@ -192,7 +195,7 @@ float4 pbr_unity_lighting(float3 diffColor, float3 specColor, float oneMinusRefl
     float3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
                                 viewDir, gi.light.color, gi.light.dir, gi.indirect.diffuse, gi.indirect.specular);
 #else
-    float3 c = pbr_lighting_standard(diffColor, specColor, SmoothnessToPerceptualRoughness(smoothness),
+    float3 c = pbr_lighting_standard(diffColor, specColor, coatF0, SmoothnessToPerceptualRoughness(smoothness),
                                    occlusion, normalize(normal), viewDir, gi);
 #endif
     return float4(c, outputAlpha);
@@ -202,14 +205,15 @@ float4 LightingStandard(SurfaceOutputStandard s, float3 viewDir, UnityGI gi) {
     float3 specColor;
     float oneMinusReflectivity;
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting(diffColor, specColor, oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb, oneMinusReflectivity,
+                              s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
 
 float4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, float3 viewDir, UnityGI gi) {
     float oneMinusReflectivity;
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting(diffColor, s.Specular, oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                               s.Occlusion, s.Alpha, s.Normal, viewDir, gi);
 }
 #endif
