@@ -8,6 +8,7 @@ family has a plot.
 """
 
 import json
+import sys
 
 import pytest
 
@@ -72,3 +73,35 @@ def test_bench_quick_reports_specialised_against_full_programs_per_scene(quick_r
     for name, record in scenes.items():
         assert record["programs_specialised"] >= 1 and record["programs_full"] >= 1
         assert record["specialised_ms_median"] > 0 and record["full_ms_median"] > 0
+
+
+_FAKE_WORKER = """
+import json, sys
+for _ in range(4):
+    print("round", file=sys.stderr, flush=True)
+print("a warning the worker wrote", file=sys.stderr)
+if sys.argv[2] == "fail":
+    sys.exit(3)
+open(sys.argv[1], "w").write(json.dumps({"seconds": [1, 2]}))
+"""
+
+
+def test_rounds_drive_a_progress_bar_and_the_result_comes_back(tmp_path, capsys):
+    from pbrlab.bench import measure
+
+    out = tmp_path / "result.json"
+    result = measure._run_with_rounds([sys.executable, "-c", _FAKE_WORKER, str(out), "ok"], out,
+                                      None, rounds=4, what="fake rounds")
+    assert result == {"seconds": [1, 2]}
+    err = capsys.readouterr().err
+    assert "fake rounds" in err and "/4 [" in err  # tqdm's bar (n/4 [elapsed<left]), on stderr
+
+
+def test_a_failing_worker_reports_its_own_stderr_without_the_round_lines(tmp_path):
+    from pbrlab.bench import measure
+
+    out = tmp_path / "result.json"
+    with pytest.raises(RuntimeError, match="a warning the worker wrote") as failure:
+        measure._run_with_rounds([sys.executable, "-c", _FAKE_WORKER, str(out), "fail"], out,
+                                 None, rounds=4, what="fake rounds")
+    assert "round\nround" not in str(failure.value)  # the progress lines are not the error

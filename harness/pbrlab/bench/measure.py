@@ -292,13 +292,35 @@ def _wait(procs):
     return results
 
 
+ROUND_LINE = "round"  # what a worker prints on stderr after each interleaved round (worker.py)
+
+
+def _run_with_rounds(cmd, out_path, env, rounds: int, what: str) -> dict:
+    """Run one worker whose spec asks for ``progress``: a tqdm bar over its ``rounds``
+    (elapsed and estimated time left, on stderr; off under -q), then its result."""
+    from tqdm import tqdm
+
+    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    other = []
+    with tqdm(total=rounds, desc=f"pbrlab bench: {what}", unit="round", leave=False,
+              disable=console.level() < console.NORMAL, file=sys.stderr) as bar:
+        for line in proc.stderr:  # the worker writes its result to a file, so this cannot block
+            if line.strip() == ROUND_LINE:
+                bar.update(1)
+            else:
+                other.append(line)
+    proc.wait()
+    if proc.returncode != 0:
+        raise RuntimeError(f"bench worker failed ({' '.join(cmd[-4:])}):\n{''.join(other)[-3000:]}")
+    return json.loads(out_path.read_text(encoding="utf-8"))
+
+
 def measure_time(kernels, plans, settings: Settings, workdir: Path) -> dict:
     spec = {"vertex": kernel.vertex_source(), "kernels": kernels, "size": settings.time_size,
             "trips": settings.time_trips, "rounds": settings.time_rounds, "seed": 7,
-            "dfg_lut": _dfg_file(workdir)}
+            "dfg_lut": _dfg_file(workdir), "progress": True}
     cmd, out_path = _worker_command("time", spec, workdir)
-    proc = subprocess.Popen(cmd, env=_worker_env(1), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    seconds = _wait([(proc, cmd, out_path)])[0]["seconds"]
+    seconds = _run_with_rounds(cmd, out_path, _worker_env(1), settings.time_rounds, "kernel time")["seconds"]
     pixels = settings.time_size ** 2
     out = {}
     for plan in plans:
@@ -360,10 +382,9 @@ def measure_instructions(kernels, plans, settings: Settings, workdir: Path, jobs
 
 def measure_frame(settings: Settings, workdir: Path, scene_path=DEFAULT_SCENE) -> dict:
     spec = {"scene": str(scene_path), "tiers": list(TIERS), "size": settings.frame_size,
-            "rounds": settings.frame_rounds, "seed": 3}
+            "rounds": settings.frame_rounds, "seed": 3, "progress": True}
     cmd, out_path = _worker_command("frame", spec, workdir)
-    proc = subprocess.Popen(cmd, env=_worker_env(1), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    seconds = _wait([(proc, cmd, out_path)])[0]["seconds"]
+    seconds = _run_with_rounds(cmd, out_path, _worker_env(1), settings.frame_rounds, "frame cost")["seconds"]
     setup = np.array(seconds.pop("_setup"))
     out = {"size": [settings.frame_size, settings.frame_size], "rounds": settings.frame_rounds,
            "setup_ms_median": float(np.median(setup) * 1e3), "tiers": {}}
@@ -387,10 +408,9 @@ def measure_specialisation(settings: Settings, workdir: Path) -> dict:
     """Frame CPU time of each test scene with specialised programs against the full
     program (LP_NUM_THREADS=1, interleaved rounds; the images are bit-identical)."""
     spec = {"scenes": list(SPECIALISATION_SCENES), "rounds": settings.frame_rounds, "seed": 5,
-            "size": [96, 64] if settings.quick else None}
+            "size": [96, 64] if settings.quick else None, "progress": True}
     cmd, out_path = _worker_command("specialise", spec, workdir)
-    proc = subprocess.Popen(cmd, env=_worker_env(1), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    result = _wait([(proc, cmd, out_path)])[0]
+    result = _run_with_rounds(cmd, out_path, _worker_env(1), settings.frame_rounds, "specialised vs full")
     instructions = _count_frames(settings, workdir)
     out = {"rounds": settings.frame_rounds, "size": spec["size"] or "each scene's own",
            "instructions_size": list(SPECIALISATION_COUNT_SIZE), "scenes": {}}

@@ -183,6 +183,8 @@ def run_specialise(spec):
             start = time.process_time()
             render.render_scene(jobs[key][0], ctx, size=size, specialise=jobs[key][1])
             seconds[key].append(time.process_time() - start)
+        if spec.get("progress"):
+            print("round", file=sys.stderr, flush=True)
     return {"seconds": seconds, "programs": programs}
 
 
