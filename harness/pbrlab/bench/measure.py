@@ -17,11 +17,11 @@ from pathlib import Path
 import numpy as np
 
 from .. import console, evaluator, gl, ibl, shaders, targets
-from ..locations import locate
+from ..golden_scenes import LIT_SCENE
 from . import kernel
 from .families import Family, Variant
 
-DEFAULT_SCENE = locate("scenes") / "unity_example" / "scene.json"
+DEFAULT_SCENE = LIT_SCENE  # the lit golden scene (pbrlab.golden_scenes), one definition of its path
 TIERS = ("high", "medium", "low")
 
 
