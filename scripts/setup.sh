@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what pbrlab needs on a Debian/Ubuntu machine, then exits 0.
 #   1. System packages (Mesa EGL + OSMesa + llvmpipe, glslang, spirv-cross, binutils'
-#      objdump for pbrlab.codescan, python3-venv):
+#      objdump for pbrlab.codescan, the Vulkan loader and Mesa's RADV for the AMD GPU
+#      instruction counts of pbrlab.gpu_isa, python3-venv):
 #      installed with apt-get when run as root, otherwise the exact command is printed and
 #      the script stops with exit 1.
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
@@ -19,6 +20,8 @@ declare -A need=(
   [glslang-tools]=/usr/bin/glslangValidator
   [spirv-cross]=/usr/bin/spirv-cross
   [binutils]=/usr/bin/objdump
+  [libvulkan1]=/usr/lib/x86_64-linux-gnu/libvulkan.so.1
+  [mesa-vulkan-drivers]=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json
 )
 missing=()
 for pkg in "${!need[@]}"; do
