@@ -41,6 +41,7 @@
 #include "pbr/brdf/g_smith_ggx.glsl"
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/v_smith_ggx_correlated.glsl"
+#include "pbr/brdf/dv_ggx_smith_correlated.glsl"
 #include "pbr/brdf/v_implicit.glsl"
 #include "pbr/brdf/v_kelemen.glsl"
 #include "pbr/brdf/f_schlick.glsl"

@@ -42,6 +42,7 @@
 #include "pbr/brdf/g_smith_ggx.hlsl"
 #include "pbr/brdf/g_schlick_ggx.hlsl"
 #include "pbr/brdf/v_smith_ggx_correlated.hlsl"
+#include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
 #include "pbr/brdf/v_implicit.hlsl"
 #include "pbr/brdf/v_kelemen.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"

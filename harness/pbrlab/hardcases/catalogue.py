@@ -106,6 +106,16 @@ def _f(name, args, bound, call=None):
     return Function(name, call or f"{name}({', '.join(a.name for a in arg_list)})", arg_list, bound)
 
 
+# The D · V arguments from directions, as pbr_brdf_standard makes them (h = l + v unnormalised,
+# its squared length capped at 4, the cosines and roughness clamped): the preconditions of
+# pbr_DV_GGX_SmithCorrelated. Where l + v has no direction (l = -v), pbr_brdf_standard does
+# not use D · V; here h = n stands in, so every call meets the preconditions.
+_H = "(dot(l + v, l + v) >= PBR_MIN_HALF_VECTOR_LENGTH_SQUARED ? l + v : n)"
+DV_ARGUMENTS = (f"dot(n, {_H}), dot(cross(n, {_H}), cross(n, {_H})), min(dot({_H}, {_H}), 4.0), "
+                "max(dot(n, l), PBR_MIN_NDOTV), clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), "
+                "pbr_alpha_from_perceptual_roughness(clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0))")
+DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_specular_DV")
+
 # Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
 # complete), with its argument kinds and bound.
 TERMS: tuple[Function, ...] = (
@@ -178,6 +188,9 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_F_SchlickSG", "f0:unit3 VdotH:cosine", F),
     Function("pbr_F_SchlickSG", "pbr_F_SchlickSG(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
     _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
+    # the fused HIGH-tier lobe, called as pbr_brdf_standard calls it (its preconditions)
+    Function("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelated(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # shading/energy_conservation.glsl
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
     _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
@@ -199,6 +212,8 @@ _DISPATCH_TEMPLATES = (
     (_f("pbr_specular_D", "NdotH:cosine s2:unit alpha:alpha", D), "PBR_SPECULAR_D", shading.SPECULAR_D),
     (_f("pbr_specular_V", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine alpha:alpha", V),
      "PBR_SPECULAR_V", shading.SPECULAR_V),
+    (Function("pbr_specular_DV", "pbr_specular_DV(" + DV_ARGUMENTS.replace(", pbr_alpha", ", 0.5 * length(l + v), pbr_alpha")
+              + ")", _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")), "PBR_SPECULAR_V", shading.SPECULAR_V),
     (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_specular_F_deviation_bound", "f0:unit3", _unit("F deviation")), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_diffuse_Fd", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness", Bound("0 <= Fd <= 6.25/π", 0.0, 2.0)),
@@ -305,7 +320,7 @@ def _edge_cases(function: Function) -> list[Case]:
 
 # The shading model's geometric hard cases: (name, why, n, v, l, exact value or None).
 # "exact" GLSL expressions restate the library's decided value with the same operations.
-_DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), min(dot(n, l), 1.0), "
+_DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), dot(n, l), "
                  "0.0, pbr_clamp_perceptual_roughness(roughness))")
 _GEOMETRY_CASES = (
     ("V = -L", "l and v opposite: no half vector exists (l + v = 0); decided: no specular, diffuse kept",

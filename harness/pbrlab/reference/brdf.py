@@ -66,6 +66,13 @@ def D_GGX(NdotH, alpha):
     return a2 / (PI * (NdotH ** 2 * (a2 - 1.0) + 1.0) ** 2)
 
 
+def D_GGX_from_one_minus(NdotH, one_minus_NdotH2, alpha):
+    """Walter et al. 2007 eq. 33 with its denominator rearranged, NdotH²(alpha² - 1) + 1 =
+    (1 - NdotH²) + NdotH² alpha², and 1 - NdotH² given (the same as D_GGX when it is)."""
+    NdotH, a2 = _f(NdotH), _f(alpha) ** 2
+    return a2 / (PI * (_f(one_minus_NdotH2) + NdotH ** 2 * a2) ** 2)
+
+
 def D_Beckmann(NdotH, alpha):
     """Walter et al. 2007 eq. 25; 0 at NdotH = 0 (the limit)."""
     NdotH, a2 = _f(NdotH), _f(alpha) ** 2

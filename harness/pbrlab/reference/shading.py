@@ -144,8 +144,12 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
                   specular_v=None, specular_f=None, diffuse="LAMBERT", quality="HIGH"):
     """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
     (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
-    specular; V's cosine floors; D · V capped at HALF_MAX in the LOW tier). 1 - NdotH² is
-    exact here, so the GLSL's |n x h|² form and its 1 - NdotH² agree for unit n."""
+    specular; D · V capped at HALF_MAX in the LOW tier).
+
+    GGX is evaluated at |n·h| (it is even in n·h; an h below the surface comes only from a
+    view below the horizon), Beckmann and Blinn-Phong at n·h clamped to [0, 1]. V's cosines are floored at MIN_NDOTV, except in the
+    fused GGX · height-correlated-Smith quotient (dv_ggx_smith_correlated.glsl), which takes
+    NdotL > 0 as it is."""
     d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
     n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
     shape = np.broadcast_shapes(n.shape, v.shape, l.shape, diffuse_color.shape, f0.shape,
@@ -154,22 +158,29 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     roughness = np.broadcast_to(clamp_perceptual_roughness(perceptual_roughness, quality), shape[:-1])
     alpha = remap.alpha_from_perceptual_roughness(roughness)
 
-    NdotL = np.minimum(_dot(n, l), 1.0)
+    NdotL = _dot(n, l)
     lit = NdotL > 0.0
     NdotL_safe = np.where(lit, NdotL, 1.0)
     NdotV = np.clip(_dot(n, v), MIN_NDOTV, 1.0)
     half_sum = l + v
     half_length2 = _dot(half_sum, half_sum)
-    LdotH = np.minimum(0.5 * np.sqrt(half_length2), 1.0)
+    LdotH = 0.5 * np.sqrt(half_length2)
     diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
 
     has_half = half_length2 >= QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED[quality]
     h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
-    NdotH = np.clip(_dot(n, h), 0.0, 1.0)
+    n_dot_h = _dot(n, h)
+    NdotH = np.clip(n_dot_h, 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        D = specular_D(NdotH, alpha, d_var)
-        V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
+        if d_var == "GGX":  # even in n·h: GGX at |n·h| (dispatch.glsl, pbr_specular_DV)
+            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), 1.0 - n_dot_h ** 2, alpha)
+        else:
+            D = specular_D(NdotH, alpha, d_var)
+        if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":
+            V = brdf.V_SmithGGXCorrelated(NdotL_safe, NdotV, alpha)
+        else:
+            V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var)
     lobe = np.minimum(D * V, QUALITY_MAX_SPECULAR_LOBE[quality])
     specular_part = np.where(has_half[..., None], lobe[..., None] * F, 0.0)

@@ -51,6 +51,7 @@
 #include "pbr/brdf/d_beckmann.hlsl"
 #include "pbr/brdf/d_blinn_phong.hlsl"
 #include "pbr/brdf/v_smith_ggx_correlated.hlsl"
+#include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
 #include "pbr/brdf/g_smith_ggx.hlsl"
 #include "pbr/brdf/g_schlick_ggx.hlsl"
 #include "pbr/brdf/g_cook_torrance.hlsl"
@@ -208,6 +209,35 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
     return pbr_V_Implicit();
 #else
 #error "PBR_SPECULAR_V: unknown value"
+#endif
+}
+
+// D · V of the selected terms, from any positive multiple h of the half vector (pbr_brdf_standard
+// passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² in
+// [PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4]. n·h is negative for an h below the surface,
+// which a view below the horizon gives: GGX is even in n·h (its denominator (1 - c²) + c²
+// alpha² >= alpha² for unit h) and is evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
+// clamped to [0, 1] (0 below the surface). GGX with the height-correlated Smith V (the HIGH
+// tier's pair) is fused into one quotient that needs no normalised h and none of the terms'
+// own clamps (pbr_DV_GGX_SmithCorrelated); its other preconditions are pbr_brdf_standard's:
+// NdotL > 0, NdotV in [PBR_MIN_NDOTV, 1], alpha from a clamped roughness. Every other pair
+// is the product of the two dispatchers above, from the normalised h, V with NdotL floored
+// at PBR_MIN_NDOTV.
+float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float NdotV,
+                      float VdotH, float alpha) {
+#if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED
+    return pbr_DV_GGX_SmithCorrelated(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
+#else
+    float invLength = rsqrt(h2);
+    float cosine = nDotH * invLength;
+    float oneMinusNdotH2 = nCrossH2 * (invLength * invLength);
+    float NdotH = clamp(cosine, 0.0, 1.0);
+#  if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX
+    float D = pbr_specular_D(abs(cosine), oneMinusNdotH2, alpha);
+#  else
+    float D = pbr_specular_D(NdotH, oneMinusNdotH2, alpha);
+#  endif
+    return D * pbr_specular_V(max(NdotL, PBR_MIN_NDOTV), NdotV, NdotH, VdotH, alpha);
 #endif
 }
 

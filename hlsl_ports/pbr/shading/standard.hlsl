@@ -20,16 +20,26 @@
 //  - perceptualRoughness is clamped to [PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1] here (0.045,
 //    or 0.089 in the LOW tier), far above the raw terms' PBR_MIN_ALPHA floor.
 //  - NdotV is clamped to [PBR_MIN_NDOTV, 1], so back-facing views from normal mapping or
-//    interpolated normals stay finite; every V term also floors NdotL at PBR_MIN_NDOTV.
+//    interpolated normals stay finite; NdotL is floored at PBR_MIN_NDOTV for the specular
+//    lobe (as every V term does on its own).
+//  - Guards are established once, here, for the whole BRDF: the clamped roughness, the
+//    NdotV clamp and the NdotL floor are the preconditions under which the selected D · V
+//    needs none of its own (pbr_specular_DV; the fused GGX · correlated-Smith quotient of
+//    the HIGH tier drops them).
 //  - 1 - NdotH² for D is |n × h|² (pbr_one_minus_dot2), not 1 - NdotH²: no cancellation at
 //    the peak of sharp lobes (d_ggx.hlsl).
 //  - D · V passes through the tier's pbr_specular_lobe_limit (identity in HIGH).
 //  - LdotH = VdotH = |l + v| / 2, the exact identity for unit l and v
-//    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2). It needs no normalised h and is
-//    continuous at l = -v.
+//    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2), computed as |l+v|² · inversesqrt(|l+v|²)
+//    from the reciprocal length h needs anyway (no second square root). It needs no
+//    normalised h and is continuous at l = -v.
 //  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-12; 2^-14 in LOW): no half vector exists; the
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
-//    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone.
+//    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone. The
+//    reciprocal length is taken of max(|l + v|², threshold), so the unselected lobe is
+//    computed from finite values.
+//  - No branches: NdotL <= 0 and l = -v are selects at the end (a divergent branch costs
+//    mask bookkeeping on GPUs and llvmpipe alike; measured: docs/bench).
 //  - NdotH and VdotH are clamped to [0, 1] against rounding.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_STANDARD_HLSL
@@ -47,26 +57,31 @@ float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
 
 float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, float3 f0,
                        float perceptualRoughness) {
-    float NdotL = min(dot(n, l), 1.0);
-    if (!(NdotL > 0.0)) return ((float3)(0.0));
-    float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
+    float NdotL = dot(n, l);
+    float nDotV = dot(n, v);
+    float NdotV = clamp(nDotV, PBR_MIN_NDOTV, 1.0);
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float alpha = pbr_alpha_from_perceptual_roughness(roughness);
 
+    // h = (l + v) / |l + v| is never formed: D · V takes n·(l + v) and |n × (l + v)|² with
+    // |l + v|² (pbr_specular_DV). The cap keeps an unnormalised v (a far camera: |l + v|² =
+    // +Inf) from Inf / Inf in it: the lobe becomes 0.
     float3 halfSum = l + v;
     float halfLength2 = dot(halfSum, halfSum);
-    float LdotH = min(0.5 * sqrt(halfLength2), 1.0);  // == VdotH, see header
+    float LdotH = 0.5 * sqrt(halfLength2);  // == VdotH, see header
+    float3 nCrossHalfSum = cross(n, halfSum);
 
-    float3 diffuse = diffuseColor * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
-    if (!(halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED)) return diffuse;
-
-    float3 h = halfSum * rsqrt(halfLength2);
-    float NdotH = clamp(dot(n, h), 0.0, 1.0);
-    float VdotH = LdotH;
-    float D = pbr_specular_D(NdotH, pbr_one_minus_dot2(n, h), alpha);
-    float V = pbr_specular_V(NdotL, NdotV, NdotH, VdotH, alpha);
-    float3  F = pbr_specular_F(f0, VdotH);
-    return diffuse + pbr_specular_lobe_limit(D * V) * F;
+    float Fd = pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
+    float DV = pbr_specular_lobe_limit(pbr_specular_DV(
+        NdotL + nDotV, dot(nCrossHalfSum, nCrossHalfSum), min(halfLength2, 4.0), NdotL, NdotV,
+        LdotH, alpha));
+    // Selects, not branches, and on the two scalars rather than the colours: both sides are
+    // computed, the selected values are finite (see header), and a GPU or llvmpipe runs no
+    // divergent control flow.
+    bool lit = NdotL > 0.0;
+    Fd = lit ? Fd : 0.0;
+    DV = lit && halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED ? DV : 0.0;
+    return diffuseColor * Fd + DV * pbr_specular_F(f0, LdotH);
 }
 
 #endif // PBR_SHADING_STANDARD_HLSL

@@ -1,0 +1,48 @@
+// pbr/brdf/dv_ggx_smith_correlated.hlsl: GGX D times the height-correlated Smith V, as one
+// quotient (the HIGH tier's specular lobe without the MIN_* guards its terms carry alone).
+//
+// Provides: float pbr_DV_GGX_SmithCorrelated(float nDotH, float nCrossH2, float h2,
+//                                            float NdotL, float NdotV, float alpha)
+// Include:  "pbr/brdf/dv_ggx_smith_correlated.hlsl" (path relative to hlsl_ports/)
+// Config macros read: none.
+//
+// The product of two formulas the library has separately:
+//   D = alpha² / (π d²),  d = (1 - NdotH²) + (NdotH·alpha)²      (Walter et al. 2007 eq. 33,
+//       in d_ggx.hlsl's cancellation-free form, 1 - NdotH² = |n × h|²)
+//   V = 0.5 / (lambdaV + lambdaL),                                 (Heitz 2014 eq. 99,
+//       lambdaV = NdotL sqrt(NdotV² (1 - alpha²) + alpha²),         v_smith_ggx_correlated.hlsl)
+//       lambdaL = NdotV sqrt(NdotL² (1 - alpha²) + alpha²)
+//   D · V = (alpha² / 2π) / (d² (lambdaV + lambdaL)): one reciprocal instead of two.
+// h need not be normalised: for h = k·ĥ (k > 0), n·h = k n·ĥ and |n × h|² = k² |n × ĥ|², so
+// d computed from them is k² times d of ĥ, and the numerator takes h2² = |h|⁴ = k⁴ to
+// cancel it. The caller passes h = l + v as it is and saves the reciprocal square root,
+// three multiplies and the squared scale that normalising would cost.
+// Preconditions, which the caller (pbr_brdf_standard) establishes once for the whole BRDF,
+// so none of the terms' own clamps is repeated here:
+//   alpha >= PBR_MIN_PERCEPTUAL_ROUGHNESS² (2.0e-3), NdotL in (0, 1], NdotV in
+//   [PBR_MIN_NDOTV, 1], nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² of one h, with h2 in
+//   [PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, 4] (|l + v| <= 2).
+// nDotH enters squared: D is even in n·h, so an h below the surface (a view below the
+// horizon) gives GGX at |n·ĥ|, finite, with no clamp.
+// Range (unit h; another h scales d² and the numerator alike): d >= alpha², d² >= 1.7e-11;
+// lambdaV + lambdaL >= NdotV alpha >= 2e-7; the denominator stays >= 3e-18, far from
+// float32's smallest normal, and D · V <= 2e11. Outside the preconditions (h = 0: 0 / 0)
+// the quotient is NaN and the caller must not use it (pbr_brdf_standard selects 0 there).
+// Measured price of the terms' own guards, and the fused form's error: docs/bench.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
+#ifndef PBR_BRDF_DV_GGX_SMITH_CORRELATED_HLSL
+#define PBR_BRDF_DV_GGX_SMITH_CORRELATED_HLSL
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/dv_ggx_smith_correlated.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+
+#include "pbr/common/constants.hlsl"
+
+float pbr_DV_GGX_SmithCorrelated(float nDotH, float nCrossH2, float h2, float NdotL,
+                                 float NdotV, float alpha) {
+    float a2 = alpha * alpha;
+    float d = nCrossH2 + nDotH * nDotH * a2;
+    float lambdaV = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2);
+    float lambdaL = NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
+    return (a2 * (0.5 * PBR_INV_PI) * (h2 * h2)) / (d * d * (lambdaV + lambdaL));
+}
+
+#endif // PBR_BRDF_DV_GGX_SMITH_CORRELATED_HLSL
