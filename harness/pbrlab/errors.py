@@ -22,6 +22,11 @@ class SceneError(PbrlabError):
     """A scene file is malformed; the message names the offending field."""
 
 
+class InconsistentCountError(PbrlabError):
+    """The bench's instruction counts failed their own check (a negative count, two counts
+    of one kernel that disagree, or a draw with no instructions); the message lists each."""
+
+
 class LoopLimitWarning(UserWarning):
     """A shader loop asks for more iterations than the renderer runs (llvmpipe stops every
     loop after 65535 iterations and carries on with the partial result)."""

@@ -8,11 +8,15 @@ For each family (``families.FAMILIES``) every variant gets
   and the inputs of the worst absolute and relative error; plus, for approximations that
   have one, the float32 error against the variant's *own* float64 twin (``self_error``);
 * **instructions per evaluation** (the deterministic cost): callgrind's ``Ir`` (x86
-  instructions executed) of a draw of the timing kernel (``kernel.py``) at two loop trip
-  counts T1 < T2, variant minus the family's baseline kernel, divided by
-  pixels x evaluations per iteration x (T2 - T1). It counts the code llvmpipe actually
-  compiled (the worker under valgrind loads it from Mesa's shader cache, filled by the
-  native timing run with the same CPU-caps pin), amortised over its 4-wide SIMD;
+  instructions executed inside the draw and glFinish calls, ``measure.COUNTED_FUNCTIONS``)
+  of a draw of the timing kernel (``kernel.py``) at two loop trip counts T1 < T2, variant
+  minus the family's baseline kernel, divided by pixels x evaluations per iteration x
+  (T2 - T1). It counts the code llvmpipe actually compiled (the worker under valgrind loads
+  it from Mesa's shader cache, filled by the native timing run with the same CPU-caps pin),
+  amortised over its 4-wide SIMD. Every kernel is counted in ``measure.COUNT_PASSES`` passes
+  (each counted draw right after a warm draw of the same kernel; the second pass in reverse
+  order), and the bench fails (``count_check``) on a negative figure or two figures of one
+  variant more than 1 % apart; the figure is their mean;
 * **time per evaluation** (ns): CPU time (``time.process_time``) around draw + glFinish in
   a worker with ``LP_NUM_THREADS=1``, every kernel warmed, kernels interleaved in a fresh
   random order each round, the family baseline of the same round subtracted; median,
@@ -29,7 +33,8 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
      "machine": {"GL_RENDERER", "GL_VERSION", "mesa", "llvm", "backend", "llvmpipe_cpu_caps",
                  "cpu", "cpu_features": [...], "cpu_count", "python", "valgrind"},
      "method": {"evals_per_iteration", "time_size", "time_trips", "time_rounds",
-                "count_size", "count_trips": [T1, T2], "noise_note", ...},
+                "count_size", "count_trips": [T1, T2], "count_passes", "count_tolerance",
+                "noise_note", ...},
      "families": [{"name", "title", "reference", "domain", "exact", "unit",
                    "variants": [{"name", "expression" (null: not an expression), "note",
                                  "defines": {...},
@@ -37,7 +42,8 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
                                  "lsb_8bit": int (sRGB encode only),
                                  "time_ns": {"median", "p25", "p75", "min", "max", "rounds",
                                              "ratio_to_exact"},
-                                 "instructions": {"per_eval", "ratio_to_exact"}}]}],
+                                 "instructions": {"per_eval", "ratio_to_exact",
+                                                  "counts": [per_eval of each pass] | null}}]}],
      "frame": {"scene", "size": [w, h], "rounds", "setup_ms_median",
                "tiers": {tier: {"total_ms_median", "shading_ms_median", "shading_ms_p25",
                                 "shading_ms_p75", "ratio_to_high"}}},
@@ -57,7 +63,7 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
              "worst_rel_at": {input: value}, "nonfinite", "samples", "rel_floor"}
 
 ``instructions.per_eval`` is null where valgrind is missing and under ``--quick`` (a
-callgrind worker spends ~55 s in start-up whatever it counts). Time units: ns per
+callgrind worker spends 15-55 s in start-up whatever it counts). Time units: ns per
 evaluation, except the hardware sRGB encode (ns per pixel: one encode per pixel).
 """
 
@@ -71,13 +77,17 @@ from pathlib import Path
 import numpy as np
 
 from . import families as families_mod
-from . import kernel, measure, report
+from . import count_check, kernel, measure, report
 
 
 def _ratio(value, exact):
     if value is None or exact is None or exact == 0:
         return None
     return float(value / exact)
+
+
+def _mean(values):
+    return None if values is None else float(np.mean(values))
 
 
 def _time_stats(ns):
@@ -114,7 +124,8 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
         tick(f"time: {len(kernels)} kernels x {settings.time_rounds} interleaved rounds (LP_NUM_THREADS=1)")
         times = measure.measure_time(kernels, plans, settings, tmp)
         tick("instructions: skipped under --quick" if settings.count_families == () else
-             f"instructions: callgrind of {len(kernels)} kernels x 2 trip counts (~1-2 min)")
+             f"instructions: callgrind of {len(kernels)} kernels x 2 trip counts x "
+             f"{measure.COUNT_PASSES} passes (~1 min)")
         counts = measure.measure_instructions(kernels, plans, settings, tmp)
         tick(f"frame cost: default scene at {settings.frame_size}^2 per tier")
         frame = measure.measure_frame(settings, tmp)
@@ -128,17 +139,19 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
     for fam in fams:
         exact_t = times.get((fam.name, fam.exact))
         exact_t = float(np.median(exact_t)) if exact_t is not None else None
-        exact_c = counts.get((fam.name, fam.exact))
+        exact_c = _mean(counts.get((fam.name, fam.exact)))
         variants = []
         for v in fam.variants:
             ns = times.get((fam.name, v.name))
             t = _time_stats(ns)
             t["ratio_to_exact"] = _ratio(t["median"], exact_t)
-            c = counts.get((fam.name, v.name))
+            passes = counts.get((fam.name, v.name))
+            c = _mean(passes)
             record = {"name": v.name, "expression": v.expression, "note": v.note,
                       "defines": dict(v.defines), **errors[fam.name][v.name],
                       "time_ns": t,
-                      "instructions": {"per_eval": c, "ratio_to_exact": _ratio(c, exact_c)}}
+                      "instructions": {"per_eval": c, "ratio_to_exact": _ratio(c, exact_c),
+                                       "counts": passes}}
             variants.append(record)
         doc_families.append({"name": fam.name, "title": fam.title, "reference": fam.reference_name,
                              "domain": fam.domain_note, "exact": fam.exact,
@@ -149,7 +162,9 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
            "method": {"evals_per_iteration": kernel.EVALS_PER_ITERATION,
                       "time_size": settings.time_size, "time_trips": settings.time_trips,
                       "time_rounds": settings.time_rounds, "count_size": settings.count_size,
-                      "count_trips": list(settings.count_trips), "lp_num_threads_timing": 1,
+                      "count_trips": list(settings.count_trips),
+                      "count_passes": measure.COUNT_PASSES, "count_tolerance": count_check.TOLERANCE,
+                      "lp_num_threads_timing": 1,
                       "noise_note": report.NOISE_NOTE},
            "families": doc_families, "frame": frame, "tier_images": tier_images,
            "specialisation": specialisation}

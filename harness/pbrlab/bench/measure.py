@@ -18,11 +18,28 @@ import numpy as np
 
 from .. import console, evaluator, gl, ibl, shaders, targets
 from ..golden_scenes import LIT_SCENE
-from . import kernel
+from . import count_check, kernel
 from .families import Family, Variant
 
 DEFAULT_SCENE = LIT_SCENE  # the lit golden scene (pbrlab.golden_scenes), one definition of its path
 TIERS = ("high", "medium", "low")
+
+
+# callgrind target, the timing target's size (Settings.time_size), so that counts and times
+# describe the same draws. A count per evaluation depends on the size, deterministically:
+# llvmpipe runs two compiled fragment functions, and the one that costs ~20 % more per loop
+# iteration covers a share of the pixels that falls as 1/size (callgrind's per-function
+# counts: ~46 % at 32x32, 23 % at 64x64, 11 % at 128x128), so smith_ggx_correlated counts
+# 9.77 at 32x32, 9.44 at 64x64 and 9.27 at 128x128.
+COUNT_SIZE = 128
+# Each kernel is counted this many times (worker.count_plan); count_check compares them.
+COUNT_PASSES = 2
+# callgrind collects instructions only inside these functions, moderngl's C entry points of
+# VertexArray.render and Context.finish (symbols of its mgl extension): one draw and
+# llvmpipe's rasterisation of it (LP_NUM_THREADS=0: in the calling thread, inside finish).
+# Outside them run Python's interpreter, whose adaptive specialisation retries a call site
+# now and then (~0.3-1.7 k instructions, measured), and anything else the worker does.
+COUNTED_FUNCTIONS = ("MGLVertexArray_render*", "MGLContext_finish*")
 
 
 @dataclass(frozen=True)
@@ -41,15 +58,15 @@ class Settings:
     frame_size: int
     frame_rounds: int
     tier_image_scale: float  # of the scene's own size
-    # None: every family; (): none. A callgrind worker spends ~55 s in start-up whatever it
-    # counts (llvmpipe's own LLVM code generation and Python, instrumented), so --quick skips it.
+    # None: every family; (): none. A callgrind worker spends ~15 s (kernels: collection only
+    # in the draws) to ~55 s (frames: whole process) in start-up, so --quick skips counting.
     count_families: tuple | None
 
     @classmethod
     def make(cls, quick: bool) -> "Settings":
         if quick:
             return cls(True, 4096, {2: 96, 3: 20, 4: 10}, 48, 4, 3, 16, (1, 2), 192, 2, 0.5, ())
-        return cls(False, 65536, {2: 512, 3: 64, 4: 32}, 128, 32, 15, 32, (2, 4), 1024, 10, 1.0,
+        return cls(False, 65536, {2: 512, 3: 64, 4: 32}, 128, 32, 15, COUNT_SIZE, (2, 4), 1024, 10, 1.0,
                    None)
 
 
@@ -333,8 +350,19 @@ def measure_time(kernels, plans, settings: Settings, workdir: Path) -> dict:
 
 
 def measure_instructions(kernels, plans, settings: Settings, workdir: Path, jobs: int = 2) -> dict:
-    """Instructions per evaluation from callgrind (``Ir``: executed x86 instructions of
-    the whole process between two markers, i.e. one draw + glFinish)."""
+    """Instructions per evaluation from callgrind: ``{(family, variant): [figure per pass]}``,
+    checked by count_check (raises InconsistentCountError). A draw's count is callgrind's
+    ``Ir`` inside COUNTED_FUNCTIONS between two markers: one draw + glFinish.
+
+    What a count excludes, and why (issue 16; measured at 32x32, where 1 instruction per
+    evaluation is 16,384 in a T2 - T1 difference: 32 x 32 pixels x 8 evaluations x 2 trips):
+    Python's garbage collector (off in the worker: a young collection inside one baseline
+    draw moved a whole family by +25 per evaluation; the oldest generation's costs 500), the
+    interpreter's adaptive specialisation (outside COUNTED_FUNCTIONS: 0.02-0.1), and
+    llvmpipe's work when a draw follows another program, texture or target (worker.count_plan:
+    a warm draw first: 0.1-0.3, depending on the kernels drawn before). Left inside: work in
+    llvmpipe's draw whose amount depends on the process's heap (malloc), which moved a figure
+    by at most 0.003 per evaluation at 128x128 between passes and worker processes."""
     valgrind = shutil.which("valgrind")
     if valgrind is None or settings.count_families == ():
         return {}
@@ -349,32 +377,51 @@ def measure_instructions(kernels, plans, settings: Settings, workdir: Path, jobs
     for g, names in enumerate(groups):
         chunk = [k for k in kernels if k["id"].split("/")[0] in names]
         spec = {"vertex": kernel.vertex_source(), "kernels": chunk, "size": settings.count_size,
-                "trips_pair": list(settings.count_trips), "dfg_lut": _dfg_file(workdir)}
+                "trips_pair": list(settings.count_trips), "passes": COUNT_PASSES,
+                "dfg_lut": _dfg_file(workdir)}
         outdir = workdir / f"callgrind{g}"
         outdir.mkdir()
         prefix = (valgrind, "--tool=callgrind", "--dump-before=getppid", "--dump-instr=no",
+                  *(f"--toggle-collect={name}" for name in COUNTED_FUNCTIONS),
                   f"--callgrind-out-file={outdir}/cg.out")
         cmd, out_path = _worker_command("count", spec, workdir, prefix=prefix, tag=str(g))
         procs.append((subprocess.Popen(cmd, env=_worker_env(0), stdout=subprocess.PIPE,
                                        stderr=subprocess.PIPE, text=True), cmd, out_path, outdir))
-    counts = {}
+    draws = {}
     for (proc, cmd, out_path, outdir), result in zip(procs, _wait([p[:3] for p in procs])):
         dumps = sorted(outdir.glob("cg.out.*"), key=lambda p: int(p.suffix[1:]))
         totals = [int(re.search(r"^summary:\s*(\d+)", p.read_text(), re.M).group(1)) for p in dumps]
-        draws = totals[1:]  # dump 1: start-up up to the first marker
-        for (kid, trips), ir in zip(result["sequence"], draws):
-            counts[(kid, trips)] = ir
+        # dump 1: start-up up to the first marker; then one per draw of the plan
+        for (kid, trips, counted_pass), ir in zip(result["sequence"], totals[1:]):
+            if counted_pass is not None:
+                draws[(kid, trips, counted_pass)] = ir
+    count_check.check_collected(draws, COUNTED_FUNCTIONS)
+    figures = per_eval_counts(draws, plans, settings, COUNT_PASSES)
+    count_check.check_counts({"/".join(key): values for key, values in figures.items()},
+                             unit=" per evaluation")
+    return figures
+
+
+def per_eval_counts(draws: dict, plans, settings: Settings, passes: int) -> dict:
+    """``{(family, variant): [instructions per evaluation, one per pass]}`` from the counted
+    draws ``{(kernel id, trips, pass): Ir}``: per pass, the variant's T2 - T1 difference minus
+    its baseline's, over pixels x evaluations per iteration x (T2 - T1); "pixel" plans (the
+    hardware sRGB encode): the variant's draw minus its baseline's at T2, per pixel."""
     t1, t2 = settings.count_trips
     pixels = settings.count_size ** 2
     out = {}
     for plan in plans:
-        if plan["kind"] == "pixel":
-            v = (counts[(plan["id"], t2)] - counts[(plan["baseline"], t2)]) / pixels
-        else:
-            dv = counts[(plan["id"], t2)] - counts[(plan["id"], t1)]
-            db = counts[(plan["baseline"], t2)] - counts[(plan["baseline"], t1)]
-            v = (dv - db) / (pixels * kernel.EVALS_PER_ITERATION * (t2 - t1))
-        out[(plan["family"], plan["variant"])] = float(v)
+        values = []
+        for p in range(passes):
+            c = lambda kid, trips: draws[(kid, trips, p)]  # noqa: E731
+            if plan["kind"] == "pixel":
+                v = (c(plan["id"], t2) - c(plan["baseline"], t2)) / pixels
+            else:
+                dv = c(plan["id"], t2) - c(plan["id"], t1)
+                db = c(plan["baseline"], t2) - c(plan["baseline"], t1)
+                v = (dv - db) / (pixels * kernel.EVALS_PER_ITERATION * (t2 - t1))
+            values.append(float(v))
+        out[(plan["family"], plan["variant"])] = values
     return out
 
 

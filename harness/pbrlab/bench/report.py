@@ -122,7 +122,8 @@ def markdown(doc: dict) -> str:
         "**Columns.** *err*: against the family's float64 reference over the stated domain: max abs, "
         "max rel (where |ref| is above the floor), 99th-percentile rel, RMSE, and the inputs of the "
         "worst relative error. *instr/eval*: x86 instructions executed per evaluation (callgrind `Ir` of "
-        "the draws, per pixel; deterministic). *ns/eval*: median CPU time [25th-75th percentile]. "
+        "the draws, per pixel; deterministic: every kernel is counted in two passes, which must agree "
+        "within 1 %). *ns/eval*: median CPU time [25th-75th percentile]. "
         "*×exact*: ratio to the family's exact variant.",
         "",
         f"> {NOISE_NOTE}",
