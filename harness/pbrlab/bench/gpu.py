@@ -34,7 +34,9 @@ from ..gpu_isa import compile as gpu_isa
 from ..hlsl import HLSL_ROOT
 from . import kernel
 
-GPU_FAMILIES = tuple(gpu_isa.FAMILIES)  # rdna3, rdna2, gcn5
+FORCE_FAMILY = dict(gpu_isa.FAMILIES)  # rdna3, rdna2, gcn5 -> RADV_FORCE_FAMILY
+GPU_FAMILIES = tuple(FORCE_FAMILY)
+TITLES = {"rdna3": "RDNA3", "rdna2": "RDNA2", "gcn5": "GCN5"}
 LANGUAGES = ("glsl", "hlsl")
 PROGRAM_KINDS = ("specialised", "full")
 
@@ -59,7 +61,8 @@ UNITY_NA = "n/a: a ShaderLab material (pbrlab.unity builds its program; not comp
 # statistic name in RADV -> key in the bench's JSON
 _PROGRAM_STATS = {"Instructions": "instructions", "VGPRs": "vgprs", "SGPRs": "sgprs",
                   "Latency": "latency", "Inverse Throughput": "inverse_throughput",
-                  "Subgroups per SIMD": "subgroups_per_simd", "Code size": "code_size"}
+                  "Subgroups per SIMD": "subgroups_per_simd", "Code size": "code_size",
+                  "Wave size": "wave_size", "Branches": "branches"}
 _PER_EVAL_STATS = {"Instructions": "instructions_per_eval", "Latency": "latency_per_eval",
                    "Inverse Throughput": "inverse_throughput_per_eval"}
 _PER_EVAL_ISA = {"valu_f16": "valu_f16_per_eval", "valu_packed": "valu_packed_per_eval",
@@ -105,6 +108,7 @@ def per_eval(variant: dict, baseline: dict) -> dict:
                 for name, key in _PER_EVAL_ISA.items()})
     out.update({"vgprs": variant["VGPRs"], "vgprs_baseline": baseline["VGPRs"],
                 "sgprs": variant["SGPRs"], "subgroups_per_simd": variant["Subgroups per SIMD"],
+                "wave_size": variant["Wave size"],
                 "instructions": variant["Instructions"],
                 "baseline_instructions": baseline["Instructions"]})
     return out

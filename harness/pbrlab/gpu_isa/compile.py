@@ -92,7 +92,8 @@ def _prepare(jobs: list, folder: Path) -> list:
 
 
 def run(jobs: list, families=tuple(FAMILIES)) -> dict:
-    """``{family: {job id: {statistic: value, ..., "isa": {...}}, "_device": {...}}}``."""
+    """``{family: {job id: {statistic: value, ..., "Wave size": 32 | 64, "isa": {...}},
+    "_device": {...}}}`` (statistics: ``STATISTICS``, RADV's names)."""
     out = {}
     with tempfile.TemporaryDirectory(prefix="pbrlab-gpu-isa-") as tmp:
         spec = Path(tmp) / "spec.json"

@@ -23,6 +23,7 @@ def compile_job(device: Device, job: dict) -> dict:
     if not stage:
         raise PbrlabError(f"{job['id']}: RADV reported no fragment executable")
     stats = {name: stage[0].statistics.get(name) for name in STATISTICS}
+    stats["Wave size"] = stage[0].subgroup_size
     stats["isa"] = isa.summary(stage[0].disassembly)
     return stats
 
