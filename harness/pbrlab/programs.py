@@ -95,12 +95,19 @@ def template_source(name: str, defines: dict, surface: Path | None = None) -> sh
     return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
 
 
+def hlsl_template_text(name: str, defines: dict, surface: Path | None = None) -> tuple[str, list]:
+    """(HLSL text, include directories) of an HLSL pixel-shader template with its defines
+    and surface function; glslang resolves the includes (then ``hlsl.HLSL_ROOT``)."""
+    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
+    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface,
+                 f"pbrlab/templates/{name}", line_marker=True)
+    return text, include_dirs
+
+
 def hlsl_template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
     """An HLSL pixel-shader template, compiled to SPIR-V and cross-compiled to GLSL 330."""
     display = f"pbrlab/templates/{name}"
-    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface, display,
-                 line_marker=True)
+    text, include_dirs = hlsl_template_text(name, defines, surface)
     glsl = hlsl.hlsl_to_glsl(text, display, include_dirs, plain_uniforms=True)
     return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
 

@@ -4,7 +4,9 @@ A benchmark is not a timed test: nothing here asserts a time or a ratio. What is
 the command exits 0, accuracy_cost.json validates (pbrlab.bench.report.validate), every
 variant of every family the library ships has an error and a time (instruction counts are
 skipped under --quick, see pbrlab.bench), the markdown has a table per family and every
-family has a plot.
+family has a plot; the AMD GPU ISA columns (RADV's null device, which `make bench` requires:
+scripts/setup.sh installs it) exist for the three families, are finite and respond to the
+work a variant does.
 """
 
 import json
@@ -54,6 +56,7 @@ def test_bench_validate_rejects_a_variant_without_error():
     doc = {"schema": report.SCHEMA_ID, "quick": False, "machine": {"valgrind": "valgrind-3.19.0"},
            "method": {}, "frame": {"tiers": {}}, "tier_images": {"tiers": {}},
            "specialisation": {"scenes": {}},
+           "gpu_isa": {"available": False, "reason": "RADV missing (test)"},
            "families": [{"name": "f", "title": "t", "reference": "r", "domain": "d", "exact": "a",
                          "unit": "u", "variants": [{"name": "a", "expression": "x", "note": "",
                                                     "defines": {}, "self_error": None,
@@ -105,3 +108,59 @@ def test_a_failing_worker_reports_its_own_stderr_without_the_round_lines(tmp_pat
         measure._run_with_rounds([sys.executable, "-c", _FAKE_WORKER, str(out), "fail"], out,
                                  None, rounds=4, what="fake rounds")
     assert "round\nround" not in str(failure.value)  # the progress lines are not the error
+
+
+# ---- AMD GPU ISA columns (pbrlab.bench.gpu) --------------------------------------------------
+
+def _variants(doc):
+    return {(f["name"], v["name"]): v for f in doc["families"] for v in f["variants"]}
+
+
+def test_bench_quick_compiles_for_the_three_amd_families(quick_report):
+    out, doc = quick_report
+    isa = doc["gpu_isa"]
+    assert isa["available"], f"RADV null device unavailable (scripts/setup.sh installs it): {isa['reason']}"
+    assert set(isa["devices"]) == {"rdna3", "rdna2", "gcn5"}
+    assert doc["machine"]["gpu_isa_devices"] == isa["devices"]
+    text = (out / "accuracy_cost.md").read_text(encoding="utf-8")
+    for name in isa["devices"].values():
+        assert name.startswith("Null hardware (RADV") and f"`{name}`" in text
+    assert "RDNA3 instr/eval" in text and "GLSL versus HLSL" in text
+
+
+def test_bench_quick_gpu_costs_respond_to_the_work_a_variant_does(quick_report):
+    _, doc = quick_report
+    variants = _variants(doc)
+    kinds = {(f.name, v.name): v.kind for f in families.FAMILIES for v in f.variants}
+    for family in ("rdna3", "rdna2", "gcn5"):
+        for key, v in variants.items():
+            if kinds[key] == "alu":  # an expression: its per-evaluation static cost is not negative
+                assert v["gpu_isa"]["families"][family]["instructions_per_eval"] >= 0, (key, family)
+        ggx = variants[("distribution", "ggx")]["gpu_isa"]["families"][family]
+        implicit = variants[("visibility", "implicit")]["gpu_isa"]["families"][family]
+        # D_GGX: a division and a square of a polynomial; V_Implicit: the constant 1/4
+        assert ggx["instructions_per_eval"] > implicit["instructions_per_eval"] + 4, family
+        high = variants[("brdf_tier", "high")]["gpu_isa"]["families"][family]
+        assert high["vgprs"] >= high["vgprs_baseline"] and high["instructions_per_eval"] > 20, family
+        # the sRGB decode is the texture unit's: the same program as the UNORM8 fetch
+        assert variants[("srgb_decode", "hardware")]["gpu_isa"]["families"][family]["instructions_per_eval"] == 0
+    assert "colour-buffer" in variants[("srgb_encode", "hardware")]["gpu_isa"]["na"]
+
+
+def test_bench_quick_compiles_every_scene_program_in_glsl_and_hlsl(quick_report):
+    _, doc = quick_report
+    for name, scene in doc["specialisation"]["scenes"].items():
+        isa = scene["gpu_isa"]
+        kinds = [p["kind"] for p in isa["programs"]]
+        assert "specialised" in kinds and "full" in kinds, name
+        for program in isa["programs"]:
+            for language in ("glsl", "hlsl"):
+                assert set(program["languages"][language]) == {"rdna3", "rdna2", "gcn5"}, (name, language)
+        for material, pair in isa["materials"].items():
+            assert set(pair) == {"specialised", "full"}, (name, material)
+    # one program per kind: the full one compiles every effect, the specialised two lights
+    metallic = doc["specialisation"]["scenes"]["chart_metallic"]["gpu_isa"]["summary"]
+    for language in ("glsl", "hlsl"):
+        for family, row in metallic[language].items():
+            assert row["full"]["instructions_max"] > row["specialised"]["instructions_max"], (language, family)
+            assert row["full"]["vgprs_max"] >= row["specialised"]["vgprs_max"], (language, family)

@@ -22,16 +22,24 @@ For each family (``families.FAMILIES``) every variant gets
   random order each round, the family baseline of the same round subtracted; median,
   quartiles, min, max over rounds. Differences below about 20 % are noise.
 
+* **AMD GPU instructions per evaluation** (``gpu.py``): the same kernels compiled by Mesa's
+  RADV/ACO for RDNA3, RDNA2 and GCN5 on a null device (no GPU): static instructions,
+  latency and inverse-throughput estimates, variant minus baseline over the 8 evaluations
+  of the loop body; the variant's VGPRs.
+
 Plus the default scene per quality tier: frame CPU time at 1024x1024 (and the shading
-part: minus the same render with no objects) and image error against the HIGH tier.
+part: minus the same render with no objects) and image error against the HIGH tier; and
+for each test scene, its programs specialised and full, in GLSL and HLSL, compiled for the
+three AMD families (instructions, VGPRs, waves per SIMD).
 
 Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``.
 
-JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
+JSON schema ``pbrlab-bench/2`` (checked by ``report.validate``)::
 
-    {"schema": "pbrlab-bench/1", "quick": bool, "generated": ISO time,
+    {"schema": "pbrlab-bench/2", "quick": bool, "generated": ISO time,
      "machine": {"GL_RENDERER", "GL_VERSION", "mesa", "llvm", "backend", "llvmpipe_cpu_caps",
-                 "cpu", "cpu_features": [...], "cpu_count", "python", "valgrind"},
+                 "cpu", "cpu_features": [...], "cpu_count", "python", "valgrind",
+                 "gpu_isa_devices": {gpu family: RADV device name} | null},
      "method": {"evals_per_iteration", "time_size", "time_trips", "time_rounds",
                 "count_size", "count_trips": [T1, T2], "count_passes", "count_tolerance",
                 "noise_note", ...},
@@ -43,7 +51,8 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
                                  "time_ns": {"median", "p25", "p75", "min", "max", "rounds",
                                              "ratio_to_exact"},
                                  "instructions": {"per_eval", "ratio_to_exact",
-                                                  "counts": [per_eval of each pass] | null}}]}],
+                                                  "counts": [per_eval of each pass] | null},
+                                 "gpu_isa": GPU_KERNEL | null (RADV unavailable)}]}],
      "frame": {"scene", "size": [w, h], "rounds", "setup_ms_median",
                "tiers": {tier: {"total_ms_median", "shading_ms_median", "shading_ms_p25",
                                 "shading_ms_p75", "ratio_to_high"}}},
@@ -57,10 +66,29 @@ JSON schema ``pbrlab-bench/1`` (checked by ``report.validate``)::
                                            "specialised_ms_median", "full_ms_median",
                                            "full_over_specialised",
                                            "specialised_instructions": int | null (quick),
-                                           "full_instructions": int | null (quick)}}}}
+                                           "full_instructions": int | null (quick),
+                                           "gpu_isa": GPU_SCENE | null}}},
+     "gpu_isa": {"available": bool, "reason": str | null (why not available),
+                 "families": {gpu family: RADV_FORCE_FAMILY}, "devices": {...} | null,
+                 "float16": {gpu family: bool} | null, "note", "kernel_note"}}
 
     ERROR = {"max_abs", "max_rel", "p99_rel", "rmse", "worst_abs_at": {input: value},
              "worst_rel_at": {input: value}, "nonfinite", "samples", "rel_floor"}
+    GPU_KERNEL = {"na": why} (the hardware sRGB encode: no fragment instructions)
+               | {"note", "families": {"rdna3" | "rdna2" | "gcn5": {
+                     "instructions_per_eval", "latency_per_eval", "inverse_throughput_per_eval",
+                     "valu_f16_per_eval", "valu_packed_per_eval", "transcendental_per_eval",
+                     "vgprs", "vgprs_baseline", "sgprs", "subgroups_per_simd", "wave_size",
+                     "instructions", "baseline_instructions"}}}
+    GPU_SCENE = {"programs": [{"kind": "specialised" | "full", "stem", "materials": [...],
+                               "defines": {...}, "languages": {"glsl" | "hlsl":
+                                   {"na": why} | {gpu family: PROGRAM}}}],
+                 "materials": {material: {"specialised": program index, "full": index}},
+                 "summary": {language: {gpu family: {"specialised" | "full": {"programs",
+                             "instructions_max", "vgprs_max", "subgroups_per_simd_min"},
+                             "vgprs_saved_max", "subgroups_gained_max"}}}}
+    PROGRAM = {"instructions", "vgprs", "sgprs", "latency", "inverse_throughput",
+               "subgroups_per_simd", "code_size", "wave_size", "branches"}
 
 ``instructions.per_eval`` is null where valgrind is missing and under ``--quick`` (a
 callgrind worker spends 15-55 s in start-up whatever it counts). Time units: ns per
@@ -77,7 +105,7 @@ from pathlib import Path
 import numpy as np
 
 from . import families as families_mod
-from . import count_check, kernel, measure, report
+from . import count_check, gpu, kernel, measure, report
 
 
 def _ratio(value, exact):
@@ -98,6 +126,11 @@ def _time_stats(ns):
             "rounds": int(len(ns))}
 
 
+def _specialisation_scenes() -> dict:
+    from .worker import _bench_scene
+    return {name: _bench_scene(name) for name in measure.SPECIALISATION_SCENES}
+
+
 def run(out_dir, family: str | None = None, quick: bool = False, progress=measure.progress) -> dict:
     """Measure, write the outputs into ``out_dir`` and return the JSON document."""
     out_dir = Path(out_dir)
@@ -107,7 +140,7 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
         raise PbrlabError(f"unknown family {family!r}; choose from {', '.join(families_mod.BY_NAME)}")
     fams = [families_mod.BY_NAME[family]] if family else list(families_mod.FAMILIES)
     settings = measure.Settings.make(quick)
-    steps = len(fams) + 5  # + time, instructions, frame, specialisation, tier images
+    steps = len(fams) + 6  # + time, instructions, frame, specialisation, tier images, GPU ISA
     step = iter(range(1, steps + 1))
 
     def tick(what):
@@ -134,6 +167,13 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
     frame["scene"] = str(measure.DEFAULT_SCENE.relative_to(measure.DEFAULT_SCENE.parents[2]))
     tick("tier image error against the HIGH tier")
     tier_images = measure.tier_image_error(scale=settings.tier_image_scale)
+    tick("GPU ISA: the kernels and the scenes' programs for RDNA3, RDNA2, GCN5 (RADV null device)")
+    isa = gpu.measure(kernels, plans, families_mod.BY_NAME, _specialisation_scenes())
+    if not isa["available"]:
+        progress(f"GPU ISA columns NOT measured: {isa['reason']}")
+    machine["gpu_isa_devices"] = isa["devices"]
+    for name, record in specialisation["scenes"].items():
+        record["gpu_isa"] = isa["scenes"].get(name)
 
     doc_families = []
     for fam in fams:
@@ -151,7 +191,8 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
                       "defines": dict(v.defines), **errors[fam.name][v.name],
                       "time_ns": t,
                       "instructions": {"per_eval": c, "ratio_to_exact": _ratio(c, exact_c),
-                                       "counts": passes}}
+                                       "counts": passes},
+                      "gpu_isa": isa["kernels"].get((fam.name, v.name))}
             variants.append(record)
         doc_families.append({"name": fam.name, "title": fam.title, "reference": fam.reference_name,
                              "domain": fam.domain_note, "exact": fam.exact,
@@ -167,13 +208,17 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
                       "lp_num_threads_timing": 1,
                       "noise_note": report.NOISE_NOTE},
            "families": doc_families, "frame": frame, "tier_images": tier_images,
-           "specialisation": specialisation}
+           "specialisation": specialisation,
+           "gpu_isa": {"available": isa["available"], "reason": isa["reason"],
+                       "families": dict(gpu.FORCE_FAMILY), "devices": isa["devices"],
+                       "float16": isa.get("float16"), "note": gpu.ACO_NOTE,
+                       "kernel_note": gpu.KERNEL_NOTE}}
     problems = report.validate(doc)
     if problems:
         raise RuntimeError("bench produced an invalid document:\n" + "\n".join(problems))
     report.write_json(doc, out_dir / "accuracy_cost.json")
     (out_dir / "accuracy_cost.md").write_text(report.markdown(doc), encoding="utf-8")
     for fam in doc_families:
-        report.pareto_plot(fam, out_dir / f"{fam['name']}.png", quick)
+        report.pareto_plot(fam, out_dir / f"{fam['name']}.png", quick, doc["gpu_isa"])
     progress(f"wrote {out_dir / 'accuracy_cost.md'}, accuracy_cost.json and {len(doc_families)} plots")
     return doc

@@ -1,10 +1,13 @@
-"""accuracy_cost.json (validated against SCHEMA), accuracy_cost.md and the Pareto plots."""
+"""accuracy_cost.json (validated against SCHEMA), accuracy_cost.md and the Pareto plots
+(the AMD GPU ISA parts: report_gpu.py)."""
 
 from __future__ import annotations
 
 import json
 import math
 from pathlib import Path
+
+from . import report_gpu
 
 NOISE_NOTE = ("Times are CPU time on llvmpipe with LP_NUM_THREADS=1 (median of interleaved rounds, "
               "empty-loop baseline subtracted); differences below about 20 % are noise here. "
@@ -15,7 +18,7 @@ NOISE_NOTE = ("Times are CPU time on llvmpipe with LP_NUM_THREADS=1 (median of i
 VARIANT_FIELDS = {
     "name": "str", "expression": "str?", "note": "str", "defines": "dict",
     "error": "dict", "self_error": "dict?",
-    "time_ns": "dict", "instructions": "dict",
+    "time_ns": "dict", "instructions": "dict", "gpu_isa": "dict?",
 }
 ERROR_FIELDS = {"max_abs": "num", "max_rel": "num", "p99_rel": "num", "rmse": "num",
                 "worst_abs_at": "dict", "worst_rel_at": "dict", "samples": "num", "nonfinite": "num"}
@@ -25,8 +28,9 @@ INSTRUCTION_FIELDS = {"per_eval": "num", "ratio_to_exact": "num"}
 FAMILY_FIELDS = {"name": "str", "title": "str", "reference": "str", "domain": "str",
                  "exact": "str", "unit": "str", "variants": "list"}
 TOP_FIELDS = {"schema": "str", "quick": "bool", "machine": "dict", "method": "dict",
-              "families": "list", "frame": "dict", "tier_images": "dict", "specialisation": "dict"}
-SCHEMA_ID = "pbrlab-bench/1"
+              "families": "list", "frame": "dict", "tier_images": "dict", "specialisation": "dict",
+              "gpu_isa": "dict"}
+SCHEMA_ID = "pbrlab-bench/2"
 
 
 def _check(obj, fields, where, problems):
@@ -83,7 +87,7 @@ def validate(doc: dict) -> list[str]:
             problems.append(f"$.frame.tiers: missing {tier}")
         if tier not in doc["tier_images"].get("tiers", {}):
             problems.append(f"$.tier_images.tiers: missing {tier}")
-    return problems
+    return problems + report_gpu.validate(doc)
 
 
 def write_json(doc: dict, path: Path) -> None:
@@ -117,17 +121,21 @@ def markdown(doc: dict) -> str:
         f"**Machine**: {m['cpu']} ({m['cpu_count']} cores; features {', '.join(m['cpu_features'])}); "
         f"renderer `{m['GL_RENDERER']}`, Mesa {m['mesa']}, LLVM {m['llvm']}, backend {m['backend']}; "
         f"llvmpipe code generation pinned to `{m['llvmpipe_cpu_caps']}` (GALLIUM_OVERRIDE_CPU_CAPS, "
-        f"4-wide SSE: one instruction serves 4 pixels).",
+        f"4-wide SSE: one instruction serves 4 pixels). " + report_gpu.machine_line(doc),
         "",
         "**Columns.** *err*: against the family's float64 reference over the stated domain: max abs, "
         "max rel (where |ref| is above the floor), 99th-percentile rel, RMSE, and the inputs of the "
         "worst relative error. *instr/eval*: x86 instructions executed per evaluation (callgrind `Ir` of "
         "the draws, per pixel; deterministic: every kernel is counted in two passes, which must agree "
         "within 1 %). *ns/eval*: median CPU time [25th-75th percentile]. "
-        "*×exact*: ratio to the family's exact variant.",
+        "*×exact*: ratio to the family's exact variant. Under each family's table, the same "
+        "kernels compiled for AMD GPUs (RDNA3, RDNA2, GCN5) by Mesa's ACO: static instructions, "
+        "latency and inverse-throughput estimates per evaluation, and registers (notes below). "
+        "Plots: error against x86 instructions (left) and RDNA3 instructions (right) per evaluation.",
         "",
         f"> {NOISE_NOTE}",
         "",
+        *report_gpu.intro(doc),
     ]
     for fam in doc["families"]:
         lines += [f"## {fam['title']} (`{fam['name']}`)", "",
@@ -146,6 +154,7 @@ def markdown(doc: dict) -> str:
                 f"{_g(c['ratio_to_exact'])} | {_g(t['median'], 1)} [{_g(t['p25'], 1)}–{_g(t['p75'], 1)}] | "
                 f"{_g(t['ratio_to_exact'])} | {v['note']}{extra}{own} |")
         lines.append("")
+        lines += report_gpu.family_table(fam, doc)
     ti, fr = doc["tier_images"], doc["frame"]
     lines += ["## Quality tiers on the default scene", "",
               f"Scene `{fr['scene']}`. Image error at {ti['size'][0]}x{ti['size'][1]} against {ti['reference']}; "
@@ -182,40 +191,62 @@ def markdown(doc: dict) -> str:
                      f"{_g(r['specialised_ms_median'], 1)} | {_g(r['full_ms_median'], 1)} | "
                      f"{_g(r['full_over_specialised'])} | {_g(si, 1) if si else '–'} | "
                      f"{_g(fi, 1) if fi else '–'} | {ratio} |")
-    lines += ["", f"> {NOISE_NOTE}", ""]
+    lines += [""] + report_gpu.specialisation_tables(doc) + report_gpu.language_table(doc)
+    lines += [f"> {NOISE_NOTE}", ""]
     return "\n".join(lines)
 
 
-def pareto_plot(fam: dict, path: Path, quick: bool) -> None:
-    """Error (max relative, log) against instructions per evaluation (log), one point per
-    variant; the exact variant is ringed. Zero cost or error is drawn at the axis floor.
+def _rdna3_per_eval(v: dict):
+    """RDNA3 instructions per evaluation, or None (not compiled, or n/a)."""
+    record = v.get("gpu_isa")
+    if not record or "na" in record:
+        return None
+    return record["families"]["rdna3"]["instructions_per_eval"]
+
+
+def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None) -> None:
+    """Error (max relative, log) against cost (log), one point per variant, in two panels:
+    x86 instructions per evaluation (callgrind) and RDNA3 instructions per evaluation
+    (ACO, static). The exact variant is ringed. Zero cost or error is drawn at the axis
+    floor; a variant without a figure (not counted, n/a) is left out of that panel.
     Variants are told apart by colour and marker in a legend beside the axes, never by labels
     next to the points (neighbouring variants overlapped into an unreadable smear)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(8.4, 4.4), dpi=110)
-    floor_x, floor_y = 0.3, 1e-8
+    fig, axes = plt.subplots(1, 2, figsize=(12.6, 4.4), dpi=110, sharey=True)
+    floor_y = 1e-8
     markers = "osD^vP*Xh<>p"
     colours = plt.get_cmap("tab10").colors
-    for i, v in enumerate(fam["variants"]):
-        x = max(v["instructions"]["per_eval"] or 0.0, floor_x)
-        y = max(v["error"]["max_rel"] or 0.0, floor_y)
-        exact = v["name"] == fam["exact"]
-        colour = colours[i % len(colours)]
-        label = v["name"] + (" (exact)" if exact else "")
-        ax.scatter([x], [y], s=90 if exact else 45, marker="o" if exact else markers[i % len(markers)],
-                   facecolors="none" if exact else colour, edgecolors=colour,
-                   linewidths=2 if exact else 0.8, zorder=3, label=label, alpha=0.9)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8, frameon=False,
-              title="variant", title_fontsize=8, borderaxespad=0.0)
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel(f"x86 instructions per evaluation (callgrind; floor {floor_x})")
-    ax.set_ylabel(f"max relative error vs float64 reference (floor {floor_y:g})")
-    ax.set_title(f"{fam['title']}" + (" [quick]" if quick else ""), fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
+    panels = ((axes[0], lambda v: v["instructions"]["per_eval"], 0.3,
+               "x86 instructions per evaluation (callgrind"),
+              (axes[1], _rdna3_per_eval, 0.1, "RDNA3 instructions per evaluation (ACO, static"))
+    for ax, cost, floor_x, label_x in panels:
+        for i, v in enumerate(fam["variants"]):
+            x = cost(v)
+            if x is None and ax is axes[1]:
+                continue
+            x = max(x or 0.0, floor_x)
+            y = max(v["error"]["max_rel"] or 0.0, floor_y)
+            exact = v["name"] == fam["exact"]
+            colour = colours[i % len(colours)]
+            label = v["name"] + (" (exact)" if exact else "")
+            ax.scatter([x], [y], s=90 if exact else 45, marker="o" if exact else markers[i % len(markers)],
+                       facecolors="none" if exact else colour, edgecolors=colour,
+                       linewidths=2 if exact else 0.8, zorder=3, label=label, alpha=0.9)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(f"{label_x}; floor {floor_x})")
+        ax.grid(True, which="both", alpha=0.3)
+    if gpu_isa is not None and not gpu_isa.get("available"):
+        axes[1].text(0.5, 0.5, "AMD GPU ISA not measured:\n" + str(gpu_isa.get("reason"))[:80],
+                     ha="center", va="center", transform=axes[1].transAxes, fontsize=8, wrap=True)
+    handles, labels = axes[0].get_legend_handles_labels()
+    axes[1].legend(handles, labels, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
+                   frameon=False, title="variant", title_fontsize=8, borderaxespad=0.0)
+    axes[0].set_ylabel(f"max relative error vs float64 reference (floor {floor_y:g})")
+    fig.suptitle(f"{fam['title']}" + (" [quick]" if quick else ""), fontsize=10)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)

@@ -1,7 +1,9 @@
 """`pbrlab bench [--family NAME] [--quick] [--out DIR]`: accuracy versus cost of every
 variant and quality tier (error against float64, instructions and time per evaluation,
-frame cost per tier). Writes accuracy_cost.md, accuracy_cost.json and a Pareto plot per
-family. A benchmark: it asserts nothing about time.
+frame cost per tier; AMD GPU instructions and registers from Mesa's RADV/ACO for RDNA3,
+RDNA2 and GCN5 on a null device, which needs libvulkan1 and mesa-vulkan-drivers: without
+them the report says the GPU columns were not measured). Writes accuracy_cost.md,
+accuracy_cost.json and a Pareto plot per family. A benchmark: it asserts nothing about time.
 """
 
 from __future__ import annotations

@@ -1,8 +1,11 @@
 """Compile programs for AMD GPU families and return what ACO made of them.
 
-RADV reads ``RADV_FORCE_FAMILY`` when a Vulkan instance enumerates its devices, so each
-family is compiled in a subprocess of its own (``python -m pbrlab.gpu_isa.worker``), with
-Mesa's shader cache off (a cached pipeline must not stand in for a compile) and an
+The family-independent work is done once, here: glslang to SPIR-V, spirv-cross's
+reflection (the descriptor layout, the colour outputs) and the vertex stage that feeds the
+fragment's inputs (pbrlab.gpu_isa.vertex). RADV reads ``RADV_FORCE_FAMILY`` when a Vulkan
+instance enumerates its devices, so each family's pipelines are made in a subprocess of
+its own (``python -m pbrlab.gpu_isa.worker``, the families side by side), with Mesa's
+shader cache off (a cached pipeline must not stand in for a compile) and an
 ``XDG_RUNTIME_DIR`` (the loader wants one).
 
 What the figures are: ACO's static statistics of the compiled program. *Instructions*
@@ -18,10 +21,13 @@ import os
 import subprocess
 import sys
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import PbrlabError
+from . import spirv
+from .vertex import feeding_vertex
 
 # name -> RADV_FORCE_FAMILY
 FAMILIES = {"rdna3": "gfx1100", "rdna2": "navi21", "gcn5": "vega10"}
@@ -30,24 +36,20 @@ FAMILIES = {"rdna3": "gfx1100", "rdna2": "navi21", "gcn5": "vega10"}
 STATISTICS = ("Instructions", "VGPRs", "SGPRs", "Code size", "Latency", "Inverse Throughput",
               "Copies", "Branches", "Subgroups per SIMD")
 
-# A full-screen triangle (the Vulkan twin of pbrlab.bench.kernel's vertex stage).
-FULLSCREEN_VERTEX = """#version 450
-void main() {
-    vec2 p = vec2(float((gl_VertexIndex << 1) & 2), float(gl_VertexIndex & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-"""
 
 
 @dataclass(frozen=True)
 class Job:
-    """One program to compile. ``fragment`` is GLSL (OpenGL dialect) or HLSL text with its
-    includes expanded; ``vertex`` None uses the full-screen triangle."""
+    """One program to compile. ``fragment`` is GLSL (OpenGL dialect) with its includes
+    expanded, or HLSL whose includes glslang resolves against ``include_dirs``; ``vertex``
+    None: a vertex stage generated to feed every fragment input with a per-vertex value
+    (pbrlab.gpu_isa.vertex), drawing the full-screen triangle."""
     id: str
     fragment: str
     language: str = "glsl"     # glsl | hlsl
     vertex: str | None = None
     entry: str = "main"        # the HLSL fragment entry point
+    include_dirs: tuple = ()   # HLSL: where its #include files are
 
 
 def available() -> str | None:
@@ -60,23 +62,57 @@ def available() -> str | None:
     return None if result["rdna3"].get("probe") else "RADV compiled nothing"
 
 
+def _prepare(jobs: list, folder: Path) -> list:
+    """Each job as the worker's spec entry: SPIR-V files of both stages, the descriptor
+    sets and the colour-attachment count (glslang runs two at a time: it is a subprocess)."""
+    def fragment(job):
+        words = spirv.compile_glsl(job.fragment, "fragment", hlsl=job.language == "hlsl",
+                                   entry=job.entry, include_dirs=job.include_dirs)
+        return words, spirv.reflect(words)
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        fragments = list(pool.map(fragment, jobs))
+    vertices: dict = {}  # vertex text -> (path, reflection)
+    entries = []
+    for index, (job, (words, reflection)) in enumerate(zip(jobs, fragments)):
+        vertex_text = job.vertex or feeding_vertex(reflection)
+        if vertex_text not in vertices:
+            vertex_words = spirv.compile_glsl(vertex_text, "vertex")
+            path = folder / f"vertex{len(vertices)}.spv"
+            path.write_bytes(vertex_words)
+            vertices[vertex_text] = (path, spirv.reflect(vertex_words))
+        vertex_path, vertex_reflection = vertices[vertex_text]
+        fragment_path = folder / f"fragment{index}.spv"
+        fragment_path.write_bytes(words)
+        sets = spirv.descriptor_sets(vertex_reflection, reflection)
+        entries.append({"id": job.id, "vertex": str(vertex_path), "fragment": str(fragment_path),
+                        "sets": {str(k): rows for k, rows in sets.items()},
+                        "colours": spirv.colour_outputs(reflection)})
+    return entries
+
+
 def run(jobs: list, families=tuple(FAMILIES)) -> dict:
-    """``{family: {job id: {statistic: value, ..., "isa": {...}}}}`` for every family."""
+    """``{family: {job id: {statistic: value, ..., "Wave size": 32 | 64, "isa": {...}},
+    "_device": {...}}}`` (statistics: ``STATISTICS``, RADV's names)."""
     out = {}
     with tempfile.TemporaryDirectory(prefix="pbrlab-gpu-isa-") as tmp:
         spec = Path(tmp) / "spec.json"
-        spec.write_text(json.dumps([job.__dict__ for job in jobs]))
+        spec.write_text(json.dumps(_prepare(jobs, Path(tmp))))
         runtime = Path(tmp) / "xdg"
         runtime.mkdir(mode=0o700)
+        procs = {}
         for family in families:
             result = Path(tmp) / f"{family}.json"
             env = dict(os.environ, RADV_FORCE_FAMILY=FAMILIES[family],
                        MESA_SHADER_CACHE_DISABLE="true",
                        XDG_RUNTIME_DIR=os.environ.get("XDG_RUNTIME_DIR") or str(runtime))
-            proc = subprocess.run([sys.executable, "-m", "pbrlab.gpu_isa.worker", str(spec),
-                                   str(result)], env=env, capture_output=True, text=True)
+            procs[family] = (subprocess.Popen(
+                [sys.executable, "-m", "pbrlab.gpu_isa.worker", str(spec), str(result)], env=env,
+                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True), result)
+        for family, (proc, result) in procs.items():
+            _, err = proc.communicate()
             if proc.returncode != 0 or not result.exists():
-                message = (proc.stderr.strip().splitlines() or [f"exit {proc.returncode}"])[-1]
+                message = (err.strip().splitlines() or [f"exit {proc.returncode}"])[-1]
                 if proc.returncode < 0:
                     message = f"the compiler process died (signal {-proc.returncode})"
                 raise PbrlabError(f"GPU ISA ({family}, RADV_FORCE_FAMILY={FAMILIES[family]}): "

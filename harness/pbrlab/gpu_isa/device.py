@@ -25,6 +25,7 @@ class Executable:
     """One compiled shader stage: its statistics by name and its disassembly."""
     name: str
     stages: int
+    subgroup_size: int = 0    # the wave size it was compiled for (32 or 64)
     statistics: dict = field(default_factory=dict)
     disassembly: str = ""
 
@@ -282,7 +283,7 @@ class Device:
         vk.check(self._executables(self.device, byref(pinfo), byref(count), props), "executables")
         out = []
         for index, p in enumerate(props):
-            executable = Executable(vk.text(p.name), p.stages)
+            executable = Executable(vk.text(p.name), p.stages, p.subgroupSize)
             einfo = vk.PipelineExecutableInfo(vk.ST_PIPELINE_EXECUTABLE_INFO_KHR, None, pipeline,
                                               index)
             executable.statistics = self._read_statistics(einfo)

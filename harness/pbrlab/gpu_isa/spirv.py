@@ -29,15 +29,23 @@ def _tool(name: str) -> str:
     return path
 
 
-def compile_glsl(source: str, stage: str, *, hlsl: bool = False, entry: str = "main") -> bytes:
-    """SPIR-V words of ``source`` for Vulkan 1.2 (a readable error on a compile failure)."""
+def compile_glsl(source: str, stage: str, *, hlsl: bool = False, entry: str = "main",
+                 include_dirs=()) -> bytes:
+    """SPIR-V words of ``source`` for Vulkan 1.2 (a readable error on a compile failure).
+
+    HLSL: ``Texture2D`` + ``SamplerState`` pairs become combined image samplers
+    (``--auto-sampled-textures``), as the harness's HLSL path compiles them (pbrlab.hlsl),
+    so a GLSL program and its HLSL twin bind their textures alike; ``#include`` is
+    resolved against ``include_dirs``."""
     with tempfile.TemporaryDirectory(prefix="pbrlab-spirv-") as tmp:
         src = Path(tmp) / f"shader.{_STAGE[stage]}"
         out = Path(tmp) / "shader.spv"
         src.write_text(source)
         args = [_tool("glslangValidator"), "-V", "--target-env", "vulkan1.2", "--amb", "--aml",
                 "-S", _STAGE[stage], "-o", str(out)]
-        args += ["-D", "-e", entry, "--hlsl-iomap"] if hlsl else ["-R"]
+        args += (["-D", "-e", entry, "--hlsl-iomap", "--auto-sampled-textures"] if hlsl
+                 else ["-R"])
+        args += [f"-I{Path(d).resolve()}" for d in include_dirs]
         result = subprocess.run(args + [str(src)], capture_output=True, text=True)
         if result.returncode != 0 or not out.exists():
             lines = [l for l in result.stdout.splitlines() if "ERROR" in l or "error" in l]

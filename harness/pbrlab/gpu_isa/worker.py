@@ -1,33 +1,29 @@
-"""``python -m pbrlab.gpu_isa.worker SPEC.json OUT.json``: compile each job of the spec on
-the RADV null device that ``RADV_FORCE_FAMILY`` selects (see pbrlab.gpu_isa.compile) and
-write ``{job id: {statistic: value, "isa": {...}}}`` for the fragment stage."""
+"""``python -m pbrlab.gpu_isa.worker SPEC.json OUT.json``: make each pipeline of the spec
+(SPIR-V files and layouts that pbrlab.gpu_isa.compile prepared) on the RADV null device
+that ``RADV_FORCE_FAMILY`` selects, and write ``{job id: {statistic: value, "isa": {...}}}``
+for the fragment stage."""
 
 from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 
 from ..errors import PbrlabError
-from . import isa, spirv, vulkan
-from .compile import FULLSCREEN_VERTEX, STATISTICS
+from . import isa, vulkan
+from .compile import STATISTICS
 from .device import Device
 
 
-def compile_job(device: Device, job: dict, vertex_cache: dict) -> dict:
-    vertex_text = job.get("vertex") or FULLSCREEN_VERTEX
-    if vertex_text not in vertex_cache:
-        vertex_cache[vertex_text] = spirv.compile_glsl(vertex_text, "vertex")
-    vertex = vertex_cache[vertex_text]
-    hlsl = job.get("language") == "hlsl"
-    fragment = spirv.compile_glsl(job["fragment"], "fragment", hlsl=hlsl,
-                                  entry=job.get("entry", "main"))
-    reflection = spirv.reflect(fragment)
-    sets = spirv.descriptor_sets(spirv.reflect(vertex), reflection)
-    executables = device.graphics(vertex, fragment, sets, spirv.colour_outputs(reflection))
+def compile_job(device: Device, job: dict) -> dict:
+    sets = {int(k): [tuple(row) for row in rows] for k, rows in job["sets"].items()}
+    executables = device.graphics(Path(job["vertex"]).read_bytes(),
+                                  Path(job["fragment"]).read_bytes(), sets, job["colours"])
     stage = [e for e in executables if e.stages & vulkan.STAGE_FRAGMENT]
     if not stage:
         raise PbrlabError(f"{job['id']}: RADV reported no fragment executable")
     stats = {name: stage[0].statistics.get(name) for name in STATISTICS}
+    stats["Wave size"] = stage[0].subgroup_size
     stats["isa"] = isa.summary(stage[0].disassembly)
     return stats
 
@@ -38,8 +34,7 @@ def main(argv=None) -> int:
     jobs = json.loads(open(spec_path).read())
     try:
         device = Device("RADV")
-        cache: dict = {}
-        result = {job["id"]: compile_job(device, job, cache) for job in jobs}
+        result = {job["id"]: compile_job(device, job) for job in jobs}
         result["_device"] = {"name": device.name, "float16": device.float16}
     except PbrlabError as exc:
         print(f"pbrlab.gpu_isa: {exc}", file=sys.stderr)

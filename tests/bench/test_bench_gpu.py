@@ -1,0 +1,105 @@
+"""pbrlab.bench.gpu: the AMD GPU ISA figures of the bench, on a few kernels and one scene.
+
+The per-evaluation arithmetic is checked on hand-made statistics; the compiled figures
+against what the variants do (an exact Fresnel with a square root and divisions against
+Schlick's fifth power against a constant); the scene programs against what
+specialisation removes; and the report when RADV is missing says so instead of crashing.
+"""
+
+import pytest
+
+from pbrlab.bench import families, gpu, kernel, measure, report, report_gpu, worker
+
+
+def _statistics(instructions, latency, throughput, vgprs, f16=0, packed=0, transcendental=0):
+    return {"Instructions": instructions, "Latency": latency, "Inverse Throughput": throughput,
+            "VGPRs": vgprs, "SGPRs": 16, "Subgroups per SIMD": 10, "Wave size": 64,
+            "isa": {"valu_f16": f16, "valu_packed": packed, "transcendental": transcendental}}
+
+
+def test_per_eval_is_the_difference_over_the_evaluations_of_one_loop_body():
+    variant = _statistics(300, 5000, 900, 24, f16=16, packed=8, transcendental=24)
+    baseline = _statistics(100, 1000, 100, 12, transcendental=8)
+    figures = gpu.per_eval(variant, baseline)
+    n = kernel.EVALS_PER_ITERATION
+    assert figures["instructions_per_eval"] == 200 / n
+    assert figures["latency_per_eval"] == 4000 / n
+    assert figures["inverse_throughput_per_eval"] == 800 / n
+    assert figures["valu_f16_per_eval"] == 16 / n and figures["valu_packed_per_eval"] == 8 / n
+    assert figures["transcendental_per_eval"] == 16 / n
+    assert figures["vgprs"] == 24 and figures["vgprs_baseline"] == 12  # absolute, not a difference
+
+
+@pytest.fixture(scope="module")
+def measured():
+    if (why := gpu.unavailable_reason()) is not None:
+        pytest.fail(f"RADV null device unavailable (scripts/setup.sh installs it): {why}")
+    fams = [families.FRESNEL, families.SRGB_DECODE, families.SRGB_ENCODE]
+    kernels, plans = measure.kernel_specs(fams)
+    scenes = {"chart_metallic": worker._bench_scene("chart_metallic")}
+    return gpu.measure(kernels, plans, families.BY_NAME, scenes)
+
+
+def test_fresnel_costs_rank_as_the_work_they_do(measured):
+    for family in gpu.GPU_FAMILIES:
+        cost = {name: measured["kernels"][("fresnel", name)]["families"][family]["instructions_per_eval"]
+                for name in ("dielectric", "schlick", "none")}
+        assert cost["dielectric"] > cost["schlick"] > cost["none"] >= 0, (family, cost)
+
+
+def test_texture_and_framebuffer_srgb_are_reported_as_what_they_are(measured):
+    decode = measured["kernels"][("srgb_decode", "hardware")]
+    assert "texture unit" in decode["note"]
+    for family in gpu.GPU_FAMILIES:
+        # the same fetch from the UNORM8 texture is the baseline; the fetch itself costs VGPRs
+        assert decode["families"][family]["instructions_per_eval"] == 0
+        assert decode["families"][family]["vgprs"] > 0
+    assert measured["kernels"][("srgb_encode", "hardware")] == {"na": gpu.HARDWARE_ENCODE_NA}
+
+
+def test_scene_programs_specialised_and_full_in_both_languages(measured):
+    record = measured["scenes"]["chart_metallic"]
+    assert [p["kind"] for p in record["programs"]] == ["specialised", "full"]
+    spec, full = record["programs"]
+    assert spec["defines"].get("PBRLAB_FULL") is None and full["defines"]["PBRLAB_FULL"] == 1
+    for family in gpu.GPU_FAMILIES:
+        for language in gpu.LANGUAGES:
+            a, b = spec["languages"][language][family], full["languages"][language][family]
+            assert b["instructions"] > a["instructions"], (family, language)
+            assert b["subgroups_per_simd"] <= a["subgroups_per_simd"], (family, language)
+        # the two libraries through the same compiler: within 5 % of each other
+        g, h = (spec["languages"][lang][family]["instructions"] for lang in gpu.LANGUAGES)
+        assert abs(g - h) <= 0.05 * g, (family, g, h)
+
+
+def test_unity_materials_are_marked_not_compiled(monkeypatch):
+    program = gpu.SceneProgram("sphere", (), None, unity=True)
+    monkeypatch.setattr(gpu, "scene_programs", lambda scene, kind: {program: ["shaderlab"]})
+    jobs, layout = gpu.scene_jobs({"s": object()})
+    assert jobs == {}
+    assert set(layout["skipped"].values()) == {gpu.UNITY_NA}
+
+
+def test_without_radv_the_report_says_so(monkeypatch):
+    monkeypatch.setattr(gpu, "unavailable_reason", lambda: "no Vulkan loader (libvulkan.so.1)")
+    result = gpu.measure([], [], families.BY_NAME, {})
+    assert result["available"] is False and "libvulkan" in result["reason"]
+    doc = {"gpu_isa": {"available": False, "reason": result["reason"]},
+           "families": [], "specialisation": {"scenes": {}}}
+    assert report_gpu.validate(doc) == []
+    assert "NOT MEASURED" in report_gpu.machine_line(doc) and "libvulkan" in report_gpu.machine_line(doc)
+    doc["gpu_isa"]["reason"] = None
+    assert report_gpu.validate(doc) == ["$.gpu_isa: not available, and no reason given"]
+
+
+def test_validate_rejects_a_non_finite_gpu_figure():
+    figures = dict.fromkeys(report_gpu.KERNEL_FIELDS, 1.0)
+    bad = dict(figures, instructions_per_eval=float("nan"))
+    doc = {"gpu_isa": {"available": True, "families": dict(gpu.FORCE_FAMILY)},
+           "specialisation": {"scenes": {}},
+           "families": [{"name": "f", "variants": [
+               {"name": "v", "gpu_isa": {"families": {"rdna3": figures, "rdna2": bad}}}]}]}
+    problems = report_gpu.validate(doc)
+    assert any("rdna2.instructions_per_eval" in p for p in problems)
+    assert any("missing gcn5" in p for p in problems)
+    assert report.SCHEMA_ID == "pbrlab-bench/2"
