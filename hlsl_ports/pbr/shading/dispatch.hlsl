@@ -221,8 +221,8 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 // tier's pair) is fused into one quotient that needs no normalised h and none of the terms'
 // own clamps (pbr_DV_GGX_SmithCorrelated); its other preconditions are pbr_brdf_standard's:
 // NdotL > 0, NdotV in [PBR_MIN_NDOTV, 1], alpha from a clamped roughness. Every other pair
-// is the product of the two dispatchers above, from the normalised h, V with NdotL floored
-// at PBR_MIN_NDOTV.
+// is the product of the two dispatchers above, from the normalised h (each V term floors
+// its cosines at PBR_MIN_NDOTV itself).
 float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float NdotV,
                       float VdotH, float alpha) {
 #if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED
@@ -237,7 +237,7 @@ float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float 
 #  else
     float D = pbr_specular_D(NdotH, oneMinusNdotH2, alpha);
 #  endif
-    return D * pbr_specular_V(max(NdotL, PBR_MIN_NDOTV), NdotV, NdotH, VdotH, alpha);
+    return D * pbr_specular_V(NdotL, NdotV, NdotH, VdotH, alpha);
 #endif
 }
 
