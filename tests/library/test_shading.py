@@ -102,11 +102,13 @@ def test_shade_punctual_variant_matches_reference(scene, selector, value):
 
 
 def test_quality_tier_selects_visibility_and_explicit_selector_wins(scene):
-    """LOW = fast V + the half-safe roughness floor (0.089) + the D·V cap at 65504
-    (dispatch.glsl): identical to HIGH with the fast V wherever those two guards are idle."""
+    """MEDIUM = HIGH with the fast V; LOW = MEDIUM + the half-safe roughness floor (0.089) +
+    the D·V cap at 65504 (dispatch.glsl): identical to MEDIUM wherever those guards are idle."""
     subset = {k: v[:5_000] for k, v in scene.items()}
-    low = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW"})
+    medium = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_MEDIUM"})
     fast = gpu_shade(subset, shading.glsl_defines(specular_v="SMITH_GGX_CORRELATED_FAST"))
+    np.testing.assert_array_equal(medium, fast)
+    low = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW"})
     rough = subset["roughness"] >= shading.MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
     np.testing.assert_array_equal(low[rough], fast[rough])
     assert not np.array_equal(low[~rough], fast[~rough])  # the LOW floor acts below 0.089

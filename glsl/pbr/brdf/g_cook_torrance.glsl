@@ -11,7 +11,7 @@
 // V_CookTorrance = G_CT / (4 NdotL NdotV) (the visibility convention). Domain: cosines in
 // (0, 1]. Guards (pbr/common/guards.glsl): cosines saturated, VdotH floored at
 // PBR_MIN_VDOTH (VdotH -> 0 only as l -> -v), V's NdotL, NdotV floored at PBR_MIN_NDOTV.
-// Bit-identical for cosines in [0, 1], VdotH >= 5e-7 (G) and NdotL, NdotV >= 1e-4 (V).
+// Bit-identical for cosines in [0, 1], VdotH >= 5e-6 (G) and NdotL, NdotV >= 1e-4 (V).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_G_COOK_TORRANCE_GLSL
 #define PBR_BRDF_G_COOK_TORRANCE_GLSL

@@ -48,15 +48,18 @@
 // NdotL <= 1e-4 anyway. Back-facing views (normal maps) clamp to it rather than go negative.
 #define PBR_MIN_NDOTV 1e-4
 
-// |l + v|² below which l and v are treated as opposite (no half vector): |l + v| < 1e-6,
-// i.e. l and -v within 1e-6 rad, the order of float32's direction resolution (2^-24 ≈ 6e-8
-// per component, amplified by normalisation). Keeps inversesqrt away from 0 and denormals.
-#define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED 1e-12
+// |l + v|² below which l and v are treated as opposite (no half vector): |l + v| < 1e-5,
+// i.e. l and -v within 1e-5 rad, a few times float32's direction resolution (2^-24 ≈ 6e-8
+// per component, amplified by normalisation). The fused D · V quotients take h = l + v
+// unnormalised: their denominator d² (lambdaV + lambdaL) >= (h2 alpha²)² · NdotV alpha
+// (dv_ggx_smith_correlated.glsl) stays a normal float32 (>= 1.2e-38) for h2 >= 1e-10 at
+// the smallest alpha, where 1e-12 would let it become a denormal that GPUs flush to 0.
+#define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED 1e-10
 
 // Smallest VdotH (= LdotH) the Kelemen and Cook-Torrance terms divide by: the smallest
 // VdotH = |l + v| / 2 the shading model can produce, ½·sqrt(PBR_MIN_HALF_VECTOR_LENGTH_SQUARED)
-// = 5e-7. Bounds V_Kelemen by 0.25/VdotH² = 1e12. Cost: none above 5e-7.
-#define PBR_MIN_VDOTH 5e-7
+// = 5e-6. Bounds V_Kelemen by 0.25/VdotH² = 1e10. Cost: none above 5e-6.
+#define PBR_MIN_VDOTH 5e-6
 
 // x^s for x >= 0, s >= 0 with a value everywhere (GLSL 4.60 §8.2: pow is undefined for
 // x < 0, and for x = 0 with s <= 0). Decided: 0^s = 0 for s > 0 (the limit), 0^0 = 1 (the

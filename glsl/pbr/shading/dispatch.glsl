@@ -43,6 +43,7 @@
 #define PBR_SHADING_DISPATCH_GLSL
 
 #include "pbr/common/guards.glsl"
+#include "pbr/common/precision.glsl"
 #include "pbr/material/remap.glsl"
 #include "pbr/brdf/fd_lambert.glsl"
 #include "pbr/brdf/fd_burley.glsl"
@@ -51,6 +52,7 @@
 #include "pbr/brdf/d_blinn_phong.glsl"
 #include "pbr/brdf/v_smith_ggx_correlated.glsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.glsl"
+#include "pbr/brdf/dv_ggx_smith_correlated_fast.glsl"
 #include "pbr/brdf/g_smith_ggx.glsl"
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/g_cook_torrance.glsl"
@@ -115,23 +117,26 @@
 // the half-precision study: glsl/README.md. Shared with reference/shading.py.
 #define PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP 0.089
 // The LOW tier's l = -v threshold on |l + v|²: 2^-14, half's smallest normal. The HIGH
-// value 1e-12 is 0 in half, so |l + v|² = 0 would reach inversesqrt(0). Cost: LOW drops the
+// value 1e-10 is 0 in half, so |l + v|² = 0 would reach inversesqrt(0). Cost: LOW drops the
 // specular lobe where |l + v| < 2^-7, i.e. l within 0.45° of -v (a back-facing view), and
 // mirror configurations within 0.22° of the horizon (NdotL < 3.9e-3), where a half h would
 // be built from a denormal-length vector anyway. Shared with reference/shading.py.
 #define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP 6.103515625e-5
 
 // Quality tiers -> selector defaults and tier guards: the only place tiers are
-// interpreted. An explicit selector always wins over the tier.
-//   HIGH  float32: every default above.
-//   MEDIUM float32, cheaper terms (Unity's BRDF2 idea): V -> SMITH_GGX_CORRELATED_FAST
-//         (Hammon 2017, no square roots), F -> SCHLICK_SG (exp2 instead of pow5); the
-//         HIGH tier's guards; the environment BRDF still from the DFG table.
-//   LOW   half-safe (mediump): V -> SMITH_GGX_CORRELATED_FAST (no square roots), minimum
-//         perceptual roughness 0.089, l = -v threshold 2^-14, D · V capped at PBR_HALF_MAX (pbr_specular_lobe_limit;
-//         Filament's saturateMediump): with NdotV, NdotL >= 1e-4 the fast V reaches 3e5,
-//         so grazing near-mirror lobes would overflow half. Cost: lobes brighter than 65504
-//         1/sr are capped (float32 LOW included, so both precisions agree).
+// interpreted. An explicit selector always wins over the tier. Each tier is GGX D, Schlick F
+// (F90 from F0) and Lambert, with a fused D · V (pbr_specular_DV); measured error and cost
+// per evaluation on RDNA3, RDNA2, GCN5 and llvmpipe: docs/bench (brdf_tier).
+//   HIGH   float32, V -> SMITH_GGX_CORRELATED (Heitz 2014): the exact model.
+//   MEDIUM float32, V -> SMITH_GGX_CORRELATED_FAST (Hammon 2017, no square roots, at most
+//          29 % from the exact V); the HIGH tier's guards. The tier that buys ALU time.
+//   LOW    MEDIUM's model with the guards that keep it finite in half precision (mediump on
+//          mobile GPUs, or float16_t under PBR_FLOAT16): minimum perceptual roughness 0.089,
+//          l = -v threshold 2^-14, D · V capped at PBR_HALF_MAX (pbr_specular_lobe_limit;
+//          Filament's saturateMediump: lobes brighter than 65504 1/sr are capped, float32
+//          LOW included, so both precisions agree), and where floats may be 16-bit the lobe
+//          in half's range (pbr_DV_GGX_SmithCorrelatedFast_half). It costs what MEDIUM costs
+//          where float32 is used; it buys precision safety, not instructions (docs/bench).
 //   In the unity model (PBR_BRDF_MODEL_UNITY) the tiers pick Unity's BRDFs the way Unity's
 //   graphics tiers do (UNITY_PBS_USE_BRDF1/2/3): HIGH -> BRDF1, MEDIUM -> BRDF2, LOW -> BRDF3;
 //   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.
@@ -150,9 +155,6 @@
 #  endif
 #  ifndef PBR_SPECULAR_V
 #  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
-#  endif
-#  ifndef PBR_SPECULAR_F
-#  define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK_SG
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
@@ -216,16 +218,24 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 // [PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4]. n·h is negative for an h below the surface,
 // which a view below the horizon gives: GGX is even in n·h (its denominator (1 - c²) + c²
 // alpha² >= alpha² for unit h) and is evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
-// clamped to [0, 1] (0 below the surface). GGX with the height-correlated Smith V (the HIGH
-// tier's pair) is fused into one quotient that needs no normalised h and none of the terms'
-// own clamps (pbr_DV_GGX_SmithCorrelated); its other preconditions are pbr_brdf_standard's:
-// NdotL > 0, NdotV in [PBR_MIN_NDOTV, 1], alpha from a clamped roughness. Every other pair
-// is the product of the two dispatchers above, from the normalised h (each V term floors
-// its cosines at PBR_MIN_NDOTV itself).
+// clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
+// quotient that needs no normalised h and none of the terms' own clamps: the
+// height-correlated Smith V (HIGH, pbr_DV_GGX_SmithCorrelated) and Hammon's fast form of it
+// (MEDIUM and LOW, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where floats may be
+// 16-bit, PBR_HALF_ARITHMETIC); their other preconditions are pbr_brdf_standard's: NdotL > 0, NdotV in
+// [PBR_MIN_NDOTV, 1], alpha from the tier's clamped roughness. Every other pair is the
+// product of the two dispatchers above, from the normalised h (each V term floors its
+// cosines at PBR_MIN_NDOTV itself).
 float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float NdotV,
                       float VdotH, float alpha) {
 #if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED
     return pbr_DV_GGX_SmithCorrelated(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
+#elif PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+#  if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC
+    return pbr_DV_GGX_SmithCorrelatedFast_half(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
+#  else
+    return pbr_DV_GGX_SmithCorrelatedFast(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
+#  endif
 #else
     float invLength = inversesqrt(h2);
     float cosine = nDotH * invLength;

@@ -114,7 +114,11 @@ _H = "(dot(l + v, l + v) >= PBR_MIN_HALF_VECTOR_LENGTH_SQUARED ? l + v : n)"
 DV_ARGUMENTS = (f"dot(n, {_H}), dot(cross(n, {_H}), cross(n, {_H})), min(dot({_H}, {_H}), 4.0), "
                 "max(dot(n, l), PBR_MIN_NDOTV), clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), "
                 "pbr_alpha_from_perceptual_roughness(clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0))")
-DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_specular_DV")
+_H_LOW = _H.replace("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP")
+DV_LOW_ARGUMENTS = (DV_ARGUMENTS.replace(_H, _H_LOW)
+                    .replace("clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS", "clamp(roughness, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP"))
+DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelatedFast",
+                "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
 
 # Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
 # complete), with its argument kinds and bound.
@@ -190,6 +194,11 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
     # the fused HIGH-tier lobe, called as pbr_brdf_standard calls it (its preconditions)
     Function("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelated(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    Function("pbr_DV_GGX_SmithCorrelatedFast", "pbr_DV_GGX_SmithCorrelatedFast(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
+    Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + DV_LOW_ARGUMENTS + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # shading/energy_conservation.glsl
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),

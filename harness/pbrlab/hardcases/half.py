@@ -198,28 +198,36 @@ LOW_MIN_HALF_VECTOR_LENGTH_SQUARED = HALF_MIN_NORMAL
 
 
 def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PERCEPTUAL_ROUGHNESS,
-             d_form=d_ggx_cross, lobe_cap=HALF_MAX, min_half=LOW_MIN_HALF_VECTOR_LENGTH_SQUARED):
-    """One colour channel of pbr_brdf_standard at the LOW tier (GGX with |n x h|², the fast
-    Smith-GGX-correlated V, Schlick F with F90 from F0, Lambert), line for line with
-    standard.glsl."""
-    NdotL = m.minimum(_dot(n, l), m.c(1.0))
+             d_form=None, lobe_cap=HALF_MAX, min_half=LOW_MIN_HALF_VECTOR_LENGTH_SQUARED):
+    """One colour channel of pbr_brdf_standard at the LOW tier where floats may be 16-bit
+    (GGX times Hammon's fast V, fused in half's range from h = l + v unnormalised:
+    pbr_DV_GGX_SmithCorrelatedFast_half; Schlick F with F90 from F0; Lambert), line for line
+    with standard.glsl. ``d_form`` (n, h, alpha) replaces the fused D by D of a normalised h
+    (the study's other forms)."""
+    NdotL = _dot(n, l)
     NdotV = _clamp(m, _dot(n, v), MIN_NDOTV, 1.0)
     r = _clamp(m, roughness, min_roughness, 1.0)
     alpha = r * r
     hs = (l[0] + v[0], l[1] + v[1], l[2] + v[2])
     hl2 = _dot(hs, hs)
-    LdotH = m.minimum(m.c(0.5) * m.sqrt(hl2), m.c(1.0))
+    LdotH = m.c(0.5) * m.sqrt(hl2)
     diffuse_part = diffuse * m.c(1.0 / math.pi)
-    inv = m.c(1.0) / m.sqrt(m.maximum(hl2, m.c(min_half)))
-    h = (hs[0] * inv, hs[1] * inv, hs[2] * inv)
-    D = d_form(m, n, h, alpha)
-    cl, cv = _clamp(m, NdotL, MIN_NDOTV, 1.0), NdotV
-    V = m.c(0.5) / (cl * (cv * (m.c(1.0) - alpha) + alpha) + cv * (cl * (m.c(1.0) - alpha) + alpha))
+    lambdas = m.c(2.0) * NdotL * NdotV * (m.c(1.0) - alpha) + (NdotL + NdotV) * alpha  # mix(...)
+    if d_form is None:
+        c = _dot(n, hs)
+        cross = (n[1] * hs[2] - n[2] * hs[1], n[2] * hs[0] - n[0] * hs[2], n[0] * hs[1] - n[1] * hs[0])
+        inv_h2 = m.c(1.0) / m.minimum(hl2, m.c(4.0))
+        dn = (_dot(cross, cross) + c * c * (alpha * alpha)) * inv_h2
+        k = alpha / dn
+        DV = k * k * (m.c(0.5 / math.pi) / lambdas)
+    else:
+        inv = m.c(1.0) / m.sqrt(m.maximum(hl2, m.c(min_half)))
+        DV = d_form(m, n, (hs[0] * inv, hs[1] * inv, hs[2] * inv), alpha) * (m.c(0.5) / lambdas)
     w = m.c(1.0) - _clamp(m, LdotH, 0.0, 1.0)
     w2 = w * w
     f90 = m.minimum(specular * m.c(3.0 * 16.5), m.c(1.0))  # pbr_f90_from_f0 of a grey f0
     F = specular + (f90 - specular) * (w2 * w2 * w)
-    lobe = (D * V if lobe_cap is None else m.minimum(D * V, m.c(lobe_cap))) * F
+    lobe = (DV if lobe_cap is None else m.minimum(DV, m.c(lobe_cap))) * F
     lit = m.where(hl2 >= m.c(min_half), diffuse_part + lobe, diffuse_part)
     return m.where(NdotL > m.c(0.0), lit, m.c(0.0))
 

@@ -10,8 +10,8 @@ SAFE_NORMALIZE_HUGE = 2.0 ** 125        # PBR_SAFE_NORMALIZE_HUGE: pre-scale the
 HALF_MAX = 65504.0                      # PBR_HALF_MAX: largest finite binary16
 MIN_ALPHA = 1e-7                        # PBR_MIN_ALPHA: raw D/G/V alpha floor
 MIN_NDOTV = 1e-4                        # PBR_MIN_NDOTV (Filament MIN_N_DOT_V): V cosine floor
-MIN_HALF_VECTOR_LENGTH_SQUARED = 1e-12  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED: l = -v threshold
-MIN_VDOTH = 5e-7                        # PBR_MIN_VDOTH = sqrt(1e-12) / 2
+MIN_HALF_VECTOR_LENGTH_SQUARED = 1e-10  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED: l = -v threshold
+MIN_VDOTH = 5e-6                        # PBR_MIN_VDOTH = sqrt(1e-10) / 2
 BECKMANN_MIN_NDOTH = 0.1                # PBR_BECKMANN_MIN_NDOTH (d_beckmann.glsl)
 MAX_IOR = 2.0 ** 25                     # PBR_MAX_IOR (material/ior.glsl)
 

@@ -27,7 +27,7 @@ QUALITY = ("LOW", "HIGH", "MEDIUM")
 # PBR_QUALITY -> default PBR_SPECULAR_V and PBR_SPECULAR_F (the tier block of dispatch.glsl)
 QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "MEDIUM": "SMITH_GGX_CORRELATED_FAST",
                      "HIGH": "SMITH_GGX_CORRELATED"}
-QUALITY_DEFAULT_F = {"LOW": "SCHLICK", "MEDIUM": "SCHLICK_SG", "HIGH": "SCHLICK"}
+QUALITY_DEFAULT_F = {"LOW": "SCHLICK", "MEDIUM": "SCHLICK", "HIGH": "SCHLICK"}
 # PBR_QUALITY -> PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the cap of pbr_specular_lobe_limit
 QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
                                     "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
@@ -148,8 +148,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
 
     GGX is evaluated at |n·h| (it is even in n·h; an h below the surface comes only from a
     view below the horizon), Beckmann and Blinn-Phong at n·h clamped to [0, 1]. V's cosines are floored at MIN_NDOTV, except in the
-    fused GGX · height-correlated-Smith quotient (dv_ggx_smith_correlated.glsl), which takes
-    NdotL > 0 as it is."""
+    fused GGX quotients of the tiers' V (dv_ggx_*.glsl), which take NdotL > 0 as it is."""
     d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
     n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
     shape = np.broadcast_shapes(n.shape, v.shape, l.shape, diffuse_color.shape, f0.shape,
@@ -177,8 +176,10 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
             D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), 1.0 - n_dot_h ** 2, alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)
-        if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":
+        if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":  # fused: NdotL as it is
             V = brdf.V_SmithGGXCorrelated(NdotL_safe, NdotV, alpha)
+        elif d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED_FAST":
+            V = brdf.V_SmithGGXCorrelatedFast(NdotL_safe, NdotV, alpha)
         else:
             V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var)

@@ -14,7 +14,7 @@
 // Guards (pbr/common/guards.hlsl): VdotH clamped to [PBR_MIN_VDOTH, 1] (V <= 1e12),
 // cosines saturated, and G capped at 1: for consistent directions VdotH² = (1 + l·v)/2 >=
 // NdotL NdotV, so G <= 1 holds and the cap changes nothing; it only bounds inconsistent
-// cosines. Bit-identical for VdotH in [5e-7, 1] and consistent geometry.
+// cosines. Bit-identical for VdotH in [5e-6, 1] and consistent geometry.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_KELEMEN_HLSL
 #define PBR_BRDF_V_KELEMEN_HLSL

@@ -33,7 +33,7 @@
 //    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2), computed as |l+v|² · inversesqrt(|l+v|²)
 //    from the reciprocal length h needs anyway (no second square root). It needs no
 //    normalised h and is continuous at l = -v.
-//  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-12; 2^-14 in LOW): no half vector exists; the
+//  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-10; 2^-14 in LOW): no half vector exists; the
 //    specular lobe is defined as 0 (it would reflect light back into the surface: with
 //    NdotL > 0 the view is below the horizon) and the diffuse term is returned alone. The
 //    reciprocal length is taken of max(|l + v|², threshold), so the unselected lobe is
@@ -73,7 +73,7 @@ float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, floa
 
     float Fd = pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
     float DV = pbr_specular_lobe_limit(pbr_specular_DV(
-        NdotL + nDotV, dot(nCrossHalfSum, nCrossHalfSum), min(halfLength2, 4.0), NdotL, NdotV,
+        dot(n, halfSum), dot(nCrossHalfSum, nCrossHalfSum), min(halfLength2, 4.0), NdotL, NdotV,
         LdotH, alpha));
     // Selects, not branches, and on the two scalars rather than the colours: both sides are
     // computed, the selected values are finite (see header), and a GPU or llvmpipe runs no
