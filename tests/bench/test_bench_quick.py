@@ -147,6 +147,18 @@ def test_bench_quick_gpu_costs_respond_to_the_work_a_variant_does(quick_report):
     assert "colour-buffer" in variants[("srgb_encode", "hardware")]["gpu_isa"]["na"]
 
 
+def test_bench_quick_float16_reaches_the_amd_isa_as_16_bit_arithmetic(quick_report):
+    """The LOW tier with PBR_FLOAT16 compiles to 16-bit VALU instructions on every family;
+    as it is (mediump ignored by RADV) it has none."""
+    out, doc = quick_report
+    study = doc["gpu_isa"]["float16_study"]
+    for family in ("rdna3", "rdna2", "gcn5"):
+        f32, f16 = study["families"][family]["float32"], study["families"][family]["float16"]
+        assert f32["valu_f16_per_eval"] == 0 and f16["valu_f16_per_eval"] >= 5, family
+        assert f16["instructions_per_eval"] > 0 and f32["instructions_per_eval"] > 0, family
+    assert "Half precision on AMD GPUs" in (out / "accuracy_cost.md").read_text(encoding="utf-8")
+
+
 def test_bench_quick_compiles_every_scene_program_in_glsl_and_hlsl(quick_report):
     _, doc = quick_report
     for name, scene in doc["specialisation"]["scenes"].items():

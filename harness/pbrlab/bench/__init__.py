@@ -70,7 +70,10 @@ JSON schema ``pbrlab-bench/2`` (checked by ``report.validate``)::
                                            "gpu_isa": GPU_SCENE | null}}},
      "gpu_isa": {"available": bool, "reason": str | null (why not available),
                  "families": {gpu family: RADV_FORCE_FAMILY}, "devices": {...} | null,
-                 "float16": {gpu family: bool} | null, "note", "kernel_note"}}
+                 "float16": {gpu family: bool} | null (the device's shaderFloat16),
+                 "float16_study": {"note", "families": {gpu family: {"float32" | "float16":
+                                   figures as in GPU_KERNEL}}} | null (the LOW tier with
+                                   PBR_FLOAT16), "note", "kernel_note"}}
 
     ERROR = {"max_abs", "max_rel", "p99_rel", "rmse", "worst_abs_at": {input: value},
              "worst_rel_at": {input: value}, "nonfinite", "samples", "rel_floor"}
@@ -211,7 +214,8 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
            "specialisation": specialisation,
            "gpu_isa": {"available": isa["available"], "reason": isa["reason"],
                        "families": dict(gpu.FORCE_FAMILY), "devices": isa["devices"],
-                       "float16": isa.get("float16"), "note": gpu.ACO_NOTE,
+                       "float16": isa.get("float16_feature"), "float16_study": isa.get("float16"),
+                       "note": gpu.ACO_NOTE,
                        "kernel_note": gpu.KERNEL_NOTE}}
     problems = report.validate(doc)
     if problems:

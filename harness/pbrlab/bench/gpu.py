@@ -249,6 +249,43 @@ def _scene_summary(record: dict, families) -> dict:
     return out
 
 
+# ---- half precision that reaches the ISA ------------------------------------------------------
+
+FLOAT16_FAMILY, FLOAT16_VARIANT = "brdf_tier", "low"
+FLOAT16_NOTE = ("The LOW tier's kernel compiled twice for Vulkan (#version 450): as it is (float32: "
+                "RADV 22.3 ignores mediump / RelaxedPrecision) and with PBR_FLOAT16 under "
+                "GL_EXT_shader_explicit_arithmetic_types_float16, where the specular lobe "
+                "(pbr_DV_GGX_SmithCorrelatedFast_half) runs in float16_t. Per evaluation against the "
+                "family baseline; 16-bit and packed (v_pk_*) counts from the disassembly. The "
+                "kernel's inputs are float32, so the float16 lobe pays its conversions; its error in "
+                "half is the half study's (tests/hardcases/test_half.py).")
+_FLOAT16_HEADER = "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require"
+
+
+def float16_jobs(kernels) -> dict:
+    """The LOW-tier kernel and its baseline in Vulkan GLSL, float32 and PBR_FLOAT16."""
+    ids = {k["id"]: k for k in kernels}
+    low = ids.get(f"{FLOAT16_FAMILY}/{FLOAT16_VARIANT}")
+    base = ids.get(f"{FLOAT16_FAMILY}/_baseline")
+    if low is None or base is None:
+        return {}
+    def vulkan(text, float16=False):
+        text = text.replace("#version 330 core", _FLOAT16_HEADER, 1)
+        return text.replace(_FLOAT16_HEADER, _FLOAT16_HEADER + "\n#define PBR_FLOAT16 1", 1) if float16 else text
+    return {"f16|baseline": gpu_isa.Job("f16|baseline", vulkan(base["fragment"])),
+            "f16|float32": gpu_isa.Job("f16|float32", vulkan(low["fragment"])),
+            "f16|float16": gpu_isa.Job("f16|float16", vulkan(low["fragment"], float16=True))}
+
+
+def float16_figures(compiled: dict) -> dict | None:
+    """Per GPU family: the float32 and float16 LOW kernels per evaluation (per_eval)."""
+    if "f16|float16" not in compiled[next(iter(compiled))]:
+        return None
+    return {"note": FLOAT16_NOTE, "families": {
+        family: {precision: per_eval(compiled[family][f"f16|{precision}"], compiled[family]["f16|baseline"])
+                 for precision in ("float32", "float16")} for family in compiled}}
+
+
 # ---- everything --------------------------------------------------------------------------------
 
 def measure(kernels, plans, families_by_name: dict, scenes: dict, gpu_families=GPU_FAMILIES) -> dict:
@@ -259,10 +296,11 @@ def measure(kernels, plans, families_by_name: dict, scenes: dict, gpu_families=G
         return {"available": False, "reason": reason, "devices": None, "kernels": {}, "scenes": {}}
     jobs = kernel_jobs(kernels)
     program_jobs, layout = scene_jobs(scenes)
-    compiled = _compile({**jobs, **program_jobs}, gpu_families)
+    compiled = _compile({**jobs, **program_jobs, **float16_jobs(kernels)}, gpu_families)
     devices = {family: compiled[family]["_device"].get("name") for family in gpu_families}
     float16 = {family: compiled[family]["_device"].get("float16") for family in gpu_families}
-    return {"available": True, "reason": None, "devices": devices, "float16": float16,
+    return {"available": True, "reason": None, "devices": devices, "float16_feature": float16,
             "kernels": kernel_figures(plans, compiled, families_by_name),
+            "float16": float16_figures(compiled),
             "scenes": scene_figures(layout, compiled)}
 

@@ -192,6 +192,7 @@ def markdown(doc: dict) -> str:
                      f"{_g(r['full_over_specialised'])} | {_g(si, 1) if si else '–'} | "
                      f"{_g(fi, 1) if fi else '–'} | {ratio} |")
     lines += [""] + report_gpu.specialisation_tables(doc) + report_gpu.language_table(doc)
+    lines += report_gpu.float16_table(doc)
     lines += [f"> {NOISE_NOTE}", ""]
     return "\n".join(lines)
 

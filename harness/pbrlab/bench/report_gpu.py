@@ -229,3 +229,20 @@ def language_table(doc: dict) -> list[str]:
             count = f"{len(programs)}" + (f" (+{skipped} n/a)" if skipped else "")
             lines.append(f"| `{name}` ({kind}) | {count} | " + " | ".join(cells) + f" | {largest:+d} |")
     return lines + [""]
+
+
+def float16_table(doc: dict) -> list[str]:
+    """The LOW tier in float32 and with PBR_FLOAT16 (float16_t), per AMD family."""
+    study = doc["gpu_isa"].get("float16_study")
+    if not doc["gpu_isa"]["available"] or not study:
+        return []
+    lines = ["## Half precision on AMD GPUs (LOW tier, `PBR_FLOAT16`)", "", study["note"], "",
+             "| family | precision | instr/eval | 16-bit VALU/eval | packed (v_pk) /eval | "
+             "transcendental/eval | VGPRs |", "|---|---|---|---|---|---|---|"]
+    for family in GPU_FAMILIES:
+        for precision in ("float32", "float16"):
+            r = study["families"][family][precision]
+            lines.append(f"| {TITLES[family]} | {precision} | {_n(r['instructions_per_eval'], 2)} | "
+                         f"{_n(r['valu_f16_per_eval'], 2)} | {_n(r['valu_packed_per_eval'], 2)} | "
+                         f"{_n(r['transcendental_per_eval'], 2)} | {r['vgprs']} |")
+    return lines + [""]
