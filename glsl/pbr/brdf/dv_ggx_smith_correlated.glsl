@@ -3,6 +3,8 @@
 //
 // Provides: float pbr_DV_GGX_SmithCorrelated(float nDotH, float nCrossH2, float h2,
 //                                            float NdotL, float NdotV, float alpha)
+//           float pbr_DV_GGX_fromLambdaSum(float nDotH, float nCrossH2, float h2, float alpha,
+//                                          float lambdaSum)  (GGX times any V = 0.5 / lambdaSum)
 // Include:  "pbr/brdf/dv_ggx_smith_correlated.glsl" (path relative to glsl/)
 // Config macros read: none.
 //
@@ -35,13 +37,20 @@
 
 #include "pbr/common/constants.glsl"
 
+// The GGX part, for every V of the form 0.5 / lambdaSum (lambdaSum > 0).
+float pbr_DV_GGX_fromLambdaSum(float nDotH, float nCrossH2, float h2, float alpha,
+                               float lambdaSum) {
+    float a2 = alpha * alpha;
+    float d = nCrossH2 + nDotH * nDotH * a2;
+    return (a2 * (0.5 * PBR_INV_PI) * (h2 * h2)) / (d * d * lambdaSum);
+}
+
 float pbr_DV_GGX_SmithCorrelated(float nDotH, float nCrossH2, float h2, float NdotL,
                                  float NdotV, float alpha) {
     float a2 = alpha * alpha;
-    float d = nCrossH2 + nDotH * nDotH * a2;
     float lambdaV = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2);
     float lambdaL = NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
-    return (a2 * (0.5 * PBR_INV_PI) * (h2 * h2)) / (d * d * (lambdaV + lambdaL));
+    return pbr_DV_GGX_fromLambdaSum(nDotH, nCrossH2, h2, alpha, lambdaV + lambdaL);
 }
 
 #endif // PBR_BRDF_DV_GGX_SMITH_CORRELATED_GLSL

@@ -117,7 +117,7 @@ DV_ARGUMENTS = (f"dot(n, {_H}), dot(cross(n, {_H}), cross(n, {_H})), min(dot({_H
 _H_LOW = _H.replace("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP")
 DV_LOW_ARGUMENTS = (DV_ARGUMENTS.replace(_H, _H_LOW)
                     .replace("clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS", "clamp(roughness, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP"))
-DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelatedFast",
+DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
                 "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
 
 # Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
@@ -194,6 +194,12 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
     # the fused HIGH-tier lobe, called as pbr_brdf_standard calls it (its preconditions)
     Function("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelated(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    # the GGX part with the exact lambdas' smallest sum, NdotV alpha (NdotL -> 0)
+    Function("pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_fromLambdaSum(" + DV_ARGUMENTS.rsplit(", max(", 1)[0]
+             + ", pbr_alpha_from_perceptual_roughness(clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0)), "
+             "clamp(dot(n, v), PBR_MIN_NDOTV, 1.0) * pbr_alpha_from_perceptual_roughness("
+             "clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0)))",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     Function("pbr_DV_GGX_SmithCorrelatedFast", "pbr_DV_GGX_SmithCorrelatedFast(" + DV_ARGUMENTS + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),

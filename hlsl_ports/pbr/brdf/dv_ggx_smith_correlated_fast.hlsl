@@ -32,13 +32,12 @@
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/precision.hlsl"
+#include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
 
 float pbr_DV_GGX_SmithCorrelatedFast(float nDotH, float nCrossH2, float h2, float NdotL,
                                      float NdotV, float alpha) {
-    float a2 = alpha * alpha;
-    float d = nCrossH2 + nDotH * nDotH * a2;
-    float lambdas = lerp(2.0 * NdotL * NdotV, NdotL + NdotV, alpha);
-    return (a2 * (0.5 * PBR_INV_PI) * (h2 * h2)) / (d * d * lambdas);
+    return pbr_DV_GGX_fromLambdaSum(nDotH, nCrossH2, h2, alpha,
+                                    lerp(2.0 * NdotL * NdotV, NdotL + NdotV, alpha));
 }
 
 float pbr_DV_GGX_SmithCorrelatedFast_half(float nDotH, float nCrossH2, float h2, float NdotL,
