@@ -216,6 +216,16 @@ def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None)
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    def _readable_log_ticks(axis):
+        """Plain numbers on a log axis; within one decade matplotlib labels every minor tick
+        in scientific notation, and the labels run into each other: keep a few."""
+        from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
+        axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        formatter = ScalarFormatter()
+        formatter.set_scientific(False)
+        axis.set_major_formatter(formatter)
+        axis.set_minor_formatter(NullFormatter())
+
     fig, axes = plt.subplots(1, 2, figsize=(12.6, 4.4), dpi=110, sharey=True)
     floor_y = 1e-8
     markers = "osD^vP*Xh<>p"
@@ -238,6 +248,7 @@ def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None)
                        linewidths=2 if exact else 0.8, zorder=3, label=label, alpha=0.9)
         ax.set_xscale("log")
         ax.set_yscale("log")
+        _readable_log_ticks(ax.xaxis)
         ax.set_xlabel(f"{label_x}; floor {floor_x})")
         ax.grid(True, which="both", alpha=0.3)
     if gpu_isa is not None and not gpu_isa.get("available"):
