@@ -2,7 +2,7 @@
 //
 // Provides: PBR_HALF, the scalar type, also its constructor: PBR_HALF x = PBR_HALF(y);
 //           PBR_HALF_ARITHMETIC: 1 where floats may be 16-bit (PBR_FLOAT16, or GLSL ES,
-//           whose mediump is fp16 on most mobile GPUs), else 0
+//           whose mediump is fp16 on most mobile GPUs), else 0; PBR_HALF_MIN_NORMAL (2^-14)
 // Include:  "pbr/common/precision.glsl" (path relative to glsl/)
 // Config macros read: PBR_FLOAT16
 //
@@ -25,8 +25,13 @@
 #  define PBR_HALF_ARITHMETIC 0
 #endif
 
+// The smallest normal half, 2^-14 (below it mediump need not keep values).
+#define PBR_HALF_MIN_NORMAL 6.103515625e-5
+
 #ifdef PBR_FLOAT16
-#  ifndef GL_EXT_shader_explicit_arithmetic_types_float16
+// glslang defines the extension's macro for desktop GLSL only, so the check is skipped for
+// GLSL ES (there the #extension line is the shader's own responsibility).
+#  if !defined(GL_ES) && !defined(GL_EXT_shader_explicit_arithmetic_types_float16)
 #    error "PBR_FLOAT16 needs #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require before pbrlab's includes"
 #  endif
 #  define PBR_HALF float16_t

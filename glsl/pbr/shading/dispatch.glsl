@@ -18,7 +18,7 @@
 //   PBR_SPECULAR_V  PBR_SPECULAR_V_SMITH_GGX_CORRELATED (HIGH default)
 //                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
-//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default) | _SCHLICK_SG (MEDIUM default) | _NONE (F = 1, for
+//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default, every tier) | _SCHLICK_SG | _NONE (F = 1, for
 //                   white-furnace checks and debugging); both Schlick forms take
 //                   F90 = pbr_f90_from_f0(f0)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
@@ -216,7 +216,8 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 // D · V of the selected terms, from any positive multiple h of the half vector (pbr_brdf_standard
 // passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² in
 // [PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4]. n·h is negative for an h below the surface,
-// which a view below the horizon gives: GGX is even in n·h (its denominator (1 - c²) + c²
+// which a view below the horizon gives; pbr_brdf_standard then sets the lobe to 0 (χ+), and
+// the value here only has to be finite: GGX is even in n·h (its denominator (1 - c²) + c²
 // alpha² >= alpha² for unit h) and is evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
 // clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
 // quotient that needs no normalised h and none of the terms' own clamps: the

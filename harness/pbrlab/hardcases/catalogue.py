@@ -340,8 +340,8 @@ _DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 
 _GEOMETRY_CASES = (
     ("V = -L", "l and v opposite: no half vector exists (l + v = 0); decided: no specular, diffuse kept",
      UP, (-0.6, 0.0, -0.8), (0.6, 0.0, 0.8), "diffuse"),
-    ("V ≈ -L", "|l + v|² just above the 1e-12 threshold: h from a vector of length 1e-6, VdotH = 5e-7",
-     UP, (-0.6, 0.0, -0.8 + 2e-6), (0.6, 0.0, 0.8), None),
+    ("V ≈ -L", "|l + v|² = 4e-10, just above the 1e-10 threshold: D · V from l + v of length 2e-5, "
+     "VdotH = 1e-5", UP, (-0.6, 0.0, -0.8 + 2e-5), (0.6, 0.0, 0.8), None),
     ("NdotL = 0", "light exactly at the horizon: decided 0", UP, (0.6, 0.0, 0.8), (1.0, 0.0, 0.0), 0.0),
     ("NdotL < 0", "light behind the surface: decided 0", UP, (0.6, 0.0, 0.8), (0.6, 0.0, -0.8), 0.0),
     ("light at the shaded point", "l = pbr_safe_normalize(0) = 0 (a point light touching the surface): "

@@ -217,9 +217,9 @@ def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PER
         c = _dot(n, hs)
         cross = (n[1] * hs[2] - n[2] * hs[1], n[2] * hs[0] - n[0] * hs[2], n[0] * hs[1] - n[1] * hs[0])
         inv_h2 = m.c(1.0) / m.minimum(hl2, m.c(4.0))
-        dn = (_dot(cross, cross) + c * c * (alpha * alpha)) * inv_h2
+        dn = _dot(cross, cross) * inv_h2 + (c * c * inv_h2) * (alpha * alpha)
         k = alpha / dn
-        DV = k * k * (m.c(0.5 / math.pi) / lambdas)
+        DV = k * k * (m.c(0.5 / math.pi) / m.maximum(lambdas, m.c(HALF_MIN_NORMAL)))
     else:
         inv = m.c(1.0) / m.sqrt(m.maximum(hl2, m.c(min_half)))
         DV = d_form(m, n, (hs[0] * inv, hs[1] * inv, hs[2] * inv), alpha) * (m.c(0.5) / lambdas)
@@ -228,7 +228,8 @@ def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PER
     f90 = m.minimum(specular * m.c(3.0 * 16.5), m.c(1.0))  # pbr_f90_from_f0 of a grey f0
     F = specular + (f90 - specular) * (w2 * w2 * w)
     lobe = (DV if lobe_cap is None else m.minimum(DV, m.c(lobe_cap))) * F
-    lit = m.where(hl2 >= m.c(min_half), diffuse_part + lobe, diffuse_part)
+    with_lobe = m.where(_dot(n, hs) > m.c(0.0), diffuse_part + lobe, diffuse_part)  # χ+(n·h)
+    lit = m.where(hl2 >= m.c(min_half), with_lobe, diffuse_part)
     return m.where(NdotL > m.c(0.0), lit, m.c(0.0))
 
 

@@ -146,8 +146,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
     specular; D · V capped at HALF_MAX in the LOW tier).
 
-    GGX is evaluated at |n·h| (it is even in n·h; an h below the surface comes only from a
-    view below the horizon), Beckmann and Blinn-Phong at n·h clamped to [0, 1]. V's cosines are floored at MIN_NDOTV, except in the
+    An h below the surface (only from a view below the horizon) has no lobe (χ+). V's cosines are floored at MIN_NDOTV, except in the
     fused GGX quotients of the tiers' V (dv_ggx_*.glsl), which take NdotL > 0 as it is."""
     d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
     n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
@@ -184,7 +183,8 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
             V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var)
     lobe = np.minimum(D * V, QUALITY_MAX_SPECULAR_LOBE[quality])
-    specular_part = np.where(has_half[..., None], lobe[..., None] * F, 0.0)
+    # χ+(n·h) (Walter et al. 2007 eq. 33): no lobe for h below the surface
+    specular_part = np.where((has_half & (n_dot_h > 0.0))[..., None], lobe[..., None] * F, 0.0)
     return np.where(lit[..., None], diffuse_part + specular_part, 0.0)
 
 

@@ -21,10 +21,12 @@
 // (Filament's mobile D_GGX form):
 //   dn = (|n × h|² + (n·h)² alpha²) / h2 in [alpha², 1],  k = alpha / dn <= 1 / alpha,
 //   D · V = k² / π · 0.5 / mix(...).
-// With alpha >= 0.089² (the LOW floor) dn >= 6.3e-5 and k² <= 1.6e4 fit half; 0.5 / mix(...)
-// and the product may pass 65504 and become +Inf, which the LOW tier's lobe cap
-// (pbr_specular_lobe_limit, a min) maps to 65504; k² > 0, so no Inf · 0. It costs a second
-// reciprocal: measured in docs/bench.
+// With alpha >= 0.089² (the LOW floor) dn >= 6.3e-5 and k² <= 1.6e4 fit half, each of dn's
+// two terms computed within [0, 1] so that neither relies on half denormals (mediump need
+// not keep them); mix(...) is floored at half's smallest normal 2^-14 (V <= 8192: it differs
+// from the float32 form only where NdotL + NdotV < 7.7e-3). The product may pass 65504 and
+// become +Inf, which the LOW tier's lobe cap (pbr_specular_lobe_limit, a min) maps to 65504;
+// k² > 0, so no Inf · 0. It costs a second reciprocal: measured in docs/bench.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_DV_GGX_SMITH_CORRELATED_FAST_HLSL
 #define PBR_BRDF_DV_GGX_SMITH_CORRELATED_FAST_HLSL
@@ -47,9 +49,11 @@ float pbr_DV_GGX_SmithCorrelatedFast_half(float nDotH, float nCrossH2, float h2,
     PBR_HALF cosL = PBR_HALF(NdotL);
     PBR_HALF cosV = PBR_HALF(NdotV);
     PBR_HALF invH2 = PBR_HALF(1.0) / PBR_HALF(h2);
-    PBR_HALF dn = (PBR_HALF(nCrossH2) + c * c * (a * a)) * invH2;
+    // each term of dn in [0, 1] before it is added, so neither depends on half denormals:
+    // sin² ≈ 1 where cos² · alpha² underflows, and cos² · alpha² >= alpha² at the peak
+    PBR_HALF dn = PBR_HALF(nCrossH2) * invH2 + (c * c * invH2) * (a * a);
     PBR_HALF k = a / dn;
-    PBR_HALF lambdas = lerp(PBR_HALF(2.0) * cosL * cosV, cosL + cosV, a);
+    PBR_HALF lambdas = max(lerp(PBR_HALF(2.0) * cosL * cosV, cosL + cosV, a), PBR_HALF(PBR_HALF_MIN_NORMAL));
     return float(k * k * (PBR_HALF(0.5 * PBR_INV_PI) / lambdas));
 }
 
