@@ -491,7 +491,8 @@ def _count_frames(settings: Settings, workdir: Path) -> dict:
     valgrind = shutil.which("valgrind")
     if valgrind is None or settings.count_families == ():
         return {}
-    spec = {"scenes": list(SPECIALISATION_COUNT_SCENES), "size": list(SPECIALISATION_COUNT_SIZE)}
+    spec = {"scenes": list(SPECIALISATION_COUNT_SCENES), "size": list(SPECIALISATION_COUNT_SIZE),
+            "passes": COUNT_PASSES}
     outdir = workdir / "callgrind_frames"
     outdir.mkdir()
     prefix = (valgrind, "--tool=callgrind", "--dump-before=getppid", "--dump-instr=no",
@@ -501,7 +502,11 @@ def _count_frames(settings: Settings, workdir: Path) -> dict:
     result = _wait([(proc, cmd, out_path)])[0]
     dumps = sorted(outdir.glob("cg.out.*"), key=lambda p: int(p.suffix[1:]))
     totals = [int(re.search(r"^summary:\s*(\d+)", p.read_text(), re.M).group(1)) for p in dumps]
-    return dict(zip(result["sequence"], totals[1:]))  # dump 1: start-up to the first marker
+    per_frame: dict = {}
+    for (key, _), ir in zip(result["sequence"], totals[1:]):  # dump 1: start-up to the first marker
+        per_frame.setdefault(key, []).append(ir)
+    count_check.check_counts(per_frame, unit=" (whole-process Ir of one frame)")
+    return {key: float(np.mean(values)) for key, values in per_frame.items()}
 
 
 def tier_image_error(scene_path=DEFAULT_SCENE, scale: float = 1.0) -> dict:

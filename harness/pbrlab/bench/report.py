@@ -178,7 +178,8 @@ def markdown(doc: dict) -> str:
               f"rounds, size: {sp['size']}.", "",
               f"Instructions: callgrind Ir of the whole process for one frame at "
               f"{sp.get('instructions_size', ['?', '?'])[0]}x{sp.get('instructions_size', ['?', '?'])[1]} "
-              f"(uniform uploads, draws, readback, resolve; not counted under --quick; scenes with an "
+              f"(uniform uploads, draws, readback, resolve; mean of 2 passes in opposite orders, "
+              f"which must agree within 1 %; not counted under --quick; scenes with an "
               f"environment or textures are not countable here: valgrind 3.19 cannot decode a GFNI "
               f"instruction a library executes on those paths on this host).", "",
               "| scene | programs (specialised / full) | specialised ms | full ms | full / specialised | "

@@ -178,7 +178,9 @@ def _specialisation_jobs(spec):
 
 def run_count_frames(spec):
     """Under callgrind: one frame per job between two markers (after a warm-up frame that
-    compiles its programs), so each dump holds the instructions of exactly one frame."""
+    compiles its programs), so each dump holds the instructions of exactly one frame; every
+    job in ``spec["passes"]`` passes (default 2), each pass in the reverse order of the one
+    before, so the parent can check that a frame's count does not depend on what ran before."""
     from pbrlab import gl, render
     ctx = gl.create_context(None)
     jobs = _specialisation_jobs(spec)
@@ -186,10 +188,14 @@ def run_count_frames(spec):
     for scene, specialise in jobs.values():
         render.render_scene(scene, ctx, size=size, specialise=specialise)
     sequence = []
-    for key, (scene, specialise) in jobs.items():
-        os.getppid()  # marker: callgrind dumps the counts since the previous marker
-        render.render_scene(scene, ctx, size=size, specialise=specialise)
-        sequence.append(key)
+    order = list(jobs)
+    for number in range(int(spec.get("passes", 2))):
+        for key in order:
+            scene, specialise = jobs[key]
+            os.getppid()  # marker: callgrind dumps the counts since the previous marker
+            render.render_scene(scene, ctx, size=size, specialise=specialise)
+            sequence.append([key, number])
+        order.reverse()
     os.getppid()
     return {"sequence": sequence}
 
