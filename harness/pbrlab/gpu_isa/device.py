@@ -141,8 +141,6 @@ class Device:
                                              [c_void_p, c_void_p, c_void_p, POINTER(H)])
         self._destroy_render_pass = self._dfn("vkDestroyRenderPass",
                                               [c_void_p, H, c_void_p], None)
-        self._create_compute = self._dfn("vkCreateComputePipelines",
-                                         [c_void_p, H, c_uint32, c_void_p, c_void_p, POINTER(H)])
         self._create_graphics = self._dfn("vkCreateGraphicsPipelines",
                                           [c_void_p, H, c_uint32, c_void_p, c_void_p, POINTER(H)])
         self._destroy_pipeline = self._dfn("vkDestroyPipeline", [c_void_p, H, c_void_p], None)
@@ -206,18 +204,6 @@ class Device:
                                                 stage, module, entry, None)
 
     _FLAGS = vk.PIPELINE_CREATE_CAPTURE_STATISTICS | vk.PIPELINE_CREATE_CAPTURE_INTERNAL_REPRESENTATIONS
-
-    def compute(self, spirv: bytes, sets: dict, entry: str = "main") -> list:
-        """The executables of a compute pipeline."""
-        module = self._module(spirv)
-        layout, set_layouts = self._layout(sets)
-        info = vk.ComputePipelineCreateInfo(vk.ST_COMPUTE_PIPELINE_CREATE_INFO, None, self._FLAGS,
-                                            self._stage(vk.STAGE_COMPUTE, module, entry.encode()),
-                                            layout, 0, -1)
-        try:
-            return self._pipeline(self._create_compute, info)
-        finally:
-            self._release(module, layout, set_layouts)
 
     def graphics(self, vertex: bytes, fragment: bytes, sets: dict, colour_count: int) -> list:
         """The executables of a graphics pipeline: one triangle list, no vertex buffers, no

@@ -1,9 +1,9 @@
 """The few Vulkan calls that compile a SPIR-V pipeline and read back what the driver made
 of it (``VK_KHR_pipeline_executable_properties``), through ctypes on the system's loader.
 
-Only what :mod:`pbrlab.gpu_isa.radv` needs is declared: an instance, one device with the
+Only what :mod:`pbrlab.gpu_isa.device` needs is declared: an instance, one device with the
 pipeline-executable feature (and ``shaderFloat16`` where the device has it), shader
-modules, descriptor-set and pipeline layouts, a one-subpass render pass, compute and
+modules, descriptor-set and pipeline layouts, a one-subpass render pass,
 graphics pipelines, and the statistics and internal representations of their
 executables. Structure layouts follow the Vulkan 1.3 headers (vulkan_core.h)."""
 
@@ -34,7 +34,6 @@ ST_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO = 24
 ST_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO = 26
 ST_PIPELINE_DYNAMIC_STATE_CREATE_INFO = 27
 ST_GRAPHICS_PIPELINE_CREATE_INFO = 28
-ST_COMPUTE_PIPELINE_CREATE_INFO = 29
 ST_PIPELINE_LAYOUT_CREATE_INFO = 30
 ST_DESCRIPTOR_SET_LAYOUT_CREATE_INFO = 32
 ST_RENDER_PASS_CREATE_INFO = 38
@@ -52,7 +51,6 @@ PIPELINE_CREATE_CAPTURE_INTERNAL_REPRESENTATIONS = 0x80
 
 STAGE_VERTEX = 0x1
 STAGE_FRAGMENT = 0x10
-STAGE_COMPUTE = 0x20
 STAGE_ALL = 0x7FFFFFFF
 
 DESCRIPTOR_SAMPLER = 0
@@ -68,7 +66,6 @@ DYNAMIC_STATE_SCISSOR = 1
 
 STAT_BOOL32, STAT_INT64, STAT_UINT64, STAT_FLOAT64 = range(4)
 
-PFN = c_void_p
 Handle = c_uint64  # non-dispatchable handles
 
 
@@ -98,11 +95,6 @@ class DeviceCreateInfo(Structure):
                 ("enabledLayerCount", c_uint32), ("ppEnabledLayerNames", POINTER(c_char_p)),
                 ("enabledExtensionCount", c_uint32), ("ppEnabledExtensionNames", POINTER(c_char_p)),
                 ("pEnabledFeatures", c_void_p)]
-
-
-class FeaturesHeader(Structure):
-    """The head shared by every feature structure in a pNext chain."""
-    _fields_ = [("sType", c_uint32), ("pNext", c_void_p)]
 
 
 class PipelineExecutableFeatures(Structure):
@@ -149,12 +141,6 @@ class PipelineShaderStageCreateInfo(Structure):
     _fields_ = [("sType", c_uint32), ("pNext", c_void_p), ("flags", c_uint32),
                 ("stage", c_uint32), ("module", Handle), ("pName", c_char_p),
                 ("pSpecializationInfo", c_void_p)]
-
-
-class ComputePipelineCreateInfo(Structure):
-    _fields_ = [("sType", c_uint32), ("pNext", c_void_p), ("flags", c_uint32),
-                ("stage", PipelineShaderStageCreateInfo), ("layout", Handle),
-                ("basePipelineHandle", Handle), ("basePipelineIndex", c_int32)]
 
 
 class VertexInputStateCreateInfo(Structure):
@@ -315,4 +301,4 @@ def string_array(names):
 
 __all__ = [name for name in dir() if not name.startswith("_")] + ["byref", "POINTER", "c_uint32",
                                                                   "c_void_p", "c_float", "c_size_t",
-                                                                  "c_uint64", "Handle", "PFN"]
+                                                                  "c_uint64", "Handle"]

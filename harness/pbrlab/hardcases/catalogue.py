@@ -108,15 +108,24 @@ def _f(name, args, bound, call=None):
 
 # The D · V arguments from directions, as pbr_brdf_standard makes them (h = l + v unnormalised,
 # its squared length capped at 4, the cosines and roughness clamped): the preconditions of
-# pbr_DV_GGX_SmithCorrelated. Where l + v has no direction (l = -v), pbr_brdf_standard does
-# not use D · V; here h = n stands in, so every call meets the preconditions.
-_H = "(dot(l + v, l + v) >= PBR_MIN_HALF_VECTOR_LENGTH_SQUARED ? l + v : n)"
-DV_ARGUMENTS = (f"dot(n, {_H}), dot(cross(n, {_H}), cross(n, {_H})), min(dot({_H}, {_H}), 4.0), "
-                "max(dot(n, l), PBR_MIN_NDOTV), clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), "
-                "pbr_alpha_from_perceptual_roughness(clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0))")
-_H_LOW = _H.replace("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP")
-DV_LOW_ARGUMENTS = (DV_ARGUMENTS.replace(_H, _H_LOW)
-                    .replace("clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS", "clamp(roughness, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP"))
+# the fused quotients. Where l + v has no direction (l = -v), pbr_brdf_standard does not use
+# D · V; here h = n stands in, so every call meets the preconditions. lambdaSum is the exact
+# lambdas' smallest sum, NdotV alpha (NdotL -> 0).
+def dv_arguments(parts: str, low: bool = False) -> str:
+    """The call's arguments, in order, from ``parts`` (space-separated names of
+    ``_DV_PARTS``), for the HIGH/MEDIUM guards or (``low``) the LOW tier's."""
+    threshold, floor = (("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP")
+                        if low else ("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"))
+    h = f"(dot(l + v, l + v) >= {threshold} ? l + v : n)"
+    alpha = f"pbr_alpha_from_perceptual_roughness(clamp(roughness, {floor}, 1.0))"
+    values = {"nDotH": f"dot(n, {h})", "nCrossH2": f"dot(cross(n, {h}), cross(n, {h}))",
+              "h2": f"min(dot({h}, {h}), 4.0)", "NdotL": "max(dot(n, l), PBR_MIN_NDOTV)",
+              "NdotV": "clamp(dot(n, v), PBR_MIN_NDOTV, 1.0)", "VdotH": "0.5 * length(l + v)",
+              "alpha": alpha, "lambdaSum": f"clamp(dot(n, v), PBR_MIN_NDOTV, 1.0) * {alpha}"}
+    return ", ".join(values[name] for name in parts.split())
+
+
+DV_ARGUMENTS = dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha")
 DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
                 "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
 
@@ -195,16 +204,13 @@ TERMS: tuple[Function, ...] = (
     # the fused HIGH-tier lobe, called as pbr_brdf_standard calls it (its preconditions)
     Function("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelated(" + DV_ARGUMENTS + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
-    # the GGX part with the exact lambdas' smallest sum, NdotV alpha (NdotL -> 0)
-    Function("pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_fromLambdaSum(" + DV_ARGUMENTS.rsplit(", max(", 1)[0]
-             + ", pbr_alpha_from_perceptual_roughness(clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0)), "
-             "clamp(dot(n, v), PBR_MIN_NDOTV, 1.0) * pbr_alpha_from_perceptual_roughness("
-             "clamp(roughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0)))",
+    Function("pbr_DV_GGX_fromLambdaSum",
+             "pbr_DV_GGX_fromLambdaSum(" + dv_arguments("nDotH nCrossH2 h2 alpha lambdaSum") + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     Function("pbr_DV_GGX_SmithCorrelatedFast", "pbr_DV_GGX_SmithCorrelatedFast(" + DV_ARGUMENTS + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
-    Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + DV_LOW_ARGUMENTS + ")",
+    Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # shading/energy_conservation.glsl
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
@@ -227,7 +233,7 @@ _DISPATCH_TEMPLATES = (
     (_f("pbr_specular_D", "NdotH:cosine s2:unit alpha:alpha", D), "PBR_SPECULAR_D", shading.SPECULAR_D),
     (_f("pbr_specular_V", "NdotL:cosine NdotV:cosine NdotH:cosine VdotH:cosine alpha:alpha", V),
      "PBR_SPECULAR_V", shading.SPECULAR_V),
-    (Function("pbr_specular_DV", "pbr_specular_DV(" + DV_ARGUMENTS.replace(", pbr_alpha", ", 0.5 * length(l + v), pbr_alpha")
+    (Function("pbr_specular_DV", "pbr_specular_DV(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV VdotH alpha")
               + ")", _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")), "PBR_SPECULAR_V", shading.SPECULAR_V),
     (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_specular_F_deviation_bound", "f0:unit3", _unit("F deviation")), "PBR_SPECULAR_F", shading.SPECULAR_F),
