@@ -1,0 +1,142 @@
+"""Run a corpus of real Unity shaders (files nobody on this project wrote) through the
+harness as a new user would: each ``.shader`` as a scene material, rendered in HLSL (as
+written) and GLSL (its port), and report what happened to each.
+
+    python -m pbrlab.unity.corpus corpus/unity --out report.json     # every shader, both languages
+    outcome = run_shader(path, "hlsl")                               # one of them
+
+An outcome is ``rendered`` (every pixel finite), ``non-finite`` (rendered, but a pixel is NaN
+or Inf: a defect), ``refused`` (a ``PbrlabError`` naming what is missing: the documented
+answer to a Unity feature the harness cannot run) or ``traceback`` (any other exception: a
+defect). The report adds GLSL/HLSL agreement for shaders rendered in both.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import tempfile
+import traceback
+import warnings
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import PbrlabError
+
+ASSETS = Path(__file__).resolve().parents[3] / "scenes" / "assets"
+LANGUAGES = ("glsl", "hlsl")
+SIZE = (64, 64)
+
+
+@dataclass
+class Outcome:
+    path: str
+    language: str
+    status: str                 # rendered, non-finite, refused, traceback
+    message: str = ""
+    warnings: list = field(default_factory=list)
+    image: object = None        # HxWx4 float32 linear radiance when rendered
+
+    def summary(self) -> dict:
+        d = asdict(self)
+        d.pop("image")
+        return d
+
+
+def corpus_shaders(root: Path) -> list[Path]:
+    """Every ``.shader`` file below ``root``, sorted."""
+    return sorted(p for p in Path(root).rglob("*.shader") if p.is_file())
+
+
+def scene_for(shader: Path) -> dict:
+    """A small scene that shows a shader: a UV sphere (mesh: UVs, tangents, vertices a
+    vertex function can move) under a directional and a point light and the sky."""
+    return {
+        "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
+                   "size": list(SIZE)},
+        "lights": [
+            {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0},
+            {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
+        ],
+        "environment": {"path": str(ASSETS / "sky.exr"), "intensity": 0.5},
+        "materials": {"m": {"surface": str(shader)}},
+        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
+        "render": {"quality": "high", "tonemap": "khronos_neutral"},
+    }
+
+
+def run_shader(shader: Path, language: str) -> Outcome:
+    from ..render import render_scene
+    from ..scene import parse_scene
+
+    shader = Path(shader).resolve()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            scene = parse_scene(scene_for(shader), origin="corpus scene", base=shader.parent)
+            image = render_scene(scene, language=language).linear
+        except PbrlabError as exc:
+            return Outcome(str(shader), language, "refused", str(exc).splitlines()[0][:400],
+                           [str(w.message)[:300] for w in caught])
+        except Exception as exc:  # a defect: the report names it
+            tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
+            return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
+                           [str(w.message)[:300] for w in caught])
+    status = "rendered" if np.isfinite(image).all() else "non-finite"
+    return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
+
+
+def agreement(a: np.ndarray, b: np.ndarray) -> float:
+    """Largest relative difference of the GLSL and HLSL renders (1e-3 floor)."""
+    return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
+
+
+def run_corpus(root: Path, progress=None) -> dict:
+    rows = []
+    for shader in corpus_shaders(root):
+        outcomes = {lang: run_shader(shader, lang) for lang in LANGUAGES}
+        row = {"path": str(shader.relative_to(root)),
+               **{lang: outcomes[lang].summary() for lang in LANGUAGES}}
+        for o in row["glsl"], row["hlsl"]:
+            o.pop("path")
+            o.pop("language")
+        if all(o.status == "rendered" for o in outcomes.values()):
+            row["glsl_hlsl_max_rel"] = agreement(outcomes["glsl"].image, outcomes["hlsl"].image)
+        rows.append(row)
+        if progress:
+            progress(row)
+    counts = {lang: {} for lang in LANGUAGES}
+    for row in rows:
+        for lang in LANGUAGES:
+            s = row[lang]["status"]
+            counts[lang][s] = counts[lang].get(s, 0) + 1
+    both = sum(all(row[lang]["status"] == "rendered" for lang in LANGUAGES) for row in rows)
+    return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m pbrlab.unity.corpus", description=__doc__.split("\n\n")[0])
+    parser.add_argument("root", type=Path, help="a folder of .shader files (searched recursively)")
+    parser.add_argument("--out", type=Path, help="write the report as JSON here")
+    args = parser.parse_args(argv)
+
+    def progress(row):
+        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES)
+        first = next((row[lang]["message"] for lang in LANGUAGES if row[lang]["message"]), "")
+        print(f"{row['path']}: {marks} {first[:160]}", flush=True)
+
+    report = run_corpus(args.root, progress)
+    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']}; "
+          f"{json.dumps(report['counts'])}")
+    if args.out:
+        from .. import outputs
+        with outputs.transaction([args.out]) as tx:
+            tx.write_text(args.out, json.dumps(report, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
