@@ -22,6 +22,7 @@ from . import features, gl, gl_limits, ibl, meshes, resource_cache, surface_bind
 from . import srgb8 as srgb8_codes
 from .unity import cubemap as unity_cubemap
 from .unity import program as unity_program
+from .unity import program_pass as unity_program_pass
 from .unity import tessellate as unity_tessellate
 from .camera import camera_frame
 from .errors import PbrlabError, SceneError
@@ -278,6 +279,17 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             for obj in _draw_order(scene, frame):
                 material = scene.materials[obj.material]
                 defines = plan.defines[obj.material]
+                shading = (defines, surfaces[obj.material], language, mesh_fragment)
+                if material.unity is not None:  # each pass that runs, in the shader's order
+                    for unity_pass in material.unity.passes:
+                        _unity_pass_state(ctx, hdr, material, unity_pass)
+                        if obj.sphere is not None and unity_pass.kind == "surface" and not material.unity.moves_vertices:
+                            _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo,
+                                         unity_pass)
+                        else:  # a sphere is tessellated when a pass moves vertices
+                            _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass)
+                    ctx.depth_func = "<="
+                    continue
                 blended = material.alpha_mode in _BLEND
                 if blended:
                     ctx.enable(moderngl.BLEND)
@@ -286,12 +298,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
-                if material.unity is not None and material.unity.state.zwrite is not None:
-                    hdr.fbo.depth_mask = material.unity.state.zwrite  # the shader's ZWrite line
-                shading = (defines, surfaces[obj.material], language, mesh_fragment)
-                if obj.sphere is not None and material.unity is not None and material.unity.vertex is not None:
-                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources)  # tessellated
-                elif obj.sphere is not None:
+                if obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
                     _draw_mesh(ctx, obj, material, shading, scene, frame, resources)
@@ -307,11 +314,49 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
 
 
-def _program(ctx, stem, material, shading, scene, frame, resources, obj):
-    """The object's program, bound: the harness's surface path or a Unity surface shader's."""
+# ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
+_UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
+                  "SrcColor": moderngl.SRC_COLOR, "OneMinusDstColor": moderngl.ONE_MINUS_DST_COLOR,
+                  "SrcAlpha": moderngl.SRC_ALPHA, "OneMinusSrcColor": moderngl.ONE_MINUS_SRC_COLOR,
+                  "DstAlpha": moderngl.DST_ALPHA, "OneMinusDstAlpha": moderngl.ONE_MINUS_DST_ALPHA,
+                  "SrcAlphaSaturate": 0x0308, "OneMinusSrcAlpha": moderngl.ONE_MINUS_SRC_ALPHA}
+_UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "equal": "==",
+                "notequal": "!=", "always": "1", "never": "0"}
+
+
+def _unity_pass_state(ctx, hdr, material, unity_pass) -> None:
+    """Blending, depth writes and depth test of one pass of a Unity shader: a surface
+    program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
+    pass's from its Blend, ZWrite and ZTest lines."""
+    state = unity_pass.state
+    if unity_pass.kind == "surface":
+        blended = material.alpha_mode in _BLEND
+        if blended:
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_func = _BLEND[material.alpha_mode]
+        else:
+            ctx.disable(moderngl.BLEND)
+        hdr.fbo.depth_mask = (not blended) if state.zwrite is None else state.zwrite
+        ctx.depth_func = "<="
+        return
+    if state.blend_factors:
+        ctx.enable(moderngl.BLEND)
+        ctx.blend_func = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
+    else:
+        ctx.disable(moderngl.BLEND)
+    hdr.fbo.depth_mask = True if state.zwrite is None else state.zwrite
+    ctx.depth_func = _UNITY_DEPTH[state.ztest]
+
+
+def _program(ctx, stem, material, shading, scene, frame, resources, obj, unity_pass=None):
+    """The object's program, bound: the harness's surface path or a Unity shader's pass."""
     defines, surface, language, mesh_fragment = shading
-    if material.unity is not None:
-        program = unity_program.build_program(ctx, material.unity, language, stem, defines)
+    if unity_pass is not None:
+        if unity_pass.kind == "surface":
+            program = unity_program.build_program(ctx, unity_pass, language, stem, defines)
+        else:
+            program = unity_program_pass.build_pass_program(ctx, unity_pass, language, defines,
+                                                            blended=bool(unity_pass.state.blend_factors))
         resources.bind(program, scene, frame, material)
         unity_program.bind(program, material, obj, frame, resources.cache, resources.environment_cube,
                            _SceneResources.FIRST_MATERIAL_UNIT)
@@ -322,9 +367,9 @@ def _program(ctx, stem, material, shading, scene, frame, resources, obj):
     return program
 
 
-def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo):
+def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo, unity_pass=None):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    program = _program(ctx, "sphere", material, shading, scene, frame, resources, obj)
+    program = _program(ctx, "sphere", material, shading, scene, frame, resources, obj, unity_pass)
     centre, radius = obj.sphere
     _set(program, "u_sphere", (*centre, radius))
     inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
@@ -339,12 +384,12 @@ def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo,
     vao.release()
 
 
-def _draw_mesh(ctx, obj, material, shading, scene, frame, resources):
-    program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj)
+def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=None):
+    program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj, unity_pass)
     _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
     normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
     _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
-    cull = material.unity.state.cull if material.unity is not None else None
+    cull = unity_pass.state.cull if unity_pass is not None else None
     two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
     if cull in ("front", "back"):  # a Unity shader's Cull line
         ctx.enable(moderngl.CULL_FACE)

@@ -376,9 +376,14 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
                    f"remove `{key}`", key)
     m.properties = unity.resolve_properties(m.unity, r.raw("properties", {}), base,
                                             f"{r.origin}: {r.path.lstrip('.')}.properties")
-    m.alpha_mode = m.unity.pragma.alpha_mode
-    m.workflow = "specular" if m.unity.output_type == "SurfaceOutputStandardSpecular" else "metallic"
-    cutoff = m.unity.pragma.cutoff_property
+    surface = m.unity.surface
+    if surface is not None:
+        m.alpha_mode = surface.pragma.alpha_mode
+    else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
+        m.alpha_mode = "fade" if any(p.state.blend_factors for p in m.unity.passes) else "opaque"
+    m.workflow = "specular" if surface is not None and surface.output_type == "SurfaceOutputStandardSpecular" \
+        else "metallic"
+    cutoff = surface.pragma.cutoff_property if surface is not None else None
     if cutoff is not None:
         value = m.properties.get(cutoff)
         m.alpha_cutoff = float(value) if isinstance(value, float) else 0.5
@@ -476,8 +481,9 @@ def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
     """A Unity shader's Cull Front/Off is applied to meshes; a ray-traced sphere shows its
     front surface only (a sphere whose shader has a vertex: function is a mesh)."""
     for i, obj in enumerate(objects):
-        shader = materials[obj.material].unity
-        if obj.sphere is not None and shader is not None and shader.vertex is None \
+        unity_shader = materials[obj.material].unity
+        shader = unity_shader.surface if unity_shader is not None else None
+        if obj.sphere is not None and shader is not None and not unity_shader.moves_vertices \
                 and shader.state.cull != "back":
             warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
                           "is not applied to a ray-traced sphere (its front surface only); use a mesh "

@@ -157,7 +157,7 @@ def scene_programs(scene, kind: str) -> dict:
     for obj in scene.objects:
         material = scene.materials[obj.material]
         unity = material.unity is not None
-        stem = "mesh" if obj.sphere is None or (unity and material.unity.vertex is not None) else "sphere"
+        stem = "mesh" if obj.sphere is None or (unity and material.unity.moves_vertices) else "sphere"
         program = SceneProgram(stem, tuple(sorted(plan.defines[obj.material].items())),
                                material.surface, unity)
         names = out.setdefault(program, [])

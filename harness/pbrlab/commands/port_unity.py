@@ -14,19 +14,27 @@ import argparse
 
 from pathlib import Path
 
-from ..images import atomic_output
+from .. import outputs
+from ..errors import PbrlabError
 from ..unity import load_shader
 from ..unity.port import port_file
 
 
 def run(args) -> int:
-    shader = load_shader(Path(args.shader))
+    unity_shader = load_shader(Path(args.shader))
+    shader = unity_shader.surface
+    if shader is None:
+        raise PbrlabError(f"{args.shader}: port-unity ports a surface program, and this shader has "
+                          "vertex/fragment passes only; name the .shader file itself as a material's "
+                          "surface (both languages port it on the fly)")
     text = port_file(shader)
     if args.output == "-":
         print(text, end="")
         return 0
-    with atomic_output(args.output) as tmp:
-        Path(tmp).write_text(text, encoding="utf-8")
+    if Path(args.output).suffix.lower() not in (".glsl", ".txt", ""):
+        raise PbrlabError(f"refusing to write GLSL text to {args.output}: name the port .glsl")
+    with outputs.transaction([args.output], [(args.shader, "the shader being ported")]) as tx:
+        tx.write_text(args.output, text)
     print(f"wrote {args.output} ({len(text.splitlines())} lines)")
     return 0
 

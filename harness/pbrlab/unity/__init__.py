@@ -15,11 +15,11 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
-from .model import SurfaceShader
-from .parse import UnityShaderError, is_unity_surface, parse_file
+from .model import SurfaceShader, UnityShader
+from .parse import UnityShaderError, is_unity_surface, parse_file, read_shader
 from .properties import resolve as resolve_properties
 
-__all__ = ["SurfaceShader", "UnityShaderError", "UnityShaderWarning", "is_unity_surface",
+__all__ = ["SurfaceShader", "UnityShader", "UnityShaderError", "UnityShaderWarning", "is_unity_surface",
            "load_shader", "resolve_properties"]
 
 
@@ -27,9 +27,16 @@ class UnityShaderWarning(UserWarning):
     """Something a surface shader asks for that the harness does not do (named in the text)."""
 
 
-def load_shader(path: Path) -> SurfaceShader:
-    """Parse a surface shader; its warnings are issued as ``UnityShaderWarning``."""
-    shader = parse_file(Path(path))
-    for message in shader.warnings:
+class UnityShaderNote(UnityShaderWarning):
+    """What the harness chose for a shader: the SubShader that runs, a pass it skips, a Fallback."""
+
+
+def load_shader(path: Path) -> UnityShader:
+    """Read a Unity shader (every pass that runs); its warnings are issued as
+    ``UnityShaderWarning``, its notes (SubShader chosen, passes skipped) as ``UnityShaderNote``."""
+    shader = read_shader(Path(path))
+    for message in dict.fromkeys(shader.warnings):
         warnings.warn(message, UnityShaderWarning, stacklevel=2)
+    for message in shader.notes:
+        warnings.warn(message, UnityShaderNote, stacklevel=2)
     return shader

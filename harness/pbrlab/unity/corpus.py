@@ -79,7 +79,7 @@ def run_shader(shader: Path, language: str) -> Outcome:
             scene = parse_scene(scene_for(shader), origin="corpus scene", base=shader.parent)
             image = render_scene(scene, language=language).linear
         except PbrlabError as exc:
-            return Outcome(str(shader), language, "refused", str(exc).splitlines()[0][:400],
+            return Outcome(str(shader), language, "refused", str(exc)[:3000],
                            [str(w.message)[:300] for w in caught])
         except Exception as exc:  # a defect: the report names it
             tb = traceback.format_exception(type(exc), exc, exc.__traceback__)

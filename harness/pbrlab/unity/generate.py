@@ -211,6 +211,19 @@ def _defines(defines: dict) -> str:
     return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
 
 
+def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
+    """What comes before a Unity program in either stage: the harness's defines and scene
+    shading, Unity's generated-code names, the Cg intrinsics (GLSL) and the pbr/unity/ library."""
+    suffix = SUFFIX[language]
+    head = ["#version 330 core"] if language == "glsl" else []
+    stage = {"PBRLAB_UNITY_VERTEX_STAGE": 1, "PBR_UNITY_VERTEX_STAGE": 1} if vertex_stage else {}
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage}),
+             f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
+    head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
+    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    return head
+
+
 def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: str,
                     display: str, defines: dict) -> str:
     """The whole fragment program; ``program`` is the shader's text in ``language``

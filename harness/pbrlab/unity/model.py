@@ -69,7 +69,10 @@ class Pragma:
 class RenderState:
     cull: str = "back"              # back, front, off
     zwrite: bool | None = None      # None: the alpha mode decides
-    blend: str | None = None
+    blend: str | None = None        # the Blend line as written (a surface program's is warned)
+    blend_factors: tuple | None = None  # (src, dst[, src alpha, dst alpha]): ShaderLab factor names
+    ztest: str = "lequal"           # less, greater, lequal, gequal, equal, notequal, always
+    color_mask: str = "rgba"        # "0" draws depth only
 
 
 @dataclass
@@ -109,6 +112,8 @@ class SurfaceShader:
     language: str = "hlsl"          # the program's language: "hlsl" (Cg/HLSL, as in Unity) or
                                     # "glsl" (a port-unity port)
 
+    kind = "surface"
+
     def uv_members(self):
         """[(member, uv set index 1..4, texture name)] of the Input."""
         out = []
@@ -121,3 +126,59 @@ class SurfaceShader:
     def custom_members(self):
         filled = set(FILLED_INPUTS) | {m for m, _, _ in self.uv_members()}
         return [(t, n) for t, n in self.input_members if n not in filled]
+
+
+@dataclass
+class ShaderStruct:
+    """A struct of a vertex/fragment program: [(type, name, semantic or "")] in order."""
+    name: str
+    members: list
+
+
+@dataclass
+class VertexFragmentPass:
+    """A ``Pass { CGPROGRAM #pragma vertex v  #pragma fragment f ... ENDCG }``: Unity's
+    plain shader, drawn as written (``generate_pass.py``)."""
+    path: Path
+    name: str | None                # the Pass's Name
+    light_mode: str                 # its LightMode tag ("Always" when none)
+    program: str
+    program_line: int
+    vertex: str                     # function names
+    fragment: str
+    vertex_params: list             # [(qualifier, type, name, semantic)]
+    vertex_return: str              # its return type ("void" with out parameters)
+    vertex_return_semantic: str
+    fragment_params: list
+    fragment_return: str
+    fragment_return_semantic: str
+    structs: dict                   # name -> ShaderStruct (the program's own)
+    declared: frozenset = frozenset()
+    state: RenderState = field(default_factory=RenderState)
+    language: str = "hlsl"
+    properties: dict = field(default_factory=dict)       # the file's, shared by its passes
+    warnings: list = field(default_factory=list)
+    output_fields = {}              # (a surface program's output struct; none here)
+    kind = "vertex-fragment"
+
+
+@dataclass
+class UnityShader:
+    """A whole ``.shader`` file as Unity runs it: the Properties, and the passes of the first
+    SubShader the harness can run, in draw order (surface programs and vertex/fragment passes)."""
+    path: Path
+    name: str
+    passes: list                                         # [SurfaceShader | VertexFragmentPass]
+    properties: dict = field(default_factory=dict)
+    warnings: list = field(default_factory=list)
+    notes: list = field(default_factory=list)            # which SubShader ran, passes skipped
+
+    @property
+    def surface(self):
+        """The first surface program, or None."""
+        return next((p for p in self.passes if p.kind == "surface"), None)
+
+    @property
+    def moves_vertices(self) -> bool:
+        """Whether a sphere must be drawn as a mesh: a vertex: function or a vertex stage of its own."""
+        return any(p.kind == "vertex-fragment" or p.vertex is not None for p in self.passes)

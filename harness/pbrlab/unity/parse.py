@@ -12,11 +12,15 @@ function, an Input member nothing fills) is a ``UnityShaderError`` naming file a
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
 from ..errors import PbrlabError
 from . import model as M
+from . import shaderlab
+
+FLOAT32_MAX = 3.4028234663852886e38
 
 PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
 
@@ -67,92 +71,180 @@ def _matching_brace(text: str, open_index: int) -> int:
 # --- ShaderLab --------------------------------------------------------------------------
 
 _PROPERTY = re.compile(
-    r'^\s*(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + _IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
-    r'(?P<kind>Range\s*\(\s*(?P<lo>[-+.\deE]+)\s*,\s*(?P<hi>[-+.\deE]+)\s*\)|\w+)\s*\)\s*=\s*(?P<default>.+?)\s*$')
+    r'(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + _IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
+    r'(?P<kind>[Rr]ange\s*\(\s*(?P<lo>[^,()]*),\s*(?P<hi>[^,()]*)\)|\w+)\s*\)\s*=\s*'
+    r'(?P<default>\([^)]*\)|"[^"\n]*"\s*(?:\{[^}]*\})?|[^\s\[]+)')
+# ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
+PROPERTY_KINDS = {"float": "Float", "range": "Range", "int": "Int", "integer": "Int", "color": "Color",
+                  "vector": "Vector", "2d": "2D", "3d": "3D", "cube": "Cube", "2darray": "2DArray",
+                  "cubearray": "CubeArray", "any": "2D"}
+TEXTURE_DEFAULTS = ("white", "black", "gray", "grey", "bump", "red", "linearGrey", "")
 
 
 def _number(text: str, where: str) -> float:
     try:
-        return float(text)
+        value = float(text)
     except ValueError:
         raise UnityShaderError(f"{where}: expected a number, got {text!r}") from None
+    if not math.isfinite(value) or abs(value) > FLOAT32_MAX:
+        raise UnityShaderError(f"{where}: {text!r} is not a finite float32 number")
+    return value
 
 
-def _property(line: str, where: str) -> M.Property:
-    m = _PROPERTY.match(line)
-    if not m:
-        raise UnityShaderError(f"{where}: cannot read this Properties line: {line.strip()!r} "
-                               '(expected _Name ("Label", Type) = default)')
+def _property(m: re.Match, where: str, warnings: list) -> M.Property:
     attrs = tuple(a.strip() for a in re.findall(r"\[([^\]]*)\]", m.group("attrs")))
-    kind = m.group("kind")
+    kind_text = m.group("kind")
     rng = None
-    if kind.startswith("Range"):
-        rng = (_number(m.group("lo"), where), _number(m.group("hi"), where))
-        kind = "Range"
-    default_text = m.group("default")
-    kind = {"cube": "Cube", "2d": "2D", "3d": "3D"}.get(kind.lower(), kind)
-    if kind in ("Float", "Range", "Int", "Integer"):
+    if kind_text.lower().startswith("range"):
+        rng = (_number(m.group("lo").strip(), where), _number(m.group("hi").strip(), where))
+        if rng[0] > rng[1]:
+            raise UnityShaderError(f"{where}: {m.group('name')}: Range({m.group('lo').strip()}, "
+                                   f"{m.group('hi').strip()}) is empty (its minimum is above its maximum)")
+        kind_text = "range"
+    kind = PROPERTY_KINDS.get(kind_text.lower())
+    if kind is None:
+        raise UnityShaderError(f"{where}: property type {kind_text!r} is not one of Float, Range, Int, "
+                               "Color, Vector, 2D, 3D, Cube, 2DArray, CubeArray, Any")
+    default_text = m.group("default").strip()
+    name = m.group("name")
+    if kind in ("Float", "Range", "Int"):
         default = _number(default_text, where)
-        kind = "Int" if kind == "Integer" else kind
+        if rng is not None and not rng[0] <= default <= rng[1]:
+            raise UnityShaderError(f"{where}: {name}: default {default_text} lies outside its "
+                                   f"Range({rng[0]:g}, {rng[1]:g})")
     elif kind in ("Color", "Vector"):
         v = re.fullmatch(r"\(\s*([^)]*)\)", default_text)
         parts = [p for p in v.group(1).split(",")] if v else []
-        if len(parts) != 4:
-            raise UnityShaderError(f"{where}: {kind} default must be (x, y, z, w), got {default_text!r}")
-        default = tuple(_number(p.strip(), where) for p in parts)
-    elif kind in ("2D", "Cube", "3D"):
-        t = re.fullmatch(r'"(\w*)"\s*(\{\s*\})?', default_text)
-        if not t:
-            raise UnityShaderError(f'{where}: texture default must be "white", "black", "gray", '
-                                   f'"bump" or "red" (with optional {{}}), got {default_text!r}')
-        default = t.group(1) or "gray"
+        if len(parts) not in (3, 4) if kind == "Color" else len(parts) not in (2, 3, 4):
+            raise UnityShaderError(f"{where}: {name}: {kind} default must be (x, y, z, w)"
+                                   f"{' or (r, g, b)' if kind == 'Color' else ''}, got {default_text!r}")
+        values = [_number(p.strip(), where) for p in parts]
+        default = tuple(values + [1.0 if kind == "Color" else 0.0] * (4 - len(values)))
     else:
-        raise UnityShaderError(f"{where}: property type {kind!r} is not one of Float, Range, Int, "
-                               "Color, Vector, 2D, Cube, 3D")
-    return M.Property(m.group("name"), m.group("display"), kind, default, attrs, rng)
+        t = re.fullmatch(r'"(\w*)"\s*(\{[^}]*\})?', default_text)
+        if not t:
+            raise UnityShaderError(f'{where}: {name}: texture default must be a name in quotes '
+                                   f'("white", "black", "gray", "bump", "red", ""), got {default_text!r}')
+        default = t.group(1)
+        if kind == "Cube":
+            default = default or "gray"  # every Cube samples the scene's environment here
+        elif default not in TEXTURE_DEFAULTS:
+            warnings.append(f'{where}: {name}: default texture "{default}" is none of Unity\'s built-in '
+                            'defaults (white, black, gray, bump, red); Unity shows gray, and so does pbrlab')
+            default = "gray"
+        default = {"": "gray", "linearGrey": "gray"}.get(default, default)
+    return M.Property(name, m.group("display"), kind, default, attrs, rng)
 
 
-def _properties(masked: str, text: str, path: Path) -> dict:
-    m = re.search(r"\bProperties\s*\{", masked)
-    if not m:
-        return {}
-    end = _matching_brace(masked, m.end() - 1)
-    props = {}
-    for offset, line in enumerate(text[m.end():end].split("\n")):
-        clean = _blank_comments(line).strip()
-        if not clean:
-            continue
-        where = f"{path}:{_line_of(text, m.end()) + offset}"
-        prop = _property(clean, where)
+def _properties_in(text: str, first_line: int, path: Path, warnings: list) -> dict:
+    """Properties of the text inside ``Properties { ... }`` (comments blanked): several per
+    line, attributes anywhere before a name, as ShaderLab reads them."""
+    props, pos = {}, 0
+    for m in _PROPERTY.finditer(text):
+        gap = text[pos:m.start()]
+        where = f"{path}:{first_line - 1 + _line_of(text, m.start() + len(m.group(0)) - len(m.group(0).lstrip()))}"
+        if gap.strip():
+            raise UnityShaderError(f"{path}:{first_line - 1 + _line_of(text, pos + len(gap) - len(gap.lstrip()))}: "
+                                   f"cannot read this Properties text: {gap.strip()[:60]!r} "
+                                   '(expected _Name ("Label", Type) = default)')
+        where = f"{path}:{first_line - 1 + _line_of(text, m.start('name'))}"
+        prop = _property(m, where, warnings)
         props[prop.name] = prop
+        pos = m.end()
+    rest = text[pos:]
+    if rest.strip():
+        raise UnityShaderError(f"{path}:{first_line - 1 + _line_of(text, pos + len(rest) - len(rest.lstrip()))}: "
+                               f"cannot read this Properties text: {rest.strip()[:60]!r} "
+                               '(expected _Name ("Label", Type) = default)')
     return props
 
 
-def _pass_state(masked: str, program_span, path: Path, shader: M.SurfaceShader) -> None:
-    outside = masked[:program_span[0]] + " " * (program_span[1] - program_span[0]) + masked[program_span[1]:]
-    props = re.search(r"\bProperties\s*\{", outside)
-    if props:
-        end = _matching_brace(outside, props.end() - 1)
-        outside = outside[:props.start()] + " " * (end + 1 - props.start()) + outside[end + 1:]
-    for m in re.finditer(r"^\s*(\w+)\b([^\n{]*)", outside, re.M):
-        word, rest = m.group(1), m.group(2).strip()
-        where = f"{path}:{_line_of(masked, m.start(1))}"
-        if word == "Cull":
-            value = rest.lower()
+# UnityEngine.Rendering enums, for state read from a property (``Cull [_Cull]``): the
+# property's value is the enum's index (Unity's scripting reference: CullMode, BlendMode,
+# CompareFunction).
+_CULL_ENUM = ("off", "front", "back")
+BLEND_FACTORS = ("Zero", "One", "DstColor", "SrcColor", "OneMinusDstColor", "SrcAlpha",
+                 "OneMinusSrcColor", "DstAlpha", "OneMinusDstAlpha", "SrcAlphaSaturate", "OneMinusSrcAlpha")
+_ZTEST_ENUM = ("always", "never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always")
+ZTESTS = {"less": "less", "greater": "greater", "lequal": "lequal", "gequal": "gequal", "equal": "equal",
+          "notequal": "notequal", "always": "always", "never": "never", "off": "always"}
+
+
+def _state_words(args: str, props: dict, where: str, enum=None) -> list[str]:
+    """The words of a state command, a ``[_Property]`` replaced by its default (through
+    ``enum`` where the property holds an enum index)."""
+    out = []
+    for word in re.findall(r"\[\s*\w+\s*\]|[^\s,]+", args):
+        if word.startswith("["):
+            name = word.strip("[] ")
+            prop = props.get(name)
+            if prop is None:  # a global the engine sets (unity_GUIZTestMode): its default stands
+                return None
+            if prop.is_texture or isinstance(prop.default, tuple):
+                raise UnityShaderError(f"{where}: {word} names no Float/Int/Range property")
+            value = int(prop.default)
+            if enum is not None:
+                if not 0 <= value < len(enum):
+                    raise UnityShaderError(f"{where}: {word} = {value} is outside the enum's 0..{len(enum) - 1}")
+                word = enum[value]
+            else:
+                word = str(value)
+        out.append(word)
+    return out
+
+
+def apply_state(commands, state: M.RenderState, props: dict, path: Path, warnings: list,
+                surface: bool) -> None:
+    """ShaderLab render state (a SubShader's, then a Pass's) onto ``state``."""
+    for c in commands:
+        where = f"{path}:{c.line}"
+        word = c.word.lower()
+        if "[" in c.args and _state_words(c.args, props, where) is None:
+            warnings.append(f"{where}: {c.word} {c.args}: set by the engine at run time, not by a "
+                            "property; the default state stands")
+            continue
+        if word == "cull":
+            value = " ".join(_state_words(c.args, props, where, _CULL_ENUM)).lower()
             if value not in ("back", "front", "off"):
-                raise UnityShaderError(f"{where}: Cull {rest}: expected Back, Front or Off")
-            shader.state.cull = value
-        elif word == "ZWrite":
-            if rest.lower() not in ("on", "off"):
-                raise UnityShaderError(f"{where}: ZWrite {rest}: expected On or Off")
-            shader.state.zwrite = rest.lower() == "on"
-        elif word == "Blend":
-            shader.state.blend = rest
-            shader.warnings.append(
-                f"{where}: Blend {rest}: a surface shader's blending comes from its #pragma "
-                "surface alpha option here (alpha, alpha:fade, alpha:premul); this line is not applied")
-        elif word in PASS_STATE_IGNORED:
-            shader.warnings.append(f"{where}: {word} {rest}: not supported by the harness, ignored")
+                raise UnityShaderError(f"{where}: Cull {c.args}: expected Back, Front or Off")
+            state.cull = value
+        elif word == "zwrite":
+            value = " ".join(_state_words(c.args, props, where, ("off", "on"))).lower()
+            if value not in ("on", "off"):
+                raise UnityShaderError(f"{where}: ZWrite {c.args}: expected On or Off")
+            state.zwrite = value == "on"
+        elif word == "ztest":
+            value = " ".join(_state_words(c.args, props, where, _ZTEST_ENUM)).lower()
+            if value not in ZTESTS:
+                raise UnityShaderError(f"{where}: ZTest {c.args}: expected one of Less, Greater, LEqual, "
+                                       "GEqual, Equal, NotEqual, Always")
+            state.ztest = ZTESTS[value]
+        elif word == "blend":
+            words = _state_words(c.args, props, where, BLEND_FACTORS)
+            state.blend = c.args
+            if surface:
+                warnings.append(f"{where}: Blend {c.args}: a surface shader's blending comes from its #pragma "
+                                "surface alpha option here (alpha, alpha:fade, alpha:premul); this line is not applied")
+                continue
+            if len(words) == 1 and words[0].lower() == "off":
+                state.blend_factors = None
+                continue
+            if len(words) and words[0].isdigit():  # Blend 0 SrcAlpha One: a render target's
+                words = words[1:]
+            known = {f.lower(): f for f in BLEND_FACTORS}
+            if len(words) not in (2, 4) or any(w.lower() not in known for w in words):
+                raise UnityShaderError(f"{where}: Blend {c.args}: expected Off or two (or four) of "
+                                       f"{', '.join(BLEND_FACTORS)}")
+            state.blend_factors = tuple(known[w.lower()] for w in words)
+        elif word == "colormask":
+            state.color_mask = " ".join(_state_words(c.args, props, where)).lower()
+        elif word in ("lod", "name", "tags"):
+            continue
+        elif c.word in PASS_STATE_IGNORED or word in ("offset", "stencil", "alphatomask", "blendop",
+                                                      "fog", "conservative", "zclip"):
+            warnings.append(f"{where}: {c.word} {c.args}: not supported by the harness, ignored")
+        else:
+            warnings.append(f"{where}: {c.word} {c.args}: not a ShaderLab command pbrlab knows, ignored")
 
 
 # --- CGPROGRAM ---------------------------------------------------------------------------
@@ -286,9 +378,11 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                   name: str | None = None) -> M.SurfaceShader:
     """The model of a CGPROGRAM text (``first_line``: where it starts in ``path``)."""
     masked = _blank_comments(program)
+    # what the program includes may define its parts (struct Input, vertex: functions, ...)
+    everything = masked + "\n" + included_text(program, path.parent)
 
-    def where(index: int) -> str:
-        return f"{path}:{first_line - 1 + _line_of(program, index)}"
+    def where(index: int) -> str:  # an index past the program's text lies in an include
+        return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"
 
     pragma, pragma_at = _pragma(masked, where)
     if shader is None:
@@ -299,7 +393,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
         shader.warnings.append(f"{where(pragma_at)}: #pragma surface option {option!r} is not supported "
                                "by pbrlab and has no effect")
     # The surface function and the output struct it fills.
-    found = _function(masked, pragma.function)
+    found = _function(everything, pragma.function)
     if found is None:
         raise UnityShaderError(f"{where(0)}: #pragma surface names {pragma.function!r}, but no "
                                f"function {pragma.function}(Input IN, inout SurfaceOutput... o) is defined")
@@ -311,7 +405,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     shader.output_type = params[1][1]
     out_name = params[1][2]
     shader.writes_normal = re.search(r"\b" + re.escape(out_name) + r"\.Normal\s*[-+*/]?=(?!=)", body) is not None
-    shader.lighting = _lighting(masked, pragma.model, where)
+    shader.lighting = _lighting(everything, pragma.model, where)
     if shader.lighting.output_type != shader.output_type:
         raise UnityShaderError(
             f"{where(m.start())}: {pragma.function} fills {shader.output_type}, but lighting model "
@@ -319,12 +413,12 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     if shader.output_type in M.OUTPUT_FIELDS:
         shader.output_fields = dict(M.OUTPUT_FIELDS[shader.output_type])
     else:
-        sm, sbody = _struct_fields(masked, shader.output_type)
+        sm, sbody = _struct_fields(everything, shader.output_type)
         if sm is None:
             raise UnityShaderError(f"{where(m.start())}: output struct {shader.output_type} is not defined")
         shader.output_fields = {n: _component_count(t) for t, n in _members(sbody)}
     # struct Input.
-    im, ibody = _struct_fields(masked, "Input")
+    im, ibody = _struct_fields(everything, "Input")
     if im is None:
         raise UnityShaderError(f"{where(0)}: no struct Input {{ ... }} (Unity requires one, even if empty "
                                "but for one member)")
@@ -333,7 +427,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     shader.input_members = [(t, n) for t, n in members if t != "INTERNAL_DATA"]
     # vertex: and finalcolor: functions.
     if pragma.vertex:
-        found = _function(masked, pragma.vertex)
+        found = _function(everything, pragma.vertex)
         vp = _params(found[0].group(2)) if found else None
         if not vp or vp[0][0] != "inout" or (len(vp) == 2 and (vp[1][0], vp[1][1]) != ("out", "Input")) or len(vp) > 2:
             raise UnityShaderError(f"{where(found[0].start() if found else 0)}: vertex:{pragma.vertex} needs "
@@ -344,7 +438,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
             written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)\s*[-+*/]?=(?!=)", found[1]))))
         shader.vertex = M.VertexFunction(pragma.vertex, vp[0][1], written, vp[1][2] if len(vp) == 2 else None)
     if pragma.finalcolor:
-        found = _function(masked, pragma.finalcolor)
+        found = _function(everything, pragma.finalcolor)
         fp = _params(found[0].group(2)) if found else None
         if not fp or len(fp) != 3 or fp[0][1] != "Input" or fp[2][0] != "inout":
             raise UnityShaderError(f"{where(found[0].start() if found else 0)}: finalcolor:{pragma.finalcolor} "
@@ -359,7 +453,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                 f"uv2_<Texture>, {', '.join(M.FILLED_INPUTS)}, INTERNAL_DATA) and no vertex: "
                 "function writes it")
     shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
-                                           r")\s*(?:=[^;]*)?;", _top_level(masked), re.M))
+                                           r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
     return shader
 
 
@@ -377,54 +471,227 @@ def _top_level(masked: str) -> str:
     return "".join(out)
 
 
-def _implicit_texture_properties(shader: M.SurfaceShader) -> None:
+def _implicit_texture_properties(program: str, properties: dict) -> None:
     """A sampler the program declares without a Properties line still gets a texture, as in
     Unity (its default, white here; a samplerCUBE the environment) and _ST (1, 1, 0, 0)."""
-    masked = _top_level(_blank_comments(shader.program))
+    masked = _top_level(_blank_comments(program))
     for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + _IDENT + r")\s*;", masked):
-        if name not in shader.properties:
-            shader.properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
-                                                 ("implicit",))
+        if name not in properties:
+            properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
+                                          ("implicit",))
+
+
+_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+
+
+def included_text(program: str, folder: Path, seen=None) -> str:
+    """The text of the files ``program`` includes (recursively; the shader's folder first, then
+    pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
+    struct Input, a vertex: or Lighting<Name> function defined in an include."""
+    from .program import CGINC
+    seen = set() if seen is None else seen
+    out = []
+    for name in _INCLUDE.findall(_blank_comments(program)):
+        for candidate in (folder / name, CGINC / Path(name).name):
+            if candidate.is_file():
+                key = candidate.resolve()
+                if key in seen:
+                    break
+                seen.add(key)
+                try:
+                    text = candidate.read_text(encoding="utf-8").removeprefix("\ufeff")
+                except (OSError, UnicodeDecodeError):
+                    break
+                out.append(_blank_comments(text))
+                out.append(included_text(text, candidate.parent, seen))
+                break
+    return "\n".join(out)
 
 
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
-    shader = _parse_text(text, path)
-    _implicit_texture_properties(shader)
-    return shader
+    """The surface program of a shader's text (the first one, where a file has several)."""
+    shader = read_text(text, path)
+    if shader.surface is None:
+        raise UnityShaderError(f"{path}: no surface program (#pragma surface) in the SubShader that runs")
+    return shader.surface
 
 
-def _parse_text(text: str, path: Path) -> M.SurfaceShader:
+# LightMode tags of passes the harness skips, with the reason said once per pass.
+SKIPPED_LIGHT_MODES = {
+    "shadowcaster": "no shadow maps here", "shadowcollector": "no shadow maps here",
+    "meta": "no lightmap baking here", "deferred": "forward rendering only",
+    "prepassbase": "forward rendering only", "prepassfinal": "forward rendering only",
+    "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
+    "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
+    "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
+    "forwardadd": "additional lights of vertex/fragment passes are not drawn: the main light and ambient only",
+}
+DRAWN_LIGHT_MODES = ("always", "forwardbase", "srpdefaultunlit", "")
+
+
+def read_text(text: str, path: Path) -> M.UnityShader:
+    """A whole shader: a ShaderLab file, bare CGPROGRAM text, or a port-unity port."""
+    text = text.removeprefix("\ufeff")
     masked = _blank_comments(text)
-    starts = [m for m in re.finditer(r"\b(CGPROGRAM|HLSLPROGRAM|GLSLPROGRAM)\b", masked)]
-    if not starts:  # bare CGPROGRAM text, or a port-unity port (its //@ lines: Properties, state)
+    if not re.search(r"^\s*Shader\s*\"", masked, re.M):
         shader = parse_program(text, path, 1)
         if text.startswith(PORT_MARKER):
             shader.language = "glsl"
             for number, line in enumerate(text.splitlines(), start=1):
                 where = f"{path}:{number}"
                 if line.startswith("//@property "):
-                    prop = _property(line[len("//@property "):], where)
-                    shader.properties[prop.name] = prop
+                    shader.properties.update(_properties_in(line[len("//@property "):], number, path,
+                                                            shader.warnings))
                 elif line.startswith("//@state "):
-                    state = " " * len("//@state ") + line[len("//@state "):]
-                    _pass_state(state, (0, 0), path, shader)
-        return shader
-    if starts[0].group(1) != "CGPROGRAM":
-        raise UnityShaderError(f"{path}:{_line_of(text, starts[0].start())}: {starts[0].group(1)} is not "
-                               "supported: write the surface shader in a CGPROGRAM block")
-    if len(starts) > 1:
-        raise UnityShaderError(f"{path}:{_line_of(text, starts[1].start())}: a second program block: one "
-                               "SubShader with one CGPROGRAM is supported")
-    start = starts[0].end()
-    end_m = re.compile(r"\bENDCG\b").search(masked, start)
-    if end_m is None:
-        raise UnityShaderError(f"{path}:{_line_of(text, starts[0].start())}: CGPROGRAM without ENDCG")
-    name_m = re.search(r'\bShader\s+"([^"]*)"', masked[:starts[0].start()]) or re.search(r'\bShader\s+"([^"]*)"', text)
-    program = text[start:end_m.start()]
-    shader = parse_program(program, path, _line_of(text, start), name=name_m.group(1) if name_m else path.stem)
-    shader.properties = _properties(masked, text, path)
-    _pass_state(masked, (starts[0].start(), end_m.end()), path, shader)
+                    word, _, args = line[len("//@state "):].partition(" ")
+                    apply_state([shaderlab.StateCommand(word, args, number)], shader.state,
+                                shader.properties, path, shader.warnings, surface=True)
+        _implicit_texture_properties(shader.program, shader.properties)
+        return M.UnityShader(path, shader.name, [shader], shader.properties, shader.warnings)
+    try:
+        layout = shaderlab.read_layout(text, path)
+    except shaderlab.ShaderLabError as exc:
+        raise UnityShaderError(str(exc)) from None
+    warnings: list = []
+    props = {}
+    if layout.properties_span:
+        a, b = layout.properties_span
+        props = _properties_in(masked[a:b], _line_of(text, a), path, warnings)
+    reasons = []
+    for index, sub in enumerate(layout.subshaders):
+        notes: list = []
+        try:
+            passes = _subshader_passes(layout, sub, props, warnings, notes)
+        except UnityShaderError as exc:
+            reasons.append(f"SubShader {index + 1} (line {sub.line}): {exc}")
+            continue
+        if len(layout.subshaders) > 1:
+            notes.insert(0, f"{path}:{sub.line}: SubShader {index + 1} of {len(layout.subshaders)} runs"
+                         + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
+        for p in passes:
+            _implicit_texture_properties(p.program, props)
+            p.properties = props
+        return M.UnityShader(path, layout.name, passes, props, warnings, notes)
+    return _fallback(layout, reasons, path)
+
+
+def _fallback(layout, reasons: list, path: Path) -> M.UnityShader:
+    why = "; ".join(reasons) if reasons else "it has no SubShader"
+    if layout.fallback in (None, "off"):
+        if len(reasons) == 1:
+            raise UnityShaderError(reasons[0].split(": ", 1)[1])
+        raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
+    found = find_shader(layout.fallback, path)
+    if found is None:
+        raise UnityShaderError(
+            f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
+            f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
+            "shader's folder (or below it), or name it in $PBRLAB_UNITY_SHADERS")
+    shader = read_shader(found)
+    shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
+                        f'"{layout.fallback}" ({found}) is drawn instead')
     return shader
+
+
+def find_shader(name: str, near: Path):
+    """The ``.shader`` file whose ``Shader "name"`` is ``name`` (or ``Legacy Shaders/name``,
+    Unity's old built-in names), in the folder of ``near`` and below, then the folders of
+    $PBRLAB_UNITY_SHADERS."""
+    import os
+    wanted = {name, f"Legacy Shaders/{name}"}
+    roots = [near.parent] + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p]
+    for root in roots:
+        for candidate in sorted(root.rglob("*.shader")):
+            try:
+                head = candidate.read_text(encoding="utf-8", errors="replace")[:4000]
+            except OSError:
+                continue
+            m = re.search(r'\bShader\s*"([^"]*)"', _blank_comments(head))
+            if m and m.group(1) in wanted and candidate.resolve() != near.resolve():
+                return candidate
+    return None
+
+
+def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> list:
+    from .parse_pass import parse_pass
+    path = layout.path
+    passes = []
+    for item in sub.items:
+        kind = item[0]
+        if kind == "program":
+            block = item[1]
+            if block.language != "CG":
+                raise UnityShaderError(f"{path}:{block.line}: {block.keyword} is not supported: pbrlab runs "
+                                       "CGPROGRAM blocks (Unity's built-in render pipeline)")
+            program, first = layout.program_text(block, sub)
+            shader = parse_program(program, path, first, name=layout.name)
+            state = M.RenderState()
+            apply_state(sub.state, state, props, path, shader.warnings, surface=True)
+            shader.state = state
+            warnings.extend(shader.warnings)
+            shader.warnings = warnings
+            passes.append(shader)
+        elif kind == "pass":
+            p = item[1]
+            mode = p.tags.get("LightMode", "")
+            if mode.lower() in SKIPPED_LIGHT_MODES:
+                notes.append(f"{path}:{p.line}: Pass{' ' + repr(p.name) if p.name else ''} (LightMode {mode}) "
+                             f"skipped: {SKIPPED_LIGHT_MODES[mode.lower()]}")
+                continue
+            if mode.lower() not in DRAWN_LIGHT_MODES:
+                notes.append(f"{path}:{p.line}: Pass (LightMode {mode}) skipped: not a forward pass")
+                continue
+            if p.fixed_function:
+                word, line = p.fixed_function[0]
+                raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
+                                       "programmable passes only")
+            if p.program is None:
+                state = M.RenderState()
+                apply_state(sub.state + p.state, state, props, path, [], surface=False)
+                if state.color_mask == "0":
+                    notes.append(f"{path}:{p.line}: a depth-only Pass (ColorMask 0) skipped")
+                    continue
+                raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
+                                       "fixed-function default, which pbrlab does not have")
+            if p.program.language != "CG":
+                raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
+                                       "pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)")
+            program, first = layout.program_text(p.program, sub)
+            vf = parse_pass(program, path, first, p)
+            apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+            passes.append(vf)
+        elif kind == "usepass":
+            _, name, line = item
+            passes.extend(_use_pass(name, line, path))
+        elif kind == "grabpass":
+            _, name, line = item
+            raise UnityShaderError(f"{path}:{line}: GrabPass (the screen behind as {name}) is not "
+                                   "supported: pbrlab has no grab texture")
+    if not passes:
+        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped)")
+    return passes
+
+
+def _use_pass(name: str, line: int, path: Path) -> list:
+    shader_name, _, pass_name = name.rpartition("/")
+    found = find_shader(shader_name, path) if shader_name else None
+    if found is None:
+        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
+                               ".shader file in this shader's folder or name it in $PBRLAB_UNITY_SHADERS)")
+    other = read_shader(found)
+    chosen = [p for p in other.passes if p.kind == "vertex-fragment" and (p.name or "").upper() == pass_name.upper()]
+    if not chosen:
+        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {found} has no pass named {pass_name!r} '
+                               "in the SubShader that runs (a surface program's passes cannot be used)")
+    return chosen
+
+
+def read_shader(path: Path) -> M.UnityShader:
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UnityShaderError(f"{path}: cannot read: {exc}") from None
+    return read_text(text, Path(path))
 
 
 def is_unity_surface(path: Path) -> bool:
@@ -439,8 +706,8 @@ def is_unity_surface(path: Path) -> bool:
 
 
 def parse_file(path: Path) -> M.SurfaceShader:
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise UnityShaderError(f"{path}: cannot read: {exc}") from None
-    return parse_text(text, Path(path))
+    """The surface program of a shader file (``read_shader`` gives every pass)."""
+    shader = read_shader(path)
+    if shader.surface is None:
+        raise UnityShaderError(f"{path}: no surface program (#pragma surface) in the SubShader that runs")
+    return shader.surface

@@ -116,6 +116,7 @@ def port_code_types(code: str) -> str:
 def port_code(code: str, shader: M.SurfaceShader) -> str:
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
+    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=\{)", r")\1\2", code)  # a function's return semantic
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)

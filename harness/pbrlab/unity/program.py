@@ -78,6 +78,19 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
     return shaders.expand(text, display, include_dirs=dirs)
 
 
+def remember_program(key, build):
+    """The program cached under ``key``, else ``build()``'s, with its struct members indexed
+    (``bind`` sets an HLSL stage's globals through them)."""
+    if key not in _PROGRAMS:
+        program = build()
+        members: dict = {}
+        for gl_name in (n for n in program if "." in n):
+            members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
+        program.extra = {"members": members}
+        _PROGRAMS[key] = program
+    return _PROGRAMS[key]
+
+
 def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, defines: dict):
     """The program of ``shader`` for a sphere or mesh draw; with a vertex: function always
     the mesh one (spheres are tessellated: tessellate.py)."""

@@ -1,0 +1,276 @@
+"""Write the two stages that run a vertex/fragment pass (``model.VertexFragmentPass``) in
+the harness, in HLSL (the program as written) or GLSL (its ``port-unity`` port).
+
+    vertex_text = stage_source(vf, "hlsl", "vertex", program_text, display, defines)
+
+Each stage is the Unity prelude (``generate.prelude``), a ``#line`` to the shader file, the
+program, then an entry point of this module's: the vertex entry builds the vertex function's
+input from the mesh's attributes by Unity's semantics (POSITION, NORMAL, TANGENT, TEXCOORD0/1,
+COLOR; what a mesh here lacks is 0, and w of POSITION 1), calls it and passes its outputs on
+by semantic; the fragment entry rebuilds the fragment function's input from them (SV_POSITION
+and VPOS the fragment's window position, VFACE / SV_IsFrontFace its facing) and writes what it
+returns to the float target. Outputs are linked to inputs by semantic, as in Unity. The main
+light (ForwardBase: the first directional light; none: black) is in ``_LightColor0`` and
+``_WorldSpaceLightPos0`` in both stages.
+"""
+
+from __future__ import annotations
+
+import re
+
+from . import model as M
+from .parse import UnityShaderError, _component_count
+
+# Unity's vertex structs of UnityCG.cginc, by member and semantic (the harness's
+# unity_surface.inc declares appdata_full; UnityCG's others are subsets of it here).
+UNITY_STRUCTS = {
+    "appdata_full": [("float4", "vertex", "POSITION"), ("float4", "tangent", "TANGENT"),
+                     ("float3", "normal", "NORMAL"), ("float4", "texcoord", "TEXCOORD0"),
+                     ("float4", "texcoord1", "TEXCOORD1"), ("float4", "texcoord2", "TEXCOORD2"),
+                     ("float4", "texcoord3", "TEXCOORD3"), ("float4", "color", "COLOR")],
+}
+UNITY_STRUCTS["appdata_base"] = UNITY_STRUCTS["appdata_full"]
+UNITY_STRUCTS["appdata_tan"] = UNITY_STRUCTS["appdata_full"]
+# Mesh attributes by semantic: (expression in both languages, components, pad for w).
+_ATTRIBUTES = {
+    "POSITION": ("in_position", 3, 1.0), "SV_POSITION": ("in_position", 3, 1.0),
+    "NORMAL": ("in_normal", 3, 0.0), "TANGENT": ("in_tangent", 4, 0.0),
+    "TEXCOORD0": ("in_uv", 2, 0.0), "TEXCOORD1": ("in_uv1", 2, 0.0), "COLOR0": ("in_color", 4, 0.0),
+}
+_POSITION = ("SV_POSITION", "POSITION")
+
+
+def canonical(semantic: str) -> str:
+    """TEXCOORD -> TEXCOORD0, COLOR -> COLOR0, upper case (Unity's semantics are)."""
+    s = semantic.upper()
+    if s in ("TEXCOORD", "COLOR", "SV_TARGET"):
+        return s + "0"
+    return s
+
+
+def _vec(n: int, language: str) -> str:
+    if n == 1:
+        return "float"
+    return f"float{n}" if language == "hlsl" else f"vec{n}"
+
+
+def fit(expr: str, have: int, want: int, language: str, w: float = 0.0) -> str:
+    """``expr`` of ``have`` components as ``want`` components: truncated, or padded with 0
+    (the last with ``w``: Unity's vertex fetch gives (x, y, 0, 1) for a 2-component UV)."""
+    if have == want:
+        return expr
+    if want < have:
+        return f"({expr}).{'xyzw'[:want]}"
+    pads = ["0.0"] * (want - have)
+    if want == 4:
+        pads[-1] = f"{w:.1f}"
+    return f"{_vec(want, language)}({expr}, {', '.join(pads)})"
+
+
+def _struct(vf: M.VertexFragmentPass, name: str):
+    if name in vf.structs:
+        return vf.structs[name].members
+    return UNITY_STRUCTS.get(name)
+
+
+def _size(kind: str, where: str) -> int:
+    n = _component_count(kind)
+    if not n:
+        raise UnityShaderError(f"{where}: {kind} cannot pass between the stages here (scalars and "
+                               "vectors only)")
+    return n
+
+
+def _zero(kind: str, language: str) -> str:
+    n = _component_count(kind)
+    if n == 1:
+        return "0" if kind.startswith(("int", "uint")) else "0.0"
+    if n:
+        return f"{_vec(n, language)}(0.0)" if language == "glsl" else f"({kind})0"
+    return None
+
+
+def _type(kind: str, language: str) -> str:
+    from .port import port_code_types
+    return kind if language == "hlsl" else port_code_types(kind)
+
+
+def _declare(kind: str, name: str, language: str) -> list[str]:
+    """A local of ``kind``, zeroed."""
+    if language == "hlsl":
+        return [f"    {kind} {name} = ({kind})0;"]
+    return [f"    {_type(kind, language)} {name};"]  # _fill_struct writes every member
+
+
+def _fill_struct(vf, kind: str, var: str, language: str, value_of) -> list[str]:
+    """Assignments of every member of struct ``kind`` in ``var`` from ``value_of(semantic, n)``."""
+    members = _struct(vf, kind)
+    out = []
+    for mtype, mname, semantic in members:
+        n = _component_count(mtype)
+        value = value_of(canonical(semantic), n, mtype) if semantic else None
+        if value is None:
+            value = _zero(mtype, language)
+        if value is not None:
+            out.append(f"    {var}.{mname} = {value};")
+    return out
+
+
+def _attribute(semantic: str, n: int, language: str):
+    if semantic in _ATTRIBUTES:
+        expr, have, w = _ATTRIBUTES[semantic]
+        return fit(expr, have, n, language, w)
+    return None  # TEXCOORD2..7 and others: no such attribute on meshes here: 0
+
+
+def _outputs(vf, where: str) -> list[tuple]:
+    """[(semantic, type, access)] the vertex stage passes on: members of its output struct,
+    out parameters with semantics, or its return value."""
+    out = []
+    if vf.vertex_return != "void":
+        if _struct(vf, vf.vertex_return) is not None:
+            out += [(canonical(s), t, f"pbrlab_out.{n}") for t, n, s in _struct(vf, vf.vertex_return) if s]
+        elif vf.vertex_return_semantic:
+            out.append((canonical(vf.vertex_return_semantic), vf.vertex_return, "pbrlab_out"))
+        else:
+            raise UnityShaderError(f"{where}: {vf.vertex}() returns {vf.vertex_return} without a semantic")
+    for qual, kind, name, semantic in vf.vertex_params:
+        if qual == "in":
+            continue
+        if _struct(vf, kind) is not None:
+            out += [(canonical(s), t, f"{name}.{n}") for t, n, s in _struct(vf, kind) if s]
+        elif semantic:
+            out.append((canonical(semantic), kind, name))
+    if not any(s in _POSITION for s, _, _ in out):
+        raise UnityShaderError(f"{where}: {vf.vertex}() writes no SV_POSITION: the vertex stage must "
+                               "give the clip-space position")
+    return out
+
+
+def _main_light(language: str) -> str:
+    return """    #if PBRLAB_DIRECTIONAL_COUNT > 0
+    _LightColor0 = vec4(u_directional_radiance[0], 1.0);
+    _WorldSpaceLightPos0 = vec4(-u_directional_direction[0], 0.0);
+    #else
+    _LightColor0 = vec4(0.0, 0.0, 0.0, 0.0);
+    _WorldSpaceLightPos0 = vec4(0.0, 0.0, 1.0, 0.0);
+    #endif
+""".replace("vec4", "float4" if language == "hlsl" else "vec4")
+
+
+def varyings(vf, where: str) -> list[tuple]:
+    """[(semantic, type)] passed from the vertex to the fragment stage (not the position)."""
+    return [(s, t) for s, t, _ in _outputs(vf, where) if s not in _POSITION]
+
+
+def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
+    outs = _outputs(vf, where)
+    body = [_main_light(language)]
+    args = []
+    for qual, kind, name, semantic in vf.vertex_params:
+        local = f"pbrlab_arg_{name}"
+        if _struct(vf, kind) is not None:
+            body += _declare(kind, local, language)
+            if qual != "out":
+                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language))
+        else:
+            n = _size(kind, where)
+            body.append(f"    {_type(kind, language)} {local} = "
+                        f"{(_attribute(canonical(semantic), n, language) if qual != 'out' else None) or _zero(kind, language)};")
+        args.append(local)
+    call = f"{vf.vertex}({', '.join(args)})"
+    if vf.vertex_return != "void":
+        body.append(f"    {_type(vf.vertex_return, language)} pbrlab_out = {call};")
+    else:
+        body.append(f"    {call};")
+    access = {}
+    for semantic, kind, expr in outs:
+        expr = re.sub(r"^(\w+)\.", lambda m: f"pbrlab_arg_{m.group(1)}." if m.group(1) != "pbrlab_out" else m.group(0), expr)
+        if "." not in expr and expr != "pbrlab_out":
+            expr = f"pbrlab_arg_{expr}"
+        access[semantic] = (kind, expr)
+    pos_kind, pos_expr = next(access[s] for s in _POSITION if s in access)
+    position = fit(pos_expr, _size(pos_kind, where), 4, language, 1.0)
+    lines = []
+    if language == "hlsl":
+        params = ["float3 in_position : POSITION", "float3 in_normal : NORMAL", "float2 in_uv : TEXCOORD0",
+                  "float4 in_tangent : TANGENT", "float2 in_uv1 : TEXCOORD1", "float4 in_color : COLOR0",
+                  "out float4 pbrlab_clip : SV_Position"]
+        params += [f"out {kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
+        lines.append("void main(" + ", ".join(params) + ") {")
+        body.append(f"    pbrlab_clip = {position};")
+    else:
+        lines += ["in vec3 in_position;", "in vec3 in_normal;", "in vec2 in_uv;", "in vec4 in_tangent;",
+                  "in vec2 in_uv1;", "in vec4 in_color;"]
+        lines += [f"{_flat(kind)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines.append("void main() {")
+        body.append(f"    gl_Position = {position};")
+    for s, kind in varyings(vf, where):
+        body.append(f"    pbrlab_vary_{s} = {access[s][1]};")
+    return "\n".join(lines + body + ["}"]) + "\n"
+
+
+def _flat(kind: str) -> str:
+    return "flat " if kind.startswith(("int", "uint", "bool")) else ""
+
+
+def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended: bool) -> str:
+    have = {s: t for s, t in varyings(vf, where)}
+
+    def value(semantic: str, n: int, kind: str):
+        if semantic in _POSITION or semantic == "VPOS":
+            return fit("pbrlab_frag_position", 4, n, language)
+        if semantic in ("VFACE", "SV_ISFRONTFACE"):
+            return "pbrlab_front_facing" if kind.startswith("bool") else "(pbrlab_front_facing ? 1.0 : -1.0)"
+        if semantic in have:
+            return fit(f"pbrlab_vary_{semantic}", _size(have[semantic], where), n, language)
+        return None
+
+    body = [_main_light(language)]
+    args = []
+    for qual, kind, name, semantic in vf.fragment_params:
+        local = f"pbrlab_arg_{name}"
+        if _struct(vf, kind) is not None:
+            body += _declare(kind, local, language)
+            body += _fill_struct(vf, kind, local, language, value)
+        elif qual == "out":
+            body.append(f"    {_type(kind, language)} {local};")
+        else:
+            body.append(f"    {_type(kind, language)} {local} = "
+                        f"{value(canonical(semantic), _component_count(kind) or 4, kind) or _zero(kind, language)};")
+        args.append(local)
+    call = f"{vf.fragment}({', '.join(args)})"
+    colour = None
+    if vf.fragment_return != "void":
+        if _struct(vf, vf.fragment_return) is not None:
+            body.append(f"    {_type(vf.fragment_return, language)} pbrlab_result = {call};")
+            target = [(t, n) for t, n, s in _struct(vf, vf.fragment_return) if canonical(s) in ("SV_TARGET0", "COLOR0")]
+            if target:
+                colour = (f"pbrlab_result.{target[0][1]}", _size(target[0][0], where))
+        else:
+            body.append(f"    {_type(vf.fragment_return, language)} pbrlab_result = {call};")
+            colour = ("pbrlab_result", _size(vf.fragment_return, where))
+    else:
+        body.append(f"    {call};")
+        for qual, kind, name, semantic in vf.fragment_params:
+            if qual == "out" and canonical(semantic) in ("SV_TARGET0", "COLOR0"):
+                colour = (f"pbrlab_arg_{name}", _size(kind, where))
+    if colour is None:
+        raise UnityShaderError(f"{where}: {vf.fragment}() gives no SV_Target colour")
+    c = fit(colour[0], colour[1], 4, language, 1.0)
+    alpha = "pbrlab_c.a" if blended else "1.0"
+    vec4 = "float4" if language == "hlsl" else "vec4"
+    body += [f"    {vec4} pbrlab_c = {c};",
+             f"    pbrlab_radiance = {vec4}(pbrlab_target_radiance(pbrlab_c.rgb), {alpha});"]
+    lines = []
+    if language == "hlsl":
+        params = ["float4 pbrlab_frag_position : SV_Position", "bool pbrlab_front_facing : SV_IsFrontFace"]
+        params += [f"{kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
+        params.append("out float4 pbrlab_radiance : SV_Target0")
+        lines.append("void main(" + ", ".join(params) + ") {")
+    else:
+        lines += [f"{_flat(kind)}in {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += ["out vec4 pbrlab_radiance;", "void main() {",
+                  "    vec4 pbrlab_frag_position = gl_FragCoord;", "    bool pbrlab_front_facing = gl_FrontFacing;"]
+        return "\n".join(lines + body + ["}"]) + "\n"
+    return "\n".join(lines + body + ["}"]) + "\n"
