@@ -282,12 +282,15 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if material.unity is not None:  # each pass that runs, in the shader's order
                     for unity_pass in material.unity.passes:
-                        _unity_pass_state(ctx, hdr, material, unity_pass)
-                        if obj.sphere is not None and unity_pass.kind == "surface" and not material.unity.moves_vertices:
-                            _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo,
-                                         unity_pass)
-                        else:  # a sphere is tessellated when a pass moves vertices
-                            _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass)
+                        for keyed, additive in unity_light_programs(unity_pass, defines):
+                            _unity_pass_state(ctx, hdr, material, unity_pass, additive)
+                            keyed_shading = (keyed, *shading[1:])
+                            if obj.sphere is not None and unity_pass.kind == "surface" \
+                                    and not material.unity.moves_vertices:
+                                _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
+                                             cube_vbo, cube_ibo, unity_pass)
+                            else:  # a sphere is tessellated when a pass moves vertices
+                                _draw_mesh(ctx, obj, material, keyed_shading, scene, frame, resources, unity_pass)
                     ctx.depth_func = "<="
                     continue
                 blended = material.alpha_mode in _BLEND
@@ -324,11 +327,43 @@ _UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "eq
                 "notequal": "!=", "always": "1", "never": "0"}
 
 
-def _unity_pass_state(ctx, hdr, material, unity_pass) -> None:
+def unity_light_programs(unity_pass, defines: dict):
+    """[(defines, additive)]: the programs one pass of a Unity shader draws with. One, unless a
+    surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
+    program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
+    emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
+    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL."""
+    if unity_pass.kind != "surface":
+        if unity_pass.light_mode.lower() == "forwardbase":
+            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
+        return [(defines, False)]
+    if not unity_pass.light_keywords:
+        return [(defines, False)]
+    counts = {kind: defines.get(f"PBRLAB_{kind}_COUNT", 0) for kind in ("DIRECTIONAL", "POINT", "SPOT")}
+    none = {f"PBRLAB_{kind}_COUNT": 0 for kind in counts}
+    out = [({**defines, **none, "PBRLAB_DIRECTIONAL_COUNT": counts["DIRECTIONAL"], "DIRECTIONAL": 1,
+             "USING_DIRECTIONAL_LIGHT": 1}, False)]
+    for kind in ("POINT", "SPOT"):
+        if counts[kind]:
+            out.append(({**defines, **none, f"PBRLAB_{kind}_COUNT": counts[kind], kind: 1,
+                         "PBRLAB_UNITY_FORWARD_ADD": 1}, True))
+    return out
+
+
+def _unity_pass_state(ctx, hdr, material, unity_pass, additive: bool = False) -> None:
     """Blending, depth writes and depth test of one pass of a Unity shader: a surface
     program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
-    pass's from its Blend, ZWrite and ZTest lines."""
+    pass's from its Blend, ZWrite and ZTest lines. ``additive``: a ForwardAdd program,
+    added to what the base program drew (Unity: Blend One One, or SrcAlpha One when the
+    surface blends; ZWrite Off), the target's alpha kept."""
     state = unity_pass.state
+    if additive:
+        ctx.enable(moderngl.BLEND)
+        source = moderngl.SRC_ALPHA if material.alpha_mode in _BLEND else moderngl.ONE
+        ctx.blend_func = (source, moderngl.ONE, moderngl.ZERO, moderngl.ONE)
+        hdr.fbo.depth_mask = False
+        ctx.depth_func = "<="
+        return
     if unity_pass.kind == "surface":
         blended = material.alpha_mode in _BLEND
         if blended:

@@ -58,6 +58,8 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
             lines.append("    IN.color = pbrlab_custom_color;" if shader.vertex else "    IN.color = f.color;")
         else:  # written by the vertex: function, interpolated (mesh entry: pbrlab_custom_*)
             lines.append(f"    IN.{name} = pbrlab_custom_{name};")
+    for name in shader.facing_members:  # VFACE: 1 seen from the front, -1 from the back
+        lines.append(f"    IN.{name} = f.facing;")
     if shader.internal_data:
         lines += ["    IN.internalSurfaceTtoW0 = vec3(t.x, b.x, f.normal.x);",
                   "    IN.internalSurfaceTtoW1 = vec3(t.y, b.y, f.normal.y);",
@@ -151,6 +153,7 @@ void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out f
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);
     f.color = float4(1.0, 1.0, 1.0, 1.0);
+    f.facing = 1.0;
     radiance = pbrlab_unity_pixel(f);
     float4 clip = mul(u_view_proj, float4(f.position, 1.0));
     depth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
@@ -168,15 +171,18 @@ void main() {
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);
     f.color = vec4(1.0, 1.0, 1.0, 1.0);
+    f.facing = 1.0;
     out_radiance = pbrlab_unity_pixel(f);
     vec4 clipPos = u_view_proj * vec4(f.position, 1.0);
     gl_FragDepth = clamp(clipPos.z / clipPos.w * 0.5 + 0.5, 0.0, 1.0);
 }
 """,
     ("hlsl", "mesh"): """
-float4 main(float4 position : SV_Position, float3 v_position : TEXCOORD0, float3 v_normal : TEXCOORD1,
+float4 main(float4 position : SV_Position, bool front_facing : SV_IsFrontFace,
+            float3 v_position : TEXCOORD0, float3 v_normal : TEXCOORD1,
             float2 v_uv : TEXCOORD2, float4 v_tangent : TEXCOORD3) : SV_Target0 {
     PbrlabFragment f;
+    f.facing = front_facing ? 1.0 : -1.0;
     f.position = v_position;
     f.normal = normalize(v_normal);
     f.view = normalize(u_camera_position - v_position);
@@ -195,6 +201,7 @@ out vec4 out_radiance;
 
 void main() {
     PbrlabFragment f;
+    f.facing = gl_FrontFacing ? 1.0 : -1.0;
     f.position = v_position;
     f.normal = normalize(v_normal);
     f.view = normalize(u_camera_position - v_position);

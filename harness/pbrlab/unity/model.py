@@ -101,6 +101,7 @@ class SurfaceShader:
     properties: dict = field(default_factory=dict)       # name -> Property
     input_members: list = field(default_factory=list)    # [(type, name)]
     internal_data: bool = False
+    facing_members: list = field(default_factory=list)  # Input members with the VFACE semantic
     output_type: str = "SurfaceOutputStandard"
     output_fields: dict = field(default_factory=dict)    # field -> component count
     writes_normal: bool = False
@@ -109,6 +110,7 @@ class SurfaceShader:
     declared: frozenset = frozenset()  # global names the program declares itself
     state: RenderState = field(default_factory=RenderState)
     warnings: list = field(default_factory=list)
+    light_keywords: bool = False    # tests USING_DIRECTIONAL_LIGHT, POINT, SPOT...: a program per light type
     language: str = "hlsl"          # the program's language: "hlsl" (Cg/HLSL, as in Unity) or
                                     # "glsl" (a port-unity port)
 

@@ -121,7 +121,7 @@ def _property(m: re.Match, where: str, warnings: list) -> M.Property:
         values = [_number(p.strip(), where) for p in parts]
         default = tuple(values + [1.0 if kind == "Color" else 0.0] * (4 - len(values)))
     else:
-        t = re.fullmatch(r'"(\w*)"\s*(\{[^}]*\})?', default_text)
+        t = re.fullmatch(r'"([^"]*)"\s*(\{[^}]*\})?', default_text)
         if not t:
             raise UnityShaderError(f'{where}: {name}: texture default must be a name in quotes '
                                    f'("white", "black", "gray", "bump", "red", ""), got {default_text!r}')
@@ -315,9 +315,15 @@ _SIZE = {"": 1, "2": 2, "3": 3, "4": 4}
 
 
 def _members(body: str):
-    """[(type, name)] of a struct body; INTERNAL_DATA flagged as ('INTERNAL_DATA', '')."""
+    """[(type, name)] of a struct body; INTERNAL_DATA flagged as ('INTERNAL_DATA', ''), a
+    member with the VFACE semantic as ('VFACE', name). Preprocessor lines are passed over
+    (the members of every #if branch count)."""
     out = []
+    body = re.sub(r"^[ \t]*#[^\n]*", "", body, flags=re.M)
     for decl in body.split(";"):
+        if re.search(r":\s*(?:VFACE|SV_IsFrontFace)\s*$", decl.strip(), re.I):
+            out.append(("VFACE", decl.split(":")[0].split()[-1]))
+            continue
         decl = re.sub(r":\s*\w+\s*$", "", decl.strip())
         if not decl:
             continue
@@ -424,7 +430,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                                "but for one member)")
     members = _members(ibody)
     shader.internal_data = any(t == "INTERNAL_DATA" for t, _ in members)
-    shader.input_members = [(t, n) for t, n in members if t != "INTERNAL_DATA"]
+    shader.facing_members = [n for t, n in members if t == "VFACE"]
+    shader.input_members = [(t, n) for t, n in members if t not in ("INTERNAL_DATA", "VFACE")]
     # vertex: and finalcolor: functions.
     if pragma.vertex:
         found = _function(everything, pragma.vertex)
@@ -435,7 +442,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                                    f"(inout appdata_full v, out Input o)")
         written = ()
         if len(vp) == 2:
-            written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)\s*[-+*/]?=(?!=)", found[1]))))
+            # assigned, or handed to a macro or an out parameter (COMPUTE_EYEDEPTH(o.eyeDepth))
+            written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)", found[1]))))
         shader.vertex = M.VertexFunction(pragma.vertex, vp[0][1], written, vp[1][2] if len(vp) == 2 else None)
     if pragma.finalcolor:
         found = _function(everything, pragma.finalcolor)
@@ -454,7 +462,19 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                 "function writes it")
     shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
                                            r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
+    shader.light_keywords = tests_light_keywords(everything)
     return shader
+
+
+# Unity's per-light keywords (ForwardBase: DIRECTIONAL; ForwardAdd: one per light type).
+LIGHT_KEYWORDS = ("USING_DIRECTIONAL_LIGHT", "DIRECTIONAL", "POINT", "SPOT", "POINT_COOKIE",
+                  "DIRECTIONAL_COOKIE")
+_KEYWORD_TEST = re.compile(r"^[ \t]*#[ \t]*(?:if|ifdef|ifndef|elif)\b[^\n]*\b(?:" + "|".join(LIGHT_KEYWORDS) + r")\b", re.M)
+
+
+def tests_light_keywords(masked: str) -> bool:
+    """Whether preprocessor lines test a per-light keyword (then each light type gets its program)."""
+    return _KEYWORD_TEST.search(masked) is not None
 
 
 def _top_level(masked: str) -> str:

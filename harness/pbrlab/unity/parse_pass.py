@@ -76,7 +76,8 @@ def _structs(masked: str) -> dict:
     for m in re.finditer(r"\bstruct\s+(" + _IDENT + r")\s*\{", masked):
         end = _matching_brace(masked, m.end() - 1)
         members = []
-        for decl in masked[m.end():end].split(";"):
+        body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        for decl in body.split(";"):
             decl = decl.strip()
             if not decl:
                 continue

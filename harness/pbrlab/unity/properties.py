@@ -56,6 +56,8 @@ def _pair(value, where: str, default) -> tuple:
 def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
     cube = prop.kind == "Cube"
     linear_by_default = prop.default == "bump" or "Normal" in prop.attributes
+    if value is None and cube:  # every Cube samples the scene's environment
+        return TextureValue(None, DEFAULT_TEXELS["white"], False, (1.0, 1.0, 0.0, 0.0), cube)
     if value is None or isinstance(value, str):
         name = prop.default if value is None else value
         if name not in DEFAULT_TEXELS:
