@@ -268,6 +268,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         return cube_holder[0]
 
     resources.environment_cube = environment_cube
+    grab_holder = []
     cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
     cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
     try:
@@ -281,7 +282,11 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 defines = plan.defines[obj.material]
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if material.unity is not None:  # each pass that runs, in the shader's order
+                    grabbed = resources.grabbed = {}
                     for unity_pass in material.unity.passes:
+                        if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
+                            grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)
+                            continue
                         for keyed, additive in unity_light_programs(unity_pass, defines):
                             _unity_pass_state(ctx, hdr, material, unity_pass, additive)
                             keyed_shading = (keyed, *shading[1:])
@@ -312,8 +317,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     finally:
         cube_vbo.release()
         cube_ibo.release()
-        for cube in cube_holder:
-            cube.release()
+        for resource in cube_holder + grab_holder:
+            resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
 
 
@@ -325,6 +330,15 @@ _UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": modern
                   "SrcAlphaSaturate": 0x0308, "OneMinusSrcAlpha": moderngl.ONE_MINUS_SRC_ALPHA}
 _UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "equal": "==",
                 "notequal": "!=", "always": "1", "never": "0"}
+
+
+def _grab(ctx, hdr, holder):
+    """A Unity GrabPass: a copy of the float target as drawn so far (released after the render)."""
+    texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
+    texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    ctx.copy_framebuffer(texture, hdr.fbo)
+    holder.append(texture)
+    return texture
 
 
 def unity_light_programs(unity_pass, defines: dict):
@@ -395,6 +409,10 @@ def _program(ctx, stem, material, shading, scene, frame, resources, obj, unity_p
         resources.bind(program, scene, frame, material)
         unity_program.bind(program, material, obj, frame, resources.cache, resources.environment_cube,
                            _SceneResources.FIRST_MATERIAL_UNIT)
+        unit = _SceneResources.FIRST_MATERIAL_UNIT + len(material.properties)
+        for i, (name, texture) in enumerate(sorted(getattr(resources, "grabbed", {}).items())):
+            texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
+            _set(program, name, unit + i)
         return program
     fragment = mesh_fragment if stem == "mesh" else fragment_template(stem, language)
     program = program_from_templates(ctx, f"{stem}.vert", fragment, defines, surface)

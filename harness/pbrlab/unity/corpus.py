@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 import tempfile
 import traceback
@@ -89,6 +90,22 @@ def run_shader(shader: Path, language: str) -> Outcome:
     return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
 
 
+# What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and
+# the compiler refused is a defect of the front end, not a refusal naming a Unity feature.
+_COMPILER = ("failed to compile", "HLSL failed", "error: ", "cannot find include")
+
+
+def is_compiler_error(message: str) -> bool:
+    return any(word in message for word in _COMPILER) and "#error" not in message
+
+
+def refusal_key(message: str) -> str:
+    """The part of a refusal that names the missing feature (without the file's path and line)."""
+    first = message.splitlines()[0] if message else ""
+    return re.sub(r"^.*?\.(?:shader|cginc|glsl|json)(?::\d+)*: (?:materials\.\w+\.surface: )?(?:.*?\.shader:\d+: )?", "",
+                  first)[:90]
+
+
 def agreement(a: np.ndarray, b: np.ndarray) -> float:
     """Largest relative difference of the GLSL and HLSL renders (1e-3 floor)."""
     return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
@@ -121,6 +138,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m pbrlab.unity.corpus", description=__doc__.split("\n\n")[0])
     parser.add_argument("root", type=Path, help="a folder of .shader files (searched recursively)")
     parser.add_argument("--out", type=Path, help="write the report as JSON here")
+    parser.add_argument("--expect", type=Path, help="write the outcomes as tests/unity/test_corpus.py "
+                        "expects them: {shader: \"rendered\" or what its refusal names}")
     args = parser.parse_args(argv)
 
     def progress(row):
@@ -131,10 +150,21 @@ def main(argv=None) -> int:
     report = run_corpus(args.root, progress)
     print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']}; "
           f"{json.dumps(report['counts'])}")
+    from .. import outputs
     if args.out:
-        from .. import outputs
         with outputs.transaction([args.out]) as tx:
             tx.write_text(args.out, json.dumps(report, indent=1) + "\n")
+    if args.expect:
+        expected = {}
+        for row in report["rows"]:
+            statuses = {row[lang]["status"] for lang in LANGUAGES}
+            if statuses == {"rendered"}:
+                expected[row["path"]] = "rendered"
+            else:  # what a refusal names; a defect (traceback, compiler error) is kept as it is
+                bad = next(row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered")
+                expected[row["path"]] = refusal_key(bad["message"]) if bad["status"] == "refused" else bad["status"]
+        with outputs.transaction([args.expect]) as tx:
+            tx.write_text(args.expect, json.dumps(expected, indent=1, sort_keys=True) + "\n")
     return 0
 
 

@@ -165,6 +165,16 @@ class VertexFragmentPass:
 
 
 @dataclass
+class GrabPass:
+    """``GrabPass { "_Name" }``: what is drawn so far, as a texture for the passes after it."""
+    texture: str                    # the sampler it binds (_GrabTexture by default)
+    line: int
+    state: RenderState = field(default_factory=RenderState)
+    vertex = None
+    kind = "grab"
+
+
+@dataclass
 class UnityShader:
     """A whole ``.shader`` file as Unity runs it: the Properties, and the passes of the first
     SubShader the harness can run, in draw order (surface programs and vertex/fragment passes)."""
@@ -183,4 +193,9 @@ class UnityShader:
     @property
     def moves_vertices(self) -> bool:
         """Whether a sphere must be drawn as a mesh: a vertex: function or a vertex stage of its own."""
-        return any(p.kind == "vertex-fragment" or p.vertex is not None for p in self.passes)
+        return any(p.kind == "vertex-fragment" or (p.kind == "surface" and p.vertex is not None)
+                   for p in self.passes)
+
+    @property
+    def grab_textures(self) -> list:
+        return [p.texture for p in self.passes if p.kind == "grab"]

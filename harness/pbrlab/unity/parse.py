@@ -72,7 +72,7 @@ def _matching_brace(text: str, open_index: int) -> int:
 
 _PROPERTY = re.compile(
     r'(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + _IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
-    r'(?P<kind>[Rr]ange\s*\(\s*(?P<lo>[^,()]*),\s*(?P<hi>[^,()]*)\)|\w+)\s*\)\s*=\s*'
+    r'(?P<kind>(?i:range)\s*\(\s*(?P<lo>[^,()]*),\s*(?P<hi>[^,()]*)\)|\w+)\s*\)\s*=\s*'
     r'(?P<default>\([^)]*\)|"[^"\n]*"\s*(?:\{[^}]*\})?|[^\s\[]+)')
 # ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
 PROPERTY_KINDS = {"float": "Float", "range": "Range", "int": "Int", "integer": "Int", "color": "Color",
@@ -589,8 +589,9 @@ def read_text(text: str, path: Path) -> M.UnityShader:
             notes.insert(0, f"{path}:{sub.line}: SubShader {index + 1} of {len(layout.subshaders)} runs"
                          + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
         for p in passes:
-            _implicit_texture_properties(p.program, props)
-            p.properties = props
+            if p.kind != "grab":
+                _implicit_texture_properties(p.program, props)
+                p.properties = props
         return M.UnityShader(path, layout.name, passes, props, warnings, notes)
     return _fallback(layout, reasons, path)
 
@@ -685,9 +686,8 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
             passes.extend(_use_pass(name, line, path))
         elif kind == "grabpass":
             _, name, line = item
-            raise UnityShaderError(f"{path}:{line}: GrabPass (the screen behind as {name}) is not "
-                                   "supported: pbrlab has no grab texture")
-    if not passes:
+            passes.append(M.GrabPass(name, line))
+    if not any(p.kind != "grab" for p in passes):
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped)")
     return passes
 

@@ -285,9 +285,20 @@ def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
             s.items.append(("pass", _pass(t, tline)))
         elif word == "usepass":
             s.items.append(("usepass", _string(t.next()[0]) or "", tline))
-        elif word == "grabpass":
-            name = _string(t.peek(1)[0])
-            t.skip_braces()
+        elif word == "grabpass":  # GrabPass { [Name "x"] [Tags {...}] ["_TextureName"] }
+            t.expect("{")
+            name = None
+            while t.peek()[0] not in ("}", None):
+                tok = t.next()[0]
+                if tok.lower() == "tags":
+                    t.i -= 1
+                    t.next()
+                    t.tags()
+                elif tok.lower() == "name":
+                    t.next()
+                elif _string(tok) is not None:
+                    name = _string(tok)
+            t.expect("}")
             s.items.append(("grabpass", name or "_GrabTexture", tline))
         elif t.peek()[0] == "{":
             s.state.append(StateCommand(tok, "{...}", tline))

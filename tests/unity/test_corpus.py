@@ -1,0 +1,52 @@
+"""Real Unity shaders nobody on this project wrote (corpus/unity/: Unity's 2019.4 built-in
+shaders and shaders from public repositories, corpus/unity/public/MANIFEST.json), each
+rendered as a new user would (pbrlab.unity.corpus: a UV sphere under a directional and a
+point light and the sky) in HLSL and in GLSL.
+
+Every shader must end in one of two ways, the same in both languages: rendered (every pixel
+finite, GLSL and HLSL agreeing), or refused with a message naming the Unity feature that is
+missing. A traceback, a non-finite pixel or a compiler error is a defect. Which shaders
+render is pinned in corpus/unity/expected.json (``python -m pbrlab.unity.corpus corpus/unity
+--expect corpus/unity/expected.json`` rewrites it after a reviewed change), so a shader that
+stops rendering fails, and one that starts to fails until the figures in the README move
+with it.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from pbrlab.unity import corpus
+
+ROOT = Path(__file__).resolve().parents[2] / "corpus" / "unity"
+EXPECTED = json.loads((ROOT / "expected.json").read_text(encoding="utf-8"))
+SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
+# GLSL (the port) against HLSL (as written) of one shader, largest relative difference with a
+# 1e-3 floor (corpus.agreement): most are bit-identical; a vertex stage of each language
+# places vertices a few ulp apart (mul(M, v) vs M * v, fused differently), which moves
+# interpolated values by up to ~1e-5 relative (README, "Unity surface shaders"); bound 1e-4.
+AGREEMENT_BOUND = 1e-4
+
+
+def test_corpus_lists_every_shader_once():
+    assert sorted(EXPECTED) == sorted(SHADERS)
+
+
+@pytest.mark.parametrize("shader", SHADERS)
+def test_corpus_shader_renders_or_is_refused_by_name(shader):
+    outcomes = {lang: corpus.run_shader(ROOT / shader, lang) for lang in corpus.LANGUAGES}
+    for lang, o in outcomes.items():
+        assert o.status in ("rendered", "refused"), f"{lang}: {o.status}: {o.message}"
+        if o.status == "refused":
+            assert not corpus.is_compiler_error(o.message), f"{lang}: a compiler error, not a refusal: {o.message}"
+    expected = EXPECTED[shader]
+    if expected == "rendered":
+        assert all(o.status == "rendered" for o in outcomes.values()), \
+            {lang: o.message[:300] for lang, o in outcomes.items()}
+        assert corpus.agreement(outcomes["glsl"].image, outcomes["hlsl"].image) <= AGREEMENT_BOUND
+    else:
+        for lang, o in outcomes.items():
+            assert o.status == "refused" and expected in o.message, f"{lang}: {o.status}: {o.message[:300]}"
