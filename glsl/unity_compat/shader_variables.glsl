@@ -9,21 +9,47 @@
 // Provides: uniforms _Time (t/20, t, 2t, 3t), _SinTime (sin t/8, t/4, t/2, t), _CosTime,
 //           unity_DeltaTime, _WorldSpaceCameraPos, _ProjectionParams (1, near, far, 1/far),
 //           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject,
-//           unity_MatrixVP, _SpecColor (Lighting.cginc's BlinnPhong specular colour),
+//           unity_MatrixVP, unity_MatrixV, unity_MatrixInvV, glstate_matrix_projection,
+//           unity_CameraProjection, unity_CameraInvProjection, _ZBufferParams (GL depth,
+//           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
+//           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
+//           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
 //           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
 //           globals the caller's light loop sets before each Lighting<Name> call, since one
 //           program here shades every light; w = 0 directional, 1 positional);
-//           UNITY_MATRIX_M, UNITY_MATRIX_VP, UNITY_MATRIX_MVP, TRANSFORM_TEX(tex, name);
-//           vec4 UnityObjectToClipPos(vec3 pos) / (vec4 pos), vec3 UnityObjectToWorldNormal(vec3),
-//           vec3 UnityObjectToWorldDir(vec3), vec3 UnityWorldSpaceViewDir(vec3 worldPos),
-//           vec3 UnityWorldSpaceLightDir(vec3 worldPos), vec3 WorldSpaceViewDir(vec4 localPos),
-//           vec4 ComputeScreenPos(vec4 clipPos);
-//           instancing macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
+//           UNITY_MATRIX_M, UNITY_MATRIX_V, UNITY_MATRIX_I_V, UNITY_MATRIX_P, UNITY_MATRIX_VP,
+//           UNITY_MATRIX_MVP, UNITY_MATRIX_MV, UNITY_MATRIX_T_MV, UNITY_MATRIX_IT_MV,
+//           TRANSFORM_TEX(tex, name);
+//           vec4 UnityObjectToClipPos(vec3 pos) / (vec4 pos), vec4 UnityWorldToClipPos(vec3),
+//           vec4 UnityViewToClipPos(vec3), vec3 UnityObjectToViewPos(vec3) / (vec4),
+//           vec3 UnityWorldToViewPos(vec3), vec3 UnityObjectToWorldNormal(vec3),
+//           vec3 UnityObjectToWorldDir(vec3), vec3 UnityWorldToObjectDir(vec3),
+//           vec3 UnityWorldSpaceViewDir(vec3 worldPos), vec3 UnityWorldSpaceLightDir(vec3 worldPos),
+//           vec3 WorldSpaceViewDir(vec4 localPos), vec3 WorldSpaceLightDir(vec4 localPos),
+//           vec3 ObjSpaceViewDir(vec4 localPos), vec3 ObjSpaceLightDir(vec4 localPos),
+//           vec4 ComputeScreenPos(vec4 clipPos), vec4 UnityPixelSnap(vec4 clipPos),
+//           float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
+//           buffer value, perspective cameras, as Unity's);
+//           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL (read the vertex
+//           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
+//           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DEFINE_INSTANCED_PROP declares a plain uniform, UNITY_ACCESS_INSTANCED_PROP,
 //           UNITY_SETUP_INSTANCE_ID, UNITY_TRANSFER_INSTANCE_ID, UNITY_VERTEX_INPUT_INSTANCE_ID,
-//           UNITY_VERTEX_OUTPUT_STEREO); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in
-//           GLSL, as Unity defines it for its GLSL targets).
+//           UNITY_VERTEX_OUTPUT_STEREO, UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO,
+//           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX: no
+//           instancing, one eye); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
+//           Unity defines it for its GLSL targets);
+//           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
+//           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
+//           LIGHTING_COORDS(idx1, idx2), UNITY_LIGHTING_COORDS(idx1, idx2), TRANSFER_SHADOW(a),
+//           UNITY_TRANSFER_SHADOW(a, coord), TRANSFER_VERTEX_TO_FRAGMENT(a),
+//           UNITY_TRANSFER_LIGHTING(a, coord) expand to nothing; SHADOW_ATTENUATION(a),
+//           UNITY_SHADOW_ATTENUATION(a, worldPos), LIGHT_ATTENUATION(a) are 1.0;
+//           UNITY_LIGHT_ATTENUATION(destName, input, worldPos) declares `float destName = 1.0;`.
+//           Not provided: lightmaps (unity_Lightmap, DecodeLightmap), depth textures
+//           (_CameraDepthTexture, SAMPLE_DEPTH_TEXTURE), shadow-caster macros: the harness has
+//           none of these.
 // Include:  "unity_compat/shader_variables.glsl" (path relative to glsl/). Its HLSL twin
 //           hlsl_ports/unity_compat/shader_variables.hlsl is hand-written (matrices: GLSL M * v
 //           is HLSL mul(M, v)); HLSL's instancing macro declares `type var;`.
@@ -42,6 +68,13 @@ uniform vec4 _ScreenParams;
 uniform mat4 unity_ObjectToWorld;
 uniform mat4 unity_WorldToObject;
 uniform mat4 unity_MatrixVP;
+uniform mat4 unity_MatrixV;
+uniform mat4 unity_MatrixInvV;
+uniform mat4 glstate_matrix_projection;
+uniform mat4 unity_CameraProjection;
+uniform mat4 unity_CameraInvProjection;
+uniform vec4 _ZBufferParams;
+uniform vec4 unity_OrthoParams;
 uniform vec4 _SpecColor;
 uniform vec4 unity_SpecCube0_HDR;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
@@ -50,8 +83,16 @@ vec4 _LightColor0;
 vec4 _WorldSpaceLightPos0;
 
 #define UNITY_MATRIX_M unity_ObjectToWorld
+#define UNITY_MATRIX_V unity_MatrixV
+#define UNITY_MATRIX_I_V unity_MatrixInvV
+#define UNITY_MATRIX_P glstate_matrix_projection
 #define UNITY_MATRIX_VP unity_MatrixVP
 #define UNITY_MATRIX_MVP (unity_MatrixVP * unity_ObjectToWorld)
+// UnityShaderVariables.cginc builds these three from the per-camera and per-object matrices;
+// the inverse transpose of M V (for normals) is transpose(M^-1 V^-1) with no inversion.
+#define UNITY_MATRIX_MV (unity_MatrixV * unity_ObjectToWorld)
+#define UNITY_MATRIX_T_MV transpose(unity_MatrixV * unity_ObjectToWorld)
+#define UNITY_MATRIX_IT_MV transpose(unity_WorldToObject * unity_MatrixInvV)
 #define TRANSFORM_TEX(tex, name) ((tex).xy * name##_ST.xy + name##_ST.zw)
 
 #define UNITY_INSTANCING_BUFFER_START(name)
@@ -62,7 +103,26 @@ vec4 _WorldSpaceLightPos0;
 #define UNITY_TRANSFER_INSTANCE_ID(v, o)
 #define UNITY_VERTEX_INPUT_INSTANCE_ID
 #define UNITY_VERTEX_OUTPUT_STEREO
+#define UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o)
+#define UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output)
+#define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input)
 #define UNITY_INITIALIZE_OUTPUT(type, name)
+
+// AutoLight.cginc with no shadow keyword (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE) and the
+// light's attenuation left to _LightColor0: Unity's own definitions of that case, where
+// its directional light gives LIGHT_ATTENUATION(a) = SHADOW_ATTENUATION(a) = 1.0.
+#define SHADOW_COORDS(idx1)
+#define UNITY_SHADOW_COORDS(idx1)
+#define LIGHTING_COORDS(idx1, idx2)
+#define UNITY_LIGHTING_COORDS(idx1, idx2)
+#define TRANSFER_SHADOW(a)
+#define UNITY_TRANSFER_SHADOW(a, coord)
+#define TRANSFER_VERTEX_TO_FRAGMENT(a)
+#define UNITY_TRANSFER_LIGHTING(a, coord)
+#define SHADOW_ATTENUATION(a) 1.0
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
+#define LIGHT_ATTENUATION(a) 1.0
+#define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) float destName = 1.0;
 
 vec4 UnityObjectToClipPos(vec3 pos) {
     return unity_MatrixVP * (unity_ObjectToWorld * vec4(pos, 1.0));
@@ -72,6 +132,28 @@ vec4 UnityObjectToClipPos(vec4 pos) {
     return UnityObjectToClipPos(pos.xyz);
 }
 
+vec4 UnityWorldToClipPos(vec3 pos) {
+    return unity_MatrixVP * vec4(pos, 1.0);
+}
+
+vec4 UnityViewToClipPos(vec3 pos) {
+    return glstate_matrix_projection * vec4(pos, 1.0);
+}
+
+// Eye space: the camera at the origin looking down -z (Unity's view matrix is GL-style too),
+// so a point in front of the camera has view z = -(its eye depth).
+vec3 UnityObjectToViewPos(vec3 pos) {
+    return (unity_MatrixV * (unity_ObjectToWorld * vec4(pos, 1.0))).xyz;
+}
+
+vec3 UnityObjectToViewPos(vec4 pos) {
+    return UnityObjectToViewPos(pos.xyz);
+}
+
+vec3 UnityWorldToViewPos(vec3 pos) {
+    return (unity_MatrixV * vec4(pos, 1.0)).xyz;
+}
+
 // Normals transform with the inverse transpose: n^T M^-1 (Unity: mul(norm, (float3x3)unity_WorldToObject)).
 vec3 UnityObjectToWorldNormal(vec3 norm) {
     return normalize(norm * mat3(unity_WorldToObject));
@@ -79,6 +161,10 @@ vec3 UnityObjectToWorldNormal(vec3 norm) {
 
 vec3 UnityObjectToWorldDir(vec3 dir) {
     return normalize(mat3(unity_ObjectToWorld) * dir);
+}
+
+vec3 UnityWorldToObjectDir(vec3 dir) {
+    return normalize(mat3(unity_WorldToObject) * dir);
 }
 
 vec3 UnityWorldSpaceViewDir(vec3 worldPos) {
@@ -93,12 +179,71 @@ vec3 WorldSpaceViewDir(vec4 localPos) {
     return UnityWorldSpaceViewDir((unity_ObjectToWorld * localPos).xyz);
 }
 
+vec3 WorldSpaceLightDir(vec4 localPos) {
+    return UnityWorldSpaceLightDir((unity_ObjectToWorld * localPos).xyz);
+}
+
+// Object-space directions (not normalised, as Unity's): the camera, or the light
+// (w = 0: its direction; w = 1: its position), taken into object space, minus the point.
+vec3 ObjSpaceViewDir(vec4 localPos) {
+    return (unity_WorldToObject * vec4(_WorldSpaceCameraPos, 1.0)).xyz - localPos.xyz;
+}
+
+vec3 ObjSpaceLightDir(vec4 localPos) {
+    return (unity_WorldToObject * _WorldSpaceLightPos0).xyz - localPos.xyz * _WorldSpaceLightPos0.w;
+}
+
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in
 // [0, w] from the bottom-left, zw the clip zw; divide by w for [0, 1].
 vec4 ComputeScreenPos(vec4 pos) {
     vec4 o = pos * 0.5;
     o.xy = vec2(o.x, o.y * _ProjectionParams.x) + o.w;
     o.zw = pos.zw;
+    return o;
+}
+
+// Unity's UnityPixelSnap (UnityCG.cginc): a clip position moved to the nearest pixel corner
+// of the viewport (NDC xy times half the size in pixels, rounded, undone). roundEven is the
+// rounding of HLSL's round (SPIR-V RoundEven; GLSL's round may go either way at 1/2).
+vec4 UnityPixelSnap(vec4 pos) {
+    vec2 halfSize = 0.5 * _ScreenParams.xy;
+    vec2 pixel = roundEven(pos.xy / pos.w * halfSize);
+    return vec4(pixel / halfSize * pos.w, pos.zw);
+}
+
+// Depth-buffer value z in [0, 1] to linear depth (UnityCG.cginc), the inverse of a
+// perspective projection's depth: 1/eyeDepth is affine in z, 1/near at z = 0 and 1/far at
+// z = 1, i.e. 1/eyeDepth = z (1/far - 1/near) + 1/near = _ZBufferParams.z z + _ZBufferParams.w;
+// Linear01Depth is eyeDepth / far. An orthographic camera's depth is linear already (Unity's
+// shaders branch on unity_OrthoParams.w instead of calling these).
+float Linear01Depth(float z) {
+    return 1.0 / (_ZBufferParams.x * z + _ZBufferParams.y);
+}
+
+float LinearEyeDepth(float z) {
+    return 1.0 / (_ZBufferParams.z * z + _ZBufferParams.w);
+}
+
+// UnityCG.cginc's vertex-stage shorthands, reading the vertex input `v` by name as Unity's do.
+#define COMPUTE_EYEDEPTH(o) o = -UnityObjectToViewPos(v.vertex).z
+#define COMPUTE_DEPTH_01 (-(UnityObjectToViewPos(v.vertex).z * _ProjectionParams.w))
+#define COMPUTE_VIEW_NORMAL normalize(mat3(UNITY_MATRIX_IT_MV) * v.normal)
+
+// UnityCG.cginc's minimal image-effect vertex stage: position to clip space, UV passed on.
+struct appdata_img {
+    vec4 vertex;
+    vec2 texcoord;
+};
+
+struct v2f_img {
+    vec4 pos;
+    vec2 uv;
+};
+
+v2f_img vert_img(appdata_img v) {
+    v2f_img o;
+    o.pos = UnityObjectToClipPos(v.vertex);
+    o.uv = v.texcoord;
     return o;
 }
 #endif

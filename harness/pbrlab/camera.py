@@ -18,6 +18,10 @@ class CameraFrame:
     up: np.ndarray       # unit up * tan(fov/2)
     size: tuple[int, int]
     view_proj: np.ndarray  # 4x4, row-major maths (column vectors)
+    view: np.ndarray       # 4x4 world to eye (GL: camera at the origin looking down -z)
+    proj: np.ndarray       # 4x4 eye to clip (GL: clip z in [-w, w]); view_proj = proj @ view
+    near: float            # the planes proj maps to clip z = -w and +w (eye z = -near, -far)
+    far: float
 
 
 def camera_frame(camera, scene_radius: float) -> CameraFrame:
@@ -53,7 +57,7 @@ def camera_frame(camera, scene_radius: float) -> CameraFrame:
         proj[2, 3] = -2 * far * near / (far - near)
         proj[3, 2] = -1
     return CameraFrame(camera.position.astype(np.float64), forward, right * tan_half * aspect,
-                       up * tan_half, (w, h), proj @ view)
+                       up * tan_half, (w, h), proj @ view, view, proj, near, far)
 
 
 def camera_rays(frame: CameraFrame) -> np.ndarray:

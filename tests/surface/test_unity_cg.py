@@ -121,3 +121,49 @@ vec4 pbr_unity_test_lit(vec3 a, vec3 n, vec3 l, vec3 v, float sp, float gl) {
     assert np.abs(got[:, 0] - lam).max() <= BOUND
     # pow(NdotH, up to 128) in float32: relative 128 ulp at worst; bound 2e-5 abs on values <= ~1.5
     assert np.abs(got[:, 1:] - bp).max() <= 2e-5
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_unpack_normal_dxt5nm_reads_alpha_and_green_only(language):
+    packed = RNG.uniform(0, 1, (N, 4))
+    got = _eval("vec4(UnpackNormalDXT5nm(p), 0.0)", language, p=vec4(packed))
+    _assert_normals(got, R.unpack_normal_dxt5nm(packed))
+    # red and blue are ignored: a DXT5nm texel (1, y, 1, x) and (0, y, 0, x) decode alike
+    other = packed.copy()
+    other[:, [0, 2]] = 1.0 - other[:, [0, 2]]
+    np.testing.assert_array_equal(got, _eval("vec4(UnpackNormalDXT5nm(p), 0.0)", language, p=vec4(other)))
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_parallax_offset(language):
+    h, height = RNG.uniform(0, 1, N), RNG.uniform(0, 0.08, N)  # _Parallax: Range (0.005, 0.08)
+    v = RNG.normal(size=(N, 3)) * RNG.uniform(0.1, 10, (N, 1))  # any length: normalised inside
+    v[:, 2] = np.abs(v[:, 2])  # views from above the surface (tangent-space z >= 0)
+    got = _eval("vec4(ParallaxOffset(h, ht, v), 0.0, 0.0)", language, h=h, ht=height, v=vec3(v))
+    want = R.parallax_offset(h, height, v)
+    # float32 of a few terms divided by z + 0.42 >= 0.42: bound 2e-6 relative to the largest
+    # possible shift, height / 2 / 0.42 (<= 0.095)
+    assert np.abs(got[:, :2] - want).max() <= BOUND * 0.1
+    assert np.abs(want).max() <= 0.08 / 2 / 0.42 + 1e-12  # the offset limit the comment states
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_compute_grab_screen_pos_is_gl_oriented(language):
+    clip = RNG.uniform(-5, 5, (N, 4))
+    clip[:, 3] = RNG.uniform(0.1, 5, N)
+    got = _eval("ComputeGrabScreenPos(c)", language, c=vec4(clip))
+    # values up to ~5: float32 of (x + w) / 2, bound 2 ulp of 8
+    assert np.abs(got - R.compute_grab_screen_pos(clip)).max() <= 2e-6
+    # UNITY_UV_STARTS_AT_TOP undefined (GL): the same xy as ComputeScreenPos with _ProjectionParams.x = 1
+    assert np.abs(got - R.compute_grab_screen_pos(clip, uv_starts_at_top=True))[:, 1].max() > 0.1
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_colour_space_constants_are_linear(language):
+    got = _eval("vec4(unity_ColorSpaceGrey.x, unity_ColorSpaceDouble.x, unity_ColorSpaceLuminance.w, "
+                "unity_ColorSpaceGrey.w * unity_ColorSpaceDouble.w)", language, x=np.zeros(1))[0]
+    assert abs(got[0] - ref_color.srgb_to_linear(0.5)) <= 1e-7  # the exact decode of 0.5
+    assert abs(got[1] - 2.0 ** 2.2) <= 1e-6  # 2 in gamma space, linear
+    assert got[2] == 1.0 and got[3] == 1.0  # linear-mode flag; alphas stay gamma (0.5 * 2)
+    lum = _eval("unity_ColorSpaceLuminance.xyz", language, x=np.zeros(1))[0]
+    np.testing.assert_array_equal(lum, np.float32(R.LUMINANCE_WEIGHTS))

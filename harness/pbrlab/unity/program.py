@@ -143,9 +143,20 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "unity_ObjectToWorld", _column_major(model))
     _set(program, "unity_WorldToObject", _column_major(np.linalg.inv(model)))
     _set(program, "unity_MatrixVP", _column_major(frame.view_proj))
+    _set(program, "unity_MatrixV", _column_major(frame.view))
+    _set(program, "unity_MatrixInvV", _column_major(np.linalg.inv(frame.view)))
+    _set(program, "glstate_matrix_projection", _column_major(frame.proj))
+    _set(program, "unity_CameraProjection", _column_major(frame.proj))
+    _set(program, "unity_CameraInvProjection", _column_major(np.linalg.inv(frame.proj)))
     w, h = frame.size
     _set(program, "_ScreenParams", (float(w), float(h), 1.0 + 1.0 / w, 1.0 + 1.0 / h))
-    _set(program, "_ProjectionParams", (1.0, 0.0, 0.0, 0.0))
+    near, far = frame.near, frame.far
+    _set(program, "_ProjectionParams", (1.0, near, far, 1.0 / far))
+    # UnityShaderVariables.cginc, a GL depth buffer (not reversed): 1/eyeDepth = z/far (1 - far/near) + 1/near.
+    _set(program, "_ZBufferParams", (1.0 - far / near, far / near, (1.0 - far / near) / far, 1.0 / near))
+    orthographic = frame.proj[3, 3] == 1.0
+    _set(program, "unity_OrthoParams", (1.0 / frame.proj[0, 0], 1.0 / frame.proj[1, 1], 0.0, 1.0)
+         if orthographic else (0.0, 0.0, 0.0, 0.0))
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
     if "_SpecColor" not in material.properties:
         _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)

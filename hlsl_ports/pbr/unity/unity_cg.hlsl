@@ -9,10 +9,24 @@
 //           vec3 GammaToLinearSpace(vec3 sRGB), vec3 LinearToGammaSpace(vec3 linRGB)   Unity's fits
 //           float GammaToLinearSpaceExact(float value), float LinearToGammaSpaceExact(float value)
 //           vec3 DecodeHDR(vec4 data, vec4 decodeInstructions)
+//           vec3 UnpackNormalDXT5nm(vec4 packednormal)            DXT5nm only (x in a, y in g)
+//           vec2 ParallaxOffset(float h, float height, vec3 viewDir)   tangent-space viewDir
+//           vec4 ComputeGrabScreenPos(vec4 clipPos)   GL orientation (UNITY_UV_STARTS_AT_TOP unset)
+//           unity_ColorSpaceGrey, unity_ColorSpaceDouble, unity_ColorSpaceLuminance (macros,
+//           linear colour space: Unity's values when UNITY_COLORSPACE_GAMMA is undefined);
+//           UNITY_PROJ_COORD(a) (= a), UNITY_OPAQUE_ALPHA(outputAlpha) (outputAlpha = 1.0);
+//           fog macros as no-ops, Unity's definitions when no FOG_LINEAR / FOG_EXP / FOG_EXP2
+//           variant is compiled (the harness has no fog): UNITY_FOG_COORDS(idx) and
+//           UNITY_TRANSFER_FOG(o, outpos) expand to nothing (so a v2f struct keeps no fogCoord
+//           member), UNITY_APPLY_FOG(coord, col) and UNITY_APPLY_FOG_COLOR(coord, col, fogCol)
+//           leave col unchanged and never read coord.
 // Include:  "pbr/unity/unity_cg.hlsl" (path relative to hlsl_ports/). Not part of pbr/pbr.hlsl: the
 //           names are Unity's. UnpackNormal / UnpackScaleNormal (RGB maps, Unity's
 //           UNITY_NO_DXT5nm branch) are in pbr/unity/surface_standard.hlsl.
-// Config macros read: none.
+// Config macros read: UNITY_UV_STARTS_AT_TOP (ComputeGrabScreenPos: defined, the grab
+//           texture's v runs downwards, Direct3D-like; the pbrlab harness renders with GL
+//           conventions and leaves it undefined, as Unity does for its OpenGL targets, so a
+//           shader's `#if UNITY_UV_STARTS_AT_TOP` takes the GL branch in both languages).
 //
 // Semantics: Unity 2018-2019 UnityCG.cginc (linear colour space, UNITY_NO_DXT5nm undefined
 // for UnpackNormalmapRGorAG); the fits are Unity's (from Ian Taylor's "sRGB approximations
@@ -100,4 +114,59 @@ float3 DecodeHDR(float4 data, float4 decodeInstructions) {
     float alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;
     return (decodeInstructions.x * pow(alpha, decodeInstructions.y)) * data.rgb;
 }
+
+// Unity's DXT5nm-only unpack (UnityCG.cginc UnpackNormalDXT5nm): x from alpha, y from green;
+// unlike UnpackNormalmapRGorAG it ignores red, so a BC5 or RGB map does not decode through it.
+float3 UnpackNormalDXT5nm(float4 packednormal) {
+    float2 xy = packednormal.wy * 2.0 - 1.0;
+    return float3(xy, sqrt(1.0 - clamp(dot(xy, xy), 0.0, 1.0)));
+}
+
+// Unity's ParallaxOffset (UnityCG.cginc): parallax mapping (Kaneko et al. 2001, "Detailed
+// shape representation with parallax mapping", ICAT): the height sample h in [0, 1] is
+// centred on the surface, (h - 1/2) * height, and shifts the UV along the tangent-space view
+// direction by that much per unit of depth, xy / z. Unity adds PBR_UNITY_PARALLAX_Z_BIAS to
+// z, between Kaneko's xy / z and Welsh's offset limiting (2004, xy alone), so the shift stays
+// finite where the view grazes the surface: at most 1/0.42 = 2.4 times the centred height
+// for any view above it (z >= 0).
+#define PBR_UNITY_PARALLAX_Z_BIAS 0.42
+float2 ParallaxOffset(float h, float height, float3 viewDir) {
+    float centred = (h - 0.5) * height;
+    float3 v = normalize(viewDir);
+    return centred * v.xy / (v.z + PBR_UNITY_PARALLAX_Z_BIAS);
+}
+
+// Unity's ComputeGrabScreenPos (UnityCG.cginc): as ComputeScreenPos, clip xy mapped to
+// [0, w] (x/w, y/w in [0, 1] after the divide, zw kept), for sampling a GrabPass texture;
+// where a target's texture rows start at the top (UNITY_UV_STARTS_AT_TOP) y is flipped.
+#ifdef UNITY_UV_STARTS_AT_TOP
+#define PBR_UNITY_GRAB_Y_SIGN -1.0
+#else
+#define PBR_UNITY_GRAB_Y_SIGN 1.0
+#endif
+float4 ComputeGrabScreenPos(float4 pos) {
+    float2 xy = 0.5 * (float2(pos.x, PBR_UNITY_GRAB_Y_SIGN * pos.y) + pos.w);
+    return float4(xy, pos.zw);
+}
+
+// Unity's colour-space constants in linear colour space (UnityCG.cginc, the branch without
+// UNITY_COLORSPACE_GAMMA): grey is the exact sRGB decode of 0.5 (IEC 61966-2-1:
+// ((0.5 + 0.055) / 1.055)^2.4), double is 2^2.2, the linear value of a gamma-space 2 (both
+// with alpha kept in gamma space); the luminance weights as Luminance() uses them, w = 1
+// marking linear mode (tests/surface/test_unity_cg.py checks grey and double).
+#define unity_ColorSpaceGrey float4(0.214041144, 0.214041144, 0.214041144, 0.5)
+#define unity_ColorSpaceDouble float4(4.59479380, 4.59479380, 4.59479380, 2.0)
+#define unity_ColorSpaceLuminance float4(PBR_UNITY_LUMINANCE_WEIGHTS, 1.0)
+
+// HLSLSupport.cginc: the coordinate of a projective texture read as written (a few old
+// platforms needed a swizzle there; none here).
+#define UNITY_PROJ_COORD(a) a
+// UnityCG.cginc: an opaque pass writes alpha 1 (Unity calls it where no alpha blending is on).
+#define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
+
+// UnityCG.cginc's fog helpers with no fog variant compiled (no fog in the harness).
+#define UNITY_FOG_COORDS(idx)
+#define UNITY_TRANSFER_FOG(o, outpos)
+#define UNITY_APPLY_FOG_COLOR(coord, col, fogCol)
+#define UNITY_APPLY_FOG(coord, col)
 #endif
