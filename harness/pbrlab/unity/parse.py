@@ -97,9 +97,10 @@ def _property(m: re.Match, where: str, warnings: list) -> M.Property:
     rng = None
     if kind_text.lower().startswith("range"):
         rng = (_number(m.group("lo").strip(), where), _number(m.group("hi").strip(), where))
-        if rng[0] > rng[1]:
-            raise UnityShaderError(f"{where}: {m.group('name')}: Range({m.group('lo').strip()}, "
-                                   f"{m.group('hi').strip()}) is empty (its minimum is above its maximum)")
+        if rng[0] > rng[1]:  # Unity draws the slider from the first value to the second
+            warnings.append(f"{where}: {m.group('name')}: Range({m.group('lo').strip()}, {m.group('hi').strip()}) "
+                            f"runs downward; its values are checked against [{rng[1]:g}, {rng[0]:g}]")
+            rng = (rng[1], rng[0])
         kind_text = "range"
     kind = PROPERTY_KINDS.get(kind_text.lower())
     if kind is None:
@@ -683,6 +684,11 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
             passes.append(vf)
         elif kind == "usepass":
             _, name, line = item
+            pass_name = name.rpartition("/")[2].lower()
+            if pass_name in SKIPPED_LIGHT_MODES or pass_name in ("caster", "shadowcollector"):
+                notes.append(f'{path}:{line}: UsePass "{name}" skipped: '
+                             f"{SKIPPED_LIGHT_MODES.get(pass_name, 'no shadow maps here')}")
+                continue
             passes.extend(_use_pass(name, line, path))
         elif kind == "grabpass":
             _, name, line = item

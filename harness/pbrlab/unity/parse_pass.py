@@ -79,7 +79,7 @@ def _structs(masked: str) -> dict:
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
         for decl in body.split(";"):
             decl = decl.strip()
-            if not decl:
+            if not decl or "(" in decl:  # a macro (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)): no member here
                 continue
             semantic = ""
             sm = re.search(r":\s*(\w+)\s*$", decl)
