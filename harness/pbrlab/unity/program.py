@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import hlsl, shaders
+from .. import hlsl, programs, shaders
 from ..errors import PbrlabError
 from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
@@ -100,7 +100,7 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
         members: dict = {}
         for gl_name in (n for n in program if "." in n):
             members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
-        program.extra = {"members": members}
+        program.extra = {"members": members, "shader": str(shader.path)}
         _PROGRAMS[key] = program
     return _PROGRAMS[key]
 
@@ -138,15 +138,68 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
         _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
     unit = first_unit
     for name, value in sorted(material.properties.items()):
+        kind = material.unity.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
-            if value.cube:
-                environment_cube().use(unit)
-            elif value.path is not None:
-                cache.texture(value.path, value.srgb).use(unit)
-            else:
-                cache.constant_texture(value.texel).use(unit)
-            _set(program, name, unit)
-            _set(program, f"{name}_ST", value.st)
-            unit += 1
+            if _bind_texture(program, name, kind, unit):  # else the compiler dropped the sampler
+                if value.cube:
+                    environment_cube().use(unit)
+                elif value.path is not None:
+                    cache.texture(value.path, value.srgb).use(unit)
+                else:
+                    cache.constant_texture(value.texel).use(unit)
+                unit += 1
+            _bind_vector(program, f"{name}_ST", f"{kind} property {name}'s tiling/offset _ST", value.st)
+        elif kind in ("Color", "Vector"):
+            _bind_vector(program, name, f"{kind} property {name}", value)
         else:
-            _set(program, name, value)
+            _bind_number(program, name, kind, value)
+
+
+# How Unity binds a property to the uniform of its name: a Float/Range/Int to a float (or an
+# int, truncated as a D3D cast does), a Color/Vector to a float4, float3, float2 or float (the
+# leading components: `half3 _Emission;` takes rgb), a texture to a sampler of its dimension.
+_FLOAT_VECTORS = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
+_SAMPLERS = {"2D": ("sampler2D",), "Cube": ("samplerCube",), "3D": ("sampler3D", "sampler2D")}
+
+
+def _mismatch(program, what: str, name: str, uniform) -> PbrlabError:
+    return PbrlabError(f"{_shader_name(program)}: {what} cannot be bound to the uniform '{name}', "
+                       f"declared {programs.uniform_type(uniform)} in the program")
+
+
+def _shader_name(program) -> str:
+    return (getattr(program, "extra", None) or {}).get("shader", "surface shader")
+
+
+def _bind_vector(program, name: str, what: str, value) -> None:
+    """A Color/Vector (or a texture's _ST) to a float4/3/2/1 uniform: its leading components."""
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        if programs.uniform_type(uniform) not in _FLOAT_VECTORS:
+            raise _mismatch(program, f"{what} (4 numbers)", name, uniform)
+    if uniforms:
+        n = _FLOAT_VECTORS[programs.uniform_type(uniforms[0])]
+        _set(program, name, tuple(value[:n]) if n > 1 else value[0])
+
+
+def _bind_number(program, name: str, kind: str, value: float) -> None:
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        gl_type = programs.uniform_type(uniform)
+        if gl_type not in ("float", "int", "uint", "bool"):
+            raise _mismatch(program, f"{kind} property {name} (a number)", name, uniform)
+    if uniforms:
+        gl_type = programs.uniform_type(uniforms[0])
+        _set(program, name, value if gl_type == "float" else
+             bool(value) if gl_type == "bool" else int(value))
+
+
+def _bind_texture(program, name: str, kind: str, unit: int) -> bool:
+    """The texture unit to a sampler of the property's dimension; False if none is kept."""
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        if programs.uniform_type(uniform) not in _SAMPLERS.get(kind, ("sampler2D",)):
+            raise _mismatch(program, f"{kind} texture property {name}", name, uniform)
+    if uniforms:
+        _set(program, name, unit)
+    return bool(uniforms)
