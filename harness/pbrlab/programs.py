@@ -153,10 +153,12 @@ def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Pa
                          "shader": str(surface) if surface is not None else None}
         return program, paths
 
-    return _program_cache(ctx).get(key, build)
+    return program_cache(ctx).get(key, build)
 
 
-def _program_cache(ctx) -> FileCache:
+def program_cache(ctx) -> FileCache:
+    """The context's scene programs (templates and Unity surface shaders alike): a FileCache
+    of ``PROGRAMS_PER_CONTEXT``, entries released when dropped."""
     extra = ctx.extra if isinstance(ctx.extra, dict) else {}
     if _EXTRA_KEY not in extra:
         extra[_EXTRA_KEY] = FileCache(PROGRAMS_PER_CONTEXT, lambda program: program.release())

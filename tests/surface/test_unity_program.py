@@ -119,3 +119,72 @@ def test_a_surface_texture_named_like_a_harness_uniform_is_a_clash_error(tmp_pat
     with pytest.raises(PbrlabError, match=r"surf\.glsl: uniform 'u_albedo': the program declares it "
                                           r"sampler2D, and pbrlab sets a uniform of that name to 3 numbers"):
         _render(tmp_path, "surf.glsl", "glsl", textures={"u_albedo": {"path": "tex.png", "srgb": True}})
+
+
+BROKEN = _shader(
+    '        _Tint ("Tint", Float) = 1',
+    """        #include "helper.cginc"
+        float _Tint;
+        struct Input { float4 color : COLOR; };
+        void surf (Input IN, inout SurfaceOutput o) {
+            o.Albedo = _Tint * pbr_test_helper();
+        }""")
+SURF_LINE = BROKEN.splitlines().index("            o.Albedo = _Tint * pbr_test_helper();") + 1  # 1-based
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_compile_error_names_the_shader_file_and_its_line(tmp_path, language):
+    (tmp_path / "helper.cginc").write_text("float pbr_test_helper() { return 0.5; }\n")
+    (tmp_path / "broken.shader").write_text(BROKEN.replace("_Tint * ", "_Tint * undeclared_thing * "))
+    with pytest.raises(ShaderCompileError) as info:
+        _render(tmp_path, "broken.shader", language)
+    assert f"broken.shader:{SURF_LINE}:" in str(info.value), str(info.value)
+    assert "pbrlab-unity-port" not in str(info.value) and "/tmp/pbrlab-" not in str(info.value)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_compile_error_in_a_local_cginc_names_the_cginc_and_its_line(tmp_path, language):
+    (tmp_path / "helper.cginc").write_text("// helper\n\nfloat pbr_test_helper() { return undeclared_in_cginc; }\n")
+    (tmp_path / "broken.shader").write_text(BROKEN)
+    with pytest.raises(ShaderCompileError, match=r"helper\.cginc:3:"):
+        _render(tmp_path, "broken.shader", language)
+
+
+BOM = b"\xef\xbb\xbf"
+BOM_SHADER = _shader(
+    "",
+    """        #include "tint.cginc"
+        struct Input { float4 color : COLOR; };
+        void surf (Input IN, inout SurfaceOutput o) {
+            o.Albedo = 0;
+            o.Emission = float3(PBR_TEST_TINT, 0.5, 0.25);
+        }""")
+
+
+def _bom_includes(folder: Path):
+    """tint.cginc opens with a BOM and an #include on its first line (a second BOM file)."""
+    (folder / "tint.cginc").write_bytes(BOM + b'#include "tint_value.cginc"\n#define PBR_TEST_TINT (TINT_R * 1.0)\n')
+    (folder / "tint_value.cginc").write_bytes(BOM + b"#define TINT_R 0.75\n")
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("form", ["cginc", "shader", "bare program"])
+def test_files_opening_with_a_utf8_byte_order_mark_compile(tmp_path, language, form):
+    """Editors on Windows save UTF-8 with a BOM; glslang and Mesa reject it at the first #."""
+    _bom_includes(tmp_path)
+    if form == "cginc":
+        name, data = "tint.shader", BOM_SHADER.encode()
+    elif form == "shader":
+        name, data = "tint.shader", BOM + BOM_SHADER.encode()
+    else:  # the bare CGPROGRAM text, its first line an #include right after the BOM
+        name, data = "tint.cgprogram", BOM + b"""#include "tint.cginc"
+#pragma surface surf Lambert
+struct Input { float4 color : COLOR; };
+void surf (Input IN, inout SurfaceOutput o) {
+    o.Albedo = 0;
+    o.Emission = float3(PBR_TEST_TINT, 0.5, 0.25);
+}
+"""
+    (tmp_path / name).write_bytes(data)
+    centre = _render(tmp_path, name, language)[SIZE // 2, SIZE // 2, :3]
+    np.testing.assert_allclose(centre, [0.75, 0.5, 0.25], atol=EXACT)

@@ -4,23 +4,28 @@
     bind(program, material, obj, frame, cache, first_unit)
 
 HLSL: the generated text (generate.py) through glslang and spirv-cross, as every HLSL scene
-program (programs.py). GLSL: the same glue around the ``port-unity`` port of the CGPROGRAM
-(port.py), included as its own file so compile errors name it. Both get the harness's GLSL
-vertex stage. Unity's stand-in ``.cginc`` files (``cginc/``) resolve the shader's includes.
+program (programs.py); a ``#line`` puts the CGPROGRAM at its line of the ``.shader``. GLSL:
+the same glue around the ``port-unity`` port of the CGPROGRAM (port.py), which keeps its line
+count; the port is included as an in-memory file (``shaders.VirtualFile``) named after the
+``.shader`` and numbered from the CGPROGRAM's line, so compile errors on both paths read
+``X.shader:28: ...`` (a local ``.cginc``'s at its own path and line). Both get the harness's
+GLSL vertex stage. Unity's stand-in ``.cginc`` files (``cginc/``) resolve the built-in includes.
+
+Programs are kept in the context's scene-program cache (``programs.program_cache``: at most
+``programs.PROGRAMS_PER_CONTEXT``, least recently used released), each entry rebuilt when the
+``.shader`` or any file it includes, recursively, changed on disk.
 """
 
 from __future__ import annotations
 
-import atexit
 import re
-import shutil
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from .. import hlsl, programs, shaders
 from ..errors import PbrlabError
+from ..file_identity import include_closure
 from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
 from . import generate, port
@@ -29,10 +34,9 @@ from .properties import TextureValue
 
 CGINC = Path(__file__).parent / "cginc"
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
-_PROGRAMS: dict = {}
-# The GLSL path's in-memory ports, written where the include resolver finds them; removed at exit.
-_PORTS = Path(tempfile.mkdtemp(prefix="pbrlab-unity-ports-"))
-atexit.register(shutil.rmtree, _PORTS, ignore_errors=True)
+# The include name under which the GLSL path's generated text pulls in the in-memory port
+# (no file has it: shaders.expand finds it among its virtual files first).
+_PORT_INCLUDE = "pbrlab-unity-port:{}"
 # Unity's _SpecColor when a shader's Properties lack it: Unity's legacy shaders' default
 # ("Specular Color", Color) = (0.5, 0.5, 0.5, 1).
 DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
@@ -41,30 +45,43 @@ DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
 SPECCUBE_HDR = (1.0, 1.0, 0.0, 0.0)
 
 
-def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
-    """(text, include dirs) of the fragment program."""
-    dirs = [TEMPLATES, CGINC, shader.path.parent]
+def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
+    return [TEMPLATES, CGINC, shader.path.parent]
+
+
+def _program_include(shader: M.SurfaceShader) -> tuple[str, dict]:
+    """(the line that includes the GLSL program, the virtual files it needs)."""
     if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
-        if language == "hlsl":
-            raise PbrlabError(f"surface {shader.path}: a port-unity GLSL port renders only in GLSL; "
-                              "for --language hlsl name the original .shader file")
-        text = generate.fragment_source(shader, "glsl", stem, f'#include "{shader.path.name}"',
-                                        shader.path.name, defines)
-        return text, dirs + [shader.path.parent]
+        return f'#include "{shader.path.name}"', {}
+    name = _PORT_INCLUDE.format(shader.path.name)
+    text = shaders.strip_bom(port.port_program(shader))
+    return f'#include "{name}"', {name: shaders.VirtualFile(text, str(shader.path), shader.program_line)}
+
+
+def _hlsl_program(shader: M.SurfaceShader) -> str:
+    """The CGPROGRAM as written, less a byte-order mark opening a bare program file."""
+    return shaders.strip_bom(shader.program)
+
+
+def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
+    """(text, include dirs, virtual files) of the fragment program."""
+    if shader.language == "glsl" and language == "hlsl":
+        raise PbrlabError(f"surface {shader.path}: a port-unity GLSL port renders only in GLSL; "
+                          "for --language hlsl name the original .shader file")
     if language == "hlsl":
-        return generate.fragment_source(shader, "hlsl", stem, shader.program, shader.path.name, defines), dirs
-    ported = _PORTS / f"{abs(hash((str(shader.path), shader.program)))}" / (shader.path.stem + ".glsl")
-    ported.parent.mkdir(parents=True, exist_ok=True)
-    ported.write_text(port.port_program(shader), encoding="utf-8")
-    text = generate.fragment_source(shader, "glsl", stem, f'#include "{ported.name}"', ported.name, defines)
-    return text, dirs + [ported.parent]
+        return (generate.fragment_source(shader, "hlsl", stem, _hlsl_program(shader), str(shader.path), defines),
+                _include_dirs(shader), {})
+    include, virtual = _program_include(shader)
+    text = generate.fragment_source(shader, "glsl", stem, include, shader.path.name, defines)
+    return text, _include_dirs(shader), virtual
 
 
-def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -> shaders.Source:
-    """The vertex stage running the shader's vertex: function (generate.vertex_source)."""
+def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -> tuple:
+    """(the vertex stage running the shader's vertex: function (generate.vertex_source),
+    the files it read)."""
     display = f"{shader.path.name} (generated {language} vertex stage)"
     if language == "hlsl":
-        text = generate.vertex_source(shader, "hlsl", shader.program, shader.path.name, defines)
+        text = generate.vertex_source(shader, "hlsl", _hlsl_program(shader), str(shader.path), defines)
         glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage="vert"), plain_uniforms=True)
         # Both stages hold a `uniform _Global <id>;` of their own members: rename this one so
         # the program links (programs.set_uniform then sets the member in each stage).
@@ -72,10 +89,12 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
         if instance:
             glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
             glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
-        return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
-    ported = dirs[-1] / (shader.path.name if shader.language == "glsl" else shader.path.stem + ".glsl")
-    text = generate.vertex_source(shader, "glsl", f'#include "{ported.name}"', ported.name, defines)
-    return shaders.expand(text, display, include_dirs=dirs)
+        return (shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"]),
+                include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
+    include, virtual = _program_include(shader)
+    text = generate.vertex_source(shader, "glsl", include, shader.path.name, defines)
+    source = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+    return source, source.paths
 
 
 def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, defines: dict):
@@ -83,26 +102,33 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
     the mesh one (spheres are tessellated: tessellate.py)."""
     if shader.vertex is not None:
         stem = "mesh"
-    key = (id(ctx), str(shader.path), shader.program, language, stem, tuple(sorted(defines.items())))
-    if key not in _PROGRAMS:
-        text, dirs = fragment_text(shader, language, stem, defines)
+    key = ("unity", str(shader.path), shader.language, shader.program, shader.program_line,
+           language, stem, tuple(sorted(defines.items())))
+
+    def build():
+        text, dirs, virtual = fragment_text(shader, language, stem, defines)
         display = f"{shader.path.name} (generated {language} {stem} program)"
+        paths = [shader.path]
         if language == "hlsl":
             glsl = hlsl.hlsl_to_glsl(text, display, dirs, plain_uniforms=True)
             fragment = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+            paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
         else:
-            fragment = shaders.expand(text, display, include_dirs=dirs)
+            fragment = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+            paths += fragment.paths
         if shader.vertex is not None:
-            vertex = _vertex_stage(shader, language, defines, dirs)
+            vertex, vertex_paths = _vertex_stage(shader, language, defines, dirs)
         else:
             vertex = template_source(VERTEX[stem], defines)
+            vertex_paths = [TEMPLATES / VERTEX[stem], *vertex.paths]
         program = shaders.build_program(ctx, vertex, fragment)
         members: dict = {}
         for gl_name in (n for n in program if "." in n):
             members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
         program.extra = {"members": members, "shader": str(shader.path)}
-        _PROGRAMS[key] = program
-    return _PROGRAMS[key]
+        return program, [*paths, *vertex_paths]
+
+    return programs.program_cache(ctx).get(key, build)
 
 
 def object_matrix(obj) -> np.ndarray:
