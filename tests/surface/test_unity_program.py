@@ -188,3 +188,27 @@ void surf (Input IN, inout SurfaceOutput o) {
     (tmp_path / name).write_bytes(data)
     centre = _render(tmp_path, name, language)[SIZE // 2, SIZE // 2, :3]
     np.testing.assert_allclose(centre, [0.75, 0.5, 0.25], atol=EXACT)
+
+
+def test_unity_programs_are_bounded_and_released_with_the_scene_programs(tmp_path, gl_context, monkeypatch):
+    """The context's one program cache holds Unity programs too: least recently used
+    released past its size, and an evicted shader rebuilt on its next render."""
+    from pbrlab import programs
+    from pbrlab.file_identity import FileCache
+
+    released = []
+    cache = FileCache(3, lambda program: (released.append(program), program.release()))
+    monkeypatch.setitem(gl_context.extra, programs._EXTRA_KEY, cache)
+    for k in range(6):
+        (tmp_path / f"e{k}.shader").write_text(EMISSION.replace("* 2.0;", f"* {k + 1}.0;"))
+    scenes = [scene.parse_scene({"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "fov_y_deg": 40,
+                                            "size": [SIZE, SIZE]}, "lights": [], "environment": None,
+                                 "materials": {"m": {"surface": f"e{k}.shader"}},
+                                 "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}]},
+                                "<test>", tmp_path) for k in range(6)]
+    first = render.render_scene(scenes[0], gl_context).linear
+    for s in scenes[1:]:
+        render.render_scene(s, gl_context)
+        assert len(cache) <= 3
+    assert len(released) >= 3
+    np.testing.assert_array_equal(render.render_scene(scenes[0], gl_context).linear, first)
