@@ -39,7 +39,7 @@ def include_closure(text: str, search_dirs: Iterable, here: Path | None = None) 
     expander: the including file's folder, then ``search_dirs`` in order."""
     search = [Path(d) for d in search_dirs]
     found: list[Path] = []
-    pending = [(text, here)]
+    pending = [(text.removeprefix("\ufeff"), here)]
     while pending:
         body, folder = pending.pop()
         for name in _INCLUDE.findall(body):
@@ -50,8 +50,9 @@ def include_closure(text: str, search_dirs: Iterable, here: Path | None = None) 
                     if resolved not in found:
                         found.append(resolved)
                         try:
-                            pending.append((resolved.read_text(encoding="utf-8", errors="replace"),
-                                            resolved.parent))
+                            body = resolved.read_text(encoding="utf-8", errors="replace")
+                            # a leading byte-order mark would hide a first-line #include
+                            pending.append((body.removeprefix("\ufeff"), resolved.parent))
                         except OSError:
                             pass
                     break

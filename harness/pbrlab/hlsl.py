@@ -33,7 +33,7 @@ from pathlib import Path
 from .errors import PbrlabError, ShaderCompileError
 from .file_identity import FileCache, include_closure
 from .locations import locate
-from .shaders import GLSL_ROOT
+from .shaders import GLSL_ROOT, strip_bom
 
 HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
@@ -45,6 +45,7 @@ _TIMEOUT_S = 60
 # glslang: "ERROR: path:line: message" / "WARNING: path:line: message"
 _GLSLANG_MESSAGE = re.compile(r"^(ERROR|WARNING): (.+?):(\d+): (.*)$")
 _ENTRY_NAME = "pbrlab_entry.hlsl"
+_BOM = b"\xef\xbb\xbf"  # UTF-8 byte-order mark (shaders.strip_bom)
 
 
 def tool(name: str) -> str:
@@ -82,20 +83,48 @@ def map_messages(log: str, name: str, include_dirs=()) -> str:
     return "\n".join(out)
 
 
+def _bom_free_search(text: str, include_dirs, tmp: Path) -> list[Path]:
+    """The -I directories for glslang, which reads includes itself and fails on a UTF-8
+    byte-order mark ("unexpected HASH_TOKEN"). When a file the text includes (recursively,
+    from ``include_dirs``) starts with one, each directory is preceded by a copy, without
+    BOMs, of the included files under it at the same relative paths: every include resolves
+    to the same file as before (a copy's own folder holds its siblings' copies too), minus
+    the mark."""
+    dirs = [Path(d).resolve() for d in include_dirs]
+    closure = include_closure(text, dirs)
+    if not any(path.read_bytes().startswith(_BOM) for path in closure):
+        return dirs
+    search = []
+    for i, directory in enumerate(dirs):
+        shadow = tmp / f"bom-free-{i}"
+        for path in closure:
+            try:
+                relative = path.relative_to(directory)
+            except ValueError:
+                continue
+            copy = shadow / relative
+            copy.parent.mkdir(parents=True, exist_ok=True)
+            data = path.read_bytes()
+            copy.write_bytes(data[len(_BOM):] if data.startswith(_BOM) else data)
+        search += [shadow, directory]
+    return search
+
+
 def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
                   extra_args=(), stage: str = "frag", entry: str = "main") -> bytes:
     """HLSL source -> SPIR-V bytes; ShaderCompileError (mapped messages) if it fails."""
     glslang = tool(GLSLANG)
-    include_args = [f"-I{Path(d).resolve()}" for d in include_dirs] + [f"-I{HLSL_ROOT.resolve()}"]
     with tempfile.TemporaryDirectory(prefix="pbrlab-hlsl-") as tmp:
+        search = _bom_free_search(text, include_dirs, Path(tmp))
+        include_args = [f"-I{d}" for d in search] + [f"-I{HLSL_ROOT.resolve()}"]
         src = Path(tmp) / _ENTRY_NAME
         out = Path(tmp) / "out.spv"
-        src.write_text(text, encoding="utf-8")
+        src.write_text(strip_bom(text), encoding="utf-8")
         cmd = [glslang, "-D", "-V", "-e", entry, "-S", stage, "--auto-sampled-textures",
                *([] if optimize else ["-Od"]), *extra_args, *include_args, src.name, "-o", out.name]
         proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=_TIMEOUT_S)
         if proc.returncode != 0 or not out.is_file():
-            messages = map_messages(proc.stdout + proc.stderr, name, include_dirs)
+            messages = map_messages(proc.stdout + proc.stderr, name, search)
             raise ShaderCompileError(f"HLSL failed to compile (glslang):\n{messages}")
         return out.read_bytes()
 

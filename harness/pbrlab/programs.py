@@ -26,6 +26,7 @@ and ``mul(M, v)`` in HLSL computes the same ``M v`` as ``M * v`` in GLSL
 
 from __future__ import annotations
 
+import struct
 from importlib import resources
 from pathlib import Path
 
@@ -40,6 +41,19 @@ FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
 LANGUAGES = tuple(FRAGMENT_SUFFIX)
 DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
 _GL_FLOAT_MATRICES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}  # GL_FLOAT_MAT2, MAT3, MAT4
+# A uniform's GL type (glGetActiveUniform; the GL 4.6 core specification's table 7.3) by
+# its GLSL name, for binding checks and messages.
+GL_UNIFORM_TYPES = {
+    0x1406: "float", 0x8B50: "vec2", 0x8B51: "vec3", 0x8B52: "vec4",
+    0x1404: "int", 0x8B53: "ivec2", 0x8B54: "ivec3", 0x8B55: "ivec4",
+    0x1405: "uint", 0x8DC6: "uvec2", 0x8DC7: "uvec3", 0x8DC8: "uvec4",
+    0x8B56: "bool", 0x8B57: "bvec2", 0x8B58: "bvec3", 0x8B59: "bvec4",
+    0x8B5A: "mat2", 0x8B5B: "mat3", 0x8B5C: "mat4",
+    0x8B65: "mat2x3", 0x8B66: "mat2x4", 0x8B67: "mat3x2", 0x8B68: "mat3x4", 0x8B69: "mat4x2", 0x8B6A: "mat4x3",
+    0x8B5D: "sampler1D", 0x8B5E: "sampler2D", 0x8B5F: "sampler3D", 0x8B60: "samplerCube",
+    0x8B61: "sampler1DShadow", 0x8B62: "sampler2DShadow", 0x8DC1: "sampler2DArray",
+    0x8DC4: "samplerCubeShadow", 0x8DC9: "isampler2D", 0x8DD2: "usampler2D",
+}
 # Programs kept per GL context (in ctx.extra, so they go with it), least recently used
 # dropped and released beyond this: about 0.5 MB of llvmpipe code each (issue 14 measured
 # 2,002 programs in 1,186 MB), and a scene uses a few dozen at most.
@@ -135,13 +149,16 @@ def program_from_templates(ctx, vert: str, frag: str, defines: dict, surface: Pa
             fragment = template_source(frag, defines, surface)
             paths += fragment.paths
         program = shaders.build_program(ctx, vertex, fragment)
-        program.extra = {"members": _struct_members(program)}
+        program.extra = {"members": _struct_members(program),
+                         "shader": str(surface) if surface is not None else None}
         return program, paths
 
-    return _program_cache(ctx).get(key, build)
+    return program_cache(ctx).get(key, build)
 
 
-def _program_cache(ctx) -> FileCache:
+def program_cache(ctx) -> FileCache:
+    """The context's scene programs (templates and Unity surface shaders alike): a FileCache
+    of ``PROGRAMS_PER_CONTEXT``, entries released when dropped."""
     extra = ctx.extra if isinstance(ctx.extra, dict) else {}
     if _EXTRA_KEY not in extra:
         extra[_EXTRA_KEY] = FileCache(PROGRAMS_PER_CONTEXT, lambda program: program.release())
@@ -152,6 +169,27 @@ def _program_cache(ctx) -> FileCache:
 def _struct_members(program) -> dict:
     """Template name -> GL name of the uniforms inside a uniform struct (HLSL's $Global)."""
     return {name.split(".", 1)[1]: name for name in program if "." in name}
+
+
+def uniform_type(uniform) -> str:
+    """A uniform's GLSL type name (``vec3``, ``sampler2D``; ``vec3[4]`` for an array)."""
+    name = GL_UNIFORM_TYPES.get(uniform.gl_type, f"GL type 0x{uniform.gl_type:04x}")
+    return name + (f"[{uniform.array_length}]" if uniform.array_length > 1 else "")
+
+
+def uniforms_named(program, name) -> list:
+    """The GL uniforms that hold the template uniform ``name``: the loose one and the HLSL
+    stages' struct members (none when the compiler dropped it as unused)."""
+    return [uniform for uniform, _ in _uniforms(program, name)]
+
+
+def _describe(value) -> str:
+    if isinstance(value, (bool, int, float, np.number)):
+        return f"a {type(value).__name__} ({value!r})"
+    try:
+        return f"{len(value)} numbers"
+    except TypeError:
+        return repr(value)
 
 
 def _uniforms(program, name):
@@ -170,9 +208,21 @@ def set_uniform(program, name, value):
     """Set a uniform if the compiler kept it (unused uniforms are optimised away)."""
     for uniform, in_struct in _uniforms(program, name):
         size = _GL_FLOAT_MATRICES.get(uniform.gl_type)
-        if in_struct and size is not None:  # column-major data of M -> that of M^T (module doc)
-            value = tuple(np.asarray(value, np.float32).reshape(size, size).T.reshape(-1).tolist())
-        uniform.value = value
+        try:
+            data = value
+            if in_struct and size is not None:  # column-major data of M -> that of M^T (module doc)
+                # (per uniform: the vertex and fragment stages' members each take M^T once)
+                data = tuple(np.asarray(value, np.float32).reshape(size, size).T.reshape(-1).tolist())
+            uniform.value = data
+        except (struct.error, TypeError, ValueError):
+            # the harness sets its own uniforms by name; a shader's uniform of another type
+            # under one of those names (a surface sampler called u_albedo) lands here
+            shader = (getattr(program, "extra", None) or {}).get("shader")
+            raise PbrlabError(
+                f"{shader + ': ' if shader else ''}uniform '{name}': the program declares it "
+                f"{uniform_type(uniform)}, and pbrlab sets a uniform of that name to "
+                f"{_describe(value)}: the shader's '{name}' clashes with one of the harness's own "
+                "uniforms; rename it in the shader") from None
 
 
 def set_uniform_array(program, name, values):

@@ -45,6 +45,17 @@ def _is_guarded(text: str) -> bool:
 _MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(error|warning)?:?\s*(.*)$")
 
 
+@dataclass(frozen=True)
+class VirtualFile:
+    """Text that ``expand`` includes under a name without a file on disk: a program made in
+    memory (a Unity shader's GLSL port), reported as the file ``display`` from line
+    ``first_line`` (where that text starts in it)."""
+
+    text: str
+    display: str
+    first_line: int = 1
+
+
 @dataclass
 class Source:
     """An expanded shader: GLSL text plus the table from source-string number to path."""
@@ -90,12 +101,15 @@ def _display_name(path: Path) -> str:
         return str(path)
 
 
-def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True) -> Source:
+def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True,
+           virtual: dict | None = None) -> Source:
     """Expand the includes of ``text`` (named ``name`` in messages).
 
     With ``line_directives`` every file switch emits ``#line``; without, files are
     separated by comments (for amalgamation). A ``#version`` line stays first.
+    ``virtual`` maps include names to ``VirtualFile``s, found before any directory.
     """
+    virtual = virtual or {}
     search = include_path(include_dirs)
     source = Source("", [])
     # A guarded file included once outside any #if is written once: a second copy would
@@ -108,12 +122,12 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
         if line_directives:
             lines_out.append(f"#line {file_index * LINE_BLOCK + next_line} {file_index}")
 
-    def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool):
+    def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool, first_line: int = 1):
         file_index = len(source.files)
         source.files.append(display)
-        emit_line_marker(file_index, 1)
+        emit_line_marker(file_index, first_line)
         depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
-        for number, line in enumerate(body.splitlines(), start=1):
+        for number, line in enumerate(body.splitlines(), start=first_line):
             if _IF.match(line):
                 depth += 1
             elif _ENDIF.match(line):
@@ -129,6 +143,14 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 # moderngl resolves '#include' wherever it appears, comments included;
                 # what is left after expansion is commentary, so it is neutralised.
                 lines_out.append(line.replace("#include", "# include"))
+                continue
+            if m.group(1) in virtual:
+                made = virtual[m.group(1)]
+                marker = Path(f"<virtual {m.group(1)}>")
+                if marker in stack:
+                    raise PbrlabError(f"{display}:{number}: include cycle through {made.display}")
+                walk(made.text, made.display, stack + (marker,), conditional or depth > 0, made.first_line)
+                emit_line_marker(file_index, number + 1)
                 continue
             target = resolve_include(m.group(1), search)
             if target is None:
@@ -160,6 +182,15 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
     return source
 
 
+BOM = "\ufeff"  # U+FEFF, a UTF-8 byte-order mark (EF BB BF) when it opens a file
+
+
+def strip_bom(text: str) -> str:
+    """``text`` without a leading byte-order mark, which editors on Windows write and no
+    shader compiler reads (glslang: "unexpected HASH_TOKEN" at the first #)."""
+    return text[1:] if text.startswith(BOM) else text
+
+
 def read_source(path: Path, where: str = "") -> str:
     """A shader file's text; unreadable or non-UTF-8 files raise PbrlabError naming it
     (``where``: the includer's file and line, when there is one)."""
@@ -168,7 +199,7 @@ def read_source(path: Path, where: str = "") -> str:
     except OSError as exc:
         raise PbrlabError(f"{where}cannot read shader file {path}: {exc.strerror or exc}") from None
     try:
-        return data.decode("utf-8")
+        return strip_bom(data.decode("utf-8"))
     except UnicodeDecodeError as exc:
         line = data[:exc.start].count(b"\n") + 1
         raise PbrlabError(f"{where}{path}:{line}: not UTF-8 text (byte 0x{data[exc.start]:02x} "

@@ -53,7 +53,7 @@ def test_hlsl_programs_are_the_cross_compiled_hlsl(gl_context):
     """The renders above ran the HLSL: every scene program's fragment stage holds the HLSL
     $Global cbuffer as spirv-cross's uniform struct, with the material's uniforms in it."""
     render_scene(_lit_scene(), gl_context, language="hlsl")
-    hlsl_programs = {key[1]: program for key, program in programs._program_cache(gl_context).items()
+    hlsl_programs = {key[1]: program for key, program in programs.program_cache(gl_context).items()
                      if key[1].endswith(".hlsl")}
     assert set(hlsl_programs) == {"sphere.hlsl", "mesh.hlsl", "resolve.hlsl"}
     assert "u_albedo" in hlsl_programs["sphere.hlsl"].extra["members"]

@@ -76,10 +76,51 @@ def test_an_edit_between_two_renders_gives_the_new_image(surface_scene, gl_conte
     after = _render(folder, gl_context)
     assert not np.array_equal(before, after), f"the {edit} edit did not reach the image"
     # and the result is that of a fresh process's first render: drop every cache, render again
-    programs._program_cache(gl_context).clear()
+    programs.program_cache(gl_context).clear()
     gl_context.extra.pop(resource_cache._EXTRA_KEY, None)
     meshes._MESH_DATA.clear()
     np.testing.assert_array_equal(_render(folder, gl_context), after)
+    census["cache after edit", "handled"] += 1
+
+
+UNITY_SHADER = """Shader "Test/IncludedTint" {
+    SubShader {
+        CGPROGRAM
+        #pragma surface surf Lambert
+        #include "tint.cginc"
+        struct Input { float4 color : COLOR; };
+        void surf (Input IN, inout SurfaceOutput o) {
+            o.Albedo = 0;
+            o.Emission = float3(PBR_TEST_TINT, 0.5, 0.25);
+        }
+        ENDCG
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", ["hlsl", "glsl"])
+def test_an_edited_cginc_of_a_unity_shader_gives_the_new_image(tmp_path, gl_context, language, census):
+    """The Unity program cache keys on the .shader and every file it includes, recursively."""
+    # (a local .cginc is not ported for GLSL: macros read alike in both languages)
+    (tmp_path / "tint.cginc").write_text('#include "tint_value.cginc"\n#define PBR_TEST_TINT (TINT_R * 1.0)\n')
+    (tmp_path / "tint_value.cginc").write_text("#define TINT_R 0.25\n")
+    (tmp_path / "tinted.shader").write_text(UNITY_SHADER)
+    data = base_scene()
+    data["environment"] = None
+    data["materials"] = {"m": {"surface": "tinted.shader"}}
+    data["objects"] = [{"sphere": {"center": [0, 0, 0], "radius": 1.0}, "material": "m"}]
+    (tmp_path / "scene.json").write_text(json.dumps(data))
+
+    def render():
+        return render_scene(load_scene(tmp_path / "scene.json"), gl_context, language=language).linear
+
+    before = render()
+    _replace(tmp_path / "tint_value.cginc", b"#define TINT_R 0.75\n")  # two includes deep, same size and mtime
+    after = render()
+    centre = tuple(s // 2 for s in after.shape[:2])
+    np.testing.assert_allclose(before[centre][:3], [0.25, 0.5, 0.25], atol=1e-6)
+    np.testing.assert_allclose(after[centre][:3], [0.75, 0.5, 0.25], atol=1e-6)
     census["cache after edit", "handled"] += 1
 
 

@@ -111,9 +111,9 @@ def test_material_and_scene_features_follow_what_the_scene_can_show():
 def test_programs_are_cached_across_renders(gl_context):
     scene = parse_scene(CHARTS["chart_f0"]())
     render.render_scene(scene, gl_context)
-    compiled = programs._program_cache(gl_context).builds
+    compiled = programs.program_cache(gl_context).builds
     render.render_scene(parse_scene(CHARTS["chart_f0"]()), gl_context)
-    assert programs._program_cache(gl_context).builds == compiled
+    assert programs.program_cache(gl_context).builds == compiled
 
 
 def test_variant_explosion_falls_back_to_the_full_program_with_a_warning():
