@@ -336,7 +336,10 @@ def _grab(ctx, hdr, holder):
     """A Unity GrabPass: a copy of the float target as drawn so far (released after the render)."""
     texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
     texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
-    ctx.copy_framebuffer(texture, hdr.fbo)
+    copy = ctx.framebuffer([texture])
+    ctx.copy_framebuffer(copy, hdr.fbo)  # a framebuffer blit: float to float, exact
+    copy.release()
+    hdr.fbo.use()
     holder.append(texture)
     return texture
 

@@ -49,7 +49,7 @@ def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
     return [TEMPLATES, CGINC, shader.path.parent]
 
 
-def _program_include(shader: M.SurfaceShader) -> tuple[str, dict]:
+def program_include(shader) -> tuple[str, dict]:
     """(the line that includes the GLSL program, the virtual files it needs)."""
     if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
         return f'#include "{shader.path.name}"', {}
@@ -58,7 +58,7 @@ def _program_include(shader: M.SurfaceShader) -> tuple[str, dict]:
     return f'#include "{name}"', {name: shaders.VirtualFile(text, str(shader.path), shader.program_line)}
 
 
-def _hlsl_program(shader: M.SurfaceShader) -> str:
+def hlsl_program(shader) -> str:
     """The CGPROGRAM as written, less a byte-order mark opening a bare program file."""
     return shaders.strip_bom(shader.program)
 
@@ -69,9 +69,9 @@ def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: di
         raise PbrlabError(f"surface {shader.path}: a port-unity GLSL port renders only in GLSL; "
                           "for --language hlsl name the original .shader file")
     if language == "hlsl":
-        return (generate.fragment_source(shader, "hlsl", stem, _hlsl_program(shader), str(shader.path), defines),
+        return (generate.fragment_source(shader, "hlsl", stem, hlsl_program(shader), str(shader.path), defines),
                 _include_dirs(shader), {})
-    include, virtual = _program_include(shader)
+    include, virtual = program_include(shader)
     text = generate.fragment_source(shader, "glsl", stem, include, shader.path.name, defines)
     return text, _include_dirs(shader), virtual
 
@@ -81,33 +81,35 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
     the files it read)."""
     display = f"{shader.path.name} (generated {language} vertex stage)"
     if language == "hlsl":
-        text = generate.vertex_source(shader, "hlsl", _hlsl_program(shader), str(shader.path), defines)
-        glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage="vert"), plain_uniforms=True)
-        # Both stages hold a `uniform _Global <id>;` of their own members: rename this one so
-        # the program links (programs.set_uniform then sets the member in each stage).
-        instance = re.search(r"uniform _Global (\w+);", glsl)
-        if instance:
-            glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
-            glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
+        text = generate.vertex_source(shader, "hlsl", hlsl_program(shader), str(shader.path), defines)
+        glsl = rename_vertex_globals(
+            hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage="vert"), plain_uniforms=True))
         return (shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"]),
                 include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
-    include, virtual = _program_include(shader)
+    include, virtual = program_include(shader)
     text = generate.vertex_source(shader, "glsl", include, shader.path.name, defines)
     source = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
     return source, source.paths
 
 
-def remember_program(key, build):
-    """The program cached under ``key``, else ``build()``'s, with its struct members indexed
-    (``bind`` sets an HLSL stage's globals through them)."""
-    if key not in _PROGRAMS:
-        program = build()
-        members: dict = {}
-        for gl_name in (n for n in program if "." in n):
-            members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
-        program.extra = {"members": members}
-        _PROGRAMS[key] = program
-    return _PROGRAMS[key]
+def indexed(program, shader: Path):
+    """``program`` with its struct members indexed (``bind`` sets an HLSL stage's globals
+    through them) and the shader it runs named (for binding errors)."""
+    members: dict = {}
+    for gl_name in (n for n in program if "." in n):
+        members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
+    program.extra = {"members": members, "shader": str(shader)}
+    return program
+
+
+def rename_vertex_globals(glsl: str) -> str:
+    """Both HLSL stages hold a `uniform _Global <id>;` of their own members: rename the
+    vertex stage's so the program links (programs.set_uniform then sets the member in each)."""
+    instance = re.search(r"uniform _Global (\w+);", glsl)
+    if instance:
+        glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
+        glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
+    return glsl
 
 
 def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, defines: dict):
@@ -134,11 +136,7 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
         else:
             vertex = template_source(VERTEX[stem], defines)
             vertex_paths = [TEMPLATES / VERTEX[stem], *vertex.paths]
-        program = shaders.build_program(ctx, vertex, fragment)
-        members: dict = {}
-        for gl_name in (n for n in program if "." in n):
-            members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
-        program.extra = {"members": members, "shader": str(shader.path)}
+        program = indexed(shaders.build_program(ctx, vertex, fragment), shader.path)
         return program, [*paths, *vertex_paths]
 
     return programs.program_cache(ctx).get(key, build)

@@ -4,35 +4,30 @@
 
 HLSL: each stage's generated text (``generate_pass``) through glslang and spirv-cross, as the
 surface path's HLSL vertex stage. GLSL: the same entry points around the ``port-unity`` port
-of the program. Binding is ``program.bind``'s, as for a surface program (same Unity globals,
-same properties).
+of the program, included as an in-memory file named after the ``.shader`` (errors read
+``X.shader:LINE`` on both paths). Programs live in the context's scene-program cache, keyed
+on every file they read; binding is ``program.bind``'s, as for a surface program.
 """
 
 from __future__ import annotations
 
-import re
-
-from .. import hlsl, shaders
-from . import generate, generate_pass, port
+from .. import hlsl, programs, shaders
+from ..file_identity import include_closure
+from . import generate, generate_pass
 from . import model as M
-from .program import CGINC, TEMPLATES, _PORTS, remember_program
+from .program import CGINC, TEMPLATES, hlsl_program, indexed, program_include, rename_vertex_globals
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
-
-
-def _ported_file(vf: M.VertexFragmentPass):
-    ported = _PORTS / f"{abs(hash((str(vf.path), vf.program)))}" / (vf.path.stem + ".glsl")
-    ported.parent.mkdir(parents=True, exist_ok=True)
-    ported.write_text(port.port_program(vf), encoding="utf-8")
-    return ported
 
 
 def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
                 display: str) -> str:
     where = f"{vf.path}:{vf.program_line}"
     head = generate.prelude(language, defines, vertex_stage=stage == "vertex")
-    first = vf.program_line if language == "hlsl" else 1
-    line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
+    if language == "hlsl":
+        line = f'#line {vf.program_line} "{display}"'
+    else:
+        line = "#line 1"
     if stage == "vertex":
         entry = generate_pass.vertex_entry(vf, language, where)
     else:
@@ -40,34 +35,29 @@ def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, pro
     return "\n".join(head) + "\n" + line + "\n" + program_text + "\n" + entry
 
 
-def _hlsl_stage(text: str, display: str, dirs, stage: str) -> shaders.Source:
-    glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
-                              plain_uniforms=True)
-    if stage == "vertex":  # each stage holds a `uniform _Global <id>;`: rename this one to link
-        instance = re.search(r"uniform _Global (\w+);", glsl)
-        if instance:
-            glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
-            glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
-    return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
-
-
 def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: dict, blended: bool):
-    key = (id(ctx), "pass", str(vf.path), vf.program, language, blended, tuple(sorted(defines.items())))
+    key = ("unity-pass", str(vf.path), vf.program, vf.program_line, vf.vertex, vf.fragment, language,
+           blended, tuple(sorted(defines.items())))
 
     def build():
         dirs = [TEMPLATES, CGINC, vf.path.parent]
-        stages = {}
-        if language == "hlsl":
-            for stage in ("vertex", "fragment"):
-                display = f"{vf.path.name} (generated hlsl {stage} stage)"
-                text = _stage_text(vf, "hlsl", stage, defines, blended, vf.program, vf.path.name)
-                stages[stage] = _hlsl_stage(text, display, dirs, stage)
-        else:
-            ported = _ported_file(vf)
-            for stage in ("vertex", "fragment"):
-                display = f"{vf.path.name} (generated glsl {stage} stage)"
-                text = _stage_text(vf, "glsl", stage, defines, blended, f'#include "{ported.name}"', ported.name)
-                stages[stage] = shaders.expand(text, display, include_dirs=dirs + [ported.parent])
-        return shaders.build_program(ctx, stages["vertex"], stages["fragment"])
+        stages, paths = {}, [vf.path]
+        for stage in ("vertex", "fragment"):
+            display = f"{vf.path.name} (generated {language} {stage} stage)"
+            if language == "hlsl":
+                text = _stage_text(vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
+                glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
+                                          plain_uniforms=True)
+                if stage == "vertex":
+                    glsl = rename_vertex_globals(glsl)
+                stages[stage] = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+                paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
+            else:
+                include, virtual = program_include(vf)
+                text = _stage_text(vf, "glsl", stage, defines, blended, include, vf.path.name)
+                stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+                paths += stages[stage].paths
+        program = indexed(shaders.build_program(ctx, stages["vertex"], stages["fragment"]), vf.path)
+        return program, paths
 
-    return remember_program(key, build)
+    return programs.program_cache(ctx).get(key, build)
