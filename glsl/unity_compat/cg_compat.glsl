@@ -34,6 +34,8 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define ddy dFdy
 #endif
 #define samplerCUBE samplerCube
+#define sampler2D_float sampler2D
+#define sampler2D_half sampler2D
 
 float fmod(float x, float y) { return x - y * trunc(x / y); }
 vec2 fmod(vec2 x, vec2 y) { return x - y * trunc(x / y); }

@@ -34,6 +34,8 @@
 //           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL (read the vertex
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
+//           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
+//           gives, white = the far plane by default: no depth pre-pass here);
 //           UNITY_DEFINE_INSTANCED_PROP declares a plain uniform, UNITY_ACCESS_INSTANCED_PROP,
 //           UNITY_SETUP_INSTANCE_ID, UNITY_TRANSFER_INSTANCE_ID, UNITY_VERTEX_INPUT_INSTANCE_ID,
 //           UNITY_VERTEX_OUTPUT_STEREO, UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO,
@@ -126,6 +128,15 @@ static float4 _WorldSpaceLightPos0;
 #define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
 #define LIGHT_ATTENUATION(a) 1.0
 #define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) fixed destName = 1.0;
+
+// UnityCG.cginc's camera depth texture: a shader declares and samples it by these names.
+// The harness draws no depth pre-pass, so the material's texture of that name is Unity's
+// default when none is set: white, depth 1, the far plane (nothing in front: a soft
+// particle does not fade). A shader's own value may be given in the material's properties.
+#define UNITY_DECLARE_DEPTH_TEXTURE(tex) sampler2D tex
+#define SAMPLE_DEPTH_TEXTURE(tex, uv) (tex2D(tex, (uv).xy).r)
+#define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv).r)
+#define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
 
 float4 UnityObjectToClipPos(float3 pos) {
     return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0)));

@@ -167,3 +167,13 @@ def test_colour_space_constants_are_linear(language):
     assert got[2] == 1.0 and got[3] == 1.0  # linear-mode flag; alphas stay gamma (0.5 * 2)
     lum = _eval("unity_ColorSpaceLuminance.xyz", language, x=np.zeros(1))[0]
     np.testing.assert_array_equal(lum, np.float32(R.LUMINANCE_WEIGHTS))
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lerp_one_to_and_lerp_white_to(language):
+    b, t = RNG.uniform(0, 1, (N, 3)), RNG.uniform(0, 1, N)
+    got = _eval("vec4(LerpWhiteTo(b, t), LerpOneTo(b.x, t))", language, b=vec3(b), t=t)
+    assert np.abs(got[:, :3] - R.lerp_one_to(b, t[:, None])).max() <= BOUND
+    assert np.abs(got[:, 3] - R.lerp_one_to(b[:, 0], t)).max() <= BOUND
+    got = _eval("vec4(LerpOneTo(b, t), 0.0)", language, b=vec3(b), t=t)
+    assert np.abs(got[:, :3] - R.lerp_one_to(b, t[:, None])).max() <= BOUND

@@ -5,6 +5,7 @@
 //           vec3 UnpackNormalmapRGorAG(vec4 packednormal)   DXT5nm (x in a, y in g) or BC5 (x, y)
 //           vec3 UnpackNormalWithScale(vec4 packednormal, float scale)
 //           vec3 BlendNormals(vec3 n1, vec3 n2)                   (UnityStandardUtils.cginc)
+//           float/vec3 LerpOneTo(b, t), vec3 LerpWhiteTo(vec3 b, float t)  (UnityStandardUtils.cginc)
 //           float Luminance(vec3 rgb), float LinearRgbToLuminance(vec3 linearRgb)
 //           vec3 GammaToLinearSpace(vec3 sRGB), vec3 LinearToGammaSpace(vec3 linRGB)   Unity's fits
 //           float GammaToLinearSpaceExact(float value), float LinearToGammaSpaceExact(float value)
@@ -78,6 +79,20 @@ vec3 UnpackNormalWithScale(vec4 packednormal, float scale) {
 // Unity's BlendNormals: sum of xy, product of z, normalised (UnityStandardUtils.cginc).
 vec3 BlendNormals(vec3 n1, vec3 n2) {
     return normalize(vec3(n1.xy + n2.xy, n1.z * n2.z));
+}
+
+// Unity's LerpOneTo / LerpWhiteTo: mix(1, b, t) written as 1 - t + b t, as Unity writes it
+// (UnityStandardUtils.cginc; the occlusion and detail masks use them).
+float LerpOneTo(float b, float t) {
+    return (1.0 - t) + b * t;
+}
+
+vec3 LerpOneTo(vec3 b, float t) {
+    return vec3(1.0 - t) + b * t;
+}
+
+vec3 LerpWhiteTo(vec3 b, float t) {
+    return vec3(1.0 - t) + b * t;
 }
 
 float Luminance(vec3 rgb) {

@@ -116,3 +116,9 @@ def linear_eye_depth(z, near, far):
 
 def linear01_depth(z, near, far):
     return linear_eye_depth(z, near, far) / far
+
+
+def lerp_one_to(b, t):
+    """UnityStandardUtils.cginc LerpOneTo(b, t) = 1 - t + b t (LerpWhiteTo: the same per channel)."""
+    b, t = np.asarray(b, np.float64), np.asarray(t, np.float64)
+    return (1.0 - t) + b * t

@@ -14,4 +14,10 @@ SamplerState pbrlab_unity_sampler;
 #define tex2Dproj(t, uv) (t).Sample(pbrlab_unity_sampler, (uv).xy / (uv).w)
 #define texCUBE(t, d) (t).Sample(pbrlab_unity_sampler, (d))
 #define texCUBElod(t, d) (t).SampleLevel(pbrlab_unity_sampler, (d).xyz, (d).w)
+#define sampler2D_float Texture2D
+#define sampler2D_half Texture2D
+// A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,
+// from the fragment's facing); glslang would take the semantic as its own built-in and drop
+// the member from the struct, so the semantic is renamed to a plain one.
+#define VFACE PBRLAB_VFACE
 #endif
