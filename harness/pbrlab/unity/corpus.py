@@ -96,7 +96,9 @@ _COMPILER = ("failed to compile", "HLSL failed", "error: ", "cannot find include
 
 
 def is_compiler_error(message: str) -> bool:
-    return any(word in message for word in _COMPILER) and "#error" not in message
+    """Whether a refusal's first line is a compiler's (a named refusal puts its reason first)."""
+    first = message.splitlines()[0] if message else ""
+    return any(word in first for word in _COMPILER)
 
 
 def refusal_key(message: str) -> str:

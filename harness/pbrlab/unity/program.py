@@ -30,6 +30,7 @@ from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
 from . import generate, port
 from . import model as M
+from . import unprovided
 from .properties import TextureValue
 
 CGINC = Path(__file__).parent / "cginc"
@@ -139,7 +140,10 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
         program = indexed(shaders.build_program(ctx, vertex, fragment), shader.path)
         return program, [*paths, *vertex_paths]
 
-    return programs.program_cache(ctx).get(key, build)
+    try:
+        return programs.program_cache(ctx).get(key, build)
+    except PbrlabError as exc:  # a Unity name pbrlab leaves out on purpose: say which feature
+        unprovided.raise_named(exc, shader.path)
 
 
 def object_matrix(obj) -> np.ndarray:

@@ -12,9 +12,11 @@ on every file they read; binding is ``program.bind``'s, as for a surface program
 from __future__ import annotations
 
 from .. import hlsl, programs, shaders
+from ..errors import PbrlabError
 from ..file_identity import include_closure
 from . import generate, generate_pass
 from . import model as M
+from . import unprovided
 from .program import CGINC, TEMPLATES, hlsl_program, indexed, program_include, rename_vertex_globals
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
@@ -60,4 +62,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         program = indexed(shaders.build_program(ctx, stages["vertex"], stages["fragment"]), vf.path)
         return program, paths
 
-    return programs.program_cache(ctx).get(key, build)
+    try:
+        return programs.program_cache(ctx).get(key, build)
+    except PbrlabError as exc:  # a Unity name pbrlab leaves out on purpose: say which feature
+        unprovided.raise_named(exc, vf.path)
