@@ -730,7 +730,7 @@ class _Parser:
                 if not self.at(";"):
                     e = self.expression()
                     if self.ret is not None:
-                        self.coerce(e, self.ret)
+                        self.coerce(e, self.ret, exact=True)
                 self.expect(";")
                 return
             if t.text in ("break", "continue", "discard"):
@@ -1095,8 +1095,9 @@ class _Parser:
             self.edits.open(e.s, "(")
             self.edits.close(e.e, ")." + "xyzw"[:n])
 
-    def coerce(self, e: E, target: Type):
-        """Spell out HLSL's implicit conversion of ``e`` to ``target``, where GLSL needs it."""
+    def coerce(self, e: E, target: Type, exact=False):
+        """Spell out HLSL's implicit conversion of ``e`` to ``target``, where GLSL needs it
+        (GLSL 330 converts int and uint to float itself, except in ``return``: ``exact``)."""
         src = e.t
         if src is None or target is None or not src.numeric or not target.numeric:
             return
@@ -1105,7 +1106,7 @@ class _Parser:
                     and src.dim >= target.dim and src.cols >= target.cols:
                 self.wrap(e, target.cg())
             return
-        base_ok = src.base == target.base or (target.base == "float" and src.base in ("int", "uint"))
+        base_ok = src.base == target.base or (target.base == "float" and src.base in ("int", "uint") and not exact)
         if src.dim == target.dim:
             if not base_ok:
                 self.wrap(e, target.cg())
