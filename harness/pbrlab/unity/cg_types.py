@@ -290,6 +290,8 @@ _INTRINSICS = {
     "cross": ("cross", ()), "reflect": ("first", ()), "refract": ("first", (2,)),
     "faceforward": ("first", ()),
 }
+_KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "continue", "if", "for",
+             "while", "do", "switch", "struct", "typedef", "true", "false"}
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
             "==": "equal", "!=": "notEqual"}
 _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
@@ -452,6 +454,13 @@ class _Parser:
         if self.at("typedef"):
             self.fail("typedef")
         first = self.peek()
+        if first.text == "[":  # [maxvertexcount(3)], [numthreads(...)]: kept as written
+            self.skip_balanced("[", "]")
+            return
+        if first.kind == "id" and self.type_named(first.text) is None and first.text not in _QUALIFIERS \
+                and first.text != "struct" and not self.opaque_ahead() and not self.at("(", 1):
+            self.next()  # a bare macro at file scope: CBUFFER_END, UNITY_INSTANCING_BUFFER_END
+            return
         if first.kind == "id" and self.at("(", 1) and self.type_named(first.text) is None:
             # a macro at file scope: UNITY_INSTANCING_BUFFER_START(Props), UNITY_DECLARE_TEX2D(x);
             self.next()
@@ -492,10 +501,21 @@ class _Parser:
             elif t.text == close:
                 depth -= 1
 
+    def opaque_ahead(self, j=0):
+        """An unknown name followed by a name: a type from an include the pass does not read
+        (v2f_surf, appdata_t, LeafSurfaceOutput): a declaration of a value of unknown type."""
+        t, n = self.peek(j), self.peek(j + 1)
+        return t.kind == "id" and n.kind == "id" and self.type_named(t.text) is None \
+            and t.text not in _KEYWORDS and t.text not in _QUALIFIERS and n.text not in _KEYWORDS \
+            and self.type_named(n.text) is None and n.text not in _QUALIFIERS
+
     def type_spec(self):
         t = self.peek()
         if t.kind != "id":
             return None
+        if self.opaque_ahead():
+            self.next()
+            return Type(t.text, 0)
         if t.text == "struct":  # struct Name as a type
             self.next()
             return self.type_spec()
@@ -666,6 +686,8 @@ class _Parser:
             return False
         if t.text == "struct":
             return True
+        if self.opaque_ahead(j):
+            return self.peek(j + 2).text in (";", "=", ",", "[", ":", ")")
         return self.type_named(t.text) is not None and self.peek(j + 1).kind == "id"
 
     def statement(self):
@@ -756,8 +778,17 @@ class _Parser:
             ty = self.type_spec()
             self.declarators(ty, is_global=False, const=False)
         else:
-            self.expression()
+            first = self.peek()
+            e = self.expression()
+            if e.t is None and not self.at(";") and self.macro_statement(first):
+                return  # UNITY_TRANSFER_FOG(o, o.vertex) with no ';' (a macro that brings its own)
         self.expect(";")
+
+    def macro_statement(self, first: Tok) -> bool:
+        """The statement began with a name the pass does not know and ends its line."""
+        known = self.lookup(first.text) is not None or first.text in self.sym.functions or first.text in _INTRINSICS
+        last = self.toks[self.i - 1]
+        return first.kind == "id" and not known and "\n" in self.text[last.e:self.peek().s]
 
     def delete_span(self, s, e):
         self.edits.replace(s, e, "")

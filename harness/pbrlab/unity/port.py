@@ -84,6 +84,7 @@ def port_code(code: str) -> str:
     """Pass B on code without comments or strings."""
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
+    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=\{)", r")\1\2", code)  # a function's return semantic
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
