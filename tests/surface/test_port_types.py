@@ -118,3 +118,13 @@ def test_matrix_types_are_named_columns_first():
     assert port.port_code_types("float3x4 m; float2x2 n;") == "mat4x3 m; mat2 n;"
     assert cg_types.convert("float3x4 m = float3x4(a, b, c);") == \
         "uniform float3x4 m = transpose(float4x3(a, b, c));"
+
+
+def test_types_and_macros_from_unread_includes_do_not_stop_the_pass():
+    # v2f_surf comes from an include the pass does not read; UNITY_TRANSFER_FOG brings its own ';'.
+    cg = ("CBUFFER_START(UnityPerMaterial)\nfixed4 _Color;\nCBUFFER_END\n"
+          "float4 frag (v2f_surf IN) : SV_Target {\n\tv2f_surf o;\n\tUNITY_TRANSFER_FOG(o, IN.pos)\n"
+          "\tfloat3 c = _Color;\n\treturn IN.color;\n}\n")
+    result = cg_types.convert_detail(cg)
+    assert result.skipped == []
+    assert "float3 c = _Color.xyz;" in result.text and "return IN.color;" in result.text
