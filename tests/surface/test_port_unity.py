@@ -24,11 +24,11 @@ def _program(body: str, pragma="surf Lambert", inputs="float2 uv_MainTex;"):
     ("void surf (Input IN, inout SurfaceOutput o) { o.Albedo = 1; }",
      "void surf (Input IN, inout SurfaceOutput o) { o.Albedo = vec3(1); }"),
     ("fixed4 _Color;\nvoid surf (Input IN, inout SurfaceOutput o) { half3 c = 0.5; o.Albedo = c * _Color.rgb; }",
-     "uniform vec4 _Color;\nvoid surf (Input IN, inout SurfaceOutput o) { vec3 c = vec3(0.5); o.Albedo = vec3(c * _Color.rgb); }"),
+     "uniform vec4 _Color;\nvoid surf (Input IN, inout SurfaceOutput o) { vec3 c = vec3(0.5); o.Albedo = c * _Color.rgb; }"),
     ("float4x4 _M;\nsampler2D _MainTex;\nvoid surf (Input IN, inout SurfaceOutput o) { o.Alpha = 1; }",
      "uniform mat4 _M;\nuniform sampler2D _MainTex;\nvoid surf (Input IN, inout SurfaceOutput o) { o.Alpha = 1; }"),
     ("inline float3 G (in float3 c) { return pow(c, 2.2); }\nvoid surf (Input IN, inout SurfaceOutput o) { o.Gloss = (half)IN.uv_MainTex.x; }",
-     "vec3 G (in vec3 c) { return vec3(pbr_unity_pow(c, 2.2)); }\nvoid surf (Input IN, inout SurfaceOutput o) { o.Gloss = float(IN.uv_MainTex.x); }"),
+     "vec3 G (in vec3 c) { return pbr_unity_pow(c, 2.2); }\nvoid surf (Input IN, inout SurfaceOutput o) { o.Gloss = float(IN.uv_MainTex.x); }"),
 ])
 def test_renames(hlsl, glsl):
     shader = _program(hlsl)

@@ -5,25 +5,32 @@ assignments); the Cg intrinsics (saturate, lerp, tex2D, ...) are not renamed, th
 
     text = port_program(shader)        # from a parsed model.SurfaceShader
 
-Rules, applied to code only (comments and strings untouched):
-  1. Types: (float|half|fixed|min16float)N -> vecN, ...NxN -> matN, scalar half/fixed ->
-     float, intN -> ivecN, boolN -> bvecN, uintN -> uvecN.
-  2. HLSL-only words: ``inline`` and ``static`` (before const) dropped; ``uniform`` added to
-     the shader's global variable declarations (Unity's globals are uniforms).
-  3. Assignments and initialisations whose target has a known vector type (locals declared
-     in the function, output-struct fields such as ``o.Albedo``) wrap the value in that type's
-     constructor, which splats a scalar (``o.Albedo = 1`` -> ``o.Albedo = vec3(1)``) and keeps
-     a vector; ``return x;`` in a function returning a vector likewise.
-  4. Casts ``(float3)x`` -> ``vec3(x)``.
-  5. HLSL semantics after a member or parameter (``float4 color : COLOR;``) dropped.
-  6. ``pow`` -> ``pbr_unity_pow`` (cg_compat.glsl: HLSL's pow(float3, 2.2) promotes the
-     scalar; GLSL neither has that overload nor lets a shader overload a built-in).
+Two passes, applied to code only (comments and strings untouched, line breaks kept, so the
+port stays line for line with the original and compile errors map back by line):
+
+  A. The type pass (cg_types.py): a parser and type inference for the Cg the program is
+     written in, which spells out where HLSL converts implicitly and GLSL refuses (vector
+     truncation, scalar splats, float -> int, conditions, scalar swizzles, casts, matrix
+     constructors and rows, array initialisers, reserved words, ``static``/``uniform``).
+     It works on the Cg text and inserts Cg spellings (``float3(``), which B renames.
+  B. Renames, by rule:
+     1. Types: (float|half|fixed|min16float)N -> vecN, ...RxC -> matCxR (GLSL names columns
+        first: HLSL's float3x4 has 3 rows, GLSL's mat4x3 too), scalar half/fixed -> float,
+        intN -> ivecN, boolN -> bvecN, uintN -> uvecN.
+     2. HLSL-only words: ``inline`` and ``static`` (before const) dropped; ``uniform`` added to
+        the shader's global variable declarations (Unity's globals are uniforms). The type pass
+        does both where it reads the declaration; these rules catch the ones it cannot read.
+     3. Casts ``(float3)x`` -> ``vec3(x)`` (likewise a fallback: the type pass does casts).
+     4. HLSL semantics after a member or parameter (``float4 color : COLOR;``) dropped.
+     5. ``pow`` -> ``pbr_unity_pow`` (cg_compat.glsl: HLSL's pow(float3, 2.2) promotes the
+        scalar; GLSL neither has that overload nor lets a shader overload a built-in).
 """
 
 from __future__ import annotations
 
 import re
 
+from . import cg_types
 from . import model as M
 from .parse import PORT_MARKER
 
@@ -37,7 +44,7 @@ _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 
 def _rename_types(code: str) -> str:
-    code = _TYPE.sub(lambda m: f"mat{m.group(1)}" + (f"x{m.group(2)}" if m.group(2) != m.group(1) else "")
+    code = _TYPE.sub(lambda m: f"mat{m.group(2)}" + (f"x{m.group(1)}" if m.group(2) != m.group(1) else "")
                      if m.group(2) else f"vec{m.group(1)}", code)
     code = _SCALAR.sub("float", code)
     return _INT.sub(lambda m: {"int": "ivec", "bool": "bvec", "uint": "uvec"}[m.group(1)] + m.group(2), code)
@@ -68,52 +75,13 @@ def _globals_uniform(code: str) -> str:
     return "\n".join(out)
 
 
-def _wrap_assignments(code: str, shader: M.SurfaceShader) -> str:
-    """Rule 3: scalar-to-vector assignments through the target's constructor."""
-    fields = {f: n for f, n in shader.output_fields.items() if n > 1}
-    local = {}
-    for m in re.finditer(r"\b(vec[234])\s+(\w+)\s*[=;,)]", code):
-        local[m.group(2)] = m.group(1)
-
-    def target_type(lhs: str):
-        lhs = lhs.strip()
-        fm = re.fullmatch(r"\w+\.(\w+)", lhs)
-        if fm and fm.group(1) in fields:
-            return f"vec{fields[fm.group(1)]}"
-        if re.fullmatch(r"\w+", lhs) and lhs in local:
-            return local[lhs]
-        return None
-
-    def assign(m):
-        decl, lhs, rhs = m.group(1) or "", m.group(2), m.group(3)
-        kind = decl.split()[0] if decl else target_type(lhs)
-        if not kind or not kind.startswith("vec"):
-            return m.group(0)
-        return f"{decl}{lhs} = {kind}({rhs.strip()});"
-
-    code = re.sub(r"(\b(?:vec[234])\s+)?(\b[\w.]+)\s*=(?!=)\s*([^;{}]+);", assign, code)
-    # return <expr>; inside functions returning vectors
-    out, pos = [], 0
-    for fm in re.finditer(r"\b(vec[234])\s+\w+\s*\([^)]*\)\s*\{", code):
-        start = fm.end()
-        depth, i = 1, start
-        while i < len(code) and depth:
-            depth += {"{": 1, "}": -1}.get(code[i], 0)
-            i += 1
-        body = re.sub(r"\breturn\s+([^;]+);", lambda r: f"return {fm.group(1)}({r.group(1).strip()});",
-                      code[start:i])
-        out.append(code[pos:start] + body)
-        pos = i
-    out.append(code[pos:])
-    return "".join(out)
-
-
 def port_code_types(code: str) -> str:
     """Rule 1 alone (a type name, e.g. an Input member's)."""
     return _rename_types(code)
 
 
-def port_code(code: str, shader: M.SurfaceShader) -> str:
+def port_code(code: str) -> str:
+    """Pass B on code without comments or strings."""
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
     code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=\{)", r")\1\2", code)  # a function's return semantic
@@ -121,15 +89,19 @@ def port_code(code: str, shader: M.SurfaceShader) -> str:
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
-    code = _globals_uniform(code)
-    return _wrap_assignments(code, shader)
+    return _globals_uniform(code)
 
 
 def port_program(shader: M.SurfaceShader) -> str:
-    """The shader's CGPROGRAM with the renames, line for line (comments kept)."""
-    segments = _code_segments(shader.program)
+    """The shader's CGPROGRAM ported, line for line (comments kept)."""
+    return port_text(shader.program)
+
+
+def port_text(program: str) -> str:
+    """A Cg program's text ported (passes A and B)."""
+    segments = _code_segments(cg_types.convert(program))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
-    code = port_code(code, shader)
+    code = port_code(code)
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)
