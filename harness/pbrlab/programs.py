@@ -172,6 +172,8 @@ def set_uniform(program, name, value):
         size = _GL_FLOAT_MATRICES.get(uniform.gl_type)
         if in_struct and size is not None:  # column-major data of M -> that of M^T (module doc)
             value = tuple(np.asarray(value, np.float32).reshape(size, size).T.reshape(-1).tolist())
+        elif size is None and isinstance(value, tuple) and len(value) > uniform.dimension > 1:
+            value = value[:uniform.dimension]  # a Vector property on a float2/3 uniform, as Unity sets it
         uniform.value = value
 
 

@@ -281,6 +281,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 defines = plan.defines[obj.material]
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if material.unity is not None:  # each pass that runs, in the shader's order
+                    defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
+                    shading = (defines, *shading[1:])
                     for unity_pass in material.unity.passes:
                         for keyed, additive in unity_light_programs(unity_pass, defines):
                             _unity_pass_state(ctx, hdr, material, unity_pass, additive)

@@ -184,3 +184,10 @@ class UnityShader:
     def moves_vertices(self) -> bool:
         """Whether a sphere must be drawn as a mesh: a vertex: function or a vertex stage of its own."""
         return any(p.kind == "vertex-fragment" or p.vertex is not None for p in self.passes)
+
+    @property
+    def keywords(self) -> frozenset:
+        """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
+        (a material's ``keywords`` enables some; Unity's default variant has none)."""
+        from .parse import declared_keywords
+        return frozenset().union(*(declared_keywords(p.program) for p in self.passes))

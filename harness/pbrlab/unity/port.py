@@ -127,7 +127,12 @@ def port_code(code: str, shader: M.SurfaceShader) -> str:
 
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM with the renames, line for line (comments kept)."""
-    segments = _code_segments(shader.program)
+    return port_text(shader.program, shader)
+
+
+def port_text(text: str, shader: M.SurfaceShader) -> str:
+    """``text`` (the program, or a file it includes) with the renames, line for line."""
+    segments = _code_segments(text)
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = port_code(code, shader)
     for i, (is_code, t) in enumerate(segments):

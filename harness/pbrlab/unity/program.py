@@ -23,7 +23,7 @@ from .. import hlsl, shaders
 from ..errors import PbrlabError
 from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
-from . import generate, port
+from . import generate, parse, port
 from . import model as M
 from .properties import TextureValue
 
@@ -42,7 +42,8 @@ SPECCUBE_HDR = (1.0, 1.0, 0.0, 0.0)
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
-    """(text, include dirs) of the fragment program."""
+    """(text, include dirs) of the fragment program. In GLSL the port's folder comes first
+    (the ports of the shader's includes are there, under the names the port includes)."""
     dirs = [TEMPLATES, CGINC, shader.path.parent]
     if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
         if language == "hlsl":
@@ -50,14 +51,45 @@ def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: di
                               "for --language hlsl name the original .shader file")
         text = generate.fragment_source(shader, "glsl", stem, f'#include "{shader.path.name}"',
                                         shader.path.name, defines)
-        return text, dirs + [shader.path.parent]
+        return text, [TEMPLATES, shader.path.parent, CGINC]
     if language == "hlsl":
         return generate.fragment_source(shader, "hlsl", stem, shader.program, shader.path.name, defines), dirs
-    ported = _PORTS / f"{abs(hash((str(shader.path), shader.program)))}" / (shader.path.stem + ".glsl")
-    ported.parent.mkdir(parents=True, exist_ok=True)
-    ported.write_text(port.port_program(shader), encoding="utf-8")
+    ported = write_port(shader)
     text = generate.fragment_source(shader, "glsl", stem, f'#include "{ported.name}"', ported.name, defines)
-    return text, dirs + [ported.parent]
+    return text, [TEMPLATES, ported.parent, CGINC, shader.path.parent]
+
+
+_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
+
+
+def write_port(unit) -> Path:
+    """The GLSL path's port of a program (a surface program or a vertex/fragment pass), written
+    with ports of the files it includes (the shader's own .cginc files and pbrlab's stand-ins,
+    resolved as the parser does) beside it: each include line then names its port, so the Cg
+    text of an include goes through the same renames as the program's."""
+    folder = _PORTS / f"{abs(hash((str(unit.path), unit.program)))}"
+    folder.mkdir(parents=True, exist_ok=True)
+    ports: dict = {}   # resolved include -> the file name of its port in ``folder``
+
+    def ported(text: str, where: Path) -> str:
+        def relink(m):
+            target = parse.resolve_included(m.group(2), where)
+            if target is None:
+                return m.group(0)  # the GLSL expander names what it cannot find
+            key = target.resolve()
+            if key not in ports:
+                name = target.name
+                while name in ports.values() or name == unit.path.stem + ".glsl":
+                    name = f"{len(ports)}_{target.name}"
+                ports[key] = name
+                body = target.read_text(encoding="utf-8").removeprefix("\ufeff")
+                (folder / name).write_text(ported(port.port_text(body, unit), target.parent), encoding="utf-8")
+            return m.group(1) + ports[key] + m.group(3)
+        return _INCLUDE_LINE.sub(relink, text)
+
+    path = folder / (unit.path.stem + ".glsl")
+    path.write_text(ported(port.port_program(unit), unit.path.parent), encoding="utf-8")
+    return path
 
 
 def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -> shaders.Source:
@@ -73,7 +105,7 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
             glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
             glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
         return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
-    ported = dirs[-1] / (shader.path.name if shader.language == "glsl" else shader.path.stem + ".glsl")
+    ported = dirs[1] / (shader.path.name if shader.language == "glsl" else shader.path.stem + ".glsl")
     text = generate.vertex_source(shader, "glsl", f'#include "{ported.name}"', ported.name, defines)
     return shaders.expand(text, display, include_dirs=dirs)
 
@@ -153,13 +185,16 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     for name, value in sorted(material.properties.items()):
         if isinstance(value, TextureValue):
             if value.cube:
-                environment_cube().use(unit)
+                texture = environment_cube()
             elif value.path is not None:
-                cache.texture(value.path, value.srgb).use(unit)
+                texture = cache.texture(value.path, value.srgb)
             else:
-                cache.constant_texture(value.texel).use(unit)
+                texture = cache.constant_texture(value.texel)
+            texture.use(unit)
             _set(program, name, unit)
             _set(program, f"{name}_ST", value.st)
+            w, h = texture.size[:2]  # Unity's {name}_TexelSize: (1/width, 1/height, width, height)
+            _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
             unit += 1
         else:
             _set(program, name, value)

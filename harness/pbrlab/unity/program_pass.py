@@ -13,18 +13,15 @@ from __future__ import annotations
 import re
 
 from .. import hlsl, shaders
-from . import generate, generate_pass, port
+from . import generate, generate_pass
 from . import model as M
-from .program import CGINC, TEMPLATES, _PORTS, remember_program
+from .program import CGINC, TEMPLATES, remember_program, write_port
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
 
 
 def _ported_file(vf: M.VertexFragmentPass):
-    ported = _PORTS / f"{abs(hash((str(vf.path), vf.program)))}" / (vf.path.stem + ".glsl")
-    ported.parent.mkdir(parents=True, exist_ok=True)
-    ported.write_text(port.port_program(vf), encoding="utf-8")
-    return ported
+    return write_port(vf)
 
 
 def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
@@ -67,7 +64,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             for stage in ("vertex", "fragment"):
                 display = f"{vf.path.name} (generated glsl {stage} stage)"
                 text = _stage_text(vf, "glsl", stage, defines, blended, f'#include "{ported.name}"', ported.name)
-                stages[stage] = shaders.expand(text, display, include_dirs=dirs + [ported.parent])
+                stages[stage] = shaders.expand(text, display, include_dirs=[TEMPLATES, ported.parent] + dirs[1:])
         return shaders.build_program(ctx, stages["vertex"], stages["fragment"])
 
     return remember_program(key, build)
