@@ -17,7 +17,8 @@
 //   LightingTreeLeaf's atten is the harness's (1: the light's falloff is in its colour) and
 //   _ShadowStrength has no shadow to soften. ScreenDitherToAlpha computes Unity's 8 x 8 ordered
 //   dither matrix from the pixel's bits instead of a table.
-// Cg text in the plain subset harness/pbrlab/unity/port.py ports to GLSL.
+// Cg text in the plain subset harness/pbrlab/unity/port.py ports to GLSL (a local's name is
+// not reused with another type in this file: the port reads a name's type file-wide).
 #ifndef PBRLAB_UNITY_BUILTIN_3X_TREE_LIBRARY_CGINC
 #define PBRLAB_UNITY_BUILTIN_3X_TREE_LIBRARY_CGINC
 
@@ -88,12 +89,12 @@ fixed3 ShadeTranslucentLights(float4 vertex, float3 normal)
     float3 worldPos = mul(unity_ObjectToWorld, vertex).xyz;
     float3 viewDir = normalize(UnityWorldSpaceViewDir(worldPos));
     float3 mainLightDir = normalize(UnityWorldSpaceLightDir(worldPos));
-    float3 front = ShadeSH9(float4(normal, 1.0));
-    float3 back = ShadeSH9(float4(-normal, 1.0));
+    float3 frontAmbient = ShadeSH9(float4(normal, 1.0));
+    float3 backAmbient = ShadeSH9(float4(-normal, 1.0));
     fixed viewBack = saturate(dot(viewDir, -mainLightDir));
-    back = lerp(back, back * viewBack, float3(_TranslucencyViewDependency, _TranslucencyViewDependency,
-                                              _TranslucencyViewDependency));
-    return 0.5 * (front + back * _TranslucencyColor);
+    backAmbient = lerp(backAmbient, backAmbient * viewBack, float3(_TranslucencyViewDependency,
+                       _TranslucencyViewDependency, _TranslucencyViewDependency));
+    return 0.5 * (frontAmbient + backAmbient * _TranslucencyColor);
 }
 
 // The rest pose of a Tree Creator vertex (header), its colour the material's (Unity: times
