@@ -283,6 +283,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
                 if material.unity is not None:  # each pass that runs, in the shader's order
                     grabbed = resources.grabbed = {}
+                    defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
+                    shading = (defines, *shading[1:])
                     for unity_pass in material.unity.passes:
                         if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
                             grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)

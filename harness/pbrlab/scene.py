@@ -123,6 +123,7 @@ class Material:
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
                                  # `surface` is one (.shader, or text with #pragma surface)
     properties: dict = field(default_factory=dict)  # its Properties' values (unity.properties)
+    keywords: tuple = ()         # the shader keywords it enables (Unity's Material.EnableKeyword)
 
 
 @dataclass
@@ -376,6 +377,15 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
                    f"remove `{key}`", key)
     m.properties = unity.resolve_properties(m.unity, r.raw("properties", {}), base,
                                             f"{r.origin}: {r.path.lstrip('.')}.properties")
+    keywords = r.raw("keywords", [])
+    declared = m.unity.keywords
+    if not isinstance(keywords, list) or not all(isinstance(k, str) for k in keywords):
+        r.fail("expected a list of shader keyword names", "keywords")
+    for k in keywords:
+        if k not in declared:
+            r.fail(f"{k!r} is not a keyword of {m.surface.name} (its #pragma multi_compile / "
+                   f"shader_feature lines declare: {', '.join(sorted(declared)) or 'none'})", "keywords")
+    m.keywords = tuple(dict.fromkeys(keywords))
     surface = m.unity.surface
     if surface is not None:
         m.alpha_mode = surface.pragma.alpha_mode

@@ -199,3 +199,10 @@ class UnityShader:
     @property
     def grab_textures(self) -> list:
         return [p.texture for p in self.passes if p.kind == "grab"]
+
+    @property
+    def keywords(self) -> frozenset:
+        """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
+        (a material's ``keywords`` enables some; Unity's default variant has none)."""
+        from .parse import declared_keywords
+        return frozenset().union(*(declared_keywords(p.program) for p in self.passes if p.kind != "grab"))

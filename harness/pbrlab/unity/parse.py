@@ -385,6 +385,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                   name: str | None = None) -> M.SurfaceShader:
     """The model of a CGPROGRAM text (``first_line``: where it starts in ``path``)."""
     masked = _blank_comments(program)
+    check_refusals(program, path, first_line, path.parent)
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
 
@@ -505,30 +506,101 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
 
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+# A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
+_ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
+_CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
+
+
+class UnityIncludeRefusal(UnityShaderError):
+    """A shader includes one of pbrlab's stand-ins that refuses (Unity data the harness lacks):
+    no SubShader or Fallback can help, so it is raised as it stands."""
+
+
+def resolve_included(name: str, folder: Path):
+    """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
+    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``); else None."""
+    from .program import CGINC
+    for candidate in (folder / name, CGINC / Path(name).name):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def _read_include(path: Path):
+    try:
+        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def stand_in_refusal(text: str) -> str | None:
+    """The message of a ``#error`` line outside every #if of ``text`` (None if there is none)."""
+    masked = _blank_comments(text)
+    depth = 0
+    for m in sorted([*_CONDITIONAL.finditer(masked), *_ERROR.finditer(masked)], key=lambda m: m.start()):
+        if m.re is _ERROR:
+            if depth == 0:
+                return m.group(1).strip()
+            continue
+        depth += -1 if m.group(1) == "endif" else 1
+    return None
+
+
+def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen=None) -> None:
+    """Raise ``UnityIncludeRefusal`` at the shader's ``#include`` line when what it includes
+    (directly or further down) is a stand-in that refuses with ``#error``."""
+    from .program import CGINC
+    seen = set() if seen is None else seen
+    for m in _INCLUDE.finditer(_blank_comments(program)):
+        target = resolve_included(m.group(1), folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        text = _read_include(target)
+        if text is None:
+            continue
+        line = first_line - 1 + _line_of(program, m.start())
+        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
+        if message:
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
+        try:
+            check_refusals(text, path, first_line, target.parent, seen)
+        except UnityIncludeRefusal as exc:  # found further down: name this line of the shader
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}" -> '
+                                      + str(exc).split(": ", 1)[1]) from None
 
 
 def included_text(program: str, folder: Path, seen=None) -> str:
     """The text of the files ``program`` includes (recursively; the shader's folder first, then
     pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
     struct Input, a vertex: or Lighting<Name> function defined in an include."""
-    from .program import CGINC
     seen = set() if seen is None else seen
     out = []
     for name in _INCLUDE.findall(_blank_comments(program)):
-        for candidate in (folder / name, CGINC / Path(name).name):
-            if candidate.is_file():
-                key = candidate.resolve()
-                if key in seen:
-                    break
-                seen.add(key)
-                try:
-                    text = candidate.read_text(encoding="utf-8").removeprefix("\ufeff")
-                except (OSError, UnicodeDecodeError):
-                    break
-                out.append(_blank_comments(text))
-                out.append(included_text(text, candidate.parent, seen))
-                break
+        candidate = resolve_included(name, folder)
+        if candidate is None or candidate.resolve() in seen:
+            continue
+        seen.add(candidate.resolve())
+        text = _read_include(candidate)
+        if text is None:
+            continue
+        out.append(_blank_comments(text))
+        out.append(included_text(text, candidate.parent, seen))
     return "\n".join(out)
+
+
+# `#pragma multi_compile[_local] ...` / `shader_feature[_local] ...`: the keywords a program
+# declares (a material's `keywords` may enable them; `_` and `__` are Unity's "none").
+_KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader_feature)(?:_local)?"
+                             r"(?:_vertex|_fragment)?[ \t]+([^\n]*)$", re.M)
+
+
+def declared_keywords(program: str) -> frozenset:
+    """The keywords ``#pragma multi_compile`` / ``shader_feature`` lines of ``program`` declare."""
+    words = set()
+    for m in _KEYWORD_PRAGMA.finditer(_blank_comments(program)):
+        words.update(w for w in m.group(1).split() if re.fullmatch(_IDENT, w) and set(w) != {"_"})
+    return frozenset(words)
 
 
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
@@ -569,7 +641,8 @@ def read_text(text: str, path: Path) -> M.UnityShader:
                     word, _, args = line[len("//@state "):].partition(" ")
                     apply_state([shaderlab.StateCommand(word, args, number)], shader.state,
                                 shader.properties, path, shader.warnings, surface=True)
-        _implicit_texture_properties(shader.program, shader.properties)
+        _implicit_texture_properties(shader.program + "\n" + included_text(shader.program, path.parent),
+                                     shader.properties)
         return M.UnityShader(path, shader.name, [shader], shader.properties, shader.warnings)
     try:
         layout = shaderlab.read_layout(text, path)
@@ -585,6 +658,8 @@ def read_text(text: str, path: Path) -> M.UnityShader:
         notes: list = []
         try:
             passes = _subshader_passes(layout, sub, props, warnings, notes)
+        except UnityIncludeRefusal:
+            raise
         except UnityShaderError as exc:
             reasons.append(f"SubShader {index + 1} (line {sub.line}): {exc}")
             continue
@@ -593,7 +668,8 @@ def read_text(text: str, path: Path) -> M.UnityShader:
                          + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
         for p in passes:
             if p.kind != "grab":
-                _implicit_texture_properties(p.program, props)
+                # samplers its includes declare too (TerrainSplatmapCommon.cginc's _Control, ...)
+                _implicit_texture_properties(p.program + "\n" + included_text(p.program, path.parent), props)
                 p.properties = props
         return M.UnityShader(path, layout.name, passes, props, warnings, notes)
     return _fallback(layout, reasons, path)

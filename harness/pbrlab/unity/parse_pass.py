@@ -12,7 +12,7 @@ from pathlib import Path
 
 from . import model as M
 from .parse import (UnityShaderError, _IDENT, _blank_comments, _line_of, _matching_brace, _top_level,
-                    included_text)
+                    check_refusals, included_text)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # Stages pbrlab does not run, named in the refusal.
@@ -97,6 +97,7 @@ def _structs(masked: str) -> dict:
 
 def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragmentPass:
     masked = _blank_comments(program)
+    check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + included_text(program, path.parent)
 
     def where(index: int) -> str:

@@ -28,7 +28,7 @@ from ..errors import PbrlabError
 from ..file_identity import include_closure
 from ..programs import TEMPLATES, template_source
 from ..programs import set_uniform as _set
-from . import generate, port
+from . import generate, parse, port
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
@@ -50,13 +50,42 @@ def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
     return [TEMPLATES, CGINC, shader.path.parent]
 
 
+_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
+
+
 def program_include(shader) -> tuple[str, dict]:
-    """(the line that includes the GLSL program, the virtual files it needs)."""
+    """(the line that includes the GLSL program, the virtual files it needs): the port of the
+    program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
+    includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
+    does), each include line relinked to its port, so an include's Cg goes through the same
+    type pass and renames as the program's, and errors name the original file and line."""
     if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
         return f'#include "{shader.path.name}"', {}
+    virtual: dict = {}
+    names: dict = {}   # resolved include -> its virtual name
+
+    def relinked(text: str, where: Path) -> str:
+        def relink(m):
+            target = parse.resolve_included(m.group(2), where)
+            if target is None:
+                return m.group(0)  # the GLSL expander names what it cannot find
+            key = target.resolve()
+            if key not in names:
+                names[key] = _PORT_INCLUDE.format(key)
+                body = shaders.strip_bom(target.read_text(encoding="utf-8"))
+                virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body), target.parent), str(target), 1)
+            return m.group(1) + names[key] + m.group(3)
+        return _INCLUDE_LINE.sub(relink, text)
+
     name = _PORT_INCLUDE.format(shader.path.name)
-    text = shaders.strip_bom(port.port_program(shader))
-    return f'#include "{name}"', {name: shaders.VirtualFile(text, str(shader.path), shader.program_line)}
+    text = relinked(shaders.strip_bom(port.port_program(shader)), shader.path.parent)
+    virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
+    return f'#include "{name}"', virtual
+
+
+def ported_sources(virtual: dict) -> list[Path]:
+    """The files the virtual ports were made from (their edits invalidate the program)."""
+    return [Path(v.display) for v in virtual.values()]
 
 
 def hlsl_program(shader) -> str:
@@ -90,7 +119,7 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
     include, virtual = program_include(shader)
     text = generate.vertex_source(shader, "glsl", include, shader.path.name, defines)
     source = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
-    return source, source.paths
+    return source, source.paths + ported_sources(virtual)
 
 
 def indexed(program, shader: Path):
@@ -131,7 +160,7 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
             paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
         else:
             fragment = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
-            paths += fragment.paths
+            paths += fragment.paths + ported_sources(virtual)
         if shader.vertex is not None:
             vertex, vertex_paths = _vertex_stage(shader, language, defines, dirs)
         else:

@@ -17,7 +17,8 @@ from ..file_identity import include_closure
 from . import generate, generate_pass
 from . import model as M
 from . import unprovided
-from .program import CGINC, TEMPLATES, hlsl_program, indexed, program_include, rename_vertex_globals
+from .program import (CGINC, TEMPLATES, hlsl_program, indexed, ported_sources, program_include,
+                      rename_vertex_globals)
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
 
@@ -58,7 +59,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 include, virtual = program_include(vf)
                 text = _stage_text(vf, "glsl", stage, defines, blended, include, vf.path.name)
                 stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
-                paths += stages[stage].paths
+                paths += stages[stage].paths + ported_sources(virtual)
         program = indexed(shaders.build_program(ctx, stages["vertex"], stages["fragment"]), vf.path)
         return program, paths
 
