@@ -268,3 +268,19 @@ Shader "t/Glass" {
     wall = got[2, 2, :3]
     assert np.abs(wall - [1.0, 0.5, 0.25]).max() <= 2e-3  # the emission, as the default surface stores it
     assert np.abs(centre - 0.5 * wall).max() <= 1e-6, (centre[:3], wall)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_fmod_truncates_as_direct3d_defines_it(language, tmp_path):
+    """fmod(x, y) = x - y trunc(x / y), the sign of x (glslang lowers HLSL's fmod to GLSL's
+    floored mod; the harness's HLSL support calls the truncating one): fmod(-5.5, 2) = -1.5,
+    fmod(5.5, 2) = 1.5, fmod(-7, 3) = -1, fmod(7, 3) = 1, exactly."""
+    path = _write(tmp_path, "fmod.shader", """Shader "t/fmod" { SubShader { Pass { CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+fixed4 frag() : SV_Target { return fixed4(fmod(-5.5, 2.0) + 2.0, fmod(5.5, 2.0), fmod(float2(-7, 7), float2(3, 3)) + float2(2, 0)); }
+ENDCG } } }""")
+    got = _render(path, language, base=tmp_path)
+    covered = got[..., 3] > 0
+    assert np.abs(got[covered][:, :3] - [0.5, 1.5, 1.0]).max() == 0.0

@@ -14,6 +14,14 @@ SamplerState pbrlab_unity_sampler;
 #define tex2Dproj(t, uv) (t).Sample(pbrlab_unity_sampler, (uv).xy / (uv).w)
 #define texCUBE(t, d) (t).Sample(pbrlab_unity_sampler, (d))
 #define texCUBElod(t, d) (t).SampleLevel(pbrlab_unity_sampler, (d).xyz, (d).w)
+// HLSL's fmod truncates (x - y trunc(x / y), the sign of x: Direct3D's definition); glslang
+// 11.x lowers it to GLSL's floored mod, so -5.5 fmod 2 gave 0.5 instead of -1.5. The Cg
+// programs call this one instead (float `%` keeps glslang's lowering: a known difference).
+float pbrlab_fmod(float x, float y) { return x - y * trunc(x / y); }
+float2 pbrlab_fmod(float2 x, float2 y) { return x - y * trunc(x / y); }
+float3 pbrlab_fmod(float3 x, float3 y) { return x - y * trunc(x / y); }
+float4 pbrlab_fmod(float4 x, float4 y) { return x - y * trunc(x / y); }
+#define fmod pbrlab_fmod
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,

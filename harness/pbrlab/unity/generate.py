@@ -272,8 +272,64 @@ def _vertex_value(shader: M.SurfaceShader, member: str) -> str:
     """What the vertex stage passes for an Input member: what vertex: wrote, or for `color`
     (unless written) the vertex colour v.color."""
     if member == "color" and member not in shader.vertex.writes_input:
-        return "v.color"
+        colour = _appdata_member(shader, "COLOR0")
+        return f"v.{colour}" if colour else "vec4(1.0, 1.0, 1.0, 1.0)"
     return f"o.{member}"
+
+
+def _appdata_member(shader: M.SurfaceShader, semantic: str):
+    """The member of the vertex function's input struct with ``semantic`` (appdata_full's
+    names when it takes one of Unity's structs), or None."""
+    from .generate_pass import UNITY_STRUCTS, canonical
+    members = shader.vertex.appdata_members or UNITY_STRUCTS["appdata_full"]
+    return next((n for t, n, s in members if canonical(s) == semantic), None)
+
+
+def _appdata_lines(shader: M.SurfaceShader, language: str) -> list[str]:
+    """Declare and fill the vertex function's input from the mesh, member by semantic."""
+    from .generate_pass import UNITY_STRUCTS, _attribute, _zero, canonical
+    from .parse import _component_count
+    v = shader.vertex
+    kind = v.appdata if v.appdata_members else "appdata_full"
+    members = v.appdata_members or UNITY_STRUCTS["appdata_full"]
+    lines = [f"    {kind} v = ({kind})0;" if language == "hlsl" else f"    {kind} v;"]
+    for mtype, name, semantic in members:
+        n = _component_count(mtype)
+        value = _attribute(canonical(semantic), n, language) if semantic else None
+        if value is None:
+            value = _zero(mtype, language)
+        if canonical(semantic) == "COLOR0":  # meshes here are white unless they carry colours
+            value = "float4(1.0, 1.0, 1.0, 1.0)" if language == "hlsl" else "vec4(1.0, 1.0, 1.0, 1.0)"
+            value = generate_fit(value, 4, n, language)
+        if value is not None:
+            lines.append(f"    v.{name} = {value};")
+    return lines
+
+
+def generate_fit(expr, have, want, language):
+    from .generate_pass import fit
+    return fit(expr, have, want, language)
+
+
+def _appdata_read(shader: M.SurfaceShader, language: str) -> dict:
+    """Expressions of the moved vertex: position (float4), normal, tangent (float4), uv."""
+    from .generate_pass import _ATTRIBUTES
+    from .parse import _component_count
+    members = {s: (t, n) for t, n, s in (shader.vertex.appdata_members or [])}
+    if not shader.vertex.appdata_members:
+        return {"position": "v.vertex", "normal": "v.normal", "tangent": "v.tangent", "uv": "v.texcoord.xy"}
+    from .generate_pass import canonical, fit
+    found = {canonical(s): (t, n) for s, (t, n) in members.items()}
+    out = {}
+    for key, semantic, want in (("position", "POSITION", 4), ("normal", "NORMAL", 3), ("tangent", "TANGENT", 4),
+                                ("uv", "TEXCOORD0", 2)):
+        if semantic in found:
+            t, n = found[semantic]
+            out[key] = fit(f"v.{n}", _component_count(t), want, language, 1.0 if key == "position" else 0.0)
+        else:
+            expr, have, w = _ATTRIBUTES[semantic]
+            out[key] = fit(expr, have, want, language, w)
+    return out
 
 
 def vertex_source(shader: M.SurfaceShader, language: str, program: str, display: str, defines: dict) -> str:
@@ -292,26 +348,23 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
     custom = custom_varyings(shader, language)
     call = f"{v.name}(v, o);" if v.input_param else f"{v.name}(v);"
+    fill = "\n".join(_appdata_lines(shader, language))
+    read = _appdata_read(shader, language)
     if language == "hlsl":
         outs = "".join(f", out {t} v_custom_{n} : TEXCOORD{4 + i}" for i, (t, n) in enumerate(custom))
         body = f"""
 void main(float3 in_position : POSITION, float3 in_normal : NORMAL, float2 in_uv : TEXCOORD0,
-          float4 in_tangent : TANGENT, out float4 position : SV_Position, out float3 v_position : TEXCOORD0,
+          float4 in_tangent : TANGENT, float2 in_uv1 : TEXCOORD1, out float4 position : SV_Position, out float3 v_position : TEXCOORD0,
           out float3 v_normal : TEXCOORD1, out float2 v_uv : TEXCOORD2, out float4 v_tangent : TEXCOORD3{outs}) {{
-    appdata_full v = (appdata_full)0;
-    v.vertex = float4(in_position, 1.0);
-    v.normal = in_normal;
-    v.tangent = in_tangent;
-    v.texcoord = float4(in_uv, 0.0, 0.0);
-    v.texcoord1 = v.texcoord;
-    v.color = float4(1.0, 1.0, 1.0, 1.0);
+{fill}
     Input o = (Input)0;
     {call}
-    float4 world = mul(unity_ObjectToWorld, v.vertex);
+    float4 world = mul(unity_ObjectToWorld, {read["position"]});
     v_position = world.xyz;
-    v_normal = mul(v.normal, (float3x3)unity_WorldToObject);
-    v_tangent = float4(mul((float3x3)unity_ObjectToWorld, v.tangent.xyz), v.tangent.w);
-    v_uv = v.texcoord.xy;
+    v_normal = mul({read["normal"]}, (float3x3)unity_WorldToObject);
+    float4 moved_tangent = {read["tangent"]};
+    v_tangent = float4(mul((float3x3)unity_ObjectToWorld, moved_tangent.xyz), moved_tangent.w);
+    v_uv = {read["uv"]};
 """ + "".join(f"    v_custom_{n} = {_vertex_value(shader, n)};\n" for _, n in custom) + """    position = mul(unity_MatrixVP, world);
 }
 """
@@ -322,28 +375,22 @@ in vec3 in_position;
 in vec3 in_normal;
 in vec2 in_uv;
 in vec4 in_tangent;
+in vec2 in_uv1;
 out vec3 v_position;
 out vec3 v_normal;
 out vec2 v_uv;
 out vec4 v_tangent;
 {decls}
 void main() {{
-    appdata_full v;
-    v.vertex = vec4(in_position, 1.0);
-    v.normal = in_normal;
-    v.tangent = in_tangent;
-    v.texcoord = vec4(in_uv, 0.0, 0.0);
-    v.texcoord1 = v.texcoord;
-    v.texcoord2 = vec4(0.0, 0.0, 0.0, 0.0);
-    v.texcoord3 = vec4(0.0, 0.0, 0.0, 0.0);
-    v.color = vec4(1.0, 1.0, 1.0, 1.0);
+{fill}
     Input o;
     {call}
-    vec4 world = unity_ObjectToWorld * v.vertex;
+    vec4 world = unity_ObjectToWorld * {read["position"]};
     v_position = world.xyz;
-    v_normal = v.normal * mat3(unity_WorldToObject);
-    v_tangent = vec4(mat3(unity_ObjectToWorld) * v.tangent.xyz, v.tangent.w);
-    v_uv = v.texcoord.xy;
+    v_normal = {read["normal"]} * mat3(unity_WorldToObject);
+    vec4 moved_tangent = {read["tangent"]};
+    v_tangent = vec4(mat3(unity_ObjectToWorld) * moved_tangent.xyz, moved_tangent.w);
+    v_uv = {read["uv"]};
 """ + "".join(f"    v_custom_{n} = {_vertex_value(shader, n)};\n" for _, n in custom) + """    gl_Position = unity_MatrixVP * world;
 }
 """

@@ -89,6 +89,8 @@ class VertexFunction:
     appdata: str                    # appdata_full, appdata_base, appdata_tan or a user struct
     writes_input: tuple = ()        # custom Input members it writes (Unity: out Input o)
     input_param: str | None = None
+    appdata_members: list = field(default_factory=list)  # a struct of the shader's own (appdata_t):
+                                                          # [(type, name, semantic)]
 
 
 @dataclass

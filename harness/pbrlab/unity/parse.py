@@ -447,6 +447,13 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
             # assigned, or handed to a macro or an out parameter (COMPUTE_EYEDEPTH(o.eyeDepth))
             written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)", found[1]))))
         shader.vertex = M.VertexFunction(pragma.vertex, vp[0][1], written, vp[1][2] if len(vp) == 2 else None)
+        if vp[0][1] not in ("appdata_full", "appdata_base", "appdata_tan"):
+            from .parse_pass import _structs
+            own = _structs(everything).get(vp[0][1])
+            if own is None:
+                raise UnityShaderError(f"{where(found[0].start())}: vertex:{pragma.vertex} takes "
+                                       f"{vp[0][1]}, a struct that is not defined")
+            shader.vertex.appdata_members = own.members
     if pragma.finalcolor:
         found = _function(everything, pragma.finalcolor)
         fp = _params(found[0].group(2)) if found else None
@@ -732,34 +739,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
             shader.warnings = warnings
             passes.append(shader)
         elif kind == "pass":
-            p = item[1]
-            mode = p.tags.get("LightMode", "")
-            if mode.lower() in SKIPPED_LIGHT_MODES:
-                notes.append(f"{path}:{p.line}: Pass{' ' + repr(p.name) if p.name else ''} (LightMode {mode}) "
-                             f"skipped: {SKIPPED_LIGHT_MODES[mode.lower()]}")
-                continue
-            if mode.lower() not in DRAWN_LIGHT_MODES:
-                notes.append(f"{path}:{p.line}: Pass (LightMode {mode}) skipped: not a forward pass")
-                continue
-            if p.fixed_function:
-                word, line = p.fixed_function[0]
-                raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
-                                       "programmable passes only")
-            if p.program is None:
-                state = M.RenderState()
-                apply_state(sub.state + p.state, state, props, path, [], surface=False)
-                if state.color_mask == "0":
-                    notes.append(f"{path}:{p.line}: a depth-only Pass (ColorMask 0) skipped")
-                    continue
-                raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
-                                       "fixed-function default, which pbrlab does not have")
-            if p.program.language != "CG":
-                raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
-                                       "pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)")
-            program, first = layout.program_text(p.program, sub)
-            vf = parse_pass(program, path, first, p)
-            apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
-            passes.append(vf)
+            vf = _pass(layout, sub, item[1], props, warnings, notes)
+            if vf is not None:
+                passes.append(vf)
         elif kind == "usepass":
             _, name, line = item
             pass_name = name.rpartition("/")[2].lower()
@@ -767,7 +749,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
                 notes.append(f'{path}:{line}: UsePass "{name}" skipped: '
                              f"{SKIPPED_LIGHT_MODES.get(pass_name, 'no shadow maps here')}")
                 continue
-            passes.extend(_use_pass(name, line, path))
+            used = _use_pass(name, line, path, props, warnings, notes)
+            if used is not None:
+                passes.append(used)
         elif kind == "grabpass":
             _, name, line = item
             passes.append(M.GrabPass(name, line))
@@ -776,18 +760,63 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
     return passes
 
 
-def _use_pass(name: str, line: int, path: Path) -> list:
+def _pass(layout, sub, p, props: dict, warnings: list, notes: list):
+    """The vertex/fragment pass of ``Pass { ... }`` in ``sub``, or None where the harness
+    skips it (a LightMode it does not draw, a depth-only pass), with a note saying so."""
+    from .parse_pass import parse_pass
+    path = layout.path
+    mode = p.tags.get("LightMode", "")
+    label = f"Pass{' ' + repr(p.name) if p.name else ''}"
+    if mode.lower() in SKIPPED_LIGHT_MODES:
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {SKIPPED_LIGHT_MODES[mode.lower()]}")
+        return None
+    if mode.lower() not in DRAWN_LIGHT_MODES:
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
+        return None
+    if p.fixed_function:
+        word, line = p.fixed_function[0]
+        raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
+                               "programmable passes only")
+    if p.program is None:
+        state = M.RenderState()
+        apply_state(sub.state + p.state, state, props, path, [], surface=False)
+        if state.color_mask == "0":
+            notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
+            return None
+        raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
+                               "fixed-function default, which pbrlab does not have")
+    if p.program.language != "CG":
+        raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
+                               "pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)")
+    program, first = layout.program_text(p.program, sub)
+    vf = parse_pass(program, path, first, p)
+    apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+    return vf
+
+
+def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list):
+    """``UsePass "Shader/NAME"``: the pass named NAME (Unity upper-cases pass names) of that
+    shader's first SubShader that has one, drawn with this material's properties; None
+    where the harness skips that pass (noted)."""
     shader_name, _, pass_name = name.rpartition("/")
     found = find_shader(shader_name, path) if shader_name else None
     if found is None:
         raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
                                ".shader file in this shader's folder or name it in $PBRLAB_UNITY_SHADERS)")
-    other = read_shader(found)
-    chosen = [p for p in other.passes if p.kind == "vertex-fragment" and (p.name or "").upper() == pass_name.upper()]
-    if not chosen:
-        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {found} has no pass named {pass_name!r} '
-                               "in the SubShader that runs (a surface program's passes cannot be used)")
-    return chosen
+    try:
+        layout = shaderlab.read_layout(found.read_text(encoding="utf-8").removeprefix("\ufeff"), found)
+    except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:
+        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {exc}') from None
+    for sub in layout.subshaders:
+        for item in sub.items:
+            if item[0] == "pass" and (item[1].name or "").upper() == pass_name.upper():
+                before = len(notes)
+                vf = _pass(layout, sub, item[1], props, warnings, notes)
+                if vf is None:
+                    notes[before:] = [f'{path}:{line}: UsePass "{name}": ' + n for n in notes[before:]]
+                return vf
+    raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {found} has no Pass named {pass_name!r} '
+                           "(a surface program's generated passes cannot be used)")
 
 
 def read_shader(path: Path) -> M.UnityShader:

@@ -49,10 +49,12 @@ def sphere_arrays(segments=SEGMENTS):
 def sphere_vertex_array(ctx: moderngl.Context, program):
     """A VertexArray of the unit UV sphere on ``program``, plus its buffers to release."""
     positions, normals, uv, tan, indices = sphere_arrays()
-    data = np.concatenate([positions, normals, uv, tan], axis=1).astype(np.float32)
+    white = np.ones((len(positions), 4))  # no vertex colours: Unity's white; the one UV set twice
+    data = np.concatenate([positions, normals, uv, tan, uv, white], axis=1).astype(np.float32)
     vbo, ibo = ctx.buffer(data.tobytes()), ctx.buffer(indices.tobytes())
     fmt, layout = [], []
-    for name, f in [("in_position", "3f"), ("in_normal", "3f"), ("in_uv", "2f"), ("in_tangent", "4f")]:
+    for name, f in [("in_position", "3f"), ("in_normal", "3f"), ("in_uv", "2f"), ("in_tangent", "4f"),
+                    ("in_uv1", "2f"), ("in_color", "4f")]:
         if program.get(name, None) is not None:
             fmt.append(f)
             layout.append(name)
