@@ -284,3 +284,19 @@ ENDCG } } }""")
     got = _render(path, language, base=tmp_path)
     covered = got[..., 3] > 0
     assert np.abs(got[covered][:, :3] - [0.5, 1.5, 1.0]).max() == 0.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_default_arguments_of_a_cg_function(language, tmp_path):
+    """HLSL's default arguments (GLSL has none: the port adds the shorter overloads, each
+    calling the full form with the defaults): x k + b with k = 0.5, b = 0.125 by default."""
+    path = _write(tmp_path, "defaults.shader", """Shader "t/defaults" { SubShader { Pass { CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+float scale(float x, float k = 0.5, float b = 0.125) { return x * k + b; }
+float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+fixed4 frag() : SV_Target { return fixed4(scale(1.0), scale(1.0, 0.25), scale(1.0, 1.0, 0.0), 1); }
+ENDCG } } }""")
+    got = _render(path, language, base=tmp_path)
+    covered = got[..., 3] > 0
+    assert np.abs(got[covered][:, :3] - [0.625, 0.375, 1.0]).max() == 0.0

@@ -592,20 +592,31 @@ class _Parser:
         name = self.name().text
         self.expect("(")
         params, scope = [], {}
+        spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
         if not self.at(")"):
             while True:
                 if self.at("void") and self.at(")", 1):
                     self.next()
                     break
+                first = self.peek().s
                 pq = self.qualifiers()
                 pt = self.type_spec()
                 if pt is None:
                     self.fail("parameter type")
-                pn = self.name().text
+                name_tok = self.name()
+                pn = name_tok.text
                 pt = self.array_suffix(pt)
                 self.semantic()
-                if self.accept("="):
+                spelled.append((self.text[first:name_tok.e], pn))
+                default = None
+                if self.at("="):
+                    eq = self.next()
+                    start = self.peek().s
                     self.assignment()
+                    default = self.text[start:self.toks[self.i - 1].e]
+                    if not self.decl_only:  # GLSL has no default arguments: overloads below
+                        self.edits.replace(eq.s, self.toks[self.i - 1].e, "")
+                defaults.append(default)
                 qual = next((q.text for q in pq if q.text in ("out", "inout")), "in")
                 params.append(Param(qual, pt))
                 scope[pn] = pt
@@ -614,6 +625,9 @@ class _Parser:
         self.expect(")")
         self.semantic()
         self.sym.functions.setdefault(name, []).append(Signature(ret, params))
+        first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
+        for k in range(first_default, len(params)):  # f(a, b = 1) may be called as f(a)
+            self.sym.functions[name].append(Signature(ret, params[:k]))
         if self.accept(";"):
             return
         if self.decl_only:
@@ -623,6 +637,16 @@ class _Parser:
         self.scopes = [scope]
         self.block(new_scope=False)
         self.scopes, self.ret = [], None
+        if first_default < len(params):
+            # HLSL's default arguments as GLSL overloads, on the closing brace's line (the
+            # port keeps its line count): each shorter form calls the full one with the defaults.
+            overloads = []
+            for k in range(first_default, len(params)):
+                args = [n for _, n in spelled[:k]] + [f"({d})" for d in defaults[k:]]
+                call = f"{name}({', '.join(args)})"
+                body = f"return {call};" if ret.base != "void" else f"{call};"
+                overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
+            self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
 
     def declarators(self, t, is_global, const):
         while True:
@@ -1221,3 +1245,13 @@ def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
 
 def convert(text: str, symbols: Symbols | None = None) -> str:
     return convert_detail(text, symbols).text
+
+
+def with_declarations(text: str) -> Symbols:
+    """The library's symbols and the declarations of ``text`` (a program's included files)."""
+    symbols = library().copy()
+    try:
+        _Parser(text, symbols, declarations_only=True).program()
+    except CgSyntaxError:
+        pass  # an include the parser cannot read adds nothing
+    return symbols

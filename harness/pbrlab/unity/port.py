@@ -29,6 +29,7 @@ port stays line for line with the original and compile errors map back by line):
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from . import cg_types
 from . import model as M
@@ -94,12 +95,19 @@ def port_code(code: str) -> str:
 
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM ported, line for line (comments kept)."""
-    return port_text(shader.program)
+    return port_text(shader.program, shader.path.parent)
 
 
-def port_text(program: str) -> str:
-    """A Cg program's text ported (passes A and B)."""
-    segments = _code_segments(cg_types.convert(program))
+def port_text(program: str, folder: Path | None = None) -> str:
+    """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
+    declarations of the files it includes are known to the type pass too."""
+    symbols = None
+    if folder is not None:
+        from .parse import included_text
+        included = included_text(program, folder)
+        if included.strip():
+            symbols = cg_types.with_declarations(included)
+    segments = _code_segments(cg_types.convert(program, symbols))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = port_code(code)
     for i, (is_code, t) in enumerate(segments):

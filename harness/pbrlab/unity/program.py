@@ -73,7 +73,8 @@ def program_include(shader) -> tuple[str, dict]:
             if key not in names:
                 names[key] = _PORT_INCLUDE.format(key)
                 body = shaders.strip_bom(target.read_text(encoding="utf-8"))
-                virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body), target.parent), str(target), 1)
+                virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body, target.parent), target.parent),
+                                                          str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 
