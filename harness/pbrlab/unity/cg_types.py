@@ -842,6 +842,8 @@ class _Parser:
                 elif t.text in ("+=", "-=", "*=", "/=") and lhs.t.numeric and rhs.t.numeric and not lhs.t.cols and not rhs.t.cols:
                     if rhs.t.dim > 1 and rhs.t.dim > lhs.t.dim:
                         self.truncate(rhs, lhs.t.dim)
+                    elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
+                        self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
             return E(lhs.s, rhs.e, lhs.t, False)
         return lhs
 

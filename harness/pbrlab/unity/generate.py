@@ -16,6 +16,7 @@ lighting, final colour) and the entry point.
 from __future__ import annotations
 
 from . import model as M
+from .parse import _component_count
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
                     "pbr/unity/global_illumination")
@@ -54,8 +55,10 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
                 lines.append("    IN.worldRefl = reflect(-f.view, f.normal);")
         elif name == "screenPos":
             lines.append("    IN.screenPos = ComputeScreenPos(" + _mul(language, "unity_MatrixVP", "vec4(f.position, 1.0)") + ");")
-        elif name == "color":  # the vertex colour: white on meshes here, unless vertex: sets it
-            lines.append("    IN.color = pbrlab_custom_color;" if shader.vertex else "    IN.color = f.color;")
+        elif shader.is_color(name):  # the vertex colour: white on meshes here, unless vertex: sets it
+            from .generate_pass import fit
+            source = f"pbrlab_custom_{name}" if shader.vertex else fit("f.color", 4, _component_count(kind) or 4, language)
+            lines.append(f"    IN.{name} = {source};")
         else:  # written by the vertex: function, interpolated (mesh entry: pbrlab_custom_*)
             lines.append(f"    IN.{name} = pbrlab_custom_{name};")
     for name in shader.facing_members:  # VFACE: 1 seen from the front, -1 from the back
@@ -264,16 +267,18 @@ def custom_varyings(shader: M.SurfaceShader, language: str):
     if shader.vertex is None:
         return []
     members = list(shader.custom_members())
-    members += [(t, n) for t, n in shader.input_members if n == "color"]  # from v.color
+    members += [(t, n) for t, n in shader.input_members if shader.is_color(n)]  # from v.color
     return [(t if language == "hlsl" else port_code_types(t), n) for t, n in members]
 
 
 def _vertex_value(shader: M.SurfaceShader, member: str) -> str:
     """What the vertex stage passes for an Input member: what vertex: wrote, or for `color`
     (unless written) the vertex colour v.color."""
-    if member == "color" and member not in shader.vertex.writes_input:
+    if shader.is_color(member) and member not in shader.vertex.writes_input:
+        from .generate_pass import fit
+        kind = next(t for t, n in shader.input_members if n == member)
         colour = _appdata_member(shader, "COLOR0")
-        return f"v.{colour}" if colour else "vec4(1.0, 1.0, 1.0, 1.0)"
+        return fit(f"v.{colour}" if colour else "vec4(1.0, 1.0, 1.0, 1.0)", 4, _component_count(kind) or 4, "glsl")
     return f"o.{member}"
 
 

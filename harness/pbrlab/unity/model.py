@@ -104,6 +104,7 @@ class SurfaceShader:
     input_members: list = field(default_factory=list)    # [(type, name)]
     internal_data: bool = False
     facing_members: list = field(default_factory=list)  # Input members with the VFACE semantic
+    color_members: list = field(default_factory=list)   # ... with COLOR: the vertex colour, as `color`
     output_type: str = "SurfaceOutputStandard"
     output_fields: dict = field(default_factory=dict)    # field -> component count
     writes_normal: bool = False
@@ -127,8 +128,11 @@ class SurfaceShader:
                     out.append((name, i + 1, name[len(prefix) - 1:]))  # uv_MainTex -> _MainTex
         return out
 
+    def is_color(self, member: str) -> bool:
+        return member == "color" or member in self.color_members
+
     def custom_members(self):
-        filled = set(FILLED_INPUTS) | {m for m, _, _ in self.uv_members()}
+        filled = set(FILLED_INPUTS) | set(self.color_members) | {m for m, _, _ in self.uv_members()}
         return [(t, n) for t, n in self.input_members if n not in filled]
 
 

@@ -325,6 +325,11 @@ def _members(body: str):
         if re.search(r":\s*(?:VFACE|SV_IsFrontFace)\s*$", decl.strip(), re.I):
             out.append(("VFACE", decl.split(":")[0].split()[-1]))
             continue
+        if re.search(r":\s*COLOR0?\s*$", decl.strip(), re.I):  # Unity fills it with the vertex colour
+            words = decl.split(":")[0].split()
+            out.append(("COLOR", words[-1]))
+            out.append((words[-2], words[-1]))
+            continue
         decl = re.sub(r":\s*\w+\s*$", "", decl.strip())
         if not decl:
             continue
@@ -433,7 +438,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     members = _members(ibody)
     shader.internal_data = any(t == "INTERNAL_DATA" for t, _ in members)
     shader.facing_members = [n for t, n in members if t == "VFACE"]
-    shader.input_members = [(t, n) for t, n in members if t not in ("INTERNAL_DATA", "VFACE")]
+    shader.color_members = [n for t, n in members if t == "COLOR"]
+    shader.input_members = [(t, n) for t, n in members if t not in ("INTERNAL_DATA", "VFACE", "COLOR")]
     # vertex: and finalcolor: functions.
     if pragma.vertex:
         found = _function(everything, pragma.vertex)
