@@ -2,7 +2,7 @@
 //
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
-//           ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat3 and mat4,
+//           sincos(x, s, c), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), tex2D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
@@ -54,6 +54,9 @@ vec4 pbr_unity_pow(vec4 x, float y) { return pow(x, vec4(y)); }
 vec2 fmod(vec2 x, float y) { return fmod(x, vec2(y)); }
 vec3 fmod(vec3 x, float y) { return fmod(x, vec3(y)); }
 vec4 fmod(vec4 x, float y) { return fmod(x, vec4(y)); }
+
+// HLSL's sincos(x, out s, out c): both at once.
+#define sincos(x, s, c) { s = sin(x); c = cos(x); }
 
 float atan2(float y, float x) { return atan(y, x); }
 vec2 atan2(vec2 y, vec2 x) { return atan(y, x); }

@@ -18,6 +18,7 @@ from pathlib import Path
 
 from ..errors import PbrlabError
 from . import model as M
+from .conditionals import active_text, defines_of
 from . import shaderlab
 
 FLOAT32_MAX = 3.4028234663852886e38
@@ -393,6 +394,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     check_refusals(program, path, first_line, path.parent)
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
+    everything = active_text(everything, defines_of(everything))  # the default variant's branches
 
     def where(index: int) -> str:  # an index past the program's text lies in an include
         return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"

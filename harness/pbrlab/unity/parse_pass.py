@@ -11,6 +11,7 @@ import re
 from pathlib import Path
 
 from . import model as M
+from .conditionals import active_text, defines_of
 from .parse import (UnityShaderError, _IDENT, _blank_comments, _line_of, _matching_brace, _top_level,
                     check_refusals, included_text)
 
@@ -99,6 +100,7 @@ def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFrag
     masked = _blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + included_text(program, path.parent)
+    everything = active_text(everything, defines_of(everything))  # the default variant's branches
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"

@@ -46,19 +46,61 @@ UNPROVIDED = {
 _NAME = re.compile(r"\b(" + "|".join(sorted(UNPROVIDED, key=len, reverse=True)) + r")\b")
 
 
-def named_missing(message: str):
-    """(name, feature) of the first unprovided Unity name an error line mentions, or None."""
+# Unity's own naming (UnityCG.cginc and friends): an unknown identifier spelled so is a Unity
+# name pbrlab lacks, not a mistake of the shader's.
+_UNITY_SPELLING = re.compile(r"\b(unity_\w+|UNITY_\w+|Unity[A-Z]\w+|_Camera\w*Texture\w*|SAMPLE_\w*DEPTH\w*|"
+                             r"(?:Encode|Decode|Unpack|Pack)(?:DepthNormal|ViewNormalStereo|Float\w*|Heightmap))\b")
+_MISSING_INCLUDE = re.compile(r'(?:header name: |cannot find include ")([\w./-]+\.cginc)')
+_AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
+
+
+def named_missing(message: str, shader=None):
+    """(name, feature) of the first Unity name pbrlab lacks that an error line points at:
+    one of UNPROVIDED, a Unity include without a stand-in, or an identifier spelled as Unity
+    spells its own (named by the error, or found on the source line the error is at)."""
     for line in message.splitlines():
-        if "error" in line.lower():
-            m = _NAME.search(line)
-            if m:
-                return m.group(1), UNPROVIDED[m.group(1)]
+        if "error" not in line.lower():
+            continue
+        m = _NAME.search(line)
+        if m:
+            return m.group(1), UNPROVIDED[m.group(1)]
+        m = _MISSING_INCLUDE.search(line)
+        if m:
+            return m.group(1), "one of Unity's include files pbrlab has no stand-in for"
+        m = _UNITY_SPELLING.search(line.split("error", 1)[1])
+        if m and not m.group(1).startswith(("unity_Object", "unity_World", "UNITY_MATRIX")):
+            return m.group(1), "a Unity name pbrlab does not provide"
+        source = _source_line(line, shader)
+        m = _UNITY_SPELLING.search(source) if source else None
+        if m:
+            return m.group(1), "a Unity name pbrlab does not provide"
+        break  # the first error decides: later ones follow from it
     return None
+
+
+def _source_line(error_line: str, shader=None) -> str:
+    """The text of the file and line an error names (``X.shader:18: error ...``; a bare
+    name is ``shader``'s when it matches), or ''."""
+    m = _AT_LINE.search(error_line)
+    if not m:
+        return ""
+    from pathlib import Path
+    named = Path(m.group(1))
+    if shader is not None and not named.is_file() and named.name == Path(shader).name:
+        named = Path(shader)
+    for candidate in (named,):
+        try:
+            lines = candidate.read_text(encoding="utf-8", errors="replace").splitlines()
+        except OSError:
+            return ""
+        n = int(m.group(2))
+        return lines[n - 1] if 0 < n <= len(lines) else ""
+    return ""
 
 
 def raise_named(exc: Exception, path) -> None:
     """Re-raise ``exc`` as a refusal naming the missing Unity feature when its message names one."""
-    found = named_missing(str(exc))
+    found = named_missing(str(exc), path)
     if found is None:
         raise exc
     name, feature = found

@@ -1,0 +1,86 @@
+"""The preprocessor's conditionals, as the compiler will take them, for the model of a
+program: which struct members, which function bodies exist in the variant that runs.
+
+    text = active_text(masked, defines_of(masked, pragma_target))
+
+Lines in a branch not taken are blanked (offsets and line numbers kept). Conditions are
+evaluated with the program's own object-like ``#define``s, Unity's predefined macros
+(``UNITY_VERSION`` 2019.4, ``SHADER_TARGET`` from ``#pragma target``) and no keyword (Unity's
+default variant; the material's keywords are added by the caller). A condition this reader
+cannot evaluate counts as true, as the reader did before it knew conditionals.
+"""
+
+from __future__ import annotations
+
+import re
+
+_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif)\b([^\n]*)$", re.M)
+_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(?![\w(])[ \t]*([^\n]*)$", re.M)
+UNITY_PREDEFINED = {"UNITY_VERSION": 201940, "SHADER_TARGET": 25}
+
+
+def defines_of(text: str, keywords=()) -> dict:
+    """Object-like macros the text defines, Unity's predefined ones and ``keywords``."""
+    out = dict(UNITY_PREDEFINED)
+    m = re.search(r"^[ \t]*#[ \t]*pragma[ \t]+target[ \t]+(\d+)(?:\.(\d))?", text, re.M)
+    if m:
+        out["SHADER_TARGET"] = int(m.group(1)) * 10 + int(m.group(2) or 0)
+    for d in _DEFINE.finditer(text):
+        value = d.group(2).strip()
+        out[d.group(1)] = int(value) if re.fullmatch(r"-?\d+", value) else 1
+    out.update({k: 1 for k in keywords})
+    return out
+
+
+def _evaluate(condition: str, defines: dict):
+    """True/False, or None when the condition is beyond this reader."""
+    expr = re.sub(r"//.*", "", condition).strip()
+    expr = re.sub(r"\bdefined\s*\(\s*(\w+)\s*\)|\bdefined\s+(\w+)",
+                  lambda m: "1" if (m.group(1) or m.group(2)) in defines else "0", expr)
+    expr = re.sub(r"\b[A-Za-z_]\w*\b", lambda m: str(defines.get(m.group(0), 0)), expr)
+    expr = expr.replace("&&", " and ").replace("||", " or ")
+    expr = re.sub(r"!(?!=)", " not ", expr)
+    if not re.fullmatch(r"[\d\s()<>=!+\-*/andort]*", expr):
+        return None
+    try:
+        return bool(eval(expr, {"__builtins__": {}}, {}))  # digits, comparisons, and/or/not only
+    except Exception:
+        return None
+
+
+def active_text(text: str, defines: dict) -> str:
+    """``text`` with the lines of branches not taken blanked."""
+    out, pos = [], 0
+    stack = []   # [(this branch taken, some branch taken, parent active)]
+    active = True
+    for m in _DIRECTIVE.finditer(text):
+        chunk = text[pos:m.start()]
+        out.append(chunk if active else re.sub(r"[^\n]", " ", chunk))
+        kind, rest = m.group(1), m.group(2)
+        if kind in ("if", "ifdef", "ifndef"):
+            if kind == "if":
+                value = _evaluate(rest, defines)
+            else:
+                name = rest.split()[0] if rest.split() else ""
+                value = (name in defines) == (kind == "ifdef")
+            taken = True if value is None else value
+            stack.append((taken, taken, active))
+            active = active and taken
+        elif kind == "elif" and stack:
+            _, any_taken, parent = stack[-1]
+            value = _evaluate(rest, defines)
+            taken = not any_taken and (True if value is None else value)
+            stack[-1] = (taken, any_taken or taken, parent)
+            active = parent and taken
+        elif kind == "else" and stack:
+            _, any_taken, parent = stack[-1]
+            stack[-1] = (not any_taken, True, parent)
+            active = parent and not any_taken
+        elif kind == "endif" and stack:
+            _, _, parent = stack.pop()
+            active = parent
+        out.append(m.group(0))
+        pos = m.end()
+    tail = text[pos:]
+    out.append(tail if active else re.sub(r"[^\n]", " ", tail))
+    return "".join(out)
