@@ -14,20 +14,17 @@ from __future__ import annotations
 
 import re
 
-_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif)\b([^\n]*)$", re.M)
-_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(?![\w(])[ \t]*([^\n]*)$", re.M)
+_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif|define|undef)\b([^\n]*)$", re.M)
 UNITY_PREDEFINED = {"UNITY_VERSION": 201940, "SHADER_TARGET": 25}
 
 
 def defines_of(text: str, keywords=()) -> dict:
-    """Object-like macros the text defines, Unity's predefined ones and ``keywords``."""
+    """Unity's predefined macros for ``text`` (its #pragma target) and ``keywords``; the
+    text's own #defines take effect where ``active_text`` meets them, in order."""
     out = dict(UNITY_PREDEFINED)
     m = re.search(r"^[ \t]*#[ \t]*pragma[ \t]+target[ \t]+(\d+)(?:\.(\d))?", text, re.M)
     if m:
         out["SHADER_TARGET"] = int(m.group(1)) * 10 + int(m.group(2) or 0)
-    for d in _DEFINE.finditer(text):
-        value = d.group(2).strip()
-        out[d.group(1)] = int(value) if re.fullmatch(r"-?\d+", value) else 1
     out.update({k: 1 for k in keywords})
     return out
 
@@ -51,13 +48,22 @@ def _evaluate(condition: str, defines: dict):
 def active_text(text: str, defines: dict) -> str:
     """``text`` with the lines of branches not taken blanked."""
     out, pos = [], 0
+    defines = dict(defines)
     stack = []   # [(this branch taken, some branch taken, parent active)]
     active = True
     for m in _DIRECTIVE.finditer(text):
         chunk = text[pos:m.start()]
         out.append(chunk if active else re.sub(r"[^\n]", " ", chunk))
         kind, rest = m.group(1), m.group(2)
-        if kind in ("if", "ifdef", "ifndef"):
+        if kind in ("define", "undef"):
+            d = re.match(r"[ \t]+(\w+)(\()?[ \t]*(.*)", rest)
+            if active and d:
+                if kind == "undef":
+                    defines.pop(d.group(1), None)
+                else:
+                    value = "" if d.group(2) else d.group(3).strip()
+                    defines[d.group(1)] = int(value) if re.fullmatch(r"-?\d+", value) else 1
+        elif kind in ("if", "ifdef", "ifndef"):
             if kind == "if":
                 value = _evaluate(rest, defines)
             else:
