@@ -2,7 +2,8 @@
 //
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
-//           sincos(x, s, c), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat3 and mat4,
+//           sincos(x, s, c), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
+//           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), tex2D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
@@ -55,6 +56,12 @@ vec2 fmod(vec2 x, float y) { return fmod(x, vec2(y)); }
 vec3 fmod(vec3 x, float y) { return fmod(x, vec3(y)); }
 vec4 fmod(vec4 x, float y) { return fmod(x, vec4(y)); }
 
+// HLSL's componentwise c ? a : b on a vector condition (GLSL's ?: takes one bool): the type
+// pass of port-unity writes pbr_unity_select(c, a, b), both branches at the condition's size.
+vec2 pbr_unity_select(bvec2 c, vec2 a, vec2 b) { return mix(b, a, c); }
+vec3 pbr_unity_select(bvec3 c, vec3 a, vec3 b) { return mix(b, a, c); }
+vec4 pbr_unity_select(bvec4 c, vec4 a, vec4 b) { return mix(b, a, c); }
+
 // HLSL's sincos(x, out s, out c): both at once.
 #define sincos(x, s, c) { s = sin(x); c = cos(x); }
 
@@ -66,7 +73,10 @@ vec4 mul(mat4 m, vec4 v) { return m * v; }
 vec4 mul(vec4 v, mat4 m) { return v * m; }
 vec3 mul(mat3 m, vec3 v) { return m * v; }
 vec3 mul(vec3 v, mat3 m) { return v * m; }
+vec2 mul(mat2 m, vec2 v) { return m * v; }
+vec2 mul(vec2 v, mat2 m) { return v * m; }
 mat4 mul(mat4 a, mat4 b) { return a * b; }
+mat2 mul(mat2 a, mat2 b) { return a * b; }
 mat3 mul(mat3 a, mat3 b) { return a * b; }
 
 bool pbr_unity_clip_below_zero(float x) { return x < 0.0; }

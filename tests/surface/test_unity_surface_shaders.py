@@ -249,7 +249,7 @@ def _whole_quads(mask):
     """Pixels whose 2x2 quad (GL derivative block) is entirely covered. At a ray-traced
     sphere's silhouette a quad mixes hit and missed pixels, so implicit derivatives and the
     texture LOD there are meaningless (the missed lanes carry no surface): tests of texture
-    lookups skip those pixels (README, "Unity surface shaders")."""
+    lookups skip those pixels (README, "Unity shaders")."""
     h, w = mask.shape
     blocks = mask.reshape(h // 2, 2, w // 2, 2).all(axis=(1, 3))
     return np.repeat(np.repeat(blocks, 2, axis=0), 2, axis=1)

@@ -300,3 +300,18 @@ ENDCG } } }""")
     got = _render(path, language, base=tmp_path)
     covered = got[..., 3] > 0
     assert np.abs(got[covered][:, :3] - [0.625, 0.375, 1.0]).max() == 0.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_componentwise_select_on_a_vector_condition(language, tmp_path):
+    """HLSL's c ? a : b with a vector c selects per component (a scalar branch splats): for
+    c = (1, -1, 2) > 0 and a = 0.25, b = (0.5, 0.75, 1): (0.25, 0.75, 0.25)."""
+    path = _write(tmp_path, "select.shader", """Shader "t/select" { SubShader { Pass { CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+fixed4 frag() : SV_Target { float3 c = float3(1, -1, 2); return fixed4(c > 0 ? 0.25 : float3(0.5, 0.75, 1), 1); }
+ENDCG } } }""")
+    got = _render(path, language, base=tmp_path)
+    covered = got[..., 3] > 0
+    assert np.abs(got[covered][:, :3] - [0.25, 0.75, 0.25]).max() == 0.0

@@ -851,12 +851,26 @@ class _Parser:
         c = self.binary(0)
         if not self.at("?"):
             return c
-        self.next()
+        question = self.next()
         a = self.assignment()
-        self.expect(":")
+        colon = self.expect(":")
         b = self.assignment()
         if c.t is not None and c.t.vector:
-            return E(c.s, b.e, None, False)  # a componentwise select: left as is
+            # HLSL selects per component; GLSL's ?: takes one bool: cg_compat's
+            # pbr_unity_select(c, a, b) = mix(b, a, c) with both branches at c's size
+            if a.t is None or b.t is None or not (a.t.numeric and b.t.numeric) or a.t.cols or b.t.cols:
+                return E(c.s, b.e, None, False)
+            t = Type(_base(a.t, b.t), c.t.dim)
+            if c.t.base != "bool":
+                self.wrap(c, Type("bool", c.t.dim).cg())
+            for x in (a, b):
+                if x.t.dim != t.dim or x.t.base != t.base:
+                    self.coerce(x, t)
+            self.edits.open(c.s, "pbr_unity_select(")
+            self.edits.replace(question.s, question.e, ",")
+            self.edits.replace(colon.s, colon.e, ",")
+            self.edits.close(b.e, ")")
+            return E(c.s, b.e, t, True)
         self.condition(c)
         t = None
         if a.t is not None and b.t is not None:

@@ -101,11 +101,17 @@ def is_compiler_error(message: str) -> bool:
     return any(word in first for word in _COMPILER)
 
 
+def without_folders(text: str) -> str:
+    """``text`` with every path cut to its file name (a key that holds on any checkout)."""
+    return re.sub(r"(?:/[^\s/:()\"']+)+/", "", text)
+
+
 def refusal_key(message: str) -> str:
     """The part of a refusal that names the missing feature (without the file's path and line)."""
     first = message.splitlines()[0] if message else ""
-    return re.sub(r"^.*?\.(?:shader|cginc|glsl|json)(?::\d+)*: (?:materials\.\w+\.surface: )?(?:.*?\.shader:\d+: )?", "",
-                  first)[:90]
+    first = re.sub(r"^.*?\.(?:shader|cginc|glsl|json)(?::\d+)*: (?:materials\.\w+\.surface: )?(?:.*?\.shader:\d+: )?", "",
+                   first)
+    return without_folders(first)[:90]
 
 
 def agreement(a: np.ndarray, b: np.ndarray) -> float:
@@ -136,6 +142,23 @@ def run_corpus(root: Path, progress=None) -> dict:
     return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
 
 
+def expected_outcomes(report: dict) -> dict:
+    """{shader: "rendered", what its refusal names, or "defect: " and a compiler's error}."""
+    expected = {}
+    for row in report["rows"]:
+        statuses = {row[lang]["status"] for lang in LANGUAGES}
+        if statuses == {"rendered"}:
+            expected[row["path"]] = "rendered"
+            continue
+        bad = next(row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered")
+        key = refusal_key(bad["message"]) if bad["status"] == "refused" else bad["status"]
+        if bad["status"] == "refused" and is_compiler_error(bad["message"]):
+            errors = [e for e in bad["message"].splitlines() if "error" in e.lower()]
+            key = "defect: " + without_folders(re.sub(r"^.*?error:?\s*", "", errors[0] if errors else key))[:80]
+        expected[row["path"]] = key
+    return expected
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m pbrlab.unity.corpus", description=__doc__.split("\n\n")[0])
     parser.add_argument("root", type=Path, help="a folder of .shader files (searched recursively)")
@@ -157,14 +180,7 @@ def main(argv=None) -> int:
         with outputs.transaction([args.out]) as tx:
             tx.write_text(args.out, json.dumps(report, indent=1) + "\n")
     if args.expect:
-        expected = {}
-        for row in report["rows"]:
-            statuses = {row[lang]["status"] for lang in LANGUAGES}
-            if statuses == {"rendered"}:
-                expected[row["path"]] = "rendered"
-            else:  # what a refusal names; a defect (traceback, compiler error) is kept as it is
-                bad = next(row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered")
-                expected[row["path"]] = refusal_key(bad["message"]) if bad["status"] == "refused" else bad["status"]
+        expected = expected_outcomes(report)
         with outputs.transaction([args.expect]) as tx:
             tx.write_text(args.expect, json.dumps(expected, indent=1, sort_keys=True) + "\n")
     return 0

@@ -31,7 +31,7 @@ class UnityShaderError(PbrlabError):
 
 
 # Options with no effect here: the harness has no shadows, lightmaps, deferred or
-# prepass paths, fog, instancing or meta pass (README, "Unity surface shaders").
+# prepass paths, fog, instancing or meta pass (README, "Unity shaders").
 NO_EFFECT_OPTIONS = frozenset("""
     addshadow fullforwardshadows noshadow nolightmap nodirlightmap nodynlightmap
     noforwardadd nometa noinstancing nofog nolppv noshadowmask novertexlights

@@ -93,6 +93,25 @@ def port_code(code: str) -> str:
     return _globals_uniform(code)
 
 
+def _unity_globals() -> frozenset:
+    """The globals unity_compat/shader_variables.glsl declares (Unity's UnityShaderVariables /
+    UnityLightingCommon names: _LightColor0, _Time, ...)."""
+    text = (cg_types.ROOT / "glsl" / "unity_compat" / "shader_variables.glsl").read_text(encoding="utf-8")
+    return frozenset(re.findall(r"^(?:uniform\s+)?(?:vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M))
+
+
+_GLOBAL_DECLARATION = re.compile(r"^([ \t]*)(uniform\s+(?:vec[234]|mat[234]|float)\s+(\w+)\s*;)", re.M)
+
+
+def _drop_unity_redeclarations(code: str) -> str:
+    """A program's own declaration of a global Unity declares for it (``fixed4 _LightColor0;``,
+    written where Lighting.cginc is not included) is one GLSL refuses as a redeclaration: it is
+    kept as a comment, on its line."""
+    names = _unity_globals()
+    return _GLOBAL_DECLARATION.sub(lambda m: f"{m.group(1)}/* {m.group(2)} (declared by UnityShaderVariables) */"
+                                   if m.group(3) in names else m.group(0), code)
+
+
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM ported, line for line (comments kept)."""
     return port_text(shader.program, shader.path.parent)
@@ -109,7 +128,7 @@ def port_text(program: str, folder: Path | None = None) -> str:
             symbols = cg_types.with_declarations(included)
     segments = _code_segments(cg_types.convert(program, symbols))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
-    code = port_code(code)
+    code = _drop_unity_redeclarations(port_code(code))
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)

@@ -59,7 +59,7 @@ def named_missing(message: str, shader=None):
     one of UNPROVIDED, a Unity include without a stand-in, or an identifier spelled as Unity
     spells its own (named by the error, or found on the source line the error is at)."""
     for line in message.splitlines():
-        if "error" not in line.lower():
+        if "error" not in line.lower() and "cannot find include" not in line:
             continue
         m = _NAME.search(line)
         if m:

@@ -8,7 +8,7 @@
 // Differences: none in the maths. In Unity the canvas enables UNITY_UI_CLIP_RECT (a
 //   RectMask2D) and sets _ClipRect; in pbrlab a material enables the keyword itself
 //   ("keywords": ["UNITY_UI_CLIP_RECT"]) and gives _ClipRect as a Vector property
-//   (README, "Unity surface shaders"). Without the keyword, Unity's default variant, nothing
+//   (README, "Unity shaders"). Without the keyword, Unity's default variant, nothing
 //   is clipped.
 // Cg text in the plain subset harness/pbrlab/unity/port.py ports to GLSL.
 #ifndef PBRLAB_UNITY_UI_CGINC
