@@ -34,6 +34,8 @@
 //           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL (read the vertex
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
+//           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
+//           UNITY_SAMPLE_TEXCUBE(_LOD), UNITY_DECLARE/SAMPLE_SCREENSPACE_TEXTURE;
 //           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
 //           gives, white = the far plane by default: no depth pre-pass here);
 //           UNITY_DEFINE_INSTANCED_PROP declares a plain uniform, UNITY_ACCESS_INSTANCED_PROP,
@@ -134,6 +136,22 @@ vec4 _WorldSpaceLightPos0;
 #define SAMPLE_DEPTH_TEXTURE(tex, uv) (texture(tex, (uv).xy).r)
 #define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (textureProj(tex, uv).r)
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (textureLod(tex, (uv).xy, (uv).w).r)
+
+// HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
+// texture: the GL texture's own filtering applies).
+#ifndef UNITY_DECLARE_TEX2D
+#define UNITY_DECLARE_TEX2D(tex) uniform sampler2D tex
+#endif
+#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) uniform sampler2D tex
+#ifndef UNITY_SAMPLE_TEX2D
+#define UNITY_SAMPLE_TEX2D(tex, uv) texture(tex, uv)
+#endif
+#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, uv) texture(tex, uv)
+#define UNITY_DECLARE_TEXCUBE(tex) uniform samplerCube tex
+#define UNITY_SAMPLE_TEXCUBE(tex, dir) texture(tex, dir)
+#define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) uniform sampler2D tex
+#define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) texture(tex, (uv).xy)
 
 vec4 UnityObjectToClipPos(vec3 pos) {
     return unity_MatrixVP * (unity_ObjectToWorld * vec4(pos, 1.0));

@@ -512,7 +512,9 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
     """A sampler the program declares without a Properties line still gets a texture, as in
     Unity (its default, white here; a samplerCUBE the environment) and _ST (1, 1, 0, 0)."""
     masked = _top_level(_blank_comments(program))
-    masked = re.sub(r"\bUNITY_DECLARE_DEPTH_TEXTURE\s*\(\s*(\w+)\s*\)", r"sampler2D \1", masked)
+    masked = re.sub(r"\bUNITY_DECLARE_(?:DEPTH_TEXTURE|TEX2D|TEX2D_NOSAMPLER|SCREENSPACE_TEXTURE)\s*\(\s*(\w+)\s*\)",
+                    r"sampler2D \1", masked)
+    masked = re.sub(r"\bUNITY_DECLARE_TEXCUBE\s*\(\s*(\w+)\s*\)", r"samplerCUBE \1", masked)
     masked = re.sub(r"\bsampler2D_(?:float|half)\b", "sampler2D", masked)
     for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + _IDENT + r")\s*;", masked):
         if name not in properties:

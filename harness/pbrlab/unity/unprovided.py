@@ -7,6 +7,7 @@ compiler's "undeclared identifier".
 
 from __future__ import annotations
 
+import functools
 import re
 
 from .parse import UnityShaderError
@@ -54,6 +55,30 @@ _MISSING_INCLUDE = re.compile(r'(?:header name: |cannot find include ")([\w./-]+
 _AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
 
 
+@functools.lru_cache(maxsize=1)
+def _provided() -> frozenset:
+    """The names pbrlab's Unity layer defines (macros, uniforms, functions, structs)."""
+    from .cg_types import LIBRARY_FILES, ROOT
+    names = set()
+    for rel in LIBRARY_FILES + ("harness/pbrlab/templates/unity_hlsl_support.hlsl",):
+        path = ROOT / rel
+        if path.is_file():
+            text = path.read_text(encoding="utf-8")
+            names.update(re.findall(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", text, re.M))
+            names.update(re.findall(r"^\s*(?:uniform\s+|static\s+)?\w+\s+(\w+)\s*[;(]", text, re.M))
+            names.update(re.findall(r"\bstruct\s+(\w+)", text))
+    return frozenset(names)
+
+
+def _unprovided_spelled(text: str):
+    """The first identifier of ``text`` spelled as Unity's that pbrlab does not define."""
+    provided = _provided()
+    for m in _UNITY_SPELLING.finditer(text):
+        if m.group(1) not in provided:
+            return m.group(1)
+    return None
+
+
 def named_missing(message: str, shader=None):
     """(name, feature) of the first Unity name pbrlab lacks that an error line points at:
     one of UNPROVIDED, a Unity include without a stand-in, or an identifier spelled as Unity
@@ -67,13 +92,11 @@ def named_missing(message: str, shader=None):
         m = _MISSING_INCLUDE.search(line)
         if m:
             return m.group(1), "one of Unity's include files pbrlab has no stand-in for"
-        m = _UNITY_SPELLING.search(line.split("error", 1)[1])
-        if m and not m.group(1).startswith(("unity_Object", "unity_World", "UNITY_MATRIX")):
-            return m.group(1), "a Unity name pbrlab does not provide"
-        source = _source_line(line, shader)
-        m = _UNITY_SPELLING.search(source) if source else None
-        if m:
-            return m.group(1), "a Unity name pbrlab does not provide"
+        name = _unprovided_spelled(line.split("error", 1)[1] if "error" in line else "")
+        if name is None:
+            name = _unprovided_spelled(_source_line(line, shader))
+        if name is not None:
+            return name, "a Unity name pbrlab does not provide"
         break  # the first error decides: later ones follow from it
     return None
 
@@ -104,5 +127,6 @@ def raise_named(exc: Exception, path) -> None:
     if found is None:
         raise exc
     name, feature = found
-    raise UnityShaderError(f"{path}: uses {name}, part of {feature}; pbrlab does not provide it "
+    what = feature if feature.startswith(("a Unity name", "one of Unity's")) else f"part of {feature}"
+    raise UnityShaderError(f"{path}: uses {name}, {what}; pbrlab does not provide it "
                            f"(the compiler's words follow)\n{exc}") from None
