@@ -73,6 +73,10 @@ vec4 mul(mat4 m, vec4 v) { return m * v; }
 vec4 mul(vec4 v, mat4 m) { return v * m; }
 vec3 mul(mat3 m, vec3 v) { return m * v; }
 vec3 mul(vec3 v, mat3 m) { return v * m; }
+// HLSL multiplies a float4x4 by a float3 with the matrix cut to its first three columns (rows
+// for v * M): the four-component result, whose .xyz is mat3(M) * v.
+vec4 mul(mat4 m, vec3 v) { return m * vec4(v, 0.0); }
+vec4 mul(vec3 v, mat4 m) { return vec4(v, 0.0) * m; }
 vec2 mul(mat2 m, vec2 v) { return m * v; }
 vec2 mul(vec2 v, mat2 m) { return v * m; }
 mat4 mul(mat4 a, mat4 b) { return a * b; }

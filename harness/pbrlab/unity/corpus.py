@@ -155,6 +155,8 @@ def expected_outcomes(report: dict) -> dict:
         if bad["status"] == "refused" and is_compiler_error(bad["message"]):
             errors = [e for e in bad["message"].splitlines() if "error" in e.lower()]
             key = "defect: " + without_folders(re.sub(r"^.*?error:?\s*", "", errors[0] if errors else key))[:80]
+        elif "rendered" in statuses:  # one language renders, the other refuses: a defect too
+            key = "defect: " + key
         expected[row["path"]] = key
     return expected
 
