@@ -97,7 +97,7 @@ def _constants(tree):
     out = []
     for (stem, name), value in sorted(tree.macros.items()):
         if value.startswith("(") and not value.startswith("(0.8"):  # function-like "(args) body"
-            if re.match(r"^\(\w+(,\s*\w+)*\)\s", value):
+            if re.match(r"^\(\w+(,\s*\w+)*\)(\s|$)", value):  # (an empty body: a no-op macro)
                 continue
         if "|" in value or not _VALUE.match(value):
             continue

@@ -150,7 +150,9 @@ def expected_outcomes(report: dict) -> dict:
         if statuses == {"rendered"}:
             expected[row["path"]] = "rendered"
             continue
-        bad = next(row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered")
+        refusing = [row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered"]
+        bad = next((o for o in refusing if o["status"] == "refused" and is_compiler_error(o["message"])),
+                   refusing[0])
         key = refusal_key(bad["message"]) if bad["status"] == "refused" else bad["status"]
         if bad["status"] == "refused" and is_compiler_error(bad["message"]):
             errors = [e for e in bad["message"].splitlines() if "error" in e.lower()]
