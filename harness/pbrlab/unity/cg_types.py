@@ -249,13 +249,21 @@ class Symbols:
                        dict(self.globals), dict(self.aliases))
 
 
-ROOT = Path(__file__).resolve().parents[3]
 LIBRARY_FILES = (  # what the harness's GLSL path includes before a port (generate.py)
     "glsl/unity_compat/cg_compat.glsl", "glsl/unity_compat/shader_variables.glsl",
     "glsl/pbr/surface/lighting_standard.glsl", "glsl/pbr/unity/brdf_unity.glsl",
     "glsl/pbr/unity/unity_cg.glsl", "glsl/pbr/unity/surface_standard.glsl",
     "glsl/pbr/unity/lighting_legacy.glsl", "glsl/pbr/unity/global_illumination.glsl",
-    "harness/pbrlab/templates/unity_surface.inc")
+    "templates/unity_surface.inc")
+
+
+def library_file(rel: str) -> Path:
+    """A file of LIBRARY_FILES where this install keeps it (checkout or package data)."""
+    from ..locations import locate
+    if rel.startswith("templates/"):
+        return Path(__file__).resolve().parents[1] / rel
+    tree, _, rest = rel.partition("/")
+    return locate(tree) / rest
 
 
 @functools.lru_cache(maxsize=1)
@@ -263,7 +271,7 @@ def library() -> Symbols:
     """The declarations of the GLSL files the port is compiled after (bodies not read)."""
     symbols = Symbols()
     for rel in LIBRARY_FILES:
-        path = ROOT / rel
+        path = library_file(rel)
         if path.is_file():
             text = path.read_text(encoding="utf-8")
             _Parser(text, symbols, declarations_only=True).program()

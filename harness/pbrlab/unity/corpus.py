@@ -26,8 +26,8 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import PbrlabError
+from ..locations import locate
 
-ASSETS = Path(__file__).resolve().parents[3] / "scenes" / "assets"
 LANGUAGES = ("glsl", "hlsl")
 SIZE = (64, 64)
 
@@ -62,7 +62,7 @@ def scene_for(shader: Path) -> dict:
             {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0},
             {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
         ],
-        "environment": {"path": str(ASSETS / "sky.exr"), "intensity": 0.5},
+        "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
         "materials": {"m": {"surface": str(shader)}},
         "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
         "render": {"quality": "high", "tonemap": "khronos_neutral"},

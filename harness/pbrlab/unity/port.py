@@ -96,7 +96,7 @@ def port_code(code: str) -> str:
 def _unity_globals() -> frozenset:
     """The globals unity_compat/shader_variables.glsl declares (Unity's UnityShaderVariables /
     UnityLightingCommon names: _LightColor0, _Time, ...)."""
-    text = (cg_types.ROOT / "glsl" / "unity_compat" / "shader_variables.glsl").read_text(encoding="utf-8")
+    text = cg_types.library_file("glsl/unity_compat/shader_variables.glsl").read_text(encoding="utf-8")
     return frozenset(re.findall(r"^(?:uniform\s+)?(?:vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M))
 
 

@@ -58,10 +58,10 @@ _AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
 @functools.lru_cache(maxsize=1)
 def _provided() -> frozenset:
     """The names pbrlab's Unity layer defines (macros, uniforms, functions, structs)."""
-    from .cg_types import LIBRARY_FILES, ROOT
+    from .cg_types import LIBRARY_FILES, library_file
     names = set()
-    for rel in LIBRARY_FILES + ("harness/pbrlab/templates/unity_hlsl_support.hlsl",):
-        path = ROOT / rel
+    for rel in LIBRARY_FILES + ("templates/unity_hlsl_support.hlsl",):
+        path = library_file(rel)
         if path.is_file():
             text = path.read_text(encoding="utf-8")
             names.update(re.findall(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", text, re.M))
