@@ -292,8 +292,7 @@ def _appdata_member(shader: M.SurfaceShader, semantic: str):
 
 def _appdata_lines(shader: M.SurfaceShader, language: str) -> list[str]:
     """Declare and fill the vertex function's input from the mesh, member by semantic."""
-    from .generate_pass import UNITY_STRUCTS, _attribute, _zero, canonical
-    from .parse import _component_count
+    from .generate_pass import UNITY_STRUCTS, _attribute, _zero, canonical, fit
     v = shader.vertex
     kind = v.appdata if v.appdata_members else "appdata_full"
     members = v.appdata_members or UNITY_STRUCTS["appdata_full"]
@@ -305,26 +304,18 @@ def _appdata_lines(shader: M.SurfaceShader, language: str) -> list[str]:
             value = _zero(mtype, language)
         if canonical(semantic) == "COLOR0":  # meshes here are white unless they carry colours
             value = "float4(1.0, 1.0, 1.0, 1.0)" if language == "hlsl" else "vec4(1.0, 1.0, 1.0, 1.0)"
-            value = generate_fit(value, 4, n, language)
+            value = fit(value, 4, n, language)
         if value is not None:
             lines.append(f"    v.{name} = {value};")
     return lines
 
 
-def generate_fit(expr, have, want, language):
-    from .generate_pass import fit
-    return fit(expr, have, want, language)
-
-
 def _appdata_read(shader: M.SurfaceShader, language: str) -> dict:
     """Expressions of the moved vertex: position (float4), normal, tangent (float4), uv."""
-    from .generate_pass import _ATTRIBUTES
-    from .parse import _component_count
-    members = {s: (t, n) for t, n, s in (shader.vertex.appdata_members or [])}
+    from .generate_pass import _ATTRIBUTES, canonical, fit
     if not shader.vertex.appdata_members:
         return {"position": "v.vertex", "normal": "v.normal", "tangent": "v.tangent", "uv": "v.texcoord.xy"}
-    from .generate_pass import canonical, fit
-    found = {canonical(s): (t, n) for s, (t, n) in members.items()}
+    found = {canonical(s): (t, n) for t, n, s in shader.vertex.appdata_members}
     out = {}
     for key, semantic, want in (("position", "POSITION", 4), ("normal", "NORMAL", 3), ("tangent", "TANGENT", 4),
                                 ("uv", "TEXCOORD0", 2)):

@@ -203,10 +203,6 @@ class UnityShader:
                    for p in self.passes)
 
     @property
-    def grab_textures(self) -> list:
-        return [p.texture for p in self.passes if p.kind == "grab"]
-
-    @property
     def keywords(self) -> frozenset:
         """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
         (a material's ``keywords`` enables some; Unity's default variant has none)."""
