@@ -171,6 +171,17 @@ _BLEND = {
 COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 
 
+def _reset_draw_state(ctx) -> None:
+    """The state every render starts from, whatever an earlier render in this context left
+    (a Unity pass's ZTest once leaked into the next scene: "<=" moved 7 depth-tie pixels of
+    the lit scene, so a golden depended on which test ran before it in the process)."""
+    ctx.enable(moderngl.DEPTH_TEST)
+    ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)
+    ctx.depth_func = "<"
+    ctx.front_face = "ccw"
+    ctx.cull_face = "back"
+
+
 def _draw_order(scene: Scene, frame):
     """Opaque and cutout objects first, then blended ones from far to near."""
     def centre(obj):
@@ -275,8 +286,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         with targets.Target(ctx, (w, h), hdr_format) as hdr:
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
-            ctx.enable(moderngl.DEPTH_TEST)
-            ctx.front_face = "ccw"
+            _reset_draw_state(ctx)
             for obj in _draw_order(scene, frame):
                 material = scene.materials[obj.material]
                 defines = plan.defines[obj.material]
@@ -301,6 +311,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                     ctx.depth_func = "<="
                     continue
                 blended = material.alpha_mode in _BLEND
+                ctx.depth_func = "<"  # pbrlab's own materials: the first surface drawn wins a depth tie
                 if blended:
                     ctx.enable(moderngl.BLEND)
                     ctx.blend_func = _BLEND[material.alpha_mode]
