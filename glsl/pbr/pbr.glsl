@@ -53,6 +53,7 @@
 #include "pbr/shading/dispatch.glsl"
 #include "pbr/shading/standard.glsl"
 #include "pbr/shading/energy_conservation.glsl"
+#include "pbr/shading/clearcoat.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"
@@ -66,6 +67,7 @@
 
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.glsl"
+#include "pbr/surface/lighting_clearcoat.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

@@ -54,6 +54,7 @@
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/shading/standard.hlsl"
 #include "pbr/shading/energy_conservation.hlsl"
+#include "pbr/shading/clearcoat.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"
@@ -67,6 +68,7 @@
 
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.hlsl"
+#include "pbr/surface/lighting_clearcoat.hlsl"
 
 // HDR
 #include "pbr/tonemap/exposure.hlsl"

@@ -201,6 +201,14 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_F_SchlickSG", "f0:unit3 VdotH:cosine", F),
     Function("pbr_F_SchlickSG", "pbr_F_SchlickSG(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
     _f("pbr_f90_from_f0", "f0:unit3", _unit("F90")),
+    # the clear coat (pbr/shading/clearcoat.glsl): its lobe through pbr_shade_punctual, its
+    # albedo and the base's weight from the environment BRDF at the coat's (NdotV, roughness)
+    _f("pbr_clearcoat_punctual", "n:dir v:dir l:dir radiance:radiance3 r:roughness", COLOUR),
+    _f("pbr_clearcoat_albedo", "NdotV:cosine r:roughness", _unit("E_coat"),
+       "pbr_clearcoat_albedo(pbr_env_brdf(max(NdotV, PBR_MIN_NDOTV), pbr_clamp_perceptual_roughness(r)))"),
+    _f("pbr_clearcoat_base_weight", "mask:unit NdotV:cosine r:roughness", _unit("base weight"),
+       "pbr_clearcoat_base_weight(mask, max(NdotV, PBR_MIN_NDOTV), "
+       "pbr_env_brdf(max(NdotV, PBR_MIN_NDOTV), pbr_clamp_perceptual_roughness(r)))"),
     # the fused HIGH-tier lobe, called as pbr_brdf_standard calls it (its preconditions)
     Function("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_SmithCorrelated(" + DV_ARGUMENTS + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),

@@ -1,0 +1,52 @@
+// pbr/unity/surface_layers.glsl: the layers of current engines' materials beside Unity's
+// SurfaceOutputStandard, by the names Unity's URP and HDRP give them.
+//
+// Provides: struct SurfaceOutputStandardLayers
+//           SurfaceOutputStandardLayers pbr_default_layers()
+//           vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 viewDir,
+//                                       UnityGI gi, vec3 coatIndirectSpecular, float occlusion)
+// Include:  "pbr/unity/surface_layers.glsl" (path relative to glsl/; it includes
+//           pbr/unity/surface_standard.glsl).
+// Config macros read: those of pbr/surface/lighting_clearcoat.glsl.
+//
+// Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
+// The fields here are named as URP's SurfaceData names them (clearCoatMask,
+// clearCoatSmoothness: URP 12+, "Clear Coat" of the Complex Lit shader), capitalised as
+// Unity's surface structs are. ClearCoatNormal is pbrlab's (URP coats along the geometric
+// normal): tangent space as a surface function writes it, (0, 0, 1) being the interpolated
+// normal, not the base's normal map (KHR_materials_clearcoat: "If clearcoatNormalTexture is
+// not given, no normal mapping is applied to the clear coat layer"); the caller transforms it
+// to world space before lighting, as it does s.Normal. LightingStandardLayers coats a
+// base LightingStandard[Specular] result: base.rgb as pbr_lighting_clearcoat reads it (the
+// emission added before, it lies under the coat), alpha kept. coatIndirectSpecular: the
+// prefiltered environment along reflect(-viewDir, ClearCoatNormal) at the coat's roughness.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
+#ifndef PBR_UNITY_SURFACE_LAYERS_GLSL
+#define PBR_UNITY_SURFACE_LAYERS_GLSL
+#include "pbr/unity/surface_standard.glsl"
+#include "pbr/surface/lighting_clearcoat.glsl"
+#include "pbr/material/remap.glsl"
+
+struct SurfaceOutputStandardLayers {
+    float ClearCoatMask;        // 0 = no coat (default) .. 1
+    float ClearCoatSmoothness;  // 0 = rough .. 1 = smooth (default 1)
+    vec3 ClearCoatNormal;       // tangent space (default (0, 0, 1))
+};
+
+SurfaceOutputStandardLayers pbr_default_layers() {
+    SurfaceOutputStandardLayers s;
+    s.ClearCoatMask = 0.0;
+    s.ClearCoatSmoothness = 1.0;
+    s.ClearCoatNormal = vec3(0.0, 0.0, 1.0);
+    return s;
+}
+
+vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 viewDir, UnityGI gi,
+                            vec3 coatIndirectSpecular, float occlusion) {
+    pbr_ClearCoat coat;
+    coat.mask = s.ClearCoatMask;
+    coat.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(s.ClearCoatSmoothness);
+    coat.normal = normalize(s.ClearCoatNormal);
+    return vec4(pbr_lighting_clearcoat(base.rgb, coat, viewDir, gi, coatIndirectSpecular, occlusion), base.a);
+}
+#endif
