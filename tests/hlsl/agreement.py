@@ -44,6 +44,10 @@ STRUCT_BUILDERS = {
         ("float", "smoothness"), ("float", "occlusion"), ("float", "alpha"))),
 }
 STRUCT_BUILDERS["UnityGI"] = STRUCT_BUILDERS["pbr_GI"]
+STRUCT_BUILDERS["pbr_ClearCoat"] = ("test_clearcoat", (("float", "mask"), ("float", "perceptualRoughness"),
+                                                      ("vec3", "normal")))
+STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
+    ("float", "clearCoatMask"), ("float", "clearCoatSmoothness"), ("vec3", "clearCoatNormal")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
 STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
 STRUCT_BUILDERS["SurfaceOutput"] = ("test_surface_legacy", (

@@ -2,7 +2,6 @@
 // SurfaceOutputStandard, by the names Unity's URP and HDRP give them.
 //
 // Provides: struct SurfaceOutputStandardLayers
-//           SurfaceOutputStandardLayers pbr_default_layers()
 //           vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 viewDir,
 //                                       UnityGI gi, vec3 coatIndirectSpecular, float occlusion)
 // Include:  "pbr/unity/surface_layers.glsl" (path relative to glsl/; it includes
@@ -28,18 +27,10 @@
 #include "pbr/material/remap.glsl"
 
 struct SurfaceOutputStandardLayers {
-    float ClearCoatMask;        // 0 = no coat (default) .. 1
-    float ClearCoatSmoothness;  // 0 = rough .. 1 = smooth (default 1)
-    vec3 ClearCoatNormal;       // tangent space (default (0, 0, 1))
+    float ClearCoatMask;        // 0 = no coat .. 1 (the harness's default: 0)
+    float ClearCoatSmoothness;  // 0 = rough .. 1 = smooth (default 1: glTF's roughness 0)
+    vec3 ClearCoatNormal;       // tangent space (default (0, 0, 1): the interpolated normal)
 };
-
-SurfaceOutputStandardLayers pbr_default_layers() {
-    SurfaceOutputStandardLayers s;
-    s.ClearCoatMask = 0.0;
-    s.ClearCoatSmoothness = 1.0;
-    s.ClearCoatNormal = vec3(0.0, 0.0, 1.0);
-    return s;
-}
 
 vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 viewDir, UnityGI gi,
                             vec3 coatIndirectSpecular, float occlusion) {

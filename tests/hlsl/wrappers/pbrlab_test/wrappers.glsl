@@ -2,7 +2,8 @@
 // inputs) needs to call the library functions that take arrays, structs or out parameters.
 //
 // Provides: test_gi, test_surface, test_surface_specular, test_light, test_indirect,
-//           test_surface_legacy, test_gi_input, test_glossy_environment (struct builders),
+//           test_surface_legacy, test_gi_input, test_glossy_environment, test_clearcoat,
+//           test_surface_layers (struct builders),
 //           test_sh9_irradiance,
 //           test_UnityGlossyEnvironmentSetup, test_UnityGlobalIllumination[_gloss][_indirect],
 //           test_Lighting*_GI (the pbr/unity/ functions with struct results or inout GI),
@@ -20,6 +21,7 @@
 #include "pbr/unity/surface_standard.glsl"
 #include "pbr/unity/unity_cg.glsl"
 #include "pbr/unity/global_illumination.glsl"
+#include "pbr/unity/surface_layers.glsl"
 
 pbr_Light test_light(vec3 lightColor, vec3 lightDir) {
     pbr_Light light;
@@ -33,6 +35,23 @@ pbr_Indirect test_indirect(vec3 indirectDiffuse, vec3 indirectSpecular) {
     indirect.diffuse = indirectDiffuse;
     indirect.specular = indirectSpecular;
     return indirect;
+}
+
+pbr_ClearCoat test_clearcoat(float mask, float perceptualRoughness, vec3 normal) {
+    pbr_ClearCoat coat;
+    coat.mask = mask;
+    coat.perceptualRoughness = perceptualRoughness;
+    coat.normal = normal;
+    return coat;
+}
+
+SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clearCoatSmoothness,
+                                                vec3 clearCoatNormal) {
+    SurfaceOutputStandardLayers s;
+    s.ClearCoatMask = clearCoatMask;
+    s.ClearCoatSmoothness = clearCoatSmoothness;
+    s.ClearCoatNormal = clearCoatNormal;
+    return s;
 }
 
 pbr_GI test_gi(vec3 lightColor, vec3 lightDir, vec3 indirectDiffuse, vec3 indirectSpecular) {
