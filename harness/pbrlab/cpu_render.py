@@ -4,7 +4,8 @@ Same camera rays (camera.camera_rays), ray-sphere intersection, lights and shadi
 the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of the
 GLSL library. Goldens of analytic scenes are checked against it.
 
-Scope: opaque spheres with the default surface (no texture maps); environments of
+Scope: opaque spheres with the default surface (no texture maps; a clear coat along the
+geometric normal); environments of
 constant radiance, whose prefiltered radiance is that constant at every roughness. The
 environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
 read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
@@ -20,6 +21,7 @@ import numpy as np
 from .camera import camera_frame, camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
+from .reference import clearcoat as ref_clearcoat
 from .reference import lighting as ref_lighting
 from .reference import directional_albedo as ref_albedo
 from .reference import material as ref_material
@@ -157,6 +159,28 @@ def render_scene_cpu(scene) -> np.ndarray:
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
                 energy_compensated=compensated)
+        if material.clearcoat > 0.0:
+            color = _coated(scene, material, color, n, v, p, quality)
         out[mask, :3] = color
         out[mask, 3] = 1.0  # opaque: coverage
     return out
+
+
+def _coated(scene, material, base, n, v, p, quality):
+    """The clear coat over everything the base reflects and emits (reference/clearcoat.py):
+    base · weight + mask · (each light's coat lobe + the constant environment times E_coat),
+    the coat along the geometric normal (no coat normal map in this renderer's scope)."""
+    rough = float(ref_shading.clamp_perceptual_roughness(
+        ref_remap.perceptual_roughness_from_smoothness(material.clearcoat_smoothness), quality))
+    NcdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+    dfg = ref_albedo.split_sum_terms_at_alpha(NcdotV, rough * rough)
+    coat = np.zeros(p.shape)
+    for light in scene.lights:
+        l, radiance = _light_terms(light, p)
+        coat += ref_clearcoat.clearcoat_punctual(n, v, l, radiance, rough, quality=quality)
+    if scene.environment is not None:
+        prefiltered = scene.environment.color * scene.environment.intensity
+        coat += np.asarray(prefiltered, float) * (ref_clearcoat.clearcoat_albedo(dfg) * ref_surface.specular_occlusion(
+            NcdotV, material.occlusion, rough * rough))[:, None]
+    weight = ref_clearcoat.clearcoat_base_weight(material.clearcoat, NcdotV, dfg)
+    return base * weight[:, None] + material.clearcoat * coat

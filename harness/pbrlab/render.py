@@ -155,6 +155,9 @@ def _upload_material(program, material):
     _set(program, "u_alpha_cutoff", material.alpha_cutoff)
     _set(program, "u_normal_scale", material.normal_scale)
     _set(program, "u_occlusion_strength", material.occlusion_strength)
+    _set(program, "u_clearcoat", material.clearcoat)
+    _set(program, "u_clearcoat_smoothness", material.clearcoat_smoothness)
+    _set(program, "u_clearcoat_normal_scale", material.clearcoat_normal_scale)
     for slot, transform in material.texture_transform.items():
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 

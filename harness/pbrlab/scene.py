@@ -62,7 +62,11 @@ TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling)
     "normal": "linear",               # tangent space, RGB = xyz * 0.5 + 0.5
     "emission": "srgb",
     "occlusion": "linear",
+    "clearcoat": "linear",            # R = the coat's mask (glTF clearcoatTexture)
+    "clearcoat_roughness": "linear",  # G = the coat's perceptual roughness (glTF clearcoatRoughnessTexture)
+    "clearcoat_normal": "linear",     # the coat's tangent-space normal (glTF clearcoatNormalTexture)
 }
+CLEARCOAT_SLOTS = ("clearcoat", "clearcoat_roughness", "clearcoat_normal")
 
 
 @dataclass
@@ -118,6 +122,10 @@ class Material:
     texture_sampler: dict[str, tuple] = field(default_factory=dict)
     normal_scale: float = 1.0
     occlusion_strength: float = 1.0
+    # The clear coat (KHR_materials_clearcoat; pbr/unity/surface_layers.glsl): mask 0 is none
+    clearcoat: float = 0.0
+    clearcoat_smoothness: float = 1.0  # 1 - the coat's perceptual roughness
+    clearcoat_normal_scale: float = 1.0
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -320,6 +328,8 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.alpha = r.number("alpha", default=1.0, lo=0.0, hi=1.0)
     m.alpha_mode = r.choice("alpha_mode", ALPHA_MODES, default="opaque")
     m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
+    m.clearcoat = r.number("clearcoat", default=0.0, lo=0.0, hi=1.0)
+    m.clearcoat_smoothness = r.number("clearcoat_smoothness", default=1.0, lo=0.0, hi=1.0)
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
@@ -348,6 +358,10 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         else:
             textures.fail('a surface file\'s texture needs {"path": ..., "srgb": true|false}', name)
     textures.finish()
+    if m.surface is not None and (r.has("clearcoat") or r.has("clearcoat_smoothness")):
+        r.fail("the clear coat belongs to the default surface; a surface file writes its own "
+               "output (remove `clearcoat`, `clearcoat_smoothness`)", "clearcoat" if r.has("clearcoat") else
+               "clearcoat_smoothness")
     if "metallic_smoothness" in m.textures and "metallic_roughness" in m.textures:
         textures.fail("give one packing: metallic_smoothness (Unity: R metallic, A smoothness) or "
                       "metallic_roughness (glTF: B metallic, G roughness), not both")
@@ -370,7 +384,8 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     except unity.UnityShaderError as exc:
         r.fail(str(exc), "surface")
     for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
-                "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow"):
+                "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
+                "clearcoat_smoothness"):
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "

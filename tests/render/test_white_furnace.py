@@ -12,6 +12,10 @@ multiple-scattering compensation:
   black dielectric    albedo 0, metallic 0: the specular lobe of F0 = 0.04 alone
   white half-metal    albedo 1, metallic 0.5: F0 = 0.52, diffuse albedo 0.5 under the
                       dielectric coat (F0 0.04): E(0.52) + 0.5 (1 - E(0.04)) <= 1
+  coated dielectric   the white dielectric under a full clear coat of the column's smoothness
+  coated metal        the white metal under a half clear coat of the mirrored smoothness
+                      (smooth coat over rough metal, rough over smooth): base (1 - m E_c) + m E_c,
+                      E_c the coat's single-scattering albedo (KHR_materials_clearcoat)
 """
 
 import numpy as np
@@ -30,13 +34,17 @@ MATERIALS = {
     "zero_f0_dielectric": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0, 0, 0]},
     "black_dielectric": {"albedo": [0, 0, 0], "metallic": 0.0},
     "white_half_metal": {"albedo": [1, 1, 1], "metallic": 0.5},
+    "coated_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "clearcoat": 1.0},
+    "coated_metal": {"albedo": [1, 1, 1], "metallic": 1.0, "clearcoat": 0.5},
 }
+# The coat's smoothness from the column's (base) smoothness.
+COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1.0 - s}
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
-      "white_half_metal": 0.52}
+      "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
-           "white_half_metal": 0.04}
+           "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -61,6 +69,8 @@ def _scene(quality, compensation):
         for j, s in enumerate(SMOOTHNESS):
             key = f"{name}_{j}"
             materials[key] = dict(MATERIALS[name], smoothness=s)
+            if name in COAT_SMOOTHNESS:
+                materials[key]["clearcoat_smoothness"] = COAT_SMOOTHNESS[name](s)
             centre = [(j - (len(SMOOTHNESS) - 1) / 2) * SPACING, ((len(rows) - 1) / 2 - i) * SPACING, 0.0]
             objects.append({"sphere": {"center": centre, "radius": 1.0}, "material": key})
     return {
@@ -104,7 +114,7 @@ def _expected(name, compensation, A, B):
         return e * (1 + f0 * (1 / (A + B) - 1)) if compensation else e
 
     rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0,
-           "white_half_metal": 0.5}[name]  # albedo (1 - metallic): the dielectric's share
+           "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0}[name]  # albedo (1 - metallic)
     return albedo(F0[name]) + rho * (1 - albedo(COAT_F0[name]))
 
 
@@ -154,6 +164,13 @@ def test_white_furnace_matches_the_float64_directional_albedo_at_every_pixel(fur
         A, B = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
             np.maximum(mu[mask], ref_shading.MIN_NDOTV), float(rough) ** 2), -1, 0)
         want = _expected(name, compensation, A, B)
+        if name in COAT_SMOOTHNESS:  # the coat: single scattering at F0 0.04, F90 1, its own roughness
+            coat = float(ref_shading.clamp_perceptual_roughness(
+                1.0 - COAT_SMOOTHNESS[name](SMOOTHNESS[int(column)]), tier))
+            Ac, Bc = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
+                np.maximum(mu[mask], ref_shading.MIN_NDOTV), coat ** 2), -1, 0)
+            weight, e_coat = MATERIALS[name]["clearcoat"], 0.04 * Ac + Bc
+            want = want * (1 - weight * e_coat) + weight * e_coat
         err = np.abs(linear[mask, :3] - want[:, None]).max()
         worst[obj.material] = err
     bad = {k: v for k, v in worst.items() if v > ALBEDO_TOLERANCE}

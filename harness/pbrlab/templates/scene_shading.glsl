@@ -26,5 +26,6 @@ PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 #include "pbr/ibl/equirect.glsl"
 #include "pbr/ibl/importance_sampling.glsl"
 #include "pbr/unity/surface_standard.glsl"
+#include "pbr/unity/surface_layers.glsl"
 
 #include "scene_lighting.inc"

@@ -36,6 +36,7 @@ PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 #include "pbr/ibl/equirect.hlsl"
 #include "pbr/ibl/importance_sampling.hlsl"
 #include "pbr/unity/surface_standard.hlsl"
+#include "pbr/unity/surface_layers.hlsl"
 
 // The GLSL spellings the shared .inc files use, for the harness's programs only.
 #define vec2 float2
