@@ -37,11 +37,13 @@
 #include "pbr/brdf/blinn_phong.glsl"
 #include "pbr/brdf/d_blinn_phong.glsl"
 #include "pbr/brdf/d_ggx.glsl"
+#include "pbr/brdf/d_ggx_anisotropic.glsl"
 #include "pbr/brdf/d_beckmann.glsl"
 #include "pbr/brdf/g_cook_torrance.glsl"
 #include "pbr/brdf/g_smith_ggx.glsl"
 #include "pbr/brdf/g_schlick_ggx.glsl"
 #include "pbr/brdf/v_smith_ggx_correlated.glsl"
+#include "pbr/brdf/v_smith_ggx_correlated_anisotropic.glsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.glsl"
 #include "pbr/brdf/dv_ggx_smith_correlated_fast.glsl"
 #include "pbr/brdf/v_implicit.glsl"
@@ -54,6 +56,7 @@
 #include "pbr/shading/standard.glsl"
 #include "pbr/shading/energy_conservation.glsl"
 #include "pbr/shading/clearcoat.glsl"
+#include "pbr/shading/anisotropy.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"

@@ -38,11 +38,13 @@
 #include "pbr/brdf/blinn_phong.hlsl"
 #include "pbr/brdf/d_blinn_phong.hlsl"
 #include "pbr/brdf/d_ggx.hlsl"
+#include "pbr/brdf/d_ggx_anisotropic.hlsl"
 #include "pbr/brdf/d_beckmann.hlsl"
 #include "pbr/brdf/g_cook_torrance.hlsl"
 #include "pbr/brdf/g_smith_ggx.hlsl"
 #include "pbr/brdf/g_schlick_ggx.hlsl"
 #include "pbr/brdf/v_smith_ggx_correlated.hlsl"
+#include "pbr/brdf/v_smith_ggx_correlated_anisotropic.hlsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
 #include "pbr/brdf/dv_ggx_smith_correlated_fast.hlsl"
 #include "pbr/brdf/v_implicit.hlsl"
@@ -55,6 +57,7 @@
 #include "pbr/shading/standard.hlsl"
 #include "pbr/shading/energy_conservation.hlsl"
 #include "pbr/shading/clearcoat.hlsl"
+#include "pbr/shading/anisotropy.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"

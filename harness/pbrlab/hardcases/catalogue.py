@@ -220,6 +220,23 @@ TERMS: tuple[Function, ...] = (
     # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
     Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    # anisotropy (brdf/d_ggx_anisotropic.glsl, brdf/v_smith_ggx_correlated_anisotropic.glsl,
+    # shading/anisotropy.glsl). The sweep draws only n and h as unit directions, so the lobe and
+    # the bent normal take a fixed frame (n = z, t = x, b = y) and their other vectors as
+    # coordinates normalised by the library's guard; the direction stands t, b in with n, h.
+    _f("pbr_D_GGX_Anisotropic", "NdotH:cosine TdotH:cosine BdotH:cosine alphaT:alpha alphaB:alpha", D),
+    _f("pbr_V_SmithGGXCorrelated_Anisotropic", "NdotL:cosine NdotV:cosine TdotV:cosine BdotV:cosine "
+       "TdotL:cosine BdotL:cosine alphaT:alpha alphaB:alpha", V),
+    _f("pbr_anisotropic_alphas", "alpha:alpha strength:signed", _unit("alphaT, alphaB"),
+       "vec3(pbr_anisotropic_alphas(alpha, strength), 0.0)"),
+    _f("pbr_anisotropy_direction", "n:dir h:dir d:coordinate3 rotation:signed", UNIT_OR_ZERO,
+       "pbr_anisotropy_direction(n, h, d.xy, rotation)"),
+    _f("pbr_brdf_anisotropic_specular", "v:coordinate3 l:coordinate3 f0:unit3 roughness:roughness strength:signed",
+       BRDF, "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
+       "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, strength)"),
+    _f("pbr_anisotropic_bent_normal", "v:coordinate3 d:coordinate3 strength:signed roughness:roughness", UNIT_OR_ZERO,
+       "pbr_anisotropic_bent_normal(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(d), strength, "
+       "roughness)"),
     # shading/energy_conservation.glsl
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
     _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
@@ -430,6 +447,61 @@ def _shading_cases(function: Function) -> list[Case]:
 DECIDED = {
     "pbr_D_GGX": [("alpha = 0 at the peak", "D_GGX(1, 0) is 0/0 (a Dirac); decided: D at PBR_MIN_ALPHA",
                    {"NdotH": 1.0, "alpha": 0.0}, "pbr_D_GGX(1.0, PBR_MIN_ALPHA)")],
+    "pbr_D_GGX_Anisotropic": [
+        ("alphas = 0 at the peak", "a Dirac (1/(π αt αb) = 1/0); decided: D at PBR_MIN_ALPHA",
+         {"NdotH": 1.0, "TdotH": 0.0, "BdotH": 0.0, "alphaT": 0.0, "alphaB": 0.0},
+         "pbr_D_GGX_Anisotropic(1.0, 0.0, 0.0, PBR_MIN_ALPHA, PBR_MIN_ALPHA)"),
+        ("anisotropy 1 at the peak", "alphaT = 1, alphaB at the floor: the narrowest line lobe, 1/(π·1e-7)",
+         {"NdotH": 1.0, "TdotH": 0.0, "BdotH": 0.0, "alphaT": 1.0, "alphaB": 0.0},
+         "pbr_D_GGX_Anisotropic(1.0, 0.0, 0.0, 1.0, PBR_MIN_ALPHA)"),
+        ("h = 0", "no half vector (all cosines 0): |f|² = 0 is floored at (αt αb)², the peak's value",
+         {"NdotH": 0.0, "TdotH": 0.0, "BdotH": 0.0, "alphaT": 0.25, "alphaB": 0.25},
+         "pbr_D_GGX_Anisotropic(1.0, 0.0, 0.0, 0.25, 0.25)"),
+        ("grazing h along b", "h at the horizon across the narrow direction: D ~ αb² / (π αt αb³), tiny",
+         {"NdotH": 0.0, "TdotH": 0.0, "BdotH": 1.0, "alphaT": 1.0, "alphaB": 1e-7}, None)],
+    "pbr_V_SmithGGXCorrelated_Anisotropic": [
+        ("both grazing, alphas 0", "0.5 / (0 + 0) at the horizon with no roughness; guarded: cosines at "
+         "PBR_MIN_NDOTV, alphas at PBR_MIN_ALPHA",
+         {"NdotL": 0.0, "NdotV": 0.0, "TdotV": 1.0, "BdotV": 0.0, "TdotL": 0.0, "BdotL": 1.0,
+          "alphaT": 0.0, "alphaB": 0.0},
+         "pbr_V_SmithGGXCorrelated_Anisotropic(PBR_MIN_NDOTV, PBR_MIN_NDOTV, 1.0, 0.0, 0.0, 1.0, "
+         "PBR_MIN_ALPHA, PBR_MIN_ALPHA)"),
+        ("grazing along the rough tangent", "alphaT = 1 (anisotropy 1), both directions at the horizon "
+         "along t: Λ is largest", {"NdotL": 1e-7, "NdotV": 1e-7, "TdotV": 1.0, "BdotV": 0.0, "TdotL": -1.0,
+                                   "BdotL": 0.0, "alphaT": 1.0, "alphaB": 0.002025}, None)],
+    "pbr_anisotropic_alphas": [
+        ("strength 1", "fully anisotropic: alphaT = 1 exactly", {"alpha": 0.25, "strength": 1.0},
+         "vec3(1.0, 0.25, 0.0)"),
+        ("strength -1", "KHR strength is in [0, 1]; decided: the sign is ignored (s²)", {"alpha": 0.25, "strength": -1.0},
+         "vec3(1.0, 0.25, 0.0)"),
+        ("strength 0", "isotropic: both alphas are the material's, exactly", {"alpha": 0.25, "strength": 0.0},
+         "vec3(0.25, 0.25, 0.0)")],
+    "pbr_anisotropy_direction": [
+        ("zero sample", "texel (0.5, 0.5) decodes to no direction (normalize(0) is NaN); decided: the "
+         "untextured default (1, 0)", {"d": (0.0, 0.0, 0.0), "rotation": 0.0},
+         "pbr_anisotropy_direction(n, h, vec2(1.0, 0.0), 0.0)")],
+    "pbr_brdf_anisotropic_specular": [
+        ("V = -L", "l and v opposite: no half vector (l + v = 0); decided 0, as pbr_brdf_standard",
+         {"v": (-0.6, 0.0, -0.8), "l": (0.6, 0.0, 0.8)}, 0.0),
+        ("NdotL < 0", "light behind the surface: decided 0", {"v": (0.6, 0.0, 0.8), "l": (0.6, 0.0, -0.8)}, 0.0),
+        ("light at the shaded point", "l = pbr_safe_normalize(0) = 0: no direction, decided 0",
+         {"v": (0.6, 0.0, 0.8), "l": (0.0, 0.0, 0.0)}, 0.0),
+        ("mirror along b, strength 1, roughness 0", "the peak of the narrowest line lobe (alphaB at the tier "
+         "floor, alphaT = 1): D·V largest", {"v": (0.0, -0.6, 0.8), "l": (0.0, 0.6, 0.8), "roughness": 0.0,
+                                             "strength": 1.0}, None),
+        ("grazing mirror, strength 1", "NdotL = NdotV = 1e-3 at the peak: D and V both near their maxima",
+         {"v": (-0.9999995, 0.0, 1e-3), "l": (0.9999995, 0.0, 1e-3), "roughness": 0.0, "strength": 1.0}, None),
+        ("strength -1", "outside KHR's [0, 1]: acts as 1 (only s² enters)",
+         {"v": (-0.6, 0.0, 0.8), "l": (0.6, 0.0, 0.8), "strength": -1.0},
+         "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
+         "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, 1.0)")],
+    "pbr_anisotropic_bent_normal": [
+        ("v along d, strength 1, roughness 0", "cross(d, v) = 0 and bend⁴ = 0: the mixed vector vanishes; "
+         "decided n", {"v": (0.0, 1.0, 0.0), "d": (0.0, 1.0, 0.0), "strength": 1.0, "roughness": 0.0},
+         "vec3(0.0, 0.0, 1.0)"),
+        ("strength 0", "no anisotropy: bend = 1, the normal itself", {"v": (0.6, 0.0, 0.8), "d": (0.0, 1.0, 0.0),
+                                                                      "strength": 0.0, "roughness": 0.3},
+         "vec3(0.0, 0.0, 1.0)")],
     "pbr_D_Beckmann": [("NdotH = 0", "0/0 (exp(-inf) / 0); decided: 0, the limit", {"NdotH": 0.0, "alpha": 0.5}, 0.0)],
     "pbr_G1_SmithGGX": [("NdotX = 0, alpha = 0", "2·0/(0 + 0); decided 0: no light along the horizon",
                          {"NdotX": 0.0, "alpha": 0.0}, 0.0)],
