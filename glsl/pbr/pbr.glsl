@@ -50,6 +50,7 @@
 #include "pbr/brdf/v_kelemen.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/f_dielectric.glsl"
+#include "pbr/brdf/f_iridescence.glsl"
 
 // shading models
 #include "pbr/shading/dispatch.glsl"

@@ -51,6 +51,7 @@
 #include "pbr/brdf/v_kelemen.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"
 #include "pbr/brdf/f_dielectric.hlsl"
+#include "pbr/brdf/f_iridescence.hlsl"
 
 // shading models
 #include "pbr/shading/dispatch.hlsl"

@@ -241,6 +241,12 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
     _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
     _f("pbr_F_Dielectric", "c:cosine eta:eta", F),
+    _f("pbr_F_Iridescence", "n1:eta n2:eta c:cosine d:thickness f0:unit3", F),
+    # S of the film's optical path: |S| <= (row sums of the XYZ -> Rec. 709 matrix 5.28) · 1.0011
+    _f("pbr_iridescence_sensitivity", "opd:thickness shift:phase3", Bound("|S| <= 5.3", -5.3, 5.3)),
+    _f("pbr_iridescence_mix", "F:unit3 Fi:unit3 t:unit", F),
+    _f("pbr_iridescence_thickness", "lo:thickness hi:thickness g:unit",
+       Bound("|thickness| <= 1e30 (+1 %)", -1.01e30, 1.01e30)),
     # tonemap/
     _f("pbr_apply_exposure", "c:radiance3 ev:ev", COLOUR),
     _f("pbr_tonemap_reinhard", "c:hdr3", TONEMAPPED),
@@ -508,6 +514,15 @@ DECIDED = {
     "pbr_G1_SchlickGGX": [("NdotX = 0, k = 0", "0/0; decided 0", {"NdotX": 0.0, "k": 0.0}, 0.0)],
     "pbr_F_Dielectric": [("eta = 1 at grazing", "0/0: F = 0 for eta = 1, F -> 1 at grazing for eta != 1; "
                           "decided 0 (no interface)", {"c": 0.0, "eta": 1.0}, 0.0)],
+    "pbr_F_Iridescence": [("thickness 0", "a film of no thickness is no film; decided: the base Schlick Fresnel "
+                           "(Khronos Sample Renderer: iridescence off at d = 0)", {"d": 0.0},
+                           "pbr_F_Schlick(f0, c)"),
+                          ("TIR in the film", "film IOR below the outside IOR past the critical angle: "
+                           "the spec's F = 1", {"n1": 1.5, "n2": 1.0, "c": 0.2}, 1.0),
+                          ("film IOR = outside IOR", "no film interface: R12 is Schlick's (1 - c)^5 only, "
+                           "R123 reaches the floor 0", {"n1": 1.0, "n2": 1.0, "c": 1.0}, None),
+                          ("base IOR = film IOR", "phase φ23 flips by π where Schlick's R23 is not 0: the "
+                           "method's discontinuity", {"n2": 1.5, "f0": (0.04, 0.04, 0.04), "c": 0.2}, None)],
     "pbr_ior_from_f0": [("F0 = 1", "a perfect mirror: eta = 2/0; decided PBR_MAX_IOR", {"f0": 1.0}, "PBR_MAX_IOR")],
     "pbr_specPower_from_alpha": [("alpha = 0", "s = 2/0; decided: s at PBR_MIN_ALPHA (2e14)", {"a": 0.0},
                                   "pbr_specPower_from_alpha(PBR_MIN_ALPHA)")],

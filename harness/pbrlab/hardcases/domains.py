@@ -119,6 +119,19 @@ KINDS: dict[str, Kind] = {k.name: k for k in (
         Edge("1 + ulp", ULP_ABOVE_ONE, "eta² - 1 cancels to one rounding"),
         Edge("inside glass", 1.0 / 1.5, "total internal reflection beyond the critical angle, infinite slope at it"),
     ), (ULP_BELOW_ONE, 1.0 / 16.0, 16.0, 1.5), _log_uniform(1.0 / 3.0, 3.0)),
+    Kind("thickness", 400.0, (
+        Edge("0", 0.0, "no film: the thin-film model is undefined at zero thickness (decided: the base Fresnel)"),
+        Edge("fade", 0.03, "the end of the film-IOR fade (smoothstep over 0..0.03 nm): the film appears"),
+        Edge("denormal", DENORMAL, "a denormal thickness flushes to 0 on many GPUs: the no-film branch or not"),
+        Edge("1200", 1200.0, "a thick film: phase arguments of ~1e2 rad lose float32 precision in cos"),
+        Edge("huge", 1e30, "phase² would overflow float32: the optical path must be capped"),
+        Edge("negative", -100.0, "a texture or slider below 0: no physical film"),
+    ), (-0.0, 1e-30, 1.0, 1e5, 1e10, -1e30), _uniform(0.0, 1200.0)),
+    Kind("phase", 0.0, (
+        Edge("0", 0.0, "no phase shift: S at its largest, |S| up to 1.2 per channel"),
+        Edge("pi", float(np.float32(np.pi)), "a half-wave shift: S changes sign"),
+        Edge("4 pi", float(np.float32(4 * np.pi)), "the largest shift the film uses (m = 2, φ = 2π)"),
+    ), (-1.0, 100.0, 1e4), _uniform(0.0, 4 * np.pi)),
     Kind("hdr", 0.5, (
         Edge("0", 0.0, "black: the toe of every curve; Hable and ACES fits go slightly negative"),
         Edge("1e-30", 1e-30, "far below display precision; products underflow to denormals"),

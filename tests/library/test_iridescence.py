@@ -1,0 +1,153 @@
+"""Thin-film iridescence (glsl/pbr/brdf/f_iridescence.glsl, KHR_materials_iridescence) against
+its two float64 references (harness/pbrlab/reference/iridescence.py): (a) the same analytic
+method, to float32 rounding; (b) the spectral physics (exact Airy film per wavelength, CIE 1931
+by Wyman et al. 2013), within the method's measured error, stated in the GLSL header.
+
+Units: F is a reflectance (unitless, [0, 1]); tolerances are absolute.
+"""
+
+import numpy as np
+import pytest
+
+from library_helpers import F32_EPS, as_f32, assert_close, evaluate, vec3
+from pbrlab.reference import brdf, iridescence
+
+INCLUDE = ("pbr/brdf/f_iridescence.glsl",)
+CALL = "pbr_F_Iridescence(n1, n2, c, d, f0)"
+
+# (a) GLSL vs the same method in float64. F is a sum of six terms, each at most |C_m| 2 |S|
+# <= 2 * 5.3 in size, of ~40 float32 operations; the phase argument pos * 2π 1e-9 * m OPD
+# reaches 133 rad at 1200 nm, film IOR 2, m = 2 (one rounding of it: 8e-6 rad, times an
+# envelope <= 1.6e-7 there). Measured worst 1.9e-6 (llvmpipe); 1e-5 leaves 5x headroom and
+# catches any formula change (a wrong constant or phase is >= 1e-3 off).
+ATOL_FLOAT32 = 1e-5
+# The method is discontinuous where a phase flips (base IOR = film IOR: φ23 jumps by π while
+# Schlick's R23 = (1 - cosθ2)^5 is not 0; and the total internal reflection edge, where F
+# jumps to 1): there float32 and float64 may land on different sides. Points within this
+# relative distance of a tie are compared by the bound test instead.
+TIE_RELATIVE = 1e-5
+
+
+def _grid():
+    d = as_f32(np.concatenate([[0.0, 0.01, 0.03], np.linspace(1.0, 1200.0, 300)]))
+    c = as_f32(np.concatenate([np.linspace(0.0, 1.0, 65), np.geomspace(1e-6, 1e-2, 9)]))
+    film = as_f32([1.0, 1.2, 1.33, 1.5, 1.8, 2.0, 0.8])     # 1.0: no film interface; 0.8: TIR
+    f0 = as_f32([[0.02, 0.04, 0.08], [0.9, 0.6, 0.3], [0.0, 0.5, 1.0], [0.04, 0.04, 0.04]])
+    D, C, N, K = np.meshgrid(d, c, film, np.arange(len(f0)), indexing="ij")
+    return D, C, N, f0[K]
+
+
+def _away_from_ties(n1, N, C, f0):
+    eta3 = iridescence.ior_from_f0(np.clip(f0, 0.0, iridescence.MAX_BASE_F0))
+    tie = (np.abs(eta3 - N[..., None]) <= TIE_RELATIVE * N[..., None]).any(axis=-1)
+    cos2_sq = 1.0 - (n1 / N) ** 2 * (1.0 - C ** 2)
+    return ~tie & (np.abs(cos2_sq) > TIE_RELATIVE)
+
+
+def _conditioning_atol(n1, N, C, D):
+    """Near the critical angle (outside IOR above the film's) cosθ2 = sqrt(cos²θ2) is
+    ill-conditioned: a rounding of cos²θ2 (<= 8 eps (n1/n2)², a few operations) moves cosθ2 by
+    that over 2 cosθ2, and F moves by dF/dcosθ2 <= 5 (Schlick's slope) + Σ_m 2 · 5.3 (|C_m| <= 1,
+    |S| <= 5.3) · dθ_m/dcosθ2 · envelope_m, θ_m = pos_max 2π 1e-9 m 2 n2 d cosθ2 the phase."""
+    ratio2 = (n1 / N) ** 2
+    # floored where _away_from_ties excludes (|cos²θ2| <= TIE_RELATIVE) or F = 1 (TIR)
+    c2 = np.sqrt(np.maximum(1.0 - ratio2 * (1.0 - C ** 2), TIE_RELATIVE))
+    k = 5.0
+    for m in (1, 2):
+        phase = 2 * np.pi * 1e-9 * m * 2 * N * D * c2
+        dtheta = max(iridescence.XYZ_POS + (iridescence.X2_POS,)) * 2 * np.pi * 1e-9 * m * 2 * N * D
+        k = k + 2 * 5.3 * dtheta * np.exp(-min(iridescence.XYZ_VAR) * phase ** 2)
+    return ATOL_FLOAT32 + 8 * F32_EPS * ratio2 / (2 * c2) * k
+
+
+@pytest.mark.parametrize("n1", [1.0, 1.5])   # air; under a clearcoat of IOR 1.5
+def test_F_Iridescence_matches_the_float64_method(n1):
+    D, C, N, f0 = _grid()
+    got = evaluate(CALL, INCLUDE, n1=n1, n2=N, c=C, d=D, f0=vec3(f0))
+    ref = iridescence.F_Iridescence(n1, N, C, D, f0)
+    atol = _conditioning_atol(n1, N, C, D)[..., None]
+    assert_close(f"pbr_F_Iridescence (outside IOR {n1})", got, ref, rtol=0.0, atol=atol,
+                 where=_away_from_ties(n1, N, C, f0))
+
+
+def test_iridescence_sensitivity_matches_reference():
+    opd = as_f32(np.linspace(0.0, 1.0e4, 4001))[:, None]
+    shift = as_f32([[0.0, 0.0, 0.0], [np.pi, np.pi, np.pi], [2 * np.pi, np.pi, 0.0], [4 * np.pi, 2 * np.pi, 0.0]])
+    got = evaluate("pbr_iridescence_sensitivity(o, s)", INCLUDE, o=opd, s=vec3(shift[None]))
+    ref = iridescence.iridescence_sensitivity(opd, shift[None])
+    # |S| <= 5.3; measured 2.6e-6 absolute; arguments up to 1.4e2 rad
+    assert_close("pbr_iridescence_sensitivity", got, ref, rtol=0.0, atol=ATOL_FLOAT32)
+
+
+def test_F_Iridescence_within_its_stated_error_of_the_spectral_physics():
+    """The bound the GLSL header states (PBR_F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL, measured
+    0.2206 in float64 on this grid, at cosθ1 = 0.15: Schlick's interfaces and the two-order
+    series), checked on the GPU; near normal view (cosθ1 >= 0.7) the tighter 0.045."""
+    d = as_f32(np.linspace(0.0, 1200.0, 121))
+    c = as_f32([1.0, 0.85, 0.7, 0.5, 0.3, 0.15, 0.05])
+    film = as_f32([1.2, 1.5, 2.0])
+    grey = as_f32([0.02, 0.04, 0.08])     # dielectric bases (IOR 1.33, 1.5, 1.79)
+    D, C, N, G = np.meshgrid(d, c, film, grey, indexing="ij")
+    f0 = np.repeat(G[..., None], 3, axis=-1)
+    got = evaluate(CALL, INCLUDE, n1=1.0, n2=N, c=C, d=D, f0=vec3(f0))
+    physics = iridescence.spectral_F_Iridescence(1.0, N, C, D, f0)
+    err = np.abs(got - physics)
+    assert err.max() <= iridescence.F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL, err.max()
+    near_normal = C >= 0.7
+    assert err[near_normal].max() <= iridescence.F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL_NEAR_NORMAL
+    assert evaluate("PBR_F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL", INCLUDE, x=0.0) == np.float32(
+        iridescence.F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL)
+    assert evaluate("PBR_F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL_NEAR_NORMAL", INCLUDE, x=0.0) == np.float32(
+        iridescence.F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL_NEAR_NORMAL)
+
+
+def test_spectral_reference_without_a_film_is_the_exact_dielectric_fresnel():
+    """The reference checks itself: film IOR = outside IOR leaves one interface, whose
+    spectrally flat reflectance must integrate to the exact Fresnel (brdf.F_Dielectric)."""
+    c = np.array([1.0, 0.7, 0.3, 0.05])
+    f0 = np.array([0.02, 0.04, 0.5])
+    got = iridescence.spectral_F_Iridescence(1.0, 1.0, c, 300.0, f0)
+    eta = iridescence.ior_from_f0(f0)
+    np.testing.assert_allclose(got, brdf.F_Dielectric(c[:, None], eta), rtol=1e-12, atol=1e-14)
+
+
+def test_thickness_zero_is_the_schlick_base_fresnel_bit_for_bit():
+    """The extension mixes towards glTF's Schlick F (B.3.4), and its Sample Renderer turns
+    iridescence off at thickness 0: pbr_F_Schlick(baseF0, cosTheta1), not the exact Fresnel."""
+    D, C, N, f0 = _grid()
+    sel = (slice(0, 1),)   # d = 0 (and -0, NaN below)
+    for d in (0.0, -0.0, -5.0, np.nan):
+        got = evaluate(CALL, INCLUDE, n1=1.0, n2=N[sel], c=C[sel], d=d, f0=vec3(f0[sel]))
+        base = evaluate("pbr_F_Schlick(f0, c)", INCLUDE, c=C[sel], f0=vec3(f0[sel]))
+        np.testing.assert_array_equal(got, base)
+
+
+def test_F_Iridescence_is_finite_and_a_reflectance_at_the_edges():
+    D, C, N, f0 = _grid()
+    C = np.concatenate([C[:, :2], np.full_like(C[:, :1], 1.01), np.full_like(C[:, :1], -0.5)], axis=1)
+    shape = C.shape
+    D, N, f0 = D[:, :4], N[:, :4], f0[:, :4]
+    for n1 in (1.0, 1.5, 1.0 / 16.0, 16.0):
+        got = evaluate(CALL, INCLUDE, n1=n1, n2=N, c=C, d=D, f0=vec3(f0))
+        assert got.shape == shape + (3,)
+        assert np.isfinite(got).all() and (got >= 0.0).all() and (got <= 1.0).all(), n1
+    # total internal reflection inside the film (film IOR below the outside IOR): F = 1
+    got = evaluate(CALL, INCLUDE, n1=1.5, n2=1.0, c=0.2, d=300.0, f0=vec3([0.04, 0.04, 0.04]))
+    np.testing.assert_array_equal(got, np.ones(3, np.float32))
+    # grazing: the film's top reflects everything
+    got = evaluate(CALL, INCLUDE, n1=1.0, n2=1.5, c=0.0, d=300.0, f0=vec3([0.04, 0.5, 1.0]))
+    np.testing.assert_allclose(got, 1.0, atol=1e-6)
+
+
+def test_iridescence_mix_and_thickness_match_the_extension():
+    rng = np.random.default_rng(7)
+    F, Fi = as_f32(rng.random((1000, 3))), as_f32(rng.random((1000, 3)))
+    t = as_f32(np.linspace(-0.5, 1.5, 1000))
+    got = evaluate("pbr_iridescence_mix(F, Fi, t)", INCLUDE, F=vec3(F), Fi=vec3(Fi), t=t)
+    assert_close("pbr_iridescence_mix", got, iridescence.iridescence_mix(F, Fi, t), rtol=1e-6, atol=1e-7)
+    lo, hi = as_f32(rng.uniform(0, 1200, 1000)), as_f32(rng.uniform(0, 1200, 1000))   # min may exceed max
+    got = evaluate("pbr_iridescence_thickness(lo, hi, g)", INCLUDE, lo=lo, hi=hi, g=t)
+    assert_close("pbr_iridescence_thickness", got, iridescence.iridescence_thickness(lo, hi, t),
+                 rtol=1e-6, atol=1e-4)
+    # defaults of the extension: min 100, max 400, g = 1 (no texture) -> the maximum
+    assert evaluate("pbr_iridescence_thickness(100.0, 400.0, 1.0)", INCLUDE, x=0.0) == 400.0
