@@ -39,7 +39,8 @@
 // Guards (pbr/common/guards.hlsl): cosines clamped to [PBR_MIN_NDOTV, 1] (V ~ 1/(NdotV NdotL)
 // and L has x^c, whose pow is undefined at 0); alpha to [PBR_SHEEN_MIN_ALPHA, 1], the floor of
 // the distribution; 1 - cos θ reaches 0 at cos θ = 1, raised by pbr_pow_safe (limit 0).
-// Largest values: Λ(1e-4) = 2.1e4 at the floor; V_Charlie <= 5.9e2, V_Neubelt <= 1.25e3.
+// Largest values: Λ(1e-4) = 2.1e4 at the alpha floor, 8138 at alpha = 1; V_Charlie <= 1536
+// (both cosines at the floor, alpha = 1), V_Neubelt <= 1250.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_CHARLIE_HLSL
 #define PBR_BRDF_V_CHARLIE_HLSL
