@@ -25,8 +25,9 @@
 // from 2.94 to 1.94; applied to both directions it removes the lobe, E <= 0.45) — measured
 // with harness/pbrlab/reference/sheen.py sheen_lambda_softened.
 // Accuracy of the fit (measured, float64, against Λ integrated from D by Smith's relation
-// 1 + Λ(v) = ∫ D(h) <v·h>+ dω_h / NdotV): within 1.5 % at r = 1 for cosines >= 0.01, 30 %
-// high at r = 0.5, and 3.0 to 6.3 x low at r = 0.0049 (the floor). Too little masking means
+// 1 + Λ(v) = ∫ D(h) <v·h>+ dω_h / NdotV, cosines 1e-3, 0.01, 0.1, 0.5, 0.9): at alpha = 1
+// within 4.3 % for cosines >= 0.01 (15 % high at 1e-3); at alpha = 0.25, 13 to 35 % high; at the
+// floor alpha = 0.0049, 3.1 to 6.3 times too low. Too little masking means
 // too much sheen at grazing: the white sheen's directional albedo E exceeds 1 at grazing
 // views for perceptual roughness below 0.27, up to 2.94 (perceptual roughness 0.07, NdotV
 // 1.7e-3; harness/pbrlab/sheen_table.py). The layering clamps its albedo scaling to [0, 1]
