@@ -4,7 +4,8 @@
 // Include:  "pbr/pbr.glsl" (path relative to glsl/), or the individual files you need
 // Config macros read: PBR_COLOR_TRANSFER (pbr/color/transfer.glsl); PBR_QUALITY,
 //           PBR_SPECULAR_D, PBR_SPECULAR_V, PBR_SPECULAR_F, PBR_DIFFUSE
-//           (pbr/shading/dispatch.glsl); PBR_TONEMAP (pbr/tonemap/tonemap.glsl).
+//           (pbr/shading/dispatch.glsl); PBR_SHEEN_V, PBR_SHEEN_LUT_LOOKUP (pbr/shading/sheen.glsl);
+//           PBR_TONEMAP (pbr/tonemap/tonemap.glsl).
 //           Define them before this include.
 // Conventions: pbr/common/conventions.glsl. Naming rule and function table: glsl/README.md.
 // tests/library/test_glsl_layout.py checks that every .glsl file under pbr/ is listed here.
@@ -51,6 +52,8 @@
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/f_dielectric.glsl"
 #include "pbr/brdf/f_iridescence.glsl"
+#include "pbr/brdf/d_charlie.glsl"
+#include "pbr/brdf/v_charlie.glsl"
 
 // shading models
 #include "pbr/shading/dispatch.glsl"
@@ -58,6 +61,7 @@
 #include "pbr/shading/energy_conservation.glsl"
 #include "pbr/shading/clearcoat.glsl"
 #include "pbr/shading/anisotropy.glsl"
+#include "pbr/shading/sheen.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"

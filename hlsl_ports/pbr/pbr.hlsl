@@ -4,7 +4,8 @@
 // Include:  "pbr/pbr.hlsl" (path relative to hlsl_ports/), or the individual files you need
 // Config macros read: PBR_COLOR_TRANSFER (pbr/color/transfer.hlsl); PBR_QUALITY,
 //           PBR_SPECULAR_D, PBR_SPECULAR_V, PBR_SPECULAR_F, PBR_DIFFUSE
-//           (pbr/shading/dispatch.hlsl); PBR_TONEMAP (pbr/tonemap/tonemap.hlsl).
+//           (pbr/shading/dispatch.hlsl); PBR_SHEEN_V, PBR_SHEEN_LUT_LOOKUP (pbr/shading/sheen.hlsl);
+//           PBR_TONEMAP (pbr/tonemap/tonemap.hlsl).
 //           Define them before this include.
 // Conventions: pbr/common/conventions.hlsl. Naming rule and function table: glsl/README.md.
 // tests/library/test_glsl_layout.py checks that every .glsl file under pbr/ is listed here.
@@ -52,6 +53,8 @@
 #include "pbr/brdf/f_schlick.hlsl"
 #include "pbr/brdf/f_dielectric.hlsl"
 #include "pbr/brdf/f_iridescence.hlsl"
+#include "pbr/brdf/d_charlie.hlsl"
+#include "pbr/brdf/v_charlie.hlsl"
 
 // shading models
 #include "pbr/shading/dispatch.hlsl"
@@ -59,6 +62,7 @@
 #include "pbr/shading/energy_conservation.hlsl"
 #include "pbr/shading/clearcoat.hlsl"
 #include "pbr/shading/anisotropy.hlsl"
+#include "pbr/shading/sheen.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"
