@@ -71,17 +71,15 @@ def check_setup() -> None:
 
 
 def camera_spec(camera, size) -> dict:
-    """The render.mjs camera of a pbrlab Camera (perspective, up +Y)."""
+    """The render.mjs camera of a pbrlab Camera (perspective): its camera-to-world matrix
+    (the same basis as pbrlab.camera.camera_frame), vertical field of view and planes."""
     if camera.ortho_half_height is not None:
         raise PbrlabError("the sample viewer front end takes perspective cameras only")
     position = np.asarray(camera.position, np.float64)
     forward = np.asarray(camera.target, np.float64) - position
     distance = float(np.linalg.norm(forward))
     forward /= distance
-    up_hint = np.asarray(camera.up, np.float64)
-    if np.linalg.norm(np.cross(up_hint / np.linalg.norm(up_hint), [0.0, 1.0, 0.0])) > 1e-9:
-        raise PbrlabError(f"the sample viewer's camera has up +Y; this camera's up is {camera.up}")
-    right = np.cross(forward, up_hint)
+    right = np.cross(forward, np.asarray(camera.up, np.float64))
     right /= np.linalg.norm(right)
     up = np.cross(right, forward)
     to_world = np.eye(4)
