@@ -27,6 +27,7 @@ import json
 import math
 import os
 import shutil
+import signal
 import subprocess
 import tempfile
 from pathlib import Path
@@ -111,11 +112,17 @@ def render_with_sample_viewer(gltf_path, camera, environment=None, size=(256, 12
         folder.mkdir(parents=True, exist_ok=True)
         spec_path, out = Path(tmp) / "spec.json", folder / Path(gltf_path).stem
         spec_path.write_text(json.dumps(spec), encoding="utf-8")
+        # its own process group: a timeout ends node and the browser it started together
+        node = subprocess.Popen(["node", str(SAMPLE_VIEWER_DIR / "render.mjs"), str(spec_path), str(out)],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                start_new_session=True)
         try:
-            run = subprocess.run(["node", str(SAMPLE_VIEWER_DIR / "render.mjs"), str(spec_path), str(out)],
-                                 capture_output=True, text=True, timeout=RENDER_TIMEOUT_S)
+            stdout, stderr = node.communicate(timeout=RENDER_TIMEOUT_S)
         except subprocess.TimeoutExpired:
+            os.killpg(node.pid, signal.SIGKILL)
+            node.communicate()
             raise PbrlabError(f"the sample viewer did not finish {gltf_path} within {RENDER_TIMEOUT_S} s") from None
+        run = subprocess.CompletedProcess(node.args, node.returncode, stdout, stderr)
         if run.returncode != 0:
             raise PbrlabError(f"the sample viewer failed on {gltf_path} (exit {run.returncode}):\n"
                               f"{(run.stderr or run.stdout).strip()}")
