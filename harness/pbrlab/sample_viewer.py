@@ -10,7 +10,7 @@ tonemap and pow(1/2.2) encode; they are written to an RGBA32F target (no multisa
 
 What the viewer is given: the glTF file itself (its materials, textures and
 KHR_lights_punctual lights, read by the viewer's own importer), the camera (a pbrlab
-``Camera``: position, target, up +Y, vertical field of view; or a glTF camera index) and
+``Camera``: position, target, up, vertical field of view; or a glTF camera index) and
 the environment: a Radiance .hdr equirectangular image that the viewer prefilters itself
 (Lambertian and GGX cubes, its GGX LUT), or None for punctual lights only. The viewer's
 generated key and fill lights and its environment background are off.
