@@ -5,9 +5,13 @@
 #      instruction counts of pbrlab.gpu_isa, python3-venv):
 #      installed with apt-get when run as root, otherwise the exact command is printed and
 #      the script stops with exit 1.
+#      Chromium and node/npm (Debian's chromium, nodejs; npm unless node brings it) for the glTF Sample Viewer
+#      comparison (pbrlab.sample_viewer) are among them.
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
 #      pbrlab itself in editable mode. Skipped when .venv is up to date with the
 #      requirements (a stamp records their hash).
+#   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core,
+#      pinned by its package-lock.json). Skipped when node_modules matches the lock file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,6 +26,8 @@ declare -A need=(
   [binutils]=/usr/bin/objdump
   [libvulkan1]=/usr/lib/x86_64-linux-gnu/libvulkan.so.1
   [mesa-vulkan-drivers]=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json
+  [chromium]=/usr/bin/chromium
+  [nodejs]=/usr/bin/node
 )
 missing=()
 for pkg in "${!need[@]}"; do
@@ -32,6 +38,7 @@ for pkg in "${!need[@]}"; do
   fi
 done
 python3 -c 'import venv, ensurepip' 2>/dev/null || missing+=(python3-venv)
+command -v npm >/dev/null 2>&1 || missing+=(npm)  # Debian's nodejs ships without it
 
 if [ ${#missing[@]} -gt 0 ]; then
   IFS=$'\n' missing=($(sort <<<"${missing[*]}")); unset IFS
@@ -46,6 +53,15 @@ if [ ${#missing[@]} -gt 0 ]; then
     echo "Run that line (or run this script as root), then run the command again." >&2
     exit 1
   fi
+fi
+
+viewer=tools/sample_viewer
+viewer_stamp=$viewer/node_modules/.pbrlab-installed
+viewer_want=$(sha256sum < $viewer/package-lock.json | cut -c1-16)
+if ! { [ -f "$viewer_stamp" ] && [ "$(cat "$viewer_stamp")" = "$viewer_want" ]; }; then
+  echo "setup: npm ci in $viewer"
+  (cd $viewer && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$viewer_want" > "$viewer_stamp"
 fi
 
 stamp=.venv/.pbrlab-installed

@@ -1,0 +1,123 @@
+"""pbrlab's glTF renders against Khronos' glTF Sample Renderer (pbrlab.sample_viewer), a
+second renderer that shares none of pbrlab's code: its own importer, tangents (MikkTSpace),
+BRDF, light units and environment prefiltering.
+
+Both render the same file with the same camera, lights and environment at the goldens'
+size, and both images are linear radiance (the viewer's LINEAR_OUTPUT, no tonemap on
+either side), encoded here with the one exact sRGB encode (pbrlab.srgb8) and compared in
+8-bit codes with pbrlab.compare over the pixels both cover, eroded by EDGE_PX so that
+silhouettes (different rasterisation rules at triangle edges) do not count.
+
+Measured (Chromium 156 SwiftShader vs Mesa llvmpipe, gltf-viewer 1.1.0, the viewer's
+environment prefiltering lowered as render.mjs says; fraction of the compared pixels with
+a channel over 4 codes, largest difference, mean |difference| in codes, mean FLIP of the
+whole images with the background made equal):
+    textured.gltf, 2 punctual lights + constant environment:  0.0041, 13 codes, 0.353, FLIP 0.0105
+    hierarchy_lights.glb, 3 punctual lights:                   0.0022, 179 codes (1 pixel), 0.369, FLIP 0.0076
+    (textured.gltf with its lights only, measured once: 0.0058 of pixels over 4 codes)
+Where they differ: the normal-mapped bumps' rims (tangent frames: the viewer's MikkTSpace
+against pbrlab's per-vertex tangents), the checker's texel edges (mip chains: the
+viewer's glGenerateMipmap against pbrlab's), one spot-cone edge pixel of
+hierarchy_lights; the energy over the compared pixels agrees to 0.1 % (textured) and
+0.2 % (hierarchy_lights), so light units, Fresnel and the environment's scale agree.
+Tolerance: 4 codes on at most 0.8 % of the pixels (about twice the worst fraction of the
+tested cases, 0.41 %: the margin for another SwiftShader or llvmpipe build) and a mean
+difference of at most 0.75 codes (twice the worst 0.37). A 10 % radiance error fails it
+(test_the_agreement_check_fails_for_a_wrong_light_unit).
+
+Without chromium, node or the npm packages the tests fail with the set-up command
+(bash scripts/setup.sh); they are not skipped. Each viewer render takes 5-15 s (browser start and SwiftShader's IBL filtering).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+from pbrlab import compare, sample_viewer, srgb8
+from pbrlab.errors import PbrlabError
+from pbrlab.golden_scenes import GLTF_DIR, GLTF_SIZE
+from pbrlab.gltf import load_gltf
+from pbrlab.render import render_scene
+from pbrlab.scene import Environment
+
+EDGE_PX = 2  # erosion of the common coverage: a pixel with a silhouette in its 5x5 block is left out
+TOLERANCE = compare.Tolerance(
+    max_abs=4.0, max_fraction=0.008,
+    reason="pbrlab vs Khronos glTF Sample Renderer, 8-bit sRGB codes away from silhouettes: "
+           "measured at most 0.41 % of pixels over 4 codes (tangent frames, mip chains)")
+MAX_MEAN_CODES = 0.75
+CONSTANT_SKY = (0.25, 0.3, 0.35)  # the features_environment golden's constant radiance
+
+
+@pytest.fixture(scope="module")
+def renders(tmp_path_factory):
+    """(asset, environment colour) -> (pbrlab linear, viewer linear), each rendered once."""
+    made = {}
+
+    def get(asset, environment_colour=None):
+        key = (asset, environment_colour)
+        if key not in made:
+            made[key] = _renders(tmp_path_factory.mktemp("sample-viewer"), asset, environment_colour)
+        return made[key]
+    return get
+
+
+def _renders(tmp_path, asset, environment_colour=None):
+    """(pbrlab linear, viewer linear), HxWx4 float32, same camera, lights, environment."""
+    hdr = environment = None
+    if environment_colour is not None:  # both get the radiance the viewer decodes from the .hdr
+        hdr = tmp_path / "sky.hdr"
+        decoded = sample_viewer.write_radiance_hdr(hdr, np.broadcast_to(np.array(environment_colour), (32, 64, 3)))
+        environment = Environment(color=decoded[0, 0].astype(np.float64))
+    scene = load_gltf(GLTF_DIR / asset, size=GLTF_SIZE, environment=environment, emit_warnings=False).scene
+    ours = render_scene(scene).linear
+    theirs = sample_viewer.render_with_sample_viewer(GLTF_DIR / asset, scene.camera, hdr, GLTF_SIZE)
+    return ours, theirs
+
+
+def _agreement(ours, theirs):
+    covered = (ours[..., 3] > 0) & (theirs[..., 3] > 0)
+    inner = ndimage.binary_erosion(covered, iterations=EDGE_PX)
+    a, b = srgb8.encode(ours[..., :3]), srgb8.encode(theirs[..., :3])
+    result = compare.diff(a[inner][:, None, :], b[inner][:, None, :], TOLERANCE)
+    mean_codes = float(np.abs(a[inner].astype(np.float64) - b[inner]).mean())
+    flip = None
+    if compare.flip_available():  # whole images, the viewer's outside the compared pixels made ours
+        flip = compare.flip_mean(a, np.where(inner[..., None], b, a))
+    coverage_mismatch = int(((ours[..., 3] > 0) != (theirs[..., 3] > 0)).sum())
+    return result, mean_codes, flip, coverage_mismatch, int(inner.sum())
+
+
+@pytest.mark.parametrize("asset, environment_colour", [
+    ("textured.gltf", CONSTANT_SKY),       # base colour, metallic-roughness, normal, emissive maps
+    ("hierarchy_lights.glb", None),        # node hierarchy, directional, point and spot lights
+])
+def test_gltf_render_agrees_with_khronos_sample_viewer(renders, asset, environment_colour):
+    ours, theirs = renders(asset, environment_colour)
+    result, mean_codes, flip, coverage_mismatch, compared = _agreement(ours, theirs)
+    figures = (f"{asset}: {compared} pixels compared, {result.fraction_over:.4f} over {TOLERANCE.max_abs:g} "
+               f"codes (max {result.max_abs:g}), mean {mean_codes:.3f} codes, mean FLIP {flip}, "
+               f"coverage differs at {coverage_mismatch} pixels")
+    print(figures)
+    assert compared > 0.5 * (ours[..., 3] > 0).sum(), figures
+    assert coverage_mismatch <= 0.002 * ours[..., 3].size, figures  # the same geometry and camera
+    assert result.passed, figures
+    assert mean_codes <= MAX_MEAN_CODES, figures
+
+
+def test_the_agreement_check_fails_for_a_wrong_light_unit(renders):
+    """The tolerance is tight enough to catch a 10 % radiance error (a light-unit slip)."""
+    ours, theirs = renders("hierarchy_lights.glb")
+    wrong = ours.copy()
+    wrong[..., :3] *= 1.1
+    result, mean_codes, _, _, _ = _agreement(wrong, theirs)
+    assert not (result.passed and mean_codes <= MAX_MEAN_CODES)
+
+
+def test_missing_set_up_names_the_set_up_command(monkeypatch, tmp_path):
+    monkeypatch.setattr(sample_viewer, "CHROMIUM", tmp_path / "no-chromium")
+    with pytest.raises(PbrlabError, match="bash scripts/setup.sh") as info:
+        sample_viewer.render_with_sample_viewer(GLTF_DIR / "textured.gltf", 0, None, (8, 8))
+    assert "chromium" in str(info.value)
