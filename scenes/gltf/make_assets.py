@@ -17,8 +17,12 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
     features.gltf            orthographic camera, COLOR_0, TEXCOORD_1 (occlusion with
                              strength), normal scale, non-indexed flat-shaded box (no
                              NORMAL), doubleSided quad seen from behind, KHR_materials_ior +
-                             _specular, _emissive_strength, and KHR_materials_clearcoat
+                             _specular, _emissive_strength, and KHR_materials_dispersion
                              (not honoured: named in a warning); data: URIs only
+    clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
+                             a rough coat masked by a texture (clearcoatTexture.r x factor,
+                             clearcoatRoughnessTexture.g), a coat with its own normal map
+                             over a flat base; data: URIs only
 
     .venv/bin/python scenes/gltf/make_assets.py
 """
@@ -408,7 +412,7 @@ def features():
                                                         "roughnessFactor": 0.15},
          "extensions": {"KHR_materials_ior": {"ior": 1.8},
                         "KHR_materials_specular": {"specularFactor": 0.9, "specularColorFactor": [1.0, 0.9, 0.8]},
-                        "KHR_materials_clearcoat": {"clearcoatFactor": 1.0}}},
+                        "KHR_materials_dispersion": {"dispersion": 0.5}}},
         {"name": "occluded_bumps", "pbrMetallicRoughness": {"baseColorTexture": {"index": base},
                                                             "metallicFactor": 0.0, "roughnessFactor": 0.5},
          "occlusionTexture": {"index": ao, "texCoord": 1, "strength": 0.7},
@@ -418,7 +422,7 @@ def features():
          "pbrMetallicRoughness": {"baseColorFactor": _rgba8(0.1, 0.1, 0.1, 1), "metallicFactor": 0.0,
                                   "roughnessFactor": 0.5}},
     ]
-    b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_specular", "KHR_materials_clearcoat",
+    b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_specular", "KHR_materials_dispersion",
                                 "KHR_materials_emissive_strength"]
     box = trimesh.creation.box(extents=[1.2, 1.2, 1.2])
     corners = np.asarray(box.vertices)[box.faces.reshape(-1)]  # non-indexed, no NORMAL: flat
@@ -451,12 +455,39 @@ def features():
     b.write_gltf(HERE / "features.gltf", external_bin=False)
 
 
+def clearcoat():
+    b = Builder()
+    mask = b.texture(b.image(np.repeat(np.round(disc_alpha() * 255).astype(np.uint8)[..., None], 3, axis=2), embed=True))
+    rough = b.texture(b.image(metallic_roughness(), embed=True))
+    normal = b.texture(b.image(bumps(), embed=True))
+    red = {"baseColorFactor": _rgba8(0.6, 0.08, 0.05, 1), "metallicFactor": 0.0, "roughnessFactor": 0.5}
+    b.json["materials"] = [
+        {"name": "uncoated", "pbrMetallicRoughness": red},
+        {"name": "smooth_coat", "pbrMetallicRoughness": red,
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05}}},
+        {"name": "masked_rough_coat", "pbrMetallicRoughness": red,
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.9, "clearcoatTexture": {"index": mask},
+                                                    "clearcoatRoughnessFactor": 0.7,
+                                                    "clearcoatRoughnessTexture": {"index": rough}}}},
+        {"name": "bumpy_coat", "pbrMetallicRoughness": red,
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.1,
+                                                    "clearcoatNormalTexture": {"index": normal, "scale": 0.8}}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_clearcoat"]
+    p, n, uv, f = _quad(1.5)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "clearcoat.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
     texture_transform()
     alpha_modes()
     features()
+    clearcoat()
 
 
 if __name__ == "__main__":

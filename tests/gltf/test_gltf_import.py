@@ -167,14 +167,14 @@ def test_mirrored_repeat_is_a_doubled_image_at_half_the_uvs():
 
 
 def test_every_ignored_extension_is_one_warning_in_render_and_features(capsys, tmp_path):
-    with pytest.warns(GltfWarning, match='KHR_materials_clearcoat ignored in material "glass_like"'):
+    with pytest.warns(GltfWarning, match='KHR_materials_dispersion ignored in material "glass_like"'):
         load_gltf(ASSETS / "features.gltf")
     assert cli.main(["render", str(ASSETS / "features.gltf"), "-o", str(tmp_path / "f.png"), "--size", "32x16"]) == 0
     err = capsys.readouterr().err
-    assert err.count("warning: ") == 1 and 'KHR_materials_clearcoat ignored in material "glass_like"' in err
+    assert err.count("warning: ") == 1 and 'KHR_materials_dispersion ignored in material "glass_like"' in err
     assert cli.main(["features", str(ASSETS / "features.gltf")]) == 0
     report = json.loads(capsys.readouterr().out)
-    assert report["warnings"] == ['KHR_materials_clearcoat ignored in material "glass_like"']
+    assert report["warnings"] == ['KHR_materials_dispersion ignored in material "glass_like"']
     assert report["scene"]["orthographic"] and report["scene"]["spot"] == 1
     assert report["materials"]["occluded_bumps"]["uv1_maps"] == ["occlusion"]
 
@@ -407,8 +407,32 @@ def test_sub_scene_warnings_reach_render_and_features(tmp_path, capsys):
     scene_file = tmp_path / "scene.json"
     scene_file.write_text(json.dumps({"objects": [{"gltf": str(ASSETS / "features.gltf")}]}))
     assert cli.main(["render", str(scene_file), "-o", str(tmp_path / "s.png"), "--size", "32x16"]) == 0
-    assert 'warning: features.gltf: KHR_materials_clearcoat ignored in material "glass_like"' in capsys.readouterr().err
+    assert 'warning: features.gltf: KHR_materials_dispersion ignored in material "glass_like"' in capsys.readouterr().err
     assert cli.main(["features", str(scene_file)]) == 0
     report = json.loads(capsys.readouterr().out)
-    assert report["warnings"] == ['features.gltf: KHR_materials_clearcoat ignored in material "glass_like"']
+    assert report["warnings"] == ['features.gltf: KHR_materials_dispersion ignored in material "glass_like"']
     assert report["scene"]["orthographic"]  # the file's camera serves: the scene has none
+
+
+def test_clearcoat_maps_to_the_coat_layer():
+    result = load_gltf(ASSETS / "clearcoat.gltf", emit_warnings=False)
+    assert result.warnings == []
+    m = result.scene.materials
+    assert m["uncoated"].clearcoat == 0.0
+    assert (m["smooth_coat"].clearcoat, m["smooth_coat"].clearcoat_smoothness) == (1.0, 0.95)
+    masked = m["masked_rough_coat"]
+    assert masked.clearcoat == 0.9 and masked.clearcoat_smoothness == pytest.approx(0.3)
+    assert {"clearcoat", "clearcoat_roughness"} <= set(masked.textures)
+    assert not any(masked.texture_srgb[s] for s in ("clearcoat", "clearcoat_roughness"))  # data, not colour
+    bumpy = m["bumpy_coat"]
+    assert "clearcoat_normal" in bumpy.textures and "normal" not in bumpy.textures
+    assert bumpy.clearcoat_normal_scale == 0.8
+
+
+def test_an_unsupported_extension_is_one_warning_per_file_naming_its_materials(tmp_path):
+    doc = quad_document()
+    doc["materials"] = [dict(doc["materials"][0], name=f"m{i}", extensions={"KHR_materials_sheen": {}})
+                        for i in range(5)]
+    doc["meshes"][0]["primitives"] = [dict(doc["meshes"][0]["primitives"][0], material=i) for i in range(5)]
+    result = load_gltf(write(tmp_path, doc), emit_warnings=False)
+    assert result.warnings == ['KHR_materials_sheen ignored in 5 materials ("m0", "m1", "m2" and 2 more)']

@@ -16,6 +16,7 @@ SceneError naming the object; nothing else escapes for a bad file.
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -34,8 +35,12 @@ from .nodes import walk
 
 SUFFIXES = (".gltf", ".glb")
 # Extensions whose content reaches the image (what extensionsRequired may name).
-HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_emissive_strength",
-                       "KHR_materials_ior", "KHR_materials_specular")
+HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_clearcoat",
+                       "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular")
+# "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
+# and detail in a file, naming where (a file once printed 27 lines for one extension).
+_PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
+NAMED_PLACES = 3
 
 
 class GltfWarning(UserWarning):
@@ -125,7 +130,8 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
                 if not primitive.object("attributes").has(f"TEXCOORD_{uv_set}"):
                     primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
                                    "which the primitive lacks")
-            normal_uv = material.texture_uv_set.get("normal", 0) if "normal" in material.textures else None
+            mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
+            normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
             geometry = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                       (*key, mesh_index, p, flip))
             if geometry is None:
@@ -140,10 +146,37 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     scene = Scene(camera=None, lights=lights, environment=environment, materials=by_name,
                   objects=objects, render=render or RenderSettings(), source=str(path))
     scene.camera = _choose_camera(doc, scene, placed_cameras, camera, size)
+    messages = collapse_warnings(messages)
     if emit_warnings:
         for message in messages:
             warnings.warn(f"{path.name}: {message}", GltfWarning, stacklevel=2)
     return GltfScene(scene, messages, len(placed_cameras))
+
+
+def collapse_warnings(messages: list[str]) -> list[str]:
+    """One line per unsupported extension (and detail) per file: the places it was found
+    in are listed in the first one's position, the first NAMED_PLACES by name."""
+    groups: dict = {}
+    order = []
+    for message in messages:
+        m = _PER_PLACE.match(message)
+        key = (m["what"], m["kind"], m["detail"]) if m else message
+        if key not in groups:
+            groups[key] = []
+            order.append(key)
+        if m:
+            groups[key].append(m["place"])
+    out = []
+    for key in order:
+        places = groups[key]
+        if len(places) <= 1:
+            out.append(key if isinstance(key, str) else f"{key[0]} ignored in {key[1]} {places[0]}{key[2]}")
+            continue
+        what, kind, detail = key
+        named = ", ".join(places[:NAMED_PLACES]) + (f" and {len(places) - NAMED_PLACES} more"
+                                                     if len(places) > NAMED_PLACES else "")
+        out.append(f"{what} ignored in {len(places)} {kind}s ({named}){detail}")
+    return out
 
 
 def _choose_camera(doc, scene: Scene, placed, index: int | None, size) -> Camera:

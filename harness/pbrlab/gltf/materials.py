@@ -14,6 +14,9 @@ reads what this module writes into a scene Material:
     emissiveFactor x emissiveTexture         emission x emission map (sRGB)
       x KHR_materials_emissive_strength
     doubleSided                              no culling; back faces lit with the normal reversed
+    KHR_materials_clearcoat                  clearcoat = clearcoatFactor x texture.r, clearcoat_smoothness
+                                             = 1 - clearcoatRoughnessFactor (x texture.g), the coat's
+                                             normal map and scale (else the geometric normal)
     KHR_materials_ior, KHR_materials_specular
       (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
                                              x specularColorFactor x specularFactor (max 1)
@@ -45,8 +48,11 @@ ALPHA_MODES = {"OPAQUE": "opaque", "MASK": "cutout", "BLEND": "fade"}  # glTF al
 DEFAULT_MIN_FILTER, DEFAULT_MAG_FILTER = 9987, 9729       # LINEAR_MIPMAP_LINEAR, LINEAR: pbrlab's default
 DEFAULT_IOR = 1.5                                         # KHR_materials_ior: glTF's dielectric (F0 = 0.04)
 
-HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_emissive_strength", "KHR_materials_ior",
+HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",
                                 "KHR_materials_specular")
+# KHR_materials_clearcoat's textures: (key, pbrlab slot); all linear data
+CLEARCOAT_TEXTURES = (("clearcoatTexture", "clearcoat"), ("clearcoatRoughnessTexture", "clearcoat_roughness"),
+                      ("clearcoatNormalTexture", "clearcoat_normal"))
 HONOURED_TEXTURE_EXTENSIONS = ("KHR_texture_transform",)
 # (glTF key, pbrlab slot, decode sRGB)
 TEXTURE_KEYS = (("baseColorTexture", "albedo", True), ("metallicRoughnessTexture", "metallic_roughness", False),
@@ -182,10 +188,22 @@ class MaterialReader:
             strength = extensions["KHR_materials_emissive_strength"].number("emissiveStrength", 1.0, 0.0)
         m.emission = emissive * strength
         self._specular(m, extensions, spec.path, name, pbr.has("metallicRoughnessTexture"))
+        if "KHR_materials_clearcoat" in extensions:
+            self._clearcoat(m, extensions["KHR_materials_clearcoat"], name)
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
         return m
+
+    def _clearcoat(self, m: Material, coat: FieldReader, name: str):
+        """KHR_materials_clearcoat (the extension's README, "Properties")."""
+        m.clearcoat = coat.number("clearcoatFactor", 0.0, 0.0, 1.0)
+        m.clearcoat_smoothness = 1.0 - coat.number("clearcoatRoughnessFactor", 0.0, 0.0, 1.0)
+        for key, slot in CLEARCOAT_TEXTURES:
+            if coat.has(key):
+                self.texture(coat.object(key), m, slot, False, name)
+        if coat.has("clearcoatNormalTexture"):
+            m.clearcoat_normal_scale = coat.object("clearcoatNormalTexture").number("scale", 1.0)
 
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
         """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from
