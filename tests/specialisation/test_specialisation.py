@@ -26,7 +26,16 @@ TEST_SCENES = {
     "unity_example": lambda: load_scene(ROOT / "scenes" / "unity_example" / "scene.json"),
     "torture": lambda: load_scene(ROOT / "scenes" / "torture" / "scene.json"),
     "readme_example": lambda: load_scene(ROOT / "scenes" / "example.json"),
+    "coated_light_zoo": lambda: parse_scene(_coated(light_zoo())),
 }
+
+
+def _coated(scene):
+    """The light zoo with its materials clear-coated (a layer: compiled in both programs)."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.update(clearcoat=1.0 - 0.3 * i, clearcoat_smoothness=0.9 - 0.4 * i)
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
 
 
 @pytest.mark.parametrize("name", sorted(TEST_SCENES))
@@ -200,3 +209,19 @@ def test_bad_gltf_is_a_clear_error(tmp_path, capsys):
     (tmp_path / "broken.gltf").write_text("{not json")
     assert cli.main(["features", str(tmp_path / "broken.gltf")]) == 2
     assert "not a readable glTF 2.0 file" in capsys.readouterr().err
+
+
+# The clear coat's uniforms and call sites: only where a material has a coat, in the
+# specialised and the full program alike (a layer is a setting of the material).
+COAT_TOKENS = ["u_clearcoat", ",layers,v,gi,", "pbrlab_surf_layers(IN,layers)"]
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+def test_a_material_without_a_coat_has_none_of_its_code(tmp_path, specialise):
+    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
+    coated_scene = json.loads(json.dumps(MINIMAL))
+    coated_scene["materials"]["m"].update(clearcoat=1.0)
+    _, coated = _programs_for(parse_scene(coated_scene), specialise)
+    plain_text, coated_text = _preprocessed(plain, tmp_path), _preprocessed(coated, tmp_path)
+    for token in COAT_TOKENS:
+        assert token not in plain_text and token in coated_text, token
