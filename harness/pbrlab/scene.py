@@ -62,6 +62,8 @@ TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling)
     "normal": "linear",               # tangent space, RGB = xyz * 0.5 + 0.5
     "emission": "srgb",
     "occlusion": "linear",
+    "specular_glossiness": "srgb",    # RGB = specular colour (sRGB), A = glossiness (linear): glTF's
+                                      # KHR_materials_pbrSpecularGlossiness, specular workflow
     "clearcoat": "linear",            # R = the coat's mask (glTF clearcoatTexture)
     "clearcoat_roughness": "linear",  # G = the coat's perceptual roughness (glTF clearcoatRoughnessTexture)
     "clearcoat_normal": "linear",     # the coat's tangent-space normal (glTF clearcoatNormalTexture)
@@ -126,6 +128,7 @@ class Material:
     clearcoat: float = 0.0
     clearcoat_smoothness: float = 1.0  # 1 - the coat's perceptual roughness
     clearcoat_normal_scale: float = 1.0
+    unlit: bool = False  # KHR_materials_unlit: the surface's albedo and alpha, no light
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -328,6 +331,9 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.alpha = r.number("alpha", default=1.0, lo=0.0, hi=1.0)
     m.alpha_mode = r.choice("alpha_mode", ALPHA_MODES, default="opaque")
     m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
+    m.unlit = r.raw("unlit", False)
+    if not isinstance(m.unlit, bool):
+        r.fail("expected true (KHR_materials_unlit: the albedo, no light) or false", "unlit")
     m.clearcoat = r.number("clearcoat", default=0.0, lo=0.0, hi=1.0)
     m.clearcoat_smoothness = r.number("clearcoat_smoothness", default=1.0, lo=0.0, hi=1.0)
     if r.has("surface"):
@@ -385,7 +391,7 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
         r.fail(str(exc), "surface")
     for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
-                "clearcoat_smoothness"):
+                "clearcoat_smoothness", "unlit"):
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "

@@ -53,7 +53,7 @@ def load_scene_with_gltf_warnings(path):
     return scene, messages
 
 
-def load_any_scene(path, camera=None, environment=None, size=None):
+def load_any_scene(path, camera=None, environment=None, size=None, variant=None):
     """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
     import sys
     from pathlib import Path
@@ -62,14 +62,15 @@ def load_any_scene(path, camera=None, environment=None, size=None):
     from ..gltf.settings import read_settings
 
     if not is_gltf(path):
-        if camera is not None or environment is not None:
-            raise PbrlabError("--camera and --environment are for glTF files; a JSON scene names its own")
+        if camera is not None or environment is not None or variant is not None:
+            raise PbrlabError("--camera, --environment and --variant are for glTF files; a JSON scene names its own")
         scene, messages = load_scene_with_gltf_warnings(path)
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
     env, render = read_settings(Path(path), environment)
-    result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False)
+    result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
+                       variant=variant)
     for message in result.warnings:
         print(f"warning: {message}", file=sys.stderr)
     return result.scene
@@ -85,7 +86,7 @@ def run(args) -> int:
         if path and not path.lower().endswith(suffix):
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
-    scene = load_any_scene(args.scene, args.camera, args.environment, size)
+    scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant)
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
@@ -116,6 +117,8 @@ def register(sub, common):
                    help="glTF: render from camera N (default: the first camera, else a framing view)")
     p.add_argument("--environment", default=None, metavar="FILE|R,G,B",
                    help="glTF: an equirectangular image or a constant radiance (overrides <model>.pbrlab.json)")
+    p.add_argument("--variant", default=None, metavar="NAME",
+                   help="glTF: the KHR_materials_variants variant to render (default: the file's default materials)")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

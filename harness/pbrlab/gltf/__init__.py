@@ -36,7 +36,8 @@ from .nodes import walk
 SUFFIXES = (".gltf", ".glb")
 # Extensions whose content reaches the image (what extensionsRequired may name).
 HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_clearcoat",
-                       "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular")
+                       "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
+                       "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness")
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
@@ -59,9 +60,11 @@ def is_gltf(path) -> bool:
 
 
 def load_gltf(path, camera: int | None = None, environment: Environment | None = None,
-              render: RenderSettings | None = None, size=None, emit_warnings: bool = True) -> GltfScene:
+              render: RenderSettings | None = None, size=None, emit_warnings: bool = True,
+              variant: str | None = None) -> GltfScene:
     """The scene of a glTF 2.0 file. ``camera``: the index of a glTF camera (default: the
     first one a node places; a framing camera from the bounds when there is none).
+    ``variant``: a KHR_materials_variants variant's name (default: the default materials).
     Warnings are returned and, with ``emit_warnings``, issued as GltfWarning."""
     doc = read_document(path)
     path = Path(path)
@@ -79,9 +82,14 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     for key in ("animations", "skins"):
         if doc.items(key):
             warn(f"{key} ignored ({len(doc.items(key))}; the rest pose is drawn)")
-    for name, _ in root.extensions():
-        if name != "KHR_lights_punctual":
+    variant_index = None
+    for name, spec in root.extensions():
+        if name == "KHR_materials_variants":
+            variant_index = _variant_index(doc, spec, variant)
+        elif name != "KHR_lights_punctual":
             warn(f"{name} ignored (top level)")
+    if variant is not None and variant_index is None:
+        doc.fail("extensions", f"--variant {variant}: the file defines no KHR_materials_variants")
 
     key = file_key(path)
     reader = MaterialReader(doc, key, warn)
@@ -113,7 +121,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             warn(f"node {node_index} ignored (its transform has zero scale)")
             continue
         for p, primitive in enumerate(primitives):
-            material_index = primitive.index("material", "materials")
+            material_index = _variant_material(primitive, variant_index)
             has_colour = primitive.object("attributes").has("COLOR_0")
             mkey = (material_index, has_colour)
             if mkey not in materials:
@@ -151,6 +159,34 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         for message in messages:
             warnings.warn(f"{path.name}: {message}", GltfWarning, stacklevel=2)
     return GltfScene(scene, messages, len(placed_cameras))
+
+
+def _variant_index(doc, spec, name: str | None) -> int | None:
+    """KHR_materials_variants: the index of the variant called ``name`` (None: no choice)."""
+    names = [v.string("name") for v in spec.objects("variants", min_items=1)]
+    if name is None:
+        return None
+    if name not in names:
+        doc.fail("extensions.KHR_materials_variants", f"--variant {name!r} is not one of its variants: "
+                 + ", ".join(repr(n) for n in names))
+    return names.index(name)
+
+
+def _variant_material(primitive, variant_index: int | None) -> int | None:
+    """The primitive's material: its KHR_materials_variants mapping for the chosen variant,
+    else its own (the extension's README: "If ... not mapped, the default material")."""
+    default = primitive.index("material", "materials")
+    for ext, spec in primitive.extensions():
+        if ext != "KHR_materials_variants":
+            continue
+        for mapping in spec.objects("mappings"):
+            material = mapping.index("material", "materials", required=True)
+            variants = mapping.array("variants")
+            if not all(isinstance(v, int) and not isinstance(v, bool) and v >= 0 for v in variants):
+                mapping.fail(f"variants: expected indices of KHR_materials_variants' variants, got {variants}")
+            if variant_index is not None and variant_index in variants:
+                return material
+    return default
 
 
 def collapse_warnings(messages: list[str]) -> list[str]:

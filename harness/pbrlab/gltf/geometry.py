@@ -64,7 +64,8 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
         primitive.objects("targets")
         warn(f"morph targets ignored in mesh {mesh} primitive {prim_index} (the base shape is drawn)")
     for ext, _ in primitive.extensions():
-        warn(f"{ext} ignored in mesh {mesh} primitive {prim_index}")
+        if ext != "KHR_materials_variants":  # read where the material is chosen (gltf/__init__.py)
+            warn(f"{ext} ignored in mesh {mesh} primitive {prim_index}")
 
     index_accessor = primitive.index("indices", "accessors")
     if index_accessor is not None:

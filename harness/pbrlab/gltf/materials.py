@@ -17,6 +17,10 @@ reads what this module writes into a scene Material:
     KHR_materials_clearcoat                  clearcoat = clearcoatFactor x texture.r, clearcoat_smoothness
                                              = 1 - clearcoatRoughnessFactor (x texture.g), the coat's
                                              normal map and scale (else the geometric normal)
+    KHR_materials_unlit                      albedo and alpha, no light (PBRLAB_UNLIT)
+    KHR_materials_pbrSpecularGlossiness      the specular workflow: diffuseFactor x diffuseTexture =
+                                             albedo, specularFactor x texture.rgb = specular,
+                                             glossinessFactor x texture.a = smoothness
     KHR_materials_ior, KHR_materials_specular
       (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
                                              x specularColorFactor x specularFactor (max 1)
@@ -49,7 +53,7 @@ DEFAULT_MIN_FILTER, DEFAULT_MAG_FILTER = 9987, 9729       # LINEAR_MIPMAP_LINEAR
 DEFAULT_IOR = 1.5                                         # KHR_materials_ior: glTF's dielectric (F0 = 0.04)
 
 HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                "KHR_materials_specular")
+                                "KHR_materials_specular", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness")
 # KHR_materials_clearcoat's textures: (key, pbrlab slot); all linear data
 CLEARCOAT_TEXTURES = (("clearcoatTexture", "clearcoat"), ("clearcoatRoughnessTexture", "clearcoat_roughness"),
                       ("clearcoatNormalTexture", "clearcoat_normal"))
@@ -187,13 +191,35 @@ class MaterialReader:
         if "KHR_materials_emissive_strength" in extensions:
             strength = extensions["KHR_materials_emissive_strength"].number("emissiveStrength", 1.0, 0.0)
         m.emission = emissive * strength
-        self._specular(m, extensions, spec.path, name, pbr.has("metallicRoughnessTexture"))
+        if "KHR_materials_pbrSpecularGlossiness" in extensions:
+            self._specular_glossiness(m, extensions["KHR_materials_pbrSpecularGlossiness"], name)
+        else:
+            self._specular(m, extensions, spec.path, name, pbr.has("metallicRoughnessTexture"))
+        m.unlit = "KHR_materials_unlit" in extensions  # its object is empty (the README: "no properties")
         if "KHR_materials_clearcoat" in extensions:
             self._clearcoat(m, extensions["KHR_materials_clearcoat"], name)
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
         return m
+
+    def _specular_glossiness(self, m: Material, sg: FieldReader, name: str):
+        """KHR_materials_pbrSpecularGlossiness (archived; the extension's README): the
+        specular workflow, its diffuse taken as Unity's albedo (the README's
+        c_diff = diffuse (1 - max(specular)) is Unity's energy conservation)."""
+        diffuse = sg.numbers("diffuseFactor", 4, [1, 1, 1, 1], 0.0, 1.0)
+        m.workflow = "specular"
+        m.albedo, m.alpha = diffuse[:3], float(diffuse[3])
+        m.metallic = 0.0
+        m.specular = sg.numbers("specularFactor", 3, [1, 1, 1], 0.0, 1.0)
+        m.smoothness = sg.number("glossinessFactor", 1.0, 0.0, 1.0)
+        for slot in ("albedo", "metallic_roughness"):  # the core model's maps do not apply
+            for table in (m.textures, m.texture_srgb, m.texture_sampler, m.texture_uv_set, m.texture_transform):
+                table.pop(slot, None)
+        if sg.has("diffuseTexture"):
+            self.texture(sg.object("diffuseTexture"), m, "albedo", True, name)
+        if sg.has("specularGlossinessTexture"):
+            self.texture(sg.object("specularGlossinessTexture"), m, "specular_glossiness", True, name)
 
     def _clearcoat(self, m: Material, coat: FieldReader, name: str):
         """KHR_materials_clearcoat (the extension's README, "Properties")."""
