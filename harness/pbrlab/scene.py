@@ -64,6 +64,8 @@ TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling)
     "occlusion": "linear",
     "specular_glossiness": "srgb",    # RGB = specular colour (sRGB), A = glossiness (linear): glTF's
                                       # KHR_materials_pbrSpecularGlossiness, specular workflow
+    "specular_color": "srgb",         # RGB x the specular colour (KHR_materials_specularColorTexture)
+    "specular_strength": "linear",    # A x the specular colour (KHR_materials_specular's specularTexture)
     "clearcoat": "linear",            # R = the coat's mask (glTF clearcoatTexture)
     "clearcoat_roughness": "linear",  # G = the coat's perceptual roughness (glTF clearcoatRoughnessTexture)
     "clearcoat_normal": "linear",     # the coat's tangent-space normal (glTF clearcoatNormalTexture)

@@ -128,3 +128,30 @@ def test_render_variant_on_the_command_line(tmp_path, gl_context):
 def test_a_variant_for_a_file_without_variants_is_refused(tmp_path):
     with pytest.raises(PbrlabError, match="defines no KHR_materials_variants"):
         load_gltf(write(tmp_path, quad_document()), variant="Gold")
+
+
+def test_specular_textures_scale_the_specular_colour_and_strength(tmp_path, gl_context):
+    """KHR_materials_specular's specularColorTexture (sRGB RGB) and specularTexture (A):
+    constant textures render as their factors would (the sRGB decode's bound, as above)."""
+    from pbrlab import images
+
+    def render(colour=(1.0, 1.0, 1.0), strength=1.0, textured=False):
+        folder = tmp_path / f"s{len(list(tmp_path.iterdir()))}"
+        folder.mkdir()
+        doc = quad_document()
+        ext = {"specularFactor": strength, "specularColorFactor": list(colour)}
+        if textured:
+            images.write_png(folder / "c.png", np.tile(np.array([188, 255, 128], np.uint8), (4, 4, 1)))
+            images.write_png(folder / "s.png", np.tile(np.array([0, 0, 0, 64], np.uint8), (4, 4, 1)))
+            doc["images"] = [{"uri": "c.png"}, {"uri": "s.png"}]
+            doc["textures"] = [{"source": 0}, {"source": 1}]
+            ext.update(specularColorTexture={"index": 0}, specularTexture={"index": 1})
+        doc["materials"][0]["extensions"] = {"KHR_materials_specular": ext, "KHR_materials_ior": {"ior": 2.0}}
+        result = load_gltf(write(folder, doc), size=(32, 32), environment=Environment(color=np.array([1.0, 1, 1])),
+                           emit_warnings=False)
+        assert result.warnings == []
+        return _centre(render_scene(result.scene, gl_context).linear)[:3]
+
+    decoded = [float(srgb_to_linear(c / 255)) for c in (188, 255, 128)]
+    np.testing.assert_allclose(render(textured=True), render(colour=decoded, strength=64 / 255), rtol=3e-3)
+    assert np.abs(render(textured=True) - render()).max() > 0.01

@@ -243,10 +243,6 @@ class MaterialReader:
         ior = ior_ext.number("ior", DEFAULT_IOR, 1.0)
         factor = spec_ext.number("specularFactor", 1.0, 0.0, 1.0)
         colour = spec_ext.numbers("specularColorFactor", 3, [1, 1, 1], 0.0)
-        for key in ("specularTexture", "specularColorTexture"):
-            if spec_ext.has(key):
-                spec_ext.object(key)
-                self.warn(f"KHR_materials_specular.{key} ignored in material \"{name}\"")
         if m.metallic != 0.0:
             if m.metallic < 1.0 or metallic_map:
                 self.warn(f"KHR_materials_ior/KHR_materials_specular ignored in material \"{name}\" "
@@ -255,6 +251,10 @@ class MaterialReader:
         f0_ior = ((ior - 1.0) / (ior + 1.0)) ** 2  # Fresnel at normal incidence, air to ior
         m.workflow = "specular"
         m.specular = np.minimum(f0_ior * colour * factor, 1.0)
+        for key, slot, srgb in (("specularColorTexture", "specular_color", True),
+                                ("specularTexture", "specular_strength", False)):
+            if spec_ext.has(key):
+                self.texture(spec_ext.object(key), m, slot, srgb, name)
 
 
 def _decode_image(doc: Document, data: bytes, where: str) -> np.ndarray:
