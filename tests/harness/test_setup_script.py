@@ -24,8 +24,8 @@ def test_non_root_user_gets_the_exact_install_line_and_exit_1(tmp_path):
     out = subprocess.run(["bash", str(ROOT / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, cwd=tmp_path)
     assert out.returncode == 1
-    assert ("sudo apt-get install -y binutils glslang-tools libegl-mesa0 libegl1 libgl1-mesa-dri "
-            "libosmesa6 libvulkan1 mesa-vulkan-drivers spirv-cross") in out.stderr
+    assert ("sudo apt-get install -y binutils chromium glslang-tools libegl-mesa0 libegl1 libgl1-mesa-dri "
+            "libosmesa6 libvulkan1 mesa-vulkan-drivers nodejs spirv-cross") in out.stderr
     assert "setup: creating the virtualenv" not in out.stdout
 
 
@@ -45,6 +45,11 @@ def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
     (tree / ".venv" / "bin" / "python").chmod(0o755)
     digest = hashlib.sha256((tree / "requirements.txt").read_bytes() + (tree / "pyproject.toml").read_bytes())
     (tree / ".venv" / ".pbrlab-installed").write_text(digest.hexdigest()[:16] + "\n")
+    viewer = tree / "tools" / "sample_viewer"  # the sample viewer's npm packages, current too
+    (viewer / "node_modules").mkdir(parents=True)
+    shutil.copy(ROOT / "tools" / "sample_viewer" / "package-lock.json", viewer)
+    lock = hashlib.sha256((viewer / "package-lock.json").read_bytes()).hexdigest()[:16]
+    (viewer / "node_modules" / ".pbrlab-installed").write_text(lock + "\n")
     env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:{os.environ['PATH']}")
     out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, timeout=60)
