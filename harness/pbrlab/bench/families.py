@@ -19,7 +19,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..reference import brdf, color, remap, shading, tonemap
+from ..reference import anisotropy, brdf, clearcoat, color, iridescence, remap, shading, sheen, tonemap
 
 
 @dataclass(frozen=True)
@@ -289,5 +289,42 @@ ENV_BRDF = Family(
         Variant("analytic", "pbr_env_brdf_approx(NdotV, r)", "Karis 2014 fit (the fallback without a table)"),
     ))
 
-FAMILIES = (SRGB_DECODE, SRGB_ENCODE, FRESNEL, DISTRIBUTION, VISIBILITY, BRDF_TIER, TONEMAP, ENV_BRDF)
+# ---- the layers of current engines' materials, beside the base lobe they add to ----------
+_LAYER_DERIVED = _TIER_DERIVED + (
+    ("float", "NdotH", "dot(n, normalize(l + v))",
+     lambda d: np.sum(d["n"] * (d["l"] + d["v"]), -1) / np.linalg.norm(d["l"] + d["v"], axis=-1)),
+    ("vec3", "t", "vec3(1.0, 0.0, 0.0)", lambda d: np.broadcast_to([1.0, 0.0, 0.0], np.shape(d["NdotL"]) + (3,))),
+    ("vec3", "b", "vec3(0.0, 1.0, 0.0)", lambda d: np.broadcast_to([0.0, 1.0, 0.0], np.shape(d["NdotL"]) + (3,))),
+)
+_LAYER_F0 = (0.04, 0.04, 0.04)
+
+LAYERS = Family(
+    name="layers", title="Layer lobes (clear coat, sheen, anisotropy, iridescence) beside the base lobe",
+    inputs=(("NdotL", 0.01, 1.0), ("NdotV", 0.01, 1.0), ("phi", 0.0, np.pi), ("r", 0.0, 1.0)),
+    derived=_LAYER_DERIVED,
+    reference=_tier_ref("HIGH"),
+    reference_name="each lobe's own float64 twin (reference.clearcoat, .sheen, .anisotropy, .iridescence)",
+    exact="base", rel_floor=1e-3, own_reference=True,
+    domain_note="the brdf_tier geometry; each layer at roughness r: what one layer adds to the cost of "
+                "a light's shading (time ratios against the base lobe, pbr_brdf_standard)",
+    variants=(
+        Variant("base", _TIER_EXPR, "pbr_brdf_standard (HIGH): what every layer adds to",
+                self_reference=_tier_ref("HIGH")),
+        Variant("clearcoat", "pbr_clearcoat_punctual(n, v, l, vec3(1.0), r)",
+                "KHR_materials_clearcoat's lobe (pbr/shading/clearcoat.glsl)",
+                self_reference=lambda d: clearcoat.clearcoat_punctual(d["n"], d["v"], d["l"], np.ones(3), d["r"])),
+        Variant("sheen", "pbr_sheen_lobe(NdotL, NdotV, NdotH, vec3(1.0), r)",
+                "Charlie D x Estevez-Kulla V (pbr/shading/sheen.glsl)",
+                self_reference=lambda d: sheen.sheen_lobe(d["NdotL"], d["NdotV"], d["NdotH"], np.ones(3), d["r"])),
+        Variant("anisotropic", f"pbr_brdf_anisotropic_specular(n, v, l, t, b, vec3{_LAYER_F0}, r, 0.8)",
+                "anisotropic GGX x Smith, strength 0.8 (pbr/shading/anisotropy.glsl)",
+                self_reference=lambda d: anisotropy.brdf_anisotropic_specular(
+                    d["n"], d["v"], d["l"], d["t"], d["b"], np.array(_LAYER_F0), d["r"], 0.8)),
+        Variant("iridescence", f"pbr_F_Iridescence(1.0, 1.3, NdotV, 200.0 + 800.0 * r, vec3{_LAYER_F0})",
+                "thin-film Fresnel, 200-1000 nm (pbr/brdf/f_iridescence.glsl)",
+                self_reference=lambda d: iridescence.F_Iridescence(1.0, 1.3, d["NdotV"], 200.0 + 800.0 * d["r"],
+                                                                  np.array(_LAYER_F0))),
+    ))
+
+FAMILIES = (SRGB_DECODE, SRGB_ENCODE, FRESNEL, DISTRIBUTION, VISIBILITY, BRDF_TIER, TONEMAP, ENV_BRDF, LAYERS)
 BY_NAME = {f.name: f for f in FAMILIES}
