@@ -37,6 +37,7 @@ SUFFIXES = (".gltf", ".glb")
 # Extensions whose content reaches the image (what extensionsRequired may name).
 HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_clearcoat",
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular")
+HONOURED_EXTENSIONS += ("KHR_materials_sheen",)
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
