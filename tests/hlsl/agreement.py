@@ -30,7 +30,7 @@ SAMPLES = 384          # per entry and configuration
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
 FLOAT_SLOTS = 8
-VEC3_SLOTS = 9
+VEC3_SLOTS = 11  # LightingStandardLayers: base.rgb, 2 layer vec3s, normal, view, GI (4), two indirect terms
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
 STRUCT_BUILDERS = {
