@@ -76,6 +76,7 @@
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.glsl"
 #include "pbr/surface/lighting_clearcoat.glsl"
+#include "pbr/surface/lighting_sheen.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

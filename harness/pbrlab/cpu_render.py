@@ -22,6 +22,7 @@ from .camera import camera_frame, camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
 from .reference import clearcoat as ref_clearcoat
+from .reference import sheen as ref_sheen
 from .reference import lighting as ref_lighting
 from .reference import directional_albedo as ref_albedo
 from .reference import material as ref_material
@@ -159,6 +160,9 @@ def render_scene_cpu(scene) -> np.ndarray:
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
                 energy_compensated=compensated)
+        if max(material.sheen_color) > 0.0:  # the sheen on the base, not on its emission
+            emission = np.broadcast_to(material.emission, p.shape)
+            color = emission + _sheened(scene, material, color - emission, n, v, p)
         if material.clearcoat > 0.0:
             color = _coated(scene, material, color, n, v, p, quality)
         out[mask, :3] = color
@@ -184,3 +188,31 @@ def _coated(scene, material, base, n, v, p, quality):
             NcdotV, material.occlusion, rough * rough))[:, None]
     weight = ref_clearcoat.clearcoat_base_weight(material.clearcoat, NcdotV, dfg)
     return base * weight[:, None] + material.clearcoat * coat
+
+
+def _sheen_albedo(NdotV, rough):
+    """E(NdotV) of the white sheen at this roughness: the float64 quadrature of
+    sheen_table.integrate_sheen_albedo on 257 views log-spaced over [PBR_MIN_NDOTV, 1] at the
+    exact roughness, interpolated linearly in log NdotV (the GPU reads the 128 x 128 table)."""
+    from .sheen_table import integrate_sheen_albedo
+    mu = np.geomspace(ref_shading.MIN_NDOTV, 1.0, 257)
+    E = integrate_sheen_albedo(mu, np.full_like(mu, rough))
+    return np.interp(np.log(np.clip(NdotV, ref_shading.MIN_NDOTV, 1.0)), np.log(mu), E)
+
+
+def _sheened(scene, material, base, n, v, p):
+    """KHR_materials_sheen's sheen over the base (reference/sheen.py lighting_sheen): base ·
+    (1 - max3(c) E') + each light's sheen lobe + the constant environment times c E'."""
+    rough = float(ref_remap.perceptual_roughness_from_smoothness(material.sheen_smoothness))
+    NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+    E = _sheen_albedo(NdotV, rough)
+    color = np.asarray(material.sheen_color, float)
+    zero = np.zeros(p.shape)
+    sheen = np.zeros(p.shape)
+    for light in scene.lights:
+        l, radiance = _light_terms(light, p)
+        sheen += ref_sheen.lighting_sheen(zero, color, rough, n, v, l, radiance, zero, 0.0, E)
+    prefiltered = zero
+    if scene.environment is not None:
+        prefiltered = np.broadcast_to(np.asarray(scene.environment.color, float) * scene.environment.intensity, p.shape)
+    return ref_sheen.lighting_sheen(base, color, rough, n, v, n, zero, prefiltered, material.occlusion, E) + sheen

@@ -67,8 +67,8 @@ class _SceneResources:
     neutral stand-ins the full program reads where the scene has nothing; kept between
     renders by the context's resource_cache."""
 
-    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1}
-    FIRST_MATERIAL_UNIT = 2
+    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2}
+    FIRST_MATERIAL_UNIT = 3
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -78,6 +78,9 @@ class _SceneResources:
         self.env_sh = None
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         self.env_textures = {"u_dfg_lut": self.cache.dfg()}
+        # the sheen albedo table (sheen_table.py), for materials with a sheen (PBRLAB_SHEEN)
+        if any(max(m.sheen_color) > 0.0 for m in scene.materials.values()):
+            self.env_textures["u_sheen_lut"] = self.cache.sheen()
         if scene.environment is not None:
             environment = self.cache.environment(scene.environment)
         elif full:  # the full program always samples an environment: a black one
@@ -158,6 +161,8 @@ def _upload_material(program, material):
     _set(program, "u_clearcoat", material.clearcoat)
     _set(program, "u_clearcoat_smoothness", material.clearcoat_smoothness)
     _set(program, "u_clearcoat_normal_scale", material.clearcoat_normal_scale)
+    _set(program, "u_sheen_color", tuple(material.sheen_color))
+    _set(program, "u_sheen_smoothness", material.sheen_smoothness)
     for slot, transform in material.texture_transform.items():
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 

@@ -70,6 +70,7 @@ class ContextCache:
     def __init__(self, ctx: moderngl.Context):
         self.ctx = ctx
         self._dfg = None
+        self._sheen = None
         self._environments = _LRU(ENVIRONMENTS_PER_CONTEXT, PreparedEnvironment.release)
         self._textures = _LRU(TEXTURES_PER_CONTEXT, moderngl.Texture.release)
 
@@ -77,6 +78,13 @@ class ContextCache:
         if self._dfg is None:
             self._dfg = ibl.dfg_texture(self.ctx)
         return self._dfg
+
+    def sheen(self) -> moderngl.Texture:
+        """The sheen albedo table (sheen_table.sheen_texture), made once per context."""
+        if self._sheen is None:
+            from . import sheen_table
+            self._sheen = sheen_table.sheen_texture(self.ctx)
+        return self._sheen
 
     def environment(self, environment) -> PreparedEnvironment:
         """A scene's environment (constant colour or image file, times its intensity)."""

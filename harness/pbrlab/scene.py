@@ -71,6 +71,10 @@ TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling)
     "clearcoat_normal": "linear",     # the coat's tangent-space normal (glTF clearcoatNormalTexture)
 }
 CLEARCOAT_SLOTS = ("clearcoat", "clearcoat_roughness", "clearcoat_normal")
+# The sheen's maps (KHR_materials_sheen): sheen_color (sRGB, RGB x the colour), sheen_roughness
+# (linear, A = the sheen's perceptual roughness: glTF sheenRoughnessTexture).
+TEXTURE_SLOTS.update({"sheen_color": "srgb", "sheen_roughness": "linear"})
+SHEEN_SLOTS = ("sheen_color", "sheen_roughness")
 
 
 @dataclass
@@ -131,6 +135,9 @@ class Material:
     clearcoat_smoothness: float = 1.0  # 1 - the coat's perceptual roughness
     clearcoat_normal_scale: float = 1.0
     unlit: bool = False  # KHR_materials_unlit: the surface's albedo and alpha, no light
+    # The sheen (KHR_materials_sheen; pbr/unity/surface_layers.glsl): colour 0 is none
+    sheen_color: tuple = (0.0, 0.0, 0.0)  # linear
+    sheen_smoothness: float = 1.0          # 1 - the sheen's perceptual roughness
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -338,6 +345,8 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         r.fail("expected true (KHR_materials_unlit: the albedo, no light) or false", "unlit")
     m.clearcoat = r.number("clearcoat", default=0.0, lo=0.0, hi=1.0)
     m.clearcoat_smoothness = r.number("clearcoat_smoothness", default=1.0, lo=0.0, hi=1.0)
+    m.sheen_color = tuple(r.vector("sheen_color", default=[0.0, 0.0, 0.0], lo=0.0, hi=1.0))
+    m.sheen_smoothness = r.number("sheen_smoothness", default=1.0, lo=0.0, hi=1.0)
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
@@ -370,6 +379,10 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         r.fail("the clear coat belongs to the default surface; a surface file writes its own "
                "output (remove `clearcoat`, `clearcoat_smoothness`)", "clearcoat" if r.has("clearcoat") else
                "clearcoat_smoothness")
+    if m.surface is not None and (r.has("sheen_color") or r.has("sheen_smoothness")):
+        r.fail("the sheen belongs to the default surface; a surface file writes its own output "
+               "(remove `sheen_color`, `sheen_smoothness`)", "sheen_color" if r.has("sheen_color") else
+               "sheen_smoothness")
     if "metallic_smoothness" in m.textures and "metallic_roughness" in m.textures:
         textures.fail("give one packing: metallic_smoothness (Unity: R metallic, A smoothness) or "
                       "metallic_roughness (glTF: B metallic, G roughness), not both")
@@ -393,7 +406,7 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
         r.fail(str(exc), "surface")
     for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
-                "clearcoat_smoothness", "unlit"):
+                "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness"):
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "

@@ -77,6 +77,7 @@
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.hlsl"
 #include "pbr/surface/lighting_clearcoat.hlsl"
+#include "pbr/surface/lighting_sheen.hlsl"
 
 // HDR
 #include "pbr/tonemap/exposure.hlsl"

@@ -19,6 +19,8 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              NORMAL), doubleSided quad seen from behind, KHR_materials_ior +
                              _specular, _emissive_strength, and KHR_materials_dispersion
                              (not honoured: named in a warning); data: URIs only
+    sheen.gltf               KHR_materials_sheen on four quads: none, a white sheen, a sheen
+                             with colour (sRGB RGB) and roughness (A) textures, a sheen under a coat
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -481,6 +483,33 @@ def clearcoat():
     b.write_gltf(HERE / "clearcoat.gltf", external_bin=False)
 
 
+def sheen():
+    b = Builder()
+    colour = b.texture(b.image(checker(((0.9, 0.8, 0.7), (0.3, 0.5, 0.9))), embed=True))
+    alpha = np.round(disc_alpha() * 255).astype(np.uint8)[..., None]
+    rough = b.texture(b.image(np.concatenate([np.repeat(alpha, 3, axis=2), alpha], axis=2), embed=True))
+    base = {"baseColorFactor": _rgba8(0.15, 0.05, 0.2, 1), "metallicFactor": 0.0, "roughnessFactor": 0.8}
+    b.json["materials"] = [
+        {"name": "no_sheen", "pbrMetallicRoughness": base},
+        {"name": "white_sheen", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.3}}},
+        {"name": "mapped_sheen", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.9, 0.7, 1.0],
+                                                "sheenColorTexture": {"index": colour},
+                                                "sheenRoughnessFactor": 0.8,
+                                                "sheenRoughnessTexture": {"index": rough}}}},
+        {"name": "coated_sheen", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.6, 0.9, 0.6], "sheenRoughnessFactor": 0.5},
+                        "KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.1}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen"]
+    p, n, uv, f = _quad(1.5)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "sheen.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -488,6 +517,7 @@ def main():
     alpha_modes()
     features()
     clearcoat()
+    sheen()
 
 
 if __name__ == "__main__":

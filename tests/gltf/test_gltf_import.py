@@ -181,14 +181,14 @@ def test_every_ignored_extension_is_one_warning_in_render_and_features(capsys, t
 
 def test_unhonoured_features_are_named(tmp_path):
     doc = quad_document()
-    doc["materials"][0]["extensions"] = {"KHR_materials_sheen": {}}
+    doc["materials"][0]["extensions"] = {"KHR_materials_transmission": {}}
     doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2
     doc["meshes"][0]["primitives"][0]["attributes"]["_CUSTOM"] = 2
     doc["animations"] = [{"channels": [], "samplers": []}]
     doc["meshes"][0]["primitives"].append({"attributes": {"POSITION": 0}, "mode": 1})
     result = load_gltf(write(tmp_path, doc), emit_warnings=False)
     assert result.warnings == ["animations ignored (1; the rest pose is drawn)",
-                               'KHR_materials_sheen ignored in material "paint"',
+                               'KHR_materials_transmission ignored in material "paint"',
                                "attribute _CUSTOM ignored in mesh 0 primitive 0",
                                "LINES primitive ignored in mesh 0 (pbrlab draws triangles)"]
 
@@ -431,8 +431,22 @@ def test_clearcoat_maps_to_the_coat_layer():
 
 def test_an_unsupported_extension_is_one_warning_per_file_naming_its_materials(tmp_path):
     doc = quad_document()
-    doc["materials"] = [dict(doc["materials"][0], name=f"m{i}", extensions={"KHR_materials_sheen": {}})
+    doc["materials"] = [dict(doc["materials"][0], name=f"m{i}", extensions={"KHR_materials_transmission": {}})
                         for i in range(5)]
     doc["meshes"][0]["primitives"] = [dict(doc["meshes"][0]["primitives"][0], material=i) for i in range(5)]
     result = load_gltf(write(tmp_path, doc), emit_warnings=False)
-    assert result.warnings == ['KHR_materials_sheen ignored in 5 materials ("m0", "m1", "m2" and 2 more)']
+    assert result.warnings == ['KHR_materials_transmission ignored in 5 materials ("m0", "m1", "m2" and 2 more)']
+
+
+def test_sheen_maps_to_the_sheen_layer():
+    result = load_gltf(ASSETS / "sheen.gltf", emit_warnings=False)
+    assert not result.warnings
+    m = {mat.name: mat for mat in result.scene.materials.values()}
+    assert max(m["no_sheen"].sheen_color) == 0.0
+    assert m["white_sheen"].sheen_color == (1.0, 1.0, 1.0)
+    assert m["white_sheen"].sheen_smoothness == pytest.approx(0.7)
+    mapped = m["mapped_sheen"]
+    assert mapped.sheen_color == pytest.approx((0.9, 0.7, 1.0)) and mapped.sheen_smoothness == pytest.approx(0.2)
+    assert {"sheen_color", "sheen_roughness"} <= set(mapped.textures)
+    assert mapped.texture_srgb["sheen_color"] and not mapped.texture_srgb["sheen_roughness"]  # colour, data
+    assert m["coated_sheen"].clearcoat == 1.0 and max(m["coated_sheen"].sheen_color) > 0.0

@@ -30,7 +30,7 @@ SAMPLES = 384          # per entry and configuration
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
 FLOAT_SLOTS = 8
-VEC3_SLOTS = 9
+VEC3_SLOTS = 11  # LightingStandardLayers: base.rgb, 2 layer vec3s, normal, view, GI (4), two indirect terms
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
 STRUCT_BUILDERS = {
@@ -47,7 +47,9 @@ STRUCT_BUILDERS["UnityGI"] = STRUCT_BUILDERS["pbr_GI"]
 STRUCT_BUILDERS["pbr_ClearCoat"] = ("test_clearcoat", (("float", "mask"), ("float", "perceptualRoughness"),
                                                       ("vec3", "normal")))
 STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
-    ("float", "clearCoatMask"), ("float", "clearCoatSmoothness"), ("vec3", "clearCoatNormal")))
+    ("float", "clearCoatMask"), ("float", "clearCoatSmoothness"), ("vec3", "clearCoatNormal"),
+    ("vec3", "sheenColor"), ("float", "sheenSmoothness")))
+STRUCT_BUILDERS["pbr_Sheen"] = ("test_sheen", (("vec3", "color"), ("float", "perceptualRoughness")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
 STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
 STRUCT_BUILDERS["SurfaceOutput"] = ("test_surface_legacy", (

@@ -16,12 +16,18 @@ multiple-scattering compensation:
   coated metal        the white metal under a half clear coat of the mirrored smoothness
                       (smooth coat over rough metal, rough over smooth): base (1 - m E_c) + m E_c,
                       E_c the coat's single-scattering albedo (KHR_materials_clearcoat)
+  sheened dielectric  the white dielectric under a white sheen of the column's smoothness
+                      (KHR_materials_sheen, the default energy normalisation): base (1 - E') + E',
+                      E' = min(E, 1), E the white sheen's directional albedo (up to 2.94 raw)
+  sheened coated      the white dielectric, a white sheen of the mirrored smoothness and a full
+                      clear coat of the column's smoothness over both
 """
 
 import numpy as np
 import pytest
 
 from pbrlab.camera import camera_frame, camera_rays
+from pbrlab.cpu_render import _sheen_albedo
 from pbrlab.reference import directional_albedo as ref_albedo
 from pbrlab.reference import shading as ref_shading
 from pbrlab.render import render_scene, scene_radius
@@ -36,15 +42,22 @@ MATERIALS = {
     "white_half_metal": {"albedo": [1, 1, 1], "metallic": 0.5},
     "coated_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "clearcoat": 1.0},
     "coated_metal": {"albedo": [1, 1, 1], "metallic": 1.0, "clearcoat": 0.5},
+    "sheened_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "sheen_color": [1, 1, 1]},
+    "sheened_coated": {"albedo": [1, 1, 1], "metallic": 0.0, "sheen_color": [1, 1, 1], "clearcoat": 1.0},
 }
 # The coat's smoothness from the column's (base) smoothness.
-COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1.0 - s}
+COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1.0 - s,
+                   "sheened_coated": lambda s: s}
+# The sheen's smoothness from the column's.
+SHEEN_SMOOTHNESS = {"sheened_dielectric": lambda s: s, "sheened_coated": lambda s: 1.0 - s}
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
-      "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0}
+      "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0, "sheened_dielectric": 0.04,
+      "sheened_coated": 0.04}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
-           "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04}
+           "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04,
+           "sheened_dielectric": 0.04, "sheened_coated": 0.04}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -71,6 +84,8 @@ def _scene(quality, compensation):
             materials[key] = dict(MATERIALS[name], smoothness=s)
             if name in COAT_SMOOTHNESS:
                 materials[key]["clearcoat_smoothness"] = COAT_SMOOTHNESS[name](s)
+            if name in SHEEN_SMOOTHNESS:
+                materials[key]["sheen_smoothness"] = SHEEN_SMOOTHNESS[name](s)
             centre = [(j - (len(SMOOTHNESS) - 1) / 2) * SPACING, ((len(rows) - 1) / 2 - i) * SPACING, 0.0]
             objects.append({"sphere": {"center": centre, "radius": 1.0}, "material": key})
     return {
@@ -114,7 +129,8 @@ def _expected(name, compensation, A, B):
         return e * (1 + f0 * (1 / (A + B) - 1)) if compensation else e
 
     rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0,
-           "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0}[name]  # albedo (1 - metallic)
+           "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0,
+           "sheened_dielectric": 1.0, "sheened_coated": 1.0}[name]  # albedo (1 - metallic)
     return albedo(F0[name]) + rho * (1 - albedo(COAT_F0[name]))
 
 
@@ -164,6 +180,10 @@ def test_white_furnace_matches_the_float64_directional_albedo_at_every_pixel(fur
         A, B = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
             np.maximum(mu[mask], ref_shading.MIN_NDOTV), float(rough) ** 2), -1, 0)
         want = _expected(name, compensation, A, B)
+        if name in SHEEN_SMOOTHNESS:  # the sheen: E' = min(E, 1) of the white lobe at its roughness
+            sheen_rough = 1.0 - SHEEN_SMOOTHNESS[name](SMOOTHNESS[int(column)])
+            e_sheen = np.minimum(_sheen_albedo(np.maximum(mu[mask], ref_shading.MIN_NDOTV), sheen_rough), 1.0)
+            want = want * (1 - e_sheen) + e_sheen
         if name in COAT_SMOOTHNESS:  # the coat: single scattering at F0 0.04, F90 1, its own roughness
             coat = float(ref_shading.clamp_perceptual_roughness(
                 1.0 - COAT_SMOOTHNESS[name](SMOOTHNESS[int(column)]), tier))

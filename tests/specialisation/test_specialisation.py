@@ -27,6 +27,7 @@ TEST_SCENES = {
     "torture": lambda: load_scene(ROOT / "scenes" / "torture" / "scene.json"),
     "readme_example": lambda: load_scene(ROOT / "scenes" / "example.json"),
     "coated_light_zoo": lambda: parse_scene(_coated(light_zoo())),
+    "sheened_light_zoo": lambda: parse_scene(_sheened(light_zoo())),
 }
 
 
@@ -34,6 +35,17 @@ def _coated(scene):
     """The light zoo with its materials clear-coated (a layer: compiled in both programs)."""
     for i, material in enumerate(scene["materials"].values()):
         material.update(clearcoat=1.0 - 0.3 * i, clearcoat_smoothness=0.9 - 0.4 * i)
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _sheened(scene):
+    """The light zoo with sheens on its materials (one also coated): a layer, compiled in both
+    programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.update(sheen_color=[1.0 - 0.3 * i, 0.5, 0.2 + 0.3 * i], sheen_smoothness=0.9 - 0.4 * i)
+        if i == 1:
+            material.update(clearcoat=0.7, clearcoat_smoothness=0.6)
     scene["environment"] = {"color": [0.3, 0.3, 0.3]}
     return scene
 
@@ -213,7 +225,7 @@ def test_bad_gltf_is_a_clear_error(tmp_path, capsys):
 
 # The clear coat's uniforms and call sites: only where a material has a coat, in the
 # specialised and the full program alike (a layer is a setting of the material).
-COAT_TOKENS = ["u_clearcoat", ",layers,v,gi,", "pbrlab_surf_layers(IN,layers)"]
+COAT_TOKENS = ["u_clearcoat", ",layers,o.Normal,v,gi,", "pbrlab_surf_layers(IN,layers)"]
 
 
 @pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
@@ -225,3 +237,19 @@ def test_a_material_without_a_coat_has_none_of_its_code(tmp_path, specialise):
     plain_text, coated_text = _preprocessed(plain, tmp_path), _preprocessed(coated, tmp_path)
     for token in COAT_TOKENS:
         assert token not in plain_text and token in coated_text, token
+
+
+# The sheen's uniforms, table and call sites: only where a material has a sheen.
+SHEEN_TOKENS = ["u_sheen_color", "u_sheen_smoothness", "u_sheen_lut", "pbrlab_surf_sheen(IN,layers)",
+                ",layers,o.Normal,v,gi,"]
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+def test_a_material_without_a_sheen_has_none_of_its_code(tmp_path, specialise):
+    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
+    sheened_scene = json.loads(json.dumps(MINIMAL))
+    sheened_scene["materials"]["m"].update(sheen_color=[0.5, 0.4, 0.9])
+    _, sheened = _programs_for(parse_scene(sheened_scene), specialise)
+    plain_text, sheened_text = _preprocessed(plain, tmp_path), _preprocessed(sheened, tmp_path)
+    for token in SHEEN_TOKENS:
+        assert token not in plain_text and token in sheened_text, token

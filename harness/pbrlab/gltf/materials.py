@@ -21,6 +21,8 @@ reads what this module writes into a scene Material:
     KHR_materials_pbrSpecularGlossiness      the specular workflow: diffuseFactor x diffuseTexture =
                                              albedo, specularFactor x texture.rgb = specular,
                                              glossinessFactor x texture.a = smoothness
+    KHR_materials_sheen                      sheen_color = sheenColorFactor x sheenColorTexture.rgb (sRGB),
+                                             sheen_smoothness = 1 - sheenRoughnessFactor (x texture.a)
     KHR_materials_ior, KHR_materials_specular
       (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
                                              x specularColorFactor x specularFactor (max 1)
@@ -53,7 +55,10 @@ DEFAULT_MIN_FILTER, DEFAULT_MAG_FILTER = 9987, 9729       # LINEAR_MIPMAP_LINEAR
 DEFAULT_IOR = 1.5                                         # KHR_materials_ior: glTF's dielectric (F0 = 0.04)
 
 HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                "KHR_materials_specular", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness")
+                                "KHR_materials_specular", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
+                                "KHR_materials_sheen")
+# KHR_materials_sheen's textures: (key, pbrlab slot, decode sRGB)
+SHEEN_TEXTURES = (("sheenColorTexture", "sheen_color", True), ("sheenRoughnessTexture", "sheen_roughness", False))
 # KHR_materials_clearcoat's textures: (key, pbrlab slot); all linear data
 CLEARCOAT_TEXTURES = (("clearcoatTexture", "clearcoat"), ("clearcoatRoughnessTexture", "clearcoat_roughness"),
                       ("clearcoatNormalTexture", "clearcoat_normal"))
@@ -198,6 +203,8 @@ class MaterialReader:
         m.unlit = "KHR_materials_unlit" in extensions  # its object is empty (the README: "no properties")
         if "KHR_materials_clearcoat" in extensions:
             self._clearcoat(m, extensions["KHR_materials_clearcoat"], name)
+        if "KHR_materials_sheen" in extensions:
+            self._sheen(m, extensions["KHR_materials_sheen"], name)
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
@@ -230,6 +237,15 @@ class MaterialReader:
                 self.texture(coat.object(key), m, slot, False, name)
         if coat.has("clearcoatNormalTexture"):
             m.clearcoat_normal_scale = coat.object("clearcoatNormalTexture").number("scale", 1.0)
+
+    def _sheen(self, m: Material, sheen: FieldReader, name: str):
+        """KHR_materials_sheen (the extension's README, "Properties"): colour factor x texture
+        RGB (sRGB), roughness factor x texture A."""
+        m.sheen_color = tuple(float(c) for c in sheen.numbers("sheenColorFactor", 3, [0, 0, 0], 0.0, 1.0))
+        m.sheen_smoothness = 1.0 - sheen.number("sheenRoughnessFactor", 0.0, 0.0, 1.0)
+        for key, slot, srgb in SHEEN_TEXTURES:
+            if sheen.has(key):
+                self.texture(sheen.object(key), m, slot, srgb, name)
 
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
         """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from

@@ -253,6 +253,9 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_sheen_albedo_scaling", "sheenColor:unit3 E:unit", _unit("albedo scaling")),
     _f("pbr_sheen_albedo_scaling_punctual", "sheenColor:unit3 NdotV:cosine NdotL:cosine r:roughness",
        _unit("albedo scaling")),
+    # surface/lighting_sheen.glsl (the default PBR_SHEEN_ENERGY_NORMALIZED): E up to 3.2 (the fit)
+    _f("pbr_sheen_energy_scale", "E:unit", Bound("0 < scale <= 1", 0.0, 1.0)),
+    _f("pbr_sheen_effective_albedo", "E:unit", _unit("E'")),
     # shading/energy_conservation.glsl
     _f("pbr_diffuse_albedo_from_diffuse_color", "diffuseColor:unit3 f0:unit3", _unit("diffuse albedo")),
     _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),

@@ -127,3 +127,48 @@ def sheen_albedo_approx(NdotV, sheen_perceptual_roughness):
     ys = np.stack([np.ones_like(y), y, y * y, y * y * y], axis=-1)
     p = sum(x ** i * (ys @ C[i]) for i in range(4))
     return np.maximum(np.exp(p) - SHEEN_ALBEDO_APPROX_OFFSET, 0.0)
+
+
+# pbr/surface/lighting_sheen.glsl: the sheen over a lit base (PBR_SHEEN_ENERGY).
+ENERGIES = ("NORMALIZED", "SPECIFICATION")
+
+
+def sheen_energy_scale(E, energy="NORMALIZED"):
+    """pbr_sheen_energy_scale: 1 / max(1, E) (NORMALIZED) or 1 (SPECIFICATION)."""
+    E = _f(E)
+    if energy == "SPECIFICATION":
+        return np.ones_like(E)
+    if energy != "NORMALIZED":
+        raise ValueError(f"energy {energy!r}: one of {ENERGIES}")
+    return 1.0 / np.maximum(E, 1.0)
+
+
+def sheen_effective_albedo(E, energy="NORMALIZED"):
+    """pbr_sheen_effective_albedo: min(E, 1) (NORMALIZED) or E (SPECIFICATION)."""
+    E = _f(E)
+    if energy == "SPECIFICATION":
+        return E
+    if energy != "NORMALIZED":
+        raise ValueError(f"energy {energy!r}: one of {ENERGIES}")
+    return np.minimum(E, 1.0)
+
+
+def lighting_sheen(base, sheen_color, sheen_perceptual_roughness, n, v, light_dir, light_color,
+                   sheen_prefiltered, occlusion, E, energy="NORMALIZED", visibility="CHARLIE"):
+    """pbr_lighting_sheen with the view's sheen albedo ``E`` = E(NdotV, r) given (the GPU reads
+    its table or the fit; callers pass the float64 integral or the same values):
+    base (1 - max3(c) E') + s π c D V NdotL light + prefiltered c E' occlusion, clamped scaling."""
+    n, v, l = _f(n), _f(v), _f(light_dir)
+    c = _f(sheen_color)
+    NdotV = np.maximum(np.sum(n * v, axis=-1), MIN_NDOTV)
+    NdotL = np.clip(np.sum(n * l, axis=-1), 0.0, 1.0)
+    h = l + v
+    length = np.linalg.norm(h, axis=-1, keepdims=True)
+    h = np.where(length > 0.0, h / np.where(length > 0.0, length, 1.0), 0.0)
+    NdotH = np.clip(np.sum(n * h, axis=-1), 0.0, 1.0)
+    albedo = sheen_effective_albedo(E, energy)
+    lobe = sheen_lobe(NdotL, NdotV, NdotH, np.broadcast_to(c, n.shape), sheen_perceptual_roughness, visibility)
+    direct = lobe * _f(light_color) * (PI * NdotL * sheen_energy_scale(E, energy))[..., None]
+    environment = _f(sheen_prefiltered) * c * (albedo * _f(occlusion))[..., None]
+    scaling = np.clip(sheen_albedo_scaling(np.broadcast_to(c, n.shape), albedo), 0.0, 1.0)
+    return _f(base) * scaling[..., None] + direct + environment

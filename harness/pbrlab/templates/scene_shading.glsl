@@ -20,6 +20,22 @@ PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 #define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_dfg_lut, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg
 #endif
 
+// The sheen albedo table (harness/pbrlab/sheen_table.py: E on the warped axes of
+// pbr_sheen_lut_uv), declared only where the material has a sheen; the layers the
+// material lacks are left out of LightingStandardLayers (pbr/unity/surface_layers.glsl).
+#ifdef PBRLAB_SHEEN
+PBRLAB_DECLARE_TEX2D(u_sheen_lut);
+#define PBR_SHEEN_LUT_LOOKUP(NdotV, sheenPerceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_sheen_lut, pbr_sheen_lut_uv(NdotV, sheenPerceptualRoughness)).r
+#define PBR_LAYERS_SHEEN 1
+#else
+#define PBR_LAYERS_SHEEN 0
+#endif
+#ifdef PBRLAB_CLEARCOAT
+#define PBR_LAYERS_CLEARCOAT 1
+#else
+#define PBR_LAYERS_CLEARCOAT 0
+#endif
+
 #include "pbr/pbr.glsl"
 #include "pbr/lighting/attenuation.glsl"
 #include "pbr/lighting/sh9.glsl"

@@ -46,12 +46,21 @@ pbr_ClearCoat test_clearcoat(float mask, float perceptualRoughness, vec3 normal)
 }
 
 SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clearCoatSmoothness,
-                                                vec3 clearCoatNormal) {
+                                                vec3 clearCoatNormal, vec3 sheenColor, float sheenSmoothness) {
     SurfaceOutputStandardLayers s;
     s.ClearCoatMask = clearCoatMask;
     s.ClearCoatSmoothness = clearCoatSmoothness;
     s.ClearCoatNormal = clearCoatNormal;
+    s.SheenColor = sheenColor;
+    s.SheenSmoothness = sheenSmoothness;
     return s;
+}
+
+pbr_Sheen test_sheen(vec3 color, float perceptualRoughness) {
+    pbr_Sheen sheen;
+    sheen.color = color;
+    sheen.perceptualRoughness = perceptualRoughness;
+    return sheen;
 }
 
 pbr_GI test_gi(vec3 lightColor, vec3 lightDir, vec3 indirectDiffuse, vec3 indirectSpecular) {
