@@ -20,6 +20,9 @@ _PRIMITIVE_DEFAULTS = {
     "plane": {"size": 1.0},
     "torus": {"major_radius": 1.0, "minor_radius": 0.25},
 }
+PRIMITIVE_PARAMETERS = _PRIMITIVE_DEFAULTS  # what a scene's {"primitive": ...} may set (scene.py checks)
+# Integer parameters: (smallest, largest). 8 subdivisions: 655,362 vertices (each level x4).
+INTEGER_PARAMETERS = {"subdivisions": (0, 8)}
 
 
 def _primitive(spec: dict):

@@ -255,7 +255,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     composition, templates/pyrender_mesh.frag).
     """
     if transfer not in COLOR_TRANSFERS:
-        raise ValueError(f"transfer={transfer!r}: expected one of {COLOR_TRANSFERS}")
+        raise PbrlabError(f"transfer={transfer!r}: expected one of {', '.join(COLOR_TRANSFERS)}")
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
     if not isinstance(scene, Scene):

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import json_input, unity
+from . import json_input, meshes, unity
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -297,7 +297,7 @@ def _light(r: _Reader) -> Light:
                   intensity=r.number("intensity", default=1.0, lo=0.0))
     if kind in ("directional", "spot"):
         light.direction = r.vector("direction", nonzero=True)
-        light.direction = light.direction / np.linalg.norm(light.direction)
+        light.direction = unit_direction(light.direction)
     if kind in ("point", "spot"):
         light.position = r.vector("position")
         light.range = r.number("range", default=math.inf, lo=0.0, lo_open=True)
@@ -320,6 +320,14 @@ def _environment(r: _Reader, base: Path) -> Environment:
         env.path = r.file("path", base)
     r.finish()
     return env
+
+
+def unit_direction(v) -> np.ndarray:
+    """v / |v| for any finite non-zero v: scaled by its largest component first, so a
+    direction such as [1e-200, 1e-200, 0] (whose |v|² underflows to 0) is still a direction."""
+    v = np.asarray(v, np.float64)
+    v = v / np.max(np.abs(v))
+    return v / np.linalg.norm(v)
 
 
 def _material(r: _Reader, name: str, base: Path) -> Material:
@@ -479,8 +487,20 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
             p = r.child("mesh")
             kind = p.choice("primitive", PRIMITIVES)
             obj.primitive = {"primitive": kind}
+            allowed = meshes.PRIMITIVE_PARAMETERS[kind]
             for key in list(p.data):
-                if key != "primitive":
+                if key == "primitive":
+                    continue
+                if key not in allowed:
+                    p.fail(f"unknown parameter of a {kind}; use {', '.join(allowed) or 'none'}", key)
+                if key in meshes.INTEGER_PARAMETERS:
+                    lo, hi = meshes.INTEGER_PARAMETERS[key]
+                    value = p.raw(key)
+                    if isinstance(value, bool) or not isinstance(value, (int, float)) or value != int(value) \
+                            or not lo <= value <= hi:
+                        p.fail(f"expected a whole number in [{lo}, {hi}], got {value!r}", key)
+                    obj.primitive[key] = int(value)
+                else:
                     obj.primitive[key] = p.number(key, lo=0.0, lo_open=True)
             p.finish()
         obj.transform = _transform(r.child("transform", {}))
@@ -513,7 +533,7 @@ def _gltf_subscene(r: _Reader, base: Path):
             light.position = transform[:3, :3] @ light.position + transform[:3, 3]
         if light.direction is not None:
             d = transform[:3, :3] @ light.direction
-            light.direction = d / np.linalg.norm(d)
+            light.direction = unit_direction(d)
     camera = None
     if sub.cameras:
         camera = sub.scene.camera
