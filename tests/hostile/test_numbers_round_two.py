@@ -49,3 +49,42 @@ def test_an_unknown_transfer_is_a_pbrlab_error_naming_the_choices(gl_context, ce
     with pytest.raises(PbrlabError, match="transfer='LINEAR': expected one of EXACT, HARDWARE, SRGB"):
         render_scene(parse_scene(base_scene()), gl_context, transfer="LINEAR")
     census["api argument", "refused cleanly"] += 1
+
+
+NULL_SHADER = """Shader "Test/Null" {
+    Properties {
+        _Color ("Color", Color) = (1,1,1,1)
+        _Glossiness ("Smoothness", Range(0,1)) = 0.5
+        _MainTex ("Albedo", 2D) = "white" {}
+    }
+    SubShader {
+        CGPROGRAM
+        #pragma surface surf Standard
+        sampler2D _MainTex;
+        fixed4 _Color;
+        half _Glossiness;
+        struct Input { float2 uv_MainTex; };
+        void surf (Input IN, inout SurfaceOutputStandard o) {
+            o.Albedo = tex2D(_MainTex, IN.uv_MainTex).rgb * _Color.rgb;
+            o.Smoothness = _Glossiness;
+        }
+        ENDCG
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("name", ["_Glossiness", "_Color", "_MainTex"])
+def test_a_null_property_value_is_refused_not_taken_as_the_default(tmp_path, name, census):
+    import json
+    from pbrlab.scene import load_scene
+    (tmp_path / "null.shader").write_text(NULL_SHADER)
+    scene = base_scene()
+    scene["materials"]["m"] = {"surface": "null.shader", "properties": {name: None}}
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    with pytest.raises(PbrlabError, match=rf"properties\.{name}: null is not a value"):
+        load_scene(tmp_path / "scene.json")
+    scene["materials"]["m"]["properties"] = {}
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    assert load_scene(tmp_path / "scene.json").materials["m"].properties["_Glossiness"] == 0.5
+    census["unity properties", "refused cleanly"] += 1

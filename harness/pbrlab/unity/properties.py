@@ -99,6 +99,10 @@ def resolve(shader: M.SurfaceShader, overrides: dict, base: Path, where: str) ->
             known = ", ".join(shader.properties) or "none"
             raise SceneError(f"{where}.{name}: the shader {shader.path.name} has no such property "
                              f"(its Properties: {known})")
+    for name, value in overrides.items():
+        if value is None:  # JSON null: not "the default" in silence
+            raise SceneError(f"{where}.{name}: null is not a value; give one, or leave the property out "
+                             f"to use the shader's default")
     values = {}
     for name, prop in shader.properties.items():
         value = overrides.get(name)
