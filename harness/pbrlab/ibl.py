@@ -144,10 +144,7 @@ def dfg_lut() -> np.ndarray:
 
 
 def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
-    tex = targets.upload_texture(ctx, dfg_lut(), srgb=False)
-    tex.filter = (moderngl.LINEAR, moderngl.LINEAR)
-    tex.repeat_x = tex.repeat_y = False
-    return tex
+    return targets.lookup_table_texture(ctx, dfg_lut())
 
 
 def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.Texture:

@@ -160,15 +160,9 @@ def sheen_lut() -> np.ndarray:
 
 
 def sheen_texture(ctx):
-    """The table as a single-channel float texture (R32F), linear filtering, clamp to edge
-    (mirrors ibl.dfg_texture)."""
-    import moderngl
-
+    """The table as a single-channel float texture (R32F), linear filtering, clamp to edge."""
     from . import targets
-    tex = targets.upload_texture(ctx, sheen_lut(), srgb=False)
-    tex.filter = (moderngl.LINEAR, moderngl.LINEAR)
-    tex.repeat_x = tex.repeat_y = False
-    return tex
+    return targets.lookup_table_texture(ctx, sheen_lut())
 
 
 def main(argv=None) -> int:

@@ -138,6 +138,16 @@ def upload_texture(ctx: moderngl.Context, image: np.ndarray, *, srgb: bool) -> m
     return tex
 
 
+
+def lookup_table_texture(ctx: moderngl.Context, table: np.ndarray) -> moderngl.Texture:
+    """A precomputed table (the DFG table, the sheen albedo table) as a linear float
+    texture: bilinear filtering, clamped to its edge texels, no mips."""
+    tex = upload_texture(ctx, table, srgb=False)
+    tex.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    tex.repeat_x = tex.repeat_y = False
+    return tex
+
+
 def _upload_levels(ctx, tex, levels, internal_format) -> None:
     """glTexImage2D for mip levels 1.. (moderngl only writes levels that already exist)."""
     if not levels:
