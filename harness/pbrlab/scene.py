@@ -429,6 +429,9 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
         if k not in declared:
             r.fail(f"{k!r} is not a keyword of {m.surface.name} (its #pragma multi_compile / "
                    f"shader_feature lines declare: {', '.join(sorted(declared)) or 'none'})", "keywords")
+        refused = m.unity.refused_keywords.get(k)
+        if refused:
+            r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
     surface = m.unity.surface
     if surface is not None:

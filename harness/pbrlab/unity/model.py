@@ -203,6 +203,16 @@ class UnityShader:
                    for p in self.passes)
 
     @property
+    def refused_keywords(self) -> dict:
+        """{keyword: reason} of keywords a pbrlab stand-in its passes include does not honour."""
+        from .parse import refused_keywords
+        out = {}
+        for p in self.passes:
+            if p.kind != "grab":
+                out.update(refused_keywords(p.program, self.path.parent))
+        return out
+
+    @property
     def keywords(self) -> frozenset:
         """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
         (a material's ``keywords`` enables some; Unity's default variant has none)."""

@@ -606,6 +606,34 @@ def included_text(program: str, folder: Path, seen=None) -> str:
     return "\n".join(out)
 
 
+# Keywords a stand-in of pbrlab's declares through the shader but does not honour: a material
+# that enables one is refused by name (scene.py), never drawn as if it were off.
+STAND_IN_REFUSED_KEYWORDS = {
+    "UnityStandardCore.cginc": {
+        "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
+                                   "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
+    },
+}
+
+
+def refused_keywords(program: str, folder: Path, seen=None) -> dict:
+    """{keyword: reason} of the stand-ins ``program`` includes (recursively) that refuse it."""
+    from .program import CGINC
+    seen = set() if seen is None else seen
+    out = {}
+    for name in _INCLUDE.findall(_blank_comments(program)):
+        target = resolve_included(name, folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        if target.parent.resolve() == CGINC.resolve():
+            out.update(STAND_IN_REFUSED_KEYWORDS.get(target.name, {}))
+        text = _read_include(target)
+        if text is not None:
+            out.update(refused_keywords(text, target.parent, seen))
+    return out
+
+
 # `#pragma multi_compile[_local] ...` / `shader_feature[_local] ...`: the keywords a program
 # declares (a material's `keywords` may enable them; `_` and `__` are Unity's "none").
 _KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader_feature)(?:_local)?"

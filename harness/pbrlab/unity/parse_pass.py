@@ -12,8 +12,8 @@ from pathlib import Path
 
 from . import model as M
 from .conditionals import active_text, defines_of
-from .parse import (UnityShaderError, _IDENT, _blank_comments, _line_of, _matching_brace, _top_level,
-                    check_refusals, included_text)
+from .parse import (UnityShaderError, _IDENT, _INCLUDE, _blank_comments, _line_of, _matching_brace, _top_level,
+                    check_refusals, included_text, resolve_included)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # Stages pbrlab does not run, named in the refusal.
@@ -96,6 +96,15 @@ def _structs(masked: str) -> dict:
     return out
 
 
+def _unresolved_include(program: str, folder: Path):
+    """(name, offset) of the first ``#include`` of ``program`` that neither the shader's folder
+    nor pbrlab's stand-ins hold (None when every one resolves)."""
+    for m in _INCLUDE.finditer(_blank_comments(program)):
+        if resolve_included(m.group(1), folder) is None:
+            return m.group(1), m.start()
+    return None
+
+
 def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragmentPass:
     masked = _blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
@@ -124,6 +133,11 @@ def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFrag
     for role, name in (("vertex", vertex), ("fragment", fragment)):
         sig = _function_signature(everything, name, where)
         if sig is None:
+            unresolved = _unresolved_include(program, path.parent)
+            if unresolved:  # most likely where the function lives: name the file, not the function
+                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include "
+                                       "files pbrlab has no stand-in for; pbrlab does not provide it "
+                                       f"(#pragma {role} {name} names a function none of the rest defines)")
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
                                    "is defined")
         found[role] = sig
