@@ -227,9 +227,12 @@ def set_uniform(program, name, value):
 
 def set_uniform_array(program, name, values):
     """Set a uniform array; entries past ``values`` (the full program's spare light
-    slots) are zero and never read (its loops stop at the runtime count)."""
+    slots) are zero and never read (its loops stop at the runtime count). The compiler may
+    keep fewer entries than declared (a program that reads only element 0, as a Unity pass
+    reads only its main light): those it keeps get the first values."""
     for uniform, _ in _uniforms(program, name):
         data = np.ascontiguousarray(values, dtype=np.float32).reshape(len(values), -1)
         padded = np.zeros((uniform.array_length, data.shape[1]), np.float32)
-        padded[:len(data)] = data
+        kept = min(len(data), uniform.array_length)
+        padded[:kept] = data[:kept]
         uniform.write(padded.tobytes())

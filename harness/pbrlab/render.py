@@ -370,10 +370,20 @@ def unity_light_programs(unity_pass, defines: dict):
     surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
     program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
     emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
-    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL."""
+    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL; its
+    ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
+    path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
     if unity_pass.kind != "surface":
-        if unity_pass.light_mode.lower() == "forwardbase":
+        mode = unity_pass.light_mode.lower()
+        if mode == "forwardbase":
             return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
+        if mode == "forwardadd":  # one draw per light after the main one, blended by the pass's lines
+            out = [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, "PBRLAB_UNITY_ADD_DIRECTIONAL": i}, False)
+                   for i in range(1, defines.get("PBRLAB_DIRECTIONAL_COUNT", 0))]
+            for kind in ("POINT", "SPOT"):
+                out += [({**defines, kind: 1, f"PBRLAB_UNITY_ADD_{kind}": i}, False)
+                        for i in range(defines.get(f"PBRLAB_{kind}_COUNT", 0))]
+            return out
         return [(defines, False)]
     if not unity_pass.light_keywords:
         return [(defines, False)]
@@ -414,7 +424,10 @@ def _unity_pass_state(ctx, hdr, material, unity_pass, additive: bool = False) ->
         return
     if state.blend_factors:
         ctx.enable(moderngl.BLEND)
-        ctx.blend_func = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
+        factors = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
+        if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
+            factors = (*factors[:2], moderngl.ZERO, moderngl.ONE)
+        ctx.blend_func = factors
     else:
         ctx.disable(moderngl.BLEND)
     hdr.fbo.depth_mask = True if state.zwrite is None else state.zwrite

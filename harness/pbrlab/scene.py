@@ -437,7 +437,8 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     if surface is not None:
         m.alpha_mode = surface.pragma.alpha_mode
     else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
-        m.alpha_mode = "fade" if any(p.state.blend_factors for p in m.unity.passes) else "opaque"
+        m.alpha_mode = "fade" if any(p.state.blend_factors and getattr(p, "light_mode", "").lower() != "forwardadd"
+                                     for p in m.unity.passes) else "opaque"  # adding light is not fading
     m.workflow = "specular" if surface is not None and surface.output_type == "SurfaceOutputStandardSpecular" \
         else "metallic"
     cutoff = surface.pragma.cutoff_property if surface is not None else None

@@ -44,13 +44,23 @@ def _png(path: Path, rgba) -> dict:
     return {"path": str(path), "srgb": False}
 
 
-def _scene(surface, properties=None, keywords=None):
+SUN = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 0.9, 0.8], "intensity": 1.2}
+# Unity's forward path draws these in the ForwardAdd pass, one draw per light, added
+MORE_LIGHTS = [
+    {"type": "directional", "direction": [0.8, 0.1, -0.5], "color": [0.2, 0.3, 1.0], "intensity": 0.7},
+    {"type": "point", "position": [1.5, 1.0, 1.5], "color": [1.0, 0.5, 0.2], "intensity": 6.0, "range": 8.0},
+    {"type": "spot", "position": [-1.2, 0.4, 2.0], "direction": [0.5, -0.1, -0.8], "color": [0.3, 1.0, 0.4],
+     "intensity": 5.0, "inner_cone_deg": 15, "outer_cone_deg": 30},
+]
+
+
+def _scene(surface, properties=None, keywords=None, lights=(SUN,)):
     material = {"surface": str(surface), "properties": properties or {}}
     if keywords:
         material["keywords"] = keywords
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": list(SIZE)},
-        "lights": [{"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 0.9, 0.8], "intensity": 1.2}],
+        "lights": list(lights),
         "materials": {"m": material},
         "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
         "environment": {"color": [0.2, 0.25, 0.3]},
@@ -150,6 +160,26 @@ def test_standard_shader_shows_what_its_inputs_mean(case, language, gl_context, 
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
+def test_standard_forward_add_adds_each_further_light(language, gl_context, tmp_path):
+    # the ForwardAdd pass draws once per light after the first directional one (a directional,
+    # a point and a spot here), blended One One; the surface shader shades them in its programs
+    lights = (SUN, *MORE_LIGHTS)
+    props = {"_Color": [0.7, 0.6, 0.5, 1], "_Metallic": 0.2, "_Glossiness": 0.75}
+    standard = _render(_scene(BUILTIN / "Standard.shader", props, lights=lights), gl_context, language, tmp_path)
+    equivalent = _surface(tmp_path, "SurfaceOutputStandard",
+                          "void surf (Input IN, inout SurfaceOutputStandard o) { o.Albedo = fixed3(0.7, 0.6, 0.5); "
+                          "o.Metallic = 0.2; o.Smoothness = 0.75; }", "_Color (\"c\", Color) = (1, 1, 1, 1)")
+    expected = _render(_scene(equivalent, lights=lights), gl_context, language, tmp_path)
+    sun_only = _render(_scene(BUILTIN / "Standard.shader", props), gl_context, language, tmp_path)
+    covered = standard[..., 3] > 0
+    assert covered.mean() > 0.3 and np.array_equal(covered, expected[..., 3] > 0)
+    assert np.all(standard[..., 3][covered] == 1.0)  # the added light keeps the coverage
+    err = np.abs(standard - expected)[covered][:, :3] / np.maximum(np.abs(expected[covered][:, :3]), 1e-2)
+    assert err.max() <= RTOL, err.max()
+    assert (standard - sun_only)[covered][:, :3].max() > 0.05  # the further lights do show
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
 def test_standard_alpha_test_cuts_below_the_cutoff(language, gl_context, tmp_path):
     props = {"_MainTex": _png(tmp_path / "a.png", [1, 1, 1, 0.4])}
     kept = _render(_scene(BUILTIN / "Standard.shader", {**props, "_Cutoff": 0.3}, ["_ALPHATEST_ON"]),
@@ -173,8 +203,8 @@ def test_standard_runs_its_first_subshader_and_names_the_passes_it_skips():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         shader = unity.load_shader(BUILTIN / "Standard.shader")
-    assert [p.light_mode for p in shader.passes] == ["ForwardBase"]
+    assert [p.light_mode for p in shader.passes] == ["ForwardBase", "ForwardAdd"]
     notes = "\n".join(shader.notes)
     assert "SubShader 1 of 2 runs" in notes
-    for skipped in ("ForwardAdd", "ShadowCaster", "Deferred", "Meta"):
+    for skipped in ("ShadowCaster", "Deferred", "Meta"):
         assert f"(LightMode {skipped})" in notes, notes

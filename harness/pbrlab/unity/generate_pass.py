@@ -10,8 +10,9 @@ COLOR; what a mesh here lacks is 0, and w of POSITION 1), calls it and passes it
 by semantic; the fragment entry rebuilds the fragment function's input from them (SV_POSITION
 and VPOS the fragment's window position, VFACE / SV_IsFrontFace its facing) and writes what it
 returns to the float target. Outputs are linked to inputs by semantic, as in Unity. The main
-light (ForwardBase: the first directional light; none: black) is in ``_LightColor0`` and
-``_WorldSpaceLightPos0`` in both stages.
+light (ForwardBase: the first directional light; none: black; ForwardAdd: the one light the
+program draws, its falloff folded in) is in ``_LightColor0`` and ``_WorldSpaceLightPos0`` in
+both stages.
 """
 
 from __future__ import annotations
@@ -148,7 +149,26 @@ def _outputs(vf, where: str) -> list[tuple]:
 
 
 def _main_light(language: str) -> str:
-    return """    #if PBRLAB_DIRECTIONAL_COUNT > 0
+    """The pass's light in _LightColor0 / _WorldSpaceLightPos0: a ForwardAdd program's one
+    light (PBRLAB_UNITY_ADD_DIRECTIONAL / _POINT / _SPOT: its index; a positional light's
+    falloff, and a spot's cone, at the point pbrlab_world_position, folded into the colour as
+    for surface programs, so LIGHT_ATTENUATION is 1), else the first directional light."""
+    return """    #if defined(PBRLAB_UNITY_ADD_POINT)
+    UnityLight pbrlab_light = pbrlab_positional_light(u_point_position[PBRLAB_UNITY_ADD_POINT],
+        u_point_radiance[PBRLAB_UNITY_ADD_POINT], u_point_range[PBRLAB_UNITY_ADD_POINT], pbrlab_world_position);
+    _LightColor0 = vec4(pbrlab_light.color, 1.0);
+    _WorldSpaceLightPos0 = vec4(u_point_position[PBRLAB_UNITY_ADD_POINT], 1.0);
+    #elif defined(PBRLAB_UNITY_ADD_SPOT)
+    UnityLight pbrlab_light = pbrlab_positional_light(u_spot_position[PBRLAB_UNITY_ADD_SPOT],
+        u_spot_radiance[PBRLAB_UNITY_ADD_SPOT], u_spot_range[PBRLAB_UNITY_ADD_SPOT], pbrlab_world_position);
+    pbrlab_light.color *= pbr_spot_attenuation(pbrlab_light.dir, u_spot_direction[PBRLAB_UNITY_ADD_SPOT],
+        u_spot_cone[PBRLAB_UNITY_ADD_SPOT].x, u_spot_cone[PBRLAB_UNITY_ADD_SPOT].y);
+    _LightColor0 = vec4(pbrlab_light.color, 1.0);
+    _WorldSpaceLightPos0 = vec4(u_spot_position[PBRLAB_UNITY_ADD_SPOT], 1.0);
+    #elif defined(PBRLAB_UNITY_ADD_DIRECTIONAL)
+    _LightColor0 = vec4(u_directional_radiance[PBRLAB_UNITY_ADD_DIRECTIONAL], 1.0);
+    _WorldSpaceLightPos0 = vec4(-u_directional_direction[PBRLAB_UNITY_ADD_DIRECTIONAL], 0.0);
+    #elif PBRLAB_DIRECTIONAL_COUNT > 0
     _LightColor0 = vec4(u_directional_radiance[0], 1.0);
     _WorldSpaceLightPos0 = vec4(-u_directional_direction[0], 0.0);
     #else
@@ -158,6 +178,17 @@ def _main_light(language: str) -> str:
 """.replace("vec4", "float4" if language == "hlsl" else "vec4")
 
 
+# A positional ForwardAdd light is evaluated at the surface point: the vertex stage hands the
+# mesh vertex's world position (before the pass's vertex function moves it) to the fragment.
+_POSITIONAL_ADD = "#if defined(PBRLAB_UNITY_ADD_POINT) || defined(PBRLAB_UNITY_ADD_SPOT)"
+
+
+def _world_position(language: str) -> str:
+    if language == "hlsl":
+        return "mul(unity_ObjectToWorld, float4(in_position, 1.0)).xyz"
+    return "(unity_ObjectToWorld * vec4(in_position, 1.0)).xyz"
+
+
 def varyings(vf, where: str) -> list[tuple]:
     """[(semantic, type)] passed from the vertex to the fragment stage (not the position)."""
     return [(s, t) for s, t, _ in _outputs(vf, where) if s not in _POSITION]
@@ -165,7 +196,9 @@ def varyings(vf, where: str) -> list[tuple]:
 
 def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     outs = _outputs(vf, where)
-    body = [_main_light(language)]
+    vec3 = "float3" if language == "hlsl" else "vec3"
+    body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = {_world_position(language)};",
+            "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language)]
     args = []
     for qual, kind, name, semantic in vf.vertex_params:
         local = f"pbrlab_arg_{name}"
@@ -197,13 +230,14 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
                   "float4 in_tangent : TANGENT", "float2 in_uv1 : TEXCOORD1", "float4 in_color : COLOR0",
                   "out float4 pbrlab_clip : SV_Position"]
         params += [f"out {kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
-        lines.append("void main(" + ", ".join(params) + ") {")
+        lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
+                  f", out float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
         body.append(f"    pbrlab_clip = {position};")
     else:
         lines += ["in vec3 in_position;", "in vec3 in_normal;", "in vec2 in_uv;", "in vec4 in_tangent;",
                   "in vec2 in_uv1;", "in vec4 in_color;"]
         lines += [f"{_flat(kind)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
-        lines.append("void main() {")
+        lines += [_POSITIONAL_ADD, "out vec3 pbrlab_vary_world_position;", "#endif", "void main() {"]
         body.append(f"    gl_Position = {position};")
     for s, kind in varyings(vf, where):
         body.append(f"    pbrlab_vary_{s} = {access[s][1]};")
@@ -226,7 +260,9 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
             return fit(f"pbrlab_vary_{semantic}", _size(have[semantic], where), n, language)
         return None
 
-    body = [_main_light(language)]
+    vec3 = "float3" if language == "hlsl" else "vec3"
+    body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = pbrlab_vary_world_position;", "#endif",
+            _main_light(language)]
     args = []
     for qual, kind, name, semantic in vf.fragment_params:
         local = f"pbrlab_arg_{name}"
@@ -267,9 +303,11 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         params = ["float4 pbrlab_frag_position : SV_Position", "bool pbrlab_front_facing : SV_IsFrontFace"]
         params += [f"{kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
         params.append("out float4 pbrlab_radiance : SV_Target0")
-        lines.append("void main(" + ", ".join(params) + ") {")
+        lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
+                  f", float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
     else:
         lines += [f"{_flat(kind)}in {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += [_POSITIONAL_ADD, "in vec3 pbrlab_vary_world_position;", "#endif"]
         lines += ["out vec4 pbrlab_radiance;", "void main() {",
                   "    vec4 pbrlab_frag_position = gl_FragCoord;", "    bool pbrlab_front_facing = gl_FrontFacing;"]
         return "\n".join(lines + body + ["}"]) + "\n"

@@ -664,9 +664,8 @@ SKIPPED_LIGHT_MODES = {
     "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
     "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
     "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
-    "forwardadd": "additional lights of vertex/fragment passes are not drawn: the main light and ambient only",
 }
-DRAWN_LIGHT_MODES = ("always", "forwardbase", "srpdefaultunlit", "")
+DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
 
 
 def read_text(text: str, path: Path) -> M.UnityShader:

@@ -3,7 +3,8 @@
 // Provides: struct FragmentCommonData; MetallicSetup, SpecularSetup, RoughnessSetup (the
 //   three UNITY_SETUP_BRDF_INPUT workflows: Standard, StandardSpecular, AutodeskInteractive);
 //   FragmentSetup; struct VertexOutputForwardBase; vertForwardBase(VertexInput),
-//   fragForwardBaseInternal(VertexOutputForwardBase); OutputForward(color, alpha).
+//   fragForwardBaseInternal(VertexOutputForwardBase), fragForwardAddInternal (the ForwardAdd
+//   pass's one light, on the same vertex output); OutputForward(color, alpha).
 // Unity's file: the same names and keywords (_NORMALMAP, _PARALLAXMAP, _ALPHATEST_ON,
 //   _ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON, _EMISSION, ...), read for their behaviour
 //   (UnityStandardCore.cginc, Unity 2019.4 built-in shaders) and written here anew.
@@ -173,6 +174,23 @@ half4 fragForwardBaseInternal(VertexOutputForwardBase i)
     half4 c = pbr_unity_lighting(s.diffColor, s.specColor, s.coatF0, s.oneMinusReflectivity, s.smoothness,
                                  occlusion, 1.0, s.normalWorld, -s.eyeVec, gi);
     c.rgb += Emission(i.tex.xy);
+    return OutputForward(c, s.alpha);
+}
+
+// One additional light (ForwardAdd): no ambient, environment or emission, which the base pass
+// drew. _WorldSpaceLightPos0.w is 0 for a directional light, 1 for a positional one; the
+// light's falloff is already in _LightColor0 (README, "Unity shaders").
+half4 fragForwardAddInternal(VertexOutputForwardBase i)
+{
+    FragmentCommonData s = FragmentSetup(i.tex, i.posWorld, i.normalWorld, i.tangentWorld);
+    UNITY_LIGHT_ATTENUATION(atten, i, s.posWorld);
+    UnityGI gi;
+    gi.light.color = _LightColor0.rgb * atten;
+    gi.light.dir = normalize(_WorldSpaceLightPos0.xyz - s.posWorld * _WorldSpaceLightPos0.w);
+    gi.indirect.diffuse = half3(0.0, 0.0, 0.0);
+    gi.indirect.specular = half3(0.0, 0.0, 0.0);
+    half4 c = pbr_unity_lighting(s.diffColor, s.specColor, s.coatF0, s.oneMinusReflectivity, s.smoothness,
+                                 1.0, 1.0, s.normalWorld, -s.eyeVec, gi);
     return OutputForward(c, s.alpha);
 }
 
