@@ -132,6 +132,17 @@ CASES = {
         "_MainTex (\"a\", 2D) = \"white\" {}", "SurfaceOutputStandard",
         "float3 d = float3(0.2, 0.2, 0.4) * 4.59479380; "
         "o.Albedo = fixed3(0.5, 0.5, 0.5) * (1.0 + (d - 1.0) * 0.6); o.Smoothness = 0.5;"),
+    "specular map": (
+        "StandardSpecular.shader", {"_Color": [0.6, 0.6, 0.8, 1], "_SpecGlossMap": ("spec", [0.4, 0.2, 0.2, 0.8]),
+                                    "_GlossMapScale": 0.6}, ["_SPECGLOSSMAP"],
+        "_Color (\"c\", Color) = (1, 1, 1, 1)", "SurfaceOutputStandardSpecular",
+        "o.Albedo = fixed3(0.6, 0.6, 0.8); o.Specular = fixed3(0.4, 0.2, 0.2); o.Smoothness = 0.8 * 0.6;"),
+    "smoothness in albedo alpha": (
+        "Standard.shader", {"_Color": [1, 1, 1, 0.6], "_MainTex": ("albedo", [0.6, 0.4, 0.2, 0.4]),
+                            "_Metallic": 0.4, "_GlossMapScale": 0.8},
+        ["_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A"],
+        "_MainTex (\"a\", 2D) = \"white\" {}", "SurfaceOutputStandard",
+        "o.Albedo = tex2D(_MainTex, IN.uv_MainTex).rgb; o.Metallic = 0.4; o.Smoothness = 0.4 * 0.8;"),
 }
 
 
@@ -177,6 +188,47 @@ def test_standard_forward_add_adds_each_further_light(language, gl_context, tmp_
     err = np.abs(standard - expected)[covered][:, :3] / np.maximum(np.abs(expected[covered][:, :3]), 1e-2)
     assert err.max() <= RTOL, err.max()
     assert (standard - sun_only)[covered][:, :3].max() > 0.05  # the further lights do show
+
+
+PARALLAX_EQUIVALENT = """Shader "Test/ParallaxEquivalent" {
+    Properties { _MainTex ("a", 2D) = "white" {} }
+    SubShader {
+        CGPROGRAM
+        #pragma surface surf Standard
+        sampler2D _MainTex;
+        struct Input { float2 uv_MainTex; float3 viewDir; };
+        void surf (Input IN, inout SurfaceOutputStandard o) {
+            // Unity's parallax step: the height (0.6) centred and scaled by _Parallax (0.05), along
+            // the tangent-space view direction (a surface that writes o.Normal gets it so)
+            float2 offset = ParallaxOffset(0.6, 0.05, IN.viewDir);
+            o.Albedo = tex2D(_MainTex, IN.uv_MainTex + offset).rgb;
+            o.Smoothness = 0.5;
+            o.Normal = float3(0.0, 0.0, 1.0);
+        }
+        ENDCG
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_standard_parallax_shifts_the_texture_by_unitys_step(language, gl_context, tmp_path):
+    ramp = np.zeros((8, 8, 4), np.uint8)
+    ramp[..., 3] = 255
+    ramp[..., 0] = np.linspace(0, 255, 8).astype(np.uint8)[None, :]
+    ramp[..., 1] = np.linspace(255, 0, 8).astype(np.uint8)[:, None]
+    write_png(tmp_path / "ramp.png", ramp)
+    props = {"_MainTex": {"path": str(tmp_path / "ramp.png"), "srgb": False},
+             "_ParallaxMap": _png(tmp_path / "height.png", [0, 0.6, 0, 1]), "_Parallax": 0.05}
+    shifted = _render(_scene(BUILTIN / "Standard.shader", props, ["_PARALLAXMAP"]), gl_context, language, tmp_path)
+    flat = _render(_scene(BUILTIN / "Standard.shader", props), gl_context, language, tmp_path)
+    equivalent = tmp_path / "parallax.shader"
+    equivalent.write_text(PARALLAX_EQUIVALENT)
+    expected = _render(_scene(equivalent, {"_MainTex": props["_MainTex"]}), gl_context, language, tmp_path)
+    covered = shifted[..., 3] > 0
+    err = np.abs(shifted - expected)[covered][:, :3] / np.maximum(np.abs(expected[covered][:, :3]), 1e-2)
+    assert err.max() <= RTOL, err.max()
+    assert np.abs(shifted - flat)[covered][:, :3].max() > 0.02  # the shift shows
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
