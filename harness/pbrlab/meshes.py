@@ -3,9 +3,11 @@ per-vertex attributes the mesh program needs (positions, normals, UVs, tangents)
 
 from __future__ import annotations
 
+import io
 import json
 from collections import OrderedDict
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -55,6 +57,20 @@ def _primitive(spec: dict):
     return mesh
 
 
+def _load_obj(path, trimesh):
+    """An OBJ file read as text here: UTF-8, else Latin-1 (every byte is a Latin-1 character;
+    OBJ keywords and numbers are ASCII either way, only names and comments differ), so trimesh
+    never guesses an encoding (its guess needs charset_normalizer, which pbrlab does not
+    install). Material libraries beside it are still found through the resolver."""
+    data = Path(path).read_bytes()
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        text = data.decode("latin-1")
+    resolver = trimesh.resolvers.FilePathResolver(str(path))
+    return trimesh.load(io.StringIO(text), file_type="obj", force="mesh", process=False, resolver=resolver)
+
+
 def load_mesh(obj):
     """The trimesh.Trimesh of a scene object (file or primitive)."""
     import trimesh
@@ -62,7 +78,12 @@ def load_mesh(obj):
     if obj.primitive is not None:
         return _primitive(obj.primitive)
     try:
-        mesh = trimesh.load(obj.mesh_path, force="mesh", process=False)
+        if Path(obj.mesh_path).suffix.lower() == ".obj":
+            mesh = _load_obj(obj.mesh_path, trimesh)
+        else:
+            mesh = trimesh.load(obj.mesh_path, force="mesh", process=False)
+    except SceneError:
+        raise
     except Exception as exc:  # trimesh raises many types for unreadable files
         raise SceneError(f"{obj.mesh_path}: trimesh cannot read this mesh ({exc})") from None
     if len(mesh.faces) == 0:

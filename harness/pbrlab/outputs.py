@@ -41,8 +41,17 @@ _TEMP_NAME = re.compile(r"^\.(?P<name>.+)\.(?P<pid>\d+)-[0-9a-f]{8}\.tmp(?P<suff
 _LIVE: set[Path] = set()  # temporaries of this process not yet renamed or removed
 
 
+def extension(path: Path) -> str:
+    """The file's extension, as a writer picks its format by: ``path.suffix``, and for a name
+    that is only an extension (``.png``, which Python reads as a hidden file with none) that name."""
+    name = Path(path).name
+    if not Path(path).suffix and name.startswith(".") and name.count(".") == 1 and len(name) > 1:
+        return name
+    return Path(path).suffix
+
+
 def temp_name(path: Path) -> Path:
-    return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{path.suffix}")
+    return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{extension(path)}")
 
 
 def _pid_alive(pid: int) -> bool:

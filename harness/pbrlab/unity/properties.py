@@ -76,8 +76,12 @@ def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
     if "path" in value:
         if not isinstance(value["path"], str):
             raise SceneError(f"{where}.path: expected a file name")
-        path = (base / value["path"]).resolve()
-        if not path.is_file():
+        try:
+            path = (base / value["path"]).resolve()
+            found = path.is_file()
+        except (OSError, RuntimeError) as exc:  # a symlink loop, a component that is a file
+            raise SceneError(f"{where}.path: cannot follow {base / value['path']} ({exc})") from None
+        if not found:
             raise SceneError(f"{where}.path: no such file {path}")
     else:
         path = None

@@ -1,0 +1,68 @@
+"""Issue 26 (round two), valid input that failed and paths that gave tracebacks: a Latin-1 OBJ,
+an output named only by its extension (`-o .png`), a Unity texture path that is a symlink loop."""
+
+import json
+
+import numpy as np
+import pytest
+
+from hostile_common import base_scene
+from pbrlab import cli
+from pbrlab.errors import PbrlabError
+from pbrlab.meshes import load_mesh
+from pbrlab.scene import load_scene
+
+TRIANGLE_OBJ = "# mod\u00e8le caf\u00e9\no caf\u00e9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n"
+
+
+@pytest.mark.parametrize("encoding", ["latin-1", "utf-8"])
+def test_an_obj_in_latin_1_or_utf_8_reads_the_same(tmp_path, encoding, census):
+    # trimesh guesses a non-UTF-8 file's encoding with charset_normalizer, which pbrlab does not
+    # install: it raised ModuleNotFoundError for the Latin-1 file
+    (tmp_path / "m.obj").write_bytes(TRIANGLE_OBJ.encode(encoding))
+    scene = base_scene()
+    scene["objects"][1]["mesh"] = "m.obj"
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    mesh = load_mesh(load_scene(tmp_path / "scene.json").objects[1])
+    np.testing.assert_array_equal(mesh.vertices, [[0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    assert len(mesh.faces) == 1
+    census["mesh file", "handled"] += 1
+
+
+def test_outputs_named_only_by_their_extension_are_written(tmp_path, monkeypatch, capsys, census):
+    scene = base_scene()
+    scene["camera"]["size"] = [16, 16]
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["render", "scene.json", "-o", ".png", "--hdr", ".exr"]) == 0
+    from pbrlab.images import read_image
+    assert read_image(tmp_path / ".png").shape[:2] == (16, 16)
+    assert read_image(tmp_path / ".exr").shape[:2] == (16, 16)
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".exr", ".png", "scene.json"]  # no temporary left
+    census["output name", "handled"] += 1
+
+
+SHADER = """Shader "Test/Loop" {
+    Properties { _MainTex ("Albedo", 2D) = "white" {} }
+    SubShader {
+        CGPROGRAM
+        #pragma surface surf Lambert
+        sampler2D _MainTex;
+        struct Input { float2 uv_MainTex; };
+        void surf (Input IN, inout SurfaceOutput o) { o.Albedo = tex2D(_MainTex, IN.uv_MainTex).rgb; }
+        ENDCG
+    }
+}
+"""
+
+
+def test_a_unity_texture_path_that_is_a_symlink_loop_is_refused_by_name(tmp_path, census):
+    (tmp_path / "a.png").symlink_to(tmp_path / "b.png")
+    (tmp_path / "b.png").symlink_to(tmp_path / "a.png")
+    (tmp_path / "loop.shader").write_text(SHADER)
+    scene = base_scene()
+    scene["materials"]["m"] = {"surface": "loop.shader", "properties": {"_MainTex": {"path": "a.png"}}}
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    with pytest.raises(PbrlabError, match=r"properties\._MainTex\.path: cannot follow .*a\.png"):
+        load_scene(tmp_path / "scene.json")
+    census["unity properties", "refused cleanly"] += 1
