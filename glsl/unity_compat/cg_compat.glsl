@@ -5,7 +5,8 @@
 //           sincos(x, s, c), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
 //           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
-//           has no discard: define PBR_UNITY_VERTEX_STAGE there), tex2D, tex2Dlod (uv.w is
+//           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
+//           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
 //           samplerCUBE (= samplerCube); pbr_unity_pow (pow with HLSL's scalar promotion:
 //           port-unity renames pow to it), fmod(vecN, float).
@@ -89,8 +90,10 @@ bool pbr_unity_clip_below_zero(vec3 x) { return any(lessThan(x, vec3(0.0))); }
 bool pbr_unity_clip_below_zero(vec4 x) { return any(lessThan(x, vec4(0.0))); }
 #ifdef PBR_UNITY_VERTEX_STAGE
 #define clip(x)
+#define PBR_UNITY_DISCARD
 #else
 #define clip(x) if (pbr_unity_clip_below_zero(x)) discard
+#define PBR_UNITY_DISCARD discard
 #endif
 
 vec4 tex2D(sampler2D s, vec2 uv) { return texture(s, uv); }

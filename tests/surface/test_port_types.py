@@ -44,6 +44,7 @@ CASES = [  # (rule, Cg body of pbr_test(), its port, return type)
     ('compound_truncates', 'float3 c = 1; c += float4(1, 2, 3, 4); c *= float4(2, 2, 2, 2); return float4(c, 0);', 'vec3 c = vec3(1); c += vec4(1, 2, 3, 4).xyz; c *= vec4(2, 2, 2, 2).xyz; return vec4(c, 0);'),
     ('user_function_arguments', 'return float4(pbr_g(float4(1, 2, 3, 4), 2), 0);', 'return vec4(pbr_g(vec4(1, 2, 3, 4).xyz, vec3(2)), 0);'),
     ('static_global', 'return float4(pbr_k, 0);', 'return vec4(pbr_k, 0);'),
+    ('uint_compares_int', 'float s = 0; for (uint i = 0; i < 3; i++) { s += 0.5; } return s + (2u > 1 ? 1 : 0);', 'float s = 0; for (uint i = uint(0); i < uint(3); i++) { s += 0.5; } return s + (2u > uint(1) ? 1 : 0);', 'float'),
     ('loop_attribute', 'float s = 0; [unroll] for (int i = 0; i < 3; i++) { s += i * 0.5; } return s;', 'float s = 0; for (int i = 0; i < 3; i++) { s += i * 0.5; } return s;', 'float'),
 ]
 
@@ -128,3 +129,17 @@ def test_types_and_macros_from_unread_includes_do_not_stop_the_pass():
     result = cg_types.convert_detail(cg)
     assert result.skipped == []
     assert "float3 c = _Color.xyz;" in result.text and "return IN.color;" in result.text
+
+
+def test_a_numeric_define_has_its_literals_type():
+    # `#define MAX_STEPS 10` compared with a uint loop counter (a sphere tracer's loop): HLSL
+    # converts the int to uint, GLSL 330 refuses the mixed comparison
+    cg = "#define MAX_STEPS 10\n#define EPS 0.01\nfloat pbr_test() { float s = 0; for (uint i = 0; i < MAX_STEPS; i++) s += EPS; return s; }\n"
+    assert port.port_text(cg) == ("#define MAX_STEPS 10\n#define EPS 0.01\nfloat pbr_test() { float s = 0; "
+                                  "for (uint i = uint(0); i < uint(MAX_STEPS); i++) s += EPS; return s; }\n")
+
+
+def test_discard_is_the_stage_neutral_macro():
+    # GLSL refuses `discard` in a vertex stage even inside a function that stage never calls
+    assert port.port_text("float4 frag() { discard; return 0; }\n") == \
+        "vec4 frag() { PBR_UNITY_DISCARD; return vec4(0); }\n"

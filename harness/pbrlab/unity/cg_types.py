@@ -236,6 +236,10 @@ class Signature:
     params: list
 
 
+_NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
+                            r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
+
+
 @dataclass
 class Symbols:
     structs: dict = field(default_factory=dict)    # name -> {field: Type}
@@ -340,6 +344,10 @@ class _Parser:
         self.toks, self.directives = tokenize(text)
         self.i = 0
         self.sym = symbols
+        for m in _NUMBER_DEFINE.finditer(text):  # `#define MAX_STEPS 10`: a constant of the literal's type
+            literal = m.group(2)
+            base = "float" if re.search(r"[.eEfFhH]", literal) else "uint" if literal[-1] in "uU" else "int"
+            symbols.globals.setdefault(m.group(1), Type(base))
         self.edits = Edits()
         self.scopes = []
         self.ret = None
@@ -935,6 +943,10 @@ class _Parser:
             for x in (a, b):
                 if x.t.dim > t.dim:
                     self.truncate(x, t.dim)
+        if t.base == "uint":  # HLSL converts int to uint here; GLSL 330 does not (4.00 does)
+            for x in (a, b):
+                if x.t.base == "int":
+                    self.wrap(x, Type("uint", x.t.dim, x.t.cols).cg())
         if o in _COMPARE:
             if t.dim == 1 or t.cols:
                 return E(*span, Type("bool", 1 if not t.cols else t.dim, t.cols), False)

@@ -24,6 +24,8 @@ port stays line for line with the original and compile errors map back by line):
      4. HLSL semantics after a member or parameter (``float4 color : COLOR;``) dropped.
      5. ``pow`` -> ``pbr_unity_pow`` (cg_compat.glsl: HLSL's pow(float3, 2.2) promotes the
         scalar; GLSL neither has that overload nor lets a shader overload a built-in).
+     6. ``discard`` -> ``PBR_UNITY_DISCARD`` (cg_compat.glsl: nothing in a vertex stage, where
+        GLSL refuses the word even in a function that stage never calls).
 """
 
 from __future__ import annotations
@@ -89,6 +91,7 @@ def port_code(code: str) -> str:
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
+    code = re.sub(r"\bdiscard\b", "PBR_UNITY_DISCARD", code)  # GLSL refuses discard in a vertex stage
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
     return _globals_uniform(code)
 
