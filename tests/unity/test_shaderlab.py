@@ -315,3 +315,13 @@ ENDCG } } }""")
     got = _render(path, language, base=tmp_path)
     covered = got[..., 3] > 0
     assert np.abs(got[covered][:, :3] - [0.25, 0.75, 0.25]).max() == 0.0
+
+
+def test_a_define_naming_another_macro_takes_its_value_in_later_conditions():
+    # Skybox-Procedural: `#define SKYBOX_SUNDISK SKYBOX_SUNDISK_HQ` (2), then `#if SKYBOX_SUNDISK ==
+    # SKYBOX_SUNDISK_HQ` picks the v2f members; read as 1 it took the SIMPLE branch's rayDir
+    from pbrlab.unity.conditionals import active_text, defines_of
+    text = ("#define MODE_SIMPLE 1\n#define MODE_HQ 2\n#define MODE MODE_HQ // the default\n"
+            "#if MODE == MODE_HQ\nhq\n#elif MODE == MODE_SIMPLE\nsimple\n#endif\n")
+    lines = active_text(text, defines_of(text)).splitlines()
+    assert "hq" in lines and "simple" not in lines

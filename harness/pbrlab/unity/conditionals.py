@@ -45,6 +45,16 @@ def _evaluate(condition: str, defines: dict):
         return None
 
 
+def _define_value(value: str, defines: dict) -> int:
+    """The number an object-like ``#define`` stands for in a later ``#if``: its integer, the
+    value of the macro it names (``#define SKYBOX_SUNDISK SKYBOX_SUNDISK_HQ``), else 1."""
+    if re.fullmatch(r"-?\d+", value):
+        return int(value)
+    if re.fullmatch(r"[A-Za-z_]\w*", value) and value in defines:
+        return defines[value]
+    return 1
+
+
 def active_text(text: str, defines: dict) -> str:
     """``text`` with the lines of branches not taken blanked."""
     out, pos = [], 0
@@ -61,8 +71,8 @@ def active_text(text: str, defines: dict) -> str:
                 if kind == "undef":
                     defines.pop(d.group(1), None)
                 else:
-                    value = "" if d.group(2) else d.group(3).strip()
-                    defines[d.group(1)] = int(value) if re.fullmatch(r"-?\d+", value) else 1
+                    value = "" if d.group(2) else re.sub(r"//.*", "", d.group(3)).strip()
+                    defines[d.group(1)] = _define_value(value, defines)
         elif kind in ("if", "ifdef", "ifndef"):
             if kind == "if":
                 value = _evaluate(rest, defines)
