@@ -101,6 +101,25 @@ def _display_name(path: Path) -> str:
         return str(path)
 
 
+def _ends_in_block_comment(line: str, in_comment: bool) -> bool:
+    """Whether a ``/* */`` comment is still open at the end of ``line`` (open at its start
+    when ``in_comment``); ``//`` ends the line's code."""
+    i = 0
+    while i < len(line):
+        pair = line[i:i + 2]
+        if in_comment:
+            if pair == "*/":
+                in_comment, i = False, i + 2
+                continue
+        elif pair == "//":
+            return False
+        elif pair == "/*":
+            in_comment, i = True, i + 2
+            continue
+        i += 1
+    return in_comment
+
+
 def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True,
            virtual: dict | None = None) -> Source:
     """Expand the includes of ``text`` (named ``name`` in messages).
@@ -127,7 +146,12 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
         source.files.append(display)
         emit_line_marker(file_index, first_line)
         depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
+        in_comment = False  # inside a /* */ comment at the start of the line
         for number, line in enumerate(body.splitlines(), start=first_line):
+            starts_in_comment, in_comment = in_comment, _ends_in_block_comment(line, in_comment)
+            if starts_in_comment:  # commentary, whatever it looks like (an #include, an #if)
+                lines_out.append(line.replace("#include", "# include"))
+                continue
             if _IF.match(line):
                 depth += 1
             elif _ENDIF.match(line):
@@ -153,6 +177,11 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 emit_line_marker(file_index, number + 1)
                 continue
             target = resolve_include(m.group(1), search)
+            if target is None and (conditional or depth > 0):
+                # under an #if: the compiler's preprocessor decides whether this line is read, so
+                # the missing file is an #error there (reported at this file and line if it is)
+                lines_out.append(f'#error cannot find include "{m.group(1)}"')
+                continue
             if target is None:
                 raise PbrlabError(
                     f"{display}:{number}: cannot find include \"{m.group(1)}\" "

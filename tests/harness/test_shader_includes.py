@@ -105,3 +105,25 @@ def test_guarded_file_is_expanded_once_unless_first_included_conditionally(tmp_p
     conditional = shaders.expand('#ifdef NEVER\n#include "g.glsl"\n#endif\n#include "g.glsl"\n',
                                  "e", include_dirs=[tmp_path]).text
     assert conditional.count("float g()") == 2
+
+
+def test_an_include_in_a_comment_or_a_branch_not_taken_is_not_read():
+    """Issue 26: the expander resolved every #include line, inside /* */ and under #if 0 too;
+    a missing file there stopped the program the compiler would have built."""
+    from pbrlab import shaders
+    text = ('#version 330 core\n/* an old include:\n#include "gone.glsl"\n*/\n'
+            '#if 0\n#include "missing.glsl"\n#endif\n#include "pbr/common/math.glsl"\n')
+    source = shaders.expand(text, "t.glsl")
+    assert "gone.glsl" not in "".join(str(p) for p in source.paths)
+    assert '#error cannot find include "missing.glsl"' in source.text  # the preprocessor skips it
+    with pytest.raises(PbrlabError, match=r'u\.glsl:1: cannot find include "nope\.glsl"'):
+        shaders.expand('#include "nope.glsl"\n', "u.glsl")  # outside every #if: an error here
+
+
+def test_a_missing_include_in_a_branch_taken_is_reported_at_its_line(gl_context):
+    from pbrlab import shaders
+    frag = shaders.expand('#version 330 core\n#define X\n#ifdef X\n#include "missing.glsl"\n#endif\n'
+                          'out vec4 c;\nvoid main() { c = vec4(1.0); }\n', "frag.glsl")
+    vert = shaders.expand('#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n', "vert.glsl")
+    with pytest.raises(PbrlabError, match=r'frag\.glsl:4.*cannot find include "missing\.glsl"'):
+        shaders.build_program(gl_context, vert, frag)
