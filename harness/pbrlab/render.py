@@ -208,7 +208,7 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
     for i, obj in enumerate(scene.objects):
         if obj.mesh_path is not None:
             found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
-    return found
+    return found + list(scene.read_files)  # a glTF's file, buffers and images
 
 
 def checked_size(size) -> tuple[int, int]:

@@ -153,7 +153,8 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         raise SceneError(f"{path}: the scene has no triangle to draw")
     by_name = {m.name: m for m in materials.values()}
     scene = Scene(camera=None, lights=lights, environment=environment, materials=by_name,
-                  objects=objects, render=render or RenderSettings(), source=str(path))
+                  objects=objects, render=render or RenderSettings(), source=str(path),
+                  read_files=doc.declared_files())
     scene.camera = _choose_camera(doc, scene, placed_cameras, camera, size)
     messages = collapse_warnings(messages)
     if emit_warnings:
