@@ -6,11 +6,11 @@ nearest point of the scene's bounds inside the view frustum (each object's orien
 bounding box clipped to the frustum; the object's own triangles where the camera is inside
 that box), and far the farthest such point (camera.NEAR_FAR_MARGIN around both).
 
-Measured (decal quads above a base plane, 128x128, Mesa llvmpipe 22.3; the smallest
-offset, relative to the plane's size, at which the decal wins at every pixel it covers;
-plane sizes 0.1, 1, 100, 1e4, camera at 2.5x the size head-on and tilted 60 degrees, at 10x
+Measured (benchmarks/depth_resolution.py: decal quads above a base plane, 128x128, Mesa
+llvmpipe 22.3; the smallest offset, relative to the plane's size, at which the decal wins
+at every pixel it covers; plane sizes 0.1, 1, 100, 1e4, camera at 2.5x the size head-on and tilted 60 degrees, at 10x
 tilted 30 degrees):
-    near = far * 1e-5, 24-bit (before)         1e-3 .. 5.6e-2 (0.01 units at 5 units z-fights)
+    near = far * 1e-5, 24-bit (before)         5.6e-6 .. 5.6e-2 (0.01 units at 5 units z-fights)
     near from the bounds, 24-bit (this)        5.6e-8 .. 5.6e-7
     reversed-Z, 32-bit float, near = far*1e-5  3.2e-8 .. 1.0e-6
 At the sample models' framing (their distance z to the target) the 24-bit step

@@ -1,9 +1,9 @@
 """Decals hold: a quad a little above a base plane wins at every pixel it covers, at every
 scale and camera distance (depth_range.py chooses near and far from what the camera sees).
 
-With near = far * 1e-5 a 24-bit depth buffer resolved only 1e-3 to 5.6e-2 of the plane's
-size (measured, depth_range.py), so the Khronos sample models' 0.01-unit decals at 5 to 20
-units z-fought (TextureTransformTest's markers, AlphaBlendModeTest's "Opaque" label,
+With near = far * 1e-5 a 24-bit depth buffer resolved only 5.6e-6 to 5.6e-2 of the plane's
+size (measured: benchmarks/depth_resolution.py), so the Khronos sample models' 0.01-unit
+decals at 5 to 20 units z-fought (TextureTransformTest's markers, AlphaBlendModeTest's "Opaque" label,
 NegativeScaleTest's labels). Near and far from the bounds resolve 5.6e-8 to 5.6e-7 of it;
 the smallest offset here, 1e-4 of the plane, keeps a margin of 180 over that."""
 
