@@ -24,9 +24,11 @@ class CameraFrame:
     far: float
 
 
-def camera_frame(camera, scene_radius: float) -> CameraFrame:
+def camera_frame(camera, scene_radius: float, depths: tuple[float, float] | None = None) -> CameraFrame:
     """Basis and view-projection of a scene camera. ``scene_radius`` bounds the scene
-    around its camera target, to choose near and far planes that keep depth precise."""
+    around its camera target; ``depths``, the (nearest, farthest) eye depth of what the
+    camera sees (depth_range.visible_depths), sets a perspective camera's planes around it
+    (else far from the radius and near = far * 1e-5). depth_range.scene_frame chooses both."""
     w, h = camera.size
     forward = camera.target - camera.position
     forward = forward / np.linalg.norm(forward)
@@ -38,6 +40,9 @@ def camera_frame(camera, scene_radius: float) -> CameraFrame:
     distance = float(np.linalg.norm(camera.target - camera.position))
     far = (distance + scene_radius) * NEAR_FAR_MARGIN
     near = max(far * 1e-5, 1e-4)
+    if depths is not None:  # the planes just around what is seen (depth_range.py: the figures)
+        far = depths[1] * NEAR_FAR_MARGIN
+        near = max(depths[0] / NEAR_FAR_MARGIN, far * 1e-5)
     view = np.eye(4)
     view[0, :3], view[1, :3], view[2, :3] = right, up, -forward
     view[:3, 3] = -view[:3, :3] @ camera.position

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .camera import camera_frame, camera_rays
+from .camera import camera_rays
 from .environment import environment_sh, sh_irradiance
 from .errors import PbrlabError
 from .reference import clearcoat as ref_clearcoat
@@ -105,7 +105,7 @@ def _unity_shading(scene, material, n, v, p, env_sh, quality):
 
 def render_scene_cpu(scene) -> np.ndarray:
     """HxWx4 float64 radiance of an analytic scene, top row first."""
-    from .render import scene_radius
+    from .depth_range import scene_frame
 
     if scene.meshes:
         raise PbrlabError("the CPU reference renders analytic scenes (spheres) only")
@@ -116,7 +116,7 @@ def render_scene_cpu(scene) -> np.ndarray:
             raise PbrlabError(f"material {name}: the CPU reference renders opaque, untextured "
                               "materials with the default surface")
     quality = scene.render.quality.upper()
-    frame = camera_frame(scene.camera, scene_radius(scene))
+    frame = scene_frame(scene)
     d = camera_rays(frame)
     origin = frame.position
     hits = np.stack([_intersect(origin, d, c, r) for c, r in (o.sphere for o in scene.spheres)])

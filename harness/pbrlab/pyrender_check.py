@@ -298,8 +298,7 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     import moderngl
 
     from . import gl, meshes, resource_cache, targets
-    from .camera import camera_frame
-    from .render import scene_radius
+    from .depth_range import scene_frame
     from .scene import parse_scene
 
     scene = parse_scene(scene_dict)
@@ -308,7 +307,7 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     light = scene.lights[0]
     ctx = gl.make_current(ctx or gl.shared_context())
     program = _terms_program(ctx, terms or PYRENDER_TERMS)
-    frame = camera_frame(scene.camera, scene_radius(scene))
+    frame = scene_frame(scene)
     values = {"u_camera_position": tuple(frame.position), "u_light_l": tuple(-light.direction),
               "u_light_radiance": tuple(light.color * light.intensity),
               "u_view_proj": tuple(frame.view_proj.T.reshape(-1)), "u_dfg_lut": 0}

@@ -24,7 +24,7 @@ from .unity import cubemap as unity_cubemap
 from .unity import program as unity_program
 from .unity import program_pass as unity_program_pass
 from .unity import tessellate as unity_tessellate
-from .camera import camera_frame
+from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from .errors import PbrlabError, SceneError
 from .file_identity import include_closure
 from .hlsl import HLSL_ROOT
@@ -47,19 +47,6 @@ class Rendering:
     srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + sRGB encode (see ``transfer``)
     info: dict
     programs: "features.ProgramPlan" = None  # what was compiled
-
-
-def scene_radius(scene: Scene) -> float:
-    """A radius around the camera target that holds every object (for the depth range)."""
-    radius = 1.0
-    for obj in scene.objects:
-        if obj.sphere is not None:
-            centre, r = obj.sphere
-        else:
-            centre = obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
-            r = meshes.bounding_radius(obj)
-        radius = max(radius, float(np.linalg.norm(centre - scene.camera.target)) + r)
-    return radius
 
 
 class _SceneResources:
@@ -221,7 +208,7 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
     for i, obj in enumerate(scene.objects):
         if obj.mesh_path is not None:
             found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
-    return found
+    return found + list(scene.read_files)  # a glTF's file, buffers and images
 
 
 def checked_size(size) -> tuple[int, int]:
@@ -274,7 +261,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     ctx = gl.make_current(ctx or gl.shared_context())
     gl_limits.check_scene(ctx, scene)
-    frame = camera_frame(scene.camera, scene_radius(scene))
+    frame = scene_frame(scene)
     plan = features.plan_programs(scene, specialise)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
     w, h = frame.size

@@ -175,6 +175,9 @@ class Scene:
     objects: list[SceneObject]
     render: RenderSettings
     source: str = "<scene>"
+    # files read besides the scene file and its materials' and objects' own (a glTF's file,
+    # buffers and images), with their roles: what an output must not be (render.input_files)
+    read_files: list = field(default_factory=list)
 
     @property
     def spheres(self):
@@ -544,7 +547,7 @@ def _gltf_subscene(r: _Reader, base: Path):
         camera.position = transform[:3, :3] @ camera.position + transform[:3, 3]
         camera.target = transform[:3, :3] @ camera.target + transform[:3, 3]
         camera.up = transform[:3, :3] @ camera.up
-    return objects, materials, sub.scene.lights, camera
+    return objects, materials, sub.scene.lights, camera, [(path, f"{r.path}'s glTF file"), *sub.scene.read_files]
 
 
 def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
@@ -579,11 +582,12 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     objects_raw = top.raw("objects", [])
     if not isinstance(objects_raw, list) or not objects_raw:
         top.fail("expected a non-empty list of objects", "objects")
-    objects = []
+    objects, read_files = [], []
     for i, o in enumerate(objects_raw):
         if isinstance(o, dict) and "gltf" in o:
-            sub_objects, sub_materials, sub_lights, sub_camera = _gltf_subscene(
+            sub_objects, sub_materials, sub_lights, sub_camera, sub_files = _gltf_subscene(
                 _Reader(o, f"objects[{i}]", origin), base)
+            read_files += sub_files
             objects += sub_objects
             materials.update(sub_materials)
             lights += sub_lights
@@ -602,7 +606,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
                             brdf_model=rs.choice("brdf_model", BRDF_MODELS, default="pbrlab"))
     rs.finish()
     top.finish()
-    return Scene(camera, lights, environment, materials, objects, render, origin)
+    return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 
 
 def load_scene(path) -> Scene:

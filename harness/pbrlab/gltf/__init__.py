@@ -28,6 +28,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
+from . import instancing
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -38,7 +39,7 @@ SUFFIXES = (".gltf", ".glb")
 HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_clearcoat",
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
-                       "KHR_materials_sheen")
+                       "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing")
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
@@ -97,14 +98,18 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     materials: dict = {}
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
+    geometries: dict = {}  # (mesh, primitive, winding, normal map UV set) -> Geometry
     for node_index, world in walk(doc, None):
         node = doc.items("nodes")[node_index]
+        instances = None
         if node.has("name"):
             node.string("name")
         for ext, spec in node.extensions():
             if ext == "KHR_lights_punctual":
                 light = spec.index("light", LIGHTS, required=True)
                 lights.append(punctual_light(doc, light, world, node.path))
+            elif ext == instancing.EXTENSION:
+                instances = instancing.instance_matrices(doc, spec, node_index, warn)
             else:
                 warn(f"{ext} ignored in node {node_index}")
         camera_index = node.index("camera", "cameras")
@@ -117,35 +122,9 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             continue
         mesh = doc.items("meshes")[mesh_index]
         primitives = mesh.objects("primitives", min_items=1)
-        flip = bool(np.linalg.det(world[:3, :3]) < 0)
-        if abs(np.linalg.det(world[:3, :3])) < 1e-30:
-            warn(f"node {node_index} ignored (its transform has zero scale)")
-            continue
-        for p, primitive in enumerate(primitives):
-            material_index = _variant_material(primitive, variant_index)
-            has_colour = primitive.object("attributes").has("COLOR_0")
-            mkey = (material_index, has_colour)
-            if mkey not in materials:
-                material = reader.material(material_index, has_colour)
-                name = material.name
-                taken = set(material_names.values())
-                if name in taken:
-                    name = f"{name} [{material_index}{', COLOR_0' if has_colour else ''}]"
-                material.name = name
-                material_names[mkey] = name
-                materials[mkey] = material
-            material = materials[mkey]
-            for slot, uv_set in sorted(material.texture_uv_set.items()):
-                if not primitive.object("attributes").has(f"TEXCOORD_{uv_set}"):
-                    primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
-                                   "which the primitive lacks")
-            mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
-            normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
-            geometry = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
-                                      (*key, mesh_index, p, flip))
-            if geometry is None:
-                continue
-            objects.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometry))
+        for placed in [world] if instances is None else [world @ m for m in instances]:
+            objects += _placed_primitives(doc, reader, key, mesh_index, primitives, placed, node_index,
+                                          variant_index, materials, material_names, geometries, warn)
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
         if name not in HONOURED_EXTENSIONS and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
@@ -153,13 +132,52 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         raise SceneError(f"{path}: the scene has no triangle to draw")
     by_name = {m.name: m for m in materials.values()}
     scene = Scene(camera=None, lights=lights, environment=environment, materials=by_name,
-                  objects=objects, render=render or RenderSettings(), source=str(path))
+                  objects=objects, render=render or RenderSettings(), source=str(path),
+                  read_files=doc.declared_files())
     scene.camera = _choose_camera(doc, scene, placed_cameras, camera, size)
     messages = collapse_warnings(messages)
     if emit_warnings:
         for message in messages:
             warnings.warn(f"{path.name}: {message}", GltfWarning, stacklevel=2)
     return GltfScene(scene, messages, len(placed_cameras))
+
+
+def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_index, variant_index,
+                       materials, material_names, geometries, warn) -> list[SceneObject]:
+    """The objects of one placement of a node's mesh: one per primitive, its material read
+    once per (material, COLOR_0) and its geometry once per winding."""
+    out = []
+    flip = bool(np.linalg.det(world[:3, :3]) < 0)
+    if abs(np.linalg.det(world[:3, :3])) < 1e-30:
+        warn(f"node {node_index} ignored (its transform has zero scale)")
+        return out
+    for p, primitive in enumerate(primitives):
+        material_index = _variant_material(primitive, variant_index)
+        has_colour = primitive.object("attributes").has("COLOR_0")
+        mkey = (material_index, has_colour)
+        if mkey not in materials:
+            material = reader.material(material_index, has_colour)
+            name = material.name
+            taken = set(material_names.values())
+            if name in taken:
+                name = f"{name} [{material_index}{', COLOR_0' if has_colour else ''}]"
+            material.name = name
+            material_names[mkey] = name
+            materials[mkey] = material
+        material = materials[mkey]
+        for slot, uv_set in sorted(material.texture_uv_set.items()):
+            if not primitive.object("attributes").has(f"TEXCOORD_{uv_set}"):
+                primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
+                               "which the primitive lacks")
+        mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
+        normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
+        gkey = (mesh_index, p, flip, normal_uv)
+        if gkey not in geometries:
+            geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
+                                              (*key, mesh_index, p, flip))
+        if geometries[gkey] is not None:
+            out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey]))
+    return out
 
 
 def _variant_index(doc, spec, name: str | None) -> int | None:

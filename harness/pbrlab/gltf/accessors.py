@@ -29,7 +29,24 @@ USES = {
     "TEXCOORD": (("VEC2",), _COLOUR_LIKE),
     "COLOR": (("VEC3", "VEC4"), _COLOUR_LIKE),
     "indices": (("SCALAR",), {(5121, False), (5123, False), (5125, False)}),
+    # EXT_mesh_gpu_instancing's per-instance attributes (its README, "Extending Nodes")
+    "INSTANCE_TRANSLATION": (("VEC3",), {(FLOAT, False)}),
+    "INSTANCE_ROTATION": (("VEC4",), {(FLOAT, False), (5120, True), (5122, True)}),
+    "INSTANCE_SCALE": (("VEC3",), {(FLOAT, False)}),
 }
+# KHR_mesh_quantization (its README, "Extending Mesh Attributes"): the integer types each
+# attribute also takes when the file uses the extension; normalized or not, as the
+# accessor's ``normalized`` flag says (not normalized: the integers themselves).
+QUANTIZATION = "KHR_mesh_quantization"
+_INTEGERS = {(c, n) for c in (5120, 5121, 5122, 5123) for n in (False, True)}
+QUANTIZED_USES = {"POSITION": _INTEGERS, "NORMAL": {(5120, True), (5122, True)},
+                  "TANGENT": {(5120, True), (5122, True)}, "TEXCOORD": _INTEGERS,
+                  "INSTANCE_TRANSLATION": _INTEGERS, "INSTANCE_SCALE": _INTEGERS,
+                  "INSTANCE_ROTATION": {(5120, True), (5122, True)}}
+
+
+def uses_quantization(doc: Document) -> bool:
+    return QUANTIZATION in doc.root.strings("extensionsUsed")
 
 
 def _normalised(values: np.ndarray, component: int) -> np.ndarray:
@@ -45,6 +62,9 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     accessor = doc.get("accessors", index, where)
     name = f"accessor {index}"
     types, components = USES[use]
+    quantized = QUANTIZED_USES.get(use, set())
+    if quantized and uses_quantization(doc):
+        components, quantized = components | quantized, set()
     element = accessor.data.get("type")
     component = accessor.data.get("componentType")
     normalized = accessor.boolean("normalized", False)
@@ -53,7 +73,9 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     if (type(component) is not int or (component, normalized) not in components):
         allowed = ", ".join(f"{COMPONENT_NAMES[c]}{' normalized' if n else ''}" for c, n in sorted(components))
         got = COMPONENT_NAMES.get(component, shown(component)) if type(component) is int else shown(component)
-        doc.fail(where, f"{name} has components {got}{' normalized' if normalized else ''}, expected {allowed}")
+        hint = (f" (or, with {QUANTIZATION} in extensionsUsed, that type)"
+                if (component, normalized) in quantized else "")
+        doc.fail(where, f"{name} has components {got}{' normalized' if normalized else ''}, expected {allowed}{hint}")
     n = ELEMENT_SIZES[element]
     n_elements = accessor.integer("count", None, lo=1)
     if count is not None and n_elements != count:

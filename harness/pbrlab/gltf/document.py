@@ -12,7 +12,7 @@ import json
 import struct
 import urllib.parse
 from dataclasses import dataclass, field
-from pathlib import Path
+from pathlib import Path, PurePosixPath, PureWindowsPath
 
 from .. import json_input
 from ..errors import SceneError
@@ -108,12 +108,12 @@ class Document:
                 return base64.b64decode(payload, validate=True)
             except ValueError:
                 self.fail(where, "the data: URI is not valid base64")
-        if "://" in uri:
-            self.fail(where, f"only files beside the glTF and data: URIs are read, not {uri}")
-        name = urllib.parse.unquote(uri)
-        if "\x00" in name:
+        if "\x00" in urllib.parse.unquote(uri):
             self.fail(where, f"uri holds a NUL character: {shown(uri)}")
-        file = self.path.parent / name
+        file = self.local_file(uri)
+        if file is None:
+            self.fail(where, f"only files beside the glTF (in its folder or below it) and data: URIs "
+                             f"are read, not {uri}")
         try:
             file = file.resolve()
             if not file.is_file():
@@ -121,6 +121,29 @@ class Document:
             return file.read_bytes()
         except (OSError, RuntimeError) as exc:  # a symlink loop, a name too long, no permission
             self.fail(where, f"cannot read {file}: {getattr(exc, 'strerror', None) or exc}")
+
+    def local_file(self, uri: str) -> Path | None:
+        """The file a uri names when it lies in the glTF's folder or below it: no scheme, no
+        absolute path or drive, no ``..``, no NUL."""
+        name = urllib.parse.unquote(uri)
+        if "://" in uri or uri.startswith("data:") or "\x00" in name:
+            return None
+        slashed = name.replace("\\", "/")
+        if slashed.startswith("/") or PureWindowsPath(name).drive or ".." in PurePosixPath(slashed).parts:
+            return None
+        return self.path.parent / name
+
+    def declared_files(self) -> list[tuple[Path, str]]:
+        """Every file the buffers and images name, with its role ("images[0] of model.gltf"):
+        what an output of a render of this file must not be."""
+        found = []
+        for key in ("buffers", "images"):
+            for i, item in enumerate(self.items(key)):
+                uri = item.data.get("uri")
+                file = self.local_file(uri) if isinstance(uri, str) else None
+                if file is not None:
+                    found.append((file, f"{key}[{i}] of {self.path.name}"))
+        return found
 
 
 def _parse_glb(path: Path, data: bytes) -> tuple[dict, bytes | None]:

@@ -33,12 +33,12 @@ Everything else a material carries is named in one warning each.
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
 
 from ..scene import Material
+from . import images
 from .document import Document
 from .fields import FieldReader, join
 
@@ -102,15 +102,14 @@ class MaterialReader:
         """Image ``index`` (checked by the caller) decoded, once per file."""
         if index not in self._images:
             spec = self.doc.items("images")[index]
-            if spec.has("mimeType"):
-                spec.enum("mimeType", ("image/jpeg", "image/png"))
+            images.check_mime_type(spec)
             if spec.has("uri"):
                 data = self.doc.uri_bytes(spec.string("uri"), spec.path)
             elif spec.has("bufferView"):
                 _, data = self.doc.buffer_view(spec.index("bufferView", "bufferViews"), join(spec.path, "bufferView"))
             else:
                 spec.fail("has neither uri nor bufferView")
-            self._images[index] = _decode_image(self.doc, data, spec.path)
+            self._images[index] = images.decode_image(self.doc, data, spec)
         return self._images[index]
 
     def texture(self, info: FieldReader, material: Material, slot: str, srgb: bool, name: str):
@@ -121,7 +120,7 @@ class MaterialReader:
             self.warn(f"{ext} ignored in texture {texture_index} (material \"{name}\")")
         source = texture.index("source", "images")
         if source is None:
-            texture.fail("has no source image")
+            images.refuse_sourceless(texture)
         pixels = self.image(source)
         sampler_index = texture.index("sampler", "samplers")
         sampler = (FieldReader({}, "default sampler", self.doc) if sampler_index is None
@@ -271,18 +270,3 @@ class MaterialReader:
                                 ("specularTexture", "specular_strength", False)):
             if spec_ext.has(key):
                 self.texture(spec_ext.object(key), m, slot, srgb, name)
-
-
-def _decode_image(doc: Document, data: bytes, where: str) -> np.ndarray:
-    """PNG or JPEG bytes -> top-row-first uint8 (h, w, 3 or 4)."""
-    from PIL import Image, UnidentifiedImageError
-
-    try:
-        with Image.open(io.BytesIO(data)) as image:
-            if image.format not in ("PNG", "JPEG"):
-                doc.fail(where, f"is {image.format}; glTF images are PNG or JPEG")
-            # grey images as RGB(A): a channel is read as R, G or B by the slot (spec 3.8.3)
-            image = image.convert("RGBA" if "A" in image.getbands() else "RGB")
-            return np.asarray(image, np.uint8)
-    except (UnidentifiedImageError, Image.DecompressionBombError, OSError, ValueError) as exc:
-        doc.fail(where, f"is not a readable PNG or JPEG image ({exc})")

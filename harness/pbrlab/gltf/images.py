@@ -1,0 +1,109 @@
+"""glTF images decoded to what the texture upload takes: top-row-first uint8 RGB or RGBA.
+
+* 8-bit PNG and JPEG through Pillow; grey images as RGB (a slot reads R, G or B, spec 3.8.3).
+* A PNG's tRNS chunk (transparency of a palette entry, or of one grey or RGB colour) becomes
+  the alpha channel (Pillow's P, L and RGB modes ignore it unless asked for RGBA).
+* 16-bit PNGs through OpenImageIO: Pillow clips 16-bit grey to white (its convert takes the
+  numbers as 8-bit) and truncates 16-bit RGB to the high byte; the 16-bit value v becomes the
+  nearest 8-bit code, round(v * 255 / 65535), the precision the texture upload keeps.
+* KTX2 / Basis Universal (KHR_texture_basisu, mimeType image/ktx2) is refused by name: pbrlab
+  has no transcoder.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import tempfile
+
+import numpy as np
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+KTX2_SIGNATURE = b"\xabKTX 20\xbb\r\n\x1a\n"  # KTX 2.0 specification, section 3.1
+MIME_TYPES = ("image/jpeg", "image/png")
+BASISU = "KHR_texture_basisu"
+KTX2_REFUSAL = (f"a KTX2 image ({BASISU}, Basis Universal supercompression), which pbrlab cannot "
+                "decode: pbrlab reads PNG and JPEG images (use the model's glTF or glTF-Binary "
+                "version, or convert its textures to PNG)")
+
+
+def _ktx2_refusal(spec) -> str:
+    """The refusal of a KTX2 image, naming its file (or name) where it has one."""
+    for key in ("uri", "name"):
+        value = spec.data.get(key)
+        if isinstance(value, str) and value and not value.startswith("data:"):
+            return f"{value} is {KTX2_REFUSAL}"
+    return f"is {KTX2_REFUSAL}"
+
+
+def check_mime_type(spec) -> None:
+    """images[i].mimeType: PNG or JPEG; KTX2 refused by its extension's name."""
+    if spec.has("mimeType") and spec.data["mimeType"] == "image/ktx2":
+        spec.fail(_ktx2_refusal(spec))
+    if spec.has("mimeType"):
+        spec.enum("mimeType", MIME_TYPES)
+
+
+def decode_image(doc, data: bytes, spec) -> np.ndarray:
+    """PNG or JPEG bytes of image ``spec`` -> top-row-first uint8 (h, w, 3 or 4)."""
+    from PIL import Image, UnidentifiedImageError
+
+    where = spec.path
+    if data.startswith(KTX2_SIGNATURE):
+        doc.fail(where, _ktx2_refusal(spec))
+    if data.startswith(PNG_SIGNATURE) and len(data) > 25 and data[12:16] == b"IHDR" and data[24] == 16:
+        return _decode_png16(doc, data, where)
+    try:
+        with Image.open(io.BytesIO(data)) as image:
+            if image.format not in ("PNG", "JPEG"):
+                doc.fail(where, f"is {image.format}; glTF images are PNG or JPEG")
+            alpha = "A" in image.getbands() or "transparency" in image.info
+            image = image.convert("RGBA" if alpha else "RGB")
+            return np.asarray(image, np.uint8)
+    except UnidentifiedImageError:
+        doc.fail(where, f"is not a readable PNG or JPEG image (it starts with bytes {data[:8].hex(' ')})")
+    except (Image.DecompressionBombError, OSError, ValueError) as exc:
+        doc.fail(where, f"is not a readable PNG or JPEG image ({exc})")
+
+
+def _decode_png16(doc, data: bytes, where: str) -> np.ndarray:
+    """A 16-bit PNG through OpenImageIO (it reads files: a temporary one), to 8-bit codes."""
+    import OpenImageIO as oiio
+
+    handle, name = tempfile.mkstemp(suffix=".png")
+    try:
+        with os.fdopen(handle, "wb") as f:
+            f.write(data)
+        config = oiio.ImageSpec()
+        config.attribute("oiio:UnassociatedAlpha", 1)  # the colour as stored, not premultiplied
+        inp = oiio.ImageInput.open(name, config)
+        if inp is None:
+            doc.fail(where, f"is not a readable 16-bit PNG image ({oiio.geterror().replace(name, 'the image')})")
+        try:
+            channels = inp.spec().nchannels
+            pixels = inp.read_image(0, 0, 0, channels, "uint16")
+            error = inp.geterror() if pixels is None else ""
+        finally:
+            inp.close()
+    finally:
+        os.unlink(name)
+    if pixels is None:
+        doc.fail(where, f"is not a readable 16-bit PNG image ({error.replace(name, 'the image')})")
+    pixels = np.asarray(pixels, np.uint32).reshape(pixels.shape[0], pixels.shape[1], -1)
+    codes = ((pixels * 255 + 32767) // 65535).astype(np.uint8)  # round(v * 255 / 65535)
+    if codes.shape[2] in (1, 2):  # grey (and alpha) as RGB(A)
+        codes = np.concatenate([codes[..., :1]] * 3 + [codes[..., 1:]], axis=2)
+    return codes
+
+
+def refuse_sourceless(texture) -> None:
+    """A texture without ``source``: refused, naming KHR_texture_basisu's KTX2 image when
+    that is all the texture has."""
+    for name, spec in texture.extensions():
+        if name == BASISU:
+            image = spec.data.get("source")
+            shown = f"images[{image}]" if isinstance(image, int) and not isinstance(image, bool) else "an image"
+            texture.fail(f"has only a {BASISU} source ({shown}, KTX2 with Basis Universal "
+                         "supercompression), which pbrlab cannot decode, and no PNG or JPEG "
+                         "source; use the model's glTF or glTF-Binary version")
+    texture.fail("has no source image")

@@ -1,0 +1,48 @@
+"""EXT_mesh_gpu_instancing: a node's mesh drawn once per instance, each placed by the
+node's world matrix times the instance's TRANSLATION, ROTATION, SCALE (the extension's
+README: "the instance transform is applied after the node's own", attributes absent mean
+the identity part; every attribute has the same count)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .accessors import read_accessor
+from .nodes import quaternion_matrix
+
+EXTENSION = "EXT_mesh_gpu_instancing"
+ATTRIBUTES = {"TRANSLATION": "INSTANCE_TRANSLATION", "ROTATION": "INSTANCE_ROTATION",
+              "SCALE": "INSTANCE_SCALE"}
+
+
+def instance_matrices(doc, spec, node_index: int, warn) -> list[np.ndarray]:
+    """The instances' local matrices (applied after the node's world matrix)."""
+    attributes = spec.object("attributes")
+    where = attributes.path
+    read = {}
+    count = None
+    for name in sorted(attributes.data):
+        index = attributes.index(name, "accessors")
+        if name not in ATTRIBUTES:
+            warn(f"{EXTENSION} attribute {name} ignored in node {node_index}")
+            continue
+        read[name] = read_accessor(doc, index, f"{where}.{name}", ATTRIBUTES[name], count)
+        count = len(read[name])
+    if count is None:
+        attributes.fail("has none of TRANSLATION, ROTATION, SCALE")
+    rotations = read.get("ROTATION")
+    if rotations is not None:
+        zero = np.flatnonzero(~(np.linalg.norm(rotations, axis=1) > 0))
+        if len(zero):
+            attributes.fail(f"ROTATION of instance {int(zero[0])} is the zero quaternion")
+    matrices = []
+    for i in range(count):
+        m = np.eye(4)
+        linear = np.eye(3) if rotations is None else quaternion_matrix(rotations[i])
+        if "SCALE" in read:
+            linear = linear @ np.diag(read["SCALE"][i])
+        m[:3, :3] = linear
+        if "TRANSLATION" in read:
+            m[:3, 3] = read["TRANSLATION"][i]
+        matrices.append(m)
+    return matrices
