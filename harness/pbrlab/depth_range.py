@@ -25,7 +25,14 @@ clip space that every Unity shader sees (UNITY_MATRIX_P, _ZBufferParams, LinearE
 UNITY_REVERSED_Z); bounds keep GL's clip space, so every program (rasterised meshes, the
 ray-traced spheres' gl_FragDepth, Unity passes and their ZTest) is unchanged: they all read
 the one CameraFrame. Where the camera is inside geometry's bounds and its triangles reach
-the eye, near falls back to far * 1e-5.
+the eye, near falls back to far * 1e-5, and so it does when any object's material moves its
+vertices in a program of its own (a Unity `vertex:` function, a vertex/fragment pass): the
+mesh's bounds say nothing of where such a program puts it (normal extrusion pushed a sphere's
+front through a near plane set from its undisplaced box). A scene with a Unity shader keeps
+a near plane no farther than Unity's default camera's (UNITY_CAMERA_NEAR): its programs read
+the planes (`_ProjectionParams`, `_ZBufferParams`, `unity_CameraInvProjection`), and one that
+fades what lies near the near plane (Sebastian Lague's Stipple) faded the whole sphere away
+when near sat just in front of it.
 """
 
 from __future__ import annotations
@@ -33,7 +40,10 @@ from __future__ import annotations
 import numpy as np
 
 from . import meshes
-from .camera import CameraFrame, camera_frame
+from .camera import NEAR_FAR_MARGIN, CameraFrame, camera_frame
+
+# Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program sees
+UNITY_CAMERA_NEAR = 0.3
 
 # Above this many triangles an object is bounded by its box only (the triangle test is
 # numpy work over every triangle, about 1 s per million).
@@ -62,8 +72,14 @@ def scene_frame(scene) -> CameraFrame:
     frame = camera_frame(scene.camera, radius)
     if scene.camera.ortho_half_height is not None:
         return frame  # linear depth: (far - near) / 2^24 everywhere, precise already
+    if any(_moves_vertices(scene.materials.get(obj.material)) for obj in scene.objects):
+        return frame  # its geometry is where its program puts it, not where its bounds are
     depths = visible_depths(scene, frame)
-    return frame if depths is None else camera_frame(scene.camera, radius, depths)
+    if depths is None:
+        return frame
+    if any(getattr(scene.materials.get(obj.material), "unity", None) is not None for obj in scene.objects):
+        depths = (min(depths[0], UNITY_CAMERA_NEAR * NEAR_FAR_MARGIN), depths[1])
+    return camera_frame(scene.camera, radius, depths)
 
 
 def visible_depths(scene, frame: CameraFrame) -> tuple[float, float] | None:
@@ -85,6 +101,12 @@ def visible_depths(scene, frame: CameraFrame) -> tuple[float, float] | None:
             near = max(near, (float(np.linalg.norm(centre - frame.position)) - radius) * _cos_corner(frame))
         lo, hi = min(lo, near), max(hi, far)
     return None if hi < lo else (max(lo, 0.0), hi)
+
+
+def _moves_vertices(material) -> bool:
+    """Whether a program of the material's own places its vertices (bounds do not hold)."""
+    unity = getattr(material, "unity", None)
+    return unity is not None and unity.moves_vertices
 
 
 def _cos_corner(frame) -> float:

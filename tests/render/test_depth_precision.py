@@ -64,3 +64,36 @@ def test_the_planes_hug_what_the_camera_sees(gl_context):
     frame = scene_frame(scene)
     depth = 2.5  # of the plane's centre; the plane spans about +-0.05 of depth at 5 degrees
     assert depth * 0.9 < frame.near < depth - 0.06 and depth + 0.06 < frame.far < depth * 1.1
+
+
+MANUAL = __import__("pathlib").Path(__file__).resolve().parents[2] / "scenes" / "unity_manual"
+
+
+def _unity_scene(shader: str) -> dict:
+    """A unit sphere at 4 units drawn with one of the manual's Unity surface shaders."""
+    return {
+        "camera": {"position": [0.0, 0.0, 4.0], "target": [0.0, 0.0, 0.0], "up": [0, 1, 0],
+                   "fov_y_deg": 40.0, "size": [64, 64]},
+        "lights": [{"type": "directional", "direction": [0, 0, 1], "color": [1, 1, 1], "intensity": 1.0}],
+        "materials": {"m": {"surface": str(MANUAL / shader)}},
+        "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1.0}, "material": "m"}],
+    }
+
+
+def test_a_unity_program_that_moves_vertices_keeps_the_whole_scene_range():
+    """A vertex: function puts the mesh where it likes (normal extrusion by _Amount grows the
+    sphere), so the unit sphere's bounds (near 2.86) would clip its front: such a scene keeps
+    the range from the scene radius alone (near = max(far * 1e-5, 1e-4))."""
+    frame = scene_frame(parse_scene(_unity_scene("normal_extrusion.shader")))
+    assert frame.near == pytest.approx(max(frame.far * 1e-5, 1e-4))
+
+
+def test_a_unity_program_sees_a_near_plane_no_farther_than_unitys_default():
+    """Unity programs read the planes (_ProjectionParams.y is near): a scene of Unity shaders
+    keeps near at most Unity's default camera's 0.3 (here the bounds alone would give 2.86);
+    a scene of pbrlab's own materials keeps near at its bounds."""
+    frame = scene_frame(parse_scene(_unity_scene("simple.shader")))
+    assert frame.near == pytest.approx(0.3)
+    own = _unity_scene("simple.shader")
+    own["materials"]["m"] = {"workflow": "metallic", "albedo": [1, 1, 1], "metallic": 0.0, "smoothness": 0.5}
+    assert scene_frame(parse_scene(own)).near > 2.5
