@@ -31,10 +31,34 @@ SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
 # places vertices a few ulp apart (mul(M, v) vs M * v, fused differently), which moves
 # interpolated values by up to ~1e-5 relative (README, "Unity shaders"); bound 1e-4.
 AGREEMENT_BOUND = 1e-4
+# Rendered shaders that draw nothing with their Properties' defaults in the corpus scene, each
+# as Unity would: a blank pair is checked blank in both languages (and fails once it draws,
+# so this list only shrinks); every other rendered shader must draw something.
+BLANK_BY_DEFAULT = {
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUIRoundedRect.shader":
+        "_Rect and _BorderWidths are zero (the IMGUI sets them): a rectangle of no size",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUIRoundedRectWithColorPerBorder.shader":
+        "_Rect and _BorderWidths are zero (the IMGUI sets them): a rectangle of no size",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUITextureClipText.shader":
+        "alpha times _GUIClipTexture, which the IMGUI binds and no Property declares: 0",
+    "builtin-2019.4/DefaultResourcesExtra/Flare.shader":
+        "_MainTex defaults to black and the pass adds it (Blend One One)",
+    "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Splats/Standard-BaseGen.shader":
+        "weights from _Control, which the terrain binds and no Property declares: 0",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/GlitchSurface.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/ParticleSurfaceStandard.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/TrailSurface.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/ronja-tutorials__ShaderTutorials/Assets/038_Dissolve/Dissolve.shader":
+        "clip(tex2D(_DissolveTex).r - _DissolveAmount): the texture defaults to black, the amount to 0.5",
+}
 
 
 def test_corpus_lists_every_shader_once():
     assert sorted(EXPECTED) == sorted(SHADERS)
+    assert all(EXPECTED[s] == "rendered" for s in BLANK_BY_DEFAULT)
 
 
 @pytest.mark.parametrize("shader", SHADERS)
@@ -54,6 +78,10 @@ def test_corpus_shader_renders_or_is_refused_by_name(shader):
         assert all(o.status == "rendered" for o in outcomes.values()), \
             {lang: o.message[:300] for lang, o in outcomes.items()}
         assert corpus.agreement(outcomes["glsl"].image, outcomes["hlsl"].image) <= AGREEMENT_BOUND
+        # and it drew something (the background is 0; an all-zero pair agrees too, as Stipple's
+        # did when a near plane at the sphere made it clip every pixel), or is known blank
+        drew = [bool((o.image != 0).any()) for o in outcomes.values()]
+        assert drew == [shader not in BLANK_BY_DEFAULT] * len(drew), BLANK_BY_DEFAULT.get(shader, "drew nothing")
     else:
         # refused in both, each naming what is missing (the languages may name different parts:
         # the first error of each compiler); one of them names what the pinned outcome says
