@@ -51,6 +51,7 @@
 #include "pbr/brdf/v_kelemen.glsl"
 #include "pbr/brdf/f_schlick.glsl"
 #include "pbr/brdf/f_dielectric.glsl"
+#include "pbr/brdf/btdf_walter.glsl"
 #include "pbr/brdf/f_iridescence.glsl"
 #include "pbr/brdf/d_charlie.glsl"
 #include "pbr/brdf/v_charlie.glsl"
@@ -62,6 +63,7 @@
 #include "pbr/shading/clearcoat.glsl"
 #include "pbr/shading/anisotropy.glsl"
 #include "pbr/shading/sheen.glsl"
+#include "pbr/shading/transmission.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"

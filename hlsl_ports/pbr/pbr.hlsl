@@ -52,6 +52,7 @@
 #include "pbr/brdf/v_kelemen.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"
 #include "pbr/brdf/f_dielectric.hlsl"
+#include "pbr/brdf/btdf_walter.hlsl"
 #include "pbr/brdf/f_iridescence.hlsl"
 #include "pbr/brdf/d_charlie.hlsl"
 #include "pbr/brdf/v_charlie.hlsl"
@@ -63,6 +64,7 @@
 #include "pbr/shading/clearcoat.hlsl"
 #include "pbr/shading/anisotropy.hlsl"
 #include "pbr/shading/sheen.hlsl"
+#include "pbr/shading/transmission.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"

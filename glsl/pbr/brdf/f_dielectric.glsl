@@ -1,6 +1,7 @@
 // pbr/brdf/f_dielectric.glsl: exact unpolarised Fresnel reflectance of a dielectric interface.
 //
 // Provides: float pbr_F_Dielectric(float cosTheta, float eta)
+//           float pbr_T_Dielectric(float cosTheta, float eta)
 // Include:  "pbr/brdf/f_dielectric.glsl" (path relative to glsl/)
 // Config macros read: none.
 //
@@ -20,6 +21,13 @@
 // interface, no reflection), by flooring g + c at PBR_FLT_MIN. |cosTheta| is capped at 1,
 // and F at 1 (at grazing (g - c)/(g + c) = 1 rounds to 1 + 2 ulp, found by the sweep).
 // Bit-identical elsewhere. Domain eta in [1/16, 16] (eta² must not overflow).
+// pbr_T_Dielectric = 1 - F, the transmittance, from the same amplitudes without the
+// subtraction (1 - r² = 4ab / (a + b)² for r = (a - b)/(a + b)), so it keeps its relative
+// precision where F -> 1 (near the critical angle 1 - F cancelled to 1 % in float32):
+//   T = ½ (4 c g / (c + g)² + 4 eta² c g / (eta² c + g)²)   (s and p),
+// g = eta cosθt as above; T = 0 under total internal reflection and at c = 0 (eta != 1);
+// eta = 1 with c = 0 is 0/0, decided 1 (F's decided 0). Near g -> 0, dT/dc is unbounded
+// as dF/dc is: that ill-conditioning is physical.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_DIELECTRIC_GLSL
 #define PBR_BRDF_F_DIELECTRIC_GLSL
@@ -37,6 +45,19 @@ float pbr_F_Dielectric(float cosTheta, float eta) {
     float a = gMinusC / gPlusC;
     float b = (c * (g + c) - 1.0) / (c * gMinusC + 1.0);
     return min(0.5 * a * a * (1.0 + b * b), 1.0);
+}
+
+float pbr_T_Dielectric(float cosTheta, float eta) {
+    if (eta == 1.0) return 1.0;  // no interface: everything passes (c = 0 would be 0/0)
+    float c = min(abs(cosTheta), 1.0);
+    float eta2 = eta * eta;
+    float g2 = (eta - 1.0) * (eta + 1.0) + c * c;
+    if (g2 <= 0.0) return 0.0;  // total internal reflection
+    float g = sqrt(g2);
+    float cg4 = 4.0 * c * g;
+    float s = cg4 / max((c + g) * (c + g), PBR_FLT_MIN);
+    float p = eta2 * cg4 / max((eta2 * c + g) * (eta2 * c + g), PBR_FLT_MIN);
+    return min(0.5 * (s + p), 1.0);
 }
 
 #endif // PBR_BRDF_F_DIELECTRIC_GLSL

@@ -126,6 +126,9 @@ def dv_arguments(parts: str, low: bool = False) -> str:
 
 
 DV_ARGUMENTS = dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha")
+# called with n, v, l of light through the surface (domains.transmission_geometry)
+TRANSMISSION_FUNCTIONS = ("pbr_BTDF_Walter_GGX_cosine", "pbr_BTDF_Walter_GGX", "pbr_transmission_punctual",
+                          "pbr_transmission_thin_punctual", "pbr_mirror_through_surface", "pbr_refraction_direction")
 DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
                 "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
 
@@ -261,6 +264,16 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_coupled_diffuse_color", "diffuseColor:unit3 f0:unit3 specularAlbedo:unit3", _unit("coupled diffuse")),
     _f("pbr_F_Dielectric", "c:cosine eta:eta", F),
     _f("pbr_F_Iridescence", "n1:eta n2:eta c:cosine d:thickness f0:unit3", F),
+    # light through a surface (brdf/btdf_walter.glsl, shading/transmission.glsl)
+    _f("pbr_T_Dielectric", "c:cosine eta:eta", _unit("T")),
+    _f("pbr_BTDF_Walter_GGX_cosine", "n:dir v:dir l:dir alpha:alpha eta:eta", _ge0("ft |n.l|")),
+    _f("pbr_transmission_punctual", "n:dir v:dir l:dir radiance:radiance3 base:unit3 r:roughness eta:eta", COLOUR),
+    _f("pbr_transmission_thin_punctual", "n:dir v:dir l:dir radiance:radiance3 base:unit3 r:roughness", COLOUR),
+    _f("pbr_BTDF_Walter_GGX", "n:dir v:dir l:dir alpha:alpha eta:eta", _ge0("ft")),
+    _f("pbr_mirror_through_surface", "n:dir l:dir", Bound("finite", -np.inf, np.inf)),
+    _f("pbr_refraction_direction", "n:dir v:dir eta:eta", Bound("finite", -np.inf, np.inf)),
+    _f("pbr_volume_attenuation", "d:distance c:unit3 D:distance", _unit("T")),
+    _f("pbr_beer_lambert", "c:unit x:distance", _unit("T")),
     # S of the film's optical path: |S| <= (row sums of the XYZ -> Rec. 709 matrix 5.28) · 1.0011
     _f("pbr_iridescence_sensitivity", "opd:thickness shift:phase3", Bound("|S| <= 5.3", -5.3, 5.3)),
     _f("pbr_iridescence_mix", "F:unit3 Fi:unit3 t:unit", F),

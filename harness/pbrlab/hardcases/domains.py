@@ -127,6 +127,11 @@ KINDS: dict[str, Kind] = {k.name: k for k in (
         Edge("huge", 1e30, "phase² would overflow float32: the optical path must be capped"),
         Edge("negative", -100.0, "a texture or slider below 0: no physical film"),
     ), (-0.0, 1e-30, 1.0, 1e5, 1e10, -1e30), _uniform(0.0, 1200.0)),
+    Kind("distance", 1.0, (
+        Edge("0", 0.0, "no path through the volume: nothing absorbed, even by a black attenuation colour"),
+        Edge("denormal", DENORMAL, "a denormal path flushes to 0 on many GPUs: d / D may be 0 or not"),
+        Edge("huge", 1e30, "d / D overflows float32 for small D: the exponent must saturate to 0, never NaN"),
+    ), (-0.0, -1.0, 1e-30, 3e38), _log_uniform(1e-3, 1e3)),
     Kind("phase", 0.0, (
         Edge("0", 0.0, "no phase shift: S at its largest, |S| up to 1.2 per channel"),
         Edge("pi", float(np.float32(np.pi)), "a half-wave shift: S changes sign"),
@@ -198,4 +203,19 @@ def shading_geometry(rng: np.random.Generator, count: int) -> dict[str, np.ndarr
     s = (which == 8) | (which == 9); n[s] = (0.0, 0.0, 1.0)                       # exact axis normal
     s = which == 9; l[s, 2] = 0.0                                                 # NdotL = 0 exactly
     l[s] /= np.maximum(np.linalg.norm(l[s], axis=-1, keepdims=True), 1e-30)
+    return {"n": n.astype(np.float32), "v": v.astype(np.float32), "l": l.astype(np.float32)}
+
+
+def transmission_geometry(rng: np.random.Generator, count: int) -> dict[str, np.ndarray]:
+    """n, v, l for light through a surface: shading_geometry's with l mirrored through the
+    surface's plane (lights mostly below it, its hard configurations kept in mirror image),
+    and a third of them replaced, half each, by the straight line l = -v (an index-matched
+    interface's Dirac) and l within 1e-6 of it."""
+    g = shading_geometry(rng, count)
+    n, v, l = (g[k].astype(np.float64) for k in "nvl")
+    unit_n = n / np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-30)
+    l = l - 2.0 * np.einsum("ij,ij->i", l, unit_n)[:, None] * unit_n
+    which = rng.integers(0, 6, count)
+    s = which == 0; l[s] = -v[s]                                                  # straight through
+    s = which == 1; l[s] = -v[s] + rng.normal(0.0, 1e-6, (int(s.sum()), 3))       # nearly so
     return {"n": n.astype(np.float32), "v": v.astype(np.float32), "l": l.astype(np.float32)}

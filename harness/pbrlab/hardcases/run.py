@@ -162,6 +162,8 @@ def sweep_inputs(function: catalogue.Function, count: int, seed: int) -> dict[st
     if (function.name in ("pbr_brdf_standard", "pbr_shade_punctual", "pbr_clearcoat_punctual", *catalogue.DV_FUNCTIONS)
             or function.name.startswith("pbr_unity_brdf")):
         out.update(_shading_geometry(count))
+    elif function.name in catalogue.TRANSMISSION_FUNCTIONS:
+        out.update(domains.transmission_geometry(np.random.default_rng(20250506), count))
     elif any(a.kind == "dir" for a in function.args):
         out["n"], out["h"] = _directions(rng, count)
     for a in function.args:
