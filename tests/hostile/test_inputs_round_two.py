@@ -105,3 +105,34 @@ def test_a_surface_file_with_a_quote_in_its_name_renders(tmp_path, gl_context, l
     assert f"{stem}{suffix}:3:" in str(failure.value)
     assert "pbrlab-surface" not in str(failure.value)  # the alias never shows
     census["surface file name", "handled"] += 1
+
+
+def _unity_scene(tmp_path, surface: str):
+    scene = base_scene()
+    scene["camera"]["size"] = [16, 12]
+    scene["materials"]["m"] = {"surface": surface}
+    path = tmp_path / f"scene-{len(list(tmp_path.iterdir()))}.json"
+    path.write_text(json.dumps(scene))
+    return load_scene(path)
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_unity_shader_with_a_quote_in_its_name_renders(tmp_path, gl_context, language, census):
+    """The generated program's include of the port (GLSL) and its #line "file" (glslang, HLSL)
+    were built from the raw name; a port-unity port (GLSL) was included by its raw name."""
+    from pbrlab.render import render_scene
+    (tmp_path / 'u"nity.shader').write_text(SHADER)
+    (tmp_path / "plain.shader").write_text(SHADER)
+    odd = render_scene(_unity_scene(tmp_path, 'u"nity.shader'), gl_context, language=language).linear
+    plain = render_scene(_unity_scene(tmp_path, "plain.shader"), gl_context, language=language).linear
+    np.testing.assert_array_equal(odd, plain)
+    if language == "glsl":
+        port = tmp_path / 'p"ort.glsl'
+        assert cli.main(["port-unity", str(tmp_path / 'u"nity.shader'), "-o", str(port)]) == 0
+        ported = render_scene(_unity_scene(tmp_path, port.name), gl_context).linear
+        np.testing.assert_array_equal(ported, plain)
+    (tmp_path / 'u"nity.shader').write_text(SHADER.replace("o.Albedo = tex2D", "o.Albedo = undeclared_colour * tex2D"))
+    with pytest.raises(PbrlabError, match="undeclared_colour") as failure:
+        render_scene(_unity_scene(tmp_path, 'u"nity.shader'), gl_context, language=language)
+    assert 'u"nity.shader:8' in str(failure.value) and "pbrlab-" not in str(failure.value), failure.value
+    census["surface file name", "handled"] += 1
