@@ -212,10 +212,12 @@ class Transaction:
         ``savefig``): an OSError it raises (a full disk, an I/O error) becomes a PbrlabError
         naming ``target``, and a PNG must end with its IEND trailer before the commit."""
         target = Path(target)
+        tmp = self.temp(target)
         try:
-            yield self.temp(target)
-        except OSError as exc:
-            raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}") from None
+            yield tmp
+        except OSError as exc:  # the message names the target, never the temporary
+            reason = str(exc.strerror or exc).replace(str(tmp), str(target))
+            raise PbrlabError(f"cannot write {target}: {reason}") from None
         if extension(target).lower() == ".png":
             self.verify(target, lambda tmp: check_png_complete(tmp, target))
 
