@@ -9,6 +9,7 @@ temporary. A bench run takes minutes: the writers are tested directly with small
 import builtins
 import errno
 import io
+import os
 import json
 from pathlib import Path
 
@@ -194,3 +195,28 @@ def test_a_figure_cut_short_without_an_error_is_caught_by_its_end_marker(tmp_pat
         outputs.write_figure(target, ShortFigure())
     assert target.read_bytes() == OLD and _ours(tmp_path) == []
     census["output fault", "refused cleanly"] += 1
+
+
+def test_a_real_full_disk_keeps_the_previous_bench_report(tmp_path, monkeypatch, census):
+    """The reported fault on a real file system: a 64 KiB tmpfs (root only), the previous
+    report on it, then filled to within a few kilobytes of full."""
+    import subprocess
+    disk = tmp_path / "tiny"
+    disk.mkdir()
+    if os.geteuid() != 0 or subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(disk)],
+                                           capture_output=True).returncode != 0:
+        pytest.skip("mounting a 64 KiB tmpfs needs root (the simulated full disk tests cover this)")
+    try:
+        monkeypatch.setattr(report, "markdown", _markdown)
+        doc = _doc()
+        paths = report.report_paths(doc, disk)
+        for path in paths:
+            path.write_bytes(OLD)
+        (disk / "filler").write_bytes(b"\0" * (64 * 1024 - 4 * 4096 - 6000))
+        with pytest.raises(PbrlabError, match=f"cannot write {disk}/.*: No space left on device"):
+            report.write_report(doc, disk)
+        assert [p.read_bytes() for p in paths] == [OLD] * len(paths)
+        assert _ours(disk) == []
+        census["output fault", "refused cleanly"] += 1
+    finally:
+        subprocess.run(["umount", str(disk)], check=False)
