@@ -2,7 +2,12 @@
 thousands of Float properties. Reading the block counted each property's line from the
 start of the block (quadratic: 6.3 s of 7 for 20,000 properties, 0.45 s for 5,000); it
 now counts each newline once. The shader renders as the same shader with its one used
-property alone."""
+property alone.
+
+What remains grows with the program, not the properties (llvmpipe, Mesa 22.3, shader cache
+off, one sphere, GLSL): reading 1,000 / 2,000 / 4,000 properties in 1,000 / 2,000 / 4,000
+statements compiles in 2.2 / 10.7 / 29.5 s at the first draw, and 4,000 statements reading
+one property take 38 s: the driver's compile time, which no property limit would bound."""
 
 import numpy as np
 

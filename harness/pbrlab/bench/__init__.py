@@ -32,7 +32,8 @@ part: minus the same render with no objects) and image error against the HIGH ti
 for each test scene, its programs specialised and full, in GLSL and HLSL, compiled for the
 three AMD families (instructions, VGPRs, waves per SIMD).
 
-Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``.
+Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``,
+written all or nothing (``report.write_report``: a failed write keeps the previous report whole).
 
 JSON schema ``pbrlab-bench/2`` (checked by ``report.validate``)::
 
