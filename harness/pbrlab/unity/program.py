@@ -46,6 +46,8 @@ _NOT_IN_INCLUDE = re.compile(r'["\\%\x00-\x1f\x7f]')
 def _port_include(path) -> str:
     """The include name of the port of ``path`` (one name per file, any file name)."""
     return _PORT_INCLUDE.format(_NOT_IN_INCLUDE.sub(lambda m: f"%{ord(m.group(0)):02X}", str(path)))
+
+
 # Unity's _SpecColor when a shader's Properties lack it: Unity's legacy shaders' default
 # ("Specular Color", Color) = (0.5, 0.5, 0.5, 1).
 DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
@@ -67,7 +69,8 @@ def program_include(shader) -> tuple[str, dict]:
     includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
     does), each include line relinked to its port, so an include's Cg goes through the same
     type pass and renames as the program's, and errors name the original file and line."""
-    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
+    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written (as a
+        # virtual file: its own name may be one an #include line cannot carry)
         name = _port_include(shader.path)
         return f'#include "{name}"', {name: shaders.VirtualFile(shaders.read_source(shader.path),
                                                                 str(shader.path), 1)}
