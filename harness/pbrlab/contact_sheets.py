@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import charts
+from . import charts, outputs
 
 PIXELS_PER_SPHERE = 96  # charts._grid_scene's default: one cell per sphere
 TERM_TITLES = {"specular_d": "D: normal distribution", "specular_v": "V: visibility",
@@ -124,8 +124,10 @@ def write_sheet(path: Path, name: str, srgb8: np.ndarray, status: str) -> None:
     total = fig_h + footer_in + title_in
     fig.suptitle(info.title, fontsize=12, fontweight="bold", y=1 - 0.08 / total, va="top")
     fig.tight_layout(rect=(0, footer_in / total, 1, 1 - title_in / total))
-    fig.savefig(path)
-    plt.close(fig)
+    try:
+        outputs.write_figure(path, fig)  # all or nothing: a full disk keeps the old sheet
+    finally:
+        plt.close(fig)
 
 
 def write_index(path: Path, entries: list[dict]) -> None:
@@ -146,4 +148,4 @@ def write_index(path: Path, entries: list[dict]) -> None:
             "img{max-width:100%;border:1px solid #ccc}.ok{color:#176f2c}.bad{color:#a11;font-weight:bold}"
             ".files{font-size:90%;color:#555}section{margin-bottom:2.5em}</style>"
             "<h1>pbrlab demo</h1>" + "\n".join(blocks))
-    path.write_text(page, encoding="utf-8")
+    outputs.write_file(path, page)

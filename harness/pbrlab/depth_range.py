@@ -33,6 +33,11 @@ a near plane no farther than Unity's default camera's (UNITY_CAMERA_NEAR): its p
 the planes (`_ProjectionParams`, `_ZBufferParams`, `unity_CameraInvProjection`), and one that
 fades what lies near the near plane (Sebastian Lague's Stipple) faded the whole sphere away
 when near sat just in front of it.
+
+Before any of that, ``check_float32_reach`` refuses (naming the object) a scene the GPU
+cannot draw: bounds finite in float64 but not in float32 (a mesh of size 1e30 scaled by
+1e30), or an object so far from the camera that the squared distances the shaders take in
+float32 overflow (a sphere at 1e30 drew as a dim screen-filling disc).
 """
 
 from __future__ import annotations
@@ -41,6 +46,8 @@ import numpy as np
 
 from . import meshes
 from .camera import NEAR_FAR_MARGIN, CameraFrame, camera_frame
+from .errors import SceneError
+from .json_input import FLOAT32_MAX
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program sees
 UNITY_CAMERA_NEAR = 0.3
@@ -66,10 +73,36 @@ def scene_radius(scene) -> float:
     return radius
 
 
+def check_float32_reach(scene, frame: CameraFrame) -> None:
+    """Refuse, naming the object, one whose world-space bounds are not finite in float32, or
+    whose farthest point is beyond ``reach``: the shaders square distances from the camera in
+    float32 (the ray-traced sphere |(camera - centre) x D|^2 with the unnormalised pixel ray
+    D, a mesh's view and light vectors in normalize()), which overflow past
+    sqrt(FLOAT32_MAX) / |D| (|D| <= |forward + right + up|, the frustum's corner ray)."""
+    corner_ray = max(1.0, float(np.linalg.norm(frame.forward + frame.right + frame.up)))
+    reach = float(np.sqrt(FLOAT32_MAX)) / corner_ray
+    for index, obj in enumerate(scene.objects):
+        name = obj.where or f"objects[{index}]"
+        with np.errstate(over="ignore", invalid="ignore"):
+            box = _object_box(obj)
+            largest = float(np.abs(box).max())
+            farthest = float(np.linalg.norm(box - frame.position, axis=1).max())
+        if not largest <= FLOAT32_MAX:
+            raise SceneError(f"{name}: its world-space bounds reach {largest:.3g}: finite in float64, "
+                             f"not in float32 (|x| <= {FLOAT32_MAX:.8g}), which the GPU computes in "
+                             "(a huge mesh or scale)")
+        if not farthest <= reach:
+            raise SceneError(f"{name}: reaches {farthest:.3g} from the camera; the shaders square "
+                             f"distances in float32, which overflows beyond {reach:.3g} at this "
+                             "camera's field of view (move the object or the camera nearer, or "
+                             "scale the scene down)")
+
+
 def scene_frame(scene) -> CameraFrame:
     """The camera frame every renderer of ``scene`` uses: planes from the visible bounds."""
     radius = scene_radius(scene)
     frame = camera_frame(scene.camera, radius)
+    check_float32_reach(scene, frame)
     if scene.camera.ortho_half_height is not None:
         return frame  # linear depth: (far - near) / 2^24 everywhere, precise already
     if any(_moves_vertices(scene.materials.get(obj.material)) for obj in scene.objects):

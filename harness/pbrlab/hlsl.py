@@ -28,6 +28,7 @@ import re
 import shutil
 import subprocess
 import tempfile
+import urllib.parse
 from pathlib import Path
 
 from .errors import PbrlabError, ShaderCompileError
@@ -56,7 +57,24 @@ def tool(name: str) -> str:
     return path
 
 
+# A file name a #line "..." string cannot carry (glslang reads no escapes in it: a double
+# quote ends it, a backslash is refused) is written percent-encoded behind this marker, and
+# map_messages decodes it: messages name the file as it is.
+_ENCODED_NAME = "pbrlab-encoded-name="
+_NOT_IN_LINE_STRING = re.compile(r'["\\\x00-\x1f\x7f]')
+_ENCODED = re.compile(re.escape(_ENCODED_NAME) + r"([\w.~/%-]+)")  # quote(safe="/") writes these
+
+
+def line_directive(line: int, display: str) -> str:
+    """``#line LINE "display"`` for glslang's HLSL front end, any file name made safe."""
+    if _NOT_IN_LINE_STRING.search(display):
+        display = _ENCODED_NAME + urllib.parse.quote(display, safe="/")
+    return f'#line {line} "{display}"'
+
+
 def _display(path: str, name: str, include_dirs) -> str:
+    if path.startswith(_ENCODED_NAME):
+        path = urllib.parse.unquote(path[len(_ENCODED_NAME):])
     if Path(path).name == _ENTRY_NAME:
         return name
     p = Path(path)
@@ -79,7 +97,8 @@ def map_messages(log: str, name: str, include_dirs=()) -> str:
             out.append(f"{_display(m.group(2), name, include_dirs)}:{m.group(3)}: {kind}: {m.group(4)}")
         elif line and not line.endswith(_ENTRY_NAME) and "SPIR-V is not generated" not in line \
                 and not re.match(r"^ERROR: \d+ compilation errors", line):
-            out.append(line.replace(_ENTRY_NAME, name))
+            out.append(_ENCODED.sub(lambda e: urllib.parse.unquote(e.group(1)),
+                                    line.replace(_ENTRY_NAME, name)))
     return "\n".join(out)
 
 

@@ -24,7 +24,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import targets
+from . import outputs, targets
 from .errors import PbrlabError
 from .programs import program_from_templates
 from .reference import brdf as ref_brdf
@@ -189,7 +189,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.write_dfg:
         DFG_LUT_FILE.parent.mkdir(exist_ok=True)
-        np.save(DFG_LUT_FILE, compute_dfg_lut())
+        outputs.write_npy(DFG_LUT_FILE, compute_dfg_lut())
         print(DFG_LUT_FILE)
     return 0
 

@@ -86,20 +86,11 @@ def _write(path, pixels: np.ndarray, fmt: str, attributes: dict, tx=None) -> Non
     tx.verify(target, lambda tmp: _verify_readback(tmp, pixels, target))
 
 
-# A PNG ends with its IEND chunk: length 0, type "IEND", CRC AE 42 60 82 (PNG spec 11.2.5).
-# libpng reads a file truncated inside it without complaint, so the trailer is checked.
-_PNG_TRAILER = b"\x00\x00\x00\x00IEND\xaeB`\x82"
-
-
 def _verify_readback(tmp: Path, pixels: np.ndarray, target: Path) -> None:
     """The file on disk decodes to exactly ``pixels`` (bit for bit: NaN, -0 included) and,
     for PNG, ends with its IEND trailer."""
     if tmp.suffix.lower() == ".png":
-        with open(tmp, "rb") as f:
-            f.seek(max(0, f.seek(0, 2) - len(_PNG_TRAILER)))
-            if f.read() != _PNG_TRAILER:
-                raise PbrlabError(f"cannot write {target}: the file written is cut short (no PNG "
-                                  "end marker), the disk may be full; the old file is kept")
+        outputs.check_png_complete(tmp, target)
     try:
         back = read_image(tmp)
     except PbrlabError as exc:

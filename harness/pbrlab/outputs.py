@@ -163,6 +163,20 @@ def write_bytes_checked(path: Path, data: bytes, target: Path) -> None:
         raise PbrlabError(f"cannot write {target}: {size} of {len(data)} bytes reached the disk")
 
 
+# A PNG ends with its IEND chunk: length 0, type "IEND", CRC AE 42 60 82 (PNG spec 11.2.5).
+# libpng reads a file truncated inside it without complaint, so the trailer is checked.
+PNG_TRAILER = b"\x00\x00\x00\x00IEND\xaeB`\x82"
+
+
+def check_png_complete(tmp: Path, target: Path) -> None:
+    """Raise PbrlabError naming ``target`` when the PNG at ``tmp`` lacks its end marker."""
+    with open(tmp, "rb") as f:
+        f.seek(max(0, f.seek(0, 2) - len(PNG_TRAILER)))
+        if f.read() != PNG_TRAILER:
+            raise PbrlabError(f"cannot write {target}: the file written is cut short (no PNG "
+                              "end marker), the disk may be full; the old file is kept")
+
+
 class Transaction:
     """Temporaries for a set of targets, renamed onto them together by ``commit``."""
 
@@ -186,8 +200,26 @@ class Transaction:
         self.checks[Path(target)].append(check)
 
     def write_text(self, target, text: str) -> None:
+        self.write_bytes(target, text.encode("utf-8"))
+
+    def write_bytes(self, target, data: bytes) -> None:
         target = Path(target)
-        write_bytes_checked(self.temp(target), text.encode("utf-8"), target)
+        write_bytes_checked(self.temp(target), data, target)
+
+    @contextlib.contextmanager
+    def writing(self, target) -> Iterator[Path]:
+        """The temporary path of ``target`` for a writer that takes a path (matplotlib's
+        ``savefig``): an OSError it raises (a full disk, an I/O error) becomes a PbrlabError
+        naming ``target``, and a PNG must end with its IEND trailer before the commit."""
+        target = Path(target)
+        tmp = self.temp(target)
+        try:
+            yield tmp
+        except OSError as exc:  # the message names the target, never the temporary
+            reason = str(exc.strerror or exc).replace(str(tmp), str(target))
+            raise PbrlabError(f"cannot write {target}: {reason}") from None
+        if extension(target).lower() == ".png":
+            self.verify(target, lambda tmp: check_png_complete(tmp, target))
 
     def commit(self) -> None:
         for target, tmp in self.temps.items():
@@ -231,6 +263,35 @@ def transaction(targets: Iterable, inputs: Iterable = ()) -> Iterator[Transactio
         tx.commit()
     finally:
         tx.abort()  # after a commit only temporaries that were never renamed remain
+
+
+def write_file(target, data, inputs: Iterable = ()) -> None:
+    """Write ``data`` (str as UTF-8, or bytes) to ``target`` as a one-file transaction."""
+    with transaction([target], inputs) as tx:
+        tx.write_bytes(target, data.encode("utf-8") if isinstance(data, str) else data)
+
+
+def write_npy(target, array) -> None:
+    """Save a NumPy array to ``target`` (.npy) as a one-file transaction."""
+    import io
+
+    import numpy as np
+    buffer = io.BytesIO()
+    np.save(buffer, array)
+    write_file(target, buffer.getvalue())
+
+
+def write_figure(target, figure, inputs: Iterable = (), **savefig) -> None:
+    """Save a matplotlib figure to ``target`` as a one-file transaction, in the format of
+    the target's extension (the temporary file's name would not say it to every backend)."""
+    with transaction([target], inputs) as tx:
+        write_figure_in(tx, target, figure, **savefig)
+
+
+def write_figure_in(tx: Transaction, target, figure, **savefig) -> None:
+    """Save a matplotlib figure to ``target`` inside the transaction ``tx``."""
+    with tx.writing(target) as tmp:
+        figure.savefig(tmp, format=extension(Path(target)).lstrip(".").lower() or None, **savefig)
 
 
 def remove_live_temps() -> None:

@@ -26,7 +26,13 @@ and ``mul(M, v)`` in HLSL computes the same ``M v`` as ``M * v`` in GLSL
 
 from __future__ import annotations
 
+import atexit
+import hashlib
+import os
+import re
+import shutil
 import struct
+import tempfile
 from importlib import resources
 from pathlib import Path
 
@@ -85,10 +91,46 @@ def _defines_block(defines: dict) -> str:
     return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
 
 
-def _fill(text: str, defines: dict, surface: Path | None, display: str, line_marker: bool) -> str:
-    """The template with its defines and surface include; with ``line_marker``, a #line
-    after the defines keeps the template's own line numbers in error messages."""
-    surface_line = f'#include "{surface.name}"' if surface else f'#include "{DEFAULT_SURFACE}"'
+# A file name an #include line cannot carry: "..." has no escapes (C's header names, glslang),
+# and a line ends at a newline. Such a surface (we"ird.glsl) is included through a symbolic
+# link with a plain name in a folder of this process's own (_surface_alias).
+_NOT_IN_INCLUDE = re.compile(r'["\\\x00-\x1f\x7f]')
+SURFACE_ALIAS = "pbrlab-surface"  # + the surface's suffix
+_alias_root: list[Path] = []
+
+
+def _surface_alias(surface: Path) -> Path:
+    """A folder holding SURFACE_ALIAS + suffix, a link to ``surface``: one per resolved file,
+    under a temporary folder removed when the process exits. Both include expanders resolve
+    the link to the file itself, so messages and the cache's file identities name the
+    user's file, never the link."""
+    if not _alias_root:
+        root = Path(tempfile.mkdtemp(prefix="pbrlab-surfaces-"))
+        atexit.register(shutil.rmtree, root, True)
+        _alias_root.append(root)
+    real = surface.resolve()
+    folder = _alias_root[0] / hashlib.sha256(os.fsencode(real)).hexdigest()[:16]
+    link = folder / (SURFACE_ALIAS + surface.suffix)
+    if not link.is_symlink():
+        folder.mkdir(exist_ok=True)
+        link.symlink_to(real)
+    return folder
+
+
+def _surface_include(surface: Path | None) -> tuple[str, list[Path]]:
+    """(the name the template includes the surface function by, the include folders)."""
+    if surface is None:
+        return DEFAULT_SURFACE, [TEMPLATES]
+    if _NOT_IN_INCLUDE.search(surface.name):
+        return SURFACE_ALIAS + surface.suffix, [_surface_alias(surface), TEMPLATES, surface.parent]
+    return surface.name, [TEMPLATES, surface.parent]
+
+
+def _fill(text: str, defines: dict, include: str, display: str, line_marker: bool) -> str:
+    """The template with its defines and surface include (``include``: its name, from
+    _surface_include); with ``line_marker``, a #line after the defines keeps the template's
+    own line numbers in error messages."""
+    surface_line = f'#include "{include}"'
     lines = text.splitlines()
     for i, line in enumerate(lines):
         if line.strip() == "//@DEFINES":
@@ -103,8 +145,8 @@ def _fill(text: str, defines: dict, surface: Path | None, display: str, line_mar
 
 def template_source(name: str, defines: dict, surface: Path | None = None) -> shaders.Source:
     """A GLSL harness template with its defines and surface function, includes expanded."""
-    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface,
+    include, include_dirs = _surface_include(surface)
+    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, include,
                  f"pbrlab/templates/{name}", line_marker=False)
     return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
 
@@ -112,8 +154,8 @@ def template_source(name: str, defines: dict, surface: Path | None = None) -> sh
 def hlsl_template_text(name: str, defines: dict, surface: Path | None = None) -> tuple[str, list]:
     """(HLSL text, include directories) of an HLSL pixel-shader template with its defines
     and surface function; glslang resolves the includes (then ``hlsl.HLSL_ROOT``)."""
-    include_dirs = [TEMPLATES] + ([surface.parent] if surface is not None else [])
-    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, surface,
+    include, include_dirs = _surface_include(surface)
+    text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, include,
                  f"pbrlab/templates/{name}", line_marker=True)
     return text, include_dirs
 

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import outputs
 from . import pyrender_check as pc
 
 PANEL_TITLES = ("pyrender 0.1.45 (its own output, gamma 2.2)",
@@ -55,5 +56,7 @@ def write(path: Path, results: dict) -> None:
     fig.suptitle("Cross-check against pyrender: columns metallic (m) × roughness (r), rows base colour",
                  fontsize=10)
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    try:
+        outputs.write_figure(path, fig)  # all or nothing: a full disk keeps the old figure
+    finally:
+        plt.close(fig)

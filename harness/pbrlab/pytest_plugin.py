@@ -37,7 +37,7 @@ from string import Template
 
 import pytest
 
-from . import gl, goldens, images
+from . import gl, goldens, outputs
 from .compare import TOLERANCE_PROFILES, DiffResult, Tolerance
 from .errors import PbrlabError
 
@@ -190,8 +190,8 @@ class GoldenFixture:
         }
         records = self.settings.records_dir
         records.mkdir(parents=True, exist_ok=True)
-        with images.atomic_output(records / f"{secrets.token_hex(8)}.json") as tmp:
-            tmp.write_text(json.dumps(record, indent=1, default=str), encoding="utf-8")
+        outputs.write_file(records / f"{secrets.token_hex(8)}.json",
+                           json.dumps(record, indent=1, default=str))
 
 
 @pytest.fixture(scope="session")
@@ -297,5 +297,4 @@ def write_index(path: Path, failures: list[dict]) -> None:
                         .read_text(encoding="utf-8"))
     page = template.substitute(count=len(failures), rows="\n".join(rows))
     path.parent.mkdir(parents=True, exist_ok=True)
-    with images.atomic_output(path) as tmp:
-        tmp.write_text(page, encoding="utf-8")
+    outputs.write_file(path, page)

@@ -34,6 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import outputs
 from .errors import PbrlabError
 
 SAMPLE_VIEWER_DIR = Path(os.environ.get("PBRLAB_SAMPLE_VIEWER_DIR")
@@ -165,5 +166,5 @@ def write_radiance_hdr(path, rgb: np.ndarray) -> np.ndarray:
     rgbe = rgbe_encode(rgb)
     height, width = rgbe.shape[:2]
     header = f"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y {height} +X {width}\n".encode("ascii")
-    Path(path).write_bytes(header + rgbe.tobytes())
+    outputs.write_file(path, header + rgbe.tobytes())
     return rgbe_decode(rgbe)

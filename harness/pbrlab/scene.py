@@ -154,6 +154,7 @@ class SceneObject:
     primitive: dict | None = None
     transform: np.ndarray = field(default_factory=lambda: np.eye(4))
     geometry: object = None  # meshes.Geometry: vertex data held in memory (glTF primitives)
+    where: str = ""  # the object's name in messages: "scene.json: objects[1]", "x.gltf: nodes[3] (...)"
 
 
 @dataclass
@@ -477,7 +478,7 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     if not isinstance(material, str) or material not in materials:
         r.fail(f"unknown material {json.dumps(material)}; defined: {', '.join(materials) or 'none'}",
                "material")
-    obj = SceneObject(material=material)
+    obj = SceneObject(material=material, where=f"{r.origin}: {r.path}")
     if r.has("sphere") == r.has("mesh"):
         r.fail("give exactly one of sphere or mesh")
     if r.has("sphere"):

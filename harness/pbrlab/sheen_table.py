@@ -33,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import outputs
 from .errors import PbrlabError
 from .reference import sheen as ref_sheen
 
@@ -171,7 +172,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.write:
         LUT_FILE.parent.mkdir(exist_ok=True)
-        np.save(LUT_FILE, compute_sheen_lut())
+        outputs.write_npy(LUT_FILE, compute_sheen_lut())
         print(LUT_FILE)
     return 0
 

@@ -66,3 +66,73 @@ def test_a_unity_texture_path_that_is_a_symlink_loop_is_refused_by_name(tmp_path
     with pytest.raises(PbrlabError, match=r"properties\._MainTex\.path: cannot follow .*a\.png"):
         load_scene(tmp_path / "scene.json")
     census["unity properties", "refused cleanly"] += 1
+
+
+SURFACE = {"glsl": "void surf(Input IN, inout SurfaceOutputStandard o) {\n"
+                   "    o.Albedo = vec3(0.8, 0.4, 0.2);\n    o.Smoothness = {gloss};\n}\n",
+           "hlsl": "void surf(Input IN, inout SurfaceOutputStandard o) {\n"
+                   "    o.Albedo = float3(0.8, 0.4, 0.2);\n    o.Smoothness = {gloss};\n}\n"}
+
+
+def _surface_scene(tmp_path, stem: str, language: str, gloss: str):
+    """A scene whose material's surface function is ``stem``.glsl (and its .hlsl twin)."""
+    for lang, suffix in (("glsl", ".glsl"), ("hlsl", ".hlsl")):
+        (tmp_path / (stem + suffix)).write_text(SURFACE[lang].replace("{gloss}", gloss))
+    scene = base_scene()
+    scene["camera"]["size"] = [16, 12]
+    scene["materials"]["m"] = {"surface": stem + ".glsl"}
+    path = tmp_path / f"scene-{len(list(tmp_path.iterdir()))}.json"
+    path.write_text(json.dumps(scene))
+    return path
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+@pytest.mark.parametrize("stem", ['we"ird', "back\\slash"])
+def test_a_surface_file_with_a_quote_in_its_name_renders(tmp_path, gl_context, language, stem, census):
+    """An #include "..." line cannot carry a double quote (nor a backslash, to glslang): the
+    template's include of the surface broke ("unexpected IDENTIFIER"). It renders as the same
+    function under a plain name, and its errors name the file."""
+    from pbrlab.render import render_scene
+    odd = render_scene(load_scene(_surface_scene(tmp_path, stem, language, "0.5")), gl_context,
+                       language=language).linear
+    plain = render_scene(load_scene(_surface_scene(tmp_path, "plain", language, "0.5")), gl_context,
+                         language=language).linear
+    np.testing.assert_array_equal(odd, plain)
+    broken = load_scene(_surface_scene(tmp_path, stem, language, "undeclared_gloss"))
+    with pytest.raises(PbrlabError, match="undeclared_gloss") as failure:
+        render_scene(broken, gl_context, language=language)
+    suffix = ".glsl" if language == "glsl" else ".hlsl"
+    assert f"{stem}{suffix}:3:" in str(failure.value)
+    assert "pbrlab-surface" not in str(failure.value)  # the alias never shows
+    census["surface file name", "handled"] += 1
+
+
+def _unity_scene(tmp_path, surface: str):
+    scene = base_scene()
+    scene["camera"]["size"] = [16, 12]
+    scene["materials"]["m"] = {"surface": surface}
+    path = tmp_path / f"scene-{len(list(tmp_path.iterdir()))}.json"
+    path.write_text(json.dumps(scene))
+    return load_scene(path)
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_unity_shader_with_a_quote_in_its_name_renders(tmp_path, gl_context, language, census):
+    """The generated program's include of the port (GLSL) and its #line "file" (glslang, HLSL)
+    were built from the raw name; a port-unity port (GLSL) was included by its raw name."""
+    from pbrlab.render import render_scene
+    (tmp_path / 'u"nity.shader').write_text(SHADER)
+    (tmp_path / "plain.shader").write_text(SHADER)
+    odd = render_scene(_unity_scene(tmp_path, 'u"nity.shader'), gl_context, language=language).linear
+    plain = render_scene(_unity_scene(tmp_path, "plain.shader"), gl_context, language=language).linear
+    np.testing.assert_array_equal(odd, plain)
+    if language == "glsl":
+        port = tmp_path / 'p"ort.glsl'
+        assert cli.main(["port-unity", str(tmp_path / 'u"nity.shader'), "-o", str(port)]) == 0
+        ported = render_scene(_unity_scene(tmp_path, port.name), gl_context).linear
+        np.testing.assert_array_equal(ported, plain)
+    (tmp_path / 'u"nity.shader').write_text(SHADER.replace("o.Albedo = tex2D", "o.Albedo = undeclared_colour * tex2D"))
+    with pytest.raises(PbrlabError, match="undeclared_colour") as failure:
+        render_scene(_unity_scene(tmp_path, 'u"nity.shader'), gl_context, language=language)
+    assert 'u"nity.shader:8' in str(failure.value) and "pbrlab-" not in str(failure.value), failure.value
+    census["surface file name", "handled"] += 1

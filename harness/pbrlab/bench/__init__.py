@@ -32,7 +32,8 @@ part: minus the same render with no objects) and image error against the HIGH ti
 for each test scene, its programs specialised and full, in GLSL and HLSL, compiled for the
 three AMD families (instructions, VGPRs, waves per SIMD).
 
-Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``.
+Outputs of ``run(out_dir)``: ``accuracy_cost.json``, ``accuracy_cost.md``, ``<family>.png``,
+written all or nothing (``report.write_report``: a failed write keeps the previous report whole).
 
 JSON schema ``pbrlab-bench/2`` (checked by ``report.validate``)::
 
@@ -136,12 +137,21 @@ def _specialisation_scenes() -> dict:
 
 def run(out_dir, family: str | None = None, quick: bool = False, progress=measure.progress) -> dict:
     """Measure, write the outputs into ``out_dir`` and return the JSON document."""
+    from .. import outputs
+    from ..errors import PbrlabError
+
     out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
     if family is not None and family not in families_mod.BY_NAME:
-        from ..errors import PbrlabError
         raise PbrlabError(f"unknown family {family!r}; choose from {', '.join(families_mod.BY_NAME)}")
     fams = [families_mod.BY_NAME[family]] if family else list(families_mod.FAMILIES)
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise PbrlabError(f"--out {out_dir}: exists and is not a directory") from None
+    except OSError as exc:
+        raise PbrlabError(f"--out {out_dir}: cannot create the folder: {exc.strerror or exc}") from None
+    for target in report.report_paths({"families": [{"name": f.name} for f in fams]}, out_dir):
+        outputs.check_writable_target(target)  # before minutes of measuring, not after
     settings = measure.Settings.make(quick)
     steps = len(fams) + 6  # + time, instructions, frame, specialisation, tier images, GPU ISA
     step = iter(range(1, steps + 1))
@@ -220,9 +230,6 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
     problems = report.validate(doc)
     if problems:
         raise RuntimeError("bench produced an invalid document:\n" + "\n".join(problems))
-    report.write_json(doc, out_dir / "accuracy_cost.json")
-    (out_dir / "accuracy_cost.md").write_text(report.markdown(doc), encoding="utf-8")
-    for fam in doc_families:
-        report.pareto_plot(fam, out_dir / f"{fam['name']}.png", quick, doc["gpu_isa"])
+    report.write_report(doc, out_dir)
     progress(f"wrote {out_dir / 'accuracy_cost.md'}, accuracy_cost.json and {len(doc_families)} plots")
     return doc

@@ -7,6 +7,7 @@ import json
 import math
 from pathlib import Path
 
+from .. import outputs
 from . import report_gpu
 
 NOISE_NOTE = ("Times are CPU time on llvmpipe with LP_NUM_THREADS=1 (median of interleaved rounds, "
@@ -90,8 +91,34 @@ def validate(doc: dict) -> list[str]:
     return problems + report_gpu.validate(doc)
 
 
-def write_json(doc: dict, path: Path) -> None:
-    path.write_text(json.dumps(doc, indent=1, sort_keys=False) + "\n", encoding="utf-8")
+def report_paths(doc: dict, out_dir: Path) -> list[Path]:
+    """accuracy_cost.json, accuracy_cost.md and one Pareto plot per family, in ``out_dir``."""
+    out_dir = Path(out_dir)
+    return ([out_dir / "accuracy_cost.json", out_dir / "accuracy_cost.md"]
+            + [out_dir / f"{fam['name']}.png" for fam in doc["families"]])
+
+
+def write_report(doc: dict, out_dir: Path) -> list[Path]:
+    """Write the report (``report_paths``) all or nothing (outputs.transaction): a full disk
+    or a failing plot keeps the previous report whole, JSON, tables and plots alike, and
+    the PbrlabError names the file that could not be written. Returns the paths written."""
+    paths = report_paths(doc, out_dir)
+    json_path, md_path, plots = paths[0], paths[1], paths[2:]
+    with outputs.transaction(paths) as tx:
+        write_json(doc, json_path, tx)
+        tx.write_text(md_path, markdown(doc))
+        for fam, plot in zip(doc["families"], plots):
+            pareto_plot(fam, plot, doc["quick"], doc["gpu_isa"], tx=tx)
+    return paths
+
+
+def write_json(doc: dict, path: Path, tx: outputs.Transaction | None = None) -> None:
+    """accuracy_cost.json (``tx``: a transaction holding ``path``; else a file of its own)."""
+    text = json.dumps(doc, indent=1, sort_keys=False) + "\n"
+    if tx is None:
+        outputs.write_file(path, text)
+    else:
+        tx.write_text(path, text)
 
 
 def _g(x, digits=2):
@@ -206,7 +233,8 @@ def _rdna3_per_eval(v: dict):
     return record["families"]["rdna3"]["instructions_per_eval"]
 
 
-def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None) -> None:
+def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None,
+                tx: outputs.Transaction | None = None) -> None:
     """Error (max relative, log) against cost (log), one point per variant, in two panels:
     x86 instructions per evaluation (callgrind) and RDNA3 instructions per evaluation
     (ACO, static). The exact variant is ringed. Zero cost or error is drawn at the axis
@@ -261,5 +289,10 @@ def pareto_plot(fam: dict, path: Path, quick: bool, gpu_isa: dict | None = None)
     axes[0].set_ylabel(f"max relative error vs float64 reference (floor {floor_y:g})")
     fig.suptitle(f"{fam['title']}" + (" [quick]" if quick else ""), fontsize=10)
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    try:  # into the transaction ``tx`` when given (the report's), else a file of its own
+        if tx is None:
+            outputs.write_figure(path, fig)
+        else:
+            outputs.write_figure_in(tx, path, fig)
+    finally:
+        plt.close(fig)

@@ -32,7 +32,7 @@ from . import instancing
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
-from .nodes import walk
+from .nodes import check_float32, walk
 
 SUFFIXES = (".gltf", ".glb")
 # Extensions whose content reaches the image (what extensionsRequired may name).
@@ -122,7 +122,11 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             continue
         mesh = doc.items("meshes")[mesh_index]
         primitives = mesh.objects("primitives", min_items=1)
-        for placed in [world] if instances is None else [world @ m for m in instances]:
+        placements = [world] if instances is None else [world @ m for m in instances]
+        for i, placed in enumerate(placements if instances is not None else []):
+            check_float32(placed, node, f"the world matrix of its instance {i} "
+                                        f"({instancing.EXTENSION})")
+        for placed in placements:
             objects += _placed_primitives(doc, reader, key, mesh_index, primitives, placed, node_index,
                                           variant_index, materials, material_names, geometries, warn)
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
@@ -176,7 +180,8 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                               (*key, mesh_index, p, flip))
         if geometries[gkey] is not None:
-            out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey]))
+            out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey],
+                                   where=f"{doc.path}: nodes[{node_index}] (mesh {mesh_index}, primitive {p})"))
     return out
 
 

@@ -1,11 +1,15 @@
 """The node hierarchy of a glTF scene: world matrices (spec 3.5.2 "Transformations":
 a matrix, or translation x rotation x scale), walked from the scene's roots; cycles and
-nodes with two parents are refused by name."""
+nodes with two parents are refused by name, and so are a matrix that is not affine (its
+last row not 0, 0, 0, 1: spec 3.5.3, a node matrix decomposes to TRS) and a world matrix
+that is finite in float64 but not in float32 (a product of huge scales: the GPU would
+draw nothing, or NaN)."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from ..json_input import FLOAT32_MAX
 from .document import Document
 from .fields import FieldReader
 
@@ -23,7 +27,11 @@ def local_matrix(node: FieldReader) -> np.ndarray:
     if node.has("matrix"):
         if any(node.has(key) for key in ("translation", "rotation", "scale")):
             node.fail("has both matrix and translation/rotation/scale")
-        return node.numbers("matrix", 16).reshape(4, 4).T  # column-major
+        m = node.numbers("matrix", 16).reshape(4, 4).T  # column-major
+        if not np.array_equal(m[3], [0, 0, 0, 1]):
+            node.fail(f"matrix is not affine: its last row is {_row(m[3])}, glTF requires "
+                      "[0, 0, 0, 1] (a node matrix is translation x rotation x scale, spec 3.5.3)")
+        return m
     t = node.numbers("translation", 3, [0, 0, 0])
     q = node.numbers("rotation", 4, [0, 0, 0, 1], -1.0, 1.0)  # spec 5.25: unit quaternion components
     s = node.numbers("scale", 3, [1, 1, 1])
@@ -33,6 +41,22 @@ def local_matrix(node: FieldReader) -> np.ndarray:
     m[:3, :3] = quaternion_matrix(q) @ np.diag(s)
     m[:3, 3] = t
     return m
+
+
+def _row(values) -> str:
+    return "[" + ", ".join(f"{v:g}" for v in values) + "]"
+
+
+def check_float32(world: np.ndarray, node: FieldReader, what: str = "its world matrix") -> None:
+    """Refuse (naming the node) a world matrix the GPU cannot hold: an entry finite in
+    float64 but beyond float32's range."""
+    if not np.all(np.isfinite(world)):
+        node.fail(f"{what} overflows (a product of huge scales or translations)")
+    largest = float(np.abs(world).max())
+    if largest > FLOAT32_MAX:
+        node.fail(f"{what} has an entry of {largest:.3g}: finite in float64, not in float32 "
+                  f"(|x| <= {FLOAT32_MAX:.8g}), which the GPU computes in (a product of huge "
+                  "scales or translations)")
 
 
 def walk(doc: Document, scene_index: int | None):
@@ -57,8 +81,7 @@ def walk(doc: Document, scene_index: int | None):
         seen.add(index)
         with np.errstate(over="ignore", invalid="ignore"):  # refused just below, by name
             world = parent @ local_matrix(node)
-        if not np.all(np.isfinite(world)):
-            node.fail("its world matrix overflows (a product of huge scales or translations)")
+        check_float32(world, node)
         yield index, world
         children = node.indices("children", "nodes")
         stack.extend((c, world) for c in reversed(children))

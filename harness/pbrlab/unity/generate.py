@@ -15,6 +15,7 @@ lighting, final colour) and the entry point.
 
 from __future__ import annotations
 
+from ..hlsl import line_directive
 from . import model as M
 from .parse import _component_count
 
@@ -249,7 +250,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
         head.append('#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
     first = shader.program_line if language == "hlsl" else 1
-    line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
+    line = line_directive(first, display) if language == "hlsl" else f"#line {first}"
     entry = _ENTRY[(language, stem)]
     custom = custom_varyings(shader, language)
     if custom and language == "hlsl":  # the vertex stage's custom Input members
@@ -341,7 +342,7 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
     first = shader.program_line if language == "hlsl" else 1
-    line = f'#line {first} "{display}"' if language == "hlsl" else f"#line {first}"
+    line = line_directive(first, display) if language == "hlsl" else f"#line {first}"
     custom = custom_varyings(shader, language)
     call = f"{v.name}(v, o);" if v.input_param else f"{v.name}(v);"
     fill = "\n".join(_appdata_lines(shader, language))

@@ -38,6 +38,16 @@ VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
 # (no file has it: shaders.expand finds it among its virtual files first).
 _PORT_INCLUDE = "pbrlab-unity-port:{}"
+# What an #include "..." line cannot carry (a double quote, a backslash, control
+# characters) and the escape character itself: percent-encoded in a port's include name.
+_NOT_IN_INCLUDE = re.compile(r'["\\%\x00-\x1f\x7f]')
+
+
+def _port_include(path) -> str:
+    """The include name of the port of ``path`` (one name per file, any file name)."""
+    return _PORT_INCLUDE.format(_NOT_IN_INCLUDE.sub(lambda m: f"%{ord(m.group(0)):02X}", str(path)))
+
+
 # Unity's _SpecColor when a shader's Properties lack it: Unity's legacy shaders' default
 # ("Specular Color", Color) = (0.5, 0.5, 0.5, 1).
 DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
@@ -59,8 +69,11 @@ def program_include(shader) -> tuple[str, dict]:
     includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
     does), each include line relinked to its port, so an include's Cg goes through the same
     type pass and renames as the program's, and errors name the original file and line."""
-    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written
-        return f'#include "{shader.path.name}"', {}
+    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written (as a
+        # virtual file: its own name may be one an #include line cannot carry)
+        name = _port_include(shader.path)
+        return f'#include "{name}"', {name: shaders.VirtualFile(shaders.read_source(shader.path),
+                                                                str(shader.path), 1)}
     virtual: dict = {}
     names: dict = {}   # resolved include -> its virtual name
 
@@ -71,14 +84,14 @@ def program_include(shader) -> tuple[str, dict]:
                 return m.group(0)  # the GLSL expander names what it cannot find
             key = target.resolve()
             if key not in names:
-                names[key] = _PORT_INCLUDE.format(key)
+                names[key] = _port_include(key)
                 body = shaders.strip_bom(target.read_text(encoding="utf-8"))
                 virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body, target.parent), target.parent),
                                                           str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 
-    name = _PORT_INCLUDE.format(shader.path.name)
+    name = _port_include(shader.path.name)
     text = relinked(shaders.strip_bom(port.port_program(shader)), shader.path.parent)
     virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
     return f'#include "{name}"', virtual

@@ -28,7 +28,7 @@ def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, pro
     where = f"{vf.path}:{vf.program_line}"
     head = generate.prelude(language, defines, vertex_stage=stage == "vertex")
     if language == "hlsl":
-        line = f'#line {vf.program_line} "{display}"'
+        line = hlsl.line_directive(vf.program_line, display)
     else:
         line = "#line 1"
     if stage == "vertex":
