@@ -28,7 +28,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import instancing
+from . import draco, instancing, meshopt, morph
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -40,6 +40,8 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
                        "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing")
+# Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
+DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
@@ -61,12 +63,21 @@ def is_gltf(path) -> bool:
     return Path(path).suffix.lower() in SUFFIXES
 
 
+def honoured_extensions() -> tuple[str, ...]:
+    """HONOURED_EXTENSIONS and the compression extensions whose decoder is installed."""
+    return HONOURED_EXTENSIONS + tuple(name for name, m in DECODED_EXTENSIONS.items() if m.available())
+
+
 def load_gltf(path, camera: int | None = None, environment: Environment | None = None,
               render: RenderSettings | None = None, size=None, emit_warnings: bool = True,
-              variant: str | None = None) -> GltfScene:
+              variant: str | None = None, scene: int | None = None,
+              weights: tuple | None = None) -> GltfScene:
     """The scene of a glTF 2.0 file. ``camera``: the index of a glTF camera (default: the
     first one a node places; a framing camera from the bounds when there is none).
     ``variant``: a KHR_materials_variants variant's name (default: the default materials).
+    ``scene``: the index of the glTF scene drawn (default: the file's ``scene``, else 0).
+    ``weights``: morph target weights for every mesh with targets (default: each node's
+    or mesh's own, gltf.morph).
     Warnings are returned and, with ``emit_warnings``, issued as GltfWarning."""
     doc = read_document(path)
     path = Path(path)
@@ -77,10 +88,18 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             messages.append(message)
 
     root = doc.root
+    honoured = honoured_extensions()
     for name in root.strings("extensionsRequired"):
-        if name not in HONOURED_EXTENSIONS:
+        if name in DECODED_EXTENSIONS and name not in honoured:
+            doc.fail("extensionsRequired", f"{name} is required by the file and its decoder is not installed "
+                                           f"({DECODED_EXTENSIONS[name].INSTALL})")
+        if name not in honoured:
             doc.fail("extensionsRequired", f"{name} is required by the file and not supported "
-                                           f"(supported: {', '.join(HONOURED_EXTENSIONS)})")
+                                           f"(supported: {', '.join(honoured)})")
+    scenes = doc.items("scenes")
+    if scene is not None and not 0 <= scene < len(scenes):
+        doc.fail("scenes", f"--scene {scene}: the file has {len(scenes)} scene{'s' * (len(scenes) != 1)}"
+                           + (f" (0 to {len(scenes) - 1})" if scenes else ""))
     for key in ("animations", "skins"):
         if doc.items(key):
             warn(f"{key} ignored ({len(doc.items(key))}; the rest pose is drawn)")
@@ -98,8 +117,10 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     materials: dict = {}
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
-    geometries: dict = {}  # (mesh, primitive, winding, normal map UV set) -> Geometry
-    for node_index, world in walk(doc, None):
+    geometries: dict = {}  # (mesh, primitive, winding, normal map UV set, weights) -> Geometry
+    if weights is not None and not any(morph.target_count(m) for m in doc.items("meshes")):
+        doc.fail("meshes", "--weights: the file has no morph targets")
+    for node_index, world in walk(doc, scene):
         node = doc.items("nodes")[node_index]
         instances = None
         if node.has("name"):
@@ -122,11 +143,13 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             continue
         mesh = doc.items("meshes")[mesh_index]
         primitives = mesh.objects("primitives", min_items=1)
+        mesh_weights = morph.weights(mesh_index, mesh, node, weights)
         for placed in [world] if instances is None else [world @ m for m in instances]:
             objects += _placed_primitives(doc, reader, key, mesh_index, primitives, placed, node_index,
-                                          variant_index, materials, material_names, geometries, warn)
+                                          variant_index, materials, material_names, geometries, warn,
+                                          mesh_weights)
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
-        if name not in HONOURED_EXTENSIONS and not any(m.startswith(f"{name} ") for m in messages):
+        if name not in honoured and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
     if not objects:
         raise SceneError(f"{path}: the scene has no triangle to draw")
@@ -143,7 +166,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
 
 
 def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_index, variant_index,
-                       materials, material_names, geometries, warn) -> list[SceneObject]:
+                       materials, material_names, geometries, warn, weights=()) -> list[SceneObject]:
     """The objects of one placement of a node's mesh: one per primitive, its material read
     once per (material, COLOR_0) and its geometry once per winding."""
     out = []
@@ -171,10 +194,10 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
                                "which the primitive lacks")
         mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
         normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
-        gkey = (mesh_index, p, flip, normal_uv)
+        gkey = (mesh_index, p, flip, normal_uv, weights)
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
-                                              (*key, mesh_index, p, flip))
+                                              (*key, mesh_index, p, flip, weights), weights)
         if geometries[gkey] is not None:
             out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey]))
     return out

@@ -16,6 +16,7 @@ from pathlib import Path, PurePosixPath, PureWindowsPath
 
 from .. import json_input
 from ..errors import SceneError
+from . import meshopt
 from .fields import FieldReader, join, shown
 
 GLB_MAGIC = b"glTF"           # glTF 2.0, 4.4.3 "GLB Header"
@@ -38,6 +39,7 @@ class Document:
     glb_bin: bytes | None = None
     _buffers: dict = field(default_factory=dict)
     _items: dict = field(default_factory=dict)
+    _decoded_views: dict = field(default_factory=dict)
 
     def __post_init__(self):
         self.root = FieldReader(self.json, "", self)
@@ -74,8 +76,14 @@ class Document:
         return self._buffers[index]
 
     def buffer_view(self, index, where: str) -> tuple[FieldReader, bytes]:
-        """Buffer view ``index`` and the bytes of its buffer it spans (spec 3.6.1)."""
+        """Buffer view ``index`` and the bytes of its buffer it spans (spec 3.6.1), or the
+        bytes its EXT_meshopt_compression object decodes to (gltf.meshopt), once."""
         view = self.get("bufferViews", index, where)
+        extensions = view.object("extensions")
+        if extensions.has(meshopt.EXTENSION) and meshopt.available():
+            if index not in self._decoded_views:
+                self._decoded_views[index] = meshopt.decode_view(self, view, extensions.object(meshopt.EXTENSION))
+            return view, self._decoded_views[index]
         buffer_index = view.index("buffer", "buffers", required=True)
         buffer = self.buffer(buffer_index, join(view.path, "buffer"))
         offset = view.integer("byteOffset", 0)
