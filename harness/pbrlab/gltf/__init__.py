@@ -114,6 +114,9 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
 
     key = file_key(path)
     reader = MaterialReader(doc, key, warn)
+    # geometry depends on which decoders are installed too (a compressed primitive with an
+    # uncompressed fallback): the key of its cached vertex buffers says so
+    geometry_key = (*key, tuple(name for name, m in DECODED_EXTENSIONS.items() if m.available()))
     materials: dict = {}
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
@@ -145,7 +148,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         primitives = mesh.objects("primitives", min_items=1)
         mesh_weights = morph.weights(mesh_index, mesh, node, weights)
         for placed in [world] if instances is None else [world @ m for m in instances]:
-            objects += _placed_primitives(doc, reader, key, mesh_index, primitives, placed, node_index,
+            objects += _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed, node_index,
                                           variant_index, materials, material_names, geometries, warn,
                                           mesh_weights)
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
