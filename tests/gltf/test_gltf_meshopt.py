@@ -98,3 +98,13 @@ def test_a_compressed_view_that_breaks_the_rules_is_named(tmp_path, edit, messag
     edit(doc)
     with pytest.raises(SceneError, match=message):
         _load(write_glb(tmp_path, doc, binary))
+
+
+def test_an_optional_meshopt_view_without_the_bindings_names_the_install(tmp_path, monkeypatch):
+    doc, binary = read_glb(COMPRESSED)
+    doc["extensionsRequired"].remove("EXT_meshopt_compression")  # used, not required
+    monkeypatch.setattr(meshopt, "available", lambda: False)
+    with pytest.raises(SceneError, match=r"bufferViews\[\d+\]: its data is EXT_meshopt_compression-compressed and "
+                                         r"buffers\[1\] is only a placeholder; install the decoder: "
+                                         r"pip install meshoptimizer==0.2.30a0"):
+        _load(write_glb(tmp_path, doc, binary))

@@ -85,12 +85,20 @@ class Document:
                 self._decoded_views[index] = meshopt.decode_view(self, view, extensions.object(meshopt.EXTENSION))
             return view, self._decoded_views[index]
         buffer_index = view.index("buffer", "buffers", required=True)
+        if extensions.has(meshopt.EXTENSION) and self._placeholder(buffer_index):
+            view.fail(f"its data is {meshopt.EXTENSION}-compressed and buffers[{buffer_index}] is only a "
+                      f"placeholder; install the decoder: {meshopt.INSTALL}")
         buffer = self.buffer(buffer_index, join(view.path, "buffer"))
         offset = view.integer("byteOffset", 0)
         length = view.integer("byteLength", None, lo=1)
         if offset + length > len(buffer):
             view.fail(f"bytes {offset}..{offset + length} lie outside buffers[{buffer_index}] ({len(buffer)} bytes)")
         return view, buffer[offset:offset + length]
+
+    def _placeholder(self, index: int) -> bool:
+        """Whether buffer ``index`` holds no data: no uri, and not the GLB's BIN chunk (which
+        only buffer 0 may name: glTF 2.0, GLB "Binary buffer")."""
+        return not self.items("buffers")[index].has("uri") and (self.glb_bin is None or index != 0)
 
     def _load_buffer(self, spec: FieldReader) -> bytes:
         length = spec.integer("byteLength", None, lo=1)
