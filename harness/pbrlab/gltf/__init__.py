@@ -7,7 +7,8 @@
 ``fields`` is the one typed reader every module reads the JSON through (type and range
 of each field, refused by path), ``document`` reads the file and its buffers and checks
 the top level, ``accessors`` checks every accessor against
-its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data,
+its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data
+(``draco`` and ``meshopt`` decode compressed geometry, ``morph`` applies morph targets),
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
 converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises
 SceneError naming the object; nothing else escapes for a bad file.
