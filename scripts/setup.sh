@@ -5,6 +5,7 @@
 #      instruction counts of pbrlab.gpu_isa, python3-venv):
 #      installed with apt-get when run as root, otherwise the exact command is printed and
 #      the script stops with exit 1.
+#      A C++ compiler (g++) for the meshoptimizer bindings, published as source only.
 #      Chromium and node/npm (Debian's chromium, nodejs; npm unless node brings it) for the glTF Sample Viewer
 #      comparison (pbrlab.sample_viewer) are among them.
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
@@ -28,6 +29,7 @@ declare -A need=(
   [mesa-vulkan-drivers]=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json
   [chromium]=/usr/bin/chromium
   [nodejs]=/usr/bin/node
+  [g++]=/usr/bin/g++  # meshoptimizer (requirements.txt) is an sdist: its C++ codecs compile at install
 )
 missing=()
 for pkg in "${!need[@]}"; do

@@ -110,8 +110,9 @@ class Builder:
             tex["sampler"] = self.add("samplers", sampler)
         return self.add("textures", tex)
 
-    def write_glb(self, path: Path):
-        self.json["buffers"] = [{"byteLength": len(self.blob)}]
+    def write_glb(self, path: Path, extra_buffers: list | None = None):
+        """``extra_buffers``: buffer objects after the GLB chunk's (EXT_meshopt_compression's fallback)."""
+        self.json["buffers"] = [{"byteLength": len(self.blob)}] + (extra_buffers or [])
         text = json.dumps(self.json, separators=(",", ":")).encode()
         text += b" " * (-len(text) % 4)
         blob = bytes(self.blob) + b"\0" * (-len(self.blob) % 4)

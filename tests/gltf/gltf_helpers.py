@@ -47,3 +47,26 @@ def blob(doc: dict) -> bytes:
 
 def set_blob(doc: dict, data: bytes) -> None:
     doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+
+
+def read_glb(path) -> tuple[dict, bytes]:
+    """The JSON and BIN chunks of a GLB file (glTF 2.0, 4.4: header, JSON chunk, BIN chunk)."""
+    import struct
+    data = path.read_bytes()
+    json_length = struct.unpack_from("<I", data, 12)[0]
+    document = json.loads(data[20:20 + json_length])
+    start = 20 + json_length
+    bin_length = struct.unpack_from("<I", data, start)[0] if start < len(data) else 0
+    return document, data[start + 8:start + 8 + bin_length]
+
+
+def write_glb(tmp_path, doc: dict, binary: bytes, name: str = "model.glb"):
+    import struct
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    path = tmp_path / name
+    path.write_bytes(struct.pack("<4sII", b"glTF", 2, 28 + len(text) + len(binary))
+                     + struct.pack("<II", len(text), 0x4E4F534A) + text
+                     + struct.pack("<II", len(binary), 0x004E4942) + binary)
+    return path

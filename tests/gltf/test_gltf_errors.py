@@ -84,10 +84,10 @@ def test_buffer_view_past_its_buffer_is_named(tmp_path, capsys):
 
 def test_unknown_required_extension_is_refused(tmp_path, capsys):
     doc = quad_document()
-    doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
-    doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
-    _refused(tmp_path, capsys, doc, "extensionsRequired: KHR_draco_mesh_compression is required")
-    _refused(tmp_path, capsys, doc, "KHR_draco_mesh_compression", command="features")
+    doc["extensionsRequired"] = ["EXT_texture_webp"]
+    doc["extensionsUsed"] = ["EXT_texture_webp"]
+    _refused(tmp_path, capsys, doc, "extensionsRequired: EXT_texture_webp is required")
+    _refused(tmp_path, capsys, doc, "EXT_texture_webp", command="features")
 
 
 def test_dangling_references_are_named(tmp_path, capsys):

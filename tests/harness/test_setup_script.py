@@ -24,7 +24,7 @@ def test_non_root_user_gets_the_exact_install_line_and_exit_1(tmp_path):
     out = subprocess.run(["bash", str(ROOT / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, cwd=tmp_path)
     assert out.returncode == 1
-    assert ("sudo apt-get install -y binutils chromium glslang-tools libegl-mesa0 libegl1 libgl1-mesa-dri "
+    assert ("sudo apt-get install -y binutils chromium g++ glslang-tools libegl-mesa0 libegl1 libgl1-mesa-dri "
             "libosmesa6 libvulkan1 mesa-vulkan-drivers nodejs spirv-cross") in out.stderr
     assert "setup: creating the virtualenv" not in out.stdout
 

@@ -53,7 +53,20 @@ def load_scene_with_gltf_warnings(path):
     return scene, messages
 
 
-def load_any_scene(path, camera=None, environment=None, size=None, variant=None):
+def parse_weights(text: str | None) -> tuple | None:
+    """``--weights 0.5,0,1``: morph target weights, finite numbers separated by commas."""
+    if text is None:
+        return None
+    try:
+        weights = tuple(float(part) for part in text.split(","))
+    except ValueError:
+        weights = ()
+    if not weights or not all(np.isfinite(weights)):
+        raise PbrlabError(f"--weights {text}: expected finite numbers separated by commas, e.g. 0.5,0,1")
+    return weights
+
+
+def load_any_scene(path, camera=None, environment=None, size=None, variant=None, scene=None, weights=None):
     """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
     import sys
     from pathlib import Path
@@ -62,15 +75,16 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None)
     from ..gltf.settings import read_settings
 
     if not is_gltf(path):
-        if camera is not None or environment is not None or variant is not None:
-            raise PbrlabError("--camera, --environment and --variant are for glTF files; a JSON scene names its own")
+        if any(option is not None for option in (camera, environment, variant, scene, weights)):
+            raise PbrlabError("--camera, --environment, --variant, --scene and --weights are for glTF files; "
+                              "a JSON scene names its own")
         scene, messages = load_scene_with_gltf_warnings(path)
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
-                       variant=variant)
+                       variant=variant, scene=scene, weights=weights)
     for message in result.warnings:
         print(f"warning: {message}", file=sys.stderr)
     return result.scene
@@ -86,7 +100,8 @@ def run(args) -> int:
         if path and not path.lower().endswith(suffix):
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
-    scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant)
+    scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant, args.gltf_scene,
+                           parse_weights(args.weights))
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
@@ -119,6 +134,10 @@ def register(sub, common):
                    help="glTF: an equirectangular image or a constant radiance (overrides <model>.pbrlab.json)")
     p.add_argument("--variant", default=None, metavar="NAME",
                    help="glTF: the KHR_materials_variants variant to render (default: the file's default materials)")
+    p.add_argument("--scene", dest="gltf_scene", type=int, default=None, metavar="N",
+                   help="glTF: draw scene N (default: the file's default scene)")
+    p.add_argument("--weights", default=None, metavar="W0,W1,...",
+                   help="glTF: morph target weights for every mesh with targets (default: the node's or mesh's)")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

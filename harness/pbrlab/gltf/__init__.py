@@ -7,7 +7,8 @@
 ``fields`` is the one typed reader every module reads the JSON through (type and range
 of each field, refused by path), ``document`` reads the file and its buffers and checks
 the top level, ``accessors`` checks every accessor against
-its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data,
+its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data
+(``draco`` and ``meshopt`` decode compressed geometry, ``morph`` applies morph targets),
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
 converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises
 SceneError naming the object; nothing else escapes for a bad file.
@@ -28,7 +29,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import instancing
+from . import draco, instancing, meshopt, morph
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -40,6 +41,8 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
                        "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing")
+# Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
+DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
@@ -61,12 +64,21 @@ def is_gltf(path) -> bool:
     return Path(path).suffix.lower() in SUFFIXES
 
 
+def honoured_extensions() -> tuple[str, ...]:
+    """HONOURED_EXTENSIONS and the compression extensions whose decoder is installed."""
+    return HONOURED_EXTENSIONS + tuple(name for name, m in DECODED_EXTENSIONS.items() if m.available())
+
+
 def load_gltf(path, camera: int | None = None, environment: Environment | None = None,
               render: RenderSettings | None = None, size=None, emit_warnings: bool = True,
-              variant: str | None = None) -> GltfScene:
+              variant: str | None = None, scene: int | None = None,
+              weights: tuple | None = None) -> GltfScene:
     """The scene of a glTF 2.0 file. ``camera``: the index of a glTF camera (default: the
     first one a node places; a framing camera from the bounds when there is none).
     ``variant``: a KHR_materials_variants variant's name (default: the default materials).
+    ``scene``: the index of the glTF scene drawn (default: the file's ``scene``, else 0).
+    ``weights``: morph target weights for every mesh with targets (default: each node's
+    or mesh's own, gltf.morph).
     Warnings are returned and, with ``emit_warnings``, issued as GltfWarning."""
     doc = read_document(path)
     path = Path(path)
@@ -77,10 +89,18 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             messages.append(message)
 
     root = doc.root
+    honoured = honoured_extensions()
     for name in root.strings("extensionsRequired"):
-        if name not in HONOURED_EXTENSIONS:
+        if name in DECODED_EXTENSIONS and name not in honoured:
+            doc.fail("extensionsRequired", f"{name} is required by the file and its decoder is not installed "
+                                           f"({DECODED_EXTENSIONS[name].INSTALL})")
+        if name not in honoured:
             doc.fail("extensionsRequired", f"{name} is required by the file and not supported "
-                                           f"(supported: {', '.join(HONOURED_EXTENSIONS)})")
+                                           f"(supported: {', '.join(honoured)})")
+    scenes = doc.items("scenes")
+    if scene is not None and not 0 <= scene < len(scenes):
+        doc.fail("scenes", f"--scene {scene}: the file has {len(scenes)} scene{'s' * (len(scenes) != 1)}"
+                           + (f" (0 to {len(scenes) - 1})" if scenes else ""))
     for key in ("animations", "skins"):
         if doc.items(key):
             warn(f"{key} ignored ({len(doc.items(key))}; the rest pose is drawn)")
@@ -95,11 +115,16 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
 
     key = file_key(path)
     reader = MaterialReader(doc, key, warn)
+    # geometry depends on which decoders are installed too (a compressed primitive with an
+    # uncompressed fallback): the key of its cached vertex buffers says so
+    geometry_key = (*key, tuple(name for name, m in DECODED_EXTENSIONS.items() if m.available()))
     materials: dict = {}
     material_names: dict = {}
     objects, lights, placed_cameras = [], [], []
-    geometries: dict = {}  # (mesh, primitive, winding, normal map UV set) -> Geometry
-    for node_index, world in walk(doc, None):
+    geometries: dict = {}  # (mesh, primitive, winding, normal map UV set, weights) -> Geometry
+    if weights is not None and not any(morph.target_count(m) for m in doc.items("meshes")):
+        doc.fail("meshes", "--weights: the file has no morph targets")
+    for node_index, world in walk(doc, scene):
         node = doc.items("nodes")[node_index]
         instances = None
         if node.has("name"):
@@ -122,15 +147,17 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             continue
         mesh = doc.items("meshes")[mesh_index]
         primitives = mesh.objects("primitives", min_items=1)
+        mesh_weights = morph.weights(mesh_index, mesh, node, weights)
         placements = [world] if instances is None else [world @ m for m in instances]
         for i, placed in enumerate(placements if instances is not None else []):
             check_float32(placed, node, f"the world matrix of its instance {i} "
                                         f"({instancing.EXTENSION})")
         for placed in placements:
-            objects += _placed_primitives(doc, reader, key, mesh_index, primitives, placed, node_index,
-                                          variant_index, materials, material_names, geometries, warn)
+            objects += _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed, node_index,
+                                          variant_index, materials, material_names, geometries, warn,
+                                          mesh_weights)
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
-        if name not in HONOURED_EXTENSIONS and not any(m.startswith(f"{name} ") for m in messages):
+        if name not in honoured and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
     if not objects:
         raise SceneError(f"{path}: the scene has no triangle to draw")
@@ -147,7 +174,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
 
 
 def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_index, variant_index,
-                       materials, material_names, geometries, warn) -> list[SceneObject]:
+                       materials, material_names, geometries, warn, weights=()) -> list[SceneObject]:
     """The objects of one placement of a node's mesh: one per primitive, its material read
     once per (material, COLOR_0) and its geometry once per winding."""
     out = []
@@ -175,10 +202,10 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
                                "which the primitive lacks")
         mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
         normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
-        gkey = (mesh_index, p, flip, normal_uv)
+        gkey = (mesh_index, p, flip, normal_uv, weights)
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
-                                              (*key, mesh_index, p, flip))
+                                              (*key, mesh_index, p, flip, weights), weights)
         if geometries[gkey] is not None:
             out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey],
                                    where=f"{doc.path}: nodes[{node_index}] (mesh {mesh_index}, primitive {p})"))

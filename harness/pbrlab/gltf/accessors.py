@@ -33,6 +33,11 @@ USES = {
     "INSTANCE_TRANSLATION": (("VEC3",), {(FLOAT, False)}),
     "INSTANCE_ROTATION": (("VEC4",), {(FLOAT, False), (5120, True), (5122, True)}),
     "INSTANCE_SCALE": (("VEC3",), {(FLOAT, False)}),
+    # morph target displacements (spec 3.7.2.2 "Morph Targets": POSITION, NORMAL, TANGENT
+    # deltas, all VEC3 FLOAT; a TANGENT delta has no handedness)
+    "TARGET_POSITION": (("VEC3",), {(FLOAT, False)}),
+    "TARGET_NORMAL": (("VEC3",), {(FLOAT, False)}),
+    "TARGET_TANGENT": (("VEC3",), {(FLOAT, False)}),
 }
 # KHR_mesh_quantization (its README, "Extending Mesh Attributes"): the integer types each
 # attribute also takes when the file uses the extension; normalized or not, as the
@@ -42,7 +47,10 @@ _INTEGERS = {(c, n) for c in (5120, 5121, 5122, 5123) for n in (False, True)}
 QUANTIZED_USES = {"POSITION": _INTEGERS, "NORMAL": {(5120, True), (5122, True)},
                   "TANGENT": {(5120, True), (5122, True)}, "TEXCOORD": _INTEGERS,
                   "INSTANCE_TRANSLATION": _INTEGERS, "INSTANCE_SCALE": _INTEGERS,
-                  "INSTANCE_ROTATION": {(5120, True), (5122, True)}}
+                  "INSTANCE_ROTATION": {(5120, True), (5122, True)},
+                  # "Extending Morph Target Attributes": signed deltas only
+                  "TARGET_POSITION": {(c, n) for c in (5120, 5122) for n in (False, True)},
+                  "TARGET_NORMAL": {(5120, True), (5122, True)}, "TARGET_TANGENT": {(5120, True), (5122, True)}}
 
 
 def uses_quantization(doc: Document) -> bool:
@@ -56,9 +64,12 @@ def _normalised(values: np.ndarray, component: int) -> np.ndarray:
     return np.maximum(out, -1.0) if info.min < 0 else out
 
 
-def read_accessor(doc: Document, index, where: str, use: str, count: int | None = None) -> np.ndarray:
+def read_accessor(doc: Document, index, where: str, use: str, count: int | None = None,
+                  decoded: np.ndarray | None = None) -> np.ndarray:
     """Accessor ``index`` as float64 (count x n) or, for indices, int64 (count,), checked
-    for ``use`` (a USES key) and, when given, its element ``count``."""
+    for ``use`` (a USES key) and, when given, its element ``count``. ``decoded``: the
+    accessor's values decoded elsewhere (KHR_draco_mesh_compression), which replace its
+    bufferView, byteOffset and sparse; the accessor still gives their count and type."""
     accessor = doc.get("accessors", index, where)
     name = f"accessor {index}"
     types, components = USES[use]
@@ -82,12 +93,14 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         doc.fail(where, f"{name} has {n_elements} elements, expected {count}")
     dtype = np.dtype(COMPONENT_TYPES[component]).newbyteorder("<")
     view_index = accessor.index("bufferView", "bufferViews")
-    if view_index is None:
+    if decoded is not None:
+        values = _decoded_values(doc, decoded, where, name, use, component, n, n_elements)
+    elif view_index is None:
         values = np.zeros((n_elements, n), dtype)  # spec 3.6.2.4: no buffer view means zeros
     else:
         offset = accessor.integer("byteOffset", 0)
         values = _from_buffer_view(doc, view_index, offset, name, where, dtype, n, n_elements, strided=True)
-    if accessor.has("sparse"):
+    if accessor.has("sparse") and decoded is None:
         values = _apply_sparse(doc, accessor.object("sparse"), values, dtype, n)
     if use == "indices":
         return values[:, 0].astype(np.int64)
@@ -96,6 +109,22 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         bad = int(np.argmax(~np.all(np.isfinite(out), axis=1)))
         doc.fail(where, f"{name} holds a non-finite value (element {bad}: {out[bad].tolist()})")
     return out
+
+
+def _decoded_values(doc, decoded: np.ndarray, where, name, use, component, n, n_elements) -> np.ndarray:
+    """Decoded values checked against their accessor: the same element count and size,
+    and the accessor's component type (a float accessor takes float data; an integer one,
+    normalized or not, the same integers). Indices take any integers."""
+    if decoded.shape != (n_elements, n):
+        doc.fail(where, f"the compressed data decodes {decoded.shape[0]} elements of {decoded.shape[1]} "
+                        f"components; {name} says {n_elements} of {n}")
+    if use == "indices":
+        return decoded.astype(np.int64)
+    expected = np.dtype(COMPONENT_TYPES[component])
+    if decoded.dtype.kind == "f" and component == FLOAT or decoded.dtype == expected:
+        return decoded
+    doc.fail(where, f"the compressed data decodes {decoded.dtype} values; {name} has components "
+                    f"{COMPONENT_NAMES[component]}")
 
 
 def _apply_sparse(doc: Document, sparse: FieldReader, values, dtype, n) -> np.ndarray:

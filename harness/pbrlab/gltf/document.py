@@ -16,6 +16,7 @@ from pathlib import Path, PurePosixPath, PureWindowsPath
 
 from .. import json_input
 from ..errors import SceneError
+from . import meshopt
 from .fields import FieldReader, join, shown
 
 GLB_MAGIC = b"glTF"           # glTF 2.0, 4.4.3 "GLB Header"
@@ -38,6 +39,7 @@ class Document:
     glb_bin: bytes | None = None
     _buffers: dict = field(default_factory=dict)
     _items: dict = field(default_factory=dict)
+    _decoded_views: dict = field(default_factory=dict)
 
     def __post_init__(self):
         self.root = FieldReader(self.json, "", self)
@@ -74,15 +76,29 @@ class Document:
         return self._buffers[index]
 
     def buffer_view(self, index, where: str) -> tuple[FieldReader, bytes]:
-        """Buffer view ``index`` and the bytes of its buffer it spans (spec 3.6.1)."""
+        """Buffer view ``index`` and the bytes of its buffer it spans (spec 3.6.1), or the
+        bytes its EXT_meshopt_compression object decodes to (gltf.meshopt), once."""
         view = self.get("bufferViews", index, where)
+        extensions = view.object("extensions")
+        if extensions.has(meshopt.EXTENSION) and meshopt.available():
+            if index not in self._decoded_views:
+                self._decoded_views[index] = meshopt.decode_view(self, view, extensions.object(meshopt.EXTENSION))
+            return view, self._decoded_views[index]
         buffer_index = view.index("buffer", "buffers", required=True)
+        if extensions.has(meshopt.EXTENSION) and self._placeholder(buffer_index):
+            view.fail(f"its data is {meshopt.EXTENSION}-compressed and buffers[{buffer_index}] is only a "
+                      f"placeholder; install the decoder: {meshopt.INSTALL}")
         buffer = self.buffer(buffer_index, join(view.path, "buffer"))
         offset = view.integer("byteOffset", 0)
         length = view.integer("byteLength", None, lo=1)
         if offset + length > len(buffer):
             view.fail(f"bytes {offset}..{offset + length} lie outside buffers[{buffer_index}] ({len(buffer)} bytes)")
         return view, buffer[offset:offset + length]
+
+    def _placeholder(self, index: int) -> bool:
+        """Whether buffer ``index`` holds no data: no uri, and not the GLB's BIN chunk (which
+        only buffer 0 may name: glTF 2.0, GLB "Binary buffer")."""
+        return not self.items("buffers")[index].has("uri") and (self.glb_bin is None or index != 0)
 
     def _load_buffer(self, spec: FieldReader) -> bytes:
         length = spec.integer("byteLength", None, lo=1)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..meshes import Geometry
+from . import draco, morph
 from .accessors import read_accessor
 from .document import Document
 from .fields import FieldReader
@@ -32,9 +33,10 @@ def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
 
 
 def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldReader, needs_tangents_from,
-                   warn, flip_winding: bool, key: tuple) -> Geometry | None:
+                   warn, flip_winding: bool, key: tuple, weights: tuple = ()) -> Geometry | None:
     """The primitive's Geometry (None, with a warning, for point and line modes).
-    ``needs_tangents_from``: the UV set of the material's normal map, or None."""
+    ``needs_tangents_from``: the UV set of the material's normal map, or None.
+    ``weights``: its mesh's morph target weights (gltf.morph)."""
     where = primitive.path
     mode = primitive.enum("mode", tuple(range(7)), TRIANGLES, {**MODE_NAMES, **MODES})
     if mode in MODE_NAMES:
@@ -44,12 +46,21 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     if not attributes.has("POSITION"):
         attributes.fail("has no POSITION")
     attr_where = attributes.path
-    positions = read_accessor(doc, attributes.index("POSITION", "accessors"), f"{attr_where}.POSITION", "POSITION")
+    compressed = None
+    for ext, spec in primitive.extensions():
+        if ext == draco.EXTENSION and draco.available():
+            if mode not in (TRIANGLES, TRIANGLE_STRIP):
+                primitive.fail(f"mode {MODES[mode]}: {draco.EXTENSION} holds TRIANGLES or TRIANGLE_STRIP only")
+            compressed = draco.decode(doc, spec, attributes)
+    decoded = {} if compressed is None else compressed.attributes
+    positions = read_accessor(doc, attributes.index("POSITION", "accessors"), f"{attr_where}.POSITION", "POSITION",
+                              decoded=decoded.get("POSITION"))
     count = len(positions)
 
     def optional(name, use):
         index = attributes.index(name, "accessors")
-        return None if index is None else read_accessor(doc, index, f"{attr_where}.{name}", use, count)
+        return None if index is None else read_accessor(doc, index, f"{attr_where}.{name}", use, count,
+                                                        decoded=decoded.get(name))
 
     normals = optional("NORMAL", "NORMAL")
     tangents = optional("TANGENT", "TANGENT")
@@ -60,22 +71,37 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
         if name not in ("POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"):
             attributes.index(name, "accessors")
             warn(f"attribute {name} ignored in mesh {mesh} primitive {prim_index}")
-    if primitive.has("targets"):
-        primitive.objects("targets")
-        warn(f"morph targets ignored in mesh {mesh} primitive {prim_index} (the base shape is drawn)")
+    targets = primitive.objects("targets")
+    if len(targets) != len(weights):
+        primitive.fail(f"has {len(targets)} morph targets; its mesh's other primitives or weights have "
+                       f"{len(weights)}")
+    if targets:
+        displaced = morph.displace(doc, primitive, weights, {"POSITION": positions, "NORMAL": normals,
+                                                             "TANGENT": tangents}, count, warn, mesh, prim_index)
+        positions, normals, tangents = displaced["POSITION"], displaced["NORMAL"], displaced["TANGENT"]
     for ext, _ in primitive.extensions():
-        if ext != "KHR_materials_variants":  # read where the material is chosen (gltf/__init__.py)
+        if ext == draco.EXTENSION and compressed is None:
+            warn(f"{ext} ignored in mesh {mesh} primitive {prim_index} ({draco.PACKAGE} is not installed: "
+                 f"{draco.INSTALL}; the uncompressed fallback is drawn)")
+        elif ext not in ("KHR_materials_variants", draco.EXTENSION):  # variants: gltf/__init__.py
             warn(f"{ext} ignored in mesh {mesh} primitive {prim_index}")
 
     index_accessor = primitive.index("indices", "accessors")
-    if index_accessor is not None:
+    if compressed is not None:
+        if index_accessor is not None and mode == TRIANGLES:
+            indices = read_accessor(doc, index_accessor, f"{where}.indices", "indices",
+                                    decoded=compressed.indices.reshape(-1, 1))
+        else:  # a strip's faces, or faces without an indices accessor: Draco's list as it is
+            indices = compressed.indices
+        mode = TRIANGLES
+    elif index_accessor is not None:
         indices = read_accessor(doc, index_accessor, f"{where}.indices", "indices")
-        bad = np.flatnonzero((indices < 0) | (indices >= count))
-        if len(bad):
-            doc.fail(f"{where}.indices", f"index {int(indices[bad[0]])} at position {int(bad[0])} is out of "
-                                         f"range (the primitive has {count} vertices)")
     else:
         indices = np.arange(count, dtype=np.int64)
+    bad = np.flatnonzero((indices < 0) | (indices >= count))
+    if len(bad):
+        doc.fail(f"{where}.indices", f"index {int(indices[bad[0]])} at position {int(bad[0])} is out of "
+                                     f"range (the primitive has {count} vertices)")
     if mode == TRIANGLES and len(indices) % 3:
         doc.fail(where, f"a triangle list needs a multiple of 3 vertices, got {len(indices)}")
     triangles = _triangle_list(indices, mode)
