@@ -77,6 +77,7 @@
 #include "pbr/surface/lighting_standard.glsl"
 #include "pbr/surface/lighting_clearcoat.glsl"
 #include "pbr/surface/lighting_sheen.glsl"
+#include "pbr/surface/lighting_anisotropy.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

@@ -78,6 +78,7 @@
 #include "pbr/surface/lighting_standard.hlsl"
 #include "pbr/surface/lighting_clearcoat.hlsl"
 #include "pbr/surface/lighting_sheen.hlsl"
+#include "pbr/surface/lighting_anisotropy.hlsl"
 
 // HDR
 #include "pbr/tonemap/exposure.hlsl"

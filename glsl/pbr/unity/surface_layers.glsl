@@ -5,6 +5,16 @@
 //           vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 normal,
 //                                       vec3 viewDir, UnityGI gi, vec3 sheenIndirect,
 //                                       vec3 coatIndirectSpecular, float occlusion)
+//           vec4 LightingStandardAnisotropic(SurfaceOutputStandard s,
+//                                            SurfaceOutputStandardLayers layers, vec3 viewDir,
+//                                            UnityGI gi)
+//           vec4 LightingStandardSpecularAnisotropic(SurfaceOutputStandardSpecular s,
+//                                                    SurfaceOutputStandardLayers layers,
+//                                                    vec3 viewDir, UnityGI gi)
+//           vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir,
+//                                            SurfaceOutputStandardLayers layers,
+//                                            float smoothness)
+//           (the three anisotropic ones in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
 // Include:  "pbr/unity/surface_layers.glsl" (path relative to glsl/; it includes
 //           pbr/unity/surface_standard.glsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT (1 by default; a caller that
@@ -33,12 +43,26 @@
 // perceptualSmoothness). normal: the base's world-space normal (the sheen's, per KHR);
 // sheenIndirect: the prefiltered environment along reflect(-viewDir, normal) at the sheen's
 // roughness.
+// The anisotropy (KHR_materials_anisotropy) is not a layer over the base but the base's own
+// specular lobe stretched: LightingStandardAnisotropic[Specular] stand in for
+// LightingStandard[Specular] (the same workflow maths, then pbr_lighting_anisotropic,
+// pbr/surface/lighting_anisotropy.glsl) and their result is what LightingStandardLayers
+// layers. Anisotropy is the strength in [0, 1] (0: the isotropic lobe; KHR's
+// anisotropyStrength x texture.b; HDRP's Lit SurfaceData.anisotropy, whose sign pbrlab does not
+// use: KHR's strength is never negative). AnisotropyDirection: the direction the highlight's
+// roughness grows along, tangent space as a surface function writes it ((1, 0, 0): the mesh's
+// tangent; KHR's anisotropyTexture.rg x 2 - 1 rotated by anisotropyRotation); the caller
+// transforms it to world space before lighting, as ClearCoatNormal. The environment's
+// prefiltered radiance in gi.indirect.specular is read along reflect(-viewDir, n') with n' =
+// AnisotropicReflectionNormal. Unity's BRDFs (PBR_BRDF_MODEL_UNITY) have no anisotropic lobe:
+// there these three functions are not defined.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_LAYERS_GLSL
 #define PBR_UNITY_SURFACE_LAYERS_GLSL
 #include "pbr/unity/surface_standard.glsl"
 #include "pbr/surface/lighting_clearcoat.glsl"
 #include "pbr/surface/lighting_sheen.glsl"
+#include "pbr/surface/lighting_anisotropy.glsl"
 #include "pbr/material/remap.glsl"
 
 struct SurfaceOutputStandardLayers {
@@ -47,6 +71,8 @@ struct SurfaceOutputStandardLayers {
     vec3 ClearCoatNormal;       // tangent space (default (0, 0, 1): the interpolated normal)
     vec3 SheenColor;            // linear (default 0: no sheen)
     float SheenSmoothness;      // 0 = rough .. 1 = smooth (default 1: glTF's sheenRoughness 0)
+    float Anisotropy;           // 0 = isotropic .. 1 (default 0)
+    vec3 AnisotropyDirection;   // tangent space (default (1, 0, 0): the tangent)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -74,4 +100,50 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 #endif
     return vec4(c, base.a);
 }
+
+#if PBR_BRDF_MODEL == PBR_BRDF_MODEL_PBRLAB
+// pbr_unity_lighting (pbr/unity/surface_standard.glsl) with the anisotropic lobe: Unity's
+// premultiplied alpha, then pbr_lighting_anisotropic. AnisotropyDirection in world space.
+vec4 pbr_unity_lighting_anisotropic(vec3 diffColor, vec3 specColor, vec3 coatF0, float oneMinusReflectivity,
+                                    float smoothness, float occlusion, float alpha, vec3 normal, vec3 viewDir,
+                                    UnityGI gi, SurfaceOutputStandardLayers layers) {
+    float outputAlpha;
+    diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = layers.Anisotropy;
+    anisotropy.direction = layers.AnisotropyDirection;
+    vec3 c = pbr_lighting_anisotropic(diffColor, specColor, coatF0, SmoothnessToPerceptualRoughness(smoothness),
+                                      occlusion, normalize(normal), viewDir, gi, anisotropy);
+    return vec4(c, outputAlpha);
+}
+
+vec4 LightingStandardAnisotropic(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers, vec3 viewDir,
+                                 UnityGI gi) {
+    vec3 specColor;
+    float oneMinusReflectivity;
+    vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return pbr_unity_lighting_anisotropic(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+                                          oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
+                                          viewDir, gi, layers);
+}
+
+vec4 LightingStandardSpecularAnisotropic(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
+                                         vec3 viewDir, UnityGI gi) {
+    float oneMinusReflectivity;
+    vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    return pbr_unity_lighting_anisotropic(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers);
+}
+
+// The normal (world) whose mirror direction the anisotropic base reads its prefiltered
+// environment along: pbr_anisotropic_reflection_normal at the base's roughness.
+vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir, SurfaceOutputStandardLayers layers,
+                                 float smoothness) {
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = layers.Anisotropy;
+    anisotropy.direction = layers.AnisotropyDirection;
+    return pbr_anisotropic_reflection_normal(normalize(normal), viewDir, anisotropy,
+                                             SmoothnessToPerceptualRoughness(smoothness));
+}
+#endif
 #endif

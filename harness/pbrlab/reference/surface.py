@@ -158,3 +158,45 @@ def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusio
     indirect_diffuse_color = coupled_diffuse_color(
         diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
+
+
+def anisotropic_tangent(n, direction):
+    """pbr_anisotropic_tangent: direction made orthogonal to n (Gram-Schmidt) and normalised;
+    where nothing is left, the tangent of pbr_tangent_to_world (cross(up, n) normalised, up =
+    +z unless |n.z| >= 0.999, then +x)."""
+    n, d = np.broadcast_arrays(_f(n), _f(direction))
+    t = d - n * np.sum(n * d, axis=-1, keepdims=True)
+    length = np.linalg.norm(t, axis=-1, keepdims=True)
+    up = np.where(np.abs(n[..., 2:3]) < 0.999, np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    fallback = np.cross(up, n)
+    fallback /= np.linalg.norm(fallback, axis=-1, keepdims=True)
+    return np.where(length > 0.0, t / np.where(length > 0.0, length, 1.0), fallback)
+
+
+def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,
+                         light_color, indirect_diffuse, prefiltered, dfg, strength, direction,
+                         energy_compensated=True, **variants):
+    """pbr_lighting_anisotropic_dfg (glsl/pbr/surface/lighting_anisotropy.glsl): lighting_standard
+    with the direct specular lobe replaced by KHR_materials_anisotropy's
+    (anisotropy.brdf_anisotropic_specular, the exact anisotropic GGX / height-correlated Smith /
+    Schlick lobe at every tier) in the frame t = anisotropic_tangent(n, direction), b = n x t.
+    ``prefiltered``: the environment read along the bent normal's mirror direction (the caller's).
+    The split sum and the diffuse coupling are the isotropic ones at the material's roughness."""
+    from . import anisotropy
+    quality = variants.get("quality", "HIGH")
+    r = shading.clamp_perceptual_roughness(perceptual_roughness, quality)
+    n = _f(n)
+    NdotV = np.maximum(np.sum(n * v, axis=-1), shading.MIN_NDOTV)
+    t = anisotropic_tangent(n, direction)
+    b = np.cross(n, t)
+    specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[quality]
+    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
+    # the diffuse half of pbr_shade_punctual: f0 = 0 has no specular (F90 follows F0)
+    direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, np.zeros(3), r, **variants)
+    NdotL = np.clip(np.sum(n * _f(light_dir), axis=-1), 0.0, 1.0)
+    lobe = anisotropy.brdf_anisotropic_specular(n, v, light_dir, t, b, f0, r, strength, quality)
+    direct = direct + _f(light_color) * lobe * (shading.LIGHT_UNIT_SCALE * NdotL)[..., None]
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
+    indirect_diffuse_color = coupled_diffuse_color(
+        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
+    return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec

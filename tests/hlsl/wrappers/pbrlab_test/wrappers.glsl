@@ -46,14 +46,24 @@ pbr_ClearCoat test_clearcoat(float mask, float perceptualRoughness, vec3 normal)
 }
 
 SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clearCoatSmoothness,
-                                                vec3 clearCoatNormal, vec3 sheenColor, float sheenSmoothness) {
+                                                vec3 clearCoatNormal, vec3 sheenColor, float sheenSmoothness,
+                                                float anisotropy, vec3 anisotropyDirection) {
     SurfaceOutputStandardLayers s;
     s.ClearCoatMask = clearCoatMask;
     s.ClearCoatSmoothness = clearCoatSmoothness;
     s.ClearCoatNormal = clearCoatNormal;
     s.SheenColor = sheenColor;
     s.SheenSmoothness = sheenSmoothness;
+    s.Anisotropy = anisotropy;
+    s.AnisotropyDirection = anisotropyDirection;
     return s;
+}
+
+pbr_Anisotropy test_anisotropy(float strength, vec3 direction) {
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = strength;
+    anisotropy.direction = direction;
+    return anisotropy;
 }
 
 pbr_Sheen test_sheen(vec3 color, float perceptualRoughness) {
