@@ -367,9 +367,7 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.sheen_color = tuple(r.vector("sheen_color", default=[0.0, 0.0, 0.0], lo=0.0, hi=1.0))
     m.sheen_smoothness = r.number("sheen_smoothness", default=1.0, lo=0.0, hi=1.0)
     m.anisotropy_strength = r.number("anisotropy_strength", default=0.0, lo=0.0, hi=1.0)
-    m.anisotropy_rotation = r.number("anisotropy_rotation", default=0.0)
-    if not math.isfinite(m.anisotropy_rotation):
-        r.fail(f"expected a finite angle in radians, got {m.anisotropy_rotation:g}", "anisotropy_rotation")
+    m.anisotropy_rotation = r.number("anisotropy_rotation", default=0.0)  # radians (finite: json_input)
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
