@@ -40,8 +40,9 @@
 //    anisotropic lobe leaves and a white furnace stays <= 1.
 //  - anisotropy.direction: the anisotropic tangent in world space, any length; it is made
 //    orthogonal to n (Gram-Schmidt: the lobe's contract wants t, b ⟂ n, and a normal map
-//    tilts n away from the mesh's tangent plane) and normalised; where it is parallel to n or
-//    zero, any tangent of n (pbr_tangent_to_world) stands in. b = cross(n, t).
+//    tilts n away from the mesh's tangent plane) and normalised; where it is zero or within
+//    PBR_ANISOTROPY_MIN_SIN of n (sin of the angle), any tangent of n (pbr_tangent_to_world)
+//    stands in. b = cross(n, t).
 // Python twin: harness/pbrlab/reference/surface.py lighting_anisotropic.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_ANISOTROPY_GLSL
@@ -52,16 +53,26 @@
 #include "pbr/shading/anisotropy.glsl"
 #include "pbr/surface/lighting_standard.glsl"
 
+// The smallest sine of the angle between the direction and n that still gives the tangent:
+// d - n (n·d) of unit d carries float32 rounding of about 2^-23 per component, so at sin 1e-3
+// the tangent's own direction is off by at most ~2e-4 rad; closer to n (a normal map tilted
+// 89.94° from the mesh's plane) the direction says nothing and the fallback tangent is used.
+// Shared with reference/surface.py ANISOTROPY_MIN_SIN.
+#define PBR_ANISOTROPY_MIN_SIN 1e-3
+
 struct pbr_Anisotropy {
     float strength;   // 0 = isotropic .. 1 (glTF anisotropyStrength x texture.b)
     vec3 direction;   // world space: the direction the highlight's roughness grows along
 };
 
 // The unit tangent along direction in the plane of n (Gram-Schmidt), or any tangent of n
-// where direction has no component in that plane.
+// where direction is zero or within PBR_ANISOTROPY_MIN_SIN of n.
 vec3 pbr_anisotropic_tangent(vec3 n, vec3 direction) {
-    vec3 t = pbr_safe_normalize(direction - n * dot(n, direction));
-    return dot(t, t) > 0.0 ? t : pbr_tangent_to_world(vec3(1.0, 0.0, 0.0), n);
+    vec3 d = pbr_safe_normalize(direction);
+    vec3 t = d - n * dot(n, d);
+    float t2 = dot(t, t);
+    return t2 > PBR_ANISOTROPY_MIN_SIN * PBR_ANISOTROPY_MIN_SIN ? t * inversesqrt(max(t2, PBR_FLT_MIN))
+                                                                 : pbr_tangent_to_world(vec3(1.0, 0.0, 0.0), n);
 }
 
 // The normal whose mirror direction reflect(-v, ·) the caller reads its prefiltered

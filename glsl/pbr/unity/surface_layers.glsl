@@ -19,7 +19,8 @@
 //           pbr/unity/surface_standard.glsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT (1 by default; a caller that
 //           knows a layer is absent defines it 0 and LightingStandardLayers skips that
-//           layer's code); those of pbr/surface/lighting_clearcoat.glsl and
+//           layer's code); PBR_BRDF_MODEL (the anisotropic functions exist in the pbrlab
+//           model only); those of pbr/surface/lighting_clearcoat.glsl and
 //           pbr/surface/lighting_sheen.glsl.
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
@@ -80,6 +81,11 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_CLEARCOAT
 #define PBR_LAYERS_CLEARCOAT 1
+#endif
+// pbr/shading/dispatch.glsl (included above) defines PBR_BRDF_MODEL's values and default;
+// this file's own default is the same.
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 
 vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 normal, vec3 viewDir, UnityGI gi,

@@ -160,17 +160,25 @@ def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusio
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
 
 
+# glsl/pbr/surface/lighting_anisotropy.glsl PBR_ANISOTROPY_MIN_SIN: below this sine of the
+# angle between the direction and n, the fallback tangent.
+ANISOTROPY_MIN_SIN = 1e-3
+
+
 def anisotropic_tangent(n, direction):
     """pbr_anisotropic_tangent: direction made orthogonal to n (Gram-Schmidt) and normalised;
-    where nothing is left, the tangent of pbr_tangent_to_world (cross(up, n) normalised, up =
-    +z unless |n.z| >= 0.999, then +x)."""
+    where it is zero or within ANISOTROPY_MIN_SIN of n, the tangent of pbr_tangent_to_world
+    (cross(up, n) normalised, up = +z unless |n.z| >= 0.999, then +x)."""
     n, d = np.broadcast_arrays(_f(n), _f(direction))
+    d_length = np.linalg.norm(d, axis=-1, keepdims=True)
+    d = d / np.where(d_length > 0.0, d_length, 1.0)
     t = d - n * np.sum(n * d, axis=-1, keepdims=True)
     length = np.linalg.norm(t, axis=-1, keepdims=True)
     up = np.where(np.abs(n[..., 2:3]) < 0.999, np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
     fallback = np.cross(up, n)
     fallback /= np.linalg.norm(fallback, axis=-1, keepdims=True)
-    return np.where(length > 0.0, t / np.where(length > 0.0, length, 1.0), fallback)
+    in_plane = length > ANISOTROPY_MIN_SIN
+    return np.where(in_plane, t / np.where(in_plane, length, 1.0), fallback)
 
 
 def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,

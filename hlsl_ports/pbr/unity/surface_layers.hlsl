@@ -19,7 +19,8 @@
 //           pbr/unity/surface_standard.hlsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT (1 by default; a caller that
 //           knows a layer is absent defines it 0 and LightingStandardLayers skips that
-//           layer's code); those of pbr/surface/lighting_clearcoat.hlsl and
+//           layer's code); PBR_BRDF_MODEL (the anisotropic functions exist in the pbrlab
+//           model only); those of pbr/surface/lighting_clearcoat.hlsl and
 //           pbr/surface/lighting_sheen.hlsl.
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
@@ -81,6 +82,11 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_CLEARCOAT
 #define PBR_LAYERS_CLEARCOAT 1
+#endif
+// pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
+// this file's own default is the same.
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 
 float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3 normal, float3 viewDir, UnityGI gi,
