@@ -5,7 +5,8 @@ the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of
 GLSL library. Goldens of analytic scenes are checked against it.
 
 Scope: opaque spheres with the default surface (no texture maps; a clear coat along the
-geometric normal; a sheen; an anisotropic base along the sphere's tangent); environments of
+geometric normal; a sheen; an anisotropic base along the sphere's tangent; a thin film of
+the maximum thickness); environments of
 constant radiance, whose prefiltered radiance is that constant at every roughness. The
 environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
 read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
@@ -143,6 +144,10 @@ def render_scene_cpu(scene) -> np.ndarray:
         diffuse, f0, coat_f0, rough = _surface(material)
         r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
         NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+        if material.iridescence > 0.0:  # the film: the base's F0 and its coat's F0 per pixel
+            film = (material.iridescence, material.iridescence_ior, material.iridescence_thickness_max)
+            f0 = ref_surface.iridescent_f0(np.broadcast_to(f0, p.shape), NdotV, *film)
+            coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
         direct_diffuse = ref_surface.coupled_diffuse_color(

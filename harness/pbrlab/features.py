@@ -61,6 +61,7 @@ class MaterialFeatures:
     unlit: bool = False         # KHR_materials_unlit: albedo and alpha only
     sheen: bool = False         # a sheen (colour > 0): its lobe, table and the base's scaling
     anisotropy: bool = False    # an anisotropic base lobe (strength > 0): its mapping, lobe, bent normal
+    iridescence: bool = False   # a thin film on the base (mask > 0): pbr_F_Iridescence, the base's F0
 
 
 @dataclass(frozen=True)
@@ -102,6 +103,7 @@ def material_features(material) -> MaterialFeatures:
         unlit=not custom and material.unlit,
         sheen=not custom and max(material.sheen_color) > 0.0,  # glTF: factor x texture, so 0 is none
         anisotropy=not custom and material.anisotropy_strength > 0.0,  # glTF: factor x texture.b
+        iridescence=not custom and material.iridescence > 0.0,  # glTF: factor x texture.r
     )
 
 
@@ -140,7 +142,7 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
                      ("UNLIT", m.unlit), ("SHEEN", m.sheen),
-                     ("ANISOTROPY", m.anisotropy)):
+                     ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

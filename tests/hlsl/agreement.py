@@ -29,7 +29,7 @@ SAMPLES = 384          # per entry and configuration
 # (gallivm's LP_MAX_TGSI_NESTING): a Mesa GLSL chain of 123 ternaries returned the final
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
-FLOAT_SLOTS = 8
+FLOAT_SLOTS = 11  # LightingStandard[Specular]LayersBase: the surface's 4, the layers' 7
 VEC3_SLOTS = 12  # LightingStandardLayers: base.rgb, 3 layer vec3s, normal, view, GI (4), two indirect terms
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
@@ -48,7 +48,10 @@ STRUCT_BUILDERS["pbr_ClearCoat"] = ("test_clearcoat", (("float", "mask"), ("floa
                                                       ("vec3", "normal")))
 STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
     ("float", "clearCoatMask"), ("float", "clearCoatSmoothness"), ("vec3", "clearCoatNormal"),
-    ("vec3", "sheenColor"), ("float", "sheenSmoothness"), ("float", "anisotropy"), ("vec3", "anisotropyDirection")))
+    ("vec3", "sheenColor"), ("float", "sheenSmoothness"), ("float", "anisotropy"), ("vec3", "anisotropyDirection"),
+    ("float", "iridescenceMask"), ("float", "iridescenceIor"), ("float", "iridescenceThickness")))
+STRUCT_BUILDERS["pbr_Iridescence"] = ("test_iridescence", (("float", "factor"), ("float", "ior"),
+                                                          ("float", "thicknessNm")))
 STRUCT_BUILDERS["pbr_Anisotropy"] = ("test_anisotropy", (("float", "strength"), ("vec3", "direction")))
 STRUCT_BUILDERS["pbr_Sheen"] = ("test_sheen", (("vec3", "color"), ("float", "perceptualRoughness")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))

@@ -212,3 +212,29 @@ def test_anisotropic_bases_match_float64_cpu_render(quality, gl_context):
                                       clearcoat_smoothness=0.8)
     isotropic = render_scene(parse_scene(plain), gl_context).linear
     assert (np.abs(isotropic - gpu)[..., :3].max(axis=-1) > 0.01).mean() > 0.05  # the anisotropy shows
+
+
+@pytest.mark.parametrize("quality", ["high", "medium", "low"])
+def test_iridescent_bases_match_float64_cpu_render(quality, gl_context):
+    """KHR_materials_iridescence's film on a dielectric, an anisotropic coated metal and a
+    sheened specular-workflow base (films of 550, 300 and 800 nm, IOR 1.8, 1.3, 1.4), under
+    the light zoo and a constant environment; the CPU renderer evaluates the film with
+    reference/iridescence.py's float64 twin. Measured on llvmpipe (Mesa 22.3): worst 1.1e-4
+    relative, 1.7e-4 absolute (on radiance up to 3), no pixel over the typical bound."""
+    scene = light_zoo()
+    scene["environment"] = {"color": [0.3, 0.35, 0.4]}
+    scene["render"] = {"quality": quality}
+    films = {"plastic": dict(iridescence=1.0, iridescence_ior=1.8, iridescence_thickness_max=550),
+             "gold": dict(iridescence=0.7, iridescence_thickness_max=300),
+             "rough": dict(iridescence=0.9, iridescence_ior=1.4, iridescence_thickness_max=800)}
+    others = {"gold": dict(anisotropy_strength=0.6, clearcoat=0.5), "rough": dict(sheen_color=[0.2, 0.3, 0.2])}
+    for name, material in scene["materials"].items():
+        material.update(films[name], **others.get(name, {}))
+    gpu, cpu = _compare(scene, gl_context)
+    plain = light_zoo()
+    plain["environment"] = scene["environment"]
+    plain["render"] = scene["render"]
+    for name, material in plain["materials"].items():
+        material.update(others.get(name, {}))
+    filmless = render_scene(parse_scene(plain), gl_context).linear
+    assert (np.abs(filmless - gpu)[..., :3].max(axis=-1) > 0.01).mean() > 0.1  # the film shows

@@ -1,4 +1,4 @@
-"""pbr/surface/lighting_anisotropy.glsl and LightingStandard[Specular]Anisotropic
+"""pbr/surface/lighting_anisotropy.glsl and LightingStandardLayersBase with an anisotropy
 (pbr/unity/surface_layers.glsl) against their float64 twins (reference/surface.py
 lighting_anisotropic, anisotropic_tangent), the frame's fallbacks, and strength 0 against
 LightingStandard."""
@@ -41,15 +41,16 @@ def _gpu(x):
 
 
 def _layers(strength="strength", direction="d"):
-    return (f"SurfaceOutputStandardLayers(0.0, 1.0, vec3(0.0, 0.0, 1.0), vec3(0.0), 1.0, {strength}, {direction})")
+    return (f"SurfaceOutputStandardLayers(0.0, 1.0, vec3(0.0, 0.0, 1.0), vec3(0.0), 1.0, {strength}, {direction}, "
+            "0.0, 1.3, 400.0)")
 
 
-LIGHTING_ANISOTROPIC = ("LightingStandardAnisotropic(SurfaceOutputStandard(albedo, n, vec3(0.0), metallic, "
+LIGHTING_ANISOTROPIC = ("LightingStandardLayersBase(SurfaceOutputStandard(albedo, n, vec3(0.0), metallic, "
                         "smoothness, occlusion, 1.0), " + _layers() + ", v, UnityGI(UnityLight(light, l), "
                         "UnityIndirect(idiff, ispec)))")
 
 
-def test_lighting_standard_anisotropic_matches_the_float64_reference():
+def test_lighting_standard_layers_base_with_anisotropy_matches_the_float64_reference():
     x = _inputs(N)
     got = evaluate(LIGHTING_ANISOTROPIC, LAYERS, **_gpu(x))
     diffuse = ref_material.diffuse_from_metallic(x["albedo"], x["metallic"])
@@ -70,7 +71,7 @@ def test_lighting_standard_anisotropic_matches_the_float64_reference():
 
 def test_strength_zero_is_lighting_standard():
     """At strength 0 the lobe is the isotropic GGX / height-correlated Smith / Schlick one:
-    LightingStandardAnisotropic equals LightingStandard (HIGH tier) to float32 rounding of D · V
+    LightingStandardLayersBase equals LightingStandard (HIGH tier) to float32 rounding of D · V
     (measured: 89 % of the samples bit for bit, worst 7.5e-7 relative to the lit total; 1e-5
     asked, 84 ulp)."""
     x = _inputs(N)

@@ -208,3 +208,23 @@ def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlu
     indirect_diffuse_color = coupled_diffuse_color(
         diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
+
+
+# glsl/pbr/surface/lighting_iridescence.glsl PBR_IRIDESCENCE_MAX_SCHLICK_WEIGHT.
+IRIDESCENCE_MAX_SCHLICK_WEIGHT = 0.9999
+
+
+def f0_from_schlick(F, cos_theta):
+    """pbr_f0_from_schlick: Schlick 1994 with F90 = 1 solved for F0, (F - x) / (1 - x),
+    x = min((1 - cos)^5, IRIDESCENCE_MAX_SCHLICK_WEIGHT), saturated; last axis RGB."""
+    x = np.minimum((1.0 - np.clip(_f(cos_theta), 0.0, 1.0)) ** 5, IRIDESCENCE_MAX_SCHLICK_WEIGHT)[..., None]
+    return np.clip((_f(F) - x) / (1.0 - x), 0.0, 1.0)
+
+
+def iridescent_f0(f0, NdotV, factor, film_ior, thickness_nm):
+    """pbr_iridescent_f0: mix(f0, f0_from_schlick(F_Iridescence(1, film_ior, NdotV, d, f0), NdotV),
+    factor), the film evaluated by reference/iridescence.py's float64 twin of pbr_F_Iridescence."""
+    from . import iridescence
+    film = iridescence.F_Iridescence(1.0, film_ior, NdotV, thickness_nm, f0)
+    t = np.clip(_f(factor), 0.0, 1.0)[..., None]
+    return _f(f0) * (1.0 - t) + f0_from_schlick(film, NdotV) * t
