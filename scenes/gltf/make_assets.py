@@ -25,6 +25,10 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              none, strength 0.8 along the tangent, the same turned a quarter
                              (anisotropyRotation pi/2), and a swirl map (RG direction around the
                              centre, B strength rising outwards) under a KHR_texture_transform
+    iridescence.gltf         KHR_materials_iridescence on four dark quads: none, a 400 nm film of
+                             IOR 1.3 (the defaults but the factor), a film whose thickness runs
+                             100 -> 800 nm across a thickness texture (G) under a mask texture (R),
+                             a film under a coat on an anisotropic metal
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -552,6 +556,43 @@ def anisotropy():
     b.write_gltf(HERE / "anisotropy.gltf", external_bin=False)
 
 
+def film_thickness() -> np.ndarray:
+    """KHR_materials_iridescence's thickness texture: G rising left to right (0 -> 1); R a
+    mask, 1 except a vertical band in the middle at 0.3 (the iridescence texture's channel)."""
+    u, v = _grid()
+    out = np.zeros((TEX, TEX, 3), np.uint8)
+    out[..., 0] = np.round(np.where(np.abs(u - 0.5) < 0.1, 0.3, 1.0) * 255).astype(np.uint8)
+    out[..., 1] = np.round(u * 255).astype(np.uint8)
+    return out
+
+
+def iridescence():
+    b = Builder()
+    film_map = b.texture(b.image(film_thickness(), embed=True))
+    dark = {"baseColorFactor": _rgba8(0.04, 0.04, 0.05, 1), "metallicFactor": 0.0, "roughnessFactor": 0.3}
+    metal = {"baseColorFactor": _rgba8(0.9, 0.9, 0.92, 1), "metallicFactor": 1.0, "roughnessFactor": 0.4}
+    b.json["materials"] = [
+        {"name": "no_film", "pbrMetallicRoughness": dark},
+        {"name": "default_film", "pbrMetallicRoughness": dark,
+         "extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1.0}}},
+        {"name": "mapped_film", "pbrMetallicRoughness": dark,
+         "extensions": {"KHR_materials_iridescence": {
+             "iridescenceFactor": 1.0, "iridescenceTexture": {"index": film_map},
+             "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 100.0, "iridescenceThicknessMaximum": 800.0,
+             "iridescenceThicknessTexture": {"index": film_map}}}},
+        {"name": "coated_brushed_film", "pbrMetallicRoughness": metal,
+         "extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 0.8, "iridescenceThicknessMaximum": 550.0},
+                        "KHR_materials_anisotropy": {"anisotropyStrength": 0.6},
+                        "KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_anisotropy", "KHR_materials_clearcoat", "KHR_materials_iridescence"]
+    p, n, uv, f = _quad(1.5)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "iridescence.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -561,6 +602,7 @@ def main():
     clearcoat()
     sheen()
     anisotropy()
+    iridescence()
 
 
 if __name__ == "__main__":

@@ -40,7 +40,7 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
                        "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing",
-                       "KHR_materials_anisotropy")
+                       "KHR_materials_anisotropy", "KHR_materials_iridescence")
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
