@@ -147,7 +147,9 @@ def render_scene_cpu(scene) -> np.ndarray:
         if material.iridescence > 0.0:  # the film: the base's F0 and its coat's F0 per pixel
             film = (material.iridescence, material.iridescence_ior, material.iridescence_thickness_max)
             f0 = ref_surface.iridescent_f0(np.broadcast_to(f0, p.shape), NdotV, *film)
-            coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
+            film_coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
+            diffuse = ref_surface.iridescent_diffuse_color(diffuse, coat_f0, film_coat_f0)
+            coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
         direct_diffuse = ref_surface.coupled_diffuse_color(

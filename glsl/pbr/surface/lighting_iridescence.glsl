@@ -5,6 +5,7 @@
 //           PBR_IRIDESCENCE_MAX_SCHLICK_WEIGHT
 //           vec3 pbr_f0_from_schlick(vec3 F, float cosTheta)
 //           vec3 pbr_iridescent_f0(vec3 f0, float NdotV, pbr_Iridescence film)
+//           vec3 pbr_iridescent_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec3 filmCoatF0)
 // Include:  "pbr/surface/lighting_iridescence.glsl" (path relative to glsl/)
 // Config macros read: none.
 //
@@ -21,7 +22,12 @@
 // Every Fresnel of the base then reads F0' (direct light at VdotH, the split sum, the energy
 // compensation, the diffuse's coupling to the coat over it: the caller passes its coat's F0
 // through the same function), so the film costs one pbr_F_Iridescence per F0 and pixel and
-// the base's energy bookkeeping holds as it does for any F0 in [0, 1]. Decided:
+// the base's energy bookkeeping holds as it does for any F0 in [0, 1]. The diffuse colour is
+// rescaled with the coat's F0 (pbr_iridescent_diffuse_color) so that the diffuse albedo rho
+// the coupling recovers from it (pbr_diffuse_albedo_from_diffuse_color) stays the
+// material's: without it a film whose F0' is below the base's 0.04 darkened a white
+// dielectric's diffuse by up to 0.016 in a white furnace, and one above it was only saved
+// by rho's cap at 1 (tests/render/test_white_furnace.py, filmed rows). Decided:
 //  - outside IOR 1, coated or not (the Sample Renderer's choice; the specification's text
 //    puts the coat's IOR above the film where KHR_materials_clearcoat is present);
 //  - direct light reads Schlick(F0', VdotH) rather than the Sample Renderer's
@@ -36,6 +42,7 @@
 #define PBR_SURFACE_LIGHTING_IRIDESCENCE_GLSL
 #include "pbr/common/math.glsl"
 #include "pbr/brdf/f_iridescence.glsl"
+#include "pbr/shading/energy_conservation.glsl"
 
 // Largest Schlick weight (1 − cosθ)⁵ the inversion divides by 1 minus (the Sample
 // Renderer's clamp in Schlick_to_F0): at grazing views F0 is not recoverable from F, and
@@ -58,5 +65,13 @@ vec3 pbr_f0_from_schlick(vec3 F, float cosTheta) {
 vec3 pbr_iridescent_f0(vec3 f0, float NdotV, pbr_Iridescence film) {
     vec3 filmF = pbr_F_Iridescence(1.0, film.ior, NdotV, film.thicknessNm, f0);
     return pbr_iridescence_mix(f0, pbr_f0_from_schlick(filmF, NdotV), film.factor);
+}
+
+// The diffuse colour whose albedo under the filmed coat (filmCoatF0 = pbr_iridescent_f0 of
+// coatF0) is the one diffuseColor has under coatF0: rho (1 - max3(filmCoatF0)), rho =
+// pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0) (the same floor on 1 - max3).
+vec3 pbr_iridescent_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec3 filmCoatF0) {
+    return pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0)
+         * max(1.0 - pbr_max3(filmCoatF0), PBR_MIN_ONE_MINUS_REFLECTIVITY);
 }
 #endif

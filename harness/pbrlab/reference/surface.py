@@ -228,3 +228,10 @@ def iridescent_f0(f0, NdotV, factor, film_ior, thickness_nm):
     film = iridescence.F_Iridescence(1.0, film_ior, NdotV, thickness_nm, f0)
     t = np.clip(_f(factor), 0.0, 1.0)[..., None]
     return _f(f0) * (1.0 - t) + f0_from_schlick(film, NdotV) * t
+
+
+def iridescent_diffuse_color(diffuse_color, coat_f0, film_coat_f0):
+    """pbr_iridescent_diffuse_color: rho (1 - max3(film_coat_f0)) (floored as the coupling's),
+    rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)."""
+    rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)
+    return rho * np.maximum(1.0 - np.max(_f(film_coat_f0), axis=-1, keepdims=True), MIN_ONE_MINUS_REFLECTIVITY)

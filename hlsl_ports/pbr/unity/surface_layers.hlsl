@@ -145,7 +145,9 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     film.thicknessNm = layers.IridescenceThickness;
     float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
     specColor = pbr_iridescent_f0(specColor, NdotV, film);
-    coatF0 = pbr_iridescent_f0(coatF0, NdotV, film);
+    float3 filmCoatF0 = pbr_iridescent_f0(coatF0, NdotV, film);
+    diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
+    coatF0 = filmCoatF0;
 #endif
 #if PBR_LAYERS_ANISOTROPY
     pbr_Anisotropy anisotropy;
