@@ -79,6 +79,8 @@
 #include "pbr/surface/lighting_standard.glsl"
 #include "pbr/surface/lighting_clearcoat.glsl"
 #include "pbr/surface/lighting_sheen.glsl"
+#include "pbr/surface/lighting_anisotropy.glsl"
+#include "pbr/surface/lighting_iridescence.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

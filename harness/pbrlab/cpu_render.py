@@ -5,7 +5,8 @@ the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of
 GLSL library. Goldens of analytic scenes are checked against it.
 
 Scope: opaque spheres with the default surface (no texture maps; a clear coat along the
-geometric normal); environments of
+geometric normal; a sheen; an anisotropic base along the sphere's tangent; a thin film of
+the maximum thickness); environments of
 constant radiance, whose prefiltered radiance is that constant at every roughness. The
 environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
 read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
@@ -143,12 +144,25 @@ def render_scene_cpu(scene) -> np.ndarray:
         diffuse, f0, coat_f0, rough = _surface(material)
         r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
         NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+        if material.iridescence > 0.0:  # the film: the base's F0 and its coat's F0 per pixel
+            film = (material.iridescence, material.iridescence_ior, material.iridescence_thickness_max)
+            f0 = ref_surface.iridescent_f0(np.broadcast_to(f0, p.shape), NdotV, *film)
+            film_coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
+            diffuse = ref_surface.iridescent_diffuse_color(diffuse, coat_f0, film_coat_f0)
+            coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
         direct_diffuse = ref_surface.coupled_diffuse_color(
             diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f))
+        direction = _sphere_anisotropy_direction(n, material.anisotropy_rotation)
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
+            if material.anisotropy_strength > 0.0:  # the base's lobe stretched (no indirect here)
+                zero = np.zeros(p.shape)
+                color += ref_surface.lighting_anisotropic(
+                    diffuse, f0, coat_f0, rough, material.occlusion, n, v, l, radiance, zero, zero, dfg,
+                    material.anisotropy_strength, direction, quality=quality, **material.brdf)
+                continue
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
                                                 quality=quality, **material.brdf)
         if env_sh is not None:
@@ -168,6 +182,19 @@ def render_scene_cpu(scene) -> np.ndarray:
         out[mask, :3] = color
         out[mask, 3] = 1.0  # opaque: coverage
     return out
+
+
+def _sphere_anisotropy_direction(n, rotation):
+    """The anisotropy's world direction on a sphere (no map): the sphere's tangent along
+    increasing u (templates/scene_geometry.inc pbrlab_sphere_tangent: (cos φ, 0, sin φ),
+    φ = 2π u the azimuth of pbr_equirect_uv, bitangent n x t) rotated by ``rotation`` radians
+    towards the bitangent (KHR_materials_anisotropy). The constant environment makes the bent
+    normal irrelevant here: the prefiltered radiance is the same along every direction."""
+    phi = np.arctan2(n[:, 0], -n[:, 2])
+    t = np.stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)], axis=-1)
+    b = np.cross(n, t)
+    d = t * np.cos(rotation) + b * np.sin(rotation)
+    return d / np.linalg.norm(d, axis=-1, keepdims=True)
 
 
 def _coated(scene, material, base, n, v, p, quality):

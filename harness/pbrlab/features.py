@@ -60,6 +60,8 @@ class MaterialFeatures:
     clearcoat_normal_scale: bool = False
     unlit: bool = False         # KHR_materials_unlit: albedo and alpha only
     sheen: bool = False         # a sheen (colour > 0): its lobe, table and the base's scaling
+    anisotropy: bool = False    # an anisotropic base lobe (strength > 0): its mapping, lobe, bent normal
+    iridescence: bool = False   # a thin film on the base (mask > 0): pbr_F_Iridescence, the base's F0
 
 
 @dataclass(frozen=True)
@@ -100,6 +102,8 @@ def material_features(material) -> MaterialFeatures:
         clearcoat_normal_scale="clearcoat_normal" in maps and material.clearcoat_normal_scale != 1.0,
         unlit=not custom and material.unlit,
         sheen=not custom and max(material.sheen_color) > 0.0,  # glTF: factor x texture, so 0 is none
+        anisotropy=not custom and material.anisotropy_strength > 0.0,  # glTF: factor x texture.b
+        iridescence=not custom and material.iridescence > 0.0,  # glTF: factor x texture.r
     )
 
 
@@ -137,7 +141,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
-                     ("UNLIT", m.unlit), ("SHEEN", m.sheen)):
+                     ("UNLIT", m.unlit), ("SHEEN", m.sheen),
+                     ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

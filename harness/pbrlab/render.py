@@ -150,6 +150,11 @@ def _upload_material(program, material):
     _set(program, "u_clearcoat_normal_scale", material.clearcoat_normal_scale)
     _set(program, "u_sheen_color", tuple(material.sheen_color))
     _set(program, "u_sheen_smoothness", material.sheen_smoothness)
+    _set(program, "u_anisotropy_strength", material.anisotropy_strength)
+    _set(program, "u_anisotropy_rotation", material.anisotropy_rotation)
+    _set(program, "u_iridescence", material.iridescence)
+    _set(program, "u_iridescence_ior", material.iridescence_ior)
+    _set(program, "u_iridescence_thickness", (material.iridescence_thickness_min, material.iridescence_thickness_max))
     for slot, transform in material.texture_transform.items():
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 

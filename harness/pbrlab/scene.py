@@ -75,6 +75,16 @@ CLEARCOAT_SLOTS = ("clearcoat", "clearcoat_roughness", "clearcoat_normal")
 # (linear, A = the sheen's perceptual roughness: glTF sheenRoughnessTexture).
 TEXTURE_SLOTS.update({"sheen_color": "srgb", "sheen_roughness": "linear"})
 SHEEN_SLOTS = ("sheen_color", "sheen_roughness")
+# The anisotropy's map (KHR_materials_anisotropy's anisotropyTexture, linear): RG = the
+# direction in tangent space (x 2 - 1), B = the strength's factor.
+TEXTURE_SLOTS.update({"anisotropy": "linear"})
+ANISOTROPY_SLOTS = ("anisotropy",)
+# The thin film's maps (KHR_materials_iridescence, linear): iridescence (R x the mask),
+# iridescence_thickness (G: between the minimum and maximum thickness).
+TEXTURE_SLOTS.update({"iridescence": "linear", "iridescence_thickness": "linear"})
+IRIDESCENCE_SLOTS = ("iridescence", "iridescence_thickness")
+# The film's IOR: KHR_materials_iridescence's minimum 1; at most pbr_F_Iridescence's domain.
+IRIDESCENCE_IOR_RANGE = (1.0, 16.0)
 
 
 @dataclass
@@ -138,6 +148,16 @@ class Material:
     # The sheen (KHR_materials_sheen; pbr/unity/surface_layers.glsl): colour 0 is none
     sheen_color: tuple = (0.0, 0.0, 0.0)  # linear
     sheen_smoothness: float = 1.0          # 1 - the sheen's perceptual roughness
+    # The anisotropy (KHR_materials_anisotropy; pbr/unity/surface_layers.glsl): strength 0 is
+    # none (x the map's B); rotation in radians, counter-clockwise from the tangent to the bitangent
+    anisotropy_strength: float = 0.0
+    anisotropy_rotation: float = 0.0
+    # The thin film (KHR_materials_iridescence; pbr/unity/surface_layers.glsl): mask 0 is none
+    # (x the map's R); thickness in nanometres, the maximum without the thickness map (G)
+    iridescence: float = 0.0
+    iridescence_ior: float = 1.3
+    iridescence_thickness_min: float = 100.0
+    iridescence_thickness_max: float = 400.0
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -359,6 +379,13 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.clearcoat_smoothness = r.number("clearcoat_smoothness", default=1.0, lo=0.0, hi=1.0)
     m.sheen_color = tuple(r.vector("sheen_color", default=[0.0, 0.0, 0.0], lo=0.0, hi=1.0))
     m.sheen_smoothness = r.number("sheen_smoothness", default=1.0, lo=0.0, hi=1.0)
+    m.anisotropy_strength = r.number("anisotropy_strength", default=0.0, lo=0.0, hi=1.0)
+    m.anisotropy_rotation = r.number("anisotropy_rotation", default=0.0)  # radians (finite: json_input)
+    m.iridescence = r.number("iridescence", default=0.0, lo=0.0, hi=1.0)
+    m.iridescence_ior = r.number("iridescence_ior", default=1.3, lo=IRIDESCENCE_IOR_RANGE[0],
+                                 hi=IRIDESCENCE_IOR_RANGE[1])
+    m.iridescence_thickness_min = r.number("iridescence_thickness_min", default=100.0, lo=0.0)  # nm
+    m.iridescence_thickness_max = r.number("iridescence_thickness_max", default=400.0, lo=0.0)  # nm
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
@@ -395,6 +422,22 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         r.fail("the sheen belongs to the default surface; a surface file writes its own output "
                "(remove `sheen_color`, `sheen_smoothness`)", "sheen_color" if r.has("sheen_color") else
                "sheen_smoothness")
+    if m.surface is not None and (r.has("anisotropy_strength") or r.has("anisotropy_rotation")):
+        r.fail("the anisotropy belongs to the default surface; a surface file writes its own output "
+               "(remove `anisotropy_strength`, `anisotropy_rotation`)",
+               "anisotropy_strength" if r.has("anisotropy_strength") else "anisotropy_rotation")
+    film_keys = [k for k in ("iridescence", "iridescence_ior", "iridescence_thickness_min",
+                             "iridescence_thickness_max") if r.has(k)]
+    if m.surface is not None and film_keys:
+        r.fail("the iridescence belongs to the default surface; a surface file writes its own output "
+               f"(remove `{'`, `'.join(film_keys)}`)", film_keys[0])
+    for slot in IRIDESCENCE_SLOTS:
+        if slot in m.textures and m.iridescence == 0.0:
+            textures.fail(f"the {slot} map belongs to the thin film, whose mask `iridescence` is 0 here: "
+                          "give the material an iridescence in (0, 1]", slot)
+    if "anisotropy" in m.textures and m.anisotropy_strength == 0.0:
+        textures.fail("the anisotropy map scales anisotropy_strength, which is 0 here: give the "
+                      "material an anisotropy_strength in (0, 1]", "anisotropy")
     if "metallic_smoothness" in m.textures and "metallic_roughness" in m.textures:
         textures.fail("give one packing: metallic_smoothness (Unity: R metallic, A smoothness) or "
                       "metallic_roughness (glTF: B metallic, G roughness), not both")
@@ -418,7 +461,9 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
         r.fail(str(exc), "surface")
     for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
-                "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness"):
+                "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
+                "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
+                "iridescence_thickness_max"):
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "
@@ -606,6 +651,15 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
                             hdr_target=rs.choice("hdr_target", HDR_TARGETS, default="rgba32f"),
                             brdf_model=rs.choice("brdf_model", BRDF_MODELS, default="pbrlab"))
     rs.finish()
+    if render.brdf_model == "unity":
+        anisotropic = sorted(name for name, m in materials.items() if m.anisotropy_strength > 0.0)
+        if anisotropic:
+            rs.fail(f"Unity's BRDFs have no anisotropic lobe; material {anisotropic[0]!r} is anisotropic "
+                    "(use brdf_model pbrlab, or anisotropy_strength 0)", "brdf_model")
+        filmed = sorted(name for name, m in materials.items() if m.iridescence > 0.0)
+        if filmed:
+            rs.fail(f"Unity's BRDFs have no F0 a thin film could replace; material {filmed[0]!r} is iridescent "
+                    "(use brdf_model pbrlab, or iridescence 0)", "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 

@@ -80,6 +80,8 @@
 #include "pbr/surface/lighting_standard.hlsl"
 #include "pbr/surface/lighting_clearcoat.hlsl"
 #include "pbr/surface/lighting_sheen.hlsl"
+#include "pbr/surface/lighting_anisotropy.hlsl"
+#include "pbr/surface/lighting_iridescence.hlsl"
 
 // HDR
 #include "pbr/tonemap/exposure.hlsl"

@@ -21,6 +21,14 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              (not honoured: named in a warning); data: URIs only
     sheen.gltf               KHR_materials_sheen on four quads: none, a white sheen, a sheen
                              with colour (sRGB RGB) and roughness (A) textures, a sheen under a coat
+    anisotropy.gltf          KHR_materials_anisotropy on four metal quads (no TANGENT: MikkTSpace):
+                             none, strength 0.8 along the tangent, the same turned a quarter
+                             (anisotropyRotation pi/2), and a swirl map (RG direction around the
+                             centre, B strength rising outwards) under a KHR_texture_transform
+    iridescence.gltf         KHR_materials_iridescence on four dark quads: none, a 400 nm film of
+                             IOR 1.3 (the defaults but the factor), a film whose thickness runs
+                             100 -> 800 nm across a thickness texture (G) under a mask texture (R),
+                             a film under a coat on an anisotropic metal
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -511,6 +519,81 @@ def sheen():
     b.write_gltf(HERE / "sheen.gltf", external_bin=False)
 
 
+def swirl() -> np.ndarray:
+    """KHR_materials_anisotropy's texture: RG = the direction (x 2 - 1) in tangent space (+X
+    right, +Y up the image), along circles around the centre; B = the strength's factor, 0.25
+    at the centre rising to 1 at the rim."""
+    u, v = _grid()
+    x, y = u - 0.5, 0.5 - v  # y up the image
+    r = np.hypot(x, y)
+    d = np.stack([-y, x], axis=-1) / np.maximum(r, 1e-6)[..., None]
+    d = np.where((r > 1e-6)[..., None], d, [1.0, 0.0])
+    strength = 0.25 + 0.75 * np.clip(r / 0.5, 0.0, 1.0)
+    rgb = np.concatenate([d * 0.5 + 0.5, strength[..., None]], axis=-1)
+    return np.round(rgb * 255).astype(np.uint8)
+
+
+def anisotropy():
+    b = Builder()
+    swirl_map = b.texture(b.image(swirl(), embed=True))
+    base = {"baseColorFactor": _rgba8(0.95, 0.93, 0.88, 1), "metallicFactor": 1.0, "roughnessFactor": 0.35}
+    b.json["materials"] = [
+        {"name": "isotropic", "pbrMetallicRoughness": base},
+        {"name": "along_tangent", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_anisotropy": {"anisotropyStrength": 0.8}}},
+        {"name": "quarter_turn", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_anisotropy": {"anisotropyStrength": 0.8, "anisotropyRotation": math.pi / 2}}},
+        {"name": "swirl", "pbrMetallicRoughness": base,
+         "extensions": {"KHR_materials_anisotropy": {
+             "anisotropyStrength": 1.0, "anisotropyRotation": 0.3,
+             "anisotropyTexture": {"index": swirl_map, "texCoord": 0, "extensions": {
+                 "KHR_texture_transform": {"offset": [0.1, -0.05], "rotation": 0.2, "scale": [1.1, 1.1]}}}}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_anisotropy", "KHR_texture_transform"]
+    p, n, uv, f = _quad(1.5)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "anisotropy.gltf", external_bin=False)
+
+
+def film_thickness() -> np.ndarray:
+    """KHR_materials_iridescence's thickness texture: G rising left to right (0 -> 1); R a
+    mask, 1 except a vertical band in the middle at 0.3 (the iridescence texture's channel)."""
+    u, v = _grid()
+    out = np.zeros((TEX, TEX, 3), np.uint8)
+    out[..., 0] = np.round(np.where(np.abs(u - 0.5) < 0.1, 0.3, 1.0) * 255).astype(np.uint8)
+    out[..., 1] = np.round(u * 255).astype(np.uint8)
+    return out
+
+
+def iridescence():
+    b = Builder()
+    film_map = b.texture(b.image(film_thickness(), embed=True))
+    dark = {"baseColorFactor": _rgba8(0.04, 0.04, 0.05, 1), "metallicFactor": 0.0, "roughnessFactor": 0.3}
+    metal = {"baseColorFactor": _rgba8(0.9, 0.9, 0.92, 1), "metallicFactor": 1.0, "roughnessFactor": 0.4}
+    b.json["materials"] = [
+        {"name": "no_film", "pbrMetallicRoughness": dark},
+        {"name": "default_film", "pbrMetallicRoughness": dark,
+         "extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1.0}}},
+        {"name": "mapped_film", "pbrMetallicRoughness": dark,
+         "extensions": {"KHR_materials_iridescence": {
+             "iridescenceFactor": 1.0, "iridescenceTexture": {"index": film_map},
+             "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 100.0, "iridescenceThicknessMaximum": 800.0,
+             "iridescenceThicknessTexture": {"index": film_map}}}},
+        {"name": "coated_brushed_film", "pbrMetallicRoughness": metal,
+         "extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 0.8, "iridescenceThicknessMaximum": 550.0},
+                        "KHR_materials_anisotropy": {"anisotropyStrength": 0.6},
+                        "KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_anisotropy", "KHR_materials_clearcoat", "KHR_materials_iridescence"]
+    p, n, uv, f = _quad(1.5)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "iridescence.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -519,6 +602,8 @@ def main():
     features()
     clearcoat()
     sheen()
+    anisotropy()
+    iridescence()
 
 
 if __name__ == "__main__":

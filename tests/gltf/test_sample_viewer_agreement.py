@@ -20,6 +20,14 @@ whole images with the background made equal):
     on these quads the two differ by less than 4 codes: the smooth coat's E and F agree,
     the rough coat's mask is 0.2 x 0.9 outside its disc)
     (textured.gltf with its lights only, measured once: 0.0058 of pixels over 4 codes)
+    anisotropy.gltf, 2 punctual lights (KHR_materials_anisotropy): 0.0013, 22 codes, 0.109, FLIP 0.0021
+    anisotropy.gltf, 2 lights + constant environment:          0.0007, 13 codes, 0.055, FLIP 0.0016
+    iridescence.gltf, 2 punctual lights (KHR_materials_iridescence): 0.0001, 5 codes, 0.285, FLIP 0.0060
+    iridescence.gltf, 2 lights + constant environment:         0.0002, 5 codes, 0.332, FLIP 0.0073
+    (the film: pbrlab folds F_iridescence(NdotV) into F0 where the viewer mixes it into each
+    light's Fresnel; on these quads, under lights from the camera's side, they agree within
+    the tolerance; the anisotropic environment term sees a constant sky, so only the lights
+    test the lobe)
 Where they differ: the normal-mapped bumps' rims (tangent frames: the viewer's MikkTSpace
 against pbrlab's per-vertex tangents), the checker's texel edges (mip chains: the
 viewer's glGenerateMipmap against pbrlab's), one spot-cone edge pixel of
@@ -100,6 +108,10 @@ def _agreement(ours, theirs):
     ("hierarchy_lights.glb", None),        # node hierarchy, directional, point and spot lights
     ("clearcoat.gltf", None),              # KHR_materials_clearcoat: factor, textures, coat normal map
     ("clearcoat.gltf", CONSTANT_SKY),      # ... and the coat's environment reflection
+    ("anisotropy.gltf", None),             # KHR_materials_anisotropy: strength, rotation, a direction map
+    ("anisotropy.gltf", CONSTANT_SKY),
+    ("iridescence.gltf", None),            # KHR_materials_iridescence: factor, IOR, thickness maps
+    ("iridescence.gltf", CONSTANT_SKY),
 ])
 def test_gltf_render_agrees_with_khronos_sample_viewer(renders, asset, environment_colour):
     ours, theirs = renders(asset, environment_colour)

@@ -29,8 +29,8 @@ SAMPLES = 384          # per entry and configuration
 # (gallivm's LP_MAX_TGSI_NESTING): a Mesa GLSL chain of 123 ternaries returned the final
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
-FLOAT_SLOTS = 8
-VEC3_SLOTS = 11  # LightingStandardLayers: base.rgb, 2 layer vec3s, normal, view, GI (4), two indirect terms
+FLOAT_SLOTS = 11  # LightingStandard[Specular]LayersBase: the surface's 4, the layers' 7
+VEC3_SLOTS = 12  # LightingStandardLayers: base.rgb, 3 layer vec3s, normal, view, GI (4), two indirect terms
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
 STRUCT_BUILDERS = {
@@ -48,7 +48,11 @@ STRUCT_BUILDERS["pbr_ClearCoat"] = ("test_clearcoat", (("float", "mask"), ("floa
                                                       ("vec3", "normal")))
 STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
     ("float", "clearCoatMask"), ("float", "clearCoatSmoothness"), ("vec3", "clearCoatNormal"),
-    ("vec3", "sheenColor"), ("float", "sheenSmoothness")))
+    ("vec3", "sheenColor"), ("float", "sheenSmoothness"), ("float", "anisotropy"), ("vec3", "anisotropyDirection"),
+    ("float", "iridescenceMask"), ("float", "iridescenceIor"), ("float", "iridescenceThickness")))
+STRUCT_BUILDERS["pbr_Iridescence"] = ("test_iridescence", (("float", "factor"), ("float", "ior"),
+                                                          ("float", "thicknessNm")))
+STRUCT_BUILDERS["pbr_Anisotropy"] = ("test_anisotropy", (("float", "strength"), ("vec3", "direction")))
 STRUCT_BUILDERS["pbr_Sheen"] = ("test_sheen", (("vec3", "color"), ("float", "perceptualRoughness")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
 STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
@@ -95,7 +99,8 @@ VARIANT_DEPENDENT = {
     "pbr_unity_lighting", "LightingStandard", "pbr_unity_brdf_pbs", "pbr_unity_gi_occlusion",
     "pbr_unity_environment_lod", "pbr_specular_albedo_bound", "pbr_indirect_diffuse_color",
     "LightingStandardSpecular", "PreMultiplyAlpha", "pbr_tonemap", "pbr_decode_color_texel",
-    "pbr_encode_final_color",
+    "pbr_encode_final_color", "pbr_lighting_anisotropic", "pbr_lighting_anisotropic_dfg",
+    "pbr_anisotropic_reflection_normal",
 }
 
 # Every value of every selector, each in at least one configuration (the default

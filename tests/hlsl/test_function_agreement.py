@@ -40,7 +40,10 @@ for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_l
 # one ulp of the argument (1.9e-6 at 30 rad) moves the cosine by that much; the two programs
 # contract the phase's multiply-add differently, so values near a zero of the cosine differ
 # by many ulp but little absolutely. Measured worst 2.0e-7 absolute; bound 5e-7 + 1e-6 rel.
-for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence"):
+# The same bound holds for what carries the film into the base's F0 and lighting
+# (pbr_iridescent_f0 and the LayersBase functions: measured worst 7 ulp, 6.6e-7 relative).
+for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0",
+              "pbr_unity_lighting_layers_base", "LightingStandardLayersBase", "LightingStandardSpecularLayersBase"):
     STATED_BOUNDS[_name] = ("abs+rel", (5e-7, 1e-6), "fma contraction of the interference phase (see above)")
 
 

@@ -21,6 +21,13 @@ multiple-scattering compensation:
                       E' = min(E, 1), E the white sheen's directional albedo (up to 2.94 raw)
   sheened coated      the white dielectric, a white sheen of the mirrored smoothness and a full
                       clear coat of the column's smoothness over both
+  filmed dielectric   the white dielectric under a 400 nm film of IOR 1.3 (KHR_materials_iridescence):
+                      F0 and the coat's F0 both become the film's F0' per pixel, so the diffuse
+                      keeps exactly what the specular leaves: 1, whatever F0' (measured 8.3e-7 from
+                      1, as the filmless white dielectric)
+  filmed metal        the white metal under a 550 nm film of IOR 1.8: E(F0') per channel, F0' the
+                      film folded into F0 at the pixel's mu (reference/surface.py iridescent_f0;
+                      measured worst 3.1e-5 from the float64 albedo)
 """
 
 import numpy as np
@@ -29,6 +36,7 @@ import pytest
 from pbrlab.camera import camera_frame, camera_rays
 from pbrlab.cpu_render import _sheen_albedo
 from pbrlab.reference import directional_albedo as ref_albedo
+from pbrlab.reference import surface as ref_surface
 from pbrlab.reference import shading as ref_shading
 from pbrlab.render import render_scene, scene_radius
 from pbrlab.scene import parse_scene
@@ -44,7 +52,12 @@ MATERIALS = {
     "coated_metal": {"albedo": [1, 1, 1], "metallic": 1.0, "clearcoat": 0.5},
     "sheened_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "sheen_color": [1, 1, 1]},
     "sheened_coated": {"albedo": [1, 1, 1], "metallic": 0.0, "sheen_color": [1, 1, 1], "clearcoat": 1.0},
+    "filmed_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "iridescence": 1.0},
+    "filmed_metal": {"albedo": [1, 1, 1], "metallic": 1.0, "iridescence": 1.0, "iridescence_ior": 1.8,
+                     "iridescence_thickness_max": 550.0},
 }
+# The films: (mask, IOR, thickness in nm) as KHR_materials_iridescence's defaults fill them in.
+FILMS = {"filmed_dielectric": (1.0, 1.3, 400.0), "filmed_metal": (1.0, 1.8, 550.0)}
 # The coat's smoothness from the column's (base) smoothness.
 COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1.0 - s,
                    "sheened_coated": lambda s: s}
@@ -52,12 +65,12 @@ COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1
 SHEEN_SMOOTHNESS = {"sheened_dielectric": lambda s: s, "sheened_coated": lambda s: 1.0 - s}
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
       "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0, "sheened_dielectric": 0.04,
-      "sheened_coated": 0.04}
+      "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 1.0}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
            "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04,
-           "sheened_dielectric": 0.04, "sheened_coated": 0.04}
+           "sheened_dielectric": 0.04, "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 0.04}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -118,20 +131,28 @@ def _pixel_geometry(scene):
     return index, mu
 
 
-def _expected(name, compensation, A, B):
+def _expected(name, compensation, A, B, mu):
     """Reflectance of a uniform white environment, written from the sources: split sum
     f0 A + f90 B (Karis 2013), F90 = saturate(16.5 * 3 f0) (Schüler 2009 / Filament),
     compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E_coat), E_coat
     the albedo of the dielectric coat over the diffuse."""
     def albedo(f0):
-        f90 = min(1.0, 16.5 * 3 * f0)
-        e = f0 * A + f90 * B
-        return e * (1 + f0 * (1 / (A + B) - 1)) if compensation else e
+        f0 = np.asarray(f0, np.float64)
+        grey = f0.ndim == 0
+        f0 = np.broadcast_to(f0, (*np.shape(A), 3)) if grey else f0
+        f90 = np.minimum(1.0, 16.5 * f0.sum(axis=-1, keepdims=True))
+        e = f0 * A[:, None] + f90 * B[:, None]
+        e = e * (1 + f0 * (1 / (A + B)[:, None] - 1)) if compensation else e
+        return e
 
     rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0,
            "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0,
-           "sheened_dielectric": 1.0, "sheened_coated": 1.0}[name]  # albedo (1 - metallic)
-    return albedo(F0[name]) + rho * (1 - albedo(COAT_F0[name]))
+           "sheened_dielectric": 1.0, "sheened_coated": 1.0, "filmed_dielectric": 1.0,
+           "filmed_metal": 0.0}[name]  # albedo (1 - metallic)
+    f0, coat_f0 = F0[name], COAT_F0[name]
+    if name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')
+        f0, coat_f0 = (ref_surface.iridescent_f0(np.full((len(mu), 3), f), mu, *FILMS[name]) for f in (f0, coat_f0))
+    return albedo(f0) + rho * (1 - albedo(coat_f0))
 
 
 _RENDERS = {}  # (quality, compensation) -> (scene, linear): each variant rendered once per process
@@ -179,19 +200,19 @@ def test_white_furnace_matches_the_float64_directional_albedo_at_every_pixel(fur
         rough = ref_shading.clamp_perceptual_roughness(1.0 - SMOOTHNESS[int(column)], tier)
         A, B = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
             np.maximum(mu[mask], ref_shading.MIN_NDOTV), float(rough) ** 2), -1, 0)
-        want = _expected(name, compensation, A, B)
+        want = _expected(name, compensation, A, B, np.maximum(mu[mask], ref_shading.MIN_NDOTV))
         if name in SHEEN_SMOOTHNESS:  # the sheen: E' = min(E, 1) of the white lobe at its roughness
             sheen_rough = 1.0 - SHEEN_SMOOTHNESS[name](SMOOTHNESS[int(column)])
             e_sheen = np.minimum(_sheen_albedo(np.maximum(mu[mask], ref_shading.MIN_NDOTV), sheen_rough), 1.0)
-            want = want * (1 - e_sheen) + e_sheen
+            want = want * (1 - e_sheen[:, None]) + e_sheen[:, None]
         if name in COAT_SMOOTHNESS:  # the coat: single scattering at F0 0.04, F90 1, its own roughness
             coat = float(ref_shading.clamp_perceptual_roughness(
                 1.0 - COAT_SMOOTHNESS[name](SMOOTHNESS[int(column)]), tier))
             Ac, Bc = np.moveaxis(ref_albedo.split_sum_terms_at_alpha(
                 np.maximum(mu[mask], ref_shading.MIN_NDOTV), coat ** 2), -1, 0)
             weight, e_coat = MATERIALS[name]["clearcoat"], 0.04 * Ac + Bc
-            want = want * (1 - weight * e_coat) + weight * e_coat
-        err = np.abs(linear[mask, :3] - want[:, None]).max()
+            want = want * (1 - weight * e_coat[:, None]) + weight * e_coat[:, None]
+        err = np.abs(linear[mask, :3] - want).max()
         worst[obj.material] = err
     bad = {k: v for k, v in worst.items() if v > ALBEDO_TOLERANCE}
     assert not bad, bad

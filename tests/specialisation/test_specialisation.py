@@ -28,6 +28,8 @@ TEST_SCENES = {
     "readme_example": lambda: load_scene(ROOT / "scenes" / "example.json"),
     "coated_light_zoo": lambda: parse_scene(_coated(light_zoo())),
     "sheened_light_zoo": lambda: parse_scene(_sheened(light_zoo())),
+    "anisotropic_light_zoo": lambda: parse_scene(_anisotropic(light_zoo())),
+    "iridescent_light_zoo": lambda: parse_scene(_iridescent(light_zoo())),
 }
 
 
@@ -46,6 +48,29 @@ def _sheened(scene):
         material.update(sheen_color=[1.0 - 0.3 * i, 0.5, 0.2 + 0.3 * i], sheen_smoothness=0.9 - 0.4 * i)
         if i == 1:
             material.update(clearcoat=0.7, clearcoat_smoothness=0.6)
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _anisotropic(scene):
+    """The light zoo with anisotropic bases (one also sheened and coated): a setting of the
+    material, compiled in both programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.update(anisotropy_strength=1.0 - 0.3 * i, anisotropy_rotation=0.7 * i)
+        if i == 1:
+            material.update(clearcoat=0.7, clearcoat_smoothness=0.6, sheen_color=[0.4, 0.5, 0.6])
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _iridescent(scene):
+    """The light zoo with thin films on its bases (one also anisotropic and coated): a setting
+    of the material, compiled in both programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.update(iridescence=1.0 - 0.3 * i, iridescence_ior=1.3 + 0.3 * i,
+                        iridescence_thickness_max=250.0 + 300.0 * i)
+        if i == 1:
+            material.update(anisotropy_strength=0.5, clearcoat=0.7)
     scene["environment"] = {"color": [0.3, 0.3, 0.3]}
     return scene
 
@@ -253,3 +278,42 @@ def test_a_material_without_a_sheen_has_none_of_its_code(tmp_path, specialise):
     plain_text, sheened_text = _preprocessed(plain, tmp_path), _preprocessed(sheened, tmp_path)
     for token in SHEEN_TOKENS:
         assert token not in plain_text and token in sheened_text, token
+
+
+# The anisotropy's uniforms and call sites: only where a material's base is anisotropic.
+ANISOTROPY_TOKENS = ["u_anisotropy_strength", "u_anisotropy_rotation", "pbrlab_surf_anisotropy(IN,layers)",
+                     "pbr_lighting_anisotropic(diffColor,specColor", "AnisotropicReflectionNormal(o.Normal"]
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+def test_a_material_without_anisotropy_has_none_of_its_code(tmp_path, specialise):
+    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
+    anisotropic_scene = json.loads(json.dumps(MINIMAL))
+    anisotropic_scene["materials"]["m"].update(anisotropy_strength=0.6, anisotropy_rotation=0.5)
+    _, anisotropic = _programs_for(parse_scene(anisotropic_scene), specialise)
+    plain_text, anisotropic_text = _preprocessed(plain, tmp_path), _preprocessed(anisotropic, tmp_path)
+    for token in ANISOTROPY_TOKENS:
+        assert token not in plain_text and token in anisotropic_text, token
+    # an anisotropic base alone has no sheen or coat code either
+    for token in ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]:
+        assert token not in anisotropic_text, token
+
+
+# The thin film's uniforms and call sites: only where a material's base has a film.
+IRIDESCENCE_TOKENS = ["u_iridescence", "u_iridescence_ior", "u_iridescence_thickness",
+                      "pbrlab_surf_iridescence(IN,layers)", "specColor=pbr_iridescent_f0(specColor"]
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+def test_a_material_without_iridescence_has_none_of_its_code(tmp_path, specialise):
+    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
+    filmed_scene = json.loads(json.dumps(MINIMAL))
+    filmed_scene["materials"]["m"].update(iridescence=0.8, iridescence_thickness_max=500.0)
+    _, filmed = _programs_for(parse_scene(filmed_scene), specialise)
+    plain_text, filmed_text = _preprocessed(plain, tmp_path), _preprocessed(filmed, tmp_path)
+    for token in IRIDESCENCE_TOKENS:
+        assert token not in plain_text and token in filmed_text, token
+    # a film alone has no anisotropy, sheen or coat code either
+    for token in ANISOTROPY_TOKENS[:1] + ["pbr_lighting_anisotropic(diffColor,specColor", "u_sheen_color",
+                                          "u_clearcoat", ",layers,o.Normal,v,gi,"]:
+        assert token not in filmed_text, token

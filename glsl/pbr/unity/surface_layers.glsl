@@ -5,12 +5,25 @@
 //           vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 normal,
 //                                       vec3 viewDir, UnityGI gi, vec3 sheenIndirect,
 //                                       vec3 coatIndirectSpecular, float occlusion)
+//           vec4 LightingStandardLayersBase(SurfaceOutputStandard s,
+//                                           SurfaceOutputStandardLayers layers, vec3 viewDir,
+//                                           UnityGI gi)
+//           vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s,
+//                                                   SurfaceOutputStandardLayers layers,
+//                                                   vec3 viewDir, UnityGI gi)
+//           vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir,
+//                                            SurfaceOutputStandardLayers layers,
+//                                            float smoothness)
+//           (these three in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
 // Include:  "pbr/unity/surface_layers.glsl" (path relative to glsl/; it includes
 //           pbr/unity/surface_standard.glsl).
-// Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT (1 by default; a caller that
-//           knows a layer is absent defines it 0 and LightingStandardLayers skips that
-//           layer's code); those of pbr/surface/lighting_clearcoat.glsl and
-//           pbr/surface/lighting_sheen.glsl.
+// Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT, PBR_LAYERS_ANISOTROPY,
+//           PBR_LAYERS_IRIDESCENCE (1 by default; a caller that knows a layer is absent
+//           defines it 0 and LightingStandardLayers / LightingStandard[Specular]LayersBase
+//           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
+//           pbrlab model only); those of pbr/surface/lighting_clearcoat.glsl,
+//           pbr/surface/lighting_sheen.glsl, pbr/surface/lighting_anisotropy.glsl and
+//           pbr/surface/lighting_iridescence.glsl.
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
 // The fields here are named as URP's SurfaceData names them (clearCoatMask,
@@ -33,12 +46,34 @@
 // perceptualSmoothness). normal: the base's world-space normal (the sheen's, per KHR);
 // sheenIndirect: the prefiltered environment along reflect(-viewDir, normal) at the sheen's
 // roughness.
+// The anisotropy (KHR_materials_anisotropy) and the iridescence (KHR_materials_iridescence)
+// are not layers over the base but change the base itself: its specular lobe stretched, its
+// F0 turned into a thin film's. LightingStandard[Specular]LayersBase stand in for
+// LightingStandard[Specular] (the same workflow maths, Unity's premultiplied alpha; the F0
+// and the coat's F0 through pbr_iridescent_f0, pbr/surface/lighting_iridescence.glsl; then
+// pbr_lighting_anisotropic, pbr/surface/lighting_anisotropy.glsl, or pbr_lighting_standard)
+// and their result is what LightingStandardLayers layers. With both layers off (mask 0,
+// strength 0) they return LightingStandard[Specular]'s value (the anisotropic lobe at
+// strength 0: to float32 rounding at the HIGH tier). Anisotropy is the strength in [0, 1] (0: the isotropic lobe; KHR's
+// anisotropyStrength x texture.b; HDRP's Lit SurfaceData.anisotropy, whose sign pbrlab does not
+// use: KHR's strength is never negative). AnisotropyDirection: the direction the highlight's
+// roughness grows along, tangent space as a surface function writes it ((1, 0, 0): the mesh's
+// tangent; KHR's anisotropyTexture.rg x 2 - 1 rotated by anisotropyRotation); the caller
+// transforms it to world space before lighting, as ClearCoatNormal. The environment's
+// prefiltered radiance in gi.indirect.specular is read along reflect(-viewDir, n') with n' =
+// AnisotropicReflectionNormal. IridescenceMask (HDRP's Lit name; KHR's iridescenceFactor x
+// texture.r, 0 = no film), IridescenceIor (the film's IOR) and IridescenceThickness (nm,
+// pbr_iridescence_thickness; HDRP's 0..1 remap is not used). Unity's BRDFs
+// (PBR_BRDF_MODEL_UNITY) have neither an anisotropic lobe nor an F0 to replace: there these
+// three functions are not defined.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_LAYERS_GLSL
 #define PBR_UNITY_SURFACE_LAYERS_GLSL
 #include "pbr/unity/surface_standard.glsl"
 #include "pbr/surface/lighting_clearcoat.glsl"
 #include "pbr/surface/lighting_sheen.glsl"
+#include "pbr/surface/lighting_anisotropy.glsl"
+#include "pbr/surface/lighting_iridescence.glsl"
 #include "pbr/material/remap.glsl"
 
 struct SurfaceOutputStandardLayers {
@@ -47,6 +82,11 @@ struct SurfaceOutputStandardLayers {
     vec3 ClearCoatNormal;       // tangent space (default (0, 0, 1): the interpolated normal)
     vec3 SheenColor;            // linear (default 0: no sheen)
     float SheenSmoothness;      // 0 = rough .. 1 = smooth (default 1: glTF's sheenRoughness 0)
+    float Anisotropy;           // 0 = isotropic .. 1 (default 0)
+    vec3 AnisotropyDirection;   // tangent space (default (1, 0, 0): the tangent)
+    float IridescenceMask;      // 0 = no film .. 1 (default 0)
+    float IridescenceIor;       // the film's IOR (default 1.3: KHR's)
+    float IridescenceThickness; // nanometres (default 400: KHR's maximum)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -54,6 +94,17 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_CLEARCOAT
 #define PBR_LAYERS_CLEARCOAT 1
+#endif
+#ifndef PBR_LAYERS_ANISOTROPY
+#define PBR_LAYERS_ANISOTROPY 1
+#endif
+#ifndef PBR_LAYERS_IRIDESCENCE
+#define PBR_LAYERS_IRIDESCENCE 1
+#endif
+// pbr/shading/dispatch.glsl (included above) defines PBR_BRDF_MODEL's values and default;
+// this file's own default is the same.
+#ifndef PBR_BRDF_MODEL
+#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 
 vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 normal, vec3 viewDir, UnityGI gi,
@@ -74,4 +125,68 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 #endif
     return vec4(c, base.a);
 }
+
+#if PBR_BRDF_MODEL == PBR_BRDF_MODEL_PBRLAB
+// pbr_unity_lighting (pbr/unity/surface_standard.glsl) with the layers that change the base:
+// Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
+// (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one.
+vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0, float oneMinusReflectivity,
+                                    float smoothness, float occlusion, float alpha, vec3 normal, vec3 viewDir,
+                                    UnityGI gi, SurfaceOutputStandardLayers layers) {
+    float outputAlpha;
+    diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
+    vec3 n = normalize(normal);
+    float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
+#if PBR_LAYERS_IRIDESCENCE
+    pbr_Iridescence film;
+    film.factor = layers.IridescenceMask;
+    film.ior = layers.IridescenceIor;
+    film.thicknessNm = layers.IridescenceThickness;
+    float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
+    specColor = pbr_iridescent_f0(specColor, NdotV, film);
+    vec3 filmCoatF0 = pbr_iridescent_f0(coatF0, NdotV, film);
+    diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
+    coatF0 = filmCoatF0;
+#endif
+#if PBR_LAYERS_ANISOTROPY
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = layers.Anisotropy;
+    anisotropy.direction = layers.AnisotropyDirection;
+    vec3 c = pbr_lighting_anisotropic(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir,
+                                      gi, anisotropy);
+#else
+    vec3 c = pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
+#endif
+    return vec4(c, outputAlpha);
+}
+
+vec4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers, vec3 viewDir,
+                                UnityGI gi) {
+    vec3 specColor;
+    float oneMinusReflectivity;
+    vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+                                          oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
+                                          viewDir, gi, layers);
+}
+
+vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
+                                        vec3 viewDir, UnityGI gi) {
+    float oneMinusReflectivity;
+    vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers);
+}
+
+// The normal (world) whose mirror direction the anisotropic base reads its prefiltered
+// environment along: pbr_anisotropic_reflection_normal at the base's roughness.
+vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir, SurfaceOutputStandardLayers layers,
+                                 float smoothness) {
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = layers.Anisotropy;
+    anisotropy.direction = layers.AnisotropyDirection;
+    return pbr_anisotropic_reflection_normal(normalize(normal), viewDir, anisotropy,
+                                             SmoothnessToPerceptualRoughness(smoothness));
+}
+#endif
 #endif

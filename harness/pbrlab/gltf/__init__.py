@@ -40,7 +40,8 @@ SUFFIXES = (".gltf", ".glb")
 HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_clearcoat",
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
-                       "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing")
+                       "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing",
+                       "KHR_materials_anisotropy", "KHR_materials_iridescence")
 # Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
 DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
@@ -202,6 +203,10 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
                                "which the primitive lacks")
         mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
         normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
+        if normal_uv is None and material.anisotropy_strength > 0.0:
+            # KHR_materials_anisotropy lies along the tangent: MikkTSpace from its map's UV set
+            # (TEXCOORD_0 without a map) where the primitive has no TANGENT
+            normal_uv = material.texture_uv_set.get("anisotropy", 0)
         gkey = (mesh_index, p, flip, normal_uv, weights)
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,

@@ -23,6 +23,11 @@ reads what this module writes into a scene Material:
                                              glossinessFactor x texture.a = smoothness
     KHR_materials_sheen                      sheen_color = sheenColorFactor x sheenColorTexture.rgb (sRGB),
                                              sheen_smoothness = 1 - sheenRoughnessFactor (x texture.a)
+    KHR_materials_anisotropy                 anisotropy_strength = anisotropyStrength (x texture.b),
+                                             anisotropy_rotation = anisotropyRotation, the anisotropy map
+                                             (RG: direction); MikkTSpace tangents where TANGENT is absent
+    KHR_materials_iridescence                iridescence = iridescenceFactor (x texture.r), iridescence_ior,
+                                             iridescence_thickness_min / _max (nm; texture.g between them)
     KHR_materials_ior, KHR_materials_specular
       (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
                                              x specularColorFactor x specularFactor (max 1)
@@ -37,7 +42,7 @@ import math
 
 import numpy as np
 
-from ..scene import Material
+from ..scene import IRIDESCENCE_IOR_RANGE, Material
 from . import images
 from .document import Document
 from .fields import FieldReader, join
@@ -56,7 +61,9 @@ DEFAULT_IOR = 1.5                                         # KHR_materials_ior: g
 
 HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",
                                 "KHR_materials_specular", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
-                                "KHR_materials_sheen")
+                                "KHR_materials_sheen", "KHR_materials_anisotropy", "KHR_materials_iridescence")
+# KHR_materials_iridescence's textures: (key, pbrlab slot); linear data (R mask, G thickness)
+IRIDESCENCE_TEXTURES = (("iridescenceTexture", "iridescence"), ("iridescenceThicknessTexture", "iridescence_thickness"))
 # KHR_materials_sheen's textures: (key, pbrlab slot, decode sRGB)
 SHEEN_TEXTURES = (("sheenColorTexture", "sheen_color", True), ("sheenRoughnessTexture", "sheen_roughness", False))
 # KHR_materials_clearcoat's textures: (key, pbrlab slot); all linear data
@@ -204,6 +211,10 @@ class MaterialReader:
             self._clearcoat(m, extensions["KHR_materials_clearcoat"], name)
         if "KHR_materials_sheen" in extensions:
             self._sheen(m, extensions["KHR_materials_sheen"], name)
+        if "KHR_materials_anisotropy" in extensions:
+            self._anisotropy(m, extensions["KHR_materials_anisotropy"], name)
+        if "KHR_materials_iridescence" in extensions:
+            self._iridescence(m, extensions["KHR_materials_iridescence"], name)
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
@@ -245,6 +256,31 @@ class MaterialReader:
         for key, slot, srgb in SHEEN_TEXTURES:
             if sheen.has(key):
                 self.texture(sheen.object(key), m, slot, srgb, name)
+
+    def _anisotropy(self, m: Material, anisotropy: FieldReader, name: str):
+        """KHR_materials_anisotropy (the extension's README, "Properties"): strength =
+        anisotropyStrength x texture.b, direction = texture.rg x 2 - 1 rotated by
+        anisotropyRotation (radians, counter-clockwise in tangent space). A strength of 0 is no
+        anisotropy, mapped or not (0 x the texture), so its texture is not read then."""
+        m.anisotropy_strength = anisotropy.number("anisotropyStrength", 0.0, 0.0, 1.0)
+        m.anisotropy_rotation = anisotropy.number("anisotropyRotation", 0.0)
+        if anisotropy.has("anisotropyTexture") and m.anisotropy_strength > 0.0:
+            self.texture(anisotropy.object("anisotropyTexture"), m, "anisotropy", False, name)
+
+    def _iridescence(self, m: Material, film: FieldReader, name: str):
+        """KHR_materials_iridescence (the extension's README, "Properties"): mask =
+        iridescenceFactor x iridescenceTexture.r, the film's IOR, thickness (nm) =
+        mix(iridescenceThicknessMinimum, iridescenceThicknessMaximum, thickness texture.g), the
+        maximum without that texture. Defaults 0, 1.3, 100, 400. A factor of 0 is no film, so
+        its textures are not read then. The IOR's upper limit is pbr_F_Iridescence's domain."""
+        m.iridescence = film.number("iridescenceFactor", 0.0, 0.0, 1.0)
+        m.iridescence_ior = film.number("iridescenceIor", 1.3, *IRIDESCENCE_IOR_RANGE)
+        m.iridescence_thickness_min = film.number("iridescenceThicknessMinimum", 100.0, 0.0)
+        m.iridescence_thickness_max = film.number("iridescenceThicknessMaximum", 400.0, 0.0)
+        if m.iridescence > 0.0:
+            for key, slot in IRIDESCENCE_TEXTURES:
+                if film.has(key):
+                    self.texture(film.object(key), m, slot, False, name)
 
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
         """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from

@@ -158,3 +158,80 @@ def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusio
     indirect_diffuse_color = coupled_diffuse_color(
         diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
+
+
+# glsl/pbr/surface/lighting_anisotropy.glsl PBR_ANISOTROPY_MIN_SIN: below this sine of the
+# angle between the direction and n, the fallback tangent.
+ANISOTROPY_MIN_SIN = 1e-3
+
+
+def anisotropic_tangent(n, direction):
+    """pbr_anisotropic_tangent: direction made orthogonal to n (Gram-Schmidt) and normalised;
+    where it is zero or within ANISOTROPY_MIN_SIN of n, the tangent of pbr_tangent_to_world
+    (cross(up, n) normalised, up = +z unless |n.z| >= 0.999, then +x)."""
+    n, d = np.broadcast_arrays(_f(n), _f(direction))
+    d_length = np.linalg.norm(d, axis=-1, keepdims=True)
+    d = d / np.where(d_length > 0.0, d_length, 1.0)
+    t = d - n * np.sum(n * d, axis=-1, keepdims=True)
+    length = np.linalg.norm(t, axis=-1, keepdims=True)
+    up = np.where(np.abs(n[..., 2:3]) < 0.999, np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    fallback = np.cross(up, n)
+    fallback /= np.linalg.norm(fallback, axis=-1, keepdims=True)
+    in_plane = length > ANISOTROPY_MIN_SIN
+    return np.where(in_plane, t / np.where(in_plane, length, 1.0), fallback)
+
+
+def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,
+                         light_color, indirect_diffuse, prefiltered, dfg, strength, direction,
+                         energy_compensated=True, **variants):
+    """pbr_lighting_anisotropic_dfg (glsl/pbr/surface/lighting_anisotropy.glsl): lighting_standard
+    with the direct specular lobe replaced by KHR_materials_anisotropy's
+    (anisotropy.brdf_anisotropic_specular, the exact anisotropic GGX / height-correlated Smith /
+    Schlick lobe at every tier) in the frame t = anisotropic_tangent(n, direction), b = n x t.
+    ``prefiltered``: the environment read along the bent normal's mirror direction (the caller's).
+    The split sum and the diffuse coupling are the isotropic ones at the material's roughness."""
+    from . import anisotropy
+    quality = variants.get("quality", "HIGH")
+    r = shading.clamp_perceptual_roughness(perceptual_roughness, quality)
+    n = _f(n)
+    NdotV = np.maximum(np.sum(n * v, axis=-1), shading.MIN_NDOTV)
+    t = anisotropic_tangent(n, direction)
+    b = np.cross(n, t)
+    specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[quality]
+    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
+    # the diffuse half of pbr_shade_punctual: f0 = 0 has no specular (F90 follows F0)
+    direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, np.zeros(3), r, **variants)
+    NdotL = np.clip(np.sum(n * _f(light_dir), axis=-1), 0.0, 1.0)
+    lobe = anisotropy.brdf_anisotropic_specular(n, v, light_dir, t, b, f0, r, strength, quality)
+    direct = direct + _f(light_color) * lobe * (shading.LIGHT_UNIT_SCALE * NdotL)[..., None]
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
+    indirect_diffuse_color = coupled_diffuse_color(
+        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
+    return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
+
+
+# glsl/pbr/surface/lighting_iridescence.glsl PBR_IRIDESCENCE_MAX_SCHLICK_WEIGHT.
+IRIDESCENCE_MAX_SCHLICK_WEIGHT = 0.9999
+
+
+def f0_from_schlick(F, cos_theta):
+    """pbr_f0_from_schlick: Schlick 1994 with F90 = 1 solved for F0, (F - x) / (1 - x),
+    x = min((1 - cos)^5, IRIDESCENCE_MAX_SCHLICK_WEIGHT), saturated; last axis RGB."""
+    x = np.minimum((1.0 - np.clip(_f(cos_theta), 0.0, 1.0)) ** 5, IRIDESCENCE_MAX_SCHLICK_WEIGHT)[..., None]
+    return np.clip((_f(F) - x) / (1.0 - x), 0.0, 1.0)
+
+
+def iridescent_f0(f0, NdotV, factor, film_ior, thickness_nm):
+    """pbr_iridescent_f0: mix(f0, f0_from_schlick(F_Iridescence(1, film_ior, NdotV, d, f0), NdotV),
+    factor), the film evaluated by reference/iridescence.py's float64 twin of pbr_F_Iridescence."""
+    from . import iridescence
+    film = iridescence.F_Iridescence(1.0, film_ior, NdotV, thickness_nm, f0)
+    t = np.clip(_f(factor), 0.0, 1.0)[..., None]
+    return _f(f0) * (1.0 - t) + f0_from_schlick(film, NdotV) * t
+
+
+def iridescent_diffuse_color(diffuse_color, coat_f0, film_coat_f0):
+    """pbr_iridescent_diffuse_color: rho (1 - max3(film_coat_f0)) (floored as the coupling's),
+    rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)."""
+    rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)
+    return rho * np.maximum(1.0 - np.max(_f(film_coat_f0), axis=-1, keepdims=True), MIN_ONE_MINUS_REFLECTIVITY)

@@ -45,6 +45,16 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #else
 #define PBR_LAYERS_CLEARCOAT 0
 #endif
+#ifdef PBRLAB_ANISOTROPY
+#define PBR_LAYERS_ANISOTROPY 1
+#else
+#define PBR_LAYERS_ANISOTROPY 0
+#endif
+#ifdef PBRLAB_IRIDESCENCE
+#define PBR_LAYERS_IRIDESCENCE 1
+#else
+#define PBR_LAYERS_IRIDESCENCE 0
+#endif
 
 #include "pbr/pbr.hlsl"
 #include "pbr/lighting/attenuation.hlsl"

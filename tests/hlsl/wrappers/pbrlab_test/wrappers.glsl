@@ -46,14 +46,36 @@ pbr_ClearCoat test_clearcoat(float mask, float perceptualRoughness, vec3 normal)
 }
 
 SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clearCoatSmoothness,
-                                                vec3 clearCoatNormal, vec3 sheenColor, float sheenSmoothness) {
+                                                vec3 clearCoatNormal, vec3 sheenColor, float sheenSmoothness,
+                                                float anisotropy, vec3 anisotropyDirection, float iridescenceMask,
+                                                float iridescenceIor, float iridescenceThickness) {
     SurfaceOutputStandardLayers s;
     s.ClearCoatMask = clearCoatMask;
     s.ClearCoatSmoothness = clearCoatSmoothness;
     s.ClearCoatNormal = clearCoatNormal;
     s.SheenColor = sheenColor;
     s.SheenSmoothness = sheenSmoothness;
+    s.Anisotropy = anisotropy;
+    s.AnisotropyDirection = anisotropyDirection;
+    s.IridescenceMask = iridescenceMask;
+    s.IridescenceIor = iridescenceIor;
+    s.IridescenceThickness = iridescenceThickness;
     return s;
+}
+
+pbr_Iridescence test_iridescence(float factor, float ior, float thicknessNm) {
+    pbr_Iridescence film;
+    film.factor = factor;
+    film.ior = ior;
+    film.thicknessNm = thicknessNm;
+    return film;
+}
+
+pbr_Anisotropy test_anisotropy(float strength, vec3 direction) {
+    pbr_Anisotropy anisotropy;
+    anisotropy.strength = strength;
+    anisotropy.direction = direction;
+    return anisotropy;
 }
 
 pbr_Sheen test_sheen(vec3 color, float perceptualRoughness) {

@@ -1,0 +1,116 @@
+// pbr/surface/lighting_anisotropy.glsl: pbr_lighting_standard with KHR_materials_anisotropy's
+// specular lobe: one surface point lit by one punctual light and by the environment, the
+// base's specular stretched along a direction in the surface.
+//
+// Provides: struct pbr_Anisotropy
+//           vec3 pbr_anisotropic_tangent(vec3 n, vec3 direction)
+//           vec3 pbr_anisotropic_reflection_normal(vec3 n, vec3 v, pbr_Anisotropy anisotropy,
+//                                                  float perceptualRoughness)
+//           vec3 pbr_lighting_anisotropic_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                             float perceptualRoughness, float occlusion,
+//                                             vec3 n, vec3 v, pbr_GI gi,
+//                                             pbr_Anisotropy anisotropy, vec2 dfg)
+//           vec3 pbr_lighting_anisotropic(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                         float perceptualRoughness, float occlusion, vec3 n,
+//                                         vec3 v, pbr_GI gi, pbr_Anisotropy anisotropy)
+// Include:  "pbr/surface/lighting_anisotropy.glsl" (path relative to glsl/)
+// Config macros read: those of pbr/surface/lighting_standard.glsl and
+//           pbr/shading/anisotropy.glsl.
+//
+// Everything is pbr_lighting_standard_dfg's (pbr/surface/lighting_standard.glsl: units,
+// energy, the diffuse coupled to the coat over it, occlusion on indirect light only) except
+// the specular lobe of direct light, which is pbr_brdf_anisotropic_specular
+// (pbr/shading/anisotropy.glsl: KHR_materials_anisotropy's alphaT = mix(alpha, 1, s²),
+// alphaB = alpha, anisotropic GGX D and height-correlated Smith V, Schlick F), and the
+// environment's prefiltered radiance, which the caller reads along reflect(-v, bent) with
+// bent = pbr_anisotropic_reflection_normal (the Khronos sample viewer's bent normal, a
+// heuristic measured at up to +205 % against the exact integral: pbr/shading/anisotropy.glsl).
+// Direct light: lightRadiance · (diffuse · Fd + D · V · F) · π · NdotL, summed in
+// pbr_shade_punctual's order, so the diffuse term is bit for bit pbr_lighting_standard's.
+// Decided:
+//  - The lobe is the exact anisotropic GGX / height-correlated Smith / Schlick one at every
+//    tier and whatever PBR_SPECULAR_* selects (the library has no other anisotropic V); at
+//    strength 0 it equals pbr_brdf_standard's specular to float32 rounding where that is the
+//    same model (the HIGH tier with the default selectors: tested through the renderer),
+//    and differs by the MEDIUM/LOW tiers' fast V (at most 29 %) elsewhere.
+//  - The split sum (its DFG values, the coupling of the diffuse to the coat, the energy
+//    compensation) is the isotropic one at the material's roughness, as the sample viewer
+//    reads its GGX table at the isotropic roughness: stretching the lobe (alphaT >= alpha)
+//    only lowers its single-scattering albedo, so the diffuse keeps at most what the
+//    anisotropic lobe leaves and a white furnace stays <= 1.
+//  - anisotropy.direction: the anisotropic tangent in world space, any length; it is made
+//    orthogonal to n (Gram-Schmidt: the lobe's contract wants t, b ⟂ n, and a normal map
+//    tilts n away from the mesh's tangent plane) and normalised; where it is zero or within
+//    PBR_ANISOTROPY_MIN_SIN of n (sin of the angle), any tangent of n (pbr_tangent_to_world)
+//    stands in. b = cross(n, t).
+// Python twin: harness/pbrlab/reference/surface.py lighting_anisotropic.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
+#ifndef PBR_SURFACE_LIGHTING_ANISOTROPY_GLSL
+#define PBR_SURFACE_LIGHTING_ANISOTROPY_GLSL
+#include "pbr/common/conventions.glsl"
+#include "pbr/common/guards.glsl"
+#include "pbr/ibl/importance_sampling.glsl"
+#include "pbr/shading/anisotropy.glsl"
+#include "pbr/surface/lighting_standard.glsl"
+
+// The smallest sine of the angle between the direction and n that still gives the tangent:
+// d - n (n·d) of unit d carries float32 rounding of about 2^-23 per component, so at sin 1e-3
+// the tangent's own direction is off by at most ~2e-4 rad; closer to n (a normal map tilted
+// 89.94° from the mesh's plane) the direction says nothing and the fallback tangent is used.
+// Shared with reference/surface.py ANISOTROPY_MIN_SIN.
+#define PBR_ANISOTROPY_MIN_SIN 1e-3
+
+struct pbr_Anisotropy {
+    float strength;   // 0 = isotropic .. 1 (glTF anisotropyStrength x texture.b)
+    vec3 direction;   // world space: the direction the highlight's roughness grows along
+};
+
+// The unit tangent along direction in the plane of n (Gram-Schmidt), or any tangent of n
+// where direction is zero or within PBR_ANISOTROPY_MIN_SIN of n.
+vec3 pbr_anisotropic_tangent(vec3 n, vec3 direction) {
+    vec3 d = pbr_safe_normalize(direction);
+    vec3 t = d - n * dot(n, d);
+    float t2 = dot(t, t);
+    return t2 > PBR_ANISOTROPY_MIN_SIN * PBR_ANISOTROPY_MIN_SIN ? t * inversesqrt(max(t2, PBR_FLT_MIN))
+                                                                 : pbr_tangent_to_world(vec3(1.0, 0.0, 0.0), n);
+}
+
+// The normal whose mirror direction reflect(-v, ·) the caller reads its prefiltered
+// environment along (pbr_anisotropic_bent_normal with the anisotropic bitangent, as the
+// sample viewer's getIBLRadianceAnisotropy passes it).
+vec3 pbr_anisotropic_reflection_normal(vec3 n, vec3 v, pbr_Anisotropy anisotropy, float perceptualRoughness) {
+    vec3 b = cross(n, pbr_anisotropic_tangent(n, anisotropy.direction));
+    return pbr_anisotropic_bent_normal(n, v, b, anisotropy.strength,
+                                       pbr_clamp_perceptual_roughness(perceptualRoughness));
+}
+
+vec3 pbr_lighting_anisotropic_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                                  float occlusion, vec3 n, vec3 v, pbr_GI gi, pbr_Anisotropy anisotropy,
+                                  vec2 dfg) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
+    vec3 t = pbr_anisotropic_tangent(n, anisotropy.direction);
+    vec3 b = cross(n, t);
+    vec3 l = gi.light.dir;
+    // pbr_shade_punctual with pbr_brdf_standard's diffuse half (same operations, same order)
+    float nDotL = dot(n, l);
+    vec3 halfSum = l + v;
+    float LdotH = 0.5 * sqrt(dot(halfSum, halfSum));
+    float Fd = pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), nDotL, LdotH, roughness);
+    Fd = nDotL > 0.0 ? Fd : 0.0;
+    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
+    vec3 brdf = directDiffuse * Fd
+              + pbr_brdf_anisotropic_specular(n, v, l, t, b, f0, roughness, anisotropy.strength);
+    vec3 direct = gi.light.color * brdf * (PBR_LIGHT_UNIT_SCALE * clamp(nDotL, 0.0, 1.0));
+    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
+    return direct + pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * gi.indirect.diffuse * occlusion
+         + specular;
+}
+
+vec3 pbr_lighting_anisotropic(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                              float occlusion, vec3 n, vec3 v, pbr_GI gi, pbr_Anisotropy anisotropy) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_lighting_anisotropic_dfg(diffuseColor, f0, coatF0, roughness, occlusion, n, v, gi, anisotropy, dfg);
+}
+#endif
