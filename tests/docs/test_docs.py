@@ -21,8 +21,10 @@ README = ROOT / "README.md"
 README_MAX_LINES = 200  # issue 27: what it is, a picture, the two commands, one example, links
 DOCUMENTS = [README, *sorted((ROOT / "docs").rglob("*.md"))]
 RUNNABLE = [doc for doc in DOCUMENTS if parse(doc).files or parse(doc).shell]
-# What the site build reads besides docs/: the snippets it includes (mkdocs.yml).
-SITE_SOURCES = ["mkdocs.yml", "docs", "README.md", "glsl/README.md", "scenes/example.json"]
+# What the site build reads besides docs/ (mkdocs.yml): the files it includes, and glsl/, from
+# whose headers its hook writes the library-files page.
+SITE_SOURCES = ["mkdocs.yml", "scripts/mkdocs_hooks.py", "docs", "README.md", "glsl",
+                "scenes/example.json"]
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 COMMAND_TIMEOUT_S = 300
 
@@ -79,6 +81,13 @@ def test_site_builds_with_strict(tmp_path):
     assert "Functions, sources and measured worst-case error" in (site / "library" / "index.html").read_text(encoding="utf-8")
     assert "my_rim" in (site / "getting-started" / "index.html").read_text(encoding="utf-8")
     assert "red_plastic" in (site / "scenes" / "index.html").read_text(encoding="utf-8")
+    # The generated page: every GLSL file of the library, with its Provides line.
+    files_page = (site / "library-files" / "index.html").read_text(encoding="utf-8")
+    glsl = ROOT / "glsl"
+    missing = [p.relative_to(glsl).as_posix() for p in glsl.rglob("*.glsl")
+               if f"<code>{p.relative_to(glsl).as_posix()}</code>" not in files_page]
+    assert not missing, missing
+    assert files_page.count("Provides:") == len(list(glsl.rglob("*.glsl")))
 
 
 def test_strict_build_fails_on_a_broken_link(tmp_path):
