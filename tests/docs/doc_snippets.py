@@ -6,6 +6,9 @@ A fenced code block preceded (on the line just above its opening fence) by
     <!-- runs -->         is a shell block: its commands run in order in that project,
                           each must exit 0.
 
+A file's block may carry ``title="PATH"`` after its language (shown by the site); it must
+name the same PATH as the marker.
+
 All runnable blocks of one document form one project. A marker not followed by a fence is
 an error, so a typo cannot silently drop a snippet from the test.
 """
@@ -18,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 MARKER = re.compile(r"^<!--\s*runs(?::\s*(?P<path>\S+))?\s*-->\s*$")
-FENCE = re.compile(r"^(?P<fence>```+|~~~+)\s*(?P<lang>[\w+-]*)\s*$")
+FENCE = re.compile(r'^(?P<fence>```+|~~~+)\s*(?P<lang>[\w+-]*)(?:\s+title="(?P<title>[^"]*)")?\s*$')
 
 
 @dataclass
@@ -64,6 +67,9 @@ def parse(document: Path) -> Project:
         fence = FENCE.match(lines[i + 1]) if i + 1 < len(lines) else None
         if not fence:
             raise ValueError(f"{document}:{i + 1}: a runs marker must be followed by a fenced code block")
+        if fence["title"] is not None and fence["title"] != marker["path"]:
+            raise ValueError(f"{document}:{i + 2}: the block's title {fence['title']!r} is not the file "
+                             f"its marker writes ({marker['path']!r})")
         close = fence["fence"]
         end = next((j for j in range(i + 2, len(lines)) if lines[j].strip() == close), None)
         if end is None:

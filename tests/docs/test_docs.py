@@ -131,3 +131,16 @@ def test_readme_example_first_run_names_the_missing_golden(tmp_path):
     assert "golden 'rim_sphere' is missing" in result.stdout
     assert "--update-goldens" in result.stdout
     assert "1 failed, 1 passed" in result.stdout
+
+
+@pytest.mark.parametrize("text, message", [
+    ("<!-- runs: a.py -->\n\n```python\nx = 1\n```\n", "must be followed by a fenced code block"),
+    ("<!-- runs: a.py -->\n```python\nx = 1\n", "not closed"),
+    ('<!-- runs: a.py -->\n```python title="b.py"\nx = 1\n```\n', "is not the file its marker writes"),
+    ("<!-- runs: ../a.py -->\n```python\nx = 1\n```\n", "must be a path inside the project"),
+], ids=["no-block", "unclosed", "title-mismatch", "outside"])
+def test_a_malformed_marker_is_an_error_not_a_skipped_snippet(tmp_path, text, message):
+    page = tmp_path / "page.md"
+    page.write_text(text, encoding="utf-8")
+    with pytest.raises(ValueError, match=message):
+        parse(page)
