@@ -18,4 +18,4 @@ bench: setup
 	@$(PY) -m pbrlab.cli bench --out docs/bench
 
 clean:
-	rm -rf out test-output .venv
+	rm -rf out test-output site .venv

@@ -8,7 +8,7 @@
 #      A C++ compiler (g++) for the meshoptimizer bindings, published as source only.
 #      Chromium and node/npm (Debian's chromium, nodejs; npm unless node brings it) for the glTF Sample Viewer
 #      comparison (pbrlab.sample_viewer) are among them.
-#   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see README) and
+#   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see docs/getting-started.md) and
 #      pbrlab itself in editable mode. Skipped when .venv is up to date with the
 #      requirements (a stamp records their hash).
 #   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core,

@@ -103,7 +103,7 @@ GOLDEN_SRGB_TOLERANCE = Tolerance(
 )
 
 # Real GPUs: measured, not guessed. NVIDIA H200, driver 580.159.04, EGL (the GPU machine's
-# run of scripts/gpu_golden_check.sh against the llvmpipe goldens; figures in the README):
+# run of scripts/gpu_golden_check.sh against the llvmpipe goldens; figures in docs/goldens.md):
 # * untextured analytic charts: every pixel within 1e-3 + 1e-3 |expected| but 2e-5 of them,
 #   relative error p99.9 <= 8.8e-5 (transcendental precision and FMA);
 # * textured scenes (lit_scene_*): texture LOD selection and filtering differ from

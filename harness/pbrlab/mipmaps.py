@@ -4,7 +4,7 @@ Why not ``glGenerateMipmap``: llvmpipe writes each level of an sRGB texture thro
 float -> sRGB8 encode (gallivm ``lp_build_linear_to_srgb``), which takes x^0.5 and x^0.375
 from raw RSQRTPS, a 12-bit lookup whose bits differ between Intel and AMD processors. The
 mips of a colour texture then differ by one code between vendors, and textured goldens with
-them (docs: README, "Goldens"). Here every level is computed in float64 with a stated
+them (docs/goldens.md, "Goldens"). Here every level is computed in float64 with a stated
 filter and an exact encode, and uploaded as it is; sampling still decodes sRGB in hardware.
 
 The filter: each level halves each side (GL's ``floor(n / 2)``, at least 1) with an

@@ -7,7 +7,7 @@ numbers, numpy values, nesting depth), so each field parser sees plain JSON type
 Unknown fields are errors too (a typo must not be silently ignored). Relative file
 paths (meshes, textures, environments) are resolved against the scene file's folder.
 
-Format (README.md, "Scene files", has the annotated version)::
+Format (docs/scenes.md, "Scene files", has the annotated version)::
 
     camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
                 (may be left out when a gltf object brings a camera)

@@ -77,7 +77,7 @@ def test_specular_glossiness_texture_multiplies_specular_and_glossiness(tmp_path
 
     np.testing.assert_allclose(renders["white"], factors_only(1.0, 1.0), rtol=1e-6)
     grey = float(srgb_to_linear(188 / 255))  # the texture's RGB is sRGB, its alpha linear
-    # llvmpipe's sRGB decode is an approximation (README "Measured here": up to 1.2e-3 absolute,
+    # llvmpipe's sRGB decode is an approximation (docs/measured.md: up to 1.2e-3 absolute,
     # here 0.503 decoded within 2.4e-3 relative), so the bound is that decode's, not float32's
     np.testing.assert_allclose(renders["grey"], factors_only(grey, 128 / 255), rtol=3e-3)
     assert np.abs(renders["grey"] - renders["white"]).max() > 0.01

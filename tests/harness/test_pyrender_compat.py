@@ -1,4 +1,4 @@
-"""pyrender 0.1.45 works headless here despite its PyOpenGL pin and numpy 2 (see README)."""
+"""pyrender 0.1.45 works headless here despite its PyOpenGL pin and numpy 2 (see docs/getting-started.md)."""
 
 import subprocess
 import sys

@@ -111,7 +111,7 @@ def test_env_brdf_approx_matches_reference_and_its_error_against_the_table_is_bo
     # alpha = 1 the correlated V is 0.5 / (NdotL + NdotV) and the albedo tends to 1 at
     # grazing, where the fit gives 0.45. Measured error of A + B against pbrlab's table on
     # this grid: max 0.48 (NdotV 0.02, roughness 1), median 0.11. This is the cost of the
-    # LOW tier's environment BRDF, reported in the README.
+    # LOW tier's environment BRDF, reported in docs/shading.md.
     table = ibl.integrate_dfg(NdotV, rough)
     err = np.abs(ref.sum(-1) - table.sum(-1))
     assert 0.40 < err.max() < 0.49 and 0.08 < np.median(err) < 0.12

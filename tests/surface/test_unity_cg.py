@@ -71,7 +71,7 @@ def test_luminance_and_unitys_gamma_fits(language):
     l2g = _eval("vec4(LinearToGammaSpace(c), 0.0)", language, c=vec3(c))[:, :3]
     assert np.abs(g2l - R.gamma_to_linear_space(c)).max() <= BOUND
     assert np.abs(l2g - R.linear_to_gamma_space(c)).max() <= BOUND
-    # Unity's fits beside the exact curves: how far they are (README figures)
+    # Unity's fits beside the exact curves: how far they are (docs/unity.md figures)
     assert 1e-3 < np.abs(R.gamma_to_linear_space(c) - ref_color.srgb_to_linear(c)).max() < 5e-3
     exact = _eval("vec4(GammaToLinearSpaceExact(c.x), LinearToGammaSpaceExact(c.y), 0.0, 0.0)", language, c=vec3(c))
     assert np.abs(exact[:, 0] - ref_color.srgb_to_linear(c[:, 0])).max() <= BOUND

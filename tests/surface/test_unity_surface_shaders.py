@@ -23,7 +23,7 @@ LANGUAGES = ("hlsl", "glsl")
 # HLSL (the CGPROGRAM as written) vs GLSL (its port-unity port) of the same shader: measured
 # bit-identical (max abs 0) on every manual shader but the lecture's DIY gamma, 2.4e-7 there
 # (glslang folds 1/2.2 in double, Mesa in float32: the library writes such constants out for
-# that reason, README "HLSL"); bound 1e-6 absolute.
+# that reason, docs/hlsl.md); bound 1e-6 absolute.
 LANGUAGE_BOUND = 1e-6
 # ... and where a vertex: function runs, the two vertex stages (HLSL mul(M, v) vs GLSL M * v,
 # fused differently by Mesa) place vertices a few ulp apart, which moves interpolated values:
@@ -249,7 +249,7 @@ def _whole_quads(mask):
     """Pixels whose 2x2 quad (GL derivative block) is entirely covered. At a ray-traced
     sphere's silhouette a quad mixes hit and missed pixels, so implicit derivatives and the
     texture LOD there are meaningless (the missed lanes carry no surface): tests of texture
-    lookups skip those pixels (README, "Unity shaders")."""
+    lookups skip those pixels (docs/unity.md, "Unity shaders")."""
     h, w = mask.shape
     blocks = mask.reshape(h // 2, 2, w // 2, 2).all(axis=(1, 3))
     return np.repeat(np.repeat(blocks, 2, axis=0), 2, axis=1)
@@ -583,7 +583,7 @@ Shader "Test/Unity names" {
 
 
 def test_every_listed_unity_name_compiles_in_both_languages(tmp_path):
-    """The README's table of Unity names: one shader reaching for each (vertex stage, custom
+    """The table of Unity names in docs/unity.md: one shader reaching for each (vertex stage, custom
     lighting model, surface function), compiled unchanged in HLSL and through port-unity in
     GLSL, rendering the same image."""
     (tmp_path / "names.shader").write_text(NAMES_SHADER)

@@ -7,10 +7,10 @@ Every shader must end in one of two ways, the same in both languages: rendered (
 finite, GLSL and HLSL agreeing), or refused with a message naming the Unity feature that is
 missing. A traceback or a non-finite pixel always fails. A compiler's error instead of a
 named refusal is a defect of the front end: the ones still there are listed as
-``"defect: ..."`` in corpus/unity/expected.json and in the README, and must stay exactly
+``"defect: ..."`` in corpus/unity/expected.json and in docs/unity.md, and must stay exactly
 those. Which shaders render is pinned there too (``python -m pbrlab.unity.corpus corpus/unity
 --expect corpus/unity/expected.json`` rewrites it after a reviewed change), so a shader that
-stops rendering fails, and one that starts to fails until the figures in the README move
+stops rendering fails, and one that starts to fails until the figures in docs/unity.md move
 with it.
 """
 
@@ -29,7 +29,7 @@ SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
 # GLSL (the port) against HLSL (as written) of one shader, largest relative difference with a
 # 1e-3 floor (corpus.agreement): most are bit-identical; a vertex stage of each language
 # places vertices a few ulp apart (mul(M, v) vs M * v, fused differently), which moves
-# interpolated values by up to ~1e-5 relative (README, "Unity shaders"); bound 1e-4.
+# interpolated values by up to ~1e-5 relative (docs/unity.md, "Unity shaders"); bound 1e-4.
 AGREEMENT_BOUND = 1e-4
 # Rendered shaders that draw nothing with their Properties' defaults in the corpus scene, each
 # as Unity would: a blank pair is checked blank in both languages (and fails once it draws,

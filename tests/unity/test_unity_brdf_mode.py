@@ -209,7 +209,7 @@ def test_environment_lod_follows_unity_glossy_environment_remap():
 def test_nhxroughness_baked_into_a_texture_stays_close_to_the_analytic_function():
     """The difference between evaluating the analytic NHxRoughness and sampling it from a
     baked 64x64 table with bilinear filtering (what a texture lookup does; Unity's own
-    resolution is not public), in units of the returned specular value (0..16): README figure."""
+    resolution is not public), in units of the returned specular value (0..16): docs/unity.md figure."""
     size = 64
     grid = (np.arange(size) + 0.5) / size  # texel centres
     table = U.nhx_roughness(grid[None, :], grid[:, None])  # rows: roughness, columns: rlPow4
@@ -221,7 +221,7 @@ def test_nhxroughness_baked_into_a_texture_stays_close_to_the_analytic_function(
     baked = ((table[j0, i0] * (1 - tx) + table[j0, i0 + 1] * tx) * (1 - ty)
              + (table[j0 + 1, i0] * (1 - tx) + table[j0 + 1, i0 + 1] * tx) * ty)
     diff = np.abs(baked - U.nhx_roughness(x, y))
-    # README, "Unity BRDF model": measured median 1.6e-5, p99 0.017, mean 0.014; the largest
+    # docs/unity.md, "Unity BRDF model": measured median 1.6e-5, p99 0.017, mean 0.014; the largest
     # differences (up to the full range 16) are the sharpest lobes, narrower than a texel, so
     # only the median, p99 and mean are bounded (3x-6x the measured values).
     assert np.median(diff) < 1e-4 and np.quantile(diff, 0.99) < 0.05 and diff.mean() < 0.05

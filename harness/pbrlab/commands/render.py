@@ -127,7 +127,7 @@ def register(sub, common):
                        help="Render a JSON scene or a glTF 2.0 file to a PNG and/or an EXR file.",
                        description=__doc__,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("scene", help="a JSON scene file (see README: Scene files) or a glTF 2.0 file (.gltf, .glb)")
+    p.add_argument("scene", help="a JSON scene file (see docs/scenes.md) or a glTF 2.0 file (.gltf, .glb)")
     p.add_argument("--camera", type=int, default=None, metavar="N",
                    help="glTF: render from camera N (default: the first camera, else a framing view)")
     p.add_argument("--environment", default=None, metavar="FILE|R,G,B",

@@ -4,7 +4,7 @@ glTF gives directional lights in lux (lm/m^2) and point and spot lights in cande
 (lm/sr), and renderers (the Khronos sample viewer, pyrender) shade with
 radiance_out = BRDF x intensity x color x NdotL (x 1/d^2): a white Lambert surface
 (BRDF = 1/pi) facing a 1-lux light returns 1/pi. pbrlab's lights are the lecture's
-"pi times too bright" ones (README, "Conventions"): the shader multiplies by pi, so that
+"pi times too bright" ones (docs/conventions.md): the shader multiplies by pi, so that
 the same surface under an intensity-1 pbrlab light returns 1. The same radiance needs
 
     pbrlab intensity = glTF intensity / pi          (GLTF_TO_PBRLAB_INTENSITY)

@@ -1,5 +1,5 @@
 """glTF 2.0's metallic-roughness material mapped into pbrlab's surface API: the one
-mapping (README, "glTF 2.0 files"). The default surface (templates/default_surface.inc)
+mapping (docs/gltf.md, "glTF 2.0 files"). The default surface (templates/default_surface.inc)
 reads what this module writes into a scene Material:
 
     glTF                                     pbrlab Material / default surface

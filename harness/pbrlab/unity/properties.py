@@ -7,7 +7,7 @@ Values, by property type: Float/Range/Int a number (Range inside its range); Col
 ``[r, g, b, a]`` (or three numbers, alpha 1); 2D and Cube ``{"path": ..., "srgb": bool,
 "tiling": [x, y], "offset": [x, y]}`` or a default texture name. Colour values are taken as
 linear, as pbrlab's colours are (Unity converts Color properties from sRGB in its linear
-colour space; write linear values here: README, "Unity shaders").
+colour space; write linear values here: docs/unity.md, "Unity shaders").
 """
 
 from __future__ import annotations

@@ -12,7 +12,7 @@ import re
 
 from .parse import UnityShaderError
 
-# name -> the Unity feature it belongs to (README, "Unity shaders": what is refused and why).
+# name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
     **dict.fromkeys(("unity_Lightmap", "unity_LightmapST", "unity_LightmapInd", "unity_DynamicLightmap",
                      "unity_DynamicLightmapST", "unity_DynamicDirectionality", "DecodeLightmap",
