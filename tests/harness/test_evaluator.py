@@ -85,3 +85,18 @@ def test_cli_eval_bad_var_is_a_clear_error(capsys):
 
     assert cli.main(["eval", "x", "--var", "x=zero:1:3"]) == 2
     assert "expected NAME=start:stop:count" in capsys.readouterr().err
+
+
+def test_cli_eval_reads_your_own_include_directory(tmp_path, capsys):
+    """`pbrlab eval -I DIR --include my/f.glsl`: a user's file beside the library (as
+    amalgamate's -I), and a directory that does not exist is one clear line."""
+    from pbrlab import cli
+
+    (tmp_path / "my").mkdir()
+    (tmp_path / "my" / "f.glsl").write_text("float my_twice(float x) { return 2.0 * x; }\n")
+    assert cli.main(["eval", "my_twice(x)", "-I", str(tmp_path), "--include", "my/f.glsl",
+                     "--var", "x=1,3"]) == 0
+    rows = [list(map(float, line.split())) for line in capsys.readouterr().out.strip().splitlines()[1:]]
+    assert rows == [[1, 2], [3, 6]]
+    assert cli.main(["eval", "x", "-I", str(tmp_path / "nowhere"), "--var", "x=1"]) == 2
+    assert "-I " in capsys.readouterr().err

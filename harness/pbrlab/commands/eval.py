@@ -10,6 +10,7 @@ import argparse
 
 import itertools
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -82,8 +83,12 @@ def run(args) -> int:
             name, value = _parse_vec(spec, n)
             inputs[name] = getattr(evaluator, f"vec{n}")(value)
     includes = args.include or None
-    result = evaluator.evaluate(args.expression, includes=includes, backend=args.backend,
-                                language=args.language, **inputs)
+    include_dirs = [Path(d) for d in args.include_dir]
+    for d in include_dirs:
+        if not d.is_dir():
+            raise PbrlabError(f"-I {d}: no such directory")
+    result = evaluator.evaluate(args.expression, includes=includes, include_dirs=include_dirs,
+                                backend=args.backend, language=args.language, **inputs)
     result = result.reshape(len(combos), -1) if names else result.reshape(1, -1)
     header = names + [args.expression if result.shape[1] == 1 else f"{args.expression}[{i}]"
                       for i in range(result.shape[1])]
@@ -105,6 +110,8 @@ def register(sub, common):
                    help="evaluate the GLSL library or its HLSL port (HLSL -> SPIR-V -> GLSL)")
     p.add_argument("--include", action="append", default=[],
                    help="an include such as pbr/brdf/d_ggx.glsl (default: the umbrella pbr/pbr.glsl or .hlsl)")
+    p.add_argument("-I", "--include-dir", action="append", default=[],
+                   help="a directory of your own shader files, searched before the library's (as amalgamate's -I)")
     p.add_argument("--var", action="append", default=[], metavar="NAME=SPEC",
                    help="a float input: start:stop:count or v1,v2,...")
     for n in (2, 3, 4):
