@@ -38,11 +38,13 @@ class _VersionAction(argparse.Action):
 COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths")
 
 
+# The commands that open an OpenGL context themselves, and so take --backend (the others
+# would accept it and ignore it).
+GL_COMMANDS = ("demo", "render", "eval", "hardcases", "bench")
+
+
 def build_parser() -> argparse.ArgumentParser:
     common = argparse.ArgumentParser(add_help=False)
-    common.add_argument(
-        "--backend", choices=BACKENDS, default=None,
-        help="The OpenGL backend to render with (default: $PBRLAB_GL_BACKEND, else EGL, then OSMesa).")
     loudness = common.add_mutually_exclusive_group()
     loudness.add_argument("-q", "--quiet", dest="verbosity", action="store_const", const=console.QUIET,
                           default=console.NORMAL,
@@ -54,8 +56,13 @@ def build_parser() -> argparse.ArgumentParser:
                                    "Run 'pbrlab COMMAND --help' for the options of a command.")
     parser.add_argument("--version", action=_VersionAction)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    gl = argparse.ArgumentParser(add_help=False, parents=[common])
+    gl.add_argument(
+        "--backend", choices=BACKENDS, default=None,
+        help="The OpenGL backend to render with (default: $PBRLAB_GL_BACKEND, else EGL, then OSMesa).")
     for name in COMMANDS:
-        importlib.import_module(f"pbrlab.commands.{name.replace('-', '_')}").register(sub, common)
+        importlib.import_module(f"pbrlab.commands.{name.replace('-', '_')}").register(
+            sub, gl if name in GL_COMMANDS else common)
     return parser
 
 

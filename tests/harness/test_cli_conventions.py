@@ -2,6 +2,7 @@
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -23,6 +24,18 @@ def test_every_command_has_full_sentence_help_and_takes_q_and_v(command):
     assert parser.description.strip().endswith("."), parser.description
     for flag in ("-q", "--quiet", "-v", "--verbose"):
         assert flag in parser._option_string_actions, (command, flag)
+
+
+@pytest.mark.parametrize("command", cli.COMMANDS)
+def test_only_commands_that_open_a_gl_context_take_backend(command):
+    """--backend on a command that opens no GL context would be accepted and ignored."""
+    sub = cli.build_parser()._subparsers._group_actions[0]
+    opens_gl = command in ("demo", "render", "eval", "hardcases", "bench")
+    assert ("--backend" in sub.choices[command]._option_string_actions) == opens_gl, command
+    for name in ("amalgamate", "diff", "features", "port_unity", "paths"):  # none of them opens one
+        source = Path(cli.__file__).with_name("commands").joinpath(f"{name}.py").read_text()
+        assert "args.backend" not in source and "gl_context" not in source and "import evaluator" not in source \
+            and "evaluator import" not in source, name
 
 
 def test_quiet_and_verbose_are_exclusive():

@@ -30,7 +30,11 @@ def run(args) -> int:
             raise PbrlabError(f"--function {unknown[0]}: no hard case covers it; the catalogue "
                               f"covers {', '.join(known)}")
         cases = [c for c in cases if c.function.name in args.function]
-    results = hardcases_run.run_catalogue(cases)
+    from functools import partial
+
+    from .. import evaluator
+
+    results = hardcases_run.run_catalogue(cases, evaluate=partial(evaluator.evaluate, backend=args.backend))
     failures = [r for r in results if not r.ok]
     shown = failures if args.failures_only else results
     if args.json:
