@@ -40,8 +40,9 @@ HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data,
 UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
 GLSLANG = "glslangValidator"
 SPIRV_CROSS = "spirv-cross"
-_INSTALL_HINT = ("install it with scripts/setup.sh (Debian/Ubuntu packages glslang-tools and "
-                 "spirv-cross)")
+_INSTALL_HINT = ("install the Debian/Ubuntu packages glslang-tools and spirv-cross "
+                 "(sudo apt-get install glslang-tools spirv-cross; in a pbrlab checkout, "
+                 "scripts/setup.sh does)")
 _TIMEOUT_S = 60
 # glslang: "ERROR: path:line: message" / "WARNING: path:line: message"
 _GLSLANG_MESSAGE = re.compile(r"^(ERROR|WARNING): (.+?):(\d+): (.*)$")

@@ -24,8 +24,9 @@ _STAGE = {"vertex": "vert", "fragment": "frag", "compute": "comp"}
 def _tool(name: str) -> str:
     path = shutil.which(name)
     if path is None:
-        raise vk.VulkanUnavailable(f"{name} not found: install glslang-tools and spirv-cross "
-                                   "(scripts/setup.sh does)")
+        raise vk.VulkanUnavailable(f"{name} not found: install the Debian/Ubuntu packages "
+                                   "glslang-tools and spirv-cross (sudo apt-get install glslang-tools "
+                                   "spirv-cross; in a pbrlab checkout, scripts/setup.sh does)")
     return path
 
 

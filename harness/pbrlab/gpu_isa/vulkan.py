@@ -279,8 +279,9 @@ def load_loader():
         return ctypes.CDLL(name)
     except OSError as exc:
         raise VulkanUnavailable(
-            f"no Vulkan loader ({name}): install libvulkan1 and mesa-vulkan-drivers "
-            "(scripts/setup.sh does)") from exc
+            f"no Vulkan loader ({name}): install the Debian/Ubuntu packages libvulkan1 and "
+            "mesa-vulkan-drivers (sudo apt-get install libvulkan1 mesa-vulkan-drivers; in a pbrlab "
+            "checkout, scripts/setup.sh does)") from exc
 
 
 def check(result: int, what: str) -> None:
