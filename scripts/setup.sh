@@ -11,8 +11,9 @@
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see docs/getting-started.md) and
 #      pbrlab itself in editable mode. Skipped when .venv is up to date with the
 #      requirements (a stamp records their hash).
-#   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core,
-#      pinned by its package-lock.json). Skipped when node_modules matches the lock file.
+#   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core)
+#      and tools/gltf_validator (the Khronos glTF Validator), each pinned by its
+#      package-lock.json. Skipped where node_modules matches the lock file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -57,14 +58,17 @@ if [ ${#missing[@]} -gt 0 ]; then
   fi
 fi
 
-viewer=tools/sample_viewer
-viewer_stamp=$viewer/node_modules/.pbrlab-installed
-viewer_want=$(sha256sum < $viewer/package-lock.json | cut -c1-16)
-if ! { [ -f "$viewer_stamp" ] && [ "$(cat "$viewer_stamp")" = "$viewer_want" ]; }; then
-  echo "setup: npm ci in $viewer"
-  (cd $viewer && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  echo "$viewer_want" > "$viewer_stamp"
-fi
+# The npm tools, each from its lock file: the Khronos Sample Renderer (tools/sample_viewer)
+# and the Khronos glTF Validator (tools/gltf_validator).
+for tool in tools/sample_viewer tools/gltf_validator; do
+  tool_stamp=$tool/node_modules/.pbrlab-installed
+  tool_want=$(sha256sum < $tool/package-lock.json | cut -c1-16)
+  if ! { [ -f "$tool_stamp" ] && [ "$(cat "$tool_stamp")" = "$tool_want" ]; }; then
+    echo "setup: npm ci in $tool"
+    (cd $tool && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    echo "$tool_want" > "$tool_stamp"
+  fi
+done
 
 stamp=.venv/.pbrlab-installed
 want=$(cat requirements.txt pyproject.toml | sha256sum | cut -c1-16)

@@ -26,6 +26,7 @@ import ctypes
 import ctypes.util
 import os
 import re
+import weakref
 
 import moderngl
 
@@ -181,9 +182,35 @@ def make_current(ctx: moderngl.Context) -> moderngl.Context:
 
     moderngl issues GL calls on whatever context is current; with EGL and OSMesa
     contexts in one process, each entry point (evaluator, renderer) calls this first.
+    OSMesaMakeCurrent sets Mesa's shared GL dispatch without EGL knowing, so an EGL context
+    that EGL still records as current would not be bound again (eglMakeCurrent of the current
+    context does nothing) and its calls went to the OSMesa context: an EGL render after an
+    OSMesa one read another context's textures (max difference 1.0; the Sample Renderer
+    tests failed after the OSMesa pyrender tests in one pytest worker). After an OSMesa
+    context, EGL's current context is released first, so binding it again is real.
     """
+    global _last_current
+    if _last_current is not None and _last_current() is not ctx \
+            and (_last_current() is None or (_last_current().extra or {}).get("backend") == "osmesa") \
+            and (ctx.extra or {}).get("backend") != "osmesa":
+        _release_egl_context()
     ctx.mglo.__enter__()
+    _last_current = weakref.ref(ctx)
     return ctx
+
+
+_last_current = None  # a weak reference to the context make_current bound last
+
+
+def _release_egl_context() -> None:
+    """eglMakeCurrent(current display, no surfaces, no context), where EGL has a current context."""
+    egl = ctypes.CDLL(os.environ.get("GLCONTEXT_LINUX_LIBEGL", "libEGL.so.1"))
+    egl.eglGetCurrentDisplay.restype = ctypes.c_void_p
+    display = egl.eglGetCurrentDisplay()
+    if display:
+        egl.eglMakeCurrent.restype = ctypes.c_uint
+        egl.eglMakeCurrent.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+        egl.eglMakeCurrent(display, None, None, None)
 
 
 def shared_context(backend: str | None = None) -> moderngl.Context:

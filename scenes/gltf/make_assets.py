@@ -189,6 +189,11 @@ def _quad(size=2.0):
     return positions, normals, uv, np.array([0, 1, 2, 0, 2, 3])
 
 
+# _quad's tangent frame: u grows along +X, v (glTF, down) along -Y, so the bitangent
+# cross(n, t) * w = +Y points to decreasing v: MikkTSpace's w = 1 for glTF's flipped v.
+_QUAD_TANGENTS = np.tile([1.0, 0.0, 0.0, 1.0], (4, 1))
+
+
 def _sphere(subdivisions=3, radius=1.0, offset=(0, 0, 0)):
     mesh = trimesh.creation.icosphere(subdivisions=subdivisions, radius=radius)
     positions = np.asarray(mesh.vertices) + np.asarray(offset)
@@ -452,13 +457,14 @@ def features():
     nodes.append({"mesh": 3, "translation": [2.4, 0, 0], "rotation": _quaternion([0, 1, 0], math.pi * 0.8)})
     b.json["extensionsUsed"].append("KHR_lights_punctual")
     b.json["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0},
-                                                               {"type": "spot", "intensity": 20.0, "range": 9.0}]}}
+                                                               {"type": "spot", "intensity": 20.0, "range": 9.0,
+                                                                "spot": {}}]}}  # the cone's defaults
     nodes.append({"rotation": _look_rotation([0.2, -0.4, -1.0]), "extensions": {"KHR_lights_punctual": {"light": 0}}})
     nodes.append({"translation": [0.8, 1.5, 2.5], "rotation": _look_rotation([0.0, -1.5, -2.5]),
                   "extensions": {"KHR_lights_punctual": {"light": 1}}})
     b.json["cameras"] = [{"type": "orthographic", "orthographic": {"xmag": 3.4, "ymag": 1.7, "znear": 0.1,
                                                                    "zfar": 20}},
-                         {"type": "perspective", "perspective": {"yfov": 0.7}}]
+                         {"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
     nodes.append({"camera": 0, "translation": [0, 0.5, 6], "rotation": _quaternion([1, 0, 0], -0.08)})
     nodes.append({"camera": 1, "translation": [0, 1.5, 6], "rotation": _look_rotation([0, -1.5, -6])})
     b.json["scenes"] = [{"nodes": list(range(len(nodes)))}]
@@ -486,8 +492,8 @@ def clearcoat():
     ]
     b.json["extensionsUsed"] = ["KHR_materials_clearcoat"]
     p, n, uv, f = _quad(1.5)
-    for material in range(4):
-        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    for material in range(4):  # TANGENT: the layer needs a tangent space (the glTF validator's rule)
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material, TANGENT=(_QUAD_TANGENTS, "VEC4"))]})
     _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
     b.write_gltf(HERE / "clearcoat.gltf", external_bin=False)
 
@@ -551,8 +557,8 @@ def anisotropy():
     ]
     b.json["extensionsUsed"] = ["KHR_materials_anisotropy", "KHR_texture_transform"]
     p, n, uv, f = _quad(1.5)
-    for material in range(4):
-        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    for material in range(4):  # TANGENT: the layer needs a tangent space (the glTF validator's rule)
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material, TANGENT=(_QUAD_TANGENTS, "VEC4"))]})
     _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
     b.write_gltf(HERE / "anisotropy.gltf", external_bin=False)
 

@@ -4,6 +4,7 @@ import hashlib
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import pytest
 
@@ -79,3 +80,37 @@ def test_missing_gl_libraries_give_one_paragraph_naming_packages(tmp_path):
     assert out.returncode == 2, out.stderr
     assert "Traceback" not in out.stderr
     assert "apt-get install" in out.stderr and "libosmesa6" in out.stderr
+
+
+
+
+_EGL_AFTER_OSMESA = textwrap.dedent("""
+    import sys
+    from pathlib import Path
+    import numpy as np
+    from pbrlab import gl
+    from pbrlab.gltf import load_gltf
+    from pbrlab.render import render_scene
+    root = Path(sys.argv[1])
+    model = load_gltf(root / "corpus/gltf/khronos/ClearCoatCarPaint/ClearCoatCarPaint.glb", size=(128, 128),
+                      emit_warnings=False).scene
+    before = render_scene(model, gl.shared_context("egl")).linear
+    other = load_gltf(root / "scenes/gltf/textured.gltf", size=(64, 64), emit_warnings=False).scene
+    render_scene(other, gl.shared_context("osmesa"))  # the other front end, in this process
+    after = render_scene(model, gl.shared_context("egl")).linear
+    print(float(np.abs(before - after).max()))
+""")
+
+
+def test_an_egl_render_after_an_osmesa_render_is_the_same(tmp_path):
+    """OSMesaMakeCurrent sets Mesa's shared dispatch behind EGL's back: an EGL context that
+    EGL still recorded as current was not bound again, and its calls went to the OSMesa
+    context (measured here: max difference 1.0; the Sample Renderer tests failed after the
+    OSMesa pyrender tests in one pytest worker). In its own process, so the suite's order
+    cannot hide it."""
+    script = tmp_path / "egl_after_osmesa.py"
+    script.write_text(_EGL_AFTER_OSMESA)
+    out = subprocess.run([sys.executable, str(script), str(Path(__file__).resolve().parents[2])],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert float(out.stdout.strip().splitlines()[-1]) == 0.0

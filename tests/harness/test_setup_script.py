@@ -45,11 +45,12 @@ def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
     (tree / ".venv" / "bin" / "python").chmod(0o755)
     digest = hashlib.sha256((tree / "requirements.txt").read_bytes() + (tree / "pyproject.toml").read_bytes())
     (tree / ".venv" / ".pbrlab-installed").write_text(digest.hexdigest()[:16] + "\n")
-    viewer = tree / "tools" / "sample_viewer"  # the sample viewer's npm packages, current too
-    (viewer / "node_modules").mkdir(parents=True)
-    shutil.copy(ROOT / "tools" / "sample_viewer" / "package-lock.json", viewer)
-    lock = hashlib.sha256((viewer / "package-lock.json").read_bytes()).hexdigest()[:16]
-    (viewer / "node_modules" / ".pbrlab-installed").write_text(lock + "\n")
+    for name in ("sample_viewer", "gltf_validator"):  # the npm tools' packages, current too
+        tool = tree / "tools" / name
+        (tool / "node_modules").mkdir(parents=True)
+        shutil.copy(ROOT / "tools" / name / "package-lock.json", tool)
+        lock = hashlib.sha256((tool / "package-lock.json").read_bytes()).hexdigest()[:16]
+        (tool / "node_modules" / ".pbrlab-installed").write_text(lock + "\n")
     env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:{os.environ['PATH']}")
     out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, timeout=60)
