@@ -160,3 +160,14 @@ def test_unity_brdf_model_refuses_a_transmissive_material():
         parse_scene(scene)
     scene["materials"]["m"]["transmission"] = 0.0
     parse_scene(scene)  # transmission 0 is the opaque material: allowed
+
+
+def test_a_surface_file_material_refuses_the_transmission_fields(tmp_path):
+    """A surface file writes its own output: the default surface's transmission fields are
+    refused by name (as the other layers' are)."""
+    surface = tmp_path / "plain.glsl"
+    surface.write_text("void surf(Input IN, inout SurfaceOutputStandard o) { o.Albedo = vec3(1.0); }\n")
+    with pytest.raises(SceneError, match=r"materials.m.transmission: the transmission belongs to the default "
+                                         r"surface; .*\(remove `transmission`, `attenuation_color`\)"):
+        parse_scene(one_sphere({"surface": str(surface), "transmission": 0.5, "attenuation_color": [1, 1, 1]},
+                               LIGHTS))
