@@ -81,6 +81,7 @@
 #include "pbr/surface/lighting_sheen.glsl"
 #include "pbr/surface/lighting_anisotropy.glsl"
 #include "pbr/surface/lighting_iridescence.glsl"
+#include "pbr/surface/lighting_transmission.glsl"
 
 // HDR
 #include "pbr/tonemap/exposure.glsl"

@@ -6,7 +6,8 @@ GLSL library. Goldens of analytic scenes are checked against it.
 
 Scope: opaque spheres with the default surface (no texture maps; a clear coat along the
 geometric normal; a sheen; an anisotropic base along the sphere's tangent; a thin film of
-the maximum thickness); environments of
+the maximum thickness; a transmission, thin or through a volume, that sees the constant
+environment); environments of
 constant radiance, whose prefiltered radiance is that constant at every roughness. The
 environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
 read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
@@ -152,6 +153,14 @@ def render_scene_cpu(scene) -> np.ndarray:
             coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
+        transmitted = None
+        if material.transmission > 0.0:  # part of the diffuse's weight passes through instead
+            transmitted = (diffuse, dict(
+                dfg=dfg, factor=material.transmission, thickness=material.thickness,
+                attenuation_color=material.attenuation_color, attenuation_distance=material.attenuation_distance,
+                ior=material.ior, quality=quality, specular_f=specular_f,
+                energy_compensated=scene.render.energy_compensation))
+            diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
             diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f))
         direction = _sphere_anisotropy_direction(n, material.anisotropy_rotation)
@@ -165,6 +174,17 @@ def render_scene_cpu(scene) -> np.ndarray:
                 continue
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
                                                 quality=quality, **material.brdf)
+        if transmitted is not None:  # each light through the surface, then the environment seen through it
+            whole_diffuse, terms = transmitted
+            zero = np.zeros(p.shape)
+            for light in scene.lights:
+                l, radiance = _light_terms(light, p)
+                color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v, l,
+                                                           radiance, zero, **terms)
+            if env_sh is not None:
+                behind = np.broadcast_to(scene.environment.color * scene.environment.intensity, p.shape)
+                color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v,
+                                                           n, zero, behind, **terms)
         if env_sh is not None:
             compensated = scene.render.energy_compensation
             indirect_diffuse = ref_surface.coupled_diffuse_color(

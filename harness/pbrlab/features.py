@@ -62,6 +62,8 @@ class MaterialFeatures:
     sheen: bool = False         # a sheen (colour > 0): its lobe, table and the base's scaling
     anisotropy: bool = False    # an anisotropic base lobe (strength > 0): its mapping, lobe, bent normal
     iridescence: bool = False   # a thin film on the base (mask > 0): pbr_F_Iridescence, the base's F0
+    transmission: bool = False  # the diffuse partly replaced by transmission (factor > 0): its lobes,
+                                # the environment seen through, the volume's attenuation
 
 
 @dataclass(frozen=True)
@@ -104,6 +106,7 @@ def material_features(material) -> MaterialFeatures:
         sheen=not custom and max(material.sheen_color) > 0.0,  # glTF: factor x texture, so 0 is none
         anisotropy=not custom and material.anisotropy_strength > 0.0,  # glTF: factor x texture.b
         iridescence=not custom and material.iridescence > 0.0,  # glTF: factor x texture.r
+        transmission=not custom and material.transmission > 0.0,  # glTF: factor x texture.r
     )
 
 
@@ -142,7 +145,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
                      ("UNLIT", m.unlit), ("SHEEN", m.sheen),
-                     ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence)):
+                     ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence),
+                     ("TRANSMISSION", m.transmission)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

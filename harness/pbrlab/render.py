@@ -155,6 +155,11 @@ def _upload_material(program, material):
     _set(program, "u_iridescence", material.iridescence)
     _set(program, "u_iridescence_ior", material.iridescence_ior)
     _set(program, "u_iridescence_thickness", (material.iridescence_thickness_min, material.iridescence_thickness_max))
+    _set(program, "u_transmission", material.transmission)
+    _set(program, "u_thickness", material.thickness)
+    _set(program, "u_attenuation_color", tuple(material.attenuation_color))
+    _set(program, "u_attenuation_distance", material.attenuation_distance)
+    _set(program, "u_transmission_ior", material.ior)
     for slot, transform in material.texture_transform.items():
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 

@@ -85,6 +85,15 @@ TEXTURE_SLOTS.update({"iridescence": "linear", "iridescence_thickness": "linear"
 IRIDESCENCE_SLOTS = ("iridescence", "iridescence_thickness")
 # The film's IOR: KHR_materials_iridescence's minimum 1; at most pbr_F_Iridescence's domain.
 IRIDESCENCE_IOR_RANGE = (1.0, 16.0)
+# Transmission's maps (KHR_materials_transmission / KHR_materials_volume, linear):
+# transmission (R x the factor), thickness (G x the thickness).
+TEXTURE_SLOTS.update({"transmission": "linear", "thickness": "linear"})
+TRANSMISSION_SLOTS = ("transmission", "thickness")
+# The volume's index of refraction (KHR_materials_ior's ior as the transmission reads it):
+# at least 1 (pbrlab's volumes are denser than the air around them), at most the Walter
+# BTDF's domain (pbr/brdf/btdf_walter.glsl: eta in [1/16, 16]).
+TRANSMISSION_IOR_RANGE = (1.0, 16.0)
+TRANSMISSION_KEYS = ("transmission", "thickness", "attenuation_color", "attenuation_distance", "ior")
 
 
 @dataclass
@@ -158,6 +167,16 @@ class Material:
     iridescence_ior: float = 1.3
     iridescence_thickness_min: float = 100.0
     iridescence_thickness_max: float = 400.0
+    # Transmission (KHR_materials_transmission, KHR_materials_volume; pbr/surface/
+    # lighting_transmission.glsl): 0 is none (x the map's R); thickness in scene units (x the
+    # map's G), 0 = thin-walled; Beer-Lambert attenuation colour (linear) reached after
+    # attenuation_distance (+inf: none); ior the volume's (refraction only: F0 stays the
+    # workflow's)
+    transmission: float = 0.0
+    thickness: float = 0.0
+    attenuation_color: tuple = (1.0, 1.0, 1.0)
+    attenuation_distance: float = math.inf
+    ior: float = 1.5
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -386,6 +405,12 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
                                  hi=IRIDESCENCE_IOR_RANGE[1])
     m.iridescence_thickness_min = r.number("iridescence_thickness_min", default=100.0, lo=0.0)  # nm
     m.iridescence_thickness_max = r.number("iridescence_thickness_max", default=400.0, lo=0.0)  # nm
+    m.transmission = r.number("transmission", default=0.0, lo=0.0, hi=1.0)
+    m.thickness = r.number("thickness", default=0.0, lo=0.0)  # scene units; 0: thin-walled
+    m.attenuation_color = tuple(r.vector("attenuation_color", default=[1.0, 1.0, 1.0], lo=0.0, hi=1.0))
+    if r.has("attenuation_distance"):  # absent: +infinity (KHR_materials_volume's default)
+        m.attenuation_distance = r.number("attenuation_distance", lo=0.0, lo_open=True)
+    m.ior = r.number("ior", default=1.5, lo=TRANSMISSION_IOR_RANGE[0], hi=TRANSMISSION_IOR_RANGE[1])
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
@@ -431,6 +456,22 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     if m.surface is not None and film_keys:
         r.fail("the iridescence belongs to the default surface; a surface file writes its own output "
                f"(remove `{'`, `'.join(film_keys)}`)", film_keys[0])
+    transmission_keys = [k for k in TRANSMISSION_KEYS if r.has(k)]
+    if m.surface is not None and transmission_keys:
+        r.fail("the transmission belongs to the default surface; a surface file writes its own output "
+               f"(remove `{'`, `'.join(transmission_keys)}`)", transmission_keys[0])
+    if m.transmission == 0.0:
+        for key in TRANSMISSION_KEYS[1:]:
+            if r.has(key):
+                r.fail(f"`{key}` belongs to the transmission, which is 0 here: give the material a "
+                       "transmission in (0, 1]", key)
+    for slot in TRANSMISSION_SLOTS:
+        if slot in m.textures and m.transmission == 0.0:
+            textures.fail(f"the {slot} map belongs to the transmission, which is 0 here: give the "
+                          "material a transmission in (0, 1]", slot)
+    if "thickness" in m.textures and m.thickness == 0.0:
+        textures.fail("the thickness map scales `thickness`, which is 0 (thin-walled) here: give the "
+                      "material a thickness > 0", "thickness")
     for slot in IRIDESCENCE_SLOTS:
         if slot in m.textures and m.iridescence == 0.0:
             textures.fail(f"the {slot} map belongs to the thin film, whose mask `iridescence` is 0 here: "
@@ -463,7 +504,7 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
                 "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
                 "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
-                "iridescence_thickness_max"):
+                "iridescence_thickness_max") + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "
@@ -660,6 +701,10 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
         if filmed:
             rs.fail(f"Unity's BRDFs have no F0 a thin film could replace; material {filmed[0]!r} is iridescent "
                     "(use brdf_model pbrlab, or iridescence 0)", "brdf_model")
+        transmissive = sorted(name for name, m in materials.items() if m.transmission > 0.0)
+        if transmissive:
+            rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
+                    "(use brdf_model pbrlab, or transmission 0)", "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 

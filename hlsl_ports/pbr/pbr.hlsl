@@ -82,6 +82,7 @@
 #include "pbr/surface/lighting_sheen.hlsl"
 #include "pbr/surface/lighting_anisotropy.hlsl"
 #include "pbr/surface/lighting_iridescence.hlsl"
+#include "pbr/surface/lighting_transmission.hlsl"
 
 // HDR
 #include "pbr/tonemap/exposure.hlsl"

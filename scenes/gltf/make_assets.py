@@ -29,6 +29,11 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              IOR 1.3 (the defaults but the factor), a film whose thickness runs
                              100 -> 800 nm across a thickness texture (G) under a mask texture (R),
                              a film under a coat on an anisotropic metal
+    transmission.gltf        KHR_materials_transmission and KHR_materials_volume on four white
+                             spheres: none, a smooth thin wall (transmissionFactor 1), a rough thin
+                             wall whose transmission a texture (R) stripes, a tinted volume of IOR
+                             1.33 (thicknessFactor 0.4 x a thickness texture's G, attenuation colour
+                             and distance) on a node scaled 0.8 (the thickness scales with it)
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -600,6 +605,50 @@ def iridescence():
     b.write_gltf(HERE / "iridescence.gltf", external_bin=False)
 
 
+def stripes() -> np.ndarray:
+    """KHR_materials_transmission's texture: R in horizontal stripes 1 / 0.25 (eight of them);
+    G 0.75 (the thickness texture's channel)."""
+    u, v = _grid()
+    out = np.zeros((TEX, TEX, 3), np.uint8)
+    out[..., 0] = np.round(np.where(np.floor(v * 8) % 2 == 0, 1.0, 0.25) * 255).astype(np.uint8)
+    out[..., 1] = round(0.75 * 255)
+    return out
+
+
+def _uv_sphere_coordinates(normals) -> np.ndarray:
+    """Equirectangular UVs of a sphere's normals (u around +Y, v down from the top)."""
+    u = 0.5 + np.arctan2(normals[:, 0], normals[:, 2]) / (2 * math.pi)
+    v = np.arccos(np.clip(normals[:, 1], -1.0, 1.0)) / math.pi
+    return np.stack([u, v], axis=-1)
+
+
+def transmission():
+    b = Builder()
+    stripe_map = b.texture(b.image(stripes(), embed=True))
+    white = {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.1}
+    b.json["materials"] = [
+        {"name": "opaque", "pbrMetallicRoughness": white},
+        {"name": "thin", "pbrMetallicRoughness": white,
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}},
+        {"name": "rough_striped", "pbrMetallicRoughness": {**white, "roughnessFactor": 0.45},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.9,
+                                                       "transmissionTexture": {"index": stripe_map}}}},
+        {"name": "tinted_volume", "pbrMetallicRoughness": white,
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_ior": {"ior": 1.33},
+                        "KHR_materials_volume": {"thicknessFactor": 0.4, "thicknessTexture": {"index": stripe_map},
+                                                 "attenuationColor": [0.9, 0.5, 0.2], "attenuationDistance": 0.25}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_transmission", "KHR_materials_volume"]
+    p, n, f = _sphere(subdivisions=3, radius=0.6)
+    uv = _uv_sphere_coordinates(n)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.json["nodes"][3]["scale"] = [0.8, 0.8, 0.8]  # the volume: thickness x 0.8 in the world
+    b.write_gltf(HERE / "transmission.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -610,6 +659,7 @@ def main():
     sheen()
     anisotropy()
     iridescence()
+    transmission()
 
 
 if __name__ == "__main__":

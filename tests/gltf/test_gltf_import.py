@@ -182,14 +182,14 @@ def test_every_ignored_extension_is_one_warning_in_render_and_features(capsys, t
 
 def test_unhonoured_features_are_named(tmp_path):
     doc = quad_document()
-    doc["materials"][0]["extensions"] = {"KHR_materials_transmission": {}}
+    doc["materials"][0]["extensions"] = {"KHR_materials_dispersion": {}}
     doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2
     doc["meshes"][0]["primitives"][0]["attributes"]["_CUSTOM"] = 2
     doc["animations"] = [{"channels": [], "samplers": []}]
     doc["meshes"][0]["primitives"].append({"attributes": {"POSITION": 0}, "mode": 1})
     result = load_gltf(write(tmp_path, doc), emit_warnings=False)
     assert result.warnings == ["animations ignored (1; the rest pose is drawn)",
-                               'KHR_materials_transmission ignored in material "paint"',
+                               'KHR_materials_dispersion ignored in material "paint"',
                                "attribute _CUSTOM ignored in mesh 0 primitive 0",
                                "LINES primitive ignored in mesh 0 (pbrlab draws triangles)"]
 
@@ -432,11 +432,11 @@ def test_clearcoat_maps_to_the_coat_layer():
 
 def test_an_unsupported_extension_is_one_warning_per_file_naming_its_materials(tmp_path):
     doc = quad_document()
-    doc["materials"] = [dict(doc["materials"][0], name=f"m{i}", extensions={"KHR_materials_transmission": {}})
+    doc["materials"] = [dict(doc["materials"][0], name=f"m{i}", extensions={"KHR_materials_dispersion": {}})
                         for i in range(5)]
     doc["meshes"][0]["primitives"] = [dict(doc["meshes"][0]["primitives"][0], material=i) for i in range(5)]
     result = load_gltf(write(tmp_path, doc), emit_warnings=False)
-    assert result.warnings == ['KHR_materials_transmission ignored in 5 materials ("m0", "m1", "m2" and 2 more)']
+    assert result.warnings == ['KHR_materials_dispersion ignored in 5 materials ("m0", "m1", "m2" and 2 more)']
 
 
 def test_sheen_maps_to_the_sheen_layer():
@@ -576,3 +576,72 @@ def test_iridescence_gltf_renders_alike_in_glsl_hlsl_and_the_full_program(gl_con
             material.textures.pop(slot, None)
     filmless = render_scene(plain, gl_context).linear
     assert (np.abs(glsl - filmless)[..., :3].max(axis=-1) > 0.01).mean() > 0.1
+
+
+def test_transmission_and_volume_map_to_the_transmission():
+    """KHR_materials_transmission and KHR_materials_volume (transmission.gltf): the factor, the
+    transmission (R) and thickness (G) textures as linear slots, the volume's attenuation and
+    KHR_materials_ior's ior; the thickness scaled by the node's world scale (0.8); the
+    specification's defaults (thin-walled, no attenuation) where a field is absent; no warning."""
+    result = load_gltf(ASSETS / "transmission.gltf", emit_warnings=False)
+    assert not result.warnings
+    m = {mat.name: mat for mat in result.scene.materials.values()}
+    assert m["opaque"].transmission == 0.0
+    thin = m["thin"]
+    assert (thin.transmission, thin.thickness, thin.attenuation_color, thin.attenuation_distance) == (
+        1.0, 0.0, (1.0, 1.0, 1.0), float("inf"))
+    assert not thin.textures
+    striped = m["rough_striped"]
+    assert striped.transmission == pytest.approx(0.9) and set(striped.textures) == {"transmission"}
+    assert not striped.texture_srgb["transmission"]
+    used = sorted({o.material for o in result.scene.objects if o.material.startswith("tinted_volume")})
+    assert used == ["tinted_volume [volume scale 0.8]"]  # the node's copy; the file's material is unplaced
+    volume = m[used[0]]
+    assert volume.thickness == pytest.approx(0.4 * 0.8) and volume.ior == pytest.approx(1.33)
+    assert volume.attenuation_color == pytest.approx((0.9, 0.5, 0.2)) and volume.attenuation_distance == 0.25
+    assert set(volume.textures) == {"thickness"} and not volume.texture_srgb["thickness"]
+
+
+@pytest.mark.parametrize("extensions, message", [
+    ({"KHR_materials_transmission": {"transmissionFactor": 1.5}},
+     "KHR_materials_transmission: transmissionFactor must be a number in [0, 1], got 1.5"),
+    ({"KHR_materials_transmission": {"transmissionFactor": 1.0},
+      "KHR_materials_volume": {"thicknessFactor": 1.0, "attenuationDistance": 0}},
+     "KHR_materials_volume: attenuationDistance must be a number in (0, inf], got 0"),
+    ({"KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_ior": {"ior": 20}},
+     "KHR_materials_ior: ior must be a number in [1, 16], got 20"),
+])
+def test_transmission_bad_values_are_refused_by_path(extensions, message, tmp_path):
+    doc = quad_document()
+    doc["materials"][0]["extensions"] = extensions
+    with pytest.raises(SceneError) as info:
+        load_gltf(write(tmp_path, doc), emit_warnings=False)
+    assert str(info.value).endswith(message), str(info.value)
+
+
+def test_a_volume_without_transmission_is_named_in_a_warning(tmp_path):
+    doc = quad_document()
+    doc["materials"][0]["extensions"] = {"KHR_materials_volume": {"thicknessFactor": 1.0}}
+    result = load_gltf(write(tmp_path, doc), emit_warnings=False)
+    assert any("KHR_materials_volume ignored" in w and "without KHR_materials_transmission" in w
+               for w in result.warnings), result.warnings
+
+
+def test_transmission_gltf_renders_alike_in_glsl_hlsl_and_the_full_program(gl_context):
+    """transmission.gltf through the GLSL library, its HLSL port (within the float32 bound of
+    tests/render/test_anisotropy_scene.py: 1e-6 + 1e-5 relative per channel) and the full
+    program (bit for bit). Without its transmission the three transmissive spheres change."""
+    scene = load_gltf(ASSETS / "transmission.gltf", size=(256, 64), emit_warnings=False).scene
+    glsl = render_scene(scene, gl_context).linear.astype(np.float64)
+    hlsl = render_scene(scene, gl_context, language="hlsl").linear.astype(np.float64)
+    full = render_scene(scene, gl_context, specialise=False).linear.astype(np.float64)
+    np.testing.assert_allclose(hlsl[..., :3], glsl[..., :3], rtol=1e-5, atol=1e-6)
+    np.testing.assert_array_equal(glsl, full)
+    plain = load_gltf(ASSETS / "transmission.gltf", size=(256, 64), emit_warnings=False).scene
+    for material in plain.materials.values():
+        material.transmission = 0.0
+        for slot in ("transmission", "thickness"):
+            material.textures.pop(slot, None)
+    opaque = render_scene(plain, gl_context).linear
+    changed = np.abs(glsl - opaque)[..., :3].max(axis=-1) > 0.01
+    assert changed.mean() > 0.05, changed.mean()

@@ -30,7 +30,7 @@ SAMPLES = 384          # per entry and configuration
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
 FLOAT_SLOTS = 11  # LightingStandard[Specular]LayersBase: the surface's 4, the layers' 7
-VEC3_SLOTS = 12  # LightingStandardLayers: base.rgb, 3 layer vec3s, normal, view, GI (4), two indirect terms
+VEC3_SLOTS = 13  # pbr_unity_lighting_layers_base: 3 colours, normal, view, GI (4), 3 layer vec3s, the transmitted term
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
 STRUCT_BUILDERS = {
@@ -52,6 +52,9 @@ STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
     ("float", "iridescenceMask"), ("float", "iridescenceIor"), ("float", "iridescenceThickness")))
 STRUCT_BUILDERS["pbr_Iridescence"] = ("test_iridescence", (("float", "factor"), ("float", "ior"),
                                                           ("float", "thicknessNm")))
+STRUCT_BUILDERS["pbr_Transmission"] = ("test_transmission", (("float", "factor"), ("float", "thickness"),
+                                                            ("vec3", "attenuationColor"),
+                                                            ("float", "attenuationDistance"), ("float", "volumeIor")))
 STRUCT_BUILDERS["pbr_Anisotropy"] = ("test_anisotropy", (("float", "strength"), ("vec3", "direction")))
 STRUCT_BUILDERS["pbr_Sheen"] = ("test_sheen", (("vec3", "color"), ("float", "perceptualRoughness")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
@@ -174,6 +177,8 @@ def float_values(name: str, rng, count: int) -> np.ndarray:
         x = np.exp(rng.uniform(math.log(0.5), math.log(1e4), count))
     elif name in ("eta",):
         x = rng.uniform(0.3, 4.0, count)
+    elif name in ("volumeIor",):  # pbr_Transmission.ior: a volume denser than air
+        x = rng.uniform(1.0, 4.0, count)
     elif name in ("DV",):
         x = np.exp(rng.uniform(-3, 13, count))
     elif name in ("distance2",):

@@ -28,6 +28,15 @@ multiple-scattering compensation:
   filmed metal        the white metal under a 550 nm film of IOR 1.8: E(F0') per channel, F0' the
                       film folded into F0 at the pixel's mu (reference/surface.py iridescent_f0;
                       measured worst 3.1e-5 from the float64 albedo)
+  transmissive thin   the white dielectric fully transmissive, thin-walled
+                      (KHR_materials_transmission): the environment seen straight through takes
+                      the diffuse's place with the diffuse's weight rho (1 - E_coat), so
+                      E(0.04) + (1 - E(0.04)) = 1 (measured: exactly 1, every tier)
+  transmissive volume the same with a volume of thickness 1 (KHR_materials_volume, no
+                      attenuation): the refracted direction sees the same constant, 1
+  tinted volume       the volume with attenuation colour (0.5, 0.7, 0.9) at distance 1 over
+                      thickness 1: E(0.04) + c (1 - E(0.04)) per channel (Beer-Lambert, c^(d/D);
+                      measured worst 2.7e-5 from the float64 value)
 """
 
 import numpy as np
@@ -55,7 +64,13 @@ MATERIALS = {
     "filmed_dielectric": {"albedo": [1, 1, 1], "metallic": 0.0, "iridescence": 1.0},
     "filmed_metal": {"albedo": [1, 1, 1], "metallic": 1.0, "iridescence": 1.0, "iridescence_ior": 1.8,
                      "iridescence_thickness_max": 550.0},
+    "transmissive_thin": {"albedo": [1, 1, 1], "metallic": 0.0, "transmission": 1.0},
+    "transmissive_volume": {"albedo": [1, 1, 1], "metallic": 0.0, "transmission": 1.0, "thickness": 1.0},
+    "tinted_volume": {"albedo": [1, 1, 1], "metallic": 0.0, "transmission": 1.0, "thickness": 1.0,
+                      "attenuation_color": [0.5, 0.7, 0.9], "attenuation_distance": 1.0},
 }
+# What the volume lets through of the transmitted light: c^(thickness / distance) per channel
+ATTENUATION = {"tinted_volume": np.array([0.5, 0.7, 0.9])}
 # The films: (mask, IOR, thickness in nm) as KHR_materials_iridescence's defaults fill them in.
 FILMS = {"filmed_dielectric": (1.0, 1.3, 400.0), "filmed_metal": (1.0, 1.8, 550.0)}
 # The coat's smoothness from the column's (base) smoothness.
@@ -65,12 +80,14 @@ COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1
 SHEEN_SMOOTHNESS = {"sheened_dielectric": lambda s: s, "sheened_coated": lambda s: 1.0 - s}
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
       "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0, "sheened_dielectric": 0.04,
-      "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 1.0}
+      "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 1.0, "transmissive_thin": 0.04,
+      "transmissive_volume": 0.04, "tinted_volume": 0.04}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
            "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04,
-           "sheened_dielectric": 0.04, "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 0.04}
+           "sheened_dielectric": 0.04, "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 0.04,
+           "transmissive_thin": 0.04, "transmissive_volume": 0.04, "tinted_volume": 0.04}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -148,7 +165,9 @@ def _expected(name, compensation, A, B, mu):
     rho = {"white_metal": 0.0, "white_dielectric": 1.0, "zero_f0_dielectric": 1.0, "black_dielectric": 0.0,
            "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0,
            "sheened_dielectric": 1.0, "sheened_coated": 1.0, "filmed_dielectric": 1.0,
-           "filmed_metal": 0.0}[name]  # albedo (1 - metallic)
+           "filmed_metal": 0.0, "transmissive_thin": 1.0, "transmissive_volume": 1.0,
+           "tinted_volume": 1.0}[name]  # albedo (1 - metallic)
+    rho = rho * ATTENUATION.get(name, 1.0)  # the transmitted part through the volume
     f0, coat_f0 = F0[name], COAT_F0[name]
     if name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')
         f0, coat_f0 = (ref_surface.iridescent_f0(np.full((len(mu), 3), f), mu, *FILMS[name]) for f in (f0, coat_f0))

@@ -30,6 +30,7 @@ TEST_SCENES = {
     "sheened_light_zoo": lambda: parse_scene(_sheened(light_zoo())),
     "anisotropic_light_zoo": lambda: parse_scene(_anisotropic(light_zoo())),
     "iridescent_light_zoo": lambda: parse_scene(_iridescent(light_zoo())),
+    "transmissive_light_zoo": lambda: parse_scene(_transmissive(light_zoo())),
 }
 
 
@@ -71,6 +72,19 @@ def _iridescent(scene):
                         iridescence_thickness_max=250.0 + 300.0 * i)
         if i == 1:
             material.update(anisotropy_strength=0.5, clearcoat=0.7)
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _transmissive(scene):
+    """The light zoo with transmissive bases (a thin wall, a tinted volume, one also filmed and
+    coated) and a light behind them: a setting of the material, compiled in both programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.update(transmission=1.0 - 0.3 * i)
+        if i == 1:
+            material.update(thickness=0.8, attenuation_color=[0.9, 0.5, 0.2], attenuation_distance=0.6, ior=1.4,
+                            iridescence=0.5, clearcoat=0.7)
+    scene["lights"].append({"type": "directional", "direction": [0.2, 0.1, 1.0], "intensity": 2.0})
     scene["environment"] = {"color": [0.3, 0.3, 0.3]}
     return scene
 
@@ -317,3 +331,23 @@ def test_a_material_without_iridescence_has_none_of_its_code(tmp_path, specialis
     for token in ANISOTROPY_TOKENS[:1] + ["pbr_lighting_anisotropic(diffColor,specColor", "u_sheen_color",
                                           "u_clearcoat", ",layers,o.Normal,v,gi,"]:
         assert token not in filmed_text, token
+
+
+# The transmission's uniforms and call sites: only where a material transmits.
+TRANSMISSION_TOKENS = ["u_transmission", "u_attenuation_color", "pbrlab_surf_transmission(IN,layers)",
+                       "c+=pbr_lighting_transmission(", "TransmittedDirection(o.Normal"]
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+def test_a_material_without_transmission_has_none_of_its_code(tmp_path, specialise):
+    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
+    transmissive_scene = json.loads(json.dumps(MINIMAL))
+    transmissive_scene["materials"]["m"].update(transmission=0.7, thickness=0.5)
+    _, transmissive = _programs_for(parse_scene(transmissive_scene), specialise)
+    plain_text, transmissive_text = _preprocessed(plain, tmp_path), _preprocessed(transmissive, tmp_path)
+    for token in TRANSMISSION_TOKENS:
+        assert token not in plain_text and token in transmissive_text, token
+    # a transmission alone has no film, anisotropy, sheen or coat code either
+    for token in IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + ["u_sheen_color", "u_clearcoat",
+                                                                    ",layers,o.Normal,v,gi,"]:
+        assert token not in transmissive_text, token

@@ -11,19 +11,28 @@
 //           vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s,
 //                                                   SurfaceOutputStandardLayers layers,
 //                                                   vec3 viewDir, UnityGI gi)
+//           vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s,
+//                                                       SurfaceOutputStandardLayers layers,
+//                                                       vec3 viewDir, UnityGI gi,
+//                                                       vec3 transmittedIndirect)
+//           vec4 LightingStandardSpecularLayersBaseTransmission(
+//                    SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
+//                    vec3 viewDir, UnityGI gi, vec3 transmittedIndirect)
+//           vec3 TransmittedDirection(vec3 normal, vec3 viewDir,
+//                                     SurfaceOutputStandardLayers layers)
 //           vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir,
 //                                            SurfaceOutputStandardLayers layers,
 //                                            float smoothness)
-//           (these three in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
+//           (these in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
 // Include:  "pbr/unity/surface_layers.glsl" (path relative to glsl/; it includes
 //           pbr/unity/surface_standard.glsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT, PBR_LAYERS_ANISOTROPY,
-//           PBR_LAYERS_IRIDESCENCE (1 by default; a caller that knows a layer is absent
+//           PBR_LAYERS_IRIDESCENCE, PBR_LAYERS_TRANSMISSION (1 by default; a caller that knows a layer is absent
 //           defines it 0 and LightingStandardLayers / LightingStandard[Specular]LayersBase
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.glsl,
-//           pbr/surface/lighting_sheen.glsl, pbr/surface/lighting_anisotropy.glsl and
-//           pbr/surface/lighting_iridescence.glsl.
+//           pbr/surface/lighting_sheen.glsl, pbr/surface/lighting_anisotropy.glsl,
+//           pbr/surface/lighting_iridescence.glsl and pbr/surface/lighting_transmission.glsl.
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
 // The fields here are named as URP's SurfaceData names them (clearCoatMask,
@@ -74,6 +83,7 @@
 #include "pbr/surface/lighting_sheen.glsl"
 #include "pbr/surface/lighting_anisotropy.glsl"
 #include "pbr/surface/lighting_iridescence.glsl"
+#include "pbr/surface/lighting_transmission.glsl"
 #include "pbr/material/remap.glsl"
 
 struct SurfaceOutputStandardLayers {
@@ -87,6 +97,11 @@ struct SurfaceOutputStandardLayers {
     float IridescenceMask;      // 0 = no film .. 1 (default 0)
     float IridescenceIor;       // the film's IOR (default 1.3: KHR's)
     float IridescenceThickness; // nanometres (default 400: KHR's maximum)
+    float Transmission;         // 0 = none .. 1 (default 0)
+    float Thickness;            // scene units (default 0: thin-walled)
+    vec3 AttenuationColor;      // linear (default 1: no attenuation)
+    float AttenuationDistance;  // > 0 (default +Inf: no attenuation)
+    float TransmissionIor;      // the volume's IOR (default 1.5: KHR_materials_ior's)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -100,6 +115,9 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_IRIDESCENCE
 #define PBR_LAYERS_IRIDESCENCE 1
+#endif
+#ifndef PBR_LAYERS_TRANSMISSION
+#define PBR_LAYERS_TRANSMISSION 1
 #endif
 // pbr/shading/dispatch.glsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
@@ -129,10 +147,11 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 #if PBR_BRDF_MODEL == PBR_BRDF_MODEL_PBRLAB
 // pbr_unity_lighting (pbr/unity/surface_standard.glsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
-// (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one.
+// (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
+// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION).
 vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, vec3 normal, vec3 viewDir,
-                                    UnityGI gi, SurfaceOutputStandardLayers layers) {
+                                    UnityGI gi, SurfaceOutputStandardLayers layers, vec3 transmittedIndirect) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     vec3 n = normalize(normal);
@@ -148,6 +167,10 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
     diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
     coatF0 = filmCoatF0;
 #endif
+#if PBR_LAYERS_TRANSMISSION
+    vec3 transmissionDiffColor = diffColor;  // the whole diffuse colour: the transmission's weight
+    diffColor = pbr_transmission_diffuse_color(diffColor, layers.Transmission);
+#endif
 #if PBR_LAYERS_ANISOTROPY
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
@@ -156,6 +179,16 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
                                       gi, anisotropy);
 #else
     vec3 c = pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
+#endif
+#if PBR_LAYERS_TRANSMISSION
+    pbr_Transmission tr;
+    tr.factor = layers.Transmission;
+    tr.thickness = layers.Thickness;
+    tr.attenuationColor = layers.AttenuationColor;
+    tr.attenuationDistance = layers.AttenuationDistance;
+    tr.ior = layers.TransmissionIor;
+    c += pbr_lighting_transmission(transmissionDiffColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi,
+                                   transmittedIndirect, tr);
 #endif
     return vec4(c, outputAlpha);
 }
@@ -167,7 +200,17 @@ vec4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLa
     vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers);
+                                          viewDir, gi, layers, vec3(0.0, 0.0, 0.0));
+}
+
+vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
+                                            vec3 viewDir, UnityGI gi, vec3 transmittedIndirect) {
+    vec3 specColor;
+    float oneMinusReflectivity;
+    vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+                                          oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
+                                          viewDir, gi, layers, transmittedIndirect);
 }
 
 vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
@@ -175,7 +218,30 @@ vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, Surface
     float oneMinusReflectivity;
     vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
-                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers);
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
+                                          vec3(0.0, 0.0, 0.0));
+}
+
+vec4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecular s,
+                                                    SurfaceOutputStandardLayers layers, vec3 viewDir, UnityGI gi,
+                                                    vec3 transmittedIndirect) {
+    float oneMinusReflectivity;
+    vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
+                                          transmittedIndirect);
+}
+
+// The direction the environment is seen along through the surface (world): straight through
+// a thin wall, refracted into a volume (pbr_transmitted_direction).
+vec3 TransmittedDirection(vec3 normal, vec3 viewDir, SurfaceOutputStandardLayers layers) {
+    pbr_Transmission tr;
+    tr.factor = layers.Transmission;
+    tr.thickness = layers.Thickness;
+    tr.attenuationColor = layers.AttenuationColor;
+    tr.attenuationDistance = layers.AttenuationDistance;
+    tr.ior = layers.TransmissionIor;
+    return pbr_transmitted_direction(normalize(normal), viewDir, tr);
 }
 
 // The normal (world) whose mirror direction the anisotropic base reads its prefiltered

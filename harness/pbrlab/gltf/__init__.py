@@ -17,6 +17,7 @@ SceneError naming the object; nothing else escapes for a bad file.
 from __future__ import annotations
 
 import math
+import copy
 import re
 import warnings
 from dataclasses import dataclass, field
@@ -41,7 +42,8 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
                        "KHR_materials_variants", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
                        "KHR_materials_sheen", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing",
-                       "KHR_materials_anisotropy", "KHR_materials_iridescence")
+                       "KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_transmission",
+                       "KHR_materials_volume")
 # Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
 DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
@@ -197,6 +199,7 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
             material_names[mkey] = name
             materials[mkey] = material
         material = materials[mkey]
+        material = _scaled_volume(material, world, mkey, materials, material_names)
         for slot, uv_set in sorted(material.texture_uv_set.items()):
             if not primitive.object("attributes").has(f"TEXCOORD_{uv_set}"):
                 primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
@@ -215,6 +218,28 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
             out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey],
                                    where=f"{doc.path}: nodes[{node_index}] (mesh {mesh_index}, primitive {p})"))
     return out
+
+
+def _scaled_volume(material, world, mkey, materials, material_names):
+    """KHR_materials_volume: "thicknessFactor ... is given in the coordinate space of the mesh.
+    Any transformations applied to the mesh's node will also be applied to the thickness" (the
+    extension's README, "Properties"). A volume placed with a scale s != 1 gets its own copy of
+    the material, thickness x s; s = |det(world 3x3)|^(1/3), the placement's geometric-mean
+    scale (exact for a uniform scale; decided for a non-uniform one, where the Sample Renderer
+    scales its refraction vector per axis)."""
+    if material.transmission <= 0.0 or material.thickness <= 0.0:
+        return material
+    s = float(abs(np.linalg.det(world[:3, :3])) ** (1.0 / 3.0))
+    if s == 1.0:
+        return material
+    skey = (*mkey, "volume scale", s)
+    if skey not in materials:
+        scaled = copy.deepcopy(material)
+        scaled.thickness = material.thickness * s
+        scaled.name = f"{material.name} [volume scale {s:.9g}]"
+        material_names[skey] = scaled.name
+        materials[skey] = scaled
+    return materials[skey]
 
 
 def _variant_index(doc, spec, name: str | None) -> int | None:

@@ -28,6 +28,10 @@ reads what this module writes into a scene Material:
                                              (RG: direction); MikkTSpace tangents where TANGENT is absent
     KHR_materials_iridescence                iridescence = iridescenceFactor (x texture.r), iridescence_ior,
                                              iridescence_thickness_min / _max (nm; texture.g between them)
+    KHR_materials_transmission               transmission = transmissionFactor (x transmissionTexture.r)
+    KHR_materials_volume                     thickness = thicknessFactor (x thicknessTexture.g) x the node's
+                                             world scale (|det|^(1/3)), attenuation_color, attenuation_distance
+                                             (absent: +inf); ior = KHR_materials_ior's (refraction)
     KHR_materials_ior, KHR_materials_specular
       (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
                                              x specularColorFactor x specularFactor (max 1)
@@ -42,7 +46,7 @@ import math
 
 import numpy as np
 
-from ..scene import IRIDESCENCE_IOR_RANGE, Material
+from ..scene import IRIDESCENCE_IOR_RANGE, TRANSMISSION_IOR_RANGE, Material
 from . import images
 from .document import Document
 from .fields import FieldReader, join
@@ -61,7 +65,8 @@ DEFAULT_IOR = 1.5                                         # KHR_materials_ior: g
 
 HONOURED_MATERIAL_EXTENSIONS = ("KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",
                                 "KHR_materials_specular", "KHR_materials_unlit", "KHR_materials_pbrSpecularGlossiness",
-                                "KHR_materials_sheen", "KHR_materials_anisotropy", "KHR_materials_iridescence")
+                                "KHR_materials_sheen", "KHR_materials_anisotropy", "KHR_materials_iridescence",
+                                "KHR_materials_transmission", "KHR_materials_volume")
 # KHR_materials_iridescence's textures: (key, pbrlab slot); linear data (R mask, G thickness)
 IRIDESCENCE_TEXTURES = (("iridescenceTexture", "iridescence"), ("iridescenceThicknessTexture", "iridescence_thickness"))
 # KHR_materials_sheen's textures: (key, pbrlab slot, decode sRGB)
@@ -215,6 +220,11 @@ class MaterialReader:
             self._anisotropy(m, extensions["KHR_materials_anisotropy"], name)
         if "KHR_materials_iridescence" in extensions:
             self._iridescence(m, extensions["KHR_materials_iridescence"], name)
+        if "KHR_materials_transmission" in extensions:
+            self._transmission(m, extensions, name)
+        elif "KHR_materials_volume" in extensions:
+            self.warn(f"KHR_materials_volume ignored in material \"{name}\" (without KHR_materials_transmission "
+                      "there is no light through the surface to attenuate)")
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
@@ -281,6 +291,29 @@ class MaterialReader:
             for key, slot in IRIDESCENCE_TEXTURES:
                 if film.has(key):
                     self.texture(film.object(key), m, slot, False, name)
+
+    def _transmission(self, m: Material, extensions: dict, name: str):
+        """KHR_materials_transmission (the extension's README, "Properties"): transmission =
+        transmissionFactor x transmissionTexture.r (default 0). KHR_materials_volume ("Properties"):
+        thickness = thicknessFactor x thicknessTexture.g (default 0: thin-walled) in the mesh's
+        space (the importer scales it by the node's world scale), attenuationColor (default 1),
+        attenuationDistance (default +infinity); its refraction reads KHR_materials_ior's ior
+        (default 1.5). A factor of 0 is no transmission, so its textures are not read then."""
+        transmission = extensions["KHR_materials_transmission"]
+        m.transmission = transmission.number("transmissionFactor", 0.0, 0.0, 1.0)
+        if m.transmission > 0.0 and transmission.has("transmissionTexture"):
+            self.texture(transmission.object("transmissionTexture"), m, "transmission", False, name)
+        if "KHR_materials_ior" in extensions:
+            m.ior = extensions["KHR_materials_ior"].number("ior", DEFAULT_IOR, *TRANSMISSION_IOR_RANGE)
+        if "KHR_materials_volume" not in extensions:
+            return
+        volume = extensions["KHR_materials_volume"]
+        m.thickness = volume.number("thicknessFactor", 0.0, 0.0)
+        m.attenuation_color = tuple(float(c) for c in volume.numbers("attenuationColor", 3, [1, 1, 1], 0.0, 1.0))
+        if volume.has("attenuationDistance"):
+            m.attenuation_distance = volume.number("attenuationDistance", None, 0.0, lo_open=True)
+        if m.transmission > 0.0 and m.thickness > 0.0 and volume.has("thicknessTexture"):
+            self.texture(volume.object("thicknessTexture"), m, "thickness", False, name)
 
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
         """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from

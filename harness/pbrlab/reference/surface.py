@@ -235,3 +235,35 @@ def iridescent_diffuse_color(diffuse_color, coat_f0, film_coat_f0):
     rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)."""
     rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)
     return rho * np.maximum(1.0 - np.max(_f(film_coat_f0), axis=-1, keepdims=True), MIN_ONE_MINUS_REFLECTIVITY)
+
+
+def transmission_diffuse_color(diffuse_color, transmission):
+    """pbr_transmission_diffuse_color: what the diffuse lobe keeps, diffuseColor (1 - t)."""
+    return _f(diffuse_color) * (1.0 - float(np.clip(transmission, 0.0, 1.0)))
+
+
+def lighting_transmission(diffuse_color, coat_f0, perceptual_roughness, occlusion, n, v, light_dir, light_radiance,
+                          transmitted_indirect, dfg, factor, thickness, attenuation_color, attenuation_distance, ior,
+                          quality="HIGH", specular_f="SCHLICK", energy_compensated=True):
+    """pbr/surface/lighting_transmission.glsl pbr_lighting_transmission in float64, from
+    KHR_materials_transmission / _volume and reference/transmission.py: t A (direct +
+    indirect), A the Beer-Lambert attenuation over the thickness (1 thin-walled); direct: a
+    thin wall's mirrored lobe tinted by rho (1 - E_coat) (single scattering, the direct
+    diffuse's weight), or Walter's BTDF (eta = ior, its own 1 - F) tinted by rho; indirect:
+    rho (1 - E_coat) (the environment's, compensated as the indirect diffuse) times the
+    environment seen through, times occlusion. dfg: (A, B) at the pixel's NdotV and the
+    base's clamped roughness."""
+    from . import transmission as ref_transmission
+    r = float(shading.clamp_perceptual_roughness(perceptual_roughness, quality))
+    if thickness > 0.0:
+        rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)
+        direct = ref_transmission.transmission_walter_punctual(n, v, light_dir, light_radiance, r * r,
+                                                               np.full(len(_f(n)), ior)) * rho
+        attenuation = ref_transmission.volume_attenuation(thickness, attenuation_color, attenuation_distance)
+    else:
+        direct_color = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
+        direct = ref_transmission.transmission_thin_punctual(n, v, light_dir, light_radiance, direct_color, r * r)
+        attenuation = np.ones(3)
+    indirect = coupled_diffuse_color(diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated)) \
+        * _f(transmitted_indirect) * occlusion
+    return float(np.clip(factor, 0.0, 1.0)) * attenuation * (direct + indirect)

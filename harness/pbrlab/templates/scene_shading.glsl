@@ -45,6 +45,11 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #else
 #define PBR_LAYERS_IRIDESCENCE 0
 #endif
+#ifdef PBRLAB_TRANSMISSION
+#define PBR_LAYERS_TRANSMISSION 1
+#else
+#define PBR_LAYERS_TRANSMISSION 0
+#endif
 
 #include "pbr/pbr.glsl"
 #include "pbr/lighting/attenuation.glsl"

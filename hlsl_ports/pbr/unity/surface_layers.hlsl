@@ -11,19 +11,28 @@
 //           vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s,
 //                                                   SurfaceOutputStandardLayers layers,
 //                                                   vec3 viewDir, UnityGI gi)
+//           vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s,
+//                                                       SurfaceOutputStandardLayers layers,
+//                                                       vec3 viewDir, UnityGI gi,
+//                                                       vec3 transmittedIndirect)
+//           vec4 LightingStandardSpecularLayersBaseTransmission(
+//                    SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
+//                    vec3 viewDir, UnityGI gi, vec3 transmittedIndirect)
+//           vec3 TransmittedDirection(vec3 normal, vec3 viewDir,
+//                                     SurfaceOutputStandardLayers layers)
 //           vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir,
 //                                            SurfaceOutputStandardLayers layers,
 //                                            float smoothness)
-//           (these three in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
+//           (these in the pbrlab model only: PBR_BRDF_MODEL_PBRLAB)
 // Include:  "pbr/unity/surface_layers.hlsl" (path relative to glsl/; it includes
 //           pbr/unity/surface_standard.hlsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT, PBR_LAYERS_ANISOTROPY,
-//           PBR_LAYERS_IRIDESCENCE (1 by default; a caller that knows a layer is absent
+//           PBR_LAYERS_IRIDESCENCE, PBR_LAYERS_TRANSMISSION (1 by default; a caller that knows a layer is absent
 //           defines it 0 and LightingStandardLayers / LightingStandard[Specular]LayersBase
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.hlsl,
-//           pbr/surface/lighting_sheen.hlsl, pbr/surface/lighting_anisotropy.hlsl and
-//           pbr/surface/lighting_iridescence.hlsl.
+//           pbr/surface/lighting_sheen.hlsl, pbr/surface/lighting_anisotropy.hlsl,
+//           pbr/surface/lighting_iridescence.hlsl and pbr/surface/lighting_transmission.hlsl.
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
 // The fields here are named as URP's SurfaceData names them (clearCoatMask,
@@ -75,6 +84,7 @@
 #include "pbr/surface/lighting_sheen.hlsl"
 #include "pbr/surface/lighting_anisotropy.hlsl"
 #include "pbr/surface/lighting_iridescence.hlsl"
+#include "pbr/surface/lighting_transmission.hlsl"
 #include "pbr/material/remap.hlsl"
 
 struct SurfaceOutputStandardLayers {
@@ -88,6 +98,11 @@ struct SurfaceOutputStandardLayers {
     float IridescenceMask;      // 0 = no film .. 1 (default 0)
     float IridescenceIor;       // the film's IOR (default 1.3: KHR's)
     float IridescenceThickness; // nanometres (default 400: KHR's maximum)
+    float Transmission;         // 0 = none .. 1 (default 0)
+    float Thickness;            // scene units (default 0: thin-walled)
+    float3 AttenuationColor;      // linear (default 1: no attenuation)
+    float AttenuationDistance;  // > 0 (default +Inf: no attenuation)
+    float TransmissionIor;      // the volume's IOR (default 1.5: KHR_materials_ior's)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -101,6 +116,9 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_IRIDESCENCE
 #define PBR_LAYERS_IRIDESCENCE 1
+#endif
+#ifndef PBR_LAYERS_TRANSMISSION
+#define PBR_LAYERS_TRANSMISSION 1
 #endif
 // pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
@@ -130,10 +148,11 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 #if PBR_BRDF_MODEL == PBR_BRDF_MODEL_PBRLAB
 // pbr_unity_lighting (pbr/unity/surface_standard.hlsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
-// (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one.
+// (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
+// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION).
 float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, float3 normal, float3 viewDir,
-                                    UnityGI gi, SurfaceOutputStandardLayers layers) {
+                                    UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     float3 n = normalize(normal);
@@ -149,6 +168,10 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
     coatF0 = filmCoatF0;
 #endif
+#if PBR_LAYERS_TRANSMISSION
+    float3 transmissionDiffColor = diffColor;  // the whole diffuse colour: the transmission's weight
+    diffColor = pbr_transmission_diffuse_color(diffColor, layers.Transmission);
+#endif
 #if PBR_LAYERS_ANISOTROPY
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
@@ -157,6 +180,16 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
                                       gi, anisotropy);
 #else
     float3 c = pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
+#endif
+#if PBR_LAYERS_TRANSMISSION
+    pbr_Transmission tr;
+    tr.factor = layers.Transmission;
+    tr.thickness = layers.Thickness;
+    tr.attenuationColor = layers.AttenuationColor;
+    tr.attenuationDistance = layers.AttenuationDistance;
+    tr.ior = layers.TransmissionIor;
+    c += pbr_lighting_transmission(transmissionDiffColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi,
+                                   transmittedIndirect, tr);
 #endif
     return float4(c, outputAlpha);
 }
@@ -168,7 +201,17 @@ float4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandard
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers);
+                                          viewDir, gi, layers, float3(0.0, 0.0, 0.0));
+}
+
+float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
+                                            float3 viewDir, UnityGI gi, float3 transmittedIndirect) {
+    float3 specColor;
+    float oneMinusReflectivity;
+    float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+                                          oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
+                                          viewDir, gi, layers, transmittedIndirect);
 }
 
 float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
@@ -176,7 +219,30 @@ float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, Surfa
     float oneMinusReflectivity;
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
-                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers);
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
+                                          float3(0.0, 0.0, 0.0));
+}
+
+float4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecular s,
+                                                    SurfaceOutputStandardLayers layers, float3 viewDir, UnityGI gi,
+                                                    float3 transmittedIndirect) {
+    float oneMinusReflectivity;
+    float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
+                                          s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
+                                          transmittedIndirect);
+}
+
+// The direction the environment is seen along through the surface (world): straight through
+// a thin wall, refracted into a volume (pbr_transmitted_direction).
+float3 TransmittedDirection(float3 normal, float3 viewDir, SurfaceOutputStandardLayers layers) {
+    pbr_Transmission tr;
+    tr.factor = layers.Transmission;
+    tr.thickness = layers.Thickness;
+    tr.attenuationColor = layers.AttenuationColor;
+    tr.attenuationDistance = layers.AttenuationDistance;
+    tr.ior = layers.TransmissionIor;
+    return pbr_transmitted_direction(normalize(normal), viewDir, tr);
 }
 
 // The normal (world) whose mirror direction the anisotropic base reads its prefiltered

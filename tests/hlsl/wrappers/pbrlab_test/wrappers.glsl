@@ -60,7 +60,23 @@ SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clear
     s.IridescenceMask = iridescenceMask;
     s.IridescenceIor = iridescenceIor;
     s.IridescenceThickness = iridescenceThickness;
+    s.Transmission = 0.0;  // no transmission (test_transmission exercises it)
+    s.Thickness = 0.0;
+    s.AttenuationColor = vec3(1.0, 1.0, 1.0);
+    s.AttenuationDistance = 1.0;
+    s.TransmissionIor = 1.5;
     return s;
+}
+
+pbr_Transmission test_transmission(float factor, float thickness, vec3 attenuationColor,
+                                   float attenuationDistance, float ior) {
+    pbr_Transmission tr;
+    tr.factor = factor;
+    tr.thickness = thickness;
+    tr.attenuationColor = attenuationColor;
+    tr.attenuationDistance = attenuationDistance;
+    tr.ior = ior;
+    return tr;
 }
 
 pbr_Iridescence test_iridescence(float factor, float ior, float thicknessNm) {

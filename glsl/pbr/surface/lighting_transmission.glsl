@@ -1,0 +1,88 @@
+// pbr/surface/lighting_transmission.glsl: KHR_materials_transmission and KHR_materials_volume
+// on the base: the light the diffuse would have scattered passes through the surface instead.
+//
+// Provides: struct pbr_Transmission
+//           vec3 pbr_transmission_diffuse_color(vec3 diffuseColor, float transmission)
+//           vec3 pbr_transmitted_direction(vec3 n, vec3 v, pbr_Transmission tr)
+//           vec3 pbr_lighting_transmission(vec3 diffuseColor, vec3 coatF0,
+//                                          float perceptualRoughness, float occlusion, vec3 n,
+//                                          vec3 v, pbr_GI gi, vec3 transmittedIndirect,
+//                                          pbr_Transmission tr)
+// Include:  "pbr/surface/lighting_transmission.glsl" (path relative to glsl/)
+// Config macros read: those of pbr/surface/lighting_standard.glsl.
+//
+// KHR_materials_transmission ("Transmission BTDF"): dielectric_brdf =
+// fresnel_mix(ior, mix(diffuse_brdf, specular_btdf · baseColor, transmission), specular_brdf):
+// the transmission takes the diffuse's place, under the same coat. pbrlab keeps its diffuse
+// coupling (pbr/shading/energy_conservation.glsl: the diffuse gets rho (1 − E_coat), Fdez-Agüera
+// 2019 §4) and splits that weight:
+//   the diffuse lobe                 diffuseColor (1 − transmission)   (the caller passes
+//                                    pbr_transmission_diffuse_color to its base lighting)
+//   the transmission (this function) transmission · A · (direct + indirect), with
+//     A = pbr_volume_attenuation(thickness, attenuationColor, attenuationDistance)
+//         (KHR_materials_volume, Beer-Lambert over the thickness; 1 for a thin wall)
+//     direct, a light behind the surface (n.l < 0):
+//       thin wall (thickness 0): pbr_transmission_thin_punctual tinted by rho (1 − E_coat),
+//         E_coat the coat's single-scattering albedo (the direct diffuse's weight,
+//         pbr_specular_albedo_bound)
+//       volume (thickness > 0): pbr_transmission_punctual (Walter et al. 2007, eta = ior:
+//         the light inside the volume, the view in air) tinted by rho; Walter's BTDF carries
+//         its own 1 − F(v.h) (pbr_T_Dielectric), so the coat's 1 − E is not applied twice
+//     indirect: transmittedIndirect (the caller's prefiltered environment radiance along
+//       pbr_transmitted_direction, at the base's roughness) · rho (1 − E_coat) · occlusion,
+//       E_coat with the environment's compensation: the indirect diffuse's weight
+//       (pbr_indirect_diffuse_color), so a white, fully transmissive dielectric in a white
+//       furnace returns E_spec + (1 − E_spec) = 1 (tests/render/test_white_furnace.py).
+// pbr_transmitted_direction: straight through (−v) for a thin wall (two parallel interfaces:
+// the light leaves unbent); the refracted direction (pbr_refraction_direction, Snell) into a
+// volume. Decided: the environment only (no copy of the opaque scene behind the surface, which
+// the Khronos Sample Renderer samples); the roughness is the base's (the Sample Renderer
+// scales it by clamp(2 ior − 2, 0, 1) for its framebuffer's mip: not done here); the refracted
+// ray is not bent again where it leaves the volume.
+// transmission = 0 adds 0 · (finite terms) and the caller's diffuse colour is multiplied by 1:
+// the base's value bit for bit.
+// Python twin: harness/pbrlab/reference/surface.py lighting_transmission.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
+#ifndef PBR_SURFACE_LIGHTING_TRANSMISSION_GLSL
+#define PBR_SURFACE_LIGHTING_TRANSMISSION_GLSL
+#include "pbr/common/math.glsl"
+#include "pbr/shading/transmission.glsl"
+#include "pbr/shading/energy_conservation.glsl"
+#include "pbr/surface/lighting_standard.glsl"
+
+struct pbr_Transmission {
+    float factor;               // 0 = none .. 1 (glTF transmissionFactor x texture.r)
+    float thickness;            // scene units; 0 = thin-walled (glTF thicknessFactor x texture.g x scale)
+    vec3 attenuationColor;      // linear; the colour white light becomes after attenuationDistance
+    float attenuationDistance;  // > 0; +Inf: no attenuation (the extension's default)
+    float ior;                  // the volume's index of refraction (>= 1)
+};
+
+// The diffuse colour left to the diffuse lobe: (1 − transmission) of it.
+vec3 pbr_transmission_diffuse_color(vec3 diffuseColor, float transmission) {
+    return diffuseColor * (1.0 - pbr_saturate(transmission));
+}
+
+vec3 pbr_transmitted_direction(vec3 n, vec3 v, pbr_Transmission tr) {
+    return tr.thickness > 0.0 ? pbr_refraction_direction(n, v, tr.ior) : -v;
+}
+
+vec3 pbr_lighting_transmission(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness, float occlusion,
+                               vec3 n, vec3 v, pbr_GI gi, vec3 transmittedIndirect, pbr_Transmission tr) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    bool volume = tr.thickness > 0.0;
+    vec3 direct;
+    if (volume) {
+        vec3 rho = pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0);
+        direct = pbr_transmission_punctual(n, v, gi.light.dir, gi.light.color, rho, roughness, tr.ior);
+    } else {
+        vec3 directColor = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
+        direct = pbr_transmission_thin_punctual(n, v, gi.light.dir, gi.light.color, directColor, roughness);
+    }
+    vec3 indirect = pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * transmittedIndirect * occlusion;
+    vec3 attenuation = volume ? pbr_volume_attenuation(tr.thickness, tr.attenuationColor, tr.attenuationDistance)
+                              : vec3(1.0);
+    return pbr_saturate(tr.factor) * attenuation * (direct + indirect);
+}
+#endif
