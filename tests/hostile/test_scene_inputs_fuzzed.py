@@ -53,7 +53,9 @@ def _finite_scene(scene: Scene) -> None:
         elif isinstance(value, np.ndarray):
             assert np.all(np.isfinite(value)), where
         elif isinstance(value, float) and not where.endswith(".range"):  # range: inf = unbounded
-            assert math.isfinite(value), where
+            # attenuation_distance: +inf is KHR_materials_volume's default (nothing absorbed;
+            # a JSON scene cannot write it, the reader refuses non-finite numbers)
+            assert math.isfinite(value) or (where.endswith(".attenuation_distance") and value == math.inf), where
     walk(scene, "scene")
     assert type(scene.render.energy_compensation) is bool
 
