@@ -299,55 +299,37 @@ ANISOTROPY_TOKENS = ["u_anisotropy_strength", "u_anisotropy_rotation", "pbrlab_s
                      "pbr_lighting_anisotropic(diffColor,specColor", "AnisotropicReflectionNormal(o.Normal"]
 
 
-@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
-def test_a_material_without_anisotropy_has_none_of_its_code(tmp_path, specialise):
-    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
-    anisotropic_scene = json.loads(json.dumps(MINIMAL))
-    anisotropic_scene["materials"]["m"].update(anisotropy_strength=0.6, anisotropy_rotation=0.5)
-    _, anisotropic = _programs_for(parse_scene(anisotropic_scene), specialise)
-    plain_text, anisotropic_text = _preprocessed(plain, tmp_path), _preprocessed(anisotropic, tmp_path)
-    for token in ANISOTROPY_TOKENS:
-        assert token not in plain_text and token in anisotropic_text, token
-    # an anisotropic base alone has no sheen or coat code either
-    for token in ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]:
-        assert token not in anisotropic_text, token
-
-
 # The thin film's uniforms and call sites: only where a material's base has a film.
 IRIDESCENCE_TOKENS = ["u_iridescence", "u_iridescence_ior", "u_iridescence_thickness",
                       "pbrlab_surf_iridescence(IN,layers)", "specColor=pbr_iridescent_f0(specColor"]
-
-
-@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
-def test_a_material_without_iridescence_has_none_of_its_code(tmp_path, specialise):
-    _, plain = _programs_for(parse_scene(MINIMAL), specialise)
-    filmed_scene = json.loads(json.dumps(MINIMAL))
-    filmed_scene["materials"]["m"].update(iridescence=0.8, iridescence_thickness_max=500.0)
-    _, filmed = _programs_for(parse_scene(filmed_scene), specialise)
-    plain_text, filmed_text = _preprocessed(plain, tmp_path), _preprocessed(filmed, tmp_path)
-    for token in IRIDESCENCE_TOKENS:
-        assert token not in plain_text and token in filmed_text, token
-    # a film alone has no anisotropy, sheen or coat code either
-    for token in ANISOTROPY_TOKENS[:1] + ["pbr_lighting_anisotropic(diffColor,specColor", "u_sheen_color",
-                                          "u_clearcoat", ",layers,o.Normal,v,gi,"]:
-        assert token not in filmed_text, token
-
-
 # The transmission's uniforms and call sites: only where a material transmits.
 TRANSMISSION_TOKENS = ["u_transmission", "u_attenuation_color", "pbrlab_surf_transmission(IN,layers)",
                        "c+=pbr_lighting_transmission(", "TransmittedDirection(o.Normal"]
+_NO_SHEEN_OR_COAT = ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]
+# layer: (the material fields that turn it on, its tokens, tokens of the other layers its
+# program must still lack)
+BASE_LAYERS = {
+    "anisotropy": ({"anisotropy_strength": 0.6, "anisotropy_rotation": 0.5}, ANISOTROPY_TOKENS,
+                   _NO_SHEEN_OR_COAT),
+    "iridescence": ({"iridescence": 0.8, "iridescence_thickness_max": 500.0}, IRIDESCENCE_TOKENS,
+                    ANISOTROPY_TOKENS[:1] + ["pbr_lighting_anisotropic(diffColor,specColor"] + _NO_SHEEN_OR_COAT),
+    "transmission": ({"transmission": 0.7, "thickness": 0.5}, TRANSMISSION_TOKENS,
+                     IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + _NO_SHEEN_OR_COAT),
+}
 
 
 @pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
-def test_a_material_without_transmission_has_none_of_its_code(tmp_path, specialise):
+@pytest.mark.parametrize("layer", sorted(BASE_LAYERS))
+def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, specialise):
+    """Anisotropy, a thin film, transmission: none of a layer's code in a program whose
+    material lacks it, and a material with one layer has none of the others' code."""
+    fields, tokens, absent = BASE_LAYERS[layer]
     _, plain = _programs_for(parse_scene(MINIMAL), specialise)
-    transmissive_scene = json.loads(json.dumps(MINIMAL))
-    transmissive_scene["materials"]["m"].update(transmission=0.7, thickness=0.5)
-    _, transmissive = _programs_for(parse_scene(transmissive_scene), specialise)
-    plain_text, transmissive_text = _preprocessed(plain, tmp_path), _preprocessed(transmissive, tmp_path)
-    for token in TRANSMISSION_TOKENS:
-        assert token not in plain_text and token in transmissive_text, token
-    # a transmission alone has no film, anisotropy, sheen or coat code either
-    for token in IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + ["u_sheen_color", "u_clearcoat",
-                                                                    ",layers,o.Normal,v,gi,"]:
-        assert token not in transmissive_text, token
+    layered_scene = json.loads(json.dumps(MINIMAL))
+    layered_scene["materials"]["m"].update(fields)
+    _, layered = _programs_for(parse_scene(layered_scene), specialise)
+    plain_text, layered_text = _preprocessed(plain, tmp_path), _preprocessed(layered, tmp_path)
+    for token in tokens:
+        assert token not in plain_text and token in layered_text, token
+    for token in absent:
+        assert token not in layered_text, token
