@@ -345,9 +345,9 @@ def test_sparse_accessor_replaces_elements(tmp_path):
 
 def test_extension_used_where_nothing_looks_is_named(tmp_path):
     doc = quad_document()
-    doc["extensionsUsed"] = ["EXT_texture_webp", "KHR_lights_punctual"]
+    doc["extensionsUsed"] = ["EXT_lights_image_based", "KHR_lights_punctual"]
     assert load_gltf(write(tmp_path, doc), emit_warnings=False).warnings == [
-        "EXT_texture_webp ignored (listed in extensionsUsed)"]
+        "EXT_lights_image_based ignored (listed in extensionsUsed)"]
 
 
 def test_orthographic_camera_maps_ymag_to_half_the_image_height(tmp_path, gl_context):

@@ -30,7 +30,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import draco, instancing, meshopt, morph
+from . import draco, instancing, ktx2, meshopt, morph, webp
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -45,7 +45,7 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_transmission",
                        "KHR_materials_volume")
 # Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
-DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
+DECODED_EXTENSIONS = {module.EXTENSION: module for module in (draco, meshopt, ktx2, webp)}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
