@@ -30,7 +30,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import draco, instancing, ktx2, meshopt, morph, webp
+from . import draco, instancing, ktx2, meshopt, morph, points_lines, webp
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -156,9 +156,12 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             check_float32(placed, node, f"the world matrix of its instance {i} "
                                         f"({instancing.EXTENSION})")
         for placed in placements:
-            objects += _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed, node_index,
-                                          variant_index, materials, material_names, geometries, warn,
-                                          mesh_weights)
+            placed_objects = _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed,
+                                                node_index, variant_index, materials, material_names, geometries,
+                                                warn, mesh_weights)
+            for obj in placed_objects if instances is not None else []:
+                obj.instance_group = (str(doc.path), node_index)
+            objects += placed_objects
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
         if name not in honoured and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
@@ -214,6 +217,9 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                               (*key, mesh_index, p, flip, weights), weights)
+        if geometries[gkey] is not None and geometries[gkey].topology != "triangles":
+            material = points_lines.shaded_material(material, primitive.object("attributes").has("NORMAL"), mkey,
+                                                    materials, material_names)
         if geometries[gkey] is not None:
             out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey],
                                    where=f"{doc.path}: nodes[{node_index}] (mesh {mesh_index}, primitive {p})"))
