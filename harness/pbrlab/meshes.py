@@ -111,7 +111,8 @@ class MeshData:
 class Geometry:
     """Vertex data held in memory (a glTF primitive), ready for the mesh program: float32
     positions, normals, uv, tangents (xyz, w sign), uv1, colours (RGBA) and int32 indices
-    of a triangle list. ``key`` identifies it in the mesh cache."""
+    of a triangle list (or of a line or point list: ``topology``, glTF's POINTS and LINES
+    modes). ``key`` identifies it in the mesh cache."""
     key: tuple
     positions: np.ndarray
     normals: np.ndarray
@@ -120,6 +121,7 @@ class Geometry:
     uv1: np.ndarray
     colors: np.ndarray
     indices: np.ndarray
+    topology: str = "triangles"  # "triangles", "lines" or "points"
 
 
 def _mesh_key(obj) -> tuple:
@@ -220,9 +222,10 @@ def vertex_arrays(mesh):
             tan.astype(np.float32), faces.astype(np.int32).reshape(-1))
 
 
-def vertex_array(ctx, program, obj):
+def vertex_array(ctx, program, obj, instances: np.ndarray | None = None):
     """A moderngl VertexArray for ``obj`` on ``program``, plus the buffers to release.
-    Meshes without a second UV set read the first; without colours, white."""
+    Meshes without a second UV set read the first; without colours, white. ``instances``:
+    per-instance rows of in_model (16 floats) and in_normal_matrix (9), instanced_draws."""
     arrays = mesh_data(obj).arrays
     positions, normals, uv, tan, indices = arrays[:5]
     uv1 = arrays[5] if len(arrays) > 5 else uv
@@ -241,5 +244,10 @@ def vertex_array(ctx, program, obj):
         else:
             fmt.append(f[0] + "x4")  # skip the attribute's bytes
     fmt_string = " ".join(fmt)
-    vao = ctx.vertex_array(program, [(vbo, fmt_string, *layout)], index_buffer=ibo)
-    return vao, [vbo, ibo]
+    content = [(vbo, fmt_string, *layout)]
+    buffers = [vbo, ibo]
+    if instances is not None:
+        buffers.append(ctx.buffer(np.ascontiguousarray(instances, np.float32).tobytes()))
+        content.append((buffers[-1], "16f 9f/i", "in_model", "in_normal_matrix"))
+    vao = ctx.vertex_array(program, content, index_buffer=ibo)
+    return vao, buffers

@@ -18,7 +18,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, gl, gl_limits, ibl, meshes, resource_cache, surface_bindings, targets
+from . import features, gl, gl_limits, ibl, instanced_draws, meshes, resource_cache, surface_bindings, targets
 from . import srgb8 as srgb8_codes
 from .unity import cubemap as unity_cubemap
 from .unity import program as unity_program
@@ -47,6 +47,7 @@ class Rendering:
     srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + sRGB encode (see ``transfer``)
     info: dict
     programs: "features.ProgramPlan" = None  # what was compiled
+    draw_calls: int = 0  # the objects' draw calls (an instanced draw counts once)
 
 
 class _SceneResources:
@@ -292,7 +293,10 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
             _reset_draw_state(ctx)
-            for obj in _draw_order(scene, frame):
+            draw_calls = 0
+            order = _draw_order(scene, frame)
+            for batch in instanced_draws.batches(order, lambda o: _instanceable(scene.materials[o.material])):
+                obj = batch[0]
                 material = scene.materials[obj.material]
                 defines = plan.defines[obj.material]
                 shading = (defines, surfaces[obj.material], language, mesh_fragment)
@@ -307,6 +311,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                         for keyed, additive in unity_light_programs(unity_pass, defines):
                             _unity_pass_state(ctx, hdr, material, unity_pass, additive)
                             keyed_shading = (keyed, *shading[1:])
+                            draw_calls += 1
                             if obj.sphere is not None and unity_pass.kind == "surface" \
                                     and not material.unity.moves_vertices:
                                 _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
@@ -324,10 +329,11 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                 else:
                     ctx.disable(moderngl.BLEND)
                     hdr.fbo.depth_mask = True
+                draw_calls += 1
                 if obj.sphere is not None:
                     _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
                 else:
-                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources)
+                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources, batch=batch)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
             linear = hdr.read()
@@ -337,7 +343,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         cube_ibo.release()
         for resource in cube_holder + grab_holder:
             resource.release()
-    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan)
+    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls)
 
 
 # ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
@@ -471,11 +477,25 @@ def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo,
     vao.release()
 
 
-def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=None):
+_TOPOLOGY = {"triangles": moderngl.TRIANGLES, "lines": moderngl.LINES, "points": moderngl.POINTS}
+
+
+def _instanceable(material) -> bool:
+    """Whether objects of ``material`` may share an instanced draw (instanced_draws.py)."""
+    return material.unity is None and material.alpha_mode not in _BLEND
+
+
+def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=None, batch=None):
+    """``batch``: the instances drawn with ``obj`` in one instanced call (obj among them)."""
+    instances = None
+    if batch is not None and len(batch) > 1:
+        defines, *rest = shading
+        shading = ({**defines, instanced_draws.INSTANCED_DEFINE: 1}, *rest)
+        instances = instanced_draws.instance_data(batch)
     program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj, unity_pass)
-    _set(program, "u_model", tuple(obj.transform.T.reshape(-1)))
-    normal_matrix = np.linalg.inv(obj.transform[:3, :3]).T
-    _set(program, "u_normal_matrix", tuple(normal_matrix.T.reshape(-1)))
+    if instances is None:
+        _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
+        _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
     cull = unity_pass.state.cull if unity_pass is not None else None
     two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
     if cull in ("front", "back"):  # a Unity shader's Cull line
@@ -489,8 +509,9 @@ def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=
     if obj.sphere is not None:  # a sphere whose surface shader moves vertices
         vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
     else:
-        vao, buffers = meshes.vertex_array(ctx, program, obj)
-    vao.render(moderngl.TRIANGLES)
+        vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
+    topology = "triangles" if obj.geometry is None else obj.geometry.topology
+    vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
     for resource in [vao, *buffers]:
         resource.release()
 

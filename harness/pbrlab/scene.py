@@ -194,6 +194,9 @@ class SceneObject:
     transform: np.ndarray = field(default_factory=lambda: np.eye(4))
     geometry: object = None  # meshes.Geometry: vertex data held in memory (glTF primitives)
     where: str = ""  # the object's name in messages: "scene.json: objects[1]", "x.gltf: nodes[3] (...)"
+    # Objects with the same instance_group, geometry and material are instances of one mesh
+    # (glTF EXT_mesh_gpu_instancing): the renderer may draw them in one instanced call.
+    instance_group: object = None
 
 
 @dataclass

@@ -24,10 +24,15 @@ VALIDATE = ROOT / "tools" / "gltf_validator" / "validate.mjs"
 OWN = sorted(p for p in (ROOT / "scenes" / "gltf").iterdir() if p.suffix in (".gltf", ".glb"))
 CORPUS = sorted((ROOT / "corpus" / "gltf").rglob("*.gl[tb]*"))
 GENERATED_TANGENTS = "MESH_PRIMITIVE_GENERATED_TANGENT_SPACE"
+# The pinned validator (2.0.0-dev.3.10) does not know KHR_texture_basisu: it checks
+# mimeType against the core list and reads no KTX2 header (EXT_texture_webp it knows)
+KTX2_UNKNOWN = ["warning IMAGE_UNRECOGNIZED_FORMAT", "warning VALUE_NOT_IN_LIST"]
 # file -> the validator's (severity code) findings, as a sorted list with repeats
 PINNED = {
     "scenes/gltf/textured.gltf": [f"warning {GENERATED_TANGENTS}"],
     "scenes/gltf/features.gltf": ["warning KHR_MATERIALS_DISPERSION_NO_VOLUME", f"warning {GENERATED_TANGENTS}"],
+    "scenes/gltf/formats_etc1s.gltf": KTX2_UNKNOWN,
+    "scenes/gltf/formats_uastc.gltf": KTX2_UNKNOWN,
     "corpus/gltf/khronos/ClearCoatCarPaint/ClearCoatCarPaint.glb": [f"warning {GENERATED_TANGENTS}"],
     "corpus/gltf/khronos/ClearCoatTest/ClearCoatTest.glb":
         ["error MESH_PRIMITIVE_NO_TANGENT_SPACE"] + [f"warning {GENERATED_TANGENTS}"] * 6,

@@ -84,10 +84,10 @@ def test_buffer_view_past_its_buffer_is_named(tmp_path, capsys):
 
 def test_unknown_required_extension_is_refused(tmp_path, capsys):
     doc = quad_document()
-    doc["extensionsRequired"] = ["EXT_texture_webp"]
-    doc["extensionsUsed"] = ["EXT_texture_webp"]
-    _refused(tmp_path, capsys, doc, "extensionsRequired: EXT_texture_webp is required")
-    _refused(tmp_path, capsys, doc, "EXT_texture_webp", command="features")
+    doc["extensionsRequired"] = ["EXT_lights_image_based"]
+    doc["extensionsUsed"] = ["EXT_lights_image_based"]
+    _refused(tmp_path, capsys, doc, "extensionsRequired: EXT_lights_image_based is required")
+    _refused(tmp_path, capsys, doc, "EXT_lights_image_based", command="features")
 
 
 def test_dangling_references_are_named(tmp_path, capsys):
@@ -126,7 +126,7 @@ def test_unreadable_image_is_named(tmp_path, capsys):
     doc["images"] = [{"uri": "junk.png"}]
     doc["textures"] = [{"source": 0}]
     doc["materials"][0]["normalTexture"] = {"index": 0}
-    _refused(tmp_path, capsys, doc, "images[0]: is not a readable PNG or JPEG image")
+    _refused(tmp_path, capsys, doc, "images[0]: is not a readable PNG, JPEG or WebP image")
 
 
 def test_bad_light_is_named(tmp_path, capsys):

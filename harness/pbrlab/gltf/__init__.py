@@ -30,7 +30,7 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import draco, instancing, meshopt, morph
+from . import draco, instancing, ktx2, meshopt, morph, points_lines, webp
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
@@ -45,7 +45,7 @@ HONOURED_EXTENSIONS = ("KHR_lights_punctual", "KHR_texture_transform", "KHR_mate
                        "KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_transmission",
                        "KHR_materials_volume")
 # Extensions honoured through an optional decoder package: name -> its module (INSTALL, available()).
-DECODED_EXTENSIONS = {draco.EXTENSION: draco, meshopt.EXTENSION: meshopt}
+DECODED_EXTENSIONS = {module.EXTENSION: module for module in (draco, meshopt, ktx2, webp)}
 # "<what> ignored in material "<name>"<detail>" and "... in node <n>": one line per what
 # and detail in a file, naming where (a file once printed 27 lines for one extension).
 _PER_PLACE = re.compile(r'^(?P<what>\S+) ignored in (?P<kind>material|node) (?P<place>"[^"]*"|\d+)(?P<detail>.*)$')
@@ -156,9 +156,12 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             check_float32(placed, node, f"the world matrix of its instance {i} "
                                         f"({instancing.EXTENSION})")
         for placed in placements:
-            objects += _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed, node_index,
-                                          variant_index, materials, material_names, geometries, warn,
-                                          mesh_weights)
+            placed_objects = _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed,
+                                                node_index, variant_index, materials, material_names, geometries,
+                                                warn, mesh_weights)
+            for obj in placed_objects if instances is not None else []:
+                obj.instance_group = (str(doc.path), node_index)
+            objects += placed_objects
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
         if name not in honoured and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")
@@ -214,6 +217,9 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
                                               (*key, mesh_index, p, flip, weights), weights)
+        if geometries[gkey] is not None and geometries[gkey].topology != "triangles":
+            material = points_lines.shaded_material(material, primitive.object("attributes").has("NORMAL"), mkey,
+                                                    materials, material_names)
         if geometries[gkey] is not None:
             out.append(SceneObject(material=material.name, transform=world.copy(), geometry=geometries[gkey],
                                    where=f"{doc.path}: nodes[{node_index}] (mesh {mesh_index}, primitive {p})"))

@@ -1,13 +1,14 @@
 """glTF mesh primitives (spec 3.7.2) as pbrlab Geometry: attributes read and checked,
 triangle strips and fans turned into lists, flat normals where NORMAL is absent (spec
-3.7.2.1), MikkTSpace tangents where a normal map needs them and TANGENT is absent."""
+3.7.2.1), MikkTSpace tangents where a normal map needs them and TANGENT is absent; points
+and lines as GL_POINTS and GL_LINES lists (gltf/points_lines.py)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from ..meshes import Geometry
-from . import draco, morph
+from . import draco, morph, points_lines
 from .accessors import read_accessor
 from .document import Document
 from .fields import FieldReader
@@ -15,7 +16,7 @@ from .tangents import mikktspace_tangents
 
 TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN = 4, 5, 6  # spec 3.7.2.1 "mode"
 MODES = {TRIANGLES: "TRIANGLES", TRIANGLE_STRIP: "TRIANGLE_STRIP", TRIANGLE_FAN: "TRIANGLE_FAN"}
-MODE_NAMES = {0: "POINTS", 1: "LINES", 2: "LINE_LOOP", 3: "LINE_STRIP"}  # not drawn
+MODE_NAMES = points_lines.MODES
 
 
 def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
@@ -34,14 +35,11 @@ def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
 
 def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldReader, needs_tangents_from,
                    warn, flip_winding: bool, key: tuple, weights: tuple = ()) -> Geometry | None:
-    """The primitive's Geometry (None, with a warning, for point and line modes).
+    """The primitive's Geometry (its ``topology``: triangles, lines or points).
     ``needs_tangents_from``: the UV set of the material's normal map, or None.
     ``weights``: its mesh's morph target weights (gltf.morph)."""
     where = primitive.path
     mode = primitive.enum("mode", tuple(range(7)), TRIANGLES, {**MODE_NAMES, **MODES})
-    if mode in MODE_NAMES:
-        warn(f"{MODE_NAMES[mode]} primitive ignored in mesh {mesh} (pbrlab draws triangles)")
-        return None
     attributes = primitive.object("attributes")
     if not attributes.has("POSITION"):
         attributes.fail("has no POSITION")
@@ -50,7 +48,8 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     for ext, spec in primitive.extensions():
         if ext == draco.EXTENSION and draco.available():
             if mode not in (TRIANGLES, TRIANGLE_STRIP):
-                primitive.fail(f"mode {MODES[mode]}: {draco.EXTENSION} holds TRIANGLES or TRIANGLE_STRIP only")
+                primitive.fail(f"mode {({**MODE_NAMES, **MODES})[mode]}: {draco.EXTENSION} holds TRIANGLES or "
+                               "TRIANGLE_STRIP only")
             compressed = draco.decode(doc, spec, attributes)
     decoded = {} if compressed is None else compressed.attributes
     positions = read_accessor(doc, attributes.index("POSITION", "accessors"), f"{attr_where}.POSITION", "POSITION",
@@ -102,6 +101,14 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     if len(bad):
         doc.fail(f"{where}.indices", f"index {int(indices[bad[0]])} at position {int(bad[0])} is out of "
                                      f"range (the primitive has {count} vertices)")
+    uv0 = np.zeros((count, 2)) if uv0 is None else uv0
+    uv1 = uv0 if uv1 is None else uv1
+    colors = np.ones((count, 4)) if colors is None else colors
+    if colors.shape[1] == 3:
+        colors = np.concatenate([colors, np.ones((count, 1))], axis=1)
+    if mode in MODE_NAMES:
+        return _points_or_lines(key, mode, indices, positions, normals, tangents, uv0, uv1, colors,
+                                lambda message: doc.fail(where, message))
     if mode == TRIANGLES and len(indices) % 3:
         doc.fail(where, f"a triangle list needs a multiple of 3 vertices, got {len(indices)}")
     triangles = _triangle_list(indices, mode)
@@ -110,11 +117,6 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     if flip_winding:  # a mirroring node transform (determinant < 0) turns front faces round
         triangles = triangles[:, ::-1]
 
-    uv0 = np.zeros((count, 2)) if uv0 is None else uv0
-    uv1 = uv0 if uv1 is None else uv1
-    colors = np.ones((count, 4)) if colors is None else colors
-    if colors.shape[1] == 3:
-        colors = np.concatenate([colors, np.ones((count, 1))], axis=1)
     if normals is None:  # flat shading: every triangle its own three vertices
         corners = triangles.reshape(-1)
         positions, uv0, uv1, colors = positions[corners], uv0[corners], uv1[corners], colors[corners]
@@ -127,9 +129,7 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
         face = np.where(length > 0, face / np.maximum(length, 1e-300), [[0.0, 0.0, 1.0]])
         normals = np.repeat(face, 3, axis=0)
         triangles = np.arange(len(corners)).reshape(-1, 3)
-    # glTF's v runs down the image; pbrlab's textures put the image's last row at v = 0
-    uv0_gl = np.stack([uv0[:, 0], 1.0 - uv0[:, 1]], axis=1)
-    uv1_gl = np.stack([uv1[:, 0], 1.0 - uv1[:, 1]], axis=1)
+    uv0_gl, uv1_gl = _uv_gl(uv0), _uv_gl(uv1)
     if tangents is None:
         if needs_tangents_from is None:
             tangents = np.tile([1.0, 0.0, 0.0, 1.0], (len(positions), 1))
@@ -138,7 +138,27 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
             # normal map's +Y (spec 3.9.3: "+X is right and +Y is up")
             uv = uv1_gl if needs_tangents_from == 1 else uv0_gl
             tangents = mikktspace_tangents(positions, normals, uv, triangles)
+    return _geometry(key, positions, normals, uv0_gl, tangents, uv1_gl, colors, triangles.reshape(-1), "triangles")
+
+
+def _uv_gl(uv: np.ndarray) -> np.ndarray:
+    """glTF's v runs down the image; pbrlab's textures put the image's last row at v = 0."""
+    return np.stack([uv[:, 0], 1.0 - uv[:, 1]], axis=1)
+
+
+def _geometry(key, positions, normals, uv, tangents, uv1, colors, indices, topology) -> Geometry:
     f32 = lambda a: np.ascontiguousarray(a, np.float32)  # noqa: E731
-    return Geometry(key=key, positions=f32(positions), normals=f32(normals), uv=f32(uv0_gl),
-                    tangents=f32(tangents), uv1=f32(uv1_gl), colors=f32(colors),
-                    indices=np.ascontiguousarray(triangles.reshape(-1), np.int32))
+    return Geometry(key=key, positions=f32(positions), normals=f32(normals), uv=f32(uv), tangents=f32(tangents),
+                    uv1=f32(uv1), colors=f32(colors), indices=np.ascontiguousarray(indices, np.int32),
+                    topology=topology)
+
+
+def _points_or_lines(key, mode, indices, positions, normals, tangents, uv0, uv1, colors, fail) -> Geometry:
+    """A POINTS or LINES-family primitive: its index list; without NORMAL a placeholder +Z
+    (the material is then unlit: points_lines.shaded_material), without TANGENT +X (no
+    MikkTSpace without triangles)."""
+    count = len(positions)
+    normals = np.tile([0.0, 0.0, 1.0], (count, 1)) if normals is None else normals
+    tangents = np.tile([1.0, 0.0, 0.0, 1.0], (count, 1)) if tangents is None else tangents
+    return _geometry(key, positions, normals, _uv_gl(uv0), tangents, _uv_gl(uv1), colors,
+                     points_lines.index_list(indices, mode, fail), points_lines.TOPOLOGY[mode])

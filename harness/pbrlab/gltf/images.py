@@ -6,8 +6,9 @@
 * 16-bit PNGs through OpenImageIO: Pillow clips 16-bit grey to white (its convert takes the
   numbers as 8-bit) and truncates 16-bit RGB to the high byte; the 16-bit value v becomes the
   nearest 8-bit code, round(v * 255 / 65535), the precision the texture upload keeps.
-* KTX2 / Basis Universal (KHR_texture_basisu, mimeType image/ktx2) is refused by name: pbrlab
-  has no transcoder.
+* KTX2 with Basis Universal (KHR_texture_basisu, mimeType image/ktx2) through gltf.ktx2's
+  transcoder; WebP (EXT_texture_webp) through Pillow (gltf.webp). Each is recognised by its
+  bytes' signature, whatever the mimeType says (AnisotropyBarnLamp's KTX2 variant gives none).
 """
 
 from __future__ import annotations
@@ -18,52 +19,48 @@ import tempfile
 
 import numpy as np
 
+from . import ktx2, webp
+
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-KTX2_SIGNATURE = b"\xabKTX 20\xbb\r\n\x1a\n"  # KTX 2.0 specification, section 3.1
-MIME_TYPES = ("image/jpeg", "image/png")
-BASISU = "KHR_texture_basisu"
-KTX2_REFUSAL = (f"a KTX2 image ({BASISU}, Basis Universal supercompression), which pbrlab cannot "
-                "decode: pbrlab reads PNG and JPEG images (use the model's glTF or glTF-Binary "
-                "version, or convert its textures to PNG)")
-
-
-def _ktx2_refusal(spec) -> str:
-    """The refusal of a KTX2 image, naming its file (or name) where it has one."""
-    for key in ("uri", "name"):
-        value = spec.data.get(key)
-        if isinstance(value, str) and value and not value.startswith("data:"):
-            return f"{value} is {KTX2_REFUSAL}"
-    return f"is {KTX2_REFUSAL}"
+KTX2_SIGNATURE = ktx2.SIGNATURE
+# The core specification's two types and the two an image-format extension adds.
+MIME_TYPES = ("image/jpeg", "image/png", ktx2.MIME_TYPE, webp.MIME_TYPE)
 
 
 def check_mime_type(spec) -> None:
-    """images[i].mimeType: PNG or JPEG; KTX2 refused by its extension's name."""
-    if spec.has("mimeType") and spec.data["mimeType"] == "image/ktx2":
-        spec.fail(_ktx2_refusal(spec))
+    """images[i].mimeType: PNG, JPEG, KTX2 or WebP."""
     if spec.has("mimeType"):
         spec.enum("mimeType", MIME_TYPES)
 
 
+def _file_named(spec) -> str:
+    """"<uri> " for an image in a file of its own, else "" (the message names images[i])."""
+    uri = spec.data.get("uri")
+    return f"{uri} " if isinstance(uri, str) and uri and not uri.startswith("data:") else ""
+
+
 def decode_image(doc, data: bytes, spec) -> np.ndarray:
-    """PNG or JPEG bytes of image ``spec`` -> top-row-first uint8 (h, w, 3 or 4)."""
+    """PNG, JPEG, WebP or KTX2 bytes of image ``spec`` -> top-row-first uint8 (h, w, 3 or 4)."""
     from PIL import Image, UnidentifiedImageError
 
     where = spec.path
     if data.startswith(KTX2_SIGNATURE):
-        doc.fail(where, _ktx2_refusal(spec))
+        return ktx2.decode(data, lambda message: doc.fail(where, _file_named(spec) + message))
+    if webp.is_webp(data) and not webp.available():
+        doc.fail(where, f"is a WebP image ({webp.EXTENSION}), and Pillow here cannot read WebP ({webp.INSTALL})")
     if data.startswith(PNG_SIGNATURE) and len(data) > 25 and data[12:16] == b"IHDR" and data[24] == 16:
         return _decode_png16(doc, data, where)
     try:
         with Image.open(io.BytesIO(data)) as image:
-            if image.format not in ("PNG", "JPEG"):
-                doc.fail(where, f"is {image.format}; glTF images are PNG or JPEG")
+            if image.format not in ("PNG", "JPEG", "WEBP"):
+                doc.fail(where, f"is {image.format}; glTF images are PNG or JPEG (or WebP, KTX2 by extension)")
             alpha = "A" in image.getbands() or "transparency" in image.info
             image = image.convert("RGBA" if alpha else "RGB")
             return np.asarray(image, np.uint8)
     except UnidentifiedImageError:
-        doc.fail(where, f"is not a readable PNG or JPEG image (it starts with bytes {data[:8].hex(' ')})")
+        doc.fail(where, f"is not a readable PNG, JPEG or WebP image (it starts with bytes {data[:8].hex(' ')})")
     except (Image.DecompressionBombError, OSError, ValueError) as exc:
-        doc.fail(where, f"is not a readable PNG or JPEG image ({exc})")
+        doc.fail(where, f"is not a readable PNG, JPEG or WebP image ({exc})")
 
 
 def _decode_png16(doc, data: bytes, where: str) -> np.ndarray:
@@ -94,16 +91,3 @@ def _decode_png16(doc, data: bytes, where: str) -> np.ndarray:
     if codes.shape[2] in (1, 2):  # grey (and alpha) as RGB(A)
         codes = np.concatenate([codes[..., :1]] * 3 + [codes[..., 1:]], axis=2)
     return codes
-
-
-def refuse_sourceless(texture) -> None:
-    """A texture without ``source``: refused, naming KHR_texture_basisu's KTX2 image when
-    that is all the texture has."""
-    for name, spec in texture.extensions():
-        if name == BASISU:
-            image = spec.data.get("source")
-            shown = f"images[{image}]" if isinstance(image, int) and not isinstance(image, bool) else "an image"
-            texture.fail(f"has only a {BASISU} source ({shown}, KTX2 with Basis Universal "
-                         "supercompression), which pbrlab cannot decode, and no PNG or JPEG "
-                         "source; use the model's glTF or glTF-Binary version")
-    texture.fail("has no source image")

@@ -50,6 +50,7 @@ from ..scene import IRIDESCENCE_IOR_RANGE, TRANSMISSION_IOR_RANGE, Material
 from . import images
 from .document import Document
 from .fields import FieldReader, join
+from .texture_source import texture_source
 
 # glTF sampler enums (spec 3.8.4 "Samplers") -> moderngl: repeat flags and filters.
 REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT = 10497, 33071, 33648
@@ -128,11 +129,8 @@ class MaterialReader:
         """Fill ``material``'s ``slot`` from a glTF textureInfo."""
         texture_index = info.index("index", "textures", required=True)
         texture = self.doc.items("textures")[texture_index]
-        for ext, _ in texture.extensions():
-            self.warn(f"{ext} ignored in texture {texture_index} (material \"{name}\")")
-        source = texture.index("source", "images")
-        if source is None:
-            images.refuse_sourceless(texture)
+        source = texture_source(texture, texture_index,
+                                lambda message: self.warn(f"{message} (material \"{name}\")"))
         pixels = self.image(source)
         sampler_index = texture.index("sampler", "samplers")
         sampler = (FieldReader({}, "default sampler", self.doc) if sampler_index is None
