@@ -36,7 +36,7 @@ class _VersionAction(argparse.Action):
         parser.exit()
 
 COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths",
-            "schema")
+            "schema", "tables")
 
 
 # The commands that open an OpenGL context themselves, and so take --backend (the others
