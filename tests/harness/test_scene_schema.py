@@ -29,7 +29,7 @@ from scenes import light_zoo, one_sphere  # noqa: E402
 from test_scene_validation import MINIMAL, _with  # noqa: E402
 
 VALIDATOR = jsonschema.Draft202012Validator(scene_schema())
-SCENE_FILES = sorted((ROOT / "scenes").rglob("*.json"))
+SCENE_FILES = sorted([*(ROOT / "scenes").rglob("*.json"), *(ROOT / "examples").rglob("scene.json")])
 # A layered material and a glTF object (which brings the camera): the schema's combinators.
 LAYERED = {**copy.deepcopy(MINIMAL), "materials": {"white": {
     "albedo": [1, 1, 1], "clearcoat": 0.5, "sheen_color": [0.1, 0.1, 0.1], "anisotropy_strength": 0.3,
