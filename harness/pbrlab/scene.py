@@ -7,7 +7,8 @@ numbers, numpy values, nesting depth), so each field parser sees plain JSON type
 Unknown fields are errors too (a typo must not be silently ignored). Relative file
 paths (meshes, textures, environments) are resolved against the scene file's folder.
 
-Format (docs/scenes.md, "Scene files", has the annotated version)::
+Every field's type, default, bounds and meaning: scene_fields.py, from which scene_schema.py
+writes the JSON Schema (`pbrlab schema`) and the docs' tables. Format (docs/scenes.md)::
 
     camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
                 (may be left out when a gltf object brings a camera)
@@ -41,7 +42,7 @@ import numpy as np
 from . import json_input, meshes, unity
 from .errors import SceneError
 from .reference import shading as _shading
-from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA, CAMERA_SIZE_RANGE,  # noqa: F401 (re-exported)
+from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA,  # noqa: F401 (re-exported)
                            DEFAULT_SURFACE_LAYER_KEYS, ENVIRONMENT, IRIDESCENCE_IOR_RANGE, LIGHT, MATERIAL,
                            PRIMITIVES, QUALITIES, RENDER, SPHERE, TONEMAPPERS, TRANSFORM, TRANSMISSION_IOR_RANGE,
                            TRANSMISSION_KEYS, read_field)
