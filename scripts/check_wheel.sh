@@ -4,7 +4,8 @@
 #      from the sdist fails the wheel;
 #   2. install only the wheel into a fresh virtualenv outside the checkout; `pip check`;
 #   3. as that user, in an empty folder: pbrlab --version, pbrlab eval (GLSL and HLSL),
-#      pbrlab render of a scene the wheel ships, and an external pytest project using the
+#      pbrlab render of a scene the wheel ships, pbrlab demo (no goldens in the wheel: it renders,
+#      says so once and exits 0), and an external pytest project using the
 #      golden fixture (a missing golden fails, --update-goldens writes it, the rerun passes).
 # Needs the package index (or pip's cache) for the wheel's dependencies. About 1 minute
 # with a warm pip cache.
@@ -48,6 +49,11 @@ pbrlab eval --language hlsl 'pbr_D_GGX(NdotH, alpha)' --var NdotH=0:1:3 --var al
 scenes=$(python -c 'from pbrlab.locations import locate; print(locate("scenes"))')
 pbrlab render "$scenes/example.json" -o example.png --hdr example.exr --size 64x48
 test -s example.png && test -s example.exr
+
+say "pbrlab demo from the wheel (it ships no goldens: it renders and says so, exit 0)"
+pbrlab demo --out demo | tee demo.log
+test "$(grep -c "no golden to compare" demo.log)" = 1 || { say "the demo did not say once that it has no goldens"; exit 1; }
+test -s demo/index.html && test -s demo/lit_scene_high_sheet.png && test -s demo/chart_metallic_environment.exr
 
 say "an external pytest project using the golden fixture"
 mkdir project && cd project

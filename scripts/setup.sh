@@ -11,9 +11,9 @@
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see docs/getting-started.md) and
 #      pbrlab itself in editable mode. Skipped when .venv is up to date with the
 #      requirements (a stamp records their hash).
-#   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core)
-#      and tools/gltf_validator (the Khronos glTF Validator), each pinned by its
-#      package-lock.json. Skipped where node_modules matches the lock file.
+#   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core),
+#      tools/gltf_validator (the Khronos glTF Validator) and tools/threejs (three.js and
+#      playwright-core, for examples/threejs), each pinned by its package-lock.json. Skipped where node_modules matches the lock file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -59,8 +59,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # The npm tools, each from its lock file: the Khronos Sample Renderer (tools/sample_viewer)
-# and the Khronos glTF Validator (tools/gltf_validator).
-for tool in tools/sample_viewer tools/gltf_validator; do
+# the Khronos glTF Validator (tools/gltf_validator) and three.js for examples/threejs (tools/threejs).
+for tool in tools/sample_viewer tools/gltf_validator tools/threejs; do
   tool_stamp=$tool/node_modules/.pbrlab-installed
   tool_want=$(sha256sum < $tool/package-lock.json | cut -c1-16)
   if ! { [ -f "$tool_stamp" ] && [ "$(cat "$tool_stamp")" = "$tool_want" ]; }; then

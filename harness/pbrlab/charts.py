@@ -66,6 +66,19 @@ def metallic_chart() -> dict:
     return _grid_scene(rows)
 
 
+# The environment of chart_metallic_environment: a constant grey sky (linear radiance), so a
+# smooth metal reflects something (its F0 times the sky) instead of the black of an empty
+# world; constant, so the float64 CPU renderer checks the golden (cpu_render.py).
+GREY_SKY = [0.35, 0.35, 0.35]
+
+
+def metallic_environment_chart() -> dict:
+    """chart_metallic under the grey sky: the same spheres and lights, image-based light added."""
+    scene = metallic_chart()
+    scene["environment"] = {"color": GREY_SKY}
+    return scene
+
+
 def specular_chart() -> dict:
     """Specular workflow: specular colour (rows) x smoothness (columns), grey albedo."""
     speculars = {"f0_0.02": [0.02] * 3, "f0_0.04": [0.04] * 3, "f0_0.17": [0.17] * 3,
@@ -110,6 +123,7 @@ def terms_chart() -> dict:
 
 CHARTS = {
     "chart_metallic": metallic_chart,
+    "chart_metallic_environment": metallic_environment_chart,
     "chart_specular": specular_chart,
     "chart_f0": f0_chart,
     "chart_terms": terms_chart,

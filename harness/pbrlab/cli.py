@@ -35,7 +35,8 @@ class _VersionAction(argparse.Action):
             print(f"  {line}")
         parser.exit()
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths")
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths",
+            "schema", "tables")
 
 
 # The commands that open an OpenGL context themselves, and so take --backend (the others

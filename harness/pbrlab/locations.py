@@ -50,6 +50,13 @@ def locate(tree: str) -> Path:
                       f"or reinstall pbrlab from a wheel or sdist")
 
 
+def checkout_folder(name: str) -> Path | None:
+    """A folder of the checkout this module sits in (``<repo>/<name>``, e.g. ``goldens``), or
+    None in an installed wheel, which ships no such folder."""
+    folder = Path(__file__).resolve().parents[2] / name
+    return folder if folder.is_dir() and (folder.parent / "harness" / "pbrlab").is_dir() else None
+
+
 def origin(tree: str) -> str:
     """How ``locate(tree)`` found it: 'environment', 'package data' or 'checkout'."""
     if os.environ.get(TREES[tree]):

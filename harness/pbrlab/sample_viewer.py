@@ -40,7 +40,6 @@ from .errors import PbrlabError
 SAMPLE_VIEWER_DIR = Path(os.environ.get("PBRLAB_SAMPLE_VIEWER_DIR")
                          or Path(__file__).resolve().parents[2] / "tools" / "sample_viewer")
 CHROMIUM = Path(os.environ.get("PBRLAB_CHROMIUM", "/usr/bin/chromium"))
-SETUP_COMMAND = "bash scripts/setup.sh"
 RENDER_TIMEOUT_S = 120  # one render takes a few seconds (browser start included)
 # Depth range the viewer is given around the camera distance: a 24-bit depth buffer keeps
 # ~1e-4 of the distance at these ratios, far below a pixel's footprint.
@@ -68,8 +67,10 @@ def check_setup() -> None:
     missing = missing_setup()
     if missing:
         raise PbrlabError("the glTF Sample Viewer cannot run: " + "; ".join(missing)
-                          + f". Run `{SETUP_COMMAND}` (as root it installs chromium with apt-get "
-                          f"and runs `npm ci` in {SAMPLE_VIEWER_DIR}), then try again.")
+                          + f". In a pbrlab checkout, run `bash scripts/setup.sh` (as root it installs chromium "
+                          f"with apt-get and runs `npm ci` in {SAMPLE_VIEWER_DIR}); elsewhere install "
+                          "chromium and nodejs, run `npm ci` in a copy of the checkout's tools/sample_viewer "
+                          "and point PBRLAB_SAMPLE_VIEWER_DIR at it. Then try again.")
 
 
 def camera_spec(camera, size) -> dict:

@@ -7,7 +7,8 @@ numbers, numpy values, nesting depth), so each field parser sees plain JSON type
 Unknown fields are errors too (a typo must not be silently ignored). Relative file
 paths (meshes, textures, environments) are resolved against the scene file's folder.
 
-Format (docs/scenes.md, "Scene files", has the annotated version)::
+Every field's type, default, bounds and meaning: scene_fields.py, from which scene_schema.py
+writes the JSON Schema (`pbrlab schema`) and the docs' tables. Format (docs/scenes.md)::
 
     camera      {position, target, up=[0,1,0], fov_y_deg=45, size=[512, 512]}
                 (may be left out when a gltf object brings a camera)
@@ -41,20 +42,19 @@ import numpy as np
 from . import json_input, meshes, unity
 from .errors import SceneError
 from .reference import shading as _shading
+from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA,  # noqa: F401 (re-exported)
+                           DEFAULT_SURFACE_LAYER_KEYS, ENVIRONMENT, IRIDESCENCE_IOR_RANGE, LIGHT, MATERIAL,
+                           PRIMITIVES, QUALITIES, RENDER, SPHERE, TONEMAPPERS, TRANSFORM, TRANSMISSION_IOR_RANGE,
+                           TRANSMISSION_KEYS, read_field)
+from .scene_fields import HDR_TARGETS as _HDR_TARGET_NAMES
 
 # Per-material BRDF variants: scene key -> the library's selector values (lower case in
 # scenes; the same names as pbrlab.reference.shading and the PBR_SPECULAR_* defines).
 BRDF_TERMS = {"specular_d": _shading.SPECULAR_D, "specular_v": _shading.SPECULAR_V,
               "specular_f": _shading.SPECULAR_F, "diffuse": _shading.DIFFUSE}
 
-TONEMAPPERS = ("none", "reinhard", "aces_fitted", "aces_narkowicz", "hable", "khronos_neutral")  # pbr/tonemap/tonemap.glsl
-QUALITIES = ("high", "medium", "low")  # PBR_QUALITY_* (pbr/shading/dispatch.glsl)
-# render.brdf_model -> PBR_BRDF_MODEL_* (pbr/shading/dispatch.glsl): pbrlab's physical shading,
-# or Unity's built-in BRDF1/2/3 by tier (pbr/unity/brdf_unity.glsl)
-BRDF_MODELS = ("pbrlab", "unity")
-ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
-HDR_TARGETS = {"rgba32f": "f32", "rgba16f": "f16"}  # render.hdr_target -> targets.Target kind
-PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
+# The fields' types, defaults and bounds: scene_fields.py (the JSON Schema's source too).
+HDR_TARGETS = dict(zip(_HDR_TARGET_NAMES, ("f32", "f16")))  # render.hdr_target -> targets.Target kind
 TEXTURE_SLOTS = {  # default surface's slot -> colour (sRGB-decoded on sampling) or linear data
     "albedo": "srgb",
     "metallic_smoothness": "linear",  # Unity's packing: R = metallic, A = smoothness
@@ -83,17 +83,10 @@ ANISOTROPY_SLOTS = ("anisotropy",)
 # iridescence_thickness (G: between the minimum and maximum thickness).
 TEXTURE_SLOTS.update({"iridescence": "linear", "iridescence_thickness": "linear"})
 IRIDESCENCE_SLOTS = ("iridescence", "iridescence_thickness")
-# The film's IOR: KHR_materials_iridescence's minimum 1; at most pbr_F_Iridescence's domain.
-IRIDESCENCE_IOR_RANGE = (1.0, 16.0)
 # Transmission's maps (KHR_materials_transmission / KHR_materials_volume, linear):
 # transmission (R x the factor), thickness (G x the thickness).
 TEXTURE_SLOTS.update({"transmission": "linear", "thickness": "linear"})
 TRANSMISSION_SLOTS = ("transmission", "thickness")
-# The volume's index of refraction (KHR_materials_ior's ior as the transmission reads it):
-# at least 1 (pbrlab's volumes are denser than the air around them), at most the Walter
-# BTDF's domain (pbr/brdf/btdf_walter.glsl: eta in [1/16, 16]).
-TRANSMISSION_IOR_RANGE = (1.0, 16.0)
-TRANSMISSION_KEYS = ("transmission", "thickness", "attenuation_color", "attenuation_distance", "ior")
 
 
 @dataclass
@@ -320,36 +313,35 @@ class _Reader:
 
 
 def _camera(r: _Reader) -> Camera:
-    position = r.vector("position")
-    target = r.vector("target")
+    position = read_field(r, CAMERA, "position")
+    target = read_field(r, CAMERA, "target")
     if np.allclose(position, target):
         r.fail("position and target coincide")
-    up = r.vector("up", default=[0, 1, 0], nonzero=True)
+    up = read_field(r, CAMERA, "up")
     forward = target - position
     if np.linalg.norm(np.cross(forward, up)) < 1e-9 * np.linalg.norm(forward) * np.linalg.norm(up):
         r.fail("up is parallel to the view direction", "up")
-    fov = r.number("fov_y_deg", default=45.0, lo=0.0, hi=179.0, lo_open=True)
-    size = r.raw("size", [512, 512])
-    if (not isinstance(size, list) or len(size) != 2
-            or not all(isinstance(s, int) and not isinstance(s, bool) and 1 <= s <= 16384 for s in size)):
-        r.fail(f"expected [width, height], integers in 1..16384, got {json.dumps(size)}", "size")
+    fov = read_field(r, CAMERA, "fov_y_deg")
+    size_field = CAMERA["size"]
+    size = r.raw("size", size_field.default)
+    if (not isinstance(size, list) or len(size) != size_field.n
+            or not all(isinstance(s, int) and not isinstance(s, bool) and size_field.lo <= s <= size_field.hi
+                       for s in size)):
+        r.fail(f"expected [width, height], integers in {size_field.lo}..{size_field.hi}, got {json.dumps(size)}",
+               "size")
     r.finish()
     return Camera(position, target, up, fov, (size[0], size[1]))
 
 
 def _light(r: _Reader) -> Light:
-    kind = r.choice("type", ("directional", "point", "spot"))
-    light = Light(type=kind, color=r.vector("color", default=[1, 1, 1], lo=0.0),
-                  intensity=r.number("intensity", default=1.0, lo=0.0))
-    if kind in ("directional", "spot"):
-        light.direction = r.vector("direction", nonzero=True)
+    kind = read_field(r, LIGHT, "type")
+    light = Light(type=kind, color=read_field(r, LIGHT, "color"), intensity=read_field(r, LIGHT, "intensity"))
+    for key in ("direction", "position", "range", "inner_cone_deg", "outer_cone_deg"):
+        if kind in LIGHT[key].only:  # a field of another type is left unread: finish() names it
+            setattr(light, key, read_field(r, LIGHT, key))
+    if light.direction is not None:
         light.direction = unit_direction(light.direction)
-    if kind in ("point", "spot"):
-        light.position = r.vector("position")
-        light.range = r.number("range", default=math.inf, lo=0.0, lo_open=True)
     if kind == "spot":
-        light.inner_cone_deg = r.number("inner_cone_deg", default=0.0, lo=0.0, hi=90.0)
-        light.outer_cone_deg = r.number("outer_cone_deg", default=45.0, lo=0.0, hi=90.0, lo_open=True)
         if light.inner_cone_deg >= light.outer_cone_deg:
             r.fail("inner_cone_deg must be smaller than outer_cone_deg", "inner_cone_deg")
     r.finish()
@@ -357,11 +349,11 @@ def _light(r: _Reader) -> Light:
 
 
 def _environment(r: _Reader, base: Path) -> Environment:
-    env = Environment(intensity=r.number("intensity", default=1.0, lo=0.0))
+    env = Environment(intensity=read_field(r, ENVIRONMENT, "intensity"))
     if r.has("color") == r.has("path"):
         r.fail("give exactly one of color (constant radiance) or path (equirectangular image)")
     if r.has("color"):
-        env.color = r.vector("color", lo=0.0)
+        env.color = read_field(r, ENVIRONMENT, "color")
     else:
         env.path = r.file("path", base)
     r.finish()
@@ -378,42 +370,20 @@ def unit_direction(v) -> np.ndarray:
 
 def _material(r: _Reader, name: str, base: Path) -> Material:
     m = Material(name=name)
-    m.workflow = r.choice("workflow", ("metallic", "specular"), default="metallic")
-    m.albedo = r.vector("albedo", default=[0.8, 0.8, 0.8], lo=0.0, hi=1.0)
-    if m.workflow == "metallic":
-        m.metallic = r.number("metallic", default=0.0, lo=0.0, hi=1.0)
-        if r.has("specular"):
-            r.fail("specular belongs to the specular workflow; use metallic here", "specular")
-    else:
-        m.specular = r.vector("specular", default=[0.04, 0.04, 0.04], lo=0.0, hi=1.0)
-        if r.has("metallic"):
-            r.fail("metallic belongs to the metallic workflow; use specular here", "metallic")
-    m.smoothness = r.number("smoothness", default=0.5, lo=0.0, hi=1.0)
-    m.emission = r.vector("emission", default=[0, 0, 0], lo=0.0)
-    m.occlusion = r.number("occlusion", default=1.0, lo=0.0, hi=1.0)
-    m.alpha = r.number("alpha", default=1.0, lo=0.0, hi=1.0)
-    m.alpha_mode = r.choice("alpha_mode", ALPHA_MODES, default="opaque")
-    m.alpha_cutoff = r.number("alpha_cutoff", default=0.5, lo=0.0, hi=1.0)
-    m.unlit = r.raw("unlit", False)
+    m.workflow = read_field(r, MATERIAL, "workflow")
+    m.albedo = read_field(r, MATERIAL, "albedo")
+    setattr(m, m.workflow, read_field(r, MATERIAL, m.workflow))  # metallic or specular: F0's field
+    other = "specular" if m.workflow == "metallic" else "metallic"
+    if r.has(other):
+        r.fail(f"{other} belongs to the {other} workflow; use {m.workflow} here", other)
+    for key in ("smoothness", "emission", "occlusion", "alpha", "alpha_mode", "alpha_cutoff"):
+        setattr(m, key, read_field(r, MATERIAL, key))
+    m.unlit = r.raw("unlit", MATERIAL["unlit"].default)
     if not isinstance(m.unlit, bool):
         r.fail("expected true (KHR_materials_unlit: the albedo, no light) or false", "unlit")
-    m.clearcoat = r.number("clearcoat", default=0.0, lo=0.0, hi=1.0)
-    m.clearcoat_smoothness = r.number("clearcoat_smoothness", default=1.0, lo=0.0, hi=1.0)
-    m.sheen_color = tuple(r.vector("sheen_color", default=[0.0, 0.0, 0.0], lo=0.0, hi=1.0))
-    m.sheen_smoothness = r.number("sheen_smoothness", default=1.0, lo=0.0, hi=1.0)
-    m.anisotropy_strength = r.number("anisotropy_strength", default=0.0, lo=0.0, hi=1.0)
-    m.anisotropy_rotation = r.number("anisotropy_rotation", default=0.0)  # radians (finite: json_input)
-    m.iridescence = r.number("iridescence", default=0.0, lo=0.0, hi=1.0)
-    m.iridescence_ior = r.number("iridescence_ior", default=1.3, lo=IRIDESCENCE_IOR_RANGE[0],
-                                 hi=IRIDESCENCE_IOR_RANGE[1])
-    m.iridescence_thickness_min = r.number("iridescence_thickness_min", default=100.0, lo=0.0)  # nm
-    m.iridescence_thickness_max = r.number("iridescence_thickness_max", default=400.0, lo=0.0)  # nm
-    m.transmission = r.number("transmission", default=0.0, lo=0.0, hi=1.0)
-    m.thickness = r.number("thickness", default=0.0, lo=0.0)  # scene units; 0: thin-walled
-    m.attenuation_color = tuple(r.vector("attenuation_color", default=[1.0, 1.0, 1.0], lo=0.0, hi=1.0))
-    if r.has("attenuation_distance"):  # absent: +infinity (KHR_materials_volume's default)
-        m.attenuation_distance = r.number("attenuation_distance", lo=0.0, lo_open=True)
-    m.ior = r.number("ior", default=1.5, lo=TRANSMISSION_IOR_RANGE[0], hi=TRANSMISSION_IOR_RANGE[1])
+    for key in DEFAULT_SURFACE_LAYER_KEYS:  # numbers; colours as tuples
+        value = read_field(r, MATERIAL, key)
+        setattr(m, key, tuple(value) if isinstance(value, np.ndarray) else value)
     if r.has("surface"):
         m.surface = r.file("surface", base)
     if m.surface is not None and unity.is_unity_surface(m.surface):
@@ -542,9 +512,9 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
 
 
 def _transform(r: _Reader) -> np.ndarray:
-    translate = r.vector("translate", default=[0, 0, 0])
-    rx, ry, rz = np.radians(r.vector("rotate_deg", default=[0, 0, 0]))
-    scale = r.raw("scale", 1.0)
+    translate = read_field(r, TRANSFORM, "translate")
+    rx, ry, rz = np.radians(read_field(r, TRANSFORM, "rotate_deg"))
+    scale = r.raw("scale", TRANSFORM["scale"].default)
     if isinstance(scale, (int, float)) and not isinstance(scale, bool):
         scale = [scale] * 3
     r.data["scale"] = scale
@@ -572,7 +542,7 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
         r.fail("give exactly one of sphere or mesh")
     if r.has("sphere"):
         s = r.child("sphere")
-        obj.sphere = (s.vector("center"), s.number("radius", lo=0.0, lo_open=True))
+        obj.sphere = (read_field(s, SPHERE, "center"), read_field(s, SPHERE, "radius"))
         s.finish()
         if r.has("transform"):
             r.fail("spheres are placed by center and radius, not transform", "transform")
@@ -688,12 +658,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
         top.fail("is required (or a gltf object with a camera)", "camera")
     _warn_unhonoured_cull(objects, materials, origin)
     rs = top.child("render", {})
-    render = RenderSettings(quality=rs.choice("quality", QUALITIES, default="high"),
-                            tonemap=rs.choice("tonemap", TONEMAPPERS, default="none"),
-                            exposure=rs.number("exposure", default=0.0, lo=-64.0, hi=64.0),
-                            energy_compensation=rs.choice("energy_compensation", (True, False), default=True),
-                            hdr_target=rs.choice("hdr_target", HDR_TARGETS, default="rgba32f"),
-                            brdf_model=rs.choice("brdf_model", BRDF_MODELS, default="pbrlab"))
+    render = RenderSettings(**{key: read_field(rs, RENDER, key) for key in RENDER})
     rs.finish()
     if render.brdf_model == "unity":
         anisotropic = sorted(name for name, m in materials.items() if m.anisotropy_strength > 0.0)

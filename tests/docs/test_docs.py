@@ -80,7 +80,18 @@ def test_site_builds_with_strict(tmp_path):
     # the example scene.
     assert "Functions, sources and measured worst-case error" in (site / "library" / "index.html").read_text(encoding="utf-8")
     assert "my_rim" in (site / "getting-started" / "index.html").read_text(encoding="utf-8")
-    assert "red_plastic" in (site / "scenes" / "index.html").read_text(encoding="utf-8")
+    scenes_page = (site / "scenes" / "index.html").read_text(encoding="utf-8")
+    assert "red_plastic" in scenes_page
+    # The scene-file reference's tables, rendered from the JSON Schema: every field of every
+    # object, and the parser's own checks.
+    from pbrlab.scene_schema import PARSER_ONLY_RULES, scene_schema
+    schema = scene_schema()
+    fields = [key for node in schema["$defs"].values() for key in node.get("properties", {})]
+    missing = [key for key in fields if f"<code>{key}</code></td>" not in scenes_page]
+    assert not missing, missing
+    assert "&lt;!-- scene-schema --&gt;" not in scenes_page and "<!-- scene-schema -->" not in scenes_page
+    assert "What the parser checks beyond the schema" in scenes_page
+    assert "not parallel to the view direction" in PARSER_ONLY_RULES[2] and PARSER_ONLY_RULES[2].split("`")[-1] in scenes_page
     # The generated page: every GLSL file of the library, with its Provides line.
     files_page = (site / "library-files" / "index.html").read_text(encoding="utf-8")
     glsl = ROOT / "glsl"

@@ -95,6 +95,20 @@ def test_demo_writes_every_chart_and_matches_goldens(tmp_path, capsys):
             assert html.escape(text) in index, text
 
 
+def test_demo_without_goldens_renders_and_says_so_once(tmp_path, capsys, monkeypatch):
+    """An installed wheel ships no goldens (locations.checkout_folder finds none): the demo
+    renders everything, says once that there is nothing to compare, and exits 0."""
+    from pbrlab import locations
+    monkeypatch.setattr(locations, "checkout_folder", lambda name: None)
+    assert cli.main(["demo", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert out.count("no golden to compare") == 1 and "DIFFERS" not in out and "matches" not in out
+    for name in [*CHARTS, "lit_scene_high"]:
+        assert (tmp_path / f"{name}_sheet.png").is_file() and (tmp_path / f"{name}.exr").is_file()
+    index = (tmp_path / "index.html").read_text(encoding="utf-8")
+    assert index.count('class="none">golden: rendered, no golden to compare') == len(CHARTS) + 1
+
+
 def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     goldens = tmp_path / "goldens"
     goldens.mkdir()
@@ -121,7 +135,7 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     assert "tolerance profile llvmpipe" in out
     index = (tmp_path / "out" / "index.html").read_text(encoding="utf-8")
     assert 'class="bad">golden: DIFFERS from goldens/chart_f0' in index
-    assert index.count('class="ok">golden: matches') == len(CHARTS)  # the three other charts and the lit scene
+    assert index.count('class="ok">golden: matches') == len(CHARTS)  # the other charts and the lit scene
     assert not any(line.rstrip().endswith(":") for line in out.splitlines())
 
 

@@ -84,7 +84,8 @@ def machine_line(doc: dict) -> str:
     isa = doc["gpu_isa"]
     if not isa["available"]:
         return (f"**AMD GPU ISA: NOT MEASURED.** {isa['reason']} The GPU columns are empty "
-                "(scripts/setup.sh installs libvulkan1 and mesa-vulkan-drivers).")
+                "(install libvulkan1 and mesa-vulkan-drivers: sudo apt-get install libvulkan1 "
+                "mesa-vulkan-drivers; in a pbrlab checkout, scripts/setup.sh does).")
     devices = ", ".join(f"{TITLES[f]}: `{isa['devices'][f]}` (RADV_FORCE_FAMILY={isa['families'][f]})"
                         for f in GPU_FAMILIES)
     return f"**AMD GPU ISA**: Mesa RADV/ACO null devices, {devices}."

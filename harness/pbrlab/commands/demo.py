@@ -4,7 +4,10 @@ the images are. ``--language hlsl`` shades with the HLSL twins against the same 
 
 Per image it writes NAME.png (sRGB) and NAME.exr (linear radiance), the raw renders, and
 NAME_sheet.png, a contact sheet with the chart's title, row and column values, term names
-and golden verdict; OUT/index.html shows every sheet with its caption and golden status."""
+and golden verdict; OUT/index.html shows every sheet with its caption and golden status.
+
+The goldens are the checkout's goldens/ folder (or --goldens DIR). An installed wheel ships
+none: the demo then renders, says once that there is no golden to compare, and exits 0."""
 
 from __future__ import annotations
 
@@ -16,10 +19,11 @@ from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import console, contact_sheets, gl, goldens, images, outputs
+    from .. import console, contact_sheets, gl, images, outputs
     from ..errors import PbrlabError
     from ..charts import CHARTS
     from ..golden_scenes import GOLDEN_SCENES
+    from ..locations import checkout_folder
     from ..render import render_scene
     from .render import check_finite
 
@@ -34,6 +38,10 @@ def run(args) -> int:
     info = gl.context_info(ctx)
     console.note(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
           f"shading in {args.language.upper()}")
+    golden_root = Path(args.goldens) if args.goldens is not None else checkout_folder("goldens")
+    if golden_root is None:
+        print(f"{NO_GOLDEN}: the goldens are in pbrlab's source checkout, not in the installed "
+              "package (pass --goldens DIR to compare with a folder of them)")
     failures = 0
     entries = []
     names = [*CHARTS, "lit_scene_high"]
@@ -44,18 +52,12 @@ def run(args) -> int:
         with outputs.transaction([png, exr]) as tx:  # the pair, or neither
             images.write_png(png, rendering.srgb8, tx=tx)
             images.write_exr(exr, rendering.linear, metadata=rendering.info, tx=tx)
-        try:
-            result = goldens.check_golden(name, rendering.linear, rendering.srgb8, info=info,
-                                          update=False, root=args.goldens,
-                                          output_dir=out / "golden-diffs",
-                                          profile=args.tolerance_profile)
-            status = f"matches goldens/{name} (max abs {result.max_abs:.2g})"
-            print(f"  {png}  {exr}  {status}")
-        except goldens.GoldenFailure as failure:
-            failures += 1
-            status = f"DIFFERS from goldens/{name}: " + " ".join(failure.figures.split())
-            print(f"  {png}  {exr}  DIFFERS from goldens/{name}")
-            print("\n".join("      " + line for line in failure.figures.splitlines()))
+        if golden_root is None:
+            status = NO_GOLDEN
+            print(f"  {png}  {exr}")
+        else:
+            status, failed = _check(name, rendering, info, golden_root, out, args.tolerance_profile)
+            failures += failed
         sheet = out / f"{name}_sheet.png"
         contact_sheets.write_sheet(sheet, name, rendering.srgb8, status)
         entries.append({"name": name, "status": status, "sheet": sheet.name, "png": png.name, "exr": exr.name})
@@ -66,12 +68,34 @@ def run(args) -> int:
     return 1 if failures else 0
 
 
+NO_GOLDEN = "rendered, no golden to compare"
+
+
+def _check(name, rendering, info, golden_root: Path, out: Path, profile: str) -> tuple[str, int]:
+    """The golden verdict of one image, printed: (its status line, 1 if it differs else 0)."""
+    from .. import goldens
+
+    png, exr = out / f"{name}.png", out / f"{name}.exr"
+    try:
+        result = goldens.check_golden(name, rendering.linear, rendering.srgb8, info=info,
+                                      update=False, root=golden_root,
+                                      output_dir=out / "golden-diffs", profile=profile)
+    except goldens.GoldenFailure as failure:
+        print(f"  {png}  {exr}  DIFFERS from goldens/{name}")
+        print("\n".join("      " + line for line in failure.figures.splitlines()))
+        return f"DIFFERS from goldens/{name}: " + " ".join(failure.figures.split()), 1
+    status = f"matches goldens/{name} (max abs {result.max_abs:.2g})"
+    print(f"  {png}  {exr}  {status}")
+    return status, 0
+
+
 def register(sub, common):
     p = sub.add_parser("demo", parents=[common], help="Render the material charts and the lit example, and check them against the goldens.",
                        description=__doc__,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="out", help="output folder (default: out)")
-    p.add_argument("--goldens", default="goldens", help="golden folder (default: goldens)")
+    p.add_argument("--goldens", default=None,
+                   help="golden folder (default: the checkout's goldens/; an installed wheel has none)")
     p.add_argument("--tolerance-profile", default="auto", choices=("auto", "llvmpipe", "gpu"),
                    help="tolerances to check the goldens with: auto picks llvmpipe or gpu "
                         "from the GL renderer (default: auto)")

@@ -1,0 +1,56 @@
+// An analytic sphere shaded with pbrlab's LightingStandard (the amalgamated library, which
+// main.mjs places above this file, after the DFG hook). Linear radiance out, as pbrlab
+// render's EXR: the environment once (constant radiance u_environment: SH irradiance / pi and
+// prefiltered radiance are both that constant), then each directional light, as pbrlab's
+// scene programs do (harness/pbrlab/templates/scene_lighting.inc, pbrlab_shade_surface).
+#define MAX_LIGHTS 4
+uniform vec4 u_sphere;                          // xyz centre, w radius
+uniform vec3 u_albedo;
+uniform float u_metallic;
+uniform float u_smoothness;
+uniform vec3 u_environment;                     // constant radiance (colour x intensity)
+uniform int u_light_count;
+uniform vec3 u_light_direction[MAX_LIGHTS];     // the way light travels, unit
+uniform vec3 u_light_radiance[MAX_LIGHTS];      // colour x intensity
+in vec3 v_world;
+layout(location = 0) out vec4 radiance;
+
+void main() {
+    // The ray through this pixel and its nearest hit, in pbrlab's cancellation-free form
+    // (Haines et al. 2019, Ray Tracing Gems ch. 7, eq. 5; harness/pbrlab/templates/scene_geometry.inc).
+    vec3 D = v_world - cameraPosition;
+    float DD = dot(D, D);
+    vec3 d = D * inversesqrt(DD);
+    vec3 oc = cameraPosition - u_sphere.xyz;
+    vec3 w = cross(oc, D);
+    float disc = u_sphere.w * u_sphere.w - dot(w, w) / DD;
+    if (disc < 0.0) discard;
+    float h = sqrt(disc);
+    vec3 n = normalize(cross(D, w) / DD - h * d);
+
+    SurfaceOutputStandard o;
+    o.Albedo = u_albedo;
+    o.Normal = n;
+    o.Emission = vec3(0.0);
+    o.Metallic = u_metallic;
+    o.Smoothness = u_smoothness;
+    o.Occlusion = 1.0;
+    o.Alpha = 1.0;
+    vec3 v = -d;
+
+    UnityGI gi;
+    gi.indirect.diffuse = u_environment;
+    gi.indirect.specular = u_environment;
+    gi.light.color = vec3(0.0);
+    gi.light.dir = n;
+    vec4 c = LightingStandard(o, v, gi);
+    gi.indirect.diffuse = vec3(0.0);
+    gi.indirect.specular = vec3(0.0);
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_light_count) break;
+        gi.light.dir = -u_light_direction[i];
+        gi.light.color = u_light_radiance[i];
+        c.rgb += LightingStandard(o, v, gi).rgb;
+    }
+    radiance = vec4(c.rgb, 1.0);
+}
