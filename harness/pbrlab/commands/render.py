@@ -86,7 +86,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     from pathlib import Path
 
     from ..gltf import is_gltf, load_gltf
-    from ..gltf.settings import read_settings
+    from ..gltf.settings import light_units_default, read_settings
 
     if not is_gltf(path):
         if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)):
@@ -101,6 +101,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
                        variant=variant, scene=scene, weights=weights, time=time, animation=animation)
     for message in result.warnings:
         print(f"warning: {message}", file=sys.stderr)
+    chosen = light_units_default(Path(path), result.scene)
+    if chosen:
+        console.detail(chosen)
     return result.scene
 
 
@@ -124,6 +127,8 @@ def run(args) -> int:
                              + input_files(scene, args.language)) as tx:
         rendering = render_scene(scene, context, size=size,
                                  specialise=not args.no_specialise, language=args.language)
+        if scene.render.exposure_metered:
+            console.note(f"exposure {rendering.exposure_ev:+.2f} EV (metered), tonemap {scene.render.tonemap}")
         kind = "specialised" if rendering.programs.specialised else "full"
         console.note(f"{rendering.programs.distinct} {kind} program(s)")
         check_finite(rendering.linear, args.scene)
