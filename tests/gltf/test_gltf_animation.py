@@ -209,6 +209,17 @@ def test_normals_go_by_the_inverse_transpose_of_the_skin_matrix():
     assert abs(n[0] @ t[0, :3]) < 1e-15
 
 
+def test_riggedsimple_bends_at_one_second():
+    """Khronos' RiggedSimple (corpus/gltf/khronos; its rest pose agrees with the Sample
+    Renderer, test_khronos_models.py): its one animation turns the upper bone by 1 s."""
+    from pbrlab.gltf import load_gltf as load
+    model = GLTF_DIR.parents[1] / "corpus" / "gltf" / "khronos" / "RiggedSimple" / "RiggedSimple.glb"
+    rest = load(model, emit_warnings=False).scene.objects[0].geometry.positions
+    bent = load(model, time=1.0, emit_warnings=False).scene.objects[0].geometry.positions
+    assert np.isfinite(bent).all() and np.abs(bent - rest).max() > 1.0
+    np.testing.assert_array_equal(rest[:, 1].min(), bent[:, 1].min())  # the lower bone stays
+
+
 def test_a_posed_render_differs_from_the_rest_pose(tmp_path, capsys):
     rest, bent = tmp_path / "rest.exr", tmp_path / "bent.exr"
     assert cli.main(["render", str(STRIP), "--hdr", str(rest), "--size", "48x32"]) == 0
