@@ -26,6 +26,7 @@ from .unity import program_pass as unity_program_pass
 from .unity import tessellate as unity_tessellate
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from .errors import PbrlabError, SceneError
+from .exposure import metered_exposure
 from .file_identity import include_closure
 from .hlsl import HLSL_ROOT
 from .programs import LANGUAGES, fragment_template, program_from_templates, surface_file
@@ -48,6 +49,7 @@ class Rendering:
     info: dict
     programs: "features.ProgramPlan" = None  # what was compiled
     draw_calls: int = 0  # the objects' draw calls (an instanced draw counts once)
+    exposure_ev: float = 0.0  # the exposure the display image was made with (metered or not)
 
 
 class _SceneResources:
@@ -337,13 +339,17 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
             linear = hdr.read()
+            if scene.render.exposure_metered:  # darkened just enough not to clip (pbrlab.exposure)
+                metered = scene.render.exposure + metered_exposure(linear)
+                scene = dataclasses.replace(scene, render=dataclasses.replace(scene.render, exposure=metered))
             srgb8 = _resolve(ctx, hdr, scene, transfer, language)
     finally:
         cube_vbo.release()
         cube_ibo.release()
         for resource in cube_holder + grab_holder:
             resource.release()
-    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls)
+    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
+                     exposure_ev=scene.render.exposure)
 
 
 # ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.

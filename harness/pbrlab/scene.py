@@ -200,6 +200,9 @@ class RenderSettings:
     energy_compensation: bool = True  # PBR_ENERGY_COMPENSATION
     hdr_target: str = "rgba32f"  # the float target: rgba32f, or rgba16f (values clamped to 65504)
     brdf_model: str = "pbrlab"  # PBR_BRDF_MODEL: "pbrlab" or "unity" (Unity's BRDF1/2/3 by tier)
+    # exposure metered from the rendered image, added to ``exposure`` (pbrlab.exposure):
+    # what `pbrlab render` chooses for a glTF file in physical light units left unset
+    exposure_metered: bool = False
 
 
 @dataclass

@@ -36,6 +36,8 @@ PINNED = {
     "corpus/gltf/khronos/ClearCoatCarPaint/ClearCoatCarPaint.glb": [f"warning {GENERATED_TANGENTS}"],
     "corpus/gltf/khronos/ClearCoatTest/ClearCoatTest.glb":
         ["error MESH_PRIMITIVE_NO_TANGENT_SPACE"] + [f"warning {GENERATED_TANGENTS}"] * 6,
+    # its skinned mesh's node has parents, whose transforms a skin ignores (as pbrlab does)
+    "corpus/gltf/khronos/RiggedSimple/RiggedSimple.glb": ["warning NODE_SKINNED_MESH_NON_ROOT"],
 }
 
 

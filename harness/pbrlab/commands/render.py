@@ -66,27 +66,44 @@ def parse_weights(text: str | None) -> tuple | None:
     return weights
 
 
-def load_any_scene(path, camera=None, environment=None, size=None, variant=None, scene=None, weights=None):
+def parse_time(text: str | None) -> float | None:
+    """``--time 1.25``: an animation time in seconds, a finite number."""
+    if text is None:
+        return None
+    try:
+        time = float(text)
+    except ValueError:
+        time = float("nan")
+    if not np.isfinite(time):
+        raise PbrlabError(f"--time {text}: expected a finite number of seconds, e.g. 1.25")
+    return time
+
+
+def load_any_scene(path, camera=None, environment=None, size=None, variant=None, scene=None, weights=None,
+                   time=None, animation=None):
     """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
     import sys
     from pathlib import Path
 
     from ..gltf import is_gltf, load_gltf
-    from ..gltf.settings import read_settings
+    from ..gltf.settings import light_units_default, read_settings
 
     if not is_gltf(path):
-        if any(option is not None for option in (camera, environment, variant, scene, weights)):
-            raise PbrlabError("--camera, --environment, --variant, --scene and --weights are for glTF files; "
-                              "a JSON scene names its own")
+        if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)):
+            raise PbrlabError("--camera, --environment, --variant, --scene, --weights, --time and --animation "
+                              "are for glTF files; a JSON scene names its own")
         scene, messages = load_scene_with_gltf_warnings(path)
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
-                       variant=variant, scene=scene, weights=weights)
+                       variant=variant, scene=scene, weights=weights, time=time, animation=animation)
     for message in result.warnings:
         print(f"warning: {message}", file=sys.stderr)
+    chosen = light_units_default(Path(path), result.scene)
+    if chosen:
+        console.detail(chosen)
     return result.scene
 
 
@@ -101,7 +118,7 @@ def run(args) -> int:
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
     scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant, args.gltf_scene,
-                           parse_weights(args.weights))
+                           parse_weights(args.weights), parse_time(args.time), args.animation)
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
@@ -110,6 +127,8 @@ def run(args) -> int:
                              + input_files(scene, args.language)) as tx:
         rendering = render_scene(scene, context, size=size,
                                  specialise=not args.no_specialise, language=args.language)
+        if scene.render.exposure_metered:
+            console.note(f"exposure {rendering.exposure_ev:+.2f} EV (metered), tonemap {scene.render.tonemap}")
         kind = "specialised" if rendering.programs.specialised else "full"
         console.note(f"{rendering.programs.distinct} {kind} program(s)")
         check_finite(rendering.linear, args.scene)
@@ -138,6 +157,10 @@ def register(sub, common):
                    help="glTF: draw scene N (default: the file's default scene)")
     p.add_argument("--weights", default=None, metavar="W0,W1,...",
                    help="glTF: morph target weights for every mesh with targets (default: the node's or mesh's)")
+    p.add_argument("--time", default=None, metavar="T",
+                   help="glTF: sample the animations at T seconds (default: the nodes as written, skins in that pose)")
+    p.add_argument("--animation", default=None, metavar="N|NAME",
+                   help="glTF: sample only this animation (an index or a name; default: all of them)")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

@@ -9,6 +9,7 @@ of each field, refused by path), ``document`` reads the file and its buffers and
 the top level, ``accessors`` checks every accessor against
 its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into vertex data
 (``draco`` and ``meshopt`` decode compressed geometry, ``morph`` applies morph targets),
+``animation`` samples animations at ``--time``, ``skin`` poses skinned meshes by their joints,
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
 converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises
 SceneError naming the object; nothing else escapes for a bad file.
@@ -30,11 +31,11 @@ from ..resource_cache import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
-from . import draco, instancing, ktx2, meshopt, morph, points_lines, webp
+from . import animation as animations, draco, instancing, ktx2, meshopt, morph, points_lines, skin, webp
 from .geometry import read_primitive
 from .lights import punctual_light
 from .materials import MaterialReader
-from .nodes import check_float32, walk
+from .nodes import check_float32, walk, world_matrices
 
 SUFFIXES = (".gltf", ".glb")
 # Extensions whose content reaches the image (what extensionsRequired may name).
@@ -75,13 +76,18 @@ def honoured_extensions() -> tuple[str, ...]:
 def load_gltf(path, camera: int | None = None, environment: Environment | None = None,
               render: RenderSettings | None = None, size=None, emit_warnings: bool = True,
               variant: str | None = None, scene: int | None = None,
-              weights: tuple | None = None) -> GltfScene:
+              weights: tuple | None = None, time: float | None = None,
+              animation: str | None = None) -> GltfScene:
     """The scene of a glTF 2.0 file. ``camera``: the index of a glTF camera (default: the
     first one a node places; a framing camera from the bounds when there is none).
     ``variant``: a KHR_materials_variants variant's name (default: the default materials).
     ``scene``: the index of the glTF scene drawn (default: the file's ``scene``, else 0).
     ``weights``: morph target weights for every mesh with targets (default: each node's
     or mesh's own, gltf.morph).
+    ``time``: the animation time in seconds the nodes and morph weights are sampled at, and
+    ``animation`` the index or name of the one animation sampled (default: all of them at
+    ``time``; without either the nodes as written, gltf.animation). Skinned meshes are
+    posed by their joints either way (gltf.skin).
     Warnings are returned and, with ``emit_warnings``, issued as GltfWarning."""
     doc = read_document(path)
     path = Path(path)
@@ -104,9 +110,8 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     if scene is not None and not 0 <= scene < len(scenes):
         doc.fail("scenes", f"--scene {scene}: the file has {len(scenes)} scene{'s' * (len(scenes) != 1)}"
                            + (f" (0 to {len(scenes) - 1})" if scenes else ""))
-    for key in ("animations", "skins"):
-        if doc.items(key):
-            warn(f"{key} ignored ({len(doc.items(key))}; the rest pose is drawn)")
+    pose = animations.sample(doc, time, animation)
+    worlds = None  # every node's world matrix, computed once a skin needs its joints'
     variant_index = None
     for name, spec in root.extensions():
         if name == "KHR_materials_variants":
@@ -127,7 +132,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     geometries: dict = {}  # (mesh, primitive, winding, normal map UV set, weights) -> Geometry
     if weights is not None and not any(morph.target_count(m) for m in doc.items("meshes")):
         doc.fail("meshes", "--weights: the file has no morph targets")
-    for node_index, world in walk(doc, scene):
+    for node_index, world in walk(doc, scene, pose.trs):
         node = doc.items("nodes")[node_index]
         instances = None
         if node.has("name"):
@@ -143,14 +148,24 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         camera_index = node.index("camera", "cameras")
         if camera_index is not None:
             placed_cameras.append((camera_index, world, f"{node.path}.camera"))
-        if node.index("skin", "skins") is not None:
-            warn(f"skin ignored in node {node_index}")
+        skin_index = node.index("skin", "skins")
         mesh_index = node.index("mesh", "meshes")
         if mesh_index is None:
+            if skin_index is not None:
+                warn(f"skin ignored in node {node_index} (the node has no mesh)")
             continue
         mesh = doc.items("meshes")[mesh_index]
         primitives = mesh.objects("primitives", min_items=1)
-        mesh_weights = morph.weights(mesh_index, mesh, node, weights)
+        mesh_weights = morph.weights(mesh_index, mesh, node, weights, pose.weights.get(node_index))
+        skinning = None
+        if skin_index is not None:
+            if worlds is None:
+                worlds = world_matrices(doc, pose.trs)
+            matrices = skin.joint_matrices(doc, skin_index, worlds)
+            check_float32(matrices.reshape(-1, 4), node, f"a joint matrix of skins[{skin_index}]")
+            skinning = (skin.posing(doc, skin_index, matrices), ("skin", skin.pose_key(matrices)),
+                        skin.mirrors(matrices))
+            world = np.eye(4)  # 3.7.3.1: the skinned mesh node's transform MUST be ignored
         placements = [world] if instances is None else [world @ m for m in instances]
         for i, placed in enumerate(placements if instances is not None else []):
             check_float32(placed, node, f"the world matrix of its instance {i} "
@@ -158,7 +173,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
         for placed in placements:
             placed_objects = _placed_primitives(doc, reader, geometry_key, mesh_index, primitives, placed,
                                                 node_index, variant_index, materials, material_names, geometries,
-                                                warn, mesh_weights)
+                                                warn, mesh_weights, skinning)
             for obj in placed_objects if instances is not None else []:
                 obj.instance_group = (str(doc.path), node_index)
             objects += placed_objects
@@ -180,11 +195,12 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
 
 
 def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_index, variant_index,
-                       materials, material_names, geometries, warn, weights=()) -> list[SceneObject]:
+                       materials, material_names, geometries, warn, weights=(), skinning=None) -> list[SceneObject]:
     """The objects of one placement of a node's mesh: one per primitive, its material read
-    once per (material, COLOR_0) and its geometry once per winding."""
+    once per (material, COLOR_0) and its geometry once per winding. ``skinning``: (posing
+    step, pose key, whether the joints mirror) for a skinned mesh (gltf.skin)."""
     out = []
-    flip = bool(np.linalg.det(world[:3, :3]) < 0)
+    posing, pose_key, flip = skinning or (None, (), bool(np.linalg.det(world[:3, :3]) < 0))
     if abs(np.linalg.det(world[:3, :3])) < 1e-30:
         warn(f"node {node_index} ignored (its transform has zero scale)")
         return out
@@ -213,10 +229,10 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
             # KHR_materials_anisotropy lies along the tangent: MikkTSpace from its map's UV set
             # (TEXCOORD_0 without a map) where the primitive has no TANGENT
             normal_uv = material.texture_uv_set.get("anisotropy", 0)
-        gkey = (mesh_index, p, flip, normal_uv, weights)
+        gkey = (mesh_index, p, flip, normal_uv, weights, *pose_key)
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
-                                              (*key, mesh_index, p, flip, weights), weights)
+                                              (*key, mesh_index, p, flip, weights, *pose_key), weights, posing)
         if geometries[gkey] is not None and geometries[gkey].topology != "triangles":
             material = points_lines.shaded_material(material, primitive.object("attributes").has("NORMAL"), mkey,
                                                     materials, material_names)

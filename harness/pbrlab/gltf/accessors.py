@@ -38,6 +38,18 @@ USES = {
     "TARGET_POSITION": (("VEC3",), {(FLOAT, False)}),
     "TARGET_NORMAL": (("VEC3",), {(FLOAT, False)}),
     "TARGET_TANGENT": (("VEC3",), {(FLOAT, False)}),
+    # skins (spec 3.7.3 "Skins"; 3.7.2.1's attribute table: JOINTS_n unsigned byte or short,
+    # WEIGHTS_n float or normalized unsigned byte or short; inverseBindMatrices MAT4 float)
+    "JOINTS": (("VEC4",), {(5121, False), (5123, False)}),
+    "WEIGHTS": (("VEC4",), _COLOUR_LIKE),
+    "INVERSE_BIND_MATRICES": (("MAT4",), {(FLOAT, False)}),
+    # animation samplers (spec 3.11, its table of output types: rotations and weights may be
+    # normalized integers, times and translations and scales are float)
+    "ANIMATION_INPUT": (("SCALAR",), {(FLOAT, False)}),
+    "ANIMATION_TRANSLATION": (("VEC3",), {(FLOAT, False)}),
+    "ANIMATION_ROTATION": (("VEC4",), {(FLOAT, False), (5120, True), (5121, True), (5122, True), (5123, True)}),
+    "ANIMATION_SCALE": (("VEC3",), {(FLOAT, False)}),
+    "ANIMATION_WEIGHTS": (("SCALAR",), {(FLOAT, False), (5120, True), (5121, True), (5122, True), (5123, True)}),
 }
 # KHR_mesh_quantization (its README, "Extending Mesh Attributes"): the integer types each
 # attribute also takes when the file uses the extension; normalized or not, as the

@@ -17,7 +17,7 @@ from ..scene import Camera
 DEFAULT_HEIGHT = 512
 FRAMING_FOV_DEG = 45.0
 FRAMING_DIRECTION = np.array([0.0, 0.35, 1.0])  # from the front (+Z, glTF's front), a little above
-FRAMING_MARGIN = 1.1                             # the bounding sphere fills 1/1.1 of the view
+FRAMING_MARGIN = 1.05                            # the vertices fill 1/1.05 of the limiting axis
 MAX_WIDTH = 16384                                # the JSON scene's camera.size limit (scene.py)
 
 
@@ -60,13 +60,38 @@ def gltf_camera(doc, index, world: np.ndarray, where: str, scene, size) -> Camer
 
 
 def framing_camera(scene, size) -> Camera:
-    """A perspective camera that sees the whole scene: its bounding sphere from the front."""
-    from . import bounds
+    """A perspective camera from the front (FRAMING_DIRECTION) that fits the scene's
+    vertices to its view on both axes, the image's aspect ratio considered: the limiting
+    axis spans 1 / FRAMING_MARGIN of the image, the other axis is centred.
 
-    lo, hi = bounds(scene)
-    centre = (lo + hi) / 2
-    radius = max(float(np.linalg.norm(hi - lo)) / 2, 1e-6)
-    distance = radius / math.sin(math.radians(FRAMING_FOV_DEG) / 2) * FRAMING_MARGIN
-    direction = FRAMING_DIRECTION / np.linalg.norm(FRAMING_DIRECTION)
-    return Camera(centre + direction * distance, centre, np.array([0.0, 1.0, 0.0]), FRAMING_FOV_DEG,
-                  _size(1.0, size, None))
+    The fit is exact for a pinhole camera. With the view's right a, up b and backward
+    direction d (towards the camera), the camera at c = u a + v b + w d, a point p is in
+    view horizontally when |(p - c).a| <= k (c - p).d, k = tan(half the horizontal fov) /
+    FRAMING_MARGIN: u + k w >= max(p.a + k p.d) = A+ and k w - u >= max(-p.a + k p.d) = A-,
+    both tight at w = (A+ + A-) / (2k), u = (A+ - A-) / 2; likewise vertically for (v, w).
+    The larger w serves both axes; the other axis, its u or v as computed, stays centred."""
+    points = world_points(scene)
+    width, height = _size(1.0, size, None)
+    tan_v = math.tan(math.radians(FRAMING_FOV_DEG) / 2)
+    backward = FRAMING_DIRECTION / np.linalg.norm(FRAMING_DIRECTION)
+    right = np.cross(np.array([0.0, 1.0, 0.0]), backward)
+    right /= np.linalg.norm(right)
+    up = np.cross(backward, right)
+    depth = points @ backward
+    placement = {}
+    for axis, k in ((right, tan_v * width / height / FRAMING_MARGIN), (up, tan_v / FRAMING_MARGIN)):
+        across = points @ axis
+        a_plus, a_minus = float(np.max(across + k * depth)), float(np.max(-across + k * depth))
+        placement[id(axis)] = ((a_plus + a_minus) / (2 * k), (a_plus - a_minus) / 2)
+    (w_h, u), (w_v, v) = placement[id(right)], placement[id(up)]
+    extent = float(np.ptp(points, axis=0).max()) if len(points) > 1 else 0.0
+    w = max(w_h, w_v, float(depth.max()) + max(extent, 1e-6) * 1e-3)  # in front of every vertex
+    position = u * right + v * up + w * backward
+    target = position - backward * max(w - float(depth.mean()), 1e-6)
+    return Camera(position, target, np.array([0.0, 1.0, 0.0]), FRAMING_FOV_DEG, (width, height))
+
+
+def world_points(scene) -> np.ndarray:
+    """Every vertex of the scene's mesh objects in world space (float64)."""
+    return np.concatenate([obj.geometry.positions.astype(np.float64) @ obj.transform[:3, :3].T
+                           + obj.transform[:3, 3] for obj in scene.objects])

@@ -34,10 +34,11 @@ def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
 
 
 def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldReader, needs_tangents_from,
-                   warn, flip_winding: bool, key: tuple, weights: tuple = ()) -> Geometry | None:
+                   warn, flip_winding: bool, key: tuple, weights: tuple = (), posing=None) -> Geometry | None:
     """The primitive's Geometry (its ``topology``: triangles, lines or points).
     ``needs_tangents_from``: the UV set of the material's normal map, or None.
-    ``weights``: its mesh's morph target weights (gltf.morph)."""
+    ``weights``: its mesh's morph target weights (gltf.morph). ``posing``: a skin's
+    (attributes, count, positions, normals, tangents) -> the posed three (gltf.skin)."""
     where = primitive.path
     mode = primitive.enum("mode", tuple(range(7)), TRIANGLES, {**MODE_NAMES, **MODES})
     attributes = primitive.object("attributes")
@@ -67,7 +68,8 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     uv1 = optional("TEXCOORD_1", "TEXCOORD")
     colors = optional("COLOR_0", "COLOR")
     for name in sorted(attributes.data):
-        if name not in ("POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"):
+        skinning = posing is not None and name.startswith(("JOINTS_", "WEIGHTS_"))
+        if name not in ("POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0") and not skinning:
             attributes.index(name, "accessors")
             warn(f"attribute {name} ignored in mesh {mesh} primitive {prim_index}")
     targets = primitive.objects("targets")
@@ -78,6 +80,8 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
         displaced = morph.displace(doc, primitive, weights, {"POSITION": positions, "NORMAL": normals,
                                                              "TANGENT": tangents}, count, warn, mesh, prim_index)
         positions, normals, tangents = displaced["POSITION"], displaced["NORMAL"], displaced["TANGENT"]
+    if posing is not None:  # a skin poses the morphed mesh (3.7.3.3: morph targets first)
+        positions, normals, tangents = posing(attributes, count, positions, normals, tangents)
     for ext, _ in primitive.extensions():
         if ext == draco.EXTENSION and compressed is None:
             warn(f"{ext} ignored in mesh {mesh} primitive {prim_index} ({draco.PACKAGE} is not installed: "

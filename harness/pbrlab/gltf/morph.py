@@ -29,14 +29,22 @@ def target_count(mesh: FieldReader) -> int:
     return counts[0]
 
 
-def weights(mesh_index: int, mesh: FieldReader, node: FieldReader, override: tuple | None) -> tuple:
-    """The weights the node's mesh is drawn with (empty for a mesh without targets)."""
+def weights(mesh_index: int, mesh: FieldReader, node: FieldReader, override: tuple | None,
+            animated: tuple | None = None) -> tuple:
+    """The weights the node's mesh is drawn with (empty for a mesh without targets):
+    ``--weights``, else the node's animated weights at ``--time`` (gltf.animation), else
+    its own, else its mesh's."""
     count = target_count(mesh)
     if override is not None and count:
         if len(override) != count:
             mesh.fail(f"--weights gives {len(override)} weight{'s' * (len(override) != 1)}; "
                       f"mesh {mesh_index} has {count} morph targets")
         return tuple(float(w) for w in override)
+    if animated is not None and count:
+        if len(animated) != count:
+            node.fail(f"an animation gives it {len(animated)} morph weights; mesh {mesh_index} has {count} "
+                      "targets (spec 3.11: one weight per target per keyframe)")
+        return tuple(animated)
     for owner in (node, mesh):
         if owner.has("weights"):
             given = owner.numbers("weights", count)  # refuses a length other than count

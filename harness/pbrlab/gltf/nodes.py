@@ -23,7 +23,9 @@ def quaternion_matrix(q: np.ndarray) -> np.ndarray:
         [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
 
 
-def local_matrix(node: FieldReader) -> np.ndarray:
+def local_matrix(node: FieldReader, animated: dict | None = None) -> np.ndarray:
+    """The node's matrix; ``animated``: the translation, rotation or scale an animation
+    time gives it (gltf.animation), which replace the node's own."""
     if node.has("matrix"):
         if any(node.has(key) for key in ("translation", "rotation", "scale")):
             node.fail("has both matrix and translation/rotation/scale")
@@ -35,6 +37,8 @@ def local_matrix(node: FieldReader) -> np.ndarray:
     t = node.numbers("translation", 3, [0, 0, 0])
     q = node.numbers("rotation", 4, [0, 0, 0, 1], -1.0, 1.0)  # spec 5.25: unit quaternion components
     s = node.numbers("scale", 3, [1, 1, 1])
+    if animated:
+        t, q, s = (animated.get(k, v) for k, v in (("translation", t), ("rotation", q), ("scale", s)))
     if not np.linalg.norm(q) > 0:
         node.fail("rotation is the zero quaternion")
     m = np.eye(4)
@@ -59,8 +63,35 @@ def check_float32(world: np.ndarray, node: FieldReader, what: str = "its world m
                   "scales or translations)")
 
 
-def walk(doc: Document, scene_index: int | None):
-    """(node index, world matrix) of every node of the scene, parents first."""
+def world_matrices(doc: Document, animated: dict | None = None) -> dict:
+    """node index -> world matrix for every node of the file (in a scene or not): the
+    joints of a skin (gltf.skin). ``animated``: node -> its animated TRS."""
+    nodes = doc.items("nodes")
+    parent = {}
+    for i, node in enumerate(nodes):
+        for c in node.indices("children", "nodes"):
+            if c in parent:
+                doc.fail(f"nodes[{c}]", "appears twice in the hierarchy (a cycle, or two parents)")
+            parent[c] = i
+    out: dict = {}
+
+    def world(i: int, depth: int = 0) -> np.ndarray:
+        if i not in out:
+            if depth > len(nodes):
+                doc.fail(f"nodes[{i}]", "is its own ancestor (a cycle)")
+            local = local_matrix(nodes[i], (animated or {}).get(i))
+            with np.errstate(over="ignore", invalid="ignore"):
+                out[i] = local if i not in parent else world(parent[i], depth + 1) @ local
+        return out[i]
+
+    for i in range(len(nodes)):
+        world(i)
+    return out
+
+
+def walk(doc: Document, scene_index: int | None, animated: dict | None = None):
+    """(node index, world matrix) of every node of the scene, parents first.
+    ``animated``: node -> its animated translation, rotation, scale (gltf.animation)."""
     nodes = doc.items("nodes")
     scenes = doc.items("scenes")
     if scenes:
@@ -80,7 +111,7 @@ def walk(doc: Document, scene_index: int | None):
             doc.fail(f"nodes[{index}]", "appears twice in the hierarchy (a cycle, or two parents)")
         seen.add(index)
         with np.errstate(over="ignore", invalid="ignore"):  # refused just below, by name
-            world = parent @ local_matrix(node)
+            world = parent @ local_matrix(node, (animated or {}).get(index))
         check_float32(world, node)
         yield index, world
         children = node.indices("children", "nodes")

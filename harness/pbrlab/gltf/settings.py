@@ -7,6 +7,10 @@ or a small side file ``<model>.pbrlab.json`` beside the model:
 
 Both sections have the JSON scene format's fields and checks (pbrlab.scene); the command
 line's environment wins over the side file's.
+
+A file with KHR_lights_punctual lights is in physical light units (lux, candela): when
+the side file sets neither ``tonemap`` nor ``exposure``, `pbrlab render` shows it through
+Khronos PBR Neutral with a metered exposure (``light_units_default``, pbrlab.exposure).
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ import json
 from pathlib import Path
 
 from ..errors import SceneError
+from ..exposure import METERED_TONEMAP
 from ..scene import Environment, RenderSettings, parse_scene
 
 SIDE_FILE_SUFFIX = ".pbrlab.json"
@@ -34,6 +39,25 @@ def _sections(data: dict, origin: str, base: Path) -> tuple[Environment | None, 
                          "environment": data.get("environment"), "render": data.get("render", {})},
                         origin, base)
     return scene.environment, scene.render
+
+
+def chosen_render_fields(model: Path) -> set:
+    """The render fields the side file sets (read_settings has checked it)."""
+    path = side_file(model)
+    if not path.is_file():
+        return set()
+    return set(json.loads(path.read_text(encoding="utf-8")).get("render", {}))
+
+
+def light_units_default(model: Path, scene) -> str | None:
+    """Khronos PBR Neutral and a metered exposure for a scene lit by the file's punctual
+    lights whose side file chose no tonemap or exposure; a line saying so (None: unchanged)."""
+    if not scene.lights or chosen_render_fields(model) & {"tonemap", "exposure"}:
+        return None
+    scene.render.tonemap = METERED_TONEMAP
+    scene.render.exposure_metered = True
+    return (f"physical light units (KHR_lights_punctual): tonemap {METERED_TONEMAP}, exposure metered "
+            f"(set render.tonemap / render.exposure in {side_file(model).name} to choose)")
 
 
 def read_settings(model: Path, environment_option: str | None = None):
