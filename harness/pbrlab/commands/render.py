@@ -36,17 +36,18 @@ def check_finite(linear: np.ndarray, what: str):
 
 def load_scene_with_gltf_warnings(path):
     """A JSON scene and the warnings of the glTF files it takes in (GltfWarning)."""
+    import sys
     import warnings
 
-    from ..gltf import GltfWarning
-    from ..scene import load_scene
+    from ..scene_files import load_scene
 
     with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", GltfWarning)
+        warnings.simplefilter("always")
         scene = load_scene(path)
+    gltf = sys.modules.get("pbrlab.gltf")  # imported only if the scene took in a glTF file
     messages = []
     for w in caught:
-        if issubclass(w.category, GltfWarning):
+        if gltf is not None and issubclass(w.category, gltf.GltfWarning):
             messages.append(str(w.message))
         else:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
@@ -71,8 +72,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     import sys
     from pathlib import Path
 
-    from ..gltf import is_gltf, load_gltf
-    from ..gltf.settings import read_settings
+    from ..scene_files import is_gltf
 
     if not is_gltf(path):
         if any(option is not None for option in (camera, environment, variant, scene, weights)):
@@ -82,6 +82,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
+    from ..gltf import load_gltf
+    from ..gltf.settings import read_settings
+
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
                        variant=variant, scene=scene, weights=weights)
