@@ -94,7 +94,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 
 
 def run(args) -> int:
-    from .. import gl, images, outputs
+    from .. import gl, images, outputs, progress
     from ..render import input_files, render_scene
 
     if not args.output and not args.hdr:
@@ -111,8 +111,9 @@ def run(args) -> int:
     targets = [p for p in (args.hdr, args.output) if p]
     with outputs.transaction(targets, [(args.scene, "the scene file")]
                              + input_files(scene, args.language)) as tx:
-        rendering = render_scene(scene, context, size=size,
-                                 specialise=not args.no_specialise, language=args.language)
+        with progress.stage(f"rendering {args.scene}"):  # a live line on a terminal past 2 s
+            rendering = render_scene(scene, context, size=size,
+                                     specialise=not args.no_specialise, language=args.language)
         kind = "specialised" if rendering.programs.specialised else "full"
         console.note(f"{rendering.programs.distinct} {kind} program(s)")
         check_finite(rendering.linear, args.scene)
