@@ -51,8 +51,11 @@ t0 = time.perf_counter()
 from pbrlab import cli
 T["import pbrlab.cli"] = time.perf_counter() - t0
 C["import pbrlab.cli"] = time.process_time()
+t1, c1 = time.perf_counter(), time.process_time()
 from pbrlab import gl, images, meshes, programs, render, resource_cache, shaders
 from pbrlab.commands import render as render_command
+T["import the render path (render, images, ...)"] = time.perf_counter() - t1
+C["import the render path (render, images, ...)"] = time.process_time() - c1
 t1 = time.perf_counter()
 parser = cli.build_parser(sys.argv[1:])
 T["build the parser"] = time.perf_counter() - t1

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import json_input, meshes, unity
+from . import json_input, meshes
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -413,7 +413,7 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.ior = r.number("ior", default=1.5, lo=TRANSMISSION_IOR_RANGE[0], hi=TRANSMISSION_IOR_RANGE[1])
     if r.has("surface"):
         m.surface = r.file("surface", base)
-    if m.surface is not None and unity.is_unity_surface(m.surface):
+    if m.surface is not None and _unity().is_unity_surface(m.surface):
         _unity_material(r, m, base)
         return m
     if r.has("properties"):
@@ -493,9 +493,16 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     return m
 
 
+def _unity():
+    """The Unity shader reader (pbrlab.unity), loaded for scenes with a surface file only."""
+    from . import unity
+    return unity
+
+
 def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     """A material whose surface is a Unity surface shader: its Properties, overridden by
     `properties`; alpha mode and cutoff from its #pragma surface (harness/pbrlab/unity/)."""
+    unity = _unity()
     try:
         m.unity = unity.load_shader(m.surface)
     except unity.UnityShaderError as exc:
@@ -651,7 +658,7 @@ def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
             warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
                           "is not applied to a ray-traced sphere (its front surface only); use a mesh "
                           "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
-                          unity.UnityShaderWarning, stacklevel=3)
+                          _unity().UnityShaderWarning, stacklevel=3)
 
 
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gltf=None) -> Scene:

@@ -41,15 +41,18 @@ def load_scene_with_gltf_warnings(path):
 
     from ..scene_files import load_scene
 
+    # Every warning is recorded: the glTF importer (and its GltfWarning) is loaded only if the
+    # scene takes in a glTF file, so its warnings are told apart after the load.
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         scene = load_scene(path)
-    gltf = sys.modules.get("pbrlab.gltf")  # imported only if the scene took in a glTF file
-    messages = []
+    gltf = sys.modules.get("pbrlab.gltf")
+    messages, passed_on = [], set()
     for w in caught:
         if gltf is not None and issubclass(w.category, gltf.GltfWarning):
             messages.append(str(w.message))
-        else:
+        elif (key := (str(w.message), w.category, w.filename, w.lineno)) not in passed_on:
+            passed_on.add(key)  # once per message and place, as the default filter would
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     return scene, messages
 
