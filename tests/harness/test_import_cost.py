@@ -50,7 +50,7 @@ def test_a_render_without_mesh_files_or_cached_meshes_never_imports_trimesh(tmp_
     render = f"from pbrlab import cli\nassert cli.main(['render', {str(lit)!r}, '-o', {str(tmp_path / 'a.png')!r}, '--size', '16x16', '-q']) == 0"
     first = loaded_after(render, cache)
     assert "trimesh" in first  # the control: an empty cache reads the OBJ and primitives with trimesh
-    again = loaded_after(render, cache)
+    again = loaded_after(render + "\nimport sys\nassert 'pbrlab.gltf' not in sys.modules", cache)
     assert "trimesh" not in again and "scipy" not in again
     spheres = tmp_path / "spheres.json"
     spheres.write_text(json.dumps({"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "size": [8, 8]},
