@@ -413,7 +413,7 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.ior = r.number("ior", default=1.5, lo=TRANSMISSION_IOR_RANGE[0], hi=TRANSMISSION_IOR_RANGE[1])
     if r.has("surface"):
         m.surface = r.file("surface", base)
-    if m.surface is not None and _unity().is_unity_surface(m.surface):
+    if m.surface is not None and _may_be_unity(m.surface) and _unity().is_unity_surface(m.surface):
         _unity_material(r, m, base)
         return m
     if r.has("properties"):
@@ -491,6 +491,16 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     brdf.finish()
     r.finish()
     return m
+
+
+def _may_be_unity(path: Path) -> bool:
+    """False when ``path`` cannot be a Unity surface shader (unity.is_unity_surface: a
+    .shader file or a ``#pragma surface`` line): a GLSL surface without the word "pragma"
+    is told apart without loading the Unity reader."""
+    try:
+        return path.suffix == ".shader" or b"pragma" in path.read_bytes()
+    except OSError:
+        return True  # let the reader say what is wrong
 
 
 def _unity():
