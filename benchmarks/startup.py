@@ -3,7 +3,7 @@ fresh processes, median of N, with a breakdown. A benchmark: it prints figures a
 nothing (tests/harness/test_import_cost.py checks the import structure instead).
 
     .venv/bin/python benchmarks/startup.py [--runs 9] [--size 512] [--scene scenes/unity_example/scene.json]
-        [--empty-cache]
+        [--empty-cache] [--baseline ../main/harness]
 
 1. ``pbrlab render SCENE -o OUT.png --size 512x512 -q``, N fresh processes after one warm-up
    (which writes the byte-code and the disk cache, as any earlier run would): median, min and
@@ -78,10 +78,10 @@ print(json.dumps({"stages": T, "cpu": C, "heavy": heavy, "rc": rc}))
 ''' % (HEAVY,)
 
 
-def child_env(cache: str | None) -> dict:
+def child_env(cache: str | None, harness: Path = ROOT / "harness") -> dict:
     env = dict(os.environ)
     env.pop("PYTHONDONTWRITEBYTECODE", None)  # an installed package has its byte-code
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "harness"), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
+    env["PYTHONPATH"] = os.pathsep.join([str(harness), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
     if cache is not None:
         env["PBRLAB_CACHE_DIR"] = cache
     return env
@@ -120,6 +120,9 @@ def main() -> None:
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "unity_example" / "scene.json"))
     parser.add_argument("--empty-cache", action="store_true",
                         help="a new, empty disk cache for every run (the first render of a scene)")
+    parser.add_argument("--baseline", type=Path, default=None, metavar="HARNESS",
+                        help="another checkout's harness/ folder (e.g. main's) rendering the same scene "
+                             "in runs interleaved with these: a ratio that holds on a busy machine")
     args = parser.parse_args()
     python = sys.executable
     with tempfile.TemporaryDirectory(prefix="pbrlab-startup-") as scratch:
@@ -132,16 +135,28 @@ def main() -> None:
             return child_env(os.path.join(scratch, f"cache-{run}") if args.empty_cache else shared_cache)
 
         subprocess.run(command, env=env_for(-1), check=True, stdout=subprocess.DEVNULL)  # warm-up
-        walls, cpus = [], []
+        baseline_env = child_env(shared_cache, args.baseline) if args.baseline else None
+        if baseline_env:
+            subprocess.run(command, env=baseline_env, check=True, stdout=subprocess.DEVNULL)
+        walls, cpus, base_walls, base_cpus = [], [], [], []
         for run in range(args.runs):
             wall, cpu = run_timed(command, env_for(run))
             walls.append(wall)
             cpus.append(cpu)
+            if baseline_env:
+                wall, cpu = run_timed(command, baseline_env)
+                base_walls.append(wall)
+                base_cpus.append(cpu)
         cache = "an empty disk cache each run" if args.empty_cache else "the disk cache warm"
         print(f"pbrlab render {Path(args.scene).relative_to(ROOT) if Path(args.scene).is_relative_to(ROOT) else args.scene}"
               f" -o x.png --size {args.size}x{args.size}: {args.runs} fresh processes, {cache}")
         print(f"  wall {summary(walls)}")
         print(f"  CPU  {summary(cpus)}  (user + system, all threads)")
+        if baseline_env:
+            print(f"  baseline {args.baseline}, interleaved: wall {summary(base_walls)}; CPU {summary(base_cpus)}; "
+                  f"ratio of medians: wall {statistics.median(walls) / statistics.median(base_walls):.2f}, "
+                  f"CPU {statistics.median(cpus) / statistics.median(base_cpus):.2f}")
+        print(f"  load average while measuring: {os.getloadavg()[0]:.1f} ({os.cpu_count()} CPUs)")
         print(f"  python -c pass: {summary([run_timed([python, '-c', 'pass'], env_for(0))[0] for _ in range(5)])}")
 
         print("import time by package (self time, s), one process:")

@@ -21,6 +21,7 @@ deleting the folder at any time is safe.
 from __future__ import annotations
 
 import hashlib
+import io
 import os
 import tempfile
 from pathlib import Path
@@ -99,3 +100,25 @@ def store(kind: str, name: str, payload: bytes) -> bool:
             except OSError:
                 pass
         return False
+
+
+def pack_arrays(arrays) -> bytes:
+    """numpy arrays as one payload: each in the .npy format, one after another (not an .npz,
+    whose reader loads zipfile)."""
+    import numpy as np
+
+    buffer = io.BytesIO()
+    for array in arrays:
+        np.lib.format.write_array(buffer, np.asarray(array), allow_pickle=False)
+    return buffer.getvalue()
+
+
+def unpack_arrays(payload: bytes) -> list:
+    """The arrays of ``pack_arrays``, in order."""
+    import numpy as np
+
+    buffer = io.BytesIO(payload)
+    arrays = []
+    while buffer.tell() < len(payload):
+        arrays.append(np.lib.format.read_array(buffer, allow_pickle=False))
+    return arrays

@@ -18,7 +18,6 @@ The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 from __future__ import annotations
 
 import argparse
-import io
 import os
 from functools import lru_cache
 from pathlib import Path
@@ -158,13 +157,10 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     name = _prefilter_cache_key(ctx, image)
     payload = disk_cache.load("prefiltered-environment", name)
     if payload is not None:
-        with np.load(io.BytesIO(payload), allow_pickle=False) as stored:
-            levels = [stored[f"level{i}"] for i in range(PREFILTER_LEVELS)]
+        levels = disk_cache.unpack_arrays(payload)
     else:
         levels = _prefilter_levels(ctx, image)
-        buffer = io.BytesIO()
-        np.savez(buffer, **{f"level{i}": level for i, level in enumerate(levels)})
-        disk_cache.store("prefiltered-environment", name, buffer.getvalue())
+        disk_cache.store("prefiltered-environment", name, disk_cache.pack_arrays(levels))
     w0, h0 = PREFILTER_SIZE
     result = ctx.texture((w0, h0), 4, dtype="f4")
     result.build_mipmaps(0, PREFILTER_LEVELS - 1)

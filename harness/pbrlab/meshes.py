@@ -209,16 +209,13 @@ def _prepared_mesh(obj) -> tuple[tuple, float]:
         name = disk_cache.key("mesh", inputs, Path(__file__).read_bytes(), np.__version__, _trimesh_identity())
         payload = disk_cache.load("mesh", name)
         if payload is not None:
-            with np.load(io.BytesIO(payload), allow_pickle=False) as stored:
-                arrays = tuple(stored[f"a{i}"] for i in range(len(stored.files) - 1))
-                return arrays, float(stored["norm"])
+            *arrays, norm = disk_cache.unpack_arrays(payload)
+            return tuple(arrays), float(norm)
     mesh = load_mesh(obj)
     arrays = vertex_arrays(mesh)
     norm = float(np.linalg.norm(mesh.vertices, axis=1).max())
     if name is not None:
-        buffer = io.BytesIO()
-        np.savez(buffer, norm=np.float64(norm), **{f"a{i}": a for i, a in enumerate(arrays)})
-        disk_cache.store("mesh", name, buffer.getvalue())
+        disk_cache.store("mesh", name, disk_cache.pack_arrays([*arrays, np.float64(norm)]))
     return arrays, norm
 
 

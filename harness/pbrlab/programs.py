@@ -33,7 +33,6 @@ import re
 import shutil
 import struct
 import tempfile
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -41,8 +40,9 @@ import numpy as np
 from . import hlsl, shaders
 from .errors import PbrlabError
 from .file_identity import FileCache, include_closure
+from .locations import PACKAGE_FOLDER
 
-TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
+TEMPLATES = PACKAGE_FOLDER / "templates"
 FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
 LANGUAGES = tuple(FRAGMENT_SUFFIX)
 DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
