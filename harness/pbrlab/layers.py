@@ -21,7 +21,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("maths and references", (
         "reference", "srgb8", "mipmaps", "camera")),
     ("GL and programs", (
-        "gl", "gl_limits", "shaders", "hlsl", "programs", "surface_bindings", "targets", "evaluator",
+        "gl", "gl_limits", "shaders", "source_cache", "hlsl", "programs", "surface_bindings", "targets", "evaluator",
         "ibl", "sheen_table", "port_hlsl", "gpu_isa")),
     ("scene sources", (
         "meshes", "environment", "unity")),

@@ -68,6 +68,7 @@ class Source:
     text: str
     files: list[str] = field(default_factory=list)
     paths: list[Path] = field(default_factory=list)  # every include file read (resolved)
+    probed: list[Path] = field(default_factory=list)  # every place an include was looked for
 
     def map_messages(self, log: str) -> str:
         """Rewrite compiler messages from 'N:L(C)' to 'path:L:C'."""
@@ -91,9 +92,13 @@ def include_path(extra_dirs=()) -> list[Path]:
     return [Path(d) for d in extra_dirs] + [GLSL_ROOT]
 
 
-def resolve_include(name: str, search: list[Path]) -> Path | None:
+def resolve_include(name: str, search: list[Path], probed: list | None = None) -> Path | None:
+    """The first file ``name`` in ``search``; each place looked at is added to ``probed``
+    (a file created there later would change the answer: source_cache checks them)."""
     for directory in search:
         candidate = directory / name
+        if probed is not None:
+            probed.append(candidate)
         if candidate.is_file():
             return candidate.resolve()
     return None
@@ -216,7 +221,7 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 emit_line_marker(file_index, number + 1)
                 continue
             if included not in resolved:  # once per name and expansion: the search path is fixed
-                resolved[included] = resolve_include(included, search)
+                resolved[included] = resolve_include(included, search, source.probed)
             target = resolved[included]
             if target is None and (conditional or depth > 0):
                 # under an #if: the compiler's preprocessor decides whether this line is read, so
