@@ -52,7 +52,7 @@ from pbrlab import cli
 T["import pbrlab.cli"] = time.perf_counter() - t0
 C["import pbrlab.cli"] = time.process_time()
 t1, c1 = time.perf_counter(), time.process_time()
-from pbrlab import gl, images, meshes, programs, render, resource_cache, shaders
+from pbrlab import gl, images, meshes, programs, render, resource_cache, shaders, source_cache
 from pbrlab.commands import render as render_command
 T["import the render path (render, images, ...)"] = time.perf_counter() - t1
 C["import the render path (render, images, ...)"] = time.process_time() - c1
@@ -61,7 +61,7 @@ parser = cli.build_parser(sys.argv[1:])
 T["build the parser"] = time.perf_counter() - t1
 timed(render_command, "load_any_scene", "load the scene (imports the readers)")
 timed(gl, "shared_context", "GL context")
-timed(shaders, "expand", "include expansion")
+timed(source_cache, "expand", "include expansion (disk cache or expander)")
 timed(shaders, "build_program", "program compile + link")
 timed(meshes, "_prepared_mesh", "meshes (disk cache or trimesh)")
 timed(resource_cache.ContextCache, "environment", "environment (read, SH9, prefilter)")

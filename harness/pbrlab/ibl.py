@@ -161,11 +161,7 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     else:
         levels = _prefilter_levels(ctx, image)
         disk_cache.store("prefiltered-environment", name, disk_cache.pack_arrays(levels))
-    w0, h0 = PREFILTER_SIZE
-    result = ctx.texture((w0, h0), 4, dtype="f4")
-    result.build_mipmaps(0, PREFILTER_LEVELS - 1)
-    for level, data in enumerate(levels):
-        result.write(np.ascontiguousarray(data).tobytes(), level=level)
+    result = targets.float_texture_from_levels(ctx, levels)
     result.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     result.repeat_x, result.repeat_y = True, False
     return result
