@@ -44,7 +44,19 @@ COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcas
 GL_COMMANDS = ("demo", "render", "eval", "hardcases", "bench")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _named_command(argv) -> str | None:
+    """The command ``argv`` names (its first word not starting with '-'), if it is one."""
+    for word in argv:
+        if not word.startswith("-"):
+            return word if word in COMMANDS else None
+    return None
+
+
+def build_parser(argv=None) -> argparse.ArgumentParser:
+    """The parser of every command; given ``argv`` naming a command, of that command only:
+    each command module imports what it needs when registered (``pbrlab bench`` its
+    reference tables), so a render starts without loading the others (issue 25).
+    """
     common = argparse.ArgumentParser(add_help=False)
     loudness = common.add_mutually_exclusive_group()
     loudness.add_argument("-q", "--quiet", dest="verbosity", action="store_const", const=console.QUIET,
@@ -61,14 +73,16 @@ def build_parser() -> argparse.ArgumentParser:
     gl.add_argument(
         "--backend", choices=BACKENDS, default=None,
         help="The OpenGL backend to render with (default: $PBRLAB_GL_BACKEND, else EGL, then OSMesa).")
-    for name in COMMANDS:
+    named = _named_command(argv or [])
+    for name in (named,) if named else COMMANDS:
         importlib.import_module(f"pbrlab.commands.{name.replace('-', '_')}").register(
             sub, gl if name in GL_COMMANDS else common)
     return parser
 
 
 def main(argv=None) -> int:
-    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(argv)
     args = parser.parse_args(argv)
     console.set_level(getattr(args, "verbosity", console.NORMAL))
     try:

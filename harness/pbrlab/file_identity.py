@@ -84,7 +84,7 @@ class FileCache:
             self._drop(key)
         value, paths = build()
         self.builds += 1
-        paths = tuple(paths)
+        paths = tuple(dict.fromkeys(paths))  # a file included twice is checked once
         self.entries[key] = (value, paths, fingerprint(paths))
         while len(self.entries) > self.size:
             self._drop(next(iter(self.entries)))

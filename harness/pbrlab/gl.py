@@ -227,6 +227,7 @@ _GL_FUNCTION_TYPES = {
     "glTexImage2D": (None, [ctypes.c_uint, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int,
                             ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ctypes.c_void_p]),
     "glPixelStorei": (None, [ctypes.c_uint, ctypes.c_int]),
+    "glTexParameteri": (None, [ctypes.c_uint, ctypes.c_uint, ctypes.c_int]),
 }
 
 

@@ -35,9 +35,8 @@ from . import images, outputs
 from .compare import (GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, TOLERANCE_PROFILES, DiffResult,
                       Tolerance, ToleranceProfile, diff, tolerance_profile)
 from .errors import PbrlabError
+from .golden_names import DEFAULT_OUTPUT_DIR, DEFAULT_ROOT  # noqa: F401 (public here too)
 
-DEFAULT_ROOT = "goldens"
-DEFAULT_OUTPUT_DIR = "test-output"
 SIDECAR_FORMAT = "pbrlab-golden/1"
 # The pytest option of pbrlab's plugin that writes goldens; hints name it, not a Makefile.
 UPDATE_OPTION = "--update-goldens"

@@ -18,15 +18,16 @@ The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 from __future__ import annotations
 
 import argparse
+import os
 from functools import lru_cache
 from pathlib import Path
 
 import moderngl
 import numpy as np
 
-from . import outputs, targets
+from . import disk_cache, outputs, targets
 from .errors import PbrlabError
-from .programs import program_from_templates
+from .programs import program_from_templates, template_source
 from .reference import brdf as ref_brdf
 from .reference import surface as ref_surface
 
@@ -149,7 +150,38 @@ def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
 
 def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.Texture:
     """The GGX-prefiltered mip chain of an equirectangular radiance image (HxWx3, linear),
-    as an RGBA32F texture with PREFILTER_LEVELS levels (see module docstring)."""
+    as an RGBA32F texture with PREFILTER_LEVELS levels (see module docstring). The levels
+    come from the disk cache when an earlier process filtered the same image with the same
+    program on the same driver (_prefilter_cache_key): 256 samples per texel cost llvmpipe
+    about 0.3 s, a third of a render's start-up (issue 25)."""
+    name = _prefilter_cache_key(ctx, image)
+    payload = disk_cache.load("prefiltered-environment", name)
+    if payload is not None:
+        levels = disk_cache.unpack_arrays(payload)
+    else:
+        levels = _prefilter_levels(ctx, image)
+        disk_cache.store("prefiltered-environment", name, disk_cache.pack_arrays(levels))
+    result = targets.float_texture_from_levels(ctx, levels)
+    result.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+    result.repeat_x, result.repeat_y = True, False
+    return result
+
+
+def _prefilter_cache_key(ctx: moderngl.Context, image: np.ndarray) -> str:
+    """Everything the prefiltered levels are computed from: the image's pixels, the
+    program's full expanded source, the constants and code of this module, and the driver
+    (renderer, version, and the environment variables that steer Mesa and llvmpipe, such as
+    LP_NATIVE_VECTOR_WIDTH): any change gives another key, so no entry is ever stale."""
+    pixels = np.ascontiguousarray(image[..., :3], np.float32)
+    programs = [template_source(name, {}).text for name in ("fullscreen.vert", "prefilter.frag")]
+    driver = [ctx.info["GL_VENDOR"], ctx.info["GL_RENDERER"], ctx.info["GL_VERSION"],
+              sorted((k, v) for k, v in os.environ.items() if k.startswith(("LP_", "GALLIUM_", "MESA_")))]
+    return disk_cache.key("prefiltered-environment", pixels.shape, pixels.tobytes(), *programs, driver,
+                          PREFILTER_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES, Path(__file__).read_bytes())
+
+
+def _prefilter_levels(ctx: moderngl.Context, image: np.ndarray) -> list[np.ndarray]:
+    """The PREFILTER_LEVELS levels, each float32 in GL row order, filtered on the GPU."""
     source = targets.upload_texture(ctx, np.concatenate(
         [image[..., :3], np.ones(image.shape[:2] + (1,), image.dtype)], axis=2).astype(np.float32),
         srgb=False)
@@ -157,9 +189,8 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     program = program_from_templates(ctx, "fullscreen.vert", "prefilter.frag", {})
     vao = ctx.vertex_array(program, [])
     w0, h0 = PREFILTER_SIZE
-    result = ctx.texture((w0, h0), 4, dtype="f4")
-    result.build_mipmaps(0, PREFILTER_LEVELS - 1)
     source_levels = 1 + int(np.floor(np.log2(max(image.shape[0], image.shape[1]))))
+    levels = []
     try:
         for level in range(PREFILTER_LEVELS):
             size = (max(w0 >> level, 1), max(h0 >> level, 1))
@@ -173,14 +204,11 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
                 program["u_sample_count"].value = PREFILTER_SAMPLES
                 program["u_target_size"].value = (float(size[0]), float(size[1]))
                 vao.render(moderngl.TRIANGLES, vertices=3)
-                data = target.read()[::-1]  # back to GL row order for the write
-                result.write(np.ascontiguousarray(data).tobytes(), level=level)
+                levels.append(np.ascontiguousarray(target.read()[::-1]))  # back to GL row order
     finally:
         vao.release()
         source.release()
-    result.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
-    result.repeat_x, result.repeat_y = True, False
-    return result
+    return levels
 
 
 def main(argv=None) -> int:

@@ -3,8 +3,8 @@
 Each tree is looked up in this order:
   1. an environment variable naming the folder (``PBRLAB_GLSL_ROOT``, ``PBRLAB_HLSL_ROOT``,
      ``PBRLAB_SCENES_ROOT``), for a library being edited elsewhere;
-  2. the package data of an installed wheel, ``pbrlab/data/<tree>`` found through
-     ``importlib.resources`` (setup.py copies ``glsl/``, ``hlsl_ports/`` and ``scenes/`` there);
+  2. the package data of an installed wheel, ``pbrlab/data/<tree>`` beside this module
+     (setup.py copies ``glsl/``, ``hlsl_ports/`` and ``scenes/`` there);
   3. the checkout this module sits in (``<repo>/<tree>``), for an editable install.
 
 ``pbrlab paths`` and ``pbrlab --version`` print the answers.
@@ -13,7 +13,6 @@ Each tree is looked up in this order:
 from __future__ import annotations
 
 import os
-from importlib import resources
 from pathlib import Path
 
 from .errors import PbrlabError
@@ -21,13 +20,16 @@ from .errors import PbrlabError
 # tree name (the folder in the checkout and under pbrlab/data/) -> environment override
 TREES = {"glsl": "PBRLAB_GLSL_ROOT", "hlsl_ports": "PBRLAB_HLSL_ROOT", "scenes": "PBRLAB_SCENES_ROOT"}
 PACKAGE_DATA = "data"
+# The package's folder. Not importlib.resources.files("pbrlab"): only a folder on disk counts
+# here (below), and resources loads importlib.readers and zipfile, 10 ms of every start-up.
+PACKAGE_FOLDER = Path(__file__).resolve().parent
 
 
 def _packaged(tree: str) -> Path | None:
-    candidate = resources.files("pbrlab").joinpath(PACKAGE_DATA, tree)
+    candidate = PACKAGE_FOLDER / PACKAGE_DATA / tree
     # An installed wheel is a folder on disk; the compilers need real files, so a zipped
-    # install (a Traversable that is not a Path) does not count.
-    if isinstance(candidate, Path) and candidate.is_dir():
+    # install (where this is no folder) does not count.
+    if candidate.is_dir():
         return candidate
     return None
 

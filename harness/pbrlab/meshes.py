@@ -3,16 +3,20 @@ per-vertex attributes the mesh program needs (positions, normals, UVs, tangents)
 
 from __future__ import annotations
 
+import importlib.util
 import io
 import json
+import os
+import re
 from collections import OrderedDict
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from . import resource_cache
+from . import disk_cache
 from .errors import SceneError
+from .file_identity import file_key
 
 _PRIMITIVE_DEFAULTS = {
     "box": {"size": 1.0},
@@ -129,7 +133,7 @@ def _mesh_key(obj) -> tuple:
         return ("geometry", *obj.geometry.key)
     if obj.primitive is not None:
         return ("primitive", json.dumps(obj.primitive, sort_keys=True))
-    return ("file", *resource_cache.file_key(obj.mesh_path))
+    return ("file", *file_key(obj.mesh_path))
 
 
 FLOAT32_MAX = float(np.finfo(np.float32).max)
@@ -151,14 +155,70 @@ def mesh_data(obj) -> MeshData:
         _MESH_DATA[key] = MeshData((g.positions, g.normals, g.uv, g.tangents, g.indices, g.uv1, g.colors),
                                    norm, tuple(float(c) for c in centre))
     else:
-        mesh = load_mesh(obj)
-        arrays = vertex_arrays(mesh)
+        arrays, norm = _prepared_mesh(obj)
         for array in arrays:
             array.flags.writeable = False  # shared by every render of this mesh
-        _MESH_DATA[key] = MeshData(arrays, float(np.linalg.norm(mesh.vertices, axis=1).max()))
+        _MESH_DATA[key] = MeshData(arrays, norm)
         while len(_MESH_DATA) > MESHES_KEPT:
             _MESH_DATA.popitem(last=False)
     return _MESH_DATA[key]
+
+
+# Files whose geometry is the file alone (an OBJ's material libraries are hashed with it);
+# others (a .gltf through trimesh reads its buffers) are read every time.
+DISK_CACHED_SUFFIXES = (".obj", ".ply", ".stl", ".off")
+_MTLLIB = re.compile(rb"^[ \t]*mtllib[ \t]+(.+?)[ \t]*$", re.M)
+
+
+def _trimesh_identity() -> tuple:
+    """trimesh's installed version, without importing it (0.7 s with scipy): the name of
+    its dist-info folder and the identity of the RECORD file pip rewrites on every install."""
+    spec = importlib.util.find_spec("trimesh")
+    if spec is None or not spec.submodule_search_locations:
+        return ("no trimesh",)
+    site = Path(next(iter(spec.submodule_search_locations))).parent
+    infos = sorted(p for p in os.listdir(site) if p.startswith("trimesh-") and p.endswith(".dist-info"))
+    return (*infos, *(file_key(site / info / "RECORD") for info in infos))
+
+
+def _mesh_inputs(obj) -> bytes | None:
+    """Everything a file or primitive's vertex arrays are made from, as bytes; None when
+    the disk cache does not keep this mesh (DISK_CACHED_SUFFIXES) or a file is unreadable."""
+    if obj.primitive is not None:
+        return json.dumps(obj.primitive, sort_keys=True).encode("utf-8")
+    path = Path(obj.mesh_path)
+    if path.suffix.lower() not in DISK_CACHED_SUFFIXES:
+        return None
+    try:
+        data = path.read_bytes()
+        parts = [data]
+        if path.suffix.lower() == ".obj":
+            for name in _MTLLIB.findall(data):
+                library = path.parent / os.fsdecode(name)
+                parts.append(library.read_bytes() if library.is_file() else b"missing")
+    except OSError:
+        return None  # load_mesh reports it
+    return b"\0".join(parts)
+
+
+def _prepared_mesh(obj) -> tuple[tuple, float]:
+    """(vertex arrays, largest vertex norm) of a file or primitive: from the disk cache when
+    an earlier process made them from the same bytes, this file's code and the same trimesh
+    and numpy (disk_cache), else read through trimesh and kept there."""
+    inputs = _mesh_inputs(obj)
+    name = None
+    if inputs is not None:
+        name = disk_cache.key("mesh", inputs, Path(__file__).read_bytes(), np.__version__, _trimesh_identity())
+        payload = disk_cache.load("mesh", name)
+        if payload is not None:
+            *arrays, norm = disk_cache.unpack_arrays(payload)
+            return tuple(arrays), float(norm)
+    mesh = load_mesh(obj)
+    arrays = vertex_arrays(mesh)
+    norm = float(np.linalg.norm(mesh.vertices, axis=1).max())
+    if name is not None:
+        disk_cache.store("mesh", name, disk_cache.pack_arrays([*arrays, np.float64(norm)]))
+    return arrays, norm
 
 
 def bounding_radius(obj) -> float:

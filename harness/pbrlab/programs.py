@@ -33,16 +33,16 @@ import re
 import shutil
 import struct
 import tempfile
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
-from . import hlsl, shaders
+from . import hlsl, shaders, source_cache
 from .errors import PbrlabError
 from .file_identity import FileCache, include_closure
+from .locations import PACKAGE_FOLDER
 
-TEMPLATES = Path(str(resources.files("pbrlab").joinpath("templates")))
+TEMPLATES = PACKAGE_FOLDER / "templates"
 FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
 LANGUAGES = tuple(FRAGMENT_SUFFIX)
 DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
@@ -148,7 +148,7 @@ def template_source(name: str, defines: dict, surface: Path | None = None) -> sh
     include, include_dirs = _surface_include(surface)
     text = _fill((TEMPLATES / name).read_text(encoding="utf-8"), defines, include,
                  f"pbrlab/templates/{name}", line_marker=False)
-    return shaders.expand(text, f"pbrlab/templates/{name}", include_dirs=include_dirs)
+    return source_cache.expand(text, f"pbrlab/templates/{name}", include_dirs)
 
 
 def hlsl_template_text(name: str, defines: dict, surface: Path | None = None) -> tuple[str, list]:

@@ -29,17 +29,21 @@ from __future__ import annotations
 import html
 import json
 import os
-import secrets
 import shutil
-from importlib import resources
 from pathlib import Path
-from string import Template
+from typing import TYPE_CHECKING
 
 import pytest
 
-from . import gl, goldens, outputs
-from .compare import TOLERANCE_PROFILES, DiffResult, Tolerance
+from . import golden_names
 from .errors import PbrlabError
+
+if TYPE_CHECKING:
+    from .compare import DiffResult, Tolerance
+
+# Registering the plugin (every pytest run where pbrlab is installed) imports this module and
+# nothing heavy: numpy, moderngl, OpenImageIO and the golden store load when a test uses a
+# fixture (tests/harness/test_plugin_import_cost.py checks; benchmarks/startup.py measures).
 
 RECORDS_DIR = ".pbrlab-records"
 INDEX_NAME = "index.html"
@@ -53,8 +57,8 @@ _WORKER_KEY = "pbrlab_renderer"  # xdist: a worker's renderer, sent back in work
 class _Settings:
     def __init__(self, config: pytest.Config):
         self.update = bool(config.getoption("update_goldens"))
-        self.output_dir = _folder(config, "pbrlab_output", goldens.DEFAULT_OUTPUT_DIR)
-        self.root = _folder(config, "pbrlab_goldens", goldens.DEFAULT_ROOT)
+        self.output_dir = _folder(config, "pbrlab_output", golden_names.DEFAULT_OUTPUT_DIR)
+        self.root = _folder(config, "pbrlab_goldens", golden_names.DEFAULT_ROOT)
         self.records_dir = self.output_dir / RECORDS_DIR
         self.profile = config.getoption("pbrlab_tolerance_profile")
 
@@ -80,7 +84,7 @@ def pytest_addoption(parser: pytest.Parser) -> None:
                     help="where golden failures leave expected/obtained/diff images and "
                          "index.html (default: test-output in the rootdir)")
     group.addoption("--pbrlab-tolerance-profile", metavar="NAME", default="auto",
-                    choices=("auto", *TOLERANCE_PROFILES),
+                    choices=("auto", *golden_names.TOLERANCE_PROFILE_NAMES),
                     help="tolerances goldens are checked with: llvmpipe (bit-identical "
                          "renders), gpu (measured on a real GPU), or auto (by GL_RENDERER; "
                          "the default)")
@@ -124,6 +128,7 @@ def pytest_report_header(config: pytest.Config) -> list[str]:
         return []  # inert: no context, no line (the summary names the renderer if a test used one)
     config.stash[_HEADER_SHOWN] = True
     try:
+        from . import gl
         info = gl.context_info(gl.shared_context())
     except PbrlabError as exc:  # no GL library: say so instead of failing collection
         return [f"pbrlab: {exc}"]
@@ -132,6 +137,7 @@ def pytest_report_header(config: pytest.Config) -> list[str]:
 
 def _shared_context_for(config: pytest.Config):
     """The shared context for a test, noting its renderer for the summary."""
+    from . import gl
     try:
         context = gl.shared_context()
     except PbrlabError as exc:
@@ -165,6 +171,7 @@ class GoldenFixture:
         of a GLSL render) compares, and never writes, even under --update-goldens.
         Tolerances not given come from ``--pbrlab-tolerance-profile``."""
         __tracebackhide__ = True
+        from . import goldens
         update = self.update and not read_only
         try:
             result = goldens.check_golden(
@@ -180,6 +187,9 @@ class GoldenFixture:
         return result
 
     def _record(self, kind, name, *, message="", linear=None, srgb=None, artefacts=None):
+        import secrets
+
+        from . import goldens, outputs
         record = {
             "kind": kind, "name": name, "nodeid": self.nodeid, "message": message,
             "linear": linear.to_dict() if linear else None,
@@ -196,6 +206,7 @@ class GoldenFixture:
 
 @pytest.fixture(scope="session")
 def _pbrlab_renderer_info(request) -> dict:
+    from . import gl
     return gl.context_info(_shared_context_for(request.config))
 
 
@@ -281,6 +292,10 @@ def _metrics(record: dict) -> str:
 
 def write_index(path: Path, failures: list[dict]) -> None:
     """The HTML summary of golden failures: one row each, images side by side."""
+    from importlib import resources
+    from string import Template
+
+    from . import outputs
     rows = []
     for record in failures:
         rows.append(

@@ -20,10 +20,6 @@ import numpy as np
 
 from . import features, gl, gl_limits, ibl, instanced_draws, meshes, resource_cache, surface_bindings, targets
 from . import srgb8 as srgb8_codes
-from .unity import cubemap as unity_cubemap
-from .unity import program as unity_program
-from .unity import program_pass as unity_program_pass
-from .unity import tessellate as unity_tessellate
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from .errors import PbrlabError, SceneError
 from .exposure import metered_exposure
@@ -283,6 +279,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
     def environment_cube():  # made once per render, only if a shader samples a cube
         if not cube_holder:
+            from .unity import cubemap as unity_cubemap  # Unity shaders only: loaded on use
             cube_holder.append(unity_cubemap.environment_cube(ctx, scene.environment))
         return cube_holder[0]
 
@@ -447,6 +444,8 @@ def _program(ctx, stem, material, shading, scene, frame, resources, obj, unity_p
     """The object's program, bound: the harness's surface path or a Unity shader's pass."""
     defines, surface, language, mesh_fragment = shading
     if unity_pass is not None:
+        from .unity import program as unity_program  # Unity shaders only: loaded on use
+        from .unity import program_pass as unity_program_pass
         if unity_pass.kind == "surface":
             program = unity_program.build_program(ctx, unity_pass, language, stem, defines)
         else:
@@ -513,6 +512,7 @@ def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"
     if obj.sphere is not None:  # a sphere whose surface shader moves vertices
+        from .unity import tessellate as unity_tessellate
         vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)

@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import json_input, meshes, unity
+from . import json_input, meshes
 from .errors import SceneError
 from .reference import shading as _shading
 from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA,  # noqa: F401 (re-exported)
@@ -389,7 +389,7 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         setattr(m, key, tuple(value) if isinstance(value, np.ndarray) else value)
     if r.has("surface"):
         m.surface = r.file("surface", base)
-    if m.surface is not None and unity.is_unity_surface(m.surface):
+    if m.surface is not None and _may_be_unity(m.surface) and _unity().is_unity_surface(m.surface):
         _unity_material(r, m, base)
         return m
     if r.has("properties"):
@@ -469,9 +469,26 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     return m
 
 
+def _may_be_unity(path: Path) -> bool:
+    """False when ``path`` cannot be a Unity surface shader (unity.is_unity_surface: a
+    .shader file or a ``#pragma surface`` line): a GLSL surface without the word "pragma"
+    is told apart without loading the Unity reader."""
+    try:
+        return path.suffix == ".shader" or b"pragma" in path.read_bytes()
+    except OSError:
+        return True  # let the reader say what is wrong
+
+
+def _unity():
+    """The Unity shader reader (pbrlab.unity), loaded for scenes with a surface file only."""
+    from . import unity
+    return unity
+
+
 def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     """A material whose surface is a Unity surface shader: its Properties, overridden by
     `properties`; alpha mode and cutoff from its #pragma surface (harness/pbrlab/unity/)."""
+    unity = _unity()
     try:
         m.unity = unity.load_shader(m.surface)
     except unity.UnityShaderError as exc:
@@ -578,16 +595,19 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
     return obj
 
 
-def _gltf_subscene(r: _Reader, base: Path):
+def _gltf_subscene(r: _Reader, base: Path, read_gltf):
     """An object ``{"gltf": "model.glb", "transform": {...}}``: the file's whole scene
     (nodes, materials, lights, camera) placed by the transform. Its materials are named
-    "<file name>/<material>"; its camera serves when the scene gives none."""
-    from .gltf import load_gltf
-
+    "<file name>/<material>"; its camera serves when the scene gives none. ``read_gltf(path)``
+    reads the file (``gltf.load_gltf``): the scene model sits below the importers and is
+    handed their reader (scene_files), never imports it (docs/layers.md)."""
+    if read_gltf is None:
+        r.fail("a glTF object needs the glTF reader: read this scene with pbrlab.scene_files "
+               "(load_scene or parse_scene), as pbrlab render does", "gltf")
     path = r.file("gltf", base)
     transform = _transform(r.child("transform", {}))
     r.finish()
-    sub = load_gltf(path)
+    sub = read_gltf(path)
     prefix = f"{path.name}/"
     materials = {}
     for name, material in sub.scene.materials.items():
@@ -624,11 +644,13 @@ def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
             warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
                           "is not applied to a ray-traced sphere (its front surface only); use a mesh "
                           "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
-                          unity.UnityShaderWarning, stacklevel=3)
+                          _unity().UnityShaderWarning, stacklevel=3)
 
 
-def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scene:
-    """Validate a scene given as parsed JSON; ``base`` resolves relative file paths."""
+def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gltf=None) -> Scene:
+    """Validate a scene given as parsed JSON; ``base`` resolves relative file paths.
+    ``read_gltf``: the reader of ``{"gltf": ...}`` objects (pbrlab.scene_files passes it;
+    without it such an object is refused)."""
     base = Path(base or ".")
     data = json_input.normalize(data, origin)  # a checked copy: the caller's data is never changed
     top = _Reader(data, "", origin)
@@ -649,7 +671,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     for i, o in enumerate(objects_raw):
         if isinstance(o, dict) and "gltf" in o:
             sub_objects, sub_materials, sub_lights, sub_camera, sub_files = _gltf_subscene(
-                _Reader(o, f"objects[{i}]", origin), base)
+                _Reader(o, f"objects[{i}]", origin), base, read_gltf)
             read_files += sub_files
             objects += sub_objects
             materials.update(sub_materials)
@@ -680,7 +702,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 
 
-def load_scene(path) -> Scene:
-    """Read and validate a scene file."""
+def load_scene(path, read_gltf=None) -> Scene:
+    """Read and validate a JSON scene file (``read_gltf``: see parse_scene; a scene file of
+    either format: pbrlab.scene_files.load_scene)."""
     path = Path(path)
-    return parse_scene(json_input.read_json_file(path), str(path), path.parent)
+    return parse_scene(json_input.read_json_file(path), str(path), path.parent, read_gltf)

@@ -17,6 +17,7 @@ includer). A message "N:L(col): error: ..." maps back to ``path:line:col``.
 
 from __future__ import annotations
 
+import functools
 import re
 import warnings
 from dataclasses import dataclass, field
@@ -31,6 +32,9 @@ GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or th
 UMBRELLA_INCLUDE = "pbr/pbr.glsl"
 LINE_BLOCK = 100000  # lines per file in the #line numbering; files are far shorter
 
+# Files whose lines were classified (_scan), by content: a scene's dozen programs read the
+# same thirty library files, and classifying their lines again cost 0.3 s of a render.
+_SCANS_KEPT = 512
 _INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*(//.*)?$')
 _VERSION = re.compile(r"^\s*#\s*version\b")
 _IF = re.compile(r"^\s*#\s*if(n?def)?\b")
@@ -38,6 +42,7 @@ _ENDIF = re.compile(r"^\s*#\s*endif\b")
 _GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*ifndef\s+(\w+)\s*\n\s*#\s*define\s+\1\b.*#\s*endif[^\n]*\s*\Z", re.S)
 
 
+@functools.lru_cache(maxsize=_SCANS_KEPT)
 def _is_guarded(text: str) -> bool:
     """True when the whole file sits inside its own #ifndef/#define/#endif guard."""
     return _GUARD.match(text) is not None
@@ -63,6 +68,7 @@ class Source:
     text: str
     files: list[str] = field(default_factory=list)
     paths: list[Path] = field(default_factory=list)  # every include file read (resolved)
+    probed: list[Path] = field(default_factory=list)  # every place an include was looked for
 
     def map_messages(self, log: str) -> str:
         """Rewrite compiler messages from 'N:L(C)' to 'path:L:C'."""
@@ -86,17 +92,26 @@ def include_path(extra_dirs=()) -> list[Path]:
     return [Path(d) for d in extra_dirs] + [GLSL_ROOT]
 
 
-def resolve_include(name: str, search: list[Path]) -> Path | None:
+def resolve_include(name: str, search: list[Path], probed: list | None = None) -> Path | None:
+    """The first file ``name`` in ``search``; each place looked at is added to ``probed``
+    (a file created there later would change the answer: source_cache checks them)."""
     for directory in search:
         candidate = directory / name
+        if probed is not None:
+            probed.append(candidate)
         if candidate.is_file():
             return candidate.resolve()
     return None
 
 
+@functools.lru_cache(maxsize=8)
+def _resolved(folder: Path) -> Path:
+    return folder.resolve()
+
+
 def _display_name(path: Path) -> str:
     try:
-        return str(path.relative_to(GLSL_ROOT.resolve()))
+        return str(path.relative_to(_resolved(GLSL_ROOT)))
     except ValueError:
         return str(path)
 
@@ -104,6 +119,8 @@ def _display_name(path: Path) -> str:
 def _ends_in_block_comment(line: str, in_comment: bool) -> bool:
     """Whether a ``/* */`` comment is still open at the end of ``line`` (open at its start
     when ``in_comment``); ``//`` ends the line's code."""
+    if "/" not in line:  # no comment opens or closes here
+        return in_comment
     i = 0
     while i < len(line):
         pair = line[i:i + 2]
@@ -120,6 +137,36 @@ def _ends_in_block_comment(line: str, in_comment: bool) -> bool:
     return in_comment
 
 
+@dataclass(frozen=True)
+class _Line:
+    """One line of a shader file as ``expand`` reads it (_scan)."""
+    text: str              # as written
+    out: str               # as emitted when it is not an include: '#include' neutralised
+    in_comment: bool       # starts inside a /* */ comment: commentary, whatever it holds
+    depth_step: int        # +1 for #if/#ifdef/#ifndef, -1 for #endif, else 0
+    version: bool          # a #version line
+    include: str | None    # the name of an #include "..." line
+
+
+@functools.lru_cache(maxsize=_SCANS_KEPT)
+def _scan(body: str) -> tuple[_Line, ...]:
+    """The lines of a file's text, classified once per distinct text (a file always starts
+    outside a comment, so its lines classify the same wherever it is included)."""
+    lines = []
+    in_comment = False
+    for line in body.splitlines():
+        starts_in_comment, in_comment = in_comment, _ends_in_block_comment(line, in_comment)
+        out = line.replace("#include", "# include")
+        if starts_in_comment:
+            lines.append(_Line(line, out, True, 0, False, None))
+            continue
+        step = 1 if _IF.match(line) else -1 if _ENDIF.match(line) else 0
+        m = _INCLUDE.match(line)
+        lines.append(_Line(line, out, False, step, _VERSION.match(line) is not None,
+                           m.group(1) if m else None))
+    return tuple(lines)
+
+
 def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True,
            virtual: dict | None = None) -> Source:
     """Expand the includes of ``text`` (named ``name`` in messages).
@@ -134,6 +181,8 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
     # A guarded file included once outside any #if is written once: a second copy would
     # be empty after preprocessing. Includes inside conditionals are always expanded.
     emitted_guarded: set[Path] = set()
+    resolved: dict[str, Path | None] = {}  # include name -> file, once per expansion
+    texts: dict[Path, str] = {}  # file -> its text, read once per expansion
     lines_out: list[str] = []
     version_line: list[str] = []
 
@@ -146,64 +195,63 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
         source.files.append(display)
         emit_line_marker(file_index, first_line)
         depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
-        in_comment = False  # inside a /* */ comment at the start of the line
-        for number, line in enumerate(body.splitlines(), start=first_line):
-            starts_in_comment, in_comment = in_comment, _ends_in_block_comment(line, in_comment)
-            if starts_in_comment:  # commentary, whatever it looks like (an #include, an #if)
-                lines_out.append(line.replace("#include", "# include"))
+        for number, scanned in enumerate(_scan(body), start=first_line):
+            if scanned.in_comment:  # commentary, whatever it looks like (an #include, an #if)
+                lines_out.append(scanned.out)
                 continue
-            if _IF.match(line):
-                depth += 1
-            elif _ENDIF.match(line):
-                depth -= 1
-            if _VERSION.match(line):
+            depth += scanned.depth_step
+            if scanned.version:
                 if not version_line and not stack[:-1]:
-                    version_line.append(line.strip())
+                    version_line.append(scanned.text.strip())
                     lines_out.append("")  # keep line numbers: the #version line is hoisted
                     continue
                 raise PbrlabError(f"{display}:{number}: #version is allowed only in the entry shader")
-            m = _INCLUDE.match(line)
-            if not m:
+            if scanned.include is None:
                 # moderngl resolves '#include' wherever it appears, comments included;
                 # what is left after expansion is commentary, so it is neutralised.
-                lines_out.append(line.replace("#include", "# include"))
+                lines_out.append(scanned.out)
                 continue
-            if m.group(1) in virtual:
-                made = virtual[m.group(1)]
-                marker = Path(f"<virtual {m.group(1)}>")
+            included = scanned.include
+            if included in virtual:
+                made = virtual[included]
+                marker = Path(f"<virtual {included}>")
                 if marker in stack:
                     raise PbrlabError(f"{display}:{number}: include cycle through {made.display}")
                 walk(made.text, made.display, stack + (marker,), conditional or depth > 0, made.first_line)
                 emit_line_marker(file_index, number + 1)
                 continue
-            target = resolve_include(m.group(1), search)
+            if included not in resolved:  # once per name and expansion: the search path is fixed
+                resolved[included] = resolve_include(included, search, source.probed)
+            target = resolved[included]
             if target is None and (conditional or depth > 0):
                 # under an #if: the compiler's preprocessor decides whether this line is read, so
                 # the missing file is an #error there (reported at this file and line if it is)
-                lines_out.append(f'#error cannot find include "{m.group(1)}"')
+                lines_out.append(f'#error cannot find include "{included}"')
                 continue
             if target is None:
                 raise PbrlabError(
-                    f"{display}:{number}: cannot find include \"{m.group(1)}\" "
+                    f"{display}:{number}: cannot find include \"{included}\" "
                     f"(searched: {', '.join(str(d) for d in search)})")
             if target in stack:
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
-            body = read_source(target, f"{display}:{number}: ")
             source.paths.append(target)
             inside_conditional = conditional or depth > 0
-            if target in emitted_guarded:
-                lines_out.append(f"// ---- {m.group(1)}: already above (include guard)")
+            if target in emitted_guarded:  # read once already, in this expansion
+                lines_out.append(f"// ---- {included}: already above (include guard)")
                 continue
+            if target not in texts:
+                texts[target] = read_source(target, f"{display}:{number}: ")
+            body = texts[target]
             if _is_guarded(body) and not inside_conditional:
                 emitted_guarded.add(target)
             if not line_directives:
-                lines_out.append(f"// ---- begin {m.group(1)}")
+                lines_out.append(f"// ---- begin {included}")
             walk(body, _display_name(target), stack + (target,), inside_conditional)
             if line_directives:
                 emit_line_marker(file_index, number + 1)
             else:
-                lines_out.append(f"// ---- end {m.group(1)}")
+                lines_out.append(f"// ---- end {included}")
 
     walk(text, name, (Path("<entry>"),), False)
     head = version_line or []
@@ -265,6 +313,9 @@ def loop_limit_warnings(source: Source, limit: int = LLVMPIPE_LOOP_LIMIT) -> lis
     found = []
     file_index, line_number = 0, 0
     for raw in source.text.splitlines():
+        if "line" not in raw and "for" not in raw:  # neither a #line nor a loop: skip the patterns
+            line_number += 1
+            continue
         m = _LINE_DIRECTIVE.match(raw)
         if m:  # the next line is line L of file K (#line K * LINE_BLOCK + L K)
             file_index, next_line = divmod(int(m.group(1)), LINE_BLOCK)

@@ -89,13 +89,9 @@ def integrate_sheen_albedo(NdotV, sheen_perceptual_roughness, visibility="CHARLI
     return out.reshape(shape)
 
 
-def lut_axes(NdotV, sheen_perceptual_roughness):
-    """(x, y) in [0, 1] of the table's warped axes (pbr_sheen_lut_uv before the texel centring)."""
-    NdotV = np.clip(np.asarray(NdotV, np.float64), 0.0, 1.0)
-    r = np.clip(np.asarray(sheen_perceptual_roughness, np.float64), 0.0, 1.0)
-    x = np.log2(np.maximum(NdotV, LUT_MIN_NDOTV) / LUT_MIN_NDOTV) / np.log2(1.0 / LUT_MIN_NDOTV)
-    y = np.log2(np.maximum(r, MIN_ROUGHNESS) / MIN_ROUGHNESS) / np.log2(1.0 / MIN_ROUGHNESS)
-    return np.clip(x, 0.0, 1.0), np.clip(y, 0.0, 1.0)
+# The table's warped axes live with the reference (the fit in reference/sheen.py reads them
+# too, and a reference never imports this module's GL side: docs/layers.md).
+lut_axes = ref_sheen.lut_axes
 
 
 def lut_texel_coordinates(x, y):

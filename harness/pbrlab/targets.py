@@ -163,3 +163,21 @@ def _upload_levels(ctx, tex, levels, internal_format) -> None:
         gl_type = _GL_UNSIGNED_BYTE if data.dtype == np.uint8 else _GL_FLOAT
         tex_image_2d(_GL_TEXTURE_2D, index, internal_format, width, height, 0,
                      _GL_FORMATS[channels], gl_type, data.ctypes.data)  # copies before returning
+
+
+_GL_TEXTURE_MAX_LEVEL = 0x813D
+
+
+def float_texture_from_levels(ctx: moderngl.Context, levels) -> moderngl.Texture:
+    """A float texture whose mip levels are ``levels`` (each HxWxC float32, GL row order,
+    level 0 first; a chain that may stop before 1x1): glTexImage2D per level and
+    GL_TEXTURE_MAX_LEVEL at the last. Not glGenerateMipmap on an empty texture: its first call
+    in a process sets up llvmpipe's blitter (about 30 ms of a render's start-up, issue 25)."""
+    first = np.ascontiguousarray(levels[0], np.float32)
+    height, width, channels = first.shape
+    tex = ctx.texture((width, height), channels, first.tobytes(), dtype="f4")
+    _upload_levels(ctx, tex, [np.asarray(level, np.float32) for level in levels[1:]],
+                   _GL_INTERNAL_FORMATS["f4"][channels])
+    tex.use(ctx.info["GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS"] - 1)  # as _upload_levels binds it
+    gl.gl_function(ctx, "glTexParameteri")(_GL_TEXTURE_2D, _GL_TEXTURE_MAX_LEVEL, len(levels) - 1)
+    return tex

@@ -16,6 +16,7 @@ from pbrlab.gltf.materials import FLIP_V
 from pbrlab.gltf.tangents import mikktspace_tangents
 from pbrlab.errors import SceneError
 from pbrlab.render import render_scene
+from pbrlab import scene_files
 from pbrlab.scene import load_scene, parse_scene
 
 from gltf_helpers import blob, quad_document, set_blob, write
@@ -248,7 +249,7 @@ def test_gltf_sub_scene_in_a_json_scene(tmp_path, gl_context):
         "materials": {"white": {}},
         "objects": [{"sphere": {"center": [0, 4, 0], "radius": 0.3}, "material": "white"},
                     {"gltf": str(ASSETS / "hierarchy_lights.glb"), "transform": {"translate": [0, 0, -1]}}]}))
-    scene = load_scene(scene_file)
+    scene = scene_files.load_scene(scene_file)  # the loader above the scene model hands it the glTF reader
     direct = load_gltf(ASSETS / "hierarchy_lights.glb", emit_warnings=False).scene
     assert len(scene.objects) == 1 + len(direct.objects) and len(scene.lights) == 3
     assert "hierarchy_lights.glb/gold_metal" in scene.materials

@@ -42,6 +42,7 @@ def _write_inputs(tmp_path, albedo_level, sky_level):
 
 
 def test_second_render_reads_and_prefilters_nothing(tmp_path, gl_context, monkeypatch):
+    monkeypatch.setenv("PBRLAB_CACHE_DIR", str(tmp_path / "cache"))  # empty: no earlier process's meshes
     albedo, sky = _write_inputs(tmp_path, 200, 0.5)
     scene = _textured_scene(tmp_path, albedo, sky)
     reads = _count_calls(monkeypatch, resource_cache, "read_image")

@@ -136,7 +136,19 @@ def _specialisation_scenes() -> dict:
 
 
 def run(out_dir, family: str | None = None, quick: bool = False, progress=measure.progress) -> dict:
-    """Measure, write the outputs into ``out_dir`` and return the JSON document."""
+    """Measure, write the outputs into ``out_dir`` and return the JSON document. Each step
+    prints a line when it starts and, on a terminal, a live line with its seconds once it has
+    run two seconds (pbrlab.progress)."""
+    from .. import progress as live
+
+    stages = live.Stages()
+    try:
+        return _measure_and_write(out_dir, family, quick, progress, stages)
+    finally:
+        stages.close()
+
+
+def _measure_and_write(out_dir, family, quick, progress, stages) -> dict:
     from .. import outputs
     from ..errors import PbrlabError
 
@@ -158,6 +170,7 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
 
     def tick(what):
         progress(f"[{next(step)}/{steps}] {what}")
+        stages.start(what)
 
     machine = measure.machine_info()
     errors = {}
@@ -182,6 +195,7 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
     tier_images = measure.tier_image_error(scale=settings.tier_image_scale)
     tick("GPU ISA: the kernels and the scenes' programs for RDNA3, RDNA2, GCN5 (RADV null device)")
     isa = gpu.measure(kernels, plans, families_mod.BY_NAME, _specialisation_scenes())
+    stages.close()
     if not isa["available"]:
         progress(f"GPU ISA columns NOT measured: {isa['reason']}")
     machine["gpu_isa_devices"] = isa["devices"]

@@ -19,7 +19,7 @@ from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import console, contact_sheets, gl, images, outputs
+    from .. import console, contact_sheets, gl, images, outputs, progress
     from ..errors import PbrlabError
     from ..charts import CHARTS
     from ..golden_scenes import GOLDEN_SCENES
@@ -46,7 +46,8 @@ def run(args) -> int:
     entries = []
     names = [*CHARTS, "lit_scene_high"]
     for name in names:
-        rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
+        with progress.stage(f"rendering {name}"):  # a live line on a terminal past 2 s
+            rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
         with outputs.transaction([png, exr]) as tx:  # the pair, or neither

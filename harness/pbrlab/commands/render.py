@@ -36,19 +36,23 @@ def check_finite(linear: np.ndarray, what: str):
 
 def load_scene_with_gltf_warnings(path):
     """A JSON scene and the warnings of the glTF files it takes in (GltfWarning)."""
+    import sys
     import warnings
 
-    from ..gltf import GltfWarning
-    from ..scene import load_scene
+    from ..scene_files import load_scene
 
+    # Every warning is recorded: the glTF importer (and its GltfWarning) is loaded only if the
+    # scene takes in a glTF file, so its warnings are told apart after the load.
     with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", GltfWarning)
+        warnings.simplefilter("always")
         scene = load_scene(path)
-    messages = []
+    gltf = sys.modules.get("pbrlab.gltf")
+    messages, passed_on = [], set()
     for w in caught:
-        if issubclass(w.category, GltfWarning):
+        if gltf is not None and issubclass(w.category, gltf.GltfWarning):
             messages.append(str(w.message))
-        else:
+        elif (key := (str(w.message), w.category, w.filename, w.lineno)) not in passed_on:
+            passed_on.add(key)  # once per message and place, as the default filter would
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     return scene, messages
 
@@ -85,8 +89,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     import sys
     from pathlib import Path
 
-    from ..gltf import is_gltf, load_gltf
-    from ..gltf.settings import light_units_default, read_settings
+    from ..scene_files import is_gltf
 
     if not is_gltf(path):
         if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)):
@@ -96,6 +99,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
+    from ..gltf import load_gltf
+    from ..gltf.settings import light_units_default, read_settings
+
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
                        variant=variant, scene=scene, weights=weights, time=time, animation=animation)
@@ -108,7 +114,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 
 
 def run(args) -> int:
-    from .. import gl, images, outputs
+    from .. import gl, images, outputs, progress
     from ..render import input_files, render_scene
 
     if not args.output and not args.hdr:
@@ -125,8 +131,9 @@ def run(args) -> int:
     targets = [p for p in (args.hdr, args.output) if p]
     with outputs.transaction(targets, [(args.scene, "the scene file")]
                              + input_files(scene, args.language)) as tx:
-        rendering = render_scene(scene, context, size=size,
-                                 specialise=not args.no_specialise, language=args.language)
+        with progress.stage(f"rendering {args.scene}"):  # a live line on a terminal past 2 s
+            rendering = render_scene(scene, context, size=size,
+                                     specialise=not args.no_specialise, language=args.language)
         if scene.render.exposure_metered:
             console.note(f"exposure {rendering.exposure_ev:+.2f} EV (metered), tonemap {scene.render.tonemap}")
         kind = "specialised" if rendering.programs.specialised else "full"

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import SceneError
-from ..resource_cache import file_key
+from ..file_identity import file_key
 from ..scene import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document

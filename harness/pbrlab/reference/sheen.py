@@ -118,10 +118,21 @@ def sheen_albedo_scaling_punctual(sheen_color, E_view, E_light):
     return np.minimum(sheen_albedo_scaling(sheen_color, E_view), sheen_albedo_scaling(sheen_color, E_light))
 
 
+def lut_axes(NdotV, sheen_perceptual_roughness):
+    """(x, y) in [0, 1] of the sheen albedo table's warped axes (pbr_sheen_lut_uv before the
+    texel centring): log-spaced from MIN_NDOTV and SHEEN_MIN_PERCEPTUAL_ROUGHNESS to 1. The
+    table (sheen_table.py) and the fit below share them."""
+    NdotV = np.clip(np.asarray(NdotV, np.float64), 0.0, 1.0)
+    r = np.clip(np.asarray(sheen_perceptual_roughness, np.float64), 0.0, 1.0)
+    x = np.log2(np.maximum(NdotV, MIN_NDOTV) / MIN_NDOTV) / np.log2(1.0 / MIN_NDOTV)
+    y = np.log2(np.maximum(r, SHEEN_MIN_PERCEPTUAL_ROUGHNESS) / SHEEN_MIN_PERCEPTUAL_ROUGHNESS) \
+        / np.log2(1.0 / SHEEN_MIN_PERCEPTUAL_ROUGHNESS)
+    return np.clip(x, 0.0, 1.0), np.clip(y, 0.0, 1.0)
+
+
 def sheen_albedo_approx(NdotV, sheen_perceptual_roughness):
     """pbr_sheen_albedo_approx: the fit exp(sum_i x^i C_i . (1, y, y², y³)) - offset, on the
-    table's axes (sheen_table.lut_axes), floored at 0."""
-    from ..sheen_table import lut_axes
+    table's axes (lut_axes), floored at 0."""
     x, y = lut_axes(NdotV, sheen_perceptual_roughness)
     C = np.asarray(SHEEN_ALBEDO_APPROX, np.float64)
     ys = np.stack([np.ones_like(y), y, y * y, y * y * y], axis=-1)
