@@ -19,20 +19,20 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         "errors", "locations", "console", "progress", "outputs", "file_identity", "disk_cache",
         "json_input", "images", "golden_names", "layers")),
     ("maths and references", (
-        "reference", "srgb8", "mipmaps", "camera")),
+        "reference", "srgb8", "mipmaps", "camera", "exposure")),
     ("GL and programs", (
         "gl", "gl_limits", "shaders", "source_cache", "hlsl", "programs", "surface_bindings", "targets", "evaluator",
-        "ibl", "sheen_table", "port_hlsl", "gpu_isa")),
+        "ibl", "sheen_table", "engine_tables", "port_hlsl", "gpu_isa", "__init__")),
     ("scene sources", (
         "meshes", "environment", "unity")),
     ("scene model", (
-        "scene",)),
+        "scene_fields", "scene", "scene_schema")),
     ("importers", (
         "gltf",)),
     ("scene files", (
         "scene_files",)),
     ("rendering", (
-        "features", "depth_range", "resource_cache", "render", "cpu_render")),
+        "features", "depth_range", "resource_cache", "instanced_draws", "render", "cpu_render")),
     ("checking", (
         "compare", "goldens", "charts", "golden_scenes", "contact_sheets", "codescan", "hardcases",
         "pyrender_compat", "pyrender_check", "pyrender_figure", "pyrender_gltf_check", "sample_viewer",
@@ -40,7 +40,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("bench", (
         "bench",)),
     ("commands", (
-        "commands", "cli", "__init__")),
+        "commands", "cli")),
 )
 
 
