@@ -1,13 +1,20 @@
-"""The independent float64 CPU renderer for analytic scenes (spheres only).
+"""The independent float64 CPU renderer for analytic scenes and untextured meshes.
 
 Same camera rays (camera.camera_rays), ray-sphere intersection, lights and shading as
 the GPU renderer, computed in float64 numpy with ``pbrlab.reference`` instead of the
-GLSL library. Goldens of analytic scenes are checked against it.
+GLSL library. Goldens of analytic scenes are checked against it, and the goldens of the
+layered glTF assets where their materials are untextured.
 
-Scope: opaque spheres with the default surface (no texture maps; a clear coat along the
+Meshes: ray-triangle intersection (Möller & Trumbore 1997) against the triangles in world
+space, the normal and tangent interpolated barycentrically as the rasteriser interpolates
+mesh.vert's outputs (normal matrix, model matrix), back faces of single-sided materials
+culled. ``unmodelled="nan"`` renders a textured material's pixels as NaN instead of refusing
+the scene, so a check compares the rest.
+
+Scope: opaque spheres and meshes with the default surface (no texture maps; a clear coat along the
 geometric normal; a sheen; an anisotropic base along the sphere's tangent; a thin film of
-the maximum thickness; a transmission, thin or through a volume, that sees the constant
-environment); environments of
+the maximum thickness; a transmission, thin or through a volume, that sees the scene's other
+spheres over the constant environment: ``transmission_copy``); environments of
 constant radiance, whose prefiltered radiance is that constant at every roughness. The
 environment BRDF (A, B), which the split sum and the diffuse-specular coupling of every light
 read, is the float64 integral of reference/directional_albedo.py at each pixel's exact
@@ -31,6 +38,7 @@ from .reference import material as ref_material
 from .reference import remap as ref_remap
 from .reference import shading as ref_shading
 from .reference import surface as ref_surface
+from .reference import transmission as ref_transmission
 from .reference import unity_brdf as ref_unity
 
 
@@ -105,37 +113,47 @@ def _unity_shading(scene, material, n, v, p, env_sh, quality):
     return color
 
 
-def render_scene_cpu(scene) -> np.ndarray:
-    """HxWx4 float64 radiance of an analytic scene, top row first."""
+UNMODELLED = ("raise", "nan")
+
+
+def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
+    """HxWx4 float64 radiance of an analytic scene, top row first (``unmodelled``: see the
+    module's doc)."""
     from .depth_range import scene_frame
 
-    if scene.meshes:
-        raise PbrlabError("the CPU reference renders analytic scenes (spheres) only")
+    if unmodelled not in UNMODELLED:
+        raise ValueError(f"unmodelled={unmodelled!r}: expected one of {UNMODELLED}")
     if scene.environment is not None and scene.environment.color is None:
         raise PbrlabError("the CPU reference handles constant environments only")
     for name, material in scene.materials.items():
-        if material.textures or material.surface or material.alpha_mode != "opaque":
+        if material.surface or material.unity is not None or material.alpha_mode != "opaque" or (
+                material.textures and unmodelled == "raise"):
             raise PbrlabError(f"material {name}: the CPU reference renders opaque, untextured "
                               "materials with the default surface")
     quality = scene.render.quality.upper()
     frame = scene_frame(scene)
     d = camera_rays(frame)
     origin = frame.position
-    hits = np.stack([_intersect(origin, d, c, r) for c, r in (o.sphere for o in scene.spheres)])
-    nearest = np.argmin(hits, axis=0)
-    t = np.min(hits, axis=0)
-    out = np.zeros(d.shape[:2] + (4,))  # alpha 0 where no sphere is hit, as on the GPU
+    out = np.zeros(d.shape[:2] + (4,))  # alpha 0 where nothing is hit, as on the GPU
+    if not scene.objects:
+        return out
+    copy = transmission_copy(scene, unmodelled)
+    hits = [_sphere_hit(origin, d, obj) if obj.sphere is not None else _mesh_hit(origin, d, obj, scene)
+            for obj in scene.objects]
+    nearest = np.argmin(np.stack([hit.t for hit in hits]), axis=0)
+    t = np.min(np.stack([hit.t for hit in hits]), axis=0)
     env_sh = environment_sh(scene.environment) if scene.environment is not None else None
-    for index, obj in enumerate(scene.spheres):
+    for index, (obj, hit) in enumerate(zip(scene.objects, hits)):
         mask = (nearest == index) & np.isfinite(t)
         if not mask.any():
             continue
         material = scene.materials[obj.material]
-        centre, _ = obj.sphere
+        if material.textures:  # unmodelled == "nan"
+            out[mask] = np.nan
+            continue
         dm = d[mask]
         p = origin + t[mask][:, None] * dm
-        n = p - centre
-        n /= np.linalg.norm(n, axis=-1, keepdims=True)
+        n, tangent = hit.frame(mask, p)
         v = -dm
         color = np.broadcast_to(material.emission, p.shape).copy()
         if scene.render.brdf_model == "unity":
@@ -163,7 +181,8 @@ def render_scene_cpu(scene) -> np.ndarray:
             diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
             diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f))
-        direction = _sphere_anisotropy_direction(n, material.anisotropy_rotation)
+        direction = (_sphere_anisotropy_direction(n, material.anisotropy_rotation) if tangent is None
+                     else _anisotropy_direction(n, tangent, material.anisotropy_rotation))
         for light in scene.lights:
             l, radiance = _light_terms(light, p)
             if material.anisotropy_strength > 0.0:  # the base's lobe stretched (no indirect here)
@@ -181,8 +200,8 @@ def render_scene_cpu(scene) -> np.ndarray:
                 l, radiance = _light_terms(light, p)
                 color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v, l,
                                                            radiance, zero, **terms)
-            if env_sh is not None:
-                behind = np.broadcast_to(scene.environment.color * scene.environment.intensity, p.shape)
+            if env_sh is not None or copy is not None:
+                behind = _seen_through(scene, frame, copy, material, p, n, v)
                 color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v,
                                                            n, zero, behind, **terms)
         if env_sh is not None:
@@ -202,6 +221,169 @@ def render_scene_cpu(scene) -> np.ndarray:
         out[mask, :3] = color
         out[mask, 3] = 1.0  # opaque: coverage
     return out
+
+
+def transmitted_fraction(scene, material, n, v) -> np.ndarray:
+    """[..., 3] float64: the fraction of the radiance seen through ``material`` (at normals n,
+    views v) that reaches the camera: pbrlab.reference.surface.lighting_transmission with a
+    transmitted radiance of 1 and no light, rho (1 - E_spec) x transmission x Beer-Lambert
+    over the thickness. A base without coat, sheen or film (the layers over it change what
+    leaves the surface, which this fraction leaves out)."""
+    if material.clearcoat > 0.0 or max(material.sheen_color) > 0.0 or material.iridescence > 0.0:
+        raise PbrlabError("transmitted_fraction: a transmissive base without a coat, sheen or film")
+    quality = scene.render.quality.upper()
+    n, v = np.asarray(n, float).reshape(-1, 3), np.asarray(v, float).reshape(-1, 3)
+    diffuse, _, coat_f0, rough = _surface(material)
+    r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
+    NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+    dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
+    zero = np.zeros(n.shape)
+    return ref_surface.lighting_transmission(
+        diffuse, coat_f0, rough, material.occlusion, n, v, n, zero, np.ones(n.shape), dfg,
+        factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
+        attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
+        specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
+        energy_compensated=scene.render.energy_compensation)
+
+
+def _transmits(material) -> bool:
+    return material.transmission > 0.0
+
+
+def transmission_copy(scene, unmodelled: str = "raise") -> np.ndarray | None:
+    """The scene a transmissive sphere sees (as transmission_copy.py draws it on the GPU): the
+    float64 render of every sphere whose material does not transmit, radiance x coverage and
+    coverage; None when no sphere transmits."""
+    import dataclasses
+
+    if not any(_transmits(scene.materials[o.material]) for o in scene.objects):
+        return None
+    behind = [o for o in scene.objects if not _transmits(scene.materials[o.material])]
+    return render_scene_cpu(dataclasses.replace(scene, objects=behind), unmodelled)
+
+
+def _seen_through(scene, frame, copy, material, p, n, v):
+    """What a transmissive pixel sees (templates/transmission_scene.inc): along the
+    transmitted direction d (-v thin-walled, refracted into a volume: reference/transmission.py
+    refraction_direction), the point p + d · thickness projected by the camera, the copy read
+    there bilinearly at its finest level, over the constant environment: copy.rgb + (1 -
+    copy.a) · environment, the environment alone off screen. The GPU reads the copy's mip
+    level log2(max(width, height)) · perceptual roughness, a blur of about 2^level pixels: the
+    two agree where the copy is uniform over that blur, not at its edges."""
+    environment = np.zeros(p.shape)
+    if scene.environment is not None:
+        environment = np.broadcast_to(np.asarray(scene.environment.color, float) * scene.environment.intensity, p.shape)
+    if copy is None:
+        return environment
+    if material.thickness > 0.0:
+        d = ref_transmission.refraction_direction(n, v, np.full(len(n), material.ior))
+    else:
+        d = -v
+    exit_point = p + d * material.thickness
+    clip = np.concatenate([exit_point, np.ones((len(p), 1))], axis=-1) @ frame.view_proj.T
+    w = clip[:, 3]
+    uv = clip[:, :2] / np.maximum(w, np.finfo(np.float32).tiny)[:, None] * 0.5 + 0.5
+    on_screen = (w > 0) & np.all((uv >= 0.0) & (uv <= 1.0), axis=-1)
+    height, width = copy.shape[:2]
+    # texel coordinates of the top-row-first copy: texel centres at integers
+    x = np.clip(uv[:, 0] * width - 0.5, 0.0, width - 1.0)
+    y = np.clip((1.0 - uv[:, 1]) * height - 0.5, 0.0, height - 1.0)
+    x0, y0 = np.floor(x).astype(int), np.floor(y).astype(int)
+    x1, y1 = np.minimum(x0 + 1, width - 1), np.minimum(y0 + 1, height - 1)
+    fx, fy = (x - x0)[:, None], (y - y0)[:, None]
+    texel = ((copy[y0, x0] * (1 - fx) + copy[y0, x1] * fx) * (1 - fy)
+             + (copy[y1, x0] * (1 - fx) + copy[y1, x1] * fx) * fy)
+    seen = texel[:, :3] + (1.0 - np.clip(texel[:, 3:], 0.0, 1.0)) * environment
+    return np.where(on_screen[:, None], seen, environment)
+
+
+class _Hit:
+    """One object's nearest hit distance per ray (inf where missed) and ``frame(mask, p)``:
+    the unit normal and the tangent (xyz, w; None for a sphere) at the hit points p of the
+    rays in ``mask``."""
+
+    def __init__(self, t, frame):
+        self.t, self.frame = t, frame
+
+
+def _sphere_hit(origin, d, obj):
+    centre, radius = obj.sphere
+
+    def frame(mask, p):
+        n = p - centre
+        return n / np.linalg.norm(n, axis=-1, keepdims=True), None
+    return _Hit(_intersect(origin, d, centre, radius), frame)
+
+
+# Möller & Trumbore 1997: a determinant below this (|edge1 x edge2| in units of the scene
+# squared, times the ray's sine) is a ray parallel to the triangle: no hit.
+_PARALLEL_DETERMINANT = 1e-12
+
+
+def _mesh_hit(origin, d, obj, scene):
+    """The nearest front-facing (any facing for a double-sided material) triangle along each
+    ray (Möller & Trumbore 1997, "Fast, minimum storage ray-triangle intersection"), with its
+    barycentric coordinates; the frame interpolates the vertex normals (through the normal
+    matrix) and tangents (through the model matrix) as the rasteriser does."""
+    from . import meshes
+
+    positions, normals, _, tangents, indices = meshes.mesh_data(obj).arrays[:5]
+    m = np.asarray(obj.transform, float)
+    world = np.asarray(positions, float) @ m[:3, :3].T + m[:3, 3]
+    tri = np.asarray(indices).reshape(-1, 3)
+    material = scene.materials[obj.material]
+    two_sided = bool(material.double_sided)
+    # only the rays that meet the mesh's bounding sphere are tested against its triangles
+    lo, hi = world.min(axis=0), world.max(axis=0)
+    centre = (lo + hi) / 2
+    bound = float(np.linalg.norm(world - centre, axis=-1).max()) * (1 + 1e-9) + 1e-12
+    near = np.isfinite(_intersect(origin, d, centre, bound)).reshape(-1) | bool(
+        np.linalg.norm(origin - centre) <= bound)
+    rays = d.reshape(-1, 3)[near]
+    best_t = np.full(len(rays), np.inf)
+    best = np.zeros((len(rays), 3))  # triangle, u, v of the nearest hit
+    for k, (a, b, c) in enumerate(world[tri]):
+        e1, e2 = b - a, c - a
+        pvec = np.cross(rays, e2)
+        det = pvec @ e1
+        facing = det > _PARALLEL_DETERMINANT if not two_sided else np.abs(det) > _PARALLEL_DETERMINANT
+        inv = np.where(facing, 1.0 / np.where(facing, det, 1.0), 0.0)
+        tvec = origin - a
+        u = (pvec @ tvec) * inv
+        qvec = np.cross(tvec, e1)
+        v = (rays @ qvec) * inv
+        t = (qvec @ e2) * inv
+        hit = facing & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0) & (t < best_t)
+        best_t = np.where(hit, t, best_t)
+        best[hit] = np.stack([np.full(hit.sum(), k), u[hit], v[hit]], axis=-1)
+    normal_matrix = np.linalg.inv(m[:3, :3]).T
+    every_t = np.full(near.shape, np.inf)
+    every_t[near] = best_t
+    every = np.zeros((len(near), 3))
+    every[near] = best
+
+    def frame(mask, p):
+        chosen = every[mask.reshape(-1)]
+        corners = tri[chosen[:, 0].astype(int)]
+        weights = np.stack([1 - chosen[:, 1] - chosen[:, 2], chosen[:, 1], chosen[:, 2]], axis=-1)
+        n = np.einsum("rk,rkc->rc", weights, np.asarray(normals, float)[corners]) @ normal_matrix.T
+        n /= np.linalg.norm(n, axis=-1, keepdims=True)
+        tangent = np.einsum("rk,rkc->rc", weights, np.asarray(tangents, float)[corners])
+        tangent[:, :3] = tangent[:, :3] @ m[:3, :3].T
+        return n, tangent
+    return _Hit(every_t.reshape(d.shape[:2]), frame)
+
+
+def _anisotropy_direction(n, tangent, rotation):
+    """The anisotropy's world direction on a mesh (no map): the interpolated tangent made
+    orthogonal to n (Gram-Schmidt, as templates/scene_lighting.inc
+    pbrlab_tangent_to_world_normal; bitangent n x t times the sign of w) rotated by
+    ``rotation`` radians towards the bitangent (KHR_materials_anisotropy)."""
+    t = tangent[:, :3] - n * np.sum(n * tangent[:, :3], axis=-1, keepdims=True)
+    t /= np.linalg.norm(t, axis=-1, keepdims=True)
+    b = np.cross(n, t) * np.where(tangent[:, 3:] < 0.0, -1.0, 1.0)
+    d = t * np.cos(rotation) + b * np.sin(rotation)
+    return d / np.linalg.norm(d, axis=-1, keepdims=True)
 
 
 def _sphere_anisotropy_direction(n, rotation):

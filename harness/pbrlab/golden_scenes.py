@@ -31,6 +31,19 @@ GLTF_GOLDENS = {
     "gltf_features": ("features.gltf", None),
     "gltf_features_environment": ("features.gltf", "0.25,0.3,0.35"),
 }
+# The layered assets (KHR_materials_clearcoat, _sheen, _anisotropy, _iridescence,
+# _transmission and _volume) at the high tier, the glTF goldens' size; their untextured
+# materials are also checked against the float64 CPU renderer
+# (tests/gltf/test_layered_goldens_cpu.py). KHR_materials_specular and _ior are in features.gltf.
+LAYERED_GLTF_GOLDENS = {
+    "gltf_clearcoat": ("clearcoat.gltf", None),
+    "gltf_sheen": ("sheen.gltf", None),
+    "gltf_anisotropy": ("anisotropy.gltf", None),
+    "gltf_iridescence": ("iridescence.gltf", None),
+    "gltf_transmission_environment": ("transmission.gltf", "0.25,0.3,0.35"),  # the sky seen through
+    "gltf_transmission_slab": ("transmission_slab.gltf", None),  # an emissive backdrop seen through
+}
+GLTF_GOLDENS.update(LAYERED_GLTF_GOLDENS)
 
 
 def lit_scene(quality: str = "high") -> Scene:

@@ -19,6 +19,7 @@ import moderngl
 import numpy as np
 
 from . import features, gl, gl_limits, ibl, instanced_draws, meshes, resource_cache, surface_bindings, targets
+from . import transmission_copy
 from . import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from .errors import PbrlabError, SceneError
@@ -54,7 +55,8 @@ class _SceneResources:
     renders by the context's resource_cache."""
 
     ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2}
-    FIRST_MATERIAL_UNIT = 3
+    TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
+    FIRST_MATERIAL_UNIT = 4
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -62,6 +64,7 @@ class _SceneResources:
         self.full = full
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
+        self.transmission_copy = None  # set by render_scene once the copy is drawn
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         self.env_textures = {"u_dfg_lut": self.cache.dfg()}
         # the sheen albedo table (sheen_table.py), for materials with a sheen (PBRLAB_SHEEN)
@@ -86,6 +89,8 @@ class _SceneResources:
                 self.env_textures[name].use(unit)
                 _set(program, name, unit)
         _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
+        if self.transmission_copy is not None:  # a program that does not transmit declares none of it
+            self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
@@ -287,52 +292,28 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     grab_holder = []
     cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
     cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
+    draw = _Draw(plan, surfaces, language, mesh_fragment, scene, frame, resources, cube_vbo, cube_ibo,
+                 grab_holder)
+    behind = transmission_copy.seen_through(scene, plan)
+    copy = None
+    draw_calls = 0
     try:
+        if behind:  # a transmissive material: first the scene it sees (transmission_copy.py)
+            copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format)
+            copy.target.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+            _reset_draw_state(ctx)
+            seen = _draw_order(dataclasses.replace(scene, objects=behind), frame)
+            draw_calls += _draw_objects(ctx, copy.target, seen, draw)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            copy.target.fbo.depth_mask = True
+            copy.finish()
+            resources.transmission_copy = copy
         with targets.Target(ctx, (w, h), hdr_format) as hdr:
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
             _reset_draw_state(ctx)
-            draw_calls = 0
-            order = _draw_order(scene, frame)
-            for batch in instanced_draws.batches(order, lambda o: _instanceable(scene.materials[o.material])):
-                obj = batch[0]
-                material = scene.materials[obj.material]
-                defines = plan.defines[obj.material]
-                shading = (defines, surfaces[obj.material], language, mesh_fragment)
-                if material.unity is not None:  # each pass that runs, in the shader's order
-                    grabbed = resources.grabbed = {}
-                    defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
-                    shading = (defines, *shading[1:])
-                    for unity_pass in material.unity.passes:
-                        if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
-                            grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)
-                            continue
-                        for keyed, additive in unity_light_programs(unity_pass, defines):
-                            _unity_pass_state(ctx, hdr, material, unity_pass, additive)
-                            keyed_shading = (keyed, *shading[1:])
-                            draw_calls += 1
-                            if obj.sphere is not None and unity_pass.kind == "surface" \
-                                    and not material.unity.moves_vertices:
-                                _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
-                                             cube_vbo, cube_ibo, unity_pass)
-                            else:  # a sphere is tessellated when a pass moves vertices
-                                _draw_mesh(ctx, obj, material, keyed_shading, scene, frame, resources, unity_pass)
-                    ctx.depth_func = "<="
-                    continue
-                blended = material.alpha_mode in _BLEND
-                ctx.depth_func = "<"  # pbrlab's own materials: the first surface drawn wins a depth tie
-                if blended:
-                    ctx.enable(moderngl.BLEND)
-                    ctx.blend_func = _BLEND[material.alpha_mode]
-                    hdr.fbo.depth_mask = False
-                else:
-                    ctx.disable(moderngl.BLEND)
-                    hdr.fbo.depth_mask = True
-                draw_calls += 1
-                if obj.sphere is not None:
-                    _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
-                else:
-                    _draw_mesh(ctx, obj, material, shading, scene, frame, resources, batch=batch)
+            draw_calls += _draw_objects(ctx, hdr, _draw_order(scene, frame), draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
             linear = hdr.read()
@@ -343,10 +324,77 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     finally:
         cube_vbo.release()
         cube_ibo.release()
+        if copy is not None:
+            copy.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
                      exposure_ev=scene.render.exposure)
+
+
+@dataclass
+class _Draw:
+    """What every draw of one render shares."""
+    plan: "features.ProgramPlan"
+    surfaces: dict
+    language: str
+    mesh_fragment: str
+    scene: Scene
+    frame: object
+    resources: _SceneResources
+    cube_vbo: moderngl.Buffer
+    cube_ibo: moderngl.Buffer
+    grab_holder: list
+
+
+def _draw_objects(ctx, hdr, objects, draw) -> int:
+    """Draw ``objects`` in order into the target ``hdr`` (bound and cleared by the caller);
+    ``draw`` holds what every draw of the render shares. Returns the draw calls made (the
+    instances of one batch are one instanced call: instanced_draws.py)."""
+    plan, surfaces, language, mesh_fragment = draw.plan, draw.surfaces, draw.language, draw.mesh_fragment
+    scene, frame, resources = draw.scene, draw.frame, draw.resources
+    cube_vbo, cube_ibo, grab_holder = draw.cube_vbo, draw.cube_ibo, draw.grab_holder
+    draw_calls = 0
+    for batch in instanced_draws.batches(objects, lambda o: _instanceable(scene.materials[o.material])):
+        obj = batch[0]
+        material = scene.materials[obj.material]
+        defines = plan.defines[obj.material]
+        shading = (defines, surfaces[obj.material], language, mesh_fragment)
+        if material.unity is not None:  # each pass that runs, in the shader's order
+            grabbed = resources.grabbed = {}
+            defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
+            shading = (defines, *shading[1:])
+            for unity_pass in material.unity.passes:
+                if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
+                    grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)
+                    continue
+                for keyed, additive in unity_light_programs(unity_pass, defines):
+                    _unity_pass_state(ctx, hdr, material, unity_pass, additive)
+                    keyed_shading = (keyed, *shading[1:])
+                    draw_calls += 1
+                    if obj.sphere is not None and unity_pass.kind == "surface" \
+                            and not material.unity.moves_vertices:
+                        _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
+                                     cube_vbo, cube_ibo, unity_pass)
+                    else:  # a sphere is tessellated when a pass moves vertices
+                        _draw_mesh(ctx, obj, material, keyed_shading, scene, frame, resources, unity_pass)
+            ctx.depth_func = "<="
+            continue
+        blended = material.alpha_mode in _BLEND
+        ctx.depth_func = "<"  # pbrlab's own materials: the first surface drawn wins a depth tie
+        if blended:
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_func = _BLEND[material.alpha_mode]
+            hdr.fbo.depth_mask = False
+        else:
+            ctx.disable(moderngl.BLEND)
+            hdr.fbo.depth_mask = True
+        draw_calls += 1
+        if obj.sphere is not None:
+            _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
+        else:
+            _draw_mesh(ctx, obj, material, shading, scene, frame, resources, batch=batch)
+    return draw_calls
 
 
 # ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.

@@ -34,6 +34,11 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              wall whose transmission a texture (R) stripes, a tinted volume of IOR
                              1.33 (thicknessFactor 0.4 x a thickness texture's G, attenuation colour
                              and distance) on a node scaled 0.8 (the thickness scales with it)
+    transmission_slab.gltf   three glass slabs half over an emissive backdrop (no light, no
+                             environment: all they show is what lies behind them): a smooth thin
+                             wall of IOR 1, one of IOR 1.5, and a smooth tinted volume (IOR 1.5,
+                             thicknessFactor 0.3, attenuation colour and distance) that the
+                             transmission copy test checks against the float64 fraction
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -649,6 +654,41 @@ def transmission():
     b.write_gltf(HERE / "transmission.gltf", external_bin=False)
 
 
+SLAB_BACKDROP_EMISSION = [0.9, 0.4, 0.15]
+SLAB_VOLUME = {"thicknessFactor": 0.3, "attenuationColor": [0.4, 0.7, 0.9], "attenuationDistance": 0.5}
+
+
+def transmission_slab():
+    b = Builder()
+    glass = {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.0}
+    b.json["materials"] = [
+        {"name": "backdrop", "pbrMetallicRoughness": {"baseColorFactor": [0.0, 0.0, 0.0, 1.0],
+                                                      "metallicFactor": 0.0, "roughnessFactor": 1.0},
+         "emissiveFactor": SLAB_BACKDROP_EMISSION},
+        {"name": "thin_ior_1", "pbrMetallicRoughness": glass,
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_ior": {"ior": 1.0}}},
+        {"name": "thin_ior_1_5", "pbrMetallicRoughness": glass,
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}},
+        {"name": "tinted_volume", "pbrMetallicRoughness": glass,
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_volume": dict(SLAB_VOLUME)}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_transmission", "KHR_materials_volume"]
+    p, n, uv, f = _quad(1.0)
+    b.json["meshes"].append({"primitives": [b.primitive(p * [4.4, 1.2, 1.0], n, uv, f, 0)]})
+    for material in (1, 2, 3):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material)]})
+    nodes = b.json["nodes"]
+    nodes.append({"name": "backdrop", "mesh": 0, "translation": [0.0, 0.35, -1.0]})
+    for mesh, x in ((1, -1.5), (2, 0.0), (3, 1.5)):
+        nodes.append({"name": b.json["materials"][mesh]["name"], "mesh": mesh, "translation": [x, 0.0, 0.0]})
+    b.json["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.45, "aspectRatio": 2.0, "znear": 0.1}}]
+    nodes.append({"camera": 0, "translation": [0.0, 0.0, 6.0]})
+    b.json["scenes"] = [{"nodes": list(range(len(nodes)))}]
+    b.json["scene"] = 0
+    b.write_gltf(HERE / "transmission_slab.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -660,6 +700,7 @@ def main():
     anisotropy()
     iridescence()
     transmission()
+    transmission_slab()
 
 
 if __name__ == "__main__":

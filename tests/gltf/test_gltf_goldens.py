@@ -1,8 +1,8 @@
 """pbrlab's own renders of the glTF assets (scenes/gltf) at the high tier, as goldens; the
 same renders through the HLSL library (read-only against the GLSL golden) and through the
-full runtime-branching program (bit-identical). No asset is analytic (all are meshes: the
-float64 CPU renderer draws spheres only); their independent check is pyrender
-(test_gltf_pyrender.py)."""
+full runtime-branching program (bit-identical). Their independent checks: pyrender
+(test_gltf_pyrender.py) and, for the layered assets' untextured materials, the float64 CPU
+renderer (test_layered_goldens_cpu.py)."""
 
 import numpy as np
 import pytest

@@ -12,12 +12,18 @@ bounding-sphere view drew the models about 1.5x smaller: 0.892, 1.386, 2.372 cod
     ClearCoatTest      0.1432   2.117   (clearcoat factor, texture, roughness and normal rows)
     RiggedSimple       0.0000   0.003   (a skinned cylinder in its rest pose: gltf/skin.py; max 1 code,
                                          the same coverage; unskinned it would lie up to 1.41 units away)
+    AttenuationTest    ATTEN_F  ATTEN_M   (KHR_materials_transmission + _volume: tinted cubes before
+                                         their plate, seen through both renderers' transmission
+                                         copies; thickness factor, texture and node scale rows)
 What differs: edges inside the coverage (the test plates' raised shapes and their labels
 are a few pixels wide at this size, so the 2-pixel erosion keeps their silhouettes), the
 normal-mapped rows (tangent frames), and SpecularTest's first column (specular 0): its
 spheres' grazing rims are black in pbrlab and lit in the Sample Renderer, and at the
 fitted size they span more than the 2-pixel erosion (most of SpecularTest's rise). With its coats removed, ClearCoatCarPaint is
-15.6 codes away (MEAN_WITHOUT_COAT), so the agreement measures the coat.
+15.6 codes away (MEAN_WITHOUT_COAT), so the agreement measures the coat; with its
+transmission removed, AttenuationTest is 8.3 codes away (MEAN_WITHOUT_TRANSMISSION), so the
+agreement measures the transmission (the cubes' edges, where the refracted exit points and
+the two copies' mip levels differ, are most of its pixels over 4 codes).
 Bounds: the measured mean x 1.3 (another SwiftShader or llvmpipe build), rounded up."""
 
 from __future__ import annotations
@@ -37,7 +43,7 @@ from test_sample_viewer_agreement import CONSTANT_SKY, _agreement
 CORPUS = Path(__file__).resolve().parents[2] / "corpus" / "gltf" / "khronos"
 SIZE = (384, 256)
 MEAN_CODES = {"UnlitTest": 0.01, "SpecularTest": 2.4, "ClearCoatCarPaint": 2.2, "ClearCoatTest": 2.8,
-              "RiggedSimple": 0.01}
+              "RiggedSimple": 0.01, "AttenuationTest": 0.9}
 
 
 @pytest.fixture(scope="module")
@@ -47,13 +53,14 @@ def sky(tmp_path_factory):
     return hdr, Environment(color=decoded[0, 0].astype(np.float64))
 
 
-def _render_both(name, sky, strip_coats=False):
+def _render_both(name, sky, strip=None):
+    """``strip``: a material field (clearcoat, transmission) set to 0 in pbrlab's render."""
     hdr, environment = sky
     path = CORPUS / name / f"{name}.glb"
     result = load_gltf(path, size=SIZE, environment=environment, emit_warnings=False)
-    if strip_coats:
+    if strip is not None:
         for material in result.scene.materials.values():
-            material.clearcoat = 0.0
+            setattr(material, strip, 0.0)
     ours = render_scene(result.scene).linear
     theirs = sample_viewer.render_with_sample_viewer(path, result.scene.camera, hdr, SIZE)
     return result, ours, theirs
@@ -87,7 +94,17 @@ MEAN_WITHOUT_COAT = 10.0  # measured 15.6 codes without the coat, 1.67 with it (
 
 
 def test_the_coat_is_what_makes_the_car_paint_agree(sky):
-    _, ours, theirs = _render_both("ClearCoatCarPaint", sky, strip_coats=True)
+    _, ours, theirs = _render_both("ClearCoatCarPaint", sky, strip="clearcoat")
     _, mean_codes, _, _, _ = _agreement(ours, theirs)
     print(f"ClearCoatCarPaint without its coat: mean {mean_codes:.3f} codes")
     assert mean_codes >= MEAN_WITHOUT_COAT
+
+
+MEAN_WITHOUT_TRANSMISSION = 5.0  # measured 8.3 codes without the transmission (0.67 with it)
+
+
+def test_the_transmission_is_what_makes_the_attenuation_test_agree(sky):
+    _, ours, theirs = _render_both("AttenuationTest", sky, strip="transmission")
+    _, mean_codes, _, _, _ = _agreement(ours, theirs)
+    print(f"AttenuationTest without its transmission: mean {mean_codes:.3f} codes")
+    assert mean_codes >= MEAN_WITHOUT_TRANSMISSION

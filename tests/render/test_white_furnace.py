@@ -37,6 +37,11 @@ multiple-scattering compensation:
   tinted volume       the volume with attenuation colour (0.5, 0.7, 0.9) at distance 1 over
                       thickness 1: E(0.04) + c (1 - E(0.04)) per channel (Beer-Lambert, c^(d/D);
                       measured worst 2.7e-5 from the float64 value)
+The transmissive rows are drawn by a render of their own (the same layout without the other
+rows), merged by coverage: a transmissive sphere sees the scene's transmission copy of the
+non-transmissive spheres (harness/pbrlab/transmission_copy.py), and a sphere that loses energy
+(single scattering) seen through it is not the environment's 1; alone, the transmissive rows
+see only the environment (their copy is empty).
 """
 
 import numpy as np
@@ -183,8 +188,15 @@ class _Furnace:
 
     def __getitem__(self, key):
         if key not in _RENDERS:
-            scene = parse_scene(_scene(*key))
-            _RENDERS[key] = scene, render_scene(scene, self.ctx).linear.astype(np.float64)
+            whole = _scene(*key)
+            merged = None
+            for transmissive in (False, True):  # each part's spheres where the whole scene has them
+                part = dict(whole, objects=[o for o in whole["objects"]
+                                            if (whole["materials"][o["material"]].get("transmission", 0) > 0)
+                                            == transmissive])
+                linear = render_scene(parse_scene(part), self.ctx).linear.astype(np.float64)
+                merged = linear if merged is None else np.where(linear[..., 3:] > 0, linear, merged)
+            _RENDERS[key] = parse_scene(whole), merged
         return _RENDERS[key]
 
 

@@ -28,17 +28,18 @@
 //       volume (thickness > 0): pbr_transmission_punctual (Walter et al. 2007, eta = ior:
 //         the light inside the volume, the view in air) tinted by rho; Walter's BTDF carries
 //         its own 1 − F(v.h) (pbr_T_Dielectric), so the coat's 1 − E is not applied twice
-//     indirect: transmittedIndirect (the caller's prefiltered environment radiance along
-//       pbr_transmitted_direction, at the base's roughness) · rho (1 − E_coat) · occlusion,
+//     indirect: transmittedIndirect (the caller's radiance seen along
+//       pbr_transmitted_direction at the base's roughness: pbrlab's harness passes its copy
+//       of the scene behind the surface over the prefiltered environment,
+//       harness/pbrlab/templates/transmission_scene.inc) · rho (1 − E_coat) · occlusion,
 //       E_coat with the environment's compensation: the indirect diffuse's weight
 //       (pbr_indirect_diffuse_color), so a white, fully transmissive dielectric in a white
 //       furnace returns E_spec + (1 − E_spec) = 1 (tests/render/test_white_furnace.py).
 // pbr_transmitted_direction: straight through (−v) for a thin wall (two parallel interfaces:
 // the light leaves unbent); the refracted direction (pbr_refraction_direction, Snell) into a
-// volume. Decided: the environment only (no copy of the opaque scene behind the surface, which
-// the Khronos Sample Renderer samples); the roughness is the base's (the Sample Renderer
-// scales it by clamp(2 ior − 2, 0, 1) for its framebuffer's mip: not done here); the refracted
-// ray is not bent again where it leaves the volume.
+// volume. Decided: the roughness is the base's (the Sample Renderer scales it by
+// clamp(2 ior − 2, 0, 1) for its framebuffer's mip: not done here); the refracted ray is not
+// bent again where it leaves the volume.
 // transmission = 0 adds 0 · (finite terms) and the caller's diffuse colour is multiplied by 1:
 // the base's value bit for bit.
 // Python twin: harness/pbrlab/reference/surface.py lighting_transmission.

@@ -9,11 +9,14 @@
 #define PBRLAB_SAMPLE_TEX2D_LOD(name, uv, lod) textureLod(name, uv, lod)
 // The columns t, b, n times v: a tangent-space vector in the world.
 #define PBRLAB_FROM_BASIS(t, b, n, v) (mat3(t, b, n) * (v))
+// A point of the world through a 4x4 matrix (column vectors): homogeneous clip coordinates.
+#define PBRLAB_TRANSFORM_POINT(m, p) ((m) * vec4(p, 1.0))
 
 // The DFG table (harness/pbrlab/ibl.py dfg_lut: (A, B) on the warped axes of
 // pbr_dfg_lut_uv): the environment's split sum and, for every light, the diffuse-specular
-// coupling read it, so it is declared whenever the scene has light.
-#if defined(PBRLAB_ENV) || PBRLAB_DIRECTIONAL_COUNT + PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT > 0
+// coupling read it, so it is declared whenever the scene has light (a transmissive material
+// sees the scene's transmission copy, light of its own: transmission_scene.inc).
+#if defined(PBRLAB_ENV) || defined(PBRLAB_TRANSMISSION) || PBRLAB_DIRECTIONAL_COUNT + PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT > 0
 PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 // The library samples no textures itself: this hook hands it the DFG table, read at the
 // texel-centre coordinates of the library's layout (pbr/ibl/environment_brdf.glsl).

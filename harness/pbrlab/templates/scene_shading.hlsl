@@ -11,6 +11,9 @@
 #define PBRLAB_SAMPLE_TEX2D_LOD(name, uv, lod) name.SampleLevel(sampler_##name, uv, lod)
 // The columns t, b, n times v: a tangent-space vector in the world (rows of float3x3).
 #define PBRLAB_FROM_BASIS(t, b, n, v) mul(v, float3x3(t, b, n))
+// A point of the world through a 4x4 matrix, uploaded as the GLSL programs' (sphere.hlsl's
+// depth): homogeneous clip coordinates.
+#define PBRLAB_TRANSFORM_POINT(m, p) mul(m, float4(p, 1.0))
 // Unity's names for the same (HLSLSupport.cginc, Direct3D 11 path), so a ported surface
 // function keeps them; inside Unity its own definitions stand.
 #ifndef UNITY_DECLARE_TEX2D
@@ -22,8 +25,9 @@
 
 // The DFG table (harness/pbrlab/ibl.py dfg_lut: (A, B) on the warped axes of
 // pbr_dfg_lut_uv): the environment's split sum and, for every light, the diffuse-specular
-// coupling read it, so it is declared whenever the scene has light.
-#if defined(PBRLAB_ENV) || PBRLAB_DIRECTIONAL_COUNT + PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT > 0
+// coupling read it, so it is declared whenever the scene has light (a transmissive material
+// sees the scene's transmission copy, light of its own: transmission_scene.inc).
+#if defined(PBRLAB_ENV) || defined(PBRLAB_TRANSMISSION) || PBRLAB_DIRECTIONAL_COUNT + PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT > 0
 PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 // The library samples no textures itself: this hook hands it the DFG table, read at the
 // texel-centre coordinates of the library's layout (pbr/ibl/environment_brdf.glsl).
@@ -73,6 +77,7 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #define vec2 float2
 #define vec3 float3
 #define vec4 float4
+#define mat4 float4x4
 #define inversesqrt rsqrt
 
 #include "scene_lighting.inc"
