@@ -28,7 +28,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from . import json_input
+from . import json_input, texture_slots
 from .errors import SceneError
 from .reference.shading import glsl_defines
 
@@ -36,6 +36,8 @@ MAX_LIGHTS_PER_TYPE = 8        # capacity of each light type's arrays in the ful
 MAX_SPECIALISED_PROGRAMS = 32  # past this many distinct (material x scene) feature sets:
                                # warn and render every material with the full program
 LIGHT_TYPES = ("directional", "point", "spot")
+# The layers beyond the Standard model, as MaterialFeatures fields (PBRLAB_<LAYER> defines)
+LAYERS = ("clearcoat", "sheen", "anisotropy", "iridescence", "transmission")
 
 
 @dataclass(frozen=True)
@@ -137,10 +139,6 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_HDR_HALF"] = 1
     if s.orthographic:
         defines["PBRLAB_ORTHOGRAPHIC"] = 1
-    for slot in m.uv1_maps:
-        defines[f"PBRLAB_{slot.upper()}_UV1"] = 1
-    for slot in m.uv_transforms:
-        defines[f"PBRLAB_{slot.upper()}_UV_TRANSFORM"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
@@ -169,7 +167,14 @@ def specialised_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
             defines[f"PBRLAB_{flag}"] = 1
     for slot in m.maps:
         defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
+    defines.update(_slot_code(m, m.maps))
     return defines
+
+
+def _slot_code(m: MaterialFeatures, slots) -> dict:
+    """The sampling and declarations of the default surface's compiled ``slots`` (texture_slots.py)."""
+    return texture_slots.slot_defines(slots, m.uv1_maps, m.uv_transforms,
+                                      [layer for layer in LAYERS if getattr(m, layer)])
 
 
 FULL_MAP_SLOTS = ("albedo", "emission", "metallic_smoothness", "normal", "occlusion")
@@ -187,10 +192,10 @@ def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                     "PBRLAB_DIRECTIONAL_COUNT": MAX_LIGHTS_PER_TYPE,
                     "PBRLAB_POINT_COUNT": MAX_LIGHTS_PER_TYPE, "PBRLAB_SPOT_COUNT": MAX_LIGHTS_PER_TYPE})
     if m.custom_surface is None:
-        for slot in FULL_MAP_SLOTS:
-            if slot in FULL_MAP_EXCLUDED_BY and FULL_MAP_EXCLUDED_BY[slot] in m.maps:
-                continue
+        full_slots = [slot for slot in FULL_MAP_SLOTS if FULL_MAP_EXCLUDED_BY.get(slot) not in m.maps]
+        for slot in full_slots:
             defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
+        defines.update(_slot_code(m, set(m.maps) | set(full_slots)))
     return defines
 
 
