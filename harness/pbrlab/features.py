@@ -18,7 +18,8 @@ Two kinds of compile-time configuration reach a program:
   compare against.
 
 A material with its own ``surface`` file is opaque to this analysis: its effects are
-all compiled (its code decides what it writes).
+all compiled (its code decides what it writes), except the layers beyond the Standard
+model, compiled exactly where the surface writes their fields (surface_layers.py).
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from . import json_input, texture_slots
+from . import json_input, surface_layers, texture_slots
 from .errors import SceneError
 from .reference.shading import glsl_defines
 
@@ -85,6 +86,7 @@ class SceneFeatures:
 
 def material_features(material) -> MaterialFeatures:
     custom = material.surface is not None
+    layers = surface_layers.material_layers(material)  # from its numbers, or what its surface writes
     maps = tuple(sorted(material.textures)) if not custom else ()
     return MaterialFeatures(
         workflow=material.workflow,
@@ -102,13 +104,13 @@ def material_features(material) -> MaterialFeatures:
         occlusion_strength="occlusion" in maps and material.occlusion_strength != 1.0,
         vertex_color=material.vertex_color,
         double_sided=bool(material.double_sided),
-        clearcoat=not custom and material.clearcoat > 0.0,  # glTF: factor x texture, so 0 is none
+        clearcoat="clearcoat" in layers,
         clearcoat_normal_scale="clearcoat_normal" in maps and material.clearcoat_normal_scale != 1.0,
         unlit=not custom and material.unlit,
-        sheen=not custom and max(material.sheen_color) > 0.0,  # glTF: factor x texture, so 0 is none
-        anisotropy=not custom and material.anisotropy_strength > 0.0,  # glTF: factor x texture.b
-        iridescence=not custom and material.iridescence > 0.0,  # glTF: factor x texture.r
-        transmission=not custom and material.transmission > 0.0,  # glTF: factor x texture.r
+        sheen="sheen" in layers,
+        anisotropy="anisotropy" in layers,
+        iridescence="iridescence" in layers,
+        transmission="transmission" in layers,
     )
 
 

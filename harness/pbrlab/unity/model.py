@@ -108,6 +108,7 @@ class SurfaceShader:
     output_type: str = "SurfaceOutputStandard"
     output_fields: dict = field(default_factory=dict)    # field -> component count
     writes_normal: bool = False
+    layers: frozenset = frozenset()  # the layers beyond the Standard model it writes (surface_layers.py)
     lighting: LightingFunction | None = None
     vertex: VertexFunction | None = None
     declared: frozenset = frozenset()  # global names the program declares itself
