@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import json_input, meshes, unity
+from . import json_input, meshes, surface_layers, unity
 from .errors import SceneError
 from .reference import shading as _shading
 
@@ -693,15 +693,17 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> Scen
                             brdf_model=rs.choice("brdf_model", BRDF_MODELS, default="pbrlab"))
     rs.finish()
     if render.brdf_model == "unity":
-        anisotropic = sorted(name for name, m in materials.items() if m.anisotropy_strength > 0.0)
+        # the layers from the material's numbers, or from what its surface writes
+        layers = {name: surface_layers.material_layers(m) for name, m in materials.items()}
+        anisotropic = sorted(name for name in materials if "anisotropy" in layers[name])
         if anisotropic:
             rs.fail(f"Unity's BRDFs have no anisotropic lobe; material {anisotropic[0]!r} is anisotropic "
                     "(use brdf_model pbrlab, or anisotropy_strength 0)", "brdf_model")
-        filmed = sorted(name for name, m in materials.items() if m.iridescence > 0.0)
+        filmed = sorted(name for name in materials if "iridescence" in layers[name])
         if filmed:
             rs.fail(f"Unity's BRDFs have no F0 a thin film could replace; material {filmed[0]!r} is iridescent "
                     "(use brdf_model pbrlab, or iridescence 0)", "brdf_model")
-        transmissive = sorted(name for name, m in materials.items() if m.transmission > 0.0)
+        transmissive = sorted(name for name in materials if "transmission" in layers[name])
         if transmissive:
             rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
                     "(use brdf_model pbrlab, or transmission 0)", "brdf_model")

@@ -38,6 +38,8 @@ LAYER_FIELDS = {
     "transmission": ("Transmission", "Thickness", "AttenuationColor", "AttenuationDistance", "TransmissionIor"),
 }
 LAYER_OF_FIELD = {f: layer for layer, fields in LAYER_FIELDS.items() for f in fields}
+FIELD_SIZES = {f: 3 if f in ("ClearCoatNormal", "SheenColor", "AnisotropyDirection", "AttenuationColor") else 1
+               for f in LAYER_OF_FIELD}  # components: vec3 or float
 # `.Field =`, `.Field *=`, `.Field.rgb =` ... but not `.Field ==`
 _WRITE = re.compile(r"\.\s*(" + "|".join(sorted(LAYER_OF_FIELD, key=len, reverse=True)) +
                     r")\b(?:\s*\.\s*[xyzwrgba]{1,4}\b)?\s*[-+*/]?=(?!=)")

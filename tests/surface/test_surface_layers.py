@@ -93,3 +93,12 @@ def test_an_hlsl_twin_writing_other_layers_is_refused_by_name(tmp_path):
     with pytest.raises(SceneError, match=r"materials.m: s.hlsl writes the layers \['anisotropy', 'clearcoat', "
                                          r"'iridescence', 'sheen', 'transmission'\], s.glsl writes \['clearcoat'\]"):
         render.render_scene(_scene({"surface": "s.glsl"}, tmp_path), language="hlsl")
+
+
+def test_unitys_brdf_model_refuses_a_surface_writing_a_base_layer():
+    data = {"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "size": [8, 8]},
+            "materials": {"m": {"surface": "every_layer.glsl"}}, "render": {"brdf_model": "unity"},
+            "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}]}
+    with pytest.raises(SceneError, match="render.brdf_model: Unity's BRDFs have no anisotropic lobe; "
+                                         "material 'm' is anisotropic"):
+        scene.parse_scene(data, "<test>", SURFACES)
