@@ -529,8 +529,8 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
         m.alpha_mode = "fade" if any(p.state.blend_factors and getattr(p, "light_mode", "").lower() != "forwardadd"
                                      for p in m.unity.passes) else "opaque"  # adding light is not fading
-    m.workflow = "specular" if surface is not None and surface.output_type == "SurfaceOutputStandardSpecular" \
-        else "metallic"
+    m.workflow = "specular" if surface is not None and surface.output_type in (
+        "SurfaceOutputStandardSpecular", "SurfaceOutputStandardSpecularLayered") else "metallic"
     cutoff = surface.pragma.cutoff_property if surface is not None else None
     if cutoff is not None:
         value = m.properties.get(cutoff)

@@ -119,7 +119,9 @@ def layered_struct(shader) -> list[str]:
 def _layered_shading(shader: M.SurfaceShader) -> list[str]:
     """A layered model's output shaded as the harness shades a JSON material with the same
     layers (scene_lighting.inc pbrlab_shade_surface): the Standard struct and the layers'
-    struct filled from it, tangent-space layer directions to the world as o.Normal."""
+    struct filled from it, tangent-space layer directions to the world as o.Normal. (The
+    specular model's material has the specular workflow, scene.py: PbrlabSurfaceOutput is
+    SurfaceOutputStandardSpecular there.)"""
     base = M.LAYERED_MODELS[shader.pragma.model]
     lines = [f"    {base} pbrlabBase;"]
     lines += [f"    pbrlabBase.{name} = o.{name};" for name in M.OUTPUT_FIELDS[base]]
@@ -133,14 +135,6 @@ def _layered_shading(shader: M.SurfaceShader) -> list[str]:
     lines.append("    vec4 c = pbrlab_shade_surface(pbrlabBase, f.position, f.view PBRLAB_LAYERS_ARG);")
     return lines
 
-
-def layered_defines(shader) -> dict:
-    """What a layered model adds to the harness's defines: the specular workflow's output
-    type for scene_lighting.inc (PbrlabSurfaceOutput)."""
-    if getattr(shader, "kind", None) == "surface" and M.LAYERED_MODELS.get(shader.pragma.model) == \
-            "SurfaceOutputStandardSpecular":
-        return {"PBRLAB_WORKFLOW_SPECULAR": 1}
-    return {}
 
 
 def glue(shader: M.SurfaceShader, language: str) -> str:
@@ -285,7 +279,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     (the CGPROGRAM for HLSL, its port for GLSL), ``display`` its file name in messages."""
     suffix = SUFFIX[language]
     head = ["#version 330 core"] if language == "glsl" else []
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **layered_defines(shader)}),
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1}),
              f'#include "scene_shading{suffix}"',
              '#include "unity_surface.inc"']
     if language == "glsl":
