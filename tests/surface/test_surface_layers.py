@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab import features, render, scene
+from pbrlab.compare import float32_ulps
 from pbrlab.errors import SceneError
 from pbrlab.surface_layers import written_layers
 
@@ -38,12 +39,6 @@ def _scene(material, folder=SURFACES):
     return scene.parse_scene(layer_sphere(material), "<test>", folder)
 
 
-def _ulps(got, want):
-    """|got - want| per channel in float32 spacings of want (colour channels)."""
-    want = want[..., :3].astype(np.float32)
-    return np.abs(got[..., :3] - want) / np.spacing(np.maximum(np.abs(want), np.float32(1e-30)))
-
-
 @pytest.mark.parametrize("language", LANGUAGES)
 @pytest.mark.parametrize("surface, fields", [("coat.glsl", COAT), ("every_layer.glsl", EVERY_LAYER)],
                          ids=["coat", "every_layer"])
@@ -53,7 +48,7 @@ def test_a_surface_file_writing_layers_renders_like_the_json_material(surface, f
     bare = render.render_scene(_scene(BASE), language=language).linear
     covered = want[..., 3] > 0
     assert covered.sum() > 1000 and np.array_equal(got[..., 3] > 0, covered)
-    assert _ulps(got, want)[covered].max() <= ULP_BOUND
+    assert float32_ulps(want[..., :3], got[..., :3])[covered].max() <= ULP_BOUND
     # the layers are there: without them the image is another one (by up to 17 in radiance)
     assert np.abs(bare - want)[..., :3].max() > 1.0
 

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab import features, render, scene
+from pbrlab.compare import float32_ulps
 from pbrlab.unity import UnityShaderError, load_shader, parse
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "render"))
@@ -50,8 +51,7 @@ def test_a_layered_unity_shader_renders_like_the_json_material(shader, language)
     bare = render.render_scene(_scene(without_layers), language=language).linear
     covered = want[..., 3] > 0
     assert covered.sum() > 1000 and np.array_equal(got[..., 3] > 0, covered)
-    spacing = np.spacing(np.maximum(np.abs(want[..., :3]), np.float32(1e-30)))
-    assert (np.abs(got[..., :3] - want[..., :3]) / spacing)[covered].max() <= ULP_BOUND
+    assert float32_ulps(want[..., :3], got[..., :3])[covered].max() <= ULP_BOUND
     assert np.abs(bare - want)[..., :3].max() > 0.1  # the layers are there
 
 
@@ -71,8 +71,7 @@ def test_a_layered_model_writing_no_layer_is_the_standard_shader(tmp_path):
     got = render.render_scene(_scene({"surface": str(tmp_path / "plain.shader")}), language="hlsl").linear
     want = render.render_scene(_scene({"albedo": [0.8, 0.3, 0.2], "metallic": 0.25, "smoothness": 0.4}),
                                language="hlsl").linear
-    spacing = np.spacing(np.maximum(np.abs(want[..., :3]), np.float32(1e-30)))
-    assert (np.abs(got[..., :3] - want[..., :3]) / spacing)[want[..., 3] > 0].max() <= ULP_BOUND
+    assert float32_ulps(want[..., :3], got[..., :3])[want[..., 3] > 0].max() <= ULP_BOUND
 
 
 @pytest.mark.parametrize("edit, message", [
@@ -89,3 +88,14 @@ def test_layered_model_mistakes_are_refused_by_name(tmp_path, edit, message):
     (tmp_path / "x.shader").write_text((SHADERS / "clear_coat_layered.shader").read_text().replace(*edit))
     with pytest.raises(UnityShaderError, match=r"x.shader:\d+: " + message):
         parse.parse_file(tmp_path / "x.shader")
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_scalar_written_to_a_layer_vector_is_ported_as_unity_reads_it(tmp_path, language):
+    """o.SheenColor = 0.5 (Cg widens the scalar): the port knows the layered struct's fields."""
+    text = (SHADERS / "sheen_specular_layered.shader").read_text()
+    (tmp_path / "x.shader").write_text(text.replace("o.SheenColor = _SheenColor.rgb;", "o.SheenColor = 0.5;"))
+    json_material = dict(LAYERED["sheen_specular_layered.shader"][0], sheen_color=[0.5, 0.5, 0.5])
+    got = render.render_scene(_scene({"surface": str(tmp_path / "x.shader")}), language=language).linear
+    want = render.render_scene(_scene(json_material), language=language).linear
+    assert float32_ulps(want[..., :3], got[..., :3])[want[..., 3] > 0].max() <= ULP_BOUND

@@ -136,7 +136,6 @@ def _layered_shading(shader: M.SurfaceShader) -> list[str]:
     return lines
 
 
-
 def glue(shader: M.SurfaceShader, language: str) -> str:
     """What follows the shader's text: uniforms Unity declares, Input, lighting, pixel."""
     out = []
