@@ -59,7 +59,9 @@ class MaterialFeatures:
     occlusion_strength: bool = False  # occlusion strength != 1
     vertex_color: bool = False
     double_sided: bool = False
-    clearcoat: bool = False     # a coat (mask > 0 or mapped): its lobe and the base's weight
+    # the layers (surface_layers.material_layers: from the numbers below, or, for a surface
+    # file or Unity shader, from the fields it writes)
+    clearcoat: bool = False     # a coat (mask > 0): its lobe and the base's weight
     clearcoat_normal_scale: bool = False
     unlit: bool = False         # KHR_materials_unlit: albedo and alpha only
     sheen: bool = False         # a sheen (colour > 0): its lobe, table and the base's scaling
