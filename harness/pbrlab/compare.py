@@ -281,6 +281,14 @@ def _nonfinite_pixels(image: np.ndarray) -> np.ndarray:
     return ~np.isfinite(image).all(axis=2)
 
 
+def float32_ulps(expected, obtained) -> np.ndarray:
+    """|obtained - expected| in float32 spacings of ``expected`` (per element): how many
+    float32 roundings apart two renders of the same thing are."""
+    expected = np.asarray(expected, np.float32)
+    spacing = np.spacing(np.maximum(np.abs(expected), np.float32(1e-30)))
+    return np.abs(np.asarray(obtained, np.float32) - expected) / spacing
+
+
 def flip_available() -> bool:
     try:
         import flip_evaluator  # noqa: F401

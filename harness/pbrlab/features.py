@@ -18,7 +18,8 @@ Two kinds of compile-time configuration reach a program:
   compare against.
 
 A material with its own ``surface`` file is opaque to this analysis: its effects are
-all compiled (its code decides what it writes).
+all compiled (its code decides what it writes), except the layers beyond the Standard
+model, compiled exactly where the surface writes their fields (surface_layers.py).
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from . import json_input
+from . import json_input, surface_layers, texture_slots
 from .errors import SceneError
 from .reference.shading import glsl_defines
 
@@ -36,6 +37,8 @@ MAX_LIGHTS_PER_TYPE = 8        # capacity of each light type's arrays in the ful
 MAX_SPECIALISED_PROGRAMS = 32  # past this many distinct (material x scene) feature sets:
                                # warn and render every material with the full program
 LIGHT_TYPES = ("directional", "point", "spot")
+# The layers beyond the Standard model, as MaterialFeatures fields (PBRLAB_<LAYER> defines)
+LAYERS = ("clearcoat", "sheen", "anisotropy", "iridescence", "transmission")
 
 
 @dataclass(frozen=True)
@@ -56,7 +59,9 @@ class MaterialFeatures:
     occlusion_strength: bool = False  # occlusion strength != 1
     vertex_color: bool = False
     double_sided: bool = False
-    clearcoat: bool = False     # a coat (mask > 0 or mapped): its lobe and the base's weight
+    # the layers (surface_layers.material_layers: from the numbers below, or, for a surface
+    # file or Unity shader, from the fields it writes)
+    clearcoat: bool = False     # a coat (mask > 0): its lobe and the base's weight
     clearcoat_normal_scale: bool = False
     unlit: bool = False         # KHR_materials_unlit: albedo and alpha only
     sheen: bool = False         # a sheen (colour > 0): its lobe, table and the base's scaling
@@ -83,6 +88,7 @@ class SceneFeatures:
 
 def material_features(material) -> MaterialFeatures:
     custom = material.surface is not None
+    layers = surface_layers.material_layers(material)  # from its numbers, or what its surface writes
     maps = tuple(sorted(material.textures)) if not custom else ()
     return MaterialFeatures(
         workflow=material.workflow,
@@ -100,13 +106,13 @@ def material_features(material) -> MaterialFeatures:
         occlusion_strength="occlusion" in maps and material.occlusion_strength != 1.0,
         vertex_color=material.vertex_color,
         double_sided=bool(material.double_sided),
-        clearcoat=not custom and material.clearcoat > 0.0,  # glTF: factor x texture, so 0 is none
+        clearcoat="clearcoat" in layers,
         clearcoat_normal_scale="clearcoat_normal" in maps and material.clearcoat_normal_scale != 1.0,
         unlit=not custom and material.unlit,
-        sheen=not custom and max(material.sheen_color) > 0.0,  # glTF: factor x texture, so 0 is none
-        anisotropy=not custom and material.anisotropy_strength > 0.0,  # glTF: factor x texture.b
-        iridescence=not custom and material.iridescence > 0.0,  # glTF: factor x texture.r
-        transmission=not custom and material.transmission > 0.0,  # glTF: factor x texture.r
+        sheen="sheen" in layers,
+        anisotropy="anisotropy" in layers,
+        iridescence="iridescence" in layers,
+        transmission="transmission" in layers,
     )
 
 
@@ -137,10 +143,6 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_HDR_HALF"] = 1
     if s.orthographic:
         defines["PBRLAB_ORTHOGRAPHIC"] = 1
-    for slot in m.uv1_maps:
-        defines[f"PBRLAB_{slot.upper()}_UV1"] = 1
-    for slot in m.uv_transforms:
-        defines[f"PBRLAB_{slot.upper()}_UV_TRANSFORM"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
@@ -169,7 +171,14 @@ def specialised_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
             defines[f"PBRLAB_{flag}"] = 1
     for slot in m.maps:
         defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
+    defines.update(_slot_code(m, m.maps))
     return defines
+
+
+def _slot_code(m: MaterialFeatures, slots) -> dict:
+    """The sampling and declarations of the default surface's compiled ``slots`` (texture_slots.py)."""
+    return texture_slots.slot_defines(slots, m.uv1_maps, m.uv_transforms,
+                                      [layer for layer in LAYERS if getattr(m, layer)])
 
 
 FULL_MAP_SLOTS = ("albedo", "emission", "metallic_smoothness", "normal", "occlusion")
@@ -187,10 +196,10 @@ def full_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                     "PBRLAB_DIRECTIONAL_COUNT": MAX_LIGHTS_PER_TYPE,
                     "PBRLAB_POINT_COUNT": MAX_LIGHTS_PER_TYPE, "PBRLAB_SPOT_COUNT": MAX_LIGHTS_PER_TYPE})
     if m.custom_surface is None:
-        for slot in FULL_MAP_SLOTS:
-            if slot in FULL_MAP_EXCLUDED_BY and FULL_MAP_EXCLUDED_BY[slot] in m.maps:
-                continue
+        full_slots = [slot for slot in FULL_MAP_SLOTS if FULL_MAP_EXCLUDED_BY.get(slot) not in m.maps]
+        for slot in full_slots:
             defines[f"PBRLAB_{slot.upper()}_MAP"] = 1
+        defines.update(_slot_code(m, set(m.maps) | set(full_slots)))
     return defines
 
 

@@ -24,7 +24,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         "gl", "gl_limits", "shaders", "source_cache", "hlsl", "programs", "surface_bindings", "targets", "evaluator",
         "ibl", "sheen_table", "engine_tables", "port_hlsl", "gpu_isa", "__init__")),
     ("scene sources", (
-        "meshes", "environment", "unity")),
+        "meshes", "environment", "unity", "surface_layers")),
     ("scene model", (
         "scene_fields", "scene", "scene_schema")),
     ("importers", (
@@ -32,7 +32,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("scene files", (
         "scene_files",)),
     ("rendering", (
-        "features", "depth_range", "resource_cache", "instanced_draws", "render", "cpu_render")),
+        "texture_slots", "features", "depth_range", "resource_cache", "instanced_draws", "transmission_copy", "render", "cpu_render")),
     ("checking", (
         "compare", "goldens", "charts", "golden_scenes", "contact_sheets", "codescan", "hardcases",
         "pyrender_compat", "pyrender_check", "pyrender_figure", "pyrender_gltf_check", "sample_viewer",

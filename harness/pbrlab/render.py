@@ -18,8 +18,8 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, gl, gl_limits, ibl, instanced_draws, meshes, resource_cache, surface_bindings, targets
-from . import transmission_copy
+from . import features, gl, gl_limits, ibl, instanced_draws, meshes, resource_cache, surface_bindings, surface_layers
+from . import targets, transmission_copy
 from . import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from .errors import PbrlabError, SceneError
@@ -68,7 +68,7 @@ class _SceneResources:
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         self.env_textures = {"u_dfg_lut": self.cache.dfg()}
         # the sheen albedo table (sheen_table.py), for materials with a sheen (PBRLAB_SHEEN)
-        if any(max(m.sheen_color) > 0.0 for m in scene.materials.values()):
+        if any("sheen" in surface_layers.material_layers(m) for m in scene.materials.values()):
             self.env_textures["u_sheen_lut"] = self.cache.sheen()
         if scene.environment is not None:
             environment = self.cache.environment(scene.environment)
@@ -273,6 +273,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     surfaces = {name: surface_file(m.surface, language) if m.unity is None else None
                 for name, m in scene.materials.items()}
     surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
+    surface_layers.check_twins(scene, surfaces)
     ctx = gl.make_current(ctx or gl.shared_context())
     gl_limits.check_scene(ctx, scene)
     frame = scene_frame(scene)

@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import json_input, meshes
+from . import json_input, meshes, surface_layers
 from .errors import SceneError
 from .reference import shading as _shading
 from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA,  # noqa: F401 (re-exported)
@@ -522,8 +522,8 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
     else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
         m.alpha_mode = "fade" if any(p.state.blend_factors and getattr(p, "light_mode", "").lower() != "forwardadd"
                                      for p in m.unity.passes) else "opaque"  # adding light is not fading
-    m.workflow = "specular" if surface is not None and surface.output_type == "SurfaceOutputStandardSpecular" \
-        else "metallic"
+    m.workflow = "specular" if surface is not None and surface.output_type in (
+        "SurfaceOutputStandardSpecular", "SurfaceOutputStandardSpecularLayered") else "metallic"
     cutoff = surface.pragma.cutoff_property if surface is not None else None
     if cutoff is not None:
         value = m.properties.get(cutoff)
@@ -686,15 +686,17 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     render = RenderSettings(**{key: read_field(rs, RENDER, key) for key in RENDER})
     rs.finish()
     if render.brdf_model == "unity":
-        anisotropic = sorted(name for name, m in materials.items() if m.anisotropy_strength > 0.0)
+        # the layers from the material's numbers, or from what its surface writes
+        layers = {name: surface_layers.material_layers(m) for name, m in materials.items()}
+        anisotropic = sorted(name for name in materials if "anisotropy" in layers[name])
         if anisotropic:
             rs.fail(f"Unity's BRDFs have no anisotropic lobe; material {anisotropic[0]!r} is anisotropic "
                     "(use brdf_model pbrlab, or anisotropy_strength 0)", "brdf_model")
-        filmed = sorted(name for name, m in materials.items() if m.iridescence > 0.0)
+        filmed = sorted(name for name in materials if "iridescence" in layers[name])
         if filmed:
             rs.fail(f"Unity's BRDFs have no F0 a thin film could replace; material {filmed[0]!r} is iridescent "
                     "(use brdf_model pbrlab, or iridescence 0)", "brdf_model")
-        transmissive = sorted(name for name, m in materials.items() if m.transmission > 0.0)
+        transmissive = sorted(name for name in materials if "transmission" in layers[name])
         if transmissive:
             rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
                     "(use brdf_model pbrlab, or transmission 0)", "brdf_model")

@@ -168,7 +168,8 @@ MATERIAL = {
                                         default=100.0, lo=0.0),
     "iridescence_thickness_max": Number("The film's thickness where the map is 1 (or without one), in nm.",
                                         default=400.0, lo=0.0),
-    "transmission": Number("KHR_materials_transmission's factor; 0 = none.", default=0.0, lo=0.0, hi=1.0),
+    "transmission": Number("KHR_materials_transmission's factor; 0 = none. The non-transmissive objects "
+                           "behind and the environment are seen through.", default=0.0, lo=0.0, hi=1.0),
     "thickness": Number("The volume's thickness in scene units (KHR_materials_volume); 0 = thin-walled.",
                         default=0.0, lo=0.0),
     "attenuation_color": Vector("Beer-Lambert: the colour, linear, reached after attenuation_distance.",

@@ -113,7 +113,8 @@ def _environment() -> dict:
 def _material(texture_slots, brdf_terms) -> dict:
     material = _object(MATERIAL)
     material["properties"].update({
-        "surface": {"description": "A GLSL file with a Unity-style surf(Input, inout SurfaceOutputStandard), "
+        "surface": {"description": "A GLSL file with a Unity-style surf(Input, inout SurfaceOutputStandard) "
+                                   "(with a third parameter, inout SurfaceOutputStandardLayers, to write the layers), "
                                    "or a Unity surface shader (.shader, or text with #pragma surface).",
                     "type": "string", "minLength": 1},
         "textures": {"description": "Slot -> image file, or -> {\"path\", \"srgb\"} (any sampler a surface "

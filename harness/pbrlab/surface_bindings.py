@@ -26,13 +26,17 @@ _HLSL = (re.compile(r"\b(?:UNITY|PBRLAB)_DECLARE_TEX2D\s*\(\s*(\w+)\s*\)"),
          re.compile(r"\bsampler2D\s+(\w+)"))
 
 
-def declared_samplers(surface: Path, search_dirs=()) -> set[str]:
-    """Sampler names declared by ``surface`` and the files it includes."""
+def surface_sources(surface: Path, search_dirs=()) -> list[str]:
+    """The text of ``surface`` and of the files it includes, comments removed."""
     text = read_source(surface)
     files = [text] + [read_source(p) for p in include_closure(text, search_dirs, surface.parent)]
+    return [_COMMENTS.sub(" ", body) for body in files]
+
+
+def declared_samplers(surface: Path, search_dirs=()) -> set[str]:
+    """Sampler names declared by ``surface`` and the files it includes."""
     names: set[str] = set()
-    for body in files:
-        body = _COMMENTS.sub(" ", body)
+    for body in surface_sources(surface, search_dirs):
         if surface.suffix == ".hlsl":
             for pattern in _HLSL:
                 names.update(pattern.findall(body))

@@ -199,3 +199,12 @@ def test_shape_mismatch_exits_1(exr_pair, capsys):
     images.write_exr(folder / "small.exr", np.zeros((4, 8, 3), np.float32))
     assert cli.main(["diff", str(folder / "a.exr"), str(folder / "small.exr")]) == 1
     assert "shape mismatch" in capsys.readouterr().out
+
+
+def test_float32_ulps_counts_roundings_of_the_expected_value():
+    one = np.float32(1.0)
+    ulps = compare.float32_ulps
+    assert ulps([one, 2 * one, 0.0], [np.nextafter(one, 2 * one), 2 * one, 0.0]).tolist() == [1.0, 0.0, 0.0]
+    # in spacings above the expected value: the float below 1 is half a spacing of 1 away
+    assert ulps([one], [np.nextafter(one, 0 * one)]).tolist() == [0.5]
+    assert ulps([1e8], [1e8 + 24])[0] == 3.0  # float32 spacing 8 at 1e8

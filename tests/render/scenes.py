@@ -14,6 +14,14 @@ def one_sphere(material, lights, size=(64, 64), environment=None, fov=30.0, tone
     }
 
 
+def layer_sphere(material):
+    """One sphere under a directional and a point light and a constant environment: a
+    surface file's or Unity shader's layers against the same JSON material's."""
+    return one_sphere(material, [{"type": "directional", "direction": [-0.5, -0.3, -1.0]},
+                                 {"type": "point", "position": [1, 2, 2], "intensity": 5}],
+                      environment={"color": [0.3, 0.3, 0.35]})
+
+
 def light_zoo():
     """Directional, point and spot lights with ranges, on a row of three materials."""
     scene = one_sphere({"albedo": [0.8, 0.2, 0.1], "smoothness": 0.7}, [], size=(160, 64), fov=25)

@@ -336,3 +336,32 @@ def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, s
         assert token not in plain_text and token in layered_text, token
     for token in absent:
         assert token not in layered_text, token
+
+
+# A surface file's layers are the ones it writes (harness/pbrlab/surface_layers.py): the
+# brick surface writes none, coat.glsl the clear coat only.
+LAYERED_SURFACES = ROOT / "tests" / "surface" / "layered_surfaces"
+LAYER_CALL_SITES = {"clearcoat": ",layers,o.Normal,v,gi,", "sheen": "u_sheen_lut",
+                    "anisotropy": "AnisotropicReflectionNormal(o.Normal",
+                    "iridescence": "specColor=pbr_iridescent_f0(specColor",
+                    "transmission": "TransmittedDirection(o.Normal"}
+
+
+@pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
+@pytest.mark.parametrize("surface, written", [
+    (ROOT / "scenes" / "unity_example" / "brick_surface.glsl", ()),
+    (LAYERED_SURFACES / "coat.glsl", ("clearcoat",)),
+    (LAYERED_SURFACES / "every_layer.glsl", tuple(LAYER_CALL_SITES))], ids=["brick", "coat", "every_layer"])
+def test_a_surface_file_compiles_only_the_layers_it_writes(tmp_path, surface, written, specialise):
+    data = json.loads(json.dumps(MINIMAL))
+    data["materials"]["m"] = {"surface": str(surface)}
+    if surface.name == "brick_surface.glsl":
+        data["materials"]["m"]["textures"] = {
+            name: {"path": str(ROOT / "scenes" / "assets" / f"bricks_{file}.png"), "srgb": False}
+            for name, file in (("_MainTex", "albedo"), ("_BumpMap", "normal"),
+                               ("_MetallicGlossMap", "metallic_smoothness"), ("_EmissionMap", "emission"))}
+    defines = features.plan_programs(parse_scene(data), specialise).defines["m"]
+    text = _preprocessed(programs.template_source("sphere.frag", defines, surface).text, tmp_path)
+    for layer, token in LAYER_CALL_SITES.items():
+        assert (token in text) == (layer in written), (layer, token)
+    assert ("pbrlab_default_layers()" in text) == bool(written)

@@ -16,6 +16,7 @@ lighting, final colour) and the entry point.
 from __future__ import annotations
 
 from ..hlsl import line_directive
+from ..surface_layers import FIELD_SIZES
 from . import model as M
 from .parse import _component_count
 
@@ -98,6 +99,40 @@ def _zero_output(shader: M.SurfaceShader, language: str) -> list[str]:
                 lines.append(f"    o.{name} = {zero};")
     if "Occlusion" in shader.output_fields:
         lines.append("    o.Occlusion = 1.0;")
+    if shader.layers:  # the layers' fields start from the harness's defaults (no coat, ...)
+        lines.append("    SurfaceOutputStandardLayers pbrlabLayerDefaults = pbrlab_default_layers();")
+        lines += [f"    o.{name} = pbrlabLayerDefaults.{name};" for name in FIELD_SIZES]
+    return lines
+
+
+def layered_struct(shader) -> list[str]:
+    """The output struct of a layered model (model.LAYERED_MODELS), written from its field
+    table before the program that fills it; none for the other models."""
+    if getattr(shader, "kind", None) != "surface" or shader.pragma.model not in M.LAYERED_MODELS:
+        return []
+    name = M.BUILTIN_MODELS[shader.pragma.model]
+    fields = [f"    {_vec(n)} {field};" for field, n in M.OUTPUT_FIELDS[name].items()]
+    return [f"// {name}: {M.LAYERED_MODELS[shader.pragma.model]}'s fields, then SurfaceOutputStandardLayers'",
+            f"struct {name} {{", *fields, "};"]
+
+
+def _layered_shading(shader: M.SurfaceShader) -> list[str]:
+    """A layered model's output shaded as the harness shades a JSON material with the same
+    layers (scene_lighting.inc pbrlab_shade_surface): the Standard struct and the layers'
+    struct filled from it, tangent-space layer directions to the world as o.Normal. (The
+    specular model's material has the specular workflow, scene.py: PbrlabSurfaceOutput is
+    SurfaceOutputStandardSpecular there.)"""
+    base = M.LAYERED_MODELS[shader.pragma.model]
+    lines = [f"    {base} pbrlabBase;"]
+    lines += [f"    pbrlabBase.{name} = o.{name};" for name in M.OUTPUT_FIELDS[base]]
+    if shader.layers:
+        lines.append("    SurfaceOutputStandardLayers layers;")
+        lines += [f"    layers.{name} = o.{name};" for name in FIELD_SIZES]
+        for layer, direction in (("clearcoat", "ClearCoatNormal"), ("anisotropy", "AnisotropyDirection")):
+            if layer in shader.layers:
+                lines.append(f"    layers.{direction} = pbrlab_tangent_to_world_normal(layers.{direction}, "
+                             "f.normal, f.tangent);")
+    lines.append("    vec4 c = pbrlab_shade_surface(pbrlabBase, f.position, f.view PBRLAB_LAYERS_ARG);")
     return lines
 
 
@@ -116,13 +151,15 @@ def glue(shader: M.SurfaceShader, language: str) -> str:
         else:
             out.append(f"in {kind} v_custom_{name};\n#define pbrlab_custom_{name} v_custom_{name}")
     out.append(_input_fill(shader, language))
-    out.append(f"#define PBRLAB_UNITY_OUTPUT {shader.output_type}")
-    out.append(f"#define PBRLAB_UNITY_LIGHT(o, v, gi) {_light_call(shader)}")
-    if shader.lighting.form in (M.FORM_GI_VIEW, M.FORM_GI):
-        out.append(f"#define PBRLAB_UNITY_GI(o, data, gi) Lighting{shader.lighting.name}_GI(o, data, gi)")
-    if "Emission" in shader.output_fields:
-        out.append("#define PBRLAB_UNITY_EMISSION")
-    out.append('#include "unity_shading.inc"')
+    layered = shader.pragma.model in M.LAYERED_MODELS
+    if not layered:  # Unity's forward path over Lighting<Name> (a layered model: _layered_shading)
+        out.append(f"#define PBRLAB_UNITY_OUTPUT {shader.output_type}")
+        out.append(f"#define PBRLAB_UNITY_LIGHT(o, v, gi) {_light_call(shader)}")
+        if shader.lighting.form in (M.FORM_GI_VIEW, M.FORM_GI):
+            out.append(f"#define PBRLAB_UNITY_GI(o, data, gi) Lighting{shader.lighting.name}_GI(o, data, gi)")
+        if "Emission" in shader.output_fields:
+            out.append("#define PBRLAB_UNITY_EMISSION")
+        out.append('#include "unity_shading.inc"')
     body = ["vec4 pbrlab_unity_pixel(PbrlabFragment f) {",
             "    Input IN = pbrlab_unity_input(f);"]
     body += _zero_output(shader, language)
@@ -136,7 +173,7 @@ def glue(shader: M.SurfaceShader, language: str) -> str:
                  "    o.Normal = normalize(vec3(dot(vec3(t.x, b.x, f.normal.x), o.Normal),",
                  "                              dot(vec3(t.y, b.y, f.normal.y), o.Normal),",
                  "                              dot(vec3(t.z, b.z, f.normal.z), o.Normal)));"]
-    body.append("    vec4 c = pbrlab_unity_shade(o, f.position, f.view);")
+    body += _layered_shading(shader) if layered else ["    vec4 c = pbrlab_unity_shade(o, f.position, f.view);"]
     if shader.pragma.finalcolor:
         body.append(f"    {shader.pragma.finalcolor}(IN, o, c);")
     body.append("    return vec4(pbrlab_target_radiance(c.rgb), pbrlab_output_alpha(c));")
@@ -249,6 +286,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     else:
         head.append('#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    head += layered_struct(shader)
     first = shader.program_line if language == "hlsl" else 1
     line = line_directive(first, display) if language == "hlsl" else f"#line {first}"
     entry = _ENTRY[(language, stem)]
@@ -341,6 +379,7 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
              f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    head += layered_struct(shader)
     first = shader.program_line if language == "hlsl" else 1
     line = line_directive(first, display) if language == "hlsl" else f"#line {first}"
     custom = custom_varyings(shader, language)

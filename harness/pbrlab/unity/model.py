@@ -9,6 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..surface_layers import FIELD_SIZES
+
 # Input members Unity's surface compiler fills by name (Unity manual, "Writing Surface
 # Shaders", Input structure); uv<N>_<Texture> take the texture's _ST tiling and offset.
 FILLED_INPUTS = ("viewDir", "worldPos", "worldNormal", "worldRefl", "screenPos", "color")
@@ -20,7 +22,15 @@ BUILTIN_MODELS = {
     "StandardSpecular": "SurfaceOutputStandardSpecular",
     "Lambert": "SurfaceOutput",
     "BlinnPhong": "SurfaceOutput",
+    "StandardLayered": "SurfaceOutputStandardLayered",
+    "StandardSpecularLayered": "SurfaceOutputStandardSpecularLayered",
 }
+# pbrlab's layered models (no such model in Unity's built-in pipeline; named by its rule
+# struct = "SurfaceOutput" + model): the Standard struct with SurfaceOutputStandardLayers'
+# fields beside it (URP's ClearCoatMask, ClearCoatSmoothness, ...), shaded as the harness
+# shades a JSON material with those layers (generate.py). Model -> the Standard struct it extends.
+LAYERED_MODELS = {"StandardLayered": "SurfaceOutputStandard",
+                  "StandardSpecularLayered": "SurfaceOutputStandardSpecular"}
 # Fields of Unity's output structs (Lighting.cginc, UnityPBSLighting.cginc) and their sizes.
 OUTPUT_FIELDS = {
     "SurfaceOutput": {"Albedo": 3, "Normal": 3, "Emission": 3, "Specular": 1, "Gloss": 1, "Alpha": 1},
@@ -29,6 +39,8 @@ OUTPUT_FIELDS = {
     "SurfaceOutputStandardSpecular": {"Albedo": 3, "Specular": 3, "Normal": 3, "Emission": 3,
                                       "Smoothness": 1, "Occlusion": 1, "Alpha": 1},
 }
+OUTPUT_FIELDS.update({BUILTIN_MODELS[model]: {**OUTPUT_FIELDS[base], **FIELD_SIZES}
+                      for model, base in LAYERED_MODELS.items()})
 
 # Lighting function forms (Unity manual, "Custom lighting models in Surface Shaders").
 FORM_GI_VIEW = "s, viewDir, gi"          # + Lighting<Name>_GI(s, UnityGIInput data, inout UnityGI gi)
@@ -108,6 +120,7 @@ class SurfaceShader:
     output_type: str = "SurfaceOutputStandard"
     output_fields: dict = field(default_factory=dict)    # field -> component count
     writes_normal: bool = False
+    layers: frozenset = frozenset()  # the layers beyond the Standard model it writes (surface_layers.py)
     lighting: LightingFunction | None = None
     vertex: VertexFunction | None = None
     declared: frozenset = frozenset()  # global names the program declares itself

@@ -17,6 +17,7 @@ import re
 from pathlib import Path
 
 from ..errors import PbrlabError
+from ..surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
 from . import shaderlab
@@ -496,6 +497,13 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
                                            r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
     shader.light_keywords = tests_light_keywords(everything)
+    if pragma.model in M.LAYERED_MODELS:
+        # the layers whose fields it writes are compiled in (surface_layers.py)
+        shader.layers = written_layers(everything)
+        if shader.light_keywords:
+            raise UnityShaderError(f"{where(pragma_at)}: lighting model {pragma.model} shades every light in "
+                                   "one program, so it cannot test Unity's per-light keywords "
+                                   f"({', '.join(LIGHT_KEYWORDS)}); use Standard, or remove those #if lines")
     return shader
 
 

@@ -116,19 +116,21 @@ def _drop_unity_redeclarations(code: str) -> str:
 
 
 def port_program(shader: M.SurfaceShader) -> str:
-    """The shader's CGPROGRAM ported, line for line (comments kept)."""
-    return port_text(shader.program, shader.path.parent)
+    """The shader's CGPROGRAM ported, line for line (comments kept); a layered model's output
+    struct (generated before the program: generate.layered_struct) is known to the type pass."""
+    from .generate import layered_struct
+    return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)))
 
 
-def port_text(program: str, folder: Path | None = None) -> str:
+def port_text(program: str, folder: Path | None = None, declarations: str = "") -> str:
     """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
-    declarations of the files it includes are known to the type pass too."""
-    symbols = None
+    declarations of the files it includes are known to the type pass too, as are
+    ``declarations`` (what the harness puts before the program)."""
+    included = declarations
     if folder is not None:
         from .parse import included_text
-        included = included_text(program, folder)
-        if included.strip():
-            symbols = cg_types.with_declarations(included)
+        included += "\n" + included_text(program, folder)
+    symbols = cg_types.with_declarations(included) if included.strip() else None
     segments = _code_segments(cg_types.convert(program, symbols))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = _drop_unity_redeclarations(port_code(code))
