@@ -99,7 +99,46 @@ def test_a_buffer_outside_the_models_folder_is_refused(tmp_path, capsys, where):
     status, err = _cli(["render", path, "-o", tmp_path / "out.png", "--size", "8x8"], capsys)
     assert status == 2
     assert "buffers[0]: only files beside the glTF (in its folder or below it) and data: URIs are read" in err
+    assert "(pass --allow-outside to read files outside it)" in err
     assert not (tmp_path / "out.png").exists()
+
+
+@pytest.mark.parametrize("where", ["parent", "absolute"])
+def test_allow_outside_reads_a_buffer_outside_the_models_folder(tmp_path, capsys, where):
+    model_dir = tmp_path / "model"
+    model_dir.mkdir()
+    doc, data = _model_with_buffer_file(tmp_path, "../quad.bin" if where == "parent" else str(tmp_path / "quad.bin"))
+    path = write(model_dir, doc)
+    status, err = _cli(["render", path, "-o", tmp_path / "out.png", "--size", "8x8", "--allow-outside"], capsys)
+    assert status == 0, err
+    inside_dir = tmp_path / "inside"  # the same model with its buffer beside it: the same image
+    inside_dir.mkdir()
+    (inside_dir / "quad.bin").write_bytes(data)
+    doc["buffers"][0]["uri"] = "quad.bin"
+    status, err = _cli(["render", write(inside_dir, doc), "-o", tmp_path / "inside.png", "--size", "8x8"], capsys)
+    assert status == 0, err
+    assert (tmp_path / "out.png").read_bytes() == (tmp_path / "inside.png").read_bytes()
+
+
+def test_an_output_over_a_buffer_read_from_outside_is_refused(tmp_path, capsys):
+    model_dir = tmp_path / "model"
+    model_dir.mkdir()
+    doc, data = _model_with_buffer_file(tmp_path, "../quad.bin")
+    (tmp_path / "quad.exr").write_bytes(data)
+    doc["buffers"][0]["uri"] = "../quad.exr"
+    path = write(model_dir, doc)
+    status, err = _cli(["render", path, "--hdr", tmp_path / "quad.exr", "--size", "8x8", "--allow-outside"], capsys)
+    assert status == 2, err
+    assert "buffers[0] of model.gltf" in err
+    assert (tmp_path / "quad.exr").read_bytes() == data
+
+
+def test_allow_outside_is_for_gltf_files(tmp_path, capsys):
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"camera": {"position": [0, 0, 3], "target": [0, 0, 0]}, "objects": []}))
+    status, err = _cli(["render", scene, "-o", tmp_path / "out.png", "--allow-outside"], capsys)
+    assert status == 2
+    assert "--allow-outside are for glTF files" in err
 
 
 @pytest.mark.parametrize("uri", ["../x.png", "/etc/x.png", "C:/x.png", "sub/..\\..\\x.png"])

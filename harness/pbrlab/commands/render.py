@@ -84,7 +84,7 @@ def parse_time(text: str | None) -> float | None:
 
 
 def load_any_scene(path, camera=None, environment=None, size=None, variant=None, scene=None, weights=None,
-                   time=None, animation=None):
+                   time=None, animation=None, allow_outside=False):
     """A JSON scene, or a glTF 2.0 file (.gltf, .glb) with its warnings printed to stderr."""
     import sys
     from pathlib import Path
@@ -92,9 +92,10 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     from ..scene_files import is_gltf
 
     if not is_gltf(path):
-        if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)):
-            raise PbrlabError("--camera, --environment, --variant, --scene, --weights, --time and --animation "
-                              "are for glTF files; a JSON scene names its own")
+        if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)) \
+                or allow_outside:
+            raise PbrlabError("--camera, --environment, --variant, --scene, --weights, --time, --animation and "
+                              "--allow-outside are for glTF files; a JSON scene names its own")
         scene, messages = load_scene_with_gltf_warnings(path)
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
@@ -104,7 +105,8 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
-                       variant=variant, scene=scene, weights=weights, time=time, animation=animation)
+                       variant=variant, scene=scene, weights=weights, time=time, animation=animation,
+                       allow_outside=allow_outside)
     for message in result.warnings:
         print(f"warning: {message}", file=sys.stderr)
     chosen = light_units_default(Path(path), result.scene)
@@ -124,7 +126,7 @@ def run(args) -> int:
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
     scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant, args.gltf_scene,
-                           parse_weights(args.weights), parse_time(args.time), args.animation)
+                           parse_weights(args.weights), parse_time(args.time), args.animation, args.allow_outside)
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
@@ -168,6 +170,9 @@ def register(sub, common):
                    help="glTF: sample the animations at T seconds (default: the nodes as written, skins in that pose)")
     p.add_argument("--animation", default=None, metavar="N|NAME",
                    help="glTF: sample only this animation (an index or a name; default: all of them)")
+    p.add_argument("--allow-outside", action="store_true",
+                   help="glTF: read buffers and images outside the file's folder (absolute paths, ..); "
+                        "refused by default")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

@@ -77,7 +77,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
               render: RenderSettings | None = None, size=None, emit_warnings: bool = True,
               variant: str | None = None, scene: int | None = None,
               weights: tuple | None = None, time: float | None = None,
-              animation: str | None = None) -> GltfScene:
+              animation: str | None = None, allow_outside: bool = False) -> GltfScene:
     """The scene of a glTF 2.0 file. ``camera``: the index of a glTF camera (default: the
     first one a node places; a framing camera from the bounds when there is none).
     ``variant``: a KHR_materials_variants variant's name (default: the default materials).
@@ -88,8 +88,10 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     ``animation`` the index or name of the one animation sampled (default: all of them at
     ``time``; without either the nodes as written, gltf.animation). Skinned meshes are
     posed by their joints either way (gltf.skin).
+    ``allow_outside``: buffers and images may be files outside the glTF's folder (by
+    default only files in it or below it are read: a downloaded model cannot read elsewhere).
     Warnings are returned and, with ``emit_warnings``, issued as GltfWarning."""
-    doc = read_document(path)
+    doc = read_document(path, allow_outside)
     path = Path(path)
     messages: list[str] = []
 

@@ -37,6 +37,7 @@ class Document:
     path: Path
     json: dict
     glb_bin: bytes | None = None
+    allow_outside: bool = False  # read files outside the glTF's folder too (--allow-outside)
     _buffers: dict = field(default_factory=dict)
     _items: dict = field(default_factory=dict)
     _decoded_views: dict = field(default_factory=dict)
@@ -129,7 +130,8 @@ class Document:
         file = self.local_file(uri)
         if file is None:
             self.fail(where, f"only files beside the glTF (in its folder or below it) and data: URIs "
-                             f"are read, not {uri}")
+                             f"are read, not {uri}"
+                             + ("" if "://" in uri else " (pass --allow-outside to read files outside it)"))
         try:
             file = file.resolve()
             if not file.is_file():
@@ -140,12 +142,14 @@ class Document:
 
     def local_file(self, uri: str) -> Path | None:
         """The file a uri names when it lies in the glTF's folder or below it: no scheme, no
-        absolute path or drive, no ``..``, no NUL."""
+        absolute path or drive, no ``..``, no NUL; with ``allow_outside``, any local path
+        (absolute, or relative to the glTF's folder)."""
         name = urllib.parse.unquote(uri)
         if "://" in uri or uri.startswith("data:") or "\x00" in name:
             return None
         slashed = name.replace("\\", "/")
-        if slashed.startswith("/") or PureWindowsPath(name).drive or ".." in PurePosixPath(slashed).parts:
+        outside = slashed.startswith("/") or PureWindowsPath(name).drive or ".." in PurePosixPath(slashed).parts
+        if outside and not self.allow_outside:
             return None
         return self.path.parent / name
 
@@ -204,8 +208,9 @@ def _parse_json(path: Path, data: bytes) -> dict:
     return document
 
 
-def read_document(path) -> Document:
-    """The document of a .gltf or .glb file (asset.version 2.x)."""
+def read_document(path, allow_outside: bool = False) -> Document:
+    """The document of a .gltf or .glb file (asset.version 2.x). ``allow_outside``: its
+    buffers and images may name files outside its folder (refused by default)."""
     path = Path(path)
     if not path.is_file():
         raise SceneError(f"{path}: no such glTF file")
@@ -219,7 +224,7 @@ def read_document(path) -> Document:
     if not isinstance(version, str) or not version.startswith("2."):
         raise SceneError(f"{path}: not a readable glTF 2.0 file (asset.version is {json.dumps(version)}, "
                          "expected \"2.0\")")
-    doc = Document(path, document, binary)
+    doc = Document(path, document, binary, allow_outside)
     _check_top_level(doc)
     return doc
 
