@@ -25,7 +25,7 @@
 //    interpolated normals stay finite. NdotL > 0 is passed as it is: the fused D · V
 //    quotients need no floor, the unfused V terms floor it themselves.
 //  - Guards are established once, here, for the whole BRDF: the clamped roughness, the
-//    NdotV clamp, NdotL > 0 and |l + v|² in [threshold, 4] are the preconditions under
+//    NdotV clamp, NdotL > 0, n·(l + v) >= PBR_MIN_NDOT_HALF_SUM and |l + v|² <= 4 are the preconditions under
 //    which the selected D · V needs none of its own (pbr_specular_DV).
 //  - h = (l + v) / |l + v| is never formed: D · V takes n·(l + v), |n × (l + v)|² (so
 //    1 - NdotH² has no cancellation at the peak of sharp lobes, d_ggx.glsl) and |l + v|².
@@ -35,11 +35,14 @@
 //  - LdotH = VdotH = |l + v| / 2, the exact identity for unit l and v
 //    (l·(l+v)/|l+v| = (1 + l·v)/|l+v| = |l+v|/2), as 0.5 · sqrt(|l + v|²): no normalised h,
 //    continuous at l = -v; F and Burley's diffuse saturate it.
-//  - l = -v (|l + v|² < PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 1e-10; 2^-14 in LOW): no half
-//    vector exists; the specular lobe is defined as 0 (it would reflect light back into the
+//  - l = -v (n·(l + v) < PBR_MIN_NDOT_HALF_SUM, 2^-50, in every tier): no half vector
+//    exists; the specular lobe is defined as 0 (it would reflect light back into the
 //    surface: with NdotL > 0 the view is below the horizon) and the diffuse term is returned
-//    alone. |l + v|² is capped at 4 for D · V, so an unnormalised v (a far camera: +Inf)
-//    gives a lobe of 0 rather than Inf / Inf.
+//    alone. The test is on n·(l + v), not on |l + v|²: a grazing mirror (l + v = 2c·n at
+//    NdotL = NdotV = c) has a short l + v but a well-defined h = n and a lobe that grows as
+//    c -> 0, which a threshold on |l + v|² dropped (issue 25: below c = 3.9e-3 in LOW, where
+//    the lobe is 5069 1/sr at roughness 0.5). |l + v|² is capped at 4 for D · V, so an
+//    unnormalised v (a far camera: +Inf) gives a lobe of 0 rather than Inf / Inf.
 //  - No branches: NdotL <= 0, l = -v and h below the surface are selects at the end (a
 //    divergent branch costs mask bookkeeping on GPUs and llvmpipe alike; measured: README).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
@@ -80,7 +83,7 @@ vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
     // divergent control flow.
     bool lit = NdotL > 0.0;
     Fd = lit ? Fd : 0.0;
-    DV = lit && halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED && nDotHalfSum > 0.0 ? DV : 0.0;
+    DV = lit && nDotHalfSum >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
     return diffuseColor * Fd + DV * pbr_specular_F(f0, LdotH);
 }
 

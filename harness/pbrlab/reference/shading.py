@@ -10,7 +10,7 @@ import numpy as np
 
 from . import brdf, remap
 from .constants import LIGHT_UNIT_SCALE
-from .guards import HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOTV, MIN_VDOTH  # noqa: F401
+from .guards import HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOT_HALF_SUM, MIN_NDOTV, MIN_VDOTH  # noqa: F401
 
 # Edge constants, shared with glsl/pbr/shading/dispatch.glsl (tested equal).
 MIN_PERCEPTUAL_ROUGHNESS = 0.045          # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
@@ -165,7 +165,8 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     LdotH = 0.5 * np.sqrt(half_length2)
     diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
 
-    has_half = half_length2 >= QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED[quality]
+    # l + v has a direction above the surface (guards.MIN_NDOT_HALF_SUM, every tier)
+    has_half = _dot(n, half_sum) >= MIN_NDOT_HALF_SUM
     h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
     n_dot_h = _dot(n, h)
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
