@@ -51,7 +51,13 @@ ACO_NOTE = ("AMD figures: ACO's statistics from Mesa's RADV compiling for a forc
 KERNEL_NOTE = ("Per evaluation: (variant − family baseline) / 8 of the timing kernel's statistics: "
                "its loop (uniform trip count, never unrolled) holds 8 evaluations and is all that "
                "differs from the baseline, so a static count of it over 8 is the static cost of one "
-               "evaluation. VGPRs: of the variant's whole program (absolute).")
+               "evaluation. The baseline is the same program without the term: each evaluation's "
+               "inputs made from a per-pixel, per-iteration hash (what a shader's loads would give: "
+               "values the compiler cannot know), its derived values (the shading frame n, tx, ty "
+               "that turns per evaluation, l and v in it) and their sum into the output (what a "
+               "shader's store would keep alive); subtracting it leaves the term alone. Nothing is "
+               "constant across evaluations, so no part of the term folds. VGPRs: of the variant's "
+               "whole program (absolute).")
 SRGB_TEXTURE_NOTE = ("on AMD the sRGB decode happens in the texture unit (the format is in the "
                      "descriptor): the program is the same as the UNORM8 fetch, so its cost is 0")
 HARDWARE_ENCODE_NA = ("n/a: the sRGB encode happens in the colour-buffer hardware on the way to "
