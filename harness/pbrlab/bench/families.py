@@ -31,6 +31,7 @@ class Variant:
     kind: str = "alu"            # alu | texture | hardware_encode
     texture: str | None = None   # texture kernels: srgb8 | unorm8 | dfg
     self_reference: Callable | None = None  # float64 twin of this variant (float32 error)
+    peer: str = ""               # a peer engine's code it calls: a file of bench/peers (not the library)
 
 
 @dataclass(frozen=True)
@@ -251,13 +252,13 @@ def _sin(c):
 
 
 _TIER_DERIVED = (
-    ("float", "pbrlab_beta", _FRAME_BETA, lambda d: 1.3 * d["phi"] + 0.7 * d["r"]),
-    ("float", "pbrlab_gamma", _FRAME_GAMMA, lambda d: 2.1 * d["NdotL"] + 0.5 * d["phi"]),
-    ("vec3", "tx", "vec3(cos(pbrlab_gamma), sin(pbrlab_gamma), 0.0)", lambda d: _frame(d)[0]),
-    ("vec3", "ty", "vec3(-sin(pbrlab_gamma) * cos(pbrlab_beta), cos(pbrlab_gamma) * cos(pbrlab_beta), "
-                   "sin(pbrlab_beta))", lambda d: _frame(d)[1]),
-    ("vec3", "n", "vec3(sin(pbrlab_gamma) * sin(pbrlab_beta), -cos(pbrlab_gamma) * sin(pbrlab_beta), "
-                  "cos(pbrlab_beta))", lambda d: _frame(d)[2]),
+    ("float", "frame_beta", _FRAME_BETA, lambda d: 1.3 * d["phi"] + 0.7 * d["r"]),
+    ("float", "frame_gamma", _FRAME_GAMMA, lambda d: 2.1 * d["NdotL"] + 0.5 * d["phi"]),
+    ("vec3", "tx", "vec3(cos(frame_gamma), sin(frame_gamma), 0.0)", lambda d: _frame(d)[0]),
+    ("vec3", "ty", "vec3(-sin(frame_gamma) * cos(frame_beta), cos(frame_gamma) * cos(frame_beta), "
+                   "sin(frame_beta))", lambda d: _frame(d)[1]),
+    ("vec3", "n", "vec3(sin(frame_gamma) * sin(frame_beta), -cos(frame_gamma) * sin(frame_beta), "
+                  "cos(frame_beta))", lambda d: _frame(d)[2]),
     ("vec3", "l", "sqrt(max(1.0 - NdotL * NdotL, 0.0)) * tx + NdotL * n",
      lambda d: _local(d, _sin(d["NdotL"]), 0.0 * d["NdotL"], d["NdotL"])),
     ("vec3", "v", "sqrt(max(1.0 - NdotV * NdotV, 0.0)) * (cos(phi) * tx + sin(phi) * ty) + NdotV * n",
@@ -285,7 +286,10 @@ BRDF_TIER = Family(
     variants=tuple(
         Variant(q.lower(), _TIER_EXPR, f"PBR_QUALITY_{q}", defines={"PBR_QUALITY": f"PBR_QUALITY_{q}"},
                 self_reference=None if q == "HIGH" else _tier_ref(q))
-        for q in ("HIGH", "MEDIUM", "LOW")),
+        for q in ("HIGH", "MEDIUM", "LOW")) + (
+        Variant("filament", _TIER_EXPR.replace("pbr_brdf_standard", "peer_filament_brdf"),
+                "peer: Filament's desktop standard lobe and clamps (bench/peers/filament_standard.glsl), "
+                "for the cost comparison", peer="filament_standard.glsl"),),
 )
 
 # ---- tonemappers ----------------------------------------------------------------------------

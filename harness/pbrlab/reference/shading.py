@@ -10,7 +10,7 @@ import numpy as np
 
 from . import brdf, remap
 from .constants import LIGHT_UNIT_SCALE
-from .guards import HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOT_HALF_SUM, MIN_NDOTV, MIN_VDOTH  # noqa: F401
+from .guards import FLT_MIN, HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOT_HALF_SUM, MIN_NDOTV, MIN_VDOTH  # noqa: F401
 
 # Edge constants, shared with glsl/pbr/shading/dispatch.glsl (tested equal).
 MIN_PERCEPTUAL_ROUGHNESS = 0.045          # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
@@ -157,7 +157,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     alpha = remap.alpha_from_perceptual_roughness(roughness)
 
     NdotL = _dot(n, l)
-    lit = NdotL > 0.0
+    lit = NdotL >= FLT_MIN  # saturate(NdotL · 2^126): 1 for a normal float32 NdotL > 0 (GPUs flush denormals)
     NdotL_safe = np.where(lit, NdotL, 1.0)
     NdotV = np.clip(_dot(n, v), MIN_NDOTV, 1.0)
     half_sum = l + v
@@ -165,8 +165,9 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     LdotH = 0.5 * np.sqrt(half_length2)
     diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
 
-    # l + v has a direction above the surface (guards.MIN_NDOT_HALF_SUM, every tier)
-    has_half = _dot(n, half_sum) >= MIN_NDOT_HALF_SUM
+    # l + v has a direction above the surface and the light is above it (guards.MIN_NDOT_HALF_SUM,
+    # every tier: min(NdotL, n·(l + v)) >= 2^-50)
+    has_half = np.minimum(NdotL, _dot(n, half_sum)) >= MIN_NDOT_HALF_SUM
     h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
     n_dot_h = _dot(n, h)
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
