@@ -258,14 +258,17 @@ def _scene_summary(record: dict, families) -> dict:
 # ---- half precision that reaches the ISA ------------------------------------------------------
 
 FLOAT16_FAMILY, FLOAT16_VARIANT = "brdf_tier", "low"
-FLOAT16_NOTE = ("The LOW tier's kernel compiled twice for Vulkan (#version 450): as it is (float32: "
+FLOAT16_NOTE = ("The LOW tier's kernel with Hammon's V and Schlick's F (the lobe the half study runs in "
+                "half's range) compiled twice for Vulkan (#version 450): as it is (float32: "
                 "RADV 22.3 ignores mediump / RelaxedPrecision) and with PBR_FLOAT16 under "
                 "GL_EXT_shader_explicit_arithmetic_types_float16, where the specular lobe "
                 "(pbr_DV_GGX_SmithCorrelatedFast_half) runs in float16_t. Per evaluation against the "
                 "family baseline; 16-bit and packed (v_pk_*) counts from the disassembly. The "
                 "kernel's inputs are float32, so the float16 lobe pays its conversions; its error in "
                 "half is the half study's (tests/hardcases/test_half.py).")
-_FLOAT16_HEADER = "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require"
+_FLOAT16_HEADER = ("#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n"
+                   "#define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST\n"
+                   "#define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK")
 
 
 def float16_jobs(kernels) -> dict:

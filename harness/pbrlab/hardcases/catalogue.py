@@ -141,7 +141,7 @@ DV_ARGUMENTS = dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha")
 TRANSMISSION_FUNCTIONS = ("pbr_BTDF_Walter_GGX_cosine", "pbr_BTDF_Walter_GGX", "pbr_transmission_punctual",
                           "pbr_transmission_thin_punctual", "pbr_mirror_through_surface", "pbr_refraction_direction")
 DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
-                "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
+                "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithBound", "pbr_specular_DV")
 
 # Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
 # complete), with its argument kinds and bound.
@@ -209,6 +209,7 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_V_Implicit", "", Bound("V = 1/4", 0.25, 0.25), "pbr_V_Implicit()"),
     _f("pbr_G_Kelemen", "NdotL:cosine NdotV:cosine VdotH:cosine", G),
     _f("pbr_V_Kelemen", "VdotH:cosine", V),
+    _f("pbr_V_SmithGGXBound", "NdotL:cosine NdotV:cosine", V),
     _f("pbr_F_Schlick", "f0:unit VdotH:cosine", F),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, VdotH)", _a("f0:unit3 VdotH:cosine"), F, "vec3"),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
@@ -230,6 +231,11 @@ TERMS: tuple[Function, ...] = (
              "pbr_DV_GGX_fromLambdaSum(" + dv_arguments("nDotH nCrossH2 h2 alpha lambdaSum") + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     Function("pbr_DV_GGX_SmithCorrelatedFast", "pbr_DV_GGX_SmithCorrelatedFast(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    # LOW's lobe, under pbr_brdf_standard's selection (n·(l + v) >= PBR_MIN_NDOT_HALF_SUM: it
+    # divides by n·(l + v)), at LOW's roughness floor
+    Function("pbr_DV_GGX_SmithBound", "pbr_DV_GGX_SmithBound(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True)
+             .replace("dot(l + v, l + v) >= PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", "dot(n, l + v) >= PBR_MIN_NDOT_HALF_SUM") + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
     Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
