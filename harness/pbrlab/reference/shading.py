@@ -181,7 +181,11 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         if d_var == "GGX":  # even in n·h: GGX at |n·h| (dispatch.glsl, pbr_specular_DV)
-            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), 1.0 - n_dot_h ** 2, alpha)
+            # 1 - NdotH² as |n × ĥ|², the GLSL's form: equal for a unit n, and for a float32 n
+            # (|n|² = 1 ± 1e-7) free of the cancellation that shifts 1 - (n·ĥ)² by 1e-7, which is
+            # 2 % of alpha² at the HIGH floor (4.1e-6) at the mirror
+            n_cross_h = np.cross(n, h)
+            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), _dot(n_cross_h, n_cross_h), alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)
         if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":  # fused: NdotL as it is
