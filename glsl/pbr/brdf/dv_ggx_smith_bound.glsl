@@ -32,7 +32,10 @@
 float pbr_DV_GGX_SmithBound(float nDotH, float nCrossH2, float h2, float NdotL, float NdotV,
                             float alpha) {
     float a2 = alpha * alpha;
-    float dn = 1.0 - (nDotH * nDotH) * (1.0 / h2) * (1.0 - a2);
+    // NdotH² saturated (a free output modifier on AMD): a short l + v can round it above 1,
+    // where dn would reach 0; saturated, dn >= alpha² > 0
+    float cos2 = clamp(nDotH * nDotH * (1.0 / h2), 0.0, 1.0);
+    float dn = 1.0 - cos2 * (1.0 - a2);
     return (a2 * (0.5 * PBR_INV_PI)) / (dn * dn * nDotH);
 }
 

@@ -118,16 +118,17 @@ def _f(name, args, bound, call=None):
 
 
 # The D · V arguments from directions, as pbr_brdf_standard makes them (h = l + v unnormalised,
-# its squared length capped at 4, the cosines and roughness clamped): the preconditions of
+# the cosines and roughness clamped): the preconditions of
 # the fused quotients. Where l + v has no direction (l = -v), pbr_brdf_standard does not use
 # D · V; here h = n stands in, so every call meets the preconditions. lambdaSum is the exact
 # lambdas' smallest sum, NdotV alpha (NdotL -> 0).
 def dv_arguments(parts: str, low: bool = False) -> str:
     """The call's arguments, in order, from ``parts`` (space-separated names of
     ``_DV_PARTS``), for the HIGH/MEDIUM guards or (``low``) the LOW tier's."""
-    threshold, floor = (("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP")
-                        if low else ("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"))
-    h = f"(dot(l + v, l + v) >= {threshold} ? l + v : n)"
+    floor = "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP" if low else "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"
+    # pbr_brdf_standard's selection (issue 25): the lobe where NdotL and n·(l + v) reach
+    # PBR_MIN_NDOT_HALF_SUM, so h = l + v has a direction above the surface
+    h = "(min(dot(n, l), dot(n, l + v)) >= PBR_MIN_NDOT_HALF_SUM ? l + v : n)"
     alpha = f"pbr_alpha_from_perceptual_roughness(clamp(roughness, {floor}, 1.0))"
     values = {"nDotH": f"dot(n, {h})", "nCrossH2": f"dot(cross(n, {h}), cross(n, {h}))",
               "h2": f"min(dot({h}, {h}), 4.0)", "NdotL": "max(dot(n, l), PBR_MIN_NDOTV)",
@@ -234,8 +235,7 @@ TERMS: tuple[Function, ...] = (
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # LOW's lobe, under pbr_brdf_standard's selection (n·(l + v) >= PBR_MIN_NDOT_HALF_SUM: it
     # divides by n·(l + v)), at LOW's roughness floor
-    Function("pbr_DV_GGX_SmithBound", "pbr_DV_GGX_SmithBound(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True)
-             .replace("dot(l + v, l + v) >= PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", "dot(n, l + v) >= PBR_MIN_NDOT_HALF_SUM") + ")",
+    Function("pbr_DV_GGX_SmithBound", "pbr_DV_GGX_SmithBound(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
     Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
