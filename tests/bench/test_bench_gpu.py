@@ -103,3 +103,42 @@ def test_validate_rejects_a_non_finite_gpu_figure():
     assert any("rdna2.instructions_per_eval" in p for p in problems)
     assert any("missing gcn5" in p for p in problems)
     assert report.SCHEMA_ID == "pbrlab-bench/2"
+
+
+# ---- the whole-BRDF kernels cannot fold the shading frame (issue 25) -------------------------
+
+def test_tier_kernel_frame_turns_per_evaluation_and_keeps_the_domain():
+    """n, l and v of the brdf_tier (and layers) kernels: unit, NdotL and NdotV as the inputs
+    say, tx and ty orthonormal to n, and every component of n varying over the domain."""
+    import numpy as np
+    rng = np.random.default_rng(0)
+    d = {name: rng.uniform(lo, hi, 4096) for name, lo, hi in families.BRDF_TIER.inputs}
+    for _, name, _, fn in families.BRDF_TIER.derived:
+        d[name] = fn(d)
+    dot = lambda a, b: (d[a] * d[b]).sum(-1)  # noqa: E731
+    for name in ("n", "l", "v", "tx", "ty"):
+        assert np.allclose(dot(name, name), 1.0)
+    assert np.allclose(dot("n", "l"), d["NdotL"]) and np.allclose(dot("n", "v"), d["NdotV"])
+    assert np.allclose(dot("n", "tx"), 0.0) and np.allclose(dot("n", "ty"), 0.0) and np.allclose(dot("tx", "ty"), 0.0)
+    assert (d["n"].std(axis=0) > 0.1).all()
+
+
+def test_tier_kernel_with_the_turning_frame_costs_what_a_constant_normal_folds_away():
+    """The bench's HIGH-tier kernel (the turning frame) against the same kernel with n = +z
+    (the first bench's): the constant normal lets the compiler fold the products with n's
+    zeros and ones, so it reports fewer instructions per evaluation on every family."""
+    if (why := gpu.unavailable_reason()) is not None:
+        pytest.fail(f"RADV null device unavailable (scripts/setup.sh installs it): {why}")
+    from dataclasses import replace
+    high = next(v for v in families.BRDF_TIER.variants if v.name == "high")
+    constant = (("vec3", "n", "vec3(0.0, 0.0, 1.0)", None),
+                ("vec3", "l", "vec3(sqrt(max(1.0 - NdotL * NdotL, 0.0)), 0.0, NdotL)", None),
+                ("vec3", "v", "vec3(sqrt(max(1.0 - NdotV * NdotV, 0.0)) * cos(phi), "
+                              "sqrt(max(1.0 - NdotV * NdotV, 0.0)) * sin(phi), NdotV)", None))
+    costs = {}
+    for label, family in (("turning", families.BRDF_TIER), ("constant", replace(families.BRDF_TIER, derived=constant))):
+        kernels, plans = measure.kernel_specs([replace(family, variants=(high,))])
+        costs[label] = gpu.measure(kernels, plans, {family.name: family}, {})["kernels"][("brdf_tier", "high")]
+    for fam in gpu.GPU_FAMILIES:
+        turning, folded = (costs[k]["families"][fam]["instructions_per_eval"] for k in ("turning", "constant"))
+        assert turning > folded + 4, (fam, turning, folded)

@@ -55,13 +55,12 @@ def test_medium_tier_error_against_high_tier_is_measured(renders):
 
 def test_low_tier_error_against_high_tier_is_measured(renders):
     rel, srgb = _tier_error(renders, "low")
-    # LOW swaps V for the fast correlated-Smith fit, raises the minimum roughness to 0.089
-    # and caps D·V at 65504; it reads the same DFG table as HIGH (the diffuse-specular
-    # coupling needs the albedo of the library's V; Karis's fit, off by up to 0.48, is only
-    # the fallback without a table). Measured on this scene: relative to 0.01 + |high|,
-    # median 0.0013, p99 0.0068, max 2.5 (grazing floor far away, where the fast V and the
-    # roughness floor differ most); display mean 0.067 codes, max 29 codes (with Karis's fit:
-    # median 0.0023, p99 0.053, mean 0.25 codes). The tiers must differ (the selector works)
-    # and stay in that envelope.
-    assert 5e-4 < np.median(rel) < 3e-3 and np.quantile(rel, 0.99) < 0.02
-    assert 0.03 < srgb.mean() < 0.15
+    # LOW is its own lobe (issue 25): V bounded without a square root (0.5 / n·(l + v)), no
+    # per-light Fresnel rise (F = f0), the 0.089 roughness floor; it reads the same DFG table
+    # as HIGH for the coupling (its lobe reflects no more than HIGH's, so the furnace holds).
+    # Measured on this scene: relative to 0.01 + |high|, median 0.0046, p99 0.033, max 4.7
+    # (grazing: no Fresnel rise where HIGH's F reaches 1); display mean 0.25 codes, max 98.
+    # The former LOW (Hammon's V and Schlick's F): median 0.0013, p99 0.0068, mean 0.067 codes.
+    # The tiers must differ (the selector works) and stay in that envelope.
+    assert 2e-3 < np.median(rel) < 1e-2 and np.quantile(rel, 0.99) < 0.06
+    assert 0.1 < srgb.mean() < 0.5

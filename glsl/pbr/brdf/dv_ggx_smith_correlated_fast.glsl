@@ -16,9 +16,9 @@
 // Preconditions and range: those of pbr_DV_GGX_SmithCorrelated (mix(...) >= NdotV alpha
 // like the exact lambdas). Error: V's, at most 29 % (PBR_V_SMITH_GGX_CORRELATED_FAST_MAX_REL_ERROR).
 // The _half form is the same value evaluated inside half's range (the LOW tier where
-// PBR_HALF_ARITHMETIC: PBR_FLOAT16 or GLSL ES mediump), in PBR_HALF: the unnormalised d²
-// would reach (h2 alpha²)², far below half's smallest normal 6.1e-5, so it normalises first
-// (Filament's mobile D_GGX form):
+// PBR_HALF_ARITHMETIC: PBR_FLOAT16 or GLSL ES mediump), in PBR_HALF, from the same
+// normalised dn (Filament's mobile D_GGX form), whose two squares are divided by h2 in
+// float32 before they are converted, so a short l + v never reaches half:
 //   dn = (|n × h|² + (n·h)² alpha²) / h2 in [alpha², 1],  k = alpha / dn <= 1 / alpha,
 //   D · V = k² / π · 0.5 / mix(...).
 // With alpha >= 0.089² (the LOW floor) dn >= 6.3e-5 and k² <= 1.6e4 fit half, each of dn's
@@ -44,13 +44,12 @@ float pbr_DV_GGX_SmithCorrelatedFast(float nDotH, float nCrossH2, float h2, floa
 float pbr_DV_GGX_SmithCorrelatedFast_half(float nDotH, float nCrossH2, float h2, float NdotL,
                                           float NdotV, float alpha) {
     PBR_HALF a = PBR_HALF(alpha);
-    PBR_HALF c = PBR_HALF(nDotH);
     PBR_HALF cosL = PBR_HALF(NdotL);
     PBR_HALF cosV = PBR_HALF(NdotV);
-    PBR_HALF invH2 = PBR_HALF(1.0) / PBR_HALF(h2);
+    float invH2 = 1.0 / h2;
     // each term of dn in [0, 1] before it is added, so neither depends on half denormals:
     // sin² ≈ 1 where cos² · alpha² underflows, and cos² · alpha² >= alpha² at the peak
-    PBR_HALF dn = PBR_HALF(nCrossH2) * invH2 + (c * c * invH2) * (a * a);
+    PBR_HALF dn = PBR_HALF(nCrossH2 * invH2) + PBR_HALF(nDotH * nDotH * invH2) * (a * a);
     PBR_HALF k = a / dn;
     PBR_HALF lambdas = max(mix(PBR_HALF(2.0) * cosL * cosV, cosL + cosV, a), PBR_HALF(PBR_HALF_MIN_NORMAL));
     return float(k * k * (PBR_HALF(0.5 * PBR_INV_PI) / lambdas));

@@ -2,7 +2,7 @@
 // derivation and its accuracy cost, and the helpers that apply them.
 //
 // Provides: PBR_FLT_MIN, PBR_HALF_MAX, PBR_MIN_ALPHA, PBR_MIN_NDOTV, PBR_MIN_VDOTH,
-//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, PBR_SAFE_NORMALIZE_HUGE,
+//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, PBR_MIN_NDOT_HALF_SUM, PBR_SAFE_NORMALIZE_HUGE,
 //           pbr_pow_safe(float, float), pbr_sanitize(float|vec3, float hi),
 //           pbr_safe_normalize(vec3), pbr_one_minus_dot2(vec3, vec3).
 // Include:  "pbr/common/guards.glsl" (path relative to glsl/)
@@ -55,6 +55,17 @@
 // (dv_ggx_smith_correlated.glsl) stays a normal float32 (>= 1.2e-38) for h2 >= 1e-10 at
 // the smallest alpha, where 1e-12 would let it become a denormal that GPUs flush to 0.
 #define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED 1e-10
+
+// Smallest n·(l + v) at which pbr_brdf_standard keeps the specular lobe: 2^-50 ≈ 8.9e-16,
+// the one test for "l + v has a direction above the surface". It implies |l + v|² >=
+// (n·(l + v))² >= 2^-100 ≈ 7.9e-31, a normal float32 whose reciprocal (1.3e30) is finite, so
+// the fused D · V quotients, which normalise by 1 / |l + v|² (dv_ggx_smith_correlated.glsl),
+// see 1 - NdotH² and NdotH² of a unit h in [0, 1] however short l + v is. A grazing mirror
+// (l + v = 2c·n at NdotL = NdotV = c) keeps its lobe down to c = 4.4e-16; the threshold on
+// |l + v|² it replaces dropped the lobe below c = 5e-6 (1e-10) and, in the LOW tier (2^-14),
+// below c = 3.9e-3, where the lobe is thousands of 1/sr (issue 25). l = -v gives n·(l + v) =
+// NdotL + (-NdotL) = 0 exactly, and any l + v below the surface gives a value <= 0: no lobe.
+#define PBR_MIN_NDOT_HALF_SUM 8.8817842e-16
 
 // Smallest VdotH (= LdotH) the Kelemen and Cook-Torrance terms divide by: the smallest
 // VdotH = |l + v| / 2 the shading model can produce, ½·sqrt(PBR_MIN_HALF_VECTOR_LENGTH_SQUARED)

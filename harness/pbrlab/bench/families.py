@@ -31,6 +31,7 @@ class Variant:
     kind: str = "alu"            # alu | texture | hardware_encode
     texture: str | None = None   # texture kernels: srgb8 | unorm8 | dfg
     self_reference: Callable | None = None  # float64 twin of this variant (float32 error)
+    peer: str = ""               # a peer engine's code it calls: a file of bench/peers (not the library)
 
 
 @dataclass(frozen=True)
@@ -222,14 +223,46 @@ VISIBILITY = Family(
     ))
 
 # ---- the whole BRDF per quality tier -------------------------------------------------------
+# The shading frame turns with the inputs (issue 25): n = R·z, l = R·(sin θl, 0, NdotL), v =
+# R·(sin θv cos phi, sin θv sin phi, NdotV), with R = Rz(gamma) Rx(beta) and beta, gamma
+# functions of the hashed inputs, so every component of n, v and l varies per invocation
+# and per evaluation. With the constant n = +z of the first bench, the compiler folded the
+# products with n's zeros and ones (53.9 RDNA3 instructions reported where a shader with a
+# varying normal pays 61). The frame's construction is in the baseline (derived values),
+# so it costs nothing in the figures; the domain is unchanged (NdotL, NdotV, phi, r).
+_FRAME_BETA, _FRAME_GAMMA = "1.3 * phi + 0.7 * r", "2.1 * NdotL + 0.5 * phi"
+
+
+def _frame(d):
+    """The columns R·x, R·y, R·z of the turning frame, float64 (last axis: components)."""
+    beta = 1.3 * d["phi"] + 0.7 * d["r"]
+    gamma = 2.1 * d["NdotL"] + 0.5 * d["phi"]
+    sb, cb, sg, cg = np.sin(beta), np.cos(beta), np.sin(gamma), np.cos(gamma)
+    return (np.stack([cg, sg, 0.0 * cg], -1), np.stack([-sg * cb, cg * cb, sb], -1),
+            np.stack([sg * sb, -cg * sb, cb], -1))
+
+
+def _local(d, x, y, z):
+    tx, ty, tz = _frame(d)
+    return x[..., None] * tx + y[..., None] * ty + z[..., None] * tz
+
+
+def _sin(c):
+    return np.sqrt(np.maximum(1.0 - c * c, 0.0))
+
+
 _TIER_DERIVED = (
-    ("vec3", "n", "vec3(0.0, 0.0, 1.0)", lambda d: np.broadcast_to([0.0, 0.0, 1.0], np.shape(d["NdotL"]) + (3,))),
-    ("vec3", "l", "vec3(sqrt(max(1.0 - NdotL * NdotL, 0.0)), 0.0, NdotL)",
-     lambda d: np.stack([np.sqrt(np.maximum(1 - d["NdotL"] ** 2, 0)), 0 * d["NdotL"], d["NdotL"]], -1)),
-    ("vec3", "v", "vec3(sqrt(max(1.0 - NdotV * NdotV, 0.0)) * cos(phi), "
-                  "sqrt(max(1.0 - NdotV * NdotV, 0.0)) * sin(phi), NdotV)",
-     lambda d: np.stack([np.sqrt(np.maximum(1 - d["NdotV"] ** 2, 0)) * np.cos(d["phi"]),
-                         np.sqrt(np.maximum(1 - d["NdotV"] ** 2, 0)) * np.sin(d["phi"]), d["NdotV"]], -1)),
+    ("float", "frame_beta", _FRAME_BETA, lambda d: 1.3 * d["phi"] + 0.7 * d["r"]),
+    ("float", "frame_gamma", _FRAME_GAMMA, lambda d: 2.1 * d["NdotL"] + 0.5 * d["phi"]),
+    ("vec3", "tx", "vec3(cos(frame_gamma), sin(frame_gamma), 0.0)", lambda d: _frame(d)[0]),
+    ("vec3", "ty", "vec3(-sin(frame_gamma) * cos(frame_beta), cos(frame_gamma) * cos(frame_beta), "
+                   "sin(frame_beta))", lambda d: _frame(d)[1]),
+    ("vec3", "n", "vec3(sin(frame_gamma) * sin(frame_beta), -cos(frame_gamma) * sin(frame_beta), "
+                  "cos(frame_beta))", lambda d: _frame(d)[2]),
+    ("vec3", "l", "sqrt(max(1.0 - NdotL * NdotL, 0.0)) * tx + NdotL * n",
+     lambda d: _local(d, _sin(d["NdotL"]), 0.0 * d["NdotL"], d["NdotL"])),
+    ("vec3", "v", "sqrt(max(1.0 - NdotV * NdotV, 0.0)) * (cos(phi) * tx + sin(phi) * ty) + NdotV * n",
+     lambda d: _local(d, _sin(d["NdotV"]) * np.cos(d["phi"]), _sin(d["NdotV"]) * np.sin(d["phi"]), d["NdotV"])),
 )
 _TIER_DIFFUSE, _TIER_F0 = (0.5, 0.4, 0.3), (0.04, 0.04, 0.04)
 _TIER_EXPR = f"pbr_brdf_standard(n, v, l, vec3{_TIER_DIFFUSE}, vec3{_TIER_F0}, r)"
@@ -247,12 +280,16 @@ BRDF_TIER = Family(
     reference=_tier_ref("HIGH"),
     reference_name="the HIGH-tier model in float64 (reference.shading.brdf_standard, quality=HIGH)",
     exact="high", rel_floor=1e-3,
-    domain_note="n = +z, l in the xz plane at NdotL, v at NdotV and azimuth phi; r in [0, 1] "
+    domain_note="a frame (n, tx, ty) that turns with the inputs (n varies per evaluation); l at NdotL "
+                "in the (tx, n) plane, v at NdotV and azimuth phi from tx; r in [0, 1] "
                 f"(clamped per tier); diffuse colour {_TIER_DIFFUSE}, F0 {_TIER_F0}; GGX D, Lambert",
     variants=tuple(
         Variant(q.lower(), _TIER_EXPR, f"PBR_QUALITY_{q}", defines={"PBR_QUALITY": f"PBR_QUALITY_{q}"},
                 self_reference=None if q == "HIGH" else _tier_ref(q))
-        for q in ("HIGH", "MEDIUM", "LOW")),
+        for q in ("HIGH", "MEDIUM", "LOW")) + (
+        Variant("filament", _TIER_EXPR.replace("pbr_brdf_standard", "peer_filament_brdf"),
+                "peer: Filament's desktop standard lobe and clamps (bench/peers/filament_standard.glsl), "
+                "for the cost comparison", peer="filament_standard.glsl"),),
 )
 
 # ---- tonemappers ----------------------------------------------------------------------------
@@ -293,8 +330,8 @@ ENV_BRDF = Family(
 _LAYER_DERIVED = _TIER_DERIVED + (
     ("float", "NdotH", "dot(n, normalize(l + v))",
      lambda d: np.sum(d["n"] * (d["l"] + d["v"]), -1) / np.linalg.norm(d["l"] + d["v"], axis=-1)),
-    ("vec3", "t", "vec3(1.0, 0.0, 0.0)", lambda d: np.broadcast_to([1.0, 0.0, 0.0], np.shape(d["NdotL"]) + (3,))),
-    ("vec3", "b", "vec3(0.0, 1.0, 0.0)", lambda d: np.broadcast_to([0.0, 1.0, 0.0], np.shape(d["NdotL"]) + (3,))),
+    ("vec3", "t", "tx", lambda d: _frame(d)[0]),
+    ("vec3", "b", "ty", lambda d: _frame(d)[1]),
 )
 _LAYER_F0 = (0.04, 0.04, 0.04)
 

@@ -51,7 +51,13 @@ ACO_NOTE = ("AMD figures: ACO's statistics from Mesa's RADV compiling for a forc
 KERNEL_NOTE = ("Per evaluation: (variant − family baseline) / 8 of the timing kernel's statistics: "
                "its loop (uniform trip count, never unrolled) holds 8 evaluations and is all that "
                "differs from the baseline, so a static count of it over 8 is the static cost of one "
-               "evaluation. VGPRs: of the variant's whole program (absolute).")
+               "evaluation. The baseline is the same program without the term: each evaluation's "
+               "inputs made from a per-pixel, per-iteration hash (what a shader's loads would give: "
+               "values the compiler cannot know), its derived values (the shading frame n, tx, ty "
+               "that turns per evaluation, l and v in it) and their sum into the output (what a "
+               "shader's store would keep alive); subtracting it leaves the term alone. Nothing is "
+               "constant across evaluations, so no part of the term folds. VGPRs: of the variant's "
+               "whole program (absolute).")
 SRGB_TEXTURE_NOTE = ("on AMD the sRGB decode happens in the texture unit (the format is in the "
                      "descriptor): the program is the same as the UNORM8 fetch, so its cost is 0")
 HARDWARE_ENCODE_NA = ("n/a: the sRGB encode happens in the colour-buffer hardware on the way to "
@@ -252,14 +258,17 @@ def _scene_summary(record: dict, families) -> dict:
 # ---- half precision that reaches the ISA ------------------------------------------------------
 
 FLOAT16_FAMILY, FLOAT16_VARIANT = "brdf_tier", "low"
-FLOAT16_NOTE = ("The LOW tier's kernel compiled twice for Vulkan (#version 450): as it is (float32: "
+FLOAT16_NOTE = ("The LOW tier's kernel with Hammon's V and Schlick's F (the lobe the half study runs in "
+                "half's range) compiled twice for Vulkan (#version 450): as it is (float32: "
                 "RADV 22.3 ignores mediump / RelaxedPrecision) and with PBR_FLOAT16 under "
                 "GL_EXT_shader_explicit_arithmetic_types_float16, where the specular lobe "
                 "(pbr_DV_GGX_SmithCorrelatedFast_half) runs in float16_t. Per evaluation against the "
                 "family baseline; 16-bit and packed (v_pk_*) counts from the disassembly. The "
                 "kernel's inputs are float32, so the float16 lobe pays its conversions; its error in "
                 "half is the half study's (tests/hardcases/test_half.py).")
-_FLOAT16_HEADER = "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require"
+_FLOAT16_HEADER = ("#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n"
+                   "#define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST\n"
+                   "#define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK")
 
 
 def float16_jobs(kernels) -> dict:

@@ -14,7 +14,12 @@ Inputs of a family are ``(name, lo, hi)`` ranges plus optional derived values
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from .. import shaders
+
+# Peer engines' code the bench compares with (bench/peers/*.glsl, not the library).
+PEERS_DIR = Path(__file__).resolve().parent / "peers"
 
 EVALS_PER_ITERATION = 8  # independent evaluations per loop iteration (issue 7: "e.g. 8")
 
@@ -78,16 +83,19 @@ def body(inputs, derived, expression, evals=EVALS_PER_ITERATION) -> str:
     return "\n".join(out)
 
 
-def fragment_source(inputs, derived, expression, defines=None, evals=EVALS_PER_ITERATION) -> str:
-    """Unexpanded fragment text (``expression`` None: the family's baseline)."""
+def fragment_source(inputs, derived, expression, defines=None, evals=EVALS_PER_ITERATION, peer="") -> str:
+    """Unexpanded fragment text (``expression`` None: the family's baseline; ``peer``: a file
+    of PEERS_DIR the expression calls, included after the library)."""
     define_lines = "\n".join(f"#define {k} {v}" for k, v in sorted((defines or {}).items()))
-    return (_FRAGMENT.replace("//@DEFINES", define_lines)
-                     .replace("//@BODY", body(inputs, derived, expression, evals)))
+    text = _FRAGMENT.replace("//@DEFINES", define_lines).replace("//@BODY", body(inputs, derived, expression, evals))
+    if peer:
+        text = text.replace('#include "pbr/pbr.glsl"', f'#include "pbr/pbr.glsl"\n#include "{peer}"', 1)
+    return text
 
 
 def expanded(text: str) -> str:
     """The fragment with the library's includes resolved (what the worker compiles)."""
-    return shaders.expand(text, "<bench kernel>").text
+    return shaders.expand(text, "<bench kernel>", include_dirs=(PEERS_DIR,)).text
 
 
 def vertex_source() -> str:

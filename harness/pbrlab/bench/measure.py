@@ -226,8 +226,10 @@ def _measure_errors(family: Family, settings: Settings) -> dict:
             own = np.asarray(variant.self_reference(d), np.float64)
             record["error"] = error_stats(gpu.reshape(own.shape), own, d, family.rel_floor)
         else:
+            peer = {"includes": (shaders.UMBRELLA_INCLUDE, variant.peer),
+                    "include_dirs": (kernel.PEERS_DIR,)} if variant.peer else {}
             gpu = evaluator.evaluate(variant.expression, defines=variant.defines or None,
-                                     **_gpu_inputs(family, d))
+                                     **peer, **_gpu_inputs(family, d))
             gpu = np.asarray(gpu, np.float64).reshape(len(ref), -1)
             if family.name == "env_brdf":
                 gpu = gpu[:, :2]
@@ -262,7 +264,7 @@ def kernel_specs(families) -> list[dict]:
                               "id": f"{vid}@srgb8", "baseline": f"{vid}@unorm8"})
                 continue
             vtext = kernel.fragment_source(family.inputs, family.derived, variant.expression,
-                                           variant.defines)
+                                           variant.defines, peer=variant.peer)
             entry = {"id": vid, "fragment": kernel.expanded(vtext)}
             baseline = base
             if variant.kind == "texture":

@@ -79,6 +79,16 @@ class SameAs:
 
 
 @dataclass(frozen=True)
+class Near:
+    """The value follows the maths: within ``rel`` (relative, per component) of the float64
+    reference's ``value`` for the same float32 inputs (a check the bound alone cannot make:
+    a lobe dropped to 0 is still >= 0)."""
+    value: tuple
+    rel: float
+    source: str
+
+
+@dataclass(frozen=True)
 class Case:
     function: Function
     name: str
@@ -86,6 +96,7 @@ class Case:
     inputs: dict = field(hash=False)
     exact: object = None        # None, a float, a GLSL expression in the same inputs, or SameAs
     expression: str = ""        # overrides the function's call (e.g. to normalise an input)
+    near: object = None         # Near: where the maths has a value, the float64 reference's
 
     @property
     def call(self) -> str:
@@ -107,16 +118,17 @@ def _f(name, args, bound, call=None):
 
 
 # The D · V arguments from directions, as pbr_brdf_standard makes them (h = l + v unnormalised,
-# its squared length capped at 4, the cosines and roughness clamped): the preconditions of
+# the cosines and roughness clamped): the preconditions of
 # the fused quotients. Where l + v has no direction (l = -v), pbr_brdf_standard does not use
 # D · V; here h = n stands in, so every call meets the preconditions. lambdaSum is the exact
 # lambdas' smallest sum, NdotV alpha (NdotL -> 0).
 def dv_arguments(parts: str, low: bool = False) -> str:
     """The call's arguments, in order, from ``parts`` (space-separated names of
     ``_DV_PARTS``), for the HIGH/MEDIUM guards or (``low``) the LOW tier's."""
-    threshold, floor = (("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP", "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP")
-                        if low else ("PBR_MIN_HALF_VECTOR_LENGTH_SQUARED", "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"))
-    h = f"(dot(l + v, l + v) >= {threshold} ? l + v : n)"
+    floor = "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP" if low else "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"
+    # pbr_brdf_standard's selection (issue 25): the lobe where NdotL and n·(l + v) reach
+    # PBR_MIN_NDOT_HALF_SUM, so h = l + v has a direction above the surface
+    h = "(min(dot(n, l), dot(n, l + v)) >= PBR_MIN_NDOT_HALF_SUM ? l + v : n)"
     alpha = f"pbr_alpha_from_perceptual_roughness(clamp(roughness, {floor}, 1.0))"
     values = {"nDotH": f"dot(n, {h})", "nCrossH2": f"dot(cross(n, {h}), cross(n, {h}))",
               "h2": f"min(dot({h}, {h}), 4.0)", "NdotL": "max(dot(n, l), PBR_MIN_NDOTV)",
@@ -130,7 +142,7 @@ DV_ARGUMENTS = dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha")
 TRANSMISSION_FUNCTIONS = ("pbr_BTDF_Walter_GGX_cosine", "pbr_BTDF_Walter_GGX", "pbr_transmission_punctual",
                           "pbr_transmission_thin_punctual", "pbr_mirror_through_surface", "pbr_refraction_direction")
 DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
-                "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_specular_DV")
+                "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithBound", "pbr_specular_DV")
 
 # Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
 # complete), with its argument kinds and bound.
@@ -198,6 +210,7 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_V_Implicit", "", Bound("V = 1/4", 0.25, 0.25), "pbr_V_Implicit()"),
     _f("pbr_G_Kelemen", "NdotL:cosine NdotV:cosine VdotH:cosine", G),
     _f("pbr_V_Kelemen", "VdotH:cosine", V),
+    _f("pbr_V_SmithGGXBound", "NdotL:cosine NdotV:cosine", V),
     _f("pbr_F_Schlick", "f0:unit VdotH:cosine", F),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, VdotH)", _a("f0:unit3 VdotH:cosine"), F, "vec3"),
     Function("pbr_F_Schlick", "pbr_F_Schlick(f0, f90, VdotH)", _a("f0:unit3 f90:unit VdotH:cosine"), F, "F90"),
@@ -219,6 +232,10 @@ TERMS: tuple[Function, ...] = (
              "pbr_DV_GGX_fromLambdaSum(" + dv_arguments("nDotH nCrossH2 h2 alpha lambdaSum") + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     Function("pbr_DV_GGX_SmithCorrelatedFast", "pbr_DV_GGX_SmithCorrelatedFast(" + DV_ARGUMENTS + ")",
+             _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
+    # LOW's lobe, under pbr_brdf_standard's selection (n·(l + v) >= PBR_MIN_NDOT_HALF_SUM: it
+    # divides by n·(l + v)), at LOW's roughness floor
+    Function("pbr_DV_GGX_SmithBound", "pbr_DV_GGX_SmithBound(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
              _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")),
     # LOW's lobe in half's range, at LOW's roughness floor and threshold (float32 here)
     Function("pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithCorrelatedFast_half(" + dv_arguments("nDotH nCrossH2 h2 NdotL NdotV alpha", low=True) + ")",
@@ -411,8 +428,8 @@ _DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 
 _GEOMETRY_CASES = (
     ("V = -L", "l and v opposite: no half vector exists (l + v = 0); decided: no specular, diffuse kept",
      UP, (-0.6, 0.0, -0.8), (0.6, 0.0, 0.8), "diffuse"),
-    ("V ≈ -L", "|l + v|² = 4e-10, just above the 1e-10 threshold: D · V from l + v of length 2e-5, "
-     "VdotH = 1e-5", UP, (-0.6, 0.0, -0.8 + 2e-5), (0.6, 0.0, 0.8), None),
+    ("V ≈ -L", "|l + v|² = 4e-10, n·(l + v) = 2e-5: D · V from l + v of length 2e-5 (a direction above "
+     "the surface, so a lobe), VdotH = 1e-5", UP, (-0.6, 0.0, -0.8 + 2e-5), (0.6, 0.0, 0.8), None),
     ("NdotL = 0", "light exactly at the horizon: decided 0", UP, (0.6, 0.0, 0.8), (1.0, 0.0, 0.0), 0.0),
     ("NdotL < 0", "light behind the surface: decided 0", UP, (0.6, 0.0, 0.8), (0.6, 0.0, -0.8), 0.0),
     ("light at the shaded point", "l = pbr_safe_normalize(0) = 0 (a point light touching the surface): "
@@ -425,12 +442,20 @@ _GEOMETRY_CASES = (
      (-0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
     ("mirror at grazing", "peak of the lobe with NdotL = NdotV = 1e-3: D and V both near their maxima",
      UP, (-0.9999995, 0.0, 1e-3), (0.9999995, 0.0, 1e-3), None),
+    ("mirror at grazing, 1e-3, lobe kept", "NdotL = NdotV = 1e-3 at the peak: |l + v|² = 4e-6 is short but h = n "
+     "is defined and the lobe is thousands of 1/sr; a threshold on |l + v|² (2^-14, the former LOW tier's) "
+     "dropped it (issue 25); checked against the tier's float64 model", UP,
+     (-0.9999995, 0.0, 1e-3), (0.9999995, 0.0, 1e-3), "follows"),
+    ("mirror at grazing, 1e-6, lobe kept", "NdotL = NdotV = 1e-6 at the peak: |l + v|² = 4e-12, below the former "
+     "1e-10 threshold of the HIGH tier, which dropped the lobe; checked against the tier's float64 model", UP,
+     (-1.0, 0.0, 1e-6), (1.0, 0.0, 1e-6), "follows"),
     ("l = v", "retro-reflection: h = v, VdotH = 1 exactly", UP, (0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
     ("|n| = 1.01", "unnormalised interpolated normal: NdotL, NdotV, NdotH above 1 near the peak",
      (0.0, 0.0, 1.01), (0.0, 0.0, 1.0), (0.0, 0.0, 1.0), None),
     ("|n| = 1 + ulp", "interpolated normal one ulp long: dot products exceed 1 by one rounding",
      (0.0, 0.0, domains.ULP_ABOVE_ONE), (-0.6, 0.0, 0.8), (0.6, 0.0, 0.8), None),
-    ("far camera", "v = pbr_safe_normalize(1e30 · direction): dot(v, v) would overflow in normalize()",
+    ("far camera", "v = pbr_safe_normalize(1e30 · direction): dot(v, v) would overflow in normalize(); "
+     "the shading model takes a unit v (its contract: an unnormalised v above 1e19 overflows |l + v|²)",
      UP, (-6e29, 0.0, 8e29), (0.6, 0.0, 0.8), "safe_normalize_v"),
 )
 _MATERIAL_CASES = (
@@ -453,6 +478,29 @@ _MATERIAL_WHY = {
 }
 
 
+# Relative tolerance of a shading value against its tier's float64 model at a case: float32
+# conditioning of the lobe near the mirror (the HIGH tier's measured worst over the bench
+# domain is 6.0e-4, docs/bench), with a margin of 1.7x.
+FOLLOWS_REL = 1e-3
+
+
+def _follows(function: Function, inputs: dict) -> Near:
+    """The tier's float64 model (reference.shading) at the case's float32 inputs."""
+    variants = {k: v for k, v in (item.split("=") for item in function.variant.split(",") if item)}
+    quality = variants.get("quality", "HIGH")
+    d = {k: np.asarray(np.float32(inputs[k]), np.float64) for k in ("n", "v", "l", "diffuseColor", "f0")}
+    roughness = float(np.float32(inputs["roughness"]))
+    if "radiance" in function.expression:
+        value = shading.shade_punctual(d["n"], d["v"], d["l"], np.asarray(np.float32(inputs["radiance"]), np.float64),
+                                       d["diffuseColor"],
+                                       d["f0"], roughness, quality=quality, diffuse=variants.get("diffuse", "LAMBERT"))
+    else:
+        value = shading.brdf_standard(d["n"], d["v"], d["l"], d["diffuseColor"], d["f0"], roughness,
+                                      quality=quality, diffuse=variants.get("diffuse", "LAMBERT"))
+    return Near(tuple(float(x) for x in np.ravel(value)), FOLLOWS_REL,
+                f"reference.shading ({function.variant or 'quality=HIGH'}) within {FOLLOWS_REL:g} relative")
+
+
 def _shading_cases(function: Function) -> list[Case]:
     cases = []
     base = typical_inputs(function)
@@ -463,15 +511,17 @@ def _shading_cases(function: Function) -> list[Case]:
     # checked exactly at each tier and diffuse variant, by bound for the other selectors.
     exact_here = function.variant.startswith(("quality=", "diffuse="))
     for name, why, n, v, l, exact in _GEOMETRY_CASES:
-        if isinstance(exact, str) and not exact_here:
+        if exact in ("diffuse", "follows") and not exact_here:
             exact = None
         inputs = dict(base, n=n, v=v, l=l, roughness=0.3)
-        expression = ""
-        if exact == "diffuse":
+        expression, near = "", None
+        if exact == "follows":
+            exact, near = None, (_follows(function, inputs) if exact_here else None)
+        elif exact == "diffuse":
             exact = wrap(_DIFFUSE_ONLY)
         elif exact == "safe_normalize_v":  # the far camera normalised by the library's guard
             exact, expression = None, function.expression.replace("(n, v,", "(n, pbr_safe_normalize(v),")
-        cases.append(Case(function, name, why, inputs, exact, expression))
+        cases.append(Case(function, name, why, inputs, exact, expression, near))
     quality = dict(function.defines).get("PBR_QUALITY", "PBR_QUALITY_HIGH").removeprefix("PBR_QUALITY_")
     floor = float(np.float32(shading.QUALITY_MIN_PERCEPTUAL_ROUGHNESS[quality]))
     cases.append(Case(function, "roughness = tier minimum", "the guard itself: the smallest roughness the "

@@ -229,6 +229,11 @@ def brdf_low(m, n, v, l, diffuse, specular, roughness, min_roughness=LOW_MIN_PER
     F = specular + (f90 - specular) * (w2 * w2 * w)
     lobe = (DV if lobe_cap is None else m.minimum(DV, m.c(lobe_cap))) * F
     with_lobe = m.where(_dot(n, hs) > m.c(0.0), diffuse_part + lobe, diffuse_part)  # χ+(n·h)
+    # The study forms l + v in half, where a short l + v has no direction left (half's
+    # rounding of a component of 1 is 2^-11), so it keeps a threshold on |l + v|² (min_half,
+    # 2^-14 by default). The library forms l + v in float32 and tests n·(l + v) instead
+    # (PBR_MIN_NDOT_HALF_SUM); min_half = 0 is its selection (the two differ only where
+    # 0 < n·(l + v) < 2^-50).
     lit = m.where(hl2 >= m.c(min_half), with_lobe, diffuse_part)
     return m.where(NdotL > m.c(0.0), lit, m.c(0.0))
 

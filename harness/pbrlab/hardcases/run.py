@@ -37,6 +37,8 @@ class CaseResult:
 
     def expected_text(self) -> str:
         bound = self.case.function.bound.text
+        if self.case.near is not None:
+            return f"≈ {_fmt(self.case.near.value)} ({self.case.near.source}) and {bound}"
         if self.expected is None:
             return bound
         return f"== {_fmt(self.expected)} (decided) and {bound}"
@@ -116,6 +118,11 @@ def run_catalogue(cases=None, evaluate=evaluator.evaluate) -> list[CaseResult]:
                 expected[i] = want[j]
                 # exact: bit-for-bit equal float32 (NaN is never equal, so it fails)
                 ok[i] &= bool(np.array_equal(values[i], want[j]))
+        for i, case in enumerate(group):
+            if case.near is not None:  # follows the maths: the float64 reference, relative
+                want = np.asarray(case.near.value, np.float64)
+                got = np.asarray(values[i], np.float64).ravel()
+                ok[i] &= bool(np.all(np.abs(got - want) <= case.near.rel * np.abs(want)))
         results += [CaseResult(case, values[i], expected[i], bool(ok[i])) for i, case in enumerate(group)]
     return results
 

@@ -158,6 +158,11 @@ def V_SmithGGXCorrelatedFast(NdotL, NdotV, alpha):
     return 0.5 / lerp
 
 
+def V_SmithGGXBound(NdotL, NdotV):
+    """Heitz 2014 eq. 99 with each square root bounded by 1: 0.5 / (NdotL + NdotV) <= V."""
+    return 0.5 / (_f(NdotL) + _f(NdotV))
+
+
 def G_Implicit(NdotL, NdotV):
     return _f(NdotL) * _f(NdotV)
 

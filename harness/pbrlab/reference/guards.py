@@ -11,6 +11,7 @@ HALF_MAX = 65504.0                      # PBR_HALF_MAX: largest finite binary16
 MIN_ALPHA = 1e-7                        # PBR_MIN_ALPHA: raw D/G/V alpha floor
 MIN_NDOTV = 1e-4                        # PBR_MIN_NDOTV (Filament MIN_N_DOT_V): V cosine floor
 MIN_HALF_VECTOR_LENGTH_SQUARED = 1e-10  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED: l = -v threshold
+MIN_NDOT_HALF_SUM = 2.0 ** -50          # PBR_MIN_NDOT_HALF_SUM: n.(l + v) with a specular lobe
 MIN_VDOTH = 5e-6                        # PBR_MIN_VDOTH = sqrt(1e-10) / 2
 BECKMANN_MIN_NDOTH = 0.1                # PBR_BECKMANN_MIN_NDOTH (d_beckmann.glsl)
 MAX_IOR = 2.0 ** 25                     # PBR_MAX_IOR (material/ior.glsl)
@@ -42,5 +43,5 @@ ACES_NARKOWICZ_MAX_INPUT = 16.0         # PBR_ACES_NARKOWICZ_MAX_INPUT (tonemap/
 # GLSL macro -> value, for the shared-constant test (tests/library/test_glsl_layout.py).
 SHARED = {"PBR_FLT_MIN": FLT_MIN, "PBR_SAFE_NORMALIZE_HUGE": SAFE_NORMALIZE_HUGE, "PBR_HALF_MAX": HALF_MAX, "PBR_MIN_ALPHA": MIN_ALPHA,
           "PBR_MIN_NDOTV": MIN_NDOTV, "PBR_MIN_HALF_VECTOR_LENGTH_SQUARED": MIN_HALF_VECTOR_LENGTH_SQUARED,
-          "PBR_MIN_VDOTH": MIN_VDOTH, "PBR_BECKMANN_MIN_NDOTH": BECKMANN_MIN_NDOTH, "PBR_MAX_IOR": MAX_IOR,
+          "PBR_MIN_VDOTH": MIN_VDOTH, "PBR_MIN_NDOT_HALF_SUM": MIN_NDOT_HALF_SUM, "PBR_BECKMANN_MIN_NDOTH": BECKMANN_MIN_NDOTH, "PBR_MAX_IOR": MAX_IOR,
           "PBR_ACES_NARKOWICZ_MAX_INPUT": ACES_NARKOWICZ_MAX_INPUT}

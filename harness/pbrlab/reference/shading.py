@@ -10,7 +10,7 @@ import numpy as np
 
 from . import brdf, remap
 from .constants import LIGHT_UNIT_SCALE
-from .guards import HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOTV, MIN_VDOTH  # noqa: F401
+from .guards import FLT_MIN, HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOT_HALF_SUM, MIN_NDOTV, MIN_VDOTH  # noqa: F401
 
 # Edge constants, shared with glsl/pbr/shading/dispatch.glsl (tested equal).
 MIN_PERCEPTUAL_ROUGHNESS = 0.045          # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
@@ -20,18 +20,19 @@ MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP = 2.0 ** -14  # PBR_MIN_HALF_VECTOR_LENGT
 # Selector values in #define order (PBR_SPECULAR_D_GGX = 1, ...; every family counts from 1).
 SPECULAR_D = ("GGX", "BECKMANN", "BLINN_PHONG")
 SPECULAR_V = ("SMITH_GGX_CORRELATED", "SMITH_GGX_CORRELATED_FAST", "SMITH_GGX", "SCHLICK_GGX",
-              "COOK_TORRANCE", "KELEMEN", "IMPLICIT")
-SPECULAR_F = ("SCHLICK", "SCHLICK_SG", "NONE")
+              "COOK_TORRANCE", "KELEMEN", "IMPLICIT", "SMITH_GGX_BOUND")
+SPECULAR_F = ("SCHLICK", "SCHLICK_SG", "NONE", "F0")
 DIFFUSE = ("LAMBERT", "BURLEY")
 QUALITY = ("LOW", "HIGH", "MEDIUM")
 # PBR_QUALITY -> default PBR_SPECULAR_V and PBR_SPECULAR_F (the tier block of dispatch.glsl)
-QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_CORRELATED_FAST", "MEDIUM": "SMITH_GGX_CORRELATED_FAST",
+QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_BOUND", "MEDIUM": "SMITH_GGX_CORRELATED_FAST",
                      "HIGH": "SMITH_GGX_CORRELATED"}
-QUALITY_DEFAULT_F = {"LOW": "SCHLICK", "MEDIUM": "SCHLICK", "HIGH": "SCHLICK"}
+QUALITY_DEFAULT_F = {"LOW": "F0", "MEDIUM": "SCHLICK", "HIGH": "SCHLICK"}
 # PBR_QUALITY -> PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the cap of pbr_specular_lobe_limit
 QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
                                     "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
-QUALITY_MAX_SPECULAR_LOBE = {"LOW": HALF_MAX, "MEDIUM": np.inf, "HIGH": np.inf}
+# (HALF_MAX in LOW only where floats may be 16-bit, PBR_HALF_ARITHMETIC: not in float32 GLSL)
+QUALITY_MAX_SPECULAR_LOBE = {"LOW": np.inf, "MEDIUM": np.inf, "HIGH": np.inf}
 QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED = {"LOW": MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP,
                                           "MEDIUM": MIN_HALF_VECTOR_LENGTH_SQUARED,
                                           "HIGH": MIN_HALF_VECTOR_LENGTH_SQUARED}
@@ -96,6 +97,8 @@ def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"
         return brdf.V_Kelemen(VdotH)
     if variant == "IMPLICIT":
         return np.full(np.shape(NdotL), brdf.V_Implicit())
+    if variant == "SMITH_GGX_BOUND":
+        return brdf.V_SmithGGXBound(NdotL, NdotV)
     raise ValueError(variant)
 
 
@@ -108,6 +111,8 @@ def specular_F(f0, VdotH, variant="SCHLICK"):
         return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "NONE":
         return np.ones(np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
+    if variant == "F0":  # no Fresnel rise (the LOW tier)
+        return np.broadcast_to(np.asarray(f0, np.float64), np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
     raise ValueError(variant)
 
 
@@ -120,6 +125,8 @@ def specular_F_deviation_bound(f0, variant="SCHLICK"):
         return brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (brdf.f90_from_f0(f0)[..., None] - f0)
     if variant == "NONE":
         return 1.0 - f0
+    if variant == "F0":
+        return np.zeros_like(f0)
     raise ValueError(variant)
 
 
@@ -157,7 +164,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     alpha = remap.alpha_from_perceptual_roughness(roughness)
 
     NdotL = _dot(n, l)
-    lit = NdotL > 0.0
+    lit = NdotL >= FLT_MIN  # saturate(NdotL · 2^126): 1 for a normal float32 NdotL > 0 (GPUs flush denormals)
     NdotL_safe = np.where(lit, NdotL, 1.0)
     NdotV = np.clip(_dot(n, v), MIN_NDOTV, 1.0)
     half_sum = l + v
@@ -165,20 +172,28 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     LdotH = 0.5 * np.sqrt(half_length2)
     diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
 
-    has_half = half_length2 >= QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED[quality]
+    # l + v has a direction above the surface and the light is above it (guards.MIN_NDOT_HALF_SUM,
+    # every tier: min(NdotL, n·(l + v)) >= 2^-50)
+    has_half = np.minimum(NdotL, _dot(n, half_sum)) >= MIN_NDOT_HALF_SUM
     h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
     n_dot_h = _dot(n, h)
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         if d_var == "GGX":  # even in n·h: GGX at |n·h| (dispatch.glsl, pbr_specular_DV)
-            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), 1.0 - n_dot_h ** 2, alpha)
+            # 1 - NdotH² as |n × ĥ|², the GLSL's form: equal for a unit n, and for a float32 n
+            # (|n|² = 1 ± 1e-7) free of the cancellation that shifts 1 - (n·ĥ)² by 1e-7, which is
+            # 2 % of alpha² at the HIGH floor (4.1e-6) at the mirror
+            n_cross_h = np.cross(n, h)
+            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), _dot(n_cross_h, n_cross_h), alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)
         if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":  # fused: NdotL as it is
             V = brdf.V_SmithGGXCorrelated(NdotL_safe, NdotV, alpha)
         elif d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED_FAST":
             V = brdf.V_SmithGGXCorrelatedFast(NdotL_safe, NdotV, alpha)
+        elif d_var == "GGX" and v_var == "SMITH_GGX_BOUND":  # fused: 0.5 / n·(l + v), n·v as it is
+            V = brdf.V_SmithGGXBound(NdotL_safe, _dot(n, v))
         else:
             V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var)

@@ -16,22 +16,27 @@
 //       lambdaL = NdotV sqrt(NdotL² (1 - alpha²) + alpha²)
 //   D · V = (alpha² / 2π) / (d² (lambdaV + lambdaL)): one reciprocal instead of two.
 // h need not be normalised: for h = k·ĥ (k > 0), n·h = k n·ĥ and |n × h|² = k² |n × ĥ|², so
-// d computed from them is k² times d of ĥ, and the numerator takes h2² = |h|⁴ = k⁴ to
-// cancel it. The caller passes h = l + v as it is and saves the reciprocal square root,
-// three multiplies and the squared scale that normalising would cost.
+// dividing both squares by h2 = |h|² = k² gives 1 - NdotH² and NdotH² of the unit ĥ:
+//   dn = (|n × h|² + (n·h)² alpha²) / h2 = (1 - NdotH²) + NdotH² alpha²  in [alpha², 1],
+//   D · V = (alpha² / 2π) / (dn² (lambdaV + lambdaL)).
+// The caller passes h = l + v as it is and saves the reciprocal square root and three
+// multiplies that normalising h would cost; the one reciprocal of h2 costs what the former
+// unnormalised quotient's h2² numerator cost, and unlike it keeps every intermediate in a
+// fixed range however short l + v is: a grazing mirror (l + v = 2c·n, c = NdotL = NdotV)
+// keeps its lobe as c -> 0 (issue 25), where d² of the unnormalised form, (4c² alpha²)²,
+// left float32's normal range.
 // Preconditions, which the caller (pbr_brdf_standard) establishes once for the whole BRDF,
 // so none of the terms' own clamps is repeated here:
 //   alpha >= PBR_MIN_PERCEPTUAL_ROUGHNESS² (2.0e-3), NdotL in (0, 1], NdotV in
 //   [PBR_MIN_NDOTV, 1], nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² of one h, with h2 in
-//   [PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, 4] (|l + v| <= 2).
+//   [2^-100, 4] (pbr_brdf_standard: n·(l + v) >= PBR_MIN_NDOT_HALF_SUM, |l + v|² capped at 4).
 // nDotH enters squared: D is even in n·h, so an h below the surface (a view below the
 // horizon) gives GGX at |n·ĥ|, finite, with no clamp.
-// Range (unit h; another h scales d² and the numerator alike): d >= alpha², d² >= 1.7e-11;
-// lambdaV + lambdaL >= NdotV alpha >= 2e-7; the denominator stays >= 3e-18, far from
-// float32's smallest normal, and D · V <= 2e11. Outside the preconditions (h = 0: 0 / 0)
-// the quotient is NaN and the caller must not use it (pbr_brdf_standard selects 0 there).
+// Range: dn >= alpha² >= 4.1e-6, dn² >= 1.7e-11; lambdaV + lambdaL >= NdotV alpha >= 2e-7;
+// the denominator stays >= 3e-18 and D · V <= 2e11 for every h2 in the range above.
+// Outside the preconditions (h = 0: 0 · Inf) the quotient is NaN and the caller must not use
+// it (pbr_brdf_standard selects 0 there).
 // Measured price of the terms' own guards, and the fused form's error: docs/bench.
-// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_DV_GGX_SMITH_CORRELATED_HLSL
 #define PBR_BRDF_DV_GGX_SMITH_CORRELATED_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/dv_ggx_smith_correlated.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
@@ -42,8 +47,8 @@
 float pbr_DV_GGX_fromLambdaSum(float nDotH, float nCrossH2, float h2, float alpha,
                                float lambdaSum) {
     float a2 = alpha * alpha;
-    float d = nCrossH2 + nDotH * nDotH * a2;
-    return (a2 * (0.5 * PBR_INV_PI) * (h2 * h2)) / (d * d * lambdaSum);
+    float dn = (nCrossH2 + nDotH * nDotH * a2) * (1.0 / h2);
+    return (a2 * (0.5 * PBR_INV_PI)) / (dn * dn * lambdaSum);
 }
 
 float pbr_DV_GGX_SmithCorrelated(float nDotH, float nCrossH2, float h2, float NdotL,

@@ -11,16 +11,16 @@
 //           PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED and the selector values below.
 // Include:  "pbr/shading/dispatch.hlsl" (path relative to hlsl_ports/)
 // Config macros read: (each has a default, set with #ifndef below)
-//   PBR_QUALITY     PBR_QUALITY_HIGH (default, float32) | PBR_QUALITY_MEDIUM (float32,
-//                   cheaper V and F) | PBR_QUALITY_LOW (half-safe: runs at mediump/half);
-//                   see the tier block below; picks the defaults below
+//   PBR_QUALITY     PBR_QUALITY_HIGH (default, the exact model) | PBR_QUALITY_MEDIUM
+//                   (Hammon's V) | PBR_QUALITY_LOW (a cheaper lobe: V bounded without a square
+//                   root, no per-light Fresnel); see the tier block below; picks the defaults
 //   PBR_SPECULAR_D  PBR_SPECULAR_D_GGX (default) | _BECKMANN | _BLINN_PHONG
 //   PBR_SPECULAR_V  PBR_SPECULAR_V_SMITH_GGX_CORRELATED (HIGH default)
-//                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM, LOW default) | _SMITH_GGX | _SCHLICK_GGX
-//                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT
-//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (default, every tier) | _SCHLICK_SG | _NONE (F = 1, for
-//                   white-furnace checks and debugging); both Schlick forms take
-//                   F90 = pbr_f90_from_f0(f0)
+//                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM default) | _SMITH_GGX | _SCHLICK_GGX
+//                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT | _SMITH_GGX_BOUND (LOW default)
+//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (HIGH, MEDIUM default) | _SCHLICK_SG | _NONE (F = 1,
+//                   for white-furnace checks and debugging) | _F0 (F = f0, no Fresnel rise:
+//                   LOW default); both Schlick forms take F90 = pbr_f90_from_f0(f0)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //   PBR_BRDF_MODEL  PBR_BRDF_MODEL_PBRLAB (default: the library's physical shading) |
 //                   PBR_BRDF_MODEL_UNITY (Unity's built-in BRDFs formula for formula,
@@ -54,6 +54,8 @@
 #include "pbr/brdf/v_smith_ggx_correlated.hlsl"
 #include "pbr/brdf/dv_ggx_smith_correlated.hlsl"
 #include "pbr/brdf/dv_ggx_smith_correlated_fast.hlsl"
+#include "pbr/brdf/dv_ggx_smith_bound.hlsl"
+#include "pbr/brdf/v_smith_ggx_bound.hlsl"
 #include "pbr/brdf/g_smith_ggx.hlsl"
 #include "pbr/brdf/g_schlick_ggx.hlsl"
 #include "pbr/brdf/g_cook_torrance.hlsl"
@@ -74,10 +76,12 @@
 #define PBR_SPECULAR_V_COOK_TORRANCE             5
 #define PBR_SPECULAR_V_KELEMEN                   6
 #define PBR_SPECULAR_V_IMPLICIT                  7
+#define PBR_SPECULAR_V_SMITH_GGX_BOUND           8
 
 #define PBR_SPECULAR_F_SCHLICK    1
 #define PBR_SPECULAR_F_SCHLICK_SG 2
 #define PBR_SPECULAR_F_NONE       3
+#define PBR_SPECULAR_F_F0         4
 
 #define PBR_DIFFUSE_LAMBERT 1
 #define PBR_DIFFUSE_BURLEY  2
@@ -131,13 +135,15 @@
 //   HIGH   float32, V -> SMITH_GGX_CORRELATED (Heitz 2014): the exact model.
 //   MEDIUM float32, V -> SMITH_GGX_CORRELATED_FAST (Hammon 2017, no square roots, at most
 //          29 % from the exact V); the HIGH tier's guards. The tier that buys ALU time.
-//   LOW    MEDIUM's model with the guards that keep it finite in half precision (mediump on
-//          mobile GPUs, or float16_t under PBR_FLOAT16): minimum perceptual roughness 0.089,
-//          l = -v threshold 2^-14, D · V capped at PBR_HALF_MAX (pbr_specular_lobe_limit;
-//          Filament's saturateMediump: lobes brighter than 65504 1/sr are capped, float32
-//          LOW included, so both precisions agree), and where floats may be 16-bit the lobe
-//          in half's range (pbr_DV_GGX_SmithCorrelatedFast_half). It costs what MEDIUM costs
-//          where float32 is used; it buys precision safety, not instructions (docs/bench).
+//   LOW    a different lobe (issue 25: a tier that buys instructions): GGX D in the
+//          cancelling 1 - NdotH² (1 - alpha²) form times V -> SMITH_GGX_BOUND = 0.5 / n·(l + v)
+//          (Heitz's V with its square roots bounded by 1: no more energy than the exact lobe),
+//          F -> F0 (no per-light Fresnel rise, as Unity's BRDF2 for direct light), minimum
+//          perceptual roughness 0.089 (Filament's mobile floor, which keeps the cancelling D
+//          within 1.9e-3). About 0.64x HIGH's RDNA3 instructions per light (docs/bench).
+//          Where floats may be 16-bit (PBR_HALF_ARITHMETIC) D · V is capped at PBR_HALF_MAX
+//          (pbr_specular_lobe_limit), and Hammon's V, if selected, runs in half's range
+//          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/hardcases/test_half.py).
 //   In the unity model (PBR_BRDF_MODEL_UNITY) the tiers pick Unity's BRDFs the way Unity's
 //   graphics tiers do (UNITY_PBS_USE_BRDF1/2/3): HIGH -> BRDF1, MEDIUM -> BRDF2, LOW -> BRDF3;
 //   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.
@@ -146,7 +152,10 @@
 #  define PBR_UNITY_BRDF PBR_UNITY_BRDF_3
 #  endif
 #  ifndef PBR_SPECULAR_V
-#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_BOUND
+#  endif
+#  ifndef PBR_SPECULAR_F
+#  define PBR_SPECULAR_F PBR_SPECULAR_F_F0
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
 #  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
@@ -209,6 +218,8 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
     return pbr_V_Kelemen(VdotH);
 #elif PBR_SPECULAR_V == PBR_SPECULAR_V_IMPLICIT
     return pbr_V_Implicit();
+#elif PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_BOUND
+    return pbr_V_SmithGGXBound(NdotL, NdotV);
 #else
 #error "PBR_SPECULAR_V: unknown value"
 #endif
@@ -238,6 +249,8 @@ float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float 
 #  else
     return pbr_DV_GGX_SmithCorrelatedFast(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
 #  endif
+#elif PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_BOUND
+    return pbr_DV_GGX_SmithBound(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
 #else
     float invLength = rsqrt(h2);
     float cosine = nDotH * invLength;
@@ -260,6 +273,8 @@ float3 pbr_specular_F(float3 f0, float VdotH) {
     return pbr_F_SchlickSG(f0, pbr_f90_from_f0(f0), VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((float3)(1.0));
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
+    return f0;
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif
@@ -268,7 +283,8 @@ float3 pbr_specular_F(float3 f0, float VdotH) {
 // The largest |pbr_specular_F - pbr_F_Schlick(f0, f90, VdotH)| over VdotH in [0, 1]: how far
 // the selected F can reflect beyond the Schlick weights of the split-sum table (used by the
 // diffuse-specular coupling, pbr_specular_albedo_bound). SG: PBR_F_SCHLICK_SG_MAX_ABS_ERROR
-// times (f90 - f0) (f_schlick.hlsl); NONE (F = 1): 1 - f0, F's distance from Schlick at VdotH = 1.
+// times (f90 - f0) (f_schlick.hlsl); NONE (F = 1): 1 - f0, F's distance from Schlick at VdotH = 1;
+// F0: 0 (F = f0 <= Schlick's weights, since f90 = pbr_f90_from_f0(f0) >= every channel of f0).
 float3 pbr_specular_F_deviation_bound(float3 f0) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
     return ((float3)(0.0));
@@ -276,13 +292,15 @@ float3 pbr_specular_F_deviation_bound(float3 f0) {
     return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((float3)(pbr_f90_from_f0(f0))) - f0);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((float3)(1.0)) - f0;
+#elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
+    return ((float3)(0.0));
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif
 }
 
 float pbr_specular_lobe_limit(float DV) {
-#if PBR_QUALITY == PBR_QUALITY_LOW
+#if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC
     return min(DV, PBR_HALF_MAX);  // also maps a half +Inf to 65504 (min of Inf is defined)
 #else
     return DV;
