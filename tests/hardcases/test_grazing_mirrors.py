@@ -4,8 +4,12 @@ against its own float64 model at the same float32 inputs.
 
 Tolerance: 1e-4 relative on the BRDF's channel sum, for every sample: n = +z makes the dot
 and cross products with n exact, so what remains is the lobe's own float32 arithmetic (a
-dozen roundings; measured worst 9.6e-7, printed by the test). A dropped lobe is off by a
-factor of up to 4e4 (issue 25: 0.159 against 5069)."""
+dozen roundings; measured worst 9.6e-7, printed by the test). LOW's lobe writes GGX's
+denominator in the cancelling form 1 - NdotH²(1 - alpha²) (its cost: issue 25), which at the
+mirror keeps log2(1/alpha²) fewer bits: at LOW's roughness floor (alpha² = 6.3e-5) one ulp of
+NdotH² is 1e-3 of the denominator, squared in D; measured worst 4.4e-3 (the bench's stated
+LOW self-error, 4.5e-3), bound 1e-2. A dropped lobe is off by a factor of up to 4e4
+(issue 25: 0.159 against 5069), far outside either bound."""
 
 import numpy as np
 import pytest
@@ -13,7 +17,7 @@ import pytest
 from pbrlab.hardcases import grazing
 
 SAMPLES = 10 ** 6
-REL = 1e-4
+REL = {"HIGH": 1e-4, "MEDIUM": 1e-4, "LOW": 1e-2}
 
 
 @pytest.fixture(scope="module")
@@ -27,8 +31,9 @@ def test_grazing_mirror_lobe_follows_the_float64_model_in_tier(quality, sample):
     assert result["finite"].all()
     worst = int(np.argmax(result["rel"]))
     print(f"{quality}: worst relative error {result['rel'][worst]:.3g} at c = {sample['l'][worst, 2]:.3g}")
-    assert result["rel"][worst] <= REL, (
-        f"{quality}: {int((result['rel'] > REL).sum())} of {SAMPLES} off by more than {REL}; worst: GLSL "
+    bound = REL[quality]
+    assert result["rel"][worst] <= bound, (
+        f"{quality}: {int((result['rel'] > bound).sum())} of {SAMPLES} off by more than {bound}; worst: GLSL "
         f"{result['got'][worst]:.6g}, float64 {result['want'][worst]:.6g} at l = {sample['l'][worst].tolist()}, "
         f"v = {sample['v'][worst].tolist()}, r = {float(sample['r'][worst]):.4g}")
 

@@ -37,6 +37,7 @@
 // Outside the preconditions (h = 0: 0 · Inf) the quotient is NaN and the caller must not use
 // it (pbr_brdf_standard selects 0 there).
 // Measured price of the terms' own guards, and the fused form's error: docs/bench.
+// SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_DV_GGX_SMITH_CORRELATED_GLSL
 #define PBR_BRDF_DV_GGX_SMITH_CORRELATED_GLSL
 
