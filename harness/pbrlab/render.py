@@ -299,7 +299,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     copy = None
     draw_calls = 0
     try:
-        if behind:  # a transmissive material: first the scene it sees (transmission_copy.py)
+        if behind is not None:  # a transmissive material: first the scene it sees (transmission_copy.py)
             copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format)
             copy.target.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)

@@ -34,11 +34,12 @@ def transmits(plan: features.ProgramPlan, material_name: str) -> bool:
     return "PBRLAB_TRANSMISSION" in plan.defines[material_name]
 
 
-def seen_through(scene, plan: features.ProgramPlan) -> list:
-    """The objects the copy holds: those whose material does not transmit; empty when no
-    object's material transmits (then there is no copy)."""
+def seen_through(scene, plan: features.ProgramPlan) -> list | None:
+    """The objects the copy holds: those whose material does not transmit (none, when every
+    object transmits: the copy is then empty and the environment shows through); None when
+    no object's material transmits (then there is no copy, and no program samples one)."""
     if not any(transmits(plan, obj.material) for obj in scene.objects):
-        return []
+        return None
     return [obj for obj in scene.objects if not transmits(plan, obj.material)]
 
 

@@ -171,3 +171,22 @@ def test_a_surface_file_material_refuses_the_transmission_fields(tmp_path):
                                          r"surface; .*\(remove `transmission`, `attenuation_color`\)"):
         parse_scene(one_sphere({"surface": str(surface), "transmission": 0.5, "attenuation_color": [1, 1, 1]},
                                LIGHTS))
+
+
+def test_a_scene_where_everything_transmits_reads_an_empty_copy_not_a_stale_unit(gl_context):
+    """Every object transmits: the copy holds nothing (the environment shows through), and it
+    is still made and bound. Before, no copy was made, and the transmissive program sampled
+    whatever texture its copy unit last held: another render's copy, or (here) a planted
+    texture, so this scene's image depended on which render ran before it."""
+    material = {**PLASTIC, "transmission": 1.0, "thickness": 0.5, "attenuation_distance": 0.3}
+    alone = one_sphere(material, LIGHTS, environment={"color": [0.4, 0.5, 0.6]})
+    behind = {**alone, "materials": {**alone["materials"], "wall": dict(PLASTIC)},
+              "objects": alone["objects"] + [{"sphere": {"center": [0, 0, -4], "radius": 2.0}, "material": "wall"}]}
+    render_scene(parse_scene(behind), gl_context)  # the same program, its copy sampler set
+    images = []
+    for planted in (100.0, 7.0):
+        texture = gl_context.texture((4, 4), 4, np.full((4, 4, 4), planted, np.float32).tobytes(), dtype="f4")
+        texture.use(3)  # render.py's TRANSMISSION_COPY_UNIT
+        images.append(render_scene(parse_scene(alone), gl_context).linear)
+        texture.release()
+    assert np.array_equal(images[0], images[1])
