@@ -13,7 +13,10 @@ KHR_lights_punctual lights, read by the viewer's own importer), the camera (a pb
 ``Camera``: position, target, up, vertical field of view; or a glTF camera index) and
 the environment: a Radiance .hdr equirectangular image that the viewer prefilters itself
 (Lambertian and GGX cubes, its GGX LUT), or None for punctual lights only. The viewer's
-generated key and fill lights and its environment background are off.
+generated key and fill lights are off. With an environment its background is drawn into
+the viewer's transmission copy, as the viewer does when it shows the environment, so that a
+transmissive surface sees the environment where nothing opaque lies behind it; it is kept out
+of the returned image (tools/sample_viewer/page/viewer.mjs), whose alpha still marks coverage.
 
 ``write_radiance_hdr`` writes an image as .hdr and returns the values the viewer decodes
 from it (mantissa * 2^(exponent - 136)), so pbrlab can be given exactly the same radiance.
