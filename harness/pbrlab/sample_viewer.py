@@ -3,7 +3,7 @@
     linear = render_with_sample_viewer("model.gltf", camera, environment="sky.hdr", size=(256, 128))
 
 runs ``tools/sample_viewer/render.mjs`` (node, playwright-core, Debian's chromium with
-WebGL2 on SwiftShader, npm ``@khronosgroup/gltf-viewer``) and returns its image as an
+WebGL2 on SwiftShader started by ``tools/chromium/launch.mjs``, npm ``@khronosgroup/gltf-viewer``) and returns its image as an
 HxWx4 float32 array: linear radiance, rows top to bottom, alpha 0 where no surface is.
 The viewer's own switch LINEAR_OUTPUT is on, so the values are read before its exposure,
 tonemap and pow(1/2.2) encode; they are written to an RGBA32F target (no multisampling).
@@ -63,6 +63,9 @@ def missing_setup() -> list[str]:
     for package in ("@khronosgroup/gltf-viewer", "playwright-core"):
         if not (SAMPLE_VIEWER_DIR / "node_modules" / package / "package.json").is_file():
             missing.append(f"npm package {package} is not installed in {SAMPLE_VIEWER_DIR}")
+    if not (SAMPLE_VIEWER_DIR.parent / "chromium" / "launch.mjs").is_file():
+        missing.append(f"{SAMPLE_VIEWER_DIR.parent / 'chromium' / 'launch.mjs'} (Chromium's start-up, "
+                       "imported by render.mjs) is missing")
     return missing
 
 
@@ -72,8 +75,9 @@ def check_setup() -> None:
         raise PbrlabError("the glTF Sample Viewer cannot run: " + "; ".join(missing)
                           + f". In a pbrlab checkout, run `bash scripts/setup.sh` (as root it installs chromium "
                           f"with apt-get and runs `npm ci` in {SAMPLE_VIEWER_DIR}); elsewhere install "
-                          "chromium and nodejs, run `npm ci` in a copy of the checkout's tools/sample_viewer "
-                          "and point PBRLAB_SAMPLE_VIEWER_DIR at it. Then try again.")
+                          "chromium and nodejs, copy the checkout's tools/sample_viewer and tools/chromium side by "
+                          "side, run `npm ci` in the copy of tools/sample_viewer and point "
+                          "PBRLAB_SAMPLE_VIEWER_DIR at it. Then try again.")
 
 
 def camera_spec(camera, size) -> dict:
