@@ -14,6 +14,7 @@
 #   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core),
 #      tools/gltf_validator (the Khronos glTF Validator) and tools/threejs (three.js and
 #      playwright-core, for examples/threejs), each pinned by its package-lock.json. Skipped where node_modules matches the lock file.
+#      (tools/chromium/launch.mjs, the Chromium start-up both browser tools import, needs no npm package.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

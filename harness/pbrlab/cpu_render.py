@@ -138,10 +138,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
     if not scene.objects:
         return out
     copy = transmission_copy(scene, unmodelled)
-    hits = [_sphere_hit(origin, d, obj) if obj.sphere is not None else _mesh_hit(origin, d, obj, scene)
-            for obj in scene.objects]
-    nearest = np.argmin(np.stack([hit.t for hit in hits]), axis=0)
-    t = np.min(np.stack([hit.t for hit in hits]), axis=0)
+    hits, nearest, t = _nearest_hits(scene, origin, d)
     env_sh = environment_sh(scene.environment) if scene.environment is not None else None
     for index, (obj, hit) in enumerate(zip(scene.objects, hits)):
         mask = (nearest == index) & np.isfinite(t)
@@ -196,10 +193,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
         if transmitted is not None:  # each light through the surface, then the environment seen through it
             whole_diffuse, terms = transmitted
             zero = np.zeros(p.shape)
-            for light in scene.lights:
-                l, radiance = _light_terms(light, p)
-                color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v, l,
-                                                           radiance, zero, **terms)
+            color += transmitted_light(scene, material, n, v, p)
             if env_sh is not None or copy is not None:
                 behind = _seen_through(scene, frame, copy, material, p, n, v)
                 color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v,
@@ -244,6 +238,80 @@ def transmitted_fraction(scene, material, n, v) -> np.ndarray:
         attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
         specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
         energy_compensated=scene.render.energy_compensation)
+
+
+def environment_specular_albedo(scene, material, n, v) -> np.ndarray:
+    """[..., 3] float64: the fraction of a constant environment the base reflects
+    specularly at normals n, views v (the split sum's f0 A + B, times the energy compensation
+    where the scene applies it), as render_scene_cpu weighs the environment; a metallic 0
+    base's diffuse and transmission share the rest."""
+    quality = scene.render.quality.upper()
+    n, v = np.asarray(n, float).reshape(-1, 3), np.asarray(v, float).reshape(-1, 3)
+    _, f0, _, rough = _surface(material)
+    r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
+    dfg = ref_albedo.split_sum_terms_at_alpha(np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV), r * r)
+    return ref_surface.indirect_specular_albedo(np.broadcast_to(f0, n.shape), dfg, scene.render.energy_compensation)
+
+
+def transmitted_light(scene, material, n, v, p) -> np.ndarray:
+    """[..., 3] float64: the scene's lights seen through ``material``'s base at the points p
+    (normals n, views v), as render_scene_cpu adds them to the base (before a coat or sheen
+    over it changes what leaves): pbrlab.reference.surface.lighting_transmission of each light
+    with nothing behind, summed."""
+    quality = scene.render.quality.upper()
+    n, v, p = (np.asarray(x, float).reshape(-1, 3) for x in (n, v, p))
+    diffuse, _, coat_f0, rough = _surface(material)
+    r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
+    dfg = ref_albedo.split_sum_terms_at_alpha(np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV), r * r)
+    zero = np.zeros(n.shape)
+    total = np.zeros(n.shape)
+    for light in scene.lights:
+        l, radiance = _light_terms(light, p)
+        total += ref_surface.lighting_transmission(
+            diffuse, coat_f0, rough, material.occlusion, n, v, l, radiance, zero, dfg,
+            factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
+            attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
+            specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
+            energy_compensated=scene.render.energy_compensation)
+    return total
+
+
+def _nearest_hits(scene, origin, d):
+    """Every object's hit along the rays d, the index of the nearest (argmin) and its distance
+    (inf where nothing is hit)."""
+    hits = [_sphere_hit(origin, d, obj) if obj.sphere is not None else _mesh_hit(origin, d, obj, scene)
+            for obj in scene.objects]
+    ts = np.stack([hit.t for hit in hits])
+    return hits, np.argmin(ts, axis=0), np.min(ts, axis=0)
+
+
+def visible_surfaces(scene) -> dict:
+    """What each pixel's camera ray (camera.camera_rays, as render_scene_cpu) meets first:
+    ``object`` (HxW int, the index in scene.objects, -1 for nothing), and HxWx3 float64 ``p``
+    (the point), ``n`` (the unit normal: a sphere's, or a mesh's vertex normals interpolated as
+    the rasteriser interpolates them), ``v`` (the unit view) and HxWx2 ``uv`` (a mesh's
+    TEXCOORD_0 interpolated the same way), NaN where the ray meets nothing (uv: and on
+    spheres). For checks that model a term per pixel next to a renderer's image."""
+    from .depth_range import scene_frame
+
+    frame = scene_frame(scene)
+    d = camera_rays(frame)
+    shape = d.shape[:2]
+    out = {"object": np.full(shape, -1), "p": np.full(shape + (3,), np.nan), "n": np.full(shape + (3,), np.nan),
+           "v": np.full(shape + (3,), np.nan), "uv": np.full(shape + (2,), np.nan)}
+    if not scene.objects:
+        return out
+    hits, nearest, t = _nearest_hits(scene, frame.position, d)
+    for index, hit in enumerate(hits):
+        mask = (nearest == index) & np.isfinite(t)
+        if not mask.any():
+            continue
+        p = frame.position + t[mask][:, None] * d[mask]
+        out["object"][mask] = index
+        out["p"][mask], out["n"][mask], out["v"][mask] = p, hit.frame(mask, p)[0], -d[mask]
+        if hit.texcoord is not None:
+            out["uv"][mask] = hit.texcoord(mask)
+    return out
 
 
 def _transmits(material) -> bool:
@@ -300,10 +368,10 @@ def _seen_through(scene, frame, copy, material, p, n, v):
 class _Hit:
     """One object's nearest hit distance per ray (inf where missed) and ``frame(mask, p)``:
     the unit normal and the tangent (xyz, w; None for a sphere) at the hit points p of the
-    rays in ``mask``."""
+    rays in ``mask``; on a mesh ``texcoord(mask)``: TEXCOORD_0 there (None on a sphere)."""
 
-    def __init__(self, t, frame):
-        self.t, self.frame = t, frame
+    def __init__(self, t, frame, texcoord=None):
+        self.t, self.frame, self.texcoord = t, frame, texcoord
 
 
 def _sphere_hit(origin, d, obj):
@@ -327,7 +395,7 @@ def _mesh_hit(origin, d, obj, scene):
     matrix) and tangents (through the model matrix) as the rasteriser does."""
     from . import meshes
 
-    positions, normals, _, tangents, indices = meshes.mesh_data(obj).arrays[:5]
+    positions, normals, texcoords, tangents, indices = meshes.mesh_data(obj).arrays[:5]
     m = np.asarray(obj.transform, float)
     world = np.asarray(positions, float) @ m[:3, :3].T + m[:3, 3]
     tri = np.asarray(indices).reshape(-1, 3)
@@ -362,16 +430,23 @@ def _mesh_hit(origin, d, obj, scene):
     every = np.zeros((len(near), 3))
     every[near] = best
 
-    def frame(mask, p):
+    def barycentric(mask):
         chosen = every[mask.reshape(-1)]
-        corners = tri[chosen[:, 0].astype(int)]
         weights = np.stack([1 - chosen[:, 1] - chosen[:, 2], chosen[:, 1], chosen[:, 2]], axis=-1)
+        return tri[chosen[:, 0].astype(int)], weights
+
+    def texcoord(mask):
+        corners, weights = barycentric(mask)
+        return np.einsum("rk,rkc->rc", weights, np.asarray(texcoords, float)[corners])
+
+    def frame(mask, p):
+        corners, weights = barycentric(mask)
         n = np.einsum("rk,rkc->rc", weights, np.asarray(normals, float)[corners]) @ normal_matrix.T
         n /= np.linalg.norm(n, axis=-1, keepdims=True)
         tangent = np.einsum("rk,rkc->rc", weights, np.asarray(tangents, float)[corners])
         tangent[:, :3] = tangent[:, :3] @ m[:3, :3].T
         return n, tangent
-    return _Hit(every_t.reshape(d.shape[:2]), frame)
+    return _Hit(every_t.reshape(d.shape[:2]), frame, texcoord)
 
 
 def _anisotropy_direction(n, tangent, rotation):

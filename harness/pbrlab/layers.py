@@ -36,7 +36,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("checking", (
         "compare", "goldens", "charts", "golden_scenes", "contact_sheets", "codescan", "hardcases",
         "pyrender_compat", "pyrender_check", "pyrender_figure", "pyrender_gltf_check", "sample_viewer",
-        "unity.corpus", "pytest_plugin")),
+        "sample_viewer_prediction", "unity.corpus", "pytest_plugin")),
     ("bench", (
         "bench",)),
     ("commands", (

@@ -3,7 +3,7 @@
     linear = render_with_sample_viewer("model.gltf", camera, environment="sky.hdr", size=(256, 128))
 
 runs ``tools/sample_viewer/render.mjs`` (node, playwright-core, Debian's chromium with
-WebGL2 on SwiftShader, npm ``@khronosgroup/gltf-viewer``) and returns its image as an
+WebGL2 on SwiftShader started by ``tools/chromium/launch.mjs``, npm ``@khronosgroup/gltf-viewer``) and returns its image as an
 HxWx4 float32 array: linear radiance, rows top to bottom, alpha 0 where no surface is.
 The viewer's own switch LINEAR_OUTPUT is on, so the values are read before its exposure,
 tonemap and pow(1/2.2) encode; they are written to an RGBA32F target (no multisampling).
@@ -13,7 +13,10 @@ KHR_lights_punctual lights, read by the viewer's own importer), the camera (a pb
 ``Camera``: position, target, up, vertical field of view; or a glTF camera index) and
 the environment: a Radiance .hdr equirectangular image that the viewer prefilters itself
 (Lambertian and GGX cubes, its GGX LUT), or None for punctual lights only. The viewer's
-generated key and fill lights and its environment background are off.
+generated key and fill lights are off. With an environment its background is drawn into
+the viewer's transmission copy, as the viewer does when it shows the environment, so that a
+transmissive surface sees the environment where nothing opaque lies behind it; it is kept out
+of the returned image (tools/sample_viewer/page/viewer.mjs), whose alpha still marks coverage.
 
 ``write_radiance_hdr`` writes an image as .hdr and returns the values the viewer decodes
 from it (mantissa * 2^(exponent - 136)), so pbrlab can be given exactly the same radiance.
@@ -60,6 +63,9 @@ def missing_setup() -> list[str]:
     for package in ("@khronosgroup/gltf-viewer", "playwright-core"):
         if not (SAMPLE_VIEWER_DIR / "node_modules" / package / "package.json").is_file():
             missing.append(f"npm package {package} is not installed in {SAMPLE_VIEWER_DIR}")
+    if not (SAMPLE_VIEWER_DIR.parent / "chromium" / "launch.mjs").is_file():
+        missing.append(f"{SAMPLE_VIEWER_DIR.parent / 'chromium' / 'launch.mjs'} (Chromium's start-up, "
+                       "imported by render.mjs) is missing")
     return missing
 
 
@@ -69,8 +75,9 @@ def check_setup() -> None:
         raise PbrlabError("the glTF Sample Viewer cannot run: " + "; ".join(missing)
                           + f". In a pbrlab checkout, run `bash scripts/setup.sh` (as root it installs chromium "
                           f"with apt-get and runs `npm ci` in {SAMPLE_VIEWER_DIR}); elsewhere install "
-                          "chromium and nodejs, run `npm ci` in a copy of the checkout's tools/sample_viewer "
-                          "and point PBRLAB_SAMPLE_VIEWER_DIR at it. Then try again.")
+                          "chromium and nodejs, copy the checkout's tools/sample_viewer and tools/chromium side by "
+                          "side, run `npm ci` in the copy of tools/sample_viewer and point "
+                          "PBRLAB_SAMPLE_VIEWER_DIR at it. Then try again.")
 
 
 def camera_spec(camera, size) -> dict:

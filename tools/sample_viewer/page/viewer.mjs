@@ -9,6 +9,11 @@
 //    is compiled with LINEAR_OUTPUT defined: the viewer's own switch, used for its
 //    transmission pass, which writes the shaded colour without u_Exposure, tonemap and its
 //    pow(1/2.2) encode.
+// With an environment, its background (renderEnvironmentMap) is drawn into the viewer's
+// transmission copy, as the viewer draws it when it shows the environment, so that a
+// transmissive surface sees the sky where nothing opaque is behind it; it is kept out of the
+// final image (backgroundInCopyOnly), whose clear alpha 0 then still marks coverage and whose
+// blended surfaces lie over transparent black, as pbrlab's do.
 import { GltfState, GltfView } from "/viewer/gltf-viewer.module.js";
 
 function linearTarget(gl, width, height) {
@@ -34,6 +39,29 @@ function linearTarget(gl, width, height) {
   return fbo;
 }
 
+// The viewer's EnvironmentRenderer (created by the renderer's first init) draws the
+// background before the transmission copy's scene and before the final image's; only the
+// first draw is let through: the final image is the float target behind the default
+// framebuffer. Returns a check that the hook was installed (a newer viewer that renames
+// renderer.environmentRenderer fails loudly instead of drawing the background everywhere).
+function backgroundInCopyOnly(gl, renderer, finalTarget) {
+  if (!renderer || "environmentRenderer" in renderer) throw new Error("gltf-viewer: renderer.environmentRenderer not as expected");
+  let environmentRenderer;
+  Object.defineProperty(renderer, "environmentRenderer", {
+    get: () => environmentRenderer,
+    set: (value) => {
+      const draw = value.drawEnvironmentMap.bind(value);
+      value.drawEnvironmentMap = (...args) => {
+        if (gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING) !== finalTarget) draw(...args);
+      };
+      environmentRenderer = value;
+    },
+  });
+  return () => {
+    if (environmentRenderer === undefined) throw new Error("gltf-viewer: no environmentRenderer after the frame");
+  };
+}
+
 function toBase64(bytes) {
   let text = "";
   for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
@@ -52,6 +80,7 @@ window.renderGltf = async (spec) => {
   if (!gl) throw new Error("no WebGL2 context (run chromium with --use-angle=swiftshader --enable-unsafe-swiftshader)");
   const fbo = linearTarget(gl, width, height);
   const view = new GltfView(gl);
+  const checkBackgroundHook = backgroundInCopyOnly(gl, view.renderer, fbo);
   const state = view.createState();
   // No KTX2 (libktx) and no Draco decoder: pbrlab's importer reads neither, so an asset
   // that needs one is outside this comparison. The viewer probes the global LIBKTX and
@@ -65,7 +94,7 @@ window.renderGltf = async (spec) => {
   state.sceneIndex = state.gltf.scene ?? 0;
   const p = state.renderingParameters;
   p.clearColor = [0, 0, 0, 0];  // alpha 0 outside the model: the coverage mask
-  p.renderEnvironmentMap = false;
+  p.renderEnvironmentMap = Boolean(spec.environment);  // into the transmission copy only
   p.blurEnvironmentMap = false;
   p.toneMap = GltfState.ToneMaps.NONE;  // not applied under LINEAR_OUTPUT; named for clarity
   p.exposure = 1.0;
@@ -94,6 +123,7 @@ window.renderGltf = async (spec) => {
     camera.perspective.zfar = spec.camera.zfar;
   }
   view.renderFrame(state, width, height);
+  checkBackgroundHook();
   gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
   const pixels = new Float32Array(width * height * 4);
   gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, pixels);
