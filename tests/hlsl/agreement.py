@@ -73,6 +73,9 @@ STRUCT_BUILDERS["UnityGIInput"] = ("test_gi_input", (
 STRUCT_BUILDERS["Unity_GlossyEnvironmentData"] = ("test_glossy_environment", (("float", "roughness"),
                                                                               ("vec3", "dir")))
 
+STRUCT_BUILDERS["pbr_PreparedTransmission"] = ("test_prepared_transmission", (
+    ("vec3", "diffuseColor"), ("vec3", "coatF0"), ("float", "perceptualRoughness"), ("float", "occlusion"),
+    ("vec3", "n"), ("vec3", "v"), ("pbr_Transmission", "tr"), ("vec2", "dfg")))
 STRUCT_BUILDERS["pbr_Light"] = STRUCT_BUILDERS["UnityLight"]
 STRUCT_BUILDERS["pbr_Indirect"] = STRUCT_BUILDERS["UnityIndirect"]
 
@@ -82,6 +85,9 @@ SPECIAL = {
     "pbr_prepare_surface_dfg": [("test_prepare_surface_dfg", STRUCT_BUILDERS["pbr_PreparedSurface"][1])],
     "pbr_prepare_surface": [("test_prepare_surface", STRUCT_BUILDERS["pbr_PreparedSurface"][1][:-1])],
     "pbr_anisotropic_frame": [("test_anisotropic_frame", STRUCT_BUILDERS["pbr_AnisotropicFrame"][1])],
+    "pbr_prepare_transmission_dfg": [(f"test_prepare_transmission_dfg_{part}",
+                                      STRUCT_BUILDERS["pbr_PreparedTransmission"][1])
+                                     for part in ("surface", "rho", "weight")],
     "pbr_sh9_irradiance": [("test_sh9_irradiance", (("vec3", "a"), ("vec3", "b"), ("vec3", "n")))],
     "DiffuseAndSpecularFromMetallic": [
         ("test_DiffuseAndSpecularFromMetallic", (("vec3", "albedo"), ("float", "metallic"))),
