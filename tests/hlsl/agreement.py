@@ -56,6 +56,11 @@ STRUCT_BUILDERS["pbr_Transmission"] = ("test_transmission", (("float", "factor")
                                                             ("vec3", "attenuationColor"),
                                                             ("float", "attenuationDistance"), ("float", "volumeIor")))
 STRUCT_BUILDERS["pbr_Anisotropy"] = ("test_anisotropy", (("float", "strength"), ("vec3", "direction")))
+STRUCT_BUILDERS["pbr_PreparedSurface"] = ("test_prepared_surface", (
+    ("vec3", "diffuseColor"), ("vec3", "f0"), ("vec3", "coatF0"), ("float", "perceptualRoughness"),
+    ("float", "occlusion"), ("vec3", "n"), ("vec3", "v"), ("vec2", "dfg")))
+STRUCT_BUILDERS["pbr_AnisotropicFrame"] = ("test_anisotropic_frame_of", (("vec3", "n"), ("float", "strength"),
+                                                                        ("vec3", "direction")))
 STRUCT_BUILDERS["pbr_Sheen"] = ("test_sheen", (("vec3", "color"), ("float", "perceptualRoughness")))
 STRUCT_BUILDERS["UnityLight"] = ("test_light", (("vec3", "lightColor"), ("vec3", "lightDir")))
 STRUCT_BUILDERS["UnityIndirect"] = ("test_indirect", (("vec3", "indirectDiffuse"), ("vec3", "indirectSpecular")))
@@ -68,8 +73,21 @@ STRUCT_BUILDERS["UnityGIInput"] = ("test_gi_input", (
 STRUCT_BUILDERS["Unity_GlossyEnvironmentData"] = ("test_glossy_environment", (("float", "roughness"),
                                                                               ("vec3", "dir")))
 
+STRUCT_BUILDERS["pbr_PreparedTransmission"] = ("test_prepared_transmission", (
+    ("vec3", "diffuseColor"), ("vec3", "coatF0"), ("float", "perceptualRoughness"), ("float", "occlusion"),
+    ("vec3", "n"), ("vec3", "v"), ("pbr_Transmission", "tr"), ("vec2", "dfg")))
+STRUCT_BUILDERS["pbr_Light"] = STRUCT_BUILDERS["UnityLight"]
+STRUCT_BUILDERS["pbr_Indirect"] = STRUCT_BUILDERS["UnityIndirect"]
+
 # Functions with out parameters or array parameters: evaluated through wrappers.
 SPECIAL = {
+    # struct results (issue 25's prepared surface and anisotropic frame): their fields, summed
+    "pbr_prepare_surface_dfg": [("test_prepare_surface_dfg", STRUCT_BUILDERS["pbr_PreparedSurface"][1])],
+    "pbr_prepare_surface": [("test_prepare_surface", STRUCT_BUILDERS["pbr_PreparedSurface"][1][:-1])],
+    "pbr_anisotropic_frame": [("test_anisotropic_frame", STRUCT_BUILDERS["pbr_AnisotropicFrame"][1])],
+    "pbr_prepare_transmission_dfg": [(f"test_prepare_transmission_dfg_{part}",
+                                      STRUCT_BUILDERS["pbr_PreparedTransmission"][1])
+                                     for part in ("surface", "rho", "weight")],
     "pbr_sh9_irradiance": [("test_sh9_irradiance", (("vec3", "a"), ("vec3", "b"), ("vec3", "n")))],
     "DiffuseAndSpecularFromMetallic": [
         ("test_DiffuseAndSpecularFromMetallic", (("vec3", "albedo"), ("float", "metallic"))),
@@ -103,7 +121,8 @@ VARIANT_DEPENDENT = {
     "pbr_unity_environment_lod", "pbr_specular_albedo_bound", "pbr_indirect_diffuse_color",
     "LightingStandardSpecular", "PreMultiplyAlpha", "pbr_tonemap", "pbr_decode_color_texel",
     "pbr_encode_final_color", "pbr_lighting_anisotropic", "pbr_lighting_anisotropic_dfg",
-    "pbr_anisotropic_reflection_normal",
+    "pbr_anisotropic_reflection_normal", "pbr_prepare_surface_dfg", "pbr_prepare_surface",
+    "pbr_lighting_standard_light", "pbr_lighting_standard_add_environment", "pbr_lighting_anisotropic_light",
 }
 
 # Every value of every selector, each in at least one configuration (the default

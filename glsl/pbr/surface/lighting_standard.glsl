@@ -1,7 +1,7 @@
 // pbr/surface/lighting_standard.glsl: one surface point lit by one punctual light and by
 // the environment (indirect diffuse and specular): the core of the Unity-style API.
 //
-// Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI
+// Provides: struct pbr_Light, struct pbr_Indirect, struct pbr_GI, struct pbr_PreparedSurface
 //           vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
 //                                                float NdotV, float occlusion, vec2 dfg)
 //           vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec2 dfg)
@@ -11,6 +11,14 @@
 //           vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0,
 //                                          float perceptualRoughness, float occlusion, vec3 n,
 //                                          vec3 v, pbr_GI gi, vec2 dfg)
+//           pbr_PreparedSurface pbr_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                          float perceptualRoughness, float occlusion, vec3 n,
+//                                          vec3 v, vec2 dfg)
+//           pbr_PreparedSurface pbr_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0,
+//                                          float perceptualRoughness, float occlusion, vec3 n, vec3 v)
+//           vec3 pbr_lighting_standard_light(pbr_PreparedSurface s, pbr_Light light)
+//           vec3 pbr_lighting_standard_add_environment(pbr_PreparedSurface s, pbr_Indirect indirect,
+//                                                      vec3 radiance)
 // Include:  "pbr/surface/lighting_standard.glsl" (path relative to glsl/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
 //           in the environment specular; 0: single scattering only);
@@ -37,6 +45,19 @@
 // PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
 // f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
 // (tests/render/test_white_furnace.py).
+//
+// Once per pixel, not per light (issue 25): everything that depends only on the point, the
+// view and the material (the DFG values, the coat's albedo bound and the diffuse colour
+// coupled to it, the environment's albedo with its compensation, the specular occlusion) is
+// pbr_prepare_surface[_dfg], computed before the loop over lights; each light then costs
+// pbr_lighting_standard_light (the BRDF and its cosine: no table, no coupling), and the
+// environment is added once by pbr_lighting_standard_add_environment:
+//   pbr_PreparedSurface s = pbr_prepare_surface(diffuseColor, f0, coatF0, roughness, ao, n, v);
+//   vec3 c = vec3(0.0);
+//   for (...) c += pbr_lighting_standard_light(s, light[i]);
+//   c = pbr_lighting_standard_add_environment(s, indirect, c);
+// pbr_lighting_standard[_dfg] (one light and the environment) is that composition, with the
+// same operations in the same order as before the split (bit for bit: the golden tests).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_GLSL
@@ -90,30 +111,76 @@ vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec2 dfg) {
     return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo(coatF0, dfg));
 }
 
-// Direct: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the diffuse
-// coupled to the coat's single-scattering specular albedo (pbr_specular_albedo_bound: the
-// tier's own lobe). Indirect: coupled diffuse * occlusion,
-// plus the split-sum specular (prefiltered radiance * directional albedo, Karis 2013) with
-// specular occlusion and, by default, multiple-scattering compensation. Occlusion darkens
-// only indirect light, as in Unity. dfg must be pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV),
-// pbr_clamp_perceptual_roughness(perceptualRoughness)): engines that fetch their own table
-// call this form; pbr_lighting_standard fetches it through PBR_DFG_LUT_LOOKUP.
+// The per-pixel part of the lighting: what depends on the point, the view and the material
+// only (pbr_prepare_surface_dfg fills it; the per-light and environment functions read it).
+struct pbr_PreparedSurface {
+    vec3 n;                       // unit normal
+    vec3 v;                       // unit direction to the viewer
+    vec3 f0;
+    float perceptualRoughness;    // clamped to the tier's floor (pbr_clamp_perceptual_roughness)
+    float occlusion;              // ambient occlusion (indirect light only)
+    vec3 directDiffuseColor;      // coupled to the coat's single-scattering albedo bound (direct light)
+    vec3 indirectDiffuseColor;    // coupled to the coat's environment albedo (pbr_indirect_diffuse_color)
+    vec3 indirectSpecularAlbedo;  // the split sum's albedo (pbr_indirect_specular_albedo)
+    float specularOcclusion;      // pbr_specular_occlusion at this NdotV
+};
+
+// Direct: the diffuse coupled to the coat's single-scattering specular albedo
+// (pbr_specular_albedo_bound: the tier's own lobe). Indirect: the diffuse coupled to the
+// coat's environment albedo, the split-sum albedo (Karis 2013) with, by default,
+// multiple-scattering compensation, and the specular occlusion. dfg must be
+// pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), pbr_clamp_perceptual_roughness(perceptualRoughness)):
+// engines that fetch their own table call this form; pbr_prepare_surface fetches it through
+// PBR_DFG_LUT_LOOKUP (or the analytic fit: pbr/ibl/environment_brdf.glsl).
+pbr_PreparedSurface pbr_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                                            float occlusion, vec3 n, vec3 v, vec2 dfg) {
+    pbr_PreparedSurface s;
+    s.n = n;
+    s.v = v;
+    s.f0 = f0;
+    s.perceptualRoughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    s.occlusion = occlusion;
+    s.directDiffuseColor = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
+    s.indirectDiffuseColor = pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg);
+    s.indirectSpecularAlbedo = pbr_indirect_specular_albedo(f0, dfg);
+    s.specularOcclusion = pbr_specular_occlusion(max(dot(n, v), PBR_MIN_NDOTV), occlusion,
+                                                 s.perceptualRoughness * s.perceptualRoughness);
+    return s;
+}
+
+pbr_PreparedSurface pbr_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                                        float occlusion, vec3 n, vec3 v) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, roughness, occlusion, n, v, dfg);
+}
+
+// One punctual light: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the
+// prepared, coupled diffuse colour. Nothing here depends on the table or the coupling.
+vec3 pbr_lighting_standard_light(pbr_PreparedSurface s, pbr_Light light) {
+    return pbr_shade_punctual(s.n, s.v, light.dir, light.color, s.directDiffuseColor, s.f0, s.perceptualRoughness);
+}
+
+// radiance plus the environment's light: coupled diffuse * irradiance/pi * occlusion, then the
+// split-sum specular, prefiltered radiance * albedo * specular occlusion (added in this order,
+// as pbr_lighting_standard_dfg always summed them). Occlusion darkens only indirect light, as
+// in Unity.
+vec3 pbr_lighting_standard_add_environment(pbr_PreparedSurface s, pbr_Indirect indirect, vec3 radiance) {
+    return radiance + s.indirectDiffuseColor * indirect.diffuse * s.occlusion
+         + indirect.specular * s.indirectSpecularAlbedo * s.specularOcclusion;
+}
+
+// One light and the environment: the composition of the three parts above.
 vec3 pbr_lighting_standard_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
                                float occlusion, vec3 n, vec3 v, pbr_GI gi, vec2 dfg) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
-    vec3 direct = pbr_shade_punctual(n, v, gi.light.dir, gi.light.color,
-                                     directDiffuse, f0, roughness);
-    vec3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
-    return direct + pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * gi.indirect.diffuse * occlusion
-         + specular;
+    pbr_PreparedSurface s = pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, perceptualRoughness, occlusion,
+                                                    n, v, dfg);
+    return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
 }
 
 vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
                            float occlusion, vec3 n, vec3 v, pbr_GI gi) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    return pbr_lighting_standard_dfg(diffuseColor, f0, coatF0, roughness, occlusion, n, v, gi, dfg);
+    pbr_PreparedSurface s = pbr_prepare_surface(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v);
+    return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
 }
 #endif

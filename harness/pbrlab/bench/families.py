@@ -323,7 +323,10 @@ ENV_BRDF = Family(
                 "256x256 RG32F table on warped axes, bilinear at the texel centres (the renderer's "
                 "PBR_DFG_LUT_LOOKUP); cost = the coordinate warp and the filtered fetch",
                 kind="texture", texture="dfg"),
-        Variant("analytic", "pbr_env_brdf_approx(NdotV, r)", "Karis 2014 fit (the fallback without a table)"),
+        Variant("analytic", "pbr_env_brdf(NdotV, r)",
+                "Karis 2014 fit (EnvBRDFApprox), the table-free option: PBR_ENV_BRDF_ANALYTIC "
+                "(also the fallback where no table hook is defined)",
+                defines={"PBR_ENV_BRDF": "PBR_ENV_BRDF_ANALYTIC"}),
     ))
 
 # ---- the layers of current engines' materials, beside the base lobe they add to ----------

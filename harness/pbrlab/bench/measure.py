@@ -118,6 +118,7 @@ def error_stats(gpu, ref, d: dict, rel_floor: float) -> dict:
     return {"max_abs": float(per_sample[i_abs]), "max_rel": float(rel_sample[i_rel]),
             "p99_rel": float(np.percentile(rel_sample, 99)),
             "rmse": float(np.sqrt(np.mean(np.where(finite, gpu - ref, 0.0) ** 2))),
+            "mean_abs": float(np.mean(np.where(finite, np.abs(gpu - ref), 0.0))),
             "worst_abs_at": at(i_abs), "worst_rel_at": at(i_rel),
             "nonfinite": int((~finite).sum()), "samples": int(len(per_sample)),
             "rel_floor": rel_floor}

@@ -168,15 +168,15 @@ def markdown(doc: dict) -> str:
         lines += [f"## {fam['title']} (`{fam['name']}`)", "",
                   f"Reference: {fam['reference']}. Domain: {fam['domain']}. Exact variant: `{fam['exact']}`. "
                   f"Plot: [{fam['name']}.png]({fam['name']}.png).", "",
-                  "| variant | max abs | max rel | p99 rel | RMSE | worst rel at | instr/eval | ×exact | ns/eval | ×exact | note |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "| variant | max abs | mean abs | max rel | p99 rel | RMSE | worst rel at | instr/eval | ×exact | ns/eval | ×exact | note |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for v in fam["variants"]:
             e, t, c = v["error"], v["time_ns"], v["instructions"]
             extra = f"; 8-bit: {v['lsb_8bit']} codes off" if v.get("lsb_8bit") is not None else ""
             own = (f"; float32 vs own twin: {_g(v['self_error']['max_rel'])} rel"
                    if v.get("self_error") else "")
             lines.append(
-                f"| `{v['name']}` | {_g(e['max_abs'])} | {_g(e['max_rel'])} | {_g(e['p99_rel'])} | "
+                f"| `{v['name']}` | {_g(e['max_abs'])} | {_g(e.get('mean_abs'))} | {_g(e['max_rel'])} | {_g(e['p99_rel'])} | "
                 f"{_g(e['rmse'])} | {_where(e['worst_rel_at'])} | {_g(c['per_eval'], 1)} | "
                 f"{_g(c['ratio_to_exact'])} | {_g(t['median'], 1)} [{_g(t['p25'], 1)}–{_g(t['p75'], 1)}] | "
                 f"{_g(t['ratio_to_exact'])} | {v['note']}{extra}{own} |")

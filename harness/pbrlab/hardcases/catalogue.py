@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..reference import color, shading
+from ..reference import anisotropy, color, shading
 from . import domains
 
 
@@ -501,6 +501,18 @@ def _follows(function: Function, inputs: dict) -> Near:
                 f"reference.shading ({function.variant or 'quality=HIGH'}) within {FOLLOWS_REL:g} relative")
 
 
+def _follows_anisotropic(inputs: dict) -> Near:
+    """pbr_brdf_anisotropic_specular's float64 model (reference.anisotropy, HIGH) at the
+    case's float32 inputs, in the catalogue's frame (n = z, t = x, b = y)."""
+    d = {k: np.asarray(np.float32(inputs[k]), np.float64) for k in ("v", "l", "f0")}
+    unit = {k: d[k] / np.linalg.norm(d[k]) for k in ("v", "l")}
+    value = anisotropy.brdf_anisotropic_specular(UP, unit["v"], unit["l"], (1.0, 0.0, 0.0), (0.0, 1.0, 0.0),
+                                                 d["f0"], float(np.float32(inputs["roughness"])),
+                                                 float(np.float32(inputs["strength"])))
+    return Near(tuple(float(x) for x in np.ravel(value)), FOLLOWS_REL,
+                f"reference.anisotropy (quality=HIGH) within {FOLLOWS_REL:g} relative")
+
+
 def _shading_cases(function: Function) -> list[Case]:
     cases = []
     base = typical_inputs(function)
@@ -581,6 +593,10 @@ DECIDED = {
                                              "strength": 1.0}, None),
         ("grazing mirror, strength 1", "NdotL = NdotV = 1e-3 at the peak: D and V both near their maxima",
          {"v": (-0.9999995, 0.0, 1e-3), "l": (0.9999995, 0.0, 1e-3), "roughness": 0.0, "strength": 1.0}, None),
+        ("grazing mirror, 1e-6, lobe kept", "NdotL = NdotV = 1e-6 at the peak: |l + v|² = 4e-12, below the former "
+         "1e-10 threshold on |l + v|², which dropped the lobe (issue 25); h = n is defined: checked against "
+         "reference.anisotropy", {"v": (-1.0, 0.0, 1e-6), "l": (1.0, 0.0, 1e-6), "roughness": 0.3, "strength": 0.5},
+         "follows"),
         ("strength -1", "outside KHR's [0, 1]: acts as 1 (only s² enters)",
          {"v": (-0.6, 0.0, 0.8), "l": (0.6, 0.0, 0.8), "strength": -1.0},
          "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
@@ -680,6 +696,9 @@ def cases_of(function: Function) -> list[Case]:
         return [Case(function, "constant", "no inputs: the value itself must be exact", {"x": 0.0})]
     arg_names = {a.name for a in function.args}
     decided = [Case(function, name, why, dict(typical_inputs(function), **inputs), exact)
+               if exact != "follows" else
+               Case(function, name, why, dict(typical_inputs(function), **inputs), None, "",
+                    _follows_anisotropic(dict(typical_inputs(function), **inputs)))
                for name, why, inputs, exact in DECIDED.get(function.name, []) if set(inputs) <= arg_names]
     dirs = [] if not any(a.kind == "dir" for a in function.args) else [
         Case(function, "typical directions", "unit vectors at a typical angle", typical_inputs(function))]

@@ -93,7 +93,7 @@ def anisotropy_direction(t, b, direction_sample, rotation):
 def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength, quality="HIGH"):
     """D · V · F of the anisotropic lobe (1/sr, RGB on the last axis), with the edges of
     glsl/pbr/shading/anisotropy.glsl: roughness clamped to the tier's floor, NdotV clamped,
-    0 for NdotL <= 0, for l = -v and for h below the surface."""
+    0 for NdotL <= 0, for l = -v and for h below the surface (min(NdotL, n·(l + v)) < 2^-50)."""
     n, v, l, t, b = map(_f, (n, v, l, t, b))
     NdotL = _dot(n, l)
     NdotV = np.clip(_dot(n, v), shading.MIN_NDOTV, 1.0)
@@ -102,7 +102,8 @@ def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength,
     at, ab = alphas[..., 0], alphas[..., 1]
     s = l + v
     s2 = _dot(s, s)
-    ok = (NdotL > 0.0) & (s2 >= shading.QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED[quality]) & (_dot(n, s) > 0.0)
+    # pbr_brdf_standard's selection in every tier (issue 25): NdotL and n·(l + v) reach 2^-50
+    ok = np.minimum(NdotL, _dot(n, s)) >= shading.MIN_NDOT_HALF_SUM
     safe = np.where(ok[..., None], s, n)
     h = safe / np.linalg.norm(safe, axis=-1, keepdims=True)
     D = D_GGX_Anisotropic(_dot(n, h), _dot(t, h), _dot(b, h), at, ab)

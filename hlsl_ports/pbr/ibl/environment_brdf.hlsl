@@ -11,12 +11,19 @@
 //           float pbr_specular_occlusion(float NdotV, float occlusion, float alpha)
 //           float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount)
 // Include:  "pbr/ibl/environment_brdf.hlsl" (path relative to hlsl_ports/)
-// Config macros read: PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness), a hook the caller
+// Config macros read: PBR_ENV_BRDF (default PBR_ENV_BRDF_TABLE), which environment BRDF
+//           pbr_env_brdf returns:
+//             PBR_ENV_BRDF_TABLE     the DFG table through PBR_DFG_LUT_LOOKUP (the accurate
+//                                    option); the analytic fit where the hook is undefined
+//             PBR_ENV_BRDF_ANALYTIC  the analytic fit (pbr_env_brdf_approx) even where a
+//                                    table is given: no texture, no fetch (the table-free
+//                                    option; its error and cost: docs/shading.md)
+//           PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness), a hook the caller
 //           may define to sample its DFG table (it owns the sampler), returning vec2(A, B):
 //           typically texture(table, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg with
-//           bilinear filtering and clamp to edge. Undefined, the analytic fit is used (every
-//           tier reads the table when it is given: the diffuse-specular coupling of
-//           pbr/surface/lighting_standard.hlsl needs the albedo of the library's own V).
+//           bilinear filtering and clamp to edge (every tier reads the table when it is
+//           given: the diffuse-specular coupling of pbr/surface/lighting_standard.hlsl needs
+//           the albedo of the library's own V).
 //
 // Split sum (Karis 2013, "Real Shading in Unreal Engine 4", eq. 8): the specular
 // reflection of an environment is prefiltered radiance times the directional albedo of
@@ -30,9 +37,19 @@
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/common/math.hlsl"
 
+// The selector's values (count from 1: a misspelt value is an #error, glsl/README.md).
+#define PBR_ENV_BRDF_TABLE 1
+#define PBR_ENV_BRDF_ANALYTIC 2
+#ifndef PBR_ENV_BRDF
+#define PBR_ENV_BRDF PBR_ENV_BRDF_TABLE
+#endif
+
 // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox): a fit of the
-// table for GGX + Schlick-GGX visibility; takes perceptual roughness. Its worst error
-// against pbrlab's table (height-correlated Smith) is measured in tests/surface/.
+// table for GGX + Schlick-GGX visibility; takes perceptual roughness. Against the float64
+// integral of pbrlab's own lobe (height-correlated Smith, reference/directional_albedo.py)
+// over NdotV in [1e-4, 1] x roughness in [0.045, 1]: A and B within 0.50 (mean 0.115; A + B
+// within 0.55), against 4.0e-5 for the table (measured: tests/surface/test_env_brdf_selector.py,
+// the bench's env_brdf family). Float64 twin: reference/surface.py env_brdf_approx.
 float2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
     const float4 c0 = float4(-1.0, -0.0275, -0.572, 0.022);
     const float4 c1 = float4(1.0, 0.0425, 1.04, -0.04);
@@ -70,10 +87,16 @@ float2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness) {
 }
 
 float2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
-#if defined(PBR_DFG_LUT_LOOKUP)
-    return PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness);
-#else
+#if PBR_ENV_BRDF == PBR_ENV_BRDF_ANALYTIC
     return pbr_env_brdf_approx(NdotV, perceptualRoughness);
+#elif PBR_ENV_BRDF == PBR_ENV_BRDF_TABLE
+#  if defined(PBR_DFG_LUT_LOOKUP)
+    return PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness);
+#  else
+    return pbr_env_brdf_approx(NdotV, perceptualRoughness);
+#  endif
+#else
+#error "PBR_ENV_BRDF: unknown value"
 #endif
 }
 

@@ -9,7 +9,7 @@
 //           PBR_ANISOTROPIC_BENT_NORMAL_MAX_REL_ERROR (the bent normal's measured error bound)
 // Include:  "pbr/shading/anisotropy.hlsl" (path relative to hlsl_ports/)
 // Config macros read: those of pbr/shading/dispatch.hlsl through pbr/shading/standard.hlsl
-//           (PBR_QUALITY sets the roughness floor, the l = -v threshold and the lobe cap).
+//           (PBR_QUALITY sets the roughness floor and the lobe cap).
 //
 // The extension (Khronos, KHR_materials_anisotropy, "Implementation"):
 //  - Mapping. alphaRoughness = perceptualRoughness²; the tangent roughness grows with the
@@ -36,11 +36,16 @@
 //    (tested to float32 rounding). The guards are pbr_brdf_standard's: perceptual roughness
 //    clamped to the tier's floor (pbr_clamp_perceptual_roughness), NdotV to
 //    [PBR_MIN_NDOTV, 1]; h = (l + v)/|l + v| is formed only as cosines scaled by
-//    inversesqrt(|l + v|²) with |l + v|² clamped to [PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4]
+//    inversesqrt(|l + v|²) with |l + v|² clamped to [PBR_MIN_NDOT_HALF_SUM², 4]
 //    (no 1 - NdotH²: the anisotropic D takes TdotH and BdotH, which carry their own
 //    precision at the peak); VdotH = |l + v|/2; D · V through pbr_specular_lobe_limit.
-//    Edges (selects, not branches): NdotL <= 0 -> 0; l = -v (|l + v|² below the tier's
-//    threshold) -> 0; h below the surface (n·(l + v) <= 0) -> 0.
+//    Edges (selects, not branches), pbr_brdf_standard's selection in every tier: the lobe
+//    where NdotL and n·(l + v) both reach PBR_MIN_NDOT_HALF_SUM (2^-50; one min, one
+//    compare), else 0: NdotL <= 0, l = -v and h below the surface. The selected |l + v|² is
+//    then >= 2^-100, so the clamp's floor changes nothing there. Not a threshold on
+//    |l + v|²: a grazing mirror (NdotL = NdotV = c) has a short l + v but a defined h and a
+//    lobe that grows as c -> 0; the former tier threshold dropped it below c = 5e-6 (HIGH,
+//    MEDIUM) and c = 3.9e-3 (LOW) (issue 25; tests/hardcases/test_grazing_mirrors.py).
 //    Contract: n, v, l, t, b unit vectors, t and b orthogonal to n and to each other (the
 //    anisotropic frame: t = anisotropicT, b = anisotropicB).
 //  - Image-based light. The bent reflection normal of the Khronos glTF sample viewer
@@ -111,15 +116,15 @@ float3 pbr_brdf_anisotropic_specular(float3 n, float3 v, float3 l, float3 t, flo
     float3 halfSum = l + v;
     float halfLength2 = dot(halfSum, halfSum);
     float LdotH = 0.5 * sqrt(halfLength2);  // == VdotH for unit l, v (standard.hlsl)
-    float invHalfLength = rsqrt(clamp(halfLength2, PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4.0));
+    float invHalfLength = rsqrt(clamp(halfLength2, PBR_MIN_NDOT_HALF_SUM * PBR_MIN_NDOT_HALF_SUM, 4.0));
     float nDotHalfSum = dot(n, halfSum);
     float D = pbr_D_GGX_Anisotropic(nDotHalfSum * invHalfLength, dot(t, halfSum) * invHalfLength,
                                     dot(b, halfSum) * invHalfLength, alphas.x, alphas.y);
     float V = pbr_V_SmithGGXCorrelated_Anisotropic(NdotL, NdotV, dot(t, v), dot(b, v), dot(t, l), dot(b, l),
                                                    alphas.x, alphas.y);
     float DV = pbr_specular_lobe_limit(D * V);
-    // selects, as pbr_brdf_standard: the unselected values are finite
-    DV = NdotL > 0.0 && halfLength2 >= PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED && nDotHalfSum > 0.0 ? DV : 0.0;
+    // pbr_brdf_standard's selection (a select: the unselected values are finite)
+    DV = min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
     return DV * pbr_F_Schlick(f0, pbr_f90_from_f0(f0), LdotH);
 }
 

@@ -2,8 +2,11 @@
 // specular lobe: one surface point lit by one punctual light and by the environment, the
 // base's specular stretched along a direction in the surface.
 //
-// Provides: struct pbr_Anisotropy
+// Provides: struct pbr_Anisotropy, struct pbr_AnisotropicFrame
 //           vec3 pbr_anisotropic_tangent(vec3 n, vec3 direction)
+//           pbr_AnisotropicFrame pbr_anisotropic_frame(vec3 n, pbr_Anisotropy anisotropy)
+//           vec3 pbr_lighting_anisotropic_light(pbr_PreparedSurface s, pbr_AnisotropicFrame frame,
+//                                               pbr_Light light)
 //           vec3 pbr_anisotropic_reflection_normal(vec3 n, vec3 v, pbr_Anisotropy anisotropy,
 //                                                  float perceptualRoughness)
 //           vec3 pbr_lighting_anisotropic_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0,
@@ -27,6 +30,11 @@
 // heuristic measured at up to +205 % against the exact integral: pbr/shading/anisotropy.hlsl).
 // Direct light: lightRadiance · (diffuse · Fd + D · V · F) · π · NdotL, summed in
 // pbr_shade_punctual's order, so the diffuse term is bit for bit pbr_lighting_standard's.
+// Once per pixel, as pbr_lighting_standard (issue 25): pbr_prepare_surface[_dfg] (the table,
+// the coupling, the environment's albedo) and pbr_anisotropic_frame (the tangent frame)
+// before the loop over lights, pbr_lighting_anisotropic_light per light,
+// pbr_lighting_standard_add_environment once; pbr_lighting_anisotropic[_dfg] is that
+// composition for one light.
 // Decided:
 //  - The lobe is the exact anisotropic GGX / height-correlated Smith / Schlick one at every
 //    tier and whatever PBR_SPECULAR_* selects (the library has no other anisotropic V); at
@@ -85,33 +93,49 @@ float3 pbr_anisotropic_reflection_normal(float3 n, float3 v, pbr_Anisotropy anis
                                        pbr_clamp_perceptual_roughness(perceptualRoughness));
 }
 
+// The anisotropic frame at this point: t, b orthonormal, orthogonal to n (see the header).
+struct pbr_AnisotropicFrame {
+    float3 t;          // pbr_anisotropic_tangent(n, anisotropy.direction)
+    float3 b;          // cross(n, t)
+    float strength;
+};
+
+pbr_AnisotropicFrame pbr_anisotropic_frame(float3 n, pbr_Anisotropy anisotropy) {
+    pbr_AnisotropicFrame frame;
+    frame.t = pbr_anisotropic_tangent(n, anisotropy.direction);
+    frame.b = cross(n, frame.t);
+    frame.strength = anisotropy.strength;
+    return frame;
+}
+
+// One punctual light: pbr_shade_punctual with pbr_brdf_standard's diffuse half (same
+// operations, same order) and the anisotropic specular lobe.
+float3 pbr_lighting_anisotropic_light(pbr_PreparedSurface s, pbr_AnisotropicFrame frame, pbr_Light light) {
+    float3 l = light.dir;
+    float nDotL = dot(s.n, l);
+    float3 halfSum = l + s.v;
+    float LdotH = 0.5 * sqrt(dot(halfSum, halfSum));
+    float Fd = pbr_diffuse_Fd(clamp(dot(s.n, s.v), PBR_MIN_NDOTV, 1.0), nDotL, LdotH, s.perceptualRoughness);
+    Fd = nDotL > 0.0 ? Fd : 0.0;
+    float3 brdf = s.directDiffuseColor * Fd
+              + pbr_brdf_anisotropic_specular(s.n, s.v, l, frame.t, frame.b, s.f0, s.perceptualRoughness,
+                                              frame.strength);
+    return light.color * brdf * (PBR_LIGHT_UNIT_SCALE * clamp(nDotL, 0.0, 1.0));
+}
+
 float3 pbr_lighting_anisotropic_dfg(float3 diffuseColor, float3 f0, float3 coatF0, float perceptualRoughness,
                                   float occlusion, float3 n, float3 v, pbr_GI gi, pbr_Anisotropy anisotropy,
                                   float2 dfg) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    float3 t = pbr_anisotropic_tangent(n, anisotropy.direction);
-    float3 b = cross(n, t);
-    float3 l = gi.light.dir;
-    // pbr_shade_punctual with pbr_brdf_standard's diffuse half (same operations, same order)
-    float nDotL = dot(n, l);
-    float3 halfSum = l + v;
-    float LdotH = 0.5 * sqrt(dot(halfSum, halfSum));
-    float Fd = pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), nDotL, LdotH, roughness);
-    Fd = nDotL > 0.0 ? Fd : 0.0;
-    float3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
-    float3 brdf = directDiffuse * Fd
-              + pbr_brdf_anisotropic_specular(n, v, l, t, b, f0, roughness, anisotropy.strength);
-    float3 direct = gi.light.color * brdf * (PBR_LIGHT_UNIT_SCALE * clamp(nDotL, 0.0, 1.0));
-    float3 specular = pbr_indirect_specular_split_sum(gi.indirect.specular, f0, roughness, NdotV, occlusion, dfg);
-    return direct + pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * gi.indirect.diffuse * occlusion
-         + specular;
+    pbr_PreparedSurface s = pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, perceptualRoughness, occlusion,
+                                                    n, v, dfg);
+    return pbr_lighting_standard_add_environment(
+        s, gi.indirect, pbr_lighting_anisotropic_light(s, pbr_anisotropic_frame(n, anisotropy), gi.light));
 }
 
 float3 pbr_lighting_anisotropic(float3 diffuseColor, float3 f0, float3 coatF0, float perceptualRoughness,
                               float occlusion, float3 n, float3 v, pbr_GI gi, pbr_Anisotropy anisotropy) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    float2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    return pbr_lighting_anisotropic_dfg(diffuseColor, f0, coatF0, roughness, occlusion, n, v, gi, anisotropy, dfg);
+    pbr_PreparedSurface s = pbr_prepare_surface(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v);
+    return pbr_lighting_standard_add_environment(
+        s, gi.indirect, pbr_lighting_anisotropic_light(s, pbr_anisotropic_frame(n, anisotropy), gi.light));
 }
 #endif

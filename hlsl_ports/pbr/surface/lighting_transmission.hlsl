@@ -8,6 +8,14 @@
 //                                          float perceptualRoughness, float occlusion, vec3 n,
 //                                          vec3 v, pbr_GI gi, vec3 transmittedIndirect,
 //                                          pbr_Transmission tr)
+//           struct pbr_PreparedTransmission
+//           pbr_PreparedTransmission pbr_prepare_transmission_dfg(vec3 diffuseColor, vec3 coatF0,
+//                                          float perceptualRoughness, float occlusion, vec3 n,
+//                                          vec3 v, pbr_Transmission tr, vec2 dfg)
+//           vec3 pbr_transmission_direct(pbr_PreparedTransmission t, pbr_Light light)
+//           vec3 pbr_lighting_transmission_light(pbr_PreparedTransmission t, pbr_Light light)
+//           vec3 pbr_lighting_transmission_environment(pbr_PreparedTransmission t,
+//                                                      vec3 transmittedIndirect)
 // Include:  "pbr/surface/lighting_transmission.hlsl" (path relative to hlsl_ports/)
 // Config macros read: those of pbr/surface/lighting_standard.hlsl.
 //
@@ -42,6 +50,11 @@
 // bent again where it leaves the volume.
 // transmission = 0 adds 0 · (finite terms) and the caller's diffuse colour is multiplied by 1:
 // the base's value bit for bit.
+// Once per pixel (issue 25, as pbr/surface/lighting_standard.hlsl): pbr_prepare_transmission_dfg
+// (the surface prepared for the transmission's diffuse colour: its coupled colours; rho; the
+// weight transmission · A) before the loop over lights, pbr_lighting_transmission_light per
+// light, pbr_lighting_transmission_environment once; pbr_lighting_transmission (one light and
+// the environment) is that composition, in the order it always summed.
 // Python twin: harness/pbrlab/reference/surface.py lighting_transmission.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_TRANSMISSION_HLSL
@@ -69,22 +82,57 @@ float3 pbr_transmitted_direction(float3 n, float3 v, pbr_Transmission tr) {
     return tr.thickness > 0.0 ? pbr_refraction_direction(n, v, tr.ior) : -v;
 }
 
+// The per-pixel part of the transmission.
+struct pbr_PreparedTransmission {
+    pbr_PreparedSurface s;  // pbr_prepare_surface_dfg for the transmission's diffuse colour (f0 = coatF0)
+    float3 rho;               // the diffuse albedo under the coat (the volume's tint)
+    float3 weight;            // saturate(transmission) · A (A = 1 for a thin wall)
+    bool volume;            // thickness > 0
+    float ior;              // the volume's
+};
+
+pbr_PreparedTransmission pbr_prepare_transmission_dfg(float3 diffuseColor, float3 coatF0, float perceptualRoughness,
+                                                      float occlusion, float3 n, float3 v, pbr_Transmission tr,
+                                                      float2 dfg) {
+    pbr_PreparedTransmission t;
+    t.s = pbr_prepare_surface_dfg(diffuseColor, coatF0, coatF0, perceptualRoughness, occlusion, n, v, dfg);
+    t.rho = pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0);
+    t.volume = tr.thickness > 0.0;
+    float3 attenuation = t.volume ? pbr_volume_attenuation(tr.thickness, tr.attenuationColor, tr.attenuationDistance)
+                                : ((float3)(1.0));
+    t.weight = pbr_saturate(tr.factor) * attenuation;
+    t.ior = tr.ior;
+    return t;
+}
+
+// One light behind the surface, before the weight (see the header).
+float3 pbr_transmission_direct(pbr_PreparedTransmission t, pbr_Light light) {
+    float3 direct;
+    if (t.volume) {
+        direct = pbr_transmission_punctual(t.s.n, t.s.v, light.dir, light.color, t.rho, t.s.perceptualRoughness,
+                                           t.ior);
+    } else {
+        direct = pbr_transmission_thin_punctual(t.s.n, t.s.v, light.dir, light.color, t.s.directDiffuseColor,
+                                                t.s.perceptualRoughness);
+    }
+    return direct;
+}
+
+float3 pbr_lighting_transmission_light(pbr_PreparedTransmission t, pbr_Light light) {
+    return t.weight * pbr_transmission_direct(t, light);
+}
+
+float3 pbr_lighting_transmission_environment(pbr_PreparedTransmission t, float3 transmittedIndirect) {
+    return t.weight * (t.s.indirectDiffuseColor * transmittedIndirect * t.s.occlusion);
+}
+
 float3 pbr_lighting_transmission(float3 diffuseColor, float3 coatF0, float perceptualRoughness, float occlusion,
                                float3 n, float3 v, pbr_GI gi, float3 transmittedIndirect, pbr_Transmission tr) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     float2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    bool volume = tr.thickness > 0.0;
-    float3 direct;
-    if (volume) {
-        float3 rho = pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0);
-        direct = pbr_transmission_punctual(n, v, gi.light.dir, gi.light.color, rho, roughness, tr.ior);
-    } else {
-        float3 directColor = pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_specular_albedo_bound(coatF0, dfg));
-        direct = pbr_transmission_thin_punctual(n, v, gi.light.dir, gi.light.color, directColor, roughness);
-    }
-    float3 indirect = pbr_indirect_diffuse_color(diffuseColor, coatF0, dfg) * transmittedIndirect * occlusion;
-    float3 attenuation = volume ? pbr_volume_attenuation(tr.thickness, tr.attenuationColor, tr.attenuationDistance)
-                              : ((float3)(1.0));
-    return pbr_saturate(tr.factor) * attenuation * (direct + indirect);
+    pbr_PreparedTransmission t = pbr_prepare_transmission_dfg(diffuseColor, coatF0, roughness, occlusion, n, v, tr,
+                                                              dfg);
+    return t.weight * (pbr_transmission_direct(t, gi.light)
+                       + t.s.indirectDiffuseColor * transmittedIndirect * t.s.occlusion);
 }
 #endif

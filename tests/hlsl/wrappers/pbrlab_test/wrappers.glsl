@@ -3,7 +3,10 @@
 //
 // Provides: test_gi, test_surface, test_surface_specular, test_light, test_indirect,
 //           test_surface_legacy, test_gi_input, test_glossy_environment, test_clearcoat,
-//           test_surface_layers (struct builders),
+//           test_surface_layers, test_prepared_surface, test_anisotropic_frame_of,
+//           test_prepared_transmission (struct builders),
+//           test_prepare_surface[_dfg], test_anisotropic_frame, test_prepare_transmission_dfg_*
+//           (struct results, their fields summed),
 //           test_sh9_irradiance,
 //           test_UnityGlossyEnvironmentSetup, test_UnityGlobalIllumination[_gloss][_indirect],
 //           test_Lighting*_GI (the pbr/unity/ functions with struct results or inout GI),
@@ -92,6 +95,64 @@ pbr_Anisotropy test_anisotropy(float strength, vec3 direction) {
     anisotropy.strength = strength;
     anisotropy.direction = direction;
     return anisotropy;
+}
+
+// The prepared surface (pbr_prepare_surface_dfg) as a struct argument, and its fields summed
+// with distinct weights as a result (a struct is not an evaluator output).
+pbr_PreparedSurface test_prepared_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                                          float occlusion, vec3 n, vec3 v, vec2 dfg) {
+    return pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v, dfg);
+}
+
+vec3 test_prepared_fields(pbr_PreparedSurface s) {
+    return s.n + 2.0 * s.v + 3.0 * s.f0 + vec3(s.perceptualRoughness, s.occlusion, s.specularOcclusion)
+         + 5.0 * s.directDiffuseColor + 7.0 * s.indirectDiffuseColor + 11.0 * s.indirectSpecularAlbedo;
+}
+
+vec3 test_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
+                              float occlusion, vec3 n, vec3 v, vec2 dfg) {
+    return test_prepared_fields(pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, perceptualRoughness, occlusion,
+                                                        n, v, dfg));
+}
+
+vec3 test_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness, float occlusion,
+                          vec3 n, vec3 v) {
+    return test_prepared_fields(pbr_prepare_surface(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v));
+}
+
+pbr_AnisotropicFrame test_anisotropic_frame_of(vec3 n, float strength, vec3 direction) {
+    return pbr_anisotropic_frame(n, test_anisotropy(strength, direction));
+}
+
+vec3 test_anisotropic_frame(vec3 n, float strength, vec3 direction) {
+    pbr_AnisotropicFrame frame = test_anisotropic_frame_of(n, strength, direction);
+    return frame.t + 2.0 * frame.b + vec3(frame.strength);
+}
+
+pbr_PreparedTransmission test_prepared_transmission(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
+                                                    float occlusion, vec3 n, vec3 v, pbr_Transmission tr,
+                                                    vec2 dfg) {
+    return pbr_prepare_transmission_dfg(diffuseColor, coatF0, perceptualRoughness, occlusion, n, v, tr, dfg);
+}
+
+// Its fields one group at a time (a weighted sum of all of them rounds differently where the
+// two compilers contract it differently).
+vec3 test_prepare_transmission_dfg_surface(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
+                                           float occlusion, vec3 n, vec3 v, pbr_Transmission tr, vec2 dfg) {
+    return test_prepared_fields(test_prepared_transmission(diffuseColor, coatF0, perceptualRoughness, occlusion,
+                                                           n, v, tr, dfg).s);
+}
+
+vec3 test_prepare_transmission_dfg_rho(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
+                                       float occlusion, vec3 n, vec3 v, pbr_Transmission tr, vec2 dfg) {
+    return test_prepared_transmission(diffuseColor, coatF0, perceptualRoughness, occlusion, n, v, tr, dfg).rho;
+}
+
+vec3 test_prepare_transmission_dfg_weight(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
+                                          float occlusion, vec3 n, vec3 v, pbr_Transmission tr, vec2 dfg) {
+    pbr_PreparedTransmission t = test_prepared_transmission(diffuseColor, coatF0, perceptualRoughness, occlusion,
+                                                            n, v, tr, dfg);
+    return t.weight + vec3(0.0, 0.0, t.volume ? t.ior : -t.ior);
 }
 
 pbr_Sheen test_sheen(vec3 color, float perceptualRoughness) {
