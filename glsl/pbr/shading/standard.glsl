@@ -2,6 +2,10 @@
 //
 // Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
 //                                   float perceptualRoughness)
+//           vec3  pbr_brdf_standard_f90(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+//                                       float f90, float perceptualRoughness)
+//                 (an explicit F90, pbr_specular_F_f90: KHR_materials_specular's specularFactor;
+//                 pbr_brdf_standard takes F90 = pbr_f90_from_f0(f0))
 //           float pbr_clamp_perceptual_roughness(float perceptualRoughness)
 //           PBR_LIT_SCALE (2^126, the diffuse term's below-horizon scale)
 //           (through its includes: PBR_MIN_PERCEPTUAL_ROUGHNESS[_MEDIUMP] from dispatch.glsl,
@@ -68,8 +72,8 @@ float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
     return clamp(perceptualRoughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 }
 
-vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
-                       float perceptualRoughness) {
+vec3 pbr_brdf_standard_f90(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0, float f90,
+                           float perceptualRoughness) {
     float NdotL = dot(n, l);
     float nDotV = dot(n, v);
     float NdotV = clamp(nDotV, PBR_MIN_NDOTV, 1.0);
@@ -97,7 +101,12 @@ vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
     // compare): both computed, the selected values finite (see header).
     Fd *= clamp(NdotL * PBR_LIT_SCALE, 0.0, 1.0);
     DV = min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
-    return diffuseColor * Fd + DV * pbr_specular_F(f0, LdotH);
+    return diffuseColor * Fd + DV * pbr_specular_F_f90(f0, f90, LdotH);
+}
+
+vec3 pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+                       float perceptualRoughness) {
+    return pbr_brdf_standard_f90(n, v, l, diffuseColor, f0, pbr_f90_from_f0(f0), perceptualRoughness);
 }
 
 #endif // PBR_SHADING_STANDARD_GLSL
