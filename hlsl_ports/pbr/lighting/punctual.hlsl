@@ -24,17 +24,19 @@
 #include "pbr/common/conventions.hlsl"
 #include "pbr/shading/standard.hlsl"
 
+float3 pbr_shade_punctual(float3 n, float3 v, float3 l, float3 lightRadiance,
+                        float3 diffuseColor, float3 f0, float perceptualRoughness) {
+    float NdotL = clamp(dot(n, l), 0.0, 1.0);
+    float3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
+    return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
+}
+
+// The same with an explicit F90 (pbr_brdf_standard_f90: KHR_materials_specular's specularFactor).
 float3 pbr_shade_punctual_f90(float3 n, float3 v, float3 l, float3 lightRadiance,
                             float3 diffuseColor, float3 f0, float f90, float perceptualRoughness) {
     float NdotL = clamp(dot(n, l), 0.0, 1.0);
     float3 brdf = pbr_brdf_standard_f90(n, v, l, diffuseColor, f0, f90, perceptualRoughness);
     return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
-}
-
-float3 pbr_shade_punctual(float3 n, float3 v, float3 l, float3 lightRadiance,
-                        float3 diffuseColor, float3 f0, float perceptualRoughness) {
-    return pbr_shade_punctual_f90(n, v, l, lightRadiance, diffuseColor, f0, pbr_f90_from_f0(f0),
-                                  perceptualRoughness);
 }
 
 #endif // PBR_LIGHTING_PUNCTUAL_HLSL
