@@ -720,6 +720,10 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
         if transmissive:
             rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
                     "(use brdf_model pbrlab, or transmission 0)", "brdf_model")
+        explicit_f90 = sorted(name for name in materials if "specular_f90" in layers[name])
+        if explicit_f90:
+            rs.fail(f"Unity's BRDFs take F90 from F0; material {explicit_f90[0]!r} has an explicit F90 "
+                    "(KHR_materials_specular; use brdf_model pbrlab, or remove specular_f90)", "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 

@@ -85,7 +85,8 @@
 // Neither URP nor HDRP names a user-facing F90 (HDRP derives its fresnel90 from F0 inside the
 // BSDF), so the name is pbrlab's, after what it sets. With the layer off, F90 follows F0
 // (pbr_f90_from_f0) and none of this is compiled. The anisotropic lobe, the film and the
-// transmission keep F90 from F0 (the harness refuses those combinations).
+// transmission keep F90 from F0 (a JSON material is refused the combination, a glTF one warned;
+// a surface file writing both gets F90 from F0 there).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_LAYERS_HLSL
 #define PBR_UNITY_SURFACE_LAYERS_HLSL
