@@ -165,11 +165,12 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
 // (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
 // transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION); the isotropic lobe
-// with the surface's F90 (f90 for specColor, coatF90 for coatF0) where PBR_LAYERS_SPECULAR_F90.
-vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, float f90, vec3 coatF0, float coatF90,
-                                    float oneMinusReflectivity,
+// with the surface's F90 (the last two parameters: f90 for specColor, coatF90 for coatF0) where
+// PBR_LAYERS_SPECULAR_F90.
+vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, vec3 normal, vec3 viewDir,
-                                    UnityGI gi, SurfaceOutputStandardLayers layers, vec3 transmittedIndirect) {
+                                    UnityGI gi, SurfaceOutputStandardLayers layers, vec3 transmittedIndirect,
+                                    float f90, float coatF90) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     vec3 n = normalize(normal);
@@ -219,10 +220,10 @@ vec4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLa
     vec3 specColor;
     float oneMinusReflectivity;
     vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, mix(layers.SpecularF90, 1.0, s.Metallic),
-                                          unity_ColorSpaceDielectricSpec.rgb, layers.SpecularF90,
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, vec3(0.0, 0.0, 0.0));
+                                          viewDir, gi, layers, vec3(0.0, 0.0, 0.0),
+                                          mix(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
@@ -230,20 +231,19 @@ vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutp
     vec3 specColor;
     float oneMinusReflectivity;
     vec3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, mix(layers.SpecularF90, 1.0, s.Metallic),
-                                          unity_ColorSpaceDielectricSpec.rgb, layers.SpecularF90,
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, transmittedIndirect);
+                                          viewDir, gi, layers, transmittedIndirect,
+                                          mix(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 vec4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
                                         vec3 viewDir, UnityGI gi) {
     float oneMinusReflectivity;
     vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, s.Specular, layers.SpecularF90, s.Specular, layers.SpecularF90,
-                                          oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          vec3(0.0, 0.0, 0.0));
+                                          vec3(0.0, 0.0, 0.0), layers.SpecularF90, layers.SpecularF90);
 }
 
 vec4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecular s,
@@ -251,10 +251,9 @@ vec4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecula
                                                     vec3 transmittedIndirect) {
     float oneMinusReflectivity;
     vec3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, s.Specular, layers.SpecularF90, s.Specular, layers.SpecularF90,
-                                          oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          transmittedIndirect);
+                                          transmittedIndirect, layers.SpecularF90, layers.SpecularF90);
 }
 
 // The direction the environment is seen along through the surface (world): straight through

@@ -166,11 +166,12 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
 // (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
 // transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION); the isotropic lobe
-// with the surface's F90 (f90 for specColor, coatF90 for coatF0) where PBR_LAYERS_SPECULAR_F90.
-float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
-                                    float oneMinusReflectivity,
+// with the surface's F90 (the last two parameters: f90 for specColor, coatF90 for coatF0) where
+// PBR_LAYERS_SPECULAR_F90.
+float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, float3 normal, float3 viewDir,
-                                    UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect) {
+                                    UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect,
+                                    float f90, float coatF90) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     float3 n = normalize(normal);
@@ -220,10 +221,10 @@ float4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandard
     float3 specColor;
     float oneMinusReflectivity;
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, lerp(layers.SpecularF90, 1.0, s.Metallic),
-                                          unity_ColorSpaceDielectricSpec.rgb, layers.SpecularF90,
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, float3(0.0, 0.0, 0.0));
+                                          viewDir, gi, layers, float3(0.0, 0.0, 0.0),
+                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
@@ -231,20 +232,19 @@ float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOu
     float3 specColor;
     float oneMinusReflectivity;
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, lerp(layers.SpecularF90, 1.0, s.Metallic),
-                                          unity_ColorSpaceDielectricSpec.rgb, layers.SpecularF90,
+    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, transmittedIndirect);
+                                          viewDir, gi, layers, transmittedIndirect,
+                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
                                         float3 viewDir, UnityGI gi) {
     float oneMinusReflectivity;
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, s.Specular, layers.SpecularF90, s.Specular, layers.SpecularF90,
-                                          oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          float3(0.0, 0.0, 0.0));
+                                          float3(0.0, 0.0, 0.0), layers.SpecularF90, layers.SpecularF90);
 }
 
 float4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecular s,
@@ -252,10 +252,9 @@ float4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecu
                                                     float3 transmittedIndirect) {
     float oneMinusReflectivity;
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, s.Specular, layers.SpecularF90, s.Specular, layers.SpecularF90,
-                                          oneMinusReflectivity, s.Smoothness,
+    return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          transmittedIndirect);
+                                          transmittedIndirect, layers.SpecularF90, layers.SpecularF90);
 }
 
 // The direction the environment is seen along through the surface (world): straight through
