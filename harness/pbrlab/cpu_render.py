@@ -168,6 +168,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
             coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
+        f90 = material.specular_f90  # an explicit F90 (the specular workflow's f0 = coat_f0), or None
         transmitted = None
         if material.transmission > 0.0:  # part of the diffuse's weight passes through instead
             transmitted = (diffuse, dict(
@@ -177,7 +178,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                 energy_compensated=scene.render.energy_compensation))
             diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
-            diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f))
+            diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f, f90))
         direction = (_sphere_anisotropy_direction(n, material.anisotropy_rotation) if tangent is None
                      else _anisotropy_direction(n, tangent, material.anisotropy_rotation))
         for light in scene.lights:
@@ -189,7 +190,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                     material.anisotropy_strength, direction, quality=quality, **material.brdf)
                 continue
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
-                                                quality=quality, **material.brdf)
+                                                quality=quality, f90=f90, **material.brdf)
         if transmitted is not None:  # each light through the surface, then the environment seen through it
             whole_diffuse, terms = transmitted
             zero = np.zeros(p.shape)
@@ -201,12 +202,12 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
         if env_sh is not None:
             compensated = scene.render.energy_compensation
             indirect_diffuse = ref_surface.coupled_diffuse_color(
-                diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated))
+                diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, f90))
             color += indirect_diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
-                energy_compensated=compensated)
+                energy_compensated=compensated, f90=f90)
         if max(material.sheen_color) > 0.0:  # the sheen on the base, not on its emission
             emission = np.broadcast_to(material.emission, p.shape)
             color = emission + _sheened(scene, material, color - emission, n, v, p)

@@ -170,6 +170,9 @@ class Material:
     attenuation_color: tuple = (1.0, 1.0, 1.0)
     attenuation_distance: float = math.inf
     ior: float = 1.5
+    # An explicit F90 (KHR_materials_specular's specularFactor; pbr/unity/surface_layers.glsl's
+    # SpecularF90), specular workflow only: None is F90 from F0 (pbr_f90_from_f0)
+    specular_f90: float | None = None
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -384,7 +387,9 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     m.unlit = r.raw("unlit", MATERIAL["unlit"].default)
     if not isinstance(m.unlit, bool):
         r.fail("expected true (KHR_materials_unlit: the albedo, no light) or false", "unlit")
-    for key in DEFAULT_SURFACE_LAYER_KEYS:  # numbers; colours as tuples
+    for key in DEFAULT_SURFACE_LAYER_KEYS:  # numbers; colours as tuples; None where absent means "not given"
+        if MATERIAL[key].default is None and not r.has(key):
+            continue
         value = read_field(r, MATERIAL, key)
         setattr(m, key, tuple(value) if isinstance(value, np.ndarray) else value)
     if r.has("surface"):
@@ -432,6 +437,21 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     if m.surface is not None and film_keys:
         r.fail("the iridescence belongs to the default surface; a surface file writes its own output "
                f"(remove `{'`, `'.join(film_keys)}`)", film_keys[0])
+    if m.surface is not None and r.has("specular_f90"):
+        r.fail("the explicit F90 belongs to the default surface; a surface file writes its own output "
+               "(SurfaceOutputStandardLayers.SpecularF90; remove `specular_f90`)", "specular_f90")
+    if m.specular_f90 is not None:
+        if m.workflow != "specular":
+            r.fail("belongs to the specular workflow (KHR_materials_specular's F90 with its F0 `specular`); "
+                   "give the material \"workflow\": \"specular\"", "specular_f90")
+        if m.specular_f90 < float(np.max(m.specular)):
+            r.fail(f"F90 {m.specular_f90:g} is below the F0 `specular` {float(np.max(m.specular)):g}: F90 is at "
+                   "least every channel of F0 (KHR_materials_specular: F0 = min(F0_ior x colour, 1) x F90)",
+                   "specular_f90")
+        for layer in ("anisotropy_strength", "iridescence", "transmission"):
+            if getattr(m, layer) > 0.0:
+                r.fail(f"the explicit F90 is not combined with `{layer}` (those lobes keep F90 from F0): "
+                       f"remove `specular_f90` or `{layer}`", "specular_f90")
     transmission_keys = [k for k in TRANSMISSION_KEYS if r.has(k)]
     if m.surface is not None and transmission_keys:
         r.fail("the transmission belongs to the default surface; a surface file writes its own output "
@@ -497,7 +517,7 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
                 "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
                 "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
-                "iridescence_thickness_max") + TRANSMISSION_KEYS:
+                "iridescence_thickness_max", "specular_f90") + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "
@@ -700,6 +720,10 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
         if transmissive:
             rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
                     "(use brdf_model pbrlab, or transmission 0)", "brdf_model")
+        explicit_f90 = sorted(name for name in materials if "specular_f90" in layers[name])
+        if explicit_f90:
+            rs.fail(f"Unity's BRDFs take F90 from F0; material {explicit_f90[0]!r} has an explicit F90 "
+                    "(KHR_materials_specular; use brdf_model pbrlab, or remove specular_f90)", "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 

@@ -143,6 +143,10 @@ MATERIAL = {
                        only=("metallic",)),
     "specular": Vector("F0, linear RGB (the specular workflow).", default=[0.04, 0.04, 0.04], lo=0.0,
                        hi=1.0, only=("specular",)),
+    "specular_f90": Number("F90, the reflectance at grazing incidence (KHR_materials_specular's "
+                           "specularFactor; the specular workflow), at least every channel of specular; "
+                           "absent: F90 follows F0 (pbr_f90_from_f0).", default=None, lo=0.0, hi=1.0,
+                           only=("specular",)),
     "smoothness": Number("1 - perceptual roughness (Unity's).", default=0.5, lo=0.0, hi=1.0),
     "emission": Vector("Linear radiance added to the lit colour.", default=[0, 0, 0], lo=0.0),
     "occlusion": Number("Scales indirect light only.", default=1.0, lo=0.0, hi=1.0),
@@ -185,7 +189,7 @@ TRANSMISSION_KEYS = ("transmission", "thickness", "attenuation_color", "attenuat
 DEFAULT_SURFACE_LAYER_KEYS = ("clearcoat", "clearcoat_smoothness", "sheen_color", "sheen_smoothness",
                               "anisotropy_strength", "anisotropy_rotation", "iridescence",
                               "iridescence_ior", "iridescence_thickness_min",
-                              "iridescence_thickness_max") + TRANSMISSION_KEYS
+                              "iridescence_thickness_max", "specular_f90") + TRANSMISSION_KEYS
 
 SPHERE = {
     "center": Vector("The centre, in scene units."),

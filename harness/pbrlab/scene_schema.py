@@ -52,8 +52,8 @@ def _bounded(lo: float, hi: float, lo_open: bool = False) -> dict:
 
 def _with_default(schema: dict, spec) -> dict:
     default = spec.default
-    if default is not REQUIRED and not (isinstance(default, float) and math.isinf(default)):
-        schema["default"] = default  # +inf (no range, no attenuation) is JSON's absence
+    if default is not REQUIRED and default is not None and not (isinstance(default, float) and math.isinf(default)):
+        schema["default"] = default  # +inf (no range, no attenuation) and None (F90 from F0) are JSON's absence
     return {"description": spec.doc, **schema}
 
 
@@ -141,7 +141,7 @@ def _material(texture_slots, brdf_terms) -> dict:
     material["allOf"] = [
         # the workflow's own F0 field: metallic or specular, not the other's
         {"if": {"properties": {"workflow": {"const": "specular"}}, "required": ["workflow"]},
-         "then": {"properties": {"metallic": False}}, "else": {"properties": {"specular": False}}},
+         "then": {"properties": {"metallic": False}}, "else": {"properties": {"specular": False, "specular_f90": False}}},
         # the default surface's slots only, unless a surface file declares its own samplers
         {"if": {"not": {"required": ["surface"]}},
          "then": {"properties": {"textures": {"propertyNames": {"enum": list(texture_slots)}}}}},

@@ -29,7 +29,7 @@ SAMPLES = 384          # per entry and configuration
 # (gallivm's LP_MAX_TGSI_NESTING): a Mesa GLSL chain of 123 ternaries returned the final
 # else for entries 79 and up, while the HLSL path (OpSelect, no nesting) was right.
 BATCH = 32
-FLOAT_SLOTS = 11  # LightingStandard[Specular]LayersBase: the surface's 4, the layers' 7
+FLOAT_SLOTS = 13  # pbr_unity_lighting_layers_base: its 6 (F90s, reflectivity, smoothness, occlusion, alpha), the layers' 7
 VEC3_SLOTS = 13  # pbr_unity_lighting_layers_base: 3 colours, normal, view, GI (4), 3 layer vec3s, the transmitted term
 
 # Struct parameters are built by these wrappers (their parameters are expanded in turn).
@@ -89,6 +89,8 @@ SPECIAL = {
                                       STRUCT_BUILDERS["pbr_PreparedTransmission"][1])
                                      for part in ("surface", "rho", "weight")],
     "pbr_sh9_irradiance": [("test_sh9_irradiance", (("vec3", "a"), ("vec3", "b"), ("vec3", "n")))],
+    "pbr_brdf_standard_terms": [("test_pbr_brdf_standard_terms", (("vec3", "n"), ("vec3", "v"), ("vec3", "l"),
+                                                                  ("float", "perceptualRoughness")))],
     "DiffuseAndSpecularFromMetallic": [
         ("test_DiffuseAndSpecularFromMetallic", (("vec3", "albedo"), ("float", "metallic"))),
         ("test_DiffuseAndSpecularFromMetallic_specColor", (("vec3", "albedo"), ("float", "metallic")))],
@@ -123,6 +125,8 @@ VARIANT_DEPENDENT = {
     "pbr_encode_final_color", "pbr_lighting_anisotropic", "pbr_lighting_anisotropic_dfg",
     "pbr_anisotropic_reflection_normal", "pbr_prepare_surface_dfg", "pbr_prepare_surface",
     "pbr_lighting_standard_light", "pbr_lighting_standard_add_environment", "pbr_lighting_anisotropic_light",
+    # the explicit F90's (KHR_materials_specular) F, its lobe and its whole lighting (the batch holds 32)
+    "pbr_specular_F_f90", "pbr_shade_punctual_f90", "pbr_lighting_standard_f90_dfg",
 }
 
 # Every value of every selector, each in at least one configuration (the default

@@ -42,7 +42,9 @@ STATED_BOUNDS = {}
 for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_lighting", "LightingStandard",
               "LightingStandardSpecular", "pbr_indirect_specular_split_sum", "pbr_clearcoat_punctual",
               "pbr_lighting_anisotropic", "pbr_lighting_standard_light", "pbr_lighting_anisotropic_light",
-              "pbr_lighting_standard_add_environment"):
+              "pbr_lighting_standard_add_environment",
+              # the same composites with an explicit F90 (KHR_materials_specular): the same sums
+              "pbr_lighting_standard_f90", "pbr_lighting_standard_f90_dfg", "pbr_indirect_specular_split_sum_f90"):
     STATED_BOUNDS[_name] = ("rel", 1e-6, "fma contraction differs between the two programs (see above)")
 
 
@@ -55,10 +57,18 @@ for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_l
 # The LayersBaseTransmission pair is the same film and lobe through the same body (the
 # wrapper's layers carry no transmission; pbr_lighting_transmission itself agrees within
 # 2 ulp): measured worst 7 ulp there too.
-for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0",
-              "pbr_unity_lighting_layers_base", "LightingStandardLayersBase", "LightingStandardSpecularLayersBase",
-              "LightingStandardLayersBaseTransmission", "LightingStandardSpecularLayersBaseTransmission"):
+for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0"):
     STATED_BOUNDS[_name] = ("abs+rel", (5e-7, 1e-6), "fma contraction of the interference phase (see above)")
+# The LayersBase lightings carry that phase error times the light (radiance up to e^7 here), so
+# one sample is not their worst: on main's library (before the explicit F90), each function
+# alone on identical inputs over seeds 6..15 reached 1.63 times the film's bound above
+# (LightingStandardLayersBase, 20 ulp), and this library gives the same figures on the same
+# inputs (the explicit F90 is not compiled in: PBR_LAYERS_SPECULAR_F90 is 0). Whole batches,
+# whose inputs move whenever functions are added before them, reached 2.49 times (24 ulp) over
+# seeds 6..11. Bound: 3 times the film's.
+for _name in ("pbr_unity_lighting_layers_base", "LightingStandardLayersBase", "LightingStandardSpecularLayersBase",
+              "LightingStandardLayersBaseTransmission", "LightingStandardSpecularLayersBaseTransmission"):
+    STATED_BOUNDS[_name] = ("abs+rel", (1.5e-6, 3e-6), "the film's phase contraction times the light (see above)")
 
 
 @pytest.fixture(scope="module")

@@ -37,6 +37,12 @@ multiple-scattering compensation:
   tinted volume       the volume with attenuation colour (0.5, 0.7, 0.9) at distance 1 over
                       thickness 1: E(0.04) + c (1 - E(0.04)) per channel (Beer-Lambert, c^(d/D);
                       measured worst 2.7e-5 from the float64 value)
+  F90 dielectric      specular workflow, albedo 1, F0 0.02, F90 0.5 (KHR_materials_specular at
+                      specularFactor 0.5, IOR 1.5): the lobe reflects E(0.02, 0.5) = 0.02 A + 0.5 B
+                      and the diffuse, coupled with the same F90, the rest: 1
+  F90 black           specular workflow, albedo 0, F0 0, F90 0.8 (the extension's rim-lit black
+                      sphere): the lobe alone, 0.8 B (+ compensation 1 at F0 0), below 1 at every mu:
+                      an F90 < 1 only loses energy
 The transmissive rows are drawn by a render of their own (the same layout without the other
 rows), merged by coverage: a transmissive sphere sees the scene's transmission copy of the
 non-transmissive spheres (harness/pbrlab/transmission_copy.py), and a sphere that loses energy
@@ -73,7 +79,12 @@ MATERIALS = {
     "transmissive_volume": {"albedo": [1, 1, 1], "metallic": 0.0, "transmission": 1.0, "thickness": 1.0},
     "tinted_volume": {"albedo": [1, 1, 1], "metallic": 0.0, "transmission": 1.0, "thickness": 1.0,
                       "attenuation_color": [0.5, 0.7, 0.9], "attenuation_distance": 1.0},
+    "f90_dielectric": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0.02, 0.02, 0.02],
+                       "specular_f90": 0.5},
+    "f90_black": {"workflow": "specular", "albedo": [0, 0, 0], "specular": [0, 0, 0], "specular_f90": 0.8},
 }
+# The explicit F90s (JSON specular_f90: KHR_materials_specular's specularFactor); others follow F0.
+F90 = {"f90_dielectric": 0.5, "f90_black": 0.8}
 # What the volume lets through of the transmitted light: c^(thickness / distance) per channel
 ATTENUATION = {"tinted_volume": np.array([0.5, 0.7, 0.9])}
 # The films: (mask, IOR, thickness in nm) as KHR_materials_iridescence's defaults fill them in.
@@ -86,13 +97,14 @@ SHEEN_SMOOTHNESS = {"sheened_dielectric": lambda s: s, "sheened_coated": lambda 
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
       "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0, "sheened_dielectric": 0.04,
       "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 1.0, "transmissive_thin": 0.04,
-      "transmissive_volume": 0.04, "tinted_volume": 0.04}
+      "transmissive_volume": 0.04, "tinted_volume": 0.04, "f90_dielectric": 0.02, "f90_black": 0.0}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
            "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04,
            "sheened_dielectric": 0.04, "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 0.04,
-           "transmissive_thin": 0.04, "transmissive_volume": 0.04, "tinted_volume": 0.04}
+           "transmissive_thin": 0.04, "transmissive_volume": 0.04, "tinted_volume": 0.04,
+           "f90_dielectric": 0.02, "f90_black": 0.0}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -157,12 +169,13 @@ def _expected(name, compensation, A, B, mu):
     """Reflectance of a uniform white environment, written from the sources: split sum
     f0 A + f90 B (Karis 2013), F90 = saturate(16.5 * 3 f0) (Schüler 2009 / Filament),
     compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E_coat), E_coat
-    the albedo of the dielectric coat over the diffuse."""
+    the albedo of the dielectric coat over the diffuse; an explicit F90 (KHR_materials_specular)
+    where the row has one."""
     def albedo(f0):
         f0 = np.asarray(f0, np.float64)
         grey = f0.ndim == 0
         f0 = np.broadcast_to(f0, (*np.shape(A), 3)) if grey else f0
-        f90 = np.minimum(1.0, 16.5 * f0.sum(axis=-1, keepdims=True))
+        f90 = np.minimum(1.0, 16.5 * f0.sum(axis=-1, keepdims=True)) if name not in F90 else F90[name]
         e = f0 * A[:, None] + f90 * B[:, None]
         e = e * (1 + f0 * (1 / (A + B)[:, None] - 1)) if compensation else e
         return e
@@ -171,7 +184,7 @@ def _expected(name, compensation, A, B, mu):
            "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0,
            "sheened_dielectric": 1.0, "sheened_coated": 1.0, "filmed_dielectric": 1.0,
            "filmed_metal": 0.0, "transmissive_thin": 1.0, "transmissive_volume": 1.0,
-           "tinted_volume": 1.0}[name]  # albedo (1 - metallic)
+           "tinted_volume": 1.0, "f90_dielectric": 1.0, "f90_black": 0.0}[name]  # albedo (1 - metallic)
     rho = rho * ATTENUATION.get(name, 1.0)  # the transmitted part through the volume
     f0, coat_f0 = F0[name], COAT_F0[name]
     if name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')

@@ -31,6 +31,7 @@ TEST_SCENES = {
     "anisotropic_light_zoo": lambda: parse_scene(_anisotropic(light_zoo())),
     "iridescent_light_zoo": lambda: parse_scene(_iridescent(light_zoo())),
     "transmissive_light_zoo": lambda: parse_scene(_transmissive(light_zoo())),
+    "specular_f90_light_zoo": lambda: parse_scene(_specular_f90(light_zoo())),
 }
 
 
@@ -85,6 +86,18 @@ def _transmissive(scene):
             material.update(thickness=0.8, attenuation_color=[0.9, 0.5, 0.2], attenuation_distance=0.6, ior=1.4,
                             iridescence=0.5, clearcoat=0.7)
     scene["lights"].append({"type": "directional", "direction": [0.2, 0.1, 1.0], "intensity": 2.0})
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _specular_f90(scene):
+    """The light zoo's bases in the specular workflow with KHR_materials_specular's explicit F90
+    (one also coated, one also sheened): a setting of the material, compiled in both programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.pop("metallic", None)
+        material.update(workflow="specular", specular=[0.02, 0.01 * i, 0.0], specular_f90=0.9 - 0.3 * i)
+        if i == 1:
+            material.update(clearcoat=0.7, sheen_color=[0.3, 0.2, 0.4])
     scene["environment"] = {"color": [0.3, 0.3, 0.3]}
     return scene
 
@@ -309,6 +322,9 @@ TRANSMISSION_TOKENS = ["u_transmission", "u_attenuation_color", "pbrlab_surf_tra
                        "u_transmission_scene", "u_transmission_view_proj", "u_transmission_lod_scale",
                        "pbrlab_transmitted_radiance("]
 _NO_SHEEN_OR_COAT = ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]
+# The explicit F90's uniform and call sites (KHR_materials_specular): only where a material has one.
+SPECULAR_F90_TOKENS = ["u_specular_f90", "pbrlab_surf_specular_f90(IN,layers)",
+                       "pbr_lighting_standard_f90(diffColor,specColor,f90,coatF0,coatF90"]
 # layer: (the material fields that turn it on, its tokens, tokens of the other layers its
 # program must still lack)
 BASE_LAYERS = {
@@ -318,13 +334,16 @@ BASE_LAYERS = {
                     ANISOTROPY_TOKENS[:1] + ["pbr_lighting_anisotropic(diffColor,specColor"] + _NO_SHEEN_OR_COAT),
     "transmission": ({"transmission": 0.7, "thickness": 0.5}, TRANSMISSION_TOKENS,
                      IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + _NO_SHEEN_OR_COAT),
+    "specular_f90": ({"workflow": "specular", "specular": [0.02, 0.02, 0.02], "specular_f90": 0.5},
+                     SPECULAR_F90_TOKENS, IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + TRANSMISSION_TOKENS[:1]
+                     + _NO_SHEEN_OR_COAT),
 }
 
 
 @pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
 @pytest.mark.parametrize("layer", sorted(BASE_LAYERS))
 def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, specialise):
-    """Anisotropy, a thin film, transmission: none of a layer's code in a program whose
+    """Anisotropy, a thin film, transmission, an explicit F90: none of a layer's code in a program whose
     material lacks it, and a material with one layer has none of the others' code."""
     fields, tokens, absent = BASE_LAYERS[layer]
     _, plain = _programs_for(parse_scene(MINIMAL), specialise)

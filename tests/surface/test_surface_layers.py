@@ -53,13 +53,33 @@ def test_a_surface_file_writing_layers_renders_like_the_json_material(surface, f
     assert np.abs(bare - want)[..., :3].max() > 1.0
 
 
+SPECULAR_BASE = {"workflow": "specular", "albedo": [0.8, 0.3, 0.2], "specular": [0.01, 0.01, 0.0], "smoothness": 0.6}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_surface_file_writing_specular_f90_renders_like_the_json_material(language):
+    """SpecularF90 (KHR_materials_specular's F90) from a surface file and from JSON
+    specular_f90: the same image to ULP_BOUND; without it F90 follows F0 (0.5 here against
+    pbr_f90_from_f0's 16.5 x 0.02 = 0.33) and the rims differ."""
+    got = render.render_scene(_scene({"surface": "specular_f90.glsl", "workflow": "specular"}),
+                              language=language).linear
+    want = render.render_scene(_scene({**SPECULAR_BASE, "specular_f90": 0.5}), language=language).linear
+    bare = render.render_scene(_scene(SPECULAR_BASE), language=language).linear
+    covered = want[..., 3] > 0
+    assert covered.sum() > 1000 and np.array_equal(got[..., 3] > 0, covered)
+    assert float32_ulps(want[..., :3], got[..., :3])[covered].max() <= ULP_BOUND
+    assert np.abs(bare - want)[..., :3].max() > 0.01
+
+
 def test_the_layers_compiled_are_the_ones_the_surface_writes():
     def layers(surface):
         f = features.material_features(_scene({"surface": surface}).materials["m"])
         return {layer for layer in features.LAYERS if getattr(f, layer)}
 
     assert layers("coat.glsl") == {"clearcoat"}
-    assert layers("every_layer.glsl") == set(features.LAYERS)
+    # every layer but the explicit F90, which the anisotropic, filmed and transmissive base keeps from F0
+    assert layers("every_layer.glsl") == set(features.LAYERS) - {"specular_f90"}
+    assert layers("specular_f90.glsl") == {"specular_f90"}
     assert layers("../../../scenes/unity_example/brick_surface.glsl") == set()
 
 

@@ -6,7 +6,9 @@
 //           vec2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness)
 //           PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT and the table's axis constants
 //           vec3 pbr_specular_albedo(vec3 f0, vec2 dfg)
+//           vec3 pbr_specular_albedo_f90(vec3 f0, float f90, vec2 dfg)
 //           vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg)
+//           vec3 pbr_specular_albedo_bound_f90(vec3 f0, float f90, vec2 dfg)
 //           vec3 pbr_energy_compensation(vec3 f0, vec2 dfg)
 //           float pbr_specular_occlusion(float NdotV, float occlusion, float alpha)
 //           float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount)
@@ -100,9 +102,16 @@ vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
 }
 
 // Directional albedo of the single-scattering specular lobe: Schlick's F0 and F90 weights
-// of the split sum, F90 = pbr_f90_from_f0(f0) as in the BRDF (pbr/shading/dispatch.glsl).
+// of the split sum, E = f0 A + f90 B (Karis 2013, eq. 8 with Schlick's F = f0 + (f90 - f0)
+// (1 - VdotH)^5, linear in f0 and f90). The _f90 form takes the caller's F90
+// (KHR_materials_specular: F90 = specularFactor · specularTexture.a, pbr_specular_F_f90);
+// the plain form F90 = pbr_f90_from_f0(f0), as in the BRDF (pbr/shading/dispatch.glsl).
+vec3 pbr_specular_albedo_f90(vec3 f0, float f90, vec2 dfg) {
+    return f0 * dfg.x + f90 * dfg.y;
+}
+
 vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
-    return f0 * dfg.x + pbr_f90_from_f0(f0) * dfg.y;
+    return pbr_specular_albedo_f90(f0, pbr_f90_from_f0(f0), dfg);
 }
 
 // An upper bound of the albedo of the tier's own direct specular lobe, for the
@@ -113,8 +122,12 @@ vec3 pbr_specular_albedo(vec3 f0, vec2 dfg) {
 // dielectric reflected 1.0025 of a direct light at MEDIUM). The fast and separable V terms
 // have at most the albedo of the exact height-correlated V the table holds (their
 // denominators are larger, Hammon 2017 / Heitz 2014), so they need no margin.
+vec3 pbr_specular_albedo_bound_f90(vec3 f0, float f90, vec2 dfg) {
+    return pbr_specular_albedo_f90(f0, f90, dfg) + pbr_specular_F_deviation_bound_f90(f0, f90) * (dfg.x + dfg.y);
+}
+
 vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
-    return pbr_specular_albedo(f0, dfg) + pbr_specular_F_deviation_bound(f0) * (dfg.x + dfg.y);
+    return pbr_specular_albedo_bound_f90(f0, pbr_f90_from_f0(f0), dfg);
 }
 
 // Single-scattering GGX loses energy at high roughness (up to 69 % at roughness 1, see
@@ -123,7 +136,10 @@ vec3 pbr_specular_albedo_bound(vec3 f0, vec2 dfg) {
 // Image-based Lighting", as simplified in Filament ("Physically Based Rendering in
 // Filament", section 5.3.4.7). A white metal in a white furnace then reflects 1.
 // Lower bound of E in the division: the table's smallest E (roughness 1, head-on) is
-// 0.307, so the guard only protects against a caller's zero dfg.
+// 0.307, so the guard only protects against a caller's zero dfg. With an explicit F90 (a
+// lobe s · Schlick(c, 1), KHR_materials_specular's F0 = c s, F90 = s) the compensation stays
+// the one of its F0 = c s: at most s times that of the lobe Schlick(c, 1), whose compensated
+// albedo is at most 1, so the compensated albedo stays at most s <= 1.
 #define PBR_MIN_SPECULAR_ALBEDO 1e-4
 
 vec3 pbr_energy_compensation(vec3 f0, vec2 dfg) {

@@ -2,6 +2,9 @@
 //
 // Provides: vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
 //                                   vec3 diffuseColor, vec3 f0, float perceptualRoughness)
+//           vec3 pbr_shade_punctual_f90(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
+//                                       vec3 diffuseColor, vec3 f0, float f90,
+//                                       float perceptualRoughness)  (an explicit F90)
 // Include:  "pbr/lighting/punctual.glsl" (path relative to glsl/)
 // Config macros read: those of pbr/shading/dispatch.glsl.
 //
@@ -24,6 +27,14 @@ vec3 pbr_shade_punctual(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
                         vec3 diffuseColor, vec3 f0, float perceptualRoughness) {
     float NdotL = clamp(dot(n, l), 0.0, 1.0);
     vec3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
+    return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
+}
+
+// The same with an explicit F90 (pbr_brdf_standard_f90: KHR_materials_specular's specularFactor).
+vec3 pbr_shade_punctual_f90(vec3 n, vec3 v, vec3 l, vec3 lightRadiance,
+                            vec3 diffuseColor, vec3 f0, float f90, float perceptualRoughness) {
+    float NdotL = clamp(dot(n, l), 0.0, 1.0);
+    vec3 brdf = pbr_brdf_standard_f90(n, v, l, diffuseColor, f0, f90, perceptualRoughness);
     return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
 }
 

@@ -33,8 +33,10 @@ reads what this module writes into a scene Material:
                                              world scale (|det|^(1/3)), attenuation_color, attenuation_distance
                                              (absent: +inf); ior = KHR_materials_ior's (refraction)
     KHR_materials_ior, KHR_materials_specular
-      (dielectric: metallicFactor 0)         the specular workflow, F0 = ((ior - 1) / (ior + 1))^2
-                                             x specularColorFactor x specularFactor (max 1)
+      (dielectric: metallicFactor 0)         the specular workflow, F0 = min(((ior - 1) / (ior + 1))^2
+                                             x specularColorFactor x texture.rgb, 1) x specularFactor
+                                             x texture.a; with KHR_materials_specular, specular_f90 =
+                                             specularFactor (x texture.a): F90 as the extension sets it
     textureInfo.texCoord, KHR_texture_transform, samplers   per-slot UV set, UV transform, sampler
 
 Everything else a material carries is named in one warning each.
@@ -223,6 +225,13 @@ class MaterialReader:
         elif "KHR_materials_volume" in extensions:
             self.warn(f"KHR_materials_volume ignored in material \"{name}\" (without KHR_materials_transmission "
                       "there is no light through the surface to attenuate)")
+        base_layers = [key for key, on in (("KHR_materials_anisotropy", m.anisotropy_strength > 0.0),
+                                           ("KHR_materials_iridescence", m.iridescence > 0.0),
+                                           ("KHR_materials_transmission", m.transmission > 0.0)) if on]
+        if m.specular_f90 is not None and base_layers:
+            self.warn(f"KHR_materials_specular's F90 ignored in material \"{name}\" (with {base_layers[0]} F90 "
+                      "follows F0)")
+            m.specular_f90 = None
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")
@@ -332,7 +341,12 @@ class MaterialReader:
             return  # a pure metal's F0 is its base colour: the IOR does not enter
         f0_ior = ((ior - 1.0) / (ior + 1.0)) ** 2  # Fresnel at normal incidence, air to ior
         m.workflow = "specular"
-        m.specular = np.minimum(f0_ior * colour * factor, 1.0)
+        # the README's "Implementation": dielectric_f0 = min(f0_ior x specularColor, 1) x specular,
+        # dielectric_f90 = specular (KHR_materials_ior alone keeps F90 from F0: the extension's 1
+        # for every ior >= 1.331, where pbr_f90_from_f0 reaches 1)
+        m.specular = np.minimum(f0_ior * colour, 1.0) * factor
+        if "KHR_materials_specular" in extensions:
+            m.specular_f90 = factor
         for key, slot, srgb in (("specularColorTexture", "specular_color", True),
                                 ("specularTexture", "specular_strength", False)):
             if spec_ext.has(key):

@@ -317,6 +317,11 @@ _DISPATCH_TEMPLATES = (
               + ")", _a("n:dir v:dir l:dir roughness:roughness"), _ge0("D·V")), "PBR_SPECULAR_V", shading.SPECULAR_V),
     (_f("pbr_specular_F", "f0:unit3 VdotH:cosine", F), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_specular_F_deviation_bound", "f0:unit3", _unit("F deviation")), "PBR_SPECULAR_F", shading.SPECULAR_F),
+    # the explicit F90 (KHR_materials_specular), called under its precondition f90 >= max(f0)
+    (_f("pbr_specular_F_f90", "f0:unit3 f90:unit VdotH:cosine", F,
+        "pbr_specular_F_f90(f0, max(f90, pbr_max3(f0)), VdotH)"), "PBR_SPECULAR_F", shading.SPECULAR_F),
+    (_f("pbr_specular_F_deviation_bound_f90", "f0:unit3 f90:unit", _unit("F deviation"),
+        "pbr_specular_F_deviation_bound_f90(f0, max(f90, pbr_max3(f0)))"), "PBR_SPECULAR_F", shading.SPECULAR_F),
     (_f("pbr_diffuse_Fd", "NdotV:cosine NdotL:cosine LdotH:cosine r:roughness", Bound("0 <= Fd <= 6.25/π", 0.0, 2.0)),
      "PBR_DIFFUSE", shading.DIFFUSE),
     (_f("pbr_sheen_V", "NdotL:cosine NdotV:cosine alpha:alpha", Bound("0 <= V <= 1.6e3", 0.0, 1.6e3)),
@@ -335,6 +340,13 @@ _SHADING_TEMPLATES = (
              tuple(a for a in SHADE_ARGS if a.name != "radiance"), BRDF),
     Function("pbr_shade_punctual", "pbr_shade_punctual(n, v, l, radiance, diffuseColor, f0, roughness)",
              SHADE_ARGS, COLOUR),
+    # the explicit F90 (KHR_materials_specular), under its precondition f90 >= max(f0)
+    Function("pbr_brdf_standard_f90",
+             "pbr_brdf_standard_f90(n, v, l, diffuseColor, f0, max(f90, pbr_max3(f0)), roughness)",
+             tuple(a for a in SHADE_ARGS if a.name != "radiance") + _a("f90:unit"), BRDF),
+    Function("pbr_shade_punctual_f90",
+             "pbr_shade_punctual_f90(n, v, l, radiance, diffuseColor, f0, max(f90, pbr_max3(f0)), roughness)",
+             SHADE_ARGS + _a("f90:unit"), COLOUR),
 )
 
 
@@ -490,13 +502,16 @@ def _follows(function: Function, inputs: dict) -> Near:
     quality = variants.get("quality", "HIGH")
     d = {k: np.asarray(np.float32(inputs[k]), np.float64) for k in ("n", "v", "l", "diffuseColor", "f0")}
     roughness = float(np.float32(inputs["roughness"]))
+    # the _f90 forms' explicit F90, as their expression passes it (at least max(f0))
+    f90 = None if "f90" not in inputs else max(float(np.float32(inputs["f90"])), float(d["f0"].max()))
     if "radiance" in function.expression:
         value = shading.shade_punctual(d["n"], d["v"], d["l"], np.asarray(np.float32(inputs["radiance"]), np.float64),
                                        d["diffuseColor"],
-                                       d["f0"], roughness, quality=quality, diffuse=variants.get("diffuse", "LAMBERT"))
+                                       d["f0"], roughness, quality=quality, diffuse=variants.get("diffuse", "LAMBERT"),
+                                       f90=f90)
     else:
         value = shading.brdf_standard(d["n"], d["v"], d["l"], d["diffuseColor"], d["f0"], roughness,
-                                      quality=quality, diffuse=variants.get("diffuse", "LAMBERT"))
+                                      quality=quality, diffuse=variants.get("diffuse", "LAMBERT"), f90=f90)
     return Near(tuple(float(x) for x in np.ravel(value)), FOLLOWS_REL,
                 f"reference.shading ({function.variant or 'quality=HIGH'}) within {FOLLOWS_REL:g} relative")
 
@@ -688,7 +703,7 @@ def _unity_cases(function: Function) -> list[Case]:
 
 
 def cases_of(function: Function) -> list[Case]:
-    if function.name in ("pbr_brdf_standard", "pbr_shade_punctual"):
+    if function.name in ("pbr_brdf_standard", "pbr_shade_punctual", "pbr_brdf_standard_f90", "pbr_shade_punctual_f90"):
         return _shading_cases(function) + _edge_cases(function)
     if function.expression.startswith("(pbr_unity_brdf"):
         return _unity_cases(function) + _edge_cases(function)

@@ -166,7 +166,8 @@ def sweep_inputs(function: catalogue.Function, count: int, seed: int) -> dict[st
     """Randomised inputs (float32) mixing each argument's normal domain with adversarial values."""
     rng = np.random.default_rng(seed)
     out = {}
-    if (function.name in ("pbr_brdf_standard", "pbr_shade_punctual", "pbr_clearcoat_punctual", *catalogue.DV_FUNCTIONS)
+    if (function.name in ("pbr_brdf_standard", "pbr_shade_punctual", "pbr_brdf_standard_f90", "pbr_shade_punctual_f90",
+                          "pbr_clearcoat_punctual", *catalogue.DV_FUNCTIONS)
             or function.name.startswith("pbr_unity_brdf")):
         out.update(_shading_geometry(count))
     elif function.name in catalogue.TRANSMISSION_FUNCTIONS:

@@ -102,9 +102,16 @@ def specular_V(NdotL, NdotV, NdotH, VdotH, alpha, variant="SMITH_GGX_CORRELATED"
     raise ValueError(variant)
 
 
-def specular_F(f0, VdotH, variant="SCHLICK"):
-    """pbr_specular_F: the Schlick forms take F90 = f90_from_f0(f0) (Schüler 2009 / Filament)."""
-    f90 = brdf.f90_from_f0(f0)[..., None]
+def _f90(f0, f90):
+    """The grazing reflectance with a trailing axis: the caller's (pbr_specular_F_f90,
+    KHR_materials_specular's specularFactor) or, for None, f90_from_f0(f0)."""
+    return brdf.f90_from_f0(f0)[..., None] if f90 is None else np.asarray(f90, np.float64)[..., None]
+
+
+def specular_F(f0, VdotH, variant="SCHLICK", f90=None):
+    """pbr_specular_F[_f90]: the Schlick forms take F90 = f90_from_f0(f0) (Schüler 2009 /
+    Filament), or the caller's ``f90``."""
+    f90 = _f90(f0, f90)
     if variant == "SCHLICK":
         return brdf.F_Schlick(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "SCHLICK_SG":
@@ -116,13 +123,14 @@ def specular_F(f0, VdotH, variant="SCHLICK"):
     raise ValueError(variant)
 
 
-def specular_F_deviation_bound(f0, variant="SCHLICK"):
-    """pbr_specular_F_deviation_bound: max |F - Schlick(f0, f90)| over VdotH (last axis RGB)."""
+def specular_F_deviation_bound(f0, variant="SCHLICK", f90=None):
+    """pbr_specular_F_deviation_bound[_f90]: max |F - Schlick(f0, f90)| over VdotH (last axis
+    RGB); an explicit ``f90`` must be at least every channel of f0."""
     f0 = np.asarray(f0, dtype=np.float64)
     if variant == "SCHLICK":
         return np.zeros_like(f0)
     if variant == "SCHLICK_SG":
-        return brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (brdf.f90_from_f0(f0)[..., None] - f0)
+        return brdf.F_SCHLICK_SG_MAX_ABS_ERROR * (_f90(f0, f90) - f0)
     if variant == "NONE":
         return 1.0 - f0
     if variant == "F0":
@@ -148,10 +156,11 @@ def _dot(a, b):
 
 
 def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_d="GGX",
-                  specular_v=None, specular_f=None, diffuse="LAMBERT", quality="HIGH"):
+                  specular_v=None, specular_f=None, diffuse="LAMBERT", quality="HIGH", f90=None):
     """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
     (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
-    specular; D · V capped at HALF_MAX in the LOW tier).
+    specular; D · V capped at HALF_MAX in the LOW tier). ``f90``: pbr_brdf_standard_f90's
+    explicit grazing reflectance (shaped like the leading axes), None for F90 from F0.
 
     An h below the surface (only from a view below the horizon) has no lobe (χ+). V's cosines are floored at MIN_NDOTV, except in the
     fused GGX quotients of the tiers' V (dv_ggx_*.glsl), which take NdotL > 0 as it is."""
@@ -196,7 +205,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
             V = brdf.V_SmithGGXBound(NdotL_safe, _dot(n, v))
         else:
             V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
-    F = specular_F(f0, VdotH, f_var)
+    F = specular_F(f0, VdotH, f_var, None if f90 is None else np.broadcast_to(f90, shape[:-1]))
     lobe = np.minimum(D * V, QUALITY_MAX_SPECULAR_LOBE[quality])
     # χ+(n·h) (Walter et al. 2007 eq. 33): no lobe for h below the surface
     specular_part = np.where((has_half & (n_dot_h > 0.0))[..., None], lobe[..., None] * F, 0.0)

@@ -75,22 +75,23 @@ def env_brdf_approx(NdotV, perceptual_roughness):
     return np.stack([-1.04 * a004 + rr[..., 2], 1.04 * a004 + rr[..., 3]], axis=-1)
 
 
-def specular_albedo(f0, dfg):
-    """f0 A + f90 B with F90 = f90_from_f0(f0) (Schüler 2009 / Filament, as the BRDF's F)."""
-    f90 = brdf.f90_from_f0(f0)[..., None]
+def specular_albedo(f0, dfg, f90=None):
+    """f0 A + f90 B with F90 = f90_from_f0(f0) (Schüler 2009 / Filament, as the BRDF's F), or
+    the caller's ``f90`` (pbr_specular_albedo_f90)."""
+    f90 = brdf.f90_from_f0(f0)[..., None] if f90 is None else _f(f90)[..., None]
     return _f(f0) * _f(dfg)[..., 0:1] + f90 * _f(dfg)[..., 1:2]
 
 
-def specular_albedo_bound(f0, dfg, specular_f="SCHLICK"):
-    """pbr_specular_albedo_bound: f0 A + f90 B + the F variant's largest distance from
+def specular_albedo_bound(f0, dfg, specular_f="SCHLICK", f90=None):
+    """pbr_specular_albedo_bound[_f90]: f0 A + f90 B + the F variant's largest distance from
     Schlick's F (shading.specular_F_deviation_bound) times A + B."""
-    return specular_albedo(f0, dfg) + shading.specular_F_deviation_bound(f0, specular_f) * (
+    return specular_albedo(f0, dfg, f90) + shading.specular_F_deviation_bound(f0, specular_f, f90) * (
         _f(dfg)[..., 0:1] + _f(dfg)[..., 1:2])
 
 
-def indirect_specular_albedo(f0, dfg, energy_compensated=True):
-    """Single-scattering albedo, times the compensation when it is applied."""
-    albedo = specular_albedo(f0, dfg)
+def indirect_specular_albedo(f0, dfg, energy_compensated=True, f90=None):
+    """Single-scattering albedo, times the compensation (at f0 alone) when it is applied."""
+    albedo = specular_albedo(f0, dfg, f90)
     return albedo * energy_compensation(f0, dfg) if energy_compensated else albedo
 
 
@@ -123,9 +124,9 @@ def specular_occlusion(NdotV, occlusion, alpha):
 
 
 def indirect_specular_split_sum(prefiltered, f0, perceptual_roughness, NdotV, occlusion, dfg,
-                                energy_compensated=True):
+                                energy_compensated=True, f90=None):
     """Scalars and arrays shaped like NdotV; colours with a last axis of 3."""
-    return _f(prefiltered) * indirect_specular_albedo(f0, dfg, energy_compensated) * specular_occlusion(
+    return _f(prefiltered) * indirect_specular_albedo(f0, dfg, energy_compensated, f90) * specular_occlusion(
         NdotV, _f(occlusion), _f(perceptual_roughness) ** 2)[..., None]
 
 
@@ -143,20 +144,22 @@ def premultiply_alpha(diff_color, alpha, one_minus_reflectivity, transparent):
 
 def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,
                       light_color, indirect_diffuse, prefiltered, dfg, energy_compensated=True,
-                      **variants):
+                      f90=None, coat_f90=None, **variants):
     """pbr_lighting_standard_dfg: direct (pbr_shade_punctual with the diffuse coupled to the
     coat's single-scattering specular albedo) + coupled indirect diffuse * occlusion +
     split-sum indirect specular (at f0, the whole surface's). ``dfg`` is the environment BRDF at (NdotV, roughness).
     Vectors and colours have a last axis of 3; roughness and occlusion have the leading
-    shape (or are scalars)."""
+    shape (or are scalars). ``f90``, ``coat_f90``: pbr_lighting_standard_f90_dfg's explicit
+    grazing reflectances of f0 and coat_f0 (None: F90 from F0)."""
     r = shading.clamp_perceptual_roughness(perceptual_roughness)
     NdotV = np.maximum(np.sum(_f(n) * v, axis=-1), shading.MIN_NDOTV)
     specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[variants.get("quality", "HIGH")]
-    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
-    direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, **variants)
-    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
+    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0,
+                                           specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
+    direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, f90=f90, **variants)
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90)
     indirect_diffuse_color = coupled_diffuse_color(
-        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
+        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated, coat_f90))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
 
 

@@ -64,6 +64,9 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #else
 #define PBR_LAYERS_TRANSMISSION 0
 #endif
+#ifdef PBRLAB_SPECULAR_F90
+#define PBR_LAYERS_SPECULAR_F90 1
+#endif
 
 #include "pbr/pbr.hlsl"
 #include "pbr/lighting/attenuation.hlsl"

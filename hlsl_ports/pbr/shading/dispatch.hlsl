@@ -3,7 +3,9 @@
 // Provides: float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha)
 //           float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float alpha)
 //           vec3  pbr_specular_F(vec3 f0, float VdotH)
+//           vec3  pbr_specular_F_f90(vec3 f0, float f90, float VdotH)  (an explicit F90)
 //           vec3  pbr_specular_F_deviation_bound(vec3 f0)  (max |F - Schlick's F| over VdotH)
+//           vec3  pbr_specular_F_deviation_bound_f90(vec3 f0, float f90)
 //           float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
 //           float pbr_specular_lobe_limit(float DV)  (the tier's cap on D · V)
 //           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
@@ -20,7 +22,8 @@
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT | _SMITH_GGX_BOUND (LOW default)
 //   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (HIGH, MEDIUM default) | _SCHLICK_SG | _NONE (F = 1,
 //                   for white-furnace checks and debugging) | _F0 (F = f0, no Fresnel rise:
-//                   LOW default); both Schlick forms take F90 = pbr_f90_from_f0(f0)
+//                   LOW default); both Schlick forms take F90 = pbr_f90_from_f0(f0), or
+//                   the caller's F90 through the _f90 forms (KHR_materials_specular)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //   PBR_BRDF_MODEL  PBR_BRDF_MODEL_PBRLAB (default: the library's physical shading) |
 //                   PBR_BRDF_MODEL_UNITY (Unity's built-in BRDFs formula for formula,
@@ -265,12 +268,15 @@ float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float 
 #endif
 }
 
-// F90 follows F0 (pbr_f90_from_f0, Schüler 2009 / Filament): F0 = 0 reflects nothing.
-float3 pbr_specular_F(float3 f0, float VdotH) {
+// F with an explicit grazing reflectance f90 (KHR_materials_specular: F90 = specularFactor ·
+// specularTexture.a, whatever F0; Khronos, KHR_materials_specular README, "Implementation":
+// dielectric_f90 = specular). Precondition: f90 >= every channel of f0 (the extension's
+// min(..., 1) · specular <= specular), which pbr_specular_F_deviation_bound_f90 relies on.
+float3 pbr_specular_F_f90(float3 f0, float f90, float VdotH) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
-    return pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH);
+    return pbr_F_Schlick(f0, f90, VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    return pbr_F_SchlickSG(f0, pbr_f90_from_f0(f0), VdotH);
+    return pbr_F_SchlickSG(f0, f90, VdotH);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((float3)(1.0));
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
@@ -280,16 +286,22 @@ float3 pbr_specular_F(float3 f0, float VdotH) {
 #endif
 }
 
-// The largest |pbr_specular_F - pbr_F_Schlick(f0, f90, VdotH)| over VdotH in [0, 1]: how far
-// the selected F can reflect beyond the Schlick weights of the split-sum table (used by the
-// diffuse-specular coupling, pbr_specular_albedo_bound). SG: PBR_F_SCHLICK_SG_MAX_ABS_ERROR
+// F90 follows F0 (pbr_f90_from_f0, Schüler 2009 / Filament): F0 = 0 reflects nothing.
+float3 pbr_specular_F(float3 f0, float VdotH) {
+    return pbr_specular_F_f90(f0, pbr_f90_from_f0(f0), VdotH);
+}
+
+// The largest |pbr_specular_F_f90 - pbr_F_Schlick(f0, f90, VdotH)| over VdotH in [0, 1]: how
+// far the selected F can reflect beyond the Schlick weights of the split-sum table (used by the
+// diffuse-specular coupling, pbr_specular_albedo_bound_f90). SG: PBR_F_SCHLICK_SG_MAX_ABS_ERROR
 // times (f90 - f0) (f_schlick.hlsl); NONE (F = 1): 1 - f0, F's distance from Schlick at VdotH = 1;
-// F0: 0 (F = f0 <= Schlick's weights, since f90 = pbr_f90_from_f0(f0) >= every channel of f0).
-float3 pbr_specular_F_deviation_bound(float3 f0) {
+// F0: 0 (F = f0 <= Schlick's weights, since f90 >= every channel of f0: pbr_f90_from_f0(f0) is,
+// and an explicit f90 must be, pbr_specular_F_f90).
+float3 pbr_specular_F_deviation_bound_f90(float3 f0, float f90) {
 #if PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK
     return ((float3)(0.0));
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_SCHLICK_SG
-    return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((float3)(pbr_f90_from_f0(f0))) - f0);
+    return PBR_F_SCHLICK_SG_MAX_ABS_ERROR * (((float3)(f90)) - f0);
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_NONE
     return ((float3)(1.0)) - f0;
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
@@ -297,6 +309,10 @@ float3 pbr_specular_F_deviation_bound(float3 f0) {
 #else
 #error "PBR_SPECULAR_F: unknown value"
 #endif
+}
+
+float3 pbr_specular_F_deviation_bound(float3 f0) {
+    return pbr_specular_F_deviation_bound_f90(f0, pbr_f90_from_f0(f0));
 }
 
 float pbr_specular_lobe_limit(float DV) {

@@ -2,6 +2,12 @@
 //
 // Provides: vec3  pbr_brdf_standard(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
 //                                   float perceptualRoughness)
+//           void  pbr_brdf_standard_terms(vec3 n, vec3 v, vec3 l, float perceptualRoughness,
+//                                         out float Fd, out float DV, out float LdotH)
+//           vec3  pbr_brdf_standard_f90(vec3 n, vec3 v, vec3 l, vec3 diffuseColor, vec3 f0,
+//                                       float f90, float perceptualRoughness)
+//                 (an explicit F90, pbr_specular_F_f90: KHR_materials_specular's specularFactor;
+//                 pbr_brdf_standard takes F90 = pbr_f90_from_f0(f0))
 //           float pbr_clamp_perceptual_roughness(float perceptualRoughness)
 //           PBR_LIT_SCALE (2^126, the diffuse term's below-horizon scale)
 //           (through its includes: PBR_MIN_PERCEPTUAL_ROUGHNESS[_MEDIUMP] from dispatch.hlsl,
@@ -69,8 +75,12 @@ float pbr_clamp_perceptual_roughness(float perceptualRoughness) {
     return clamp(perceptualRoughness, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 }
 
-float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, float3 f0,
-                       float perceptualRoughness) {
+// Everything but the colours: the diffuse term Fd, the specular lobe D · V (both already
+// selected to 0 where the header says) and LdotH = VdotH, for F. Shared by the two forms below,
+// which differ only in the F90 their Fresnel takes (computed last in both, so the plain form
+// compiles to the program it was before the explicit F90 existed).
+void pbr_brdf_standard_terms(float3 n, float3 v, float3 l, float perceptualRoughness,
+                             out float Fd, out float DV, out float LdotH) {
     float NdotL = dot(n, l);
     float nDotV = dot(n, v);
     float NdotV = clamp(nDotV, PBR_MIN_NDOTV, 1.0);
@@ -80,7 +90,7 @@ float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, floa
     // h = (l + v) / |l + v| is never formed (see header).
     float3 halfSum = l + v;
     float halfLength2 = dot(halfSum, halfSum);
-    float LdotH = 0.5 * sqrt(halfLength2);  // == VdotH, see header
+    LdotH = 0.5 * sqrt(halfLength2);  // == VdotH, see header
     // n·(l + v) = NdotL + n·v (one add, not a dot product), and |n × (l + v)|² as the squared
     // length of (l + v)'s rejection from n, (l + v) - n (n·(l + v)): equal for unit n
     // (Lagrange's identity), as accurate near the mirror (both lose only float32's rounding of
@@ -89,8 +99,8 @@ float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, floa
     float nDotHalfSum = NdotL + nDotV;
     float3 halfRejection = halfSum - nDotHalfSum * n;
 
-    float Fd = pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
-    float DV = pbr_specular_lobe_limit(pbr_specular_DV(
+    Fd = pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
+    DV = pbr_specular_lobe_limit(pbr_specular_DV(
         nDotHalfSum, dot(halfRejection, halfRejection), halfLength2, NdotL, NdotV, LdotH, alpha));
     // No branches: a GPU or llvmpipe runs no divergent control flow. The diffuse term is
     // scaled by saturate(NdotL · 2^126) (a multiply whose clamp is free on AMD GPUs), the lobe
@@ -98,7 +108,20 @@ float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, floa
     // compare): both computed, the selected values finite (see header).
     Fd *= clamp(NdotL * PBR_LIT_SCALE, 0.0, 1.0);
     DV = min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
+}
+
+float3 pbr_brdf_standard(float3 n, float3 v, float3 l, float3 diffuseColor, float3 f0,
+                       float perceptualRoughness) {
+    float Fd, DV, LdotH;
+    pbr_brdf_standard_terms(n, v, l, perceptualRoughness, Fd, DV, LdotH);
     return diffuseColor * Fd + DV * pbr_specular_F(f0, LdotH);
+}
+
+float3 pbr_brdf_standard_f90(float3 n, float3 v, float3 l, float3 diffuseColor, float3 f0, float f90,
+                           float perceptualRoughness) {
+    float Fd, DV, LdotH;
+    pbr_brdf_standard_terms(n, v, l, perceptualRoughness, Fd, DV, LdotH);
+    return diffuseColor * Fd + DV * pbr_specular_F_f90(f0, f90, LdotH);
 }
 
 #endif // PBR_SHADING_STANDARD_HLSL

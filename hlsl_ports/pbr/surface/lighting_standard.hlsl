@@ -19,6 +19,13 @@
 //           vec3 pbr_lighting_standard_light(pbr_PreparedSurface s, pbr_Light light)
 //           vec3 pbr_lighting_standard_add_environment(pbr_PreparedSurface s, pbr_Indirect indirect,
 //                                                      vec3 radiance)
+//           vec3 pbr_lighting_standard_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0,
+//                                          float coatF90, float perceptualRoughness,
+//                                          float occlusion, vec3 n, vec3 v, pbr_GI gi)
+//           vec3 pbr_lighting_standard_f90_dfg(..., pbr_GI gi, vec2 dfg)  (the same, given dfg)
+//           vec3 pbr_indirect_specular_split_sum_f90(vec3 prefiltered, vec3 f0, float f90, ...)
+//           vec3 pbr_indirect_diffuse_color_f90(vec3 diffuseColor, vec3 coatF0, float coatF90,
+//                                               vec2 dfg)
 // Include:  "pbr/surface/lighting_standard.hlsl" (path relative to hlsl_ports/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
 //           in the environment specular; 0: single scattering only);
@@ -43,7 +50,11 @@
 // directional albedo at NdotV from the same DFG values as the split sum (single
 // scattering for direct light, times the compensation for the environment when
 // PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
-// f0 = 0 has no specular. Under a uniform white environment every tier reflects at most 1
+// f0 = 0 has no specular; the _f90 forms at the end take the caller's F90 instead, for f0
+// (f90) and for the coat's F0 (coatF90): KHR_materials_specular's F90 = specularFactor ·
+// specularTexture.a (the dielectric's; a metallic m blends it towards 1, F90 = mix(f90, 1, m)),
+// in the direct lobe, the split sum and both couplings of the diffuse. Each needs f90 >= every
+// channel of its F0 (pbr_specular_F_f90). Under a uniform white environment every tier reflects at most 1
 // (tests/render/test_white_furnace.py).
 //
 // Once per pixel, not per light (issue 25): everything that depends only on the point, the
@@ -183,5 +194,52 @@ float3 pbr_lighting_standard(float3 diffuseColor, float3 f0, float3 coatF0, floa
                            float occlusion, float3 n, float3 v, pbr_GI gi) {
     pbr_PreparedSurface s = pbr_prepare_surface(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v);
     return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
+}
+
+// The same with an explicit F90 (KHR_materials_specular). Each is its plain form above with
+// the _f90 terms; the plain forms do not call these with F90 = pbr_f90_from_f0(f0): that
+// moves the F90 ahead of the lobe in the compiled program and changed 6 of the 180 programs
+// of tests/specialisation's scenes by -2 .. +3 RDNA3 instructions, where the plain forms as
+// they are keep every program without an explicit F90 instruction for instruction.
+float3 pbr_indirect_specular_albedo_f90(float3 f0, float f90, float2 dfg) {
+    float3 albedo = pbr_specular_albedo_f90(f0, f90, dfg);
+#if PBR_ENERGY_COMPENSATION
+    albedo *= pbr_energy_compensation(f0, dfg);  // at F0: see pbr_energy_compensation
+#endif
+    return albedo;
+}
+
+float3 pbr_indirect_specular_split_sum_f90(float3 prefiltered, float3 f0, float f90, float roughness,
+                                         float NdotV, float occlusion, float2 dfg) {
+    return prefiltered * pbr_indirect_specular_albedo_f90(f0, f90, dfg)
+         * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
+}
+
+float3 pbr_indirect_diffuse_color_f90(float3 diffuseColor, float3 coatF0, float coatF90, float2 dfg) {
+    return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo_f90(coatF0, coatF90, dfg));
+}
+
+float3 pbr_lighting_standard_f90_dfg(float3 diffuseColor, float3 f0, float f90, float3 coatF0, float coatF90,
+                                   float perceptualRoughness, float occlusion, float3 n, float3 v, pbr_GI gi,
+                                   float2 dfg) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
+    float3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0,
+                                                   pbr_specular_albedo_bound_f90(coatF0, coatF90, dfg));
+    float3 direct = pbr_shade_punctual_f90(n, v, gi.light.dir, gi.light.color,
+                                         directDiffuse, f0, f90, roughness);
+    float3 specular = pbr_indirect_specular_split_sum_f90(gi.indirect.specular, f0, f90, roughness, NdotV,
+                                                        occlusion, dfg);
+    return direct + pbr_indirect_diffuse_color_f90(diffuseColor, coatF0, coatF90, dfg) * gi.indirect.diffuse
+                    * occlusion
+         + specular;
+}
+
+float3 pbr_lighting_standard_f90(float3 diffuseColor, float3 f0, float f90, float3 coatF0, float coatF90,
+                               float perceptualRoughness, float occlusion, float3 n, float3 v, pbr_GI gi) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    float2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_lighting_standard_f90_dfg(diffuseColor, f0, f90, coatF0, coatF90, roughness, occlusion, n, v, gi,
+                                         dfg);
 }
 #endif

@@ -27,7 +27,8 @@
 // Include:  "pbr/unity/surface_layers.hlsl" (path relative to glsl/; it includes
 //           pbr/unity/surface_standard.hlsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT, PBR_LAYERS_ANISOTROPY,
-//           PBR_LAYERS_IRIDESCENCE, PBR_LAYERS_TRANSMISSION (1 by default; a caller that knows a layer is absent
+//           PBR_LAYERS_IRIDESCENCE, PBR_LAYERS_TRANSMISSION (1 by default), PBR_LAYERS_SPECULAR_F90
+//           (0 by default: F90 follows F0; a caller that knows a layer is absent
 //           defines it 0 and LightingStandardLayers / LightingStandard[Specular]LayersBase
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.hlsl,
@@ -75,6 +76,17 @@
 // pbr_iridescence_thickness; HDRP's 0..1 remap is not used). Unity's BRDFs
 // (PBR_BRDF_MODEL_UNITY) have neither an anisotropic lobe nor an F0 to replace: there these
 // three functions are not defined.
+// SpecularF90 (read only where PBR_LAYERS_SPECULAR_F90 is 1): the dielectric's reflectance at
+// grazing incidence, KHR_materials_specular's specularFactor x specularTexture.a (the
+// extension's README, "Implementation": dielectric_f90 = specular); the F0 the surface writes
+// (Specular, or the metallic workflow's) must not exceed it in any channel, as the extension's
+// min(..., 1) x specular never does. A metallic surface blends it towards 1, F90 =
+// mix(SpecularF90, 1, Metallic), as the extension's F90 = lerp(dielectric_f90, 1, metallic).
+// Neither URP nor HDRP names a user-facing F90 (HDRP derives its fresnel90 from F0 inside the
+// BSDF), so the name is pbrlab's, after what it sets. With the layer off, F90 follows F0
+// (pbr_f90_from_f0) and none of this is compiled. The anisotropic lobe, the film and the
+// transmission keep F90 from F0 (a JSON material is refused the combination, a glTF one warned;
+// a surface file writing both gets F90 from F0 there).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_LAYERS_HLSL
 #define PBR_UNITY_SURFACE_LAYERS_HLSL
@@ -103,6 +115,7 @@ struct SurfaceOutputStandardLayers {
     float3 AttenuationColor;      // linear (default 1: no attenuation)
     float AttenuationDistance;  // > 0 (default +Inf: no attenuation)
     float TransmissionIor;      // the volume's IOR (default 1.5: KHR_materials_ior's)
+    float SpecularF90;          // grazing reflectance, >= every channel of F0 (default 1: KHR's)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -119,6 +132,9 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_TRANSMISSION
 #define PBR_LAYERS_TRANSMISSION 1
+#endif
+#ifndef PBR_LAYERS_SPECULAR_F90
+#define PBR_LAYERS_SPECULAR_F90 0
 #endif
 // pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
@@ -149,10 +165,13 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 // pbr_unity_lighting (pbr/unity/surface_standard.hlsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
 // (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
-// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION).
+// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION); the isotropic lobe
+// with the surface's F90 (the last two parameters: f90 for specColor, coatF90 for coatF0) where
+// PBR_LAYERS_SPECULAR_F90.
 float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, float3 normal, float3 viewDir,
-                                    UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect) {
+                                    UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect,
+                                    float f90, float coatF90) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     float3 n = normalize(normal);
@@ -178,6 +197,9 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     anisotropy.direction = layers.AnisotropyDirection;
     float3 c = pbr_lighting_anisotropic(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir,
                                       gi, anisotropy);
+#elif PBR_LAYERS_SPECULAR_F90
+    float3 c = pbr_lighting_standard_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
+                                       n, viewDir, gi);
 #else
     float3 c = pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
 #endif
@@ -201,7 +223,8 @@ float4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandard
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, float3(0.0, 0.0, 0.0));
+                                          viewDir, gi, layers, float3(0.0, 0.0, 0.0),
+                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
@@ -211,7 +234,8 @@ float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOu
     float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
-                                          viewDir, gi, layers, transmittedIndirect);
+                                          viewDir, gi, layers, transmittedIndirect,
+                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,
@@ -220,7 +244,7 @@ float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, Surfa
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          float3(0.0, 0.0, 0.0));
+                                          float3(0.0, 0.0, 0.0), layers.SpecularF90, layers.SpecularF90);
 }
 
 float4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecular s,
@@ -230,7 +254,7 @@ float4 LightingStandardSpecularLayersBaseTransmission(SurfaceOutputStandardSpecu
     float3 diffColor = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
     return pbr_unity_lighting_layers_base(diffColor, s.Specular, s.Specular, oneMinusReflectivity, s.Smoothness,
                                           s.Occlusion, s.Alpha, s.Normal, viewDir, gi, layers,
-                                          transmittedIndirect);
+                                          transmittedIndirect, layers.SpecularF90, layers.SpecularF90);
 }
 
 // The direction the environment is seen along through the surface (world): straight through

@@ -11,7 +11,8 @@
 //           test_UnityGlossyEnvironmentSetup, test_UnityGlobalIllumination[_gloss][_indirect],
 //           test_Lighting*_GI (the pbr/unity/ functions with struct results or inout GI),
 //           test_DiffuseAndSpecularFromMetallic[_specColor],
-//           test_EnergyConservationBetweenDiffuseAndSpecular, test_PreMultiplyAlpha.
+//           test_EnergyConservationBetweenDiffuseAndSpecular, test_PreMultiplyAlpha,
+//           test_pbr_brdf_standard_terms (its out parameters as one vec3).
 // Include:  "pbrlab_test/wrappers.glsl" (path relative to tests/hlsl/wrappers/)
 // Config macros read: those of the library.
 //
@@ -68,7 +69,16 @@ SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clear
     s.AttenuationColor = vec3(1.0, 1.0, 1.0);
     s.AttenuationDistance = 1.0;
     s.TransmissionIor = 1.5;
+    s.SpecularF90 = 1.0;   // read only where PBR_LAYERS_SPECULAR_F90 is 1
     return s;
+}
+
+vec3 test_pbr_brdf_standard_terms(vec3 n, vec3 v, vec3 l, float perceptualRoughness) {
+    float Fd;
+    float DV;
+    float LdotH;
+    pbr_brdf_standard_terms(n, v, l, perceptualRoughness, Fd, DV, LdotH);
+    return vec3(Fd, DV, LdotH);
 }
 
 pbr_Transmission test_transmission(float factor, float thickness, vec3 attenuationColor,

@@ -1,0 +1,90 @@
+"""Float64 reference of KHR_materials_specular's dielectric, written from the specification.
+
+Khronos, "KHR_materials_specular" (ratified; extensions/2.0/Khronos/KHR_materials_specular/
+README.md in KhronosGroup/glTF), section "Implementation" and "Interaction with other
+extensions" (KHR_materials_ior):
+
+    specular      = specularFactor x specularTexture.a
+    specularColor = specularColorFactor x specularColorTexture.rgb (decoded from sRGB)
+    dielectric_f0  = min(((ior - 1) / (ior + 1))^2 x specularColor, 1) x specular
+    dielectric_f90 = specular
+    dielectric_fresnel = mix(dielectric_f0, dielectric_f90, (1 - |VdotH|)^5)
+
+(the clamp applies to the product of the IOR's F0 and the colour, before the strength). The
+specular lobe is dielectric_fresnel x specular_brdf, glTF 2.0's specular_brdf (Appendix B):
+D_GGX x V_GGX (Heitz's height-correlated Smith, Walter et al. 2007's GGX, alpha =
+roughness^2). Its directional albedo under a uniform environment is the integral of
+Schlick's F against that lobe, linear in F0 and F90:
+
+    E(NdotV) = F0 A + F90 B     (Karis 2013, eq. 8; A and B as directional_albedo.py defines
+                                 them, integrated here by its own quadrature)
+
+so F90 < 1 can only lower the albedo below A + B <= 1: the white furnace cannot exceed 1.
+
+These functions take the extension's parameters, not pbrlab's: pbrlab's library and harness
+(pbr_*_f90, reference/shading.py, reference/surface.py) are tested against them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import directional_albedo
+
+
+def _f(x):
+    return np.asarray(x, np.float64)
+
+
+def f0_from_ior(ior, outside_ior=1.0):
+    """KHR_materials_ior: ((ior - outside_ior) / (ior + outside_ior))^2."""
+    return ((_f(ior) - outside_ior) / (_f(ior) + outside_ior)) ** 2
+
+
+def dielectric_f0(ior, specular_color, specular):
+    """min(f0_ior x specularColor, 1) x specular (RGB on the last axis)."""
+    return np.minimum(f0_from_ior(ior)[..., None] * _f(specular_color), 1.0) * _f(specular)[..., None]
+
+
+def dielectric_f90(specular):
+    """dielectric_f90 = specular, whatever the colour."""
+    return _f(specular)
+
+
+def dielectric_fresnel(f0, f90, VdotH):
+    """mix(f0, f90, (1 - |VdotH|)^5), RGB on the last axis of f0."""
+    w = (1.0 - np.abs(_f(VdotH))) ** 5
+    return _f(f0) * (1.0 - w)[..., None] + _f(f90)[..., None] * w[..., None]
+
+
+def _ggx_D(NdotH, alpha):
+    """Walter et al. 2007, eq. 33: alpha^2 / (pi ((NdotH)^2 (alpha^2 - 1) + 1)^2)."""
+    a2 = _f(alpha) ** 2
+    return a2 / (np.pi * (_f(NdotH) ** 2 * (a2 - 1.0) + 1.0) ** 2)
+
+
+def _ggx_V(NdotL, NdotV, alpha):
+    """glTF 2.0 Appendix B's V_GGX (Heitz 2014, height-correlated Smith / (4 NdotL NdotV))."""
+    a2 = _f(alpha) ** 2
+    gl = _f(NdotV) * np.sqrt(_f(NdotL) ** 2 * (1.0 - a2) + a2)
+    gv = _f(NdotL) * np.sqrt(_f(NdotV) ** 2 * (1.0 - a2) + a2)
+    return 0.5 / (gl + gv)
+
+
+def specular_lobe(n, v, l, f0, f90, alpha):
+    """dielectric_fresnel x D x V (1/sr; no cosine, no light): the extension's specular term
+    of one light, for unit n, v, l above the surface (last axis 3)."""
+    n, v, l = _f(n), _f(v), _f(l)
+    h = l + v
+    h = h / np.linalg.norm(h, axis=-1, keepdims=True)
+    NdotL, NdotV = np.sum(n * l, -1), np.sum(n * v, -1)
+    NdotH, VdotH = np.sum(n * h, -1), np.sum(v * h, -1)
+    F = dielectric_fresnel(f0, np.broadcast_to(_f(f90), NdotL.shape), VdotH)
+    return F * (_ggx_D(NdotH, alpha) * _ggx_V(NdotL, NdotV, alpha))[..., None]
+
+
+def environment_albedo(NdotV, alpha, f0, f90):
+    """E = F0 A + F90 B: the lobe's directional albedo at each NdotV (a float64 quadrature of
+    the integral, directional_albedo.split_sum_terms), RGB on the last axis."""
+    ab = directional_albedo.split_sum_terms_grid(NdotV, alpha)
+    return _f(f0) * ab[..., 0:1] + _f(f90)[..., None] * ab[..., 1:2]

@@ -1,0 +1,66 @@
+"""KHR_materials_specular mapped by the glTF importer (gltf/materials.py) as the extension
+defines it, against reference/specular_extension.py: every material of Khronos' SpecularTest
+(corpus/gltf/khronos) and a few written here."""
+
+import json
+import struct
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pbrlab.gltf import load_gltf
+from pbrlab.reference import specular_extension as ext
+
+CORPUS = Path(__file__).resolve().parents[2] / "corpus" / "gltf" / "khronos"
+
+
+def _glb_json(path: Path) -> dict:
+    data = path.read_bytes()
+    length, kind = struct.unpack_from("<II", data, 12)
+    assert kind == 0x4E4F534A  # "JSON"
+    return json.loads(data[20:20 + length])
+
+
+def test_specular_tests_materials_map_to_the_extensions_f0_and_f90():
+    path = CORPUS / "SpecularTest" / "SpecularTest.glb"
+    doc = _glb_json(path)
+    result = load_gltf(path, size=(32, 32), emit_warnings=False)
+    by_name = {m.name: m for m in result.scene.materials.values()}
+    checked = 0
+    for spec in doc["materials"]:
+        extension = spec.get("extensions", {}).get("KHR_materials_specular")
+        if extension is None or spec.get("pbrMetallicRoughness", {}).get("metallicFactor", 1.0) != 0.0:
+            continue
+        ior = spec.get("extensions", {}).get("KHR_materials_ior", {}).get("ior", 1.5)
+        strength = extension.get("specularFactor", 1.0)
+        colour = extension.get("specularColorFactor", [1.0, 1.0, 1.0])
+        m = by_name[spec["name"]]
+        assert m.workflow == "specular"
+        np.testing.assert_allclose(m.specular, ext.dielectric_f0(ior, colour, strength), rtol=1e-15, atol=0)
+        assert m.specular_f90 == ext.dielectric_f90(strength)
+        checked += 1
+    assert checked >= 10, checked  # SpecularTest's factor, texture and colour rows
+
+
+@pytest.mark.parametrize("extensions, f0, f90", [
+    ({"KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [50, 0, 0.5]}},
+     [0.5, 0.0, 0.01], 0.5),                       # the clamp before the strength
+    ({"KHR_materials_specular": {"specularColorFactor": [0, 0, 0]}}, [0, 0, 0], 1.0),  # black, rim-lit
+    ({"KHR_materials_ior": {"ior": 1.2}}, [((1.2 - 1) / 2.2) ** 2] * 3, None),  # IOR alone: F90 from F0
+])
+def test_a_dielectrics_specular_extension_sets_f0_and_f90(tmp_path, extensions, f0, f90):
+    doc = {"asset": {"version": "2.0"}, "materials": [
+        {"name": "m", "pbrMetallicRoughness": {"metallicFactor": 0.0}, "extensions": extensions}],
+        "extensionsUsed": list(extensions),
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,"
+                     "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+        "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}
+    (tmp_path / "m.gltf").write_text(json.dumps(doc))
+    material = next(iter(load_gltf(tmp_path / "m.gltf", size=(8, 8), emit_warnings=False).scene.materials.values()))
+    np.testing.assert_allclose(material.specular, f0, rtol=1e-12, atol=1e-15)
+    assert material.specular_f90 == f90
