@@ -125,7 +125,7 @@ VARIANT_DEPENDENT = {
     "pbr_encode_final_color", "pbr_lighting_anisotropic", "pbr_lighting_anisotropic_dfg",
     "pbr_anisotropic_reflection_normal", "pbr_prepare_surface_dfg", "pbr_prepare_surface",
     "pbr_lighting_standard_light", "pbr_lighting_standard_add_environment", "pbr_lighting_anisotropic_light",
-    # the explicit F90's (KHR_materials_specular) F, its lobe and its whole lighting (the batch holds 32)
+    # the explicit F90's (KHR_materials_specular) F, its lobe and its whole lighting
     "pbr_specular_F_f90", "pbr_shade_punctual_f90", "pbr_lighting_standard_f90_dfg",
 }
 
