@@ -15,7 +15,6 @@ from .guards import FLT_MIN, HALF_MAX, MIN_HALF_VECTOR_LENGTH_SQUARED, MIN_NDOT_
 # Edge constants, shared with glsl/pbr/shading/dispatch.glsl (tested equal).
 MIN_PERCEPTUAL_ROUGHNESS = 0.045          # PBR_MIN_PERCEPTUAL_ROUGHNESS (Filament)
 MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP = 0.089  # PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP (Filament mobile)
-MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP = 2.0 ** -14  # PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
 
 # Selector values in #define order (PBR_SPECULAR_D_GGX = 1, ...; every family counts from 1).
 SPECULAR_D = ("GGX", "BECKMANN", "BLINN_PHONG")
@@ -33,9 +32,6 @@ QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
                                     "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
 # (HALF_MAX in LOW only where floats may be 16-bit, PBR_HALF_ARITHMETIC: not in float32 GLSL)
 QUALITY_MAX_SPECULAR_LOBE = {"LOW": np.inf, "MEDIUM": np.inf, "HIGH": np.inf}
-QUALITY_MIN_HALF_VECTOR_LENGTH_SQUARED = {"LOW": MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP,
-                                          "MEDIUM": MIN_HALF_VECTOR_LENGTH_SQUARED,
-                                          "HIGH": MIN_HALF_VECTOR_LENGTH_SQUARED}
 
 
 def _variants(specular_d, specular_v, specular_f, diffuse, quality):

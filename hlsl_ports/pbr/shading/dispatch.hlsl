@@ -9,8 +9,7 @@
 //           float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoughness)
 //           float pbr_specular_lobe_limit(float DV)  (the tier's cap on D · V)
 //           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
-//           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP, PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS,
-//           PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED and the selector values below.
+//           PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the selector values below.
 // Include:  "pbr/shading/dispatch.hlsl" (path relative to hlsl_ports/)
 // Config macros read: (each has a default, set with #ifndef below)
 //   PBR_QUALITY     PBR_QUALITY_HIGH (default, the exact model) | PBR_QUALITY_MEDIUM
@@ -124,12 +123,6 @@
 // D's peak 1/(π alpha²) = 5073 fits half (max 65504) with a 12x margin. Measured cost and
 // the half-precision study: glsl/README.md. Shared with reference/shading.py.
 #define PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP 0.089
-// The LOW tier's l = -v threshold on |l + v|²: 2^-14, half's smallest normal. The HIGH
-// value 1e-10 is 0 in half, so |l + v|² = 0 would reach inversesqrt(0). Cost: LOW drops the
-// specular lobe where |l + v| < 2^-7, i.e. l within 0.45° of -v (a back-facing view), and
-// mirror configurations within 0.22° of the horizon (NdotL < 3.9e-3), where a half h would
-// be built from a denormal-length vector anyway. Shared with reference/shading.py.
-#define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP 6.103515625e-5
 
 // Quality tiers -> selector defaults and tier guards: the only place tiers are
 // interpreted. An explicit selector always wins over the tier. Each tier is GGX D, Schlick F
@@ -161,7 +154,6 @@
 #  define PBR_SPECULAR_F PBR_SPECULAR_F_F0
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
-#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED_MEDIUMP
 #elif PBR_QUALITY == PBR_QUALITY_MEDIUM
 #  ifndef PBR_UNITY_BRDF
 #  define PBR_UNITY_BRDF PBR_UNITY_BRDF_2
@@ -170,13 +162,11 @@
 #  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
-#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
 #elif PBR_QUALITY == PBR_QUALITY_HIGH
 #  ifndef PBR_UNITY_BRDF
 #  define PBR_UNITY_BRDF PBR_UNITY_BRDF_1
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
-#  define PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED PBR_MIN_HALF_VECTOR_LENGTH_SQUARED
 #else
 #  error "PBR_QUALITY: unknown value"
 #endif
@@ -229,9 +219,10 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 }
 
 // D · V of the selected terms, from any positive multiple h of the half vector (pbr_brdf_standard
-// passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² in
-// [PBR_TIER_MIN_HALF_VECTOR_LENGTH_SQUARED, 4]. n·h is negative for an h below the surface,
-// which a view below the horizon gives; pbr_brdf_standard then sets the lobe to 0 (χ+), and
+// passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² in [2^-100, 4] (where
+// pbr_brdf_standard keeps the lobe, n·(l + v) >= PBR_MIN_NDOT_HALF_SUM in every tier). n·h is
+// negative for an h below the surface, which a view below the horizon gives;
+// pbr_brdf_standard then sets the lobe to 0 (χ+), and
 // the value here only has to be finite: GGX is even in n·h (its denominator (1 - c²) + c²
 // alpha² >= alpha² for unit h) and is evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
 // clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
