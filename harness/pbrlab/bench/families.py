@@ -339,7 +339,7 @@ _LAYER_DERIVED = _TIER_DERIVED + (
 _LAYER_F0 = (0.04, 0.04, 0.04)
 
 LAYERS = Family(
-    name="layers", title="Layer lobes (clear coat, sheen, anisotropy, iridescence) beside the base lobe",
+    name="layers", title="Layer lobes (explicit F90, clear coat, sheen, anisotropy, iridescence) beside the base lobe",
     inputs=(("NdotL", 0.01, 1.0), ("NdotV", 0.01, 1.0), ("phi", 0.0, np.pi), ("r", 0.0, 1.0)),
     derived=_LAYER_DERIVED,
     reference=_tier_ref("HIGH"),
@@ -350,6 +350,11 @@ LAYERS = Family(
     variants=(
         Variant("base", _TIER_EXPR, "pbr_brdf_standard (HIGH): what every layer adds to",
                 self_reference=_tier_ref("HIGH")),
+        Variant("specular_f90", f"pbr_brdf_standard_f90(n, v, l, vec3{_TIER_DIFFUSE}, vec3{_TIER_F0}, 0.5, r)",
+                "the base lobe with KHR_materials_specular's explicit F90 (0.5 here) in place of F90 from F0",
+                self_reference=lambda d: shading.brdf_standard(
+                    d["n"], d["v"], d["l"], np.array(_TIER_DIFFUSE), np.array(_TIER_F0), d["r"], quality="HIGH",
+                    f90=np.full(np.shape(d["r"]), 0.5))),
         Variant("clearcoat", "pbr_clearcoat_punctual(n, v, l, vec3(1.0), r)",
                 "KHR_materials_clearcoat's lobe (pbr/shading/clearcoat.glsl)",
                 self_reference=lambda d: clearcoat.clearcoat_punctual(d["n"], d["v"], d["l"], np.ones(3), d["r"])),
