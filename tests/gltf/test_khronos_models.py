@@ -158,8 +158,8 @@ def test_specular_test_agrees_once_the_viewers_environment_fresnel_is_applied(sk
     silhouettes and from the texture edges the prediction reads by nearest texel (the label's
     letters, the textured spheres' stripes: 9,124 pixels).
     Measured on 32,595 pixels (384x256): uncorrected 0.1038 over 4 codes (max 28), mean 1.060
-    codes (mean 1.80 on the spheres, pbrlab darker, by 2.9 codes on the white and 3.3 on the
-    yellow colour rows, at the rims); predicted 0 over 4 codes (max 2), mean 0.030 (spheres:
+    codes (mean 1.80 on the spheres, pbrlab darker at the rims: a sphere's mean up to 2.9 codes
+    on the white colour row, 3.3 on the yellow one); predicted 0 over 4 codes (max 2), mean 0.030 (spheres:
     19,067 pixels, mean 0.041; the label 0.014, its roughness 0.8 and near-white or black
     albedo making its difference small). Asked: the agreement check's own tolerance (4 codes on
     at most 0.8 %, mean 0.75 codes), and on the spheres SPHERES_MAX_*. Control: uncorrected
