@@ -241,17 +241,31 @@ def transmitted_fraction(scene, material, n, v) -> np.ndarray:
         energy_compensated=scene.render.energy_compensation)
 
 
-def environment_specular_albedo(scene, material, n, v) -> np.ndarray:
-    """[..., 3] float64: the fraction of a constant environment the base reflects
-    specularly at normals n, views v (the split sum's f0 A + B, times the energy compensation
-    where the scene applies it), as render_scene_cpu weighs the environment; a metallic 0
-    base's diffuse and transmission share the rest."""
+def environment_reflected(scene, material, n, v) -> np.ndarray:
+    """[..., 3] float64: what the scene's constant environment adds off ``material``'s base at
+    normals n, views v, as render_scene_cpu adds it: the coupled diffuse (the transmission's
+    share taken out) times the SH irradiance / pi and occlusion, plus the split sum (f0 A +
+    F90 B, the material's explicit F90 where it has one, times the energy compensation where
+    the scene applies it, and the specular occlusion). A base without coat, sheen, film or
+    anisotropy, whose light through the surface (transmitted_fraction) is counted apart."""
+    if material.clearcoat > 0.0 or max(material.sheen_color) > 0.0 or material.iridescence > 0.0 \
+            or material.anisotropy_strength > 0.0:
+        raise PbrlabError("environment_reflected: a base without a coat, sheen, film or anisotropy")
     quality = scene.render.quality.upper()
     n, v = np.asarray(n, float).reshape(-1, 3), np.asarray(v, float).reshape(-1, 3)
-    _, f0, _, rough = _surface(material)
+    diffuse, f0, coat_f0, rough = _surface(material)
     r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
-    dfg = ref_albedo.split_sum_terms_at_alpha(np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV), r * r)
-    return ref_surface.indirect_specular_albedo(np.broadcast_to(f0, n.shape), dfg, scene.render.energy_compensation)
+    NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+    dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
+    compensated, f90 = scene.render.energy_compensation, material.specular_f90
+    diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
+    coupled = ref_surface.coupled_diffuse_color(
+        diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, f90))
+    irradiance = np.maximum(sh_irradiance(environment_sh(scene.environment), n), 0)
+    prefiltered = np.broadcast_to(scene.environment.color * scene.environment.intensity, n.shape)
+    return coupled / np.pi * irradiance * material.occlusion + ref_surface.indirect_specular_split_sum(
+        prefiltered, np.broadcast_to(f0, n.shape), r, NdotV, material.occlusion, dfg,
+        energy_compensated=compensated, f90=f90)
 
 
 def transmitted_light(scene, material, n, v, p) -> np.ndarray:

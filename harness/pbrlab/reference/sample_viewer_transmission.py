@@ -21,16 +21,18 @@ roughness²), a BTDF, so light from the side of the surface opposite the view, w
   thickness · scale · refract(-v, n, 1/ior)) and attenuated over that ray;
 * image-based (ibl_transmission): the copy behind the surface is weighted by 1 - (F0 A + B)
   (getIBLVolumeRefraction) and then by 1 - E_ms once more (the base's mix with the specular
-  by getIBLGGXFresnel, its multiple-scattering Fresnel), the Fresnel twice where pbrlab
+  by getIBLGGXFresnel, its multiple-scattering Fresnel: reference/sample_viewer_specular.py),
+  the Fresnel twice where pbrlab
   weighs once (rho (1 - E)).
 A, B: the split-sum terms at the viewer's (n·v, perceptual roughness), here the float64
-integral of reference/directional_albedo.py (the viewer reads its own GGX table).
+integral of reference/directional_albedo.py where the viewer reads its own GGX table
+(sample_viewer_specular.split_sum_terms).
 """
 
 import numpy as np
 
 from . import brdf
-from . import directional_albedo
+from .sample_viewer_specular import ibl_ggx_fresnel, split_sum_terms
 
 PI = np.pi
 
@@ -109,17 +111,6 @@ def punctual_transmission(n, v, point_to_light, intensity, base_color, perceptua
     return (1.0 - fresnel)[..., None] * _f(intensity) * lobe * attenuation
 
 
-def multiple_scattering_fresnel(NdotV, perceptual_roughness, f0):
-    """ibl.glsl getIBLGGXFresnel (specular weight 1): Fdez-Agüera 2019's single plus multiple
-    scattering, with k_S = f0 + (max(1 - r, f0) - f0)(1 - n·v)^5 (roughness-dependent Fresnel)."""
-    A, B = np.moveaxis(directional_albedo.split_sum_terms_at_alpha(NdotV, perceptual_roughness ** 2), -1, 0)
-    k_s = f0 + (max(1.0 - perceptual_roughness, f0) - f0) * (1.0 - _f(NdotV)) ** 5
-    fss_ess = k_s * A + B
-    e_ms = 1.0 - (A + B)
-    f_avg = f0 + (1.0 - f0) / 21.0
-    return fss_ess + e_ms * fss_ess * f_avg / (1.0 - f_avg * e_ms)
-
-
 def ibl_transmission(n, v, behind, base_color, perceptual_roughness, ior, thickness=0.0, scale=1.0,
                      attenuation_color=(1.0, 1.0, 1.0), attenuation_distance=np.inf):
     """What the radiance seen through the surface (``behind``, the viewer's copy there)
@@ -127,8 +118,8 @@ def ibl_transmission(n, v, behind, base_color, perceptual_roughness, ior, thickn
     behind, then weighted by 1 - E_ms in mix(f_diffuse, f_specular, getIBLGGXFresnel)."""
     NdotV = np.clip(_dot(_normalize(n), _normalize(v)), 0.0, 1.0)
     f0 = dielectric_f0(ior)
-    A, B = np.moveaxis(directional_albedo.split_sum_terms_at_alpha(NdotV, perceptual_roughness ** 2), -1, 0)
+    A, B = np.moveaxis(split_sum_terms(NdotV, perceptual_roughness), -1, 0)
     ray = transmission_ray(n, v, thickness, ior, scale)
     attenuation = _f(attenuation_color) ** (np.linalg.norm(ray, axis=-1, keepdims=True) / attenuation_distance)
     refraction = (1.0 - (f0 * A + B))[..., None] * attenuation * _f(base_color) * _f(behind)
-    return (1.0 - multiple_scattering_fresnel(NdotV, perceptual_roughness, f0))[..., None] * refraction
+    return (1.0 - ibl_ggx_fresnel(NdotV, perceptual_roughness, f0))[..., None] * refraction
