@@ -109,6 +109,8 @@ void pbr_brdf_standard_terms(float3 n, float3 v, float3 l, float perceptualRough
     float nDotHalfSum = NdotL + nDotV;
     float3 halfRejection = halfSum - nDotHalfSum * n;
 
+    // π·Fd and π·D·V: the constant products fold (π · (1/π) is 1.0 in float32, and the fused
+    // quotients' (0.5/π)·π is 0.5: measured, no RDNA3 instruction against dropping D's 1/π).
     piFd = PBR_PI * pbr_diffuse_Fd(NdotV, NdotL, LdotH, roughness);
     piDV = PBR_PI * pbr_specular_lobe_limit(pbr_specular_DV(
         nDotHalfSum, dot(halfRejection, halfRejection), halfLength2, NdotL, NdotV, LdotH, alpha));
