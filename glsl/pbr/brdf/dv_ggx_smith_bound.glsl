@@ -21,7 +21,9 @@
 // tier's floor alpha² = 0.089⁴ = 6.3e-5, 2.9 % at the HIGH floor: use it with the LOW floor),
 // and V from n·(l + v), which the caller has (no add, no clamp of NdotV).
 // Preconditions (pbr_brdf_standard establishes them): alpha >= PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP²,
-// h = l + v with l, v unit, h2 = |h|² in [2^-100, 4], nDotH = n·h >= PBR_MIN_NDOT_HALF_SUM.
+// h = l + v with l, v unit, h2 = |h|² in [2^-100, 4], nDotH = n·h >= PBR_MIN_NDOT_HALF_SUM
+// (below the horizon, where NdotL = 0 stands in n·(l + v), h2 may be shorter than nDotH²:
+// cos² is saturated, so the value stays finite; elsewhere the caller does not select it).
 // nCrossH2 is not read either. Range: dn >= alpha², D · V <= 1 / (2π alpha² n·(l + v)) <= 2.8e18.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_DV_GGX_SMITH_BOUND_GLSL

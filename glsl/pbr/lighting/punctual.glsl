@@ -14,8 +14,9 @@
 // times too bright"). A white Lambert surface (diffuseColor 1, f0 0) lit by
 // lightRadiance = 1 along n returns exactly 1 (tested). lightRadiance is the light's
 // colour times intensity, already attenuated (distance, spot cone, shadow) by the caller;
-// l points from the surface to the light. NdotL <= 0 returns 0; l = -v returns the
-// diffuse part only (see pbr/shading/standard.glsl for every edge).
+// l points from the surface to the light. NdotL <= 0 returns 0 (max(0, NdotL) times the
+// BRDF's finite value there); l = -v returns the diffuse part only (see
+// pbr/shading/standard.glsl for every edge).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_PUNCTUAL_GLSL
 #define PBR_LIGHTING_PUNCTUAL_GLSL

@@ -28,8 +28,9 @@
 // environment's prefiltered radiance, which the caller reads along reflect(-v, bent) with
 // bent = pbr_anisotropic_reflection_normal (the Khronos sample viewer's bent normal, a
 // heuristic measured at up to +205 % against the exact integral: pbr/shading/anisotropy.glsl).
-// Direct light: lightRadiance · (diffuse · Fd + D · V · F) · π · NdotL, summed in
-// pbr_shade_punctual's order, so the diffuse term is bit for bit pbr_lighting_standard's.
+// Direct light: lightRadiance · (diffuse · Fd + D · V · F) · π · NdotL, pbr_shade_punctual's
+// formula, so the diffuse term is pbr_lighting_standard's to float32 rounding (pbr_brdf_standard
+// forms the sum with 1/π factored out, pbr/shading/standard.glsl; here Fd is multiplied in).
 // Once per pixel, as pbr_lighting_standard (issue 25): pbr_prepare_surface[_dfg] (the table,
 // the coupling, the environment's albedo) and pbr_anisotropic_frame (the tangent frame)
 // before the loop over lights, pbr_lighting_anisotropic_light per light,
@@ -107,8 +108,8 @@ pbr_AnisotropicFrame pbr_anisotropic_frame(vec3 n, pbr_Anisotropy anisotropy) {
     return frame;
 }
 
-// One punctual light: pbr_shade_punctual with pbr_brdf_standard's diffuse half (same
-// operations, same order) and the anisotropic specular lobe.
+// One punctual light: pbr_shade_punctual with pbr_brdf_standard's diffuse half (the same
+// value, to float32 rounding) and the anisotropic specular lobe.
 vec3 pbr_lighting_anisotropic_light(pbr_PreparedSurface s, pbr_AnisotropicFrame frame, pbr_Light light) {
     vec3 l = light.dir;
     float nDotL = dot(s.n, l);

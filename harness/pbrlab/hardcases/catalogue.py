@@ -47,6 +47,8 @@ ENCODED = Bound("0 <= sRGB <= 1", 0.0, 1.0)
 TONEMAPPED = Bound("0 <= tonemapped <= 1", 0.0, 1.0)
 # |n x h|² <= |n|²|h|² = 1 for unit vectors; float32 unit vectors are unit within a few ulps
 ONE_MINUS_DOT2 = Bound("0 <= 1 - (n.h)^2 <= 1 (+4 ulp)", 0.0, 1.0 + 4 * 2.0 ** -23)
+# |l + v|² + 2^-126 of unit l, v: never 0 (its job), at most 4 within a few ulps
+LENGTH2_NONZERO = Bound("2^-126 <= |l + v|^2 + 2^-126 <= 4 (+8 ulp)", 2.0 ** -126, 4.0 * (1.0 + 8 * 2.0 ** -23))
 # |v| of a normalised float32 vector: 1 within a few ulps (or exactly 0, see pbr_safe_normalize)
 UNIT_OR_ZERO = Bound("each |component| <= 1 (+4 ulp)", -1.0 - 4 * 2.0 ** -23, 1.0 + 4 * 2.0 ** -23)
 
@@ -118,20 +120,24 @@ def _f(name, args, bound, call=None):
 
 
 # The D · V arguments from directions, as pbr_brdf_standard makes them (h = l + v unnormalised,
-# the cosines and roughness clamped): the preconditions of
-# the fused quotients. Where l + v has no direction (l = -v), pbr_brdf_standard does not use
-# D · V; here h = n stands in, so every call meets the preconditions. lambdaSum is the exact
-# lambdas' smallest sum, NdotV alpha (NdotL -> 0).
+# |h|² + 2^-126, n·h = saturate(n·l) + n·v and |n × h|² as the rejection's squared length, the
+# cosines and roughness clamped): the preconditions of the fused quotients. Where
+# pbr_brdf_standard does not select the lobe (n·(l + v) < 2^-50: h below the surface, l = -v),
+# h = n stands in. lambdaSum is the exact lambdas' smallest sum, NdotV alpha (NdotL -> 0).
 def dv_arguments(parts: str, low: bool = False) -> str:
     """The call's arguments, in order, from ``parts`` (space-separated names of
     ``_DV_PARTS``), for the HIGH/MEDIUM guards or (``low``) the LOW tier's."""
     floor = "PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP" if low else "PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS"
-    # pbr_brdf_standard's selection (issue 25): the lobe where NdotL and n·(l + v) reach
-    # PBR_MIN_NDOT_HALF_SUM, so h = l + v has a direction above the surface
-    h = "(min(dot(n, l), dot(n, l + v)) >= PBR_MIN_NDOT_HALF_SUM ? l + v : n)"
+    # pbr_brdf_standard's selection (issue 25): the lobe where n·(l + v), with n·l saturated,
+    # reaches PBR_MIN_NDOT_HALF_SUM
+    n_dot_sum = "(clamp(dot(n, l), 0.0, 1.0) + dot(n, v))"
+    selected = f"({n_dot_sum} >= PBR_MIN_NDOT_HALF_SUM)"
+    h = f"({selected} ? l + v : n)"
+    n_dot_h = f"({selected} ? {n_dot_sum} : 1.0)"
+    rejection = f"({h} - {n_dot_h} * n)"
     alpha = f"pbr_alpha_from_perceptual_roughness(clamp(roughness, {floor}, 1.0))"
-    values = {"nDotH": f"dot(n, {h})", "nCrossH2": f"dot(cross(n, {h}), cross(n, {h}))",
-              "h2": f"min(dot({h}, {h}), 4.0)", "NdotL": "max(dot(n, l), PBR_MIN_NDOTV)",
+    values = {"nDotH": n_dot_h, "nCrossH2": f"dot({rejection}, {rejection})",
+              "h2": f"pbr_length2_nonzero({h})", "NdotL": "clamp(dot(n, l), 0.0, 1.0)",
               "NdotV": "clamp(dot(n, v), PBR_MIN_NDOTV, 1.0)", "VdotH": "0.5 * length(l + v)",
               "alpha": alpha, "lambdaSum": f"clamp(dot(n, v), PBR_MIN_NDOTV, 1.0) * {alpha}"}
     return ", ".join(values[name] for name in parts.split())
@@ -157,6 +163,7 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_sanitize", "c:hdr3", _unit("sanitised"), "pbr_sanitize(c, 1.0)"),
     _f("pbr_safe_normalize", "d:coordinate3", UNIT_OR_ZERO),
     _f("pbr_one_minus_dot2", "n:dir h:dir", ONE_MINUS_DOT2),
+    _f("pbr_length2_nonzero", "l:dir v:dir", LENGTH2_NONZERO, call="pbr_length2_nonzero(l + v)"),
     # color/
     _f("pbr_srgb_to_linear", "c:hdr3", ENCODED),
     _f("pbr_linear_to_srgb", "c:hdr3", ENCODED),
@@ -442,10 +449,15 @@ _GEOMETRY_CASES = (
      UP, (-0.6, 0.0, -0.8), (0.6, 0.0, 0.8), "diffuse"),
     ("V ≈ -L", "|l + v|² = 4e-10, n·(l + v) = 2e-5: D · V from l + v of length 2e-5 (a direction above "
      "the surface, so a lobe), VdotH = 1e-5", UP, (-0.6, 0.0, -0.8 + 2e-5), (0.6, 0.0, 0.8), None),
-    ("NdotL = 0", "light exactly at the horizon: decided 0", UP, (0.6, 0.0, 0.8), (1.0, 0.0, 0.0), 0.0),
-    ("NdotL < 0", "light behind the surface: decided 0", UP, (0.6, 0.0, 0.8), (0.6, 0.0, -0.8), 0.0),
+    ("NdotL = 0", "light exactly at the horizon: the BRDF at NdotL = 0, no light", UP, (0.6, 0.0, 0.8),
+     (1.0, 0.0, 0.0), "unlit"),
+    ("NdotL < 0", "light behind the surface: the BRDF at NdotL = 0 (saturated), no light", UP,
+     (0.6, 0.0, 0.8), (0.6, 0.0, -0.8), "unlit"),
+    ("V = -L, light behind", "l = -v with the view above the horizon: l + v = 0 exactly while n·l is taken "
+     "as 0, so n·(l + v) = n·v selects the lobe; |l + v|² + 2^-126 (pbr_length2_nonzero) keeps 1/|l + v|² "
+     "finite (without it: 0 · Inf, NaN); no light", UP, (0.6, 0.0, 0.8), (-0.6, 0.0, -0.8), "unlit"),
     ("light at the shaded point", "l = pbr_safe_normalize(0) = 0 (a point light touching the surface): "
-     "no direction, decided 0", UP, (0.6, 0.0, 0.8), (0.0, 0.0, 0.0), 0.0),
+     "no direction, NdotL = 0: no light", UP, (0.6, 0.0, 0.8), (0.0, 0.0, 0.0), "unlit"),
     ("zero view vector", "v = pbr_safe_normalize(0) (camera at the point): NdotV clamps, finite",
      UP, (0.0, 0.0, 0.0), (0.6, 0.0, 0.8), None),
     ("NdotV = 0", "grazing view: V divides by NdotV", UP, (1.0, 0.0, 0.0), (0.6, 0.0, 0.8), None),
@@ -538,6 +550,8 @@ def _shading_cases(function: Function) -> list[Case]:
     # checked exactly at each tier and diffuse variant, by bound for the other selectors.
     exact_here = function.variant.startswith(("quality=", "diffuse="))
     for name, why, n, v, l, exact in _GEOMETRY_CASES:
+        if exact == "unlit":  # pbr_shade_punctual: exactly no light; the BRDF: its float64 model
+            exact = 0.0 if "radiance" in function.expression else "follows"
         if exact in ("diffuse", "follows") and not exact_here:
             exact = None
         inputs = dict(base, n=n, v=v, l=l, roughness=0.3)
@@ -654,6 +668,9 @@ DECIDED = {
                                   "1 - E < 0, decided 0", {"sheenColor": (1.0, 1.0, 1.0), "E": 2.94}, 0.0)],
     "pbr_pow_safe": [("0^0", "undefined in GLSL; decided 1", {"x": 0.0, "s": 0.0}, 1.0),
                      ("0^s", "pow(0, s) = exp2(s · log2 0); decided 0, the limit", {"x": 0.0, "s": 2.0}, 0.0)],
+    "pbr_length2_nonzero": [("l = -v", "l + v = 0 exactly: |l + v|² = 0, whose reciprocal pbr_brdf_standard "
+                             "takes; decided 2^-126", {"l": (0.6, 0.0, 0.8), "v": (-0.6, 0.0, -0.8)},
+                             "PBR_FLT_MIN")],
     "pbr_safe_normalize": [("zero vector", "no direction; decided the zero vector", {"d": (0.0, 0.0, 0.0)}, 0.0),
                            ("denormal vector", "GPUs may flush denormals, so its direction is not portable; "
                             "decided the zero vector on every GPU", {"d": (domains.DENORMAL, 0.0, 0.0)}, 0.0),

@@ -167,7 +167,7 @@ def sweep_inputs(function: catalogue.Function, count: int, seed: int) -> dict[st
     rng = np.random.default_rng(seed)
     out = {}
     if (function.name in ("pbr_brdf_standard", "pbr_shade_punctual", "pbr_brdf_standard_f90", "pbr_shade_punctual_f90",
-                          "pbr_clearcoat_punctual", *catalogue.DV_FUNCTIONS)
+                          "pbr_clearcoat_punctual", "pbr_length2_nonzero", *catalogue.DV_FUNCTIONS)
             or function.name.startswith("pbr_unity_brdf")):
         out.update(_shading_geometry(count))
     elif function.name in catalogue.TRANSMISSION_FUNCTIONS:

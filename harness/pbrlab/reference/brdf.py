@@ -73,6 +73,13 @@ def D_GGX_from_one_minus(NdotH, one_minus_NdotH2, alpha):
     return a2 / (PI * (_f(one_minus_NdotH2) + NdotH ** 2 * a2) ** 2)
 
 
+def D_GGX_from_sin2(sin2_theta_h, alpha):
+    """Walter et al. 2007 eq. 33 in sin²θh = 1 - NdotH²: NdotH²(alpha² - 1) + 1 =
+    alpha² + (1 - alpha²) sin²θh, a sum of non-negative terms (dv_ggx_smith_correlated.glsl)."""
+    a2 = _f(alpha) ** 2
+    return a2 / (PI * (a2 + (1.0 - a2) * _f(sin2_theta_h)) ** 2)
+
+
 def D_Beckmann(NdotH, alpha):
     """Walter et al. 2007 eq. 25; 0 at NdotH = 0 (the limit)."""
     NdotH, a2 = _f(NdotH), _f(alpha) ** 2

@@ -154,12 +154,16 @@ def _dot(a, b):
 def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_d="GGX",
                   specular_v=None, specular_f=None, diffuse="LAMBERT", quality="HIGH", f90=None):
     """pbr_brdf_standard: diffuse_color * Fd + D * V * F, with the same edges as the GLSL
-    (NdotL <= 0 -> 0; roughness clamp per tier; NdotV clamp; LdotH = |l+v|/2; l = -v -> no
-    specular; D · V capped at HALF_MAX in the LOW tier). ``f90``: pbr_brdf_standard_f90's
+    (NdotL saturated, and n·(l + v) = saturate(NdotL) + n·v: below the horizon the value at
+    NdotL = 0, finite, which the caller's max(0, NdotL) makes no light; roughness clamp per
+    tier; NdotV clamp; |l + v|² + 2^-126; LdotH = |l+v|/2; no lobe where n·(l + v) < 2^-50:
+    h below the surface (χ+, only from a view below the horizon) and l = -v; D · V capped at
+    HALF_MAX in the LOW tier). ``f90``: pbr_brdf_standard_f90's
     explicit grazing reflectance (shaped like the leading axes), None for F90 from F0.
 
-    An h below the surface (only from a view below the horizon) has no lobe (χ+). V's cosines are floored at MIN_NDOTV, except in the
-    fused GGX quotients of the tiers' V (dv_ggx_*.glsl), which take NdotL > 0 as it is."""
+    GGX's 1 - NdotH² is |(l + v) - n (n·(l + v))|² / |l + v|² (the GLSL's rejection form:
+    |n × ĥ|² for a lit light). V's cosines are floored at MIN_NDOTV, except in the fused GGX
+    quotients of the tiers' V (dv_ggx_*.glsl), which take NdotL as it is."""
     d_var, v_var, f_var, fd_var = _variants(specular_d, specular_v, specular_f, diffuse, quality)
     n, v, l, diffuse_color, f0 = (np.asarray(x, dtype=np.float64) for x in (n, v, l, diffuse_color, f0))
     shape = np.broadcast_shapes(n.shape, v.shape, l.shape, diffuse_color.shape, f0.shape,
@@ -168,44 +172,46 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     roughness = np.broadcast_to(clamp_perceptual_roughness(perceptual_roughness, quality), shape[:-1])
     alpha = remap.alpha_from_perceptual_roughness(roughness)
 
-    NdotL = _dot(n, l)
-    lit = NdotL >= FLT_MIN  # saturate(NdotL · 2^126): 1 for a normal float32 NdotL > 0 (GPUs flush denormals)
-    NdotL_safe = np.where(lit, NdotL, 1.0)
-    NdotV = np.clip(_dot(n, v), MIN_NDOTV, 1.0)
+    NdotL = np.clip(_dot(n, l), 0.0, 1.0)
+    n_dot_v = _dot(n, v)
+    NdotV = np.clip(n_dot_v, MIN_NDOTV, 1.0)
     half_sum = l + v
-    half_length2 = _dot(half_sum, half_sum)
+    half_length2 = _dot(half_sum, half_sum) + FLT_MIN  # pbr_length2_nonzero
     LdotH = 0.5 * np.sqrt(half_length2)
-    diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL_safe, LdotH, roughness, fd_var)[..., None]
+    diffuse_part = diffuse_color * diffuse_Fd(NdotV, NdotL, LdotH, roughness, fd_var)[..., None]
 
-    # l + v has a direction above the surface and the light is above it (guards.MIN_NDOT_HALF_SUM,
-    # every tier: min(NdotL, n·(l + v)) >= 2^-50)
-    has_half = np.minimum(NdotL, _dot(n, half_sum)) >= MIN_NDOT_HALF_SUM
-    h = half_sum / np.sqrt(np.where(has_half, half_length2, 1.0))[..., None]
-    n_dot_h = _dot(n, h)
+    # l + v has a direction above the surface (guards.MIN_NDOT_HALF_SUM, every tier)
+    n_dot_half_sum = NdotL + n_dot_v
+    has_half = n_dot_half_sum >= MIN_NDOT_HALF_SUM
+    rejection = half_sum - n_dot_half_sum[..., None] * n
+    sin2 = _dot(rejection, rejection) / half_length2
+    n_dot_h = n_dot_half_sum / np.sqrt(half_length2)
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        if d_var == "GGX":  # even in n·h: GGX at |n·h| (dispatch.glsl, pbr_specular_DV)
-            # 1 - NdotH² as |n × ĥ|², the GLSL's form: equal for a unit n, and for a float32 n
-            # (|n|² = 1 ± 1e-7) free of the cancellation that shifts 1 - (n·ĥ)² by 1e-7, which is
-            # 2 % of alpha² at the HIGH floor (4.1e-6) at the mirror
-            n_cross_h = np.cross(n, h)
-            D = brdf.D_GGX_from_one_minus(np.abs(n_dot_h), _dot(n_cross_h, n_cross_h), alpha)
+        if d_var == "GGX" and v_var == "SMITH_GGX_BOUND":  # LOW's lobe: 1 - saturate(NdotH²)
+            D = brdf.D_GGX_from_sin2(1.0 - np.clip(n_dot_h * n_dot_h, 0.0, 1.0), alpha)
+        elif d_var == "GGX":  # 1 - NdotH² from the rejection: no cancellation at the mirror
+            D = brdf.D_GGX_from_sin2(sin2, alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)
         if d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED":  # fused: NdotL as it is
-            V = brdf.V_SmithGGXCorrelated(NdotL_safe, NdotV, alpha)
+            # at NdotL = 0 (below the horizon) the limit of G2 / (4 NdotL NdotV): Λ(l) ~
+            # alpha / (2 NdotL) as NdotL -> 0 (Heitz 2014 eq. 72), so V -> 1 / (2 alpha NdotV)
+            lit = NdotL > 0.0
+            V = np.where(lit, brdf.V_SmithGGXCorrelated(np.where(lit, NdotL, 1.0), NdotV, alpha),
+                         0.5 / (NdotV * alpha))
         elif d_var == "GGX" and v_var == "SMITH_GGX_CORRELATED_FAST":
-            V = brdf.V_SmithGGXCorrelatedFast(NdotL_safe, NdotV, alpha)
+            V = brdf.V_SmithGGXCorrelatedFast(NdotL, NdotV, alpha)
         elif d_var == "GGX" and v_var == "SMITH_GGX_BOUND":  # fused: 0.5 / n·(l + v), n·v as it is
-            V = brdf.V_SmithGGXBound(NdotL_safe, _dot(n, v))
+            V = brdf.V_SmithGGXBound(NdotL, n_dot_v)
         else:
-            V = specular_V(NdotL_safe, NdotV, NdotH, VdotH, alpha, v_var)
+            V = specular_V(NdotL, NdotV, NdotH, VdotH, alpha, v_var)
     F = specular_F(f0, VdotH, f_var, None if f90 is None else np.broadcast_to(f90, shape[:-1]))
     lobe = np.minimum(D * V, QUALITY_MAX_SPECULAR_LOBE[quality])
     # χ+(n·h) (Walter et al. 2007 eq. 33): no lobe for h below the surface
-    specular_part = np.where((has_half & (n_dot_h > 0.0))[..., None], lobe[..., None] * F, 0.0)
-    return np.where(lit[..., None], diffuse_part + specular_part, 0.0)
+    specular_part = np.where(has_half[..., None], lobe[..., None] * F, 0.0)
+    return diffuse_part + specular_part
 
 
 def shade_punctual(n, v, l, light_radiance, diffuse_color, f0, perceptual_roughness, **variants):

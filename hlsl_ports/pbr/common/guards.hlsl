@@ -4,7 +4,8 @@
 // Provides: PBR_FLT_MIN, PBR_HALF_MAX, PBR_MIN_ALPHA, PBR_MIN_NDOTV, PBR_MIN_VDOTH,
 //           PBR_MIN_HALF_VECTOR_LENGTH_SQUARED, PBR_MIN_NDOT_HALF_SUM, PBR_SAFE_NORMALIZE_HUGE,
 //           pbr_pow_safe(float, float), pbr_sanitize(float|vec3, float hi),
-//           pbr_safe_normalize(vec3), pbr_one_minus_dot2(vec3, vec3).
+//           pbr_safe_normalize(vec3), pbr_one_minus_dot2(vec3, vec3),
+//           pbr_length2_nonzero(vec3).
 // Include:  "pbr/common/guards.hlsl" (path relative to hlsl_ports/)
 // Config macros read: none.
 //
@@ -58,7 +59,9 @@
 #define PBR_MIN_HALF_VECTOR_LENGTH_SQUARED 1e-10
 
 // Smallest n·(l + v) at which pbr_brdf_standard keeps the specular lobe: 2^-50 ≈ 8.9e-16,
-// the one test for "l + v has a direction above the surface". It implies |l + v|² >=
+// the one test for "l + v has a direction above the surface". For a lit light (n·l > 0;
+// below the horizon pbr_brdf_standard takes n·l as 0 and only needs a finite value, which
+// pbr_length2_nonzero gives) it implies |l + v|² >=
 // (n·(l + v))² >= 2^-100 ≈ 7.9e-31, a normal float32 whose reciprocal (1.3e30) is finite, so
 // the fused D · V quotients, which normalise by 1 / |l + v|² (dv_ggx_smith_correlated.hlsl),
 // see 1 - NdotH² and NdotH² of a unit h in [0, 1] however short l + v is. A grazing mirror
@@ -129,6 +132,17 @@ float3 pbr_safe_normalize(float3 v) {
 float pbr_one_minus_dot2(float3 a, float3 b) {
     float3 c = cross(a, b);
     return dot(a, b) > 0.0 ? dot(c, c) : 1.0;
+}
+
+// |x|² + PBR_FLT_MIN: a squared length that is never 0, so 1 / |x|² <= 2^126 stays finite
+// (pbr_brdf_standard: l = -v, where l + v = 0 exactly). Written as a chain of
+// multiply-adds that starts from PBR_FLT_MIN, so a compiler that contracts a * b + c (GLSL
+// 4.60 §4.7.1 allows it outside `precise`; RADV/ACO does) pays nothing for the floor: the
+// dot product's first multiply becomes a fused multiply-add. Cost in accuracy: for
+// |x|² >= 2^-100 the floor is below half an ulp of the result (2^-124), so it changes
+// nothing but the order of the roundings.
+float pbr_length2_nonzero(float3 x) {
+    return x.x * x.x + (x.y * x.y + (x.z * x.z + PBR_FLT_MIN));
 }
 
 #endif // PBR_COMMON_GUARDS_HLSL

@@ -219,18 +219,18 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 }
 
 // D · V of the selected terms, from any positive multiple h of the half vector (pbr_brdf_standard
-// passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² in [2^-100, 4] (where
-// pbr_brdf_standard keeps the lobe, n·(l + v) >= PBR_MIN_NDOT_HALF_SUM in every tier). n·h is
-// negative for an h below the surface, which a view below the horizon gives;
-// pbr_brdf_standard then sets the lobe to 0 (χ+), and
-// the value here only has to be finite: GGX is even in n·h (its denominator (1 - c²) + c²
-// alpha² >= alpha² for unit h) and is evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
+// passes l + v): nDotH = n·h, nCrossH2 = |n × h|², h2 = |h|² + 2^-126 in [2^-126, 4]
+// (pbr_length2_nonzero). n·h is negative for an h below the surface, which a view below the
+// horizon gives; pbr_brdf_standard then sets the lobe to 0 (χ+), and the value here only has
+// to be finite (so it is below the horizon, NdotL = 0, where nCrossH2 / h2 may exceed 1):
+// GGX is even in n·h (its denominator (1 - c²) + c² alpha² >= alpha² for unit h) and is
+// evaluated at |n·ĥ|; Beckmann and Blinn-Phong take n·ĥ
 // clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
 // quotient that needs no normalised h and none of the terms' own clamps: the
 // height-correlated Smith V (HIGH, pbr_DV_GGX_SmithCorrelated) and Hammon's fast form of it
 // (MEDIUM and LOW, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where floats may be
-// 16-bit, PBR_HALF_ARITHMETIC); their other preconditions are pbr_brdf_standard's: NdotL > 0, NdotV in
-// [PBR_MIN_NDOTV, 1], alpha from the tier's clamped roughness. Every other pair is the
+// 16-bit, PBR_HALF_ARITHMETIC); their other preconditions are pbr_brdf_standard's: NdotL in
+// [0, 1], NdotV in [PBR_MIN_NDOTV, 1], alpha from the tier's clamped roughness. Every other pair is the
 // product of the two dispatchers above, from the normalised h (each V term floors its
 // cosines at PBR_MIN_NDOTV itself).
 float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float NdotV,
