@@ -141,7 +141,8 @@ def _material(texture_slots, brdf_terms) -> dict:
     material["allOf"] = [
         # the workflow's own F0 field: metallic or specular, not the other's
         {"if": {"properties": {"workflow": {"const": "specular"}}, "required": ["workflow"]},
-         "then": {"properties": {"metallic": False}}, "else": {"properties": {"specular": False, "specular_f90": False}}},
+         "then": {"properties": {"metallic": False, "dielectric_specular": False}},
+         "else": {"properties": {"specular": False}}},
         # the default surface's slots only, unless a surface file declares its own samplers
         {"if": {"not": {"required": ["surface"]}},
          "then": {"properties": {"textures": {"propertyNames": {"enum": list(texture_slots)}}}}},
