@@ -343,7 +343,7 @@ SPECULAR_F90_TOKENS = ["u_specular_f90", "pbrlab_surf_specular_f90(IN,layers)",
                        "pbr_lighting_standard_f90(diffColor,specColor,f90,coatF0,coatF90"]
 # The metallic workflow's own dielectric F0's uniform and call sites: only where a material has one.
 DIELECTRIC_SPECULAR_TOKENS = ["u_dielectric_specular", "pbrlab_surf_dielectric_specular(IN,layers)",
-                              "coatF0=layers.DielectricSpecular"]
+                              "returnlayers.DielectricSpecular;"]
 # layer: (the material fields that turn it on, its tokens, tokens of the other layers its
 # program must still lack)
 BASE_LAYERS = {

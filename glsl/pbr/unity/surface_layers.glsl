@@ -93,7 +93,7 @@
 // linear RGB, KHR_materials_specular's dielectric_f0 = min(((ior - 1) / (ior + 1))² ·
 // specularColor, 1) · specular (KHR_materials_ior's ior); F0 = mix(DielectricSpecular, Albedo,
 // Metallic), the diffuse Albedo (1 - max(DielectricSpecular)) (1 - Metallic), and the coat over
-// the diffuse (coatF0) is DielectricSpecular (pbr_unity_metallic_setup; pbr/material/workflow.glsl).
+// the diffuse (coatF0) is DielectricSpecular (pbr_unity_dielectric_f0; pbr/material/workflow.glsl).
 // Its default 0.04 (unity_ColorSpaceDielectricSpec) gives LightingStandard's values; each channel
 // must not exceed SpecularF90 where both are written. Unity names the specular workflow's F0
 // Specular; the dielectric share's is pbrlab's name after it. With the layer off none of this is
@@ -230,31 +230,35 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
     return vec4(c, outputAlpha);
 }
 
-// The metallic workflow's setup of the LayersBase functions: Unity's DiffuseAndSpecularFromMetallic
-// (the dielectric's F0 0.04) or, where PBR_LAYERS_DIELECTRIC_SPECULAR, the same with the
-// surface's DielectricSpecular (pbr/material/workflow.glsl's _dielectric forms; oneMinusReflectivity
-// in OneMinusReflectivityFromMetallic's form, 1 - max(DielectricSpecular) for Unity's 1 - 0.04).
-// coatF0: the dielectric's F0, the coat over the diffuse (pbr_lighting_standard).
-vec3 pbr_unity_metallic_setup(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers, out vec3 specColor,
-                              out float oneMinusReflectivity, out vec3 coatF0) {
+// The F0 of the metallic workflow's dielectric share, the coat over its diffuse: Unity's 0.04
+// (unity_ColorSpaceDielectricSpec) or, where PBR_LAYERS_DIELECTRIC_SPECULAR, the surface's
+// DielectricSpecular. The one #if of the layer.
+vec3 pbr_unity_dielectric_f0(SurfaceOutputStandardLayers layers) {
 #if PBR_LAYERS_DIELECTRIC_SPECULAR
-    coatF0 = layers.DielectricSpecular;
-    specColor = pbr_f0_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
-    float oneMinusDielectricSpec = 1.0 - pbr_max3(coatF0);
-    oneMinusReflectivity = oneMinusDielectricSpec - s.Metallic * oneMinusDielectricSpec;
-    return pbr_diffuse_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    return layers.DielectricSpecular;
 #else
-    coatF0 = unity_ColorSpaceDielectricSpec.rgb;
-    return DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    return unity_ColorSpaceDielectricSpec.rgb;
 #endif
 }
 
+// Unity's OneMinusReflectivityFromMetallic with the dielectric's F0 for its 0.04:
+// (1 - max(dielectricF0)) - metallic (1 - max(dielectricF0)), in Unity's form (PreMultiplyAlpha
+// reads it).
+float pbr_unity_one_minus_reflectivity_from_metallic(float metallic, vec3 dielectricF0) {
+    float oneMinusDielectricSpec = 1.0 - pbr_max3(dielectricF0);
+    return oneMinusDielectricSpec - metallic * oneMinusDielectricSpec;
+}
+
+// LightingStandardLayersBase[Transmission]: the metallic workflow's setup, Unity's
+// DiffuseAndSpecularFromMetallic in its order (F0, oneMinusReflectivity, diffuse) with the
+// dielectric's F0 (pbr/material/workflow.glsl's _dielectric forms; at 0.04 the same values and,
+// measured, the same RDNA3 programs), then the base.
 vec4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers, vec3 viewDir,
                                 UnityGI gi) {
-    vec3 specColor;
-    float oneMinusReflectivity;
-    vec3 coatF0;
-    vec3 diffColor = pbr_unity_metallic_setup(s, layers, specColor, oneMinusReflectivity, coatF0);
+    vec3 coatF0 = pbr_unity_dielectric_f0(layers);
+    vec3 specColor = pbr_f0_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    float oneMinusReflectivity = pbr_unity_one_minus_reflectivity_from_metallic(s.Metallic, coatF0);
+    vec3 diffColor = pbr_diffuse_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
     return pbr_unity_lighting_layers_base(diffColor, specColor, coatF0,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
                                           viewDir, gi, layers, vec3(0.0, 0.0, 0.0),
@@ -263,10 +267,10 @@ vec4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLa
 
 vec4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
                                             vec3 viewDir, UnityGI gi, vec3 transmittedIndirect) {
-    vec3 specColor;
-    float oneMinusReflectivity;
-    vec3 coatF0;
-    vec3 diffColor = pbr_unity_metallic_setup(s, layers, specColor, oneMinusReflectivity, coatF0);
+    vec3 coatF0 = pbr_unity_dielectric_f0(layers);
+    vec3 specColor = pbr_f0_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    float oneMinusReflectivity = pbr_unity_one_minus_reflectivity_from_metallic(s.Metallic, coatF0);
+    vec3 diffColor = pbr_diffuse_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
     return pbr_unity_lighting_layers_base(diffColor, specColor, coatF0,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
                                           viewDir, gi, layers, transmittedIndirect,
