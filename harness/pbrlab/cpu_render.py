@@ -74,11 +74,13 @@ def _light_terms(light, p):
 
 def _surface(material):
     """(diffuse colour, f0, coat F0, perceptual roughness): the coat is the dielectric over
-    the diffuse (0.04 in the metallic workflow, the specular colour in the specular one)."""
+    the diffuse (the metallic workflow's dielectric F0, 0.04 unless the material gives its
+    dielectric_specular; the specular colour in the specular one)."""
     if material.workflow == "metallic":
-        diffuse = ref_material.diffuse_from_metallic(material.albedo, material.metallic)
-        f0 = ref_material.f0_from_metallic(material.albedo, material.metallic)
-        coat_f0 = np.full(3, ref_material.DIELECTRIC_F0)
+        coat_f0 = (np.full(3, ref_material.DIELECTRIC_F0) if material.dielectric_specular is None
+                   else np.asarray(material.dielectric_specular, float))
+        diffuse = ref_material.diffuse_from_metallic_dielectric(material.albedo, material.metallic, coat_f0)
+        f0 = ref_material.f0_from_metallic_dielectric(material.albedo, material.metallic, coat_f0)
     else:
         diffuse = ref_material.diffuse_from_specular(material.albedo, material.specular)
         f0 = coat_f0 = material.specular
@@ -168,7 +170,11 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
             coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
-        f90 = material.specular_f90  # an explicit F90 (the specular workflow's f0 = coat_f0), or None
+        # an explicit F90, or None: the coat's (the dielectric's) and the surface's, which the
+        # metallic workflow blends towards 1 (KHR_materials_specular: F90 = mix(f90, 1, metallic))
+        coat_f90 = f90 = material.specular_f90
+        if f90 is not None and material.workflow == "metallic":
+            f90 = ref_material.f90_from_metallic(coat_f90, material.metallic)
         transmitted = None
         if material.transmission > 0.0:  # part of the diffuse's weight passes through instead
             transmitted = (diffuse, dict(
@@ -178,7 +184,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                 energy_compensated=scene.render.energy_compensation))
             diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
-            diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f, f90))
+            diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
         direction = (_sphere_anisotropy_direction(n, material.anisotropy_rotation) if tangent is None
                      else _anisotropy_direction(n, tangent, material.anisotropy_rotation))
         for light in scene.lights:
@@ -202,7 +208,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
         if env_sh is not None:
             compensated = scene.render.energy_compensation
             indirect_diffuse = ref_surface.coupled_diffuse_color(
-                diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, f90))
+                diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, coat_f90))
             color += indirect_diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(

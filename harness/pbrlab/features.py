@@ -38,7 +38,7 @@ MAX_SPECIALISED_PROGRAMS = 32  # past this many distinct (material x scene) feat
                                # warn and render every material with the full program
 LIGHT_TYPES = ("directional", "point", "spot")
 # The layers beyond the Standard model, as MaterialFeatures fields (PBRLAB_<LAYER> defines)
-LAYERS = ("clearcoat", "sheen", "anisotropy", "iridescence", "transmission", "specular_f90")
+LAYERS = ("clearcoat", "sheen", "anisotropy", "iridescence", "transmission", "specular_f90", "dielectric_specular")
 
 
 @dataclass(frozen=True)
@@ -70,6 +70,7 @@ class MaterialFeatures:
     transmission: bool = False  # the diffuse partly replaced by transmission (factor > 0): its lobes,
                                 # the environment seen through, the volume's attenuation
     specular_f90: bool = False  # an explicit F90 (KHR_materials_specular's specularFactor), not F90 from F0
+    dielectric_specular: bool = False  # the metallic workflow's dielectric F0 is the material's, not 0.04
 
 
 @dataclass(frozen=True)
@@ -115,6 +116,7 @@ def material_features(material) -> MaterialFeatures:
         iridescence="iridescence" in layers,
         transmission="transmission" in layers,
         specular_f90="specular_f90" in layers,
+        dielectric_specular="dielectric_specular" in layers,
     )
 
 
@@ -150,7 +152,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
                      ("UNLIT", m.unlit), ("SHEEN", m.sheen),
                      ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence),
-                     ("TRANSMISSION", m.transmission), ("SPECULAR_F90", m.specular_f90)):
+                     ("TRANSMISSION", m.transmission), ("SPECULAR_F90", m.specular_f90),
+                     ("DIELECTRIC_SPECULAR", m.dielectric_specular)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

@@ -166,6 +166,8 @@ def _upload_material(program, material):
     _set(program, "u_transmission_ior", material.ior)
     if material.specular_f90 is not None:
         _set(program, "u_specular_f90", material.specular_f90)
+    if material.dielectric_specular is not None:
+        _set(program, "u_dielectric_specular", tuple(material.dielectric_specular))
     for slot, transform in material.texture_transform.items():
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 

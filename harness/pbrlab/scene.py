@@ -42,6 +42,7 @@ import numpy as np
 from . import json_input, meshes, surface_layers
 from .errors import SceneError
 from .reference import shading as _shading
+from .reference.material import DIELECTRIC_F0 as _DIELECTRIC_F0
 from .scene_fields import (ALPHA_MODES, BRDF_MODELS, CAMERA,  # noqa: F401 (re-exported)
                            DEFAULT_SURFACE_LAYER_KEYS, ENVIRONMENT, IRIDESCENCE_IOR_RANGE, LIGHT, MATERIAL,
                            PRIMITIVES, QUALITIES, RENDER, SPHERE, TONEMAPPERS, TRANSFORM, TRANSMISSION_IOR_RANGE,
@@ -171,8 +172,12 @@ class Material:
     attenuation_distance: float = math.inf
     ior: float = 1.5
     # An explicit F90 (KHR_materials_specular's specularFactor; pbr/unity/surface_layers.glsl's
-    # SpecularF90), specular workflow only: None is F90 from F0 (pbr_f90_from_f0)
+    # SpecularF90; the metallic workflow blends it towards 1 by metallic): None is F90 from F0
+    # (pbr_f90_from_f0)
     specular_f90: float | None = None
+    # The metallic workflow's dielectric F0 (KHR_materials_ior / _specular on a metallic
+    # material; pbr/unity/surface_layers.glsl's DielectricSpecular), linear RGB: None is 0.04
+    dielectric_specular: np.ndarray | None = None
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
     unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
@@ -440,12 +445,22 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     if m.surface is not None and r.has("specular_f90"):
         r.fail("the explicit F90 belongs to the default surface; a surface file writes its own output "
                "(SurfaceOutputStandardLayers.SpecularF90; remove `specular_f90`)", "specular_f90")
+    if r.has("dielectric_specular"):
+        if m.surface is not None:
+            r.fail("the dielectric F0 belongs to the default surface; a surface file writes its own output "
+                   "(SurfaceOutputStandardLayers.DielectricSpecular; remove `dielectric_specular`)",
+                   "dielectric_specular")
+        if m.workflow != "metallic":
+            r.fail("belongs to the metallic workflow (the F0 of its dielectric share); the specular workflow's "
+                   "F0 is `specular`", "dielectric_specular")
+        m.dielectric_specular = np.asarray(m.dielectric_specular, np.float64)
     if m.specular_f90 is not None:
-        if m.workflow != "specular":
-            r.fail("belongs to the specular workflow (KHR_materials_specular's F90 with its F0 `specular`); "
-                   "give the material \"workflow\": \"specular\"", "specular_f90")
-        if m.specular_f90 < float(np.max(m.specular)):
-            r.fail(f"F90 {m.specular_f90:g} is below the F0 `specular` {float(np.max(m.specular)):g}: F90 is at "
+        # the dielectric's F0 that F90 bounds: the specular workflow's F0, the metallic one's dielectric share
+        f0_name, f0 = (("specular", m.specular) if m.workflow == "specular" else
+                       ("dielectric_specular", m.dielectric_specular if m.dielectric_specular is not None
+                        else np.full(3, _DIELECTRIC_F0)))
+        if m.specular_f90 < float(np.max(f0)):
+            r.fail(f"F90 {m.specular_f90:g} is below the F0 `{f0_name}` {float(np.max(f0)):g}: F90 is at "
                    "least every channel of F0 (KHR_materials_specular: F0 = min(F0_ior x colour, 1) x F90)",
                    "specular_f90")
         for layer in ("anisotropy_strength", "iridescence", "transmission"):
@@ -517,7 +532,7 @@ def _unity_material(r: _Reader, m: Material, base: Path) -> None:
                 "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
                 "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
                 "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
-                "iridescence_thickness_max", "specular_f90") + TRANSMISSION_KEYS:
+                "iridescence_thickness_max", "specular_f90", "dielectric_specular") + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
                    f"(the shader's Properties) and its alpha mode from #pragma surface; "
@@ -724,6 +739,11 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
         if explicit_f90:
             rs.fail(f"Unity's BRDFs take F90 from F0; material {explicit_f90[0]!r} has an explicit F90 "
                     "(KHR_materials_specular; use brdf_model pbrlab, or remove specular_f90)", "brdf_model")
+        own_dielectric = sorted(name for name in materials if "dielectric_specular" in layers[name])
+        if own_dielectric:
+            rs.fail(f"Unity's metallic setup has the dielectric F0 0.04; material {own_dielectric[0]!r} has its own "
+                    "(KHR_materials_ior / _specular; use brdf_model pbrlab, or remove dielectric_specular)",
+                    "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 

@@ -144,9 +144,14 @@ MATERIAL = {
     "specular": Vector("F0, linear RGB (the specular workflow).", default=[0.04, 0.04, 0.04], lo=0.0,
                        hi=1.0, only=("specular",)),
     "specular_f90": Number("F90, the reflectance at grazing incidence (KHR_materials_specular's "
-                           "specularFactor; the specular workflow), at least every channel of specular; "
-                           "absent: F90 follows F0 (pbr_f90_from_f0).", default=None, lo=0.0, hi=1.0,
-                           only=("specular",)),
+                           "specularFactor), at least every channel of specular (the specular workflow) "
+                           "or of dielectric_specular (the metallic one: F90 = mix(specular_f90, 1, metallic)); "
+                           "absent: F90 follows F0 (pbr_f90_from_f0).", default=None, lo=0.0, hi=1.0),
+    "dielectric_specular": Vector("The metallic workflow's dielectric F0, linear RGB (KHR_materials_specular's "
+                                  "dielectric_f0, KHR_materials_ior's F0): F0 = mix(dielectric_specular, "
+                                  "albedo, metallic), the diffuse albedo (1 - max(dielectric_specular)) "
+                                  "(1 - metallic); absent: 0.04.", default=None, lo=0.0, hi=1.0,
+                                  only=("metallic",)),
     "smoothness": Number("1 - perceptual roughness (Unity's).", default=0.5, lo=0.0, hi=1.0),
     "emission": Vector("Linear radiance added to the lit colour.", default=[0, 0, 0], lo=0.0),
     "occlusion": Number("Scales indirect light only.", default=1.0, lo=0.0, hi=1.0),
@@ -189,7 +194,7 @@ TRANSMISSION_KEYS = ("transmission", "thickness", "attenuation_color", "attenuat
 DEFAULT_SURFACE_LAYER_KEYS = ("clearcoat", "clearcoat_smoothness", "sheen_color", "sheen_smoothness",
                               "anisotropy_strength", "anisotropy_rotation", "iridescence",
                               "iridescence_ior", "iridescence_thickness_min",
-                              "iridescence_thickness_max", "specular_f90") + TRANSMISSION_KEYS
+                              "iridescence_thickness_max", "specular_f90", "dielectric_specular") + TRANSMISSION_KEYS
 
 SPHERE = {
     "center": Vector("The centre, in scene units."),

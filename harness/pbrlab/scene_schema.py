@@ -36,7 +36,10 @@ PARSER_ONLY_RULES = (
     "A layer's texture needs its layer: the transmission and thickness maps a `transmission` "
     "(and `thickness`) above 0, the iridescence maps an `iridescence` above 0, the anisotropy map an "
     "`anisotropy_strength` above 0; one of the `metallic_smoothness` and `metallic_roughness` packings.",
-    "`render.brdf_model` `unity` takes no anisotropic, iridescent or transmissive material.",
+    "`render.brdf_model` `unity` takes no anisotropic, iridescent or transmissive material, and none with "
+    "`specular_f90` or `dielectric_specular`.",
+    "`specular_f90` is at least every channel of the dielectric's F0: `specular` (the specular workflow) or "
+    "`dielectric_specular` (the metallic workflow; absent: 0.04).",
     "`camera.size` takes whole numbers written without a fraction (JSON Schema's integer admits `512.0`).",
     "No key twice in one object, no nesting deeper than 32 levels (pbrlab.json_input).",
 )
@@ -141,7 +144,8 @@ def _material(texture_slots, brdf_terms) -> dict:
     material["allOf"] = [
         # the workflow's own F0 field: metallic or specular, not the other's
         {"if": {"properties": {"workflow": {"const": "specular"}}, "required": ["workflow"]},
-         "then": {"properties": {"metallic": False}}, "else": {"properties": {"specular": False, "specular_f90": False}}},
+         "then": {"properties": {"metallic": False, "dielectric_specular": False}},
+         "else": {"properties": {"specular": False}}},
         # the default surface's slots only, unless a surface file declares its own samplers
         {"if": {"not": {"required": ["surface"]}},
          "then": {"properties": {"textures": {"propertyNames": {"enum": list(texture_slots)}}}}},

@@ -37,9 +37,11 @@ LAYER_FIELDS = {
     "iridescence": ("IridescenceMask", "IridescenceIor", "IridescenceThickness"),
     "transmission": ("Transmission", "Thickness", "AttenuationColor", "AttenuationDistance", "TransmissionIor"),
     "specular_f90": ("SpecularF90",),
+    "dielectric_specular": ("DielectricSpecular",),
 }
 LAYER_OF_FIELD = {f: layer for layer, fields in LAYER_FIELDS.items() for f in fields}
-FIELD_SIZES = {f: 3 if f in ("ClearCoatNormal", "SheenColor", "AnisotropyDirection", "AttenuationColor") else 1
+FIELD_SIZES = {f: 3 if f in ("ClearCoatNormal", "SheenColor", "AnisotropyDirection", "AttenuationColor",
+                              "DielectricSpecular") else 1
                for f in LAYER_OF_FIELD}  # components: vec3 or float
 # `.Field =`, `.Field *=`, `.Field.rgb =` ... but not `.Field ==`
 _WRITE = re.compile(r"\.\s*(" + "|".join(sorted(LAYER_OF_FIELD, key=len, reverse=True)) +
@@ -57,7 +59,8 @@ def json_layers(material) -> frozenset:
     """The layers a default-surface material's numbers turn on."""
     on = {"clearcoat": material.clearcoat > 0.0, "sheen": max(material.sheen_color) > 0.0,
           "anisotropy": material.anisotropy_strength > 0.0, "iridescence": material.iridescence > 0.0,
-          "transmission": material.transmission > 0.0, "specular_f90": material.specular_f90 is not None}
+          "transmission": material.transmission > 0.0, "specular_f90": material.specular_f90 is not None,
+          "dielectric_specular": material.dielectric_specular is not None}
     return frozenset(layer for layer, yes in on.items() if yes)
 
 

@@ -39,6 +39,12 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              wall of IOR 1, one of IOR 1.5, and a smooth tinted volume (IOR 1.5,
                              thicknessFactor 0.3, attenuation colour and distance) that the
                              transmission copy test checks against the float64 fraction
+    specular_metal.gltf      KHR_materials_ior / KHR_materials_specular on (partly) metallic quads:
+                             rows metallicFactor 0, 0.5 and 1 x a metallicRoughness texture (B:
+                             metallic rising 0 -> 1 left to right); columns none, ior 1.8 alone,
+                             specularFactor 0.6 with specularColorFactor (2.5, 1, 0.25) at ior 1.5,
+                             and colour (5, 5, 5) x a specularColorTexture (sRGB) x a specularTexture
+                             (A); one orange base colour, roughness 0.35
     clearcoat.gltf           KHR_materials_clearcoat on four quads: none, a smooth full coat,
                              a rough coat masked by a texture (clearcoatTexture.r x factor,
                              clearcoatRoughnessTexture.g), a coat with its own normal map
@@ -689,6 +695,60 @@ def transmission_slab():
     b.write_gltf(HERE / "transmission_slab.gltf", external_bin=False)
 
 
+def metal_ramp() -> np.ndarray:
+    """glTF metallicRoughness texture: B (metallic) rising left to right 0 -> 1, G (roughness) 1."""
+    u, _ = _grid()
+    out = np.zeros((TEX, TEX, 3), np.uint8)
+    out[..., 1] = 255
+    out[..., 2] = np.round(u * 255).astype(np.uint8)
+    return out
+
+
+def specular_colour() -> np.ndarray:
+    """KHR_materials_specular's colour texture (sRGB codes): R rising left to right, G down,
+    B falling left to right: smooth ramps, no texel edges to tell mip chains apart."""
+    u, v = _grid()
+    return np.round(np.stack([u, v, 1.0 - u], -1) * 255).astype(np.uint8)
+
+
+def specular_strength() -> np.ndarray:
+    """KHR_materials_specular's strength texture: A rising from 0.2 (top) to 1 (bottom), RGB white."""
+    _, v = _grid()
+    out = np.full((TEX, TEX, 4), 255, np.uint8)
+    out[..., 3] = np.round((0.2 + 0.8 * v) * 255).astype(np.uint8)
+    return out
+
+
+def specular_metal():
+    b = Builder()
+    ramp = b.texture(b.image(metal_ramp(), embed=True))
+    colour = b.texture(b.image(specular_colour(), embed=True))
+    strength = b.texture(b.image(specular_strength(), embed=True))
+    rows = {"dielectric": {"metallicFactor": 0.0}, "half_metal": {"metallicFactor": 0.5},
+            "metal_ramp": {"metallicFactor": 1.0, "metallicRoughnessTexture": {"index": ramp}}}
+    columns = {"plain": {},
+               "ior": {"KHR_materials_ior": {"ior": 1.8}},
+               "specular": {"KHR_materials_specular": {"specularFactor": 0.6,
+                                                       "specularColorFactor": [2.5, 1.0, 0.25]}},
+               "specular_maps": {"KHR_materials_specular": {"specularColorFactor": [5.0, 5.0, 5.0],
+                                                            "specularColorTexture": {"index": colour},
+                                                            "specularTexture": {"index": strength}}}}
+    p, n, uv, f = _quad(1.3)
+    quads = []
+    for i, (row, pbr) in enumerate(rows.items()):
+        for j, (column, extensions) in enumerate(columns.items()):
+            material = {"name": f"{row}_{column}", "pbrMetallicRoughness": {
+                "baseColorFactor": _rgba8(0.9, 0.5, 0.15, 1), "roughnessFactor": 0.35, **pbr}}
+            if extensions:
+                material["extensions"] = extensions
+            b.json["materials"].append(material)
+            b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, len(b.json["materials"]) - 1)]})
+            quads.append((len(b.json["meshes"]) - 1, (-2.25 + 1.5 * j, 1.5 - 1.5 * i, 0.0)))
+    b.json["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_specular"]
+    _lit_quads_scene(b, quads, yfov=0.72, aspect=2.0, distance=6.5)
+    b.write_gltf(HERE / "specular_metal.gltf", external_bin=False)
+
+
 def main():
     hierarchy_lights()
     textured()
@@ -701,6 +761,7 @@ def main():
     iridescence()
     transmission()
     transmission_slab()
+    specular_metal()
 
 
 if __name__ == "__main__":

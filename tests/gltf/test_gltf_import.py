@@ -269,14 +269,16 @@ def test_zero_emissive_strength_reports_no_emission(tmp_path, capsys):
     assert report["materials"]["paint"]["emission"] is False and report["warnings"] == []
 
 
-def test_ior_on_a_partly_metallic_material_is_named(tmp_path):
+def test_ior_on_a_partly_metallic_material_sets_its_dielectric_f0(tmp_path):
     doc = quad_document()
     doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.5
     doc["materials"][0]["extensions"] = {"KHR_materials_ior": {"ior": 1.33}}
     result = load_gltf(write(tmp_path, doc), emit_warnings=False)
-    assert result.scene.materials["paint"].workflow == "metallic"
-    assert result.warnings == ['KHR_materials_ior/KHR_materials_specular ignored in material "paint" '
-                               "(metallic > 0: the specular workflow holds dielectrics only)"]
+    material = result.scene.materials["paint"]
+    assert material.workflow == "metallic" and material.metallic == 0.5
+    np.testing.assert_allclose(material.dielectric_specular, [(0.33 / 2.33) ** 2] * 3, rtol=1e-12)
+    assert material.specular_f90 is None  # KHR_materials_ior alone: F90 from F0
+    assert result.warnings == []
 
 
 def test_metallic_roughness_slot_in_a_json_scene_and_one_packing_only(tmp_path):
@@ -643,3 +645,30 @@ def test_transmission_gltf_renders_alike_in_glsl_hlsl_and_the_full_program(gl_co
     opaque = render_scene(plain, gl_context).linear
     changed = np.abs(glsl - opaque)[..., :3].max(axis=-1) > 0.01
     assert changed.mean() > 0.05, changed.mean()
+
+
+def test_specular_metal_gltf_renders_alike_in_glsl_hlsl_and_the_full_program(gl_context):
+    """specular_metal.gltf (KHR_materials_ior / _specular on metallic 0, 0.5 and a metallic
+    ramp texture, with the specular colour and strength textures) through the GLSL library, its
+    HLSL port and the full program: the full program bit for bit, HLSL within the float32 bound
+    of the iridescence test above. The metallic rows map to the metallic workflow with their
+    dielectric F0 (the dielectric row to the specular workflow) and nothing is warned; without
+    the dielectric F0 and F90 the metallic rows change."""
+    result = load_gltf(ASSETS / "specular_metal.gltf", size=(128, 64), emit_warnings=False)
+    assert result.warnings == []
+    scene = result.scene
+    workflows = {m.name: (m.workflow, m.dielectric_specular is not None) for m in scene.materials.values()}
+    assert workflows["half_metal_specular_maps"] == ("metallic", True)
+    assert workflows["metal_ramp_ior"] == ("metallic", True)
+    assert workflows["dielectric_specular"] == ("specular", False)
+    assert workflows["half_metal_plain"] == ("metallic", False)
+    glsl = render_scene(scene, gl_context).linear.astype(np.float64)
+    hlsl = render_scene(scene, gl_context, language="hlsl").linear.astype(np.float64)
+    full = render_scene(scene, gl_context, specialise=False).linear.astype(np.float64)
+    np.testing.assert_allclose(hlsl[..., :3], glsl[..., :3], rtol=1e-5, atol=1e-6)
+    np.testing.assert_array_equal(glsl, full)
+    for material in scene.materials.values():
+        if material.workflow == "metallic":
+            material.dielectric_specular, material.specular_f90 = None, None
+    ignored = render_scene(scene, gl_context).linear
+    assert (np.abs(glsl - ignored)[..., :3].max(axis=-1) > 0.01).mean() > 0.05

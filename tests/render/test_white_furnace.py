@@ -43,6 +43,15 @@ multiple-scattering compensation:
   F90 black           specular workflow, albedo 0, F0 0, F90 0.8 (the extension's rim-lit black
                       sphere): the lobe alone, 0.8 B (+ compensation 1 at F0 0), below 1 at every mu:
                       an F90 < 1 only loses energy
+  specular metals     KHR_materials_ior / _specular on metallic 0, 0.5 and 1 (JSON dielectric_specular
+                      and specular_f90, the metallic workflow), white albedo, at the extension's
+                      extremes: specularColorFactor (25, 0, 10) at ior 1.5 clamps to a dielectric F0
+                      of (1, 0, 0.4) at specularFactor 1 (F90 1: metallic 0) and (0.5, 0, 0.2) at
+                      0.5 (F90 0.5: metallic 1), (2, 0.5, 5) gives (0.08, 0.02, 0.2) (metallic 0.5,
+                      F90 1), specularFactor 0 gives F0 = F90 = 0 (metallic 0.5): F0 = mix(d0, 1, m),
+                      F90 = mix(d90, 1, m), the diffuse (1 - m) coupled to the dielectric (d0, d90):
+                      E(F0, F90) + (1 - m)(1 - E(d0, d90)) <= 1; a d0 channel of 1 leaves no diffuse
+                      (albedo (1 - max d0)(1 - m), the monochrome rule of Unity's specular workflow)
 The transmissive rows are drawn by a render of their own (the same layout without the other
 rows), merged by coverage: a transmissive sphere sees the scene's transmission copy of the
 non-transmissive spheres (harness/pbrlab/transmission_copy.py), and a sphere that loses energy
@@ -82,9 +91,21 @@ MATERIALS = {
     "f90_dielectric": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0.02, 0.02, 0.02],
                        "specular_f90": 0.5},
     "f90_black": {"workflow": "specular", "albedo": [0, 0, 0], "specular": [0, 0, 0], "specular_f90": 0.8},
+    "specular_dielectric_max": {"albedo": [1, 1, 1], "metallic": 0.0, "dielectric_specular": [1.0, 0.0, 0.4],
+                                "specular_f90": 1.0},
+    "specular_half_metal_max": {"albedo": [1, 1, 1], "metallic": 0.5, "dielectric_specular": [0.08, 0.02, 0.2],
+                                "specular_f90": 1.0},
+    "specular_half_metal_zero": {"albedo": [1, 1, 1], "metallic": 0.5, "dielectric_specular": [0.0, 0.0, 0.0],
+                                 "specular_f90": 0.0},
+    "specular_metal_half": {"albedo": [1, 1, 1], "metallic": 1.0, "dielectric_specular": [0.5, 0.0, 0.2],
+                            "specular_f90": 0.5},
 }
 # The explicit F90s (JSON specular_f90: KHR_materials_specular's specularFactor); others follow F0.
-F90 = {"f90_dielectric": 0.5, "f90_black": 0.8}
+# The surface's, mix(specular_f90, 1, metallic) in the metallic workflow, and the coat's (the
+# dielectric's: specular_f90 itself) where they differ.
+F90 = {"f90_dielectric": 0.5, "f90_black": 0.8, "specular_dielectric_max": 1.0, "specular_half_metal_max": 1.0,
+       "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0}
+COAT_F90 = {"specular_half_metal_zero": 0.0, "specular_metal_half": 0.5}
 # What the volume lets through of the transmitted light: c^(thickness / distance) per channel
 ATTENUATION = {"tinted_volume": np.array([0.5, 0.7, 0.9])}
 # The films: (mask, IOR, thickness in nm) as KHR_materials_iridescence's defaults fill them in.
@@ -97,14 +118,19 @@ SHEEN_SMOOTHNESS = {"sheened_dielectric": lambda s: s, "sheened_coated": lambda 
 F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
       "white_half_metal": 0.52, "coated_dielectric": 0.04, "coated_metal": 1.0, "sheened_dielectric": 0.04,
       "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 1.0, "transmissive_thin": 0.04,
-      "transmissive_volume": 0.04, "tinted_volume": 0.04, "f90_dielectric": 0.02, "f90_black": 0.0}
+      "transmissive_volume": 0.04, "tinted_volume": 0.04, "f90_dielectric": 0.02, "f90_black": 0.0,
+      # mix(dielectric_specular, albedo 1, metallic)
+      "specular_dielectric_max": np.array([1.0, 0.0, 0.4]), "specular_half_metal_max": np.array([0.54, 0.51, 0.6]),
+      "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
            "white_half_metal": 0.04, "coated_dielectric": 0.04, "coated_metal": 0.04,
            "sheened_dielectric": 0.04, "sheened_coated": 0.04, "filmed_dielectric": 0.04, "filmed_metal": 0.04,
            "transmissive_thin": 0.04, "transmissive_volume": 0.04, "tinted_volume": 0.04,
-           "f90_dielectric": 0.02, "f90_black": 0.0}
+           "f90_dielectric": 0.02, "f90_black": 0.0, "specular_dielectric_max": np.array([1.0, 0.0, 0.4]),
+           "specular_half_metal_max": np.array([0.08, 0.02, 0.2]), "specular_half_metal_zero": 0.0,
+           "specular_metal_half": np.array([0.5, 0.0, 0.2])}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -171,11 +197,11 @@ def _expected(name, compensation, A, B, mu):
     compensation 1 + f0 (1 / (A + B) - 1) (Fdez-Aguera 2019), diffuse rho (1 - E_coat), E_coat
     the albedo of the dielectric coat over the diffuse; an explicit F90 (KHR_materials_specular)
     where the row has one."""
-    def albedo(f0):
+    def albedo(f0, f90):
         f0 = np.asarray(f0, np.float64)
         grey = f0.ndim == 0
         f0 = np.broadcast_to(f0, (*np.shape(A), 3)) if grey else f0
-        f90 = np.minimum(1.0, 16.5 * f0.sum(axis=-1, keepdims=True)) if name not in F90 else F90[name]
+        f90 = np.minimum(1.0, 16.5 * f0.sum(axis=-1, keepdims=True)) if f90 is None else f90
         e = f0 * A[:, None] + f90 * B[:, None]
         e = e * (1 + f0 * (1 / (A + B)[:, None] - 1)) if compensation else e
         return e
@@ -184,12 +210,16 @@ def _expected(name, compensation, A, B, mu):
            "white_half_metal": 0.5, "coated_dielectric": 1.0, "coated_metal": 0.0,
            "sheened_dielectric": 1.0, "sheened_coated": 1.0, "filmed_dielectric": 1.0,
            "filmed_metal": 0.0, "transmissive_thin": 1.0, "transmissive_volume": 1.0,
-           "tinted_volume": 1.0, "f90_dielectric": 1.0, "f90_black": 0.0}[name]  # albedo (1 - metallic)
+           "tinted_volume": 1.0, "f90_dielectric": 1.0, "f90_black": 0.0,
+           "specular_dielectric_max": 0.0,  # 1 - max(d0) = 0: no diffuse (the monochrome rule, as Unity's)
+           "specular_half_metal_max": 0.5, "specular_half_metal_zero": 0.5,
+           "specular_metal_half": 0.0}[name]  # albedo (1 - metallic)
     rho = rho * ATTENUATION.get(name, 1.0)  # the transmitted part through the volume
     f0, coat_f0 = F0[name], COAT_F0[name]
     if name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')
         f0, coat_f0 = (ref_surface.iridescent_f0(np.full((len(mu), 3), f), mu, *FILMS[name]) for f in (f0, coat_f0))
-    return albedo(f0) + rho * (1 - albedo(coat_f0))
+    f90 = F90.get(name)
+    return albedo(f0, f90) + rho * (1 - albedo(coat_f0, COAT_F90.get(name, f90)))
 
 
 _RENDERS = {}  # (quality, compensation) -> (scene, linear): each variant rendered once per process

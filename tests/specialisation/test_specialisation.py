@@ -32,6 +32,7 @@ TEST_SCENES = {
     "iridescent_light_zoo": lambda: parse_scene(_iridescent(light_zoo())),
     "transmissive_light_zoo": lambda: parse_scene(_transmissive(light_zoo())),
     "specular_f90_light_zoo": lambda: parse_scene(_specular_f90(light_zoo())),
+    "specular_metal_light_zoo": lambda: parse_scene(_specular_metal(light_zoo())),
 }
 
 
@@ -98,6 +99,21 @@ def _specular_f90(scene):
         material.update(workflow="specular", specular=[0.02, 0.01 * i, 0.0], specular_f90=0.9 - 0.3 * i)
         if i == 1:
             material.update(clearcoat=0.7, sheen_color=[0.3, 0.2, 0.4])
+    scene["environment"] = {"color": [0.3, 0.3, 0.3]}
+    return scene
+
+
+def _specular_metal(scene):
+    """The light zoo's bases partly metallic with their own dielectric F0 (KHR_materials_ior /
+    _specular on a metal; one with the explicit F90, one also coated): a setting of the
+    material, compiled in both programs."""
+    for i, material in enumerate(scene["materials"].values()):
+        material.pop("specular", None)
+        material.update(workflow="metallic", metallic=0.3 + 0.3 * i, dielectric_specular=[0.08, 0.02 * i, 0.05])
+        if i == 0:
+            material.update(specular_f90=0.6)
+        if i == 1:
+            material.update(clearcoat=0.7)
     scene["environment"] = {"color": [0.3, 0.3, 0.3]}
     return scene
 
@@ -325,6 +341,9 @@ _NO_SHEEN_OR_COAT = ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]
 # The explicit F90's uniform and call sites (KHR_materials_specular): only where a material has one.
 SPECULAR_F90_TOKENS = ["u_specular_f90", "pbrlab_surf_specular_f90(IN,layers)",
                        "pbr_lighting_standard_f90(diffColor,specColor,f90,coatF0,coatF90"]
+# The metallic workflow's own dielectric F0's uniform and call sites: only where a material has one.
+DIELECTRIC_SPECULAR_TOKENS = ["u_dielectric_specular", "pbrlab_surf_dielectric_specular(IN,layers)",
+                              "returnlayers.DielectricSpecular;"]
 # layer: (the material fields that turn it on, its tokens, tokens of the other layers its
 # program must still lack)
 BASE_LAYERS = {
@@ -337,13 +356,16 @@ BASE_LAYERS = {
     "specular_f90": ({"workflow": "specular", "specular": [0.02, 0.02, 0.02], "specular_f90": 0.5},
                      SPECULAR_F90_TOKENS, IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1] + TRANSMISSION_TOKENS[:1]
                      + _NO_SHEEN_OR_COAT),
+    "dielectric_specular": ({"metallic": 0.5, "dielectric_specular": [0.08, 0.02, 0.05]}, DIELECTRIC_SPECULAR_TOKENS,
+                            SPECULAR_F90_TOKENS[:2] + IRIDESCENCE_TOKENS[-1:] + ANISOTROPY_TOKENS[:1]
+                            + TRANSMISSION_TOKENS[:1] + _NO_SHEEN_OR_COAT),
 }
 
 
 @pytest.mark.parametrize("specialise", [True, False], ids=["specialised", "full"])
 @pytest.mark.parametrize("layer", sorted(BASE_LAYERS))
 def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, specialise):
-    """Anisotropy, a thin film, transmission, an explicit F90: none of a layer's code in a program whose
+    """Anisotropy, a thin film, transmission, an explicit F90, a dielectric F0: none of a layer's code in a program whose
     material lacks it, and a material with one layer has none of the others' code."""
     fields, tokens, absent = BASE_LAYERS[layer]
     _, plain = _programs_for(parse_scene(MINIMAL), specialise)

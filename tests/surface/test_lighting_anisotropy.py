@@ -42,7 +42,7 @@ def _gpu(x):
 
 def _layers(strength="strength", direction="d"):
     return (f"SurfaceOutputStandardLayers(0.0, 1.0, vec3(0.0, 0.0, 1.0), vec3(0.0), 1.0, {strength}, {direction}, "
-            "0.0, 1.3, 400.0, 0.0, 0.0, vec3(1.0), 1.0, 1.5, 1.0)")  # no film, no transmission, F90 1
+            "0.0, 1.3, 400.0, 0.0, 0.0, vec3(1.0), 1.0, 1.5, 1.0, vec3(0.04))")  # no film, no transmission, F90 1
 
 
 LIGHTING_ANISOTROPIC = ("LightingStandardLayersBase(SurfaceOutputStandard(albedo, n, vec3(0.0), metallic, "

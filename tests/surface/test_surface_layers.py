@@ -71,15 +71,35 @@ def test_a_surface_file_writing_specular_f90_renders_like_the_json_material(lang
     assert np.abs(bare - want)[..., :3].max() > 0.01
 
 
+METALLIC_BASE = {"albedo": [0.8, 0.3, 0.2], "metallic": 0.5, "smoothness": 0.6}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_surface_file_writing_the_dielectric_f0_renders_like_the_json_material(language):
+    """DielectricSpecular and SpecularF90 (KHR_materials_ior / _specular on a half metal) from a
+    surface file and from JSON dielectric_specular / specular_f90: the same image to ULP_BOUND;
+    without them the dielectric is 0.04 and F90 follows F0, and the image differs."""
+    got = render.render_scene(_scene({"surface": "dielectric_specular.glsl"}), language=language).linear
+    want = render.render_scene(_scene({**METALLIC_BASE, "dielectric_specular": [0.12, 0.05, 0.0],
+                                       "specular_f90": 0.6}), language=language).linear
+    bare = render.render_scene(_scene(METALLIC_BASE), language=language).linear
+    covered = want[..., 3] > 0
+    assert covered.sum() > 1000 and np.array_equal(got[..., 3] > 0, covered)
+    assert float32_ulps(want[..., :3], got[..., :3])[covered].max() <= ULP_BOUND
+    assert np.abs(bare - want)[..., :3].max() > 0.01
+
+
 def test_the_layers_compiled_are_the_ones_the_surface_writes():
     def layers(surface):
         f = features.material_features(_scene({"surface": surface}).materials["m"])
         return {layer for layer in features.LAYERS if getattr(f, layer)}
 
     assert layers("coat.glsl") == {"clearcoat"}
-    # every layer but the explicit F90, which the anisotropic, filmed and transmissive base keeps from F0
-    assert layers("every_layer.glsl") == set(features.LAYERS) - {"specular_f90"}
+    # every layer but the explicit F90, which the anisotropic, filmed and transmissive base keeps from
+    # F0, and the metallic workflow's dielectric F0 (dielectric_specular.glsl below)
+    assert layers("every_layer.glsl") == set(features.LAYERS) - {"specular_f90", "dielectric_specular"}
     assert layers("specular_f90.glsl") == {"specular_f90"}
+    assert layers("dielectric_specular.glsl") == {"dielectric_specular", "specular_f90"}
     assert layers("../../../scenes/unity_example/brick_surface.glsl") == set()
 
 

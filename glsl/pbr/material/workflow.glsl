@@ -1,6 +1,8 @@
 // pbr/material/workflow.glsl: metallic and specular workflows (diffuse colour and F0).
 //
 // Provides: PBR_DIELECTRIC_F0, pbr_f0_from_metallic, pbr_diffuse_from_metallic,
+//           pbr_f0_from_metallic_dielectric, pbr_diffuse_from_metallic_dielectric,
+//           pbr_f90_from_metallic,
 //           pbr_diffuse_from_specular (monochrome), pbr_diffuse_from_specular_per_channel.
 // Include:  "pbr/material/workflow.glsl" (path relative to glsl/)
 // Config macros read: none.
@@ -20,10 +22,38 @@
 // Shared with reference/material.py DIELECTRIC_F0.
 #define PBR_DIELECTRIC_F0 0.04
 
+// Metallic workflow with the dielectric's own F0 (KHR_materials_specular, "Implementation":
+// F0 = lerp(dielectric_f0, baseColor, metallic), dielectric_f0 = min(((ior - 1) / (ior + 1))²
+// · specularColor, 1) · specular; KHR_materials_ior for the ior). The metal's share reflects
+// its albedo, the dielectric's share its own dielectricF0 (linear RGB, each channel <= 1).
+vec3 pbr_f0_from_metallic_dielectric(vec3 albedo, float metallic, vec3 dielectricF0) {
+    return mix(dielectricF0, albedo, metallic);
+}
+
+// Diffuse colour of the metallic workflow with the dielectric's own F0: Unity's form below
+// with 0.04 generalised to the dielectric's monochrome reflectivity, as Unity's specular
+// workflow weighs its diffuse (EnergyConservationBetweenDiffuseAndSpecular,
+// UNITY_CONSERVE_ENERGY_MONOCHROME):
+//   diffuse = albedo · (1 - max(dielectricF0.r, .g, .b)) · (1 - metallic).
+// metallic = 0 is the specular workflow with specular = dielectricF0 (pbr_diffuse_from_specular),
+// dielectricF0 = vec3(0.04) is pbr_diffuse_from_metallic, both exactly (tested). The
+// Khronos Sample Renderer instead weighs the diffuse by 1 - F_dielectric per channel and per
+// light (its mix(diffuse, specular, F_Schlick(f0, f90, VdotH))): docs/gltf.md names the difference.
+vec3 pbr_diffuse_from_metallic_dielectric(vec3 albedo, float metallic, vec3 dielectricF0) {
+    return albedo * ((1.0 - pbr_max3(dielectricF0)) * (1.0 - metallic));
+}
+
+// F90 of the metallic workflow whose dielectric has its own F90 (KHR_materials_specular,
+// "Implementation": F90 = lerp(dielectric_f90, 1, metallic), dielectric_f90 = specular): a
+// metal reflects everything at grazing incidence.
+float pbr_f90_from_metallic(float dielectricF90, float metallic) {
+    return mix(dielectricF90, 1.0, metallic);
+}
+
 // Metallic workflow (Burley 2012, the "metallic" parameter; Karis 2013, "Material Model"):
-// F0 = lerp(0.04, albedo, metallic).
+// F0 = lerp(0.04, albedo, metallic): the dielectric's F0 is PBR_DIELECTRIC_F0.
 vec3 pbr_f0_from_metallic(vec3 albedo, float metallic) {
-    return mix(vec3(PBR_DIELECTRIC_F0), albedo, metallic);
+    return pbr_f0_from_metallic_dielectric(albedo, metallic, vec3(PBR_DIELECTRIC_F0));
 }
 
 // Diffuse colour of the metallic workflow, in Unity's form (UnityStandardUtils.cginc,
@@ -32,7 +62,7 @@ vec3 pbr_f0_from_metallic(vec3 albedo, float metallic) {
 // Metals get no diffuse; a dielectric keeps 1 - F0 of its albedo, so that metallic = 0
 // equals the specular workflow with specular = 0.04 exactly (tested).
 vec3 pbr_diffuse_from_metallic(vec3 albedo, float metallic) {
-    return albedo * ((1.0 - PBR_DIELECTRIC_F0) * (1.0 - metallic));
+    return pbr_diffuse_from_metallic_dielectric(albedo, metallic, vec3(PBR_DIELECTRIC_F0));
 }
 
 // Specular workflow, energy conservation between diffuse and specular, monochrome form

@@ -37,6 +37,9 @@ reads what this module writes into a scene Material:
                                              x specularColorFactor x texture.rgb, 1) x specularFactor
                                              x texture.a; with KHR_materials_specular, specular_f90 =
                                              specularFactor (x texture.a): F90 as the extension sets it
+      (partly metallic: 0 < metallicFactor   the metallic workflow with dielectric_specular = that F0
+       < 1 or a metallicRoughness texture)   (and specular_f90): F0 = mix(it, base colour, metallic),
+                                             F90 = mix(specular_f90, 1, metallic) per pixel
     textureInfo.texCoord, KHR_texture_transform, samplers   per-slot UV set, UV transform, sampler
 
 Everything else a material carries is named in one warning each.
@@ -323,8 +326,12 @@ class MaterialReader:
             self.texture(volume.object("thicknessTexture"), m, "thickness", False, name)
 
     def _specular(self, m: Material, extensions: dict, where: str, name: str, metallic_map: bool):
-        """KHR_materials_ior / _specular on a dielectric: the specular workflow with F0 from
-        the IOR (Fresnel at normal incidence) times the specular colour and factor."""
+        """KHR_materials_ior / _specular: the dielectric's F0 from the IOR (Fresnel at normal
+        incidence) times the specular colour and factor, its F90 the factor. A dielectric
+        (metallicFactor 0) takes the specular workflow with that F0; a partly metallic material
+        (0 < metallicFactor < 1, or a metallicRoughness texture) keeps the metallic workflow
+        with that dielectric F0 (dielectric_specular), mixed with the base colour by metallic
+        per pixel; a pure metal's F0 is its base colour and its F90 1, so neither enters."""
         if "KHR_materials_ior" not in extensions and "KHR_materials_specular" not in extensions:
             return
         absent = {key: FieldReader({}, f"{where}.extensions.{key}", self.doc)
@@ -334,17 +341,19 @@ class MaterialReader:
         ior = ior_ext.number("ior", DEFAULT_IOR, 1.0)
         factor = spec_ext.number("specularFactor", 1.0, 0.0, 1.0)
         colour = spec_ext.numbers("specularColorFactor", 3, [1, 1, 1], 0.0)
-        if m.metallic != 0.0:
-            if m.metallic < 1.0 or metallic_map:
-                self.warn(f"KHR_materials_ior/KHR_materials_specular ignored in material \"{name}\" "
-                          "(metallic > 0: the specular workflow holds dielectrics only)")
-            return  # a pure metal's F0 is its base colour: the IOR does not enter
+        if m.metallic == 1.0 and not metallic_map:
+            return  # a pure metal: F0 = base colour, F90 = 1, no diffuse; the dielectric does not enter
         f0_ior = ((ior - 1.0) / (ior + 1.0)) ** 2  # Fresnel at normal incidence, air to ior
-        m.workflow = "specular"
         # the README's "Implementation": dielectric_f0 = min(f0_ior x specularColor, 1) x specular,
         # dielectric_f90 = specular (KHR_materials_ior alone keeps F90 from F0: the extension's 1
-        # for every ior >= 1.331, where pbr_f90_from_f0 reaches 1)
-        m.specular = np.minimum(f0_ior * colour, 1.0) * factor
+        # for every ior >= 1.331, where pbr_f90_from_f0 reaches 1); F0 = lerp(dielectric_f0,
+        # baseColor, metallic) and F90 = lerp(dielectric_f90, 1, metallic) in the shader
+        dielectric_f0 = np.minimum(f0_ior * colour, 1.0) * factor
+        if m.metallic == 0.0:
+            m.workflow = "specular"
+            m.specular = dielectric_f0
+        else:
+            m.dielectric_specular = dielectric_f0
         if "KHR_materials_specular" in extensions:
             m.specular_f90 = factor
         for key, slot, srgb in (("specularColorTexture", "specular_color", True),

@@ -46,6 +46,30 @@ def diffuse_from_metallic(albedo, metallic):
     return _f(albedo) * ((1.0 - DIELECTRIC_F0) * (1.0 - _f(metallic)))[..., None]
 
 
+def f0_from_metallic_dielectric(albedo, metallic, dielectric_f0):
+    """pbr_f0_from_metallic_dielectric: lerp(dielectric_f0, albedo, metallic), RGB on the last
+    axis (KHR_materials_specular, "Implementation": F0 = lerp(dielectric_f0, baseColor, metallic))."""
+    m = _f(metallic)[..., None]
+    return _f(dielectric_f0) * (1.0 - m) + _f(albedo) * m
+
+
+def diffuse_from_metallic_dielectric(albedo, metallic, dielectric_f0):
+    """pbr_diffuse_from_metallic_dielectric, pbrlab's energy rule: Unity's metallic diffuse
+    albedo (1 - 0.04)(1 - metallic) with 0.04 generalised to the dielectric's monochrome
+    reflectivity max(dielectric_f0), as Unity's specular workflow weighs its diffuse
+    (EnergyConservationBetweenDiffuseAndSpecular, UNITY_CONSERVE_ENERGY_MONOCHROME):
+    albedo (1 - max(dielectric_f0)) (1 - metallic). Equal to diffuse_from_metallic at
+    dielectric_f0 = 0.04 and to diffuse_from_specular at metallic = 0."""
+    return _f(albedo) * ((1.0 - np.max(_f(dielectric_f0), axis=-1)) * (1.0 - _f(metallic)))[..., None]
+
+
+def f90_from_metallic(dielectric_f90, metallic):
+    """pbr_f90_from_metallic: lerp(dielectric_f90, 1, metallic) (KHR_materials_specular,
+    "Implementation": F90 = lerp(dielectric_f90, 1, metallic))."""
+    m = _f(metallic)
+    return _f(dielectric_f90) * (1.0 - m) + m
+
+
 def diffuse_from_specular(albedo, specular):
     """Monochrome energy conservation: albedo * (1 - max(specular))."""
     return _f(albedo) * (1.0 - np.max(_f(specular), axis=-1))[..., None]

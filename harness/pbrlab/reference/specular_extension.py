@@ -21,8 +21,22 @@ Schlick's F against that lobe, linear in F0 and F90:
 
 so F90 < 1 can only lower the albedo below A + B <= 1: the white furnace cannot exceed 1.
 
+On a metallic material the same section mixes the dielectric with the metal:
+
+    F0  = lerp(dielectric_f0, baseColor.rgb, metallic)
+    F90 = lerp(dielectric_f90, 1, metallic)
+
+and weighs the diffuse c_diff = lerp(baseColor.rgb, 0, metallic) by 1 - F per channel, F
+Schlick's at the light's VdotH. The Khronos Sample Renderer (gltf-viewer 1.1.0) does the
+same per light, mix(diffuse, specular_dielectric, F_Schlick(dielectric_f0, dielectric_f90,
+VdotH)), and for the environment the roughness-dependent getIBLGGXFresnel; pbrlab keeps
+Unity's constant weight 1 - max(dielectric_f0) (reference/material.py,
+diffuse_from_metallic_dielectric) and couples the diffuse to the dielectric's directional
+albedo 1 - E (pbr/shading/energy_conservation.glsl): the named difference in docs/gltf.md.
+
 These functions take the extension's parameters, not pbrlab's: pbrlab's library and harness
-(pbr_*_f90, reference/shading.py, reference/surface.py) are tested against them.
+(pbr_*_f90, reference/shading.py, reference/surface.py, reference/material.py) are tested
+against them.
 """
 
 from __future__ import annotations
@@ -49,6 +63,18 @@ def dielectric_f0(ior, specular_color, specular):
 def dielectric_f90(specular):
     """dielectric_f90 = specular, whatever the colour."""
     return _f(specular)
+
+
+def metallic_f0(dielectric_f0_, base_color, metallic):
+    """F0 = lerp(dielectric_f0, baseColor, metallic), RGB on the last axis."""
+    t = _f(metallic)[..., None]
+    return (1.0 - t) * _f(dielectric_f0_) + t * _f(base_color)
+
+
+def metallic_f90(dielectric_f90_, metallic):
+    """F90 = lerp(dielectric_f90, 1, metallic)."""
+    t = _f(metallic)
+    return (1.0 - t) * _f(dielectric_f90_) + t
 
 
 def dielectric_fresnel(f0, f90, VdotH):

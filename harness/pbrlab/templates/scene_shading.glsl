@@ -56,6 +56,9 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #ifdef PBRLAB_SPECULAR_F90
 #define PBR_LAYERS_SPECULAR_F90 1
 #endif
+#ifdef PBRLAB_DIELECTRIC_SPECULAR
+#define PBR_LAYERS_DIELECTRIC_SPECULAR 1
+#endif
 
 #include "pbr/pbr.glsl"
 #include "pbr/lighting/attenuation.glsl"

@@ -28,7 +28,8 @@
 //           pbr/unity/surface_standard.hlsl).
 // Config macros read: PBR_LAYERS_SHEEN, PBR_LAYERS_CLEARCOAT, PBR_LAYERS_ANISOTROPY,
 //           PBR_LAYERS_IRIDESCENCE, PBR_LAYERS_TRANSMISSION (1 by default), PBR_LAYERS_SPECULAR_F90
-//           (0 by default: F90 follows F0; a caller that knows a layer is absent
+//           (0 by default: F90 follows F0), PBR_LAYERS_DIELECTRIC_SPECULAR (0 by default: the
+//           metallic workflow's dielectric F0 is 0.04; a caller that knows a layer is absent
 //           defines it 0 and LightingStandardLayers / LightingStandard[Specular]LayersBase
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.hlsl,
@@ -81,12 +82,22 @@
 // extension's README, "Implementation": dielectric_f90 = specular); the F0 the surface writes
 // (Specular, or the metallic workflow's) must not exceed it in any channel, as the extension's
 // min(..., 1) x specular never does. A metallic surface blends it towards 1, F90 =
-// mix(SpecularF90, 1, Metallic), as the extension's F90 = lerp(dielectric_f90, 1, metallic).
+// mix(SpecularF90, 1, Metallic) (pbr_f90_from_metallic), as the extension's F90 = lerp(dielectric_f90, 1, metallic).
 // Neither URP nor HDRP names a user-facing F90 (HDRP derives its fresnel90 from F0 inside the
 // BSDF), so the name is pbrlab's, after what it sets. With the layer off, F90 follows F0
 // (pbr_f90_from_f0) and none of this is compiled. The anisotropic lobe, the film and the
 // transmission keep F90 from F0 (a JSON material is refused the combination, a glTF one warned;
 // a surface file writing both gets F90 from F0 there).
+// DielectricSpecular (read only where PBR_LAYERS_DIELECTRIC_SPECULAR is 1; the metallic workflow,
+// LightingStandardLayersBase[Transmission]): the F0 of the dielectric share of a metallic surface,
+// linear RGB, KHR_materials_specular's dielectric_f0 = min(((ior - 1) / (ior + 1))² ·
+// specularColor, 1) · specular (KHR_materials_ior's ior); F0 = mix(DielectricSpecular, Albedo,
+// Metallic), the diffuse Albedo (1 - max(DielectricSpecular)) (1 - Metallic), and the coat over
+// the diffuse (coatF0) is DielectricSpecular (pbr_unity_dielectric_f0; pbr/material/workflow.hlsl).
+// Its default 0.04 (unity_ColorSpaceDielectricSpec) gives LightingStandard's values; each channel
+// must not exceed SpecularF90 where both are written. Unity names the specular workflow's F0
+// Specular; the dielectric share's is pbrlab's name after it. With the layer off none of this is
+// compiled.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_LAYERS_HLSL
 #define PBR_UNITY_SURFACE_LAYERS_HLSL
@@ -116,6 +127,7 @@ struct SurfaceOutputStandardLayers {
     float AttenuationDistance;  // > 0 (default +Inf: no attenuation)
     float TransmissionIor;      // the volume's IOR (default 1.5: KHR_materials_ior's)
     float SpecularF90;          // grazing reflectance, >= every channel of F0 (default 1: KHR's)
+    float3 DielectricSpecular;    // the metallic workflow's dielectric F0, linear (default 0.04)
 };
 
 #ifndef PBR_LAYERS_SHEEN
@@ -135,6 +147,9 @@ struct SurfaceOutputStandardLayers {
 #endif
 #ifndef PBR_LAYERS_SPECULAR_F90
 #define PBR_LAYERS_SPECULAR_F90 0
+#endif
+#ifndef PBR_LAYERS_DIELECTRIC_SPECULAR
+#define PBR_LAYERS_DIELECTRIC_SPECULAR 0
 #endif
 // pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
@@ -216,26 +231,51 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     return float4(c, outputAlpha);
 }
 
+// The F0 of the metallic workflow's dielectric share, the coat over its diffuse: Unity's 0.04
+// (unity_ColorSpaceDielectricSpec) or, where PBR_LAYERS_DIELECTRIC_SPECULAR, the surface's
+// DielectricSpecular. The one #if of the layer.
+float3 pbr_unity_dielectric_f0(SurfaceOutputStandardLayers layers) {
+#if PBR_LAYERS_DIELECTRIC_SPECULAR
+    return layers.DielectricSpecular;
+#else
+    return unity_ColorSpaceDielectricSpec.rgb;
+#endif
+}
+
+// Unity's OneMinusReflectivityFromMetallic with the dielectric's F0 for its 0.04:
+// (1 - max(dielectricF0)) - metallic (1 - max(dielectricF0)), in Unity's form (PreMultiplyAlpha
+// reads it).
+float pbr_unity_one_minus_reflectivity_from_metallic(float metallic, float3 dielectricF0) {
+    float oneMinusDielectricSpec = 1.0 - pbr_max3(dielectricF0);
+    return oneMinusDielectricSpec - metallic * oneMinusDielectricSpec;
+}
+
+// LightingStandardLayersBase[Transmission]: the metallic workflow's setup, Unity's
+// DiffuseAndSpecularFromMetallic in its order (F0, oneMinusReflectivity, diffuse) with the
+// dielectric's F0 (pbr/material/workflow.hlsl's _dielectric forms; at 0.04 the same values and,
+// measured, the same RDNA3 programs), then the base.
 float4 LightingStandardLayersBase(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers, float3 viewDir,
                                 UnityGI gi) {
-    float3 specColor;
-    float oneMinusReflectivity;
-    float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+    float3 coatF0 = pbr_unity_dielectric_f0(layers);
+    float3 specColor = pbr_f0_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    float oneMinusReflectivity = pbr_unity_one_minus_reflectivity_from_metallic(s.Metallic, coatF0);
+    float3 diffColor = pbr_diffuse_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    return pbr_unity_lighting_layers_base(diffColor, specColor, coatF0,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
                                           viewDir, gi, layers, float3(0.0, 0.0, 0.0),
-                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
+                                          pbr_f90_from_metallic(layers.SpecularF90, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardLayersBaseTransmission(SurfaceOutputStandard s, SurfaceOutputStandardLayers layers,
                                             float3 viewDir, UnityGI gi, float3 transmittedIndirect) {
-    float3 specColor;
-    float oneMinusReflectivity;
-    float3 diffColor = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
-    return pbr_unity_lighting_layers_base(diffColor, specColor, unity_ColorSpaceDielectricSpec.rgb,
+    float3 coatF0 = pbr_unity_dielectric_f0(layers);
+    float3 specColor = pbr_f0_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    float oneMinusReflectivity = pbr_unity_one_minus_reflectivity_from_metallic(s.Metallic, coatF0);
+    float3 diffColor = pbr_diffuse_from_metallic_dielectric(s.Albedo, s.Metallic, coatF0);
+    return pbr_unity_lighting_layers_base(diffColor, specColor, coatF0,
                                           oneMinusReflectivity, s.Smoothness, s.Occlusion, s.Alpha, s.Normal,
                                           viewDir, gi, layers, transmittedIndirect,
-                                          lerp(layers.SpecularF90, 1.0, s.Metallic), layers.SpecularF90);
+                                          pbr_f90_from_metallic(layers.SpecularF90, s.Metallic), layers.SpecularF90);
 }
 
 float4 LightingStandardSpecularLayersBase(SurfaceOutputStandardSpecular s, SurfaceOutputStandardLayers layers,

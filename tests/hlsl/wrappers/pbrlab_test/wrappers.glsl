@@ -70,6 +70,7 @@ SurfaceOutputStandardLayers test_surface_layers(float clearCoatMask, float clear
     s.AttenuationDistance = 1.0;
     s.TransmissionIor = 1.5;
     s.SpecularF90 = 1.0;   // read only where PBR_LAYERS_SPECULAR_F90 is 1
+    s.DielectricSpecular = vec3(0.04, 0.04, 0.04);  // read only where PBR_LAYERS_DIELECTRIC_SPECULAR is 1
     return s;
 }
 
