@@ -50,6 +50,25 @@ def test_specular_tests_materials_map_to_the_extensions_f0_and_f90():
     ({"KHR_materials_ior": {"ior": 1.2}}, [((1.2 - 1) / 2.2) ** 2] * 3, None),  # IOR alone: F90 from F0
 ])
 def test_a_dielectrics_specular_extension_sets_f0_and_f90(tmp_path, extensions, f0, f90):
+    material = _load_material(tmp_path, extensions)
+    np.testing.assert_allclose(material.specular, f0, rtol=1e-12, atol=1e-15)
+    assert material.specular_f90 == f90
+
+
+@pytest.mark.parametrize("layer", [{"KHR_materials_anisotropy": {"anisotropyStrength": 0.6}},
+                                   {"KHR_materials_iridescence": {"iridescenceFactor": 1.0}},
+                                   {"KHR_materials_transmission": {"transmissionFactor": 0.8}}],
+                         ids=["anisotropy", "iridescence", "transmission"])
+def test_the_f90_is_kept_beside_the_layers_that_change_the_base(tmp_path, layer):
+    """The base's anisotropic lobe, film and transmission read the explicit F90
+    (pbr/unity/surface_layers.glsl): the importer keeps it and warns about nothing."""
+    extensions = {"KHR_materials_specular": {"specularFactor": 0.5}, **layer}
+    material, warned = _load_material(tmp_path, extensions, with_warnings=True)
+    assert material.specular_f90 == 0.5
+    assert warned == []
+
+
+def _load_material(tmp_path, extensions, with_warnings=False):
     doc = {"asset": {"version": "2.0"}, "materials": [
         {"name": "m", "pbrMetallicRoughness": {"metallicFactor": 0.0}, "extensions": extensions}],
         "extensionsUsed": list(extensions),
@@ -61,6 +80,6 @@ def test_a_dielectrics_specular_extension_sets_f0_and_f90(tmp_path, extensions, 
                      "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
         "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}
     (tmp_path / "m.gltf").write_text(json.dumps(doc))
-    material = next(iter(load_gltf(tmp_path / "m.gltf", size=(8, 8), emit_warnings=False).scene.materials.values()))
-    np.testing.assert_allclose(material.specular, f0, rtol=1e-12, atol=1e-15)
-    assert material.specular_f90 == f90
+    result = load_gltf(tmp_path / "m.gltf", size=(8, 8), emit_warnings=False)
+    material = next(iter(result.scene.materials.values()))
+    return (material, result.warnings) if with_warnings else material
