@@ -166,7 +166,9 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 // The base's terms that read F90, each with the surface's own F90 where PBR_LAYERS_SPECULAR_F90
 // (f90 for f0, coatF90 for coatF0: the _f90 forms) and F90 from F0 elsewhere (the plain
 // forms, so a program without the layer compiles as it did before it existed). These hold the
-// file's only PBR_LAYERS_SPECULAR_F90 choices.
+// file's only PBR_LAYERS_SPECULAR_F90 choices (and the film's, in pbr_unity_lighting_layers_base);
+// each exists only where its layer is compiled in.
+#if PBR_LAYERS_ANISOTROPY
 vec3 pbr_layers_lighting_anisotropic(vec3 diffColor, vec3 specColor, float f90, vec3 coatF0, float coatF90,
                                      float perceptualRoughness, float occlusion, vec3 n, vec3 viewDir, UnityGI gi,
                                      pbr_Anisotropy anisotropy) {
@@ -178,6 +180,7 @@ vec3 pbr_layers_lighting_anisotropic(vec3 diffColor, vec3 specColor, float f90, 
                                     anisotropy);
 #endif
 }
+#endif
 
 vec3 pbr_layers_lighting_standard(vec3 diffColor, vec3 specColor, float f90, vec3 coatF0, float coatF90,
                                   float perceptualRoughness, float occlusion, vec3 n, vec3 viewDir, UnityGI gi) {
@@ -189,6 +192,7 @@ vec3 pbr_layers_lighting_standard(vec3 diffColor, vec3 specColor, float f90, vec
 #endif
 }
 
+#if PBR_LAYERS_TRANSMISSION
 vec3 pbr_layers_lighting_transmission(vec3 diffColor, vec3 coatF0, float coatF90, float perceptualRoughness,
                                       float occlusion, vec3 n, vec3 viewDir, UnityGI gi, vec3 transmittedIndirect,
                                       pbr_Transmission tr) {
@@ -200,6 +204,7 @@ vec3 pbr_layers_lighting_transmission(vec3 diffColor, vec3 coatF0, float coatF90
                                      transmittedIndirect, tr);
 #endif
 }
+#endif
 
 // pbr_unity_lighting (pbr/unity/surface_standard.glsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe

@@ -167,7 +167,9 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 // The base's terms that read F90, each with the surface's own F90 where PBR_LAYERS_SPECULAR_F90
 // (f90 for f0, coatF90 for coatF0: the _f90 forms) and F90 from F0 elsewhere (the plain
 // forms, so a program without the layer compiles as it did before it existed). These hold the
-// file's only PBR_LAYERS_SPECULAR_F90 choices.
+// file's only PBR_LAYERS_SPECULAR_F90 choices (and the film's, in pbr_unity_lighting_layers_base);
+// each exists only where its layer is compiled in.
+#if PBR_LAYERS_ANISOTROPY
 float3 pbr_layers_lighting_anisotropic(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
                                      float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi,
                                      pbr_Anisotropy anisotropy) {
@@ -179,6 +181,7 @@ float3 pbr_layers_lighting_anisotropic(float3 diffColor, float3 specColor, float
                                     anisotropy);
 #endif
 }
+#endif
 
 float3 pbr_layers_lighting_standard(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
                                   float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi) {
@@ -190,6 +193,7 @@ float3 pbr_layers_lighting_standard(float3 diffColor, float3 specColor, float f9
 #endif
 }
 
+#if PBR_LAYERS_TRANSMISSION
 float3 pbr_layers_lighting_transmission(float3 diffColor, float3 coatF0, float coatF90, float perceptualRoughness,
                                       float occlusion, float3 n, float3 viewDir, UnityGI gi, float3 transmittedIndirect,
                                       pbr_Transmission tr) {
@@ -201,6 +205,7 @@ float3 pbr_layers_lighting_transmission(float3 diffColor, float3 coatF0, float c
                                      transmittedIndirect, tr);
 #endif
 }
+#endif
 
 // pbr_unity_lighting (pbr/unity/surface_standard.hlsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
