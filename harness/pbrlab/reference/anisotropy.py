@@ -113,7 +113,7 @@ def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength,
     DV = np.minimum(np.where(ok, D * V, 0.0), shading.QUALITY_MAX_SPECULAR_LOBE[quality])
     f0 = _f(f0)
     VdotH = 0.5 * np.sqrt(s2)
-    f90 = f90_from_f0(f0) if f90 is None else np.broadcast_to(_f(f90), f0.shape[:-1])
+    f90 = f90_from_f0(f0) if f90 is None else _f(f90)
     return DV[..., None] * F_Schlick(f0, VdotH[..., None], f90[..., None])
 
 

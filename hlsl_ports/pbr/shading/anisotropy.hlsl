@@ -7,9 +7,9 @@
 //           vec3 pbr_brdf_anisotropic_specular_f90(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0,
 //                                                  float f90, float perceptualRoughness,
 //                                                  float strength)  (an explicit F90)
-//           float pbr_brdf_anisotropic_DV(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b,
-//                                         float perceptualRoughness, float strength,
-//                                         out float LdotH)  (the lobe before F)
+//           void  pbr_brdf_anisotropic_terms(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b,
+//                                            float perceptualRoughness, float strength,
+//                                            out float DV, out float LdotH)  (the lobe before F)
 //           vec3 pbr_anisotropic_bent_normal(vec3 n, vec3 v, vec3 anisotropicDirection,
 //                                            float strength, float perceptualRoughness)
 //           PBR_ANISOTROPIC_BENT_NORMAL_MAX_REL_ERROR (the bent normal's measured error bound)
@@ -114,8 +114,8 @@ float3 pbr_anisotropy_direction(float3 t, float3 b, float2 directionSample, floa
 // D · V with pbr_brdf_standard's selection, and LdotH = VdotH for F: shared by the two forms
 // below, which differ only in the F90 their Fresnel takes (computed last in both, so the plain
 // form compiles to the program it was before the explicit F90 existed).
-float pbr_brdf_anisotropic_DV(float3 n, float3 v, float3 l, float3 t, float3 b, float perceptualRoughness,
-                              float strength, out float LdotH) {
+void pbr_brdf_anisotropic_terms(float3 n, float3 v, float3 l, float3 t, float3 b, float perceptualRoughness,
+                                float strength, out float DV, out float LdotH) {
     float NdotL = dot(n, l);
     float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
@@ -131,15 +131,15 @@ float pbr_brdf_anisotropic_DV(float3 n, float3 v, float3 l, float3 t, float3 b, 
                                     dot(b, halfSum) * invHalfLength, alphas.x, alphas.y);
     float V = pbr_V_SmithGGXCorrelated_Anisotropic(NdotL, NdotV, dot(t, v), dot(b, v), dot(t, l), dot(b, l),
                                                    alphas.x, alphas.y);
-    float DV = pbr_specular_lobe_limit(D * V);
+    DV = pbr_specular_lobe_limit(D * V);
     // pbr_brdf_standard's selection (a select: the unselected values are finite)
-    return min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
+    DV = min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
 }
 
 float3 pbr_brdf_anisotropic_specular(float3 n, float3 v, float3 l, float3 t, float3 b, float3 f0,
                                    float perceptualRoughness, float strength) {
-    float LdotH;
-    float DV = pbr_brdf_anisotropic_DV(n, v, l, t, b, perceptualRoughness, strength, LdotH);
+    float DV, LdotH;
+    pbr_brdf_anisotropic_terms(n, v, l, t, b, perceptualRoughness, strength, DV, LdotH);
     return DV * pbr_F_Schlick(f0, pbr_f90_from_f0(f0), LdotH);
 }
 
@@ -148,8 +148,8 @@ float3 pbr_brdf_anisotropic_specular(float3 n, float3 v, float3 l, float3 t, flo
 // VdotH) on its anisotropic lobe as on the isotropic one.
 float3 pbr_brdf_anisotropic_specular_f90(float3 n, float3 v, float3 l, float3 t, float3 b, float3 f0, float f90,
                                        float perceptualRoughness, float strength) {
-    float LdotH;
-    float DV = pbr_brdf_anisotropic_DV(n, v, l, t, b, perceptualRoughness, strength, LdotH);
+    float DV, LdotH;
+    pbr_brdf_anisotropic_terms(n, v, l, t, b, perceptualRoughness, strength, DV, LdotH);
     return DV * pbr_F_Schlick(f0, f90, LdotH);
 }
 
