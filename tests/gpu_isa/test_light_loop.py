@@ -6,7 +6,8 @@ environment's albedo). RDNA3 / RDNA2 / GCN5 instructions from RADV's null device
 Bounds, from the measurement (RDNA3 / RDNA2 / GCN5, instructions per light above the
 baseline loop):
 * An engine's light loop (uniform trip count, not unrolled). The prepared way
-  (pbr_prepare_surface before the loop, pbr_lighting_standard_light in it) costs 65 / 62 / 60
+  (pbr_prepare_surface before the loop, pbr_lighting_standard_light in it) costs 62 (RDNA3, since the
+  prepared F90; 65 / 62 / 60 before)
   (metallic) and 62 / 59 / 57 (specular workflow), *below* pbr_shade_punctual with the raw
   diffuse colour (72 / 68 / 69: it also re-derives the roughness terms per light): bound
   prepared <= uncoupled + 2. The control: calling the one-light pbr_lighting_standard_dfg in
