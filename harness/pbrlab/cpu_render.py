@@ -37,6 +37,7 @@ from .reference import directional_albedo as ref_albedo
 from .reference import material as ref_material
 from .reference import remap as ref_remap
 from .reference import shading as ref_shading
+from .reference import specular_extension as ref_specular
 from .reference import surface as ref_surface
 from .reference import transmission as ref_transmission
 from .reference import unity_brdf as ref_unity
@@ -162,26 +163,28 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
         diffuse, f0, coat_f0, rough = _surface(material)
         r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
         NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
+        coat_f90, f90 = _explicit_f90s(material)
         if material.iridescence > 0.0:  # the film: the base's F0 and its coat's F0 per pixel
             film = (material.iridescence, material.iridescence_ior, material.iridescence_thickness_max)
-            f0 = ref_surface.iridescent_f0(np.broadcast_to(f0, p.shape), NdotV, *film)
-            film_coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
+            if f90 is None:
+                f0 = ref_surface.iridescent_f0(np.broadcast_to(f0, p.shape), NdotV, *film)
+                film_coat_f0 = ref_surface.iridescent_f0(np.broadcast_to(coat_f0, p.shape), NdotV, *film)
+            else:  # the film over F0 / F90, scaled by F90 (KHR_materials_specular with _iridescence)
+                f0 = ref_specular.iridescent_f0_f90(np.broadcast_to(f0, p.shape), np.full(NdotV.shape, f90),
+                                                    NdotV, *film)
+                film_coat_f0 = ref_specular.iridescent_f0_f90(np.broadcast_to(coat_f0, p.shape),
+                                                              np.full(NdotV.shape, coat_f90), NdotV, *film)
             diffuse = ref_surface.iridescent_diffuse_color(diffuse, coat_f0, film_coat_f0)
             coat_f0 = film_coat_f0
         dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
         specular_f = material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality]
-        # an explicit F90, or None: the coat's (the dielectric's) and the surface's, which the
-        # metallic workflow blends towards 1 (KHR_materials_specular: F90 = mix(f90, 1, metallic))
-        coat_f90 = f90 = material.specular_f90
-        if f90 is not None and material.workflow == "metallic":
-            f90 = ref_material.f90_from_metallic(coat_f90, material.metallic)
         transmitted = None
         if material.transmission > 0.0:  # part of the diffuse's weight passes through instead
             transmitted = (diffuse, dict(
                 dfg=dfg, factor=material.transmission, thickness=material.thickness,
                 attenuation_color=material.attenuation_color, attenuation_distance=material.attenuation_distance,
                 ior=material.ior, quality=quality, specular_f=specular_f,
-                energy_compensated=scene.render.energy_compensation))
+                energy_compensated=scene.render.energy_compensation, coat_f90=coat_f90))
             diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
             diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
@@ -193,7 +196,8 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                 zero = np.zeros(p.shape)
                 color += ref_surface.lighting_anisotropic(
                     diffuse, f0, coat_f0, rough, material.occlusion, n, v, l, radiance, zero, zero, dfg,
-                    material.anisotropy_strength, direction, quality=quality, **material.brdf)
+                    material.anisotropy_strength, direction, quality=quality, f90=f90, coat_f90=coat_f90,
+                    **material.brdf)
                 continue
             color += ref_shading.shade_punctual(n, v, l, radiance, direct_diffuse, f0, rough,
                                                 quality=quality, f90=f90, **material.brdf)
@@ -244,7 +248,18 @@ def transmitted_fraction(scene, material, n, v) -> np.ndarray:
         factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
         attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
         specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
-        energy_compensated=scene.render.energy_compensation)
+        energy_compensated=scene.render.energy_compensation, coat_f90=material.specular_f90)
+
+
+def _explicit_f90s(material) -> tuple:
+    """(coat_f90, f90): a material's explicit F90s, or (None, None) where F90 follows F0. The
+    coat's (the dielectric's: KHR_materials_specular's dielectric_f90 = specular) and the
+    surface's, which the metallic workflow blends towards 1 (F90 = mix(dielectric_f90, 1,
+    metallic), the extension's "Implementation"; pbr_f90_from_metallic)."""
+    coat_f90 = f90 = material.specular_f90
+    if f90 is not None and material.workflow == "metallic":
+        f90 = ref_material.f90_from_metallic(coat_f90, material.metallic)
+    return coat_f90, f90
 
 
 def environment_reflected(scene, material, n, v) -> np.ndarray:
@@ -263,10 +278,11 @@ def environment_reflected(scene, material, n, v) -> np.ndarray:
     r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
     NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
     dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
-    compensated, f90 = scene.render.energy_compensation, material.specular_f90
+    compensated = scene.render.energy_compensation
+    coat_f90, f90 = _explicit_f90s(material)
     diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
     coupled = ref_surface.coupled_diffuse_color(
-        diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, f90))
+        diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, coat_f90))
     irradiance = np.maximum(sh_irradiance(environment_sh(scene.environment), n), 0)
     prefiltered = np.broadcast_to(scene.environment.color * scene.environment.intensity, n.shape)
     return coupled / np.pi * irradiance * material.occlusion + ref_surface.indirect_specular_split_sum(
@@ -293,7 +309,7 @@ def transmitted_light(scene, material, n, v, p) -> np.ndarray:
             factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
             attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
             specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
-            energy_compensated=scene.render.energy_compensation)
+            energy_compensated=scene.render.energy_compensation, coat_f90=material.specular_f90)
     return total
 
 

@@ -42,6 +42,7 @@ LAYERED_GLTF_GOLDENS = {
     "gltf_iridescence": ("iridescence.gltf", None),
     "gltf_transmission_environment": ("transmission.gltf", "0.25,0.3,0.35"),  # the sky seen through
     "gltf_transmission_slab": ("transmission_slab.gltf", None),  # an emissive backdrop seen through
+    "gltf_specular_layers": ("specular_layers.gltf", "0.25,0.3,0.35"),  # KHR_materials_specular's F90 in each layer
 }
 GLTF_GOLDENS.update(LAYERED_GLTF_GOLDENS)
 

@@ -463,10 +463,6 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
             r.fail(f"F90 {m.specular_f90:g} is below the F0 `{f0_name}` {float(np.max(f0)):g}: F90 is at "
                    "least every channel of F0 (KHR_materials_specular: F0 = min(F0_ior x colour, 1) x F90)",
                    "specular_f90")
-        for layer in ("anisotropy_strength", "iridescence", "transmission"):
-            if getattr(m, layer) > 0.0:
-                r.fail(f"the explicit F90 is not combined with `{layer}` (those lobes keep F90 from F0): "
-                       f"remove `specular_f90` or `{layer}`", "specular_f90")
     transmission_keys = [k for k in TRANSMISSION_KEYS if r.has(k)]
     if m.surface is not None and transmission_keys:
         r.fail("the transmission belongs to the default surface; a surface file writes its own output "

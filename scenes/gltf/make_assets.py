@@ -34,6 +34,10 @@ and the glTF JSON written by hand, so each file shows exactly the feature it tes
                              wall whose transmission a texture (R) stripes, a tinted volume of IOR
                              1.33 (thicknessFactor 0.4 x a thickness texture's G, attenuation colour
                              and distance) on a node scaled 0.8 (the thickness scales with it)
+    specular_layers.gltf     KHR_materials_specular (specularFactor 0.4: F90 0.4) on four dark
+                             dielectric spheres: alone, with KHR_materials_anisotropy (0.8), with
+                             KHR_materials_iridescence (a 400 nm film), with a thin
+                             KHR_materials_transmission wall: the explicit F90 through each layer
     transmission_slab.gltf   three glass slabs half over an emissive backdrop (no light, no
                              environment: all they show is what lies behind them): a smooth thin
                              wall of IOR 1, one of IOR 1.5, and a smooth tinted volume (IOR 1.5,
@@ -660,6 +664,40 @@ def transmission():
     b.write_gltf(HERE / "transmission.gltf", external_bin=False)
 
 
+def specular_layers():
+    b = Builder()
+    dark = {"baseColorFactor": [0.05, 0.06, 0.08, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.3}
+    specular = {"KHR_materials_specular": {"specularFactor": 0.4, "specularColorFactor": [1.0, 0.8, 0.6]}}
+    b.json["materials"] = [
+        {"name": "specular", "pbrMetallicRoughness": dark, "extensions": specular},
+        {"name": "specular_anisotropic", "pbrMetallicRoughness": dark,
+         "extensions": {**specular, "KHR_materials_anisotropy": {"anisotropyStrength": 0.8}}},
+        {"name": "specular_film", "pbrMetallicRoughness": dark,
+         "extensions": {**specular, "KHR_materials_iridescence": {"iridescenceFactor": 1.0}}},
+        {"name": "specular_thin_wall", "pbrMetallicRoughness": dark,
+         "extensions": {**specular, "KHR_materials_transmission": {"transmissionFactor": 1.0}}},
+    ]
+    b.json["extensionsUsed"] = ["KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_specular",
+                                "KHR_materials_transmission"]
+    p, n, f = _sphere(subdivisions=3, radius=0.6)
+    uv = _uv_sphere_coordinates(n)
+    tangents = _uv_sphere_tangents(n)  # the anisotropy's tangent space (the glTF validator's rule)
+    for material in range(4):
+        b.json["meshes"].append({"primitives": [b.primitive(p, n, uv, f, material, TANGENT=(tangents, "VEC4"))]})
+    _lit_quads_scene(b, [(m, (-2.4 + 1.6 * m, 0, 0)) for m in range(4)], yfov=0.45, aspect=4.0, distance=6.5)
+    b.write_gltf(HERE / "specular_layers.gltf", external_bin=False)
+
+
+def _uv_sphere_tangents(normals) -> np.ndarray:
+    """_uv_sphere_coordinates' tangent frame: u = 0.5 + atan2(x, z) / 2 pi grows along
+    (z, 0, -x) / |(x, z)| (+X at the front, any direction of the plane at the poles: +X), and
+    cross(n, t) points up, to decreasing v (glTF's v down): w = 1, as _QUAD_TANGENTS."""
+    t = np.stack([normals[:, 2], np.zeros(len(normals)), -normals[:, 0]], axis=-1)
+    length = np.linalg.norm(t, axis=-1, keepdims=True)
+    t = np.where(length > 1e-6, t / np.maximum(length, 1e-12), np.array([1.0, 0.0, 0.0]))
+    return np.concatenate([t, np.ones((len(normals), 1))], axis=-1)
+
+
 SLAB_BACKDROP_EMISSION = [0.9, 0.4, 0.15]
 SLAB_VOLUME = {"thicknessFactor": 0.3, "attenuationColor": [0.4, 0.7, 0.9], "attenuationDistance": 0.5}
 
@@ -762,6 +800,7 @@ def main():
     transmission()
     transmission_slab()
     specular_metal()
+    specular_layers()
 
 
 if __name__ == "__main__":

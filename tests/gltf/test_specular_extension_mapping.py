@@ -83,6 +83,18 @@ def test_a_pure_metals_specular_extension_changes_nothing(tmp_path):
     assert material.dielectric_specular is None and material.specular_f90 is None
 
 
+@pytest.mark.parametrize("layer", [{"KHR_materials_anisotropy": {"anisotropyStrength": 0.6}},
+                                   {"KHR_materials_iridescence": {"iridescenceFactor": 1.0}},
+                                   {"KHR_materials_transmission": {"transmissionFactor": 0.8}}],
+                         ids=["anisotropy", "iridescence", "transmission"])
+def test_the_f90_is_kept_beside_the_layers_that_change_the_base(tmp_path, layer):
+    """The base's anisotropic lobe, film and transmission read the explicit F90
+    (pbr/unity/surface_layers.glsl): the importer keeps it and warns about none of them."""
+    extensions = {"KHR_materials_specular": {"specularFactor": 0.5}, **layer}
+    material = _material(tmp_path, {"metallicFactor": 0.0}, extensions)
+    assert material.specular_f90 == 0.5
+
+
 def _material(tmp_path, pbr, extensions):
     """The one material of a one-triangle glTF (positions, and UVs for a texture)."""
     data = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.float32).tobytes() + bytes(24)  # + 3 UVs of 0

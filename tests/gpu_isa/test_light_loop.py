@@ -6,12 +6,13 @@ environment's albedo). RDNA3 / RDNA2 / GCN5 instructions from RADV's null device
 Bounds, from the measurement (RDNA3 / RDNA2 / GCN5, instructions per light above the
 baseline loop):
 * An engine's light loop (uniform trip count, not unrolled). The prepared way
-  (pbr_prepare_surface before the loop, pbr_lighting_standard_light in it) costs 59 / 56 / 53
-  (metallic) and 56 / 53 / 50 (specular workflow), *below* pbr_shade_punctual with the raw
-  diffuse colour (66 / 62 / 62: it also re-derives the roughness terms per light): bound
+  (pbr_prepare_surface before the loop, pbr_lighting_standard_light in it) costs 56 / 53 / 50
+  (metallic; 59 / 56 / 53 before the prepared F90) and 56 / 53 / 50 (specular workflow), *below*
+  pbr_shade_punctual with the raw diffuse colour (66 / 62 / 62: it also re-derives the roughness
+  terms per light): bound
   prepared <= uncoupled + 2. The control: calling the one-light pbr_lighting_standard_dfg in
   the loop (the coupling inside it) costs 71 / 68 / 66 and 79 / 75 / 73, at least 12 above the
-  prepared way on every family and workflow (anisotropic: 85 to 96 above, the tangent frame
+  prepared way on every family and workflow (anisotropic: 82 to 96 above, the tangent frame
   included): bound composed >= prepared + 8, so the kernel does see a coupling left in the loop.
 * The scene programs (specialised, 1, 2 and 4 directional lights, HIGH and LOW): per-light
   increments coupled 57, 57.5 (HIGH) and 38, 38 (LOW) RDNA3, uncoupled 58, 58 and 39, 38.5;

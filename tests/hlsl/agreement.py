@@ -79,11 +79,28 @@ STRUCT_BUILDERS["pbr_PreparedTransmission"] = ("test_prepared_transmission", (
 STRUCT_BUILDERS["pbr_Light"] = STRUCT_BUILDERS["UnityLight"]
 STRUCT_BUILDERS["pbr_Indirect"] = STRUCT_BUILDERS["UnityIndirect"]
 
+_F90_PREPARE = (("vec3", "diffuseColor"), ("vec3", "f0"), ("float", "f90"), ("vec3", "coatF0"), ("float", "coatF90"),
+                ("float", "perceptualRoughness"), ("float", "occlusion"), ("vec3", "n"), ("vec3", "v"), ("vec2", "dfg"))
+_F90_TRANSMISSION = (("vec3", "diffuseColor"), ("vec3", "coatF0"), ("float", "coatF90"),
+                     ("float", "perceptualRoughness"), ("float", "occlusion"), ("vec3", "n"), ("vec3", "v"),
+                     ("pbr_Transmission", "tr"), ("vec2", "dfg"))
+
 # Functions with out parameters or array parameters: evaluated through wrappers.
 SPECIAL = {
     # struct results (issue 25's prepared surface and anisotropic frame): their fields, summed
     "pbr_prepare_surface_dfg": [("test_prepare_surface_dfg", STRUCT_BUILDERS["pbr_PreparedSurface"][1])],
     "pbr_prepare_surface": [("test_prepare_surface", STRUCT_BUILDERS["pbr_PreparedSurface"][1][:-1])],
+    # the same with an explicit F90 (KHR_materials_specular): f90 after f0, coatF90 after coatF0
+    "pbr_prepare_surface_f90_dfg": [("test_prepare_surface_f90_dfg", _F90_PREPARE)],
+    "pbr_prepare_surface_f90": [("test_prepare_surface_f90", _F90_PREPARE[:-1])],
+    "pbr_prepare_transmission_f90_dfg": [(f"test_prepare_transmission_f90_dfg_{part}", _F90_TRANSMISSION)
+                                         for part in ("surface", "rho", "weight")],
+    "pbr_prepare_transmission_from_surface": [(f"test_prepare_transmission_from_surface_{part}", (
+        ("pbr_PreparedSurface", "s"), ("vec3", "diffuseColor"), ("vec3", "coatF0"), ("pbr_Transmission", "tr")))
+        for part in ("rho", "weight")],
+    "pbr_brdf_anisotropic_terms": [("test_pbr_brdf_anisotropic_terms", (
+        ("vec3", "n"), ("vec3", "v"), ("vec3", "l"), ("vec3", "a"), ("vec3", "b"), ("float", "perceptualRoughness"),
+        ("float", "strength")))],
     "pbr_anisotropic_frame": [("test_anisotropic_frame", STRUCT_BUILDERS["pbr_AnisotropicFrame"][1])],
     "pbr_prepare_transmission_dfg": [(f"test_prepare_transmission_dfg_{part}",
                                       STRUCT_BUILDERS["pbr_PreparedTransmission"][1])
@@ -127,6 +144,8 @@ VARIANT_DEPENDENT = {
     "pbr_lighting_standard_light", "pbr_lighting_standard_add_environment", "pbr_lighting_anisotropic_light",
     # the explicit F90's (KHR_materials_specular) F, its lobe and its whole lighting
     "pbr_specular_F_f90", "pbr_shade_punctual_f90", "pbr_lighting_standard_f90_dfg",
+    # the explicit F90's preparation and the anisotropic lighting with it
+    "pbr_prepare_surface_f90_dfg", "pbr_prepare_surface_f90", "pbr_lighting_anisotropic_f90",
 }
 
 # Every value of every selector, each in at least one configuration (the default

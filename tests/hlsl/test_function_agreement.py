@@ -55,11 +55,13 @@ for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_l
 # contract the phase's multiply-add differently, so values near a zero of the cosine differ
 # by many ulp but little absolutely. Measured worst 2.0e-7 absolute; bound 5e-7 + 1e-6 rel.
 # The same bound holds for what carries the film into the base's F0 and lighting
-# (pbr_iridescent_f0 and the LayersBase functions: measured worst 7 ulp, 6.6e-7 relative).
+# (pbr_iridescent_f0 and the LayersBase functions: measured worst 7 ulp, 6.6e-7 relative), and
+# for pbr_iridescent_f0_f90, the same film over F0 / F90 times F90 <= 1 (measured 13 ulp of a
+# small F0', within the same absolute bound).
 # The LayersBaseTransmission pair is the same film and lobe through the same body (the
 # wrapper's layers carry no transmission; pbr_lighting_transmission itself agrees within
 # 2 ulp): measured worst 7 ulp there too.
-for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0"):
+for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0", "pbr_iridescent_f0_f90"):
     STATED_BOUNDS[_name] = ("abs+rel", (5e-7, 1e-6), "fma contraction of the interference phase (see above)")
 # The LayersBase lightings carry that phase error times the light (radiance up to e^7 here), so
 # one sample is not their worst: on main's library (before the explicit F90), each function

@@ -52,6 +52,13 @@ multiple-scattering compensation:
                       F90 = mix(d90, 1, m), the diffuse (1 - m) coupled to the dielectric (d0, d90):
                       E(F0, F90) + (1 - m)(1 - E(d0, d90)) <= 1; a d0 channel of 1 leaves no diffuse
                       (albedo (1 - max d0)(1 - m), the monochrome rule of Unity's specular workflow)
+  F90 layered         KHR_materials_specular's F90 with the layers that change the base, white
+                      (albedo 1, F0 0.02) at F90 0.5 (f90_*) and at F90 1 (f90_one_*): anisotropic
+                      (strength 0.8: the split sum is the isotropic one, 1), filmed (400 nm, IOR
+                      1.3: the film over F0 / F90 scaled by F90, reference/specular_extension.py
+                      iridescent_f0_f90; the diffuse takes what it leaves, 1) and transmissive
+                      (thin: E + (1 - E) = 1, E = F0 A + F90 B); and a black F0 0 with F90 0.8
+                      under a 550 nm film (f90_black_filmed): E(F0', 0.8) < 1, the film's energy only
 The transmissive rows are drawn by a render of their own (the same layout without the other
 rows), merged by coverage: a transmissive sphere sees the scene's transmission copy of the
 non-transmissive spheres (harness/pbrlab/transmission_copy.py), and a sphere that loses energy
@@ -67,6 +74,7 @@ from pbrlab.cpu_render import _sheen_albedo
 from pbrlab.reference import directional_albedo as ref_albedo
 from pbrlab.reference import surface as ref_surface
 from pbrlab.reference import shading as ref_shading
+from pbrlab.reference import specular_extension as ref_specular
 from pbrlab.render import render_scene, scene_radius
 from pbrlab.scene import parse_scene
 
@@ -99,17 +107,29 @@ MATERIALS = {
                                  "specular_f90": 0.0},
     "specular_metal_half": {"albedo": [1, 1, 1], "metallic": 1.0, "dielectric_specular": [0.5, 0.0, 0.2],
                             "specular_f90": 0.5},
+    **{f"{prefix}_{layer}": {"workflow": "specular", "albedo": [1, 1, 1], "specular": [0.02, 0.02, 0.02],
+                             "specular_f90": f90, **extra}
+       for prefix, f90 in (("f90", 0.5), ("f90_one", 1.0))
+       for layer, extra in (("anisotropic", {"anisotropy_strength": 0.8}), ("filmed", {"iridescence": 1.0}),
+                            ("transmissive", {"transmission": 1.0}))},
+    "f90_black_filmed": {"workflow": "specular", "albedo": [0, 0, 0], "specular": [0, 0, 0], "specular_f90": 0.8,
+                         "iridescence": 1.0, "iridescence_thickness_max": 550.0},
 }
 # The explicit F90s (JSON specular_f90: KHR_materials_specular's specularFactor); others follow F0.
 # The surface's, mix(specular_f90, 1, metallic) in the metallic workflow, and the coat's (the
 # dielectric's: specular_f90 itself) where they differ.
-F90 = {"f90_dielectric": 0.5, "f90_black": 0.8, "specular_dielectric_max": 1.0, "specular_half_metal_max": 1.0,
-       "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0}
+F90 = {"f90_dielectric": 0.5, "f90_black": 0.8, "f90_black_filmed": 0.8, "specular_dielectric_max": 1.0,
+       "specular_half_metal_max": 1.0, "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0,
+       **{f"{prefix}_{layer}": f90 for prefix, f90 in (("f90", 0.5), ("f90_one", 1.0))
+          for layer in ("anisotropic", "filmed", "transmissive")}}
 COAT_F90 = {"specular_half_metal_zero": 0.0, "specular_metal_half": 0.5}
+# The F90 rows with a layer that changes the base: specular workflow, F0 0.02 (black: 0).
+F90_LAYERED = [name for name in F90 if name.startswith("f90_") and name not in ("f90_dielectric", "f90_black")]
 # What the volume lets through of the transmitted light: c^(thickness / distance) per channel
 ATTENUATION = {"tinted_volume": np.array([0.5, 0.7, 0.9])}
 # The films: (mask, IOR, thickness in nm) as KHR_materials_iridescence's defaults fill them in.
-FILMS = {"filmed_dielectric": (1.0, 1.3, 400.0), "filmed_metal": (1.0, 1.8, 550.0)}
+FILMS = {"filmed_dielectric": (1.0, 1.3, 400.0), "filmed_metal": (1.0, 1.8, 550.0),
+         "f90_filmed": (1.0, 1.3, 400.0), "f90_one_filmed": (1.0, 1.3, 400.0), "f90_black_filmed": (1.0, 1.3, 550.0)}
 # The coat's smoothness from the column's (base) smoothness.
 COAT_SMOOTHNESS = {"coated_dielectric": lambda s: s, "coated_metal": lambda s: 1.0 - s,
                    "sheened_coated": lambda s: s}
@@ -121,7 +141,8 @@ F0 = {"white_metal": 1.0, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "
       "transmissive_volume": 0.04, "tinted_volume": 0.04, "f90_dielectric": 0.02, "f90_black": 0.0,
       # mix(dielectric_specular, albedo 1, metallic)
       "specular_dielectric_max": np.array([1.0, 0.0, 0.4]), "specular_half_metal_max": np.array([0.54, 0.51, 0.6]),
-      "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0}
+      "specular_half_metal_zero": 0.5, "specular_metal_half": 1.0,
+      **{name: 0.0 if "black" in name else 0.02 for name in F90_LAYERED}}
 # F0 of the dielectric coat over the diffuse (pbr_coupled_diffuse_color's coatF0): 0.04 in the
 # metallic workflow, the specular colour in the specular workflow.
 COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 0.0, "black_dielectric": 0.04,
@@ -130,7 +151,8 @@ COAT_F0 = {"white_metal": 0.04, "white_dielectric": 0.04, "zero_f0_dielectric": 
            "transmissive_thin": 0.04, "transmissive_volume": 0.04, "tinted_volume": 0.04,
            "f90_dielectric": 0.02, "f90_black": 0.0, "specular_dielectric_max": np.array([1.0, 0.0, 0.4]),
            "specular_half_metal_max": np.array([0.08, 0.02, 0.2]), "specular_half_metal_zero": 0.0,
-           "specular_metal_half": np.array([0.5, 0.0, 0.2])}
+           "specular_metal_half": np.array([0.5, 0.0, 0.2]),
+           **{name: F0[name] for name in F90_LAYERED}}
 PIXELS_PER_SPHERE = 40
 SPACING = 2.2
 
@@ -213,10 +235,14 @@ def _expected(name, compensation, A, B, mu):
            "tinted_volume": 1.0, "f90_dielectric": 1.0, "f90_black": 0.0,
            "specular_dielectric_max": 0.0,  # 1 - max(d0) = 0: no diffuse (the monochrome rule, as Unity's)
            "specular_half_metal_max": 0.5, "specular_half_metal_zero": 0.5,
-           "specular_metal_half": 0.0}[name]  # albedo (1 - metallic)
+           "specular_metal_half": 0.0,  # albedo (1 - metallic)
+           **{k: 0.0 if "black" in k else 1.0 for k in F90_LAYERED}}[name]
     rho = rho * ATTENUATION.get(name, 1.0)  # the transmitted part through the volume
     f0, coat_f0 = F0[name], COAT_F0[name]
-    if name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')
+    if name in FILMS and name in F90:  # the film over F0 / F90, scaled by F90 (the F90 kept)
+        f0, coat_f0 = (ref_specular.iridescent_f0_f90(np.full((len(mu), 3), f), np.full(len(mu), F90[name]), mu,
+                                                      *FILMS[name]) for f in (f0, coat_f0))
+    elif name in FILMS:  # the film folded into both F0s at this view (F90 then follows F0')
         f0, coat_f0 = (ref_surface.iridescent_f0(np.full((len(mu), 3), f), mu, *FILMS[name]) for f in (f0, coat_f0))
     f90 = F90.get(name)
     return albedo(f0, f90) + rho * (1 - albedo(coat_f0, COAT_F90.get(name, f90)))

@@ -334,7 +334,7 @@ IRIDESCENCE_TOKENS = ["u_iridescence", "u_iridescence_ior", "u_iridescence_thick
 # The transmission's uniforms and call sites, and the scene's transmission copy it reads
 # (templates/transmission_scene.inc): only where a material transmits.
 TRANSMISSION_TOKENS = ["u_transmission", "u_attenuation_color", "pbrlab_surf_transmission(IN,layers)",
-                       "c+=pbr_lighting_transmission(", "TransmittedDirection(o.Normal",
+                       "c+=pbr_layers_lighting_transmission(", "TransmittedDirection(o.Normal",
                        "u_transmission_scene", "u_transmission_view_proj", "u_transmission_lod_scale",
                        "pbrlab_transmitted_radiance("]
 _NO_SHEEN_OR_COAT = ["u_sheen_color", "u_clearcoat", ",layers,o.Normal,v,gi,"]

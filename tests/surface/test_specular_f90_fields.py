@@ -19,11 +19,8 @@ SPECULAR = {"workflow": "specular", "specular": [0.02, 0.02, 0.02]}
     ({"metallic": 0.5, "specular_f90": 0.03}, {}, "F90 0.03 is below the F0 `dielectric_specular` 0.04"),
     ({**SPECULAR, "specular": [0.2, 0.0, 0.0], "specular_f90": 0.1}, {}, "F90 0.1 is below the F0 `specular` 0.2"),
     ({**SPECULAR, "specular_f90": 1.5}, {}, "materials.m.specular_f90: expected a number in [0.0, 1.0]"),
-    ({**SPECULAR, "specular_f90": 0.5, "transmission": 0.5}, {}, "not combined with `transmission`"),
-    ({**SPECULAR, "specular_f90": 0.5, "anisotropy_strength": 0.5}, {}, "not combined with `anisotropy_strength`"),
-    ({**SPECULAR, "specular_f90": 0.5, "iridescence": 0.5}, {}, "not combined with `iridescence`"),
     ({**SPECULAR, "specular_f90": 0.5}, {"brdf_model": "unity"}, "render.brdf_model: Unity's BRDFs take F90 from F0"),
-], ids=["metallic_below_dielectric_f0", "metallic_below_default_f0", "below_f0", "above_one", "transmission", "anisotropy", "iridescence", "unity"])
+], ids=["metallic_below_dielectric_f0", "metallic_below_default_f0", "below_f0", "above_one", "unity"])
 def test_specular_f90_is_refused_by_name(material, render, message):
     with pytest.raises(PbrlabError, match=".*" + message.replace("[", r"\[").replace("]", r"\]")
                        .replace("(", r"\(").replace(")", r"\)").replace(".", r"\.")):
@@ -62,3 +59,12 @@ def test_dielectric_specular_is_a_layer_only_where_given():
     assert without.materials["m"].dielectric_specular is None
     on, off = (features.material_features(s.materials["m"]) for s in (given, without))
     assert on.dielectric_specular and on.specular_f90 and not off.dielectric_specular
+
+
+@pytest.mark.parametrize("layer", [{"transmission": 0.5}, {"anisotropy_strength": 0.5}, {"iridescence": 0.5},
+                                   {"clearcoat": 0.5}, {"sheen_color": [0.5, 0.5, 0.5]}],
+                         ids=["transmission", "anisotropy", "iridescence", "clearcoat", "sheen"])
+def test_specular_f90_combines_with_every_layer(layer):
+    """Every layer's base reads the explicit F90 (pbr/unity/surface_layers.glsl), so none is refused."""
+    scene = parse_scene(dict(BASE, materials={"m": {**SPECULAR, "specular_f90": 0.5, **layer}}))
+    assert features.material_features(scene.materials["m"]).specular_f90

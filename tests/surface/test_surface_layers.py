@@ -89,16 +89,36 @@ def test_a_surface_file_writing_the_dielectric_f0_renders_like_the_json_material
     assert np.abs(bare - want)[..., :3].max() > 0.01
 
 
+F90_LAYERS = {"anisotropy_strength": 0.6, "iridescence": 0.8, "iridescence_thickness_max": 500.0, "transmission": 0.5}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_surface_file_writing_specular_f90_with_base_layers_renders_like_the_json_material(language):
+    """SpecularF90 beside the anisotropy, the film and the transmission (each reads it:
+    pbr/unity/surface_layers.glsl) from a surface file and from JSON: the same image to
+    ULP_BOUND, and another one with F90 from F0 (the layers' own F90 is read)."""
+    got = render.render_scene(_scene({"surface": "specular_f90_layers.glsl", "workflow": "specular"}),
+                              language=language).linear
+    want = render.render_scene(_scene({**SPECULAR_BASE, **F90_LAYERS, "specular_f90": 0.5}),
+                               language=language).linear
+    from_f0 = render.render_scene(_scene({**SPECULAR_BASE, **F90_LAYERS}), language=language).linear
+    covered = want[..., 3] > 0
+    assert covered.sum() > 1000 and np.array_equal(got[..., 3] > 0, covered)
+    assert float32_ulps(want[..., :3], got[..., :3])[covered].max() <= ULP_BOUND
+    assert np.abs(from_f0 - want)[..., :3].max() > 0.01
+
+
 def test_the_layers_compiled_are_the_ones_the_surface_writes():
     def layers(surface):
         f = features.material_features(_scene({"surface": surface}).materials["m"])
         return {layer for layer in features.LAYERS if getattr(f, layer)}
 
     assert layers("coat.glsl") == {"clearcoat"}
-    # every layer but the explicit F90, which the anisotropic, filmed and transmissive base keeps from
-    # F0, and the metallic workflow's dielectric F0 (dielectric_specular.glsl below)
+    # every layer but the explicit F90 (its JSON twin is metallic; JSON's specular_f90 is the specular
+    # workflow's) and the metallic workflow's dielectric F0 (dielectric_specular.glsl below)
     assert layers("every_layer.glsl") == set(features.LAYERS) - {"specular_f90", "dielectric_specular"}
     assert layers("specular_f90.glsl") == {"specular_f90"}
+    assert layers("specular_f90_layers.glsl") == {"specular_f90", "anisotropy", "iridescence", "transmission"}
     assert layers("dielectric_specular.glsl") == {"dielectric_specular", "specular_f90"}
     assert layers("../../../scenes/unity_example/brick_surface.glsl") == set()
 

@@ -4,6 +4,12 @@
 //           vec3 pbr_anisotropy_direction(vec3 t, vec3 b, vec2 directionSample, float rotation)
 //           vec3 pbr_brdf_anisotropic_specular(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0,
 //                                              float perceptualRoughness, float strength)
+//           vec3 pbr_brdf_anisotropic_specular_f90(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0,
+//                                                  float f90, float perceptualRoughness,
+//                                                  float strength)  (an explicit F90)
+//           void  pbr_brdf_anisotropic_terms(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b,
+//                                            float perceptualRoughness, float strength,
+//                                            out float DV, out float LdotH)  (the lobe before F)
 //           vec3 pbr_anisotropic_bent_normal(vec3 n, vec3 v, vec3 anisotropicDirection,
 //                                            float strength, float perceptualRoughness)
 //           PBR_ANISOTROPIC_BENT_NORMAL_MAX_REL_ERROR (the bent normal's measured error bound)
@@ -30,7 +36,7 @@
 //    (pbr_safe_normalize).
 //  - Lobe (direct light). D · V · F with D = pbr_D_GGX_Anisotropic, V =
 //    pbr_V_SmithGGXCorrelated_Anisotropic (alphaT along anisotropicT = t, alphaB along b),
-//    F = pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH), in 1/sr (no light, no cosine, as
+//    F = pbr_F_Schlick(f0, pbr_f90_from_f0(f0), VdotH) (the _f90 form: the caller's F90), in 1/sr (no light, no cosine, as
 //    pbr_brdf_standard's specular; multiply by PBR_LIGHT_UNIT_SCALE · NdotL · radiance).
 //    strength = 0 is pbr_brdf_standard's GGX / height-correlated Smith / Schlick specular
 //    (tested to float32 rounding). The guards are pbr_brdf_standard's: perceptual roughness
@@ -104,8 +110,11 @@ vec3 pbr_anisotropy_direction(vec3 t, vec3 b, vec2 directionSample, float rotati
     return pbr_safe_normalize(t * (c * x - s * y) + b * (s * x + c * y));
 }
 
-vec3 pbr_brdf_anisotropic_specular(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0,
-                                   float perceptualRoughness, float strength) {
+// D · V with pbr_brdf_standard's selection, and LdotH = VdotH for F: shared by the two forms
+// below, which differ only in the F90 their Fresnel takes (computed last in both, so the plain
+// form compiles to the program it was before the explicit F90 existed).
+void pbr_brdf_anisotropic_terms(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, float perceptualRoughness,
+                                float strength, out float DV, out float LdotH) {
     float NdotL = dot(n, l);
     float NdotV = clamp(dot(n, v), PBR_MIN_NDOTV, 1.0);
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
@@ -114,17 +123,33 @@ vec3 pbr_brdf_anisotropic_specular(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 
     // h = (l + v) / |l + v| only as scaled cosines (see header)
     vec3 halfSum = l + v;
     float halfLength2 = dot(halfSum, halfSum);
-    float LdotH = 0.5 * sqrt(halfLength2);  // == VdotH for unit l, v (standard.glsl)
+    LdotH = 0.5 * sqrt(halfLength2);  // == VdotH for unit l, v (standard.glsl)
     float invHalfLength = inversesqrt(clamp(halfLength2, PBR_MIN_NDOT_HALF_SUM * PBR_MIN_NDOT_HALF_SUM, 4.0));
     float nDotHalfSum = dot(n, halfSum);
     float D = pbr_D_GGX_Anisotropic(nDotHalfSum * invHalfLength, dot(t, halfSum) * invHalfLength,
                                     dot(b, halfSum) * invHalfLength, alphas.x, alphas.y);
     float V = pbr_V_SmithGGXCorrelated_Anisotropic(NdotL, NdotV, dot(t, v), dot(b, v), dot(t, l), dot(b, l),
                                                    alphas.x, alphas.y);
-    float DV = pbr_specular_lobe_limit(D * V);
+    DV = pbr_specular_lobe_limit(D * V);
     // pbr_brdf_standard's selection (a select: the unselected values are finite)
     DV = min(NdotL, nDotHalfSum) >= PBR_MIN_NDOT_HALF_SUM ? DV : 0.0;
+}
+
+vec3 pbr_brdf_anisotropic_specular(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0,
+                                   float perceptualRoughness, float strength) {
+    float DV, LdotH;
+    pbr_brdf_anisotropic_terms(n, v, l, t, b, perceptualRoughness, strength, DV, LdotH);
     return DV * pbr_F_Schlick(f0, pbr_f90_from_f0(f0), LdotH);
+}
+
+// The same with an explicit F90 (KHR_materials_specular's specularFactor, >= every channel of
+// f0): the sample viewer's dielectric Fresnel F_Schlick(f0 · specularWeight, specularWeight,
+// VdotH) on its anisotropic lobe as on the isotropic one.
+vec3 pbr_brdf_anisotropic_specular_f90(vec3 n, vec3 v, vec3 l, vec3 t, vec3 b, vec3 f0, float f90,
+                                       float perceptualRoughness, float strength) {
+    float DV, LdotH;
+    pbr_brdf_anisotropic_terms(n, v, l, t, b, perceptualRoughness, strength, DV, LdotH);
+    return DV * pbr_F_Schlick(f0, f90, LdotH);
 }
 
 vec3 pbr_anisotropic_bent_normal(vec3 n, vec3 v, vec3 anisotropicDirection, float strength,

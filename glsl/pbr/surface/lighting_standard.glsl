@@ -19,10 +19,15 @@
 //           vec3 pbr_lighting_standard_light(pbr_PreparedSurface s, pbr_Light light)
 //           vec3 pbr_lighting_standard_add_environment(pbr_PreparedSurface s, pbr_Indirect indirect,
 //                                                      vec3 radiance)
+//           pbr_PreparedSurface pbr_prepare_surface_f90_dfg(vec3 diffuseColor, vec3 f0, float f90,
+//                                          vec3 coatF0, float coatF90, float perceptualRoughness,
+//                                          float occlusion, vec3 n, vec3 v, vec2 dfg)
+//           pbr_PreparedSurface pbr_prepare_surface_f90(..., vec3 n, vec3 v)  (the table fetched)
 //           vec3 pbr_lighting_standard_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0,
 //                                          float coatF90, float perceptualRoughness,
 //                                          float occlusion, vec3 n, vec3 v, pbr_GI gi)
 //           vec3 pbr_lighting_standard_f90_dfg(..., pbr_GI gi, vec2 dfg)  (the same, given dfg)
+//           vec3 pbr_indirect_specular_albedo_f90(vec3 f0, float f90, vec2 dfg)
 //           vec3 pbr_indirect_specular_split_sum_f90(vec3 prefiltered, vec3 f0, float f90, ...)
 //           vec3 pbr_indirect_diffuse_color_f90(vec3 diffuseColor, vec3 coatF0, float coatF90,
 //                                               vec2 dfg)
@@ -50,7 +55,7 @@
 // directional albedo at NdotV from the same DFG values as the split sum (single
 // scattering for direct light, times the compensation for the environment when
 // PBR_ENERGY_COMPENSATION is on). F90 follows F0 (pbr_f90_from_f0), so
-// f0 = 0 has no specular; the _f90 forms at the end take the caller's F90 instead, for f0
+// f0 = 0 has no specular; the _f90 forms take the caller's F90 instead, for f0
 // (f90) and for the coat's F0 (coatF90): KHR_materials_specular's F90 = specularFactor ·
 // specularTexture.a (the dielectric's; a metallic m blends it towards 1, F90 = mix(f90, 1, m)),
 // in the direct lobe, the split sum and both couplings of the diffuse. Each needs f90 >= every
@@ -69,6 +74,11 @@
 //   c = pbr_lighting_standard_add_environment(s, indirect, c);
 // pbr_lighting_standard[_dfg] (one light and the environment) is that composition, with the
 // same operations in the same order as before the split (bit for bit: the golden tests).
+// An explicit F90 is part of the preparation only when asked for: pbr_prepare_surface_f90[_dfg]
+// fill the same struct with the caller's F90s (s.f90 for f0's Fresnel; the couplings and the
+// split sum with them), pbr_prepare_surface[_dfg] with pbr_f90_from_f0; the light and the
+// environment read the struct alike, and pbr_lighting_standard_f90[_dfg] are the same
+// composition over pbr_prepare_surface_f90[_dfg].
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_GLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_GLSL
@@ -98,7 +108,19 @@ struct pbr_GI {
 };
 
 // The directional albedo of the specular lobe under environment light: single scattering
-// (pbr_specular_albedo) times, by default, the multiple-scattering compensation.
+// (pbr_specular_albedo_f90: F0 A + F90 B) times, by default, the multiple-scattering
+// compensation (at F0: see pbr_energy_compensation). The plain forms take F90 =
+// pbr_f90_from_f0(f0), as the BRDF does (pbr/shading/dispatch.glsl), in bodies of their own:
+// written as calls of the _f90 forms, the F90's earlier computation moved the HLSL port's
+// filmed scene programs by -3 .. -5 RDNA3 instructions (see pbr_prepare_surface_f90_dfg).
+vec3 pbr_indirect_specular_albedo_f90(vec3 f0, float f90, vec2 dfg) {
+    vec3 albedo = pbr_specular_albedo_f90(f0, f90, dfg);
+#if PBR_ENERGY_COMPENSATION
+    albedo *= pbr_energy_compensation(f0, dfg);
+#endif
+    return albedo;
+}
+
 vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
     vec3 albedo = pbr_specular_albedo(f0, dfg);
 #if PBR_ENERGY_COMPENSATION
@@ -110,6 +132,12 @@ vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
 // The environment's specular reflection as pbrlab computes it: prefiltered radiance times
 // the split-sum albedo (Karis 2013), with specular occlusion and, by default,
 // multiple-scattering compensation. dfg = pbr_env_brdf(NdotV, roughness).
+vec3 pbr_indirect_specular_split_sum_f90(vec3 prefiltered, vec3 f0, float f90, float roughness,
+                                         float NdotV, float occlusion, vec2 dfg) {
+    return prefiltered * pbr_indirect_specular_albedo_f90(f0, f90, dfg)
+         * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
+}
+
 vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
                                      float NdotV, float occlusion, vec2 dfg) {
     return prefiltered * pbr_indirect_specular_albedo(f0, dfg)
@@ -118,16 +146,21 @@ vec3 pbr_indirect_specular_split_sum(vec3 prefiltered, vec3 f0, float roughness,
 
 // The diffuse colour the environment lights: coupled to the coat's environment albedo
 // (with its compensation), as the split sum reflects it.
+vec3 pbr_indirect_diffuse_color_f90(vec3 diffuseColor, vec3 coatF0, float coatF90, vec2 dfg) {
+    return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo_f90(coatF0, coatF90, dfg));
+}
+
 vec3 pbr_indirect_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec2 dfg) {
     return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo(coatF0, dfg));
 }
 
 // The per-pixel part of the lighting: what depends on the point, the view and the material
-// only (pbr_prepare_surface_dfg fills it; the per-light and environment functions read it).
+// only (pbr_prepare_surface[_f90]_dfg fills it; the per-light and environment functions read it).
 struct pbr_PreparedSurface {
     vec3 n;                       // unit normal
     vec3 v;                       // unit direction to the viewer
     vec3 f0;
+    float f90;                    // f0's F90: pbr_f90_from_f0(f0), or the caller's (the _f90 forms)
     float perceptualRoughness;    // clamped to the tier's floor (pbr_clamp_perceptual_roughness)
     float occlusion;              // ambient occlusion (indirect light only)
     vec3 directDiffuseColor;      // coupled to the coat's single-scattering albedo bound (direct light)
@@ -141,8 +174,35 @@ struct pbr_PreparedSurface {
 // coat's environment albedo, the split-sum albedo (Karis 2013) with, by default,
 // multiple-scattering compensation, and the specular occlusion. dfg must be
 // pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), pbr_clamp_perceptual_roughness(perceptualRoughness)):
-// engines that fetch their own table call this form; pbr_prepare_surface fetches it through
-// PBR_DFG_LUT_LOOKUP (or the analytic fit: pbr/ibl/environment_brdf.glsl).
+// engines that fetch their own table call the _dfg forms; pbr_prepare_surface[_f90] fetch it
+// through PBR_DFG_LUT_LOOKUP (or the analytic fit: pbr/ibl/environment_brdf.glsl).
+// The _f90 form takes the caller's F90 for f0 (f90) and for the coat's F0 (coatF90)
+// (KHR_materials_specular: see the header); the plain form fills the same struct with F90 =
+// pbr_f90_from_f0 of each, in its own body: written as a call of the _f90 form, the two F90s
+// were computed ahead of the coupling and 14 of the 108 GLSL programs of tests/specialisation's
+// scenes (sheened, anisotropic, filmed, transmissive) moved by -3 .. +3 RDNA3 instructions; in
+// this order (F90 from F0 where the albedos need it, s.f90 last) every GLSL program without an
+// explicit F90 compiles as before. (The HLSL port's three filmed isotropic programs lose 3 to
+// 5 instructions: their light reads s.f90 where it re-derived F90 from the film's F0.)
+pbr_PreparedSurface pbr_prepare_surface_f90_dfg(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
+                                                float perceptualRoughness, float occlusion, vec3 n, vec3 v,
+                                                vec2 dfg) {
+    pbr_PreparedSurface s;
+    s.n = n;
+    s.v = v;
+    s.f0 = f0;
+    s.f90 = f90;
+    s.perceptualRoughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    s.occlusion = occlusion;
+    s.directDiffuseColor = pbr_coupled_diffuse_color(diffuseColor, coatF0,
+                                                     pbr_specular_albedo_bound_f90(coatF0, coatF90, dfg));
+    s.indirectDiffuseColor = pbr_indirect_diffuse_color_f90(diffuseColor, coatF0, coatF90, dfg);
+    s.indirectSpecularAlbedo = pbr_indirect_specular_albedo_f90(f0, f90, dfg);
+    s.specularOcclusion = pbr_specular_occlusion(max(dot(n, v), PBR_MIN_NDOTV), occlusion,
+                                                 s.perceptualRoughness * s.perceptualRoughness);
+    return s;
+}
+
 pbr_PreparedSurface pbr_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
                                             float occlusion, vec3 n, vec3 v, vec2 dfg) {
     pbr_PreparedSurface s;
@@ -156,7 +216,15 @@ pbr_PreparedSurface pbr_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coa
     s.indirectSpecularAlbedo = pbr_indirect_specular_albedo(f0, dfg);
     s.specularOcclusion = pbr_specular_occlusion(max(dot(n, v), PBR_MIN_NDOTV), occlusion,
                                                  s.perceptualRoughness * s.perceptualRoughness);
+    s.f90 = pbr_f90_from_f0(f0);
     return s;
+}
+
+pbr_PreparedSurface pbr_prepare_surface_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
+                                            float perceptualRoughness, float occlusion, vec3 n, vec3 v) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_prepare_surface_f90_dfg(diffuseColor, f0, f90, coatF0, coatF90, roughness, occlusion, n, v, dfg);
 }
 
 pbr_PreparedSurface pbr_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
@@ -167,9 +235,11 @@ pbr_PreparedSurface pbr_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0,
 }
 
 // One punctual light: pbr_shade_punctual (the lecture's C_light * pi * BRDF * NdotL) with the
-// prepared, coupled diffuse colour. Nothing here depends on the table or the coupling.
+// prepared, coupled diffuse colour and the prepared F90. Nothing here depends on the table or
+// the coupling.
 vec3 pbr_lighting_standard_light(pbr_PreparedSurface s, pbr_Light light) {
-    return pbr_shade_punctual(s.n, s.v, light.dir, light.color, s.directDiffuseColor, s.f0, s.perceptualRoughness);
+    return pbr_shade_punctual_f90(s.n, s.v, light.dir, light.color, s.directDiffuseColor, s.f0, s.f90,
+                                  s.perceptualRoughness);
 }
 
 // radiance plus the environment's light: coupled diffuse * irradiance/pi * occlusion, then the
@@ -195,50 +265,18 @@ vec3 pbr_lighting_standard(vec3 diffuseColor, vec3 f0, vec3 coatF0, float percep
     return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
 }
 
-// The same with an explicit F90 (KHR_materials_specular). Each is its plain form above with
-// the _f90 terms; the plain forms do not call these with F90 = pbr_f90_from_f0(f0): that
-// moves the F90 ahead of the lobe in the compiled program and changed 6 of the 180 programs
-// of tests/specialisation's scenes by -2 .. +3 RDNA3 instructions, where the plain forms as
-// they are keep every program without an explicit F90 instruction for instruction.
-vec3 pbr_indirect_specular_albedo_f90(vec3 f0, float f90, vec2 dfg) {
-    vec3 albedo = pbr_specular_albedo_f90(f0, f90, dfg);
-#if PBR_ENERGY_COMPENSATION
-    albedo *= pbr_energy_compensation(f0, dfg);  // at F0: see pbr_energy_compensation
-#endif
-    return albedo;
-}
-
-vec3 pbr_indirect_specular_split_sum_f90(vec3 prefiltered, vec3 f0, float f90, float roughness,
-                                         float NdotV, float occlusion, vec2 dfg) {
-    return prefiltered * pbr_indirect_specular_albedo_f90(f0, f90, dfg)
-         * pbr_specular_occlusion(NdotV, occlusion, roughness * roughness);
-}
-
-vec3 pbr_indirect_diffuse_color_f90(vec3 diffuseColor, vec3 coatF0, float coatF90, vec2 dfg) {
-    return pbr_coupled_diffuse_color(diffuseColor, coatF0, pbr_indirect_specular_albedo_f90(coatF0, coatF90, dfg));
-}
-
 vec3 pbr_lighting_standard_f90_dfg(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
                                    float perceptualRoughness, float occlusion, vec3 n, vec3 v, pbr_GI gi,
                                    vec2 dfg) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    float NdotV = max(dot(n, v), PBR_MIN_NDOTV);
-    vec3 directDiffuse = pbr_coupled_diffuse_color(diffuseColor, coatF0,
-                                                   pbr_specular_albedo_bound_f90(coatF0, coatF90, dfg));
-    vec3 direct = pbr_shade_punctual_f90(n, v, gi.light.dir, gi.light.color,
-                                         directDiffuse, f0, f90, roughness);
-    vec3 specular = pbr_indirect_specular_split_sum_f90(gi.indirect.specular, f0, f90, roughness, NdotV,
-                                                        occlusion, dfg);
-    return direct + pbr_indirect_diffuse_color_f90(diffuseColor, coatF0, coatF90, dfg) * gi.indirect.diffuse
-                    * occlusion
-         + specular;
+    pbr_PreparedSurface s = pbr_prepare_surface_f90_dfg(diffuseColor, f0, f90, coatF0, coatF90, perceptualRoughness,
+                                                        occlusion, n, v, dfg);
+    return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
 }
 
 vec3 pbr_lighting_standard_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
                                float perceptualRoughness, float occlusion, vec3 n, vec3 v, pbr_GI gi) {
-    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
-    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    return pbr_lighting_standard_f90_dfg(diffuseColor, f0, f90, coatF0, coatF90, roughness, occlusion, n, v, gi,
-                                         dfg);
+    pbr_PreparedSurface s = pbr_prepare_surface_f90(diffuseColor, f0, f90, coatF0, coatF90, perceptualRoughness,
+                                                    occlusion, n, v);
+    return pbr_lighting_standard_add_environment(s, gi.indirect, pbr_lighting_standard_light(s, gi.light));
 }
 #endif

@@ -16,6 +16,18 @@
 //           vec3 pbr_lighting_transmission_light(pbr_PreparedTransmission t, pbr_Light light)
 //           vec3 pbr_lighting_transmission_environment(pbr_PreparedTransmission t,
 //                                                      vec3 transmittedIndirect)
+//           vec3 pbr_lighting_transmission_f90(vec3 diffuseColor, vec3 coatF0, float coatF90,
+//                                              float perceptualRoughness, float occlusion, vec3 n,
+//                                              vec3 v, pbr_GI gi, vec3 transmittedIndirect,
+//                                              pbr_Transmission tr)  (an explicit F90)
+//           pbr_PreparedTransmission pbr_prepare_transmission_f90_dfg(vec3 diffuseColor,
+//                                          vec3 coatF0, float coatF90, float perceptualRoughness,
+//                                          float occlusion, vec3 n, vec3 v, pbr_Transmission tr,
+//                                          vec2 dfg)
+//           pbr_PreparedTransmission pbr_prepare_transmission_from_surface(pbr_PreparedSurface s,
+//                                          vec3 diffuseColor, vec3 coatF0, pbr_Transmission tr)
+//           vec3 pbr_lighting_transmission_prepared(pbr_PreparedTransmission t, pbr_Light light,
+//                                                   vec3 transmittedIndirect)
 // Include:  "pbr/surface/lighting_transmission.glsl" (path relative to glsl/)
 // Config macros read: those of pbr/surface/lighting_standard.glsl.
 //
@@ -48,6 +60,15 @@
 // volume. Decided: the roughness is the base's (the Sample Renderer scales it by
 // clamp(2 ior − 2, 0, 1) for its framebuffer's mip: not done here); the refracted ray is not
 // bent again where it leaves the volume.
+// An explicit F90 (KHR_materials_specular: the _f90 forms, coatF90 the F90 of coatF0): the
+// extension's fresnel_mix(spec_weight, base = mix(diffuse, specular_btdf, transmission),
+// specular_brdf) weights the transmission as the diffuse, by 1 − spec_weight · F, so both
+// E_coat above become coatF0 A + coatF90 B (the diffuse's coupling with the same F90; the
+// Sample Renderer: mix(f_diffuse, f_transmission, transmission) under its
+// getIBLGGXFresnel(..., specularWeight)). The volume's Walter BTDF keeps its own 1 − F at
+// the volume's IOR (the Sample Renderer's getPunctualRadianceTransmission also reads F90 = 1
+// there, not the specular weight): a lobe reflecting F90 · F <= F leaves at most 1 − F to
+// transmit, so energy holds.
 // transmission = 0 adds 0 · (finite terms) and the caller's diffuse colour is multiplied by 1:
 // the base's value bit for bit.
 // Once per pixel (issue 25, as pbr/surface/lighting_standard.glsl): pbr_prepare_transmission_dfg
@@ -90,11 +111,12 @@ struct pbr_PreparedTransmission {
     float ior;              // the volume's
 };
 
-pbr_PreparedTransmission pbr_prepare_transmission_dfg(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
-                                                      float occlusion, vec3 n, vec3 v, pbr_Transmission tr,
-                                                      vec2 dfg) {
+// The transmission's part of the preparation, given the surface prepared for its diffuse
+// colour (f0 = coatF0).
+pbr_PreparedTransmission pbr_prepare_transmission_from_surface(pbr_PreparedSurface s, vec3 diffuseColor,
+                                                               vec3 coatF0, pbr_Transmission tr) {
     pbr_PreparedTransmission t;
-    t.s = pbr_prepare_surface_dfg(diffuseColor, coatF0, coatF0, perceptualRoughness, occlusion, n, v, dfg);
+    t.s = s;
     t.rho = pbr_diffuse_albedo_from_diffuse_color(diffuseColor, coatF0);
     t.volume = tr.thickness > 0.0;
     vec3 attenuation = t.volume ? pbr_volume_attenuation(tr.thickness, tr.attenuationColor, tr.attenuationDistance)
@@ -102,6 +124,25 @@ pbr_PreparedTransmission pbr_prepare_transmission_dfg(vec3 diffuseColor, vec3 co
     t.weight = pbr_saturate(tr.factor) * attenuation;
     t.ior = tr.ior;
     return t;
+}
+
+pbr_PreparedTransmission pbr_prepare_transmission_dfg(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness,
+                                                      float occlusion, vec3 n, vec3 v, pbr_Transmission tr,
+                                                      vec2 dfg) {
+    return pbr_prepare_transmission_from_surface(
+        pbr_prepare_surface_dfg(diffuseColor, coatF0, coatF0, perceptualRoughness, occlusion, n, v, dfg),
+        diffuseColor, coatF0, tr);
+}
+
+// With an explicit F90 of the coat's F0 (coatF90: KHR_materials_specular's specularFactor):
+// the weights rho (1 - E_coat) take E_coat = coatF0 A + coatF90 B (see the header).
+pbr_PreparedTransmission pbr_prepare_transmission_f90_dfg(vec3 diffuseColor, vec3 coatF0, float coatF90,
+                                                          float perceptualRoughness, float occlusion, vec3 n,
+                                                          vec3 v, pbr_Transmission tr, vec2 dfg) {
+    return pbr_prepare_transmission_from_surface(
+        pbr_prepare_surface_f90_dfg(diffuseColor, coatF0, coatF90, coatF0, coatF90, perceptualRoughness, occlusion,
+                                    n, v, dfg),
+        diffuseColor, coatF0, tr);
 }
 
 // One light behind the surface, before the weight (see the header).
@@ -125,13 +166,28 @@ vec3 pbr_lighting_transmission_environment(pbr_PreparedTransmission t, vec3 tran
     return t.weight * (t.s.indirectDiffuseColor * transmittedIndirect * t.s.occlusion);
 }
 
+// One light and the environment, prepared: the sum pbr_lighting_transmission always made.
+vec3 pbr_lighting_transmission_prepared(pbr_PreparedTransmission t, pbr_Light light, vec3 transmittedIndirect) {
+    return t.weight * (pbr_transmission_direct(t, light)
+                       + t.s.indirectDiffuseColor * transmittedIndirect * t.s.occlusion);
+}
+
 vec3 pbr_lighting_transmission(vec3 diffuseColor, vec3 coatF0, float perceptualRoughness, float occlusion,
                                vec3 n, vec3 v, pbr_GI gi, vec3 transmittedIndirect, pbr_Transmission tr) {
     float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
     vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
-    pbr_PreparedTransmission t = pbr_prepare_transmission_dfg(diffuseColor, coatF0, roughness, occlusion, n, v, tr,
-                                                              dfg);
-    return t.weight * (pbr_transmission_direct(t, gi.light)
-                       + t.s.indirectDiffuseColor * transmittedIndirect * t.s.occlusion);
+    return pbr_lighting_transmission_prepared(
+        pbr_prepare_transmission_dfg(diffuseColor, coatF0, roughness, occlusion, n, v, tr, dfg), gi.light,
+        transmittedIndirect);
+}
+
+vec3 pbr_lighting_transmission_f90(vec3 diffuseColor, vec3 coatF0, float coatF90, float perceptualRoughness,
+                                   float occlusion, vec3 n, vec3 v, pbr_GI gi, vec3 transmittedIndirect,
+                                   pbr_Transmission tr) {
+    float roughness = pbr_clamp_perceptual_roughness(perceptualRoughness);
+    vec2 dfg = pbr_env_brdf(max(dot(n, v), PBR_MIN_NDOTV), roughness);
+    return pbr_lighting_transmission_prepared(
+        pbr_prepare_transmission_f90_dfg(diffuseColor, coatF0, coatF90, roughness, occlusion, n, v, tr, dfg),
+        gi.light, transmittedIndirect);
 }
 #endif

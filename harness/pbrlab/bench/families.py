@@ -19,7 +19,8 @@ from typing import Callable
 
 import numpy as np
 
-from ..reference import anisotropy, brdf, clearcoat, color, iridescence, remap, shading, sheen, tonemap
+from ..reference import (anisotropy, brdf, clearcoat, color, iridescence, remap, shading, sheen, specular_extension,
+                         tonemap)
 
 
 @dataclass(frozen=True)
@@ -365,10 +366,22 @@ LAYERS = Family(
                 "anisotropic GGX x Smith, strength 0.8 (pbr/shading/anisotropy.glsl)",
                 self_reference=lambda d: anisotropy.brdf_anisotropic_specular(
                     d["n"], d["v"], d["l"], d["t"], d["b"], np.array(_LAYER_F0), d["r"], 0.8)),
+        Variant("anisotropic_f90", f"pbr_brdf_anisotropic_specular_f90(n, v, l, t, b, vec3{_LAYER_F0}, 0.5, r, 0.8)",
+                "the anisotropic lobe with KHR_materials_specular's explicit F90 (0.5 here)",
+                self_reference=lambda d: anisotropy.brdf_anisotropic_specular(
+                    d["n"], d["v"], d["l"], d["t"], d["b"], np.array(_LAYER_F0), d["r"], 0.8,
+                    f90=np.full(np.shape(d["r"]), 0.5))),
         Variant("iridescence", f"pbr_F_Iridescence(1.0, 1.3, NdotV, 200.0 + 800.0 * r, vec3{_LAYER_F0})",
                 "thin-film Fresnel, 200-1000 nm (pbr/brdf/f_iridescence.glsl)",
                 self_reference=lambda d: iridescence.F_Iridescence(1.0, 1.3, d["NdotV"], 200.0 + 800.0 * d["r"],
                                                                   np.array(_LAYER_F0))),
+        Variant("iridescence_f90", f"pbr_iridescent_f0_f90(0.5 * vec3{_LAYER_F0}, 0.5, NdotV, "
+                "pbr_Iridescence(1.0, 1.3, 200.0 + 800.0 * r))",
+                "the film folded into F0 with KHR_materials_specular's explicit F90 (0.5 here: the film over "
+                "F0 / F90, scaled by F90; pbr/surface/lighting_iridescence.glsl)",
+                self_reference=lambda d: specular_extension.iridescent_f0_f90(
+                    0.5 * np.broadcast_to(np.array(_LAYER_F0), np.shape(d["r"]) + (3,)), np.full(np.shape(d["r"]), 0.5),
+                    d["NdotV"], 1.0, 1.3, 200.0 + 800.0 * d["r"])),
     ))
 
 FAMILIES = (SRGB_DECODE, SRGB_ENCODE, FRESNEL, DISTRIBUTION, VISIBILITY, BRDF_TIER, TONEMAP, ENV_BRDF, LAYERS)

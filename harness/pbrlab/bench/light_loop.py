@@ -90,7 +90,7 @@ WAYS = {
     "prepared": (_DFG + _PREPARED, "pbr_lighting_standard_light(s, gi.light)"),
     "composed": (_DFG, "pbr_lighting_standard_dfg(diffuseColor, f0, coatF0, r, 1.0, n, v, gi, dfg)"),
     "anisotropic_uncoupled": (_PREPARED.split("\n")[1] + "\n",
-                              "pbr_lighting_anisotropic_light(pbr_PreparedSurface(n, v, f0, "
+                              "pbr_lighting_anisotropic_light(pbr_PreparedSurface(n, v, f0, pbr_f90_from_f0(f0), "
                               "pbr_clamp_perceptual_roughness(r), 1.0, diffuseColor, vec3(0.0), vec3(0.0), 0.0), "
                               "frame, gi.light)"),
     "anisotropic_prepared": (_DFG + _PREPARED, "pbr_lighting_anisotropic_light(s, frame, gi.light)"),

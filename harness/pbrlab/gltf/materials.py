@@ -228,13 +228,6 @@ class MaterialReader:
         elif "KHR_materials_volume" in extensions:
             self.warn(f"KHR_materials_volume ignored in material \"{name}\" (without KHR_materials_transmission "
                       "there is no light through the surface to attenuate)")
-        base_layers = [key for key, on in (("KHR_materials_anisotropy", m.anisotropy_strength > 0.0),
-                                           ("KHR_materials_iridescence", m.iridescence > 0.0),
-                                           ("KHR_materials_transmission", m.transmission > 0.0)) if on]
-        if m.specular_f90 is not None and base_layers:
-            self.warn(f"KHR_materials_specular's F90 ignored in material \"{name}\" (with {base_layers[0]} F90 "
-                      "follows F0)")
-            m.specular_f90 = None
         for ext in extensions:
             if ext not in HONOURED_MATERIAL_EXTENSIONS:
                 self.warn(f"{ext} ignored in material \"{name}\"")

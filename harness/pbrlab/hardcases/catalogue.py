@@ -264,6 +264,11 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_brdf_anisotropic_specular", "v:coordinate3 l:coordinate3 f0:unit3 roughness:roughness strength:signed",
        BRDF, "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
        "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, strength)"),
+    # the explicit F90 (KHR_materials_specular) on the anisotropic lobe, under its precondition f90 >= max(f0)
+    _f("pbr_brdf_anisotropic_specular_f90",
+       "v:coordinate3 l:coordinate3 f0:unit3 f90:unit roughness:roughness strength:signed", BRDF,
+       "pbr_brdf_anisotropic_specular_f90(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
+       "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, max(f90, pbr_max3(f0)), roughness, strength)"),
     _f("pbr_anisotropic_bent_normal", "v:coordinate3 d:coordinate3 strength:signed roughness:roughness", UNIT_OR_ZERO,
        "pbr_anisotropic_bent_normal(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(d), strength, "
        "roughness)"),
@@ -304,6 +309,10 @@ TERMS: tuple[Function, ...] = (
     # S of the film's optical path: |S| <= (row sums of the XYZ -> Rec. 709 matrix 5.28) · 1.0011
     _f("pbr_iridescence_sensitivity", "opd:thickness shift:phase3", Bound("|S| <= 5.3", -5.3, 5.3)),
     _f("pbr_iridescence_mix", "F:unit3 Fi:unit3 t:unit", F),
+    # the film with an explicit F90 (surface/lighting_iridescence.glsl), under f90 >= max(f0):
+    # 0 <= F0' <= F90 <= 1
+    _f("pbr_iridescent_f0_f90", "f0:unit3 f90:unit c:cosine t:unit n2:eta d:thickness", _unit("F0'"),
+       "pbr_iridescent_f0_f90(min(f0, vec3(f90)), f90, c, pbr_Iridescence(t, n2, d))"),
     _f("pbr_iridescence_thickness", "lo:thickness hi:thickness g:unit",
        Bound("|thickness| <= 1e30 (+1 %)", -1.01e30, 1.01e30)),
     # tonemap/
@@ -532,13 +541,15 @@ def _follows(function: Function, inputs: dict) -> Near:
 
 
 def _follows_anisotropic(inputs: dict) -> Near:
-    """pbr_brdf_anisotropic_specular's float64 model (reference.anisotropy, HIGH) at the
-    case's float32 inputs, in the catalogue's frame (n = z, t = x, b = y)."""
+    """pbr_brdf_anisotropic_specular[_f90]'s float64 model (reference.anisotropy, HIGH) at the
+    case's float32 inputs, in the catalogue's frame (n = z, t = x, b = y); an explicit F90 as
+    the _f90 entry's expression passes it (at least max(f0))."""
     d = {k: np.asarray(np.float32(inputs[k]), np.float64) for k in ("v", "l", "f0")}
     unit = {k: d[k] / np.linalg.norm(d[k]) for k in ("v", "l")}
+    f90 = None if "f90" not in inputs else max(float(np.float32(inputs["f90"])), float(d["f0"].max()))
     value = anisotropy.brdf_anisotropic_specular(UP, unit["v"], unit["l"], (1.0, 0.0, 0.0), (0.0, 1.0, 0.0),
                                                  d["f0"], float(np.float32(inputs["roughness"])),
-                                                 float(np.float32(inputs["strength"])))
+                                                 float(np.float32(inputs["strength"])), f90=f90)
     return Near(tuple(float(x) for x in np.ravel(value)), FOLLOWS_REL,
                 f"reference.anisotropy (quality=HIGH) within {FOLLOWS_REL:g} relative")
 
@@ -633,6 +644,29 @@ DECIDED = {
          {"v": (-0.6, 0.0, 0.8), "l": (0.6, 0.0, 0.8), "strength": -1.0},
          "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
          "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, 1.0)")],
+    "pbr_brdf_anisotropic_specular_f90": [
+        ("F90 0, F0 0", "KHR_materials_specular at specularFactor 0: no reflection at any angle, exactly 0",
+         {"v": (-0.9999995, 0.0, 1e-3), "l": (0.9999995, 0.0, 1e-3), "f0": (0.0, 0.0, 0.0), "f90": 0.0}, 0.0),
+        ("mirror along b, strength 1, roughness 0, F90 0.5", "the narrowest line lobe's peak under a halved "
+         "grazing reflectance: checked against reference.anisotropy with the F90",
+         {"v": (0.0, -0.6, 0.8), "l": (0.0, 0.6, 0.8), "roughness": 0.0, "strength": 1.0, "f90": 0.5}, "follows"),
+        ("grazing mirror, strength 1, F90 0.5", "NdotL = NdotV = 1e-3 at the peak, where Schlick's weight is "
+         "largest: the F90 carries the lobe", {"v": (-0.9999995, 0.0, 1e-3), "l": (0.9999995, 0.0, 1e-3),
+                                                "roughness": 0.0, "strength": 1.0, "f90": 0.5}, "follows"),
+        ("grazing mirror, 1e-6, lobe kept, F90 0.3", "NdotL = NdotV = 1e-6 at the peak (the lobe kept, issue 25) "
+         "with an explicit F90", {"v": (-1.0, 0.0, 1e-6), "l": (1.0, 0.0, 1e-6), "roughness": 0.3, "strength": 0.5,
+                                  "f90": 0.3}, "follows"),
+        ("F90 from F0", "the plain lobe is this form at F90 = pbr_f90_from_f0(f0) (1 for F0 0.1), bit for bit",
+         {"v": (-0.6, 0.0, 0.8), "l": (0.6, 0.0, 0.8), "f0": (0.1, 0.1, 0.1), "f90": 1.0},
+         "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
+         "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, strength)")],
+    "pbr_iridescent_f0_f90": [
+        ("F90 0", "specularFactor 0 (then F0 0): no reflection, the film's included; decided 0 (F0 / max(F90, "
+         "FLT_MIN) = 0)", {"f0": (0.3, 0.3, 0.3), "f90": 0.0}, "vec3(0.0)"),
+        ("F90 1", "the plain film exactly (F0 / 1, 1 x F0')", {"f90": 1.0},
+         "pbr_iridescent_f0(f0, c, pbr_Iridescence(t, n2, d))"),
+        ("thickness 0, grazing", "no film at the grazing end of the inversion: F90 x F0 / F90 up to one rounding",
+         {"d": 0.0, "c": 1e-4, "f90": 0.5, "f0": (0.02, 0.02, 0.02)}, None)],
     "pbr_anisotropic_bent_normal": [
         ("v along d, strength 1, roughness 0", "cross(d, v) = 0 and bend⁴ = 0: the mixed vector vanishes; "
          "decided n", {"v": (0.0, 1.0, 0.0), "d": (0.0, 1.0, 0.0), "strength": 1.0, "roughness": 0.0},

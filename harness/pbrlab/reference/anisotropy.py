@@ -90,10 +90,11 @@ def anisotropy_direction(t, b, direction_sample, rotation):
     return out / np.linalg.norm(out, axis=-1, keepdims=True)
 
 
-def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength, quality="HIGH"):
+def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength, quality="HIGH", f90=None):
     """D · V · F of the anisotropic lobe (1/sr, RGB on the last axis), with the edges of
     glsl/pbr/shading/anisotropy.glsl: roughness clamped to the tier's floor, NdotV clamped,
-    0 for NdotL <= 0, for l = -v and for h below the surface (min(NdotL, n·(l + v)) < 2^-50)."""
+    0 for NdotL <= 0, for l = -v and for h below the surface (min(NdotL, n·(l + v)) < 2^-50).
+    ``f90``: an explicit F90 (pbr_brdf_anisotropic_specular_f90), else F90 from F0."""
     n, v, l, t, b = map(_f, (n, v, l, t, b))
     NdotL = _dot(n, l)
     NdotV = np.clip(_dot(n, v), shading.MIN_NDOTV, 1.0)
@@ -112,7 +113,8 @@ def brdf_anisotropic_specular(n, v, l, t, b, f0, perceptual_roughness, strength,
     DV = np.minimum(np.where(ok, D * V, 0.0), shading.QUALITY_MAX_SPECULAR_LOBE[quality])
     f0 = _f(f0)
     VdotH = 0.5 * np.sqrt(s2)
-    return DV[..., None] * F_Schlick(f0, VdotH[..., None], f90_from_f0(f0)[..., None])
+    f90 = f90_from_f0(f0) if f90 is None else _f(f90)
+    return DV[..., None] * F_Schlick(f0, VdotH[..., None], f90[..., None])
 
 
 def anisotropic_bent_normal(n, v, anisotropic_direction, strength, perceptual_roughness):

@@ -34,6 +34,26 @@ Unity's constant weight 1 - max(dielectric_f0) (reference/material.py,
 diffuse_from_metallic_dielectric) and couples the diffuse to the dielectric's directional
 albedo 1 - E (pbr/shading/energy_conservation.glsl): the named difference in docs/gltf.md.
 
+With the layers that change the base (each extension's own text, and the Khronos glTF Sample
+Renderer where the text leaves the combination open):
+
+* KHR_materials_anisotropy ("Implementation"): the specular_brdf's D and V become the
+  anisotropic ones; the Fresnel above is unchanged (the Sample Renderer's dielectric_fresnel
+  F_Schlick(f0 x specularWeight, specularWeight, VdotH) multiplies whichever lobe it computed):
+  ``anisotropic_lobe``.
+* KHR_materials_iridescence: the film's Fresnel F_iridescence replaces Schlick's by
+  mix(F_schlick, F_iridescence, iridescence) over the dielectric's F0 (its base IOR from the
+  dielectric's own F0: the Sample Renderer's evalIridescence(1, iridescenceIor, NdotV,
+  thickness, f0_dielectric)), and the specular weight scales the result (the Sample Renderer's
+  2023 release: specularWeight x mix(F_Schlick(f0, f90, VdotH), iridescenceFresnel,
+  iridescenceFactor) in BRDF_specularGGXIridescence and getIBLRadianceGGXIridescence):
+  ``iridescent_f0_f90``, pbrlab's fold of that Fresnel at the view into an F0 with F90 =
+  specular (glsl/pbr/surface/lighting_iridescence.glsl).
+* KHR_materials_transmission: the specular_btdf takes part of the diffuse's place inside the
+  same fresnel_mix, so the transmission is weighted by 1 - specular x F like the diffuse (the
+  extension's "Transmission BTDF" layering; reference/surface.py lighting_transmission with
+  coat_f90).
+
 These functions take the extension's parameters, not pbrlab's: pbrlab's library and harness
 (pbr_*_f90, reference/shading.py, reference/surface.py, reference/material.py) are tested
 against them.
@@ -114,3 +134,33 @@ def environment_albedo(NdotV, alpha, f0, f90):
     the integral, directional_albedo.split_sum_terms), RGB on the last axis."""
     ab = directional_albedo.split_sum_terms_grid(NdotV, alpha)
     return _f(f0) * ab[..., 0:1] + _f(f90)[..., None] * ab[..., 1:2]
+
+
+def anisotropic_lobe(n, v, l, t, b, f0, f90, alpha, strength):
+    """dielectric_fresnel x D_aniso x V_aniso (1/sr) for unit n, v, l above the surface and the
+    unit anisotropic frame t, b: KHR_materials_anisotropy's alphaT = mix(alpha, 1, strength^2),
+    alphaB = alpha, its D and V (reference/anisotropy.py, written from the extension's
+    "Implementation"), under this extension's Fresnel."""
+    from . import anisotropy
+    n, v, l, t, b = _f(n), _f(v), _f(l), _f(t), _f(b)
+    h = l + v
+    h = h / np.linalg.norm(h, axis=-1, keepdims=True)
+    at = _f(alpha) + (1.0 - _f(alpha)) * _f(strength) ** 2
+    dot = lambda x, y: np.sum(x * y, -1)  # noqa: E731
+    D = anisotropy.D_GGX_Anisotropic(dot(n, h), dot(t, h), dot(b, h), at, alpha)
+    V = anisotropy.V_SmithGGXCorrelated_Anisotropic(dot(n, l), dot(n, v), dot(t, v), dot(b, v), dot(t, l),
+                                                     dot(b, l), at, alpha)
+    F = dielectric_fresnel(f0, np.broadcast_to(_f(f90), dot(n, l).shape), dot(v, h))
+    return F * (D * V)[..., None]
+
+
+def iridescent_f0_f90(f0, f90, NdotV, factor, film_ior, thickness_nm):
+    """The F0' whose Schlick curve towards F90 passes through the filmed, weighted Fresnel at
+    the view: F90 x mix(c, F0_film(c), factor), c = f0 / f90 the dielectric's unit-strength F0
+    (f90 = 0: 0), F0_film = the film's F_iridescence(1, film_ior, NdotV, thickness, c)
+    (reference/iridescence.py, the extension's formulas) inverted to an F0 with F90 = 1
+    (reference/surface.py f0_from_schlick, pbrlab's stated fold). RGB on the last axis."""
+    from . import surface
+    f0, f90 = _f(f0), _f(f90)
+    c = np.clip(f0 / np.where(f90 > 0.0, f90, 1.0)[..., None], 0.0, 1.0)
+    return f90[..., None] * surface.iridescent_f0(c, NdotV, factor, film_ior, thickness_nm)

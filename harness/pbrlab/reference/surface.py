@@ -186,13 +186,14 @@ def anisotropic_tangent(n, direction):
 
 def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlusion, n, v, light_dir,
                          light_color, indirect_diffuse, prefiltered, dfg, strength, direction,
-                         energy_compensated=True, **variants):
+                         energy_compensated=True, f90=None, coat_f90=None, **variants):
     """pbr_lighting_anisotropic_dfg (glsl/pbr/surface/lighting_anisotropy.glsl): lighting_standard
     with the direct specular lobe replaced by KHR_materials_anisotropy's
     (anisotropy.brdf_anisotropic_specular, the exact anisotropic GGX / height-correlated Smith /
     Schlick lobe at every tier) in the frame t = anisotropic_tangent(n, direction), b = n x t.
     ``prefiltered``: the environment read along the bent normal's mirror direction (the caller's).
-    The split sum and the diffuse coupling are the isotropic ones at the material's roughness."""
+    The split sum and the diffuse coupling are the isotropic ones at the material's roughness.
+    ``f90``, ``coat_f90``: pbr_lighting_anisotropic_f90's explicit F90s (None: F90 from F0)."""
     from . import anisotropy
     quality = variants.get("quality", "HIGH")
     r = shading.clamp_perceptual_roughness(perceptual_roughness, quality)
@@ -201,15 +202,16 @@ def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlu
     t = anisotropic_tangent(n, direction)
     b = np.cross(n, t)
     specular_f = variants.get("specular_f") or shading.QUALITY_DEFAULT_F[quality]
-    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
+    direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0,
+                                           specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
     # the diffuse half of pbr_shade_punctual: f0 = 0 has no specular (F90 follows F0)
     direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, np.zeros(3), r, **variants)
     NdotL = np.clip(np.sum(n * _f(light_dir), axis=-1), 0.0, 1.0)
-    lobe = anisotropy.brdf_anisotropic_specular(n, v, light_dir, t, b, f0, r, strength, quality)
+    lobe = anisotropy.brdf_anisotropic_specular(n, v, light_dir, t, b, f0, r, strength, quality, f90)
     direct = direct + _f(light_color) * lobe * (shading.LIGHT_UNIT_SCALE * NdotL)[..., None]
-    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated)
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90)
     indirect_diffuse_color = coupled_diffuse_color(
-        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated))
+        diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated, coat_f90))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
 
 
@@ -247,7 +249,7 @@ def transmission_diffuse_color(diffuse_color, transmission):
 
 def lighting_transmission(diffuse_color, coat_f0, perceptual_roughness, occlusion, n, v, light_dir, light_radiance,
                           transmitted_indirect, dfg, factor, thickness, attenuation_color, attenuation_distance, ior,
-                          quality="HIGH", specular_f="SCHLICK", energy_compensated=True):
+                          quality="HIGH", specular_f="SCHLICK", energy_compensated=True, coat_f90=None):
     """pbr/surface/lighting_transmission.glsl pbr_lighting_transmission in float64, from
     KHR_materials_transmission / _volume and reference/transmission.py: t A (direct +
     indirect), A the Beer-Lambert attenuation over the thickness (1 thin-walled); direct: a
@@ -255,7 +257,8 @@ def lighting_transmission(diffuse_color, coat_f0, perceptual_roughness, occlusio
     diffuse's weight), or Walter's BTDF (eta = ior, its own 1 - F) tinted by rho; indirect:
     rho (1 - E_coat) (the environment's, compensated as the indirect diffuse) times the
     environment seen through, times occlusion. dfg: (A, B) at the pixel's NdotV and the
-    base's clamped roughness."""
+    base's clamped roughness. ``coat_f90``: pbr_lighting_transmission_f90's explicit F90 of
+    coat_f0 (both E_coat = coat_f0 A + coat_f90 B; None: F90 from F0)."""
     from . import transmission as ref_transmission
     r = float(shading.clamp_perceptual_roughness(perceptual_roughness, quality))
     if thickness > 0.0:
@@ -264,9 +267,11 @@ def lighting_transmission(diffuse_color, coat_f0, perceptual_roughness, occlusio
                                                                np.full(len(_f(n)), ior)) * rho
         attenuation = ref_transmission.volume_attenuation(thickness, attenuation_color, attenuation_distance)
     else:
-        direct_color = coupled_diffuse_color(diffuse_color, coat_f0, specular_albedo_bound(coat_f0, dfg, specular_f))
+        direct_color = coupled_diffuse_color(diffuse_color, coat_f0,
+                                             specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
         direct = ref_transmission.transmission_thin_punctual(n, v, light_dir, light_radiance, direct_color, r * r)
         attenuation = np.ones(3)
-    indirect = coupled_diffuse_color(diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated)) \
+    indirect = coupled_diffuse_color(diffuse_color, coat_f0,
+                                     indirect_specular_albedo(coat_f0, dfg, energy_compensated, coat_f90)) \
         * _f(transmitted_indirect) * occlusion
     return float(np.clip(factor, 0.0, 1.0)) * attenuation * (direct + indirect)

@@ -16,6 +16,10 @@
 //           vec3 pbr_lighting_anisotropic(vec3 diffuseColor, vec3 f0, vec3 coatF0,
 //                                         float perceptualRoughness, float occlusion, vec3 n,
 //                                         vec3 v, pbr_GI gi, pbr_Anisotropy anisotropy)
+//           vec3 pbr_lighting_anisotropic_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0,
+//                                             float coatF90, float perceptualRoughness,
+//                                             float occlusion, vec3 n, vec3 v, pbr_GI gi,
+//                                             pbr_Anisotropy anisotropy)  (an explicit F90)
 // Include:  "pbr/surface/lighting_anisotropy.hlsl" (path relative to hlsl_ports/)
 // Config macros read: those of pbr/surface/lighting_standard.hlsl and
 //           pbr/shading/anisotropy.hlsl.
@@ -35,7 +39,13 @@
 // the coupling, the environment's albedo) and pbr_anisotropic_frame (the tangent frame)
 // before the loop over lights, pbr_lighting_anisotropic_light per light,
 // pbr_lighting_standard_add_environment once; pbr_lighting_anisotropic[_dfg] is that
-// composition for one light.
+// composition for one light. An explicit F90 (KHR_materials_specular: pbr_prepare_surface_f90)
+// reaches the anisotropic lobe's Fresnel through the prepared surface (s.f90,
+// pbr_brdf_anisotropic_specular_f90), and the split sum and the diffuse's coupling as in
+// pbr_lighting_standard_f90: the Sample Renderer applies its dielectric Fresnel
+// F_Schlick(f0 · specularWeight, specularWeight, VdotH) to whichever lobe it computed and
+// scales its image-based term by the specularWeight (getIBLGGXFresnel) whatever the lobe;
+// pbr_lighting_anisotropic_f90 is that composition for one light.
 // Decided:
 //  - The lobe is the exact anisotropic GGX / height-correlated Smith / Schlick one at every
 //    tier and whatever PBR_SPECULAR_* selects (the library has no other anisotropic V); at
@@ -119,8 +129,8 @@ float3 pbr_lighting_anisotropic_light(pbr_PreparedSurface s, pbr_AnisotropicFram
     float Fd = pbr_diffuse_Fd(clamp(dot(s.n, s.v), PBR_MIN_NDOTV, 1.0), nDotL, LdotH, s.perceptualRoughness);
     Fd = nDotL > 0.0 ? Fd : 0.0;
     float3 brdf = s.directDiffuseColor * Fd
-              + pbr_brdf_anisotropic_specular(s.n, s.v, l, frame.t, frame.b, s.f0, s.perceptualRoughness,
-                                              frame.strength);
+              + pbr_brdf_anisotropic_specular_f90(s.n, s.v, l, frame.t, frame.b, s.f0, s.f90,
+                                                  s.perceptualRoughness, frame.strength);
     return light.color * brdf * (PBR_LIGHT_UNIT_SCALE * clamp(nDotL, 0.0, 1.0));
 }
 
@@ -129,6 +139,15 @@ float3 pbr_lighting_anisotropic_dfg(float3 diffuseColor, float3 f0, float3 coatF
                                   float2 dfg) {
     pbr_PreparedSurface s = pbr_prepare_surface_dfg(diffuseColor, f0, coatF0, perceptualRoughness, occlusion,
                                                     n, v, dfg);
+    return pbr_lighting_standard_add_environment(
+        s, gi.indirect, pbr_lighting_anisotropic_light(s, pbr_anisotropic_frame(n, anisotropy), gi.light));
+}
+
+float3 pbr_lighting_anisotropic_f90(float3 diffuseColor, float3 f0, float f90, float3 coatF0, float coatF90,
+                                  float perceptualRoughness, float occlusion, float3 n, float3 v, pbr_GI gi,
+                                  pbr_Anisotropy anisotropy) {
+    pbr_PreparedSurface s = pbr_prepare_surface_f90(diffuseColor, f0, f90, coatF0, coatF90, perceptualRoughness,
+                                                    occlusion, n, v);
     return pbr_lighting_standard_add_environment(
         s, gi.indirect, pbr_lighting_anisotropic_light(s, pbr_anisotropic_frame(n, anisotropy), gi.light));
 }

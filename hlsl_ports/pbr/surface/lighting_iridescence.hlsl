@@ -5,6 +5,8 @@
 //           PBR_IRIDESCENCE_MAX_SCHLICK_WEIGHT
 //           vec3 pbr_f0_from_schlick(vec3 F, float cosTheta)
 //           vec3 pbr_iridescent_f0(vec3 f0, float NdotV, pbr_Iridescence film)
+//           vec3 pbr_iridescent_f0_f90(vec3 f0, float f90, float NdotV, pbr_Iridescence film)
+//                (an explicit F90: KHR_materials_specular's specularFactor)
 //           vec3 pbr_iridescent_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec3 filmCoatF0)
 // Include:  "pbr/surface/lighting_iridescence.hlsl" (path relative to hlsl_ports/)
 // Config macros read: none.
@@ -34,6 +36,21 @@
 //    mix(Schlick(F0, VdotH), F_iridescence(NdotV), iridescence): equal at VdotH = NdotV, and
 //    the film's colour then follows Schlick's angular trend, not the film's own;
 //  - F90 follows F0' (pbr_f90_from_f0), 1 unless the film's F0 is below 0.02 grey.
+// With an explicit F90 (KHR_materials_specular: F0 = c · s, F90 = s, s = specularFactor ·
+// specularTexture.a, c the dielectric's F0 colour), pbr_iridescent_f0_f90 evaluates the film
+// over the unit-strength F0 c = F0 / F90 (the film's base is the dielectric's own reflectance:
+// the Sample Renderer passes its f0_dielectric, before the specular weight, to
+// evalIridescence) and scales the result back by F90:
+//   F0' = F90 · mix(c, F0_film(c), iridescence),  F90 unchanged,
+// so every Fresnel of the base reads Schlick(F0', F90) = F90 · Schlick(mix(c, F0_film, t), 1):
+// the Sample Renderer's 2023 form (BRDF_specularGGXIridescence, getIBLRadianceGGXIridescence:
+// specularWeight · mix(F_Schlick(f0, 1, VdotH), F_iridescence, iridescence)) with pbrlab's
+// fold into F0 above. Its later releases mix the film's Fresnel in without the specular weight
+// (rgb_mix(diffuse, specular, F_iridescence)): a filmed region then ignores specularFactor,
+// and specularFactor 0 ("disables the specular reflection", KHR_materials_specular) still
+// reflects the film; pbrlab keeps the weight. F0' <= F90, so the energy bookkeeping holds as
+// for any F0 <= F90. F90 = 1 is pbr_iridescent_f0 exactly (f0 / 1, 1 · x).
+// Python twin: harness/pbrlab/reference/specular_extension.py iridescent_f0_f90.
 // iridescence = 0 returns f0 exactly (mix with weight 0); thickness 0 is pbr_F_Schlick of the
 // base (pbr_F_Iridescence's rule), so F0_film = F0 up to the inversion's float32 rounding.
 // Python twin: harness/pbrlab/reference/surface.py iridescent_f0.
@@ -42,6 +59,7 @@
 #define PBR_SURFACE_LIGHTING_IRIDESCENCE_HLSL
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_iridescence.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/common/math.hlsl"
+#include "pbr/common/guards.hlsl"
 #include "pbr/brdf/f_iridescence.hlsl"
 #include "pbr/shading/energy_conservation.hlsl"
 
@@ -66,6 +84,13 @@ float3 pbr_f0_from_schlick(float3 F, float cosTheta) {
 float3 pbr_iridescent_f0(float3 f0, float NdotV, pbr_Iridescence film) {
     float3 filmF = pbr_F_Iridescence(1.0, film.ior, NdotV, film.thicknessNm, f0);
     return pbr_iridescence_mix(f0, pbr_f0_from_schlick(filmF, NdotV), film.factor);
+}
+
+// With an explicit F90 (f90 >= every channel of f0): the film over the unit-strength F0
+// c = f0 / f90, scaled back by f90 (see the header). f90 = 0 (then f0 = 0) returns 0.
+float3 pbr_iridescent_f0_f90(float3 f0, float f90, float NdotV, pbr_Iridescence film) {
+    float3 unitF0 = pbr_saturate(f0 / max(f90, PBR_FLT_MIN));
+    return f90 * pbr_iridescent_f0(unitF0, NdotV, film);
 }
 
 // The diffuse colour whose albedo under the filmed coat (filmCoatF0 = pbr_iridescent_f0 of

@@ -85,9 +85,11 @@
 // mix(SpecularF90, 1, Metallic) (pbr_f90_from_metallic), as the extension's F90 = lerp(dielectric_f90, 1, metallic).
 // Neither URP nor HDRP names a user-facing F90 (HDRP derives its fresnel90 from F0 inside the
 // BSDF), so the name is pbrlab's, after what it sets. With the layer off, F90 follows F0
-// (pbr_f90_from_f0) and none of this is compiled. The anisotropic lobe, the film and the
-// transmission keep F90 from F0 (a JSON material is refused the combination, a glTF one warned;
-// a surface file writing both gets F90 from F0 there).
+// (pbr_f90_from_f0) and none of this is compiled. The F90 reaches every term of the base that
+// reads one: the isotropic or the anisotropic lobe, the split sum, the diffuse's coupling, the
+// film (pbr_iridescent_f0_f90: the film over F0 / F90, scaled by F90) and the transmission's
+// weight (pbr_lighting_transmission_f90); the sheen and the coat over the base have their own
+// Fresnel (the sheen none, the coat F0 0.04 and F90 1), as the Sample Renderer's layers do.
 // DielectricSpecular (read only where PBR_LAYERS_DIELECTRIC_SPECULAR is 1; the metallic workflow,
 // LightingStandardLayersBase[Transmission]): the F0 of the dielectric share of a metallic surface,
 // linear RGB, KHR_materials_specular's dielectric_f0 = min(((ior - 1) / (ior + 1))² ·
@@ -177,12 +179,55 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 }
 
 #if PBR_BRDF_MODEL == PBR_BRDF_MODEL_PBRLAB
+// The base's terms that read F90, each with the surface's own F90 where PBR_LAYERS_SPECULAR_F90
+// (f90 for f0, coatF90 for coatF0: the _f90 forms) and F90 from F0 elsewhere (the plain
+// forms, so a program without the layer compiles as it did before it existed). These hold the
+// file's only PBR_LAYERS_SPECULAR_F90 choices (and the film's, in pbr_unity_lighting_layers_base);
+// each exists only where its layer is compiled in.
+#if PBR_LAYERS_ANISOTROPY
+float3 pbr_layers_lighting_anisotropic(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
+                                     float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi,
+                                     pbr_Anisotropy anisotropy) {
+#if PBR_LAYERS_SPECULAR_F90
+    return pbr_lighting_anisotropic_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
+                                        n, viewDir, gi, anisotropy);
+#else
+    return pbr_lighting_anisotropic(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi,
+                                    anisotropy);
+#endif
+}
+#endif
+
+float3 pbr_layers_lighting_standard(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
+                                  float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi) {
+#if PBR_LAYERS_SPECULAR_F90
+    return pbr_lighting_standard_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion, n,
+                                     viewDir, gi);
+#else
+    return pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
+#endif
+}
+
+#if PBR_LAYERS_TRANSMISSION
+float3 pbr_layers_lighting_transmission(float3 diffColor, float3 coatF0, float coatF90, float perceptualRoughness,
+                                      float occlusion, float3 n, float3 viewDir, UnityGI gi, float3 transmittedIndirect,
+                                      pbr_Transmission tr) {
+#if PBR_LAYERS_SPECULAR_F90
+    return pbr_lighting_transmission_f90(diffColor, coatF0, coatF90, perceptualRoughness, occlusion, n, viewDir, gi,
+                                         transmittedIndirect, tr);
+#else
+    return pbr_lighting_transmission(diffColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi,
+                                     transmittedIndirect, tr);
+#endif
+}
+#endif
+
 // pbr_unity_lighting (pbr/unity/surface_standard.hlsl) with the layers that change the base:
 // Unity's premultiplied alpha, the film's F0 (PBR_LAYERS_IRIDESCENCE), the anisotropic lobe
 // (PBR_LAYERS_ANISOTROPY, AnisotropyDirection in world space) or the isotropic one, and the
-// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION); the isotropic lobe
-// with the surface's F90 (the last two parameters: f90 for specColor, coatF90 for coatF0) where
-// PBR_LAYERS_SPECULAR_F90.
+// transmission in place of part of the diffuse (PBR_LAYERS_TRANSMISSION); each with the
+// surface's F90 (the last two parameters: f90 for specColor, coatF90 for coatF0) where
+// PBR_LAYERS_SPECULAR_F90 (the pbr_layers_* dispatch above).
 float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                                     float smoothness, float occlusion, float alpha, float3 normal, float3 viewDir,
                                     UnityGI gi, SurfaceOutputStandardLayers layers, float3 transmittedIndirect,
@@ -197,8 +242,13 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     film.ior = layers.IridescenceIor;
     film.thicknessNm = layers.IridescenceThickness;
     float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
+#if PBR_LAYERS_SPECULAR_F90
+    specColor = pbr_iridescent_f0_f90(specColor, f90, NdotV, film);
+    float3 filmCoatF0 = pbr_iridescent_f0_f90(coatF0, coatF90, NdotV, film);
+#else
     specColor = pbr_iridescent_f0(specColor, NdotV, film);
     float3 filmCoatF0 = pbr_iridescent_f0(coatF0, NdotV, film);
+#endif
     diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
     coatF0 = filmCoatF0;
 #endif
@@ -210,13 +260,11 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
     anisotropy.direction = layers.AnisotropyDirection;
-    float3 c = pbr_lighting_anisotropic(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir,
-                                      gi, anisotropy);
-#elif PBR_LAYERS_SPECULAR_F90
-    float3 c = pbr_lighting_standard_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
-                                       n, viewDir, gi);
+    float3 c = pbr_layers_lighting_anisotropic(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness,
+                                             occlusion, n, viewDir, gi, anisotropy);
 #else
-    float3 c = pbr_lighting_standard(diffColor, specColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi);
+    float3 c = pbr_layers_lighting_standard(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
+                                          n, viewDir, gi);
 #endif
 #if PBR_LAYERS_TRANSMISSION
     pbr_Transmission tr;
@@ -225,8 +273,8 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     tr.attenuationColor = layers.AttenuationColor;
     tr.attenuationDistance = layers.AttenuationDistance;
     tr.ior = layers.TransmissionIor;
-    c += pbr_lighting_transmission(transmissionDiffColor, coatF0, perceptualRoughness, occlusion, n, viewDir, gi,
-                                   transmittedIndirect, tr);
+    c += pbr_layers_lighting_transmission(transmissionDiffColor, coatF0, coatF90, perceptualRoughness, occlusion, n,
+                                          viewDir, gi, transmittedIndirect, tr);
 #endif
     return float4(c, outputAlpha);
 }

@@ -117,7 +117,8 @@ pbr_PreparedSurface test_prepared_surface(vec3 diffuseColor, vec3 f0, vec3 coatF
 
 vec3 test_prepared_fields(pbr_PreparedSurface s) {
     return s.n + 2.0 * s.v + 3.0 * s.f0 + vec3(s.perceptualRoughness, s.occlusion, s.specularOcclusion)
-         + 5.0 * s.directDiffuseColor + 7.0 * s.indirectDiffuseColor + 11.0 * s.indirectSpecularAlbedo;
+         + 5.0 * s.directDiffuseColor + 7.0 * s.indirectDiffuseColor + 11.0 * s.indirectSpecularAlbedo
+         + vec3(13.0 * s.f90);
 }
 
 vec3 test_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness,
@@ -129,6 +130,26 @@ vec3 test_prepare_surface_dfg(vec3 diffuseColor, vec3 f0, vec3 coatF0, float per
 vec3 test_prepare_surface(vec3 diffuseColor, vec3 f0, vec3 coatF0, float perceptualRoughness, float occlusion,
                           vec3 n, vec3 v) {
     return test_prepared_fields(pbr_prepare_surface(diffuseColor, f0, coatF0, perceptualRoughness, occlusion, n, v));
+}
+
+vec3 test_prepare_surface_f90_dfg(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
+                                  float perceptualRoughness, float occlusion, vec3 n, vec3 v, vec2 dfg) {
+    return test_prepared_fields(pbr_prepare_surface_f90_dfg(diffuseColor, f0, f90, coatF0, coatF90,
+                                                            perceptualRoughness, occlusion, n, v, dfg));
+}
+
+vec3 test_prepare_surface_f90(vec3 diffuseColor, vec3 f0, float f90, vec3 coatF0, float coatF90,
+                              float perceptualRoughness, float occlusion, vec3 n, vec3 v) {
+    return test_prepared_fields(pbr_prepare_surface_f90(diffuseColor, f0, f90, coatF0, coatF90, perceptualRoughness,
+                                                        occlusion, n, v));
+}
+
+vec3 test_pbr_brdf_anisotropic_terms(vec3 n, vec3 v, vec3 l, vec3 a, vec3 b, float perceptualRoughness,
+                                     float strength) {
+    float DV;
+    float LdotH;
+    pbr_brdf_anisotropic_terms(n, v, l, a, b, perceptualRoughness, strength, DV, LdotH);
+    return vec3(DV, LdotH, 0.0);
 }
 
 pbr_AnisotropicFrame test_anisotropic_frame_of(vec3 n, float strength, vec3 direction) {
@@ -329,6 +350,40 @@ vec4 test_LightingBlinnPhong_GI(SurfaceOutput s, UnityGIInput data) {
     UnityGI gi = test_gi(vec3(1.0, 1.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 1.0), vec3(1.0, 1.0, 1.0));
     LightingBlinnPhong_GI(s, data, gi);
     return test_gi_light(gi) + test_gi_indirect(gi);
+}
+
+// The transmission prepared with an explicit F90 (pbr_prepare_transmission_f90_dfg) and from a
+// prepared surface (pbr_prepare_transmission_from_surface), their fields a group at a time.
+vec3 test_prepare_transmission_f90_dfg_surface(vec3 diffuseColor, vec3 coatF0, float coatF90,
+                                               float perceptualRoughness, float occlusion, vec3 n, vec3 v,
+                                               pbr_Transmission tr, vec2 dfg) {
+    return test_prepared_fields(pbr_prepare_transmission_f90_dfg(diffuseColor, coatF0, coatF90, perceptualRoughness,
+                                                                 occlusion, n, v, tr, dfg).s);
+}
+
+vec3 test_prepare_transmission_f90_dfg_rho(vec3 diffuseColor, vec3 coatF0, float coatF90, float perceptualRoughness,
+                                           float occlusion, vec3 n, vec3 v, pbr_Transmission tr, vec2 dfg) {
+    return pbr_prepare_transmission_f90_dfg(diffuseColor, coatF0, coatF90, perceptualRoughness, occlusion, n, v, tr,
+                                            dfg).rho;
+}
+
+vec3 test_prepare_transmission_f90_dfg_weight(vec3 diffuseColor, vec3 coatF0, float coatF90,
+                                              float perceptualRoughness, float occlusion, vec3 n, vec3 v,
+                                              pbr_Transmission tr, vec2 dfg) {
+    pbr_PreparedTransmission t = pbr_prepare_transmission_f90_dfg(diffuseColor, coatF0, coatF90, perceptualRoughness,
+                                                                  occlusion, n, v, tr, dfg);
+    return t.weight + vec3(0.0, 0.0, t.volume ? t.ior : -t.ior);
+}
+
+vec3 test_prepare_transmission_from_surface_rho(pbr_PreparedSurface s, vec3 diffuseColor, vec3 coatF0,
+                                                pbr_Transmission tr) {
+    return pbr_prepare_transmission_from_surface(s, diffuseColor, coatF0, tr).rho;
+}
+
+vec3 test_prepare_transmission_from_surface_weight(pbr_PreparedSurface s, vec3 diffuseColor, vec3 coatF0,
+                                                   pbr_Transmission tr) {
+    pbr_PreparedTransmission t = pbr_prepare_transmission_from_surface(s, diffuseColor, coatF0, tr);
+    return t.weight + vec3(0.0, 0.0, t.volume ? t.ior : -t.ior);
 }
 
 #endif // PBRLAB_TEST_WRAPPERS_GLSL
