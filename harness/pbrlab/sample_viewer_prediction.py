@@ -24,6 +24,15 @@ the viewer's term minus pbrlab's (cpu_render's float64 twin of the shaders):
       diffuse plus the split sum F0 A + F90 B, compensated (cpu_render.environment_reflected);
   DIFFERENCES[3] "copy_8bit": the viewer's transmission copy is an RGBA8 target, so the
       environment seen through is rounded to 1/255 (linear).
+KHR_materials_sheen has its own entry, viewer_minus_pbrlab_sheen(scene, under_sheen): two
+named differences (reference/sample_viewer_sheen.py) applied to pbrlab's render of the light
+the sheen scales:
+  SHEEN_DIFFERENCES[0] "base_unscaled": the viewer's sheen albedo table reads 0, so its base
+      keeps the max3(c) min(E, 1) x under_sheen that pbrlab's scaling takes away;
+  SHEEN_DIFFERENCES[1] "environment_ashikhmin": the constant sky's sheen, c x sky x E_A with
+      E_A the albedo under Ashikhmin's visibility (the viewer's lut_charlie.b), against
+      pbrlab's c x sky x min(E, 1);
+both times the viewer's coat weight 1 - clearcoat F_Schlick(0.04, n·v) on a coated material.
 The environment must be constant (scene.environment.color) and nothing opaque may lie
 behind a transmissive pixel (the viewer's copy then holds the environment there, as
 pbrlab's). ``texture_edges``: the pixels whose 3 x 3 neighbourhood reads more than one value
@@ -40,11 +49,19 @@ import numpy as np
 from .cpu_render import environment_reflected, transmitted_fraction, transmitted_light, visible_surfaces
 from .errors import PbrlabError
 from .reference import material as ref_material
+from .reference import remap as ref_remap
+from .reference.guards import MIN_NDOTV
+from .reference import sample_viewer_sheen as viewer_sheen
 from .reference import sample_viewer_specular as viewer_specular
 from .reference import sample_viewer_transmission as viewer
+from .sheen_table import integrate_sheen_albedo, sample_sheen_lut, sheen_lut
 from .srgb8 import DECODE_TABLE
 
 DIFFERENCES = ("punctual", "second_fresnel", "environment_fresnel", "copy_8bit")
+SHEEN_DIFFERENCES = ("base_unscaled", "environment_ashikhmin")
+# KHR_materials_sheen's texture slots: the colour (RGB, sRGB) and the roughness (A)
+SHEEN_TEXTURE_CHANNELS = {"sheen_color": slice(0, 3), "sheen_roughness": slice(3, 4)}
+ASHIKHMIN_GRID = 1e-3  # E_A is integrated once per (n·v, r) rounded to this (|dE_A| < 1e-3 there)
 COPY_LEVELS = 255  # the viewer's transmission copy: RGBA8 (UNSIGNED_BYTE), linear values
 # The texture slots these terms read and their channels: the base colour (RGB), KHR_materials_
 # specular's colour (RGB) and strength (A), KHR_materials_transmission's factor (R) and
@@ -237,3 +254,57 @@ def viewer_minus_pbrlab(scene, differences=DIFFERENCES):
                 out[chosen] += _environment_fresnel(scene, at, n, v)
         delta[pixels] = out
     return delta, edges
+
+
+def _sheen_per_pixel(name, material, pixels, uv):
+    """(sheen colour [N, 3], sheen perceptual roughness [N]) at the ``pixels``: the factors times
+    the nearest texels at ``uv`` (the colour decoded from sRGB)."""
+    colour = np.tile(np.asarray(material.sheen_color, float), (int(pixels.sum()), 1))
+    rough = np.full(int(pixels.sum()), float(ref_remap.perceptual_roughness_from_smoothness(material.sheen_smoothness)))
+    for slot, channels in SHEEN_TEXTURE_CHANNELS.items():
+        if slot not in material.textures:
+            continue
+        if material.texture_uv_set.get(slot, 0) != 0 or material.texture_transform.get(slot) is not None:
+            raise PbrlabError(f"sample viewer prediction: material {name}: its {slot} texture's UV set "
+                              "or transform is not modelled (TEXCOORD_0 untransformed only)")
+        values = np.nan_to_num(_texel(material.textures[slot], uv)[pixels][:, channels])
+        if slot == "sheen_color":
+            colour *= DECODE_TABLE[np.rint(values * 255).astype(int)] if material.texture_srgb.get(slot) else values
+        else:
+            rough *= values[:, 0]
+    return colour, rough
+
+
+def viewer_minus_pbrlab_sheen(scene, under_sheen, differences=SHEEN_DIFFERENCES):
+    """HxWx3 float64: the viewer's radiance minus pbrlab's from the named sheen ``differences``
+    (module doc), 0 off the sheened materials. ``under_sheen``: pbrlab's linear HxWx3 render of
+    ``scene`` with every sheen and coat removed, the light pbrlab's sheen scales."""
+    unknown = set(differences) - set(SHEEN_DIFFERENCES)
+    if unknown:
+        raise ValueError(f"unknown differences {sorted(unknown)}: expected some of {SHEEN_DIFFERENCES}")
+    if scene.environment is not None and scene.environment.color is None:
+        raise PbrlabError("sample viewer prediction: a constant environment only")
+    surfaces = visible_surfaces(scene)
+    delta = np.zeros(surfaces["p"].shape)
+    table = sheen_lut()
+    for index, obj in enumerate(scene.objects):
+        material = scene.materials[obj.material]
+        if max(material.sheen_color) <= 0.0:
+            continue
+        pixels = surfaces["object"] == index
+        colour, rough = _sheen_per_pixel(obj.material, material, pixels, surfaces["uv"])
+        NdotV = np.clip(np.sum(surfaces["n"][pixels] * surfaces["v"][pixels], axis=-1), MIN_NDOTV, 1.0)
+        E = np.minimum(sample_sheen_lut(table, NdotV, rough), 1.0)  # pbrlab's E' (PBR_SHEEN_ENERGY_NORMALIZED)
+        out = np.zeros(colour.shape)
+        if "base_unscaled" in differences:
+            pbrlab_scaling = np.clip(1.0 - colour.max(axis=-1) * E, 0.0, 1.0)
+            out += (viewer_sheen.base_scaling(colour) - pbrlab_scaling)[:, None] * under_sheen[pixels]
+        if scene.environment is not None and "environment_ashikhmin" in differences:
+            sky = np.asarray(scene.environment.color, float) * scene.environment.intensity
+            grid, inverse = np.unique(np.round(np.stack([NdotV, rough], axis=-1) / ASHIKHMIN_GRID), axis=0,
+                                      return_inverse=True)
+            ashikhmin = integrate_sheen_albedo(grid[:, 0] * ASHIKHMIN_GRID, grid[:, 1] * ASHIKHMIN_GRID,
+                                               "NEUBELT")[inverse.reshape(-1)]
+            out += viewer_sheen.environment_sheen(sky, colour, ashikhmin) - sky * colour * E[:, None]
+        delta[pixels] = out * viewer_sheen.coat_weight(material.clearcoat, NdotV)[:, None]
+    return delta
