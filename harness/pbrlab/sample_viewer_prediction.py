@@ -219,15 +219,21 @@ def _per_pixel(material, pixels, uv, edges):
     return np.concatenate([albedo, specular, f90, transmission, thickness], axis=-1)
 
 
+def _checked_surfaces(scene, differences, known) -> dict:
+    """visible_surfaces(scene), after refusing differences not in ``known`` (a caller's
+    mistake: ValueError) and an environment other than a constant colour (PbrlabError)."""
+    unknown = set(differences) - set(known)
+    if unknown:
+        raise ValueError(f"unknown differences {sorted(unknown)}: expected some of {known}")
+    if scene.environment is not None and scene.environment.color is None:
+        raise PbrlabError("sample viewer prediction: a constant environment only")
+    return visible_surfaces(scene)
+
+
 def viewer_minus_pbrlab(scene, differences=DIFFERENCES):
     """(HxWx3 float64: the viewer's radiance minus pbrlab's from the named ``differences``,
     0 where none applies; HxW bool: texture_edges, see the module's doc)."""
-    unknown = set(differences) - set(DIFFERENCES)
-    if unknown:
-        raise ValueError(f"unknown differences {sorted(unknown)}: expected some of {DIFFERENCES}")
-    if scene.environment is not None and scene.environment.color is None:
-        raise PbrlabError("sample viewer prediction: a constant environment only")
-    surfaces = visible_surfaces(scene)
+    surfaces = _checked_surfaces(scene, differences, DIFFERENCES)
     delta = np.zeros(surfaces["p"].shape)
     edges = np.zeros(surfaces["object"].shape, bool)
     environment = scene.environment is not None and "environment_fresnel" in differences
@@ -279,12 +285,7 @@ def viewer_minus_pbrlab_sheen(scene, under_sheen, differences=SHEEN_DIFFERENCES)
     """HxWx3 float64: the viewer's radiance minus pbrlab's from the named sheen ``differences``
     (module doc), 0 off the sheened materials. ``under_sheen``: pbrlab's linear HxWx3 render of
     ``scene`` with every sheen and coat removed, the light pbrlab's sheen scales."""
-    unknown = set(differences) - set(SHEEN_DIFFERENCES)
-    if unknown:
-        raise ValueError(f"unknown differences {sorted(unknown)}: expected some of {SHEEN_DIFFERENCES}")
-    if scene.environment is not None and scene.environment.color is None:
-        raise PbrlabError("sample viewer prediction: a constant environment only")
-    surfaces = visible_surfaces(scene)
+    surfaces = _checked_surfaces(scene, differences, SHEEN_DIFFERENCES)
     delta = np.zeros(surfaces["p"].shape)
     table = sheen_lut()
     for index, obj in enumerate(scene.objects):
