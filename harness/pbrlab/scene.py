@@ -678,6 +678,22 @@ def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
                           _unity().UnityShaderWarning, stacklevel=3)
 
 
+# The layers Unity's BRDFs cannot draw: (layer, why, what the material is, the remedy), refused
+# by name when render.brdf_model is "unity".
+_UNITY_REFUSED_LAYERS = (
+    ("anisotropy", "Unity's BRDFs have no anisotropic lobe", "is anisotropic",
+     "use brdf_model pbrlab, or anisotropy_strength 0"),
+    ("iridescence", "Unity's BRDFs have no F0 a thin film could replace", "is iridescent",
+     "use brdf_model pbrlab, or iridescence 0"),
+    ("transmission", "Unity's BRDFs have no transmission", "is transmissive",
+     "use brdf_model pbrlab, or transmission 0"),
+    ("specular_f90", "Unity's BRDFs take F90 from F0", "has an explicit F90",
+     "KHR_materials_specular; use brdf_model pbrlab, or remove specular_f90"),
+    ("dielectric_specular", "Unity's metallic setup has the dielectric F0 0.04", "has its own",
+     "KHR_materials_ior / _specular; use brdf_model pbrlab, or remove dielectric_specular"),
+)
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gltf=None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths.
     ``read_gltf``: the reader of ``{"gltf": ...}`` objects (pbrlab.scene_files passes it;
@@ -719,27 +735,10 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     if render.brdf_model == "unity":
         # the layers from the material's numbers, or from what its surface writes
         layers = {name: surface_layers.material_layers(m) for name, m in materials.items()}
-        anisotropic = sorted(name for name in materials if "anisotropy" in layers[name])
-        if anisotropic:
-            rs.fail(f"Unity's BRDFs have no anisotropic lobe; material {anisotropic[0]!r} is anisotropic "
-                    "(use brdf_model pbrlab, or anisotropy_strength 0)", "brdf_model")
-        filmed = sorted(name for name in materials if "iridescence" in layers[name])
-        if filmed:
-            rs.fail(f"Unity's BRDFs have no F0 a thin film could replace; material {filmed[0]!r} is iridescent "
-                    "(use brdf_model pbrlab, or iridescence 0)", "brdf_model")
-        transmissive = sorted(name for name in materials if "transmission" in layers[name])
-        if transmissive:
-            rs.fail(f"Unity's BRDFs have no transmission; material {transmissive[0]!r} is transmissive "
-                    "(use brdf_model pbrlab, or transmission 0)", "brdf_model")
-        explicit_f90 = sorted(name for name in materials if "specular_f90" in layers[name])
-        if explicit_f90:
-            rs.fail(f"Unity's BRDFs take F90 from F0; material {explicit_f90[0]!r} has an explicit F90 "
-                    "(KHR_materials_specular; use brdf_model pbrlab, or remove specular_f90)", "brdf_model")
-        own_dielectric = sorted(name for name in materials if "dielectric_specular" in layers[name])
-        if own_dielectric:
-            rs.fail(f"Unity's metallic setup has the dielectric F0 0.04; material {own_dielectric[0]!r} has its own "
-                    "(KHR_materials_ior / _specular; use brdf_model pbrlab, or remove dielectric_specular)",
-                    "brdf_model")
+        for layer, what, has, remedy in _UNITY_REFUSED_LAYERS:
+            using = sorted(name for name in materials if layer in layers[name])
+            if using:
+                rs.fail(f"{what}; material {using[0]!r} {has} ({remedy})", "brdf_model")
     top.finish()
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 
