@@ -9,13 +9,13 @@ setup:
 	@bash scripts/setup.sh
 
 demo: setup
-	@$(PY) -m pbrlab.cli demo --out out
+	@$(PY) -m pbrlab demo --out out
 
 test: setup
 	@$(PY) -m pytest -n auto -p no:cacheprovider $(PYTEST_ARGS)
 
 bench: setup
-	@$(PY) -m pbrlab.cli bench --out docs/bench
+	@$(PY) -m pbrlab bench --out docs/bench
 
 clean:
 	rm -rf out test-output site .venv

@@ -2,7 +2,7 @@
 
 ``glsl/``, ``hlsl_ports/`` and ``scenes/`` sit at the top of the repository (engines copy them
 from there); ``build_py`` copies them into the package as ``pbrlab/data/<tree>``, where
-``pbrlab.locations`` finds them through ``importlib.resources``. Everything else about the
+``pbrlab.foundation.locations`` finds them through ``importlib.resources``. Everything else about the
 package is declared in pyproject.toml.
 """
 

@@ -1,7 +1,7 @@
 """Depth resolution of three depth conventions, measured: the smallest decal offset
 (relative to the base plane's size) at which a decal quad wins at every pixel it covers,
 for plane sizes 0.1 .. 1e4 and three cameras. A benchmark: it prints the figures quoted in
-harness/pbrlab/depth_range.py and asserts nothing.
+harness/pbrlab/render/depth_range.py and asserts nothing.
 
     python benchmarks/depth_resolution.py
 
@@ -21,7 +21,7 @@ import os
 import moderngl
 import numpy as np
 
-from pbrlab import gl
+from pbrlab.gpu import gl
 
 SIZE = 128
 GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F = 0x8D41, 0x8CAC

@@ -22,7 +22,8 @@ import time
 
 import numpy as np
 
-from pbrlab import evaluate, evaluator
+from pbrlab import evaluate
+from pbrlab.gpu import evaluator
 
 
 def rss_mib() -> float:

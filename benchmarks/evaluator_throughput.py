@@ -18,7 +18,8 @@ import time
 
 import numpy as np
 
-from pbrlab import evaluate, gl
+from pbrlab import evaluate
+from pbrlab.gpu import gl
 
 TERMS = {
     "identity": ("x", lambda rng, n: {"x": rng.random(n, dtype=np.float32)}),

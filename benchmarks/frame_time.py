@@ -14,9 +14,9 @@ import argparse
 import statistics
 import time
 
-from pbrlab import gl
-from pbrlab.golden_scenes import GOLDEN_SCENES
-from pbrlab.render import render_scene
+from pbrlab.gpu import gl
+from pbrlab.checking.golden_scenes import GOLDEN_SCENES
+from pbrlab.render.renderer import render_scene
 
 
 def main() -> None:

@@ -6,7 +6,7 @@ asserts the tolerances).
     .venv/bin/python benchmarks/pyrender_crosscheck.py [--size 480x160] [--backends egl,osmesa]
         [--figure docs/pyrender_vs_pbrlab.png]
 
-The figure (from the first backend, pbrlab.pyrender_figure) stacks four titled panels:
+The figure (from the first backend, pbrlab.checking.pyrender.figure) stacks four titled panels:
 pyrender's output | pbrlab composing pyrender's terms (encoded with pyrender's gamma 2.2) |
 pbrlab's defaults (high tier, its sRGB output) | relative linear difference pyrender vs pbrlab
 default with a colour bar (black 0, red, yellow, white at 50 %; grey: not compared); rows
@@ -18,8 +18,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from pbrlab import pyrender_check as pc
-from pbrlab import pyrender_figure
+from pbrlab.checking.pyrender import check as pc
+from pbrlab.checking.pyrender import figure as pyrender_figure
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -9,12 +9,12 @@ nothing (tests/harness/test_import_cost.py checks the import structure instead).
    (which writes the byte-code and the disk cache, as any earlier run would): median, min and
    max of the wall clock, and the processes' CPU time (user + system: steadier than the wall
    clock on a shared machine). ``--empty-cache`` gives every run a new, empty disk cache
-   (pbrlab.disk_cache): what the first render of a scene costs.
+   (pbrlab.foundation.disk_cache): what the first render of a scene costs.
 2. One process under ``python -X importtime``: import time by top-level package.
 3. One process with timers around the stages (parsing the command line, loading the scene,
    the GL context, include expansion, program builds, mesh preparation, the environment,
    the render, writing the PNG): monkeypatched wrappers, nothing in pbrlab changes.
-4. The pytest plugin: ``import pbrlab.pytest_plugin`` after ``import pytest`` (importtime,
+4. The pytest plugin: ``import pbrlab.checking.pytest_plugin`` after ``import pytest`` (importtime,
    cumulative), median of N, and which heavy packages it loaded (none expected).
 """
 
@@ -49,8 +49,8 @@ def timed(module, name, label):
     setattr(module, name, wrapper)
 t0 = time.perf_counter()
 from pbrlab import cli
-T["import pbrlab.cli"] = time.perf_counter() - t0
-C["import pbrlab.cli"] = time.process_time()
+T["import pbrlab.commands.cli"] = time.perf_counter() - t0
+C["import pbrlab.commands.cli"] = time.process_time()
 t1, c1 = time.perf_counter(), time.process_time()
 from pbrlab import gl, images, meshes, programs, render, resource_cache, shaders, source_cache
 from pbrlab.commands import render as render_command
@@ -128,7 +128,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory(prefix="pbrlab-startup-") as scratch:
         out = os.path.join(scratch, "x.png")
         render_args = ["render", args.scene, "-o", out, "--size", f"{args.size}x{args.size}", "-q"]
-        command = [python, "-m", "pbrlab.cli", *render_args]
+        command = [python, "-m", "pbrlab.commands.cli", *render_args]
         shared_cache = os.path.join(scratch, "cache")
 
         def env_for(run: int) -> dict:
@@ -174,15 +174,15 @@ def main() -> None:
             print(f"  {label:40s} {seconds:6.3f}" + (f"  {cpu:6.3f}" if cpu is not None else ""))
         print(f"  heavy packages loaded: {', '.join(report['heavy']) or 'none'}")
 
-        plugin = [python, "-c", "import pytest, time; t = time.perf_counter(); import pbrlab.pytest_plugin; "
+        plugin = [python, "-c", "import pytest, time; t = time.perf_counter(); import pbrlab.checking.pytest_plugin; "
                                 "print(time.perf_counter() - t)"]
         seconds = [float(subprocess.run(plugin, env=env_for(0), check=True, stdout=subprocess.PIPE,
                                         text=True).stdout) for _ in range(args.runs)]
         loaded = subprocess.run([python, "-c", "import sys, pytest; before = set(sys.modules); "
-                                 "import pbrlab.pytest_plugin; "
+                                 "import pbrlab.checking.pytest_plugin; "
                                  f"print(sorted({{m.split('.')[0] for m in set(sys.modules) - before}} & set({HEAVY!r})))"],
                                 env=env_for(0), check=True, stdout=subprocess.PIPE, text=True).stdout.strip()
-        print(f"pytest plugin: import pbrlab.pytest_plugin after pytest, {args.runs} processes: {summary(seconds)}; "
+        print(f"pytest plugin: import pbrlab.checking.pytest_plugin after pytest, {args.runs} processes: {summary(seconds)}; "
               f"heavy packages it loaded: {loaded}")
 
 

@@ -23,7 +23,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from pbrlab import gl, programs, render, scene
+from pbrlab.gpu import gl, programs
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
 
 SHADER = """Shader "Benchmark/Distinct{k}" {{
     Properties {{ _Color ("Color", Color) = (1, 1, 1, 1) }}

@@ -21,7 +21,7 @@ say "building the sdist and, from it, the wheel"
 wheel=$(ls "$work"/dist/pbrlab-*.whl)
 sdist=$(ls "$work"/dist/pbrlab-*.tar.gz)
 tar -tzf "$sdist" | sed 's|^[^/]*/||' > "$work/sdist.txt"
-for name in glsl/pbr/pbr.glsl hlsl_ports/pbr/pbr.hlsl scenes/example.json harness/pbrlab/cli.py \
+for name in glsl/pbr/pbr.glsl hlsl_ports/pbr/pbr.hlsl scenes/example.json harness/pbrlab/commands/cli.py \
             tests/conftest.py goldens/chart_f0.exr docs/pyrender_vs_pbrlab.png docs/index.md mkdocs.yml \
             scripts/mkdocs_hooks.py LICENSE requirements.txt Makefile; do
   grep -qx "$name" "$work/sdist.txt" || { say "the sdist lacks $name"; exit 1; }
@@ -46,7 +46,7 @@ if grep -q "$repo" version.txt; then say "the wheel found shaders in the checkou
 grep -q "(package data)" version.txt
 pbrlab eval 'pbr_D_GGX(NdotH, alpha)' --var NdotH=0:1:3 --var alpha=0.5
 pbrlab eval --language hlsl 'pbr_D_GGX(NdotH, alpha)' --var NdotH=0:1:3 --var alpha=0.5
-scenes=$(python -c 'from pbrlab.locations import locate; print(locate("scenes"))')
+scenes=$(python -c 'from pbrlab.foundation.locations import locate; print(locate("scenes"))')
 pbrlab render "$scenes/example.json" -o example.png --hdr example.exr --size 64x48
 test -s example.png && test -s example.exr
 

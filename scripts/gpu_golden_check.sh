@@ -11,14 +11,14 @@ import json
 from pbrlab import gl
 print(json.dumps(gl.context_info(gl.shared_context())))
 PY
-python3 -m pbrlab.golden_scenes "$out/renders/glsl" >/dev/null
-python3 -m pbrlab.golden_scenes --language hlsl "$out/renders/hlsl" >/dev/null
+python3 -m pbrlab.checking.golden_scenes "$out/renders/glsl" >/dev/null
+python3 -m pbrlab.checking.golden_scenes --language hlsl "$out/renders/hlsl" >/dev/null
 for language in glsl hlsl; do
   tar -C "$out/renders" -czf "$out/renders_$language.tar.gz" "$language"
 done
 rm -rf "$out/renders"
 # The plugin comes from pbrlab's pytest11 entry point when pbrlab is installed; name it otherwise.
-plugin=$(python3 -c 'import importlib.metadata as m; print("" if any(e.name == "pbrlab" for e in m.entry_points(group="pytest11")) else "-p pbrlab.pytest_plugin")')
+plugin=$(python3 -c 'import importlib.metadata as m; print("" if any(e.name == "pbrlab" for e in m.entry_points(group="pytest11")) else "-p pbrlab.checking.pytest_plugin")')
 python3 -m pytest $plugin -p no:cacheprovider -q -n 8 \
     tests/render/test_chart_goldens.py tests/render/test_lit_scene_tiers.py \
     tests/render/test_torture_chart.py tests/hlsl/test_scene_renders.py \

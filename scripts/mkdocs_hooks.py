@@ -6,7 +6,7 @@ fields exactly as the file states them. The files are the truth; this page canno
 them, since it is written from them at every build.
 
 ``scenes.md``: the scene-file reference's tables, rendered from the JSON Schema
-(``pbrlab.scene_schema``, itself written from the parser's field tables) where the page
+(``pbrlab.scene.schema``, itself written from the parser's field tables) where the page
 says ``<!-- scene-schema -->``.
 """
 
@@ -178,7 +178,7 @@ def scene_reference(schema: dict, parser_only_rules) -> str:
     """The scene format's tables, one per object of the schema, then the parser's own checks."""
     out = ["The tables below are rendered from the JSON Schema at each build (`pbrlab schema` prints",
            "it; `scripts/mkdocs_hooks.py` writes these tables), which is written from the parser's own",
-           "field tables (`pbrlab/scene_fields.py`).", ""]
+           "field tables (`pbrlab/scene/fields.py`).", ""]
     out += ["### The top level {#schema-top-level}", "", schema["description"], "",
             "| field | type | meaning |", "|---|---|---|"]
     for key, field in schema["properties"].items():
@@ -218,7 +218,7 @@ def scene_reference(schema: dict, parser_only_rules) -> str:
         if rules:
             out += ["Rules across fields:", "", *[f"- {r}" for r in rules], ""]
     out += ["### What the parser checks beyond the schema", "",
-            "`pbrlab render` (the parser, `pbrlab.scene`) refuses these too, naming the field:", "",
+            "`pbrlab render` (the parser, `pbrlab.scene.model`) refuses these too, naming the field:", "",
             *[f"- {r}" for r in parser_only_rules], ""]
     return "\n".join(out)
 
@@ -229,6 +229,6 @@ def on_page_markdown(markdown, page, config, files):
     root = Path(config["config_file_path"]).parent
     if (root / "harness" / "pbrlab").is_dir():  # this checkout's package, not an installed one
         sys.path.insert(0, str(root / "harness"))
-    from pbrlab.scene_schema import PARSER_ONLY_RULES, scene_schema
+    from pbrlab.scene.schema import PARSER_ONLY_RULES, scene_schema
 
     return markdown.replace(SCHEMA_MARKER, scene_reference(scene_schema(), PARSER_ONLY_RULES))

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Installs what pbrlab needs on a Debian/Ubuntu machine, then exits 0.
 #   1. System packages (Mesa EGL + OSMesa + llvmpipe, glslang, spirv-cross, binutils'
-#      objdump for pbrlab.codescan, the Vulkan loader and Mesa's RADV for the AMD GPU
-#      instruction counts of pbrlab.gpu_isa, python3-venv):
+#      objdump for pbrlab.checking.codescan, the Vulkan loader and Mesa's RADV for the AMD GPU
+#      instruction counts of pbrlab.gpu.isa, python3-venv):
 #      installed with apt-get when run as root, otherwise the exact command is printed and
 #      the script stops with exit 1.
 #      A C++ compiler (g++) for the meshoptimizer bindings, published as source only.
 #      Chromium and node/npm (Debian's chromium, nodejs; npm unless node brings it) for the glTF Sample Viewer
-#      comparison (pbrlab.sample_viewer) are among them.
+#      comparison (pbrlab.checking.sample_viewer) are among them.
 #   2. A virtualenv .venv with requirements.txt, pyrender (--no-deps, see docs/getting-started.md) and
 #      pbrlab itself in editable mode. Skipped when .venv is up to date with the
 #      requirements (a stamp records their hash).

@@ -12,7 +12,7 @@
 //           port-unity renames pow to it), fmod(vecN, float).
 // Include:  "unity_compat/cg_compat.glsl" (path relative to glsl/), GLSL ONLY: HLSL has every
 //           one of these names itself, so this file has no HLSL twin
-//           (harness/pbrlab/port_hlsl.py ports pbr/ only). Never included by the pbr_ core;
+//           (harness/pbrlab/gpu/port_hlsl.py ports pbr/ only). Never included by the pbr_ core;
 //           `pbrlab port-unity` output includes it. Type renames (float3 -> vec3, ...) are
 //           not macros here: port-unity rewrites them, so an engine's own vec3 stays intact.
 // Config macros read: PBR_UNITY_VERTEX_STAGE (define it when compiling a vertex stage).

@@ -1,32 +1,35 @@
 """pbrlab: the headless harness that proves the pbrlab GLSL/HLSL shading library.
 
-The pieces, one job each (docs/layers.md groups them into layers, bottom up):
-  gl          the GL context factory (EGL or OSMesa over Mesa llvmpipe)
-  shaders     #include resolution, #line mapping, amalgamation
-  evaluator   evaluate(expr, **inputs): a GLSL expression over numpy arrays on the GPU
-  reference   float64 numpy references of the library's formulas
-  targets     sRGB and HDR render targets, readback
-  scene       the JSON scene format and its validation
-  render      GPU rendering of scenes;  cpu_render: the float64 numpy ray-tracer
-  images      lossless image I/O (OpenImageIO), atomic writes
-  compare     image metrics and tolerances;  goldens: the golden store
-  cli         the `pbrlab` command
+The package's folders are its layers, bottom up; a module imports only from its own layer or
+the ones below it (docs/layers.md, tests/foundation/test_layers.py):
+  foundation  errors, locations, console, outputs, the disk cache, JSON input, images
+  maths       the float64 references of the library's formulas, sRGB, camera, exposure
+  gpu         the GL context, shader sources and includes, programs, targets, the evaluator,
+              the IBL tables, the HLSL port, the AMD instruction counter
+  scene       the scene model, its fields and schema, meshes, the environment, the material
+              interface (material_passes)
+  importers   glTF, Unity shaders, and the loader that picks one
+  render      what a material uses (features), resources, the renderer, the CPU renderer
+  checking    comparison, goldens and the pytest plugin, cross-checks, corpora, hard cases
+  bench       what accuracy costs
+  commands    the `pbrlab` command (also `python -m pbrlab`)
 
-``evaluate`` and the vector helpers are imported on first use (PEP 562 ``__getattr__``), so
-``import pbrlab.x`` costs only ``x``: the pytest plugin and ``pbrlab --version`` load
-neither numpy nor moderngl.
+The public fronts: ``pbrlab.evaluate`` (and the vector helpers), ``pbrlab.scene.load_scene`` /
+``parse_scene``, ``pbrlab.render.render_scene``, the pytest plugin (entry point ``pbrlab``).
+Each is imported on first use (PEP 562 ``__getattr__``), so ``import pbrlab.x`` costs only
+``x``: the pytest plugin and ``pbrlab --version`` load neither numpy nor moderngl.
 """
 
-from .errors import PbrlabError
+from .foundation.errors import PbrlabError
+from .foundation.version import __version__
 
-__all__ = ["evaluate", "vec2", "vec3", "vec4", "PbrlabError"]
-__version__ = "0.1.0"
+__all__ = ["evaluate", "vec2", "vec3", "vec4", "PbrlabError", "__version__"]
 _FROM_EVALUATOR = ("evaluate", "vec2", "vec3", "vec4")
 
 
 def __getattr__(name: str):
     if name in _FROM_EVALUATOR:
-        from . import evaluator
+        from .gpu import evaluator
         return getattr(evaluator, name)
     raise AttributeError(f"module 'pbrlab' has no attribute {name!r}")
 

@@ -12,7 +12,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_PBR_HLSL
 #define PBR_PBR_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/pbr.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/pbr.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 // conventions and maths
 #include "pbr/common/constants.hlsl"

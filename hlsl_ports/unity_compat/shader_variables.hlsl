@@ -56,7 +56,7 @@
 //           none of these.
 // Include:  "unity_compat/shader_variables.hlsl" (path relative to hlsl_ports/). HAND-WRITTEN
 //           twin of glsl/unity_compat/shader_variables.glsl (matrices: GLSL M * v is HLSL
-//           mul(M, v), which the generator refuses to guess; harness/pbrlab/port_hlsl.py
+//           mul(M, v), which the generator refuses to guess; harness/pbrlab/gpu/port_hlsl.py
 //           generates pbr/ only); the per-light globals are `static` (mutable) here, and
 //           UNITY_INITIALIZE_OUTPUT zero-fills, as Unity's Direct3D 11 definition does.
 // Config macros read: none.

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from pbrlab import images
-from pbrlab.reference.color import linear_to_srgb
+from pbrlab.foundation import images
+from pbrlab.maths.reference.color import linear_to_srgb
 
 HERE = Path(__file__).resolve().parent
 SIZE = 128

@@ -4,8 +4,9 @@ It renders a scene the wheel ships and compares it with this project's own golde
 the ``golden`` fixture of pbrlab's pytest plugin.
 """
 
-from pbrlab import render, scene
-from pbrlab.locations import locate
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.foundation.locations import locate
 
 
 def test_example_scene_matches_its_golden(gl_context, golden):

@@ -14,7 +14,7 @@ import sys
 
 import pytest
 
-from pbrlab import cli
+from pbrlab.commands import cli
 from pbrlab.bench import families, report
 
 

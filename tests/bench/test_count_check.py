@@ -6,7 +6,7 @@ through to the check. Real counts need valgrind (~1 min), so they are not run he
 import pytest
 
 from pbrlab.bench import count_check, kernel, measure, worker
-from pbrlab.errors import InconsistentCountError, PbrlabError
+from pbrlab.foundation.errors import InconsistentCountError, PbrlabError
 
 
 def test_counts_that_agree_within_one_percent_pass():

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from pbrlab.bench import headline
-from pbrlab.errors import PbrlabError
+from pbrlab.foundation.errors import PbrlabError
 
 ROOT = Path(__file__).resolve().parents[2]
 JSON = ROOT / "docs" / "bench" / "accuracy_cost.json"

@@ -84,7 +84,7 @@ def test_site_builds_with_strict(tmp_path):
     assert "red_plastic" in scenes_page
     # The scene-file reference's tables, rendered from the JSON Schema: every field of every
     # object, and the parser's own checks.
-    from pbrlab.scene_schema import PARSER_ONLY_RULES, scene_schema
+    from pbrlab.scene.schema import PARSER_ONLY_RULES, scene_schema
     schema = scene_schema()
     fields = [key for node in schema["$defs"].values() for key in node.get("properties", {})]
     missing = [key for key in fields if f"<code>{key}</code></td>" not in scenes_page]

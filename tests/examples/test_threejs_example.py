@@ -25,9 +25,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import engine_tables, shaders
-from pbrlab.render import render_scene
-from pbrlab.scene import load_scene, parse_scene
+from pbrlab.gpu import engine_tables, shaders
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "threejs"

@@ -14,13 +14,13 @@ import numpy as np
 import pytest
 
 from gltf_helpers import write
-from pbrlab import cli
-from pbrlab.errors import PbrlabError, SceneError
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import load_gltf
-from pbrlab.gltf.animation import interpolate
-from pbrlab.gltf.skin import pose_vertices
-from pbrlab.reference import gltf_animation as reference
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import PbrlabError, SceneError
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.importers.gltf.animation import interpolate
+from pbrlab.importers.gltf.skin import pose_vertices
+from pbrlab.maths.reference import gltf_animation as reference
 
 STRIP = GLTF_DIR / "skinned_strip.gltf"
 DOC = json.loads(STRIP.read_text())
@@ -212,7 +212,7 @@ def test_normals_go_by_the_inverse_transpose_of_the_skin_matrix():
 def test_riggedsimple_bends_at_one_second():
     """Khronos' RiggedSimple (corpus/gltf/khronos; its rest pose agrees with the Sample
     Renderer, test_khronos_models.py): its one animation turns the upper bone by 1 s."""
-    from pbrlab.gltf import load_gltf as load
+    from pbrlab.importers.gltf import load_gltf as load
     model = GLTF_DIR.parents[1] / "corpus" / "gltf" / "khronos" / "RiggedSimple" / "RiggedSimple.glb"
     rest = load(model, emit_warnings=False).scene.objects[0].geometry.positions
     bent = load(model, time=1.0, emit_warnings=False).scene.objects[0].geometry.positions
@@ -225,7 +225,7 @@ def test_a_posed_render_differs_from_the_rest_pose(tmp_path, capsys):
     assert cli.main(["render", str(STRIP), "--hdr", str(rest), "--size", "48x32"]) == 0
     assert cli.main(["render", str(STRIP), "--hdr", str(bent), "--size", "48x32", "--time", "1",
                      "--animation", "bend"]) == 0
-    from pbrlab.images import read_image as read_exr
+    from pbrlab.foundation.images import read_image as read_exr
     assert np.abs(read_exr(rest) - read_exr(bent)).max() > 0.05
     assert "warning" not in capsys.readouterr().err
 

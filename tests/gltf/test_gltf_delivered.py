@@ -13,10 +13,10 @@ import pytest
 from PIL import Image
 
 from gltf_helpers import blob, quad_document, write
-from pbrlab import cli
-from pbrlab.errors import SceneError
-from pbrlab.gltf import load_gltf
-from pbrlab.gltf.images import KTX2_SIGNATURE
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import SceneError
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.importers.gltf.images import KTX2_SIGNATURE
 
 RNG = np.random.default_rng(24)
 

@@ -10,12 +10,12 @@ import pytest
 from scipy.spatial import cKDTree
 
 from gltf_helpers import read_glb, write_glb
-from pbrlab.compare import Tolerance, diff
-from pbrlab.errors import SceneError
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import draco, load_gltf
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.checking.compare import Tolerance, diff
+from pbrlab.foundation.errors import SceneError
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import draco, load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 from test_gltf_errors import _refused
 
 ENV = Environment(color=np.array([0.3, 0.3, 0.35]))

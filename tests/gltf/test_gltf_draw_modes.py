@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 
 from gltf_helpers import quad_document
-from pbrlab import instanced_draws
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.render import instanced_draws
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 from test_gltf_errors import _refused
 
 ENV = Environment(color=np.array([0.3, 0.3, 0.35]))

@@ -5,7 +5,7 @@ import struct
 
 import pytest
 
-from pbrlab import cli
+from pbrlab.commands import cli
 
 from gltf_helpers import blob, quad_document, set_blob, write
 

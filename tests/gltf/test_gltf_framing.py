@@ -7,9 +7,9 @@ from __future__ import annotations
 import pytest
 
 from gltf_helpers import quad_document, write
-from pbrlab.gltf import load_gltf
-from pbrlab.gltf.cameras import FRAMING_MARGIN
-from pbrlab.render import render_scene
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.importers.gltf.cameras import FRAMING_MARGIN
+from pbrlab.render.renderer import render_scene
 
 # the limiting axis spans 1/FRAMING_MARGIN (95 %) of the image by construction; a
 # rasterised silhouette loses up to a pixel at each end

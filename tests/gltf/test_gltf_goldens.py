@@ -7,8 +7,8 @@ renderer (test_layered_goldens_cpu.py)."""
 import numpy as np
 import pytest
 
-from pbrlab.golden_scenes import GLTF_GOLDENS, gltf_scene as _scene
-from pbrlab.render import render_scene
+from pbrlab.checking.golden_scenes import GLTF_GOLDENS, gltf_scene as _scene
+from pbrlab.render.renderer import render_scene
 
 CASES = list(GLTF_GOLDENS.values())
 _GOLDEN_NAME = {case: name for name, case in GLTF_GOLDENS.items()}

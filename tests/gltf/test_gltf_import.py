@@ -9,15 +9,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli
-from pbrlab.gltf import GltfWarning, load_gltf
-from pbrlab.gltf.lights import GLTF_TO_PBRLAB_INTENSITY
-from pbrlab.gltf.materials import FLIP_V
-from pbrlab.gltf.tangents import mikktspace_tangents
-from pbrlab.errors import SceneError
-from pbrlab.render import render_scene
-from pbrlab import scene_files
-from pbrlab.scene import load_scene, parse_scene
+from pbrlab.commands import cli
+from pbrlab.importers.gltf import GltfWarning, load_gltf
+from pbrlab.importers.gltf.lights import GLTF_TO_PBRLAB_INTENSITY
+from pbrlab.importers.gltf.materials import FLIP_V
+from pbrlab.importers.gltf.tangents import mikktspace_tangents
+from pbrlab.foundation.errors import SceneError
+from pbrlab.render.renderer import render_scene
+from pbrlab.importers import loader as scene_files
+from pbrlab.scene.model import load_scene, parse_scene
 
 from gltf_helpers import blob, quad_document, set_blob, write
 
@@ -49,7 +49,7 @@ def test_node_hierarchy_world_matrices_follow_trs_and_matrix(tmp_path):
 def test_texture_transform_matches_the_extension_formula_in_gl_space(tmp_path):
     # The importer's matrix acts on GL UVs (v up); mapped back to glTF UVs it must equal
     # the extension's T R S (its README), evaluated here point by point.
-    from pbrlab.gltf.materials import MaterialReader
+    from pbrlab.importers.gltf.materials import MaterialReader
 
     offset, rotation, scale = np.array([0.25, -0.1]), 0.4, np.array([1.6, 1.3])
     reader = MaterialReader(None, ("k",), lambda m: None)
@@ -282,7 +282,7 @@ def test_ior_on_a_partly_metallic_material_sets_its_dielectric_f0(tmp_path):
 
 
 def test_metallic_roughness_slot_in_a_json_scene_and_one_packing_only(tmp_path):
-    from pbrlab.errors import SceneError
+    from pbrlab.foundation.errors import SceneError
 
     png = ASSETS / "textured_mr.png"
     scene = {"camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
@@ -295,7 +295,7 @@ def test_metallic_roughness_slot_in_a_json_scene_and_one_packing_only(tmp_path):
 
 
 def test_environment_from_the_command_line_or_a_side_file(tmp_path, capsys):
-    from pbrlab.images import read_image
+    from pbrlab.foundation.images import read_image
 
     path = write(tmp_path, quad_document())  # no light: black without an environment
     out = tmp_path / "out.exr"
@@ -338,7 +338,7 @@ def test_sparse_accessor_replaces_elements(tmp_path):
     np.testing.assert_array_equal(geometry.positions[1], [1.0, -1.0, 0.0])
     doc["accessors"][0]["sparse"]["count"] = 2
     doc["bufferViews"][4]["byteLength"] = 4
-    from pbrlab.errors import SceneError
+    from pbrlab.foundation.errors import SceneError
     with pytest.raises(SceneError, match="sparse"):
         load_gltf(write(tmp_path, doc), emit_warnings=False)
 

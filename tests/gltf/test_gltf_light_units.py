@@ -1,4 +1,4 @@
-"""The default display of a glTF file in physical light units (pbrlab/exposure.py,
+"""The default display of a glTF file in physical light units (pbrlab/maths/exposure.py,
 gltf/settings.py light_units_default): Khronos PBR Neutral and a metered exposure that
 darkens just enough that at most 1 % of the model's pixels reach code 255, applied by
 `pbrlab render` only when the user chose neither tonemap nor exposure. The scene is
@@ -15,9 +15,10 @@ import pytest
 from PIL import Image
 
 from gltf_helpers import quad_document, write
-from pbrlab import cli, srgb8
-from pbrlab.exposure import CLIPPED_FRACTION, NEUTRAL_SATURATES_AT, metered_exposure
-from pbrlab.reference.tonemap import tonemap
+from pbrlab.commands import cli
+from pbrlab.maths import srgb8
+from pbrlab.maths.exposure import CLIPPED_FRACTION, NEUTRAL_SATURATES_AT, metered_exposure
+from pbrlab.maths.reference.tonemap import tonemap
 
 SIZE = "96x96"
 
@@ -38,7 +39,7 @@ def _render(tmp_path, doc, side=None, name="lamp"):
         (tmp_path / f"{name}.pbrlab.json").write_text(json.dumps(side))
     out, hdr = tmp_path / f"{name}.png", tmp_path / f"{name}.exr"
     assert cli.main(["render", str(model), "-o", str(out), "--hdr", str(hdr), "--size", SIZE]) == 0
-    from pbrlab.images import read_image
+    from pbrlab.foundation.images import read_image
     return np.asarray(Image.open(out))[..., :3], read_image(hdr)
 
 

@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from gltf_helpers import quad_document, write
-from pbrlab import cli
-from pbrlab.errors import PbrlabError
-from pbrlab.gltf import load_gltf
-from pbrlab.reference.color import srgb_to_linear
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.maths.reference.color import srgb_to_linear
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 
 
 def _centre(linear):
@@ -51,7 +51,7 @@ def test_specular_glossiness_is_the_specular_workflow(tmp_path, gl_context):
 def test_specular_glossiness_texture_multiplies_specular_and_glossiness(tmp_path, gl_context):
     """A white texture (sRGB 255, alpha 255) leaves the factors; a half-grey one (sRGB 188 ≈
     linear 0.5, alpha 128) halves the specular colour and scales the glossiness."""
-    from pbrlab import images
+    from pbrlab.foundation import images
     renders = {}
     for name, texel in (("white", (255, 255, 255, 255)), ("grey", (188, 188, 188, 128))):
         folder = tmp_path / name
@@ -120,7 +120,7 @@ def test_render_variant_on_the_command_line(tmp_path, gl_context):
         target = tmp_path / f"{variant}.exr"
         assert cli.main(["render", str(path), "--variant", variant, "--hdr", str(target), "--size", "16x16",
                          "--environment", "1,1,1"]) == 0
-        from pbrlab import images
+        from pbrlab.foundation import images
         out[variant] = images.read_image(target)
     assert not np.array_equal(out["Gold"], out["Blue"])
 
@@ -133,7 +133,7 @@ def test_a_variant_for_a_file_without_variants_is_refused(tmp_path):
 def test_specular_textures_scale_the_specular_colour_and_strength(tmp_path, gl_context):
     """KHR_materials_specular's specularColorTexture (sRGB RGB) and specularTexture (A):
     constant textures render as their factors would (the sRGB decode's bound, as above)."""
-    from pbrlab import images
+    from pbrlab.foundation import images
 
     def render(colour=(1.0, 1.0, 1.0), strength=1.0, textured=False):
         folder = tmp_path / f"s{len(list(tmp_path.iterdir()))}"

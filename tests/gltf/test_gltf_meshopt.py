@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 
 from gltf_helpers import read_glb, write_glb
-from pbrlab.errors import SceneError
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import load_gltf, meshopt
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.foundation.errors import SceneError
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import load_gltf, meshopt
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 from test_gltf_errors import _refused
 
 ENV = Environment(color=np.array([0.3, 0.3, 0.35]))

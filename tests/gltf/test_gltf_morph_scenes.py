@@ -15,12 +15,12 @@ import numpy as np
 import pytest
 
 from gltf_helpers import blob, quad_document, set_blob, write
-from pbrlab import cli
-from pbrlab.errors import SceneError
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import SceneError
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 
 ENV = Environment(color=np.array([0.3, 0.3, 0.35]))
 SIZE = (96, 64)

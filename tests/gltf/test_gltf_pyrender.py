@@ -1,6 +1,6 @@
 """glTF files rendered by pyrender 0.1.45, which reads them itself (trimesh's glTF reader:
 nodes, meshes, materials, textures), against pbrlab's importer lit with pyrender's terms
-(pbrlab.pyrender_gltf_check), through both backends. Through EGL pyrender resolves 4x
+(pbrlab.checking.pyrender.gltf_check), through both backends. Through EGL pyrender resolves 4x
 MSAA, which also blends the edges between overlapping objects (a sphere over the floor:
 up to 87 codes), and the coverage-based silhouette mask does not see those; pyrender's own
 OSMesa render (single-sampled) finds them: pixels where pyrender's EGL and OSMesa codes
@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import gl
-from pbrlab import pyrender_check as pc
-from pbrlab.pyrender_gltf_check import render_pbrlab_gltf_terms, render_pyrender_gltf_files
+from pbrlab.gpu import gl
+from pbrlab.checking.pyrender import check as pc
+from pbrlab.checking.pyrender.gltf_check import render_pbrlab_gltf_terms, render_pyrender_gltf_files
 
 ASSETS = Path(__file__).resolve().parents[2] / "scenes" / "gltf"
 SIZE = (384, 192)
@@ -113,9 +113,9 @@ def test_mask_discards_what_pyrender_draws_translucent(renders):
 
 
 def test_light_units_must_be_converted_from_gltf(ctx, renders, backend, monkeypatch):
-    # pbrlab's importer divides glTF intensities by pi (pbrlab.gltf.lights); without it the
+    # pbrlab's importer divides glTF intensities by pi (pbrlab.importers.gltf.lights); without it the
     # image is pi times too bright and the comparison fails.
-    from pbrlab.gltf import lights
+    from pbrlab.importers.gltf import lights
 
     monkeypatch.setattr(lights, "GLTF_TO_PBRLAB_INTENSITY", 1.0)
     pyr, _, mask = renders["hierarchy_lights.glb"]
@@ -127,7 +127,7 @@ def test_light_units_must_be_converted_from_gltf(ctx, renders, backend, monkeypa
 def test_gltf_roughness_must_be_perceptual(ctx, renders, backend, monkeypatch):
     # glTF's roughness is perceptual (alpha = roughness^2): mapping it to smoothness as if
     # it were alpha (smoothness = 1 - sqrt(roughness)) must break the match.
-    from pbrlab.gltf import materials
+    from pbrlab.importers.gltf import materials
 
     original = materials.MaterialReader.material
 

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from gltf_helpers import quad_document, write
-from pbrlab.errors import SceneError
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.foundation.errors import SceneError
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 
 ENV = Environment(color=np.array([0.5, 0.6, 0.7]))
 SIZE = (48, 32)

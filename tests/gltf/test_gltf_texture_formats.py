@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from pbrlab.compare import Tolerance, diff
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.gltf import ktx2, load_gltf, webp
-from pbrlab.render import render_scene
-from pbrlab.scene import Environment
+from pbrlab.checking.compare import Tolerance, diff
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.importers.gltf import ktx2, load_gltf, webp
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 from test_gltf_errors import _refused
 
 ENV = Environment(color=np.array([0.3, 0.3, 0.35]))

@@ -1,5 +1,5 @@
 """Khronos glTF sample models that nobody here wrote (corpus/gltf/khronos: MANIFEST.json,
-licences kept) rendered by pbrlab and by Khronos' glTF Sample Renderer (pbrlab.sample_viewer)
+licences kept) rendered by pbrlab and by Khronos' glTF Sample Renderer (pbrlab.checking.sample_viewer)
 with the same framing camera, no punctual light and a constant environment.
 
 Measured (Chromium 156 SwiftShader vs Mesa llvmpipe, 384x256, 8-bit sRGB codes over both
@@ -45,11 +45,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import sample_viewer
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
-from pbrlab.sample_viewer_prediction import DIFFERENCES, viewer_minus_pbrlab
-from pbrlab.scene import Environment
+from pbrlab.checking import sample_viewer
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.checking.sample_viewer_prediction import DIFFERENCES, viewer_minus_pbrlab
+from pbrlab.scene.model import Environment
 from test_sample_viewer_agreement import CONSTANT_SKY, MAX_MEAN_CODES, _agreement
 
 CORPUS = Path(__file__).resolve().parents[2] / "corpus" / "gltf" / "khronos"
@@ -149,7 +149,7 @@ def test_specular_test_agrees_once_the_viewers_environment_fresnel_is_applied(sk
     """SpecularTest (23 mirror-smooth spheres, base colour black: KHR_materials_specular's
     factor, colour and HDR colour rows and their textures, over a textured label plate) lit by
     the constant sky alone, so every sphere pixel is the environment's specular reflection.
-    The viewer's image is predicted from pbrlab's by pbrlab.sample_viewer_prediction's
+    The viewer's image is predicted from pbrlab's by pbrlab.checking.sample_viewer_prediction's
     environment_fresnel difference: per pixel, the viewer's getIBLGGXFresnel
     (reference/sample_viewer_specular.py: Fdez-Aguera 2019's single scattering with the
     roughness-dependent k_S = F0 + (max(1 - r, F0) - F0)(1 - n.v)^5, its multiple scattering,

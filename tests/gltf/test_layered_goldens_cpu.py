@@ -1,7 +1,7 @@
 """The layered glTF assets' goldens (golden_scenes.LAYERED_GLTF_GOLDENS: clear coat, sheen,
 anisotropy, iridescence, transmission and volume, the explicit F90 with the layers, at the high
 tier) against the independent float64 CPU renderer (cpu_render.py: ray-triangle intersection,
-pbrlab.reference), so a golden is never "whatever the shader printed". The stored EXR, not today's render, is
+pbrlab.maths.reference), so a golden is never "whatever the shader printed". The stored EXR, not today's render, is
 compared, as test_gpu_matches_cpu_reference.py compares the charts' goldens.
 
 The CPU renderer models untextured materials: a textured one's pixels are NaN there and left
@@ -22,9 +22,9 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from pbrlab.cpu_render import render_scene_cpu
-from pbrlab.golden_scenes import LAYERED_GLTF_GOLDENS, gltf_scene
-from pbrlab.images import read_image
+from pbrlab.render.cpu_render import render_scene_cpu
+from pbrlab.checking.golden_scenes import LAYERED_GLTF_GOLDENS, gltf_scene
+from pbrlab.foundation.images import read_image
 
 GOLDENS = Path(__file__).resolve().parents[2] / "goldens"
 ATOL = 1e-5

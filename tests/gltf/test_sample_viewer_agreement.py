@@ -1,11 +1,11 @@
-"""pbrlab's glTF renders against Khronos' glTF Sample Renderer (pbrlab.sample_viewer), a
+"""pbrlab's glTF renders against Khronos' glTF Sample Renderer (pbrlab.checking.sample_viewer), a
 second renderer that shares none of pbrlab's code: its own importer, tangents (MikkTSpace),
 BRDF, light units and environment prefiltering.
 
 Both render the same file with the same camera, lights and environment at the goldens'
 size, and both images are linear radiance (the viewer's LINEAR_OUTPUT, no tonemap on
-either side), encoded here with the one exact sRGB encode (pbrlab.srgb8) and compared in
-8-bit codes with pbrlab.compare over the pixels both cover, eroded by EDGE_PX so that
+either side), encoded here with the one exact sRGB encode (pbrlab.maths.srgb8) and compared in
+8-bit codes with pbrlab.checking.compare over the pixels both cover, eroded by EDGE_PX so that
 silhouettes (different rasterisation rules at triangle edges) do not count.
 
 Measured (Chromium 156 SwiftShader vs Mesa llvmpipe, gltf-viewer 1.1.0, the viewer's
@@ -36,7 +36,7 @@ whole images with the background made equal):
     weights differ by name, pbrlab's 1 - E(d0, d90) under Unity's 1 - max(d0) against the viewer's
     1 - F_Schlick(d0, d90, VdotH) per light, but on these quads by less than a code)
     transmission.gltf, 2 lights + constant environment, once the viewer's transmission formulas
-    are applied to pbrlab's image (pbrlab.sample_viewer_prediction; uncorrected 0.185, mean 3.34):
+    are applied to pbrlab's image (pbrlab.checking.sample_viewer_prediction; uncorrected 0.185, mean 3.34):
                                                                0.0063, 9 codes, 0.186, FLIP 0.0021
     (test_transmission_agrees_once_the_viewers_transmission_formulas_are_applied)
     sheen.gltf (KHR_materials_sheen), 2 punctual lights / 2 lights + constant environment, once
@@ -66,15 +66,16 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from pbrlab import compare, sample_viewer, srgb8
-from pbrlab.errors import PbrlabError
-from pbrlab.golden_scenes import GLTF_DIR, GLTF_SIZE
-from pbrlab.gltf import load_gltf
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.render import render_scene
-from pbrlab.cpu_render import visible_surfaces
-from pbrlab.sample_viewer_prediction import DIFFERENCES, SHEEN_DIFFERENCES, viewer_minus_pbrlab, viewer_minus_pbrlab_sheen
-from pbrlab.scene import Environment
+from pbrlab.checking import compare, sample_viewer
+from pbrlab.maths import srgb8
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.checking.golden_scenes import GLTF_DIR, GLTF_SIZE
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.render.renderer import render_scene
+from pbrlab.render.cpu_render import visible_surfaces
+from pbrlab.checking.sample_viewer_prediction import (DIFFERENCES, SHEEN_DIFFERENCES, viewer_minus_pbrlab, viewer_minus_pbrlab_sheen)
+from pbrlab.scene.model import Environment
 
 from test_transmission_slab import _scene as slab_scene, _slab_pixels
 
@@ -183,7 +184,7 @@ def test_transmission_agrees_once_the_viewers_transmission_formulas_are_applied(
     """transmission.gltf (four white spheres: opaque, a smooth thin wall, a rough thin wall
     striped by its transmission texture, a tinted volume of IOR 1.33) under the constant sky
     and its two lights, both in front of the spheres. The viewer's image is predicted from
-    pbrlab's by pbrlab.sample_viewer_prediction: per pixel, its transmission formulas
+    pbrlab's by pbrlab.checking.sample_viewer_prediction: per pixel, its transmission formulas
     (reference/sample_viewer_transmission.py, gltf-viewer 1.1.0) minus pbrlab's (the float64
     twin of the shaders, cpu_render), four named differences. Compared: the pixels away from
     silhouettes and from the stripes' edges (404 pixels, where both renderers filter the
@@ -237,7 +238,7 @@ def test_sheen_agrees_once_the_viewers_sheen_formulas_are_applied(renders, envir
     """sheen.gltf (KHR_materials_sheen: no sheen, a white sheen of roughness 0.3, colour and
     roughness textures, a sheen under a clear coat; a dark purple base of roughness 0.8) under
     its two lights, and under them plus the constant sky. The viewer's image is predicted from
-    pbrlab's by pbrlab.sample_viewer_prediction.viewer_minus_pbrlab_sheen: two named
+    pbrlab's by pbrlab.checking.sample_viewer_prediction.viewer_minus_pbrlab_sheen: two named
     differences (reference/sample_viewer_sheen.py, gltf-viewer 1.1.0) applied to pbrlab's render
     with the sheen and the coat removed (the light the sheen scales):
       base_unscaled          its sheen albedo table (u_SheenELUT) reads 0, the texture never

@@ -8,9 +8,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pbrlab.reference import sample_viewer_sheen as viewer_sheen
-from pbrlab.reference import sheen as ref_sheen
-from pbrlab.sample_viewer_prediction import viewer_minus_pbrlab_sheen
+from pbrlab.maths.reference import sample_viewer_sheen as viewer_sheen
+from pbrlab.maths.reference import sheen as ref_sheen
+from pbrlab.checking.sample_viewer_prediction import viewer_minus_pbrlab_sheen
 
 
 def test_neubelt_visibility_is_the_viewers_ashikhmin_where_its_clamp_does_not_bind():

@@ -8,12 +8,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pbrlab.errors import PbrlabError
-from pbrlab.gltf import load_gltf
-from pbrlab.golden_scenes import GLTF_DIR
-from pbrlab.reference import sample_viewer_specular as viewer
-from pbrlab.sample_viewer_prediction import viewer_minus_pbrlab
-from pbrlab.scene import Environment
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.checking.golden_scenes import GLTF_DIR
+from pbrlab.maths.reference import sample_viewer_specular as viewer
+from pbrlab.checking.sample_viewer_prediction import viewer_minus_pbrlab
+from pbrlab.scene.model import Environment
 
 NDOTV = np.linspace(0.001, 1.0, 200)
 ROUGHNESS = (0.0, 0.1, 0.3, 0.6, 1.0)

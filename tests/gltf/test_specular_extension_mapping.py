@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab.gltf import load_gltf
-from pbrlab.reference import specular_extension as ext
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.maths.reference import specular_extension as ext
 
 CORPUS = Path(__file__).resolve().parents[2] / "corpus" / "gltf" / "khronos"
 

@@ -2,7 +2,7 @@
 make_assets.py): three glass slabs half over an emissive backdrop, no light and no
 environment, so each slab shows only the backdrop through it. Where a slab covers the
 backdrop, its pixels are the backdrop's own render (the file without the slabs) times the
-fraction the slab transmits, computed per pixel in float64 from pbrlab.reference
+fraction the slab transmits, computed per pixel in float64 from pbrlab.maths.reference
 (cpu_render.transmitted_fraction: rho (1 - E_spec) x Beer-Lambert, at the pixel's exact
 view), in GLSL and in HLSL; where it does not, it shows black (the copy is empty there and
 there is no environment)."""
@@ -11,12 +11,12 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from pbrlab.camera import camera_rays
-from pbrlab.cpu_render import transmitted_fraction
-from pbrlab.depth_range import scene_frame
-from pbrlab.golden_scenes import GLTF_DIR, GLTF_SIZE
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
+from pbrlab.maths.camera import camera_rays
+from pbrlab.render.cpu_render import transmitted_fraction
+from pbrlab.render.depth_range import scene_frame
+from pbrlab.checking.golden_scenes import GLTF_DIR, GLTF_SIZE
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
 
 SLABS = {"thin_ior_1": -1.5, "thin_ior_1_5": 0.0, "tinted_volume": 1.5}  # material: the slab's x
 SLAB_HALF = 0.5   # the unit quads of make_assets.transmission_slab

@@ -1,4 +1,4 @@
-"""pbrlab.gpu_isa.vertex: the generated vertex stage feeds every fragment input a value
+"""pbrlab.gpu.isa.vertex: the generated vertex stage feeds every fragment input a value
 that varies per vertex, so RADV cannot fold the inputs into the fragment program (which a
 vertex stage writing constants lets it do: the control below)."""
 
@@ -6,8 +6,8 @@ import re
 
 import pytest
 
-from pbrlab.gpu_isa import compile as gpu
-from pbrlab.gpu_isa.vertex import feeding_vertex
+from pbrlab.gpu.isa import compile as gpu
+from pbrlab.gpu.isa.vertex import feeding_vertex
 
 _FRAGMENT = """#version 450
 layout(location = 0) in vec3 a;

@@ -22,7 +22,7 @@ baseline loop):
 import pytest
 
 from pbrlab.bench import light_loop
-from pbrlab.gpu_isa import compile as gpu
+from pbrlab.gpu.isa import compile as gpu
 
 FAMILIES = ("rdna3", "rdna2", "gcn5")
 PREPARED_OVER_UNCOUPLED = 2
@@ -69,6 +69,6 @@ def test_scene_programs_pay_no_coupling_per_light(scenes, material, quality):
 
 
 def test_uncoupling_a_program_without_the_coupling_is_an_error():
-    from pbrlab.errors import PbrlabError
+    from pbrlab.foundation.errors import PbrlabError
     with pytest.raises(PbrlabError, match="energy-conservation"):
         light_loop.uncoupled("void main() {}")

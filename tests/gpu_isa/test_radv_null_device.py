@@ -1,10 +1,10 @@
-"""pbrlab.gpu_isa: RADV's null device compiles for each AMD family and its figures respond
+"""pbrlab.gpu.isa: RADV's null device compiles for each AMD family and its figures respond
 to what the program does (controls with known answers, not just "a number came back")."""
 
 import pytest
 
-from pbrlab.errors import PbrlabError
-from pbrlab.gpu_isa import compile as gpu
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.gpu.isa import compile as gpu
 
 _HEAD = "#version 450\nlayout(location = 0) out vec4 colour;\nuniform float u;\n"
 

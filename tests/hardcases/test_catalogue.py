@@ -1,5 +1,5 @@
 """Issue 5: the hard-case catalogue and the randomised sweeps, for every public function and
-every tier and variant of the shading model, through the GPU evaluator (pbrlab.hardcases).
+every tier and variant of the shading model, through the GPU evaluator (pbrlab.checking.hardcases).
 
 Failure messages list the function, case, value and expected bound (as `pbrlab hardcases`).
 """
@@ -9,9 +9,9 @@ import re
 import numpy as np
 import pytest
 
-from pbrlab import shaders
-from pbrlab.cli import main as cli_main
-from pbrlab.hardcases import catalogue, domains, run
+from pbrlab.gpu import shaders
+from pbrlab.commands.cli import main as cli_main
+from pbrlab.checking.hardcases import catalogue, domains, run
 
 FUNCTIONS = catalogue.functions()
 # Folders and files of other issues (the surface API, IBL, light attenuation, SH lighting),

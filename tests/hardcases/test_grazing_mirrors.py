@@ -1,5 +1,5 @@
 """Issue 25: no tier loses the specular lobe at grazing mirrors. 10^6 samples per tier near
-the mirror with NdotL = NdotV from 1e-6 to 0.05 (pbrlab.hardcases.grazing), each tier's GLSL
+the mirror with NdotL = NdotV from 1e-6 to 0.05 (pbrlab.checking.hardcases.grazing), each tier's GLSL
 against its own float64 model at the same float32 inputs.
 
 Tolerance: 1e-4 relative on the BRDF's channel sum, for every sample: n = +z makes the dot
@@ -21,7 +21,7 @@ The former threshold on |l + v|² dropped 635 of the 10^6 samples at HIGH and ME
 import numpy as np
 import pytest
 
-from pbrlab.hardcases import grazing
+from pbrlab.checking.hardcases import grazing
 
 SAMPLES = 10 ** 6
 REL = {"HIGH": 1e-4, "MEDIUM": 1e-4, "LOW": 1e-2}

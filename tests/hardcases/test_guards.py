@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3
-from pbrlab.reference import brdf, color, guards, shading, tonemap
+from pbrlab.maths.reference import brdf, color, guards, shading, tonemap
 
 F32 = np.float32
 BELOW = lambda x: float(np.nextafter(F32(x), F32(0)))  # noqa: E731  (one float32 step below)

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3
-from pbrlab.hardcases import half
-from pbrlab.reference import shading
+from pbrlab.checking.hardcases import half
+from pbrlab.maths.reference import shading
 
 
 def test_in_shader_rounding_is_numpy_float16_bit_for_bit():

@@ -2,7 +2,7 @@
 
 from importlib import resources
 
-from pbrlab import shaders
+from pbrlab.gpu import shaders
 
 
 def fullscreen_program(ctx, fragment_body: str, name: str = "<test.frag>", include_dirs=()):

@@ -6,13 +6,14 @@ from pathlib import Path
 
 import pytest
 
-from pbrlab import cli, console
+from pbrlab.commands import cli
+from pbrlab.foundation import console
 
 SCENE_ARGS = ["--size", "8x8"]
 
 
 def _pbrlab(*argv):
-    return subprocess.run([sys.executable, "-m", "pbrlab.cli", *argv], capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "pbrlab.commands.cli", *argv], capture_output=True, text=True)
 
 
 @pytest.mark.parametrize("command", cli.COMMANDS)
@@ -44,7 +45,7 @@ def test_quiet_and_verbose_are_exclusive():
 
 
 def test_render_says_more_under_v_and_only_errors_under_q(tmp_path):
-    from pbrlab.locations import locate
+    from pbrlab.foundation.locations import locate
     scene = str(locate("scenes") / "example.json")
     out = str(tmp_path / "x.png")
     normal = _pbrlab("render", scene, "-o", out, *SCENE_ARGS)

@@ -6,8 +6,10 @@ import json
 import numpy as np
 import pytest
 
-from pbrlab import cli, compare, images
-from pbrlab.compare import GOLDEN_TOLERANCE, Tolerance, diff
+from pbrlab.commands import cli
+from pbrlab.checking import compare
+from pbrlab.foundation import images
+from pbrlab.checking.compare import GOLDEN_TOLERANCE, Tolerance, diff
 
 TIGHT = Tolerance(1e-6, 0.0, "test: any visible change fails")
 

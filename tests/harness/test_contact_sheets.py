@@ -9,10 +9,10 @@ import matplotlib
 import numpy as np
 import pytest
 
-from pbrlab import contact_sheets
-from pbrlab.charts import CHARTS
-from pbrlab.golden_scenes import LIT_SCENE
-from pbrlab.scene import load_scene, parse_scene
+from pbrlab.checking import contact_sheets
+from pbrlab.checking.charts import CHARTS
+from pbrlab.checking.golden_scenes import LIT_SCENE
+from pbrlab.scene.model import load_scene, parse_scene
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

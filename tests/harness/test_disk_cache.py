@@ -1,4 +1,4 @@
-"""pbrlab.disk_cache: entries by key, whole or absent, damaged ones dropped; and its users
+"""pbrlab.foundation.disk_cache: entries by key, whole or absent, damaged ones dropped; and its users
 (meshes, the prefiltered environment) give the same data from the cache as without it."""
 
 from __future__ import annotations
@@ -6,8 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pbrlab import disk_cache, meshes
-from pbrlab.scene import parse_scene
+from pbrlab.foundation import disk_cache
+from pbrlab.scene import meshes
+from pbrlab.scene.model import parse_scene
 
 
 @pytest.fixture

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec2, vec3, vec4
-from pbrlab.errors import PbrlabError, ShaderCompileError
+from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
 
 F32 = np.finfo(np.float32)
 SPECIAL_FLOATS = np.array([
@@ -71,7 +71,7 @@ def test_bad_input_name_and_vector_shape_are_clear_errors():
 
 
 def test_cli_eval_prints_a_table(capsys):
-    from pbrlab import cli
+    from pbrlab.commands import cli
 
     assert cli.main(["eval", "x * y", "--var", "x=0:1:3", "--var", "y=2,4"]) == 0
     lines = capsys.readouterr().out.strip().splitlines()
@@ -81,7 +81,7 @@ def test_cli_eval_prints_a_table(capsys):
 
 
 def test_cli_eval_bad_var_is_a_clear_error(capsys):
-    from pbrlab import cli
+    from pbrlab.commands import cli
 
     assert cli.main(["eval", "x", "--var", "x=zero:1:3"]) == 2
     assert "expected NAME=start:stop:count" in capsys.readouterr().err
@@ -90,7 +90,7 @@ def test_cli_eval_bad_var_is_a_clear_error(capsys):
 def test_cli_eval_reads_your_own_include_directory(tmp_path, capsys):
     """`pbrlab eval -I DIR --include my/f.glsl`: a user's file beside the library (as
     amalgamate's -I), and a directory that does not exist is one clear line."""
-    from pbrlab import cli
+    from pbrlab.commands import cli
 
     (tmp_path / "my").mkdir()
     (tmp_path / "my" / "f.glsl").write_text("float my_twice(float x) { return 2.0 * x; }\n")

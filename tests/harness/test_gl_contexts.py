@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from pbrlab import gl
-from pbrlab.errors import PbrlabError
+from pbrlab.gpu import gl
+from pbrlab.foundation.errors import PbrlabError
 
 # Renders a pattern with transcendental maths (pow, exp2, sin: the functions whose
 # llvmpipe code depends on CPU features) into an RGBA32F target and prints its hash.
@@ -89,8 +89,8 @@ _EGL_AFTER_OSMESA = textwrap.dedent("""
     from pathlib import Path
     import numpy as np
     from pbrlab import gl
-    from pbrlab.gltf import load_gltf
-    from pbrlab.render import render_scene
+    from pbrlab.importers.gltf import load_gltf
+    from pbrlab.render.renderer import render_scene
     root = Path(sys.argv[1])
     model = load_gltf(root / "corpus/gltf/khronos/ClearCoatCarPaint/ClearCoatCarPaint.glb", size=(128, 128),
                       emit_warnings=False).scene

@@ -5,9 +5,10 @@ import json
 import numpy as np
 import pytest
 
-from pbrlab import goldens, images
-from pbrlab.compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, Tolerance
-from pbrlab.errors import PbrlabError
+from pbrlab.checking import goldens
+from pbrlab.foundation import images
+from pbrlab.checking.compare import GOLDEN_SRGB_TOLERANCE, GOLDEN_TOLERANCE, Tolerance
+from pbrlab.foundation.errors import PbrlabError
 
 INFO = {"GL_RENDERER": "llvmpipe (test)", "GL_VERSION": "4.5 (Core Profile) Mesa 0.0",
         "mesa": "0.0", "moderngl": "x", "openimageio": "y", "llvmpipe_cpu_caps": "sse4.1"}

@@ -5,8 +5,8 @@ import os
 import numpy as np
 import pytest
 
-from pbrlab import images, outputs
-from pbrlab.errors import PbrlabError
+from pbrlab.foundation import images, outputs
+from pbrlab.foundation.errors import PbrlabError
 
 
 def _special_floats(shape=(5, 7, 4)) -> np.ndarray:

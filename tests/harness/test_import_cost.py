@@ -29,12 +29,12 @@ def loaded_after(code: str, env_extra: dict | None = None) -> list[str]:
 def test_the_pytest_plugin_module_imports_nothing_heavy():
     """Every pytest run of an environment with pbrlab installed loads the plugin: it must not
     load numpy, moderngl or OpenImageIO (0.18 s before), only pytest's own modules."""
-    assert loaded_after("import pytest\nimport pbrlab.pytest_plugin") == []
+    assert loaded_after("import pytest\nimport pbrlab.checking.pytest_plugin") == []
 
 
 def test_import_pbrlab_and_the_cli_parser_load_no_mesh_or_gl_libraries():
     assert loaded_after("import pbrlab") == []
-    assert loaded_after("import pbrlab.cli") == ["moderngl"]  # --backend's choices
+    assert loaded_after("import pbrlab.commands.cli") == ["moderngl"]  # --backend's choices
     assert "trimesh" not in loaded_after("from pbrlab import cli\ncli.build_parser(['render'])")
 
 
@@ -50,12 +50,12 @@ def test_a_render_without_mesh_files_or_cached_meshes_never_imports_trimesh(tmp_
     render = f"from pbrlab import cli\nassert cli.main(['render', {str(lit)!r}, '-o', {str(tmp_path / 'a.png')!r}, '--size', '16x16', '-q']) == 0"
     first = loaded_after(render, cache)
     assert "trimesh" in first  # the control: an empty cache reads the OBJ and primitives with trimesh
-    again = loaded_after(render + "\nimport sys\nassert 'pbrlab.gltf' not in sys.modules", cache)
+    again = loaded_after(render + "\nimport sys\nassert 'pbrlab.importers.gltf' not in sys.modules", cache)
     assert "trimesh" not in again and "scipy" not in again
     spheres = tmp_path / "spheres.json"
     spheres.write_text(json.dumps({"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "size": [8, 8]},
                                    "materials": {"m": {}},
                                    "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}]}))
     code = (f"from pbrlab import cli\nassert cli.main(['render', {str(spheres)!r}, '-o', "
-            f"{str(tmp_path / 'b.png')!r}, '-q']) == 0\nimport sys\nassert 'pbrlab.gltf' not in sys.modules")
+            f"{str(tmp_path / 'b.png')!r}, '-q']) == 0\nimport sys\nassert 'pbrlab.importers.gltf' not in sys.modules")
     assert "trimesh" not in loaded_after(code, {"PBRLAB_CACHE_DIR": "off"})

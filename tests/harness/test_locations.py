@@ -1,4 +1,4 @@
-"""pbrlab.locations: one function decides where glsl/, hlsl_ports/ and scenes/ are; the CLI reports it.
+"""pbrlab.foundation.locations: one function decides where glsl/, hlsl_ports/ and scenes/ are; the CLI reports it.
 
 The wheel side (package data found through importlib.resources, outside any checkout) is
 proven by scripts/check_wheel.sh, which CI runs after the suite.
@@ -11,8 +11,9 @@ from pathlib import Path
 import pytest
 
 import pbrlab
-from pbrlab import hlsl, locations, shaders
-from pbrlab.errors import PbrlabError
+from pbrlab.gpu import hlsl, shaders
+from pbrlab.foundation import locations
+from pbrlab.foundation.errors import PbrlabError
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -50,10 +51,10 @@ def test_a_missing_tree_names_its_environment_variable(monkeypatch, tmp_path):
 
 def test_version_and_paths_print_every_tree():
     for argv in (["--version"], ["paths"]):
-        out = subprocess.run([sys.executable, "-m", "pbrlab.cli", *argv], capture_output=True,
+        out = subprocess.run([sys.executable, "-m", "pbrlab.commands.cli", *argv], capture_output=True,
                              text=True, check=True).stdout
         for tree in locations.TREES:
             assert f"{tree}: {REPO / tree} (checkout)" in out, (argv, out)
-    version = subprocess.run([sys.executable, "-m", "pbrlab.cli", "--version"], capture_output=True,
+    version = subprocess.run([sys.executable, "-m", "pbrlab.commands.cli", "--version"], capture_output=True,
                              text=True, check=True).stdout
     assert version.startswith(f"pbrlab {pbrlab.__version__}\n")

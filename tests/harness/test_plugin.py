@@ -2,8 +2,8 @@
 
 import pytest
 
-from pbrlab import gl
-from pbrlab.errors import GLUnavailableError
+from pbrlab.gpu import gl
+from pbrlab.foundation.errors import GLUnavailableError
 
 CHART_TEST = """
 import numpy as np

@@ -1,4 +1,4 @@
-"""pbrlab.progress: a live line for a stage past its delay, on a terminal only, never under -q."""
+"""pbrlab.foundation.progress: a live line for a stage past its delay, on a terminal only, never under -q."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from pbrlab import console, progress
+from pbrlab.foundation import console, progress
 
 
 class Terminal(io.StringIO):

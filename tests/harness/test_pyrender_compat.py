@@ -10,7 +10,7 @@ SCRIPT = textwrap.dedent("""
     import sys
     import numpy as np
     import trimesh
-    from pbrlab.pyrender_compat import import_pyrender
+    from pbrlab.checking.pyrender.compat import import_pyrender
     pyrender = import_pyrender(sys.argv[1])
     import OpenGL
     assert OpenGL.__version__ == "3.1.10", OpenGL.__version__

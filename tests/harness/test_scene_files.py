@@ -1,4 +1,4 @@
-"""pbrlab.scene_files, the loader above the scene model and the glTF importer."""
+"""pbrlab.importers.loader, the loader above the scene model and the glTF importer."""
 
 from __future__ import annotations
 
@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from pbrlab import gltf, scene, scene_files
-from pbrlab.errors import SceneError
+from pbrlab.importers import gltf, loader as scene_files
+from pbrlab.scene import model as scene
+from pbrlab.foundation.errors import SceneError
 
 ASSETS = Path(__file__).resolve().parents[2] / "scenes" / "gltf"
 

@@ -1,5 +1,5 @@
-"""The scene files' JSON Schema (pbrlab.scene_schema, `pbrlab schema`) agrees with the parser
-(pbrlab.scene): every committed and test scene is valid under both; invalid scenes the
+"""The scene files' JSON Schema (pbrlab.scene.schema, `pbrlab schema`) agrees with the parser
+(pbrlab.scene.model): every committed and test scene is valid under both; invalid scenes the
 parser refuses are refused by the schema; and over a sample of mutated scenes, the two
 disagree only where the parser checks what a schema cannot (scene_schema.PARSER_ONLY_RULES:
 files, material names, coinciding camera points, cone order, 512.0 as a size)."""
@@ -15,11 +15,12 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from pbrlab import cli, scene_fields
-from pbrlab.charts import CHARTS
-from pbrlab.errors import SceneError
-from pbrlab.scene import load_scene, parse_scene
-from pbrlab.scene_schema import PARSER_ONLY_RULES, scene_schema
+from pbrlab.commands import cli
+from pbrlab.scene import fields as scene_fields
+from pbrlab.checking.charts import CHARTS
+from pbrlab.foundation.errors import SceneError
+from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene.schema import PARSER_ONLY_RULES, scene_schema
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "hostile"))

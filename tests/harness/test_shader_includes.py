@@ -5,8 +5,8 @@ import subprocess
 
 import pytest
 
-from pbrlab import shaders
-from pbrlab.errors import PbrlabError, ShaderCompileError
+from pbrlab.gpu import shaders
+from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
 
 from gl_helpers import fullscreen_program
 
@@ -77,7 +77,7 @@ def test_library_umbrella_include_compiles(gl_context):
 
 
 def test_amalgamation_has_no_includes_and_compiles_with_glslang(tmp_path):
-    from pbrlab import cli
+    from pbrlab.commands import cli
 
     out = tmp_path / "single.glsl"
     assert cli.main(["amalgamate", "pbr/pbr.glsl", "-o", str(out)]) == 0
@@ -90,7 +90,7 @@ def test_amalgamation_has_no_includes_and_compiles_with_glslang(tmp_path):
 
 
 def test_amalgamate_missing_entry_is_a_clear_error(tmp_path, capsys):
-    from pbrlab import cli
+    from pbrlab.commands import cli
 
     assert cli.main(["amalgamate", str(tmp_path / "nope.glsl"), "-o", str(tmp_path / "x.glsl")]) == 2
     assert "no such file" in capsys.readouterr().err
@@ -110,7 +110,7 @@ def test_guarded_file_is_expanded_once_unless_first_included_conditionally(tmp_p
 def test_an_include_in_a_comment_or_a_branch_not_taken_is_not_read():
     """Issue 26: the expander resolved every #include line, inside /* */ and under #if 0 too;
     a missing file there stopped the program the compiler would have built."""
-    from pbrlab import shaders
+    from pbrlab.gpu import shaders
     text = ('#version 330 core\n/* an old include:\n#include "gone.glsl"\n*/\n'
             '#if 0\n#include "missing.glsl"\n#endif\n#include "pbr/common/math.glsl"\n')
     source = shaders.expand(text, "t.glsl")
@@ -121,7 +121,7 @@ def test_an_include_in_a_comment_or_a_branch_not_taken_is_not_read():
 
 
 def test_a_missing_include_in_a_branch_taken_is_reported_at_its_line(gl_context):
-    from pbrlab import shaders
+    from pbrlab.gpu import shaders
     frag = shaders.expand('#version 330 core\n#define X\n#ifdef X\n#include "missing.glsl"\n#endif\n'
                           'out vec4 c;\nvoid main() { c = vec4(1.0); }\n', "frag.glsl")
     vert = shaders.expand('#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n', "vert.glsl")

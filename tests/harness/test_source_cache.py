@@ -1,4 +1,4 @@
-"""pbrlab.source_cache: an expansion from the disk cache equals a fresh one, and any change to
+"""pbrlab.gpu.source_cache: an expansion from the disk cache equals a fresh one, and any change to
 what it was made from (an included file edited, a file that now shadows it, a new file where
 a missing include was looked for) gives a fresh expansion."""
 
@@ -8,7 +8,8 @@ import os
 
 import pytest
 
-from pbrlab import disk_cache, shaders, source_cache
+from pbrlab.foundation import disk_cache
+from pbrlab.gpu import shaders, source_cache
 
 OLD_NS = 1_600_000_000 * 10**9  # a modification time long past: the inputs have settled
 

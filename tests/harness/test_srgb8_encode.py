@@ -1,11 +1,11 @@
-"""pbrlab.srgb8.encode, the exact display encode (and the mip chains' colour encode): the
+"""pbrlab.maths.srgb8.encode, the exact display encode (and the mip chains' colour encode): the
 fast table-and-correction form gives exactly the codes of a plain search of the code
 edges (round to nearest on the IEC 61966-2-1 curve), also at and next to every edge."""
 
 import numpy as np
 
-from pbrlab import srgb8
-from pbrlab.reference.color import linear_to_srgb
+from pbrlab.maths import srgb8
+from pbrlab.maths.reference.color import linear_to_srgb
 
 
 def _search(x):

@@ -3,8 +3,8 @@ against the exact IEC 61966-2-1 curves of the float64 reference."""
 
 import numpy as np
 
-from pbrlab import targets
-from pbrlab.reference.color import linear_to_srgb, srgb_to_linear
+from pbrlab.gpu import targets
+from pbrlab.maths.reference.color import linear_to_srgb, srgb_to_linear
 
 from gl_helpers import COPY_TEXELS, fullscreen_program
 

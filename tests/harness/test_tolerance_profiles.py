@@ -5,11 +5,11 @@ precision, and must stay tight enough to catch a real change of the scene."""
 import numpy as np
 import pytest
 
-from pbrlab import goldens
-from pbrlab.compare import TOLERANCE_PROFILES, diff, profile_for_renderer, tolerance_profile
-from pbrlab.errors import PbrlabError
-from pbrlab.golden_scenes import lit_scene
-from pbrlab.render import render_scene
+from pbrlab.checking import goldens
+from pbrlab.checking.compare import TOLERANCE_PROFILES, diff, profile_for_renderer, tolerance_profile
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.checking.golden_scenes import lit_scene
+from pbrlab.render.renderer import render_scene
 
 
 @pytest.fixture(scope="module")

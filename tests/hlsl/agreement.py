@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from pbrlab import evaluate, vec3
-from pbrlab.port_hlsl import port_expression, port_text
+from pbrlab.gpu.port_hlsl import port_expression, port_text
 
 import hlsl_helpers as H
 

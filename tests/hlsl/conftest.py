@@ -23,6 +23,6 @@ def pytest_terminal_summary(terminalreporter):
 
 @pytest.fixture(scope="session")
 def hlsl_wrappers(tmp_path_factory):
-    """tests/hlsl/wrappers ported to HLSL by pbrlab.port_hlsl (a directory for include_dirs)."""
+    """tests/hlsl/wrappers ported to HLSL by pbrlab.gpu.port_hlsl (a directory for include_dirs)."""
     import agreement
     return agreement.hlsl_wrappers_dir(tmp_path_factory.mktemp("hlsl_wrappers"))

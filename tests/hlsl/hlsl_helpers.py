@@ -3,7 +3,7 @@
 Imported by the test modules as ``hlsl_helpers`` (a plain module, like
 tests/library/library_helpers.py). The parser reads what a C-like preprocessor would
 see at file scope: functions (return type, name, parameters with qualifiers), structs
-(fields) and ``#define`` lines; comments are masked first (pbrlab.port_hlsl._mask).
+(fields) and ``#define`` lines; comments are masked first (pbrlab.gpu.port_hlsl._mask).
 """
 
 from __future__ import annotations
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
-from pbrlab import hlsl, shaders
-from pbrlab.port_hlsl import SHIM_INCLUDE, _mask
+from pbrlab.gpu import hlsl, shaders
+from pbrlab.gpu.port_hlsl import SHIM_INCLUDE, _mask
 
 GLSL_ROOT = shaders.GLSL_ROOT
 HLSL_ROOT = hlsl.HLSL_ROOT

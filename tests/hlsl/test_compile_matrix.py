@@ -29,8 +29,8 @@ from pathlib import Path
 
 import pytest
 
-from pbrlab import hlsl, shaders
-from pbrlab.errors import ShaderCompileError
+from pbrlab.gpu import hlsl, shaders
+from pbrlab.foundation.errors import ShaderCompileError
 
 GLSL_FILES = sorted(p.relative_to(shaders.GLSL_ROOT).as_posix() for p in (shaders.GLSL_ROOT / "pbr").rglob("*.glsl"))
 HLSL_FILES = sorted(p.relative_to(hlsl.HLSL_ROOT).as_posix() for p in (hlsl.HLSL_ROOT / "pbr").rglob("*.hlsl"))

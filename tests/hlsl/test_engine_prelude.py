@@ -12,8 +12,8 @@ import re
 
 import pytest
 
-from pbrlab import hlsl
-from pbrlab.errors import ShaderCompileError
+from pbrlab.gpu import hlsl
+from pbrlab.foundation.errors import ShaderCompileError
 
 ENGINE_PRELUDE = """
 struct vec3 { float x; float y; float z; };                     // an engine's own vector type

@@ -1,4 +1,4 @@
-"""The hard-case sweeps of issue 5 (pbrlab.hardcases) run on the HLSL ports: every
+"""The hard-case sweeps of issue 5 (pbrlab.checking.hardcases) run on the HLSL ports: every
 catalogue entry (every public function, dispatcher value and tier). Same catalogue, same
 bounds, same inputs; the expression and the includes go through the port
 (port_expression, .glsl -> .hlsl). No NaN/Inf and no value outside its bound in 2·10^5
@@ -10,8 +10,8 @@ from __future__ import annotations
 import pytest
 
 from pbrlab import evaluate
-from pbrlab.hardcases import catalogue, run
-from pbrlab.port_hlsl import port_expression
+from pbrlab.checking.hardcases import catalogue, run
+from pbrlab.gpu.port_hlsl import port_expression
 
 SAMPLES = 200_000
 

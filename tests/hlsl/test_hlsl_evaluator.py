@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pbrlab import PbrlabError, evaluate, hlsl, vec3
-from pbrlab.errors import ShaderCompileError
+from pbrlab import PbrlabError, evaluate, vec3
+from pbrlab.gpu import hlsl
+from pbrlab.foundation.errors import ShaderCompileError
 
 SPECIAL = np.array([0.0, -0.0, np.inf, -np.inf, np.nan, 1e-45, -1e-40, 1.17549435e-38, 3.4028235e38, 0.1],
                    np.float32)

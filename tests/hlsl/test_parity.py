@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate
-from pbrlab.port_hlsl import port_expression
+from pbrlab.gpu.port_hlsl import port_expression
 
 import hlsl_helpers as H
 

@@ -1,4 +1,4 @@
-"""The generator (pbrlab.port_hlsl): the committed ports are exactly what it writes, and each
+"""The generator (pbrlab.gpu.port_hlsl): the committed ports are exactly what it writes, and each
 of its rules does what its docstring says (and nothing else)."""
 
 from __future__ import annotations
@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from pbrlab import port_hlsl
-from pbrlab.port_hlsl import PortError, port_expression, port_text
+from pbrlab.gpu import port_hlsl
+from pbrlab.gpu.port_hlsl import PortError, port_expression, port_text
 
 import hlsl_helpers as H
 
@@ -18,7 +18,7 @@ GUARDED = "// x.glsl: test\n#ifndef PBR_X_GLSL\n#define PBR_X_GLSL\n{body}\n#end
 
 def test_committed_ports_are_the_generated_ones():
     """Regenerating hlsl_ports/ changes nothing: no hand edit, no drift from glsl/."""
-    assert port_hlsl.stale_files() == [], "run: python -m pbrlab.port_hlsl"
+    assert port_hlsl.stale_files() == [], "run: python -m pbrlab.gpu.port_hlsl"
 
 
 def test_every_glsl_file_has_a_twin_path_for_path():
@@ -76,7 +76,7 @@ def test_file_rules_and_the_shim_line():
     out = port_text(text, "pbr/x.glsl")
     assert out.splitlines() == [
         "// x.hlsl: test", "#ifndef PBR_X_HLSL", "#define PBR_X_HLSL",
-        '#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/x.glsl by harness/pbrlab/port_hlsl.py: '
+        '#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/x.glsl by harness/pbrlab/gpu/port_hlsl.py: '
         "edit the GLSL, then regenerate",
         '#include "pbr/common/math.hlsl"  // see glsl/README.md, d_ggx.hlsl',
         "float3 f() { return ((float3)(1.0)); }", "#endif // PBR_X_HLSL"]
@@ -109,7 +109,7 @@ def test_cli_check_reports_stale_and_orphan_ports(tmp_path):
     glsl.mkdir(parents=True)
     (glsl / "a.glsl").write_text(GUARDED.format(body="float f() { return 1.0; }").replace("PBR_X", "PBR_A"))
     hlsl_root = tmp_path / "hlsl"
-    cmd = [sys.executable, "-m", "pbrlab.port_hlsl", "--glsl-root", str(tmp_path / "glsl"), "--hlsl-root", str(hlsl_root)]
+    cmd = [sys.executable, "-m", "pbrlab.gpu.port_hlsl", "--glsl-root", str(tmp_path / "glsl"), "--hlsl-root", str(hlsl_root)]
     check = subprocess.run(cmd + ["--check"], capture_output=True, text=True)
     assert check.returncode == 1 and "pbr/a.hlsl: missing" in check.stdout
     assert subprocess.run(cmd, capture_output=True, text=True).returncode == 0

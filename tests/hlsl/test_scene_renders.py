@@ -1,6 +1,6 @@
 """The material charts, the lit scene and the torture chart shaded by the HLSL library
 (hlsl_ports/) through the harness's HLSL pixel shaders: glslang's HLSL front end -> SPIR-V
--> spirv-cross -> this GL (harness/pbrlab/programs.py). Each render diffs against the GLSL
+-> spirv-cross -> this GL (harness/pbrlab/gpu/programs.py). Each render diffs against the GLSL
 golden of the same scene within the golden tolerance, read-only: an HLSL render never
 writes a golden, even under --update-goldens. The lit scene's bricks use the Unity surface
 function's HLSL port, scenes/unity_example/brick_surface.hlsl."""
@@ -12,12 +12,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, programs
-from pbrlab.charts import CHARTS
-from pbrlab.errors import PbrlabError, ShaderCompileError
-from pbrlab.golden_scenes import GOLDEN_SCENES, lit_scene
-from pbrlab.render import render_scene
-from pbrlab.scene import QUALITIES, load_scene, parse_scene
+from pbrlab.commands import cli
+from pbrlab.gpu import programs
+from pbrlab.checking.charts import CHARTS
+from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
+from pbrlab.checking.golden_scenes import GOLDEN_SCENES, lit_scene
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import QUALITIES, load_scene, parse_scene
 
 REPO = Path(__file__).resolve().parents[2]
 _lit_scene = lit_scene

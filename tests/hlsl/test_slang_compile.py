@@ -11,7 +11,7 @@ the SPIR-V path stays glslang -> SPIR-V -> spirv-cross. DXC and FXC are not avai
 
 import pytest
 
-from pbrlab import hlsl
+from pbrlab.gpu import hlsl
 
 from test_compile_matrix import HLSL_FILES
 from test_engine_prelude import ENGINE_PRELUDE, LIBRARY

@@ -57,7 +57,7 @@ def replace_at(tree, path, value):
 def assert_clean_refusal(exc, origin=None):
     """A refusal is clean when it is a PbrlabError with a one-line-or-more message that says
     where (the origin file or a field path) and is not a Python repr of an exception."""
-    from pbrlab.errors import PbrlabError
+    from pbrlab.foundation.errors import PbrlabError
     assert isinstance(exc, PbrlabError), f"{type(exc).__name__}: {exc}"
     text = str(exc)
     assert text.strip(), "empty message"

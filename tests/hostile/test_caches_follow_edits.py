@@ -13,10 +13,13 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import evaluator, images, meshes, programs, resource_cache
-from pbrlab.errors import PbrlabError
-from pbrlab.render import render_scene
-from pbrlab.scene import load_scene
+from pbrlab.gpu import evaluator, programs
+from pbrlab.foundation import images
+from pbrlab.scene import meshes
+from pbrlab.render import resource_cache
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import load_scene
 
 SURFACE = """#include "tint.inc"
 uniform sampler2D _Tex;
@@ -154,7 +157,7 @@ def test_png_bytes_named_exr_are_refused_by_name(tmp_path, gl_context, census):
     (SURFACE.replace("0.3", "0.3 \xe9"), "surf.glsl:5: not UTF-8 text"),
 ])
 def test_surface_mistakes_are_reported_by_name(surface_scene, capsys, surface, message, census):
-    from pbrlab import cli
+    from pbrlab.commands import cli
     path = surface_scene / "surf.glsl"
     path.write_bytes(surface.encode("latin-1"))
     out = surface_scene / "out.png"
@@ -180,7 +183,7 @@ def test_an_evaluated_include_edited_on_disk_gives_the_new_value(tmp_path, censu
                                           ("for (int i = 0; i <= 65535; i++)", True),
                                           ("for (int i = 1; i <= 65535; i++)", False)])
 def test_a_loop_past_llvmpipes_cap_is_a_named_warning(gl_context, tmp_path, loop, warned, census):
-    from pbrlab.errors import LoopLimitWarning
+    from pbrlab.foundation.errors import LoopLimitWarning
     if "llvmpipe" not in gl_context.info["GL_RENDERER"].lower():
         pytest.skip("the 65535-iteration cap is llvmpipe's")
     (tmp_path / "loop.glsl").write_text(

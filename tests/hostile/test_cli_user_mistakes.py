@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import cli, images
+from pbrlab.commands import cli
+from pbrlab.foundation import images
 
 
 @pytest.fixture

@@ -10,8 +10,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hostile_common import FAST, assert_clean_refusal
-from pbrlab import evaluator
-from pbrlab.errors import PbrlabError
+from pbrlab.gpu import evaluator
+from pbrlab.foundation.errors import PbrlabError
 
 values = st.one_of(
     st.none(), st.booleans(), st.text(max_size=3),

@@ -1,5 +1,5 @@
 """Property-based glTF documents for `features` and `render` (the glTF importer,
-pbrlab.gltf, then the feature plan): every field of a small valid document replaced by a
+pbrlab.importers.gltf, then the feature plan): every field of a small valid document replaced by a
 hostile value gives a clean refusal naming the file, or a plan; the file is never changed."""
 
 import json
@@ -8,8 +8,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hostile_common import FAST, assert_clean_refusal, leaf_paths, replace_at
-from pbrlab.features import plan_programs
-from pbrlab.gltf import load_gltf
+from pbrlab.render.features import plan_programs
+from pbrlab.importers.gltf import load_gltf
 
 # One triangle (positions in a data: URI buffer), one material, two lights on nodes.
 _POSITIONS = "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"

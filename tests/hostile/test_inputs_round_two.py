@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import cli
-from pbrlab.errors import PbrlabError
-from pbrlab.meshes import load_mesh
-from pbrlab.scene import load_scene
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.scene.meshes import load_mesh
+from pbrlab.scene.model import load_scene
 
 TRIANGLE_OBJ = "# mod\u00e8le caf\u00e9\no caf\u00e9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n"
 
@@ -35,7 +35,7 @@ def test_outputs_named_only_by_their_extension_are_written(tmp_path, monkeypatch
     (tmp_path / "scene.json").write_text(json.dumps(scene))
     monkeypatch.chdir(tmp_path)
     assert cli.main(["render", "scene.json", "-o", ".png", "--hdr", ".exr"]) == 0
-    from pbrlab.images import read_image
+    from pbrlab.foundation.images import read_image
     assert read_image(tmp_path / ".png").shape[:2] == (16, 16)
     assert read_image(tmp_path / ".exr").shape[:2] == (16, 16)
     assert sorted(p.name for p in tmp_path.iterdir()) == [".exr", ".png", "scene.json"]  # no temporary left
@@ -92,7 +92,7 @@ def test_a_surface_file_with_a_quote_in_its_name_renders(tmp_path, gl_context, l
     """An #include "..." line cannot carry a double quote (nor a backslash, to glslang): the
     template's include of the surface broke ("unexpected IDENTIFIER"). It renders as the same
     function under a plain name, and its errors name the file."""
-    from pbrlab.render import render_scene
+    from pbrlab.render.renderer import render_scene
     odd = render_scene(load_scene(_surface_scene(tmp_path, stem, language, "0.5")), gl_context,
                        language=language).linear
     plain = render_scene(load_scene(_surface_scene(tmp_path, "plain", language, "0.5")), gl_context,
@@ -120,7 +120,7 @@ def _unity_scene(tmp_path, surface: str):
 def test_a_unity_shader_with_a_quote_in_its_name_renders(tmp_path, gl_context, language, census):
     """The generated program's include of the port (GLSL) and its #line "file" (glslang, HLSL)
     were built from the raw name; a port-unity port (GLSL) was included by its raw name."""
-    from pbrlab.render import render_scene
+    from pbrlab.render.renderer import render_scene
     (tmp_path / 'u"nity.shader').write_text(SHADER)
     (tmp_path / "plain.shader").write_text(SHADER)
     odd = render_scene(_unity_scene(tmp_path, 'u"nity.shader'), gl_context, language=language).linear

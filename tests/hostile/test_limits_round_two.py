@@ -12,10 +12,10 @@ one property take 38 s: the driver's compile time, which no property limit would
 import numpy as np
 
 from hostile_common import base_scene
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
-from pbrlab.unity import load_shader, parse
-from pbrlab.unity.parse import UnityShaderError
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
+from pbrlab.importers.unity import load_shader, parse
+from pbrlab.importers.unity.parse import UnityShaderError
 
 
 def _shader(count: int, used: int, broken_at: int | None = None) -> str:

@@ -17,8 +17,10 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import cli, goldens, images, outputs
-from pbrlab.errors import PbrlabError
+from pbrlab.commands import cli
+from pbrlab.checking import goldens
+from pbrlab.foundation import images, outputs
+from pbrlab.foundation.errors import PbrlabError
 
 OLD = b"the previous good file"
 

@@ -1,6 +1,6 @@
 """Issue 26 (round two), nothing lost: the bench's report (JSON, markdown tables, Pareto
 plots), the demo's contact sheets and index, and the other figure and file writers go
-through the all-or-nothing output layer (pbrlab.outputs). A disk that fills up part-way
+through the all-or-nothing output layer (pbrlab.foundation.outputs). A disk that fills up part-way
 through a write (simulated: files opened for writing in the folder share a byte budget, and
 the write that passes it writes what fits and raises ENOSPC, as a full disk does) leaves
 every previous good file as it was, names the file it could not write, and leaves no
@@ -16,9 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, contact_sheets, outputs
+from pbrlab.commands import cli
+from pbrlab.checking import contact_sheets
+from pbrlab.foundation import outputs
 from pbrlab.bench import report
-from pbrlab.errors import PbrlabError
+from pbrlab.foundation.errors import PbrlabError
 
 OLD = b"the previous good file"
 
@@ -173,7 +175,7 @@ def test_a_full_disk_keeps_the_previous_demo_sheet_and_index(tmp_path, monkeypat
 
 
 def test_a_full_disk_keeps_the_previous_radiance_hdr(tmp_path, monkeypatch, census):
-    from pbrlab import sample_viewer
+    from pbrlab.checking import sample_viewer
     hdr = tmp_path / "sky.hdr"
     hdr.write_bytes(OLD)
     _FullDisk(tmp_path, 100, monkeypatch)

@@ -14,8 +14,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hostile_common import FAST, SLOW, assert_clean_refusal, base_scene, leaf_paths, replace_at
-from pbrlab.errors import PbrlabError
-from pbrlab.scene import Scene, load_scene, parse_scene
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.scene.model import Scene, load_scene, parse_scene
 
 PATHS = list(leaf_paths(base_scene()))
 
@@ -152,7 +152,7 @@ def test_numpy_values_are_accepted_as_json_values(census):
        size=st.one_of(st.none(), st.tuples(st.integers(-2, 20), st.integers(-2, 20)),
                       st.just((np.int64(5), np.int64(3))), st.just("8x8"), st.just((8.0, 8))))
 def test_a_parsed_hostile_scene_renders_finite_or_is_refused(gl_context, index, value, size, census):
-    from pbrlab.render import render_scene
+    from pbrlab.render.renderer import render_scene
     data = replace_at(base_scene(), PATHS[index], value)
     try:
         scene = parse_scene(data, origin="hostile.json")
@@ -173,7 +173,7 @@ def test_a_parsed_hostile_scene_renders_finite_or_is_refused(gl_context, index, 
 
 
 def test_a_radiance_past_float32_is_refused_by_name(gl_context, census):
-    from pbrlab.render import render_scene
+    from pbrlab.render.renderer import render_scene
     data = base_scene()
     data["lights"][0].update(color=[3e38, 1, 1], intensity=10)
     with pytest.raises(PbrlabError, match=r"lights\[0\]: color x intensity = 3e\+39 is beyond the float32"):
@@ -183,7 +183,7 @@ def test_a_radiance_past_float32_is_refused_by_name(gl_context, census):
 
 @pytest.mark.parametrize("scene", ["scenes/x.json", 42, {"camera": {}}, None])
 def test_render_scene_refuses_what_is_not_a_scene(gl_context, scene, census):
-    from pbrlab.render import render_scene
+    from pbrlab.render.renderer import render_scene
     with pytest.raises(PbrlabError, match="render_scene takes a Scene"):
         render_scene(scene, gl_context)
     census["render", "refused cleanly"] += 1

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from hostile_common import base_scene
-from pbrlab import cli
-from pbrlab.errors import SceneError
-from pbrlab.gltf import load_gltf
-from pbrlab.render import render_scene
-from pbrlab.scene import load_scene, parse_scene
+from pbrlab.commands import cli
+from pbrlab.foundation.errors import SceneError
+from pbrlab.importers.gltf import load_gltf
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import load_scene, parse_scene
 
 # One triangle (positions in a data: URI buffer) on node 1, a child of node 0.
 _POSITIONS = "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from pbrlab import evaluate, vec3  # noqa: F401  (re-exported for the tests)
-from pbrlab.reference import remap, shading
+from pbrlab.maths.reference import remap, shading
 
 # float32 unit roundoff: the relative error of one correctly rounded float32 operation.
 F32_EPS = 2.0 ** -24

@@ -1,6 +1,6 @@
 """The anisotropic specular of KHR_materials_anisotropy (glsl/pbr/brdf/d_ggx_anisotropic.glsl,
 v_smith_ggx_correlated_anisotropic.glsl, glsl/pbr/shading/anisotropy.glsl) against the float64
-references of harness/pbrlab/reference/anisotropy.py.
+references of harness/pbrlab/maths/reference/anisotropy.py.
 
 Tolerances are ``atol + rtol·|ref|`` in the unit of the value (1/sr for D, V and the lobe;
 unitless for alphas and directions). The terms are sums of positive squares (no cancellation),
@@ -17,7 +17,7 @@ import pytest
 
 from library_helpers import (RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate, perceptual_roughnesses, record,
                              seeded_rng, unit_vectors, vec3)
-from pbrlab.reference import anisotropy, directional_albedo, shading
+from pbrlab.maths.reference import anisotropy, directional_albedo, shading
 
 INCLUDE = ("pbr/shading/anisotropy.glsl",)
 N, T, B = (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)

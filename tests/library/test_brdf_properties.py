@@ -15,7 +15,7 @@ import pytest
 
 from library_helpers import (seeded_rng, F32_EPS, RTOL_WELL_CONDITIONED, alphas, as_f32, assert_close, evaluate,
                              phi_quadrature, record, theta_quadrature, unit_vectors, vec3)
-from pbrlab.reference import brdf, material, remap, shading
+from pbrlab.maths.reference import brdf, material, remap, shading
 
 # ---- normalisation: ∫ D(h) (n·h) dω_h = 1 ------------------------------------------------
 

@@ -1,4 +1,4 @@
-"""Every BRDF term of glsl/pbr/brdf/ against its float64 reference (harness/pbrlab/reference/brdf.py)
+"""Every BRDF term of glsl/pbr/brdf/ against its float64 reference (harness/pbrlab/maths/reference/brdf.py)
 over a dense grid of its valid domain.
 
 Tolerances are ``atol + rtol·|ref|`` in the unit of the term (1/sr for D, V, Fd, BRDFs;
@@ -12,7 +12,7 @@ import pytest
 
 from library_helpers import (seeded_rng, F32_EPS, MIN_ALPHA, RTOL_WELL_CONDITIONED, alphas, as_f32, assert_close,
                              cosines, evaluate, grid, perceptual_roughnesses, unit_vectors, v_cosines, vec3)
-from pbrlab.reference import brdf, remap
+from pbrlab.maths.reference import brdf, remap
 
 # Blinn-Phong exponents: the Call of Duty range 1..8192 plus the exponents the shading
 # model reaches through pbr_specPower_from_alpha (alpha down to MIN_ALPHA: s ≈ 4.9e5).

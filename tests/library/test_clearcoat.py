@@ -9,7 +9,7 @@ import pytest
 from library_helpers import (RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate, grid, perceptual_roughnesses,
                              seeded_rng, unit_vectors, v_cosines, vec3)
 from pbrlab import vec2
-from pbrlab.reference import clearcoat, directional_albedo, shading, surface
+from pbrlab.maths.reference import clearcoat, directional_albedo, shading, surface
 
 INCLUDES = ["pbr/surface/lighting_clearcoat.glsl"]
 N = np.array([0.0, 0.0, 1.0])

@@ -1,11 +1,11 @@
-"""Colour-space functions (glsl/pbr/color/) against harness/pbrlab/reference/color.py, and the
+"""Colour-space functions (glsl/pbr/color/) against harness/pbrlab/maths/reference/color.py, and the
 two linear-space paths of the lecture compared in 8-bit steps (LSB = 1/255 of full scale)."""
 
 import numpy as np
 import pytest
 
 from library_helpers import RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate, record, vec3
-from pbrlab.reference import color
+from pbrlab.maths.reference import color
 
 # Linear values: dense in [0, 1] with the toe resolved, plus HDR values up to 16.
 LINEAR = as_f32(np.concatenate([np.linspace(0.0, 1.0, 65537), np.geomspace(1e-7, 1e-2, 4097),

@@ -6,9 +6,9 @@ import numpy as np
 
 from library_helpers import evaluate
 from pbrlab import vec2, vec3
-from pbrlab.reference import brdf as ref_brdf
-from pbrlab.reference import shading as ref_shading
-from pbrlab.reference import surface as ref_surface
+from pbrlab.maths.reference import brdf as ref_brdf
+from pbrlab.maths.reference import shading as ref_shading
+from pbrlab.maths.reference import surface as ref_surface
 
 INCLUDES = ["pbr/pbr.glsl"]
 RNG = np.random.default_rng(13)

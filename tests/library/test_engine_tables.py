@@ -1,4 +1,4 @@
-"""Engine-ready tables (`pbrlab tables`, pbrlab.engine_tables) and the engine snippet
+"""Engine-ready tables (`pbrlab tables`, pbrlab.gpu.engine_tables) and the engine snippet
 examples/engine/pbrlab_tables.glsl / .hlsl: the files hold the library's tables (EXR exactly,
 16-bit PNG to half a code), read with the documented orientation at the library's texture
 coordinates they give the library's values (and the float64 integrals within the library's
@@ -13,8 +13,10 @@ import numpy as np
 import pytest
 
 from library_helpers import as_f32, evaluate
-from pbrlab import cli, engine_tables, ibl, images, sheen_table
-from pbrlab.reference import surface as ref_surface
+from pbrlab.commands import cli
+from pbrlab.gpu import engine_tables, ibl, sheen_table
+from pbrlab.foundation import images
+from pbrlab.maths.reference import surface as ref_surface
 
 ROOT = Path(__file__).resolve().parents[2]
 SNIPPETS = ROOT / "examples" / "engine"

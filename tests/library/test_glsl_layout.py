@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from library_helpers import evaluate
-from pbrlab import shaders
-from pbrlab.reference import brdf, color, constants, guards, material, remap, shading, surface, tonemap
+from pbrlab.gpu import shaders
+from pbrlab.maths.reference import brdf, color, constants, guards, material, remap, shading, surface, tonemap
 
 ROOT = shaders.GLSL_ROOT
 FILES = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "pbr").rglob("*.glsl"))

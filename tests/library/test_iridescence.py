@@ -1,5 +1,5 @@
 """Thin-film iridescence (glsl/pbr/brdf/f_iridescence.glsl, KHR_materials_iridescence) against
-its two float64 references (harness/pbrlab/reference/iridescence.py): (a) the same analytic
+its two float64 references (harness/pbrlab/maths/reference/iridescence.py): (a) the same analytic
 method, to float32 rounding; (b) the spectral physics (exact Airy film per wavelength, CIE 1931
 by Wyman et al. 2013), within the method's measured error, stated in the GLSL header.
 
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from library_helpers import F32_EPS, as_f32, assert_close, evaluate, vec3
-from pbrlab.reference import brdf, iridescence
+from pbrlab.maths.reference import brdf, iridescence
 
 INCLUDE = ("pbr/brdf/f_iridescence.glsl",)
 CALL = "pbr_F_Iridescence(n1, n2, c, d, f0)"

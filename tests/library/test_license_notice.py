@@ -4,7 +4,7 @@ shim, and so does an amalgamated single file."""
 
 import pytest
 
-from pbrlab import hlsl, shaders
+from pbrlab.gpu import hlsl, shaders
 
 NOTICE = "// SPDX-License-Identifier: MIT. Part of pbrlab"
 FILES = {f"{root.name}/{path.relative_to(root).as_posix()}": path

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from library_helpers import as_f32, assert_close, evaluate, seeded_rng, unit_vectors, vec3
-from pbrlab import sheen_table
-from pbrlab.reference import sheen
+from pbrlab.gpu import sheen_table
+from pbrlab.maths.reference import sheen
 
 INCLUDES = ["pbr/surface/lighting_sheen.glsl"]
 

@@ -1,12 +1,12 @@
 """Material layer (glsl/pbr/material/): roughness remaps, metallic/specular workflows, the
-lecture's F0 tables and F0 <-> IOR, against harness/pbrlab/reference/{remap,material}.py."""
+lecture's F0 tables and F0 <-> IOR, against harness/pbrlab/maths/reference/{remap,material}.py."""
 
 import numpy as np
 import pytest
 
 from library_helpers import (seeded_rng, RTOL_WELL_CONDITIONED, alphas, as_f32, assert_close, evaluate,
                              perceptual_roughnesses, vec3)
-from pbrlab.reference import brdf, material, remap
+from pbrlab.maths.reference import brdf, material, remap
 
 GLOSS = as_f32(np.linspace(0.0, 1.0, 4097))
 

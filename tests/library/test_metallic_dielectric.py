@@ -9,7 +9,7 @@ metallic 0 is the specular workflow."""
 import numpy as np
 
 from library_helpers import RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate, seeded_rng, vec3
-from pbrlab.reference import material, specular_extension as ext
+from pbrlab.maths.reference import material, specular_extension as ext
 
 
 def _materials(rng, count):

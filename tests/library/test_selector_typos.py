@@ -11,8 +11,9 @@ import re
 import numpy as np
 import pytest
 
-from pbrlab import evaluate, shaders
-from pbrlab.errors import ShaderCompileError
+from pbrlab import evaluate
+from pbrlab.gpu import shaders
+from pbrlab.foundation.errors import ShaderCompileError
 
 _DEFAULT = re.compile(r"#\s*ifndef\s+(PBR_\w+)\s*\n\s*#\s*define\s+\1\s+\1_\w+")
 UNITY_INCLUDE = "pbr/unity/surface_standard"  # the unity layer; the core umbrella does not include it

@@ -1,5 +1,5 @@
 """The shading model and punctual lighting (glsl/pbr/shading/, glsl/pbr/lighting/) against
-harness/pbrlab/reference/shading.py, for the default variants and every selector value, plus
+harness/pbrlab/maths/reference/shading.py, for the default variants and every selector value, plus
 the lighting convention and the documented edges (no NaN anywhere).
 
 Tolerance of the assembled model (relative, per colour channel; units of radiance): the
@@ -17,8 +17,8 @@ import pytest
 
 from library_helpers import (seeded_rng, F32_EPS, RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate,
                              unit_vectors, vec3)
-from pbrlab.errors import ShaderCompileError
-from pbrlab.reference import constants, shading
+from pbrlab.foundation.errors import ShaderCompileError
+from pbrlab.maths.reference import constants, shading
 
 SHADE = "pbr_shade_punctual(n, v, l, radiance, diffuseColor, f0, roughness)"
 COSINE_ERROR = 8 * F32_EPS  # δ above

@@ -1,6 +1,6 @@
 """The sheen layer (KHR_materials_sheen): pbr/brdf/d_charlie.glsl, pbr/brdf/v_charlie.glsl and
-pbr/shading/sheen.glsl against the float64 references of harness/pbrlab/reference/sheen.py, the
-albedo table (harness/pbrlab/sheen_table.py) against an independent finer quadrature, and the
+pbr/shading/sheen.glsl against the float64 references of harness/pbrlab/maths/reference/sheen.py, the
+albedo table (harness/pbrlab/gpu/sheen_table.py) against an independent finer quadrature, and the
 energy statements the headers make.
 
 Tolerances are atol + rtol·|ref| in the unit of the term (1/sr for D, V and the lobe).
@@ -11,8 +11,8 @@ import pytest
 
 from library_helpers import (RTOL_WELL_CONDITIONED, as_f32, assert_close, cosines, evaluate, grid,
                              phi_quadrature, theta_quadrature, v_cosines, vec3)
-from pbrlab import sheen_table
-from pbrlab.reference import sheen
+from pbrlab.gpu import sheen_table
+from pbrlab.maths.reference import sheen
 
 # alpha from 0 (clamped to the floor) over the floor to 1
 ALPHAS = as_f32(np.concatenate([[0.0, 1e-3], np.geomspace(sheen.SHEEN_MIN_ALPHA, 1.0, 17)]))

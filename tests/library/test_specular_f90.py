@@ -9,7 +9,7 @@ import pytest
 from library_helpers import (as_f32, assert_close, evaluate, perceptual_roughnesses, seeded_rng,
                              unit_vectors, v_cosines, vec3)
 from pbrlab import vec2
-from pbrlab.reference import shading, specular_extension as ext
+from pbrlab.maths.reference import shading, specular_extension as ext
 
 N = np.array([0.0, 0.0, 1.0])
 BRDF = ["pbr/shading/standard.glsl"]
@@ -75,7 +75,7 @@ def test_specular_albedo_with_f90_matches_the_extensions_integral():
     mu, r = (as_f32(x.ravel()) for x in np.meshgrid(v_cosines(17), perceptual_roughnesses(9)))
     f0, f90 = _materials(rng, mu.size)
     alpha = np.maximum(r.astype(np.float64), shading.MIN_PERCEPTUAL_ROUGHNESS) ** 2
-    from pbrlab.reference import directional_albedo
+    from pbrlab.maths.reference import directional_albedo
     ab = directional_albedo.split_sum_terms_grid(mu.astype(np.float64), alpha)
     got = evaluate("pbr_specular_albedo_f90(f0, f90, dfg)", ["pbr/ibl/environment_brdf.glsl"],
                    f0=vec3(f0), f90=f90, dfg=vec2(as_f32(ab)))
@@ -108,7 +108,7 @@ def test_lighting_with_f90_couples_the_diffuse_to_the_f90_albedo():
     pi 1, no light), with the float64 quadrature's A, B as the DFG values: a white
     specular-workflow dielectric reflects E + (1 - E) = 1 whatever its F90 (the diffuse takes
     what the F90 lobe leaves), a black one E = (F0 A + F90 B) x the compensation at F0, < 1."""
-    from pbrlab.reference import directional_albedo, surface
+    from pbrlab.maths.reference import directional_albedo, surface
     rng = seeded_rng("specular f90 furnace")
     count = 512
     v = unit_vectors(rng, count, min_z=0.05)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from library_helpers import as_f32, assert_close, evaluate, seeded_rng, unit_vectors, vec3
-from pbrlab.reference import shading, specular_extension as ext, surface
+from pbrlab.maths.reference import shading, specular_extension as ext, surface
 
 N = np.array([0.0, 0.0, 1.0])
 ANISOTROPY = ["pbr/shading/anisotropy.glsl"]

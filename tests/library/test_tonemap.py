@@ -1,11 +1,11 @@
-"""Exposure and tonemappers (glsl/pbr/tonemap/) against harness/pbrlab/reference/tonemap.py.
+"""Exposure and tonemappers (glsl/pbr/tonemap/) against harness/pbrlab/maths/reference/tonemap.py.
 Outputs are display-linear values in [0, 1] (unitless); inputs linear HDR up to 1000."""
 
 import numpy as np
 import pytest
 
 from library_helpers import seeded_rng, RTOL_WELL_CONDITIONED, as_f32, assert_close, evaluate, vec3
-from pbrlab.reference import tonemap
+from pbrlab.maths.reference import tonemap
 
 
 @pytest.fixture(scope="module")

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from library_helpers import as_f32, assert_close, evaluate, seeded_rng, unit_vectors, vec3
-from pbrlab.reference import brdf, shading, transmission
+from pbrlab.maths.reference import brdf, shading, transmission
 
 INCLUDES = ["pbr/shading/transmission.glsl"]
 N = np.array([0.0, 0.0, 1.0])

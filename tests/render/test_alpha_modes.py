@@ -3,9 +3,9 @@ alpha) and transparent (premultiplied: the diffuse fades, the specular stays).""
 
 import numpy as np
 
-from pbrlab import images
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.foundation import images
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 from scenes import one_sphere
 

@@ -9,7 +9,7 @@ under the pinned SSE4.1 caps. So:
 * every golden scene is rendered under both code paths (LP_NATIVE_VECTOR_WIDTH 128 and 256)
   and must be bit-identical, EXR and PNG; a control shows the switch really changes what a
   vendor could change (glGenerateMipmap of an sRGB texture differs between the two paths);
-* the JIT code of every golden scene is disassembled stage by stage (pbrlab.codescan) and
+* the JIT code of every golden scene is disassembled stage by stage (pbrlab.checking.codescan) and
   must hold no estimate instruction; the controls must hold them (or the scan is blind).
 """
 
@@ -21,8 +21,8 @@ import sys
 import numpy as np
 import pytest
 
-from pbrlab import images
-from pbrlab.golden_scenes import GOLDEN_SCENES
+from pbrlab.foundation import images
+from pbrlab.checking.golden_scenes import GOLDEN_SCENES
 
 VECTOR_WIDTHS = ("128", "256")
 
@@ -37,7 +37,7 @@ def _run(args, width, **kwargs):
 def renders_per_width(tmp_path_factory):
     root = tmp_path_factory.mktemp("code_paths")
     for width in VECTOR_WIDTHS:
-        _run(["-m", "pbrlab.golden_scenes", str(root / width)], width)
+        _run(["-m", "pbrlab.checking.golden_scenes", str(root / width)], width)
     return root
 
 
@@ -74,7 +74,7 @@ def test_control_the_two_code_paths_differ_where_a_cpu_vendor_could():
 
 @pytest.fixture(scope="module")
 def code_scan():
-    result = _run(["-m", "pbrlab.codescan", "--json"], "128", timeout=600)
+    result = _run(["-m", "pbrlab.checking.codescan", "--json"], "128", timeout=600)
     return json.loads(result.stdout)
 
 

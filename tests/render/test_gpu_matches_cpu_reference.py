@@ -1,19 +1,19 @@
 """GPU renders (GLSL library, float32) against the independent float64 CPU renderer
-(numpy ray-sphere + pbrlab.reference), on analytic scenes."""
+(numpy ray-sphere + pbrlab.maths.reference), on analytic scenes."""
 
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from pbrlab.images import read_image
-from pbrlab.reference import tonemap as ref_tonemap
-from pbrlab.reference.color import linear_to_srgb
-from pbrlab.scene import TONEMAPPERS
-from pbrlab.charts import CHARTS
-from pbrlab.cpu_render import render_scene_cpu
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.foundation.images import read_image
+from pbrlab.maths.reference import tonemap as ref_tonemap
+from pbrlab.maths.reference.color import linear_to_srgb
+from pbrlab.scene.model import TONEMAPPERS
+from pbrlab.checking.charts import CHARTS
+from pbrlab.render.cpu_render import render_scene_cpu
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 from scenes import light_zoo, one_sphere
 

@@ -6,9 +6,9 @@ reader's refusals. The GPU-vs-float64 comparison is in test_gpu_matches_cpu_refe
 import numpy as np
 import pytest
 
-from pbrlab.errors import SceneError
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.foundation.errors import SceneError
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 from scenes import one_sphere
 from test_anisotropy_scene import LIGHTS, METAL, PLASTIC, _assert_float32_equal, _constant_map, _render

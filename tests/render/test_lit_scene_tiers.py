@@ -6,9 +6,9 @@ quality tier."""
 import numpy as np
 import pytest
 
-from pbrlab.golden_scenes import lit_scene
-from pbrlab.render import render_scene
-from pbrlab.scene import QUALITIES
+from pbrlab.checking.golden_scenes import lit_scene
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import QUALITIES
 
 
 @pytest.fixture(scope="module")

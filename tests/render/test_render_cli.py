@@ -7,9 +7,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, contact_sheets
-from pbrlab.charts import CHARTS
-from pbrlab.images import read_image
+from pbrlab.commands import cli
+from pbrlab.checking import contact_sheets
+from pbrlab.checking.charts import CHARTS
+from pbrlab.foundation.images import read_image
 
 from scenes import one_sphere
 
@@ -98,7 +99,7 @@ def test_demo_writes_every_chart_and_matches_goldens(tmp_path, capsys):
 def test_demo_without_goldens_renders_and_says_so_once(tmp_path, capsys, monkeypatch):
     """An installed wheel ships no goldens (locations.checkout_folder finds none): the demo
     renders everything, says once that there is nothing to compare, and exits 0."""
-    from pbrlab import locations
+    from pbrlab.foundation import locations
     monkeypatch.setattr(locations, "checkout_folder", lambda name: None)
     assert cli.main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
@@ -112,9 +113,9 @@ def test_demo_without_goldens_renders_and_says_so_once(tmp_path, capsys, monkeyp
 def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     goldens = tmp_path / "goldens"
     goldens.mkdir()
-    from pbrlab import goldens as store
-    from pbrlab.render import render_scene
-    from pbrlab.scene import parse_scene
+    from pbrlab.checking import goldens as store
+    from pbrlab.render.renderer import render_scene
+    from pbrlab.scene.model import parse_scene
 
     import shutil
     for chart, build in CHARTS.items():

@@ -6,9 +6,12 @@ import os
 import numpy as np
 import pytest
 
-from pbrlab import ibl, images, meshes, resource_cache
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.gpu import ibl
+from pbrlab.foundation import images
+from pbrlab.scene import meshes
+from pbrlab.render import resource_cache
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 from scenes import one_sphere
 

@@ -10,8 +10,8 @@ the viewer); an environment with a +Inf and a NaN texel; an RGBA16F target.
 import numpy as np
 import pytest
 
-from pbrlab.golden_scenes import GOLDEN_SCENES
-from pbrlab.render import render_scene
+from pbrlab.checking.golden_scenes import GOLDEN_SCENES
+from pbrlab.render.renderer import render_scene
 
 # A sparkle: a display pixel brighter than every one of its 8 neighbours by more than this
 # many 8-bit codes (a lone NaN-turned-white or overflow pixel; real highlights on these
@@ -57,7 +57,7 @@ def test_torture_chart_matches_golden(torture, golden):
 
 
 def test_environment_texels_are_sanitised_like_the_library():
-    from pbrlab.environment import sanitize_radiance
+    from pbrlab.scene.environment import sanitize_radiance
 
     raw = np.array([[np.nan, np.inf, -np.inf, -1.0, 0.5, 1e6]])
     np.testing.assert_array_equal(sanitize_radiance(raw), [[0.0, 65504.0, 0.0, 0.0, 0.5, 65504.0]])

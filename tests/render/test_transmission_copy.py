@@ -1,9 +1,9 @@
-"""The transmission copy of the scene (harness/pbrlab/transmission_copy.py,
+"""The transmission copy of the scene (harness/pbrlab/render/transmission_copy.py,
 templates/transmission_scene.inc): a transmissive material sees the non-transmissive objects
 behind it, over the environment where the copy has nothing. Checked against the float64 CPU
 renderer (cpu_render.py transmission_copy / _seen_through: its own ray-traced copy, read
 at the projected exit point), which computes the transmitted fraction from
-pbrlab.reference, not from the shader; Beer-Lambert through the copy; GLSL against HLSL; and
+pbrlab.maths.reference, not from the shader; Beer-Lambert through the copy; GLSL against HLSL; and
 that a scene without a transmissive material draws no copy."""
 
 import copy
@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from pbrlab import transmission_copy
-from pbrlab.cpu_render import render_scene_cpu
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.render import transmission_copy
+from pbrlab.render.cpu_render import render_scene_cpu
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 from test_anisotropy_scene import _assert_float32_equal
 
@@ -80,7 +80,7 @@ def test_a_thin_wall_matches_the_float64_render_of_what_lies_behind_it(environme
 def test_a_thin_wall_passes_the_opaque_render_times_the_float64_fraction(gl_context):
     """The pixels of the glass before the lamp equal the lamp's own render (the scene without
     the glass) times the fraction the glass transmits, F = rho (1 - E_spec) per pixel,
-    computed by the float64 CPU renderer (pbrlab.reference.surface.lighting_transmission) as
+    computed by the float64 CPU renderer (pbrlab.maths.reference.surface.lighting_transmission) as
     the render of the same glass before a lamp of emission 1: within the float32 bound
     (measured 4e-6 relative). F is 0.96 at the centre and falls towards the rim."""
     scene = _scene(THIN_GLASS)

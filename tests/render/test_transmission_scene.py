@@ -8,10 +8,10 @@ test_gpu_matches_cpu_reference.py."""
 import numpy as np
 import pytest
 
-from pbrlab.errors import SceneError
-from pbrlab.render import render_scene
-from pbrlab.sample_viewer import write_radiance_hdr
-from pbrlab.scene import parse_scene
+from pbrlab.foundation.errors import SceneError
+from pbrlab.render.renderer import render_scene
+from pbrlab.checking.sample_viewer import write_radiance_hdr
+from pbrlab.scene.model import parse_scene
 
 from scenes import one_sphere
 from test_anisotropy_scene import LIGHTS, METAL, PLASTIC, _assert_float32_equal, _constant_map, _render

@@ -1,7 +1,7 @@
 """White furnace through the renderer: spheres of radius 1 in a uniform white environment
 {"color": [1, 1, 1]}, no lights, tonemap none, float target. Every covered pixel of every
 sphere is checked, with mu = n.v per pixel from the sphere geometry in float64 numpy, against
-the float64 directional albedo of pbrlab.reference.directional_albedo (written from the
+the float64 directional albedo of pbrlab.maths.reference.directional_albedo (written from the
 integral, independent of the DFG table and of the GLSL).
 
 Materials (rows), at smoothness 0, 0.125, ..., 1 (columns), every tier, with and without
@@ -61,7 +61,7 @@ multiple-scattering compensation:
                       under a 550 nm film (f90_black_filmed): E(F0', 0.8) < 1, the film's energy only
 The transmissive rows are drawn by a render of their own (the same layout without the other
 rows), merged by coverage: a transmissive sphere sees the scene's transmission copy of the
-non-transmissive spheres (harness/pbrlab/transmission_copy.py), and a sphere that loses energy
+non-transmissive spheres (harness/pbrlab/render/transmission_copy.py), and a sphere that loses energy
 (single scattering) seen through it is not the environment's 1; alone, the transmissive rows
 see only the environment (their copy is empty).
 """
@@ -69,14 +69,14 @@ see only the environment (their copy is empty).
 import numpy as np
 import pytest
 
-from pbrlab.camera import camera_frame, camera_rays
-from pbrlab.cpu_render import _sheen_albedo
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.reference import surface as ref_surface
-from pbrlab.reference import shading as ref_shading
-from pbrlab.reference import specular_extension as ref_specular
-from pbrlab.render import render_scene, scene_radius
-from pbrlab.scene import parse_scene
+from pbrlab.maths.camera import camera_frame, camera_rays
+from pbrlab.render.cpu_render import _sheen_albedo
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.maths.reference import surface as ref_surface
+from pbrlab.maths.reference import shading as ref_shading
+from pbrlab.maths.reference import specular_extension as ref_specular
+from pbrlab.render.renderer import render_scene, scene_radius
+from pbrlab.scene.model import parse_scene
 
 SMOOTHNESS = [i / 8 for i in range(9)]
 MATERIALS = {

@@ -1,5 +1,5 @@
 """Scene-driven specialisation: programs compile only the effects a scene can show, and
-change nothing but the cost (harness/pbrlab/features.py)."""
+change nothing but the cost (harness/pbrlab/render/features.py)."""
 
 import base64
 import json
@@ -12,9 +12,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, features, programs, render
-from pbrlab.charts import CHARTS
-from pbrlab.scene import load_scene, parse_scene
+from pbrlab.commands import cli
+from pbrlab.render import features, renderer as render
+from pbrlab.gpu import programs
+from pbrlab.checking.charts import CHARTS
+from pbrlab.scene.model import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "render"))
@@ -379,7 +381,7 @@ def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, s
         assert token not in layered_text, token
 
 
-# A surface file's layers are the ones it writes (harness/pbrlab/surface_layers.py): the
+# A surface file's layers are the ones it writes (harness/pbrlab/scene/surface_layers.py): the
 # brick surface writes none, coat.glsl the clear coat only.
 LAYERED_SURFACES = ROOT / "tests" / "surface" / "layered_surfaces"
 LAYER_CALL_SITES = {"clearcoat": ",layers,o.Normal,v,gi,", "sheen": "u_sheen_lut",

@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from pbrlab import evaluate, ibl
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.reference import shading as ref_shading
-from pbrlab.reference import surface as ref_surface
+from pbrlab import evaluate
+from pbrlab.gpu import ibl
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.maths.reference import shading as ref_shading
+from pbrlab.maths.reference import surface as ref_surface
 
 INCLUDES = ["pbr/ibl/environment_brdf.glsl"]
 # The bound on the table as sampled, absolute in A and B (and in A + B).

@@ -11,10 +11,11 @@ pbr_dfg_lut_uv), as in the renderer."""
 import numpy as np
 import pytest
 
-from pbrlab import evaluate, ibl, vec2, vec3
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.reference import shading as ref_shading
-from pbrlab.reference import surface as ref_surface
+from pbrlab import evaluate, vec2, vec3
+from pbrlab.gpu import ibl
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.maths.reference import shading as ref_shading
+from pbrlab.maths.reference import surface as ref_surface
 
 INCLUDES = ["pbr/pbr.glsl"]
 # pbr_lighting_standard_dfg's direct term for one light of radiance 1 along l.

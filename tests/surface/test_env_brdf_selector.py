@@ -25,11 +25,12 @@ Measured on the grid below (NdotV log-spaced over [1e-4, 1] x perceptual roughne
 import numpy as np
 import pytest
 
-from pbrlab import evaluate, ibl, vec3
-from pbrlab.errors import ShaderCompileError
-from pbrlab.reference import brdf as ref_brdf
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.reference import surface as ref_surface
+from pbrlab import evaluate, vec3
+from pbrlab.gpu import ibl
+from pbrlab.foundation.errors import ShaderCompileError
+from pbrlab.maths.reference import brdf as ref_brdf
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.maths.reference import surface as ref_surface
 
 ANALYTIC = {"PBR_ENV_BRDF": "PBR_ENV_BRDF_ANALYTIC"}
 MARKER_TABLE = "vec2(-7.0, -5.0)"  # a table hook no fit can return

@@ -7,11 +7,11 @@ the float64 reference (reference/surface.py) and against Unity's uncoupled diffC
 import numpy as np
 
 from pbrlab import evaluate, vec3
-from pbrlab.reference import directional_albedo as ref_albedo
-from pbrlab.reference import material as ref_material
-from pbrlab.reference import shading as ref_shading
-from pbrlab.reference import surface as ref_surface
-from pbrlab.reference import unity_brdf
+from pbrlab.maths.reference import directional_albedo as ref_albedo
+from pbrlab.maths.reference import material as ref_material
+from pbrlab.maths.reference import shading as ref_shading
+from pbrlab.maths.reference import surface as ref_surface
+from pbrlab.maths.reference import unity_brdf
 
 UNITY = ["pbr/unity/surface_standard.glsl"]
 RNG = np.random.default_rng(29)

@@ -37,7 +37,7 @@ def test_float_form_equals_the_uint_form_bit_for_bit():
 
 
 def _compiles_as_es_100(call: str) -> bool:
-    from pbrlab import hlsl, shaders
+    from pbrlab.gpu import hlsl, shaders
     source = shaders.expand('#version 100\nprecision mediump float;\n'
                             '#include "pbr/ibl/importance_sampling.glsl"\n'
                             f"void main() {{ gl_FragColor = vec4({call}, 0.0, 1.0); }}\n", "<es100>")

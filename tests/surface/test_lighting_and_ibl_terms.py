@@ -4,10 +4,11 @@
 import numpy as np
 import pytest
 
-from pbrlab import evaluate, ibl, vec2, vec3
-from pbrlab.environment import constant_sh, project_equirect, sh_basis
-from pbrlab.reference import lighting as ref_lighting
-from pbrlab.reference import surface as ref_surface
+from pbrlab import evaluate, vec2, vec3
+from pbrlab.gpu import ibl
+from pbrlab.scene.environment import constant_sh, project_equirect, sh_basis
+from pbrlab.maths.reference import lighting as ref_lighting
+from pbrlab.maths.reference import surface as ref_surface
 
 INCLUDES = ["pbr/pbr.glsl", "pbr/lighting/attenuation.glsl", "pbr/lighting/sh9.glsl",
             "pbr/ibl/importance_sampling.glsl", "pbr/ibl/equirect.glsl",
@@ -95,7 +96,7 @@ def test_importance_sampled_GGX_half_vectors_follow_D_cos(alpha):
     np.testing.assert_allclose(np.linalg.norm(h, axis=1), 1.0, atol=2e-7 * 4)
     t = np.linspace(0, np.pi / 2, 200001)
     cos_t = np.cos(t)
-    from pbrlab.reference.brdf import D_GGX
+    from pbrlab.maths.reference.brdf import D_GGX
     pdf = D_GGX(cos_t, alpha) * cos_t * np.sin(t) * 2 * np.pi
     expected = np.trapezoid(pdf * cos_t, t) / np.trapezoid(pdf, t)
     assert abs(h[:, 2].mean() - expected) < 1e-4

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3
-from pbrlab.reference import anisotropy as ref_anisotropy
-from pbrlab.reference import material as ref_material
-from pbrlab.reference import shading
-from pbrlab.reference import surface as ref_surface
+from pbrlab.maths.reference import anisotropy as ref_anisotropy
+from pbrlab.maths.reference import material as ref_material
+from pbrlab.maths.reference import shading
+from pbrlab.maths.reference import surface as ref_surface
 
 LAYERS = ["pbr/unity/surface_layers.glsl"]
 RNG = np.random.default_rng(23)

@@ -5,8 +5,8 @@ Schlick's curve through the film's reflectance at the view, mask 0 = the base's 
 import numpy as np
 
 from pbrlab import evaluate, vec3
-from pbrlab.reference import iridescence as ref_iridescence
-from pbrlab.reference import surface as ref_surface
+from pbrlab.maths.reference import iridescence as ref_iridescence
+from pbrlab.maths.reference import surface as ref_surface
 
 INCLUDES = ["pbr/surface/lighting_iridescence.glsl"]
 RNG = np.random.default_rng(29)

@@ -1,4 +1,4 @@
-"""The port's type pass (harness/pbrlab/unity/cg_types.py): each implicit Cg/HLSL conversion
+"""The port's type pass (harness/pbrlab/importers/unity/cg_types.py): each implicit Cg/HLSL conversion
 GLSL refuses, as a small Cg function. The ported text is checked exactly (the pass changes
 only what the rule needs), and the port, compiled as GLSL after cg_compat.glsl, evaluates to
 what the original gives on the HLSL path (glslang's HLSL front end compiles it as written)."""
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import pbrlab
-from pbrlab.unity import cg_types, port
+from pbrlab.importers.unity import cg_types, port
 
 # Two helpers every case may call: a static global (static is dropped, no uniform added)
 # and a user function whose float3 parameters take a truncated float4 and a splatted scalar.

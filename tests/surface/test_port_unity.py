@@ -8,8 +8,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import cli, render, scene
-from pbrlab.unity import parse, port
+from pbrlab.commands import cli
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.importers.unity import parse, port
 
 MANUAL = Path(__file__).resolve().parents[2] / "scenes" / "unity_manual"
 SHADERS = sorted(p.name for p in MANUAL.glob("*.shader"))

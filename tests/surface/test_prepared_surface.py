@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec2, vec3
-from pbrlab.reference import surface as ref_surface
+from pbrlab.maths.reference import surface as ref_surface
 
 RNG = np.random.default_rng(2525)
 COUNT = 4096

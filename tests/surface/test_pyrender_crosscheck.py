@@ -2,17 +2,17 @@
 pyrender's mesh.frag composes them, reproduce pyrender's 8-bit output through EGL and
 OSMesa; each of pyrender's terms is needed (turning one to pbrlab's form fails); the
 renderer's nearest selectors are that composition with pbrlab's forms. pyrender runs in a
-subprocess per platform (pbrlab.pyrender_check.render_pyrender)."""
+subprocess per platform (pbrlab.checking.pyrender.check.render_pyrender)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from pbrlab import gl
-from pbrlab import pyrender_check as pc
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.gpu import gl
+from pbrlab.checking.pyrender import check as pc
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 SIZE = (288, 96)  # 27 spheres of ~27 px: the size the tolerances were measured at (and 480x160)
 

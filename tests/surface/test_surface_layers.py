@@ -11,10 +11,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import features, render, scene
-from pbrlab.compare import float32_ulps
-from pbrlab.errors import SceneError
-from pbrlab.surface_layers import written_layers
+from pbrlab.render import features, renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.checking.compare import float32_ulps
+from pbrlab.foundation.errors import SceneError
+from pbrlab.scene.surface_layers import written_layers
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "render"))
 from scenes import layer_sphere  # noqa: E402

@@ -1,5 +1,5 @@
 """unity_compat/shader_variables (GLSL and its hand-written HLSL twin): UnityCG.cginc's helpers
-over Unity's camera and object globals against float64 matrix maths (pbrlab.reference.unity_cg
+over Unity's camera and object globals against float64 matrix maths (pbrlab.maths.reference.unity_cg
 for the depth and pixel-snap formulas), the no-op macros of AutoLight / fog / instancing /
 stereo expanding to valid code in both languages, and the harness's bind() values of the
 camera globals seen from a rendered surface shader."""
@@ -11,11 +11,13 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from pbrlab import evaluate, render, scene, vec3, vec4
-from pbrlab.camera import camera_frame, camera_rays
-from pbrlab.depth_range import scene_frame
-from pbrlab.reference import unity_cg as R
-from pbrlab.unity.port import port_code_types
+from pbrlab import evaluate, vec3, vec4
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.maths.camera import camera_frame, camera_rays
+from pbrlab.render.depth_range import scene_frame
+from pbrlab.maths.reference import unity_cg as R
+from pbrlab.importers.unity.port import port_code_types
 
 RNG = np.random.default_rng(41)
 N = 4096

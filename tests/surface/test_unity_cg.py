@@ -1,15 +1,15 @@
 """pbr/unity/unity_cg.glsl and lighting_legacy.glsl: Unity's helper functions against float64
-transcriptions of Unity's formulas (pbrlab.reference.unity_cg, .unity_lighting), in GLSL and in
+transcriptions of Unity's formulas (pbrlab.maths.reference.unity_cg, .unity_lighting), in GLSL and in
 the generated HLSL twin (language="hlsl")."""
 
 import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3, vec4
-from pbrlab.port_hlsl import port_expression, port_text
-from pbrlab.reference import color as ref_color
-from pbrlab.reference import unity_cg as R
-from pbrlab.reference import unity_lighting as L
+from pbrlab.gpu.port_hlsl import port_expression, port_text
+from pbrlab.maths.reference import color as ref_color
+from pbrlab.maths.reference import unity_cg as R
+from pbrlab.maths.reference import unity_lighting as L
 
 RNG = np.random.default_rng(12)
 N = 20000

@@ -1,4 +1,4 @@
-"""How a Unity surface shader's program is fed and reported (pbrlab.unity.program): properties
+"""How a Unity surface shader's program is fed and reported (pbrlab.importers.unity.program): properties
 bound to uniforms of fewer components as Unity binds them, binding mismatches and clashes with
 the harness's own uniform names as one-line errors, compile errors at the .shader's (or its
 .cginc's) own file and line on both paths, and files that start with a UTF-8 byte-order mark."""
@@ -10,8 +10,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import images, render, scene
-from pbrlab.errors import PbrlabError, ShaderCompileError
+from pbrlab.foundation import images
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
 
 LANGUAGES = ("hlsl", "glsl")
 SIZE = 16
@@ -193,8 +195,8 @@ void surf (Input IN, inout SurfaceOutput o) {
 def test_unity_programs_are_bounded_and_released_with_the_scene_programs(tmp_path, gl_context, monkeypatch):
     """The context's one program cache holds Unity programs too: least recently used
     released past its size, and an evicted shader rebuilt on its next render."""
-    from pbrlab import programs
-    from pbrlab.file_identity import FileCache
+    from pbrlab.gpu import programs
+    from pbrlab.foundation.file_identity import FileCache
 
     released = []
     cache = FileCache(3, lambda program: (released.append(program), program.release()))

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3
-from pbrlab.reference import material as ref_material
-from pbrlab.reference import surface as ref_surface
+from pbrlab.maths.reference import material as ref_material
+from pbrlab.maths.reference import surface as ref_surface
 
 UNITY = ["pbr/unity/surface_standard.glsl"]
 RNG = np.random.default_rng(11)
@@ -89,7 +89,7 @@ def test_lighting_standard_matches_the_float64_reference():
     diffuse = ref_material.diffuse_from_metallic(x["albedo"], x["metallic"])
     f0 = ref_material.f0_from_metallic(x["albedo"], x["metallic"])
     rough = 1 - x["smoothness"]
-    from pbrlab.reference import shading
+    from pbrlab.maths.reference import shading
     r = shading.clamp_perceptual_roughness(rough)
     NdotV = np.maximum(x["v"][:, 2], shading.MIN_NDOTV)
     dfg = ref_surface.env_brdf_approx(NdotV, r)  # no DFG table hook: the analytic fit
@@ -121,7 +121,7 @@ def test_unity_model_indirect_specular_is_unity_brdf1_for_dark_metals():
     independent transcription of Unity's BRDF1 (grazing term saturate(smoothness + 1 -
     oneMinusReflectivity), surfaceReduction, occlusion from the GI step): dark metals,
     environment light only."""
-    from pbrlab.reference import unity_brdf
+    from pbrlab.maths.reference import unity_brdf
     x = _lighting_inputs(N)
     x["light"] = np.zeros((N, 3))
     x["idiff"] = np.zeros((N, 3))

@@ -2,7 +2,7 @@
 descriptions of "Surface Shader examples" and "Surface Shader lighting examples"), rendered
 unchanged through the HLSL path and through the port-unity renames + GLSL, each checked for
 what it must show, against float64 references of Unity's formulas where there is one
-(pbrlab.reference.unity_lighting, from Lighting.cginc)."""
+(pbrlab.maths.reference.unity_lighting, from Lighting.cginc)."""
 
 from __future__ import annotations
 
@@ -11,10 +11,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import images, render, scene
-from pbrlab.camera import camera_frame, camera_rays
-from pbrlab.reference import unity_lighting as U
-from pbrlab.unity import UnityShaderError, UnityShaderWarning, parse
+from pbrlab.foundation import images
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.maths.camera import camera_frame, camera_rays
+from pbrlab.maths.reference import unity_lighting as U
+from pbrlab.importers.unity import UnityShaderError, UnityShaderWarning, parse
 
 MANUAL = Path(__file__).resolve().parents[2] / "scenes" / "unity_manual"
 SHADERS = sorted(p.name for p in MANUAL.glob("*.shader"))

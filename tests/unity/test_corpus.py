@@ -1,6 +1,6 @@
 """Real Unity shaders nobody on this project wrote (corpus/unity/: Unity's 2019.4 built-in
 shaders and shaders from public repositories, corpus/unity/public/MANIFEST.json), each
-rendered as a new user would (pbrlab.unity.corpus: a UV sphere under a directional and a
+rendered as a new user would (pbrlab.checking.unity_corpus: a UV sphere under a directional and a
 point light and the sky) in HLSL and in GLSL.
 
 Every shader must end in one of two ways, the same in both languages: rendered (every pixel
@@ -8,7 +8,7 @@ finite, GLSL and HLSL agreeing), or refused with a message naming the Unity feat
 missing. A traceback or a non-finite pixel always fails. A compiler's error instead of a
 named refusal is a defect of the front end: the ones still there are listed as
 ``"defect: ..."`` in corpus/unity/expected.json and in docs/unity.md, and must stay exactly
-those. Which shaders render is pinned there too (``python -m pbrlab.unity.corpus corpus/unity
+those. Which shaders render is pinned there too (``python -m pbrlab.checking.unity_corpus corpus/unity
 --expect corpus/unity/expected.json`` rewrites it after a reviewed change), so a shader that
 stops rendering fails, and one that starts to fails until the figures in docs/unity.md move
 with it.
@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from pbrlab.unity import corpus
+from pbrlab.checking import unity_corpus as corpus
 
 ROOT = Path(__file__).resolve().parents[2] / "corpus" / "unity"
 EXPECTED = json.loads((ROOT / "expected.json").read_text(encoding="utf-8"))

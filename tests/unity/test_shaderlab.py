@@ -1,4 +1,4 @@
-"""ShaderLab as Unity reads it (harness/pbrlab/unity/shaderlab.py, parse.py): SubShader choice,
+"""ShaderLab as Unity reads it (harness/pbrlab/importers/unity/shaderlab.py, parse.py): SubShader choice,
 CGINCLUDE, Pass blocks beside a surface program, Fallback, property syntax, vertex/fragment
 passes (generate_pass.py) and Unity's per-light keywords, each through both languages and
 checked for what it must show."""
@@ -11,9 +11,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import render, scene
-from pbrlab.errors import PbrlabError
-from pbrlab.unity import UnityShaderError, parse
+from pbrlab.render import renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.unity import UnityShaderError, parse
 
 HERE = Path(__file__).resolve().parent / "shaders"
 LANGUAGES = ("hlsl", "glsl")
@@ -221,7 +222,7 @@ def test_a_shader_file_with_a_byte_order_mark_reads(tmp_path):
 
 
 def test_port_unity_refuses_to_replace_its_input(tmp_path):
-    from pbrlab.cli import main
+    from pbrlab.commands.cli import main
     path = HERE / "layered.shader"
     before = path.read_bytes()
     assert main(["port-unity", str(path), "-o", str(path)]) == 2
@@ -320,7 +321,7 @@ ENDCG } } }""")
 def test_a_define_naming_another_macro_takes_its_value_in_later_conditions():
     # Skybox-Procedural: `#define SKYBOX_SUNDISK SKYBOX_SUNDISK_HQ` (2), then `#if SKYBOX_SUNDISK ==
     # SKYBOX_SUNDISK_HQ` picks the v2f members; read as 1 it took the SIMPLE branch's rayDir
-    from pbrlab.unity.conditionals import active_text, defines_of
+    from pbrlab.importers.unity.conditionals import active_text, defines_of
     text = ("#define MODE_SIMPLE 1\n#define MODE_HQ 2\n#define MODE MODE_HQ // the default\n"
             "#if MODE == MODE_HQ\nhq\n#elif MODE == MODE_SIMPLE\nsimple\n#endif\n")
     lines = active_text(text, defines_of(text)).splitlines()

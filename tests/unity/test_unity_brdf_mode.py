@@ -1,14 +1,14 @@
 """The unity BRDF model (PBR_BRDF_MODEL_UNITY, render.brdf_model "unity"): Unity's BRDF1/2/3
 through LightingStandard[Specular] and the renderer, against the float64 transcription of
-Unity's source (pbrlab.reference.unity_brdf, written from the .cginc files, not from the GLSL).
+Unity's source (pbrlab.maths.reference.unity_brdf, written from the .cginc files, not from the GLSL).
 """
 
 import numpy as np
 import pytest
 
 from pbrlab import evaluate, vec3
-from pbrlab.errors import PbrlabError
-from pbrlab.reference import unity_brdf as U
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.maths.reference import unity_brdf as U
 
 from unity_inputs import lighting_inputs
 

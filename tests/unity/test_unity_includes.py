@@ -1,5 +1,5 @@
 """pbrlab's stand-ins for the Unity include files shaders define parts of themselves with
-(harness/pbrlab/unity/cginc/), run through Unity's own built-in shaders (corpus/unity/
+(harness/pbrlab/importers/unity/cginc/), run through Unity's own built-in shaders (corpus/unity/
 builtin-2019.4): each shows what Unity's include makes it show, computed here in numpy.
 
 * TerrainSplatmapCommon.cginc: Nature/Terrain/Diffuse (Splats/FirstPass.shader) mixes its
@@ -19,10 +19,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab.images import write_png
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
-from pbrlab.errors import PbrlabError
+from pbrlab.foundation.images import write_png
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
+from pbrlab.foundation.errors import PbrlabError
 
 BUILTIN = Path(__file__).resolve().parents[2] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra"
 LANGUAGES = ("hlsl", "glsl")

@@ -11,9 +11,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab import features, render, scene
-from pbrlab.compare import float32_ulps
-from pbrlab.unity import UnityShaderError, load_shader, parse
+from pbrlab.render import features, renderer as render
+from pbrlab.scene import model as scene
+from pbrlab.checking.compare import float32_ulps
+from pbrlab.importers.unity import UnityShaderError, load_shader, parse
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "render"))
 from scenes import layer_sphere  # noqa: E402

@@ -1,17 +1,17 @@
 """The renderer in the unity model (render.brdf_model "unity") at each tier against the float64
-CPU renderer built on the transcription of Unity's formulas (pbrlab.cpu_render with
-pbrlab.reference.unity_brdf): a row of spheres covering dark metals, black specular,
+CPU renderer built on the transcription of Unity's formulas (pbrlab.render.cpu_render with
+pbrlab.maths.reference.unity_brdf): a row of spheres covering dark metals, black specular,
 smoothness 0 and 1, lit by a directional light, a point light and a constant environment,
 with occlusion below 1 (applied in the GI step)."""
 
 import numpy as np
 import pytest
 
-from pbrlab.cpu_render import render_scene_cpu
-from pbrlab.errors import SceneError
-from pbrlab.features import features_report
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.render.cpu_render import render_scene_cpu
+from pbrlab.foundation.errors import SceneError
+from pbrlab.render.features import features_report
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 MATERIALS = {
     "dark_metal": {"albedo": [0.02, 0.02, 0.025], "metallic": 1.0, "smoothness": 0.8},

@@ -1,6 +1,6 @@
 """Unity's own Standard shaders (corpus/unity/builtin-2019.4: Standard, StandardSpecular,
 AutodeskInteractive) run as written through pbrlab's stand-ins for UnityStandardCore.cginc and
-its neighbours (harness/pbrlab/unity/cginc/UnityStandard*.cginc).
+its neighbours (harness/pbrlab/importers/unity/cginc/UnityStandard*.cginc).
 
 What each must show, stated independently of the stand-in: a surface shader
 ``#pragma surface surf Standard`` (or StandardSpecular) whose surf() writes what Unity's
@@ -19,10 +19,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pbrlab.errors import PbrlabError
-from pbrlab.images import write_png
-from pbrlab.render import render_scene
-from pbrlab.scene import parse_scene
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.foundation.images import write_png
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import parse_scene
 
 BUILTIN = Path(__file__).resolve().parents[2] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra"
 LANGUAGES = ("hlsl", "glsl")
@@ -250,7 +250,7 @@ def test_a_keyword_the_stand_in_does_not_honour_is_refused(tmp_path):
 
 
 def test_standard_runs_its_first_subshader_and_names_the_passes_it_skips():
-    from pbrlab import unity
+    from pbrlab.importers import unity
     import warnings
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

@@ -16,7 +16,7 @@
 // through pbr_sanitize(c, 1.0) first (pbr/common/guards.glsl): decided NaN -> 0, negative
 // -> 0, above 1 and +Inf -> 1, so the output is always in [0, 1] (a UNORM target clamps the
 // same way). Bit-identical on [0, 1]. float64 twin:
-// harness/pbrlab/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
+// harness/pbrlab/maths/reference/color.py; these are the curves GL_FRAMEBUFFER_SRGB and
 // GL_SRGB8_ALPHA8 textures implement in hardware (the "let the GPU handle it" path).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_SRGB_GLSL

@@ -41,7 +41,7 @@
 #include "pbr/common/math.glsl"
 
 // The light-unit factor of convention 5 (see above). Shared with
-// harness/pbrlab/reference/constants.py LIGHT_UNIT_SCALE.
+// harness/pbrlab/maths/reference/constants.py LIGHT_UNIT_SCALE.
 #define PBR_LIGHT_UNIT_SCALE PBR_PI
 
 #endif // PBR_COMMON_CONVENTIONS_GLSL

@@ -5,7 +5,7 @@
 // Include:  "pbr/ibl/equirect.glsl" (path relative to glsl/)
 // Config macros read: none.
 //
-// Convention (the harness's, harness/pbrlab/environment.py): +Y up; the image's top row
+// Convention (the harness's, harness/pbrlab/scene/environment.py): +Y up; the image's top row
 // looks at +Y; azimuth phi = 2 pi u is measured from -Z towards +X, so the image centre
 // looks at +Z. Texture coordinate t = 1 is the image's top row (images are uploaded
 // top row last, as OpenGL expects).

@@ -5,7 +5,7 @@
 // Config macros read: none.
 //
 // sh[] holds the projection of the environment's radiance on the real SH basis, in the
-// order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/environment.py
+// order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/scene/environment.py
 // computes it). The result is the irradiance E(n); a Lambert surface reflects
 // diffuseColor * E(n) / pi. For a constant radiance L the result is exactly pi * L.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.

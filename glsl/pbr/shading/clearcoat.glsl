@@ -33,7 +33,7 @@
 // Both are v-only factors: the base's direct and environment light are scaled alike, as
 // the specification's layering does. Contract: nc, v, l unit; coatPerceptualRoughness is
 // clamped by the tier (pbr_clamp_perceptual_roughness); mask in [0, 1]. dfgCoat =
-// pbr_env_brdf(NcdotV, coat roughness). Python twin: harness/pbrlab/reference/clearcoat.py.
+// pbr_env_brdf(NcdotV, coat roughness). Python twin: harness/pbrlab/maths/reference/clearcoat.py.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_CLEARCOAT_GLSL
 #define PBR_SHADING_CLEARCOAT_GLSL

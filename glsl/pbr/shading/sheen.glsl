@@ -19,7 +19,7 @@
 //           a hook the caller may define to read its sheen albedo table (it owns the sampler),
 //           returning the float E: typically
 //             texture(table, pbr_sheen_lut_uv(NdotV, sheenPerceptualRoughness)).r
-//           with bilinear filtering and clamp to edge (harness/pbrlab/sheen_table.py makes the
+//           with bilinear filtering and clamp to edge (harness/pbrlab/gpu/sheen_table.py makes the
 //           table, data/sheen_albedo_lut.npy, for PBR_SHEEN_V_CHARLIE). Undefined, the analytic
 //           fit pbr_sheen_albedo_approx is used.
 //
@@ -82,7 +82,7 @@ vec3 pbr_sheen_lobe(float NdotL, float NdotV, float NdotH, vec3 sheenColor, floa
     return sheenColor * (pbr_D_Charlie(NdotH, alpha) * pbr_sheen_V(NdotL, NdotV, alpha));
 }
 
-// The table's layout (harness/pbrlab/sheen_table.py writes it; shared constants tested equal).
+// The table's layout (harness/pbrlab/gpu/sheen_table.py writes it; shared constants tested equal).
 #define PBR_SHEEN_LUT_WIDTH 128.0
 #define PBR_SHEEN_LUT_HEIGHT 128.0
 #define PBR_SHEEN_LUT_NDOTV_LOG_NORM 0.0752574989      // 1 / log2(1 / PBR_MIN_NDOTV)
@@ -102,7 +102,7 @@ vec2 pbr_sheen_lut_uv(float NdotV, float sheenPerceptualRoughness) {
 // fitted by Gauss-Newton on the absolute error over the 128 x 128 texels (harness/pbrlab/
 // sheen_table.py fit_sheen_albedo_approx). Worst absolute error 0.16, rms 0.041 (E spans
 // 0 .. 2.94): good for previews and tiers without a texture unit, not a substitute for the
-// table. Shared with harness/pbrlab/reference/sheen.py SHEEN_ALBEDO_APPROX (tested equal).
+// table. Shared with harness/pbrlab/maths/reference/sheen.py SHEEN_ALBEDO_APPROX (tested equal).
 #define PBR_SHEEN_ALBEDO_APPROX_C0 vec4(1.035856, -2.405441, -0.8081028, 2.034246)
 #define PBR_SHEEN_ALBEDO_APPROX_C1 vec4(-1.120514, -0.4725056, 2.033727, -0.8119602)
 #define PBR_SHEEN_ALBEDO_APPROX_C2 vec4(8.214515, -0.7163682, -6.965961, 3.255338)

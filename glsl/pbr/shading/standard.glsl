@@ -35,7 +35,7 @@
 // Contract: n, v and l unit vectors (to float32 rounding: interpolated normals are
 // normalised by the caller; a far camera's direction through pbr_safe_normalize first: an
 // unnormalised v longer than 1e19 overflows |l + v|²). Edges (all mirrored in
-// harness/pbrlab/reference/shading.py):
+// harness/pbrlab/maths/reference/shading.py):
 //  - NdotL is saturated (a free output modifier on AMD GPUs) and every NdotL of the
 //    formula, n·(l + v) = NdotL + n·v included, is that saturated cosine. So a light below
 //    the horizon (n·l <= 0) gives the value at NdotL = 0: finite and non-negative, and

@@ -35,7 +35,7 @@
 // the direction light from v continues in after entering a medium of relative index eta;
 // total internal reflection (possible for eta < 1) returns vec3(0).
 // Contract: n, v, l unit; perceptualRoughness clamped by the tier; eta in [1/16, 16].
-// float64 twin: harness/pbrlab/reference/transmission.py.
+// float64 twin: harness/pbrlab/maths/reference/transmission.py.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_TRANSMISSION_GLSL
 #define PBR_SHADING_TRANSMISSION_GLSL

@@ -38,7 +38,7 @@
 //                   combination: tests/render/test_white_furnace.py). Identical to the
 //                   specification wherever E ≤ 1 (every view for r ≥ 0.27; NdotV ≳ 0.1 below).
 //                   Reciprocity is broken only where the raw lobe created energy.
-// Python twin: harness/pbrlab/reference/sheen.py lighting_sheen.
+// Python twin: harness/pbrlab/maths/reference/sheen.py lighting_sheen.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_SHEEN_GLSL
 #define PBR_SURFACE_LIGHTING_SHEEN_GLSL

@@ -76,7 +76,7 @@
 // weight transmission · A) before the loop over lights, pbr_lighting_transmission_light per
 // light, pbr_lighting_transmission_environment once; pbr_lighting_transmission (one light and
 // the environment) is that composition, in the order it always summed.
-// Python twin: harness/pbrlab/reference/surface.py lighting_transmission.
+// Python twin: harness/pbrlab/maths/reference/surface.py lighting_transmission.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_TRANSMISSION_GLSL
 #define PBR_SURFACE_LIGHTING_TRANSMISSION_GLSL

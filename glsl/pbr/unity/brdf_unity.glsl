@@ -37,7 +37,7 @@
 // Lambert surface under an intensity-1 light gives 1 in both, so these functions return
 // radiance for pbrlab's light.color and indirect.diffuse (irradiance / π) unchanged.
 // Its float64 transcription, written from Unity's source and not from this file, is
-// harness/pbrlab/reference/unity_brdf.py; tests/unity/ compares the two.
+// harness/pbrlab/maths/reference/unity_brdf.py; tests/unity/ compares the two.
 // Where the maths is the library's, the pbr_ core is called (pbr_pow5, pbr_F_Schlick,
 // pbr_max3, the remaps); the core never includes this file.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
@@ -61,7 +61,7 @@
 #endif
 
 // Unity's epsilons and clamps, each as UnityStandardBRDF.cginc writes it (shared with
-// harness/pbrlab/reference/unity_brdf.py, tested equal).
+// harness/pbrlab/maths/reference/unity_brdf.py, tested equal).
 #define PBR_UNITY_GGX_EPSILON 1e-7            // GGXTerm: a² / (π (d² + 1e-7)); caps the peak
 #define PBR_UNITY_SMITH_JOINT_EPSILON 1e-5    // SmithJointGGXVisibilityTerm's denominator
 #define PBR_UNITY_BRDF1_MIN_ROUGHNESS 0.002   // BRDF1: max(roughness, 0.002) ("match HDRP")

@@ -33,7 +33,7 @@
 // for UnpackNormalmapRGorAG); the fits are Unity's (from Ian Taylor's "sRGB approximations
 // for HLSL", chilliant.blogspot.com 2012), kept beside the exact IEC 61966-2-1 curves so a
 // shader that calls them sees Unity's numbers, not pbrlab's. Float64 references:
-// harness/pbrlab/reference/unity_cg.py.
+// harness/pbrlab/maths/reference/unity_cg.py.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_UNITY_CG_GLSL
 #define PBR_UNITY_UNITY_CG_GLSL

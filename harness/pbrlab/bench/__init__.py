@@ -138,8 +138,8 @@ def _specialisation_scenes() -> dict:
 def run(out_dir, family: str | None = None, quick: bool = False, progress=measure.progress) -> dict:
     """Measure, write the outputs into ``out_dir`` and return the JSON document. Each step
     prints a line when it starts and, on a terminal, a live line with its seconds once it has
-    run two seconds (pbrlab.progress)."""
-    from .. import progress as live
+    run two seconds (pbrlab.foundation.progress)."""
+    from ..foundation import progress as live
 
     stages = live.Stages()
     try:
@@ -149,8 +149,8 @@ def run(out_dir, family: str | None = None, quick: bool = False, progress=measur
 
 
 def _measure_and_write(out_dir, family, quick, progress, stages) -> dict:
-    from .. import outputs
-    from ..errors import PbrlabError
+    from ..foundation import outputs
+    from ..foundation.errors import PbrlabError
 
     out_dir = Path(out_dir)
     if family is not None and family not in families_mod.BY_NAME:

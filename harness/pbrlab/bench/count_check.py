@@ -10,7 +10,7 @@ instead of publishing the figure.
 
 from __future__ import annotations
 
-from ..errors import InconsistentCountError
+from ..foundation.errors import InconsistentCountError
 
 # Largest relative difference allowed between counts of one kernel: (max - min) / max |count|.
 # Issue 16 asks for 1 %. Measured with the mechanism of measure.measure_instructions at

@@ -19,8 +19,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..reference import (anisotropy, brdf, clearcoat, color, iridescence, remap, shading, sheen, specular_extension,
-                         tonemap)
+from ..maths.reference import (anisotropy, brdf, clearcoat, color, iridescence, remap, shading, sheen, specular_extension, tonemap)
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
 """AMD GPU instruction-set costs of what `pbrlab bench` measures (issue 16), from Mesa's
-RADV/ACO on a null device (pbrlab.gpu_isa): no AMD GPU needed, nothing is run.
+RADV/ACO on a null device (pbrlab.gpu.isa): no AMD GPU needed, nothing is run.
 
 * **Kernels**: the same fragment programs the bench times on llvmpipe (``measure.kernel_specs``:
   every variant and each family's baseline), compiled for RDNA3 (gfx1100), RDNA2 (navi21)
@@ -12,7 +12,7 @@ RADV/ACO on a null device (pbrlab.gpu_isa): no AMD GPU needed, nothing is run.
   that differs from the baseline, so the difference over 8 is the static cost of one
   evaluation.
 * **Scene programs**: every program a test scene of the specialisation section compiles
-  (``features.plan_programs``, specialised and full; the templates of ``pbrlab.programs``),
+  (``features.plan_programs``, specialised and full; the templates of ``pbrlab.gpu.programs``),
   in GLSL and in HLSL (the ``hlsl_ports`` library through glslang's HLSL front end), with
   the program's instructions, VGPRs and RADV's *Subgroups per SIMD* (the waves that fit
   one SIMD given the registers: what the VGPRs cost in occupancy).
@@ -28,10 +28,11 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass
 
-from .. import features, programs
-from ..errors import PbrlabError
-from ..gpu_isa import compile as gpu_isa
-from ..hlsl import HLSL_ROOT
+from ..render import features
+from ..gpu import programs
+from ..foundation.errors import PbrlabError
+from ..gpu.isa import compile as gpu_isa
+from ..gpu.hlsl import HLSL_ROOT
 from . import kernel
 
 FORCE_FAMILY = dict(gpu_isa.FAMILIES)  # rdna3, rdna2, gcn5 -> RADV_FORCE_FAMILY
@@ -62,7 +63,7 @@ SRGB_TEXTURE_NOTE = ("on AMD the sRGB decode happens in the texture unit (the fo
                      "descriptor): the program is the same as the UNORM8 fetch, so its cost is 0")
 HARDWARE_ENCODE_NA = ("n/a: the sRGB encode happens in the colour-buffer hardware on the way to "
                       "memory; the fragment program is the same as for a UNORM8 target")
-UNITY_NA = "n/a: a ShaderLab material (pbrlab.unity builds its program; not compiled here)"
+UNITY_NA = "n/a: a ShaderLab material (pbrlab.importers.unity builds its program; not compiled here)"
 
 # statistic name in RADV -> key in the bench's JSON
 _PROGRAM_STATS = {"Instructions": "instructions", "VGPRs": "vgprs", "SGPRs": "sgprs",

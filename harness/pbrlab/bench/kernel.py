@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .. import shaders
+from ..gpu import shaders
 
 # Peer engines' code the bench compares with (bench/peers/*.glsl, not the library).
 PEERS_DIR = Path(__file__).resolve().parent / "peers"

@@ -1,5 +1,5 @@
 """What one more light costs: the per-light increment of a lit program on AMD GPUs (issue 25,
-"the energy coupling once per pixel"), from ACO's static instruction counts (pbrlab.gpu_isa,
+"the energy coupling once per pixel"), from ACO's static instruction counts (pbrlab.gpu.isa,
 RADV on a null device; no GPU).
 
 Two measurements:
@@ -17,7 +17,7 @@ Two measurements:
   loops: the coupling inside the loop, what calling the one-light function in a loop gives),
   and the same three for the anisotropic lobe.
 * **The scene programs** (``scene_increments``): the real specialised program of a test
-  scene (the templates of pbrlab.programs) with 1, 2 and 4 directional lights, coupled as
+  scene (the templates of pbrlab.gpu.programs) with 1, 2 and 4 directional lights, coupled as
   shipped and uncoupled (the same program text with pbr_coupled_diffuse_color replaced by
   its diffuse colour after the library's definition). Their light loops are unrolled, and
   the environment's call before them computes the same coupling, so the compiler's common
@@ -26,8 +26,8 @@ Two measurements:
 
 from __future__ import annotations
 
-from ..errors import PbrlabError
-from ..gpu_isa import compile as gpu_isa
+from ..foundation.errors import PbrlabError
+from ..gpu.isa import compile as gpu_isa
 from . import kernel
 
 FAMILIES = ("rdna3",)
@@ -135,7 +135,7 @@ _UNCOUPLED = "\n#define pbr_coupled_diffuse_color(diffuseColor, coatF0, coatAlbe
 
 
 def _scene(lights: int, material: dict, quality: str):
-    from .. import scene as scene_model
+    from ..scene import model as scene_model
     data = {"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "size": [64, 64]},
             "lights": [{"type": "directional", "direction": [-0.3 + 0.1 * i, -0.6, -1.0]} for i in range(lights)],
             "materials": {"m": material},

@@ -16,12 +16,13 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import console, evaluator, gl, ibl, shaders, targets
-from ..golden_scenes import LIT_SCENE
+from ..foundation import console
+from ..gpu import evaluator, gl, ibl, shaders, targets
+from ..checking.golden_scenes import LIT_SCENE
 from . import count_check, kernel
 from .families import Family, Variant
 
-DEFAULT_SCENE = LIT_SCENE  # the lit golden scene (pbrlab.golden_scenes), one definition of its path
+DEFAULT_SCENE = LIT_SCENE  # the lit golden scene (pbrlab.checking.golden_scenes), one definition of its path
 TIERS = ("high", "medium", "low")
 
 
@@ -134,7 +135,7 @@ def _gpu_inputs(family: Family, d: dict) -> dict:
 
 def _reference(family: Family, d: dict, settings: Settings) -> np.ndarray:
     if family.name == "env_brdf":
-        from ..reference import directional_albedo
+        from ..maths.reference import directional_albedo
         return directional_albedo.split_sum_terms_grid(d["NdotV"], d["r"] ** 2, theta_nodes=20, phi_nodes=24)
     return np.asarray(family.reference(d), np.float64)
 
@@ -142,7 +143,7 @@ def _reference(family: Family, d: dict, settings: Settings) -> np.ndarray:
 def _dfg_bilinear(ndotv, rough):
     """The renderer's lookup in float64: texture(u_dfg_lut, pbr_dfg_lut_uv(NdotV, r)) with
     bilinear filtering and clamp to edge (reference/surface.py sample_dfg_lut)."""
-    from ..reference import surface
+    from ..maths.reference import surface
     return surface.sample_dfg_lut(ibl.dfg_lut()[::-1], ndotv, rough)
 
 
@@ -196,13 +197,13 @@ def lsb_error(values, ref) -> int:
 def measure_errors(family: Family, settings: Settings) -> dict:
     """{variant: {"error": stats vs the family reference, "self_error": stats vs its own
     float64 twin or None, "lsb_8bit": codes (colour families)}}."""
-    from ..reference import color
+    from ..maths.reference import color
     with np.errstate(all="ignore"):
         return _measure_errors(family, settings)
 
 
 def _measure_errors(family: Family, settings: Settings) -> dict:
-    from ..reference import color
+    from ..maths.reference import color
     inputs32 = grid(family, settings)
     d = with_derived(family, inputs32)
     ref = None if family.own_reference else _reference(family, d, settings)
@@ -515,7 +516,8 @@ def _count_frames(settings: Settings, workdir: Path) -> dict:
 def tier_image_error(scene_path=DEFAULT_SCENE, scale: float = 1.0) -> dict:
     """Each tier's render of the default scene against the HIGH-tier render (GPU, float32,
     the scene's own size): linear radiance and the displayed 8-bit image."""
-    from .. import render, scene as scene_mod
+    from ..render import renderer as render
+    from ..scene import model as scene_mod
     renders = {}
     for tier in TIERS:
         s = scene_mod.load_scene(scene_path)

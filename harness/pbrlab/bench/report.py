@@ -7,7 +7,7 @@ import json
 import math
 from pathlib import Path
 
-from .. import outputs
+from ..foundation import outputs
 from . import report_gpu
 
 NOISE_NOTE = ("Times are CPU time on llvmpipe with LP_NUM_THREADS=1 (median of interleaved rounds, "
@@ -188,7 +188,7 @@ def markdown(doc: dict) -> str:
               f"frame cost at {fr['size'][0]}x{fr['size'][1]}, CPU time, LP_NUM_THREADS=1, median of "
               f"{fr['rounds']} interleaved rounds; *shading* = frame minus the same render with no objects "
               f"(clear, readback, resolve: {_g(fr['setup_ms_median'], 1)} ms; the environment's prefilter, textures "
-              f"and meshes are made once, at warm-up, and cached: pbrlab.resource_cache).", "",
+              f"and meshes are made once, at warm-up, and cached: pbrlab.render.resource_cache).", "",
               "| tier | max abs (linear) | max rel | median rel | max sRGB codes | pixels > 2 codes | "
               "frame ms | shading ms [25th–75th] | ×high |", "|---|---|---|---|---|---|---|---|---|"]
     for tier in ("high", "medium", "low"):
@@ -199,7 +199,7 @@ def markdown(doc: dict) -> str:
                      f"[{_g(f['shading_ms_p25'], 1)}–{_g(f['shading_ms_p75'], 1)}] | {_g(f['ratio_to_high'])} |")
     sp = doc["specialisation"]
     lines += ["", "## Specialised versus full programs", "",
-              f"Each test scene rendered with the programs specialised to it (pbrlab.features) and "
+              f"Each test scene rendered with the programs specialised to it (pbrlab.render.features) and "
               f"with the full program (every effect compiled in, fed neutral values; bit-identical "
               f"images). CPU time per frame, LP_NUM_THREADS=1, median of {sp['rounds']} interleaved "
               f"rounds, size: {sp['size']}.", "",

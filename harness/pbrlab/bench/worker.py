@@ -39,7 +39,7 @@ class _Kernels:
     """The spec's programs with their texture and target, on one context."""
 
     def __init__(self, spec):
-        from pbrlab import gl, targets
+        from ..gpu import gl, targets
         self.ctx = ctx = gl.create_context(None)
         self.size = size = spec["size"]
         codes = np.arange(256, dtype=np.uint8)
@@ -131,7 +131,9 @@ def run_count(spec):
 
 
 def run_frame(spec):
-    from pbrlab import gl, render, scene as scene_mod
+    from ..gpu import gl
+    from ..render import renderer as render
+    from ..scene import model as scene_mod
     ctx = gl.create_context(None)
     scenes = {}
     for tier in spec["tiers"]:
@@ -161,8 +163,9 @@ def run_frame(spec):
 
 def _bench_scene(name):
     """A test scene by name: a chart, or a scene file under scenes/."""
-    from pbrlab import charts, scene as scene_mod
-    from pbrlab.locations import locate
+    from ..checking import charts
+    from ..scene import model as scene_mod
+    from ..foundation.locations import locate
     if name in charts.CHARTS:
         return scene_mod.parse_scene(charts.CHARTS[name](), origin=name)
     return scene_mod.load_scene(locate("scenes") / name)
@@ -181,7 +184,8 @@ def run_count_frames(spec):
     compiles its programs), so each dump holds the instructions of exactly one frame; every
     job in ``spec["passes"]`` passes (default 2), each pass in the reverse order of the one
     before, so the parent can check that a frame's count does not depend on what ran before."""
-    from pbrlab import gl, render
+    from ..gpu import gl
+    from ..render import renderer as render
     ctx = gl.create_context(None)
     jobs = _specialisation_jobs(spec)
     size = tuple(spec["size"])
@@ -203,7 +207,8 @@ def run_count_frames(spec):
 def run_specialise(spec):
     """Each scene rendered with its specialised programs and with the full program,
     interleaved in a shuffled order each round (features.py; the images are identical)."""
-    from pbrlab import gl, render
+    from ..gpu import gl
+    from ..render import renderer as render
     ctx = gl.create_context(None)
     jobs = _specialisation_jobs(spec)
     size = tuple(spec["size"]) if spec.get("size") else None

@@ -6,8 +6,9 @@ import argparse
 
 from pathlib import Path
 
-from .. import console, outputs, shaders
-from ..errors import PbrlabError
+from ..foundation import console, outputs
+from ..gpu import shaders
+from ..foundation.errors import PbrlabError
 
 
 def run(args) -> int:

@@ -19,12 +19,14 @@ from .render import add_language_option
 
 
 def run(args) -> int:
-    from .. import console, contact_sheets, gl, images, outputs, progress
-    from ..errors import PbrlabError
-    from ..charts import CHARTS
-    from ..golden_scenes import GOLDEN_SCENES
-    from ..locations import checkout_folder
-    from ..render import render_scene
+    from ..foundation import console, images, outputs, progress
+    from ..checking import contact_sheets
+    from ..gpu import gl
+    from ..foundation.errors import PbrlabError
+    from ..checking.charts import CHARTS
+    from ..checking.golden_scenes import GOLDEN_SCENES
+    from ..foundation.locations import checkout_folder
+    from ..render.renderer import render_scene
     from .render import check_finite
 
     out = Path(args.out)
@@ -74,7 +76,7 @@ NO_GOLDEN = "rendered, no golden to compare"
 
 def _check(name, rendering, info, golden_root: Path, out: Path, profile: str) -> tuple[str, int]:
     """The golden verdict of one image, printed: (its status line, 1 if it differs else 0)."""
-    from .. import goldens
+    from ..checking import goldens
 
     png, exr = out / f"{name}.png", out / f"{name}.exr"
     try:

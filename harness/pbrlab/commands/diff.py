@@ -13,8 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import compare, images, outputs
-from ..errors import PbrlabError
+from ..checking import compare
+from ..foundation import images, outputs
+from ..foundation.errors import PbrlabError
 
 
 def register(subparsers, common) -> None:

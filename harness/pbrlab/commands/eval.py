@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import PbrlabError
+from ..foundation.errors import PbrlabError
 
 MAX_ROWS = 10000
 
@@ -63,7 +63,7 @@ def _format(value: float) -> str:
 
 
 def run(args) -> int:
-    from .. import evaluator
+    from ..gpu import evaluator
 
     grid = [_parse_var(v) for v in args.var]
     given = [name for name, _ in grid] + [

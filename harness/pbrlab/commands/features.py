@@ -11,9 +11,9 @@ from pathlib import Path
 
 
 def run(args) -> int:
-    from ..features import features_report
-    from ..gltf import is_gltf, load_gltf
-    from ..gltf.settings import read_settings
+    from ..render.features import features_report
+    from ..importers.gltf import is_gltf, load_gltf
+    from ..importers.gltf.settings import read_settings
     from .render import load_scene_with_gltf_warnings
 
     if is_gltf(args.scene):

@@ -11,7 +11,7 @@ import argparse
 import json
 import math
 
-from ..errors import PbrlabError
+from ..foundation.errors import PbrlabError
 
 
 def _json_value(x):
@@ -20,7 +20,7 @@ def _json_value(x):
 
 
 def run(args) -> int:
-    from ..hardcases import catalogue, run as hardcases_run
+    from ..checking.hardcases import catalogue, run as hardcases_run
 
     cases = catalogue.catalogue()
     if args.function:
@@ -32,7 +32,7 @@ def run(args) -> int:
         cases = [c for c in cases if c.function.name in args.function]
     from functools import partial
 
-    from .. import evaluator
+    from ..gpu import evaluator
 
     results = hardcases_run.run_catalogue(cases, evaluate=partial(evaluator.evaluate, backend=args.backend))
     failures = [r for r in results if not r.ok]

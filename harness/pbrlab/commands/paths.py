@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import argparse
 
-from ..errors import PbrlabError
-from ..locations import TREES, locate, origin
+from ..foundation.errors import PbrlabError
+from ..foundation.locations import TREES, locate, origin
 
 
 def lines() -> list[str]:

@@ -1,6 +1,6 @@
 """`pbrlab port-unity SHADER -o surf.glsl`: a Unity surface shader's CGPROGRAM, renamed to GLSL.
 
-The renames are mechanical (harness/pbrlab/unity/port.py): Cg/HLSL types to GLSL (float3 ->
+The renames are mechanical (harness/pbrlab/importers/unity/port.py): Cg/HLSL types to GLSL (float3 ->
 vec3, half -> float, float4x4 -> mat4), `uniform` on the program's globals, scalar-to-vector
 assignments through the target's constructor (o.Albedo = 1 -> o.Albedo = vec3(1)), casts,
 semantics, pow -> pbr_unity_pow. Intrinsics (saturate, lerp, tex2D, ...) keep their names:
@@ -14,10 +14,10 @@ import argparse
 
 from pathlib import Path
 
-from .. import outputs
-from ..errors import PbrlabError
-from ..unity import load_shader
-from ..unity.port import port_file
+from ..foundation import outputs
+from ..foundation.errors import PbrlabError
+from ..importers.unity import load_shader
+from ..importers.unity.port import port_file
 
 
 def run(args) -> int:

@@ -14,8 +14,8 @@ import re
 
 import numpy as np
 
-from .. import console
-from ..errors import PbrlabError
+from ..foundation import console
+from ..foundation.errors import PbrlabError
 
 
 def parse_size(text: str | None):
@@ -39,14 +39,14 @@ def load_scene_with_gltf_warnings(path):
     import sys
     import warnings
 
-    from ..scene_files import load_scene
+    from ..importers.loader import load_scene
 
     # Every warning is recorded: the glTF importer (and its GltfWarning) is loaded only if the
     # scene takes in a glTF file, so its warnings are told apart after the load.
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         scene = load_scene(path)
-    gltf = sys.modules.get("pbrlab.gltf")
+    gltf = sys.modules.get("pbrlab.importers.gltf")
     messages, passed_on = [], set()
     for w in caught:
         if gltf is not None and issubclass(w.category, gltf.GltfWarning):
@@ -89,7 +89,7 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     import sys
     from pathlib import Path
 
-    from ..scene_files import is_gltf
+    from ..importers.loader import is_gltf
 
     if not is_gltf(path):
         if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)) \
@@ -100,8 +100,8 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
         return scene
-    from ..gltf import load_gltf
-    from ..gltf.settings import light_units_default, read_settings
+    from ..importers.gltf import load_gltf
+    from ..importers.gltf.settings import light_units_default, read_settings
 
     env, render = read_settings(Path(path), environment)
     result = load_gltf(path, camera=camera, environment=env, render=render, size=size, emit_warnings=False,
@@ -116,8 +116,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 
 
 def run(args) -> int:
-    from .. import gl, images, outputs, progress
-    from ..render import input_files, render_scene
+    from ..gpu import gl
+    from ..foundation import images, outputs, progress
+    from ..render.renderer import input_files, render_scene
 
     if not args.output and not args.hdr:
         raise PbrlabError("nothing to write: give -o OUT.png and/or --hdr OUT.exr")
@@ -183,7 +184,7 @@ def register(sub, common):
 
 
 def add_language_option(parser):
-    from ..programs import LANGUAGES
+    from ..gpu.programs import LANGUAGES
     parser.add_argument("--language", choices=LANGUAGES, default="glsl",
                         help="shade with the GLSL library (default) or its HLSL twins in hlsl_ports/, "
                              "compiled by glslang and spirv-cross; a material's surface file then "

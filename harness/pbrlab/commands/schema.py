@@ -3,7 +3,7 @@
 Point an editor at it to validate and complete scenes, e.g. in VS Code's settings:
 ``"json.schemas": [{"fileMatch": ["scenes/*.json"], "url": "./scene.schema.json"}]`` after
 ``pbrlab schema -o scene.schema.json``. It is written from the parser's own field tables
-(pbrlab.scene_fields); `pbrlab render` remains the full check (files exist, materials are
+(pbrlab.scene.fields); `pbrlab render` remains the full check (files exist, materials are
 defined, ...), and its messages name the field.
 """
 
@@ -12,11 +12,11 @@ from __future__ import annotations
 import argparse
 import json
 
-from .. import console, outputs
+from ..foundation import console, outputs
 
 
 def run(args) -> int:
-    from ..scene_schema import scene_schema
+    from ..scene.schema import scene_schema
 
     text = json.dumps(scene_schema(), indent=2) + "\n"
     if args.output == "-":

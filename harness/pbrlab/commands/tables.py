@@ -14,12 +14,12 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..errors import PbrlabError
+from ..foundation.errors import PbrlabError
 
 
 def run(args) -> int:
-    from .. import console
-    from ..engine_tables import write_tables
+    from ..foundation import console
+    from ..gpu.engine_tables import write_tables
 
     out = Path(args.out)
     try:

@@ -1,6 +1,6 @@
 // pbrlab evaluator, HLSL side: one expression per pixel, the twin of evaluate.frag.
 // Compiled by glslang's HLSL front end to SPIR-V and by spirv-cross to GLSL 330
-// (harness/pbrlab/hlsl.py), then run by the same evaluator: each input is a Texture2D read
+// (harness/pbrlab/gpu/hlsl.py), then run by the same evaluator: each input is a Texture2D read
 // with Load (texelFetch after the cross-compile: bit-exact, no filtering), bound by name
 // (pbrlab_in_<name>, register t<k>) like the GLSL template's samplers; the result goes to
 // SV_Target0, the RGBA32F target read back as float32. The pixel position arrives as

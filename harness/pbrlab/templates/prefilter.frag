@@ -1,5 +1,5 @@
 #version 330 core
-// One level of the GGX-prefiltered environment (harness/pbrlab/ibl.py): each texel is
+// One level of the GGX-prefiltered environment (harness/pbrlab/gpu/ibl.py): each texel is
 // the environment convolved with the GGX lobe around its direction, n = v = r (Karis 2013).
 #include "pbr/ibl/importance_sampling.glsl"
 #include "pbr/ibl/equirect.glsl"

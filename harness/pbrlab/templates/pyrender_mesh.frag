@@ -1,5 +1,5 @@
 #version 330 core
-// The pyrender cross-check of glTF files (harness/pbrlab/pyrender_check.py): a mesh's
+// The pyrender cross-check of glTF files (harness/pbrlab/checking/pyrender/check.py): a mesh's
 // material read by pbrlab's default surface (the one glTF mapping, default_surface.inc)
 // and lit as pyrender 0.1.45's mesh.frag lights it (templates/pyrender_brdf.inc; point
 // lights I / d^2 with no range window, l. 377-389; spot lights the squared linear ramp

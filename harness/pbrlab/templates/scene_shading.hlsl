@@ -23,7 +23,7 @@
 #define UNITY_SAMPLE_TEX2D(name, uv) PBRLAB_SAMPLE_TEX2D(name, uv)
 #endif
 
-// The DFG table (harness/pbrlab/ibl.py dfg_lut: (A, B) on the warped axes of
+// The DFG table (harness/pbrlab/gpu/ibl.py dfg_lut: (A, B) on the warped axes of
 // pbr_dfg_lut_uv): the environment's split sum and, for every light, the diffuse-specular
 // coupling read it, so it is declared whenever the scene has light (a transmissive material
 // sees the scene's transmission copy, light of its own: transmission_scene.inc).
@@ -34,7 +34,7 @@ PBRLAB_DECLARE_TEX2D(u_dfg_lut);
 #define PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness) PBRLAB_SAMPLE_TEX2D(u_dfg_lut, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg
 #endif
 
-// The sheen albedo table (harness/pbrlab/sheen_table.py: E on the warped axes of
+// The sheen albedo table (harness/pbrlab/gpu/sheen_table.py: E on the warped axes of
 // pbr_sheen_lut_uv), declared only where the material has a sheen; the layers the
 // material lacks are left out of LightingStandardLayers (pbr/unity/surface_layers.glsl).
 #ifdef PBRLAB_SHEEN

@@ -1,6 +1,6 @@
 // One analytic sphere, ray-traced per pixel, shaded through a Unity-style surface function:
 // the HLSL twin of sphere.frag (the work is in the shared surface_pixel.inc). Compiled by
-// glslang's HLSL front end and spirv-cross (harness/pbrlab/programs.py); SV_Position
+// glslang's HLSL front end and spirv-cross (harness/pbrlab/gpu/programs.py); SV_Position
 // arrives as GL's gl_FragCoord (lower-left origin), so the camera ray is the GLSL one.
 //@DEFINES
 #include "scene_shading.hlsl"

@@ -27,7 +27,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_BLINN_PHONG_HLSL
 #define PBR_BRDF_BLINN_PHONG_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/blinn_phong.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/blinn_phong.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/guards.hlsl"

@@ -25,11 +25,11 @@
 // PBR_MIN_HALF_VECTOR_LENGTH_SQUARED (eta = 1, l = -v: an index-matched interface passes
 // light straight through, a Dirac; decided 0). Domain: n, v, l unit, alpha in [0, 1],
 // eta in [1/16, 16]; alpha is floored at PBR_MIN_ALPHA, |n.v| at PBR_MIN_NDOTV.
-// float64 twin: harness/pbrlab/reference/transmission.py (eq. 21 as printed).
+// float64 twin: harness/pbrlab/maths/reference/transmission.py (eq. 21 as printed).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_BTDF_WALTER_HLSL
 #define PBR_BRDF_BTDF_WALTER_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/btdf_walter.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/btdf_walter.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 #include "pbr/brdf/d_ggx.hlsl"

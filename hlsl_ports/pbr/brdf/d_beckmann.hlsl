@@ -21,7 +21,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_BECKMANN_HLSL
 #define PBR_BRDF_D_BECKMANN_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_beckmann.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_beckmann.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/guards.hlsl"

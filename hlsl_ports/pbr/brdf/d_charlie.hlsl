@@ -19,18 +19,18 @@
 // exponent is 102 and the relative error of D at most ln2 · 102 · 2^-21 = 3.4e-5 (measured on
 // llvmpipe against float64: tests/library/test_sheen.py). Roughness 0 returns D at the floor
 // (peak (2 + 1/0.0049)/(2π) = 32.8 1/sr), exactly. The same floor keeps the sheen albedo table
-// (harness/pbrlab/sheen_table.py) resolvable: E's grazing peak narrows with alpha.
+// (harness/pbrlab/gpu/sheen_table.py) resolvable: E's grazing peak narrows with alpha.
 // sin²θh = 0 (NdotH = 1) raises 0 to a positive power: pbr_pow_safe returns the limit 0.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_D_CHARLIE_HLSL
 #define PBR_BRDF_D_CHARLIE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_charlie.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/d_charlie.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/math.hlsl"
 #include "pbr/common/guards.hlsl"
 
-// The sheen roughness floor (see above); shared with harness/pbrlab/reference/sheen.py
+// The sheen roughness floor (see above); shared with harness/pbrlab/maths/reference/sheen.py
 // SHEEN_MIN_PERCEPTUAL_ROUGHNESS and SHEEN_MIN_ALPHA (tested equal).
 #define PBR_SHEEN_MIN_PERCEPTUAL_ROUGHNESS 0.07
 #define PBR_SHEEN_MIN_ALPHA 0.0049

@@ -30,7 +30,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_DV_GGX_SMITH_CORRELATED_FAST_HLSL
 #define PBR_BRDF_DV_GGX_SMITH_CORRELATED_FAST_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/dv_ggx_smith_correlated_fast.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/dv_ggx_smith_correlated_fast.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/precision.hlsl"

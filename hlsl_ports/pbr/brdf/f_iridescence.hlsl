@@ -49,7 +49,7 @@
 //     phase² finite for any thickness.
 // Error against the physics (float64, independent spectral reference: exact Airy
 // reflectance per wavelength, s and p averaged, against Wyman, Sloan & Shirley 2013's
-// analytic CIE 1931 fit; harness/pbrlab/reference/iridescence.py): see
+// analytic CIE 1931 fit; harness/pbrlab/maths/reference/iridescence.py): see
 // worst |F - reference| 0.2206 (bound PBR_F_IRIDESCENCE_MAX_ABS_ERROR_SPECTRAL = 0.23) over
 // outside IOR 1, film IOR 1.2-2, thickness 0-1200 nm, cosθ1 0.05-1, dielectric base F0
 // 0.02-0.08, at cosθ1 = 0.15 (Schlick's grazing error and the two-order truncation);
@@ -62,7 +62,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_IRIDESCENCE_HLSL
 #define PBR_BRDF_F_IRIDESCENCE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_iridescence.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_iridescence.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/math.hlsl"

@@ -36,7 +36,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_F_SCHLICK_HLSL
 #define PBR_BRDF_F_SCHLICK_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_schlick.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/f_schlick.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 

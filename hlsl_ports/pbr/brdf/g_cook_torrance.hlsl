@@ -15,7 +15,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_G_COOK_TORRANCE_HLSL
 #define PBR_BRDF_G_COOK_TORRANCE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/g_cook_torrance.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/g_cook_torrance.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 

@@ -23,14 +23,14 @@
 // glTF viewer agree; the softening is not reciprocal when applied to the light only, as the
 // paper does, and it changes the albedo by up to 1.0 (E at r = 0.07 and grazing view drops
 // from 2.94 to 1.94; applied to both directions it removes the lobe, E <= 0.45) — measured
-// with harness/pbrlab/reference/sheen.py sheen_lambda_softened.
+// with harness/pbrlab/maths/reference/sheen.py sheen_lambda_softened.
 // Accuracy of the fit (measured, float64, against Λ integrated from D by Smith's relation
 // 1 + Λ(v) = ∫ D(h) <v·h>+ dω_h / NdotV, cosines 1e-3, 0.01, 0.1, 0.5, 0.9): at alpha = 1
 // within 4.3 % for cosines >= 0.01 (15 % high at 1e-3); at alpha = 0.25, 13 to 35 % high; at the
 // floor alpha = 0.0049, 3.1 to 6.3 times too low. Too little masking means
 // too much sheen at grazing: the white sheen's directional albedo E exceeds 1 at grazing
 // views for perceptual roughness below 0.27, up to 2.94 (perceptual roughness 0.07, NdotV
-// 1.7e-3; harness/pbrlab/sheen_table.py). The layering clamps its albedo scaling to [0, 1]
+// 1.7e-3; harness/pbrlab/gpu/sheen_table.py). The layering clamps its albedo scaling to [0, 1]
 // (pbr/shading/sheen.hlsl).
 // Neubelt: Ashikhmin & Premoze 2007, "Distribution-based BRDFs", in the form of Neubelt &
 // Pettineo 2013, "Crafting a Next-Gen Material Pipeline for The Order: 1886":
@@ -45,13 +45,13 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_CHARLIE_HLSL
 #define PBR_BRDF_V_CHARLIE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_charlie.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_charlie.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 #include "pbr/brdf/d_charlie.hlsl"
 
 // Estevez & Kulla 2017 table 1 (as KHR_materials_sheen prints it): the fit's parameters at
-// r = 1 and r = 0. Shared with harness/pbrlab/reference/sheen.py LAMBDA_AT_R1 / LAMBDA_AT_R0.
+// r = 1 and r = 0. Shared with harness/pbrlab/maths/reference/sheen.py LAMBDA_AT_R1 / LAMBDA_AT_R0.
 #define PBR_SHEEN_LAMBDA_R1_A 21.5473
 #define PBR_SHEEN_LAMBDA_R1_B 3.82987
 #define PBR_SHEEN_LAMBDA_R1_C 0.19823

@@ -19,7 +19,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_IMPLICIT_HLSL
 #define PBR_BRDF_V_IMPLICIT_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_implicit.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_implicit.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 

@@ -28,7 +28,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_BRDF_V_SMITH_GGX_CORRELATED_HLSL
 #define PBR_BRDF_V_SMITH_GGX_CORRELATED_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_smith_ggx_correlated.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/brdf/v_smith_ggx_correlated.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 

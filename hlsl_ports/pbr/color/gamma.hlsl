@@ -18,7 +18,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_GAMMA_HLSL
 #define PBR_COLOR_GAMMA_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/gamma.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/gamma.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 

@@ -10,7 +10,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_LUMINANCE_HLSL
 #define PBR_COLOR_LUMINANCE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/luminance.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/luminance.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #define PBR_LUMINANCE_REC709 float3(0.2126, 0.7152, 0.0722)
 

@@ -23,7 +23,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COLOR_TRANSFER_HLSL
 #define PBR_COLOR_TRANSFER_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/transfer.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/color/transfer.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/color/srgb.hlsl"
 #include "pbr/color/gamma.hlsl"

@@ -36,13 +36,13 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONVENTIONS_HLSL
 #define PBR_COMMON_CONVENTIONS_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/conventions.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/conventions.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/constants.hlsl"
 #include "pbr/common/math.hlsl"
 
 // The light-unit factor of convention 5 (see above). Shared with
-// harness/pbrlab/reference/constants.py LIGHT_UNIT_SCALE.
+// harness/pbrlab/maths/reference/constants.py LIGHT_UNIT_SCALE.
 #define PBR_LIGHT_UNIT_SCALE PBR_PI
 
 #endif // PBR_COMMON_CONVENTIONS_HLSL

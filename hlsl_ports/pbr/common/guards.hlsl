@@ -16,11 +16,11 @@
 // NaN: GLSL leaves min/max/clamp/isnan on NaN implementation-defined (isnan may be compiled
 // away under fast maths), so NaN is removed only by an ordered comparison, false for NaN in
 // IEEE 754 and in SPIR-V OpFOrdGreaterThan, used as a select (pbr_sanitize).
-// Every constant is shared with harness/pbrlab/reference/guards.py (tested equal).
+// Every constant is shared with harness/pbrlab/maths/reference/guards.py (tested equal).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_GUARDS_HLSL
 #define PBR_COMMON_GUARDS_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/guards.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/guards.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 

@@ -11,7 +11,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_MATH_HLSL
 #define PBR_COMMON_MATH_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/math.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/math.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 float pbr_saturate(float x) { return clamp(x, 0.0, 1.0); }
 float3  pbr_saturate(float3 x)  { return clamp(x, 0.0, 1.0); }

@@ -18,7 +18,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_PRECISION_HLSL
 #define PBR_COMMON_PRECISION_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/precision.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/common/precision.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #if defined(PBR_FLOAT16) || defined(GL_ES)
 #  define PBR_HALF_ARITHMETIC 1

@@ -8,7 +8,7 @@
 // Config macros read: PBR_HLSL_NO_FIXED_TYPES (define it to keep fixed* undefined).
 //
 // This is the only hand-written HLSL of hlsl_ports/: everything else is generated from
-// glsl/ by harness/pbrlab/port_hlsl.py (python -m pbrlab.port_hlsl), which spells the GLSL
+// glsl/ by harness/pbrlab/gpu/port_hlsl.py (python -m pbrlab.gpu.port_hlsl), which spells the GLSL
 // in HLSL's own words instead of defining GLSL names here, so the ports compile beside an
 // engine that has its own mod, mix, vec3 or PI:
 //   GLSL                      generated HLSL              note

@@ -30,12 +30,12 @@
 // Split sum (Karis 2013, "Real Shading in Unreal Engine 4", eq. 8): the specular
 // reflection of an environment is prefiltered radiance times the directional albedo of
 // the BRDF, written f0 * A + f90 * B with A, B tabulated over (NdotV, roughness)
-// (harness/pbrlab/ibl.py integrates the table with the library's own V term; the float64
-// reference of the integral is harness/pbrlab/reference/directional_albedo.py).
+// (harness/pbrlab/gpu/ibl.py integrates the table with the library's own V term; the float64
+// reference of the integral is harness/pbrlab/maths/reference/directional_albedo.py).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_ENVIRONMENT_BRDF_HLSL
 #define PBR_IBL_ENVIRONMENT_BRDF_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/common/math.hlsl"
 
@@ -60,7 +60,7 @@ float2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
     return float2(-1.04, 1.04) * a004 + r.zw;
 }
 
-// The DFG table's layout (harness/pbrlab/ibl.py writes it; shared constants tested equal).
+// The DFG table's layout (harness/pbrlab/gpu/ibl.py writes it; shared constants tested equal).
 // Texel (i, j), i, j from 0, holds (A, B) exactly at x = i / (WIDTH - 1), y = j / (HEIGHT - 1)
 // of the warped axes below, so a bilinear fetch at the texel-centre coordinates
 // (x (WIDTH - 1) + 0.5) / WIDTH interpolates between exact values and never reads past the
@@ -154,7 +154,7 @@ float pbr_specular_occlusion(float NdotV, float occlusion, float alpha) {
 }
 
 // The mip of a prefiltered environment whose level i was filtered for perceptual
-// roughness i / (lodCount - 1) (harness/pbrlab/ibl.py builds it that way).
+// roughness i / (lodCount - 1) (harness/pbrlab/gpu/ibl.py builds it that way).
 float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount) {
     return perceptualRoughness * (lodCount - 1.0);
 }

@@ -5,14 +5,14 @@
 // Include:  "pbr/ibl/equirect.hlsl" (path relative to hlsl_ports/)
 // Config macros read: none.
 //
-// Convention (the harness's, harness/pbrlab/environment.py): +Y up; the image's top row
+// Convention (the harness's, harness/pbrlab/scene/environment.py): +Y up; the image's top row
 // looks at +Y; azimuth phi = 2 pi u is measured from -Z towards +X, so the image centre
 // looks at +Z. Texture coordinate t = 1 is the image's top row (images are uploaded
 // top row last, as OpenGL expects).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_EQUIRECT_HLSL
 #define PBR_IBL_EQUIRECT_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/equirect.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/equirect.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/common/constants.hlsl"
 
 float2 pbr_equirect_uv(float3 dir) {

@@ -11,7 +11,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_IBL_IMPORTANCE_SAMPLING_HLSL
 #define PBR_IBL_IMPORTANCE_SAMPLING_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/importance_sampling.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/importance_sampling.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/common/constants.hlsl"
 #include "pbr/brdf/d_ggx.hlsl"
 

@@ -11,7 +11,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_ATTENUATION_HLSL
 #define PBR_LIGHTING_ATTENUATION_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/attenuation.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/attenuation.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 // Smallest squared distance used in 1/d^2: a light at the shaded point would divide by
 // zero. 1e-8 (d = 1e-4 scene units) caps the inverse square at 1e8, far above any

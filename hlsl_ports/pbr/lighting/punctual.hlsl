@@ -20,7 +20,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_PUNCTUAL_HLSL
 #define PBR_LIGHTING_PUNCTUAL_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/punctual.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/punctual.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/conventions.hlsl"
 #include "pbr/shading/standard.hlsl"

@@ -5,13 +5,13 @@
 // Config macros read: none.
 //
 // sh[] holds the projection of the environment's radiance on the real SH basis, in the
-// order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/environment.py
+// order L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (harness/pbrlab/scene/environment.py
 // computes it). The result is the irradiance E(n); a Lambert surface reflects
 // diffuseColor * E(n) / pi. For a constant radiance L the result is exactly pi * L.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_SH9_HLSL
 #define PBR_LIGHTING_SH9_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/sh9.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/lighting/sh9.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 // Ramamoorthi & Hanrahan 2001, "An Efficient Representation for Irradiance Environment
 // Maps", eq. 13: the clamped-cosine convolution folded into five constants.

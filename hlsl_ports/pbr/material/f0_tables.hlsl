@@ -12,7 +12,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_F0_TABLES_HLSL
 #define PBR_MATERIAL_F0_TABLES_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/f0_tables.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/f0_tables.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 // Dielectrics
 #define PBR_F0_QUARTZ   0.045593921

@@ -14,7 +14,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_IOR_HLSL
 #define PBR_MATERIAL_IOR_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/ior.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/ior.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 // Largest eta pbr_ior_from_f0 returns: 2^25 = 2 / 2^-24, what the formula gives one float32
 // step below F0 = 1 (1 - sqrt F0 = 2^-24). Cost: none for F0 <= 1 - 2^-23.

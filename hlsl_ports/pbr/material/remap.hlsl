@@ -19,7 +19,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_REMAP_HLSL
 #define PBR_MATERIAL_REMAP_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/remap.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/remap.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 

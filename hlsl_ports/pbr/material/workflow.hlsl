@@ -13,7 +13,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_MATERIAL_WORKFLOW_HLSL
 #define PBR_MATERIAL_WORKFLOW_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/workflow.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/material/workflow.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 

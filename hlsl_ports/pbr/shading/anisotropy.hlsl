@@ -70,7 +70,7 @@
 //    strength 1, roughness 0) the result is n.
 //    Error, measured against the float64 exact anisotropic specular integral (F = 1) under a
 //    test environment (sky + a 0.2 rad sun off the lobe's symmetry planes;
-//    harness/pbrlab/reference/anisotropy.py, tests/library/test_anisotropy.py), the
+//    harness/pbrlab/maths/reference/anisotropy.py, tests/library/test_anisotropy.py), the
 //    approximation being the GGX-prefiltered environment (isotropic alpha = r²) at
 //    reflect(-v, bentNormal) times the exact anisotropic albedo (so only the lobe's
 //    direction and shape are measured), over r 0.2 ... 0.8, strength 0.5 and 1, views
@@ -82,7 +82,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_ANISOTROPY_HLSL
 #define PBR_SHADING_ANISOTROPY_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/anisotropy.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/anisotropy.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/conventions.hlsl"
 #include "pbr/common/guards.hlsl"

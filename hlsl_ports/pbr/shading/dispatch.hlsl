@@ -39,11 +39,11 @@
 //   D Beckmann:    the GGX alpha is used as the Beckmann RMS slope.
 //   V Schlick-GGX: k = alpha / 2 (Karis 2013, eq. 4).
 //   V Smith GGX:   the separable form; V Cook-Torrance, Kelemen, Implicit: see their files.
-// The Python twin is harness/pbrlab/reference/shading.py (same names, lower-case keywords).
+// The Python twin is harness/pbrlab/maths/reference/shading.py (same names, lower-case keywords).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_DISPATCH_HLSL
 #define PBR_SHADING_DISPATCH_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/dispatch.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/dispatch.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 #include "pbr/common/precision.hlsl"

@@ -35,7 +35,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_ENERGY_CONSERVATION_HLSL
 #define PBR_SHADING_ENERGY_CONSERVATION_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/energy_conservation.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/energy_conservation.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 

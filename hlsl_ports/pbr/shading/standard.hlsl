@@ -35,7 +35,7 @@
 // Contract: n, v and l unit vectors (to float32 rounding: interpolated normals are
 // normalised by the caller; a far camera's direction through pbr_safe_normalize first: an
 // unnormalised v longer than 1e19 overflows |l + v|²). Edges (all mirrored in
-// harness/pbrlab/reference/shading.py):
+// harness/pbrlab/maths/reference/shading.py):
 //  - NdotL is saturated (a free output modifier on AMD GPUs) and every NdotL of the
 //    formula, n·(l + v) = NdotL + n·v included, is that saturated cosine. So a light below
 //    the horizon (n·l <= 0) gives the value at NdotL = 0: finite and non-negative, and
@@ -72,7 +72,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_STANDARD_HLSL
 #define PBR_SHADING_STANDARD_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/standard.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/conventions.hlsl"
 #include "pbr/common/guards.hlsl"

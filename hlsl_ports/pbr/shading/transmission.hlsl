@@ -35,11 +35,11 @@
 // the direction light from v continues in after entering a medium of relative index eta;
 // total internal reflection (possible for eta < 1) returns vec3(0).
 // Contract: n, v, l unit; perceptualRoughness clamped by the tier; eta in [1/16, 16].
-// float64 twin: harness/pbrlab/reference/transmission.py.
+// float64 twin: harness/pbrlab/maths/reference/transmission.py.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SHADING_TRANSMISSION_HLSL
 #define PBR_SHADING_TRANSMISSION_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/transmission.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/shading/transmission.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/conventions.hlsl"
 #include "pbr/common/guards.hlsl"

@@ -62,11 +62,11 @@
 //    tilts n away from the mesh's tangent plane) and normalised; where it is zero or within
 //    PBR_ANISOTROPY_MIN_SIN of n (sin of the angle), any tangent of n (pbr_tangent_to_world)
 //    stands in. b = cross(n, t).
-// Python twin: harness/pbrlab/reference/surface.py lighting_anisotropic.
+// Python twin: harness/pbrlab/maths/reference/surface.py lighting_anisotropic.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_ANISOTROPY_HLSL
 #define PBR_SURFACE_LIGHTING_ANISOTROPY_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_anisotropy.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_anisotropy.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/common/conventions.hlsl"
 #include "pbr/common/guards.hlsl"
 #include "pbr/ibl/importance_sampling.hlsl"

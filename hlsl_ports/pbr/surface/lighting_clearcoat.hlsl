@@ -21,7 +21,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_CLEARCOAT_HLSL
 #define PBR_SURFACE_LIGHTING_CLEARCOAT_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_clearcoat.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_clearcoat.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/surface/lighting_standard.hlsl"
 #include "pbr/shading/clearcoat.hlsl"
 

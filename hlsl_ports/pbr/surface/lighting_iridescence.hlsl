@@ -50,14 +50,14 @@
 // and specularFactor 0 ("disables the specular reflection", KHR_materials_specular) still
 // reflects the film; pbrlab keeps the weight. F0' <= F90, so the energy bookkeeping holds as
 // for any F0 <= F90. F90 = 1 is pbr_iridescent_f0 exactly (f0 / 1, 1 · x).
-// Python twin: harness/pbrlab/reference/specular_extension.py iridescent_f0_f90.
+// Python twin: harness/pbrlab/maths/reference/specular_extension.py iridescent_f0_f90.
 // iridescence = 0 returns f0 exactly (mix with weight 0); thickness 0 is pbr_F_Schlick of the
 // base (pbr_F_Iridescence's rule), so F0_film = F0 up to the inversion's float32 rounding.
-// Python twin: harness/pbrlab/reference/surface.py iridescent_f0.
+// Python twin: harness/pbrlab/maths/reference/surface.py iridescent_f0.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_IRIDESCENCE_HLSL
 #define PBR_SURFACE_LIGHTING_IRIDESCENCE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_iridescence.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_iridescence.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/common/math.hlsl"
 #include "pbr/common/guards.hlsl"
 #include "pbr/brdf/f_iridescence.hlsl"

@@ -82,7 +82,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_STANDARD_HLSL
 #define PBR_SURFACE_LIGHTING_STANDARD_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/surface/lighting_standard.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/lighting/punctual.hlsl"
 #include "pbr/ibl/environment_brdf.hlsl"
 #include "pbr/shading/standard.hlsl"

@@ -23,7 +23,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_ACES_HLSL
 #define PBR_TONEMAP_ACES_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/aces.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/aces.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 #include "pbr/common/guards.hlsl"

@@ -10,7 +10,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_EXPOSURE_HLSL
 #define PBR_TONEMAP_EXPOSURE_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/exposure.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/exposure.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 float3 pbr_apply_exposure(float3 color, float exposureEV) { return color * exp2(exposureEV); }
 

@@ -20,7 +20,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_KHRONOS_NEUTRAL_HLSL
 #define PBR_TONEMAP_KHRONOS_NEUTRAL_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/khronos_neutral.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/khronos_neutral.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/math.hlsl"
 #include "pbr/common/guards.hlsl"

@@ -22,7 +22,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_TONEMAP_REINHARD_HLSL
 #define PBR_TONEMAP_REINHARD_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/reinhard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/tonemap/reinhard.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 
 #include "pbr/common/guards.hlsl"
 #include "pbr/common/math.hlsl"

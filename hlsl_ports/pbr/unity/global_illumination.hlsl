@@ -33,7 +33,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_GLOBAL_ILLUMINATION_HLSL
 #define PBR_UNITY_GLOBAL_ILLUMINATION_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/global_illumination.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/global_illumination.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/unity/surface_standard.hlsl"
 #include "pbr/unity/lighting_legacy.hlsl"
 

@@ -19,11 +19,11 @@
 // convention (lights "pi times too bright", README): a white Lambert surface under an
 // intensity-1 light along its normal gives 1 in both. The specular is not energy-normalised:
 // pow(NdotH, Specular * 128) * Gloss * _SpecColor, as Unity. Float64 references written from
-// Lighting.cginc: harness/pbrlab/reference/unity_lighting.py.
+// Lighting.cginc: harness/pbrlab/maths/reference/unity_lighting.py.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_LIGHTING_LEGACY_HLSL
 #define PBR_UNITY_LIGHTING_LEGACY_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/lighting_legacy.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/lighting_legacy.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/unity/surface_standard.hlsl"
 
 #ifndef PBR_UNITY_SPEC_COLOR

@@ -50,7 +50,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_SURFACE_STANDARD_HLSL
 #define PBR_UNITY_SURFACE_STANDARD_HLSL
-#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/surface_standard.glsl by harness/pbrlab/port_hlsl.py: edit the GLSL, then regenerate
+#include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/surface_standard.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/surface/lighting_standard.hlsl"
 #include "pbr/unity/brdf_unity.hlsl"
 #include "pbr/ibl/environment_brdf.hlsl"

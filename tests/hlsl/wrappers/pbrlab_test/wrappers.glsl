@@ -17,7 +17,7 @@
 // Config macros read: those of the library.
 //
 // Test code, written once in GLSL: tests/hlsl ports it to HLSL with the library's own
-// generator (pbrlab.port_hlsl), so the wrappers are as mechanical as the ports they test.
+// generator (pbrlab.gpu.port_hlsl), so the wrappers are as mechanical as the ports they test.
 #ifndef PBRLAB_TEST_WRAPPERS_GLSL
 #define PBRLAB_TEST_WRAPPERS_GLSL
 

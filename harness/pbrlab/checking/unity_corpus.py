@@ -1,0 +1,194 @@
+"""Run a corpus of real Unity shaders (files nobody on this project wrote) through the
+harness as a new user would: each ``.shader`` as a scene material, rendered in HLSL (as
+written) and GLSL (its port), and report what happened to each.
+
+    python -m pbrlab.checking.unity_corpus corpus/unity --out report.json     # every shader, both languages
+    outcome = run_shader(path, "hlsl")                               # one of them
+
+An outcome is ``rendered`` (every pixel finite), ``non-finite`` (rendered, but a pixel is NaN
+or Inf: a defect), ``refused`` (a ``PbrlabError`` naming what is missing: the documented
+answer to a Unity feature the harness cannot run) or ``traceback`` (any other exception: a
+defect). The report adds GLSL/HLSL agreement for shaders rendered in both.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import sys
+import tempfile
+import traceback
+import warnings
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..foundation.errors import PbrlabError
+from ..foundation.locations import locate
+
+LANGUAGES = ("glsl", "hlsl")
+SIZE = (64, 64)
+
+
+@dataclass
+class Outcome:
+    path: str
+    language: str
+    status: str                 # rendered, non-finite, refused, traceback
+    message: str = ""
+    warnings: list = field(default_factory=list)
+    image: object = None        # HxWx4 float32 linear radiance when rendered
+
+    def summary(self) -> dict:
+        d = asdict(self)
+        d.pop("image")
+        return d
+
+
+def corpus_shaders(root: Path) -> list[Path]:
+    """Every ``.shader`` file below ``root``, sorted."""
+    return sorted(p for p in Path(root).rglob("*.shader") if p.is_file())
+
+
+def scene_for(shader: Path) -> dict:
+    """A small scene that shows a shader: a UV sphere (mesh: UVs, tangents, vertices a
+    vertex function can move) under a directional and a point light and the sky."""
+    return {
+        "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
+                   "size": list(SIZE)},
+        "lights": [
+            {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0},
+            {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
+        ],
+        "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
+        "materials": {"m": {"surface": str(shader)}},
+        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
+        "render": {"quality": "high", "tonemap": "khronos_neutral"},
+    }
+
+
+def run_shader(shader: Path, language: str) -> Outcome:
+    from ..render.renderer import render_scene
+    from ..scene.model import parse_scene
+
+    shader = Path(shader).resolve()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            scene = parse_scene(scene_for(shader), origin="corpus scene", base=shader.parent)
+            image = render_scene(scene, language=language).linear
+        except PbrlabError as exc:
+            return Outcome(str(shader), language, "refused", str(exc)[:3000],
+                           [str(w.message)[:300] for w in caught])
+        except Exception as exc:  # a defect: the report names it
+            tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
+            return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
+                           [str(w.message)[:300] for w in caught])
+    status = "rendered" if np.isfinite(image).all() else "non-finite"
+    return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
+
+
+# What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and
+# the compiler refused is a defect of the front end, not a refusal naming a Unity feature.
+_COMPILER = ("failed to compile", "HLSL failed", "error: ", "cannot find include")
+
+
+def is_compiler_error(message: str) -> bool:
+    """Whether a refusal's first line is a compiler's (a named refusal puts its reason first)."""
+    first = message.splitlines()[0] if message else ""
+    return any(word in first for word in _COMPILER)
+
+
+def without_folders(text: str) -> str:
+    """``text`` with every path cut to its file name (a key that holds on any checkout)."""
+    return re.sub(r"(?:/[^\s/:()\"']+)+/", "", text)
+
+
+def refusal_key(message: str) -> str:
+    """The part of a refusal that names the missing feature (without the file's path and line)."""
+    first = message.splitlines()[0] if message else ""
+    first = re.sub(r"^.*?\.(?:shader|cginc|glsl|json)(?::\d+)*: (?:materials\.\w+\.surface: )?(?:.*?\.shader:\d+: )?", "",
+                   first)
+    return without_folders(first)[:90]
+
+
+def agreement(a: np.ndarray, b: np.ndarray) -> float:
+    """Largest relative difference of the GLSL and HLSL renders (1e-3 floor)."""
+    return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
+
+
+def run_corpus(root: Path, progress=None) -> dict:
+    rows = []
+    for shader in corpus_shaders(root):
+        outcomes = {lang: run_shader(shader, lang) for lang in LANGUAGES}
+        row = {"path": str(shader.relative_to(root)),
+               **{lang: outcomes[lang].summary() for lang in LANGUAGES}}
+        for o in row["glsl"], row["hlsl"]:
+            o.pop("path")
+            o.pop("language")
+        if all(o.status == "rendered" for o in outcomes.values()):
+            row["glsl_hlsl_max_rel"] = agreement(outcomes["glsl"].image, outcomes["hlsl"].image)
+        rows.append(row)
+        if progress:
+            progress(row)
+    counts = {lang: {} for lang in LANGUAGES}
+    for row in rows:
+        for lang in LANGUAGES:
+            s = row[lang]["status"]
+            counts[lang][s] = counts[lang].get(s, 0) + 1
+    both = sum(all(row[lang]["status"] == "rendered" for lang in LANGUAGES) for row in rows)
+    return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
+
+
+def expected_outcomes(report: dict) -> dict:
+    """{shader: "rendered", what its refusal names, or "defect: " and a compiler's error}."""
+    expected = {}
+    for row in report["rows"]:
+        statuses = {row[lang]["status"] for lang in LANGUAGES}
+        if statuses == {"rendered"}:
+            expected[row["path"]] = "rendered"
+            continue
+        refusing = [row[lang] for lang in LANGUAGES if row[lang]["status"] != "rendered"]
+        bad = next((o for o in refusing if o["status"] == "refused" and is_compiler_error(o["message"])),
+                   refusing[0])
+        key = refusal_key(bad["message"]) if bad["status"] == "refused" else bad["status"]
+        if bad["status"] == "refused" and is_compiler_error(bad["message"]):
+            errors = [e for e in bad["message"].splitlines() if "error" in e.lower()]
+            key = "defect: " + without_folders(re.sub(r"^.*?error:?\s*", "", errors[0] if errors else key))[:80]
+        elif "rendered" in statuses:  # one language renders, the other refuses: a defect too
+            key = "defect: " + key
+        expected[row["path"]] = key
+    return expected
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m pbrlab.checking.unity_corpus", description=__doc__.split("\n\n")[0])
+    parser.add_argument("root", type=Path, help="a folder of .shader files (searched recursively)")
+    parser.add_argument("--out", type=Path, help="write the report as JSON here")
+    parser.add_argument("--expect", type=Path, help="write the outcomes as tests/unity/test_corpus.py "
+                        "expects them: {shader: \"rendered\" or what its refusal names}")
+    args = parser.parse_args(argv)
+
+    def progress(row):
+        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES)
+        first = next((row[lang]["message"] for lang in LANGUAGES if row[lang]["message"]), "")
+        print(f"{row['path']}: {marks} {first[:160]}", flush=True)
+
+    report = run_corpus(args.root, progress)
+    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']}; "
+          f"{json.dumps(report['counts'])}")
+    from ..foundation import outputs
+    if args.out:
+        with outputs.transaction([args.out]) as tx:
+            tx.write_text(args.out, json.dumps(report, indent=1) + "\n")
+    if args.expect:
+        expected = expected_outcomes(report)
+        with outputs.transaction([args.expect]) as tx:
+            tx.write_text(args.expect, json.dumps(expected, indent=1, sort_keys=True) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,99 @@
+"""What the GL context can hold, checked before a render instead of failing inside GL.
+
+Each limit is queried from the context (``ctx.info``), never assumed; llvmpipe (Mesa
+25) reports GL_MAX_TEXTURE_SIZE = GL_MAX_RENDERBUFFER_SIZE = 16384,
+GL_MAX_FRAGMENT_UNIFORM_VECTORS = 4096 and GL_MAX_TEXTURE_IMAGE_UNITS = 32. A scene
+past a limit raises SceneError with the number it may have: "at most 1920 directional
+lights" instead of a linker error, "at most 16384 pixels wide" instead of an incomplete
+framebuffer.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..foundation.errors import PbrlabError, SceneError
+
+FLOAT32_MAX = float(np.finfo(np.float32).max)
+
+# Uniform vectors (vec4 slots) per light in scene_lighting.inc: a vec3 or a float array
+# element each takes one slot. directional: direction, radiance; point: position,
+# radiance, range; spot: position, radiance, range, direction, cone.
+VECTORS_PER_LIGHT = {"directional": 2, "point": 3, "spot": 5}
+# Vectors the scene programs use besides the lights: camera (4 vec3 + viewport), two
+# mat4 and a mat3 (11), material (8), SH9 (9), samplers and flags; 256 leaves room.
+RESERVED_UNIFORM_VECTORS = 256
+# Texture units the harness takes before a material's own: the DFG table and the
+# prefiltered environment, the sheen table, the transmission copy
+# (render._SceneResources.FIRST_MATERIAL_UNIT).
+RESERVED_TEXTURE_UNITS = 4
+
+
+def _limit(ctx, name: str, fallback: int) -> int:
+    value = ctx.info.get(name, fallback)
+    if isinstance(value, (tuple, list)):
+        value = min(value)
+    return int(value)
+
+
+def max_render_size(ctx) -> int:
+    return min(_limit(ctx, "GL_MAX_TEXTURE_SIZE", 16384),
+               _limit(ctx, "GL_MAX_RENDERBUFFER_SIZE", 16384),
+               _limit(ctx, "GL_MAX_VIEWPORT_DIMS", 16384))
+
+
+def check_render_size(ctx, size, what: str = "render size") -> None:
+    w, h = size
+    most = max_render_size(ctx)
+    if not (1 <= w <= most and 1 <= h <= most):
+        raise PbrlabError(f"{what} {w}x{h}: this GL allows 1..{most} pixels per side "
+                          "(GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE, GL_MAX_VIEWPORT_DIMS)")
+
+
+def check_texture_size(ctx, size, what: str) -> None:
+    w, h = size
+    most = _limit(ctx, "GL_MAX_TEXTURE_SIZE", 16384)
+    if w > most or h > most:
+        raise PbrlabError(f"{what}: {w}x{h} pixels; this GL's textures are at most {most} "
+                          "pixels per side (GL_MAX_TEXTURE_SIZE)")
+
+
+def max_lights(ctx, light_type: str) -> int:
+    """How many lights of one type (and no others) the scene programs can hold."""
+    budget = _limit(ctx, "GL_MAX_FRAGMENT_UNIFORM_VECTORS", 1024) - RESERVED_UNIFORM_VECTORS
+    return budget // VECTORS_PER_LIGHT[light_type]
+
+
+def check_float32_products(scene) -> None:
+    """Light radiance (color x intensity) and environment radiance reach the GPU as float32:
+    each field is within float32 (json_input), their product must be too, or it is Inf."""
+    products = [(f"lights[{i}]", light.color * light.intensity) for i, light in enumerate(scene.lights)]
+    env = scene.environment
+    if env is not None and env.color is not None:
+        products.append(("environment", env.color * env.intensity))
+    for where, value in products:
+        if not np.all(np.abs(value) <= FLOAT32_MAX):
+            raise SceneError(f"{scene.source}: {where}: color x intensity = {np.max(value):.4g} is "
+                             f"beyond the float32 range (<= {FLOAT32_MAX:.8g}) the GPU computes in")
+
+
+def check_scene(ctx, scene) -> None:
+    """Refuse a scene this context cannot render, naming the limit."""
+    check_render_size(ctx, scene.camera.size, f"{scene.source}: camera.size")
+    check_float32_products(scene)
+    budget = _limit(ctx, "GL_MAX_FRAGMENT_UNIFORM_VECTORS", 1024) - RESERVED_UNIFORM_VECTORS
+    counts = {t: sum(1 for light in scene.lights if light.type == t) for t in VECTORS_PER_LIGHT}
+    used = sum(VECTORS_PER_LIGHT[t] * n for t, n in counts.items())
+    if used > budget:
+        most = ", ".join(f"at most {budget // VECTORS_PER_LIGHT[t]} {t}" for t in VECTORS_PER_LIGHT)
+        have = ", ".join(f"{n} {t}" for t, n in counts.items() if n)
+        raise SceneError(f"{scene.source}: lights: too many lights for this GL ({have}); a scene "
+                         f"holds {most} lights (fewer when types are mixed: "
+                         f"GL_MAX_FRAGMENT_UNIFORM_VECTORS = {budget + RESERVED_UNIFORM_VECTORS}, "
+                         f"{', '.join(f'{t} {v}' for t, v in VECTORS_PER_LIGHT.items())} vectors each)")
+    units = _limit(ctx, "GL_MAX_TEXTURE_IMAGE_UNITS", 16) - RESERVED_TEXTURE_UNITS
+    for name, material in scene.materials.items():
+        if len(material.textures) > units:
+            raise SceneError(f"{scene.source}: materials.{name}.textures: {len(material.textures)} "
+                             f"textures; a material binds at most {units} on this GL "
+                             "(GL_MAX_TEXTURE_IMAGE_UNITS less the environment's two)")

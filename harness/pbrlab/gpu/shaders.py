@@ -1,0 +1,350 @@
+"""GLSL source assembly: ``#include`` resolution, ``#line`` bookkeeping, error mapping.
+
+``#include "pbr/brdf/d_ggx.glsl"`` is resolved against the include path: the caller's
+directories first, then the library root ``glsl/``. A file is expanded where it is
+included; a file wrapped in its own include guard is expanded once when its first
+inclusion was outside any ``#if`` (a second copy would preprocess to nothing), so the
+compiler reads each library file once. A file that includes itself is an error.
+
+Each expanded file k gets a GLSL source-string number k and its lines are numbered
+from ``k * LINE_BLOCK``, both announced with ``#line``. The file is recovered from the
+line number alone, because Mesa's compiler sometimes reports the source-string number
+of the file that was being read when the error surfaced rather than the file of the
+line (seen with Mesa 22.3: an undeclared identifier in an include blamed on the
+includer). A message "N:L(col): error: ..." maps back to ``path:line:col``.
+``ShaderCompileError`` carries the mapped messages: ``path:line:col: error: ...``.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import moderngl
+
+from ..foundation.errors import LoopLimitWarning, PbrlabError, ShaderCompileError
+from ..foundation.locations import locate
+
+GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
+UMBRELLA_INCLUDE = "pbr/pbr.glsl"
+LINE_BLOCK = 100000  # lines per file in the #line numbering; files are far shorter
+
+# Files whose lines were classified (_scan), by content: a scene's dozen programs read the
+# same thirty library files, and classifying their lines again cost 0.3 s of a render.
+_SCANS_KEPT = 512
+_INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*(//.*)?$')
+_VERSION = re.compile(r"^\s*#\s*version\b")
+_IF = re.compile(r"^\s*#\s*if(n?def)?\b")
+_ENDIF = re.compile(r"^\s*#\s*endif\b")
+_GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*ifndef\s+(\w+)\s*\n\s*#\s*define\s+\1\b.*#\s*endif[^\n]*\s*\Z", re.S)
+
+
+@functools.lru_cache(maxsize=_SCANS_KEPT)
+def _is_guarded(text: str) -> bool:
+    """True when the whole file sits inside its own #ifndef/#define/#endif guard."""
+    return _GUARD.match(text) is not None
+# Mesa: "0:12(5): error: ...";  glslang: "ERROR: 0:12: ..."
+_MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(error|warning)?:?\s*(.*)$")
+
+
+@dataclass(frozen=True)
+class VirtualFile:
+    """Text that ``expand`` includes under a name without a file on disk: a program made in
+    memory (a Unity shader's GLSL port), reported as the file ``display`` from line
+    ``first_line`` (where that text starts in it)."""
+
+    text: str
+    display: str
+    first_line: int = 1
+
+
+@dataclass
+class Source:
+    """An expanded shader: GLSL text plus the table from source-string number to path."""
+
+    text: str
+    files: list[str] = field(default_factory=list)
+    paths: list[Path] = field(default_factory=list)  # every include file read (resolved)
+    probed: list[Path] = field(default_factory=list)  # every place an include was looked for
+
+    def map_messages(self, log: str) -> str:
+        """Rewrite compiler messages from 'N:L(C)' to 'path:L:C'."""
+        out = []
+        for line in log.splitlines():
+            m = _MESA_MESSAGE.match(line.strip())
+            if m:
+                file_index, line_number = divmod(int(m.group(2)), LINE_BLOCK)
+                if file_index >= len(self.files):
+                    out.append(line.rstrip())
+                    continue
+                kind = m.group(4) or "error"
+                out.append(f"{self.files[file_index]}:{line_number}:{m.group(3)}: {kind}: {m.group(5)}")
+            elif line.strip() and not set(line.strip()) <= {"="} and line.strip() != "GLSL Compiler failed":
+                out.append(line.rstrip())
+        return "\n".join(out)
+
+
+def include_path(extra_dirs=()) -> list[Path]:
+    """The directories searched for an include, in order."""
+    return [Path(d) for d in extra_dirs] + [GLSL_ROOT]
+
+
+def resolve_include(name: str, search: list[Path], probed: list | None = None) -> Path | None:
+    """The first file ``name`` in ``search``; each place looked at is added to ``probed``
+    (a file created there later would change the answer: source_cache checks them)."""
+    for directory in search:
+        candidate = directory / name
+        if probed is not None:
+            probed.append(candidate)
+        if candidate.is_file():
+            return candidate.resolve()
+    return None
+
+
+@functools.lru_cache(maxsize=8)
+def _resolved(folder: Path) -> Path:
+    return folder.resolve()
+
+
+def _display_name(path: Path) -> str:
+    try:
+        return str(path.relative_to(_resolved(GLSL_ROOT)))
+    except ValueError:
+        return str(path)
+
+
+def _ends_in_block_comment(line: str, in_comment: bool) -> bool:
+    """Whether a ``/* */`` comment is still open at the end of ``line`` (open at its start
+    when ``in_comment``); ``//`` ends the line's code."""
+    if "/" not in line:  # no comment opens or closes here
+        return in_comment
+    i = 0
+    while i < len(line):
+        pair = line[i:i + 2]
+        if in_comment:
+            if pair == "*/":
+                in_comment, i = False, i + 2
+                continue
+        elif pair == "//":
+            return False
+        elif pair == "/*":
+            in_comment, i = True, i + 2
+            continue
+        i += 1
+    return in_comment
+
+
+@dataclass(frozen=True)
+class _Line:
+    """One line of a shader file as ``expand`` reads it (_scan)."""
+    text: str              # as written
+    out: str               # as emitted when it is not an include: '#include' neutralised
+    in_comment: bool       # starts inside a /* */ comment: commentary, whatever it holds
+    depth_step: int        # +1 for #if/#ifdef/#ifndef, -1 for #endif, else 0
+    version: bool          # a #version line
+    include: str | None    # the name of an #include "..." line
+
+
+@functools.lru_cache(maxsize=_SCANS_KEPT)
+def _scan(body: str) -> tuple[_Line, ...]:
+    """The lines of a file's text, classified once per distinct text (a file always starts
+    outside a comment, so its lines classify the same wherever it is included)."""
+    lines = []
+    in_comment = False
+    for line in body.splitlines():
+        starts_in_comment, in_comment = in_comment, _ends_in_block_comment(line, in_comment)
+        out = line.replace("#include", "# include")
+        if starts_in_comment:
+            lines.append(_Line(line, out, True, 0, False, None))
+            continue
+        step = 1 if _IF.match(line) else -1 if _ENDIF.match(line) else 0
+        m = _INCLUDE.match(line)
+        lines.append(_Line(line, out, False, step, _VERSION.match(line) is not None,
+                           m.group(1) if m else None))
+    return tuple(lines)
+
+
+def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True,
+           virtual: dict | None = None) -> Source:
+    """Expand the includes of ``text`` (named ``name`` in messages).
+
+    With ``line_directives`` every file switch emits ``#line``; without, files are
+    separated by comments (for amalgamation). A ``#version`` line stays first.
+    ``virtual`` maps include names to ``VirtualFile``s, found before any directory.
+    """
+    virtual = virtual or {}
+    search = include_path(include_dirs)
+    source = Source("", [])
+    # A guarded file included once outside any #if is written once: a second copy would
+    # be empty after preprocessing. Includes inside conditionals are always expanded.
+    emitted_guarded: set[Path] = set()
+    resolved: dict[str, Path | None] = {}  # include name -> file, once per expansion
+    texts: dict[Path, str] = {}  # file -> its text, read once per expansion
+    lines_out: list[str] = []
+    version_line: list[str] = []
+
+    def emit_line_marker(file_index: int, next_line: int):
+        if line_directives:
+            lines_out.append(f"#line {file_index * LINE_BLOCK + next_line} {file_index}")
+
+    def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool, first_line: int = 1):
+        file_index = len(source.files)
+        source.files.append(display)
+        emit_line_marker(file_index, first_line)
+        depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
+        for number, scanned in enumerate(_scan(body), start=first_line):
+            if scanned.in_comment:  # commentary, whatever it looks like (an #include, an #if)
+                lines_out.append(scanned.out)
+                continue
+            depth += scanned.depth_step
+            if scanned.version:
+                if not version_line and not stack[:-1]:
+                    version_line.append(scanned.text.strip())
+                    lines_out.append("")  # keep line numbers: the #version line is hoisted
+                    continue
+                raise PbrlabError(f"{display}:{number}: #version is allowed only in the entry shader")
+            if scanned.include is None:
+                # moderngl resolves '#include' wherever it appears, comments included;
+                # what is left after expansion is commentary, so it is neutralised.
+                lines_out.append(scanned.out)
+                continue
+            included = scanned.include
+            if included in virtual:
+                made = virtual[included]
+                marker = Path(f"<virtual {included}>")
+                if marker in stack:
+                    raise PbrlabError(f"{display}:{number}: include cycle through {made.display}")
+                walk(made.text, made.display, stack + (marker,), conditional or depth > 0, made.first_line)
+                emit_line_marker(file_index, number + 1)
+                continue
+            if included not in resolved:  # once per name and expansion: the search path is fixed
+                resolved[included] = resolve_include(included, search, source.probed)
+            target = resolved[included]
+            if target is None and (conditional or depth > 0):
+                # under an #if: the compiler's preprocessor decides whether this line is read, so
+                # the missing file is an #error there (reported at this file and line if it is)
+                lines_out.append(f'#error cannot find include "{included}"')
+                continue
+            if target is None:
+                raise PbrlabError(
+                    f"{display}:{number}: cannot find include \"{included}\" "
+                    f"(searched: {', '.join(str(d) for d in search)})")
+            if target in stack:
+                chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
+                raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
+            source.paths.append(target)
+            inside_conditional = conditional or depth > 0
+            if target in emitted_guarded:  # read once already, in this expansion
+                lines_out.append(f"// ---- {included}: already above (include guard)")
+                continue
+            if target not in texts:
+                texts[target] = read_source(target, f"{display}:{number}: ")
+            body = texts[target]
+            if _is_guarded(body) and not inside_conditional:
+                emitted_guarded.add(target)
+            if not line_directives:
+                lines_out.append(f"// ---- begin {included}")
+            walk(body, _display_name(target), stack + (target,), inside_conditional)
+            if line_directives:
+                emit_line_marker(file_index, number + 1)
+            else:
+                lines_out.append(f"// ---- end {included}")
+
+    walk(text, name, (Path("<entry>"),), False)
+    head = version_line or []
+    source.text = "\n".join(head + lines_out) + "\n"
+    return source
+
+
+BOM = "\ufeff"  # U+FEFF, a UTF-8 byte-order mark (EF BB BF) when it opens a file
+
+
+def strip_bom(text: str) -> str:
+    """``text`` without a leading byte-order mark, which editors on Windows write and no
+    shader compiler reads (glslang: "unexpected HASH_TOKEN" at the first #)."""
+    return text[1:] if text.startswith(BOM) else text
+
+
+def read_source(path: Path, where: str = "") -> str:
+    """A shader file's text; unreadable or non-UTF-8 files raise PbrlabError naming it
+    (``where``: the includer's file and line, when there is one)."""
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise PbrlabError(f"{where}cannot read shader file {path}: {exc.strerror or exc}") from None
+    try:
+        return strip_bom(data.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise PbrlabError(f"{where}{path}:{line}: not UTF-8 text (byte 0x{data[exc.start]:02x} "
+                          f"at offset {exc.start}); save the shader as UTF-8") from None
+
+
+def expand_file(path: str | Path, include_dirs=(), line_directives: bool = True) -> Source:
+    path = Path(path)
+    if not path.is_file():
+        raise PbrlabError(f"{path}: no such shader file")
+    source = expand(read_source(path), str(path),
+                    include_dirs=(path.parent, *include_dirs), line_directives=line_directives)
+    source.paths.insert(0, path.resolve())
+    return source
+
+
+def amalgamate(entry: str | Path, include_dirs=()) -> str:
+    """One self-contained GLSL file: every include inlined, no #include left."""
+    return expand_file(entry, include_dirs, line_directives=False).text
+
+
+# llvmpipe (Mesa's gallivm) ends every loop after this many iterations, without an error:
+# LP_MAX_TGSI_LOOP_ITERATIONS in src/gallium/auxiliary/gallivm/lp_bld_limits.h.
+LLVMPIPE_LOOP_LIMIT = 65535
+# for (int i = START; i < N; ...) / i <= N with literal START and N
+_FOR_LOOP = re.compile(r"\bfor\s*\(\s*(?:int|uint|float)?\s*(\w+)\s*=\s*(-?\d+)[uU]?\s*;"
+                       r"\s*\1\s*(<=?)\s*(\d+)[uU]?\s*;")
+_LINE_DIRECTIVE = re.compile(r"^\s*#\s*line\s+(\d+)(?:\s+(\d+))?")
+
+
+def loop_limit_warnings(source: Source, limit: int = LLVMPIPE_LOOP_LIMIT) -> list[str]:
+    """``path:line: ...`` for each for-loop with literal bounds running past ``limit``.
+    Loops with bounds known only at run time are not seen."""
+    found = []
+    file_index, line_number = 0, 0
+    for raw in source.text.splitlines():
+        if "line" not in raw and "for" not in raw:  # neither a #line nor a loop: skip the patterns
+            line_number += 1
+            continue
+        m = _LINE_DIRECTIVE.match(raw)
+        if m:  # the next line is line L of file K (#line K * LINE_BLOCK + L K)
+            file_index, next_line = divmod(int(m.group(1)), LINE_BLOCK)
+            line_number = next_line - 1
+            continue
+        line_number += 1
+        loop = _FOR_LOOP.search(raw)
+        if loop:
+            count = int(loop.group(4)) - int(loop.group(2)) + (1 if loop.group(3) == "<=" else 0)
+            if count > limit:
+                where = source.files[file_index] if file_index < len(source.files) else "<shader>"
+                found.append(f"{where}:{line_number}: a loop of {count} iterations; this renderer "
+                             f"stops every loop after {limit} and uses the partial result")
+    return found
+
+
+def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> moderngl.Program:
+    """Compile and link; errors are reported at the original file and line. On llvmpipe a
+    loop with literal bounds past its iteration cap gives a LoopLimitWarning naming it."""
+    if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
+        for stage in (vertex, fragment):
+            for message in loop_limit_warnings(stage):
+                warnings.warn(message, LoopLimitWarning, stacklevel=2)
+    try:
+        return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
+    except moderngl.Error as exc:
+        log = str(exc)
+        stage, stage_name = ((fragment, "fragment") if "fragment_shader" in log
+                             else (vertex, "vertex"))
+        messages = "\n".join(line for line in stage.map_messages(log).splitlines()
+                             if line.strip() not in ("fragment_shader", "vertex_shader"))
+        raise ShaderCompileError(f"{stage_name} shader failed to compile:\n{messages}") from None

@@ -1,0 +1,1293 @@
+"""The type pass of ``pbrlab port-unity``: where Cg/HLSL converts a value implicitly and GLSL
+330 refuses, spell the conversion out; change nothing else (whitespace, comments and line
+breaks stay byte for byte, so the port keeps the original's line numbers).
+
+    text = convert(program_text)       # Cg spellings in, Cg spellings out (port.py renames types)
+
+How: a tokenizer and a recursive-descent parser for the Cg subset surface shaders use
+(structs, globals, functions with in/out/inout parameters and semantics; declarations,
+assignments, if/else, for/while/do, return, discard; C-precedence expressions, ternaries,
+calls, constructors, swizzles, indexing, casts) infer each expression's type against a
+symbol table: the program's own structs, globals and functions, and the GLSL library the
+harness includes before it (pbr/unity/, unity_compat/, the harness's unity_surface.inc),
+whose declarations are read by the same parser (``library()``); the Cg intrinsics have
+generic rules (``_INTRINSICS``). The parser records edits (text inserted before or after an
+expression, or a token's text replaced); ``convert`` applies them to the original text.
+An expression of unknown type is never touched, and a top-level declaration the parser
+cannot read keeps its text (``Result.skipped`` names them).
+
+Conversions (HLSL semantics -> GLSL spelling), inserted in Cg spelling (``float3(``):
+  * vector op vector of different sizes: the larger truncated (``.xyz``; a swizzle already
+    there is shortened: ``c.rgba * v3`` -> ``c.rgb * v3``);
+  * assignment, initialisation, return and argument passing: a larger vector truncated to
+    the target, a scalar splatted (``float3(x)``), float -> int/uint/bool and bool -> float
+    through a constructor (GLSL 330 converts int -> float itself: left alone);
+  * Cg intrinsics: the HLSL result size (the smallest vector argument), larger arguments
+    truncated, scalars promoted where GLSL has no scalar overload (``max(0, v)``,
+    ``step(v, 0.5)``, ``lerp(a3, b3, t4)``);
+  * conditions (if, loops, ``?:``, ``!``, ``&&``, ``||``) of a non-bool scalar: ``bool(x)``;
+    ``?:`` branches of different sizes brought to HLSL's common type;
+  * vector comparisons ``a < b`` -> ``lessThan(a, b)`` (and the other five);
+  * float ``%`` -> ``fmod`` (cg_compat.glsl); a float index -> ``int(i)``;
+  * swizzles of scalars: ``x.xxx`` -> ``float3(x)``, ``x.x`` -> ``x``;
+  * casts ``(float3)x`` -> ``float3(x)``; array initialisers ``{1, 2, 3}`` -> ``float[3](1, 2, 3)``;
+  * matrices: ``floatRxC(rows...)`` -> ``transpose(floatCxR(rows...))`` (HLSL's constructor
+    takes rows, GLSL's columns; port.py names floatRxC matCxR), ``m[i]`` read as a row ->
+    ``transpose(m)[i]`` (a row written, ``m[i] = v``, is left: a known gap);
+  * literal suffixes GLSL lacks (``0.5h``) dropped; ``[unroll]``-style attributes dropped;
+  * ``static`` dropped, ``uniform`` added to the other global variables, ``inline`` dropped;
+  * identifiers that are GLSL reserved words or the names cg_compat.glsl's macros expand to
+    (``input``, ``filter``, ``sample``, ``mix``, ``fract``, ...) -> ``pbr_unity_<name>``.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+# --- types -------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Type:
+    """base: float, int, uint, bool (numeric), a struct name, a sampler name or void; dim:
+    1 scalar, 2-4 vector, rows of a matrix (cols > 0), 0 for non-numeric; array: its length
+    (-1 unsized), 0 when not an array."""
+    base: str
+    dim: int = 1
+    cols: int = 0
+    array: int = 0
+
+    @property
+    def numeric(self):
+        return self.base in _BASES and self.dim >= 1 and not self.array
+
+    @property
+    def scalar(self):
+        return self.numeric and self.dim == 1 and not self.cols
+
+    @property
+    def vector(self):
+        return self.numeric and self.dim > 1 and not self.cols
+
+    @property
+    def matrix(self):
+        return self.numeric and self.cols > 0
+
+    def element(self):
+        return Type(self.base, self.dim, self.cols)
+
+    def cg(self) -> str:
+        """The Cg spelling (port.py renames it)."""
+        if self.cols:
+            return f"{self.base}{self.dim}x{self.cols}"
+        if self.base in _BASES:
+            return self.base + (str(self.dim) if self.dim > 1 else "")
+        return self.base
+
+
+_BASES = ("float", "int", "uint", "bool")
+_CG_BASE = {"float": "float", "half": "float", "fixed": "float", "double": "float",
+            "min16float": "float", "min10float": "float", "int": "int", "min16int": "int",
+            "uint": "uint", "min16uint": "uint", "dword": "uint", "bool": "bool"}
+_CG_TYPE = re.compile(r"(float|half|fixed|double|min16float|min10float|int|min16int|uint|min16uint|dword|bool)"
+                      r"(?:([1-4])(?:x([1-4]))?)?")
+_GLSL_TYPE = re.compile(r"(?:(vec|ivec|uvec|bvec)([2-4])|mat([2-4])(?:x([2-4]))?)")
+_GLSL_VEC_BASE = {"vec": "float", "ivec": "int", "uvec": "uint", "bvec": "bool"}
+_OPAQUE = re.compile(r"sampler(?:1D|2D|3D|CUBE|Cube|2DShadow|2D_float|2D_half|CUBE_float|CUBE_half|2DArray)?|"
+                     r"Texture[123]D(?:Array)?|TextureCube|SamplerState|SamplerComparisonState")
+VOID = Type("void", 0)
+
+
+def builtin_type(name: str) -> Type | None:
+    m = _CG_TYPE.fullmatch(name)
+    if m:
+        base, n, c = _CG_BASE[m.group(1)], int(m.group(2) or 1), int(m.group(3) or 0)
+        return Type(base, n, c) if not (c and base == "bool") else Type(base, n, c)
+    m = _GLSL_TYPE.fullmatch(name)
+    if m:
+        if m.group(1):
+            return Type(_GLSL_VEC_BASE[m.group(1)], int(m.group(2)))
+        cols = int(m.group(3))
+        rows = int(m.group(4) or cols)
+        return Type("float", rows, cols)  # GLSL matCxR: C columns, R rows
+    if name == "void":
+        return VOID
+    if _OPAQUE.fullmatch(name):
+        return Type(name.replace("Cube", "CUBE"), 0)
+    return None
+
+
+def _splat(t: Type, n: int) -> Type:
+    return Type(t.base, n)
+
+
+# --- tokens ------------------------------------------------------------------------------
+
+@dataclass
+class Tok:
+    kind: str      # id, num, op, str
+    text: str
+    s: int
+    e: int
+
+
+_TOKEN = re.compile(r"""
+    (?P<ws>\s+)
+  | (?P<comment>//[^\n]*|/\*.*?\*/)
+  | (?P<pp>\#(?:[^\n\\]|\\.)*(?:\\\n(?:[^\n\\]|\\.)*)*)
+  | (?P<num>0[xX][0-9a-fA-F]+[uUlL]*|(?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?[fFhHlLuU]*)
+  | (?P<id>[A-Za-z_]\w*)
+  | (?P<str>"(?:[^"\\\n]|\\.)*")
+  | (?P<op><<=|>>=|\+\+|--|<<|>>|<=|>=|==|!=|&&|\|\||\+=|-=|\*=|/=|%=|&=|\|=|\^=|->|::|[-+*/%<>=!~&|^?:;,.(){}\[\]])
+""", re.S | re.X)
+
+
+def tokenize(text: str):
+    """(tokens, directive spans): comments and whitespace dropped, preprocessor lines apart."""
+    toks, directives, pos, line_start = [], [], 0, True
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if not m:
+            raise CgSyntaxError(f"unexpected character {text[pos]!r}", pos)
+        kind = m.lastgroup
+        if kind == "pp" and not line_start:
+            raise CgSyntaxError("'#' inside a line", pos)
+        if kind == "pp":
+            directives.append((m.start(), m.end()))
+        elif kind not in ("ws", "comment"):
+            toks.append(Tok(kind, m.group(0), m.start(), m.end()))
+        if kind in ("ws", "comment"):
+            line_start = line_start or "\n" in m.group(0)
+        else:
+            line_start = False
+        pos = m.end()
+    return toks, directives
+
+
+class CgSyntaxError(Exception):
+    def __init__(self, message, pos):
+        super().__init__(message)
+        self.pos = pos
+
+
+# --- edits -------------------------------------------------------------------------------
+
+class Edits:
+    """Insertions before/after expressions and token replacements, applied in one pass.
+    At one position, closing text (after an expression) precedes opening text (before the
+    next); nested openings run outer first, nested closings inner first."""
+
+    def __init__(self):
+        self.items = {}    # id -> (pos, side, order, text) ; side 0 close, 1 open, 2 replace
+        self.seq = 0
+
+    def _add(self, item):
+        self.seq += 1
+        self.items[self.seq] = item
+        return self.seq
+
+    def open(self, pos, text):
+        return self._add((pos, 1, -self.seq, text, pos))
+
+    def close(self, pos, text):
+        return self._add((pos, 0, self.seq, text, pos))
+
+    def replace(self, s, e, text):
+        return self._add((s, 2, 0, text, e))
+
+    def mark(self):
+        return self.seq
+
+    def drop_after(self, mark):
+        for k in [k for k in self.items if k > mark]:
+            del self.items[k]
+
+    def drop(self, ids):
+        for k in ids:
+            self.items.pop(k, None)
+
+    def apply(self, text: str) -> str:
+        items = sorted(self.items.values(), key=lambda it: (it[0], it[1], it[2]))
+        out, pos = [], 0
+        for p, side, _, t, end in items:
+            if p < pos:  # inside a replaced span: cannot happen for well-formed edits
+                continue
+            out.append(text[pos:p])
+            out.append(t)
+            pos = end if side == 2 else p
+        out.append(text[pos:])
+        return "".join(out)
+
+
+# --- symbols -----------------------------------------------------------------------------
+
+@dataclass
+class Param:
+    qual: str      # in, out, inout
+    type: Type
+
+
+@dataclass
+class Signature:
+    ret: Type
+    params: list
+
+
+_NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
+                            r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
+
+
+@dataclass
+class Symbols:
+    structs: dict = field(default_factory=dict)    # name -> {field: Type}
+    functions: dict = field(default_factory=dict)  # name -> [Signature]
+    globals: dict = field(default_factory=dict)    # name -> Type
+    aliases: dict = field(default_factory=dict)    # object-like #define NAME OTHER
+
+    def copy(self):
+        return Symbols({k: dict(v) for k, v in self.structs.items()},
+                       {k: list(v) for k, v in self.functions.items()},
+                       dict(self.globals), dict(self.aliases))
+
+
+LIBRARY_FILES = (  # what the harness's GLSL path includes before a port (generate.py)
+    "glsl/unity_compat/cg_compat.glsl", "glsl/unity_compat/shader_variables.glsl",
+    "glsl/pbr/surface/lighting_standard.glsl", "glsl/pbr/unity/brdf_unity.glsl",
+    "glsl/pbr/unity/unity_cg.glsl", "glsl/pbr/unity/surface_standard.glsl",
+    "glsl/pbr/unity/lighting_legacy.glsl", "glsl/pbr/unity/global_illumination.glsl",
+    "templates/unity_surface.inc")
+
+
+def library_file(rel: str) -> Path:
+    """A file of LIBRARY_FILES where this install keeps it (checkout or package data)."""
+    from ...foundation.locations import locate
+    if rel.startswith("templates/"):
+        return Path(__file__).resolve().parents[2] / rel
+    tree, _, rest = rel.partition("/")
+    return locate(tree) / rest
+
+
+@functools.lru_cache(maxsize=1)
+def library() -> Symbols:
+    """The declarations of the GLSL files the port is compiled after (bodies not read)."""
+    symbols = Symbols()
+    for rel in LIBRARY_FILES:
+        path = library_file(rel)
+        if path.is_file():
+            text = path.read_text(encoding="utf-8")
+            _Parser(text, symbols, declarations_only=True).program()
+            for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", text, re.M):
+                symbols.aliases.setdefault(m.group(1), m.group(2))
+    return symbols
+
+
+# --- the Cg intrinsics -------------------------------------------------------------------
+# name -> (kind, positions where GLSL accepts a scalar beside vectors). Kinds: "same"
+# (elementwise: the HLSL result has the smallest vector argument's size), "scalar" (dot,
+# length, distance: float), "bool1" (any, all), "cross" (float3), "first" (reflect, refract:
+# the first argument's type).
+_INTRINSICS = {
+    **{n: ("same", ()) for n in (
+        "abs", "sign", "floor", "ceil", "round", "trunc", "frac", "exp", "exp2", "log", "log2",
+        "sqrt", "rsqrt", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh",
+        "saturate", "normalize", "radians", "degrees", "ddx", "ddy", "fwidth", "atan2")},
+    "min": ("same", (1,)), "max": ("same", (1,)), "clamp": ("same", (1, 2)),
+    "lerp": ("same", (2,)), "step": ("same", (0,)), "smoothstep": ("same", (0, 1)),
+    "pow": ("same", (1,)), "fmod": ("same", (1,)),
+    "dot": ("scalar", ()), "distance": ("scalar", ()), "length": ("scalar", ()),
+    "any": ("bool1", None), "all": ("bool1", None),
+    "cross": ("cross", ()), "reflect": ("first", ()), "refract": ("first", (2,)),
+    "faceforward": ("first", ()),
+}
+_KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "continue", "if", "for",
+             "while", "do", "switch", "struct", "typedef", "true", "false"}
+_COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
+            "==": "equal", "!=": "notEqual"}
+_SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
+_QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
+               "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
+               "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
+# Names a Cg program may use that GLSL 330 reserves (keywords and reserved words) or that
+# cg_compat.glsl's macros expand to (lerp -> mix, ...): renamed pbr_unity_<name> wherever
+# the program uses them as names.
+RESERVED = frozenset("""
+    attribute varying layout centroid flat smooth noperspective patch sample subroutine invariant
+    precise common partition active asm class union enum typedef template this packed resource
+    goto noinline public external interface long short superp input output filter sizeof cast
+    namespace using coherent restrict readonly writeonly buffer shared atomic_uint lowp mediump
+    highp precision hvec2 hvec3 hvec4 fvec2 fvec3 fvec4 dvec2 dvec3 dvec4 union image1D image2D
+    image3D imageCube mix fract inversesqrt dFdx dFdy samplerCube texture lessThan greaterThan
+    lessThanEqual greaterThanEqual equal notEqual
+""".split())
+RENAME_PREFIX = "pbr_unity_"
+
+
+@dataclass
+class E:
+    """A typed expression: its text span, type (None: unknown), whether a swizzle can be
+    appended without parentheses, and the swizzle it ends with, if any."""
+    s: int
+    e: int
+    t: Type | None
+    postfix: bool = True
+    swizzle: tuple | None = None     # (start, end, letters) of a trailing vector swizzle
+    row_index: tuple = ()            # edit ids of a matrix row read (dropped if written)
+    literal: bool = False
+
+
+class _Parser:
+    def __init__(self, text, symbols: Symbols, declarations_only=False):
+        self.text = text
+        self.toks, self.directives = tokenize(text)
+        self.i = 0
+        self.sym = symbols
+        for m in _NUMBER_DEFINE.finditer(text):  # `#define MAX_STEPS 10`: a constant of the literal's type
+            literal = m.group(2)
+            base = "float" if re.search(r"[.eEfFhH]", literal) else "uint" if literal[-1] in "uU" else "int"
+            symbols.globals.setdefault(m.group(1), Type(base))
+        self.edits = Edits()
+        self.scopes = []
+        self.ret = None
+        self.decl_only = declarations_only
+        self.skipped = []
+
+    # token helpers
+    def peek(self, k=0):
+        j = self.i + k
+        return self.toks[j] if j < len(self.toks) else Tok("eof", "", len(self.text), len(self.text))
+
+    def next(self):
+        t = self.peek()
+        self.i += 1
+        return t
+
+    def at(self, text, k=0):
+        t = self.peek(k)
+        return t.kind in ("op", "id") and t.text == text
+
+    def accept(self, text):
+        if self.at(text):
+            return self.next()
+        return None
+
+    def expect(self, text):
+        t = self.next()
+        if t.text != text:
+            raise CgSyntaxError(f"expected {text!r}, found {t.text!r}", t.s)
+        return t
+
+    def fail(self, what):
+        raise CgSyntaxError(what, self.peek().s)
+
+    def name(self):
+        t = self.next()
+        if t.kind != "id":
+            raise CgSyntaxError(f"expected a name, found {t.text!r}", t.s)
+        if t.text in RESERVED and not self.decl_only:
+            self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
+        return t
+
+    # symbols
+    def resolve_alias(self, name):
+        seen = 0
+        while name in self.sym.aliases and seen < 8:
+            name, seen = self.sym.aliases[name], seen + 1
+        return name
+
+    def type_named(self, name):
+        t = builtin_type(name)
+        if t is not None:
+            return t
+        name = self.resolve_alias(name)
+        t = builtin_type(name)
+        if t is not None:
+            return t
+        if name in self.sym.structs:
+            return Type(name, 0)
+        return None
+
+    def lookup(self, name):
+        for scope in reversed(self.scopes):
+            if name in scope:
+                return scope[name]
+        if name in self.sym.globals:
+            return self.sym.globals[name]
+        alias = self.resolve_alias(name)
+        return self.sym.globals.get(alias)
+
+    def declare(self, name, t):
+        if self.scopes:
+            self.scopes[-1][name] = t
+        else:
+            self.sym.globals[name] = t
+
+    # --- top level
+    def program(self):
+        while self.peek().kind != "eof":
+            start, mark = self.i, self.edits.mark()
+            try:
+                self.external()
+            except CgSyntaxError:
+                self.edits.drop_after(mark)
+                self.scopes, self.ret = [], None
+                self.i = start
+                self.skip_declaration()
+                self.skipped.append(self.line(self.toks[start].s))
+        return self
+
+    def line(self, pos):
+        return self.text.count("\n", 0, pos) + 1
+
+    def skip_declaration(self):
+        depth, opened = 0, False
+        while self.peek().kind != "eof":
+            t = self.next()
+            if t.text in "({[" and t.kind == "op":
+                depth += 1
+                opened = opened or t.text == "{"
+            elif t.text in ")}]" and t.kind == "op":
+                depth -= 1
+                if depth <= 0 and t.text == "}" and opened:
+                    self.accept(";")
+                    return
+            elif t.text == ";" and depth <= 0:
+                return
+
+    def qualifiers(self):
+        quals = []
+        while self.peek().kind == "id" and self.peek().text in _QUALIFIERS and self.type_named(self.peek().text) is None:
+            quals.append(self.next())
+        return quals
+
+    def external(self):
+        if self.accept(";"):
+            return
+        if self.at("struct"):
+            return self.struct()
+        if self.at("typedef"):
+            self.fail("typedef")
+        first = self.peek()
+        if first.text == "[":  # [maxvertexcount(3)], [numthreads(...)]: kept as written
+            self.skip_balanced("[", "]")
+            return
+        if first.kind == "id" and self.type_named(first.text) is None and first.text not in _QUALIFIERS \
+                and first.text != "struct" and not self.opaque_ahead() and not self.at("(", 1):
+            self.next()  # a bare macro at file scope: CBUFFER_END, UNITY_INSTANCING_BUFFER_END
+            return
+        if first.kind == "id" and self.at("(", 1) and self.type_named(first.text) is None:
+            # a macro at file scope: UNITY_INSTANCING_BUFFER_START(Props), UNITY_DECLARE_TEX2D(x);
+            self.next()
+            self.skip_balanced("(", ")")
+            self.accept(";")
+            return
+        quals = self.qualifiers()
+        t = self.type_spec()
+        if t is None:
+            self.fail("expected a type")
+        if self.peek().kind == "id" and self.at("(", 1):
+            return self.function(t, quals)
+        words = {q.text for q in quals}
+        if not self.decl_only:
+            for q in quals:
+                if q.text in ("static", "inline"):
+                    self.delete_word(q)
+            if not words & {"static", "const", "uniform", "extern"} and t.base != "void":
+                self.edits.open(first.s, "uniform ")
+        self.declarators(t, is_global=True, const="const" in words)
+        self.expect(";")
+
+    def delete_word(self, tok):
+        end = tok.e
+        while end < len(self.text) and self.text[end] in " \t":
+            end += 1
+        self.edits.replace(tok.s, end, "")
+
+    def skip_balanced(self, open_, close):
+        self.expect(open_)
+        depth = 1
+        while depth:
+            t = self.next()
+            if t.kind == "eof":
+                self.fail("unbalanced")
+            if t.text == open_:
+                depth += 1
+            elif t.text == close:
+                depth -= 1
+
+    def opaque_ahead(self, j=0):
+        """An unknown name followed by a name: a type from an include the pass does not read
+        (v2f_surf, appdata_t, LeafSurfaceOutput): a declaration of a value of unknown type."""
+        t, n = self.peek(j), self.peek(j + 1)
+        return t.kind == "id" and n.kind == "id" and self.type_named(t.text) is None \
+            and t.text not in _KEYWORDS and t.text not in _QUALIFIERS and n.text not in _KEYWORDS \
+            and self.type_named(n.text) is None and n.text not in _QUALIFIERS
+
+    def type_spec(self):
+        t = self.peek()
+        if t.kind != "id":
+            return None
+        if self.opaque_ahead():
+            self.next()
+            return Type(t.text, 0)
+        if t.text == "struct":  # struct Name as a type
+            self.next()
+            return self.type_spec()
+        ty = self.type_named(t.text)
+        if ty is None:
+            return None
+        self.next()
+        if ty.base in ("Texture2D",) and self.at("<"):
+            self.skip_balanced("<", ">")
+        return ty
+
+    def struct(self):
+        self.expect("struct")
+        name = self.name().text
+        fields = {}
+        self.sym.structs[name] = fields
+        self.expect("{")
+        while not self.accept("}"):
+            if self.accept(";"):
+                continue
+            self.qualifiers()
+            t = self.type_spec()
+            if t is None:
+                # a macro member: INTERNAL_DATA, UNITY_FOG_COORDS(3), UNITY_VERTEX_INPUT_INSTANCE_ID
+                tok = self.next()
+                if tok.kind != "id":
+                    self.fail("struct member")
+                if self.at("("):
+                    self.skip_balanced("(", ")")
+                self.accept(";")
+                continue
+            while True:
+                n = self.name().text
+                ft = self.array_suffix(t)
+                self.semantic()
+                fields[n] = ft
+                if not self.accept(","):
+                    break
+            self.expect(";")
+        if self.peek().kind == "id":
+            self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
+        self.expect(";")
+
+    def semantic(self):
+        if self.at(":") and self.peek(1).kind == "id":
+            self.next()
+            self.next()
+            if self.at("("):
+                self.skip_balanced("(", ")")
+
+    def array_suffix(self, t):
+        if self.accept("["):
+            if self.accept("]"):
+                return Type(t.base, t.dim, t.cols, -1)
+            tok = self.next()
+            n = int(tok.text.rstrip("uU"), 0) if tok.kind == "num" and tok.text.rstrip("uU").isdigit() else -1
+            if n == -1:
+                depth = 1
+                while depth:  # a size from a macro or an expression
+                    tk = self.next()
+                    if tk.kind == "eof":
+                        self.fail("array size")
+                    depth += {"[": 1, "]": -1}.get(tk.text, 0)
+                return Type(t.base, t.dim, t.cols, -1)
+            self.expect("]")
+            return Type(t.base, t.dim, t.cols, n)
+        return t
+
+    def function(self, ret, quals):
+        if not self.decl_only:
+            for q in quals:
+                if q.text in ("static", "inline"):
+                    self.delete_word(q)
+        name = self.name().text
+        self.expect("(")
+        params, scope = [], {}
+        spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
+        if not self.at(")"):
+            while True:
+                if self.at("void") and self.at(")", 1):
+                    self.next()
+                    break
+                first = self.peek().s
+                pq = self.qualifiers()
+                pt = self.type_spec()
+                if pt is None:
+                    self.fail("parameter type")
+                name_tok = self.name()
+                pn = name_tok.text
+                pt = self.array_suffix(pt)
+                self.semantic()
+                spelled.append((self.text[first:name_tok.e], pn))
+                default = None
+                if self.at("="):
+                    eq = self.next()
+                    start = self.peek().s
+                    self.assignment()
+                    default = self.text[start:self.toks[self.i - 1].e]
+                    if not self.decl_only:  # GLSL has no default arguments: overloads below
+                        self.edits.replace(eq.s, self.toks[self.i - 1].e, "")
+                defaults.append(default)
+                qual = next((q.text for q in pq if q.text in ("out", "inout")), "in")
+                params.append(Param(qual, pt))
+                scope[pn] = pt
+                if not self.accept(","):
+                    break
+        self.expect(")")
+        self.semantic()
+        self.sym.functions.setdefault(name, []).append(Signature(ret, params))
+        first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
+        for k in range(first_default, len(params)):  # f(a, b = 1) may be called as f(a)
+            self.sym.functions[name].append(Signature(ret, params[:k]))
+        if self.accept(";"):
+            return
+        if self.decl_only:
+            self.skip_balanced("{", "}")
+            return
+        self.ret = ret
+        self.scopes = [scope]
+        self.block(new_scope=False)
+        self.scopes, self.ret = [], None
+        if first_default < len(params):
+            # HLSL's default arguments as GLSL overloads, on the closing brace's line (the
+            # port keeps its line count): each shorter form calls the full one with the defaults.
+            overloads = []
+            for k in range(first_default, len(params)):
+                args = [n for _, n in spelled[:k]] + [f"({d})" for d in defaults[k:]]
+                call = f"{name}({', '.join(args)})"
+                body = f"return {call};" if ret.base != "void" else f"{call};"
+                overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
+            self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
+
+    def declarators(self, t, is_global, const):
+        while True:
+            n = self.name().text
+            vt = self.array_suffix(t)
+            if is_global:
+                self.semantic()
+            if self.accept("="):
+                if self.at("{"):
+                    self.brace_init(vt)
+                elif self.decl_only:
+                    self.assignment()
+                else:
+                    self.coerce(self.assignment(), vt)
+            self.declare(n, vt)
+            if not self.accept(","):
+                break
+
+    def brace_init(self, t):
+        """``{a, b}`` -> ``float[2](a, b)`` (an array) or ``T(a, b)`` (a struct)."""
+        open_ = self.expect("{")
+        items = []
+        while not self.at("}"):
+            if self.at("{"):
+                self.fail("nested initialiser")
+            items.append(self.assignment())
+            if not self.accept(","):
+                break
+        close = self.expect("}")
+        if t.array:
+            size = str(t.array) if t.array > 0 else str(len(items))
+            self.edits.replace(open_.s, open_.e, f"{t.element().cg()}[{size}](")
+            for it in items:
+                self.coerce(it, t.element())
+        elif t.base in self.sym.structs:
+            self.edits.replace(open_.s, open_.e, f"{t.base}(")
+        elif t.numeric:
+            self.edits.replace(open_.s, open_.e, f"{t.cg()}(")
+        else:
+            self.fail("initialiser")
+        self.edits.replace(close.s, close.e, ")")
+
+    # --- statements
+    def block(self, new_scope=True):
+        self.expect("{")
+        if new_scope:
+            self.scopes.append({})
+        while not self.accept("}"):
+            if self.peek().kind == "eof":
+                self.fail("unterminated block")
+            self.statement()
+        if new_scope:
+            self.scopes.pop()
+
+    def is_declaration(self):
+        j = 0
+        while self.peek(j).kind == "id" and self.peek(j).text in _QUALIFIERS and self.type_named(self.peek(j).text) is None:
+            j += 1
+        t = self.peek(j)
+        if t.kind != "id":
+            return False
+        if t.text == "struct":
+            return True
+        if self.opaque_ahead(j):
+            return self.peek(j + 2).text in (";", "=", ",", "[", ":", ")")
+        return self.type_named(t.text) is not None and self.peek(j + 1).kind == "id"
+
+    def statement(self):
+        t = self.peek()
+        if t.text == "{":
+            return self.block()
+        if t.text == ";":
+            self.next()
+            return
+        if t.text == "[" and self.peek(1).kind == "id":  # [unroll], [loop], [branch(...)]
+            start = self.next()
+            depth = 1
+            while depth:
+                tk = self.next()
+                if tk.kind == "eof":
+                    self.fail("attribute")
+                depth += {"[": 1, "]": -1}.get(tk.text, 0)
+            self.delete_word(Tok("op", "", start.s, self.toks[self.i - 1].e))
+            return self.statement()
+        if t.kind == "id":
+            if t.text == "if":
+                self.next()
+                self.expect("(")
+                self.condition(self.expression())
+                self.expect(")")
+                self.statement()
+                if self.accept("else"):
+                    self.statement()
+                return
+            if t.text == "while":
+                self.next()
+                self.expect("(")
+                self.condition(self.expression())
+                self.expect(")")
+                return self.statement()
+            if t.text == "do":
+                self.next()
+                self.statement()
+                self.expect("while")
+                self.expect("(")
+                self.condition(self.expression())
+                self.expect(")")
+                self.expect(";")
+                return
+            if t.text == "for":
+                self.next()
+                self.expect("(")
+                self.scopes.append({})
+                if not self.accept(";"):
+                    self.simple_statement()
+                if not self.at(";"):
+                    self.condition(self.expression())
+                self.expect(";")
+                if not self.at(")"):
+                    self.expression()
+                self.expect(")")
+                self.statement()
+                self.scopes.pop()
+                return
+            if t.text == "return":
+                self.next()
+                if not self.at(";"):
+                    e = self.expression()
+                    if self.ret is not None:
+                        self.coerce(e, self.ret, exact=True)
+                self.expect(";")
+                return
+            if t.text in ("break", "continue", "discard"):
+                self.next()
+                self.expect(";")
+                return
+            if t.text == "switch":
+                self.fail("switch")
+            if t.text == "struct":
+                self.struct()
+                return
+        self.simple_statement()
+
+    def simple_statement(self):
+        """A declaration or an expression, then ';'."""
+        if self.is_declaration():
+            quals = self.qualifiers()
+            for q in quals:
+                if q.text == "static":
+                    self.delete_word(q)
+            if self.at("struct"):
+                self.next()
+            ty = self.type_spec()
+            self.declarators(ty, is_global=False, const=False)
+        else:
+            first = self.peek()
+            e = self.expression()
+            if e.t is None and not self.at(";") and self.macro_statement(first):
+                return  # UNITY_TRANSFER_FOG(o, o.vertex) with no ';' (a macro that brings its own)
+        self.expect(";")
+
+    def macro_statement(self, first: Tok) -> bool:
+        """The statement began with a name the pass does not know and ends its line."""
+        known = self.lookup(first.text) is not None or first.text in self.sym.functions or first.text in _INTRINSICS
+        last = self.toks[self.i - 1]
+        return first.kind == "id" and not known and "\n" in self.text[last.e:self.peek().s]
+
+    def delete_span(self, s, e):
+        self.edits.replace(s, e, "")
+
+    def condition(self, e: E):
+        if e.t is not None and e.t.scalar and e.t.base != "bool":
+            self.wrap(e, "bool")
+
+    # --- expressions
+    def expression(self):
+        e = self.assignment()
+        while self.at(","):
+            self.next()
+            e = self.assignment()
+        return e
+
+    def assignment(self):
+        lhs = self.ternary()
+        t = self.peek()
+        if t.kind == "op" and t.text in ("=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="):
+            self.next()
+            self.edits.drop(lhs.row_index)  # a matrix row written: left as is (known gap)
+            rhs = self.assignment()
+            if lhs.t is not None and rhs.t is not None:
+                if t.text == "=":
+                    self.coerce(rhs, lhs.t)
+                elif t.text in ("+=", "-=", "*=", "/=") and lhs.t.numeric and rhs.t.numeric and not lhs.t.cols and not rhs.t.cols:
+                    if rhs.t.dim > 1 and rhs.t.dim > lhs.t.dim:
+                        self.truncate(rhs, lhs.t.dim)
+                    elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
+                        self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+            return E(lhs.s, rhs.e, lhs.t, False)
+        return lhs
+
+    def ternary(self):
+        c = self.binary(0)
+        if not self.at("?"):
+            return c
+        question = self.next()
+        a = self.assignment()
+        colon = self.expect(":")
+        b = self.assignment()
+        if c.t is not None and c.t.vector:
+            # HLSL selects per component; GLSL's ?: takes one bool: cg_compat's
+            # pbr_unity_select(c, a, b) = mix(b, a, c) with both branches at c's size
+            if a.t is None or b.t is None or not (a.t.numeric and b.t.numeric) or a.t.cols or b.t.cols:
+                return E(c.s, b.e, None, False)
+            t = Type(_base(a.t, b.t), c.t.dim)
+            if c.t.base != "bool":
+                self.wrap(c, Type("bool", c.t.dim).cg())
+            for x in (a, b):
+                if x.t.dim != t.dim or x.t.base != t.base:
+                    self.coerce(x, t)
+            self.edits.open(c.s, "pbr_unity_select(")
+            self.edits.replace(question.s, question.e, ",")
+            self.edits.replace(colon.s, colon.e, ",")
+            self.edits.close(b.e, ")")
+            return E(c.s, b.e, t, True)
+        self.condition(c)
+        t = None
+        if a.t is not None and b.t is not None:
+            t = self.common(a.t, b.t)
+            if t is not None:
+                for x in (a, b):
+                    if x.t.dim != t.dim or (x.t.base != t.base and not (t.base == "float" and x.t.base in ("int", "uint"))):
+                        self.coerce(x, t)
+        return E(c.s, b.e, t, False)
+
+    def common(self, a: Type, b: Type):
+        """HLSL's type of a binary arithmetic result (None: not both numeric, or matrices)."""
+        if not (a.numeric and b.numeric):
+            return None
+        if a.cols or b.cols:
+            if a == b:
+                return a
+            if a.scalar:
+                return Type(_base(a, b), b.dim, b.cols)
+            if b.scalar:
+                return Type(_base(a, b), a.dim, a.cols)
+            return None
+        n = b.dim if a.dim == 1 else a.dim if b.dim == 1 else min(a.dim, b.dim)
+        return Type(_base(a, b), n)
+
+    _LEVELS = [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="), ("<", ">", "<=", ">="),
+               ("<<", ">>"), ("+", "-"), ("*", "/", "%")]
+
+    def binary(self, level):
+        if level == len(self._LEVELS):
+            return self.unary()
+        a = self.binary(level + 1)
+        while self.peek().kind == "op" and self.peek().text in self._LEVELS[level]:
+            op = self.next()
+            b = self.binary(level + 1)
+            a = self.combine(a, op, b)
+        return a
+
+    def combine(self, a: E, op: Tok, b: E) -> E:
+        o = op.text
+        span = (a.s, b.e)
+        if a.t is None or b.t is None:
+            return E(*span, None, False)
+        if o in ("&&", "||"):
+            for x in (a, b):
+                self.condition(x)
+            return E(*span, Type("bool"), False)
+        if o in ("|", "^", "&", "<<", ">>"):
+            return E(*span, a.t if a.t.numeric else None, False)
+        t = self.common(a.t, b.t)
+        if t is None:
+            return E(*span, None, False)
+        if not t.cols and t.dim > 1:
+            for x in (a, b):
+                if x.t.dim > t.dim:
+                    self.truncate(x, t.dim)
+        if t.base == "uint":  # HLSL converts int to uint here; GLSL 330 does not (4.00 does)
+            for x in (a, b):
+                if x.t.base == "int":
+                    self.wrap(x, Type("uint", x.t.dim, x.t.cols).cg())
+        if o in _COMPARE:
+            if t.dim == 1 or t.cols:
+                return E(*span, Type("bool", 1 if not t.cols else t.dim, t.cols), False)
+            for x in (a, b):
+                if x.t.dim == 1:
+                    self.wrap(x, Type(t.base, t.dim).cg())
+            self.edits.open(a.s, _COMPARE[o] + "(")
+            self.operator_to_comma(a, op)
+            self.edits.close(b.e, ")")
+            return E(*span, Type("bool", t.dim), True)
+        if t.base == "bool" or "bool" in (a.t.base, b.t.base):
+            base = "float" if t.base == "bool" else t.base
+            for x in (a, b):
+                if x.t.base == "bool":
+                    self.wrap(x, Type(base, x.t.dim if x.t.dim <= t.dim else t.dim, x.t.cols).cg())
+            t = Type(base if t.base == "bool" else t.base, t.dim, t.cols)
+        if o == "%" and t.base == "float":
+            if b.t.dim == 1 or b.t.dim == t.dim:
+                if a.t.dim == 1 and t.dim > 1:
+                    self.wrap(a, Type("float", t.dim).cg())
+                self.edits.open(a.s, "fmod(")
+                self.operator_to_comma(a, op)
+                self.edits.close(b.e, ")")
+                return E(*span, t, True)
+            return E(*span, None, False)
+        return E(*span, t, False)
+
+    def operator_to_comma(self, a: E, op: Tok):
+        """``a < b`` -> ``a, b`` inside the call that replaces the operator."""
+        gap = self.text[a.e:op.s]
+        self.edits.replace(op.s if "\n" in gap else a.e, op.e, ",")
+
+    def unary(self):
+        t = self.peek()
+        if t.kind == "op" and t.text in ("-", "+", "!", "~", "++", "--"):
+            self.next()
+            x = self.unary()
+            if t.text == "!":
+                if x.t is not None and x.t.vector:
+                    return E(t.s, x.e, None, False)
+                self.condition(x)
+                return E(t.s, x.e, Type("bool"), False)
+            return E(t.s, x.e, x.t, False)
+        if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) and builtin_type(self.peek(1).text) is not None \
+                and builtin_type(self.peek(1).text).numeric:
+            # a cast (float3)x -> float3(x)
+            open_, name, close = self.next(), self.next(), self.next()
+            x = self.unary()
+            ty = builtin_type(name.text)
+            self.edits.replace(open_.s, open_.e, "")
+            self.edits.replace(close.s, close.e, "(")
+            self.edits.close(x.e, ")")
+            return E(open_.s, x.e, ty, True)
+        return self.postfix()
+
+    def postfix(self):
+        e = self.primary()
+        while True:
+            t = self.peek()
+            if t.text == "." and t.kind == "op":
+                self.next()
+                m = self.peek()
+                if m.kind != "id":
+                    self.fail("member")
+                e = self.member(e, m)
+            elif t.text == "[" and t.kind == "op":
+                self.next()
+                idx = self.expression()
+                close = self.expect("]")
+                e = self.index(e, idx, close)
+            elif t.text in ("++", "--") and t.kind == "op":
+                self.next()
+                e = E(e.s, t.e, e.t, False)
+            else:
+                return e
+
+    def member(self, obj: E, m: Tok) -> E:
+        ot = obj.t
+        if ot is not None and ot.base in self.sym.structs and not ot.array:
+            self.name()
+            return E(obj.s, m.e, self.sym.structs[ot.base].get(m.text))
+        if ot is not None and (ot.base in self.sym.aliases) and not ot.array:
+            self.name()
+            fields = self.sym.structs.get(self.resolve_alias(ot.base), {})
+            return E(obj.s, m.e, fields.get(m.text))
+        self.next()
+        if ot is not None and ot.numeric and not ot.cols and _SWIZZLE.fullmatch(m.text) and \
+                all(_swizzle_index(ch) < ot.dim for ch in m.text):
+            n = len(m.text)
+            if ot.dim == 1:  # a scalar's swizzle: GLSL 330 has none
+                dot = self.toks[self.i - 2]
+                if n == 1:
+                    self.edits.replace(dot.s, m.e, "")
+                    return E(obj.s, m.e, ot, obj.postfix)
+                self.edits.open(obj.s, Type(ot.base, n).cg() + "(")
+                self.edits.replace(dot.s, m.e, ")")
+                return E(obj.s, m.e, Type(ot.base, n), True)
+            return E(obj.s, m.e, Type(ot.base, n), True, (m.s, m.e, m.text))
+        return E(obj.s, m.e, None)
+
+    def index(self, obj: E, idx: E, close: Tok) -> E:
+        if idx.t is not None and idx.t.scalar and idx.t.base == "float":
+            self.wrap(idx, "int")
+        ot = obj.t
+        if ot is None:
+            return E(obj.s, close.e, None)
+        if ot.array:
+            return E(obj.s, close.e, ot.element())
+        if ot.cols:  # HLSL m[i] is row i; GLSL's is column i
+            ids = (self.edits.open(obj.s, "transpose("), self.edits.close(obj.e, ")"))
+            return E(obj.s, close.e, Type(ot.base, ot.cols), True, row_index=ids)
+        if ot.vector:
+            return E(obj.s, close.e, Type(ot.base))
+        return E(obj.s, close.e, None)
+
+    def primary(self) -> E:
+        t = self.next()
+        if t.kind == "num":
+            text = t.text
+            is_float = not text.lower().startswith("0x") and bool(re.search(r"[.eE]|[fFhH]$", text))
+            base = "float" if is_float else "uint" if text[-1] in "uU" else "int"
+            glsl = re.sub(r"[hHlL]+$", "", text) if is_float else re.sub(r"[lL]+$", "", text)
+            if is_float and re.fullmatch(r"\d+[fF]", glsl):
+                glsl = glsl[:-1] + ".0"
+            if glsl != text and not self.decl_only:
+                self.edits.replace(t.s, t.e, glsl)
+            return E(t.s, t.e, Type(base), False, literal=True)
+        if t.kind == "str":
+            return E(t.s, t.e, None)
+        if t.text == "(":
+            x = self.expression()
+            close = self.expect(")")
+            return E(t.s, close.e, x.t, True, literal=x.literal)
+        if t.kind != "id":
+            raise CgSyntaxError(f"unexpected {t.text!r}", t.s)
+        if t.text in ("true", "false"):
+            return E(t.s, t.e, Type("bool"), True)
+        if self.at("("):
+            return self.call(t)
+        self.i -= 1
+        self.name()
+        return E(t.s, t.e, self.lookup(t.text), True)
+
+    def arguments(self):
+        self.expect("(")
+        args = []
+        if not self.at(")"):
+            while True:
+                args.append(self.assignment())
+                if not self.accept(","):
+                    break
+        close = self.expect(")")
+        return args, close
+
+    def call(self, name: Tok) -> E:
+        ctor = builtin_type(name.text)
+        if ctor is None and self.type_named(name.text) is not None and self.type_named(name.text).numeric:
+            ctor = self.type_named(name.text)
+        if ctor is not None:
+            args, close = self.arguments()
+            if ctor.cols and len(args) > 1 and not self.decl_only:  # rows in HLSL, columns in GLSL
+                self.edits.open(name.s, "transpose(")
+                if ctor.cols != ctor.dim:
+                    self.edits.replace(name.s, name.e, Type(ctor.base, ctor.cols, ctor.dim).cg())
+                self.edits.close(close.e, ")")
+            return E(name.s, close.e, ctor if ctor.numeric else None, True)
+        if name.text in RESERVED and not self.decl_only:
+            self.edits.replace(name.s, name.e, RENAME_PREFIX + name.text)
+        args, close = self.arguments()
+        span = (name.s, close.e)
+        fname = name.text
+        if fname in _INTRINSICS:
+            return E(*span, self.intrinsic(fname, args), True)
+        if fname == "mul" and len(args) == 2:
+            return E(*span, _mul_type(args[0].t, args[1].t), True)
+        sigs = self.sym.functions.get(fname) or self.sym.functions.get(self.resolve_alias(fname))
+        if not sigs:
+            return E(*span, None, True)
+        sig = self.overload(sigs, args)
+        if sig is None:
+            rets = {s.ret for s in sigs}
+            return E(*span, rets.pop() if len(rets) == 1 else None, True)
+        for a, p in zip(args, sig.params):
+            if p.qual == "in":
+                self.coerce(a, p.type)
+        return E(*span, sig.ret if sig.ret != VOID else VOID, True)
+
+    def overload(self, sigs, args):
+        sigs = [s for s in sigs if len(s.params) == len(args)]
+        if len(sigs) == 1:
+            return sigs[0]
+        if any(a.t is None for a in args):
+            return None
+        exact = [s for s in sigs if all(_same_shape(a.t, p.type) for a, p in zip(args, s.params))]
+        if len(exact) == 1:
+            return exact[0]
+        return None
+
+    def intrinsic(self, fname, args):
+        kind, scalar_ok = _INTRINSICS[fname]
+        if any(a.t is None or not a.t.numeric or a.t.cols for a in args) or not args:
+            return None
+        if kind == "bool1":
+            return Type("bool")
+        dims = [a.t.dim for a in args if a.t.dim > 1]
+        n = min(dims) if dims else 1
+        if kind == "cross":
+            n = 3
+        elif kind == "first":
+            n = args[0].t.dim
+        base = "float" if any(a.t.base == "float" for a in args) or fname not in ("abs", "min", "max", "clamp", "sign") \
+            else args[0].t.base
+        for i, a in enumerate(args):
+            if kind == "first" and i in scalar_ok:
+                continue
+            if a.t.dim > 1 and a.t.dim > n:
+                self.truncate(a, n)
+            elif a.t.dim == 1 and n > 1 and i not in scalar_ok:
+                self.wrap(a, Type(base, n).cg())
+        if kind == "scalar":
+            return Type("float")
+        return Type(base, n)
+
+    # --- conversions
+    def wrap(self, e: E, ctor: str):
+        self.edits.open(e.s, ctor + "(")
+        self.edits.close(e.e, ")")
+
+    def truncate(self, e: E, n: int):
+        """A vector expression cut to its first n components, as HLSL does."""
+        if e.swizzle is not None:
+            s, end, letters = e.swizzle
+            self.edits.replace(s, end, letters[:n])
+        elif e.postfix:
+            self.edits.close(e.e, "." + "xyzw"[:n])
+        else:
+            self.edits.open(e.s, "(")
+            self.edits.close(e.e, ")." + "xyzw"[:n])
+
+    def coerce(self, e: E, target: Type, exact=False):
+        """Spell out HLSL's implicit conversion of ``e`` to ``target``, where GLSL needs it
+        (GLSL 330 converts int and uint to float itself, except in ``return``: ``exact``)."""
+        src = e.t
+        if src is None or target is None or not src.numeric or not target.numeric:
+            return
+        if target.cols or src.cols:
+            if target.cols and src.cols and (src.dim, src.cols) != (target.dim, target.cols) \
+                    and src.dim >= target.dim and src.cols >= target.cols:
+                self.wrap(e, target.cg())
+            return
+        base_ok = src.base == target.base or (target.base == "float" and src.base in ("int", "uint") and not exact)
+        if src.dim == target.dim:
+            if not base_ok:
+                self.wrap(e, target.cg())
+            return
+        if src.dim == 1:                 # splat
+            self.wrap(e, target.cg())
+        elif src.dim > target.dim:       # truncate
+            if base_ok:
+                self.truncate(e, target.dim)
+            else:
+                self.wrap(e, target.cg())
+
+
+def _base(a: Type, b: Type) -> str:
+    bases = {a.base, b.base}
+    if "float" in bases:
+        return "float"
+    if "uint" in bases:
+        return "uint"
+    if "int" in bases:
+        return "int"
+    return "bool"
+
+
+def _same_shape(a: Type, b: Type) -> bool:
+    return a.dim == b.dim and a.cols == b.cols and (a.base == b.base or not (a.numeric and b.numeric)
+                                                    or {a.base, b.base} <= {"float", "int", "uint"})
+
+
+def _swizzle_index(ch):
+    return "xyzw".find(ch) if ch in "xyzw" else "rgba".find(ch)
+
+
+def _mul_type(a: Type | None, b: Type | None):
+    if a is None or b is None or not (a.numeric and b.numeric):
+        return None
+    if a.scalar:
+        return b
+    if b.scalar:
+        return a
+    if a.cols and b.vector and b.dim == a.cols:
+        return Type("float", a.dim)
+    if a.vector and b.cols and a.dim == b.dim:
+        return Type("float", b.cols)
+    if a.cols and b.cols and a.cols == b.dim:
+        return Type("float", a.dim, b.cols)
+    return None
+
+
+@dataclass
+class Result:
+    text: str
+    skipped: list       # first lines of top-level declarations left as written
+
+
+def _rename_in_directives(text: str, directives) -> list:
+    """Edits renaming reserved names in #define lines (the program's macros use its names)."""
+    out = []
+    for s, e in directives:
+        line = text[s:e]
+        m = re.match(r"#\s*define\s+", line)
+        if not m:
+            continue
+        for w in re.finditer(r"\b[A-Za-z_]\w*\b", line[m.end():]):
+            if w.group(0) in RESERVED:
+                out.append((s + m.end() + w.start(), s + m.end() + w.end(), RENAME_PREFIX + w.group(0)))
+    return out
+
+
+def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
+    symbols = (symbols or library()).copy()
+    try:
+        parser = _Parser(text, symbols)
+    except CgSyntaxError:
+        return Result(text, [1])
+    parser.program()
+    for s, e, t in _rename_in_directives(text, parser.directives):
+        parser.edits.replace(s, e, t)
+    return Result(parser.edits.apply(text), parser.skipped)
+
+
+def convert(text: str, symbols: Symbols | None = None) -> str:
+    return convert_detail(text, symbols).text
+
+
+def with_declarations(text: str) -> Symbols:
+    """The library's symbols and the declarations of ``text`` (a program's included files)."""
+    symbols = library().copy()
+    try:
+        _Parser(text, symbols, declarations_only=True).program()
+    except CgSyntaxError:
+        pass  # an include the parser cannot read adds nothing
+    return symbols

@@ -1,0 +1,907 @@
+"""Read a Unity surface shader: a ShaderLab ``.shader`` file (``Properties``, pass state,
+one ``CGPROGRAM ... ENDCG`` block) or bare CGPROGRAM text, into a ``model.SurfaceShader``.
+
+    shader = parse_file(Path("rim.shader"))
+
+What the harness cannot honour is reported, never dropped: unknown ``#pragma surface``
+options and ShaderLab state other than Cull/ZWrite/Blend become warnings on the model
+(``shader.warnings``, raised as ``UnityShaderWarning`` by ``load_shader``); what would make
+the render wrong (no ``#pragma surface``, a missing surface/vertex/final-colour/lighting
+function, an Input member nothing fills) is a ``UnityShaderError`` naming file and line.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+from ...foundation.errors import PbrlabError
+from ...scene.surface_layers import written_layers
+from . import model as M
+from .conditionals import active_text, defines_of
+from . import shaderlab
+
+FLOAT32_MAX = 3.4028234663852886e38
+
+PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
+
+
+class UnityShaderError(PbrlabError):
+    """A Unity shader the front end cannot run as Unity would; the message says where."""
+
+
+# Options with no effect here: the harness has no shadows, lightmaps, deferred or
+# prepass paths, fog, instancing or meta pass (README, "Unity shaders").
+NO_EFFECT_OPTIONS = frozenset("""
+    addshadow fullforwardshadows noshadow nolightmap nodirlightmap nodynlightmap
+    noforwardadd nometa noinstancing nofog nolppv noshadowmask novertexlights
+    keepalpha dualforward softvegetation nodynlightmap
+""".split())
+NO_EFFECT_PREFIXES = ("exclude_path:", "interpolateview", "halfasview", "approxview")
+ALPHA_OPTIONS = {"alpha": "fade", "alpha:auto": "fade", "alpha:blend": "fade",
+                 "alpha:fade": "fade", "alpha:premul": "transparent"}
+PASS_STATE_HONOURED = ("Cull", "ZWrite", "Blend")
+PASS_STATE_IGNORED = ("ZTest", "ColorMask", "Offset", "Stencil", "AlphaToMask", "BlendOp",
+                      "Conservative", "ZClip")
+
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
+_IDENT = r"[A-Za-z_]\w*"
+
+
+def _blank_comments(text: str) -> str:
+    """Comments replaced by spaces, newlines kept (offsets and line numbers survive)."""
+    return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+def _line_of(text: str, index: int) -> int:
+    return text.count("\n", 0, index) + 1
+
+
+class _Lines:
+    """Line numbers of increasing offsets into one text, each newline counted once (a count
+    from the start per property made reading a Properties block quadratic: 6 s of 7 for
+    20,000 properties)."""
+
+    def __init__(self, text: str, first_line: int = 1):
+        self.text, self.index, self.line = text, 0, first_line
+
+    def at(self, index: int) -> int:
+        if index < self.index:  # not expected: count afresh rather than go wrong
+            self.index, self.line = 0, self.line - self.text.count("\n", 0, self.index)
+        self.line += self.text.count("\n", self.index, index)
+        self.index = index
+        return self.line
+
+
+def _matching_brace(text: str, open_index: int) -> int:
+    depth = 0
+    for i in range(open_index, len(text)):
+        if text[i] == "{":
+            depth += 1
+        elif text[i] == "}":
+            depth -= 1
+            if depth == 0:
+                return i
+    return -1
+
+
+# --- ShaderLab --------------------------------------------------------------------------
+
+_PROPERTY = re.compile(
+    r'(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + _IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
+    r'(?P<kind>(?i:range)\s*\(\s*(?P<lo>[^,()]*),\s*(?P<hi>[^,()]*)\)|\w+)\s*\)\s*=\s*'
+    r'(?P<default>\([^)]*\)|"[^"\n]*"\s*(?:\{[^}]*\})?|[^\s\[]+)')
+# ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
+PROPERTY_KINDS = {"float": "Float", "range": "Range", "int": "Int", "integer": "Int", "color": "Color",
+                  "vector": "Vector", "2d": "2D", "3d": "3D", "cube": "Cube", "2darray": "2DArray",
+                  "cubearray": "CubeArray", "any": "2D"}
+TEXTURE_DEFAULTS = ("white", "black", "gray", "grey", "bump", "red", "linearGrey", "")
+
+
+def _number(text: str, where: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise UnityShaderError(f"{where}: expected a number, got {text!r}") from None
+    if not math.isfinite(value) or abs(value) > FLOAT32_MAX:
+        raise UnityShaderError(f"{where}: {text!r} is not a finite float32 number")
+    return value
+
+
+def _property(m: re.Match, where: str, warnings: list) -> M.Property:
+    attrs = tuple(a.strip() for a in re.findall(r"\[([^\]]*)\]", m.group("attrs")))
+    kind_text = m.group("kind")
+    rng = None
+    if kind_text.lower().startswith("range"):
+        rng = (_number(m.group("lo").strip(), where), _number(m.group("hi").strip(), where))
+        if rng[0] > rng[1]:  # Unity draws the slider from the first value to the second
+            warnings.append(f"{where}: {m.group('name')}: Range({m.group('lo').strip()}, {m.group('hi').strip()}) "
+                            f"runs downward; its values are checked against [{rng[1]:g}, {rng[0]:g}]")
+            rng = (rng[1], rng[0])
+        kind_text = "range"
+    kind = PROPERTY_KINDS.get(kind_text.lower())
+    if kind is None:
+        raise UnityShaderError(f"{where}: property type {kind_text!r} is not one of Float, Range, Int, "
+                               "Color, Vector, 2D, 3D, Cube, 2DArray, CubeArray, Any")
+    default_text = m.group("default").strip()
+    name = m.group("name")
+    if kind in ("Float", "Range", "Int"):
+        default = _number(default_text, where)
+        if rng is not None and not rng[0] <= default <= rng[1]:
+            raise UnityShaderError(f"{where}: {name}: default {default_text} lies outside its "
+                                   f"Range({rng[0]:g}, {rng[1]:g})")
+    elif kind in ("Color", "Vector"):
+        v = re.fullmatch(r"\(\s*([^)]*)\)", default_text)
+        parts = [p for p in v.group(1).split(",")] if v else []
+        if len(parts) not in (3, 4) if kind == "Color" else len(parts) not in (2, 3, 4):
+            raise UnityShaderError(f"{where}: {name}: {kind} default must be (x, y, z, w)"
+                                   f"{' or (r, g, b)' if kind == 'Color' else ''}, got {default_text!r}")
+        values = [_number(p.strip(), where) for p in parts]
+        default = tuple(values + [1.0 if kind == "Color" else 0.0] * (4 - len(values)))
+    else:
+        t = re.fullmatch(r'"([^"]*)"\s*(\{[^}]*\})?', default_text)
+        if not t:
+            raise UnityShaderError(f'{where}: {name}: texture default must be a name in quotes '
+                                   f'("white", "black", "gray", "bump", "red", ""), got {default_text!r}')
+        default = t.group(1)
+        if kind == "Cube":
+            default = default or "gray"  # every Cube samples the scene's environment here
+        elif default not in TEXTURE_DEFAULTS:
+            warnings.append(f'{where}: {name}: default texture "{default}" is none of Unity\'s built-in '
+                            'defaults (white, black, gray, bump, red); Unity shows gray, and so does pbrlab')
+            default = "gray"
+        default = {"": "gray", "linearGrey": "gray"}.get(default, default)
+    return M.Property(name, m.group("display"), kind, default, attrs, rng)
+
+
+def _properties_in(text: str, first_line: int, path: Path, warnings: list) -> dict:
+    """Properties of the text inside ``Properties { ... }`` (comments blanked): several per
+    line, attributes anywhere before a name, as ShaderLab reads them."""
+    props, pos = {}, 0
+    lines = _Lines(text, first_line)
+    for m in _PROPERTY.finditer(text):
+        gap = text[pos:m.start()]
+        if gap.strip():
+            raise UnityShaderError(f"{path}:{lines.at(pos + len(gap) - len(gap.lstrip()))}: "
+                                   f"cannot read this Properties text: {gap.strip()[:60]!r} "
+                                   '(expected _Name ("Label", Type) = default)')
+        where = f"{path}:{lines.at(m.start('name'))}"
+        prop = _property(m, where, warnings)
+        props[prop.name] = prop
+        pos = m.end()
+    rest = text[pos:]
+    if rest.strip():
+        raise UnityShaderError(f"{path}:{first_line - 1 + _line_of(text, pos + len(rest) - len(rest.lstrip()))}: "
+                               f"cannot read this Properties text: {rest.strip()[:60]!r} "
+                               '(expected _Name ("Label", Type) = default)')
+    return props
+
+
+# UnityEngine.Rendering enums, for state read from a property (``Cull [_Cull]``): the
+# property's value is the enum's index (Unity's scripting reference: CullMode, BlendMode,
+# CompareFunction).
+_CULL_ENUM = ("off", "front", "back")
+BLEND_FACTORS = ("Zero", "One", "DstColor", "SrcColor", "OneMinusDstColor", "SrcAlpha",
+                 "OneMinusSrcColor", "DstAlpha", "OneMinusDstAlpha", "SrcAlphaSaturate", "OneMinusSrcAlpha")
+_ZTEST_ENUM = ("always", "never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always")
+ZTESTS = {"less": "less", "greater": "greater", "lequal": "lequal", "gequal": "gequal", "equal": "equal",
+          "notequal": "notequal", "always": "always", "never": "never", "off": "always"}
+
+
+def _state_words(args: str, props: dict, where: str, enum=None) -> list[str]:
+    """The words of a state command, a ``[_Property]`` replaced by its default (through
+    ``enum`` where the property holds an enum index)."""
+    out = []
+    for word in re.findall(r"\[\s*\w+\s*\]|[^\s,]+", args):
+        if word.startswith("["):
+            name = word.strip("[] ")
+            prop = props.get(name)
+            if prop is None:  # a global the engine sets (unity_GUIZTestMode): its default stands
+                return None
+            if prop.is_texture or isinstance(prop.default, tuple):
+                raise UnityShaderError(f"{where}: {word} names no Float/Int/Range property")
+            value = int(prop.default)
+            if enum is not None:
+                if not 0 <= value < len(enum):
+                    raise UnityShaderError(f"{where}: {word} = {value} is outside the enum's 0..{len(enum) - 1}")
+                word = enum[value]
+            else:
+                word = str(value)
+        out.append(word)
+    return out
+
+
+def apply_state(commands, state: M.RenderState, props: dict, path: Path, warnings: list,
+                surface: bool) -> None:
+    """ShaderLab render state (a SubShader's, then a Pass's) onto ``state``."""
+    for c in commands:
+        where = f"{path}:{c.line}"
+        word = c.word.lower()
+        if "[" in c.args and _state_words(c.args, props, where) is None:
+            warnings.append(f"{where}: {c.word} {c.args}: set by the engine at run time, not by a "
+                            "property; the default state stands")
+            continue
+        if word == "cull":
+            value = " ".join(_state_words(c.args, props, where, _CULL_ENUM)).lower()
+            if value not in ("back", "front", "off"):
+                raise UnityShaderError(f"{where}: Cull {c.args}: expected Back, Front or Off")
+            state.cull = value
+        elif word == "zwrite":
+            value = " ".join(_state_words(c.args, props, where, ("off", "on"))).lower()
+            if value not in ("on", "off"):
+                raise UnityShaderError(f"{where}: ZWrite {c.args}: expected On or Off")
+            state.zwrite = value == "on"
+        elif word == "ztest":
+            value = " ".join(_state_words(c.args, props, where, _ZTEST_ENUM)).lower()
+            if value not in ZTESTS:
+                raise UnityShaderError(f"{where}: ZTest {c.args}: expected one of Less, Greater, LEqual, "
+                                       "GEqual, Equal, NotEqual, Always")
+            state.ztest = ZTESTS[value]
+        elif word == "blend":
+            words = _state_words(c.args, props, where, BLEND_FACTORS)
+            state.blend = c.args
+            if surface:
+                warnings.append(f"{where}: Blend {c.args}: a surface shader's blending comes from its #pragma "
+                                "surface alpha option here (alpha, alpha:fade, alpha:premul); this line is not applied")
+                continue
+            if len(words) == 1 and words[0].lower() == "off":
+                state.blend_factors = None
+                continue
+            if len(words) and words[0].isdigit():  # Blend 0 SrcAlpha One: a render target's
+                words = words[1:]
+            known = {f.lower(): f for f in BLEND_FACTORS}
+            if len(words) not in (2, 4) or any(w.lower() not in known for w in words):
+                raise UnityShaderError(f"{where}: Blend {c.args}: expected Off or two (or four) of "
+                                       f"{', '.join(BLEND_FACTORS)}")
+            state.blend_factors = tuple(known[w.lower()] for w in words)
+        elif word == "colormask":
+            state.color_mask = " ".join(_state_words(c.args, props, where)).lower()
+        elif word in ("lod", "name", "tags"):
+            continue
+        elif c.word in PASS_STATE_IGNORED or word in ("offset", "stencil", "alphatomask", "blendop",
+                                                      "fog", "conservative", "zclip"):
+            warnings.append(f"{where}: {c.word} {c.args}: not supported by the harness, ignored")
+        else:
+            warnings.append(f"{where}: {c.word} {c.args}: not a ShaderLab command pbrlab knows, ignored")
+
+
+# --- CGPROGRAM ---------------------------------------------------------------------------
+
+def _pragma(program: str, where) -> tuple:
+    found = list(re.finditer(r"^[ \t]*#[ \t]*pragma[ \t]+surface[ \t]+(\w+)[ \t]+(\w+)([^\n]*)$", program, re.M))
+    if not found:
+        raise UnityShaderError(f"{where(0)}: no '#pragma surface <function> <LightingModel>' line: "
+                               "only surface shaders are supported (vertex/fragment shaders are not)")
+    if len(found) > 1:
+        raise UnityShaderError(f"{where(found[1].start())}: a second #pragma surface")
+    m = found[0]
+    pragma = M.Pragma(function=m.group(1), model=m.group(2))
+    accepted, unsupported = [], []
+    for option in m.group(3).split():
+        key, _, value = option.partition(":")
+        if key == "vertex" and value:
+            pragma.vertex = value
+        elif key == "finalcolor" and value:
+            pragma.finalcolor = value
+        elif option in ALPHA_OPTIONS:
+            pragma.alpha_mode = ALPHA_OPTIONS[option]
+        elif key == "alphatest" and value:
+            pragma.alpha_mode = "cutout"
+            pragma.cutoff_property = value
+        elif option in NO_EFFECT_OPTIONS or option.startswith(NO_EFFECT_PREFIXES):
+            accepted.append(option)
+        else:
+            unsupported.append(option)
+    pragma.accepted = tuple(accepted)
+    pragma.unsupported = tuple(unsupported)
+    return pragma, m.start()
+
+
+def _function(masked: str, name: str):
+    """(match, body) of the definition of function ``name``, or None."""
+    for m in re.finditer(r"\b(" + _IDENT + r")\s+" + re.escape(name) + r"\s*\(([^)]*)\)\s*\{", masked):
+        if m.group(1) in ("return", "else"):
+            continue
+        end = _matching_brace(masked, m.end() - 1)
+        return m, masked[m.end():end]
+    return None
+
+
+def _params(text: str):
+    """[(qualifier, type, name)] of a parameter list."""
+    out = []
+    for part in [p.strip() for p in text.split(",") if p.strip()]:
+        part = re.sub(r":\s*\w+$", "", part).strip()  # HLSL semantic
+        words = part.split()
+        qual = words[0] if words[0] in ("in", "out", "inout", "uniform") else ""
+        words = words[1:] if qual else words
+        if len(words) < 2:
+            return None
+        out.append((qual, words[-2], words[-1]))
+    return out
+
+
+def _struct_fields(masked: str, name: str):
+    m = re.search(r"\bstruct\s+" + re.escape(name) + r"\s*\{", masked)
+    if not m:
+        return None, None
+    end = _matching_brace(masked, m.end() - 1)
+    return m, masked[m.end():end]
+
+
+_SIZE = {"": 1, "2": 2, "3": 3, "4": 4}
+
+
+def _members(body: str):
+    """[(type, name)] of a struct body; INTERNAL_DATA flagged as ('INTERNAL_DATA', ''), a
+    member with the VFACE semantic as ('VFACE', name). Preprocessor lines are passed over
+    (the members of every #if branch count)."""
+    out = []
+    body = re.sub(r"^[ \t]*#[^\n]*", "", body, flags=re.M)
+    for decl in body.split(";"):
+        if re.search(r":\s*(?:VFACE|SV_IsFrontFace)\s*$", decl.strip(), re.I):
+            out.append(("VFACE", decl.split(":")[0].split()[-1]))
+            continue
+        if re.search(r":\s*COLOR0?\s*$", decl.strip(), re.I):  # Unity fills it with the vertex colour
+            words = decl.split(":")[0].split()
+            out.append(("COLOR", words[-1]))
+            out.append((words[-2], words[-1]))
+            continue
+        decl = re.sub(r":\s*\w+\s*$", "", decl.strip())
+        if not decl:
+            continue
+        if decl == "INTERNAL_DATA" or decl.startswith("INTERNAL_DATA"):
+            out.append(("INTERNAL_DATA", ""))
+            rest = decl[len("INTERNAL_DATA"):].strip()
+            if not rest:
+                continue
+            decl = rest
+        words = decl.replace(",", " , ").split()
+        kind, names = words[0], [w for w in words[1:] if w != ","]
+        out.extend((kind, n) for n in names)
+    return out
+
+
+def _component_count(kind: str) -> int:
+    m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float)([234]?)", kind)
+    if m:
+        return _SIZE[m.group(1)]
+    m = re.fullmatch(r"[iub]?vec([234])", kind)  # a port-unity port's GLSL types
+    return int(m.group(1)) if m else (1 if kind in ("float", "int", "uint", "bool") else 0)
+
+
+def _lighting(masked: str, model: str, where) -> M.LightingFunction:
+    if model in M.BUILTIN_MODELS:
+        out = M.BUILTIN_MODELS[model]
+        form = M.FORM_GI if model == "Lambert" else M.FORM_GI_VIEW
+        return M.LightingFunction(model, form, out, has_gi=True)
+    found = _function(masked, "Lighting" + model)
+    if found is None:
+        raise UnityShaderError(
+            f"{where(0)}: #pragma surface names lighting model {model!r}, but there is no "
+            f"Lighting{model}(...) function (built in: {', '.join(M.BUILTIN_MODELS)})")
+    m, _ = found
+    params = _params(m.group(2)) or []
+    types = [t for _, t, _ in params]
+    has_gi = _function(masked, f"Lighting{model}_GI") is not None
+    if len(params) == 3 and types[2] == "UnityGI":
+        form = M.FORM_GI_VIEW
+    elif len(params) == 2 and types[1] == "UnityGI":
+        form = M.FORM_GI
+    elif len(params) == 3:
+        form = M.FORM_LIGHT_DIR
+    elif len(params) == 4:
+        form = M.FORM_LIGHT_VIEW_DIR
+    else:
+        raise UnityShaderError(
+            f"{where(m.start())}: Lighting{model}({m.group(2).strip()}) is none of Unity's forms: "
+            "(s, lightDir, atten), (s, lightDir, viewDir, atten), (s, viewDir, UnityGI gi), (s, UnityGI gi)")
+    if form in (M.FORM_GI_VIEW, M.FORM_GI) and not has_gi:
+        raise UnityShaderError(f"{where(m.start())}: Lighting{model} takes UnityGI, so Unity also needs "
+                               f"void Lighting{model}_GI(SurfaceOutput s, UnityGIInput data, inout UnityGI gi); "
+                               "there is none")
+    return M.LightingFunction(model, form, types[0], has_gi)
+
+
+def parse_program(program: str, path: Path, first_line: int = 1, shader: M.SurfaceShader | None = None,
+                  name: str | None = None) -> M.SurfaceShader:
+    """The model of a CGPROGRAM text (``first_line``: where it starts in ``path``)."""
+    masked = _blank_comments(program)
+    check_refusals(program, path, first_line, path.parent)
+    # what the program includes may define its parts (struct Input, vertex: functions, ...)
+    everything = masked + "\n" + included_text(program, path.parent)
+    everything = active_text(everything, defines_of(everything))  # the default variant's branches
+
+    def where(index: int) -> str:  # an index past the program's text lies in an include
+        return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"
+
+    pragma, pragma_at = _pragma(masked, where)
+    if shader is None:
+        shader = M.SurfaceShader(path=path, name=name or path.stem, program=program,
+                                 program_line=first_line, pragma=pragma)
+    shader.program, shader.program_line, shader.pragma = program, first_line, pragma
+    for option in pragma.unsupported:
+        shader.warnings.append(f"{where(pragma_at)}: #pragma surface option {option!r} is not supported "
+                               "by pbrlab and has no effect")
+    # The surface function and the output struct it fills.
+    found = _function(everything, pragma.function)
+    if found is None:
+        raise UnityShaderError(f"{where(0)}: #pragma surface names {pragma.function!r}, but no "
+                               f"function {pragma.function}(Input IN, inout SurfaceOutput... o) is defined")
+    m, body = found
+    params = _params(m.group(2))
+    if not params or len(params) != 2 or params[0][1] != "Input" or params[1][0] != "inout":
+        raise UnityShaderError(f"{where(m.start())}: {pragma.function}({m.group(2).strip()}): expected "
+                               f"(Input IN, inout <SurfaceOutput type> o)")
+    shader.output_type = params[1][1]
+    out_name = params[1][2]
+    shader.writes_normal = re.search(r"\b" + re.escape(out_name) + r"\.Normal\s*[-+*/]?=(?!=)", body) is not None
+    shader.lighting = _lighting(everything, pragma.model, where)
+    if shader.lighting.output_type != shader.output_type:
+        raise UnityShaderError(
+            f"{where(m.start())}: {pragma.function} fills {shader.output_type}, but lighting model "
+            f"{pragma.model} takes {shader.lighting.output_type}")
+    if shader.output_type in M.OUTPUT_FIELDS:
+        shader.output_fields = dict(M.OUTPUT_FIELDS[shader.output_type])
+    else:
+        sm, sbody = _struct_fields(everything, shader.output_type)
+        if sm is None:
+            raise UnityShaderError(f"{where(m.start())}: output struct {shader.output_type} is not defined")
+        shader.output_fields = {n: _component_count(t) for t, n in _members(sbody)}
+    # struct Input.
+    im, ibody = _struct_fields(everything, "Input")
+    if im is None:
+        raise UnityShaderError(f"{where(0)}: no struct Input {{ ... }} (Unity requires one, even if empty "
+                               "but for one member)")
+    members = _members(ibody)
+    shader.internal_data = any(t == "INTERNAL_DATA" for t, _ in members)
+    shader.facing_members = [n for t, n in members if t == "VFACE"]
+    shader.color_members = [n for t, n in members if t == "COLOR"]
+    shader.input_members = [(t, n) for t, n in members if t not in ("INTERNAL_DATA", "VFACE", "COLOR")]
+    # vertex: and finalcolor: functions.
+    if pragma.vertex:
+        found = _function(everything, pragma.vertex)
+        vp = _params(found[0].group(2)) if found else None
+        if not vp or vp[0][0] != "inout" or (len(vp) == 2 and (vp[1][0], vp[1][1]) != ("out", "Input")) or len(vp) > 2:
+            raise UnityShaderError(f"{where(found[0].start() if found else 0)}: vertex:{pragma.vertex} needs "
+                                   f"void {pragma.vertex}(inout appdata_full v) or "
+                                   f"(inout appdata_full v, out Input o)")
+        written = ()
+        if len(vp) == 2:
+            # assigned, or handed to a macro or an out parameter (COMPUTE_EYEDEPTH(o.eyeDepth))
+            written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)", found[1]))))
+        shader.vertex = M.VertexFunction(pragma.vertex, vp[0][1], written, vp[1][2] if len(vp) == 2 else None)
+        if vp[0][1] not in ("appdata_full", "appdata_base", "appdata_tan"):
+            from .parse_pass import _structs
+            own = _structs(everything).get(vp[0][1])
+            if own is None:
+                raise UnityShaderError(f"{where(found[0].start())}: vertex:{pragma.vertex} takes "
+                                       f"{vp[0][1]}, a struct that is not defined")
+            shader.vertex.appdata_members = own.members
+    if pragma.finalcolor:
+        found = _function(everything, pragma.finalcolor)
+        fp = _params(found[0].group(2)) if found else None
+        if not fp or len(fp) != 3 or fp[0][1] != "Input" or fp[2][0] != "inout":
+            raise UnityShaderError(f"{where(found[0].start() if found else 0)}: finalcolor:{pragma.finalcolor} "
+                                   f"needs void {pragma.finalcolor}(Input IN, {shader.output_type} o, "
+                                   "inout fixed4 color)")
+    # Input members nothing fills.
+    written = set(shader.vertex.writes_input) if shader.vertex else set()
+    for kind, member in shader.custom_members():
+        if member not in written:
+            raise UnityShaderError(
+                f"{where(im.start())}: Input.{member} is not a name Unity fills (uv_<Texture>, "
+                f"uv2_<Texture>, {', '.join(M.FILLED_INPUTS)}, INTERNAL_DATA) and no vertex: "
+                "function writes it")
+    shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
+                                           r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
+    shader.light_keywords = tests_light_keywords(everything)
+    if pragma.model in M.LAYERED_MODELS:
+        # the layers whose fields it writes are compiled in (surface_layers.py)
+        shader.layers = written_layers(everything)
+        if shader.light_keywords:
+            raise UnityShaderError(f"{where(pragma_at)}: lighting model {pragma.model} shades every light in "
+                                   "one program, so it cannot test Unity's per-light keywords "
+                                   f"({', '.join(LIGHT_KEYWORDS)}); use Standard, or remove those #if lines")
+    return shader
+
+
+# Unity's per-light keywords (ForwardBase: DIRECTIONAL; ForwardAdd: one per light type).
+LIGHT_KEYWORDS = ("USING_DIRECTIONAL_LIGHT", "DIRECTIONAL", "POINT", "SPOT", "POINT_COOKIE",
+                  "DIRECTIONAL_COOKIE")
+_KEYWORD_TEST = re.compile(r"^[ \t]*#[ \t]*(?:if|ifdef|ifndef|elif)\b[^\n]*\b(?:" + "|".join(LIGHT_KEYWORDS) + r")\b", re.M)
+
+
+def tests_light_keywords(masked: str) -> bool:
+    """Whether preprocessor lines test a per-light keyword (then each light type gets its program)."""
+    return _KEYWORD_TEST.search(masked) is not None
+
+
+def _top_level(masked: str) -> str:
+    """Only the text at brace depth 0 (global declarations)."""
+    out, depth = [], 0
+    for ch in masked:
+        if ch == "{":
+            depth += 1
+        if depth == 0 or ch == "\n":
+            out.append(ch)
+        if ch == "}":
+            depth -= 1
+            out.append(" ")
+    return "".join(out)
+
+
+def _implicit_texture_properties(program: str, properties: dict) -> None:
+    """A sampler the program declares without a Properties line still gets a texture, as in
+    Unity (its default, white here; a samplerCUBE the environment) and _ST (1, 1, 0, 0)."""
+    masked = _top_level(_blank_comments(program))
+    masked = re.sub(r"\bUNITY_DECLARE_(?:DEPTH_TEXTURE|TEX2D|TEX2D_NOSAMPLER|SCREENSPACE_TEXTURE)\s*\(\s*(\w+)\s*\)",
+                    r"sampler2D \1", masked)
+    masked = re.sub(r"\bUNITY_DECLARE_TEXCUBE\s*\(\s*(\w+)\s*\)", r"samplerCUBE \1", masked)
+    masked = re.sub(r"\bsampler2D_(?:float|half)\b", "sampler2D", masked)
+    for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + _IDENT + r")\s*;", masked):
+        if name not in properties:
+            properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
+                                          ("implicit",))
+
+
+_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+# A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
+_ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
+_CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
+
+
+class UnityIncludeRefusal(UnityShaderError):
+    """A shader includes one of pbrlab's stand-ins that refuses (Unity data the harness lacks):
+    no SubShader or Fallback can help, so it is raised as it stands."""
+
+
+def resolve_included(name: str, folder: Path):
+    """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
+    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``); else None."""
+    from .program import CGINC
+    for candidate in (folder / name, CGINC / Path(name).name):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def _read_include(path: Path):
+    try:
+        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def stand_in_refusal(text: str) -> str | None:
+    """The message of a ``#error`` line outside every #if of ``text`` (None if there is none)."""
+    masked = _blank_comments(text)
+    depth = 0
+    for m in sorted([*_CONDITIONAL.finditer(masked), *_ERROR.finditer(masked)], key=lambda m: m.start()):
+        if m.re is _ERROR:
+            if depth == 0:
+                return m.group(1).strip()
+            continue
+        depth += -1 if m.group(1) == "endif" else 1
+    return None
+
+
+def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen=None) -> None:
+    """Raise ``UnityIncludeRefusal`` at the shader's ``#include`` line when what it includes
+    (directly or further down) is a stand-in that refuses with ``#error``."""
+    from .program import CGINC
+    seen = set() if seen is None else seen
+    for m in _INCLUDE.finditer(_blank_comments(program)):
+        target = resolve_included(m.group(1), folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        text = _read_include(target)
+        if text is None:
+            continue
+        line = first_line - 1 + _line_of(program, m.start())
+        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
+        if message:
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
+        try:
+            check_refusals(text, path, first_line, target.parent, seen)
+        except UnityIncludeRefusal as exc:  # found further down: name this line of the shader
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}" -> '
+                                      + str(exc).split(": ", 1)[1]) from None
+
+
+def included_text(program: str, folder: Path, seen=None) -> str:
+    """The text of the files ``program`` includes (recursively; the shader's folder first, then
+    pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
+    struct Input, a vertex: or Lighting<Name> function defined in an include."""
+    seen = set() if seen is None else seen
+    out = []
+    for name in _INCLUDE.findall(_blank_comments(program)):
+        candidate = resolve_included(name, folder)
+        if candidate is None or candidate.resolve() in seen:
+            continue
+        seen.add(candidate.resolve())
+        text = _read_include(candidate)
+        if text is None:
+            continue
+        out.append(_blank_comments(text))
+        out.append(included_text(text, candidate.parent, seen))
+    return "\n".join(out)
+
+
+# Keywords a stand-in of pbrlab's declares through the shader but does not honour: a material
+# that enables one is refused by name (scene.py), never drawn as if it were off.
+STAND_IN_REFUSED_KEYWORDS = {
+    "UnityStandardCore.cginc": {
+        "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
+                                   "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
+    },
+}
+
+
+def refused_keywords(program: str, folder: Path, seen=None) -> dict:
+    """{keyword: reason} of the stand-ins ``program`` includes (recursively) that refuse it."""
+    from .program import CGINC
+    seen = set() if seen is None else seen
+    out = {}
+    for name in _INCLUDE.findall(_blank_comments(program)):
+        target = resolve_included(name, folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        if target.parent.resolve() == CGINC.resolve():
+            out.update(STAND_IN_REFUSED_KEYWORDS.get(target.name, {}))
+        text = _read_include(target)
+        if text is not None:
+            out.update(refused_keywords(text, target.parent, seen))
+    return out
+
+
+# `#pragma multi_compile[_local] ...` / `shader_feature[_local] ...`: the keywords a program
+# declares (a material's `keywords` may enable them; `_` and `__` are Unity's "none").
+_KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader_feature)(?:_local)?"
+                             r"(?:_vertex|_fragment)?[ \t]+([^\n]*)$", re.M)
+
+
+def declared_keywords(program: str) -> frozenset:
+    """The keywords ``#pragma multi_compile`` / ``shader_feature`` lines of ``program`` declare."""
+    words = set()
+    for m in _KEYWORD_PRAGMA.finditer(_blank_comments(program)):
+        words.update(w for w in m.group(1).split() if re.fullmatch(_IDENT, w) and set(w) != {"_"})
+    return frozenset(words)
+
+
+def parse_text(text: str, path: Path) -> M.SurfaceShader:
+    """The surface program of a shader's text (the first one, where a file has several)."""
+    shader = read_text(text, path)
+    if shader.surface is None:
+        raise UnityShaderError(f"{path}: no surface program (#pragma surface) in the SubShader that runs")
+    return shader.surface
+
+
+# LightMode tags of passes the harness skips, with the reason said once per pass.
+SKIPPED_LIGHT_MODES = {
+    "shadowcaster": "no shadow maps here", "shadowcollector": "no shadow maps here",
+    "meta": "no lightmap baking here", "deferred": "forward rendering only",
+    "prepassbase": "forward rendering only", "prepassfinal": "forward rendering only",
+    "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
+    "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
+    "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
+}
+DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
+
+
+def read_text(text: str, path: Path) -> M.UnityShader:
+    """A whole shader: a ShaderLab file, bare CGPROGRAM text, or a port-unity port."""
+    text = text.removeprefix("\ufeff")
+    masked = _blank_comments(text)
+    if not re.search(r"^\s*Shader\s*\"", masked, re.M):
+        shader = parse_program(text, path, 1)
+        if text.startswith(PORT_MARKER):
+            shader.language = "glsl"
+            for number, line in enumerate(text.splitlines(), start=1):
+                where = f"{path}:{number}"
+                if line.startswith("//@property "):
+                    shader.properties.update(_properties_in(line[len("//@property "):], number, path,
+                                                            shader.warnings))
+                elif line.startswith("//@state "):
+                    word, _, args = line[len("//@state "):].partition(" ")
+                    apply_state([shaderlab.StateCommand(word, args, number)], shader.state,
+                                shader.properties, path, shader.warnings, surface=True)
+        _implicit_texture_properties(shader.program + "\n" + included_text(shader.program, path.parent),
+                                     shader.properties)
+        return M.UnityShader(path, shader.name, [shader], shader.properties, shader.warnings)
+    try:
+        layout = shaderlab.read_layout(text, path)
+    except shaderlab.ShaderLabError as exc:
+        raise UnityShaderError(str(exc)) from None
+    warnings: list = []
+    props = {}
+    if layout.properties_span:
+        a, b = layout.properties_span
+        props = _properties_in(masked[a:b], _line_of(text, a), path, warnings)
+    reasons = []
+    for index, sub in enumerate(layout.subshaders):
+        notes: list = []
+        try:
+            passes = _subshader_passes(layout, sub, props, warnings, notes)
+        except UnityIncludeRefusal:
+            raise
+        except UnityShaderError as exc:
+            reasons.append(f"SubShader {index + 1} (line {sub.line}): {exc}")
+            continue
+        if len(layout.subshaders) > 1:
+            notes.insert(0, f"{path}:{sub.line}: SubShader {index + 1} of {len(layout.subshaders)} runs"
+                         + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
+        for p in passes:
+            if p.kind != "grab":
+                # samplers its includes declare too (TerrainSplatmapCommon.cginc's _Control, ...)
+                _implicit_texture_properties(p.program + "\n" + included_text(p.program, path.parent), props)
+                p.properties = props
+        return M.UnityShader(path, layout.name, passes, props, warnings, notes)
+    return _fallback(layout, reasons, path)
+
+
+def _fallback(layout, reasons: list, path: Path) -> M.UnityShader:
+    why = "; ".join(reasons) if reasons else "it has no SubShader"
+    if layout.fallback in (None, "off"):
+        if len(reasons) == 1:
+            raise UnityShaderError(reasons[0].split(": ", 1)[1])
+        raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
+    found = find_shader(layout.fallback, path)
+    if found is None:
+        raise UnityShaderError(
+            f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
+            f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
+            "shader's folder (or below it), or name it in $PBRLAB_UNITY_SHADERS")
+    shader = read_shader(found)
+    shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
+                        f'"{layout.fallback}" ({found}) is drawn instead')
+    return shader
+
+
+def find_shader(name: str, near: Path):
+    """The ``.shader`` file whose ``Shader "name"`` is ``name`` (or ``Legacy Shaders/name``,
+    Unity's old built-in names), in the folder of ``near`` and below, then the folders of
+    $PBRLAB_UNITY_SHADERS."""
+    import os
+    wanted = {name, f"Legacy Shaders/{name}"}
+    roots = [near.parent] + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p]
+    for root in roots:
+        for candidate in sorted(root.rglob("*.shader")):
+            try:
+                head = candidate.read_text(encoding="utf-8", errors="replace")[:4000]
+            except OSError:
+                continue
+            m = re.search(r'\bShader\s*"([^"]*)"', _blank_comments(head))
+            if m and m.group(1) in wanted and candidate.resolve() != near.resolve():
+                return candidate
+    return None
+
+
+def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> list:
+    from .parse_pass import parse_pass
+    path = layout.path
+    passes = []
+    for item in sub.items:
+        kind = item[0]
+        if kind == "program":
+            block = item[1]
+            if block.language != "CG":
+                raise UnityShaderError(f"{path}:{block.line}: {block.keyword} is not supported: pbrlab runs "
+                                       "CGPROGRAM blocks (Unity's built-in render pipeline)")
+            program, first = layout.program_text(block, sub)
+            shader = parse_program(program, path, first, name=layout.name)
+            state = M.RenderState()
+            apply_state(sub.state, state, props, path, shader.warnings, surface=True)
+            shader.state = state
+            warnings.extend(shader.warnings)
+            shader.warnings = warnings
+            passes.append(shader)
+        elif kind == "pass":
+            vf = _pass(layout, sub, item[1], props, warnings, notes)
+            if vf is not None:
+                passes.append(vf)
+        elif kind == "usepass":
+            _, name, line = item
+            pass_name = name.rpartition("/")[2].lower()
+            if pass_name in SKIPPED_LIGHT_MODES or pass_name in ("caster", "shadowcollector"):
+                notes.append(f'{path}:{line}: UsePass "{name}" skipped: '
+                             f"{SKIPPED_LIGHT_MODES.get(pass_name, 'no shadow maps here')}")
+                continue
+            used = _use_pass(name, line, path, props, warnings, notes)
+            if used is not None:
+                passes.append(used)
+        elif kind == "grabpass":
+            _, name, line = item
+            passes.append(M.GrabPass(name, line))
+    if not any(p.kind != "grab" for p in passes):
+        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped)")
+    return passes
+
+
+def _pass(layout, sub, p, props: dict, warnings: list, notes: list):
+    """The vertex/fragment pass of ``Pass { ... }`` in ``sub``, or None where the harness
+    skips it (a LightMode it does not draw, a depth-only pass), with a note saying so."""
+    from .parse_pass import parse_pass
+    path = layout.path
+    mode = p.tags.get("LightMode", "")
+    label = f"Pass{' ' + repr(p.name) if p.name else ''}"
+    if mode.lower() in SKIPPED_LIGHT_MODES:
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {SKIPPED_LIGHT_MODES[mode.lower()]}")
+        return None
+    if mode.lower() not in DRAWN_LIGHT_MODES:
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
+        return None
+    if p.fixed_function:
+        word, line = p.fixed_function[0]
+        raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
+                               "programmable passes only")
+    if p.program is None:
+        state = M.RenderState()
+        apply_state(sub.state + p.state, state, props, path, [], surface=False)
+        if state.color_mask == "0":
+            notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
+            return None
+        raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
+                               "fixed-function default, which pbrlab does not have")
+    if p.program.language != "CG":
+        raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
+                               "pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)")
+    program, first = layout.program_text(p.program, sub)
+    vf = parse_pass(program, path, first, p)
+    apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+    return vf
+
+
+def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list):
+    """``UsePass "Shader/NAME"``: the pass named NAME (Unity upper-cases pass names) of that
+    shader's first SubShader that has one, drawn with this material's properties; None
+    where the harness skips that pass (noted)."""
+    shader_name, _, pass_name = name.rpartition("/")
+    found = find_shader(shader_name, path) if shader_name else None
+    if found is None:
+        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
+                               ".shader file in this shader's folder or name it in $PBRLAB_UNITY_SHADERS)")
+    try:
+        layout = shaderlab.read_layout(found.read_text(encoding="utf-8").removeprefix("\ufeff"), found)
+    except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:
+        raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {exc}') from None
+    for sub in layout.subshaders:
+        for item in sub.items:
+            if item[0] == "pass" and (item[1].name or "").upper() == pass_name.upper():
+                before = len(notes)
+                vf = _pass(layout, sub, item[1], props, warnings, notes)
+                if vf is None:
+                    notes[before:] = [f'{path}:{line}: UsePass "{name}": ' + n for n in notes[before:]]
+                return vf
+    raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {found} has no Pass named {pass_name!r} '
+                           "(a surface program's generated passes cannot be used)")
+
+
+def read_shader(path: Path) -> M.UnityShader:
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UnityShaderError(f"{path}: cannot read: {exc}") from None
+    return read_text(text, Path(path))
+
+
+def is_unity_surface(path: Path) -> bool:
+    """A ``.shader`` file, or text with a ``#pragma surface`` line."""
+    if path.suffix == ".shader":
+        return True
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return False
+    return re.search(r"^[ \t]*#[ \t]*pragma[ \t]+surface\b", _blank_comments(text), re.M) is not None
+
+
+def parse_file(path: Path) -> M.SurfaceShader:
+    """The surface program of a shader file (``read_shader`` gives every pass)."""
+    shader = read_shader(path)
+    if shader.surface is None:
+        raise UnityShaderError(f"{path}: no surface program (#pragma surface) in the SubShader that runs")
+    return shader.surface

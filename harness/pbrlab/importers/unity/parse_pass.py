@@ -1,0 +1,153 @@
+"""Read a vertex/fragment pass (``#pragma vertex v`` / ``#pragma fragment f``) into a
+``model.VertexFragmentPass``: the two functions' signatures with their semantics and the
+structs they pass, which ``generate_pass.py`` wires to the harness's meshes and target.
+
+    vf = parse_pass(program_text, path, first_line, pass_block)
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from . import model as M
+from .conditionals import active_text, defines_of
+from .parse import (UnityShaderError, _IDENT, _INCLUDE, _blank_comments, _line_of, _matching_brace, _top_level, check_refusals, included_text, resolve_included)
+
+_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
+# Stages pbrlab does not run, named in the refusal.
+UNSUPPORTED_STAGES = {"geometry": "a geometry shader", "hull": "a hull (tessellation) shader",
+                      "domain": "a domain (tessellation) shader"}
+
+
+def _split_params(text: str) -> list[str]:
+    out, depth, cur = [], 0, []
+    for ch in text:
+        if ch == "," and depth == 0:
+            out.append("".join(cur))
+            cur = []
+            continue
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        cur.append(ch)
+    if "".join(cur).strip():
+        out.append("".join(cur))
+    return [p.strip() for p in out if p.strip()]
+
+
+def _param(text: str, where: str) -> tuple:
+    """(qualifier, type, name, semantic) of one parameter."""
+    semantic = ""
+    m = re.search(r":\s*(\w+)\s*$", text)
+    if m:
+        semantic, text = m.group(1), text[:m.start()].strip()
+    words = text.split()
+    qualifiers = [w for w in words if w in ("in", "out", "inout", "uniform", "nointerpolation",
+                                            "linear", "centroid", "noperspective", "sample", "const")]
+    words = [w for w in words if w not in qualifiers]
+    if len(words) != 2:
+        raise UnityShaderError(f"{where}: cannot read the parameter {text!r}")
+    qual = next((q for q in qualifiers if q in ("out", "inout")), "in")
+    return qual, words[0], words[1], semantic
+
+
+def _function_signature(masked: str, name: str, where_of):
+    m = None
+    for cand in re.finditer(r"\b(" + _IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked):
+        if cand.group(1) not in ("return", "else"):
+            m = cand
+            break
+    if m is None:
+        return None
+    depth, i = 1, m.end()
+    while i < len(masked) and depth:
+        depth += {"(": 1, ")": -1}.get(masked[i], 0)
+        i += 1
+    params_text = masked[m.end():i - 1]
+    rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
+    if rest is None:
+        return None
+    where = where_of(m.start())
+    params = [_param(p, where) for p in _split_params(params_text) if p != "void"]
+    return m.group(1), params, rest.group(1) or "", m.start()
+
+
+def _structs(masked: str) -> dict:
+    out = {}
+    for m in re.finditer(r"\bstruct\s+(" + _IDENT + r")\s*\{", masked):
+        end = _matching_brace(masked, m.end() - 1)
+        members = []
+        body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        for decl in body.split(";"):
+            decl = decl.strip()
+            if not decl or "(" in decl:  # a macro (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)): no member here
+                continue
+            semantic = ""
+            sm = re.search(r":\s*(\w+)\s*$", decl)
+            if sm:
+                semantic, decl = sm.group(1), decl[:sm.start()].strip()
+            words = [w for w in decl.replace(",", " , ").split()
+                     if w not in ("nointerpolation", "linear", "centroid", "noperspective", "sample")]
+            if len(words) < 2:
+                continue
+            kind, names = words[0], [w for w in words[1:] if w != ","]
+            members.extend((kind, n, semantic) for n in names)
+        out[m.group(1)] = M.ShaderStruct(m.group(1), members)
+    return out
+
+
+def _unresolved_include(program: str, folder: Path):
+    """(name, offset) of the first ``#include`` of ``program`` that neither the shader's folder
+    nor pbrlab's stand-ins hold (None when every one resolves)."""
+    for m in _INCLUDE.finditer(_blank_comments(program)):
+        if resolve_included(m.group(1), folder) is None:
+            return m.group(1), m.start()
+    return None
+
+
+def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragmentPass:
+    masked = _blank_comments(program)
+    check_refusals(program, path, first_line, path.parent)
+    everything = masked + "\n" + included_text(program, path.parent)
+    everything = active_text(everything, defines_of(everything))  # the default variant's branches
+
+    def where(index: int) -> str:
+        return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"
+
+    pragmas = {}
+    for m in _PRAGMA.finditer(masked):
+        pragmas.setdefault(m.group(1), (m.group(2).split(), m.start()))
+    if "surface" in pragmas:
+        raise UnityShaderError(f"{where(pragmas['surface'][1])}: #pragma surface inside a Pass: Unity "
+                               "allows surface programs only directly in a SubShader")
+    for stage, words in UNSUPPORTED_STAGES.items():
+        if stage in pragmas:
+            raise UnityShaderError(f"{where(pragmas[stage][1])}: #pragma {stage}: {words} is not supported "
+                                   "by pbrlab (vertex and fragment stages only)")
+    if "vertex" not in pragmas or "fragment" not in pragmas:
+        missing = "vertex" if "vertex" not in pragmas else "fragment"
+        raise UnityShaderError(f"{where(0)}: a Pass program needs #pragma vertex and #pragma fragment "
+                               f"(no #pragma {missing})")
+    vertex, fragment = pragmas["vertex"][0][0], pragmas["fragment"][0][0]
+    found = {}
+    for role, name in (("vertex", vertex), ("fragment", fragment)):
+        sig = _function_signature(everything, name, where)
+        if sig is None:
+            unresolved = _unresolved_include(program, path.parent)
+            if unresolved:  # most likely where the function lives: name the file, not the function
+                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include "
+                                       "files pbrlab has no stand-in for; pbrlab does not provide it "
+                                       f"(#pragma {role} {name} names a function none of the rest defines)")
+            raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
+                                   "is defined")
+        found[role] = sig
+    structs = _structs(everything)
+    vf = M.VertexFragmentPass(
+        path=path, name=block.name, light_mode=block.tags.get("LightMode", "Always"),
+        program=program, program_line=first_line, vertex=vertex, fragment=fragment,
+        vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
+        vertex_return_semantic=found["vertex"][2],
+        fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
+        fragment_return_semantic=found["fragment"][2], structs=structs)
+    vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
+                                       r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
+    return vf

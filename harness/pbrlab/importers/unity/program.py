@@ -1,0 +1,300 @@
+"""Compile a surface shader's programs and feed them (the renderer's one entry to Unity).
+
+    program = build_program(ctx, material.unity, "hlsl", "sphere", defines)
+    bind(program, material, obj, frame, cache, first_unit)
+
+HLSL: the generated text (generate.py) through glslang and spirv-cross, as every HLSL scene
+program (programs.py); a ``#line`` puts the CGPROGRAM at its line of the ``.shader``. GLSL:
+the same glue around the ``port-unity`` port of the CGPROGRAM (port.py), which keeps its line
+count; the port is included as an in-memory file (``shaders.VirtualFile``) named after the
+``.shader`` and numbered from the CGPROGRAM's line, so compile errors on both paths read
+``X.shader:28: ...`` (a local ``.cginc``'s at its own path and line). Both get the harness's
+GLSL vertex stage. Unity's stand-in ``.cginc`` files (``cginc/``) resolve the built-in includes.
+
+Programs are kept in the context's scene-program cache (``programs.program_cache``: at most
+``programs.PROGRAMS_PER_CONTEXT``, least recently used released), each entry rebuilt when the
+``.shader`` or any file it includes, recursively, changed on disk.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ...gpu import hlsl, programs, shaders
+from ...foundation.errors import PbrlabError
+from ...foundation.file_identity import include_closure
+from ...gpu.programs import TEMPLATES, template_source
+from ...gpu.programs import set_uniform as _set
+from . import generate, parse, port
+from . import model as M
+from . import unprovided
+from .properties import TextureValue
+
+CGINC = Path(__file__).parent / "cginc"
+VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
+# The include name under which the GLSL path's generated text pulls in the in-memory port
+# (no file has it: shaders.expand finds it among its virtual files first).
+_PORT_INCLUDE = "pbrlab-unity-port:{}"
+# What an #include "..." line cannot carry (a double quote, a backslash, control
+# characters) and the escape character itself: percent-encoded in a port's include name.
+_NOT_IN_INCLUDE = re.compile(r'["\\%\x00-\x1f\x7f]')
+
+
+def _port_include(path) -> str:
+    """The include name of the port of ``path`` (one name per file, any file name)."""
+    return _PORT_INCLUDE.format(_NOT_IN_INCLUDE.sub(lambda m: f"%{ord(m.group(0)):02X}", str(path)))
+
+
+# Unity's _SpecColor when a shader's Properties lack it: Unity's legacy shaders' default
+# ("Specular Color", Color) = (0.5, 0.5, 0.5, 1).
+DEFAULT_SPEC_COLOR = (0.5, 0.5, 0.5, 1.0)
+# unity_SpecCube0_HDR: the harness's environment is float radiance, so DecodeHDR's
+# multiplier and exponent are 1 and alpha is unused.
+SPECCUBE_HDR = (1.0, 1.0, 0.0, 0.0)
+
+
+def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
+    return [TEMPLATES, CGINC, shader.path.parent]
+
+
+_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
+
+
+def program_include(shader) -> tuple[str, dict]:
+    """(the line that includes the GLSL program, the virtual files it needs): the port of the
+    program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
+    includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
+    does), each include line relinked to its port, so an include's Cg goes through the same
+    type pass and renames as the program's, and errors name the original file and line."""
+    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written (as a
+        # virtual file: its own name may be one an #include line cannot carry)
+        name = _port_include(shader.path)
+        return f'#include "{name}"', {name: shaders.VirtualFile(shaders.read_source(shader.path),
+                                                                str(shader.path), 1)}
+    virtual: dict = {}
+    names: dict = {}   # resolved include -> its virtual name
+
+    def relinked(text: str, where: Path) -> str:
+        def relink(m):
+            target = parse.resolve_included(m.group(2), where)
+            if target is None:
+                return m.group(0)  # the GLSL expander names what it cannot find
+            key = target.resolve()
+            if key not in names:
+                names[key] = _port_include(key)
+                body = shaders.strip_bom(target.read_text(encoding="utf-8"))
+                virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body, target.parent), target.parent),
+                                                          str(target), 1)
+            return m.group(1) + names[key] + m.group(3)
+        return _INCLUDE_LINE.sub(relink, text)
+
+    name = _port_include(shader.path.name)
+    text = relinked(shaders.strip_bom(port.port_program(shader)), shader.path.parent)
+    virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
+    return f'#include "{name}"', virtual
+
+
+def ported_sources(virtual: dict) -> list[Path]:
+    """The files the virtual ports were made from (their edits invalidate the program)."""
+    return [Path(v.display) for v in virtual.values()]
+
+
+def hlsl_program(shader) -> str:
+    """The CGPROGRAM as written, less a byte-order mark opening a bare program file."""
+    return shaders.strip_bom(shader.program)
+
+
+def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
+    """(text, include dirs, virtual files) of the fragment program."""
+    if shader.language == "glsl" and language == "hlsl":
+        raise PbrlabError(f"surface {shader.path}: a port-unity GLSL port renders only in GLSL; "
+                          "for --language hlsl name the original .shader file")
+    if language == "hlsl":
+        return (generate.fragment_source(shader, "hlsl", stem, hlsl_program(shader), str(shader.path), defines),
+                _include_dirs(shader), {})
+    include, virtual = program_include(shader)
+    text = generate.fragment_source(shader, "glsl", stem, include, shader.path.name, defines)
+    return text, _include_dirs(shader), virtual
+
+
+def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -> tuple:
+    """(the vertex stage running the shader's vertex: function (generate.vertex_source),
+    the files it read)."""
+    display = f"{shader.path.name} (generated {language} vertex stage)"
+    if language == "hlsl":
+        text = generate.vertex_source(shader, "hlsl", hlsl_program(shader), str(shader.path), defines)
+        glsl = rename_vertex_globals(
+            hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage="vert"), plain_uniforms=True))
+        return (shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"]),
+                include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
+    include, virtual = program_include(shader)
+    text = generate.vertex_source(shader, "glsl", include, shader.path.name, defines)
+    source = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+    return source, source.paths + ported_sources(virtual)
+
+
+def indexed(program, shader: Path):
+    """``program`` with its struct members indexed (``bind`` sets an HLSL stage's globals
+    through them) and the shader it runs named (for binding errors)."""
+    members: dict = {}
+    for gl_name in (n for n in program if "." in n):
+        members.setdefault(gl_name.split(".", 1)[1], []).append(gl_name)
+    program.extra = {"members": members, "shader": str(shader)}
+    return program
+
+
+def rename_vertex_globals(glsl: str) -> str:
+    """Both HLSL stages hold a `uniform _Global <id>;` of their own members: rename the
+    vertex stage's so the program links (programs.set_uniform then sets the member in each)."""
+    instance = re.search(r"uniform _Global (\w+);", glsl)
+    if instance:
+        glsl = re.sub(r"\b_Global\b", "_GlobalVertex", glsl)
+        glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_vertex_globals", glsl)
+    return glsl
+
+
+def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, defines: dict):
+    """The program of ``shader`` for a sphere or mesh draw; with a vertex: function always
+    the mesh one (spheres are tessellated: tessellate.py)."""
+    if shader.vertex is not None:
+        stem = "mesh"
+    key = ("unity", str(shader.path), shader.language, shader.program, shader.program_line,
+           language, stem, tuple(sorted(defines.items())))
+
+    def build():
+        text, dirs, virtual = fragment_text(shader, language, stem, defines)
+        display = f"{shader.path.name} (generated {language} {stem} program)"
+        paths = [shader.path]
+        if language == "hlsl":
+            glsl = hlsl.hlsl_to_glsl(text, display, dirs, plain_uniforms=True)
+            fragment = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+            paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
+        else:
+            fragment = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+            paths += fragment.paths + ported_sources(virtual)
+        if shader.vertex is not None:
+            vertex, vertex_paths = _vertex_stage(shader, language, defines, dirs)
+        else:
+            vertex = template_source(VERTEX[stem], defines)
+            vertex_paths = [TEMPLATES / VERTEX[stem], *vertex.paths]
+        program = indexed(shaders.build_program(ctx, vertex, fragment), shader.path)
+        return program, [*paths, *vertex_paths]
+
+    try:
+        return programs.program_cache(ctx).get(key, build)
+    except PbrlabError as exc:  # a Unity name pbrlab leaves out on purpose: say which feature
+        unprovided.raise_named(exc, shader.path)
+
+
+def object_matrix(obj) -> np.ndarray:
+    """Object to world: a sphere's object space is the unit sphere at its centre."""
+    if obj.sphere is not None:
+        centre, radius = obj.sphere
+        m = np.diag([radius, radius, radius, 1.0])
+        m[:3, 3] = centre
+        return m
+    return obj.transform
+
+
+def _column_major(m: np.ndarray) -> tuple:
+    return tuple(np.asarray(m, np.float64).T.reshape(-1))
+
+
+def bind(program, material, obj, frame, cache, environment_cube, first_unit: int) -> None:
+    """Unity's globals, the material's property values, _ST and textures."""
+    model = object_matrix(obj)
+    _set(program, "_Time", (0.0, 0.0, 0.0, 0.0))
+    _set(program, "_SinTime", (0.0, 0.0, 0.0, 0.0))
+    _set(program, "_CosTime", (1.0, 1.0, 1.0, 1.0))
+    _set(program, "unity_DeltaTime", (0.0, 0.0, 0.0, 0.0))
+    _set(program, "_WorldSpaceCameraPos", tuple(frame.position))
+    _set(program, "unity_ObjectToWorld", _column_major(model))
+    _set(program, "unity_WorldToObject", _column_major(np.linalg.inv(model)))
+    _set(program, "unity_MatrixVP", _column_major(frame.view_proj))
+    _set(program, "unity_MatrixV", _column_major(frame.view))
+    _set(program, "unity_MatrixInvV", _column_major(np.linalg.inv(frame.view)))
+    _set(program, "glstate_matrix_projection", _column_major(frame.proj))
+    _set(program, "unity_CameraProjection", _column_major(frame.proj))
+    _set(program, "unity_CameraInvProjection", _column_major(np.linalg.inv(frame.proj)))
+    w, h = frame.size
+    _set(program, "_ScreenParams", (float(w), float(h), 1.0 + 1.0 / w, 1.0 + 1.0 / h))
+    near, far = frame.near, frame.far
+    _set(program, "_ProjectionParams", (1.0, near, far, 1.0 / far))
+    # UnityShaderVariables.cginc, a GL depth buffer (not reversed): 1/eyeDepth = z/far (1 - far/near) + 1/near.
+    _set(program, "_ZBufferParams", (1.0 - far / near, far / near, (1.0 - far / near) / far, 1.0 / near))
+    orthographic = frame.proj[3, 3] == 1.0
+    _set(program, "unity_OrthoParams", (1.0 / frame.proj[0, 0], 1.0 / frame.proj[1, 1], 0.0, 1.0)
+         if orthographic else (0.0, 0.0, 0.0, 0.0))
+    _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
+    if "_SpecColor" not in material.properties:
+        _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
+    unit = first_unit
+    for name, value in sorted(material.properties.items()):
+        kind = material.unity.properties[name].kind  # properties.resolve: one value per property
+        if isinstance(value, TextureValue):
+            if _bind_texture(program, name, kind, unit):  # else the compiler dropped the sampler
+                if value.cube:
+                    environment_cube().use(unit)
+                elif value.path is not None:
+                    cache.texture(value.path, value.srgb).use(unit)
+                else:
+                    cache.constant_texture(value.texel).use(unit)
+                unit += 1
+            _bind_vector(program, f"{name}_ST", f"{kind} property {name}'s tiling/offset _ST", value.st)
+        elif kind in ("Color", "Vector"):
+            _bind_vector(program, name, f"{kind} property {name}", value)
+        else:
+            _bind_number(program, name, kind, value)
+
+
+# How Unity binds a property to the uniform of its name: a Float/Range/Int to a float (or an
+# int, truncated as a D3D cast does), a Color/Vector to a float4, float3, float2 or float (the
+# leading components: `half3 _Emission;` takes rgb), a texture to a sampler of its dimension.
+_FLOAT_VECTORS = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
+_SAMPLERS = {"2D": ("sampler2D",), "Cube": ("samplerCube",), "3D": ("sampler3D", "sampler2D")}
+
+
+def _mismatch(program, what: str, name: str, uniform) -> PbrlabError:
+    return PbrlabError(f"{_shader_name(program)}: {what} cannot be bound to the uniform '{name}', "
+                       f"declared {programs.uniform_type(uniform)} in the program")
+
+
+def _shader_name(program) -> str:
+    return (getattr(program, "extra", None) or {}).get("shader", "surface shader")
+
+
+def _bind_vector(program, name: str, what: str, value) -> None:
+    """A Color/Vector (or a texture's _ST) to a float4/3/2/1 uniform: its leading components."""
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        if programs.uniform_type(uniform) not in _FLOAT_VECTORS:
+            raise _mismatch(program, f"{what} (4 numbers)", name, uniform)
+    if uniforms:
+        n = _FLOAT_VECTORS[programs.uniform_type(uniforms[0])]
+        _set(program, name, tuple(value[:n]) if n > 1 else value[0])
+
+
+def _bind_number(program, name: str, kind: str, value: float) -> None:
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        gl_type = programs.uniform_type(uniform)
+        if gl_type not in ("float", "int", "uint", "bool"):
+            raise _mismatch(program, f"{kind} property {name} (a number)", name, uniform)
+    if uniforms:
+        gl_type = programs.uniform_type(uniforms[0])
+        _set(program, name, value if gl_type == "float" else
+             bool(value) if gl_type == "bool" else int(value))
+
+
+def _bind_texture(program, name: str, kind: str, unit: int) -> bool:
+    """The texture unit to a sampler of the property's dimension; False if none is kept."""
+    uniforms = programs.uniforms_named(program, name)
+    for uniform in uniforms:
+        if programs.uniform_type(uniform) not in _SAMPLERS.get(kind, ("sampler2D",)):
+            raise _mismatch(program, f"{kind} texture property {name}", name, uniform)
+    if uniforms:
+        _set(program, name, unit)
+    return bool(uniforms)

@@ -1,0 +1,68 @@
+"""Compile a vertex/fragment pass (``model.VertexFragmentPass``) into a GL program.
+
+    program = build_pass_program(ctx, vf, "hlsl", defines, blended=False)
+
+HLSL: each stage's generated text (``generate_pass``) through glslang and spirv-cross, as the
+surface path's HLSL vertex stage. GLSL: the same entry points around the ``port-unity`` port
+of the program, included as an in-memory file named after the ``.shader`` (errors read
+``X.shader:LINE`` on both paths). Programs live in the context's scene-program cache, keyed
+on every file they read; binding is ``program.bind``'s, as for a surface program.
+"""
+
+from __future__ import annotations
+
+from ...gpu import hlsl, programs, shaders
+from ...foundation.errors import PbrlabError
+from ...foundation.file_identity import include_closure
+from . import generate, generate_pass
+from . import model as M
+from . import unprovided
+from .program import (CGINC, TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
+
+_STAGES = {"vertex": "vert", "fragment": "frag"}
+
+
+def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
+                display: str) -> str:
+    where = f"{vf.path}:{vf.program_line}"
+    head = generate.prelude(language, defines, vertex_stage=stage == "vertex")
+    if language == "hlsl":
+        line = hlsl.line_directive(vf.program_line, display)
+    else:
+        line = "#line 1"
+    if stage == "vertex":
+        entry = generate_pass.vertex_entry(vf, language, where)
+    else:
+        entry = generate_pass.fragment_entry(vf, language, where, blended)
+    return "\n".join(head) + "\n" + line + "\n" + program_text + "\n" + entry
+
+
+def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: dict, blended: bool):
+    key = ("unity-pass", str(vf.path), vf.program, vf.program_line, vf.vertex, vf.fragment, language,
+           blended, tuple(sorted(defines.items())))
+
+    def build():
+        dirs = [TEMPLATES, CGINC, vf.path.parent]
+        stages, paths = {}, [vf.path]
+        for stage in ("vertex", "fragment"):
+            display = f"{vf.path.name} (generated {language} {stage} stage)"
+            if language == "hlsl":
+                text = _stage_text(vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
+                glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
+                                          plain_uniforms=True)
+                if stage == "vertex":
+                    glsl = rename_vertex_globals(glsl)
+                stages[stage] = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+                paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
+            else:
+                include, virtual = program_include(vf)
+                text = _stage_text(vf, "glsl", stage, defines, blended, include, vf.path.name)
+                stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+                paths += stages[stage].paths + ported_sources(virtual)
+        program = indexed(shaders.build_program(ctx, stages["vertex"], stages["fragment"]), vf.path)
+        return program, paths
+
+    try:
+        return programs.program_cache(ctx).get(key, build)
+    except PbrlabError as exc:  # a Unity name pbrlab leaves out on purpose: say which feature
+        unprovided.raise_named(exc, vf.path)

@@ -1,0 +1,368 @@
+"""ShaderLab's structure, as Unity reads a ``.shader`` file: ``Shader "name" { Properties {...}
+CGINCLUDE ... ENDCG  SubShader { Tags {...} LOD n  state  Pass {...}  CGPROGRAM ... ENDCG
+UsePass "..."  GrabPass {...} } ... Fallback "name" | Off }``.
+
+    layout = read_layout(text, path)      # -> ShaderLabFile
+    text = layout.program_text(block)     # a program with the CGINCLUDEs Unity puts before it
+
+Only the structure is read here: program blocks (``CGPROGRAM``/``HLSLPROGRAM``/``GLSLPROGRAM``
+and the ``...INCLUDE`` blocks) are cut out first, so braces inside code never confuse the
+scan; a program's text keeps the file's line numbers (``program_text`` blanks what lies
+between its CGINCLUDEs and itself, keeping the newlines). Keywords are case-insensitive, as
+in ShaderLab. What the blocks mean (surface program, vertex/fragment pass) is ``parse.py``'s.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ...foundation.errors import PbrlabError
+
+_BLOCK = re.compile(r"\b(CGPROGRAM|CGINCLUDE|HLSLPROGRAM|HLSLINCLUDE|GLSLPROGRAM|GLSLINCLUDE)\b")
+_BLOCK_END = {"CG": re.compile(r"\bENDCG\b"), "HLSL": re.compile(r"\bENDHLSL\b"),
+              "GLSL": re.compile(r"\bENDGLSL\b")}
+_TOKEN = re.compile(r'"[^"\n]*"|[A-Za-z_][\w.]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|\S')
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
+# Commands of a Pass that belong to the fixed-function pipeline (no program runs them).
+FIXED_FUNCTION = frozenset(w.lower() for w in (
+    "SetTexture", "Material", "Lighting", "SeparateSpecular", "ColorMaterial", "BindChannels",
+    "AlphaTest", "Combine"))
+
+
+# ShaderLab's commands: a command's arguments end where the next command begins (several may
+# share a line: ``ZTest Always Cull Off ZWrite Off``).
+COMMANDS = frozenset(w.lower() for w in (
+    "Cull", "ZWrite", "ZTest", "Blend", "BlendOp", "ColorMask", "Offset", "Lighting", "Fog", "AlphaTest",
+    "AlphaToMask", "Stencil", "Name", "Tags", "LOD", "Pass", "UsePass", "GrabPass", "SetTexture",
+    "Material", "SeparateSpecular", "ColorMaterial", "BindChannels", "Conservative", "ZClip", "SubShader",
+    "Fallback", "CustomEditor", "Properties", "Dependency"))
+
+
+class ShaderLabError(PbrlabError):
+    """A ``.shader`` file whose structure ShaderLab would not accept; the message says where."""
+
+
+def blank(text: str) -> str:
+    """Everything but newlines replaced by spaces (offsets and line numbers survive)."""
+    return re.sub(r"[^\n]", " ", text)
+
+
+def blank_comments(text: str) -> str:
+    return _COMMENT.sub(lambda m: blank(m.group(0)), text)
+
+
+def line_of(text: str, index: int) -> int:
+    return text.count("\n", 0, index) + 1
+
+
+@dataclass
+class Block:
+    """A ``CGPROGRAM ... ENDCG`` (or CGINCLUDE, HLSL..., GLSL...) block."""
+    keyword: str          # CGPROGRAM, CGINCLUDE, HLSLPROGRAM, ...
+    start: int            # offset of the keyword
+    body_start: int       # offset of the code after the keyword
+    body_end: int         # offset of ENDCG
+    end: int              # offset after ENDCG
+    line: int             # line of body_start
+
+    @property
+    def is_include(self) -> bool:
+        return self.keyword.endswith("INCLUDE")
+
+    @property
+    def language(self) -> str:
+        return self.keyword[:-len("INCLUDE") if self.is_include else -len("PROGRAM")]
+
+
+@dataclass
+class StateCommand:
+    word: str             # as written (Cull, ZWrite, Blend, ...)
+    args: str             # the rest of its line
+    line: int
+
+
+@dataclass
+class PassBlock:
+    line: int
+    name: str | None = None
+    tags: dict = field(default_factory=dict)
+    state: list = field(default_factory=list)       # [StateCommand]
+    program: Block | None = None
+    fixed_function: list = field(default_factory=list)  # [(word, line)]
+
+
+@dataclass
+class SubShaderBlock:
+    line: int
+    tags: dict = field(default_factory=dict)
+    lod: int | None = None
+    state: list = field(default_factory=list)
+    items: list = field(default_factory=list)       # in file order: ("surface", Block),
+                                                    # ("pass", PassBlock), ("usepass", name, line),
+                                                    # ("grabpass", name, line)
+    includes: list = field(default_factory=list)    # CGINCLUDE blocks of this SubShader
+
+
+@dataclass
+class ShaderLabFile:
+    path: Path
+    text: str
+    name: str
+    properties_span: tuple | None = None            # (offset of '{' + 1, offset of '}')
+    properties_line: int = 0
+    includes: list = field(default_factory=list)    # Shader-level CGINCLUDE blocks
+    subshaders: list = field(default_factory=list)
+    fallback: str | None = None                     # None: none given; "Off" as "off"
+    fallback_line: int = 0
+
+    def program_text(self, block: Block, subshader: SubShaderBlock | None) -> tuple[str, int]:
+        """(text, first line): ``block``'s code after every CGINCLUDE of its language that
+        Unity puts before it (the Shader's and its SubShader's), on the file's own lines."""
+        includes = [b for b in self.includes + (subshader.includes if subshader else [])
+                    if b.language == block.language]
+        before = [b for b in includes if b.end <= block.start]
+        after = [b for b in includes if b.start > block.start]
+        first = min([b.body_start for b in before] + [block.body_start])
+        pieces, pos = [], first
+        for b in sorted(before, key=lambda b: b.body_start) + [block]:
+            pieces.append(blank(self.text[pos:b.body_start]))
+            pieces.append(self.text[b.body_start:b.body_end])
+            pos = b.body_end
+        text = "".join(pieces)
+        if after:  # Unity includes them too; they come before, off their own lines
+            head = "".join(self.text[b.body_start:b.body_end] + "\n" for b in after)
+            text = head + f"#line {line_of(self.text, first)}\n" + text
+        return text, line_of(self.text, first)
+
+
+def _blocks(masked: str, path: Path) -> list[Block]:
+    out, pos = [], 0
+    while True:
+        m = _BLOCK.search(masked, pos)
+        if not m:
+            return out
+        keyword = m.group(1)
+        language = keyword[:-7]
+        end = _BLOCK_END[language].search(masked, m.end())
+        if end is None:
+            raise ShaderLabError(f"{path}:{line_of(masked, m.start())}: {keyword} without END{language}")
+        out.append(Block(keyword, m.start(), m.end(), end.start(), end.end(), line_of(masked, m.end())))
+        pos = end.end()
+
+
+class _Tokens:
+    """ShaderLab tokens of the masked text (program blocks cut out), with their lines."""
+
+    def __init__(self, masked: str, path: Path, blocks: list[Block]):
+        self.path = path
+        self.items = []   # (text, line, offset)
+        starts = {b.start: b for b in blocks}
+        line, last = 1, 0
+        for m in _TOKEN.finditer(masked):
+            line += masked.count("\n", last, m.start())
+            last = m.start()
+            self.items.append((m.group(0), line, m.start()))
+        self.blocks = starts
+        self.i = 0
+
+    def peek(self, k: int = 0):
+        j = self.i + k
+        return self.items[j] if j < len(self.items) else (None, self.items[-1][1] if self.items else 1, -1)
+
+    def next(self):
+        tok = self.peek()
+        self.i += 1
+        return tok
+
+    def where(self, line: int) -> str:
+        return f"{self.path}:{line}"
+
+    def expect(self, text: str):
+        tok, line, _ = self.next()
+        if tok != text:
+            raise ShaderLabError(f"{self.where(line)}: expected {text!r}, got {tok!r}")
+
+    def skip_braces(self) -> int:
+        """From a '{' to after its '}'; returns the offset of that '}'."""
+        self.expect("{")
+        depth = 1
+        while True:
+            tok, line, offset = self.next()
+            if tok is None:
+                raise ShaderLabError(f"{self.where(line)}: a '{{' is never closed")
+            depth += {"{": 1, "}": -1}.get(tok, 0)
+            if depth == 0:
+                return offset
+
+    def rest_of_line(self, line: int) -> str:
+        words = []
+        while (self.peek()[0] is not None and self.peek()[1] == line and self.peek()[0] not in ("{", "}")
+               and self.peek()[0].lower() not in COMMANDS and self.peek()[2] not in self.blocks):
+            words.append(self.next()[0])
+        return " ".join(words)
+
+    def tags(self) -> dict:
+        self.expect("{")
+        tags = {}
+        while self.peek()[0] not in ("}", None):
+            key = self.next()[0]
+            if self.peek()[0] == "=":
+                self.next()
+            value = self.next()[0]
+            tags[key.strip('"')] = (value or "").strip('"')
+        self.expect("}")
+        return tags
+
+
+def _string(tok: str | None) -> str | None:
+    return tok[1:-1] if tok and tok.startswith('"') else None
+
+
+def _pass(t: _Tokens, line: int) -> PassBlock:
+    p = PassBlock(line)
+    t.expect("{")
+    while True:
+        tok, tline, offset = t.peek()
+        if tok is None:
+            raise ShaderLabError(f"{t.where(line)}: Pass {{ is never closed")
+        if tok == "}":
+            t.next()
+            return p
+        if offset in t.blocks:
+            block = t.blocks[offset]
+            t.next()
+            if block.is_include:
+                raise ShaderLabError(f"{t.where(tline)}: {block.keyword} inside a Pass: Unity allows it "
+                                     "in the Shader or a SubShader only")
+            p.program = block
+            continue
+        word = tok.lower()
+        t.next()
+        if word == "name":
+            p.name = _string(t.next()[0])
+        elif word == "tags":
+            p.tags = t.tags()
+        elif word in FIXED_FUNCTION:
+            p.fixed_function.append((tok, tline))
+            t.rest_of_line(tline)
+            if t.peek()[0] == "{":
+                t.skip_braces()
+        elif t.peek()[0] == "{":   # Stencil { ... }, Fog { ... }
+            p.state.append(StateCommand(tok, "{...}", tline))
+            t.skip_braces()
+        else:
+            p.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
+
+
+def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
+    s = SubShaderBlock(line)
+    t.expect("{")
+    while True:
+        tok, tline, offset = t.peek()
+        if tok is None:
+            raise ShaderLabError(f"{t.where(line)}: SubShader {{ is never closed")
+        if tok == "}":
+            t.next()
+            return s
+        if offset in t.blocks:
+            block = t.blocks[offset]
+            t.next()
+            (s.includes.append(block) if block.is_include else s.items.append(("program", block)))
+            continue
+        word = tok.lower()
+        t.next()
+        if word == "tags":
+            s.tags = t.tags()
+        elif word == "lod":
+            value, vline, _ = t.next()
+            try:
+                s.lod = int(value)
+            except (TypeError, ValueError):
+                raise ShaderLabError(f"{t.where(vline)}: LOD takes a whole number, got {value!r}") from None
+        elif word == "pass":
+            s.items.append(("pass", _pass(t, tline)))
+        elif word == "usepass":
+            s.items.append(("usepass", _string(t.next()[0]) or "", tline))
+        elif word == "grabpass":  # GrabPass { [Name "x"] [Tags {...}] ["_TextureName"] }
+            t.expect("{")
+            name = None
+            while t.peek()[0] not in ("}", None):
+                tok = t.next()[0]
+                if tok.lower() == "tags":
+                    t.i -= 1
+                    t.next()
+                    t.tags()
+                elif tok.lower() == "name":
+                    t.next()
+                elif _string(tok) is not None:
+                    name = _string(tok)
+            t.expect("}")
+            s.items.append(("grabpass", name or "_GrabTexture", tline))
+        elif t.peek()[0] == "{":
+            s.state.append(StateCommand(tok, "{...}", tline))
+            t.skip_braces()
+        else:
+            s.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
+
+
+def read_layout(text: str, path: Path) -> ShaderLabFile:
+    """The structure of a ShaderLab file (``text``: the file's text, a BOM already removed)."""
+    masked = blank_comments(text)
+    # strings may hold '//' (a Fallback name with a slash does not): comments went first
+    blocks = _blocks(masked, path)
+    structure = masked
+    for b in blocks:  # the code is not ShaderLab: keep only the keyword's first letter as a token
+        structure = structure[:b.start] + "P" + blank(structure[b.start + 1:b.end]) + structure[b.end:]
+    t = _Tokens(structure, path, blocks)
+    tok, line, _ = t.next()
+    if tok is None or tok.lower() != "shader":
+        raise ShaderLabError(f"{path}:{line}: a .shader file starts with Shader \"name\" {{ ... }}, got {tok!r}")
+    name = _string(t.next()[0])
+    if name is None:
+        raise ShaderLabError(f"{path}:{line}: Shader needs its name in quotes")
+    layout = ShaderLabFile(path, text, name)
+    t.expect("{")
+    while True:
+        tok, tline, offset = t.peek()
+        if tok is None:
+            raise ShaderLabError(f"{path}:{line}: Shader {{ is never closed")
+        if tok == "}":
+            return layout
+        if offset in t.blocks:
+            block = t.blocks[offset]
+            t.next()
+            if not block.is_include:
+                raise ShaderLabError(f"{path}:{tline}: {block.keyword} outside a SubShader")
+            layout.includes.append(block)
+            continue
+        word = tok.lower()
+        t.next()
+        if word == "properties":
+            open_at = t.peek()[2]
+            close_at = t.skip_braces()
+            layout.properties_span = (open_at + 1, close_at)
+            layout.properties_line = tline
+        elif word == "subshader":
+            layout.subshaders.append(_subshader(t, tline))
+        elif word == "fallback":
+            value = t.next()[0]
+            layout.fallback = "off" if (value or "").lower() == "off" else _string(value)
+            layout.fallback_line = tline
+            if t.peek()[0] and t.peek()[0].lower() == "off" and t.peek()[1] == tline:
+                t.next()
+        elif word in ("customeditor", "category"):
+            if t.peek()[0] == "{":   # Category { ... } groups SubShaders: read them
+                t.next()
+                continue
+            t.next()
+        elif word == "dependency":
+            t.next()
+            if t.peek()[0] == "=":
+                t.next()
+                t.next()
+        elif t.peek()[0] == "{":
+            t.skip_braces()
+        else:
+            t.rest_of_line(tline)

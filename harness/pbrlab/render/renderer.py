@@ -1,0 +1,602 @@
+"""GPU rendering of a scene: spheres ray-traced per pixel, meshes rasterised, one HDR
+float pass, then exposure + tonemap, then the display encode to 8-bit sRGB.
+
+``render_scene(scene)`` returns a ``Rendering`` with ``linear`` (HxWx4 float32 scene
+radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 display image).
+By default the tonemapped display values are rendered to float and encoded on the CPU with
+the exact curve (``pbrlab.maths.srgb8``), so the display image is the same on every machine;
+``transfer="HARDWARE"`` takes the lecture's sRGB-framebuffer path instead.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import moderngl
+import numpy as np
+
+from . import features, instanced_draws, resource_cache
+from ..gpu import gl, gl_limits, ibl, surface_bindings
+from ..scene import meshes, surface_layers
+from ..gpu import targets
+from . import transmission_copy
+from ..maths import srgb8 as srgb8_codes
+from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
+from ..foundation.errors import PbrlabError, SceneError
+from ..maths.exposure import metered_exposure
+from ..foundation.file_identity import include_closure
+from ..gpu.hlsl import HLSL_ROOT
+from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates, surface_file
+from ..gpu.programs import set_uniform as _set
+from ..gpu.programs import set_uniform_array as _set_array
+from ..scene.model import HDR_TARGETS, Scene
+from ..gpu.shaders import GLSL_ROOT
+
+_UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
+# Triangles of the unit cube, counter-clockwise seen from outside.
+_CUBE_TRIANGLES = np.array([
+    0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,
+    2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,  1, 3, 5, 3, 7, 5], np.int32)
+
+
+@dataclass
+class Rendering:
+    linear: np.ndarray  # HxWx4 float32 radiance; alpha = material alpha where covered, 0 elsewhere
+    srgb8: np.ndarray   # HxWx4 uint8, exposure + tonemap + sRGB encode (see ``transfer``)
+    info: dict
+    programs: "features.ProgramPlan" = None  # what was compiled
+    draw_calls: int = 0  # the objects' draw calls (an instanced draw counts once)
+    exposure_ev: float = 0.0  # the exposure the display image was made with (metered or not)
+
+
+class _SceneResources:
+    """GPU data of every draw of one render: environment, DFG table, textures, and the
+    neutral stand-ins the full program reads where the scene has nothing; kept between
+    renders by the context's resource_cache."""
+
+    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2}
+    TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
+    FIRST_MATERIAL_UNIT = 4
+    # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
+    NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
+
+    def __init__(self, ctx, scene: Scene, full: bool):
+        self.full = full
+        self.cache = resource_cache.context_cache(ctx)
+        self.env_sh = None
+        self.transmission_copy = None  # set by render_scene once the copy is drawn
+        # the DFG table serves every light (diffuse-specular coupling), not only the environment
+        self.env_textures = {"u_dfg_lut": self.cache.dfg()}
+        # the sheen albedo table (sheen_table.py), for materials with a sheen (PBRLAB_SHEEN)
+        if any("sheen" in surface_layers.material_layers(m) for m in scene.materials.values()):
+            self.env_textures["u_sheen_lut"] = self.cache.sheen()
+        if scene.environment is not None:
+            environment = self.cache.environment(scene.environment)
+        elif full:  # the full program always samples an environment: a black one
+            environment = self.cache.black_environment()
+        else:
+            return
+        self.env_sh = environment.sh
+        self.env_textures["u_env_prefiltered"] = environment.prefiltered
+
+    def neutral_texture(self, slot: str) -> moderngl.Texture:
+        return self.cache.constant_texture(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)))
+
+    def bind(self, program, scene, frame, material):
+        _upload_scene_uniforms(program, scene, frame, self.env_sh)
+        for name, unit in self.ENV_UNITS.items():
+            if name in self.env_textures:
+                self.env_textures[name].use(unit)
+                _set(program, name, unit)
+        _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
+        if self.transmission_copy is not None:  # a program that does not transmit declares none of it
+            self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
+        _upload_material(program, material)
+        unit = self.FIRST_MATERIAL_UNIT
+        for name, path in sorted(material.textures.items()):
+            self.cache.texture(path, material.texture_srgb[name], material.texture_sampler.get(name)).use(unit)
+            _set(program, f"u_{name}_map" if material.surface is None else name, unit)
+            unit += 1
+        if self.full and material.surface is None:
+            for slot in features.FULL_MAP_SLOTS:
+                if slot not in material.textures:
+                    self.neutral_texture(slot).use(unit)
+                    _set(program, f"u_{slot}_map", unit)
+                    unit += 1
+
+
+def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
+    _set(program, "u_camera_position", tuple(frame.position))
+    _set(program, "u_camera_forward", tuple(frame.forward))
+    _set(program, "u_camera_right", tuple(frame.right))
+    _set(program, "u_camera_up", tuple(frame.up))
+    _set(program, "u_viewport_size", tuple(float(s) for s in frame.size))
+    _set(program, "u_view_proj", tuple(frame.view_proj.T.reshape(-1)))  # GL is column-major
+    by_type = {t: [light for light in scene.lights if light.type == t] for t in features.LIGHT_TYPES}
+    for light_type, lights in by_type.items():
+        _set(program, f"u_{light_type}_active", len(lights))
+    if by_type["directional"]:
+        _set_array(program, "u_directional_direction", [l.direction for l in by_type["directional"]])
+        _set_array(program, "u_directional_radiance", [l.color * l.intensity for l in by_type["directional"]])
+    for light_type in ("point", "spot"):
+        lights = by_type[light_type]
+        if not lights:
+            continue
+        _set_array(program, f"u_{light_type}_position", [l.position for l in lights])
+        _set_array(program, f"u_{light_type}_radiance", [l.color * l.intensity for l in lights])
+        _set_array(program, f"u_{light_type}_range", [min(l.range, 3.0e38) for l in lights])
+    if by_type["spot"]:
+        cones = []
+        for light in by_type["spot"]:
+            cos_outer = np.cos(np.radians(light.outer_cone_deg))
+            cos_inner = np.cos(np.radians(light.inner_cone_deg))
+            cones.append([cos_outer, 1.0 / max(cos_inner - cos_outer, 1e-4)])
+        _set_array(program, "u_spot_direction", [l.direction for l in by_type["spot"]])
+        _set_array(program, "u_spot_cone", cones)
+    if env_sh is not None:
+        _set_array(program, "u_env_sh", env_sh)
+
+
+def _upload_material(program, material):
+    _set(program, "u_albedo", tuple(material.albedo))
+    _set(program, "u_specular", tuple(material.specular))
+    _set(program, "u_metallic", material.metallic)
+    _set(program, "u_smoothness", material.smoothness)
+    _set(program, "u_emission", tuple(material.emission))
+    _set(program, "u_occlusion", material.occlusion)
+    # opaque materials show no alpha: the full program is fed the neutral 1
+    _set(program, "u_alpha", material.alpha if material.alpha_mode != "opaque" else 1.0)
+    _set(program, "u_alpha_cutoff", material.alpha_cutoff)
+    _set(program, "u_normal_scale", material.normal_scale)
+    _set(program, "u_occlusion_strength", material.occlusion_strength)
+    _set(program, "u_clearcoat", material.clearcoat)
+    _set(program, "u_clearcoat_smoothness", material.clearcoat_smoothness)
+    _set(program, "u_clearcoat_normal_scale", material.clearcoat_normal_scale)
+    _set(program, "u_sheen_color", tuple(material.sheen_color))
+    _set(program, "u_sheen_smoothness", material.sheen_smoothness)
+    _set(program, "u_anisotropy_strength", material.anisotropy_strength)
+    _set(program, "u_anisotropy_rotation", material.anisotropy_rotation)
+    _set(program, "u_iridescence", material.iridescence)
+    _set(program, "u_iridescence_ior", material.iridescence_ior)
+    _set(program, "u_iridescence_thickness", (material.iridescence_thickness_min, material.iridescence_thickness_max))
+    _set(program, "u_transmission", material.transmission)
+    _set(program, "u_thickness", material.thickness)
+    _set(program, "u_attenuation_color", tuple(material.attenuation_color))
+    _set(program, "u_attenuation_distance", material.attenuation_distance)
+    _set(program, "u_transmission_ior", material.ior)
+    if material.specular_f90 is not None:
+        _set(program, "u_specular_f90", material.specular_f90)
+    if material.dielectric_specular is not None:
+        _set(program, "u_dielectric_specular", tuple(material.dielectric_specular))
+    for slot, transform in material.texture_transform.items():
+        _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
+
+
+# Blending per alpha mode (Unity's Standard shader): fade blends colour by alpha;
+# transparent is premultiplied (the shader scaled the diffuse, the specular stays).
+# The target's alpha accumulates coverage: ONE, ONE_MINUS_SRC_ALPHA for both.
+_BLEND = {
+    "fade": (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
+    "transparent": (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
+}
+# The display encodes: EXACT (the shader writes linear display values to a float target,
+# pbrlab.maths.srgb8 rounds them on the exact curve) or a PBR_COLOR_TRANSFER_* path of the shader.
+COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
+
+
+def _reset_draw_state(ctx) -> None:
+    """The state every render starts from, whatever an earlier render in this context left
+    (a Unity pass's ZTest once leaked into the next scene: "<=" moved 7 depth-tie pixels of
+    the lit scene, so a golden depended on which test ran before it in the process)."""
+    ctx.enable(moderngl.DEPTH_TEST)
+    ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)
+    ctx.depth_func = "<"
+    ctx.front_face = "ccw"
+    ctx.cull_face = "back"
+
+
+def _draw_order(scene: Scene, frame):
+    """Opaque and cutout objects first, then blended ones from far to near."""
+    def centre(obj):
+        if obj.sphere is not None:
+            return obj.sphere[0]
+        return obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
+    opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
+    blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in _BLEND]
+    blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
+    return opaque + blended
+
+
+def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
+    """Every file a render of ``scene`` reads, with its role: what an output must not be."""
+    found = []
+    if scene.environment is not None and scene.environment.path is not None:
+        found.append((scene.environment.path, "the scene's environment image"))
+    for name, material in scene.materials.items():
+        for slot, path in material.textures.items():
+            if isinstance(path, (str, Path)):  # not a glTF image, decoded from the glTF file's bytes
+                found.append((path, f"material {name}'s {slot} texture"))
+        if material.surface is not None:
+            for surface in {material.surface, material.surface.with_suffix(".hlsl")}:
+                if surface.is_file():
+                    found.append((surface, f"material {name}'s surface file"))
+                    text = surface.read_text(encoding="utf-8", errors="replace")
+                    found += [(p, f"a file material {name}'s surface includes") for p in
+                              include_closure(text, [surface.parent, GLSL_ROOT, HLSL_ROOT], surface.parent)]
+    for i, obj in enumerate(scene.objects):
+        if obj.mesh_path is not None:
+            found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
+    return found + list(scene.read_files)  # a glTF's file, buffers and images
+
+
+def checked_size(size) -> tuple[int, int]:
+    """``size`` as (width, height): two integers >= 1 (numpy integers too)."""
+    try:
+        w, h = size
+    except (TypeError, ValueError):
+        raise PbrlabError(f"size={size!r}: expected (width, height)") from None
+    for v in (w, h):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise PbrlabError(f"size={size!r}: expected (width, height), two integers >= 1")
+    return int(w), int(h)
+
+
+def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
+                 transfer: str = "EXACT", specialise: bool = True,
+                 language: str = "glsl", mesh_fragment: str | None = None) -> Rendering:
+    """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
+
+    ``transfer`` picks the display encode: EXACT (default: float display values rounded
+    to the nearest code of the exact sRGB curve on the CPU, identical on every machine),
+    HARDWARE (the lecture's sRGB framebuffer: llvmpipe's encode, whose last bit depends on
+    the CPU vendor) or a DIY shader encode into a plain 8-bit target: SRGB (exact curve),
+    GAMMA22 (pow 1/2.2) or FAST (sqrt). ``specialise=False`` renders every
+    material with the full program (every effect compiled in, fed neutral values):
+    the same image, at the full program's cost (harness/pbrlab/render/features.py).
+    ``language="hlsl"`` shades with the HLSL library (hlsl_ports/) and the harness's HLSL
+    pixel shaders, cross-compiled by glslang and spirv-cross (harness/pbrlab/gpu/programs.py);
+    a material's ``surface`` file then needs its ``.hlsl`` twin beside it.
+    ``mesh_fragment`` replaces the meshes' fragment template (the pyrender cross-check's
+    composition, templates/pyrender_mesh.frag).
+    """
+    if transfer not in COLOR_TRANSFERS:
+        raise PbrlabError(f"transfer={transfer!r}: expected one of {', '.join(COLOR_TRANSFERS)}")
+    if language not in LANGUAGES:
+        raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
+    if not isinstance(scene, Scene):
+        hint = (" (a file path: read it with pbrlab.scene.model.load_scene first)"
+                if isinstance(scene, (str, os.PathLike)) else
+                " (a dict: check it with pbrlab.scene.model.parse_scene first)" if isinstance(scene, dict) else "")
+        raise PbrlabError(f"render_scene takes a Scene, got {type(scene).__name__}{hint}")
+    if size is not None:  # on a copy: the caller's Scene keeps its own size
+        scene = dataclasses.replace(scene, camera=dataclasses.replace(
+            scene.camera, size=checked_size(size)))
+    if scene.camera.ortho_half_height is not None and scene.spheres:
+        raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
+    mesh_fragment = mesh_fragment or fragment_template("mesh", language)
+    surfaces = {name: surface_file(m.surface, language) if m.unity is None else None
+                for name, m in scene.materials.items()}
+    surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
+    surface_layers.check_twins(scene, surfaces)
+    ctx = gl.make_current(ctx or gl.shared_context())
+    gl_limits.check_scene(ctx, scene)
+    frame = scene_frame(scene)
+    plan = features.plan_programs(scene, specialise)
+    hdr_format = HDR_TARGETS[scene.render.hdr_target]
+    w, h = frame.size
+    resources = _SceneResources(ctx, scene, full=not plan.specialised)
+    cube_holder = []
+
+    def environment_cube():  # made once per render, only if a shader samples a cube
+        if not cube_holder:
+            from ..scene import cubemap as unity_cubemap  # Unity shaders only: loaded on use
+            cube_holder.append(unity_cubemap.environment_cube(ctx, scene.environment))
+        return cube_holder[0]
+
+    resources.environment_cube = environment_cube
+    grab_holder = []
+    cube_vbo = ctx.buffer(_UNIT_CUBE.tobytes())
+    cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
+    draw = _Draw(plan, surfaces, language, mesh_fragment, scene, frame, resources, cube_vbo, cube_ibo,
+                 grab_holder)
+    behind = transmission_copy.seen_through(scene, plan)
+    copy = None
+    draw_calls = 0
+    try:
+        if behind is not None:  # a transmissive material: first the scene it sees (transmission_copy.py)
+            copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format)
+            copy.target.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+            _reset_draw_state(ctx)
+            seen = _draw_order(dataclasses.replace(scene, objects=behind), frame)
+            draw_calls += _draw_objects(ctx, copy.target, seen, draw)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            copy.target.fbo.depth_mask = True
+            copy.finish()
+            resources.transmission_copy = copy
+        with targets.Target(ctx, (w, h), hdr_format) as hdr:
+            hdr.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
+            _reset_draw_state(ctx)
+            draw_calls += _draw_objects(ctx, hdr, _draw_order(scene, frame), draw)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            hdr.fbo.depth_mask = True
+            linear = hdr.read()
+            if scene.render.exposure_metered:  # darkened just enough not to clip (pbrlab.maths.exposure)
+                metered = scene.render.exposure + metered_exposure(linear)
+                scene = dataclasses.replace(scene, render=dataclasses.replace(scene.render, exposure=metered))
+            srgb8 = _resolve(ctx, hdr, scene, transfer, language)
+    finally:
+        cube_vbo.release()
+        cube_ibo.release()
+        if copy is not None:
+            copy.release()
+        for resource in cube_holder + grab_holder:
+            resource.release()
+    return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
+                     exposure_ev=scene.render.exposure)
+
+
+@dataclass
+class _Draw:
+    """What every draw of one render shares."""
+    plan: "features.ProgramPlan"
+    surfaces: dict
+    language: str
+    mesh_fragment: str
+    scene: Scene
+    frame: object
+    resources: _SceneResources
+    cube_vbo: moderngl.Buffer
+    cube_ibo: moderngl.Buffer
+    grab_holder: list
+
+
+def _draw_objects(ctx, hdr, objects, draw) -> int:
+    """Draw ``objects`` in order into the target ``hdr`` (bound and cleared by the caller);
+    ``draw`` holds what every draw of the render shares. Returns the draw calls made (the
+    instances of one batch are one instanced call: instanced_draws.py)."""
+    plan, surfaces, language, mesh_fragment = draw.plan, draw.surfaces, draw.language, draw.mesh_fragment
+    scene, frame, resources = draw.scene, draw.frame, draw.resources
+    cube_vbo, cube_ibo, grab_holder = draw.cube_vbo, draw.cube_ibo, draw.grab_holder
+    draw_calls = 0
+    for batch in instanced_draws.batches(objects, lambda o: _instanceable(scene.materials[o.material])):
+        obj = batch[0]
+        material = scene.materials[obj.material]
+        defines = plan.defines[obj.material]
+        shading = (defines, surfaces[obj.material], language, mesh_fragment)
+        if material.unity is not None:  # each pass that runs, in the shader's order
+            grabbed = resources.grabbed = {}
+            defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
+            shading = (defines, *shading[1:])
+            for unity_pass in material.unity.passes:
+                if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
+                    grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)
+                    continue
+                for keyed, additive in unity_light_programs(unity_pass, defines):
+                    _unity_pass_state(ctx, hdr, material, unity_pass, additive)
+                    keyed_shading = (keyed, *shading[1:])
+                    draw_calls += 1
+                    if obj.sphere is not None and unity_pass.kind == "surface" \
+                            and not material.unity.moves_vertices:
+                        _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
+                                     cube_vbo, cube_ibo, unity_pass)
+                    else:  # a sphere is tessellated when a pass moves vertices
+                        _draw_mesh(ctx, obj, material, keyed_shading, scene, frame, resources, unity_pass)
+            ctx.depth_func = "<="
+            continue
+        blended = material.alpha_mode in _BLEND
+        ctx.depth_func = "<"  # pbrlab's own materials: the first surface drawn wins a depth tie
+        if blended:
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_func = _BLEND[material.alpha_mode]
+            hdr.fbo.depth_mask = False
+        else:
+            ctx.disable(moderngl.BLEND)
+            hdr.fbo.depth_mask = True
+        draw_calls += 1
+        if obj.sphere is not None:
+            _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
+        else:
+            _draw_mesh(ctx, obj, material, shading, scene, frame, resources, batch=batch)
+    return draw_calls
+
+
+# ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
+_UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
+                  "SrcColor": moderngl.SRC_COLOR, "OneMinusDstColor": moderngl.ONE_MINUS_DST_COLOR,
+                  "SrcAlpha": moderngl.SRC_ALPHA, "OneMinusSrcColor": moderngl.ONE_MINUS_SRC_COLOR,
+                  "DstAlpha": moderngl.DST_ALPHA, "OneMinusDstAlpha": moderngl.ONE_MINUS_DST_ALPHA,
+                  "SrcAlphaSaturate": 0x0308, "OneMinusSrcAlpha": moderngl.ONE_MINUS_SRC_ALPHA}
+_UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "equal": "==",
+                "notequal": "!=", "always": "1", "never": "0"}
+
+
+def _grab(ctx, hdr, holder):
+    """A Unity GrabPass: a copy of the float target as drawn so far (released after the render)."""
+    texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
+    texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    copy = ctx.framebuffer([texture])
+    ctx.copy_framebuffer(copy, hdr.fbo)  # a framebuffer blit: float to float, exact
+    copy.release()
+    hdr.fbo.use()
+    holder.append(texture)
+    return texture
+
+
+def unity_light_programs(unity_pass, defines: dict):
+    """[(defines, additive)]: the programs one pass of a Unity shader draws with. One, unless a
+    surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
+    program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
+    emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
+    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL; its
+    ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
+    path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
+    if unity_pass.kind != "surface":
+        mode = unity_pass.light_mode.lower()
+        if mode == "forwardbase":
+            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
+        if mode == "forwardadd":  # one draw per light after the main one, blended by the pass's lines
+            out = [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, "PBRLAB_UNITY_ADD_DIRECTIONAL": i}, False)
+                   for i in range(1, defines.get("PBRLAB_DIRECTIONAL_COUNT", 0))]
+            for kind in ("POINT", "SPOT"):
+                out += [({**defines, kind: 1, f"PBRLAB_UNITY_ADD_{kind}": i}, False)
+                        for i in range(defines.get(f"PBRLAB_{kind}_COUNT", 0))]
+            return out
+        return [(defines, False)]
+    if not unity_pass.light_keywords:
+        return [(defines, False)]
+    counts = {kind: defines.get(f"PBRLAB_{kind}_COUNT", 0) for kind in ("DIRECTIONAL", "POINT", "SPOT")}
+    none = {f"PBRLAB_{kind}_COUNT": 0 for kind in counts}
+    out = [({**defines, **none, "PBRLAB_DIRECTIONAL_COUNT": counts["DIRECTIONAL"], "DIRECTIONAL": 1,
+             "USING_DIRECTIONAL_LIGHT": 1}, False)]
+    for kind in ("POINT", "SPOT"):
+        if counts[kind]:
+            out.append(({**defines, **none, f"PBRLAB_{kind}_COUNT": counts[kind], kind: 1,
+                         "PBRLAB_UNITY_FORWARD_ADD": 1}, True))
+    return out
+
+
+def _unity_pass_state(ctx, hdr, material, unity_pass, additive: bool = False) -> None:
+    """Blending, depth writes and depth test of one pass of a Unity shader: a surface
+    program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
+    pass's from its Blend, ZWrite and ZTest lines. ``additive``: a ForwardAdd program,
+    added to what the base program drew (Unity: Blend One One, or SrcAlpha One when the
+    surface blends; ZWrite Off), the target's alpha kept."""
+    state = unity_pass.state
+    if additive:
+        ctx.enable(moderngl.BLEND)
+        source = moderngl.SRC_ALPHA if material.alpha_mode in _BLEND else moderngl.ONE
+        ctx.blend_func = (source, moderngl.ONE, moderngl.ZERO, moderngl.ONE)
+        hdr.fbo.depth_mask = False
+        ctx.depth_func = "<="
+        return
+    if unity_pass.kind == "surface":
+        blended = material.alpha_mode in _BLEND
+        if blended:
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_func = _BLEND[material.alpha_mode]
+        else:
+            ctx.disable(moderngl.BLEND)
+        hdr.fbo.depth_mask = (not blended) if state.zwrite is None else state.zwrite
+        ctx.depth_func = "<="
+        return
+    if state.blend_factors:
+        ctx.enable(moderngl.BLEND)
+        factors = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
+        if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
+            factors = (*factors[:2], moderngl.ZERO, moderngl.ONE)
+        ctx.blend_func = factors
+    else:
+        ctx.disable(moderngl.BLEND)
+    hdr.fbo.depth_mask = True if state.zwrite is None else state.zwrite
+    ctx.depth_func = _UNITY_DEPTH[state.ztest]
+
+
+def _program(ctx, stem, material, shading, scene, frame, resources, obj, unity_pass=None):
+    """The object's program, bound: the harness's surface path or a Unity shader's pass."""
+    defines, surface, language, mesh_fragment = shading
+    if unity_pass is not None:
+        from ..importers.unity import program as unity_program  # Unity shaders only: loaded on use
+        from ..importers.unity import program_pass as unity_program_pass
+        if unity_pass.kind == "surface":
+            program = unity_program.build_program(ctx, unity_pass, language, stem, defines)
+        else:
+            program = unity_program_pass.build_pass_program(ctx, unity_pass, language, defines,
+                                                            blended=bool(unity_pass.state.blend_factors))
+        resources.bind(program, scene, frame, material)
+        unity_program.bind(program, material, obj, frame, resources.cache, resources.environment_cube,
+                           _SceneResources.FIRST_MATERIAL_UNIT)
+        unit = _SceneResources.FIRST_MATERIAL_UNIT + len(material.properties)
+        for i, (name, texture) in enumerate(sorted(getattr(resources, "grabbed", {}).items())):
+            texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
+            _set(program, name, unit + i)
+        return program
+    fragment = mesh_fragment if stem == "mesh" else fragment_template(stem, language)
+    program = program_from_templates(ctx, f"{stem}.vert", fragment, defines, surface)
+    resources.bind(program, scene, frame, material)
+    return program
+
+
+def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo, unity_pass=None):
+    """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
+    program = _program(ctx, "sphere", material, shading, scene, frame, resources, obj, unity_pass)
+    centre, radius = obj.sphere
+    _set(program, "u_sphere", (*centre, radius))
+    inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
+    _set(program, "u_fullscreen", inside)
+    if inside:
+        ctx.disable(moderngl.CULL_FACE)
+    else:
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = "front"
+    vao = ctx.vertex_array(program, [(cube_vbo, "3f", "in_position")], index_buffer=cube_ibo)
+    vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
+    vao.release()
+
+
+_TOPOLOGY = {"triangles": moderngl.TRIANGLES, "lines": moderngl.LINES, "points": moderngl.POINTS}
+
+
+def _instanceable(material) -> bool:
+    """Whether objects of ``material`` may share an instanced draw (instanced_draws.py)."""
+    return material.unity is None and material.alpha_mode not in _BLEND
+
+
+def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=None, batch=None):
+    """``batch``: the instances drawn with ``obj`` in one instanced call (obj among them)."""
+    instances = None
+    if batch is not None and len(batch) > 1:
+        defines, *rest = shading
+        shading = ({**defines, instanced_draws.INSTANCED_DEFINE: 1}, *rest)
+        instances = instanced_draws.instance_data(batch)
+    program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj, unity_pass)
+    if instances is None:
+        _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
+        _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
+    cull = unity_pass.state.cull if unity_pass is not None else None
+    two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
+    if cull in ("front", "back"):  # a Unity shader's Cull line
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = cull
+    elif two_sided or cull == "off":
+        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended), glTF doubleSided, Cull Off
+    else:
+        ctx.enable(moderngl.CULL_FACE)
+        ctx.cull_face = "back"
+    if obj.sphere is not None:  # a sphere whose surface shader moves vertices
+        from ..importers.unity import tessellate as unity_tessellate
+        vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
+    else:
+        vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
+    topology = "triangles" if obj.geometry is None else obj.geometry.topology
+    vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
+    for resource in [vao, *buffers]:
+        resource.release()
+
+
+def _resolve(ctx, hdr, scene, transfer, language):
+    """Exposure + tonemap, then the display encode (see render_scene's ``transfer``)."""
+    shader_transfer = "HARDWARE" if transfer == "EXACT" else transfer  # EXACT: shader writes linear
+    resolve = program_from_templates(ctx, "fullscreen.vert", fragment_template("resolve", language), {
+        "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
+        "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{shader_transfer}"})
+    display_kind = {"EXACT": "f32", "HARDWARE": "srgb8"}.get(transfer, "unorm8")
+    with targets.Target(ctx, hdr.size, display_kind, depth=False) as display:
+        display.use()
+        hdr.color.use(0)
+        _set(resolve, "u_hdr", 0)
+        _set(resolve, "u_exposure_ev", scene.render.exposure)
+        vao = ctx.vertex_array(resolve, [])
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        vao.release()
+        pixels = display.read()
+        ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
+    if transfer != "EXACT":
+        return pixels
+    srgb8 = np.full(pixels.shape, 255, np.uint8)  # the display image is opaque (alpha 1)
+    srgb8[..., :3] = srgb8_codes.encode(pixels[..., :3])
+    return srgb8

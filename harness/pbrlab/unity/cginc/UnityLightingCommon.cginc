@@ -1,3 +1,0 @@
-// pbrlab stand-in for Unity's UnityLightingCommon.cginc: the names a surface shader reads from it are
-// already included by the generated program (harness/pbrlab/unity/generate.py; README,
-// "Unity shaders", lists them), so this file is empty.
