@@ -27,7 +27,7 @@ import pytest
 
 from pbrlab.gpu import engine_tables, shaders
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "threejs"

@@ -17,7 +17,7 @@ from pbrlab.importers.gltf.tangents import mikktspace_tangents
 from pbrlab.foundation.errors import SceneError
 from pbrlab.render.renderer import render_scene
 from pbrlab.importers import loader as scene_files
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 from gltf_helpers import blob, quad_document, set_blob, write
 

@@ -12,7 +12,7 @@ import pytest
 from pbrlab.checking import contact_sheets
 from pbrlab.checking.charts import CHARTS
 from pbrlab.checking.golden_scenes import LIT_SCENE
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

@@ -8,7 +8,7 @@ import pytest
 
 from pbrlab.foundation import disk_cache
 from pbrlab.scene import meshes
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 
 @pytest.fixture

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from pbrlab.importers import gltf, loader as scene_files
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.foundation.errors import SceneError
 
 ASSETS = Path(__file__).resolve().parents[2] / "scenes" / "gltf"

@@ -19,7 +19,7 @@ from pbrlab.commands import cli
 from pbrlab.scene import fields as scene_fields
 from pbrlab.checking.charts import CHARTS
 from pbrlab.foundation.errors import SceneError
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 from pbrlab.scene.schema import PARSER_ONLY_RULES, scene_schema
 
 ROOT = Path(__file__).resolve().parents[2]

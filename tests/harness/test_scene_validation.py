@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pbrlab.foundation.errors import SceneError
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 MINIMAL = {
     "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "size": [32, 24]},

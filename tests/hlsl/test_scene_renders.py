@@ -18,7 +18,7 @@ from pbrlab.checking.charts import CHARTS
 from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
 from pbrlab.checking.golden_scenes import GOLDEN_SCENES, lit_scene
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import QUALITIES, load_scene, parse_scene
+from pbrlab.scene import QUALITIES, load_scene, parse_scene
 
 REPO = Path(__file__).resolve().parents[2]
 _lit_scene = lit_scene

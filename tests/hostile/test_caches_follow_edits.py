@@ -19,7 +19,7 @@ from pbrlab.scene import meshes
 from pbrlab.render import resource_cache
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import load_scene
+from pbrlab.scene import load_scene
 
 SURFACE = """#include "tint.inc"
 uniform sampler2D _Tex;

@@ -10,7 +10,7 @@ from hostile_common import base_scene
 from pbrlab.commands import cli
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.scene.meshes import load_mesh
-from pbrlab.scene.model import load_scene
+from pbrlab.scene import load_scene
 
 TRIANGLE_OBJ = "# mod\u00e8le caf\u00e9\no caf\u00e9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n"
 

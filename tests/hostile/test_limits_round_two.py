@@ -13,7 +13,7 @@ import numpy as np
 
 from hostile_common import base_scene
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 from pbrlab.importers.unity import load_shader, parse
 from pbrlab.importers.unity.parse import UnityShaderError
 

@@ -7,7 +7,7 @@ import pytest
 from hostile_common import base_scene
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 
 def test_a_tiny_light_direction_is_still_its_direction(gl_context, census):
@@ -77,7 +77,7 @@ NULL_SHADER = """Shader "Test/Null" {
 @pytest.mark.parametrize("name", ["_Glossiness", "_Color", "_MainTex"])
 def test_a_null_property_value_is_refused_not_taken_as_the_default(tmp_path, name, census):
     import json
-    from pbrlab.scene.model import load_scene
+    from pbrlab.scene import load_scene
     (tmp_path / "null.shader").write_text(NULL_SHADER)
     scene = base_scene()
     scene["materials"]["m"] = {"surface": "null.shader", "properties": {name: None}}

@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from hostile_common import FAST, SLOW, assert_clean_refusal, base_scene, leaf_paths, replace_at
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.scene.model import Scene, load_scene, parse_scene
+from pbrlab.scene import Scene, load_scene, parse_scene
 
 PATHS = list(leaf_paths(base_scene()))
 

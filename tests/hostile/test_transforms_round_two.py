@@ -14,7 +14,7 @@ from pbrlab.commands import cli
 from pbrlab.foundation.errors import SceneError
 from pbrlab.importers.gltf import load_gltf
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 # One triangle (positions in a data: URI buffer) on node 1, a child of node 0.
 _POSITIONS = "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"

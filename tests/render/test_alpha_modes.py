@@ -5,7 +5,7 @@ import numpy as np
 
 from pbrlab.foundation import images
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from scenes import one_sphere
 

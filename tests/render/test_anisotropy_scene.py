@@ -10,7 +10,7 @@ import pytest
 from pbrlab.foundation.errors import SceneError
 from pbrlab.foundation.images import write_png
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from scenes import one_sphere
 

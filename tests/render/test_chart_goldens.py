@@ -4,7 +4,7 @@ import pytest
 
 from pbrlab.checking.charts import CHARTS
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 
 @pytest.mark.parametrize("chart", sorted(CHARTS))

@@ -16,7 +16,7 @@ import pytest
 
 from pbrlab.render.depth_range import scene_frame
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 SCALES = (0.1, 1.0, 100.0, 1e4)
 OFFSETS = (1e-2, 1e-3, 1e-4)  # above the base plane, relative to its size (0.01 units at size 1)

@@ -13,7 +13,7 @@ from pbrlab.scene.model import TONEMAPPERS
 from pbrlab.checking.charts import CHARTS
 from pbrlab.render.cpu_render import render_scene_cpu
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from scenes import light_zoo, one_sphere
 

@@ -8,7 +8,7 @@ import pytest
 
 from pbrlab.foundation.errors import SceneError
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from scenes import one_sphere
 from test_anisotropy_scene import LIGHTS, METAL, PLASTIC, _assert_float32_equal, _constant_map, _render

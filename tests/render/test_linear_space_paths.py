@@ -6,7 +6,7 @@ import pytest
 
 from pbrlab.checking.charts import metallic_chart
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 # Max |DIY - hardware| in 8-bit codes on the metallic chart, measured on Mesa 22.3
 # llvmpipe. The exact curve in the shader agrees with the hardware encode within 1 code

@@ -8,7 +8,7 @@ from pbrlab.foundation import images
 from pbrlab.scene import meshes
 from pbrlab.maths.reference.color import srgb_to_linear
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from scenes import one_sphere
 

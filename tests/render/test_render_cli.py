@@ -115,7 +115,7 @@ def test_demo_reports_a_chart_that_differs_from_its_golden(tmp_path, capsys):
     goldens.mkdir()
     from pbrlab.checking import goldens as store
     from pbrlab.render.renderer import render_scene
-    from pbrlab.scene.model import parse_scene
+    from pbrlab.scene import parse_scene
 
     import shutil
     for chart, build in CHARTS.items():

@@ -9,7 +9,7 @@ import numpy as np
 
 from pbrlab.checking.golden_scenes import lit_scene
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import load_scene
+from pbrlab.scene import load_scene
 
 UNITY_MANUAL = Path(__file__).resolve().parents[2] / "scenes" / "unity_manual" / "scene.json"
 

@@ -15,7 +15,7 @@ from scipy import ndimage
 from pbrlab.render import transmission_copy
 from pbrlab.render.cpu_render import render_scene_cpu
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 from test_anisotropy_scene import _assert_float32_equal
 

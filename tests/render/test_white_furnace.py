@@ -76,7 +76,7 @@ from pbrlab.maths.reference import surface as ref_surface
 from pbrlab.maths.reference import shading as ref_shading
 from pbrlab.maths.reference import specular_extension as ref_specular
 from pbrlab.render.renderer import render_scene, scene_radius
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 SMOOTHNESS = [i / 8 for i in range(9)]
 MATERIALS = {

@@ -16,7 +16,7 @@ from pbrlab.commands import cli
 from pbrlab.render import features, renderer as render
 from pbrlab.gpu import programs
 from pbrlab.checking.charts import CHARTS
-from pbrlab.scene.model import load_scene, parse_scene
+from pbrlab.scene import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "render"))

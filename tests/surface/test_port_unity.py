@@ -10,7 +10,7 @@ import pytest
 
 from pbrlab.commands import cli
 from pbrlab.render import renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.importers.unity import parse, port
 
 MANUAL = Path(__file__).resolve().parents[2] / "scenes" / "unity_manual"

@@ -12,7 +12,7 @@ import pytest
 from pbrlab.gpu import gl
 from pbrlab.checking.pyrender import check as pc
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 SIZE = (288, 96)  # 27 spheres of ~27 px: the size the tolerances were measured at (and 480x160)
 

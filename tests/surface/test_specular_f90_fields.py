@@ -6,7 +6,7 @@ import pytest
 
 from pbrlab.render import features
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 BASE = {"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "lights": [],
         "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}]}

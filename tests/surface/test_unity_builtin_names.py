@@ -13,7 +13,7 @@ import pytest
 
 from pbrlab import evaluate, vec3, vec4
 from pbrlab.render import renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.maths.camera import camera_frame, camera_rays
 from pbrlab.render.depth_range import scene_frame
 from pbrlab.maths.reference import unity_cg as R

@@ -12,7 +12,7 @@ import pytest
 
 from pbrlab.foundation import images
 from pbrlab.render import renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.foundation.errors import PbrlabError, ShaderCompileError
 
 LANGUAGES = ("hlsl", "glsl")

@@ -13,7 +13,7 @@ import pytest
 
 from pbrlab.foundation import images
 from pbrlab.render import renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.maths.camera import camera_frame, camera_rays
 from pbrlab.maths.reference import unity_lighting as U
 from pbrlab.importers.unity import UnityShaderError, UnityShaderWarning, parse

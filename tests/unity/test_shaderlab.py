@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab.render import renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.unity import UnityShaderError, parse
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab.render import features, renderer as render
-from pbrlab.scene import model as scene
+from pbrlab import scene
 from pbrlab.checking.compare import float32_ulps
 from pbrlab.importers.unity import UnityShaderError, load_shader, parse
 

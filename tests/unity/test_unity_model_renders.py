@@ -11,7 +11,7 @@ from pbrlab.render.cpu_render import render_scene_cpu
 from pbrlab.foundation.errors import SceneError
 from pbrlab.render.features import features_report
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 MATERIALS = {
     "dark_metal": {"albedo": [0.02, 0.02, 0.025], "metallic": 1.0, "smoothness": 0.8},

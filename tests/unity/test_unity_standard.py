@@ -22,7 +22,7 @@ import pytest
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.foundation.images import write_png
 from pbrlab.render.renderer import render_scene
-from pbrlab.scene.model import parse_scene
+from pbrlab.scene import parse_scene
 
 BUILTIN = Path(__file__).resolve().parents[2] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra"
 LANGUAGES = ("hlsl", "glsl")

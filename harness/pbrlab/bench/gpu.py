@@ -163,8 +163,8 @@ def scene_programs(scene, kind: str) -> dict:
     out: dict = {}
     for obj in scene.objects:
         material = scene.materials[obj.material]
-        unity = material.unity is not None
-        stem = "mesh" if obj.sphere is None or (unity and material.unity.moves_vertices) else "sphere"
+        unity = material.source is not None  # a shader of its own (a Unity shader's material)
+        stem = "mesh" if obj.sphere is None or (unity and material.source.moves_vertices) else "sphere"
         program = SceneProgram(stem, tuple(sorted(plan.defines[obj.material].items())),
                                material.surface, unity)
         names = out.setdefault(program, [])

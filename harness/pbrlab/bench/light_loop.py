@@ -135,7 +135,7 @@ _UNCOUPLED = "\n#define pbr_coupled_diffuse_color(diffuseColor, coatF0, coatAlbe
 
 
 def _scene(lights: int, material: dict, quality: str):
-    from ..scene import model as scene_model
+    from ..importers import loader as scene_model
     data = {"camera": {"position": [0, 0, 4], "target": [0, 0, 0], "size": [64, 64]},
             "lights": [{"type": "directional", "direction": [-0.3 + 0.1 * i, -0.6, -1.0]} for i in range(lights)],
             "materials": {"m": material},

@@ -517,7 +517,7 @@ def tier_image_error(scene_path=DEFAULT_SCENE, scale: float = 1.0) -> dict:
     """Each tier's render of the default scene against the HIGH-tier render (GPU, float32,
     the scene's own size): linear radiance and the displayed 8-bit image."""
     from ..render import renderer as render
-    from ..scene import model as scene_mod
+    from ..importers import loader as scene_mod
     renders = {}
     for tier in TIERS:
         s = scene_mod.load_scene(scene_path)

@@ -133,7 +133,7 @@ def run_count(spec):
 def run_frame(spec):
     from ..gpu import gl
     from ..render import renderer as render
-    from ..scene import model as scene_mod
+    from ..importers import loader as scene_mod
     ctx = gl.create_context(None)
     scenes = {}
     for tier in spec["tiers"]:
@@ -164,7 +164,7 @@ def run_frame(spec):
 def _bench_scene(name):
     """A test scene by name: a chart, or a scene file under scenes/."""
     from ..checking import charts
-    from ..scene import model as scene_mod
+    from ..importers import loader as scene_mod
     from ..foundation.locations import locate
     if name in charts.CHARTS:
         return scene_mod.parse_scene(charts.CHARTS[name](), origin=name)

@@ -14,7 +14,8 @@ from pathlib import Path
 
 from .charts import CHARTS
 from ..foundation.locations import locate
-from ..scene.model import QUALITIES, Scene, load_scene, parse_scene
+from ..importers.loader import load_scene, parse_scene
+from ..scene.model import QUALITIES, Scene
 
 SCENES_DIR = locate("scenes")
 LIT_SCENE = SCENES_DIR / "unity_example" / "scene.json"

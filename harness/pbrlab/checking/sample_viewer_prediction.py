@@ -165,7 +165,7 @@ def _modelled(name, material):
     textures = set(material.textures) - set(IGNORED_TEXTURES)
     if material.clearcoat > 0.0 or max(material.sheen_color) > 0.0 or material.iridescence > 0.0 \
             or material.anisotropy_strength > 0.0 or material.occlusion != 1.0 or material.unlit \
-            or material.surface or material.unity is not None:
+            or material.surface or material.source is not None:
         raise PbrlabError(f"sample viewer prediction: material {name}: a base without a coat, sheen, film, "
                           "anisotropy, occlusion or surface function only")
     if not textures <= set(TEXTURE_CHANNELS):

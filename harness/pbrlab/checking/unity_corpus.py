@@ -71,7 +71,7 @@ def scene_for(shader: Path) -> dict:
 
 def run_shader(shader: Path, language: str) -> Outcome:
     from ..render.renderer import render_scene
-    from ..scene.model import parse_scene
+    from ..importers.loader import parse_scene
 
     shader = Path(shader).resolve()
     with warnings.catch_warnings(record=True) as caught:

@@ -1,10 +1,11 @@
 """Scene files of every format, read by the one loader that sits above the scene model and
-the importers (docs/layers.md): a JSON scene (pbrlab.scene.model), whose objects may take in whole
-glTF files, or a glTF 2.0 file itself (pbrlab.importers.gltf). The scene model never imports an
-importer; this module hands ``scene`` the glTF reader, and loads it only when a file needs it.
+the importers (docs/layers.md): a JSON scene (pbrlab.scene.model), whose objects may take in
+whole glTF files and whose materials may name Unity shaders, or a glTF 2.0 file itself
+(pbrlab.importers.gltf). The scene model never imports an importer; this module hands it the
+glTF reader and the Unity shader reader, and loads each only when a file needs it.
 
     scene = load_scene("scenes/unity_example/scene.json")   # or "model.glb"
-    scene = parse_scene({...}, base=folder)                  # JSON data, glTF objects allowed
+    scene = parse_scene({...}, base=folder)                  # JSON data, glTF objects and Unity shaders allowed
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from pathlib import Path
 
 from ..scene import model as scene_model
 
-# The suffixes of glTF files (gltf.SUFFIXES; tests/harness/test_layers.py checks both agree),
+# The suffixes of glTF files (gltf.SUFFIXES; tests/importers/test_loader.py checks both agree),
 # here so that choosing the reader does not import the glTF importer.
 GLTF_SUFFIXES = (".gltf", ".glb")
 
@@ -29,9 +30,41 @@ def read_gltf(path):
     return load_gltf(path)
 
 
+def _may_be_unity(path: Path) -> bool:
+    """False when ``path`` cannot be a Unity shader (a ``.shader`` file or a ``#pragma surface``
+    line): a GLSL surface without the word "pragma" is told apart without the Unity reader."""
+    try:
+        return path.suffix == ".shader" or b"pragma" in path.read_bytes()
+    except OSError:
+        return True  # let the reader say what is wrong
+
+
+class _ShaderMaterials:
+    """The scene model's reader of materials whose surface is another engine's shader: Unity's
+    (importers/unity/material.py), loaded only when a surface file may be one."""
+
+    def reads(self, path: Path) -> bool:
+        return _may_be_unity(path) and self._unity().reads(path)
+
+    def read_material(self, reader, material, base: Path) -> None:
+        self._unity().read_material(reader, material, base)
+
+    def check_objects(self, objects, materials, origin: str) -> None:
+        if any(m.source is not None for m in materials.values()):
+            self._unity().check_objects(objects, materials, origin)
+
+    @staticmethod
+    def _unity():
+        from .unity import material
+        return material
+
+
+SHADER_MATERIALS = _ShaderMaterials()
+
+
 def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> scene_model.Scene:
-    """``scene.parse_scene`` with glTF objects read."""
-    return scene_model.parse_scene(data, origin, base, read_gltf=read_gltf)
+    """``scene.model.parse_scene`` with glTF objects and Unity shaders read."""
+    return scene_model.parse_scene(data, origin, base, read_gltf=read_gltf, shaders=SHADER_MATERIALS)
 
 
 def load_scene(path) -> scene_model.Scene:
@@ -44,4 +77,4 @@ def load_scene(path) -> scene_model.Scene:
 
         environment, render = read_settings(Path(path))
         return load_gltf(path, environment=environment, render=render).scene
-    return scene_model.load_scene(path, read_gltf=read_gltf)
+    return scene_model.load_scene(path, read_gltf=read_gltf, shaders=SHADER_MATERIALS)

@@ -129,7 +129,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
     if scene.environment is not None and scene.environment.color is None:
         raise PbrlabError("the CPU reference handles constant environments only")
     for name, material in scene.materials.items():
-        if material.surface or material.unity is not None or material.alpha_mode != "opaque" or (
+        if material.surface or material.source is not None or material.alpha_mode != "opaque" or (
                 material.textures and unmodelled == "raise"):
             raise PbrlabError(f"material {name}: the CPU reference renders opaque, untextured "
                               "materials with the default surface")

@@ -29,7 +29,8 @@ the eye, near falls back to far * 1e-5, and so it does when any object's materia
 vertices in a program of its own (a Unity `vertex:` function, a vertex/fragment pass): the
 mesh's bounds say nothing of where such a program puts it (normal extrusion pushed a sphere's
 front through a near plane set from its undisplaced box). A scene with a Unity shader keeps
-a near plane no farther than Unity's default camera's (UNITY_CAMERA_NEAR): its programs read
+a near plane no farther than Unity's default camera's (its material source's camera_near,
+importers/unity/material.py's UNITY_CAMERA_NEAR): its programs read
 the planes (`_ProjectionParams`, `_ZBufferParams`, `unity_CameraInvProjection`), and one that
 fades what lies near the near plane (Sebastian Lague's Stipple) faded the whole sphere away
 when near sat just in front of it.
@@ -48,9 +49,6 @@ from ..scene import meshes
 from ..maths.camera import NEAR_FAR_MARGIN, CameraFrame, camera_frame
 from ..foundation.errors import SceneError
 from ..foundation.json_input import FLOAT32_MAX
-
-# Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program sees
-UNITY_CAMERA_NEAR = 0.3
 
 # Above this many triangles an object is bounded by its box only (the triangle test is
 # numpy work over every triangle, about 1 s per million).
@@ -110,8 +108,11 @@ def scene_frame(scene) -> CameraFrame:
     depths = visible_depths(scene, frame)
     if depths is None:
         return frame
-    if any(getattr(scene.materials.get(obj.material), "unity", None) is not None for obj in scene.objects):
-        depths = (min(depths[0], UNITY_CAMERA_NEAR * NEAR_FAR_MARGIN), depths[1])
+    nears = [source.camera_near for source in (getattr(scene.materials.get(obj.material), "source", None)
+                                               for obj in scene.objects)
+             if source is not None and source.camera_near is not None]
+    if nears:  # a shader that reads the camera's planes expects its engine's near plane or nearer
+        depths = (min(depths[0], min(nears) * NEAR_FAR_MARGIN), depths[1])
     return camera_frame(scene.camera, radius, depths)
 
 
@@ -138,8 +139,8 @@ def visible_depths(scene, frame: CameraFrame) -> tuple[float, float] | None:
 
 def _moves_vertices(material) -> bool:
     """Whether a program of the material's own places its vertices (bounds do not hold)."""
-    unity = getattr(material, "unity", None)
-    return unity is not None and unity.moves_vertices
+    source = getattr(material, "source", None)
+    return source is not None and source.moves_vertices
 
 
 def _cos_corner(frame) -> float:

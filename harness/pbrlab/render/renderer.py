@@ -29,10 +29,11 @@ from ..foundation.errors import PbrlabError, SceneError
 from ..maths.exposure import metered_exposure
 from ..foundation.file_identity import include_closure
 from ..gpu.hlsl import HLSL_ROOT
-from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates, surface_file
+from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates
 from ..gpu.programs import set_uniform as _set
 from ..gpu.programs import set_uniform_array as _set_array
 from ..scene.model import HDR_TARGETS, Scene
+from ..scene.standard_material import BLENDED_ALPHA_MODES, source_of
 from ..gpu.shaders import GLSL_ROOT
 
 _UNIT_CUBE = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], np.float32)
@@ -175,13 +176,6 @@ def _upload_material(program, material):
         _set_array(program, f"u_{slot}_uv_transform", np.asarray(transform)[:2])
 
 
-# Blending per alpha mode (Unity's Standard shader): fade blends colour by alpha;
-# transparent is premultiplied (the shader scaled the diffuse, the specular stays).
-# The target's alpha accumulates coverage: ONE, ONE_MINUS_SRC_ALPHA for both.
-_BLEND = {
-    "fade": (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
-    "transparent": (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA),
-}
 # The display encodes: EXACT (the shader writes linear display values to a float target,
 # pbrlab.maths.srgb8 rounds them on the exact curve) or a PBR_COLOR_TRANSFER_* path of the shader.
 COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
@@ -189,7 +183,7 @@ COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 
 def _reset_draw_state(ctx) -> None:
     """The state every render starts from, whatever an earlier render in this context left
-    (a Unity pass's ZTest once leaked into the next scene: "<=" moved 7 depth-tie pixels of
+    (a pass's own ZTest once leaked into the next scene: "<=" moved 7 depth-tie pixels of
     the lit scene, so a golden depended on which test ran before it in the process)."""
     ctx.enable(moderngl.DEPTH_TEST)
     ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)
@@ -205,7 +199,7 @@ def _draw_order(scene: Scene, frame):
             return obj.sphere[0]
         return obj.transform[:3, :3] @ meshes.local_centre(obj) + obj.transform[:3, 3]
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
-    blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in _BLEND]
+    blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in BLENDED_ALPHA_MODES]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
     return opaque + blended
 
@@ -217,7 +211,7 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
         found.append((scene.environment.path, "the scene's environment image"))
     for name, material in scene.materials.items():
         for slot, path in material.textures.items():
-            if isinstance(path, (str, Path)):  # not a glTF image, decoded from the glTF file's bytes
+            if isinstance(path, (str, Path)):  # not an image an importer decoded from its file's bytes
                 found.append((path, f"material {name}'s {slot} texture"))
         if material.surface is not None:
             for surface in {material.surface, material.surface.with_suffix(".hlsl")}:
@@ -229,7 +223,7 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
     for i, obj in enumerate(scene.objects):
         if obj.mesh_path is not None:
             found.append((obj.mesh_path, f"objects[{i}]'s mesh"))
-    return found + list(scene.read_files)  # a glTF's file, buffers and images
+    return found + list(scene.read_files)  # what the importers read (a model's file, buffers, images)
 
 
 def checked_size(size) -> tuple[int, int]:
@@ -267,9 +261,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if language not in LANGUAGES:
         raise ValueError(f"language={language!r}: expected one of {LANGUAGES}")
     if not isinstance(scene, Scene):
-        hint = (" (a file path: read it with pbrlab.scene.model.load_scene first)"
+        hint = (" (a file path: read it with pbrlab.scene.load_scene first)"
                 if isinstance(scene, (str, os.PathLike)) else
-                " (a dict: check it with pbrlab.scene.model.parse_scene first)" if isinstance(scene, dict) else "")
+                " (a dict: check it with pbrlab.scene.parse_scene first)" if isinstance(scene, dict) else "")
         raise PbrlabError(f"render_scene takes a Scene, got {type(scene).__name__}{hint}")
     if size is not None:  # on a copy: the caller's Scene keeps its own size
         scene = dataclasses.replace(scene, camera=dataclasses.replace(
@@ -277,8 +271,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if scene.camera.ortho_half_height is not None and scene.spheres:
         raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
     mesh_fragment = mesh_fragment or fragment_template("mesh", language)
-    surfaces = {name: surface_file(m.surface, language) if m.unity is None else None
-                for name, m in scene.materials.items()}
+    surfaces = {name: source_of(m).surface_file(m, language) for name, m in scene.materials.items()}
     surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     surface_layers.check_twins(scene, surfaces)
     ctx = gl.make_current(ctx or gl.shared_context())
@@ -292,8 +285,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
 
     def environment_cube():  # made once per render, only if a shader samples a cube
         if not cube_holder:
-            from ..scene import cubemap as unity_cubemap  # Unity shaders only: loaded on use
-            cube_holder.append(unity_cubemap.environment_cube(ctx, scene.environment))
+            from ..scene import cubemap  # loaded on use
+            cube_holder.append(cubemap.environment_cube(ctx, scene.environment))
         return cube_holder[0]
 
     resources.environment_cube = environment_cube
@@ -357,66 +350,45 @@ class _Draw:
 
 def _draw_objects(ctx, hdr, objects, draw) -> int:
     """Draw ``objects`` in order into the target ``hdr`` (bound and cleared by the caller);
-    ``draw`` holds what every draw of the render shares. Returns the draw calls made (the
-    instances of one batch are one instanced call: instanced_draws.py)."""
-    plan, surfaces, language, mesh_fragment = draw.plan, draw.surfaces, draw.language, draw.mesh_fragment
-    scene, frame, resources = draw.scene, draw.frame, draw.resources
-    cube_vbo, cube_ibo, grab_holder = draw.cube_vbo, draw.cube_ibo, draw.grab_holder
+    ``draw`` holds what every draw of the render shares. Each object's material gives its
+    passes (scene.material_passes); each pass draws once or once per light, or grabs what is
+    drawn so far. Returns the draw calls made (the instances of one batch are one instanced
+    call: instanced_draws.py)."""
+    scene = draw.scene
     draw_calls = 0
     for batch in instanced_draws.batches(objects, lambda o: _instanceable(scene.materials[o.material])):
         obj = batch[0]
         material = scene.materials[obj.material]
-        defines = plan.defines[obj.material]
-        shading = (defines, surfaces[obj.material], language, mesh_fragment)
-        if material.unity is not None:  # each pass that runs, in the shader's order
-            grabbed = resources.grabbed = {}
-            defines = {**defines, **{k: 1 for k in material.keywords}}  # enabled keywords
-            shading = (defines, *shading[1:])
-            for unity_pass in material.unity.passes:
-                if unity_pass.kind == "grab":  # what is drawn so far, for the passes after it
-                    grabbed[unity_pass.texture] = _grab(ctx, hdr, grab_holder)
-                    continue
-                for keyed, additive in unity_light_programs(unity_pass, defines):
-                    _unity_pass_state(ctx, hdr, material, unity_pass, additive)
-                    keyed_shading = (keyed, *shading[1:])
-                    draw_calls += 1
-                    if obj.sphere is not None and unity_pass.kind == "surface" \
-                            and not material.unity.moves_vertices:
-                        _draw_sphere(ctx, obj, material, keyed_shading, scene, frame, resources,
-                                     cube_vbo, cube_ibo, unity_pass)
-                    else:  # a sphere is tessellated when a pass moves vertices
-                        _draw_mesh(ctx, obj, material, keyed_shading, scene, frame, resources, unity_pass)
-            ctx.depth_func = "<="
-            continue
-        blended = material.alpha_mode in _BLEND
-        ctx.depth_func = "<"  # pbrlab's own materials: the first surface drawn wins a depth tie
-        if blended:
-            ctx.enable(moderngl.BLEND)
-            ctx.blend_func = _BLEND[material.alpha_mode]
-            hdr.fbo.depth_mask = False
-        else:
-            ctx.disable(moderngl.BLEND)
-            hdr.fbo.depth_mask = True
-        draw_calls += 1
-        if obj.sphere is not None:
-            _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo)
-        else:
-            _draw_mesh(ctx, obj, material, shading, scene, frame, resources, batch=batch)
+        source = source_of(material)
+        defines = {**draw.plan.defines[obj.material], **source.defines(material)}
+        grabbed = {}
+        for material_pass in source.passes(material):
+            if material_pass.grab is not None:  # what is drawn so far, for the passes after it
+                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder)
+                continue
+            for keyed, state in material_pass.draws(defines):
+                _apply_state(ctx, hdr, state)
+                draw_calls += 1
+                if obj.sphere is not None and material_pass.traces_spheres:
+                    _draw_sphere(ctx, obj, material, material_pass, keyed, draw, grabbed)
+                else:  # meshes, and spheres whose pass moves vertices (tessellated)
+                    _draw_mesh(ctx, obj, material, material_pass, keyed, state, draw, grabbed, batch)
     return draw_calls
 
 
-# ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
-_UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
-                  "SrcColor": moderngl.SRC_COLOR, "OneMinusDstColor": moderngl.ONE_MINUS_DST_COLOR,
-                  "SrcAlpha": moderngl.SRC_ALPHA, "OneMinusSrcColor": moderngl.ONE_MINUS_SRC_COLOR,
-                  "DstAlpha": moderngl.DST_ALPHA, "OneMinusDstAlpha": moderngl.ONE_MINUS_DST_ALPHA,
-                  "SrcAlphaSaturate": 0x0308, "OneMinusSrcAlpha": moderngl.ONE_MINUS_SRC_ALPHA}
-_UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "equal": "==",
-                "notequal": "!=", "always": "1", "never": "0"}
+def _apply_state(ctx, hdr, state) -> None:
+    """Blending, depth writes and the depth test of a pass's draw (its culling: ``_cull``)."""
+    if state.blend is not None:
+        ctx.enable(moderngl.BLEND)
+        ctx.blend_func = state.blend
+    else:
+        ctx.disable(moderngl.BLEND)
+    hdr.fbo.depth_mask = state.depth_write
+    ctx.depth_func = state.depth_func
 
 
 def _grab(ctx, hdr, holder):
-    """A Unity GrabPass: a copy of the float target as drawn so far (released after the render)."""
+    """A grab pass: a copy of the float target as drawn so far (released after the render)."""
     texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
     texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
     copy = ctx.framebuffer([texture])
@@ -427,113 +399,30 @@ def _grab(ctx, hdr, holder):
     return texture
 
 
-def unity_light_programs(unity_pass, defines: dict):
-    """[(defines, additive)]: the programs one pass of a Unity shader draws with. One, unless a
-    surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
-    program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
-    emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
-    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL; its
-    ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
-    path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
-    if unity_pass.kind != "surface":
-        mode = unity_pass.light_mode.lower()
-        if mode == "forwardbase":
-            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
-        if mode == "forwardadd":  # one draw per light after the main one, blended by the pass's lines
-            out = [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, "PBRLAB_UNITY_ADD_DIRECTIONAL": i}, False)
-                   for i in range(1, defines.get("PBRLAB_DIRECTIONAL_COUNT", 0))]
-            for kind in ("POINT", "SPOT"):
-                out += [({**defines, kind: 1, f"PBRLAB_UNITY_ADD_{kind}": i}, False)
-                        for i in range(defines.get(f"PBRLAB_{kind}_COUNT", 0))]
-            return out
-        return [(defines, False)]
-    if not unity_pass.light_keywords:
-        return [(defines, False)]
-    counts = {kind: defines.get(f"PBRLAB_{kind}_COUNT", 0) for kind in ("DIRECTIONAL", "POINT", "SPOT")}
-    none = {f"PBRLAB_{kind}_COUNT": 0 for kind in counts}
-    out = [({**defines, **none, "PBRLAB_DIRECTIONAL_COUNT": counts["DIRECTIONAL"], "DIRECTIONAL": 1,
-             "USING_DIRECTIONAL_LIGHT": 1}, False)]
-    for kind in ("POINT", "SPOT"):
-        if counts[kind]:
-            out.append(({**defines, **none, f"PBRLAB_{kind}_COUNT": counts[kind], kind: 1,
-                         "PBRLAB_UNITY_FORWARD_ADD": 1}, True))
-    return out
-
-
-def _unity_pass_state(ctx, hdr, material, unity_pass, additive: bool = False) -> None:
-    """Blending, depth writes and depth test of one pass of a Unity shader: a surface
-    program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
-    pass's from its Blend, ZWrite and ZTest lines. ``additive``: a ForwardAdd program,
-    added to what the base program drew (Unity: Blend One One, or SrcAlpha One when the
-    surface blends; ZWrite Off), the target's alpha kept."""
-    state = unity_pass.state
-    if additive:
-        ctx.enable(moderngl.BLEND)
-        source = moderngl.SRC_ALPHA if material.alpha_mode in _BLEND else moderngl.ONE
-        ctx.blend_func = (source, moderngl.ONE, moderngl.ZERO, moderngl.ONE)
-        hdr.fbo.depth_mask = False
-        ctx.depth_func = "<="
-        return
-    if unity_pass.kind == "surface":
-        blended = material.alpha_mode in _BLEND
-        if blended:
-            ctx.enable(moderngl.BLEND)
-            ctx.blend_func = _BLEND[material.alpha_mode]
-        else:
-            ctx.disable(moderngl.BLEND)
-        hdr.fbo.depth_mask = (not blended) if state.zwrite is None else state.zwrite
-        ctx.depth_func = "<="
-        return
-    if state.blend_factors:
-        ctx.enable(moderngl.BLEND)
-        factors = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
-        if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
-            factors = (*factors[:2], moderngl.ZERO, moderngl.ONE)
-        ctx.blend_func = factors
-    else:
-        ctx.disable(moderngl.BLEND)
-    hdr.fbo.depth_mask = True if state.zwrite is None else state.zwrite
-    ctx.depth_func = _UNITY_DEPTH[state.ztest]
-
-
-def _program(ctx, stem, material, shading, scene, frame, resources, obj, unity_pass=None):
-    """The object's program, bound: the harness's surface path or a Unity shader's pass."""
-    defines, surface, language, mesh_fragment = shading
-    if unity_pass is not None:
-        from ..importers.unity import program as unity_program  # Unity shaders only: loaded on use
-        from ..importers.unity import program_pass as unity_program_pass
-        if unity_pass.kind == "surface":
-            program = unity_program.build_program(ctx, unity_pass, language, stem, defines)
-        else:
-            program = unity_program_pass.build_pass_program(ctx, unity_pass, language, defines,
-                                                            blended=bool(unity_pass.state.blend_factors))
-        resources.bind(program, scene, frame, material)
-        unity_program.bind(program, material, obj, frame, resources.cache, resources.environment_cube,
-                           _SceneResources.FIRST_MATERIAL_UNIT)
-        unit = _SceneResources.FIRST_MATERIAL_UNIT + len(material.properties)
-        for i, (name, texture) in enumerate(sorted(getattr(resources, "grabbed", {}).items())):
-            texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
-            _set(program, name, unit + i)
-        return program
-    fragment = mesh_fragment if stem == "mesh" else fragment_template(stem, language)
-    program = program_from_templates(ctx, f"{stem}.vert", fragment, defines, surface)
-    resources.bind(program, scene, frame, material)
+def _program(ctx, stem, material, material_pass, defines, draw, obj, grabbed):
+    """The object's program in ``material_pass``, bound: the scene's bindings, then the pass's."""
+    resources = draw.resources
+    program = material_pass.program(ctx, stem, defines, draw.language, draw.surfaces[obj.material],
+                                    draw.mesh_fragment)
+    resources.bind(program, draw.scene, draw.frame, material)
+    material_pass.bind(program, material, obj, draw.frame, resources.cache, resources.environment_cube,
+                       _SceneResources.FIRST_MATERIAL_UNIT, grabbed)
     return program
 
 
-def _draw_sphere(ctx, obj, material, shading, scene, frame, resources, cube_vbo, cube_ibo, unity_pass=None):
+def _draw_sphere(ctx, obj, material, material_pass, defines, draw, grabbed):
     """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
-    program = _program(ctx, "sphere", material, shading, scene, frame, resources, obj, unity_pass)
+    program = _program(ctx, "sphere", material, material_pass, defines, draw, obj, grabbed)
     centre, radius = obj.sphere
     _set(program, "u_sphere", (*centre, radius))
-    inside = bool(np.all(np.abs(frame.position - centre) <= radius * 1.001))
+    inside = bool(np.all(np.abs(draw.frame.position - centre) <= radius * 1.001))
     _set(program, "u_fullscreen", inside)
     if inside:
         ctx.disable(moderngl.CULL_FACE)
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "front"
-    vao = ctx.vertex_array(program, [(cube_vbo, "3f", "in_position")], index_buffer=cube_ibo)
+    vao = ctx.vertex_array(program, [(draw.cube_vbo, "3f", "in_position")], index_buffer=draw.cube_ibo)
     vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
     vao.release()
 
@@ -543,33 +432,36 @@ _TOPOLOGY = {"triangles": moderngl.TRIANGLES, "lines": moderngl.LINES, "points":
 
 def _instanceable(material) -> bool:
     """Whether objects of ``material`` may share an instanced draw (instanced_draws.py)."""
-    return material.unity is None and material.alpha_mode not in _BLEND
+    return source_of(material).instanceable(material)
 
 
-def _draw_mesh(ctx, obj, material, shading, scene, frame, resources, unity_pass=None, batch=None):
-    """``batch``: the instances drawn with ``obj`` in one instanced call (obj among them)."""
-    instances = None
-    if batch is not None and len(batch) > 1:
-        defines, *rest = shading
-        shading = ({**defines, instanced_draws.INSTANCED_DEFINE: 1}, *rest)
-        instances = instanced_draws.instance_data(batch)
-    program = _program(ctx, "mesh", material, shading, scene, frame, resources, obj, unity_pass)
-    if instances is None:
-        _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
-        _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
-    cull = unity_pass.state.cull if unity_pass is not None else None
-    two_sided = material.alpha_mode in _BLEND if material.double_sided is None else material.double_sided
-    if cull in ("front", "back"):  # a Unity shader's Cull line
+def _cull(ctx, material, cull) -> None:
+    """Face culling of a mesh: a pass's own (``cull``: front, back, off), else the material's
+    sidedness (double-sided, or blended without a say: nothing culled)."""
+    two_sided = material.alpha_mode in BLENDED_ALPHA_MODES if material.double_sided is None else material.double_sided
+    if cull in ("front", "back"):
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = cull
     elif two_sided or cull == "off":
-        ctx.disable(moderngl.CULL_FACE)  # see-through (JSON blended), glTF doubleSided, Cull Off
+        ctx.disable(moderngl.CULL_FACE)  # see-through (blended), double-sided, a pass's Cull Off
     else:
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "back"
-    if obj.sphere is not None:  # a sphere whose surface shader moves vertices
-        from ..importers.unity import tessellate as unity_tessellate
-        vao, buffers = unity_tessellate.sphere_vertex_array(ctx, program)
+
+
+def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed, batch=None):
+    """``batch``: the instances drawn with ``obj`` in one instanced call (obj among them)."""
+    instances = None
+    if batch is not None and len(batch) > 1:
+        defines = {**defines, instanced_draws.INSTANCED_DEFINE: 1}
+        instances = instanced_draws.instance_data(batch)
+    program = _program(ctx, "mesh", material, material_pass, defines, draw, obj, grabbed)
+    if instances is None:
+        _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
+        _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
+    _cull(ctx, material, state.cull)
+    if obj.sphere is not None:  # a sphere whose pass moves vertices: tessellated by the pass
+        vao, buffers = material_pass.sphere_vertex_array(ctx, program)
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
     topology = "triangles" if obj.geometry is None else obj.geometry.topology

@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import json
 import math
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -178,9 +177,11 @@ class Material:
     dielectric_specular: np.ndarray | None = None
     vertex_color: bool = False
     double_sided: bool | None = None  # None: cull back faces unless blended (JSON scenes)
-    unity: object = None         # a Unity surface shader (unity.model.SurfaceShader) when
-                                 # `surface` is one (.shader, or text with #pragma surface)
-    properties: dict = field(default_factory=dict)  # its Properties' values (unity.properties)
+    # How the renderer draws it (scene.material_passes.MaterialSource): None for pbrlab's own
+    # material (scene.standard_material); an importer's source when `surface` is another
+    # engine's shader (importers/unity/material.py: a .shader, or text with #pragma surface)
+    source: object = None
+    properties: dict = field(default_factory=dict)  # the shader's Properties' values, by name
     keywords: tuple = ()         # the shader keywords it enables (Unity's Material.EnableKeyword)
 
 
@@ -377,7 +378,7 @@ def unit_direction(v) -> np.ndarray:
     return v / np.linalg.norm(v)
 
 
-def _material(r: _Reader, name: str, base: Path) -> Material:
+def _material(r: _Reader, name: str, base: Path, shaders=None) -> Material:
     m = Material(name=name)
     m.workflow = read_field(r, MATERIAL, "workflow")
     m.albedo = read_field(r, MATERIAL, "albedo")
@@ -397,8 +398,8 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
         setattr(m, key, tuple(value) if isinstance(value, np.ndarray) else value)
     if r.has("surface"):
         m.surface = r.file("surface", base)
-    if m.surface is not None and _may_be_unity(m.surface) and _unity().is_unity_surface(m.surface):
-        _unity_material(r, m, base)
+    if m.surface is not None and shaders is not None and shaders.reads(m.surface):
+        shaders.read_material(r, m, base)  # a shader of another engine's (the loader's importers)
         return m
     if r.has("properties"):
         r.fail("properties belong to a Unity surface shader (a .shader file or text with "
@@ -496,68 +497,6 @@ def _material(r: _Reader, name: str, base: Path) -> Material:
     brdf.finish()
     r.finish()
     return m
-
-
-def _may_be_unity(path: Path) -> bool:
-    """False when ``path`` cannot be a Unity surface shader (unity.is_unity_surface: a
-    .shader file or a ``#pragma surface`` line): a GLSL surface without the word "pragma"
-    is told apart without loading the Unity reader."""
-    try:
-        return path.suffix == ".shader" or b"pragma" in path.read_bytes()
-    except OSError:
-        return True  # let the reader say what is wrong
-
-
-def _unity():
-    """The Unity shader reader (pbrlab.importers.unity), loaded for scenes with a surface file only."""
-    from ..importers import unity
-    return unity
-
-
-def _unity_material(r: _Reader, m: Material, base: Path) -> None:
-    """A material whose surface is a Unity surface shader: its Properties, overridden by
-    `properties`; alpha mode and cutoff from its #pragma surface (harness/pbrlab/importers/unity/)."""
-    unity = _unity()
-    try:
-        m.unity = unity.load_shader(m.surface)
-    except unity.UnityShaderError as exc:
-        r.fail(str(exc), "surface")
-    for key in ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
-                "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
-                "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
-                "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
-                "iridescence_thickness_max", "specular_f90", "dielectric_specular") + TRANSMISSION_KEYS:
-        if r.has(key):
-            r.fail(f"a Unity surface shader's material takes its values from `properties` "
-                   f"(the shader's Properties) and its alpha mode from #pragma surface; "
-                   f"remove `{key}`", key)
-    m.properties = unity.resolve_properties(m.unity, r.raw("properties", {}), base,
-                                            f"{r.origin}: {r.path.lstrip('.')}.properties")
-    keywords = r.raw("keywords", [])
-    declared = m.unity.keywords
-    if not isinstance(keywords, list) or not all(isinstance(k, str) for k in keywords):
-        r.fail("expected a list of shader keyword names", "keywords")
-    for k in keywords:
-        if k not in declared:
-            r.fail(f"{k!r} is not a keyword of {m.surface.name} (its #pragma multi_compile / "
-                   f"shader_feature lines declare: {', '.join(sorted(declared)) or 'none'})", "keywords")
-        refused = m.unity.refused_keywords.get(k)
-        if refused:
-            r.fail(f"{k!r}: {refused}", "keywords")
-    m.keywords = tuple(dict.fromkeys(keywords))
-    surface = m.unity.surface
-    if surface is not None:
-        m.alpha_mode = surface.pragma.alpha_mode
-    else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
-        m.alpha_mode = "fade" if any(p.state.blend_factors and getattr(p, "light_mode", "").lower() != "forwardadd"
-                                     for p in m.unity.passes) else "opaque"  # adding light is not fading
-    m.workflow = "specular" if surface is not None and surface.output_type in (
-        "SurfaceOutputStandardSpecular", "SurfaceOutputStandardSpecularLayered") else "metallic"
-    cutoff = surface.pragma.cutoff_property if surface is not None else None
-    if cutoff is not None:
-        value = m.properties.get(cutoff)
-        m.alpha_cutoff = float(value) if isinstance(value, float) else 0.5
-    r.finish()
 
 
 def _transform(r: _Reader) -> np.ndarray:
@@ -662,20 +601,6 @@ def _gltf_subscene(r: _Reader, base: Path, read_gltf):
     return objects, materials, sub.scene.lights, camera, [(path, f"{r.path}'s glTF file"), *sub.scene.read_files]
 
 
-def _warn_unhonoured_cull(objects, materials, origin: str) -> None:
-    """A Unity shader's Cull Front/Off is applied to meshes; a ray-traced sphere shows its
-    front surface only (a sphere whose shader has a vertex: function is a mesh)."""
-    for i, obj in enumerate(objects):
-        unity_shader = materials[obj.material].unity
-        shader = unity_shader.surface if unity_shader is not None else None
-        if obj.sphere is not None and shader is not None and not unity_shader.moves_vertices \
-                and shader.state.cull != "back":
-            warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
-                          "is not applied to a ray-traced sphere (its front surface only); use a mesh "
-                          "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
-                          _unity().UnityShaderWarning, stacklevel=3)
-
-
 # The layers Unity's BRDFs cannot draw: (layer, why, what the material is, the remedy), refused
 # by name when render.brdf_model is "unity".
 _UNITY_REFUSED_LAYERS = (
@@ -692,10 +617,14 @@ _UNITY_REFUSED_LAYERS = (
 )
 
 
-def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gltf=None) -> Scene:
+def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gltf=None,
+                shaders=None) -> Scene:
     """Validate a scene given as parsed JSON; ``base`` resolves relative file paths.
-    ``read_gltf``: the reader of ``{"gltf": ...}`` objects (pbrlab.importers.loader passes it;
-    without it such an object is refused)."""
+    ``read_gltf``: the reader of ``{"gltf": ...}`` objects; ``shaders``: the reader of
+    materials whose ``surface`` is another engine's shader (``reads(path)``,
+    ``read_material(reader, material, base)``, ``check_objects(objects, materials, origin)``).
+    pbrlab.importers.loader passes both; without them a glTF object is refused and every
+    surface file is read as a GLSL/HLSL surface."""
     base = Path(base or ".")
     data = json_input.normalize(data, origin)  # a checked copy: the caller's data is never changed
     top = _Reader(data, "", origin)
@@ -707,7 +636,7 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     env_raw = top.raw("environment")
     environment = None if env_raw is None else _environment(top.child("environment"), base)
     mats = top.child("materials", {})
-    materials = {name: _material(mats.child(name), name, base) for name in list(mats.data)}
+    materials = {name: _material(mats.child(name), name, base, shaders) for name in list(mats.data)}
     mats.finish()
     objects_raw = top.raw("objects", [])
     if not isinstance(objects_raw, list) or not objects_raw:
@@ -726,7 +655,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
             objects.append(_object(_Reader(o, f"objects[{i}]", origin), materials, base))
     if camera is None:
         top.fail("is required (or a gltf object with a camera)", "camera")
-    _warn_unhonoured_cull(objects, materials, origin)
+    if shaders is not None:
+        shaders.check_objects(objects, materials, origin)
     rs = top.child("render", {})
     render = RenderSettings(**{key: read_field(rs, RENDER, key) for key in RENDER})
     rs.finish()
@@ -741,8 +671,8 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     return Scene(camera, lights, environment, materials, objects, render, origin, read_files)
 
 
-def load_scene(path, read_gltf=None) -> Scene:
-    """Read and validate a JSON scene file (``read_gltf``: see parse_scene; a scene file of
-    either format: pbrlab.importers.loader.load_scene)."""
+def load_scene(path, read_gltf=None, shaders=None) -> Scene:
+    """Read and validate a JSON scene file (``read_gltf``, ``shaders``: see parse_scene; a scene
+    file of either format, with its importers: pbrlab.importers.loader.load_scene)."""
     path = Path(path)
-    return parse_scene(json_input.read_json_file(path), str(path), path.parent, read_gltf)
+    return parse_scene(json_input.read_json_file(path), str(path), path.parent, read_gltf, shaders)

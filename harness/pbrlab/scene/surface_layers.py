@@ -86,8 +86,9 @@ def material_layers(material) -> frozenset:
     """The layers ``material``'s program compiles (module doc)."""
     if material.surface is None:
         return json_layers(material)
-    if material.unity is not None:
-        return frozenset().union(*(p.layers for p in material.unity.passes if p.kind == "surface"))
+    own = material.source.layers(material) if material.source is not None else None
+    if own is not None:  # a shader of its own (scene.material_passes): the layers it compiles
+        return own
     return surface_file_layers(material.surface)
 
 
@@ -97,7 +98,7 @@ def check_twins(scene, surfaces: dict) -> None:
     are the named file's."""
     for name, material in scene.materials.items():
         twin = surfaces.get(name)
-        if twin is None or material.unity is not None or twin == material.surface:
+        if twin is None or material.source is not None or twin == material.surface:
             continue
         named, other = surface_file_layers(material.surface), surface_file_layers(twin)
         if named != other:

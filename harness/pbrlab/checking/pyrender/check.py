@@ -154,7 +154,7 @@ def _worker(platform: str, scene_path: str, out_path: str) -> None:
     from ...gpu import gl
     from ...scene import meshes
     from .compat import import_pyrender
-    from ...scene.model import parse_scene
+    from ...importers.loader import parse_scene
 
     gl.pin_llvmpipe_cpu_caps()  # the same llvmpipe code generation as pbrlab's contexts
     pyrender = import_pyrender(platform)
@@ -302,7 +302,7 @@ def render_pbrlab_terms(scene_dict: dict, ctx=None, terms: dict | None = None) -
     from ...scene import meshes
     from ...render import resource_cache
     from ...render.depth_range import scene_frame
-    from ...scene.model import parse_scene
+    from ...importers.loader import parse_scene
 
     scene = parse_scene(scene_dict)
     if [light.type for light in scene.lights] != ["directional"]:
@@ -489,7 +489,7 @@ def crosscheck(backend: str, size=DEFAULT_SIZE) -> dict:
     pbrlab's value), vs the renderer's nearest selectors, vs pbrlab's defaults."""
     from ...gpu import gl
     from ...render.renderer import render_scene
-    from ...scene.model import parse_scene
+    from ...importers.loader import parse_scene
 
     ctx = gl.shared_context(backend)
     base = grid_scene(size)

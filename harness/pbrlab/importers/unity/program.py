@@ -1,6 +1,6 @@
 """Compile a surface shader's programs and feed them (the renderer's one entry to Unity).
 
-    program = build_program(ctx, material.unity, "hlsl", "sphere", defines)
+    program = build_program(ctx, material.source.shader, "hlsl", "sphere", defines)
     bind(program, material, obj, frame, cache, first_unit)
 
 HLSL: the generated text (generate.py) through glslang and spirv-cross, as every HLSL scene
@@ -233,7 +233,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
         _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
     unit = first_unit
     for name, value in sorted(material.properties.items()):
-        kind = material.unity.properties[name].kind  # properties.resolve: one value per property
+        kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
             if _bind_texture(program, name, kind, unit):  # else the compiler dropped the sampler
                 if value.cube:

@@ -1,0 +1,236 @@
+"""A Unity shader as a scene material: what the scene model reads for a material whose
+``surface`` is a ``.shader`` (or a surface shader's text), and how the renderer draws it
+(``scene.material_passes.MaterialSource``).
+
+    UnitySource(shader).passes(material)   # its passes, in the shader's order
+
+Reading (``read_material``): the shader's Properties overridden by the material's
+``properties``, its ``keywords``, the alpha mode and cutoff from ``#pragma surface`` (a
+vertex/fragment shader's from its Blend lines). Drawing: each pass that runs, in the shader's
+order. A GrabPass copies what is drawn so far; a surface program draws once, or, when it tests
+Unity's per-light keywords, as Unity's forward path does (a base program for directional
+lights, ambient and emission, and a ForwardAdd program per other light type, added on top); a
+vertex/fragment pass draws as its LightMode says (ForwardBase once with DIRECTIONAL, ForwardAdd
+once per further light), blended, depth-tested and culled by its own lines.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import moderngl
+
+from ...gpu.programs import set_uniform as _set
+from ...scene.fields import TRANSMISSION_KEYS
+from ...scene.material_passes import RenderState
+from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
+
+# Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
+# sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
+# planes, and one that fades what lies near the near plane faded a whole sphere away).
+UNITY_CAMERA_NEAR = 0.3
+
+# ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
+_UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
+                  "SrcColor": moderngl.SRC_COLOR, "OneMinusDstColor": moderngl.ONE_MINUS_DST_COLOR,
+                  "SrcAlpha": moderngl.SRC_ALPHA, "OneMinusSrcColor": moderngl.ONE_MINUS_SRC_COLOR,
+                  "DstAlpha": moderngl.DST_ALPHA, "OneMinusDstAlpha": moderngl.ONE_MINUS_DST_ALPHA,
+                  "SrcAlphaSaturate": 0x0308, "OneMinusSrcAlpha": moderngl.ONE_MINUS_SRC_ALPHA}
+_UNITY_DEPTH = {"less": "<", "greater": ">", "lequal": "<=", "gequal": ">=", "equal": "==",
+                "notequal": "!=", "always": "1", "never": "0"}
+# The material fields a Unity shader's material does not take (its Properties do).
+_NOT_FOR_UNITY = ("textures", "albedo", "metallic", "specular", "smoothness", "emission",
+                  "occlusion", "alpha", "alpha_mode", "alpha_cutoff", "brdf", "workflow", "clearcoat",
+                  "clearcoat_smoothness", "unlit", "sheen_color", "sheen_smoothness", "anisotropy_strength",
+                  "anisotropy_rotation", "iridescence", "iridescence_ior", "iridescence_thickness_min",
+                  "iridescence_thickness_max", "specular_f90", "dielectric_specular")
+
+
+def light_programs(unity_pass, defines: dict) -> list[tuple[dict, bool]]:
+    """[(defines, additive)]: the programs one pass of a Unity shader draws with. One, unless a
+    surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
+    program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
+    emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
+    scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL; its
+    ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
+    path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
+    if unity_pass.kind != "surface":
+        mode = unity_pass.light_mode.lower()
+        if mode == "forwardbase":
+            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
+        if mode == "forwardadd":  # one draw per light after the main one, blended by the pass's lines
+            out = [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, "PBRLAB_UNITY_ADD_DIRECTIONAL": i}, False)
+                   for i in range(1, defines.get("PBRLAB_DIRECTIONAL_COUNT", 0))]
+            for kind in ("POINT", "SPOT"):
+                out += [({**defines, kind: 1, f"PBRLAB_UNITY_ADD_{kind}": i}, False)
+                        for i in range(defines.get(f"PBRLAB_{kind}_COUNT", 0))]
+            return out
+        return [(defines, False)]
+    if not unity_pass.light_keywords:
+        return [(defines, False)]
+    counts = {kind: defines.get(f"PBRLAB_{kind}_COUNT", 0) for kind in ("DIRECTIONAL", "POINT", "SPOT")}
+    none = {f"PBRLAB_{kind}_COUNT": 0 for kind in counts}
+    out = [({**defines, **none, "PBRLAB_DIRECTIONAL_COUNT": counts["DIRECTIONAL"], "DIRECTIONAL": 1,
+             "USING_DIRECTIONAL_LIGHT": 1}, False)]
+    for kind in ("POINT", "SPOT"):
+        if counts[kind]:
+            out.append(({**defines, **none, f"PBRLAB_{kind}_COUNT": counts[kind], kind: 1,
+                         "PBRLAB_UNITY_FORWARD_ADD": 1}, True))
+    return out
+
+
+def pass_state(alpha_mode: str, unity_pass, additive: bool = False) -> RenderState:
+    """Blending, depth writes, depth test and culling of one pass of a Unity shader: a surface
+    program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
+    pass's from its Blend, ZWrite and ZTest lines; its Cull line for meshes. ``additive``: a
+    ForwardAdd program, added to what the base program drew (Unity: Blend One One, or SrcAlpha
+    One when the surface blends; ZWrite Off), the target's alpha kept."""
+    state = unity_pass.state
+    if additive:
+        source = moderngl.SRC_ALPHA if alpha_mode in BLENDED_ALPHA_MODES else moderngl.ONE
+        return RenderState(blend=(source, moderngl.ONE, moderngl.ZERO, moderngl.ONE), depth_write=False,
+                           depth_func="<=", cull=state.cull)
+    if unity_pass.kind == "surface":
+        blended = alpha_mode_state(alpha_mode, "<=", None if state.zwrite is None else state.zwrite)
+        return RenderState(blend=blended.blend, depth_write=blended.depth_write, depth_func="<=", cull=state.cull)
+    blend = None
+    if state.blend_factors:
+        blend = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
+        if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
+            blend = (*blend[:2], moderngl.ZERO, moderngl.ONE)
+    return RenderState(blend=blend, depth_write=True if state.zwrite is None else state.zwrite,
+                       depth_func=_UNITY_DEPTH[state.ztest], cull=state.cull)
+
+
+class GrabPass:
+    """``GrabPass { "_Name" }``: the target as drawn so far, for the passes after it."""
+    traces_spheres = False
+
+    def __init__(self, unity_pass):
+        self.grab = unity_pass.texture
+
+
+class ProgramPass:
+    """A surface program or a vertex/fragment pass of a Unity shader."""
+    grab = None
+
+    def __init__(self, unity_pass, alpha_mode: str, moves_vertices: bool):
+        self.unity_pass = unity_pass
+        self.alpha_mode = alpha_mode
+        # a sphere is ray-traced by a surface program that leaves vertices where they are
+        self.traces_spheres = unity_pass.kind == "surface" and not moves_vertices
+
+    def draws(self, defines: dict) -> list:
+        return [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
+                for keyed, additive in light_programs(self.unity_pass, defines)]
+
+    def program(self, ctx, stem, defines, language, surface, mesh_fragment):
+        from . import program as unity_program
+        from . import program_pass as unity_program_pass
+        if self.unity_pass.kind == "surface":
+            return unity_program.build_program(ctx, self.unity_pass, language, stem, defines)
+        return unity_program_pass.build_pass_program(ctx, self.unity_pass, language, defines,
+                                                     blended=bool(self.unity_pass.state.blend_factors))
+
+    def bind(self, program, material, obj, frame, cache, environment_cube, first_unit, grabbed) -> None:
+        from . import program as unity_program
+        unity_program.bind(program, material, obj, frame, cache, environment_cube, first_unit)
+        unit = first_unit + len(material.properties)
+        for i, (name, texture) in enumerate(sorted(grabbed.items())):
+            texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
+            _set(program, name, unit + i)
+
+    def sphere_vertex_array(self, ctx, program):
+        from . import tessellate
+        return tessellate.sphere_vertex_array(ctx, program)
+
+
+class UnitySource:
+    """``MaterialSource`` of a material whose surface is a Unity shader (module doc)."""
+    camera_near = UNITY_CAMERA_NEAR
+
+    def __init__(self, shader):
+        self.shader = shader  # model.UnityShader: every pass that runs
+        self.moves_vertices = shader.moves_vertices
+
+    def passes(self, material) -> list:
+        return [GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices)
+                for p in self.shader.passes]
+
+    def defines(self, material) -> dict:
+        return {k: 1 for k in material.keywords}  # the keywords the material enables
+
+    def instanceable(self, material) -> bool:
+        return False
+
+    def surface_file(self, material, language: str):
+        return None  # its programs are generated from the shader (program.py), not a surface file
+
+    def layers(self, material) -> frozenset:
+        return frozenset().union(*(p.layers for p in self.shader.passes if p.kind == "surface"))
+
+
+def reads(path: Path) -> bool:
+    """Whether a material's ``surface`` file is a Unity shader this importer reads."""
+    from . import is_unity_surface
+    return is_unity_surface(path)
+
+
+def read_material(r, m, base: Path) -> None:
+    """Fill ``m`` (scene.model.Material) from a material whose surface is a Unity shader: its
+    Properties, overridden by `properties`; alpha mode and cutoff from its #pragma surface.
+    ``r`` is the scene model's reader of the material's fields (fail, has, raw, finish)."""
+    from . import UnityShaderError, load_shader, resolve_properties
+    try:
+        shader = load_shader(m.surface)
+    except UnityShaderError as exc:
+        r.fail(str(exc), "surface")
+    m.source = UnitySource(shader)
+    for key in _NOT_FOR_UNITY + TRANSMISSION_KEYS:
+        if r.has(key):
+            r.fail(f"a Unity surface shader's material takes its values from `properties` "
+                   f"(the shader's Properties) and its alpha mode from #pragma surface; "
+                   f"remove `{key}`", key)
+    m.properties = resolve_properties(shader, r.raw("properties", {}), base,
+                                      f"{r.origin}: {r.path.lstrip('.')}.properties")
+    keywords = r.raw("keywords", [])
+    declared = shader.keywords
+    if not isinstance(keywords, list) or not all(isinstance(k, str) for k in keywords):
+        r.fail("expected a list of shader keyword names", "keywords")
+    for k in keywords:
+        if k not in declared:
+            r.fail(f"{k!r} is not a keyword of {m.surface.name} (its #pragma multi_compile / "
+                   f"shader_feature lines declare: {', '.join(sorted(declared)) or 'none'})", "keywords")
+        refused = shader.refused_keywords.get(k)
+        if refused:
+            r.fail(f"{k!r}: {refused}", "keywords")
+    m.keywords = tuple(dict.fromkeys(keywords))
+    surface = shader.surface
+    if surface is not None:
+        m.alpha_mode = surface.pragma.alpha_mode
+    else:  # vertex/fragment passes blend by their own Blend lines; "fade" sorts them back to front
+        m.alpha_mode = "fade" if any(p.state.blend_factors and getattr(p, "light_mode", "").lower() != "forwardadd"
+                                     for p in shader.passes) else "opaque"  # adding light is not fading
+    m.workflow = "specular" if surface is not None and surface.output_type in (
+        "SurfaceOutputStandardSpecular", "SurfaceOutputStandardSpecularLayered") else "metallic"
+    cutoff = surface.pragma.cutoff_property if surface is not None else None
+    if cutoff is not None:
+        value = m.properties.get(cutoff)
+        m.alpha_cutoff = float(value) if isinstance(value, float) else 0.5
+    r.finish()
+
+
+def check_objects(objects, materials, origin: str) -> None:
+    """A Unity shader's Cull Front/Off is applied to meshes; a ray-traced sphere shows its
+    front surface only (a sphere whose shader has a vertex: function is a mesh): warned."""
+    from . import UnityShaderWarning
+    for i, obj in enumerate(objects):
+        source = materials[obj.material].source
+        shader = source.shader.surface if isinstance(source, UnitySource) else None
+        if obj.sphere is not None and shader is not None and not source.moves_vertices \
+                and shader.state.cull != "back":
+            warnings.warn(f"{origin}: objects[{i}]: {shader.path.name}: Cull {shader.state.cull.capitalize()} "
+                          "is not applied to a ray-traced sphere (its front surface only); use a mesh "
+                          "(e.g. {\"primitive\": \"uv_sphere\"}) to see back faces",
+                          UnityShaderWarning, stacklevel=4)
