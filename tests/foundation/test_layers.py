@@ -227,3 +227,21 @@ def test_the_docs_page_draws_every_layer_folder():
     for module in MODULES:
         if module.count(".") == 1 and MODULES[module].name != "__init__.py" and not layers.is_front(module):
             assert f"{module.split('.')[1]}" in page, f"docs/layers.md does not name pbrlab.{module}"
+
+
+def test_the_docs_tree_is_the_generated_one():
+    """docs/layers.md's tree is ``python -m pbrlab.foundation.layers``'s output, not a copy that ages."""
+    page = DOCS.read_text(encoding="utf-8")
+    start = page.index("<!-- tree: python -m pbrlab.foundation.layers -->")
+    block = page[start:page.index("<!-- /tree -->", start)]
+    shown = block.split("```text\n", 1)[1].rsplit("```", 1)[0].rstrip("\n")
+    assert shown == layers.tree(PACKAGE), "docs/layers.md's tree is stale: paste `python -m pbrlab.foundation.layers`"
+
+
+def test_the_renderer_names_no_material_source():
+    """The renderer draws every material through scene.material_passes: it names no importer or
+    format (issue 37)."""
+    text = MODULES["render.renderer"].read_text(encoding="utf-8").lower()
+    for word in ("unity", "gltf", "json", "shaderlab"):
+        assert word not in text, f"render/renderer.py names {word!r}"
+    assert not [t for _, t in imports_of("render.renderer") if t.startswith("importers")]

@@ -47,3 +47,51 @@ def layer_of(module: str) -> int:
         if folder == name:
             return index
     raise KeyError(f"pbrlab.{module} is in no layer folder of pbrlab.foundation.layers.LAYERS")
+
+
+def _summary(path) -> str:
+    """The first sentence of a module's (or package's) docstring, read without importing it."""
+    import ast
+
+    source = path / "__init__.py" if path.is_dir() else path
+    if not source.is_file():
+        return ""
+    doc = ast.get_docstring(ast.parse(source.read_text(encoding="utf-8"))) or ""
+    text = " ".join(doc.split("\n\n")[0].split())
+    end = text.find(". ")
+    text = text if end < 0 else text[:end + 1]
+    return text if len(text) <= 92 else text[:89].rstrip() + "..."
+
+
+def tree(package=None) -> str:
+    """The package's folders as a text tree, bottom layer first: each layer folder, its modules
+    and subpackages with the first sentence of their docstrings (docs/layers.md embeds it;
+    ``python -m pbrlab.foundation.layers`` prints it)."""
+    from pathlib import Path
+
+    package = Path(package or Path(__file__).resolve().parents[1])
+    lines = ["harness/pbrlab/"]
+    fronts = [p for p in sorted(package.iterdir()) if p.is_file() and p.suffix == ".py"]
+    folders = [package / folder for _, folder in LAYERS]
+    others = [p for p in sorted(package.iterdir())
+              if p.is_dir() and p not in folders and p.name != "__pycache__"]
+    entries = [(p, f"front: {_summary(p)}") for p in fronts]
+    entries += [(p, f"layer {i}, {LAYERS[i][0]}: {_summary(p)}") for i, p in enumerate(folders)]
+    entries += [(p, "shader templates the programs are built from (package data)") for p in others]
+    for n, (path, text) in enumerate(entries):
+        last = n == len(entries) - 1
+        name = path.name + ("/" if path.is_dir() else "")
+        lines.append(f"{'└── ' if last else '├── '}{name:<20}{text}".rstrip())
+        if path.is_dir() and path in folders:
+            children = [c for c in sorted(path.iterdir()) if c.name not in ("__init__.py", "__pycache__")
+                        and (c.suffix == ".py" or (c.is_dir() and (c / "__init__.py").is_file()))]
+            for k, child in enumerate(children):
+                branch = "    " if last else "│   "
+                corner = "└── " if k == len(children) - 1 else "├── "
+                child_name = child.name + ("/" if child.is_dir() else "")
+                lines.append(f"{branch}{corner}{child_name:<30}{_summary(child)}".rstrip())
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(tree())
