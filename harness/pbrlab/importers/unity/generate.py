@@ -18,15 +18,12 @@ from __future__ import annotations
 from ...gpu.hlsl import line_directive
 from ...scene.surface_layers import FIELD_SIZES
 from . import model as M
+from .output_struct import layered_struct, vector_type
 from .parse import _component_count
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
                     "pbr/unity/global_illumination")
 SUFFIX = {"glsl": ".glsl", "hlsl": ".hlsl"}
-
-
-def _vec(n: int) -> str:
-    return "float" if n == 1 else f"vec{n}"
 
 
 def _input_fill(shader: M.SurfaceShader, language: str) -> str:
@@ -95,7 +92,7 @@ def _zero_output(shader: M.SurfaceShader, language: str) -> list[str]:
     else:
         for name, n in shader.output_fields.items():
             if n:
-                zero = "0.0" if n == 1 else f"{_vec(n)}({', '.join(['0.0'] * n)})"
+                zero = "0.0" if n == 1 else f"{vector_type(n)}({', '.join(['0.0'] * n)})"
                 lines.append(f"    o.{name} = {zero};")
     if "Occlusion" in shader.output_fields:
         lines.append("    o.Occlusion = 1.0;")
@@ -103,17 +100,6 @@ def _zero_output(shader: M.SurfaceShader, language: str) -> list[str]:
         lines.append("    SurfaceOutputStandardLayers pbrlabLayerDefaults = pbrlab_default_layers();")
         lines += [f"    o.{name} = pbrlabLayerDefaults.{name};" for name in FIELD_SIZES]
     return lines
-
-
-def layered_struct(shader) -> list[str]:
-    """The output struct of a layered model (model.LAYERED_MODELS), written from its field
-    table before the program that fills it; none for the other models."""
-    if getattr(shader, "kind", None) != "surface" or shader.pragma.model not in M.LAYERED_MODELS:
-        return []
-    name = M.BUILTIN_MODELS[shader.pragma.model]
-    fields = [f"    {_vec(n)} {field};" for field, n in M.OUTPUT_FIELDS[name].items()]
-    return [f"// {name}: {M.LAYERED_MODELS[shader.pragma.model]}'s fields, then SurfaceOutputStandardLayers'",
-            f"struct {name} {{", *fields, "};"]
 
 
 def _layered_shading(shader: M.SurfaceShader) -> list[str]:

@@ -35,6 +35,7 @@ from pathlib import Path
 
 from . import cg_types
 from . import model as M
+from .output_struct import layered_struct
 from .parse import PORT_MARKER
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
@@ -117,8 +118,7 @@ def _drop_unity_redeclarations(code: str) -> str:
 
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM ported, line for line (comments kept); a layered model's output
-    struct (generated before the program: generate.layered_struct) is known to the type pass."""
-    from .generate import layered_struct
+    struct (generated before the program: output_struct.layered_struct) is known to the type pass."""
     return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)))
 
 
