@@ -16,8 +16,9 @@ import warnings
 from pathlib import Path
 
 from .model import SurfaceShader, UnityShader
-from .parse import UnityShaderError, is_unity_surface, parse_file, read_shader
+from .parse import is_unity_surface, parse_file, read_shader
 from .properties import resolve as resolve_properties
+from .source_text import UnityShaderError
 
 __all__ = ["SurfaceShader", "UnityShader", "UnityShaderError", "UnityShaderWarning", "is_unity_surface",
            "load_shader", "resolve_properties"]

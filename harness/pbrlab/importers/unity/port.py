@@ -36,7 +36,7 @@ from pathlib import Path
 from . import cg_types
 from . import model as M
 from .output_struct import layered_struct
-from .parse import PORT_MARKER
+from .source_text import PORT_MARKER, included_text
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
@@ -128,7 +128,6 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "") 
     ``declarations`` (what the harness puts before the program)."""
     included = declarations
     if folder is not None:
-        from .parse import included_text
         included += "\n" + included_text(program, folder)
     symbols = cg_types.with_declarations(included) if included.strip() else None
     segments = _code_segments(cg_types.convert(program, symbols))
