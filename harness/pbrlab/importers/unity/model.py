@@ -1,7 +1,8 @@
 """What a Unity surface shader says, as data: the parse step's output and the generate
 step's input (``parse.py`` -> this -> ``generate.py``).
 
-Nothing here reads files or writes shader code.
+Nothing here reads files or writes shader code: ``UnityShader.refused_keywords`` and
+``keywords`` ask ``source_text``, the one stage below the model, which reads the includes.
 """
 
 from __future__ import annotations
