@@ -14,8 +14,7 @@ import numpy as np
 from hostile_common import base_scene
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
-from pbrlab.importers.unity import load_shader, parse
-from pbrlab.importers.unity.parse import UnityShaderError
+from pbrlab.importers.unity import UnityShaderError, load_shader, parse
 
 
 def _shader(count: int, used: int, broken_at: int | None = None) -> str:

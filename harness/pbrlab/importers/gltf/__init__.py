@@ -11,13 +11,13 @@ its use, ``nodes`` walks the hierarchy, ``geometry`` turns primitives into verte
 (``draco`` and ``meshopt`` decode compressed geometry, ``morph`` applies morph targets),
 ``animation`` samples animations at ``--time``, ``skin`` poses skinned meshes by their joints,
 ``materials`` is the one mapping of glTF's material into the default surface, ``lights``
-converts KHR_lights_punctual units, ``cameras`` places the view. A malformed file raises
+converts KHR_lights_punctual units, ``cameras`` places the view (``extent``: where the
+geometry lies, the vertices and bounds it frames). A malformed file raises
 SceneError naming the object; nothing else escapes for a bad file.
 """
 
 from __future__ import annotations
 
-import math
 import copy
 import re
 import warnings
@@ -31,6 +31,7 @@ from ...foundation.file_identity import file_key
 from ...scene.model import Camera, Environment, RenderSettings, Scene, SceneObject
 from .cameras import framing_camera, gltf_camera
 from .document import LIGHTS, read_document
+from .extent import bounds
 from . import animation as animations, draco, instancing, ktx2, meshopt, morph, points_lines, skin, webp
 from .geometry import read_primitive
 from .lights import punctual_light
@@ -331,12 +332,3 @@ def _choose_camera(doc, scene: Scene, placed, index: int | None, size) -> Camera
         camera_index, world, where = placed[0]
         return gltf_camera(doc, camera_index, world, where, scene, size)
     return framing_camera(scene, size)
-
-
-def bounds(scene: Scene) -> tuple[np.ndarray, np.ndarray]:
-    """World-space axis-aligned bounds of every mesh object."""
-    lo, hi = np.full(3, math.inf), np.full(3, -math.inf)
-    for obj in scene.objects:
-        p = obj.geometry.positions.astype(np.float64) @ obj.transform[:3, :3].T + obj.transform[:3, 3]
-        lo, hi = np.minimum(lo, p.min(axis=0)), np.maximum(hi, p.max(axis=0))
-    return lo, hi

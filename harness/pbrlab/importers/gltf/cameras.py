@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from ...scene.model import Camera
+from .extent import bounds, world_points
 
 DEFAULT_HEIGHT = 512
 FRAMING_FOV_DEG = 45.0
@@ -32,8 +33,6 @@ def _size(aspect: float, size, spec) -> tuple[int, int]:
 
 
 def gltf_camera(doc, index, world: np.ndarray, where: str, scene, size) -> Camera:
-    from . import bounds
-
     spec = doc.get("cameras", index, where)
     position = world[:3, 3].copy()
     forward = world[:3, :3] @ np.array([0.0, 0.0, -1.0])
@@ -89,9 +88,3 @@ def framing_camera(scene, size) -> Camera:
     position = u * right + v * up + w * backward
     target = position - backward * max(w - float(depth.mean()), 1e-6)
     return Camera(position, target, np.array([0.0, 1.0, 0.0]), FRAMING_FOV_DEG, (width, height))
-
-
-def world_points(scene) -> np.ndarray:
-    """Every vertex of the scene's mesh objects in world space (float64)."""
-    return np.concatenate([obj.geometry.positions.astype(np.float64) @ obj.transform[:3, :3].T
-                           + obj.transform[:3, 3] for obj in scene.objects])

@@ -18,15 +18,14 @@ from __future__ import annotations
 from ...gpu.hlsl import line_directive
 from ...scene.surface_layers import FIELD_SIZES
 from . import model as M
-from .parse import _component_count
+from .generate_pass import _ATTRIBUTES, UNITY_STRUCTS, _attribute, _zero, canonical, fit
+from .output_struct import layered_struct, vector_type
+from .port import port_code_types
+from .source_text import component_count
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
                     "pbr/unity/global_illumination")
 SUFFIX = {"glsl": ".glsl", "hlsl": ".hlsl"}
-
-
-def _vec(n: int) -> str:
-    return "float" if n == 1 else f"vec{n}"
 
 
 def _input_fill(shader: M.SurfaceShader, language: str) -> str:
@@ -58,8 +57,7 @@ def _input_fill(shader: M.SurfaceShader, language: str) -> str:
         elif name == "screenPos":
             lines.append("    IN.screenPos = ComputeScreenPos(" + _mul(language, "unity_MatrixVP", "vec4(f.position, 1.0)") + ");")
         elif shader.is_color(name):  # the vertex colour: white on meshes here, unless vertex: sets it
-            from .generate_pass import fit
-            source = f"pbrlab_custom_{name}" if shader.vertex else fit("f.color", 4, _component_count(kind) or 4, language)
+            source = f"pbrlab_custom_{name}" if shader.vertex else fit("f.color", 4, component_count(kind) or 4, language)
             lines.append(f"    IN.{name} = {source};")
         else:  # written by the vertex: function, interpolated (mesh entry: pbrlab_custom_*)
             lines.append(f"    IN.{name} = pbrlab_custom_{name};")
@@ -95,7 +93,7 @@ def _zero_output(shader: M.SurfaceShader, language: str) -> list[str]:
     else:
         for name, n in shader.output_fields.items():
             if n:
-                zero = "0.0" if n == 1 else f"{_vec(n)}({', '.join(['0.0'] * n)})"
+                zero = "0.0" if n == 1 else f"{vector_type(n)}({', '.join(['0.0'] * n)})"
                 lines.append(f"    o.{name} = {zero};")
     if "Occlusion" in shader.output_fields:
         lines.append("    o.Occlusion = 1.0;")
@@ -103,17 +101,6 @@ def _zero_output(shader: M.SurfaceShader, language: str) -> list[str]:
         lines.append("    SurfaceOutputStandardLayers pbrlabLayerDefaults = pbrlab_default_layers();")
         lines += [f"    o.{name} = pbrlabLayerDefaults.{name};" for name in FIELD_SIZES]
     return lines
-
-
-def layered_struct(shader) -> list[str]:
-    """The output struct of a layered model (model.LAYERED_MODELS), written from its field
-    table before the program that fills it; none for the other models."""
-    if getattr(shader, "kind", None) != "surface" or shader.pragma.model not in M.LAYERED_MODELS:
-        return []
-    name = M.BUILTIN_MODELS[shader.pragma.model]
-    fields = [f"    {_vec(n)} {field};" for field, n in M.OUTPUT_FIELDS[name].items()]
-    return [f"// {name}: {M.LAYERED_MODELS[shader.pragma.model]}'s fields, then SurfaceOutputStandardLayers'",
-            f"struct {name} {{", *fields, "};"]
 
 
 def _layered_shading(shader: M.SurfaceShader) -> list[str]:
@@ -302,7 +289,6 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
 
 def custom_varyings(shader: M.SurfaceShader, language: str):
     """[(type in ``language``, member)] of the Input members a vertex: function writes."""
-    from .port import port_code_types
     if shader.vertex is None:
         return []
     members = list(shader.custom_members())
@@ -314,30 +300,27 @@ def _vertex_value(shader: M.SurfaceShader, member: str) -> str:
     """What the vertex stage passes for an Input member: what vertex: wrote, or for `color`
     (unless written) the vertex colour v.color."""
     if shader.is_color(member) and member not in shader.vertex.writes_input:
-        from .generate_pass import fit
         kind = next(t for t, n in shader.input_members if n == member)
         colour = _appdata_member(shader, "COLOR0")
-        return fit(f"v.{colour}" if colour else "vec4(1.0, 1.0, 1.0, 1.0)", 4, _component_count(kind) or 4, "glsl")
+        return fit(f"v.{colour}" if colour else "vec4(1.0, 1.0, 1.0, 1.0)", 4, component_count(kind) or 4, "glsl")
     return f"o.{member}"
 
 
 def _appdata_member(shader: M.SurfaceShader, semantic: str):
     """The member of the vertex function's input struct with ``semantic`` (appdata_full's
     names when it takes one of Unity's structs), or None."""
-    from .generate_pass import UNITY_STRUCTS, canonical
     members = shader.vertex.appdata_members or UNITY_STRUCTS["appdata_full"]
     return next((n for t, n, s in members if canonical(s) == semantic), None)
 
 
 def _appdata_lines(shader: M.SurfaceShader, language: str) -> list[str]:
     """Declare and fill the vertex function's input from the mesh, member by semantic."""
-    from .generate_pass import UNITY_STRUCTS, _attribute, _zero, canonical, fit
     v = shader.vertex
     kind = v.appdata if v.appdata_members else "appdata_full"
     members = v.appdata_members or UNITY_STRUCTS["appdata_full"]
     lines = [f"    {kind} v = ({kind})0;" if language == "hlsl" else f"    {kind} v;"]
     for mtype, name, semantic in members:
-        n = _component_count(mtype)
+        n = component_count(mtype)
         value = _attribute(canonical(semantic), n, language) if semantic else None
         if value is None:
             value = _zero(mtype, language)
@@ -351,7 +334,6 @@ def _appdata_lines(shader: M.SurfaceShader, language: str) -> list[str]:
 
 def _appdata_read(shader: M.SurfaceShader, language: str) -> dict:
     """Expressions of the moved vertex: position (float4), normal, tangent (float4), uv."""
-    from .generate_pass import _ATTRIBUTES, canonical, fit
     if not shader.vertex.appdata_members:
         return {"position": "v.vertex", "normal": "v.normal", "tangent": "v.tangent", "uv": "v.texcoord.xy"}
     found = {canonical(s): (t, n) for t, n, s in shader.vertex.appdata_members}
@@ -360,7 +342,7 @@ def _appdata_read(shader: M.SurfaceShader, language: str) -> dict:
                                 ("uv", "TEXCOORD0", 2)):
         if semantic in found:
             t, n = found[semantic]
-            out[key] = fit(f"v.{n}", _component_count(t), want, language, 1.0 if key == "position" else 0.0)
+            out[key] = fit(f"v.{n}", component_count(t), want, language, 1.0 if key == "position" else 0.0)
         else:
             expr, have, w = _ATTRIBUTES[semantic]
             out[key] = fit(expr, have, want, language, w)

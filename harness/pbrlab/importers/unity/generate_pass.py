@@ -20,7 +20,8 @@ from __future__ import annotations
 import re
 
 from . import model as M
-from .parse import UnityShaderError, _component_count
+from .port import port_code_types
+from .source_text import UnityShaderError, component_count
 
 # Unity's vertex structs of UnityCG.cginc, by member and semantic (the harness's
 # unity_surface.inc declares appdata_full; UnityCG's others are subsets of it here).
@@ -75,7 +76,7 @@ def _struct(vf: M.VertexFragmentPass, name: str):
 
 
 def _size(kind: str, where: str) -> int:
-    n = _component_count(kind)
+    n = component_count(kind)
     if not n:
         raise UnityShaderError(f"{where}: {kind} cannot pass between the stages here (scalars and "
                                "vectors only)")
@@ -83,7 +84,7 @@ def _size(kind: str, where: str) -> int:
 
 
 def _zero(kind: str, language: str) -> str:
-    n = _component_count(kind)
+    n = component_count(kind)
     if n == 1:
         return "0" if kind.startswith(("int", "uint")) else "0.0"
     if n:
@@ -92,7 +93,6 @@ def _zero(kind: str, language: str) -> str:
 
 
 def _type(kind: str, language: str) -> str:
-    from .port import port_code_types
     return kind if language == "hlsl" else port_code_types(kind)
 
 
@@ -108,7 +108,7 @@ def _fill_struct(vf, kind: str, var: str, language: str, value_of) -> list[str]:
     members = _struct(vf, kind)
     out = []
     for mtype, mname, semantic in members:
-        n = _component_count(mtype)
+        n = component_count(mtype)
         value = value_of(canonical(semantic), n, mtype) if semantic else None
         if value is None:
             value = _zero(mtype, language)
@@ -273,7 +273,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
             body.append(f"    {_type(kind, language)} {local};")
         else:
             body.append(f"    {_type(kind, language)} {local} = "
-                        f"{value(canonical(semantic), _component_count(kind) or 4, kind) or _zero(kind, language)};")
+                        f"{value(canonical(semantic), component_count(kind) or 4, kind) or _zero(kind, language)};")
         args.append(local)
     call = f"{vf.fragment}({', '.join(args)})"
     colour = None

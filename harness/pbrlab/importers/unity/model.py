@@ -1,7 +1,8 @@
 """What a Unity surface shader says, as data: the parse step's output and the generate
 step's input (``parse.py`` -> this -> ``generate.py``).
 
-Nothing here reads files or writes shader code.
+Nothing here reads files or writes shader code: ``UnityShader.refused_keywords`` and
+``keywords`` ask ``source_text``, the one stage below the model, which reads the includes.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...scene.surface_layers import FIELD_SIZES
+from . import source_text
 
 # Input members Unity's surface compiler fills by name (Unity manual, "Writing Surface
 # Shaders", Input structure); uv<N>_<Texture> take the texture's _ST tiling and offset.
@@ -218,16 +220,14 @@ class UnityShader:
     @property
     def refused_keywords(self) -> dict:
         """{keyword: reason} of keywords a pbrlab stand-in its passes include does not honour."""
-        from .parse import refused_keywords
         out = {}
         for p in self.passes:
             if p.kind != "grab":
-                out.update(refused_keywords(p.program, self.path.parent))
+                out.update(source_text.refused_keywords(p.program, self.path.parent))
         return out
 
     @property
     def keywords(self) -> frozenset:
         """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
         (a material's ``keywords`` enables some; Unity's default variant has none)."""
-        from .parse import declared_keywords
-        return frozenset().union(*(declared_keywords(p.program) for p in self.passes if p.kind != "grab"))
+        return frozenset().union(*(source_text.declared_keywords(p.program) for p in self.passes if p.kind != "grab"))

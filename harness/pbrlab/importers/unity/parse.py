@@ -16,20 +16,15 @@ import math
 import re
 from pathlib import Path
 
-from ...foundation.errors import PbrlabError
 from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
 from . import shaderlab
+from .parse_pass import _structs, parse_pass
+from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
+                          check_refusals, component_count, included_text, line_of, matching_brace, top_level)
 
 FLOAT32_MAX = 3.4028234663852886e38
-
-PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
-
-
-class UnityShaderError(PbrlabError):
-    """A Unity shader the front end cannot run as Unity would; the message says where."""
-
 
 # Options with no effect here: the harness has no shadows, lightmaps, deferred or
 # prepass paths, fog, instancing or meta pass (README, "Unity shaders").
@@ -44,18 +39,6 @@ ALPHA_OPTIONS = {"alpha": "fade", "alpha:auto": "fade", "alpha:blend": "fade",
 PASS_STATE_HONOURED = ("Cull", "ZWrite", "Blend")
 PASS_STATE_IGNORED = ("ZTest", "ColorMask", "Offset", "Stencil", "AlphaToMask", "BlendOp",
                       "Conservative", "ZClip")
-
-_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
-_IDENT = r"[A-Za-z_]\w*"
-
-
-def _blank_comments(text: str) -> str:
-    """Comments replaced by spaces, newlines kept (offsets and line numbers survive)."""
-    return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
-
-
-def _line_of(text: str, index: int) -> int:
-    return text.count("\n", 0, index) + 1
 
 
 class _Lines:
@@ -74,22 +57,10 @@ class _Lines:
         return self.line
 
 
-def _matching_brace(text: str, open_index: int) -> int:
-    depth = 0
-    for i in range(open_index, len(text)):
-        if text[i] == "{":
-            depth += 1
-        elif text[i] == "}":
-            depth -= 1
-            if depth == 0:
-                return i
-    return -1
-
-
 # --- ShaderLab --------------------------------------------------------------------------
 
 _PROPERTY = re.compile(
-    r'(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + _IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
+    r'(?P<attrs>(?:\[[^\]]*\]\s*)*)(?P<name>' + IDENT + r')\s*\(\s*"(?P<display>[^"]*)"\s*,\s*'
     r'(?P<kind>(?i:range)\s*\(\s*(?P<lo>[^,()]*),\s*(?P<hi>[^,()]*)\)|\w+)\s*\)\s*=\s*'
     r'(?P<default>\([^)]*\)|"[^"\n]*"\s*(?:\{[^}]*\})?|[^\s\[]+)')
 # ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
@@ -172,7 +143,7 @@ def _properties_in(text: str, first_line: int, path: Path, warnings: list) -> di
         pos = m.end()
     rest = text[pos:]
     if rest.strip():
-        raise UnityShaderError(f"{path}:{first_line - 1 + _line_of(text, pos + len(rest) - len(rest.lstrip()))}: "
+        raise UnityShaderError(f"{path}:{first_line - 1 + line_of(text, pos + len(rest) - len(rest.lstrip()))}: "
                                f"cannot read this Properties text: {rest.strip()[:60]!r} "
                                '(expected _Name ("Label", Type) = default)')
     return props
@@ -300,10 +271,10 @@ def _pragma(program: str, where) -> tuple:
 
 def _function(masked: str, name: str):
     """(match, body) of the definition of function ``name``, or None."""
-    for m in re.finditer(r"\b(" + _IDENT + r")\s+" + re.escape(name) + r"\s*\(([^)]*)\)\s*\{", masked):
+    for m in re.finditer(r"\b(" + IDENT + r")\s+" + re.escape(name) + r"\s*\(([^)]*)\)\s*\{", masked):
         if m.group(1) in ("return", "else"):
             continue
-        end = _matching_brace(masked, m.end() - 1)
+        end = matching_brace(masked, m.end() - 1)
         return m, masked[m.end():end]
     return None
 
@@ -326,11 +297,8 @@ def _struct_fields(masked: str, name: str):
     m = re.search(r"\bstruct\s+" + re.escape(name) + r"\s*\{", masked)
     if not m:
         return None, None
-    end = _matching_brace(masked, m.end() - 1)
+    end = matching_brace(masked, m.end() - 1)
     return m, masked[m.end():end]
-
-
-_SIZE = {"": 1, "2": 2, "3": 3, "4": 4}
 
 
 def _members(body: str):
@@ -361,14 +329,6 @@ def _members(body: str):
         kind, names = words[0], [w for w in words[1:] if w != ","]
         out.extend((kind, n) for n in names)
     return out
-
-
-def _component_count(kind: str) -> int:
-    m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float)([234]?)", kind)
-    if m:
-        return _SIZE[m.group(1)]
-    m = re.fullmatch(r"[iub]?vec([234])", kind)  # a port-unity port's GLSL types
-    return int(m.group(1)) if m else (1 if kind in ("float", "int", "uint", "bool") else 0)
 
 
 def _lighting(masked: str, model: str, where) -> M.LightingFunction:
@@ -407,14 +367,14 @@ def _lighting(masked: str, model: str, where) -> M.LightingFunction:
 def parse_program(program: str, path: Path, first_line: int = 1, shader: M.SurfaceShader | None = None,
                   name: str | None = None) -> M.SurfaceShader:
     """The model of a CGPROGRAM text (``first_line``: where it starts in ``path``)."""
-    masked = _blank_comments(program)
+    masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
 
     def where(index: int) -> str:  # an index past the program's text lies in an include
-        return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"
+        return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
 
     pragma, pragma_at = _pragma(masked, where)
     if shader is None:
@@ -448,7 +408,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
         sm, sbody = _struct_fields(everything, shader.output_type)
         if sm is None:
             raise UnityShaderError(f"{where(m.start())}: output struct {shader.output_type} is not defined")
-        shader.output_fields = {n: _component_count(t) for t, n in _members(sbody)}
+        shader.output_fields = {n: component_count(t) for t, n in _members(sbody)}
     # struct Input.
     im, ibody = _struct_fields(everything, "Input")
     if im is None:
@@ -473,7 +433,6 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
             written = tuple(sorted(set(re.findall(r"\b" + re.escape(vp[1][2]) + r"\.(\w+)", found[1]))))
         shader.vertex = M.VertexFunction(pragma.vertex, vp[0][1], written, vp[1][2] if len(vp) == 2 else None)
         if vp[0][1] not in ("appdata_full", "appdata_base", "appdata_tan"):
-            from .parse_pass import _structs
             own = _structs(everything).get(vp[0][1])
             if own is None:
                 raise UnityShaderError(f"{where(found[0].start())}: vertex:{pragma.vertex} takes "
@@ -494,8 +453,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                 f"{where(im.start())}: Input.{member} is not a name Unity fills (uv_<Texture>, "
                 f"uv2_<Texture>, {', '.join(M.FILLED_INPUTS)}, INTERNAL_DATA) and no vertex: "
                 "function writes it")
-    shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
-                                           r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
+    shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
+                                           r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     shader.light_keywords = tests_light_keywords(everything)
     if pragma.model in M.LAYERED_MODELS:
         # the layers whose fields it writes are compiled in (surface_layers.py)
@@ -518,158 +477,18 @@ def tests_light_keywords(masked: str) -> bool:
     return _KEYWORD_TEST.search(masked) is not None
 
 
-def _top_level(masked: str) -> str:
-    """Only the text at brace depth 0 (global declarations)."""
-    out, depth = [], 0
-    for ch in masked:
-        if ch == "{":
-            depth += 1
-        if depth == 0 or ch == "\n":
-            out.append(ch)
-        if ch == "}":
-            depth -= 1
-            out.append(" ")
-    return "".join(out)
-
-
 def _implicit_texture_properties(program: str, properties: dict) -> None:
     """A sampler the program declares without a Properties line still gets a texture, as in
     Unity (its default, white here; a samplerCUBE the environment) and _ST (1, 1, 0, 0)."""
-    masked = _top_level(_blank_comments(program))
+    masked = top_level(blank_comments(program))
     masked = re.sub(r"\bUNITY_DECLARE_(?:DEPTH_TEXTURE|TEX2D|TEX2D_NOSAMPLER|SCREENSPACE_TEXTURE)\s*\(\s*(\w+)\s*\)",
                     r"sampler2D \1", masked)
     masked = re.sub(r"\bUNITY_DECLARE_TEXCUBE\s*\(\s*(\w+)\s*\)", r"samplerCUBE \1", masked)
     masked = re.sub(r"\bsampler2D_(?:float|half)\b", "sampler2D", masked)
-    for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + _IDENT + r")\s*;", masked):
+    for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + IDENT + r")\s*;", masked):
         if name not in properties:
             properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
                                           ("implicit",))
-
-
-_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
-# A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
-_ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
-_CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
-
-
-class UnityIncludeRefusal(UnityShaderError):
-    """A shader includes one of pbrlab's stand-ins that refuses (Unity data the harness lacks):
-    no SubShader or Fallback can help, so it is raised as it stands."""
-
-
-def resolve_included(name: str, folder: Path):
-    """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
-    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``); else None."""
-    from .program import CGINC
-    for candidate in (folder / name, CGINC / Path(name).name):
-        if candidate.is_file():
-            return candidate
-    return None
-
-
-def _read_include(path: Path):
-    try:
-        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
-    except (OSError, UnicodeDecodeError):
-        return None
-
-
-def stand_in_refusal(text: str) -> str | None:
-    """The message of a ``#error`` line outside every #if of ``text`` (None if there is none)."""
-    masked = _blank_comments(text)
-    depth = 0
-    for m in sorted([*_CONDITIONAL.finditer(masked), *_ERROR.finditer(masked)], key=lambda m: m.start()):
-        if m.re is _ERROR:
-            if depth == 0:
-                return m.group(1).strip()
-            continue
-        depth += -1 if m.group(1) == "endif" else 1
-    return None
-
-
-def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen=None) -> None:
-    """Raise ``UnityIncludeRefusal`` at the shader's ``#include`` line when what it includes
-    (directly or further down) is a stand-in that refuses with ``#error``."""
-    from .program import CGINC
-    seen = set() if seen is None else seen
-    for m in _INCLUDE.finditer(_blank_comments(program)):
-        target = resolve_included(m.group(1), folder)
-        if target is None or target.resolve() in seen:
-            continue
-        seen.add(target.resolve())
-        text = _read_include(target)
-        if text is None:
-            continue
-        line = first_line - 1 + _line_of(program, m.start())
-        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
-        if message:
-            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
-        try:
-            check_refusals(text, path, first_line, target.parent, seen)
-        except UnityIncludeRefusal as exc:  # found further down: name this line of the shader
-            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}" -> '
-                                      + str(exc).split(": ", 1)[1]) from None
-
-
-def included_text(program: str, folder: Path, seen=None) -> str:
-    """The text of the files ``program`` includes (recursively; the shader's folder first, then
-    pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
-    struct Input, a vertex: or Lighting<Name> function defined in an include."""
-    seen = set() if seen is None else seen
-    out = []
-    for name in _INCLUDE.findall(_blank_comments(program)):
-        candidate = resolve_included(name, folder)
-        if candidate is None or candidate.resolve() in seen:
-            continue
-        seen.add(candidate.resolve())
-        text = _read_include(candidate)
-        if text is None:
-            continue
-        out.append(_blank_comments(text))
-        out.append(included_text(text, candidate.parent, seen))
-    return "\n".join(out)
-
-
-# Keywords a stand-in of pbrlab's declares through the shader but does not honour: a material
-# that enables one is refused by name (scene.py), never drawn as if it were off.
-STAND_IN_REFUSED_KEYWORDS = {
-    "UnityStandardCore.cginc": {
-        "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
-                                   "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
-    },
-}
-
-
-def refused_keywords(program: str, folder: Path, seen=None) -> dict:
-    """{keyword: reason} of the stand-ins ``program`` includes (recursively) that refuse it."""
-    from .program import CGINC
-    seen = set() if seen is None else seen
-    out = {}
-    for name in _INCLUDE.findall(_blank_comments(program)):
-        target = resolve_included(name, folder)
-        if target is None or target.resolve() in seen:
-            continue
-        seen.add(target.resolve())
-        if target.parent.resolve() == CGINC.resolve():
-            out.update(STAND_IN_REFUSED_KEYWORDS.get(target.name, {}))
-        text = _read_include(target)
-        if text is not None:
-            out.update(refused_keywords(text, target.parent, seen))
-    return out
-
-
-# `#pragma multi_compile[_local] ...` / `shader_feature[_local] ...`: the keywords a program
-# declares (a material's `keywords` may enable them; `_` and `__` are Unity's "none").
-_KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader_feature)(?:_local)?"
-                             r"(?:_vertex|_fragment)?[ \t]+([^\n]*)$", re.M)
-
-
-def declared_keywords(program: str) -> frozenset:
-    """The keywords ``#pragma multi_compile`` / ``shader_feature`` lines of ``program`` declare."""
-    words = set()
-    for m in _KEYWORD_PRAGMA.finditer(_blank_comments(program)):
-        words.update(w for w in m.group(1).split() if re.fullmatch(_IDENT, w) and set(w) != {"_"})
-    return frozenset(words)
 
 
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
@@ -695,7 +514,7 @@ DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "
 def read_text(text: str, path: Path) -> M.UnityShader:
     """A whole shader: a ShaderLab file, bare CGPROGRAM text, or a port-unity port."""
     text = text.removeprefix("\ufeff")
-    masked = _blank_comments(text)
+    masked = blank_comments(text)
     if not re.search(r"^\s*Shader\s*\"", masked, re.M):
         shader = parse_program(text, path, 1)
         if text.startswith(PORT_MARKER):
@@ -720,7 +539,7 @@ def read_text(text: str, path: Path) -> M.UnityShader:
     props = {}
     if layout.properties_span:
         a, b = layout.properties_span
-        props = _properties_in(masked[a:b], _line_of(text, a), path, warnings)
+        props = _properties_in(masked[a:b], line_of(text, a), path, warnings)
     reasons = []
     for index, sub in enumerate(layout.subshaders):
         notes: list = []
@@ -774,14 +593,13 @@ def find_shader(name: str, near: Path):
                 head = candidate.read_text(encoding="utf-8", errors="replace")[:4000]
             except OSError:
                 continue
-            m = re.search(r'\bShader\s*"([^"]*)"', _blank_comments(head))
+            m = re.search(r'\bShader\s*"([^"]*)"', blank_comments(head))
             if m and m.group(1) in wanted and candidate.resolve() != near.resolve():
                 return candidate
     return None
 
 
 def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> list:
-    from .parse_pass import parse_pass
     path = layout.path
     passes = []
     for item in sub.items:
@@ -824,7 +642,6 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
 def _pass(layout, sub, p, props: dict, warnings: list, notes: list):
     """The vertex/fragment pass of ``Pass { ... }`` in ``sub``, or None where the harness
     skips it (a LightMode it does not draw, a depth-only pass), with a note saying so."""
-    from .parse_pass import parse_pass
     path = layout.path
     mode = p.tags.get("LightMode", "")
     label = f"Pass{' ' + repr(p.name) if p.name else ''}"
@@ -896,7 +713,7 @@ def is_unity_surface(path: Path) -> bool:
         text = path.read_text(encoding="utf-8", errors="replace")
     except OSError:
         return False
-    return re.search(r"^[ \t]*#[ \t]*pragma[ \t]+surface\b", _blank_comments(text), re.M) is not None
+    return re.search(r"^[ \t]*#[ \t]*pragma[ \t]+surface\b", blank_comments(text), re.M) is not None
 
 
 def parse_file(path: Path) -> M.SurfaceShader:

@@ -12,7 +12,8 @@ from pathlib import Path
 
 from . import model as M
 from .conditionals import active_text, defines_of
-from .parse import (UnityShaderError, _IDENT, _INCLUDE, _blank_comments, _line_of, _matching_brace, _top_level, check_refusals, included_text, resolve_included)
+from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, included_text, line_of,
+                          matching_brace, resolve_included, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # Stages pbrlab does not run, named in the refusal.
@@ -52,7 +53,7 @@ def _param(text: str, where: str) -> tuple:
 
 def _function_signature(masked: str, name: str, where_of):
     m = None
-    for cand in re.finditer(r"\b(" + _IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked):
+    for cand in re.finditer(r"\b(" + IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked):
         if cand.group(1) not in ("return", "else"):
             m = cand
             break
@@ -73,8 +74,8 @@ def _function_signature(masked: str, name: str, where_of):
 
 def _structs(masked: str) -> dict:
     out = {}
-    for m in re.finditer(r"\bstruct\s+(" + _IDENT + r")\s*\{", masked):
-        end = _matching_brace(masked, m.end() - 1)
+    for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
+        end = matching_brace(masked, m.end() - 1)
         members = []
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
         for decl in body.split(";"):
@@ -98,20 +99,20 @@ def _structs(masked: str) -> dict:
 def _unresolved_include(program: str, folder: Path):
     """(name, offset) of the first ``#include`` of ``program`` that neither the shader's folder
     nor pbrlab's stand-ins hold (None when every one resolves)."""
-    for m in _INCLUDE.finditer(_blank_comments(program)):
+    for m in INCLUDE.finditer(blank_comments(program)):
         if resolve_included(m.group(1), folder) is None:
             return m.group(1), m.start()
     return None
 
 
 def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragmentPass:
-    masked = _blank_comments(program)
+    masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + included_text(program, path.parent)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
 
     def where(index: int) -> str:
-        return f"{path}:{first_line - 1 + _line_of(program, min(index, len(program)))}"
+        return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
 
     pragmas = {}
     for m in _PRAGMA.finditer(masked):
@@ -148,6 +149,6 @@ def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFrag
         vertex_return_semantic=found["vertex"][2],
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
         fragment_return_semantic=found["fragment"][2], structs=structs)
-    vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + _IDENT +
-                                       r")\s*(?:=[^;]*)?;", _top_level(everything), re.M))
+    vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
+                                       r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     return vf

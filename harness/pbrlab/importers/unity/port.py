@@ -35,7 +35,8 @@ from pathlib import Path
 
 from . import cg_types
 from . import model as M
-from .parse import PORT_MARKER
+from .output_struct import layered_struct
+from .source_text import PORT_MARKER, included_text
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
@@ -117,8 +118,7 @@ def _drop_unity_redeclarations(code: str) -> str:
 
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM ported, line for line (comments kept); a layered model's output
-    struct (generated before the program: generate.layered_struct) is known to the type pass."""
-    from .generate import layered_struct
+    struct (generated before the program: output_struct.layered_struct) is known to the type pass."""
     return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)))
 
 
@@ -128,7 +128,6 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "") 
     ``declarations`` (what the harness puts before the program)."""
     included = declarations
     if folder is not None:
-        from .parse import included_text
         included += "\n" + included_text(program, folder)
     symbols = cg_types.with_declarations(included) if included.strip() else None
     segments = _code_segments(cg_types.convert(program, symbols))

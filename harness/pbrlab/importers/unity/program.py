@@ -28,12 +28,12 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import generate, parse, port
+from . import generate, port
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
+from .source_text import CGINC, resolve_included
 
-CGINC = Path(__file__).parent / "cginc"
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
 # (no file has it: shaders.expand finds it among its virtual files first).
@@ -79,7 +79,7 @@ def program_include(shader) -> tuple[str, dict]:
 
     def relinked(text: str, where: Path) -> str:
         def relink(m):
-            target = parse.resolve_included(m.group(2), where)
+            target = resolve_included(m.group(2), where)
             if target is None:
                 return m.group(0)  # the GLSL expander names what it cannot find
             key = target.resolve()

@@ -17,7 +17,8 @@ from ...foundation.file_identity import include_closure
 from . import generate, generate_pass
 from . import model as M
 from . import unprovided
-from .program import (CGINC, TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
+from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
+from .source_text import CGINC
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
 

@@ -19,12 +19,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...foundation.errors import PbrlabError
+from .source_text import blank_comments, line_of
 
 _BLOCK = re.compile(r"\b(CGPROGRAM|CGINCLUDE|HLSLPROGRAM|HLSLINCLUDE|GLSLPROGRAM|GLSLINCLUDE)\b")
 _BLOCK_END = {"CG": re.compile(r"\bENDCG\b"), "HLSL": re.compile(r"\bENDHLSL\b"),
               "GLSL": re.compile(r"\bENDGLSL\b")}
 _TOKEN = re.compile(r'"[^"\n]*"|[A-Za-z_][\w.]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|\S')
-_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 # Commands of a Pass that belong to the fixed-function pipeline (no program runs them).
 FIXED_FUNCTION = frozenset(w.lower() for w in (
     "SetTexture", "Material", "Lighting", "SeparateSpecular", "ColorMaterial", "BindChannels",
@@ -47,14 +47,6 @@ class ShaderLabError(PbrlabError):
 def blank(text: str) -> str:
     """Everything but newlines replaced by spaces (offsets and line numbers survive)."""
     return re.sub(r"[^\n]", " ", text)
-
-
-def blank_comments(text: str) -> str:
-    return _COMMENT.sub(lambda m: blank(m.group(0)), text)
-
-
-def line_of(text: str, index: int) -> int:
-    return text.count("\n", 0, index) + 1
 
 
 @dataclass

@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import re
 
-from .parse import UnityShaderError
+from .source_text import UnityShaderError
 
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {

@@ -1,0 +1,203 @@
+"""The shader's text as the Unity front end reads it, before any model: the bottom of the
+pipeline (the package's docstring), importing no other Unity module.
+
+Comments blanked with offsets and line numbers kept (``blank_comments``, ``line_of``), braces
+matched (``matching_brace``), the text at brace depth 0 (``top_level``), an identifier
+(``IDENT``), a Cg/GLSL type name's component count (``component_count``); ``#include`` lines
+resolved as Unity resolves them here, the shader's folder first, then pbrlab's stand-ins for
+Unity's include files (``CGINC``: ``resolve_included``, ``included_text``); what those stand-ins
+refuse, by ``#error`` (``check_refusals``) or by keyword (``refused_keywords``); the keywords a
+program's ``#pragma multi_compile`` / ``shader_feature`` lines declare (``declared_keywords``);
+the first line of a ``port-unity`` port (``PORT_MARKER``); and ``UnityShaderError``, the front
+end's one error.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from ...foundation.errors import PbrlabError
+
+# pbrlab's stand-ins for Unity's include files (UnityCG.cginc, Lighting.cginc, ...).
+CGINC = Path(__file__).parent / "cginc"
+
+PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
+
+
+class UnityShaderError(PbrlabError):
+    """A Unity shader the front end cannot run as Unity would; the message says where."""
+
+
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
+IDENT = r"[A-Za-z_]\w*"
+
+
+def blank_comments(text: str) -> str:
+    """Comments replaced by spaces, newlines kept (offsets and line numbers survive)."""
+    return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+def line_of(text: str, index: int) -> int:
+    return text.count("\n", 0, index) + 1
+
+
+def matching_brace(text: str, open_index: int) -> int:
+    depth = 0
+    for i in range(open_index, len(text)):
+        if text[i] == "{":
+            depth += 1
+        elif text[i] == "}":
+            depth -= 1
+            if depth == 0:
+                return i
+    return -1
+
+
+def top_level(masked: str) -> str:
+    """Only the text at brace depth 0 (global declarations)."""
+    out, depth = [], 0
+    for ch in masked:
+        if ch == "{":
+            depth += 1
+        if depth == 0 or ch == "\n":
+            out.append(ch)
+        if ch == "}":
+            depth -= 1
+            out.append(" ")
+    return "".join(out)
+
+
+_SIZE = {"": 1, "2": 2, "3": 3, "4": 4}
+
+
+def component_count(kind: str) -> int:
+    m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float)([234]?)", kind)
+    if m:
+        return _SIZE[m.group(1)]
+    m = re.fullmatch(r"[iub]?vec([234])", kind)  # a port-unity port's GLSL types
+    return int(m.group(1)) if m else (1 if kind in ("float", "int", "uint", "bool") else 0)
+
+
+
+INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+# A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
+_ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
+_CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
+
+
+class UnityIncludeRefusal(UnityShaderError):
+    """A shader includes one of pbrlab's stand-ins that refuses (Unity data the harness lacks):
+    no SubShader or Fallback can help, so it is raised as it stands."""
+
+
+def resolve_included(name: str, folder: Path):
+    """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
+    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``); else None."""
+    for candidate in (folder / name, CGINC / Path(name).name):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def _read_include(path: Path):
+    try:
+        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def stand_in_refusal(text: str) -> str | None:
+    """The message of a ``#error`` line outside every #if of ``text`` (None if there is none)."""
+    masked = blank_comments(text)
+    depth = 0
+    for m in sorted([*_CONDITIONAL.finditer(masked), *_ERROR.finditer(masked)], key=lambda m: m.start()):
+        if m.re is _ERROR:
+            if depth == 0:
+                return m.group(1).strip()
+            continue
+        depth += -1 if m.group(1) == "endif" else 1
+    return None
+
+
+def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen=None) -> None:
+    """Raise ``UnityIncludeRefusal`` at the shader's ``#include`` line when what it includes
+    (directly or further down) is a stand-in that refuses with ``#error``."""
+    seen = set() if seen is None else seen
+    for m in INCLUDE.finditer(blank_comments(program)):
+        target = resolve_included(m.group(1), folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        text = _read_include(target)
+        if text is None:
+            continue
+        line = first_line - 1 + line_of(program, m.start())
+        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
+        if message:
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
+        try:
+            check_refusals(text, path, first_line, target.parent, seen)
+        except UnityIncludeRefusal as exc:  # found further down: name this line of the shader
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}" -> '
+                                      + str(exc).split(": ", 1)[1]) from None
+
+
+def included_text(program: str, folder: Path, seen=None) -> str:
+    """The text of the files ``program`` includes (recursively; the shader's folder first, then
+    pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
+    struct Input, a vertex: or Lighting<Name> function defined in an include."""
+    seen = set() if seen is None else seen
+    out = []
+    for name in INCLUDE.findall(blank_comments(program)):
+        candidate = resolve_included(name, folder)
+        if candidate is None or candidate.resolve() in seen:
+            continue
+        seen.add(candidate.resolve())
+        text = _read_include(candidate)
+        if text is None:
+            continue
+        out.append(blank_comments(text))
+        out.append(included_text(text, candidate.parent, seen))
+    return "\n".join(out)
+
+
+# Keywords a stand-in of pbrlab's declares through the shader but does not honour: a material
+# that enables one is refused by name (scene.py), never drawn as if it were off.
+STAND_IN_REFUSED_KEYWORDS = {
+    "UnityStandardCore.cginc": {
+        "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
+                                   "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
+    },
+}
+
+
+def refused_keywords(program: str, folder: Path, seen=None) -> dict:
+    """{keyword: reason} of the stand-ins ``program`` includes (recursively) that refuse it."""
+    seen = set() if seen is None else seen
+    out = {}
+    for name in INCLUDE.findall(blank_comments(program)):
+        target = resolve_included(name, folder)
+        if target is None or target.resolve() in seen:
+            continue
+        seen.add(target.resolve())
+        if target.parent.resolve() == CGINC.resolve():
+            out.update(STAND_IN_REFUSED_KEYWORDS.get(target.name, {}))
+        text = _read_include(target)
+        if text is not None:
+            out.update(refused_keywords(text, target.parent, seen))
+    return out
+
+
+# `#pragma multi_compile[_local] ...` / `shader_feature[_local] ...`: the keywords a program
+# declares (a material's `keywords` may enable them; `_` and `__` are Unity's "none").
+_KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader_feature)(?:_local)?"
+                             r"(?:_vertex|_fragment)?[ \t]+([^\n]*)$", re.M)
+
+
+def declared_keywords(program: str) -> frozenset:
+    """The keywords ``#pragma multi_compile`` / ``shader_feature`` lines of ``program`` declare."""
+    words = set()
+    for m in _KEYWORD_PRAGMA.finditer(blank_comments(program)):
+        words.update(w for w in m.group(1).split() if re.fullmatch(IDENT, w) and set(w) != {"_"})
+    return frozenset(words)
