@@ -1,6 +1,6 @@
 """Cross-check against pyrender 0.1.45 (issue 4): render the sphere grid with pyrender and
 with pbrlab through EGL and OSMesa, print the agreement figures and write
-docs/pyrender_vs_pbrlab.png. A measurement, not a test (tests/surface/test_pyrender_crosscheck.py
+docs/pyrender_vs_pbrlab.png. A measurement, not a test (tests/checking/test_pyrender_crosscheck.py
 asserts the tolerances).
 
     .venv/bin/python benchmarks/pyrender_crosscheck.py [--size 480x160] [--backends egl,osmesa]

@@ -1,6 +1,6 @@
 """Start-up cost of the `pbrlab` command and of the pytest plugin (issue 25): wall clock of
 fresh processes, median of N, with a breakdown. A benchmark: it prints figures and asserts
-nothing (tests/harness/test_import_cost.py checks the import structure instead).
+nothing (tests/foundation/test_import_cost.py checks the import structure instead).
 
     .venv/bin/python benchmarks/startup.py [--runs 9] [--size 512] [--scene scenes/unity_example/scene.json]
         [--empty-cache] [--baseline ../main/harness]
@@ -48,11 +48,14 @@ def timed(module, name, label):
             C[label] = C.get(label, 0.0) + time.process_time() - cpu
     setattr(module, name, wrapper)
 t0 = time.perf_counter()
-from pbrlab import cli
+from pbrlab.commands import cli
 T["import pbrlab.commands.cli"] = time.perf_counter() - t0
 C["import pbrlab.commands.cli"] = time.process_time()
 t1, c1 = time.perf_counter(), time.process_time()
-from pbrlab import gl, images, meshes, programs, render, resource_cache, shaders, source_cache
+from pbrlab.foundation import images
+from pbrlab.gpu import gl, programs, shaders, source_cache
+from pbrlab.render import renderer as render, resource_cache
+from pbrlab.scene import meshes
 from pbrlab.commands import render as render_command
 T["import the render path (render, images, ...)"] = time.perf_counter() - t1
 C["import the render path (render, images, ...)"] = time.process_time() - c1

@@ -8,7 +8,7 @@ out=${1:?usage: gpu_golden_check.sh OUT}
 mkdir -p "$out/renders"
 python3 - <<'PY' | tee "$out/context.json"
 import json
-from pbrlab import gl
+from pbrlab.gpu import gl
 print(json.dumps(gl.context_info(gl.shared_context())))
 PY
 python3 -m pbrlab.checking.golden_scenes "$out/renders/glsl" >/dev/null
@@ -21,7 +21,7 @@ rm -rf "$out/renders"
 plugin=$(python3 -c 'import importlib.metadata as m; print("" if any(e.name == "pbrlab" for e in m.entry_points(group="pytest11")) else "-p pbrlab.checking.pytest_plugin")')
 python3 -m pytest $plugin -p no:cacheprovider -q -n 8 \
     tests/render/test_chart_goldens.py tests/render/test_lit_scene_tiers.py \
-    tests/render/test_torture_chart.py tests/hlsl/test_scene_renders.py \
+    tests/render/test_torture_chart.py tests/gpu/hlsl/test_scene_renders.py \
     --pbrlab-output "$out/golden-failures" > "$out/golden_tests.txt" 2>&1
 tail -3 "$out/golden_tests.txt"
 tar -C "$out" -czf "$out/golden-failures.tar.gz" golden-failures 2>/dev/null && rm -rf "$out/golden-failures"

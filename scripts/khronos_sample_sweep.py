@@ -29,7 +29,7 @@ MODEL_SUFFIXES = (".gltf", ".glb")
 SIZE = "160x120"
 ENVIRONMENT = "0.3,0.3,0.3"  # a constant sky: every model visible without a light of its own
 TIME_LIMIT_S = 600
-CLI = "import sys; from pbrlab import cli; sys.exit(cli.main(sys.argv[1:]))"  # `pbrlab` itself
+CLI = "import sys; from pbrlab.commands import cli; sys.exit(cli.main(sys.argv[1:]))"  # `pbrlab` itself
 
 
 def extract(git_dir: Path, out: Path) -> list[str]:

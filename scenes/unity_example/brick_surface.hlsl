@@ -4,7 +4,7 @@
 // which Unity's HLSLSupport.cginc defines and the harness's scene_shading.hlsl stands in
 // for); tex2D becomes UNITY_SAMPLE_TEX2D and IN.uv_MainTex becomes IN.uv, nothing else
 // changes. `pbrlab render --language hlsl` (or render_scene(..., language="hlsl")) uses
-// this file in place of brick_surface.glsl; tests/hlsl/test_scene_renders.py checks the
+// this file in place of brick_surface.glsl; tests/gpu/hlsl/test_scene_renders.py checks the
 // two render the same image.
 UNITY_DECLARE_TEX2D(_MainTex);
 UNITY_DECLARE_TEX2D(_BumpMap);

@@ -245,3 +245,10 @@ def test_the_renderer_names_no_material_source():
     for word in ("unity", "gltf", "json", "shaderlab"):
         assert word not in text, f"render/renderer.py names {word!r}"
     assert not [t for _, t in imports_of("render.renderer") if t.startswith("importers")]
+
+
+def test_the_tests_mirror_the_layers():
+    """One test folder per layer folder (tests/README.md)."""
+    tests = Path(__file__).resolve().parents[1]
+    missing = [folder for _, folder in layers.LAYERS if not (tests / folder).is_dir()]
+    assert not missing, f"no tests/ folder for the layers {missing}"

@@ -135,7 +135,8 @@ def test_a_full_disk_keeps_the_good_file(scene_file, tmp_path, capsys, census):
 
 _SLOW_WRITER = textwrap.dedent("""
     import sys, time
-    from pbrlab import cli, images
+    from pbrlab.commands import cli
+    from pbrlab.foundation import images
     real = images._encode
     def slow(tmp, spec, pixels, target):
         real(tmp, spec, pixels, target)

@@ -47,7 +47,7 @@ def cosines(n: int = 2049) -> np.ndarray:
 
 def v_cosines(n: int = 257) -> np.ndarray:
     """Cosines where the V terms are unguarded, [PBR_MIN_NDOTV, 1]: every V clamps NdotL
-    and NdotV below 1e-4 (guards.glsl; the guard itself is tested in tests/hardcases)."""
+    and NdotV below 1e-4 (guards.glsl; the guard itself is tested in tests/checking/hardcases)."""
     c = cosines(n)
     return c[c >= shading.MIN_NDOTV]
 

@@ -59,7 +59,7 @@ def test_BRDF_BlinnPhong_matches_reference(name):
 
 def test_BRDF_BlinnPhongClassic_matches_reference():
     # NdotL <= 0 (the 0 branch) and NdotL >= PBR_MIN_NDOTV: below 1e-4 the classic form
-    # divides by the floor instead (guards.glsl; tested in tests/hardcases)
+    # divides by the floor instead (guards.glsl; tested in tests/checking/hardcases)
     NdotH, NdotL, s = grid(cosines(257), np.concatenate([[-0.5, 0.0], v_cosines(33)]), SPEC_POWERS[::4])
     got = evaluate("pbr_BRDF_BlinnPhongClassic(NdotH, NdotL, s)", NdotH=NdotH, NdotL=NdotL, s=s)
     ref = brdf.BRDF_BlinnPhongClassic(NdotH, NdotL, s)

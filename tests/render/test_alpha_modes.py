@@ -7,7 +7,7 @@ from pbrlab.foundation import images
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 
 FRONT_LIGHT = [{"type": "directional", "direction": [0, 0, -1], "intensity": 1.0}]
 

@@ -12,7 +12,7 @@ from pbrlab.foundation.images import write_png
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 
 LIGHTS = [{"type": "directional", "direction": [0.3, -0.5, -1], "intensity": 1.5},
           {"type": "point", "position": [-2, 2, 3], "color": [1, 0.8, 0.6], "intensity": 12, "range": 9}]

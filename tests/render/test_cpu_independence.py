@@ -54,7 +54,7 @@ def test_golden_scene_is_bit_identical_on_both_llvmpipe_code_paths(name, renders
 
 _MIPMAP_CONTROL = """
 import numpy as np, sys
-from pbrlab import gl, targets
+from pbrlab.gpu import gl, targets
 ctx = gl.shared_context()
 data = (np.arange(64 * 64 * 4) * 2654435761 % 251).astype(np.uint8)
 tex = ctx.texture((64, 64), 4, data.tobytes(), internal_format=targets.GL_SRGB8_ALPHA8)

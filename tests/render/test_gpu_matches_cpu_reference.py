@@ -15,7 +15,7 @@ from pbrlab.render.cpu_render import render_scene_cpu
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import light_zoo, one_sphere
+from render_scenes import light_zoo, one_sphere
 
 # GPU (float32) vs float64 CPU, linear radiance, per channel: |gpu - cpu| <= ATOL +
 # rtol * |cpu|. ATOL = 1e-5 is 1/30 of the smallest 8-bit sRGB step (3.04e-4), so it is

@@ -10,7 +10,7 @@ from pbrlab.foundation.errors import SceneError
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 from test_anisotropy_scene import LIGHTS, METAL, PLASTIC, _assert_float32_equal, _constant_map, _render
 
 # A near-black dielectric: what it shows is mostly its specular reflection, so the film's
@@ -81,7 +81,7 @@ def test_the_maps_channels_are_the_mask_and_the_thickness(gl_context, tmp_path):
 def test_iridescent_scenes_agree_in_glsl_and_hlsl(gl_context, tmp_path):
     """The same film (mapped, over an anisotropic coated metal and a dark dielectric) through
     the GLSL library and its HLSL port. Not bit for bit: the two programs contract the
-    interference phase's multiply-add differently (tests/hlsl/test_function_agreement.py's
+    interference phase's multiply-add differently (tests/gpu/hlsl/test_function_agreement.py's
     stated bound for pbr_F_Iridescence); measured worst 2.8e-6 relative, inside the float32
     bound of test_anisotropy_scene."""
     film = {"iridescence": 0.9, "iridescence_ior": 1.6, "iridescence_thickness_min": 200.0,

@@ -10,7 +10,7 @@ from pbrlab.maths.reference.color import srgb_to_linear
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 
 KEY = [{"type": "directional", "direction": [0.3, -0.3, -1], "intensity": 1.5}]
 
@@ -53,7 +53,7 @@ def test_albedo_texture_is_decoded_from_srgb(gl_context, tmp_path):
                            base=tmp_path)
     out = render_scene(textured, gl_context).linear[8, 8, :3]
     expected = srgb_to_linear(code / 255.0)
-    # llvmpipe's sRGB decode is an approximation (see tests/harness/test_srgb_hardware.py):
+    # llvmpipe's sRGB decode is an approximation (see tests/gpu/test_srgb_hardware.py):
     # measured within 1.2e-3 of the exact curve. Sampling the texture as linear data
     # would give 188/255 = 0.737 instead of 0.503.
     np.testing.assert_allclose(out, expected, atol=2e-3)

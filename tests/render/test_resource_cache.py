@@ -13,7 +13,7 @@ from pbrlab.render import resource_cache
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 
 
 def _count_calls(monkeypatch, module, name):

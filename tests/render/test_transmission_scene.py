@@ -13,7 +13,7 @@ from pbrlab.render.renderer import render_scene
 from pbrlab.checking.sample_viewer import write_radiance_hdr
 from pbrlab.scene import parse_scene
 
-from scenes import one_sphere
+from render_scenes import one_sphere
 from test_anisotropy_scene import LIGHTS, METAL, PLASTIC, _assert_float32_equal, _constant_map, _render
 
 WHITE = {"albedo": [1.0, 1.0, 1.0], "smoothness": 0.9}

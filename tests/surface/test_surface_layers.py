@@ -18,7 +18,7 @@ from pbrlab.foundation.errors import SceneError
 from pbrlab.scene.surface_layers import written_layers
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "render"))
-from scenes import layer_sphere  # noqa: E402
+from render_scenes import layer_sphere  # noqa: E402
 
 SURFACES = Path(__file__).parent / "layered_surfaces"
 LANGUAGES = ("glsl", "hlsl")

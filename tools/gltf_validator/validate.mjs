@@ -2,7 +2,7 @@
 // one JSON line per file, {"path", "errors", "warnings", "infos", "messages": [...]} (errors
 // and warnings only, each "code pointer: message"). External buffers and images are loaded
 // from beside the file, so they are validated too. Exit 0 whatever the findings: the caller
-// (tests/gltf/test_assets_validate.py) decides what passes.
+// (tests/importers/gltf/test_assets_validate.py) decides what passes.
 import { readFile } from "node:fs/promises";
 import path from "node:path";
 import validator from "gltf-validator";

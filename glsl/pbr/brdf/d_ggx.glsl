@@ -23,7 +23,7 @@
 // 1 - NdotH² = |n × h|² (pbr_one_minus_dot2, error relative to |n × h| itself); measured
 // over 1e6 random unit n with h within 3 alpha of n at alpha = 0.045²: worst relative error
 // 4.0e-5 for the vec3 form against 14 % for the scalar form from dot(n, h)
-// (tests/hardcases/test_guards.py). pbr_brdf_standard uses it. In half
+// (tests/checking/hardcases/test_guards.py). pbr_brdf_standard uses it. In half
 // precision the scalar forms collapse the lobe entirely (glsl/README.md, half precision).
 // Guards (pbr/common/guards.glsl): NdotH is saturated (interpolated normals give NdotH
 // slightly above 1), alpha is clamped to [PBR_MIN_ALPHA, 1]; at alpha = 0, D is a Dirac

@@ -138,7 +138,7 @@
 //          within 1.9e-3). About 0.64x HIGH's RDNA3 instructions per light (docs/bench).
 //          Where floats may be 16-bit (PBR_HALF_ARITHMETIC) D · V is capped at PBR_HALF_MAX
 //          (pbr_specular_lobe_limit), and Hammon's V, if selected, runs in half's range
-//          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/hardcases/test_half.py).
+//          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/checking/hardcases/test_half.py).
 //   In the unity model (PBR_BRDF_MODEL_UNITY) the tiers pick Unity's BRDFs the way Unity's
 //   graphics tiers do (UNITY_PBS_USE_BRDF1/2/3): HIGH -> BRDF1, MEDIUM -> BRDF2, LOW -> BRDF3;
 //   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.

@@ -27,7 +27,7 @@
 // with a constant. Written as diffuseColor · (1/π) + D·V·F, a program whose diffuse colour is
 // a specialised constant folds diffuseColor · (1/π) into one rounded constant while the full
 // program fuses the product into fma(diffuseColor, 1/π, D·V·F) unrounded: the two differed by
-// 1 ulp in 0.4 % of values (tests/specialisation: chart_f0, chart_metallic[_environment],
+// 1 ulp in 0.4 % of values (tests/render/specialisation: chart_f0, chart_metallic[_environment],
 // chart_terms; measured). Factored, both programs round the same operations, and the
 // runtime diffuse scale that otherwise kept them identical (2.4 RDNA3 instructions per light)
 // is not needed.

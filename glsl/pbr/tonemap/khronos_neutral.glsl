@@ -27,7 +27,7 @@
 #define PBR_KHRONOS_NEUTRAL_F90 0.04                                // spec: F90
 // K_s = 0.8 - F90 and 1 - K_s, written out: a compiler folds 1.0 - (0.8 - 0.04) in float32
 // (Mesa: 0.24000001) or in double (the HLSL run: 0.24), which moved the compressed
-// highlight by 3 ulp between the two languages (tests/hlsl/test_function_agreement.py).
+// highlight by 3 ulp between the two languages (tests/gpu/hlsl/test_function_agreement.py).
 #define PBR_KHRONOS_NEUTRAL_START_COMPRESSION 0.76                  // spec: K_s = 0.8 - F90
 #define PBR_KHRONOS_NEUTRAL_ONE_MINUS_START_COMPRESSION 0.24        // 1 - K_s
 #define PBR_KHRONOS_NEUTRAL_DESATURATION 0.15                       // spec: K_d

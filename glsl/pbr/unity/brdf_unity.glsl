@@ -37,7 +37,7 @@
 // Lambert surface under an intensity-1 light gives 1 in both, so these functions return
 // radiance for pbrlab's light.color and indirect.diffuse (irradiance / π) unchanged.
 // Its float64 transcription, written from Unity's source and not from this file, is
-// harness/pbrlab/maths/reference/unity_brdf.py; tests/unity/ compares the two.
+// harness/pbrlab/maths/reference/unity_brdf.py; tests/importers/unity/ compares the two.
 // Where the maths is the library's, the pbr_ core is called (pbr_pow5, pbr_F_Schlick,
 // pbr_max3, the remaps); the core never includes this file.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.

@@ -266,7 +266,7 @@ FLOAT16_NOTE = ("The LOW tier's kernel with Hammon's V and Schlick's F (the lobe
                 "(pbr_DV_GGX_SmithCorrelatedFast_half) runs in float16_t. Per evaluation against the "
                 "family baseline; 16-bit and packed (v_pk_*) counts from the disassembly. The "
                 "kernel's inputs are float32, so the float16 lobe pays its conversions; its error in "
-                "half is the half study's (tests/hardcases/test_half.py).")
+                "half is the half study's (tests/checking/hardcases/test_half.py).")
 _FLOAT16_HEADER = ("#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n"
                    "#define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST\n"
                    "#define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK")

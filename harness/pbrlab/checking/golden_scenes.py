@@ -35,7 +35,7 @@ GLTF_GOLDENS = {
 # The layered assets (KHR_materials_clearcoat, _sheen, _anisotropy, _iridescence,
 # _transmission and _volume) at the high tier, the glTF goldens' size; their untextured
 # materials are also checked against the float64 CPU renderer
-# (tests/gltf/test_layered_goldens_cpu.py). KHR_materials_specular and _ior are in features.gltf.
+# (tests/importers/gltf/test_layered_goldens_cpu.py). KHR_materials_specular and _ior are in features.gltf.
 LAYERED_GLTF_GOLDENS = {
     "gltf_clearcoat": ("clearcoat.gltf", None),
     "gltf_sheen": ("sheen.gltf", None),

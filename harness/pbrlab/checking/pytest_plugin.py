@@ -43,7 +43,7 @@ if TYPE_CHECKING:
 
 # Registering the plugin (every pytest run where pbrlab is installed) imports this module and
 # nothing heavy: numpy, moderngl, OpenImageIO and the golden store load when a test uses a
-# fixture (tests/harness/test_plugin_import_cost.py checks; benchmarks/startup.py measures).
+# fixture (tests/foundation/test_import_cost.py checks; benchmarks/startup.py measures).
 
 RECORDS_DIR = ".pbrlab-records"
 INDEX_NAME = "index.html"

@@ -49,7 +49,7 @@ RENDER_TIMEOUT_S = 120  # one render takes a few seconds (browser start included
 NEAR_FRACTION, FAR_FACTOR = 1e-3, 100.0
 # The viewer's environment orientation (renderingParameters.environmentRotation, degrees)
 # that matches pbrlab's equirect convention (pbrlab.scene.environment: the image centre looks
-# at +Z); see tests/gltf/test_sample_viewer_agreement.py for the check.
+# at +Z); see tests/importers/gltf/test_sample_viewer_agreement.py for the check.
 ENVIRONMENT_ROTATION_DEG = 90.0
 
 

@@ -167,7 +167,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m pbrlab.checking.unity_corpus", description=__doc__.split("\n\n")[0])
     parser.add_argument("root", type=Path, help="a folder of .shader files (searched recursively)")
     parser.add_argument("--out", type=Path, help="write the report as JSON here")
-    parser.add_argument("--expect", type=Path, help="write the outcomes as tests/unity/test_corpus.py "
+    parser.add_argument("--expect", type=Path, help="write the outcomes as tests/importers/unity/test_corpus.py "
                         "expects them: {shader: \"rendered\" or what its refusal names}")
     args = parser.parse_args(argv)
 

@@ -13,7 +13,7 @@ inputs, target and readback included.
 
 Bit-exactness: each input travels in a float32 texture read with ``texelFetch``, and the
 result comes back from an RGBA32F target, so ±0, denormals, Inf and NaN pass unchanged
-(see tests/harness/test_evaluator.py). Programs are cached per expression, includes,
+(see tests/gpu/test_evaluator.py). Programs are cached per expression, includes,
 defines and input types, so a sweep compiles once; the cache holds the
 ``PROGRAMS_CACHED`` most recently used programs (older ones are released: 10,000 distinct
 expressions keep the process's memory flat, benchmarks/evaluator_cache_rss.py) and an

@@ -18,7 +18,7 @@ Optimisation: by default glslang legalises HLSL with SPIRV-Tools passes that als
 reassociate float arithmetic (e.g. ``y / 2.4`` becomes ``y * 0.41666666``), which a D3D
 compiler need not do in the same way. The evaluator passes ``-Od`` (``optimize=False``) so
 the SPIR-V keeps the port's arithmetic as written and the comparison with the GLSL twin
-tests the port, not SPIRV-Tools; the compilation matrix (tests/hlsl) compiles every port
+tests the port, not SPIRV-Tools; the compilation matrix (tests/gpu/hlsl) compiles every port
 with the optimising default as well.
 """
 

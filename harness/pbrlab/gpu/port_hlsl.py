@@ -3,7 +3,7 @@
     python -m pbrlab.gpu.port_hlsl            # rewrite hlsl_ports/ from glsl/
     python -m pbrlab.gpu.port_hlsl --check    # exit 1 (and list the files) if hlsl_ports/ is stale
 
-The HLSL twins are generated, never edited: tests/hlsl/test_port_generation.py fails when
+The HLSL twins are generated, never edited: tests/gpu/hlsl/test_port_generation.py fails when
 regenerating would change a committed file. The rules below are the whole port; everything
 else is copied byte for byte, so an HLSL body reads line for line as its GLSL source.
 

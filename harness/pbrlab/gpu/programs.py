@@ -21,7 +21,7 @@ alike. Matrices: glslang declares HLSL's ``float4x4`` row-major in SPIR-V (HLSL 
 rows first) and spirv-cross, with no layout to say so in a plain uniform, multiplies as
 ``v * M``; so a struct member receives the transpose of what a GLSL ``mat4`` receives,
 and ``mul(M, v)`` in HLSL computes the same ``M v`` as ``M * v`` in GLSL
-(tests/hlsl/test_scene_renders.py renders depth-tested scenes both ways).
+(tests/gpu/hlsl/test_scene_renders.py renders depth-tested scenes both ways).
 """
 
 from __future__ import annotations

@@ -5,7 +5,7 @@ meanings are written.
 changes what the parser accepts), and ``scene_schema.py`` writes the JSON Schema (and the
 docs' scene-file reference) from the same tables. The rules that tie fields together (one
 of sphere or mesh, the workflow's own F0 field, ...) are the parser's code and the schema's
-combinators; tests/harness/test_scene_schema.py checks the two agree on valid and invalid
+combinators; tests/scene/test_scene_schema.py checks the two agree on valid and invalid
 scenes.
 
 Kinds: ``Number`` (a float, ``lo``..``hi``, ``lo_open`` for an open lower bound), ``Vector``

@@ -6,7 +6,7 @@ parameters); ``pbrlab schema`` prints it and the docs' scene-file reference is r
 from it (scripts/mkdocs_hooks.py). Editors that read JSON Schema validate and complete a
 scene with it. The parser (scene.py) stays the authority and names the field in its
 messages; what it checks beyond the schema is ``PARSER_ONLY_RULES``.
-tests/harness/test_scene_schema.py checks that both accept every committed scene and refuse
+tests/scene/test_scene_schema.py checks that both accept every committed scene and refuse
 the same invalid ones.
 """
 

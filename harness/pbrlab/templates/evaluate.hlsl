@@ -5,7 +5,7 @@
 // (pbrlab_in_<name>, register t<k>) like the GLSL template's samplers; the result goes to
 // SV_Target0, the RGBA32F target read back as float32. The pixel position arrives as
 // SV_Position; spirv-cross maps it to gl_FragCoord with GL's lower-left origin, so texel
-// (x, y) holds element y * width + x in both languages (tests/hlsl/test_hlsl_evaluator.py).
+// (x, y) holds element y * width + x in both languages (tests/gpu/hlsl/test_hlsl_evaluator.py).
 // Depends on nothing from the library (no shim): it spells float4, not vec4.
 //@DEFINES
 //@INCLUDES

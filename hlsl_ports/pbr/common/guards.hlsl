@@ -9,7 +9,7 @@
 // Include:  "pbr/common/guards.hlsl" (path relative to hlsl_ports/)
 // Config macros read: none.
 //
-// Rule (tested by tests/hardcases/): a guard changes a result only where the maths has no
+// Rule (tested by tests/checking/hardcases/): a guard changes a result only where the maths has no
 // finite value or float32 cannot represent it; inside the domain of the maths results are
 // bit-identical to the unguarded formula unless the comment says otherwise. Where the maths
 // has no value the library decides one, written next to the guard and tested exactly.

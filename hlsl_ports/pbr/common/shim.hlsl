@@ -24,7 +24,7 @@
 // greaterThan & co. and matrices are refused by the generator. Scalars, swizzles,
 // out/inout parameters, arrays (float3 sh[9]), structs, uint literals and the other
 // built-ins the library calls (clamp, dot, cross, pow, exp2, ...) are the same in both
-// languages. Measured equality of every function: tests/hlsl/.
+// languages. Measured equality of every function: tests/gpu/hlsl/.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_SHIM_HLSL
 #define PBR_COMMON_SHIM_HLSL

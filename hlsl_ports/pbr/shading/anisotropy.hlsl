@@ -51,7 +51,7 @@
 //    then >= 2^-100, so the clamp's floor changes nothing there. Not a threshold on
 //    |l + v|²: a grazing mirror (NdotL = NdotV = c) has a short l + v but a defined h and a
 //    lobe that grows as c -> 0; the former tier threshold dropped it below c = 5e-6 (HIGH,
-//    MEDIUM) and c = 3.9e-3 (LOW) (issue 25; tests/hardcases/test_grazing_mirrors.py).
+//    MEDIUM) and c = 3.9e-3 (LOW) (issue 25; tests/checking/hardcases/test_grazing_mirrors.py).
 //    Contract: n, v, l, t, b unit vectors, t and b orthogonal to n and to each other (the
 //    anisotropic frame: t = anisotropicT, b = anisotropicB).
 //  - Image-based light. The bent reflection normal of the Khronos glTF sample viewer

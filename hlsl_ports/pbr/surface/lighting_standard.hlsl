@@ -180,7 +180,7 @@ struct pbr_PreparedSurface {
 // The _f90 form takes the caller's F90 for f0 (f90) and for the coat's F0 (coatF90)
 // (KHR_materials_specular: see the header); the plain form fills the same struct with F90 =
 // pbr_f90_from_f0 of each, in its own body: written as a call of the _f90 form, the two F90s
-// were computed ahead of the coupling and 14 of the 108 GLSL programs of tests/specialisation's
+// were computed ahead of the coupling and 14 of the 108 GLSL programs of tests/render/specialisation's
 // scenes (sheened, anisotropic, filmed, transmissive) moved by -3 .. +3 RDNA3 instructions; in
 // this order (F90 from F0 where the albedos need it, s.f90 last) every GLSL program without an
 // explicit F90 compiles as before. (The HLSL port's three filmed isotropic programs lose 3 to

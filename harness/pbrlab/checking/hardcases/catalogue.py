@@ -150,7 +150,7 @@ TRANSMISSION_FUNCTIONS = ("pbr_BTDF_Walter_GGX_cosine", "pbr_BTDF_Walter_GGX", "
 DV_FUNCTIONS = ("pbr_DV_GGX_SmithCorrelated", "pbr_DV_GGX_fromLambdaSum", "pbr_DV_GGX_SmithCorrelatedFast",
                 "pbr_DV_GGX_SmithCorrelatedFast_half", "pbr_DV_GGX_SmithBound", "pbr_specular_DV")
 
-# Every public function of glsl/pbr/ (tests/hardcases/test_catalogue.py checks the list is
+# Every public function of glsl/pbr/ (tests/checking/hardcases/test_catalogue.py checks the list is
 # complete), with its argument kinds and bound.
 TERMS: tuple[Function, ...] = (
     # common/
@@ -732,7 +732,7 @@ for _name in ("pbr_tonemap", "pbr_tonemap_reinhard", "pbr_tonemap_hable", "pbr_t
 
 # The unity model's material corners (Unity decides nothing here that pbrlab's tests could
 # restate exactly: these are checked against the bound, the values against the transcription
-# in tests/unity/).
+# in tests/importers/unity/).
 _UNITY_MATERIAL_CASES = (
     ("smoothness 1", {"smoothness": 1.0}, "a mirror: BRDF1's roughness floor 0.002 and GGXTerm's 1e-7 "
      "bound the peak; BRDF2's a² = 0 kills its lobe; BRDF3's lookup saturates at 16"),

@@ -11,7 +11,7 @@ three ways:
               emulation of a real half ALU (desktop llvmpipe ignores mediump).
 
 The two half models agree bit for bit wherever only +, -, *, / and sqrt are involved
-(tests/hardcases/test_half.py); pow/exp2/log2 agree within 1 half ulp.
+(tests/checking/hardcases/test_half.py); pow/exp2/log2 agree within 1 half ulp.
 """
 
 from __future__ import annotations

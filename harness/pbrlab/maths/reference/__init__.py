@@ -14,7 +14,7 @@ formula, so that ``tests/library`` can compare the GPU against it:
   tonemap    exposure and tonemappers              (glsl/pbr/tonemap/)
   surface    environment BRDF, pbr_lighting_standard, Unity helpers (ibl/, surface/, unity/)
   unity_brdf Unity's BRDF1/2/3 and GI inputs, transcribed from Unity's .cginc sources
-             (not from glsl/pbr/unity/, which tests/unity/ checks against it)
+             (not from glsl/pbr/unity/, which tests/importers/unity/ checks against it)
 
 Arrays broadcast like numpy; colours and directions carry their 3 components on the last
 axis. Functions return float64 arrays.

@@ -1,6 +1,6 @@
 """The Khronos glTF Sample Renderer's transmission (npm @khronosgroup/gltf-viewer 1.1.0, the
 version tools/sample_viewer pins) in float64: not pbrlab's shading, but the formulas the
-agreement check (tests/gltf/test_sample_viewer_agreement.py) names where the two renderers
+agreement check (tests/importers/gltf/test_sample_viewer_agreement.py) names where the two renderers
 differ, transcribed from the viewer's shaders (pbr.frag, punctual.glsl, ibl.glsl,
 functions.glsl) so that each difference can be measured term by term. For a dielectric base
 (metallic 0) without clear coat, sheen, film or KHR_materials_specular; f90 = 1; light and

@@ -1,0 +1,91 @@
+"""Real Unity shaders nobody on this project wrote (corpus/unity/: Unity's 2019.4 built-in
+shaders and shaders from public repositories, corpus/unity/public/MANIFEST.json), each
+rendered as a new user would (pbrlab.checking.unity_corpus: a UV sphere under a directional and a
+point light and the sky) in HLSL and in GLSL.
+
+Every shader must end in one of two ways, the same in both languages: rendered (every pixel
+finite, GLSL and HLSL agreeing), or refused with a message naming the Unity feature that is
+missing. A traceback or a non-finite pixel always fails. A compiler's error instead of a
+named refusal is a defect of the front end: the ones still there are listed as
+``"defect: ..."`` in corpus/unity/expected.json and in docs/unity.md, and must stay exactly
+those. Which shaders render is pinned there too (``python -m pbrlab.checking.unity_corpus corpus/unity
+--expect corpus/unity/expected.json`` rewrites it after a reviewed change), so a shader that
+stops rendering fails, and one that starts to fails until the figures in docs/unity.md move
+with it.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from pbrlab.checking import unity_corpus as corpus
+
+ROOT = Path(__file__).resolve().parents[3] / "corpus" / "unity"
+EXPECTED = json.loads((ROOT / "expected.json").read_text(encoding="utf-8"))
+SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
+# GLSL (the port) against HLSL (as written) of one shader, largest relative difference with a
+# 1e-3 floor (corpus.agreement): most are bit-identical; a vertex stage of each language
+# places vertices a few ulp apart (mul(M, v) vs M * v, fused differently), which moves
+# interpolated values by up to ~1e-5 relative (docs/unity.md, "Unity shaders"); bound 1e-4.
+AGREEMENT_BOUND = 1e-4
+# Rendered shaders that draw nothing with their Properties' defaults in the corpus scene, each
+# as Unity would: a blank pair is checked blank in both languages (and fails once it draws,
+# so this list only shrinks); every other rendered shader must draw something.
+BLANK_BY_DEFAULT = {
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUIRoundedRect.shader":
+        "_Rect and _BorderWidths are zero (the IMGUI sets them): a rectangle of no size",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUIRoundedRectWithColorPerBorder.shader":
+        "_Rect and _BorderWidths are zero (the IMGUI sets them): a rectangle of no size",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-GUITextureClipText.shader":
+        "alpha times _GUIClipTexture, which the IMGUI binds and no Property declares: 0",
+    "builtin-2019.4/DefaultResourcesExtra/Flare.shader":
+        "_MainTex defaults to black and the pass adds it (Blend One One)",
+    "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Splats/Standard-BaseGen.shader":
+        "weights from _Control, which the terrain binds and no Property declares: 0",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/GlitchSurface.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/ParticleSurfaceStandard.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/keijiro__Skinner/Assets/Skinner/Shader/TrailSurface.shader":
+        "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
+    "public/ronja-tutorials__ShaderTutorials/Assets/038_Dissolve/Dissolve.shader":
+        "clip(tex2D(_DissolveTex).r - _DissolveAmount): the texture defaults to black, the amount to 0.5",
+}
+
+
+def test_corpus_lists_every_shader_once():
+    assert sorted(EXPECTED) == sorted(SHADERS)
+    assert all(EXPECTED[s] == "rendered" for s in BLANK_BY_DEFAULT)
+
+
+@pytest.mark.parametrize("shader", SHADERS)
+def test_corpus_shader_renders_or_is_refused_by_name(shader):
+    outcomes = {lang: corpus.run_shader(ROOT / shader, lang) for lang in corpus.LANGUAGES}
+    expected = EXPECTED[shader]
+    for lang, o in outcomes.items():
+        assert o.status in ("rendered", "refused"), f"{lang}: {o.status}: {o.message}"
+        if o.status == "refused" and not expected.startswith("defect: "):
+            assert not corpus.is_compiler_error(o.message), f"{lang}: a compiler error, not a refusal: {o.message}"
+    if expected.startswith("defect: "):  # a known front-end defect, pinned until it is mended
+        assert any(o.status == "refused" for o in outcomes.values())
+        assert any(expected[len("defect: "):] in corpus.without_folders(o.message) for o in outcomes.values()), \
+            {lang: o.message[:300] for lang, o in outcomes.items()}
+        return
+    if expected == "rendered":
+        assert all(o.status == "rendered" for o in outcomes.values()), \
+            {lang: o.message[:300] for lang, o in outcomes.items()}
+        assert corpus.agreement(outcomes["glsl"].image, outcomes["hlsl"].image) <= AGREEMENT_BOUND
+        # and it drew something (the background is 0; an all-zero pair agrees too, as Stipple's
+        # did when a near plane at the sphere made it clip every pixel), or is known blank
+        drew = [bool((o.image != 0).any()) for o in outcomes.values()]
+        assert drew == [shader not in BLANK_BY_DEFAULT] * len(drew), BLANK_BY_DEFAULT.get(shader, "drew nothing")
+    else:
+        # refused in both, each naming what is missing (the languages may name different parts:
+        # the first error of each compiler); one of them names what the pinned outcome says
+        assert all(o.status == "refused" for o in outcomes.values()), \
+            {lang: o.message[:300] for lang, o in outcomes.items()}
+        assert expected in {corpus.refusal_key(o.message) for o in outcomes.values()}, \
+            {lang: o.message[:300] for lang, o in outcomes.items()}
