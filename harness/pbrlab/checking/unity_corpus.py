@@ -142,6 +142,45 @@ def run_corpus(root: Path, progress=None) -> dict:
     return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
 
 
+def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = None,
+                     agreement_bound: float = 1e-4) -> list[str]:
+    """What is wrong with one shader's ``outcomes`` (language -> Outcome) against its pinned
+    ``expected`` outcome (expected_outcomes' vocabulary); empty when they match. A rendered
+    pair must agree to ``agreement_bound`` (the GLSL port against the HLSL as written) and
+    draw something, unless ``blank_reason`` says why its defaults draw nothing (then it must
+    be blank). A refusal must name what is missing, not be a compiler's error, unless pinned as
+    a defect; a traceback is always wrong."""
+    problems = []
+    for lang, o in outcomes.items():
+        if o.status not in ("rendered", "refused"):
+            problems.append(f"{lang}: {o.status}: {o.message[:300]}")
+        elif o.status == "refused" and not expected.startswith("defect: ") and is_compiler_error(o.message):
+            problems.append(f"{lang}: a compiler error, not a refusal: {o.message[:300]}")
+    if problems:
+        return problems
+    if expected.startswith("defect: "):  # a known front-end defect, pinned until it is mended
+        if not any(o.status == "refused" for o in outcomes.values()):
+            return ["renders now: pin it as rendered"]
+        if not any(expected[len("defect: "):] in without_folders(o.message) for o in outcomes.values()):
+            return [f"the pinned defect changed: {[o.message[:300] for o in outcomes.values()]}"]
+        return []
+    if expected == "rendered":
+        if not all(o.status == "rendered" for o in outcomes.values()):
+            return [f"{lang}: {o.message[:300]}" for lang, o in outcomes.items() if o.status != "rendered"]
+        images = [o.image for o in outcomes.values()]
+        if agreement(images[0], images[-1]) > agreement_bound:
+            problems.append(f"GLSL and HLSL differ by {agreement(images[0], images[-1]):.3g} > {agreement_bound}")
+        drew = [bool((image != 0).any()) for image in images]
+        if drew != [blank_reason is None] * len(drew):
+            problems.append(blank_reason or "drew nothing")
+        return problems
+    if not all(o.status == "refused" for o in outcomes.values()):
+        return [f"{lang}: {o.status}" for lang, o in outcomes.items() if o.status != "refused"]
+    if expected not in {refusal_key(o.message) for o in outcomes.values()}:
+        return [f"refused for another reason: {[o.message[:300] for o in outcomes.values()]}"]
+    return []
+
+
 def expected_outcomes(report: dict) -> dict:
     """{shader: "rendered", what its refusal names, or "defect: " and a compiler's error}."""
     expected = {}

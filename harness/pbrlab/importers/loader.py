@@ -40,14 +40,19 @@ def _may_be_unity(path: Path) -> bool:
 
 
 class _ShaderMaterials:
-    """The scene model's reader of materials whose surface is another engine's shader: Unity's
-    (importers/unity/material.py), loaded only when a surface file may be one."""
+    """The scene model's reader of materials whose surface is another engine's shader: a Unity
+    shader for the Universal Render Pipeline (importers/urp/) or the built-in one
+    (importers/unity/), loaded only when a surface file may be one."""
 
     def reads(self, path: Path) -> bool:
         return _may_be_unity(path) and self._unity().reads(path)
 
     def read_material(self, reader, material, base: Path) -> None:
-        self._unity().read_material(reader, material, base)
+        from .urp import material as urp
+        if urp.reads(material.surface):  # a Universal Render Pipeline shader (importers/urp/)
+            urp.read_material(reader, material, base)
+        else:  # Unity's built-in pipeline (importers/unity/)
+            self._unity().read_material(reader, material, base)
 
     def check_objects(self, objects, materials, origin: str) -> None:
         if any(m.source is not None for m in materials.values()):

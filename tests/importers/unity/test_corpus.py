@@ -63,29 +63,9 @@ def test_corpus_lists_every_shader_once():
 
 @pytest.mark.parametrize("shader", SHADERS)
 def test_corpus_shader_renders_or_is_refused_by_name(shader):
+    """Rendered in both languages, agreeing and drawing (or known blank); or refused in both,
+    each naming what is missing, one naming the pinned outcome (the languages may name different
+    parts: the first error of each compiler); or a pinned defect (corpus.outcome_problems)."""
     outcomes = {lang: corpus.run_shader(ROOT / shader, lang) for lang in corpus.LANGUAGES}
-    expected = EXPECTED[shader]
-    for lang, o in outcomes.items():
-        assert o.status in ("rendered", "refused"), f"{lang}: {o.status}: {o.message}"
-        if o.status == "refused" and not expected.startswith("defect: "):
-            assert not corpus.is_compiler_error(o.message), f"{lang}: a compiler error, not a refusal: {o.message}"
-    if expected.startswith("defect: "):  # a known front-end defect, pinned until it is mended
-        assert any(o.status == "refused" for o in outcomes.values())
-        assert any(expected[len("defect: "):] in corpus.without_folders(o.message) for o in outcomes.values()), \
-            {lang: o.message[:300] for lang, o in outcomes.items()}
-        return
-    if expected == "rendered":
-        assert all(o.status == "rendered" for o in outcomes.values()), \
-            {lang: o.message[:300] for lang, o in outcomes.items()}
-        assert corpus.agreement(outcomes["glsl"].image, outcomes["hlsl"].image) <= AGREEMENT_BOUND
-        # and it drew something (the background is 0; an all-zero pair agrees too, as Stipple's
-        # did when a near plane at the sphere made it clip every pixel), or is known blank
-        drew = [bool((o.image != 0).any()) for o in outcomes.values()]
-        assert drew == [shader not in BLANK_BY_DEFAULT] * len(drew), BLANK_BY_DEFAULT.get(shader, "drew nothing")
-    else:
-        # refused in both, each naming what is missing (the languages may name different parts:
-        # the first error of each compiler); one of them names what the pinned outcome says
-        assert all(o.status == "refused" for o in outcomes.values()), \
-            {lang: o.message[:300] for lang, o in outcomes.items()}
-        assert expected in {corpus.refusal_key(o.message) for o in outcomes.values()}, \
-            {lang: o.message[:300] for lang, o in outcomes.items()}
+    problems = corpus.outcome_problems(EXPECTED[shader], outcomes, BLANK_BY_DEFAULT.get(shader), AGREEMENT_BOUND)
+    assert not problems, problems

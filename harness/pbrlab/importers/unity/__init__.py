@@ -36,12 +36,12 @@ import warnings
 from pathlib import Path
 
 from .model import SurfaceShader, UnityShader
-from .parse import is_unity_surface, parse_file, read_shader
+from .parse import BUILTIN, URP, Pipeline, is_unity_surface, parse_file, read_shader
 from .properties import resolve as resolve_properties
 from .source_text import UnityShaderError
 
-__all__ = ["SurfaceShader", "UnityShader", "UnityShaderError", "UnityShaderWarning", "is_unity_surface",
-           "load_shader", "resolve_properties"]
+__all__ = ["BUILTIN", "URP", "Pipeline", "SurfaceShader", "UnityShader", "UnityShaderError", "UnityShaderWarning",
+           "is_unity_surface", "load_shader", "resolve_properties"]
 
 
 class UnityShaderWarning(UserWarning):
@@ -52,10 +52,10 @@ class UnityShaderNote(UnityShaderWarning):
     """What the harness chose for a shader: the SubShader that runs, a pass it skips, a Fallback."""
 
 
-def load_shader(path: Path) -> UnityShader:
-    """Read a Unity shader (every pass that runs); its warnings are issued as
+def load_shader(path: Path, pipeline: Pipeline = BUILTIN) -> UnityShader:
+    """Read a Unity shader (every pass that runs in ``pipeline``); its warnings are issued as
     ``UnityShaderWarning``, its notes (SubShader chosen, passes skipped) as ``UnityShaderNote``."""
-    shader = read_shader(Path(path))
+    shader = read_shader(Path(path), pipeline)
     for message in dict.fromkeys(shader.warnings):
         warnings.warn(message, UnityShaderWarning, stacklevel=2)
     for message in shader.notes:

@@ -990,6 +990,12 @@ class _Parser:
                 self.condition(x)
                 return E(t.s, x.e, Type("bool"), False)
             return E(t.s, x.e, x.t, False)
+        if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) and self.peek(1).text in self.sym.structs \
+                and self.peek(3).text == "0":
+            # HLSL's zero cast (Struct)0 -> Struct(every member 0), GLSL having no such cast
+            open_, name, _, zero = self.next(), self.next(), self.next(), self.next()
+            self.edits.replace(open_.s, zero.e, self.zero_value(Type(name.text)))
+            return E(open_.s, zero.e, Type(name.text), False)
         if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) and builtin_type(self.peek(1).text) is not None \
                 and builtin_type(self.peek(1).text).numeric:
             # a cast (float3)x -> float3(x)
@@ -1001,6 +1007,20 @@ class _Parser:
             self.edits.close(x.e, ")")
             return E(open_.s, x.e, ty, True)
         return self.postfix()
+
+    def zero_value(self, ty: Type) -> str:
+        """``ty``'s zero in Cg spelling: 0 of its base in every component, every member's zero
+        for a struct (in declaration order), each element's for an array."""
+        if ty.array > 0:
+            element = self.zero_value(ty.element())
+            return f"{ty.element().cg()}[{ty.array}]({', '.join([element] * ty.array)})"
+        if ty.base in self.sym.structs:
+            members = self.sym.structs[ty.base].values()
+            return f"{ty.base}({', '.join(self.zero_value(m) for m in members)})"
+        zero = {"float": "0.0", "int": "0", "uint": "0u", "bool": "false"}.get(ty.base)
+        if zero is None:
+            self.fail("a zero of this type")
+        return zero if ty.scalar else f"{ty.cg()}({zero})"
 
     def postfix(self):
         e = self.primary()

@@ -177,16 +177,19 @@ def reads(path: Path) -> bool:
     return is_unity_surface(path)
 
 
-def read_material(r, m, base: Path) -> None:
+def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     """Fill ``m`` (scene.model.Material) from a material whose surface is a Unity shader: its
     Properties, overridden by `properties`; alpha mode and cutoff from its #pragma surface.
-    ``r`` is the scene model's reader of the material's fields (fail, has, raw, finish)."""
-    from . import UnityShaderError, load_shader, resolve_properties
+    ``r`` is the scene model's reader of the material's fields (fail, has, raw, finish).
+    ``pipeline`` (parse.BUILTIN by default) picks the SubShaders and passes that run, and
+    ``source_type`` (UnitySource by default) is the material source made of the shader: the
+    Universal Render Pipeline's importer (importers/urp/) passes its own."""
+    from . import BUILTIN, UnityShaderError, load_shader, resolve_properties
     try:
-        shader = load_shader(m.surface)
+        shader = load_shader(m.surface, pipeline or BUILTIN)
     except UnityShaderError as exc:
         r.fail(str(exc), "surface")
-    m.source = UnitySource(shader)
+    m.source = (source_type or UnitySource)(shader)
     for key in _NOT_FOR_UNITY + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "

@@ -63,7 +63,8 @@ class Property:
 
     @property
     def is_texture(self) -> bool:
-        return self.kind in ("2D", "Cube", "3D")
+        """A texture property (arrays too: a default-valued one is bound as its 2D default)."""
+        return self.kind in ("2D", "Cube", "3D", "2DArray", "CubeArray")
 
 
 @dataclass
@@ -181,6 +182,11 @@ class VertexFragmentPass:
     language: str = "hlsl"
     properties: dict = field(default_factory=dict)       # the file's, shared by its passes
     warnings: list = field(default_factory=list)
+    # a Scriptable Render Pipeline's program (URP): its GLSL port spells SRP's texture macros in
+    # Cg, and the port of each included file knows the structs and globals the whole program
+    # declares (a struct of one include built in another, a property of the program read in an
+    # include); the built-in pipeline's programs keep per-file ports, as Unity's Cg
+    srp: bool = False
     output_fields = {}              # (a surface program's output struct; none here)
     kind = "vertex-fragment"
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import dataclass
 from pathlib import Path
 
 from ...scene.surface_layers import written_layers
@@ -511,7 +512,46 @@ SKIPPED_LIGHT_MODES = {
 DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
 
 
-def read_text(text: str, path: Path) -> M.UnityShader:
+@dataclass(frozen=True)
+class Pipeline:
+    """The render pipeline a shader is read for: which passes it draws and skips (by
+    LightMode), which program blocks it runs, and which SubShaders are its own (by their
+    RenderPipeline tag; an untagged SubShader is every pipeline's)."""
+    name: str
+    drawn: tuple
+    skipped: dict
+    languages: tuple        # program block languages it runs ("CG", "HLSL")
+    tags: tuple             # RenderPipeline tag values of its SubShaders (empty: it checks none)
+    spellings: tuple = ()   # (pattern, replacement) applied to its programs' text: names its
+                            # shaders use in signatures and directives, in the forms the reader knows
+    srp: bool = False       # a Scriptable Render Pipeline: its programs are ported as SRP
+                            # code (model.VertexFragmentPass.srp)
+
+
+BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG",), ())
+# The Universal Render Pipeline (importers/urp/): forward passes drawn once with every light;
+# a pass without a LightMode is SRPDefaultUnlit.
+URP_SKIPPED_LIGHT_MODES = {
+    "shadowcaster": "no shadow maps here", "depthonly": "no depth prepass here",
+    "depthnormals": "no depth-normals prepass here", "depthnormalsonly": "no depth-normals prepass here",
+    "meta": "no lightmap baking here", "universalgbuffer": "forward rendering only (no deferred G-buffer)",
+    "universal2d": "the 2D renderer is not drawn", "motionvectors": "no motion vectors here",
+    "xrmotionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
+    "scenepickingpass": "an editor pass", "picking": "an editor pass", "selection": "an editor pass",
+}
+URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalforwardonly", "srpdefaultunlit", ""),
+               URP_SKIPPED_LIGHT_MODES, ("CG", "HLSL"), ("UniversalPipeline", "UniversalRenderPipeline"),
+               spellings=(
+                   # Core RP's facing macros (a fragment parameter's type and semantic)
+                   (re.compile(r"\bFRONT_FACE_TYPE\b"), "bool"),
+                   (re.compile(r"\bFRONT_FACE_SEMANTIC\b"), "SV_IsFrontFace"),
+                   # Unity 2022's include that also reads the file's #pragma lines: an include here
+                   (re.compile(r"#(\s*)include_with_pragmas\b"), r"#\1include"),
+               ),
+               srp=True)
+
+
+def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     """A whole shader: a ShaderLab file, bare CGPROGRAM text, or a port-unity port."""
     text = text.removeprefix("\ufeff")
     masked = blank_comments(text)
@@ -543,8 +583,12 @@ def read_text(text: str, path: Path) -> M.UnityShader:
     reasons = []
     for index, sub in enumerate(layout.subshaders):
         notes: list = []
+        tagged = sub.tags.get("RenderPipeline", "")
+        if pipeline.tags and tagged and tagged not in pipeline.tags:
+            reasons.append(f"SubShader {index + 1} (line {sub.line}): it is for RenderPipeline {tagged!r}")
+            continue
         try:
-            passes = _subshader_passes(layout, sub, props, warnings, notes)
+            passes = _subshader_passes(layout, sub, props, warnings, notes, pipeline)
         except UnityIncludeRefusal:
             raise
         except UnityShaderError as exc:
@@ -559,10 +603,10 @@ def read_text(text: str, path: Path) -> M.UnityShader:
                 _implicit_texture_properties(p.program + "\n" + included_text(p.program, path.parent), props)
                 p.properties = props
         return M.UnityShader(path, layout.name, passes, props, warnings, notes)
-    return _fallback(layout, reasons, path)
+    return _fallback(layout, reasons, path, pipeline)
 
 
-def _fallback(layout, reasons: list, path: Path) -> M.UnityShader:
+def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     why = "; ".join(reasons) if reasons else "it has no SubShader"
     if layout.fallback in (None, "off"):
         if len(reasons) == 1:
@@ -574,7 +618,7 @@ def _fallback(layout, reasons: list, path: Path) -> M.UnityShader:
             f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
             f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
             "shader's folder (or below it), or name it in $PBRLAB_UNITY_SHADERS")
-    shader = read_shader(found)
+    shader = read_shader(found, pipeline)
     shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
                         f'"{layout.fallback}" ({found}) is drawn instead')
     return shader
@@ -599,7 +643,7 @@ def find_shader(name: str, near: Path):
     return None
 
 
-def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> list:
+def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN) -> list:
     path = layout.path
     passes = []
     for item in sub.items:
@@ -609,6 +653,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
             if block.language != "CG":
                 raise UnityShaderError(f"{path}:{block.line}: {block.keyword} is not supported: pbrlab runs "
                                        "CGPROGRAM blocks (Unity's built-in render pipeline)")
+            if pipeline is not BUILTIN:
+                raise UnityShaderError(f"{path}:{block.line}: a surface program (#pragma surface) belongs to Unity's "
+                                       f"built-in render pipeline, not {pipeline.name}")
             program, first = layout.program_text(block, sub)
             shader = parse_program(program, path, first, name=layout.name)
             state = M.RenderState()
@@ -618,17 +665,17 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
             shader.warnings = warnings
             passes.append(shader)
         elif kind == "pass":
-            vf = _pass(layout, sub, item[1], props, warnings, notes)
+            vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
             if vf is not None:
                 passes.append(vf)
         elif kind == "usepass":
             _, name, line = item
             pass_name = name.rpartition("/")[2].lower()
-            if pass_name in SKIPPED_LIGHT_MODES or pass_name in ("caster", "shadowcollector"):
+            if pass_name in pipeline.skipped or pass_name in ("caster", "shadowcollector"):
                 notes.append(f'{path}:{line}: UsePass "{name}" skipped: '
-                             f"{SKIPPED_LIGHT_MODES.get(pass_name, 'no shadow maps here')}")
+                             f"{pipeline.skipped.get(pass_name, 'no shadow maps here')}")
                 continue
-            used = _use_pass(name, line, path, props, warnings, notes)
+            used = _use_pass(name, line, path, props, warnings, notes, pipeline)
             if used is not None:
                 passes.append(used)
         elif kind == "grabpass":
@@ -639,16 +686,16 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list) -> 
     return passes
 
 
-def _pass(layout, sub, p, props: dict, warnings: list, notes: list):
+def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN):
     """The vertex/fragment pass of ``Pass { ... }`` in ``sub``, or None where the harness
     skips it (a LightMode it does not draw, a depth-only pass), with a note saying so."""
     path = layout.path
     mode = p.tags.get("LightMode", "")
     label = f"Pass{' ' + repr(p.name) if p.name else ''}"
-    if mode.lower() in SKIPPED_LIGHT_MODES:
-        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {SKIPPED_LIGHT_MODES[mode.lower()]}")
+    if mode.lower() in pipeline.skipped:
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {pipeline.skipped[mode.lower()]}")
         return None
-    if mode.lower() not in DRAWN_LIGHT_MODES:
+    if mode.lower() not in pipeline.drawn:
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
         return None
     if p.fixed_function:
@@ -663,16 +710,21 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list):
             return None
         raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
                                "fixed-function default, which pbrlab does not have")
-    if p.program.language != "CG":
+    if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
-                               "pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)")
+                               + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN
+                                  else f"{pipeline.name} runs CGPROGRAM and HLSLPROGRAM blocks"))
     program, first = layout.program_text(p.program, sub)
+    for pattern, replacement in pipeline.spellings:
+        program = pattern.sub(replacement, program)
     vf = parse_pass(program, path, first, p)
+    vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf
 
 
-def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list):
+def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list,
+              pipeline: Pipeline = BUILTIN):
     """``UsePass "Shader/NAME"``: the pass named NAME (Unity upper-cases pass names) of that
     shader's first SubShader that has one, drawn with this material's properties; None
     where the harness skips that pass (noted)."""
@@ -689,7 +741,7 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
         for item in sub.items:
             if item[0] == "pass" and (item[1].name or "").upper() == pass_name.upper():
                 before = len(notes)
-                vf = _pass(layout, sub, item[1], props, warnings, notes)
+                vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
                 if vf is None:
                     notes[before:] = [f'{path}:{line}: UsePass "{name}": ' + n for n in notes[before:]]
                 return vf
@@ -697,12 +749,12 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
                            "(a surface program's generated passes cannot be used)")
 
 
-def read_shader(path: Path) -> M.UnityShader:
+def read_shader(path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     try:
         text = Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise UnityShaderError(f"{path}: cannot read: {exc}") from None
-    return read_text(text, Path(path))
+    return read_text(text, Path(path), pipeline)
 
 
 def is_unity_surface(path: Path) -> bool:

@@ -43,7 +43,7 @@ _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
 # HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry.
 _SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?)\d*\s*(?=[;,)])", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)])", re.I)  # Unity: any case
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 
@@ -119,18 +119,87 @@ def _drop_unity_redeclarations(code: str) -> str:
 def port_program(shader: M.SurfaceShader) -> str:
     """The shader's CGPROGRAM ported, line for line (comments kept); a layered model's output
     struct (generated before the program: output_struct.layered_struct) is known to the type pass."""
-    return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)))
+    return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)),
+                     srp=getattr(shader, "srp", False))
 
 
-def port_text(program: str, folder: Path | None = None, declarations: str = "") -> str:
+# The Scriptable Render Pipelines' texture API (Core RP's ShaderLibrary macros, which the
+# Universal Render Pipeline's shaders use): in HLSL the stand-ins define them as Unity does;
+# for GLSL each use is spelled in Cg's forms before the two passes, which port those.
+_SRP_TEXTURE_MACROS = {
+    "TEXTURE2D": lambda a: f"sampler2D {a[0]}",
+    "TEXTURECUBE": lambda a: f"samplerCUBE {a[0]}",
+    "SAMPLER": lambda a: f"static const int {a[0]} = 0",
+    "TEXTURE2D_PARAM": lambda a: f"sampler2D {a[0]}, int {a[1]}",
+    "TEXTURECUBE_PARAM": lambda a: f"samplerCUBE {a[0]}, int {a[1]}",
+    "TEXTURE2D_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "TEXTURECUBE_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
+    "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURECUBE": lambda a: f"texCUBE({a[0]}, {a[2]})",
+    "SAMPLE_TEXTURECUBE_LOD": lambda a: f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))",
+}
+_SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
+
+
+def _macro_arguments(code: str, start: int):
+    """(the arguments, the offset after ``)``) of a call whose ``(`` is at ``start``, split at
+    top-level commas; None when the parentheses do not close on the same line."""
+    depth, args, begin = 0, [], start + 1
+    for i in range(start, len(code)):
+        c = code[i]
+        if c == "\n":
+            return None
+        if c in "([":
+            depth += 1
+        elif c in ")]":
+            depth -= 1
+            if depth == 0:
+                args.append(code[begin:i].strip())
+                return args, i + 1
+        elif c == "," and depth == 1:
+            args.append(code[begin:i].strip())
+            begin = i + 1
+    return None
+
+
+def _expand_srp_texture_macros(code: str) -> str:
+    """Each use of the SRP texture API on a code line spelled in Cg (``SAMPLE_TEXTURE2D(t, s, uv)``
+    -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int); preprocessor lines
+    (the stand-ins' own definitions) are left alone; lines are kept."""
+    out, pos = [], 0
+    for m in _SRP_MACRO.finditer(code):
+        if m.start() < pos:
+            continue
+        line_start = code.rfind("\n", 0, m.start()) + 1
+        if code[line_start:m.start()].lstrip().startswith("#"):
+            continue
+        found = _macro_arguments(code, m.end() - 1)
+        if found is None:
+            continue
+        args, end = found
+        need = {"TEXTURE2D": 1, "TEXTURECUBE": 1, "SAMPLER": 1}.get(m.group(1), 2)
+        if m.group(1).startswith("SAMPLE_"):
+            need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 3
+        if len(args) != need:
+            continue  # not the API's form: left for the compiler to name
+        out += [code[pos:m.start()], _SRP_TEXTURE_MACROS[m.group(1)](args)]
+        pos = end
+    return "".join(out) + code[pos:]
+
+
+def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
     """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
     declarations of the files it includes are known to the type pass too, as are
-    ``declarations`` (what the harness puts before the program)."""
+    ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
+    Pipeline's program, whose texture API macros are spelled in Cg first."""
+    spell = _expand_srp_texture_macros if srp else (lambda text: text)
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
-    symbols = cg_types.with_declarations(included) if included.strip() else None
-    segments = _code_segments(cg_types.convert(program, symbols))
+    symbols = cg_types.with_declarations(spell(included)) if included.strip() else None
+    segments = _code_segments(cg_types.convert(spell(program), symbols))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = _drop_unity_redeclarations(port_code(code))
     for i, (is_code, t) in enumerate(segments):

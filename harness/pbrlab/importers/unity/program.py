@@ -32,7 +32,7 @@ from . import generate, port
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
-from .source_text import CGINC, resolve_included
+from .source_text import CGINC, blank_comments, included_text, resolve_included, top_level
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
@@ -63,6 +63,18 @@ def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
 _INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
 
 
+_STRUCT = re.compile(r"\bstruct\s+\w+\s*\{[^{}]*\}\s*;")
+_GLOBAL_VARIABLE = re.compile(r"^[ \t]*(?:uniform\s+)?(?:float|half|fixed|int|uint|bool)(?:[1-4](?:x[1-4])?)?"
+                              r"\s+\w+\s*;", re.M)
+
+
+def _structs_and_globals(text: str) -> str:
+    """The struct definitions (as written: their #if lines kept on lines of their own) and the
+    global numeric variables of Cg ``text``."""
+    masked = blank_comments(text)
+    return "\n".join(_STRUCT.findall(masked) + _GLOBAL_VARIABLE.findall(top_level(masked)))
+
+
 def program_include(shader) -> tuple[str, dict]:
     """(the line that includes the GLSL program, the virtual files it needs): the port of the
     program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
@@ -76,6 +88,12 @@ def program_include(shader) -> tuple[str, dict]:
                                                                 str(shader.path), 1)}
     virtual: dict = {}
     names: dict = {}   # resolved include -> its virtual name
+    # the structs and global variables the program and its includes declare, known to the type
+    # pass of each included file too (a struct an earlier include declares, a property the
+    # program declares before an include uses it: (Struct)0, a scalar's .rrr); their functions
+    # are not (a file's own function, seen twice, would take part in overload resolution)
+    srp = getattr(shader, "srp", False)
+    context = _structs_and_globals(shader.program + "\n" + included_text(shader.program, shader.path.parent)) if srp else ""
 
     def relinked(text: str, where: Path) -> str:
         def relink(m):
@@ -86,8 +104,9 @@ def program_include(shader) -> tuple[str, dict]:
             if key not in names:
                 names[key] = _port_include(key)
                 body = shaders.strip_bom(target.read_text(encoding="utf-8"))
-                virtual[names[key]] = shaders.VirtualFile(relinked(port.port_text(body, target.parent), target.parent),
-                                                          str(target), 1)
+                virtual[names[key]] = shaders.VirtualFile(
+                    relinked(port.port_text(body, target.parent, context, srp=srp), target.parent),
+                    str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 

@@ -18,7 +18,8 @@ from . import generate, generate_pass
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
-from .source_text import CGINC
+from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_text,
+                          project_root)
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
 
@@ -43,7 +44,10 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
            blended, tuple(sorted(defines.items())))
 
     def build():
-        dirs = [TEMPLATES, CGINC, vf.path.parent]
+        # the Unity project's roots its project-path includes resolve from (Assets/..., Packages/...)
+        roots = {project_root(m.group(1), vf.path.parent)
+                 for m in INCLUDE.finditer(blank_comments(vf.program + "\n" + included_text(vf.program, vf.path.parent)))}
+        dirs = [TEMPLATES, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS, vf.path.parent]
         stages, paths = {}, [vf.path]
         for stage in ("vertex", "fragment"):
             display = f"{vf.path.name} (generated {language} {stage} stage)"

@@ -21,6 +21,10 @@ from ...foundation.errors import PbrlabError
 
 # pbrlab's stand-ins for Unity's include files (UnityCG.cginc, Lighting.cginc, ...).
 CGINC = Path(__file__).parent / "cginc"
+# pbrlab's stand-ins for files of Unity's packages (``#include "Packages/<package>/..."``): the
+# Universal Render Pipeline's ShaderLibrary (importers/urp/ reads URP shaders), below this folder
+# by their package paths; it is an include folder of its own.
+PACKAGE_STAND_INS = Path(__file__).parent / "package_stand_ins"
 
 PORT_MARKER = "// pbrlab port-unity:"  # port.py writes it first; the text is then GLSL
 
@@ -93,10 +97,33 @@ class UnityIncludeRefusal(UnityShaderError):
 
 def resolve_included(name: str, folder: Path):
     """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
-    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``); else None."""
-    for candidate in (folder / name, CGINC / Path(name).name):
+    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``) and, for a
+    package path (``Packages/...``), for Unity's packages' files; else None."""
+    candidates = [folder / name]
+    root = project_root(name, folder)
+    if root is not None:
+        candidates.append(root / name)
+    candidates.append(CGINC / Path(name).name)
+    if name.startswith("Packages/"):
+        candidates.append(PACKAGE_STAND_INS / name)
+    for candidate in candidates:
         if candidate.is_file():
             return candidate
+    return None
+
+
+# Include paths Unity resolves from the project's root: its assets and its packages.
+_PROJECT_PATH = ("Assets/", "Packages/")
+
+
+def project_root(name: str, folder: Path) -> Path | None:
+    """For an include written as a project path (``Assets/...``, ``Packages/...``), the
+    nearest folder at or above ``folder`` that holds it (the Unity project's root), else None."""
+    if not name.startswith(_PROJECT_PATH):
+        return None
+    for ancestor in [folder, *folder.parents]:
+        if (ancestor / name).is_file():
+            return ancestor
     return None
 
 

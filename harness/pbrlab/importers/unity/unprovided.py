@@ -51,7 +51,9 @@ _NAME = re.compile(r"\b(" + "|".join(sorted(UNPROVIDED, key=len, reverse=True)) 
 # name pbrlab lacks, not a mistake of the shader's.
 _UNITY_SPELLING = re.compile(r"\b(unity_\w+|UNITY_\w+|Unity[A-Z]\w+|_Camera\w*Texture\w*|SAMPLE_\w*DEPTH\w*|"
                              r"(?:Encode|Decode|Unpack|Pack)(?:DepthNormal|ViewNormalStereo|Float\w*|Heightmap))\b")
-_MISSING_INCLUDE = re.compile(r'(?:header name: |cannot find include ")([\w./-]+\.cginc)')
+# A Unity include file pbrlab has no stand-in for: a built-in .cginc, or a file of one of
+# Unity's packages (Packages/com.unity.*/...: the render pipelines' ShaderLibrary, Shader Graph).
+_MISSING_INCLUDE = re.compile(r'(?:header name: |cannot find include ")([\w./-]+\.cginc|Packages/com\.unity\.[\w./-]+)')
 _AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
 
 

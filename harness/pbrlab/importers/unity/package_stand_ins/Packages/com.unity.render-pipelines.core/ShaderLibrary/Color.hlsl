@@ -1,0 +1,17 @@
+// pbrlab stand-in for Core RP's ShaderLibrary/Color.hlsl: the colour-space conversions URP
+// shaders call, written for pbrlab from the sRGB standard (IEC 61966-2-1) and Unity's
+// documentation of the names (Core RP's own file is under the Unity Companion License).
+#ifndef PBRLAB_CORE_RP_COLOR_HLSL
+#define PBRLAB_CORE_RP_COLOR_HLSL
+
+// The exact sRGB curves, per channel (IEC 61966-2-1: 12.92 below 0.04045 / 0.0031308).
+float SRGBToLinear(float c) { return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4); }
+float3 SRGBToLinear(float3 c) { return float3(SRGBToLinear(c.r), SRGBToLinear(c.g), SRGBToLinear(c.b)); }
+float4 SRGBToLinear(float4 c) { return float4(SRGBToLinear(c.rgb), c.a); }
+float LinearToSRGB(float c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * pow(c, 1.0 / 2.4) - 0.055; }
+float3 LinearToSRGB(float3 c) { return float3(LinearToSRGB(c.r), LinearToSRGB(c.g), LinearToSRGB(c.b)); }
+float4 LinearToSRGB(float4 c) { return float4(LinearToSRGB(c.rgb), c.a); }
+float3 Gamma22ToLinear(float3 c) { return pow(max(c, float3(0.0, 0.0, 0.0)), float3(2.2, 2.2, 2.2)); }
+float3 LinearToGamma22(float3 c) { return pow(max(c, float3(0.0, 0.0, 0.0)), float3(1.0 / 2.2, 1.0 / 2.2, 1.0 / 2.2)); }
+
+#endif

@@ -1,0 +1,183 @@
+// pbrlab stand-in for the Universal Render Pipeline's ShaderLibrary/Core.hlsl: the names a URP
+// shader reads from it, written for pbrlab from Unity's documentation of their meaning (URP's
+// own ShaderLibrary is under the Unity Companion License and is not copied here). Included
+// after pbrlab's Unity prelude (importers/unity/generate.py: the scene's uniforms, Unity's
+// built-in variables unity_ObjectToWorld, UNITY_MATRIX_VP, _WorldSpaceCameraPos, ...), in
+// HLSL as written and in GLSL through port-unity, like the shader itself. No fog, no shadow
+// maps, no lightmaps, no XR here: their names exist and do nothing.
+#ifndef PBRLAB_URP_CORE_HLSL
+#define PBRLAB_URP_CORE_HLSL
+
+#define UNIVERSAL_PIPELINE_CORE_INCLUDED
+// The URP these stand-ins follow: version 12 (Unity 2021 LTS).
+#define SHADER_LIBRARY_VERSION_MAJOR 12
+#define SHADER_LIBRARY_VERSION_MINOR 1
+#define real float
+#define real2 float2
+#define real3 float3
+#define real4 float4
+#define real3x3 float3x3
+#define real4x4 float4x4
+// Unity's half-precision limits (Common.hlsl): the smallest normal half and its square root.
+#define HALF_MIN 6.103515625e-5
+#define HALF_MIN_SQRT 0.0078125
+#define FLT_MIN 1.175494351e-38
+#define FLT_EPS 5.960464478e-8
+#ifndef PI
+#define PI 3.14159265359
+#endif
+#define TWO_PI 6.28318530718
+#define INV_PI 0.31830988618
+
+// SRP-batcher constant buffers: plain uniforms here.
+#define CBUFFER_START(name)
+#define CBUFFER_END
+#define UNITY_DOTS_INSTANCING_START(name)
+#define UNITY_DOTS_INSTANCING_END(name)
+#define UNITY_DOTS_INSTANCED_PROP(type, name)
+
+// Textures and samplers (Core RP's API macros), in HLSL: a texture object and a sampler state
+// each (the GL texture's own filtering applies). In GLSL, port-unity spells every use in Cg's
+// forms (importers/unity/port.py), so these are HLSL's alone.
+#ifndef __VERSION__
+#define TEXTURE2D(t) Texture2D t
+#define TEXTURECUBE(t) TextureCube t
+#define SAMPLER(s) SamplerState s
+#define TEXTURE2D_PARAM(t, s) Texture2D t, SamplerState s
+#define TEXTURECUBE_PARAM(t, s) TextureCube t, SamplerState s
+#define TEXTURE2D_ARGS(t, s) t, s
+#define TEXTURECUBE_ARGS(t, s) t, s
+#define SAMPLE_TEXTURE2D(t, s, uv) t.Sample(s, uv)
+#define SAMPLE_TEXTURE2D_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+#define SAMPLE_TEXTURE2D_BIAS(t, s, uv, bias) t.SampleBias(s, uv, bias)
+#define SAMPLE_TEXTURECUBE(t, s, d) t.Sample(s, d)
+#define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
+#endif
+
+// Instancing and stereo: one instance, one eye (the built-in prelude's names, where it has them).
+#ifndef UNITY_VERTEX_INPUT_INSTANCE_ID
+#define UNITY_VERTEX_INPUT_INSTANCE_ID
+#endif
+#ifndef UNITY_VERTEX_OUTPUT_STEREO
+#define UNITY_VERTEX_OUTPUT_STEREO
+#endif
+#ifndef UNITY_SETUP_INSTANCE_ID
+#define UNITY_SETUP_INSTANCE_ID(v)
+#endif
+#ifndef UNITY_TRANSFER_INSTANCE_ID
+#define UNITY_TRANSFER_INSTANCE_ID(a, b)
+#endif
+#ifndef UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO
+#define UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o)
+#endif
+#ifndef UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX
+#define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(i)
+#endif
+
+// A fragment's facing (FRONT_FACE_TYPE and FRONT_FACE_SEMANTIC are read as bool and
+// SV_IsFrontFace: importers/unity/parse.py's URP spellings).
+#define IS_FRONT_VFACE(VAL, FRONT, BACK) ((VAL) ? (FRONT) : (BACK))
+#define FRONT_FACE_TYPE bool
+#define FRONT_FACE_SEMANTIC SV_IsFrontFace
+
+// Fog: none here (ComputeFogFactor 0, MixFog leaves the colour).
+float ComputeFogFactor(float z) { return 0.0; }
+float3 MixFog(float3 color, float fogFactor) { return color; }
+float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
+
+// v / |v|, and 0-safe: |v|^2 floored at FLT_MIN (Unity's SafeNormalize).
+float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
+
+float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
+float4x4 GetObjectToWorldMatrix() { return unity_ObjectToWorld; }
+float4x4 GetWorldToObjectMatrix() { return unity_WorldToObject; }
+float4x4 GetWorldToHClipMatrix() { return UNITY_MATRIX_VP; }
+float3 TransformObjectToWorld(float3 positionOS) { return mul(unity_ObjectToWorld, float4(positionOS, 1.0)).xyz; }
+float3 TransformWorldToObject(float3 positionWS) { return mul(unity_WorldToObject, float4(positionWS, 1.0)).xyz; }
+float3 TransformWorldToView(float3 positionWS) { return mul(UNITY_MATRIX_V, float4(positionWS, 1.0)).xyz; }
+float4 TransformWorldToHClip(float3 positionWS) { return mul(UNITY_MATRIX_VP, float4(positionWS, 1.0)); }
+float4 TransformObjectToHClip(float3 positionOS) { return TransformWorldToHClip(TransformObjectToWorld(positionOS)); }
+float4 TransformWViewToHClip(float3 positionVS) { return mul(UNITY_MATRIX_P, float4(positionVS, 1.0)); }
+float3 TransformObjectToWorldDir(float3 dirOS) { return SafeNormalize(mul((float3x3)unity_ObjectToWorld, dirOS)); }
+float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float3x3)unity_WorldToObject, dirWS)); }
+// Normals by the inverse transpose: n^T M^-1, as Unity writes it.
+float3 TransformObjectToWorldNormal(float3 normalOS) { return SafeNormalize(mul(normalOS, (float3x3)unity_WorldToObject)); }
+float3 TransformWorldToViewDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_V, dirWS); }
+// The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
+float3 GetWorldSpaceViewDir(float3 positionWS) {
+    if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
+    return _WorldSpaceCameraPos - positionWS;
+}
+float3 GetWorldSpaceNormalizeViewDir(float3 positionWS) { return normalize(GetWorldSpaceViewDir(positionWS)); }
+float GetOddNegativeScale() { return determinant((float3x3)unity_ObjectToWorld) < 0.0 ? -1.0 : 1.0; }
+
+struct VertexPositionInputs {
+    float3 positionWS;
+    float3 positionVS;
+    float4 positionCS;
+    float4 positionNDC;
+};
+
+VertexPositionInputs GetVertexPositionInputs(float3 positionOS) {
+    VertexPositionInputs o;
+    o.positionWS = TransformObjectToWorld(positionOS);
+    o.positionVS = TransformWorldToView(o.positionWS);
+    o.positionCS = TransformWorldToHClip(o.positionWS);
+    float4 ndc = o.positionCS * 0.5;
+    o.positionNDC.xy = float2(ndc.x, ndc.y * _ProjectionParams.x) + ndc.w;
+    o.positionNDC.zw = o.positionCS.zw;
+    return o;
+}
+
+struct VertexNormalInputs {
+    float3 tangentWS;
+    float3 bitangentWS;
+    float3 normalWS;
+};
+
+VertexNormalInputs GetVertexNormalInputs(float3 normalOS) {
+    VertexNormalInputs o;
+    o.tangentWS = float3(1.0, 0.0, 0.0);
+    o.bitangentWS = float3(0.0, 1.0, 0.0);
+    o.normalWS = TransformObjectToWorldNormal(normalOS);
+    return o;
+}
+
+VertexNormalInputs GetVertexNormalInputs(float3 normalOS, float4 tangentOS) {
+    VertexNormalInputs o;
+    float sign = tangentOS.w * GetOddNegativeScale();
+    o.normalWS = TransformObjectToWorldNormal(normalOS);
+    o.tangentWS = TransformObjectToWorldDir(tangentOS.xyz);
+    o.bitangentWS = cross(o.normalWS, o.tangentWS) * sign;
+    return o;
+}
+
+// A tangent-space normal to world space through the rows (T, B, N).
+float3 TransformTangentToWorld(float3 dirTS, float3x3 tangentToWorld) { return mul(dirTS, tangentToWorld); }
+// World to tangent space through the rows (T, B, N): the transpose's product.
+float3 TransformWorldToTangent(float3 dirWS, float3x3 tangentToWorld) { return mul(tangentToWorld, dirWS); }
+float3 NormalizeNormalPerPixel(float3 normalWS) { return normalize(normalWS); }
+float3 NormalizeNormalPerVertex(float3 normalWS) { return normalize(normalWS); }
+
+// Normal maps (Packing.hlsl's UnpackNormalScale on desktop: RG or AG, DXT5nm or BC5, and RGB
+// maps alike: x = a * r, y = g), scaled in xy, z rebuilt.
+float3 UnpackNormalScale(float4 packedNormal, float scale) {
+    float2 xy = float2(packedNormal.a * packedNormal.r, packedNormal.g) * 2.0 - 1.0;
+    xy *= scale;
+    return float3(xy, max(1.0e-16, sqrt(1.0 - saturate(dot(xy, xy)))));
+}
+float3 UnpackNormalRGB(float4 packedNormal, float scale) {
+    float3 n = packedNormal.rgb * 2.0 - 1.0;
+    n.xy *= scale;
+    return n;
+}
+
+// The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).
+float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _ScreenParams.xy; }
+
+// Shadows: none here (no shadow map): a coordinate of 0, full light; no shadow mask.
+#define SAMPLE_SHADOWMASK(uv) float4(1.0, 1.0, 1.0, 1.0)
+float4 TransformWorldToShadowCoord(float3 positionWS) { return float4(0.0, 0.0, 0.0, 0.0); }
+
+#endif

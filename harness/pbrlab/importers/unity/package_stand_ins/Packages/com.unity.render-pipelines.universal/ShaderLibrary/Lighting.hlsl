@@ -1,0 +1,388 @@
+// pbrlab stand-in for the Universal Render Pipeline's ShaderLibrary/Lighting.hlsl (and the
+// BRDF.hlsl, GlobalIllumination.hlsl, RealtimeLights.hlsl and Input.hlsl it brings): URP's
+// lights, its physically based model (UniversalFragmentPBR) and its ambient and reflection
+// light, written for pbrlab from Unity's documentation of the names and the model's formulas
+// (URP's own files are under the Unity Companion License and are not copied). The float64
+// transcription of the same model is pbrlab.maths.reference.urp_brdf; tests/importers/urp/
+// checks a render against it.
+//
+// Lights: the scene's. The main light is its first directional light (none: black); the
+// additional lights are its other directional lights, then its point lights, then its spot
+// lights, each with the scene's distance window and cone (URP's smooth range factor and
+// angle attenuation are the same functions as glTF's, pbr_distance_attenuation and
+// pbr_spot_attenuation). No shadow maps: shadowAttenuation is 1. Ambient light: the
+// scene environment's SH9 (SampleSH); reflections: its prefiltered radiance at URP's mip for
+// the perceptual roughness (black without an environment).
+#ifndef PBRLAB_URP_LIGHTING_HLSL
+#define PBRLAB_URP_LIGHTING_HLSL
+
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+
+#define UNIVERSAL_LIGHTING_INCLUDED
+// URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
+#define kDielectricSpec float4(0.04, 0.04, 0.04, 1.0 - 0.04)
+// URP's mip count for the reflection probe's roughness levels (UNITY_SPECCUBE_LOD_STEPS).
+#define PBRLAB_URP_SPECCUBE_LOD_STEPS 6.0
+
+struct Light {
+    float3 direction;            // unit, from the shaded point to the light
+    float3 color;
+    float distanceAttenuation;   // the distance window (and a spot's cone), 1 for directional
+    float shadowAttenuation;     // 1: no shadow maps here
+    uint layerMask;
+};
+
+Light pbrlab_urp_no_light() {
+    Light light;
+    light.direction = float3(0.0, 0.0, 1.0);
+    light.color = float3(0.0, 0.0, 0.0);
+    light.distanceAttenuation = 0.0;
+    light.shadowAttenuation = 1.0;
+    light.layerMask = 0xFFFFFFFFu;
+    return light;
+}
+
+Light GetMainLight() {
+    Light light = pbrlab_urp_no_light();
+#if PBRLAB_DIRECTIONAL_COUNT > 0
+    light.direction = -u_directional_direction[0];
+    light.color = u_directional_radiance[0];
+    light.distanceAttenuation = 1.0;
+#endif
+    return light;
+}
+Light GetMainLight(float4 shadowCoord) { return GetMainLight(); }
+Light GetMainLight(float4 shadowCoord, float3 positionWS, float4 shadowMask) { return GetMainLight(); }
+
+int GetAdditionalLightsCount() {
+    int count = PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT;
+#if PBRLAB_DIRECTIONAL_COUNT > 1
+    count += PBRLAB_DIRECTIONAL_COUNT - 1;
+#endif
+    return count;
+}
+
+Light pbrlab_urp_positional(float3 position, float3 radiance, float range, float3 positionWS) {
+    Light light = pbrlab_urp_no_light();
+    float3 toLight = position - positionWS;
+    float d2 = dot(toLight, toLight);
+    light.direction = toLight * rsqrt(max(d2, PBR_MIN_LIGHT_DISTANCE_SQUARED));
+    light.color = radiance;
+    light.distanceAttenuation = pbr_distance_attenuation(d2, range);
+    return light;
+}
+
+Light GetAdditionalLight(uint i, float3 positionWS) {
+    int index = int(i);
+#if PBRLAB_DIRECTIONAL_COUNT > 1
+    if (index < PBRLAB_DIRECTIONAL_COUNT - 1) {
+        Light light = pbrlab_urp_no_light();
+        light.direction = -u_directional_direction[index + 1];
+        light.color = u_directional_radiance[index + 1];
+        light.distanceAttenuation = 1.0;
+        return light;
+    }
+    index -= PBRLAB_DIRECTIONAL_COUNT - 1;
+#endif
+#if PBRLAB_POINT_COUNT > 0
+    if (index < PBRLAB_POINT_COUNT)
+        return pbrlab_urp_positional(u_point_position[index], u_point_radiance[index], u_point_range[index], positionWS);
+    index -= PBRLAB_POINT_COUNT;
+#endif
+#if PBRLAB_SPOT_COUNT > 0
+    if (index < PBRLAB_SPOT_COUNT) {
+        Light light = pbrlab_urp_positional(u_spot_position[index], u_spot_radiance[index], u_spot_range[index], positionWS);
+        light.distanceAttenuation *= pbr_spot_attenuation(light.direction, u_spot_direction[index],
+                                                          u_spot_cone[index].x, u_spot_cone[index].y);
+        return light;
+    }
+#endif
+    return pbrlab_urp_no_light();
+}
+Light GetAdditionalLight(uint i, float3 positionWS, float4 shadowMask) { return GetAdditionalLight(i, positionWS); }
+
+// Ambient light: the environment's SH9 as Unity's ambient probe (irradiance / pi).
+float3 SampleSH(float3 normalWS) {
+#ifdef PBRLAB_ENV
+    return PBR_UNITY_SH_IRRADIANCE(normalWS);
+#else
+    return float3(0.0, 0.0, 0.0);
+#endif
+}
+float3 SampleSHVertex(float3 normalWS) { return SampleSH(normalWS); }
+float3 SampleSHPixel(float3 L2Term, float3 normalWS) { return SampleSH(normalWS); }
+// A varyings member for per-vertex SH: declared without its semantic, since SAMPLE_GI evaluates
+// the SH per pixel here (URP's default) and never reads it.
+#define DECLARE_LIGHTMAP_OR_SH(lmName, shName, index) float3 shName
+#define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT)
+#define OUTPUT_SH(normalWS, OUT) OUT.xyz = SampleSHVertex(normalWS)
+#define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
+
+// URP's mip for a perceptual roughness: pr (1.7 - 0.7 pr) of its 6 levels, in pbrlab's chain.
+float3 GlossyEnvironmentReflection(float3 reflectVector, float perceptualRoughness, float occlusion) {
+#ifdef PBRLAB_ENV
+    return PBR_UNITY_GLOSSY_ENVIRONMENT(reflectVector, perceptualRoughness) * occlusion;
+#else
+    return float3(0.0, 0.0, 0.0);
+#endif
+}
+float3 GlossyEnvironmentReflection(float3 reflectVector, float3 positionWS, float perceptualRoughness, float occlusion) {
+    return GlossyEnvironmentReflection(reflectVector, perceptualRoughness, occlusion);
+}
+
+struct InputData {
+    float3 positionWS;
+    float4 positionCS;
+    float3 normalWS;
+    float3 viewDirectionWS;
+    float4 shadowCoord;
+    float fogCoord;
+    float3 vertexLighting;
+    float3 bakedGI;
+    float2 normalizedScreenSpaceUV;
+    float4 shadowMask;
+    float3x3 tangentToWorld;
+};
+
+struct SurfaceData {
+    float3 albedo;
+    float3 specular;
+    float metallic;
+    float smoothness;
+    float3 normalTS;
+    float3 emission;
+    float occlusion;
+    float alpha;
+    float clearCoatMask;
+    float clearCoatSmoothness;
+};
+
+struct BRDFData {
+    float3 albedo;
+    float3 diffuse;
+    float3 specular;
+    float reflectivity;
+    float perceptualRoughness;
+    float roughness;
+    float roughness2;
+    float grazingTerm;
+    float normalizationTerm;    // roughness * 4 + 2
+    float roughness2MinusOne;   // roughness^2 - 1
+};
+
+float OneMinusReflectivityMetallic(float metallic) { return kDielectricSpec.a - metallic * kDielectricSpec.a; }
+float ReflectivitySpecular(float3 specular) { return max(max(specular.r, specular.g), specular.b); }
+
+// URP's BRDF setup: diffuse and F0 from the workflow; roughness = (1 - smoothness)^2 floored
+// at HALF_MIN_SQRT, its square at HALF_MIN; premultiplied alpha scales the diffuse.
+void InitializeBRDFDataDirect(float3 albedo, float3 diffuse, float3 specular, float reflectivity,
+                              float oneMinusReflectivity, float smoothness, inout float alpha, out BRDFData outBRDFData) {
+    outBRDFData.albedo = albedo;
+    outBRDFData.diffuse = diffuse;
+    outBRDFData.specular = specular;
+    outBRDFData.reflectivity = reflectivity;
+    outBRDFData.perceptualRoughness = 1.0 - smoothness;
+    outBRDFData.roughness = max(outBRDFData.perceptualRoughness * outBRDFData.perceptualRoughness, HALF_MIN_SQRT);
+    outBRDFData.roughness2 = max(outBRDFData.roughness * outBRDFData.roughness, HALF_MIN);
+    outBRDFData.grazingTerm = saturate(smoothness + reflectivity);
+    outBRDFData.normalizationTerm = outBRDFData.roughness * 4.0 + 2.0;
+    outBRDFData.roughness2MinusOne = outBRDFData.roughness2 - 1.0;
+#ifdef _ALPHAPREMULTIPLY_ON
+    outBRDFData.diffuse *= alpha;
+    alpha = alpha * oneMinusReflectivity + reflectivity;
+#endif
+}
+
+void InitializeBRDFData(float3 albedo, float metallic, float3 specular, float smoothness, inout float alpha,
+                        out BRDFData outBRDFData) {
+#ifdef _SPECULAR_SETUP
+    float reflectivity = ReflectivitySpecular(specular);
+    float oneMinusReflectivity = 1.0 - reflectivity;
+    float3 brdfDiffuse = albedo * (float3(1.0, 1.0, 1.0) - specular);
+    float3 brdfSpecular = specular;
+#else
+    float oneMinusReflectivity = OneMinusReflectivityMetallic(metallic);
+    float reflectivity = 1.0 - oneMinusReflectivity;
+    float3 brdfDiffuse = albedo * oneMinusReflectivity;
+    float3 brdfSpecular = lerp(kDielectricSpec.rgb, albedo, metallic);
+#endif
+    InitializeBRDFDataDirect(albedo, brdfDiffuse, brdfSpecular, reflectivity, oneMinusReflectivity, smoothness,
+                             alpha, outBRDFData);
+}
+
+void InitializeBRDFData(inout SurfaceData surfaceData, out BRDFData brdfData) {
+    InitializeBRDFData(surfaceData.albedo, surfaceData.metallic, surfaceData.specular, surfaceData.smoothness,
+                       surfaceData.alpha, brdfData);
+}
+
+// URP's direct specular: D * V * F folded into r^2 / ((d^2) max(0.1, LdotH^2) (4r + 2)), with
+// d = NdotH^2 (r^2 - 1) + 1.00001 (Unity, "Optimizing PBR for mobile", Siggraph 2015).
+float DirectBRDFSpecular(BRDFData brdfData, float3 normalWS, float3 lightDirectionWS, float3 viewDirectionWS) {
+    float3 halfDir = SafeNormalize(lightDirectionWS + viewDirectionWS);
+    float NoH = saturate(dot(normalWS, halfDir));
+    float LoH = saturate(dot(lightDirectionWS, halfDir));
+    float d = NoH * NoH * brdfData.roughness2MinusOne + 1.00001;
+    float LoH2 = LoH * LoH;
+    return brdfData.roughness2 / ((d * d) * max(0.1, LoH2) * brdfData.normalizationTerm);
+}
+
+float3 LightingPhysicallyBased(BRDFData brdfData, float3 lightColor, float3 lightDirectionWS, float lightAttenuation,
+                               float3 normalWS, float3 viewDirectionWS) {
+    float NdotL = saturate(dot(normalWS, lightDirectionWS));
+    float3 radiance = lightColor * (lightAttenuation * NdotL);
+    float3 brdf = brdfData.diffuse;
+    brdf += brdfData.specular * DirectBRDFSpecular(brdfData, normalWS, lightDirectionWS, viewDirectionWS);
+    return brdf * radiance;
+}
+
+float3 LightingPhysicallyBased(BRDFData brdfData, Light light, float3 normalWS, float3 viewDirectionWS) {
+    return LightingPhysicallyBased(brdfData, light.color, light.direction,
+                                   light.distanceAttenuation * light.shadowAttenuation, normalWS, viewDirectionWS);
+}
+
+// URP's environment BRDF: (1 / (roughness^2 + 1)) lerp(F0, grazing, (1 - NdotV)^4).
+float3 EnvironmentBRDFSpecular(BRDFData brdfData, float fresnelTerm) {
+    float surfaceReduction = 1.0 / (brdfData.roughness2 + 1.0);
+    return surfaceReduction * lerp(brdfData.specular, float3(brdfData.grazingTerm, brdfData.grazingTerm, brdfData.grazingTerm), fresnelTerm);
+}
+
+float3 EnvironmentBRDF(BRDFData brdfData, float3 indirectDiffuse, float3 indirectSpecular, float fresnelTerm) {
+    float3 c = indirectDiffuse * brdfData.diffuse;
+    c += indirectSpecular * EnvironmentBRDFSpecular(brdfData, fresnelTerm);
+    return c;
+}
+
+float3 GlobalIllumination(BRDFData brdfData, float3 bakedGI, float occlusion, float3 positionWS, float3 normalWS,
+                          float3 viewDirectionWS) {
+    float3 reflectVector = reflect(-viewDirectionWS, normalWS);
+    float NoV = saturate(dot(normalWS, viewDirectionWS));
+    float fresnelTerm = Pow4(1.0 - NoV);
+    float3 indirectDiffuse = bakedGI;
+    float3 indirectSpecular = GlossyEnvironmentReflection(reflectVector, positionWS, brdfData.perceptualRoughness, 1.0);
+    return EnvironmentBRDF(brdfData, indirectDiffuse, indirectSpecular, fresnelTerm) * occlusion;
+}
+float3 GlobalIllumination(BRDFData brdfData, float3 bakedGI, float occlusion, float3 normalWS, float3 viewDirectionWS) {
+    return GlobalIllumination(brdfData, bakedGI, occlusion, float3(0.0, 0.0, 0.0), normalWS, viewDirectionWS);
+}
+
+float3 LightingLambert(float3 lightColor, float3 lightDir, float3 normal) {
+    return lightColor * saturate(dot(normal, lightDir));
+}
+
+// Per-vertex additional lights (_ADDITIONAL_LIGHTS_VERTEX): their Lambert sum, else black.
+float3 VertexLighting(float3 positionWS, float3 normalWS) {
+    float3 vertexLightColor = float3(0.0, 0.0, 0.0);
+#ifdef _ADDITIONAL_LIGHTS_VERTEX
+    int lightCount = GetAdditionalLightsCount();
+    for (int lightIndex = 0; lightIndex < lightCount; ++lightIndex) {
+        Light light = GetAdditionalLight(uint(lightIndex), positionWS);
+        vertexLightColor += LightingLambert(light.color * light.distanceAttenuation, light.direction, normalWS);
+    }
+#endif
+    return vertexLightColor;
+}
+
+// Baked lighting mixed with the realtime main light: only with lightmaps (none here).
+void MixRealtimeAndBakedGI(inout Light light, float3 normalWS, inout float3 bakedGI) {}
+void MixRealtimeAndBakedGI(inout Light light, float3 normalWS, inout float3 bakedGI, float4 shadowMask) {}
+
+// Blinn-Phong's highlight: colour * specular * NdotH^smoothness (smoothness here the exponent).
+float3 LightingSpecular(float3 lightColor, float3 lightDir, float3 normal, float3 viewDir, float4 specular, float smoothness) {
+    float3 halfVec = SafeNormalize(lightDir + viewDir);
+    float NdotH = saturate(dot(normal, halfVec));
+    return lightColor * (specular.rgb * pow(NdotH, smoothness));
+}
+
+// SimpleLit's light: Lambert's diffuse times the albedo, plus the highlight where the material
+// has one (_SPECGLOSSMAP or _SPECULAR_COLOR), its exponent exp2(10 smoothness + 1).
+float3 CalculateBlinnPhong(Light light, InputData inputData, SurfaceData surfaceData) {
+    float3 attenuatedLightColor = light.color * (light.distanceAttenuation * light.shadowAttenuation);
+    float3 lightDiffuseColor = LightingLambert(attenuatedLightColor, light.direction, inputData.normalWS);
+    float3 lightSpecularColor = float3(0.0, 0.0, 0.0);
+#if defined(_SPECGLOSSMAP) || defined(_SPECULAR_COLOR)
+    float exponent = exp2(10.0 * surfaceData.smoothness + 1.0);
+    lightSpecularColor += LightingSpecular(attenuatedLightColor, light.direction, inputData.normalWS,
+                                           inputData.viewDirectionWS, float4(surfaceData.specular, 1.0), exponent);
+#endif
+#ifdef _ALPHAPREMULTIPLY_ON
+    return lightDiffuseColor * surfaceData.albedo * surfaceData.alpha + lightSpecularColor;
+#else
+    return lightDiffuseColor * surfaceData.albedo + lightSpecularColor;
+#endif
+}
+
+// SimpleLit's pixel: the ambient light times the albedo, every light's Blinn-Phong, emission.
+float4 UniversalFragmentBlinnPhong(InputData inputData, SurfaceData surfaceData) {
+    float3 color = inputData.bakedGI * surfaceData.albedo;
+    color += CalculateBlinnPhong(GetMainLight(inputData.shadowCoord, inputData.positionWS, inputData.shadowMask),
+                                 inputData, surfaceData);
+#ifdef _ADDITIONAL_LIGHTS
+    int lightCount = GetAdditionalLightsCount();
+    for (int lightIndex = 0; lightIndex < lightCount; ++lightIndex) {
+        color += CalculateBlinnPhong(GetAdditionalLight(uint(lightIndex), inputData.positionWS, inputData.shadowMask),
+                                     inputData, surfaceData);
+    }
+#endif
+    color += surfaceData.emission;
+    return float4(color, surfaceData.alpha);
+}
+
+float4 UniversalFragmentBlinnPhong(InputData inputData, float3 diffuse, float4 specularGloss, float smoothness,
+                                   float3 emission, float alpha, float3 normalTS) {
+    SurfaceData s;
+    s.albedo = diffuse;
+    s.specular = specularGloss.rgb;
+    s.metallic = 0.0;
+    s.smoothness = smoothness;
+    s.normalTS = normalTS;
+    s.emission = emission;
+    s.occlusion = 1.0;
+    s.alpha = alpha;
+    s.clearCoatMask = 0.0;
+    s.clearCoatSmoothness = 1.0;
+    return UniversalFragmentBlinnPhong(inputData, s);
+}
+
+float4 UniversalFragmentBlinnPhong(InputData inputData, float3 diffuse, float4 specularGloss, float smoothness,
+                                   float3 emission, float alpha) {
+    return UniversalFragmentBlinnPhong(inputData, diffuse, specularGloss, smoothness, emission, alpha,
+                                       float3(0.0, 0.0, 1.0));
+}
+
+// The lit pixel: ambient and reflections, the main light, every additional light, emission.
+float4 UniversalFragmentPBR(InputData inputData, SurfaceData surfaceData) {
+    BRDFData brdfData;
+    InitializeBRDFData(surfaceData.albedo, surfaceData.metallic, surfaceData.specular, surfaceData.smoothness,
+                       surfaceData.alpha, brdfData);
+    float3 color = GlobalIllumination(brdfData, inputData.bakedGI, surfaceData.occlusion, inputData.positionWS,
+                                      inputData.normalWS, inputData.viewDirectionWS);
+    Light mainLight = GetMainLight(inputData.shadowCoord, inputData.positionWS, inputData.shadowMask);
+    color += LightingPhysicallyBased(brdfData, mainLight, inputData.normalWS, inputData.viewDirectionWS);
+#ifdef _ADDITIONAL_LIGHTS
+    int lightCount = GetAdditionalLightsCount();
+    for (int lightIndex = 0; lightIndex < lightCount; ++lightIndex) {
+        Light light = GetAdditionalLight(uint(lightIndex), inputData.positionWS, inputData.shadowMask);
+        color += LightingPhysicallyBased(brdfData, light, inputData.normalWS, inputData.viewDirectionWS);
+    }
+#endif
+    color += surfaceData.emission;
+    return float4(color, surfaceData.alpha);
+}
+
+float4 UniversalFragmentPBR(InputData inputData, float3 albedo, float metallic, float3 specular, float smoothness,
+                            float occlusion, float3 emission, float alpha) {
+    SurfaceData s;
+    s.albedo = albedo;
+    s.specular = specular;
+    s.metallic = metallic;
+    s.smoothness = smoothness;
+    s.normalTS = float3(0.0, 0.0, 1.0);
+    s.emission = emission;
+    s.occlusion = occlusion;
+    s.alpha = alpha;
+    s.clearCoatMask = 0.0;
+    s.clearCoatSmoothness = 1.0;
+    return UniversalFragmentPBR(inputData, s);
+}
+
+#endif

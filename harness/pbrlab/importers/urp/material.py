@@ -1,0 +1,51 @@
+"""A URP shader's material (``scene.material_passes.MaterialSource``), and how the loader
+recognises and reads one.
+
+URP draws a forward pass once with every light: the main light (the scene's first
+directional light) and the additional lights (every other one) are read by the program itself
+(``GetMainLight``, ``GetAdditionalLight``: the stand-in Lighting.hlsl) from the scene's light
+uniforms the renderer binds for every program, so a pass draws once, with no per-light
+repetition (unlike the built-in pipeline's ForwardAdd). URP's pipeline keywords are set as
+its default renderer sets them: ``_ADDITIONAL_LIGHTS`` (per-pixel additional lights), where
+the shader declares it; no shadow, lightmap or fog keyword (there are none of those here).
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from ..unity import URP
+from ..unity import material as unity_material
+from ..unity.source_text import blank_comments
+
+# The keywords URP's default renderer enables globally, where a shader declares them.
+PIPELINE_KEYWORDS = ("_ADDITIONAL_LIGHTS",)
+_URP_TAG = re.compile(r'"RenderPipeline"\s*=\s*"Universal(?:Render)?Pipeline"')
+_URP_INCLUDE = re.compile(r'#\s*include\s+"Packages/com\.unity\.render-pipelines\.universal/')
+
+
+class URPSource(unity_material.UnitySource):
+    """The Unity source, drawn as URP draws: its forward passes once each (its passes'
+    LightMode is UniversalForward, UniversalForwardOnly or SRPDefaultUnlit, which
+    unity_material.light_programs draws once), with URP's pipeline keywords."""
+
+    def defines(self, material) -> dict:
+        declared = self.shader.keywords
+        return {**{k: 1 for k in PIPELINE_KEYWORDS if k in declared}, **super().defines(material)}
+
+
+def reads(path: Path) -> bool:
+    """Whether ``path`` is a URP shader: a SubShader tagged for URP, or a program that
+    includes URP's ShaderLibrary."""
+    try:
+        text = blank_comments(Path(path).read_text(encoding="utf-8", errors="replace"))
+    except OSError:
+        return False
+    return bool(_URP_TAG.search(text) or _URP_INCLUDE.search(text))
+
+
+def read_material(r, m, base: Path) -> None:
+    """Fill ``m`` from a material whose surface is a URP shader (unity_material.read_material,
+    for URP)."""
+    unity_material.read_material(r, m, base, pipeline=URP, source_type=URPSource)

@@ -1,0 +1,55 @@
+"""Real URP shaders nobody on this project wrote (corpus/urp/: public MIT, Apache-2.0 and CC0
+repositories, corpus/urp/MANIFEST.json), each rendered in both languages or refused naming what
+pbrlab lacks, as pinned in corpus/urp/expected.json (``python -m pbrlab.checking.unity_corpus
+corpus/urp --expect corpus/urp/expected.json`` rewrites it after a reviewed change). The rules
+are the built-in corpus's (pbrlab.checking.unity_corpus.outcome_problems, tests/importers/unity/
+test_corpus.py): a rendered pair agrees (GLSL port against HLSL as written, the same 1e-4
+bound and reason) and draws; a refusal names a Unity feature, not a compiler's error, unless
+the pin says "defect:" (a known front-end gap, listed in docs/unity.md)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from pbrlab.checking import unity_corpus as corpus
+
+ROOT = Path(__file__).resolve().parents[3] / "corpus" / "urp"
+EXPECTED = json.loads((ROOT / "expected.json").read_text(encoding="utf-8"))
+SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
+# As tests/importers/unity/test_corpus.py: most pairs are bit-identical; the two languages'
+# vertex stages place vertices a few ulp apart, moving interpolated values by ~1e-5 relative.
+AGREEMENT_BOUND = 1e-4
+
+
+def test_corpus_lists_every_shader_once():
+    assert sorted(EXPECTED) == sorted(SHADERS)
+    manifest = json.loads((ROOT / "MANIFEST.json").read_text(encoding="utf-8"))
+    assert sorted(entry["path"] for entry in manifest) == sorted(SHADERS)
+
+
+@pytest.mark.parametrize("shader", SHADERS)
+def test_urp_corpus_shader_renders_or_is_refused_by_name(shader):
+    outcomes = {lang: corpus.run_shader(ROOT / shader, lang) for lang in corpus.LANGUAGES}
+    problems = corpus.outcome_problems(EXPECTED[shader], outcomes, None, AGREEMENT_BOUND)
+    assert not problems, problems
+
+
+def test_the_outcome_check_fails_where_it_should():
+    """A control of the shared check: a traceback, a disagreeing pair, a blank render and a
+    compiler error unpinned are each reported."""
+    import numpy as np
+    lit = np.ones((2, 2, 4), np.float32)
+    good = {"glsl": corpus.Outcome("s", "glsl", "rendered", image=lit), "hlsl": corpus.Outcome("s", "hlsl", "rendered", image=lit)}
+    assert corpus.outcome_problems("rendered", good) == []
+    off = dict(good, hlsl=corpus.Outcome("s", "hlsl", "rendered", image=lit * 1.01))
+    assert corpus.outcome_problems("rendered", off)
+    blank = {k: corpus.Outcome("s", k, "rendered", image=lit * 0) for k in good}
+    assert corpus.outcome_problems("rendered", blank) == ["drew nothing"]
+    crash = dict(good, glsl=corpus.Outcome("s", "glsl", "traceback", "Traceback ..."))
+    assert corpus.outcome_problems("rendered", crash)
+    compiler = {k: corpus.Outcome("s", k, "refused", "vertex shader failed to compile:\nx.shader:3:1: error: syntax error")
+                for k in good}
+    assert corpus.outcome_problems("x", compiler)
