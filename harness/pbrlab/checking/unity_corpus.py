@@ -147,8 +147,8 @@ def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = N
     """What is wrong with one shader's ``outcomes`` (language -> Outcome) against its pinned
     ``expected`` outcome (expected_outcomes' vocabulary); empty when they match. A rendered
     pair must agree to ``agreement_bound`` (the GLSL port against the HLSL as written) and
-    draw something, unless ``blank_reason`` says why its defaults draw nothing (then it must
-    be blank). A refusal must name what is missing, not be a compiler's error, unless pinned as
+    draw colour (an RGB value other than 0: alpha alone is no picture), unless ``blank_reason``
+    says why its defaults draw none (then it must be black). A refusal must name what is missing, not be a compiler's error, unless pinned as
     a defect; a traceback is always wrong."""
     problems = []
     for lang, o in outcomes.items():
@@ -170,7 +170,7 @@ def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = N
         images = [o.image for o in outcomes.values()]
         if agreement(images[0], images[-1]) > agreement_bound:
             problems.append(f"GLSL and HLSL differ by {agreement(images[0], images[-1]):.3g} > {agreement_bound}")
-        drew = [bool((image != 0).any()) for image in images]
+        drew = [bool((image[..., :3] != 0).any()) for image in images]  # colour, not alpha
         if drew != [blank_reason is None] * len(drew):
             problems.append(blank_reason or "drew nothing")
         return problems

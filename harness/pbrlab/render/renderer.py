@@ -377,13 +377,18 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
 
 
 def _apply_state(ctx, hdr, state) -> None:
-    """Blending, depth writes and the depth test of a pass's draw (its culling: ``_cull``)."""
+    """Blending, depth and colour writes and the depth test of a pass's draw (its culling: ``_cull``)."""
     if state.blend is not None:
         ctx.enable(moderngl.BLEND)
         ctx.blend_func = state.blend
     else:
         ctx.disable(moderngl.BLEND)
     hdr.fbo.depth_mask = state.depth_write
+    if tuple(hdr.fbo.color_mask) != tuple(state.color_mask):
+        # moderngl keeps a framebuffer's colour mask until the framebuffer is used (its depth
+        # mask applies at once): use() it again, the target it already is
+        hdr.fbo.color_mask = state.color_mask
+        hdr.fbo.use()
     ctx.depth_func = state.depth_func
 
 

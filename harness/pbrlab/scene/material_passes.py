@@ -28,11 +28,13 @@ class RenderState:
     """How one draw writes the target: ``blend`` the (source, destination, source alpha,
     destination alpha) GL factors or None (no blending); ``depth_write``; ``depth_func``
     (moderngl's spelling: "<", "<=", ..., "1" always, "0" never); ``cull`` "front", "back",
-    "off", or None for the material's own sidedness (double-sided or blended: none culled)."""
+    "off", or None for the material's own sidedness (double-sided or blended: none culled);
+    ``color_mask`` the (r, g, b, a) channels it writes (alpha: the target's coverage)."""
     blend: tuple | None
     depth_write: bool
     depth_func: str
     cull: str | None = None
+    color_mask: tuple = (True, True, True, True)
 
 
 class Pass(Protocol):

@@ -31,7 +31,7 @@ SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
 # places vertices a few ulp apart (mul(M, v) vs M * v, fused differently), which moves
 # interpolated values by up to ~1e-5 relative (docs/unity.md, "Unity shaders"); bound 1e-4.
 AGREEMENT_BOUND = 1e-4
-# Rendered shaders that draw nothing with their Properties' defaults in the corpus scene, each
+# Rendered shaders that draw no colour with their Properties' defaults in the corpus scene, each
 # as Unity would: a blank pair is checked blank in both languages (and fails once it draws,
 # so this list only shrinks); every other rendered shader must draw something.
 BLANK_BY_DEFAULT = {
@@ -53,6 +53,32 @@ BLANK_BY_DEFAULT = {
         "vertices read from _PositionBuffer (the simulation's render target; default empty): all at one point",
     "public/ronja-tutorials__ShaderTutorials/Assets/038_Dissolve/Dissolve.shader":
         "clip(tex2D(_DissolveTex).r - _DissolveAmount): the texture defaults to black, the amount to 0.5",
+    # black in colour (what a person sees) with their defaults, though they cover the sphere
+    "builtin-2019.4/DefaultResourcesExtra/Compositing.shader":
+        "_AlphaParam * _MainTex + _SecondAlphaParam * _SecondTex: both textures default to black",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-StencilWrite.shader":
+        "writes the stencil; its fragment returns fixed4(0, 0, 0, 0)",
+    "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/SpatialMappingOcclusion.shader":
+        "ColorMask 0 and a fragment returning 0: it occludes, it draws no colour",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth.shader":
+        "ColorMask 0 (ZWrite On): it copies a depth texture into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/Sprites-Mask.shader":
+        "ColorMask 0: a sprite mask writes the stencil only (it drew white while ColorMask was ignored)",
+    "builtin-2019.4/DefaultResourcesExtra/UI/UI-Lit-RefractionDetail.shader":
+        "the refraction mask defaults to white, so the colour is the GrabPass of what lies behind: the "
+        "black background",
+    "public/ronja-tutorials__ShaderTutorials/Assets/006_Transparency/transparent.shader":
+        "col *= _Color, whose default is (0, 0, 0, 1)",
+    "public/ronja-tutorials__ShaderTutorials/Assets/010_Triplanar_Mapping/triplanar_mapping.shader":
+        "col *= _Color, whose default is (0, 0, 0, 1)",
+    "public/ronja-tutorials__ShaderTutorials/Assets/013_CustomSurfaceLighting/CustomLighting.shader":
+        "col *= _Color, whose default is (0, 0, 0, 1)",
+    "public/ronja-tutorials__ShaderTutorials/Assets/020_Inverted_Hull/UnlitOutlines.shader":
+        "col *= _Color and the outline is _OutlineColor, both defaulting to (0, 0, 0, 1)",
+    "public/ronja-tutorials__ShaderTutorials/Assets/040_Halftone_Lighting/HalftoneShading.shader":
+        "col *= _Color, whose default is (0, 0, 0, 1)",
+    "public/ronja-tutorials__ShaderTutorials/Assets/044_SphereTracingShading/SphereTracingShading.shader":
+        "the surface colour is _Color, whose default is (0, 0, 0, 1)",
 }
 
 

@@ -80,27 +80,43 @@ def light_programs(unity_pass, defines: dict) -> list[tuple[dict, bool]]:
     return out
 
 
+# Unity's ColorWriteMask bits (a ColorMask [_Property] of a number): red 8, green 4, blue 2, alpha 1.
+_MASK_BITS = (8, 4, 2, 1)
+
+
+def color_mask(words: str) -> tuple:
+    """ShaderLab's ``ColorMask`` as (r, g, b, a) writes: channel letters (RGB, A, RGBA), 0 (none),
+    or a ColorWriteMask number."""
+    words = words.strip().lower()
+    if words.isdigit():
+        return tuple(bool(int(words) & bit) for bit in _MASK_BITS)
+    if words == "0":
+        return (False, False, False, False)
+    return tuple(c in words for c in "rgba")
+
+
 def pass_state(alpha_mode: str, unity_pass, additive: bool = False) -> RenderState:
     """Blending, depth writes, depth test and culling of one pass of a Unity shader: a surface
     program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
-    pass's from its Blend, ZWrite and ZTest lines; its Cull line for meshes. ``additive``: a
+    pass's from its Blend, ZWrite and ZTest lines; its Cull line for meshes; its ColorMask. ``additive``: a
     ForwardAdd program, added to what the base program drew (Unity: Blend One One, or SrcAlpha
     One when the surface blends; ZWrite Off), the target's alpha kept."""
     state = unity_pass.state
     if additive:
         source = moderngl.SRC_ALPHA if alpha_mode in BLENDED_ALPHA_MODES else moderngl.ONE
         return RenderState(blend=(source, moderngl.ONE, moderngl.ZERO, moderngl.ONE), depth_write=False,
-                           depth_func="<=", cull=state.cull)
+                           depth_func="<=", cull=state.cull, color_mask=color_mask(state.color_mask))
     if unity_pass.kind == "surface":
         blended = alpha_mode_state(alpha_mode, "<=", None if state.zwrite is None else state.zwrite)
-        return RenderState(blend=blended.blend, depth_write=blended.depth_write, depth_func="<=", cull=state.cull)
+        return RenderState(blend=blended.blend, depth_write=blended.depth_write, depth_func="<=", cull=state.cull,
+                           color_mask=color_mask(state.color_mask))
     blend = None
     if state.blend_factors:
         blend = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
         if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
             blend = (*blend[:2], moderngl.ZERO, moderngl.ONE)
     return RenderState(blend=blend, depth_write=True if state.zwrite is None else state.zwrite,
-                       depth_func=_UNITY_DEPTH[state.ztest], cull=state.cull)
+                       depth_func=_UNITY_DEPTH[state.ztest], cull=state.cull, color_mask=color_mask(state.color_mask))
 
 
 class GrabPass:
@@ -140,6 +156,8 @@ class ProgramPass:
         for i, (name, texture) in enumerate(sorted(grabbed.items())):
             texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
             _set(program, name, unit + i)
+            w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab
+            _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate

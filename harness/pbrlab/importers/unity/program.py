@@ -254,15 +254,22 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
-            if _bind_texture(program, name, kind, unit):  # else the compiler dropped the sampler
-                if value.cube:
-                    environment_cube().use(unit)
-                elif value.path is not None:
-                    cache.texture(value.path, value.srgb).use(unit)
-                else:
-                    cache.constant_texture(value.texel).use(unit)
-                unit += 1
+            bound = _bind_texture(program, name, kind, unit)  # False: the compiler dropped the sampler
+            sized = bool(programs.uniforms_named(program, f"{name}_TexelSize"))
+            if bound or sized:
+                texture = (environment_cube() if value.cube else cache.texture(value.path, value.srgb)
+                           if value.path is not None else cache.constant_texture(value.texel))
+                if bound:
+                    texture.use(unit)
+                    unit += 1
+                if sized:  # Unity fills <texture>_TexelSize for every texture: (1/w, 1/h, w, h)
+                    w, h = texture.size[:2]
+                    _bind_vector(program, f"{name}_TexelSize", f"{kind} property {name}'s _TexelSize",
+                                 (1.0 / w, 1.0 / h, float(w), float(h)))
             _bind_vector(program, f"{name}_ST", f"{kind} property {name}'s tiling/offset _ST", value.st)
+            # and <texture>_HDR, DecodeHDR's instructions: the textures here are linear (or float
+            # radiance, the environment's), so the decode is the identity, as unity_SpecCube0_HDR's
+            _bind_vector(program, f"{name}_HDR", f"{kind} property {name}'s _HDR", SPECCUBE_HDR)
         elif kind in ("Color", "Vector"):
             _bind_vector(program, name, f"{kind} property {name}", value)
         else:
