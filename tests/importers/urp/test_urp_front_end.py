@@ -60,3 +60,44 @@ def test_without_dropping_it_the_glsl_port_fails(monkeypatch, tmp_path):
     copy.write_text((SHADERS / "urp_custom_semantic.shader").read_text())
     with pytest.raises(PbrlabError, match="FOG_FACTOR|syntax error"):
         _render(copy, "glsl")
+
+
+INCLUDE_PASS = SHADERS / "include_pass" / "urp_include_pass.shader"
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_fragment_function_in_an_include_reads_as_in_the_program(language):
+    """The pass's functions in an include: FRONT_FACE_TYPE/FRONT_FACE_SEMANTIC read there as in
+    the program (the face reaches it: front, 0.75), another include's int function read into a uint, and
+    Core RP's CreateTangentToWorld (rows T, cross(N, T) * flipSign, N: the bitangent's y is -1
+    for N = z, T = x, flip -1) and URP's CalculateFinalColor (GI + main + additional + vertex
+    lights, times albedo 1, plus emission: 0.5)."""
+    got = _render(INCLUDE_PASS, language)
+    assert (got[..., 3] > 0).all()
+    np.testing.assert_allclose(got[..., :3], np.broadcast_to([0.5, 0.25, 0.75], got[..., :3].shape), atol=1e-6)
+
+
+def test_without_the_spellings_in_includes_the_face_parameter_has_no_value(monkeypatch, tmp_path):
+    """Control: the include's FRONT_FACE_SEMANTIC parameter read as written is a semantic the
+    entry generator has no value for: neither language compiles."""
+    from pbrlab.importers.unity import parse_pass
+    monkeypatch.setattr(parse_pass, "respelled", lambda text, spellings: text)
+    _copy_include_pass(tmp_path)
+    for language in ("glsl", "hlsl"):
+        with pytest.raises(PbrlabError):
+            _render(tmp_path / "urp_include_pass.shader", language)
+
+
+def test_without_other_includes_functions_the_glsl_port_fails(monkeypatch, tmp_path):
+    """Control: without the other includes' prototypes, GetAdditionalLightsCount() has no type
+    and its int reaches a uint unconverted (GLSL 330 refuses)."""
+    from pbrlab.importers.unity import program
+    monkeypatch.setattr(program, "_prototypes", lambda masked: [])
+    _copy_include_pass(tmp_path)
+    with pytest.raises(PbrlabError, match="uint"):
+        _render(tmp_path / "urp_include_pass.shader", "glsl")
+
+
+def _copy_include_pass(folder: Path):
+    for f in INCLUDE_PASS.parent.iterdir():
+        (folder / f.name).write_text(f.read_text())
