@@ -106,27 +106,29 @@ def map_messages(log: str, name: str, include_dirs=()) -> str:
 def _bom_free_search(text: str, include_dirs, tmp: Path) -> list[Path]:
     """The -I directories for glslang, which reads includes itself and fails on a UTF-8
     byte-order mark ("unexpected HASH_TOKEN"). When a file the text includes (recursively,
-    from ``include_dirs``) starts with one, each directory is preceded by a copy, without
-    BOMs, of the included files under it at the same relative paths: every include resolves
-    to the same file as before (a copy's own folder holds its siblings' copies too), minus
-    the mark."""
+    from ``include_dirs``) starts with one, every included file is copied, without BOMs, into
+    a mirror of the file system under ``tmp`` (at its absolute path), and each directory is
+    preceded by its mirror: every include resolves to the same file as before, minus the mark,
+    including one that climbs out of its directory (``../Include/x.hlsl``) and one resolved
+    from the including file's folder (a copy's folder holds its siblings' copies too)."""
     dirs = [Path(d).resolve() for d in include_dirs]
     closure = include_closure(text, dirs)
     if not any(path.read_bytes().startswith(_BOM) for path in closure):
         return dirs
+    mirror = tmp / "bom-free"
+
+    def mirrored(path: Path) -> Path:
+        return mirror.joinpath(path.drive.strip(":\\/") or "root", path.relative_to(path.anchor))
+
+    for path in closure:
+        copy = mirrored(path)
+        copy.parent.mkdir(parents=True, exist_ok=True)
+        data = path.read_bytes()
+        copy.write_bytes(data[len(_BOM):] if data.startswith(_BOM) else data)
     search = []
-    for i, directory in enumerate(dirs):
-        shadow = tmp / f"bom-free-{i}"
-        for path in closure:
-            try:
-                relative = path.relative_to(directory)
-            except ValueError:
-                continue
-            copy = shadow / relative
-            copy.parent.mkdir(parents=True, exist_ok=True)
-            data = path.read_bytes()
-            copy.write_bytes(data[len(_BOM):] if data.startswith(_BOM) else data)
-        search += [shadow, directory]
+    for directory in dirs:
+        mirrored(directory).mkdir(parents=True, exist_ok=True)  # a "../x" from it must resolve
+        search += [mirrored(directory), directory]
     return search
 
 
@@ -144,7 +146,8 @@ def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize:
                *([] if optimize else ["-Od"]), *extra_args, *include_args, src.name, "-o", out.name]
         proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=_TIMEOUT_S)
         if proc.returncode != 0 or not out.is_file():
-            messages = map_messages(proc.stdout + proc.stderr, name, search)
+            log = (proc.stdout + proc.stderr).replace(str(Path(tmp) / "bom-free" / "root"), "")
+            messages = map_messages(log, name, search)  # a BOM-free copy named as its original
             raise ShaderCompileError(f"HLSL failed to compile (glslang):\n{messages}")
         return out.read_bytes()
 

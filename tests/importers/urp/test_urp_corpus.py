@@ -22,12 +22,21 @@ SHADERS = [p.relative_to(ROOT).as_posix() for p in corpus.corpus_shaders(ROOT)]
 # As tests/importers/unity/test_corpus.py: most pairs are bit-identical; the two languages'
 # vertex stages place vertices a few ulp apart, moving interpolated values by ~1e-5 relative.
 AGREEMENT_BOUND = 1e-4
-# Rendered shaders that draw no colour with their Properties' defaults in the corpus scene.
+# Rendered shaders that draw no colour with their Properties' defaults in the corpus scene, each
+# as Unity would (tests/importers/unity/test_corpus.py's rule): checked black in both languages,
+# failing once they draw colour, so this list only shrinks.
 BLANK_BY_DEFAULT = {
     "VKev__Unity-URP-Shaders-Code/Assets/Shaders/Object_Shader/Glow_Shader/URP_Glow.shader":
         "lerp(_BackgroundColor, _CoreColor, ...) * _GlowIntensity: both colours default to (0, 0, 0, 0)",
     "decentraland__unity-renderer/unity-renderer/Assets/Rendering/Shaders/ToonBasicOutline.shader":
         "the outline pass returns _OutlineColor, whose default is (0, 0, 0, 1)",
+    "VKev__Unity-URP-Shaders-Code/Assets/Shaders/Object_Shader/Basic_Shader/BlinnPhong_Shader/URP_BlinnPhong.shader":
+        "Blend [_SrcBlend] [_DstBlend] with both defaults 0: Blend Zero Zero writes 0 (its CustomEditor "
+        "URP_BlinnPhong_Editor sets them in Unity)",
+    "Delt06__urp-toon-shader/Packages/com.deltation.toon-shader/Assets/DELTation/ToonShader/Shaders/InvertedHullOutline.shader":
+        "the outline shell's colour is _Color, whose default is (0, 0, 0, 0): a black shell around the sphere",
+    "VKev__Unity-URP-Shaders-Code/Assets/Shaders/Object_Shader/Toon_Shader/URP_Toon.shader":
+        "_LightMaxIntensity defaults to 0, which scales every toon band: black",
 }
 
 

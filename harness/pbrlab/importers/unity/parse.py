@@ -717,7 +717,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     program, first = layout.program_text(p.program, sub)
     for pattern, replacement in pipeline.spellings:
         program = pattern.sub(replacement, program)
-    vf = parse_pass(program, path, first, p)
+    vf = parse_pass(program, path, first, p, pipeline.spellings)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf

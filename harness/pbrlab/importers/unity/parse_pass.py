@@ -13,7 +13,7 @@ from pathlib import Path
 from . import model as M
 from .conditionals import active_text, defines_of
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, included_text, line_of,
-                          matching_brace, resolve_included, top_level)
+                          matching_brace, resolve_included, respelled, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # Stages pbrlab does not run, named in the refusal.
@@ -105,10 +105,12 @@ def _unresolved_include(program: str, folder: Path):
     return None
 
 
-def parse_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragmentPass:
+def parse_pass(program: str, path: Path, first_line: int, block, spellings=()) -> M.VertexFragmentPass:
+    """``spellings``: the pipeline's (parse.Pipeline.spellings), already applied to ``program``
+    and applied here to the files it includes (the functions and structs they define)."""
     masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
-    everything = masked + "\n" + included_text(program, path.parent)
+    everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
 
     def where(index: int) -> str:

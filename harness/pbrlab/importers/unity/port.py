@@ -44,6 +44,12 @@ _INT = re.compile(r"\b(int|bool|uint)([234])\b")
 # HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry.
 _SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
                        r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)])", re.I)  # Unity: any case
+# Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
+# dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
+# ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
+# ``case X : return;`` is not a declaration).
+_DECLARED_SEMANTIC = re.compile(r"\b((?!case\b)[A-Za-z_]\w*\s+[A-Za-z_]\w*)\s*:\s*"
+                                r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=[;,)])")
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 
@@ -88,6 +94,7 @@ def port_code(code: str) -> str:
     """Pass B on code without comments or strings."""
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
+    code = _DECLARED_SEMANTIC.sub(r"\1", code)
     code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=\{)", r")\1\2", code)  # a function's return semantic
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)

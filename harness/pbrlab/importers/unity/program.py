@@ -32,7 +32,7 @@ from . import generate, port
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
-from .source_text import CGINC, blank_comments, included_text, resolve_included, top_level
+from .source_text import CGINC, blank_comments, included_files, included_text, resolve_included, top_level
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
@@ -75,6 +75,25 @@ def _structs_and_globals(text: str) -> str:
     return "\n".join(_STRUCT.findall(masked) + _GLOBAL_VARIABLE.findall(top_level(masked)))
 
 
+# A function definition's head at brace depth 0 (source_text.top_level blanks the body): its
+# return type, name and parameters, and any return semantic.
+_FUNCTION_HEAD = re.compile(r"(?:^|(?<=[;\s]))((?:inline\s+)?[A-Za-z_]\w*\s+[A-Za-z_]\w*\s*\([^()]*\))"
+                            r"(?:\s*:\s*\w+)?(?=\s*$)", re.M)
+_NOT_A_RETURN_TYPE = {"return", "else", "if", "while", "for", "switch", "define", "undef", "include"}
+
+
+def _prototypes(masked: str) -> list[str]:
+    """``type name(params);`` for every function ``masked`` (comments blanked) defines."""
+    out, outer = [], top_level(masked)
+    for m in _FUNCTION_HEAD.finditer(outer):
+        line_start = outer.rfind("\n", 0, m.start()) + 1
+        head = m.group(1)
+        if outer[line_start:m.start()].lstrip().startswith("#") or head.split()[0] in _NOT_A_RETURN_TYPE:
+            continue
+        out.append(re.sub(r"\s+", " ", re.sub(r"\binline\s+", "", head)) + ";")
+    return out
+
+
 def program_include(shader) -> tuple[str, dict]:
     """(the line that includes the GLSL program, the virtual files it needs): the port of the
     program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
@@ -94,6 +113,16 @@ def program_include(shader) -> tuple[str, dict]:
     # are not (a file's own function, seen twice, would take part in overload resolution)
     srp = getattr(shader, "srp", False)
     context = _structs_and_globals(shader.program + "\n" + included_text(shader.program, shader.path.parent)) if srp else ""
+    # and the functions the other included files define, as prototypes (the type of a call to
+    # a function of another include: int GetAdditionalLightsCount() read into a uint)
+    files = included_files(shader.program, shader.path.parent) if srp else {}
+    prototypes = {key: _prototypes(text) for key, text in files.items()}
+
+    def context_of(key) -> str:
+        if not srp:
+            return context
+        others = [p for other, protos in prototypes.items() if other != key for p in protos]
+        return context + "\n" + "\n".join(dict.fromkeys(others))
 
     def relinked(text: str, where: Path) -> str:
         def relink(m):
@@ -105,7 +134,7 @@ def program_include(shader) -> tuple[str, dict]:
                 names[key] = _port_include(key)
                 body = shaders.strip_bom(target.read_text(encoding="utf-8"))
                 virtual[names[key]] = shaders.VirtualFile(
-                    relinked(port.port_text(body, target.parent, context, srp=srp), target.parent),
+                    relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
                     str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)

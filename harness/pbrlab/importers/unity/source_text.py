@@ -170,6 +170,39 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
                                       + str(exc).split(": ", 1)[1]) from None
 
 
+_DEFINE_LINE = re.compile(r"^[ \t]*#[ \t]*define\b")
+
+
+def respelled(text: str, spellings) -> str:
+    """``text`` with a pipeline's spellings (parse.Pipeline.spellings: ``(pattern, replacement)``)
+    applied on every line but a ``#define``'s (a stand-in's ``#define FRONT_FACE_TYPE bool``
+    stays the definition it is); lines are kept."""
+    if not spellings:
+        return text
+    out = []
+    for line in text.splitlines(keepends=True):
+        if not _DEFINE_LINE.match(line):
+            for pattern, replacement in spellings:
+                line = pattern.sub(replacement, line)
+        out.append(line)
+    return "".join(out)
+
+
+def included_files(program: str, folder: Path, seen=None) -> dict:
+    """{resolved path: text, comments blanked} of the files ``program`` includes (recursively,
+    resolved as ``included_text`` resolves them), in the order ``included_text`` reads them."""
+    seen = {} if seen is None else seen
+    for name in INCLUDE.findall(blank_comments(program)):
+        candidate = resolve_included(name, folder)
+        if candidate is None or candidate.resolve() in seen:
+            continue
+        text = _read_include(candidate)
+        seen[candidate.resolve()] = "" if text is None else blank_comments(text)
+        if text is not None:
+            included_files(text, candidate.parent, seen)
+    return seen
+
+
 def included_text(program: str, folder: Path, seen=None) -> str:
     """The text of the files ``program`` includes (recursively; the shader's folder first, then
     pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a

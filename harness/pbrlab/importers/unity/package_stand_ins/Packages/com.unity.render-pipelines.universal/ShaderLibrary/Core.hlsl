@@ -153,6 +153,13 @@ VertexNormalInputs GetVertexNormalInputs(float3 normalOS, float4 tangentOS) {
     return o;
 }
 
+// The tangent frame as a matrix whose rows are the tangent, the bitangent (the normal crossed
+// with the tangent, its sign the tangent's w: flipSign) and the normal (Core RP's
+// CreateTangentToWorld); TransformTangentToWorld takes it.
+float3x3 CreateTangentToWorld(float3 normal, float3 tangent, float flipSign) {
+    float3 bitangent = cross(normal, tangent) * flipSign;
+    return float3x3(tangent, bitangent, normal);
+}
 // A tangent-space normal to world space through the rows (T, B, N).
 float3 TransformTangentToWorld(float3 dirTS, float3x3 tangentToWorld) { return mul(dirTS, tangentToWorld); }
 // World to tangent space through the rows (T, B, N): the transpose's product.

@@ -349,6 +349,50 @@ float4 UniversalFragmentBlinnPhong(InputData inputData, float3 diffuse, float4 s
                                        float3(0.0, 0.0, 1.0));
 }
 
+// Clustered (Forward+) light lists: none here; the additional lights are one loop over
+// GetAdditionalLightsCount(), lightIndex its counter (LIGHT_LOOP_BEGIN / LIGHT_LOOP_END).
+#define USE_FORWARD_PLUS 0
+#define USE_CLUSTERED_LIGHTING 0
+#define LIGHT_LOOP_BEGIN(lightCount) for (uint lightIndex = 0u; lightIndex < uint(lightCount); lightIndex++) {
+#define LIGHT_LOOP_END }
+
+// The shadow mask a pixel's baked shadows come from: none here (no lightmaps), every channel 1.
+float4 CalculateShadowMask(InputData inputData) { return float4(1.0, 1.0, 1.0, 1.0); }
+
+// A pixel's light by kind, summed by CalculateLightingColor: the global illumination, the main
+// light, the additional lights and the vertex lights, times the albedo, plus the emission.
+struct LightingData {
+    float3 giColor;
+    float3 mainLightColor;
+    float3 additionalLightsColor;
+    float3 vertexLightingColor;
+    float3 emissionColor;
+};
+
+LightingData CreateLightingData(InputData inputData, SurfaceData surfaceData) {
+    LightingData lightingData;
+    lightingData.giColor = inputData.bakedGI;
+    lightingData.mainLightColor = float3(0.0, 0.0, 0.0);
+    lightingData.additionalLightsColor = float3(0.0, 0.0, 0.0);
+    lightingData.vertexLightingColor = float3(0.0, 0.0, 0.0);
+    lightingData.emissionColor = surfaceData.emission;
+    return lightingData;
+}
+
+float3 CalculateLightingColor(LightingData lightingData, float3 albedo) {
+    float3 light = lightingData.giColor + lightingData.mainLightColor + lightingData.additionalLightsColor
+                 + lightingData.vertexLightingColor;
+    return light * albedo + lightingData.emissionColor;
+}
+
+float4 CalculateFinalColor(LightingData lightingData, float alpha) {
+    return float4(CalculateLightingColor(lightingData, float3(1.0, 1.0, 1.0)), alpha);
+}
+
+float4 CalculateFinalColor(LightingData lightingData, float3 albedo, float alpha, float fogCoord) {
+    return float4(CalculateLightingColor(lightingData, albedo), alpha);  // no fog here
+}
+
 // The lit pixel: ambient and reflections, the main light, every additional light, emission.
 float4 UniversalFragmentPBR(InputData inputData, SurfaceData surfaceData) {
     BRDFData brdfData;
