@@ -2,7 +2,7 @@
 //
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
-//           sincos(x, s, c), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
+//           sincos(x, s, c), lit(NdotL, NdotH, m) (HLSL's lighting coefficients), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
 //           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
@@ -65,6 +65,13 @@ vec4 pbr_unity_select(bvec4 c, vec4 a, vec4 b) { return mix(b, a, c); }
 
 // HLSL's sincos(x, out s, out c): both at once.
 #define sincos(x, s, c) { s = sin(x); c = cos(x); }
+
+// HLSL's lit(n.l, n.h, m) (Microsoft's HLSL reference, "lit"): (ambient 1, diffuse n.l where
+// n.l >= 0 else 0, specular (n.h)^m unless n.l < 0 or n.h < 0, then 0, 1).
+vec4 lit(float NdotL, float NdotH, float m) {
+    float specular = (NdotL < 0.0 || NdotH < 0.0) ? 0.0 : pow(NdotH, m);
+    return vec4(1.0, max(NdotL, 0.0), specular, 1.0);
+}
 
 float atan2(float y, float x) { return atan(y, x); }
 vec2 atan2(vec2 y, vec2 x) { return atan(y, x); }

@@ -42,7 +42,7 @@
 //           UNITY_SETUP_INSTANCE_ID, UNITY_TRANSFER_INSTANCE_ID, UNITY_VERTEX_INPUT_INSTANCE_ID,
 //           UNITY_VERTEX_OUTPUT_STEREO, UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO,
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX: no
-//           instancing, one eye); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
+//           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
 //           Unity defines it for its GLSL targets);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
@@ -110,6 +110,7 @@ vec4 _WorldSpaceLightPos0;
 #define UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o)
 #define UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output)
 #define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input)
+#define unity_StereoEyeIndex 0
 #define UNITY_INITIALIZE_OUTPUT(type, name)
 
 // AutoLight.cginc with no shadow keyword (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE) and the

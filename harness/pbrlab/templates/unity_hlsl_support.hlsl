@@ -22,6 +22,13 @@ float2 pbrlab_fmod(float2 x, float2 y) { return x - y * trunc(x / y); }
 float3 pbrlab_fmod(float3 x, float3 y) { return x - y * trunc(x / y); }
 float4 pbrlab_fmod(float4 x, float4 y) { return x - y * trunc(x / y); }
 #define fmod pbrlab_fmod
+// HLSL's lit(n.l, n.h, m) is (1, max(n.l, 0), (n.l < 0 || n.h < 0) ? 0 : pow(n.h, m), 1)
+// (Microsoft's HLSL reference); glslang 11.x lowers its specular term to n.h * m, so the Cg
+// programs call this one instead (GLSL: unity_compat/cg_compat.glsl's lit).
+float4 pbrlab_lit(float n_dot_l, float n_dot_h, float m) {
+    return float4(1.0, max(n_dot_l, 0.0), (n_dot_l < 0.0 || n_dot_h < 0.0) ? 0.0 : pow(n_dot_h, m), 1.0);
+}
+#define lit pbrlab_lit
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,

@@ -60,6 +60,8 @@ BLANK_BY_DEFAULT = {
         "writes the stencil; its fragment returns fixed4(0, 0, 0, 0)",
     "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/SpatialMappingOcclusion.shader":
         "ColorMask 0 and a fragment returning 0: it occludes, it draws no colour",
+    "builtin-2019.4/DefaultResourcesExtra/VideoComposite.shader":
+        "fixed4(tex2D(_MainTex).rgb, ...): _MainTex defaults to black (the video player binds the frame)",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a depth texture into the depth buffer, no colour",
     "builtin-2019.4/DefaultResourcesExtra/Sprites-Mask.shader":

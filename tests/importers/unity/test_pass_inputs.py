@@ -86,3 +86,40 @@ def test_color_mask_words_and_numbers():
     assert color_mask("0") == (False, False, False, False)
     assert color_mask("15") == (True, True, True, True)  # ColorWriteMask.All, as a [_ColorMask] property
     assert color_mask("14") == (True, True, True, False)
+
+
+LIT = """
+Shader "t/lit" {
+    Properties { _NL ("n.l", Float) = 0.5  _NH ("n.h", Float) = 0.5  _M ("m", Float) = 8 }
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        float _NL, _NH, _M;
+        struct v2f { float4 pos : SV_POSITION; };
+        v2f vert(appdata_base v) { v2f o; o.pos = UnityObjectToClipPos(v.vertex); return o; }
+        fixed4 frag(v2f i) : SV_Target { float4 c = lit(_NL, _NH, _M); return float4(c.x, c.y, c.z, c.w * unity_StereoEyeIndex + 1); }
+        ENDCG
+    } }
+}
+"""
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+@pytest.mark.parametrize("nl, nh, m", [(0.5, 0.5, 8.0), (0.7, 0.9, 20.0), (-0.2, 0.9, 4.0), (0.3, -0.1, 2.0)])
+def test_lit_is_hlsls_lighting_coefficients(tmp_path, language, nl, nh, m):
+    """HLSL's lit(n.l, n.h, m) = (1, max(n.l, 0), n.l < 0 or n.h < 0 ? 0 : (n.h)^m, 1) in both
+    languages (glslang lowers the specular to n.h * m: 4 instead of 0.0039 at 0.5, 8, the
+    control); unity_StereoEyeIndex is 0 (mono)."""
+    shader = tmp_path / "lit.shader"
+    shader.write_text(LIT)
+    data = corpus.scene_for(shader)
+    data["materials"]["m"]["properties"] = {"_NL": nl, "_NH": nh, "_M": m}
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear
+    covered = image[..., 3] > 0
+    assert covered.mean() > 0.3
+    want = np.array([1.0, max(nl, 0.0), 0.0 if nl < 0 or nh < 0 else nh ** m])
+    np.testing.assert_allclose(image[covered][:, :3], np.broadcast_to(want, (int(covered.sum()), 3)),
+                               rtol=1e-6, atol=1e-7)  # one pow in float32: a few ulp
+    assert abs(nh * m - want[2]) > 1e-3 or nl < 0 or nh < 0  # the lowering glslang makes would fail here
