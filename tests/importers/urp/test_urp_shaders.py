@@ -128,3 +128,31 @@ def test_a_urp_pass_the_harness_does_not_draw_is_noted_and_a_missing_include_nam
     with pytest.warns(UserWarning, match="ShadowCaster.*skipped: no shadow maps here"):
         with pytest.raises(PbrlabError, match=r"missing\.shader:\d+: cannot find include .*NoSuchFile\.hlsl"):
             render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path))
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_universal_fragment_blinn_phong_matches_its_float64_transcription(language):
+    """SimpleLit's pixel (UniversalFragmentBlinnPhong, _SPECULAR_COLOR: Lambert plus a highlight
+    of exponent exp2(10 smoothness + 1)) equals urp_brdf.blinn_phong_light at the inputs the
+    shader read. Bound per value, relative: 64 float32 ulp for the chain, plus the exponent's
+    amplification of NdotH's error (NdotH^e moves by e * dNdotH / NdotH, dNdotH within 8 ulp:
+    a normalize and a dot) on the highlight's share of the value."""
+    uv = render_scene(parse_scene(_grid_scene(SHADERS / "urp_uv.shader"), "t", SHADERS), language=language).linear
+    lit = render_scene(parse_scene(_grid_scene(SHADERS / "urp_blinn_phong_grid.shader"), "t", SHADERS),
+                       language=language).linear
+    u, s = uv[..., 0].astype(np.float64), uv[..., 1].astype(np.float64)
+    angle = (u * 2.0 - 1.0) * 1.4
+    v = np.stack([np.sin(angle), np.zeros_like(angle), np.cos(angle)], axis=-1)
+    n = np.broadcast_to([0.0, 0.0, 1.0], v.shape)
+    l = np.broadcast_to(-LIGHT_TO / np.linalg.norm(LIGHT_TO), v.shape)
+    albedo = np.broadcast_to([0.8, 0.3, 0.2], v.shape)
+    specular = np.broadcast_to([0.5, 0.5, 0.5], v.shape)
+    want = urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, LIGHT_RADIANCE)
+    diffuse_only = urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, LIGHT_RADIANCE, highlights=False)
+    exponent = np.exp2(10.0 * s + 1.0)
+    share = 1.0 - diffuse_only / np.maximum(want, 1e-30)
+    bound = 64 * F32_EPS + (exponent * 8 * F32_EPS)[..., None] * share
+    got = lit[..., :3].astype(np.float64)
+    rel = np.abs(got - want) / np.maximum(np.abs(want), 1e-6)
+    assert not (rel > bound).any(), f"{int((rel > bound).sum())} values over the bound; worst {rel.max():.3g}"
+    assert np.ptp(want[..., 0]) > 0.1 and (share > 0.5).any()  # the grid varies and shows highlights

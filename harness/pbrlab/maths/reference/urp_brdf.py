@@ -88,3 +88,19 @@ def global_illumination(data, baked_gi, reflected, occlusion, n, v):
     NoV = _dot(n, v)
     c = np.asarray(baked_gi, np.float64) * data["diffuse"] + np.asarray(reflected, np.float64) * environment_specular(data, NoV)
     return c * np.asarray(occlusion, np.float64)[..., None]
+
+
+def blinn_phong_light(albedo, specular, smoothness, n, l, v, light_color, attenuation=1.0, highlights=True):
+    """SimpleLit's light (URP's CalculateBlinnPhong): Lambert's light_color attenuation NdotL
+    times the albedo, plus, where the material has highlights (_SPECULAR_COLOR or
+    _SPECGLOSSMAP), light_color attenuation specular NdotH^exponent with the exponent
+    exp2(10 smoothness + 1) and h = normalize(l + v)."""
+    color = np.asarray(light_color, np.float64) * np.asarray(attenuation, np.float64)[..., None]
+    NdotL = np.clip(_dot(n, l), 0.0, 1.0)
+    out = color * NdotL[..., None] * np.asarray(albedo, np.float64)
+    if highlights:
+        h = _normalize(np.asarray(l, np.float64) + np.asarray(v, np.float64))
+        NdotH = np.clip(_dot(n, h), 0.0, 1.0)
+        exponent = np.exp2(10.0 * np.asarray(smoothness, np.float64) + 1.0)
+        out = out + color * np.asarray(specular, np.float64) * (NdotH ** exponent)[..., None]
+    return out
