@@ -29,7 +29,7 @@ def run(args) -> int:
     render = tuple(dict.fromkeys(["pbrlab", *args.render]))
     rows = benchmark.run(keys=args.scene or None, scale=args.scale, render=render,
                          update_references=args.update_references, out=Path(args.out),
-                         render_block={"antialias": args.antialias} if args.antialias else None,
+                         render_block={**benchmark.PBRLAB_RENDER, "antialias": args.antialias},
                          samples=args.samples, log=console.note)
     summary = benchmark.summary(rows)
     failures = [r.key for r in rows if r.bound_db() is not None and r.scores.get("pbrlab", -1e9) > r.bound_db()]
@@ -61,6 +61,7 @@ def register(sub, common):
     p.add_argument("--scale", type=float, default=0.25,
                    help="image size over the protocol's (default 0.25, the committed references')")
     p.add_argument("--samples", type=int, default=256, help="Cycles samples per pixel (default 256)")
-    p.add_argument("--antialias", type=int, default=None, help="pbrlab's samples per pixel (render block)")
+    p.add_argument("--antialias", type=int, default=4,
+                   help="pbrlab's samples per pixel (the render block's antialias; default 4, 1 = off)")
     p.add_argument("--out", default="out/fidelity", help="output folder (default: out/fidelity)")
     p.set_defaults(run=run)

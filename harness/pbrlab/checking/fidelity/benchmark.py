@@ -40,6 +40,9 @@ NOISE = "cycles_seed1"   # the second Cycles render: the reference's own noise
 COMMITTED_SCALE = 0.25   # the committed references' size: a quarter of the protocol's (768 -> 192)
 SAMPLES = 256            # Cycles samples per pixel of the committed references
 DENOISE = True
+# pbrlab's render block in the benchmark: 4x multisampling (docs/scenes.md, "Anti-aliasing"),
+# as model-viewer's canvas and three.js's renderer antialias; Cycles filters every pixel
+PBRLAB_RENDER = {"antialias": 4}
 
 
 @dataclass
@@ -80,7 +83,7 @@ def _render_display(renderer: str, view: dict, render_block: dict, out: Path | N
 
 
 def run(scenarios=None, *, keys=None, scale: float = COMMITTED_SCALE, render=("pbrlab",),
-        update_references: bool = False, out: Path | None = None, render_block: dict | None = None,
+        update_references: bool = False, out: Path | None = None, render_block: dict | None = PBRLAB_RENDER,
         samples: int = SAMPLES, references: Path = REFERENCES_DIR, log=print) -> list[Row]:
     """Score every row. ``render``: the renderers to run now (others are read from
     ``references``); ``update_references``: write what was rendered (all but pbrlab) there."""
