@@ -16,7 +16,8 @@ irradiance of the EXR along the normal over pi (an albedo-1 Lambertian surface),
 the EXR averaged down to 128 x 64 texels; the peer's F0 = 0.04 specular and its own diffuse
 model make this an approximation of a few per cent. Reported: the median and 99th percentile
 over covered pixels (the analytic disc less its outer 2 pixels) of the relative difference
-|peer - ref|_1 / |ref|_1 (RGB), the ratio of the means over the disc, and, for the mirror
+|peer - ref|_1 / |ref|_1 (RGB), the median of the per-pixel ratio peer / ref (RGB sums: the
+exposure, robust to a sun the peer blurs), the ratio of the means over the disc, and, for the mirror
 sphere, the environment turn (about +Y, and with u or v mirrored) that would fit the peer
 best: it must come out at 0 degrees, unmirrored, for the peer to see pbrlab's sky.
 
@@ -180,6 +181,8 @@ def compare(env, spec, image, material):
         ref = irradiance_over_pi(env, normals)
     result["median_rel"], result["p99_rel"] = relative_stats(peer, ref)
     result["mean_ratio_rgb"] = [float(x) for x in peer.mean(0) / ref.mean(0)]
+    # exposure, robust to a sun that the peer blurs: the median of per-pixel RGB-sum ratios
+    result["median_ratio"] = float(np.median(peer.sum(-1) / np.maximum(ref.sum(-1), 1e-12)))
     return result
 
 
@@ -223,6 +226,7 @@ def main(argv=None):
             report["renders"][name] = stats
             fits = stats.get("best_fits", [{}])[0]
             print(f"{name:36s} median {stats['median_rel']:.4f}  p99 {stats['p99_rel']:.4f}  "
+                  f"median ratio {stats['median_ratio']:.4f}  "
                   f"mean ratio {' '.join(f'{r:.4f}' for r in stats['mean_ratio_rgb'])}"
                   + (f"  best fit: turn {fits['turn_deg']} mirror_u {fits['mirror_u']} flip_v {fits['flip_v']}"
                      if fits else ""), flush=True)
