@@ -25,6 +25,13 @@ best: it must come out at 0 degrees, unmirrored, for the peer to see pbrlab's sk
     /work/main/.venv/bin/python tools/threejs_gltf/check_orientation.py --peer sample_viewer \
         --environment /work/fidelity_staging/sunrise.exr --size 128 --out /tmp/orientation
 
+Measured (sunrise.exr, 96 x 96, SwiftShader; median / p99 relative difference, median ratio):
+  three.js r187, turn -90 deg:   mirror 0.052/1.15/1.008 (+Z), 0.047/1.25/1.004 (+X),
+      0.023/0.90/1.004 (top); diffuse 0.017/0.13/1.015, 0.003/0.22/1.003, 0.034/0.26/1.034
+  gltf-viewer 1.1.0, 90 deg:     mirror 0.020/0.73/0.996, 0.016/0.77/0.996, 0.008/0.33/0.996;
+      diffuse 0.067/0.20/0.977, 0.042/0.37/1.037, 0.068/0.23/0.990 (Lambertian 2048 samples)
+  best-fitting extra turn for every mirror view of both: 0 deg, unmirrored.
+
 The .hdr twin the Sample Viewer reads is the EXR's path with the suffix .hdr (the view spec's
 environment_hdr). Needs numpy, OpenImageIO, node and the peers' node_modules.
 """
