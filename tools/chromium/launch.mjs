@@ -61,6 +61,10 @@ export async function runPage(chromium, { resolveFile, transform = null, page: p
     await page.waitForFunction(() => window.pageReady === true, null, { timeout: PAGE_READY_TIMEOUT_MS });
     const result = await fn(page, base);
     return { result, messages };
+  } catch (error) {
+    // the page's own messages (a module that failed to load, an exception) say why
+    if (messages.length) error.message += `\npage messages:\n${messages.join("\n")}`;
+    throw error;
   } finally {
     if (browser) await browser.close();
     server.close();

@@ -6,13 +6,27 @@
 //
 // SPEC.json: {"gltf": "/abs/model.gltf", "size": [w, h],
 //             "camera": {"cameraToWorld": [16 numbers, column-major], "yfovRad": r,
-//                        "znear": n, "zfar": f}  or  {"index": glTF camera index},
+//                        "znear": n, "zfar": f}  or  {"index": glTF camera index}
+//                       or the fidelity benchmark's view spec form (/work/fidelity_spec.md)
+//                        {"eye": [x, y, z], "target": [x, y, z], "up": [x, y, z],
+//                         "yfov_deg": d, "znear": n, "zfar": f},
 //             "environment": "/abs/sky.hdr" or null (punctual lights only),
-//             "environmentIntensity": 1, "environmentRotationDeg": 90}
+//             "environment_hdr": "/abs/sky.hdr" (the view spec's .hdr twin: read instead of
+//                        "environment", which is then the spec's .exr),
+//             "environmentIntensity": 1, "environmentRotationDeg": 90,
+//             "msaa": 0 (or 4: the float target multisampled and resolved),
+//             "unpremultiply": false (true: colour divided by alpha where 0 < alpha),
+//             "iblSampler": {"lambertianSampleCount": 2048, ...} (see IBL_SAMPLER_SETTINGS)}
+// Defaults: environmentRotationDeg 90 (matches pbrlab's equirect convention, checked by
+// tools/threejs_gltf/check_orientation.py), msaa 0, unpremultiply true for a view spec camera
+// (the benchmark's output: colour not premultiplied) and false otherwise (as before);
+// iblSampler: the lowered settings below, with a view spec camera also VIEW_SPEC_IBL_SAMPLER.
 // Writes OUT.f32 (float32 RGBA, rows top to bottom, linear radiance before tonemap and
-// encode; alpha 0 where no surface), OUT.png (8-bit, IEC 61966-2-1 sRGB encode of the
-// clamped linear values, for looking at) and OUT.json (size, WebGL renderer, timings).
+// encode; alpha 0 where no surface; colour as the viewer blends it, i.e. premultiplied by
+// alpha, unless unpremultiply), OUT.png (8-bit, IEC 61966-2-1 sRGB encode of the clamped
+// linear values, for looking at) and OUT.json (size, WebGL renderer, timings).
 // Chromium's start-up and the page's server: tools/chromium/launch.mjs.
+import { readFileSync } from "node:fs";
 import { writeFile } from "node:fs/promises";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -38,9 +52,32 @@ const IBL_SAMPLER_SETTINGS = [
   ["this.lutResolution = 1024;", "this.lutResolution = 128;"],
 ];
 const VIEWER_MODULE = "gltf-viewer.module.js";
+const VIEWER_VERSION = JSON.parse(readFileSync(join(HERE, "node_modules", "@khronosgroup", "gltf-viewer", "package.json"), "utf8")).version;
+// The viewer's environment turn (renderingParameters.environmentRotation, degrees) at which it
+// sees pbrlab's equirect sky (harness/pbrlab/scene/environment.py); the viewer's own default.
+const ENVIRONMENT_ROTATION_DEG = 90.0;
 
-function patchedViewer(text) {
-  for (const [from, to] of IBL_SAMPLER_SETTINGS) {
+// spec.iblSampler: {"textureSize", "ggxSampleCount", "lambertianSampleCount",
+// "sheenSamplCount", "lutResolution"} overrides the lowered values (the viewer's own
+// defaults: 256, 1024, 2048, 64, 1024).
+function iblSettings(overrides = {}) {
+  const known = IBL_SAMPLER_SETTINGS.map(([from]) => from.match(/^this\.(\w+) =/)[1]);
+  for (const [key, value] of Object.entries(overrides))
+    if (!known.includes(key) || !Number.isInteger(value) || value <= 0)
+      throw new Error(`spec.iblSampler.${key}: expected one of ${known.join(", ")} with a positive integer`);
+  return IBL_SAMPLER_SETTINGS.map(([from, to], i) =>
+    [from, overrides[known[i]] === undefined ? to : `this.${known[i]} = ${overrides[known[i]]};`]);
+}
+
+// For the fidelity benchmark's view spec: the viewer's own Lambertian sample count. With 256,
+// an environment with a small bright sun (/work/fidelity_staging/sunrise.exr, peak 34560)
+// leaves a white diffuse sphere 24 % (median) off its irradiance / pi, and 55 % (red mean)
+// from +X; with 2048 it is 4 % (the viewer's full defaults: 3 %), at 35 s instead of 10 s a
+// render on two shared cores (the full defaults: 150 s). tools/threejs_gltf/check_orientation.py.
+const VIEW_SPEC_IBL_SAMPLER = { lambertianSampleCount: 2048 };
+
+function patchedViewer(text, settings) {
+  for (const [from, to] of settings) {
     const count = text.split(from).length - 1;
     if (count !== 1) throw new Error(`${VIEWER_MODULE}: expected "${from}" once, found it ${count} times`);
     text = text.replace(from, to);
@@ -59,6 +96,40 @@ function servedFile(path, allowedRoots) {
   return null;
 }
 
+// The view spec's camera (eye, target, up: glTF coordinates) as the viewer's user camera:
+// its camera-to-world matrix, column-major, with the basis of three.js's lookAt and of
+// harness/pbrlab/checking/sample_viewer.py camera_spec (x = forward x up, y = x x forward,
+// z = -forward), and the field of view in radians.
+function cameraFromViewSpec(c) {
+  for (const key of ["eye", "target", "up"])
+    if (!Array.isArray(c[key]) || c[key].length !== 3) throw new Error(`spec.camera.${key} must be [x, y, z]`);
+  for (const key of ["yfov_deg", "znear", "zfar"])
+    if (typeof c[key] !== "number" || !(c[key] > 0)) throw new Error(`spec.camera.${key} must be a positive number`);
+  const sub = (a, b) => a.map((x, i) => x - b[i]);
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const unit = (a) => {
+    const n = Math.hypot(...a);
+    if (!(n > 0)) throw new Error("spec.camera: eye equals target, or up is parallel to the view direction");
+    return a.map((x) => x / n);
+  };
+  const forward = unit(sub(c.target, c.eye));
+  const right = unit(cross(forward, c.up));
+  const up = cross(right, forward);
+  return { cameraToWorld: [...right, 0, ...up, 0, ...forward.map((x) => -x), 0, ...c.eye, 1],
+           yfovRad: c.yfov_deg * Math.PI / 180, znear: c.znear, zfar: c.zfar };
+}
+
+function unpremultiply(rows) {
+  for (let i = 0; i < rows.length; i += 4) {
+    const a = rows[i + 3];
+    if (a > 0) {
+      rows[i] /= a;
+      rows[i + 1] /= a;
+      rows[i + 2] /= a;
+    }
+  }
+}
+
 function srgb8(linear, width, height) {
   const out = new Uint8Array(width * height * 4);
   for (let i = 0; i < linear.length; i++) {
@@ -69,14 +140,24 @@ function srgb8(linear, width, height) {
   return out;
 }
 
-async function main(spec, outPrefix) {
+async function main(given, outPrefix) {
+  const viewSpec = given.camera && given.camera.eye !== undefined;
+  const environment = given.environment_hdr ?? given.environment ?? null;
+  if (environment && !/\.hdr$/i.test(environment))
+    throw new Error(`${environment}: the sample viewer reads Radiance .hdr environments (the view spec's environment_hdr)`);
+  const spec = { ...given, environment,
+                 camera: viewSpec ? cameraFromViewSpec(given.camera) : given.camera,
+                 environmentRotationDeg: given.environmentRotationDeg ?? ENVIRONMENT_ROTATION_DEG,
+                 msaa: given.msaa ?? 0 };
+  const straight = given.unpremultiply ?? viewSpec;
+  const settings = iblSettings(viewSpec ? { ...VIEW_SPEC_IBL_SAMPLER, ...given.iblSampler } : given.iblSampler);
   const t0 = Date.now();
   const roots = [dirname(resolve(spec.gltf))];
   if (spec.environment) roots.push(dirname(resolve(spec.environment)));
   let t1 = t0;
   const { result, messages } = await runPage(chromium, {
     resolveFile: (path) => servedFile(path, roots),
-    transform: (file, body) => (file === join(VIEWER_DIST, VIEWER_MODULE) ? patchedViewer(body.toString("utf8")) : body),
+    transform: (file, body) => (file === join(VIEWER_DIST, VIEWER_MODULE) ? patchedViewer(body.toString("utf8"), settings) : body),
     page: "/page/index.html",
   }, async (page, base) => {
     t1 = Date.now();
@@ -87,12 +168,18 @@ async function main(spec, outPrefix) {
   const t2 = Date.now();
   const [width, height] = spec.size;
   const rows = rowsTopDown(result.pixels, width, height);
+  if (straight) unpremultiply(rows);
   await writeFile(`${outPrefix}.f32`, Buffer.from(rows.buffer));
   await writeFile(`${outPrefix}.png`, encode({ width, height, data: srgb8(rows, width, height), channels: 4 }));
   await writeFile(`${outPrefix}.json`, JSON.stringify({
-    size: [width, height], renderer: result.renderer, version: result.version, messages,
+    size: [width, height], renderer: result.renderer, version: `gltf-viewer ${VIEWER_VERSION}`,
+    webgl_version: result.version, msaa: { ...result.msaa, requested: spec.msaa },
+    alpha: straight ? "coverage; colour unpremultiplied" : "coverage; colour premultiplied (as blended)",
+    environment_rotation_deg: spec.environmentRotationDeg,
+    ibl_sampler: Object.fromEntries(settings.map(([, to]) => to.match(/^this\.(\w+) = (\d+);$/).slice(1, 3))), messages,
     page_seconds: result.seconds,
-    seconds: { startup: (t1 - t0) / 1000, render: (t2 - t1) / 1000, total: (Date.now() - t0) / 1000 },
+    seconds: (Date.now() - t0) / 1000,
+    seconds_parts: { startup: (t1 - t0) / 1000, render: (t2 - t1) / 1000 },
   }, null, 1));
 }
 

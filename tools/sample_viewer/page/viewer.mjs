@@ -3,8 +3,8 @@
 //
 // Two hooks on the WebGL2 context, both outside the viewer's code:
 //  * the default framebuffer (null) is redirected to an RGBA32F framebuffer of the
-//    render's size, so what the viewer draws "to the canvas" is kept in float32 and
-//    without the canvas' multisampling;
+//    render's size, so what the viewer draws "to the canvas" is kept in float32, without
+//    multisampling or, with spec.msaa = N, multisampled N times and resolved by a blit;
 //  * every shader with a LINEAR_OUTPUT branch (the viewer's pbr and environment shaders)
 //    is compiled with LINEAR_OUTPUT defined: the viewer's own switch, used for its
 //    transmission pass, which writes the shaded colour without u_Exposure, tonemap and its
@@ -16,27 +16,55 @@
 // blended surfaces lie over transparent black, as pbrlab's do.
 import { GltfState, GltfView } from "/viewer/gltf-viewer.module.js";
 
-function linearTarget(gl, width, height) {
-  if (!gl.getExtension("EXT_color_buffer_float")) throw new Error("EXT_color_buffer_float is missing");
-  gl.getExtension("EXT_float_blend");  // blending into RGBA32F (BLEND materials)
+function floatRenderbuffer(gl, samples, format, width, height) {
+  const buffer = gl.createRenderbuffer();
+  gl.bindRenderbuffer(gl.RENDERBUFFER, buffer);
+  if (samples > 0) gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, format, width, height);
+  else gl.renderbufferStorage(gl.RENDERBUFFER, format, width, height);
+  return buffer;
+}
+
+function framebufferOf(gl, color, depth) {
   const fbo = gl.createFramebuffer();
-  const color = gl.createRenderbuffer();
-  gl.bindRenderbuffer(gl.RENDERBUFFER, color);
-  gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA32F, width, height);
-  const depth = gl.createRenderbuffer();
-  gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-  gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
   gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
   gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, color);
-  gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+  if (depth) gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
   const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
   if (status !== gl.FRAMEBUFFER_COMPLETE) throw new Error(`float framebuffer incomplete (0x${status.toString(16)})`);
+  return fbo;
+}
+
+// samples > 0: the redirected framebuffer is multisampled (renderbufferStorageMultisample,
+// RGBA32F and DEPTH_COMPONENT24) and resolve() blits it into a single-sample RGBA32F one,
+// as a multisampled canvas is resolved. Returns {target: what the default framebuffer
+// stands for, resolve: () => the framebuffer to read}.
+function linearTarget(gl, width, height, samples) {
+  if (!gl.getExtension("EXT_color_buffer_float")) throw new Error("EXT_color_buffer_float is missing");
+  gl.getExtension("EXT_float_blend");  // blending into RGBA32F (BLEND materials)
+  if (samples > 0) {
+    const offered = Array.from(gl.getInternalformatParameter(gl.RENDERBUFFER, gl.RGBA32F, gl.SAMPLES) || []);
+    if (!offered.includes(samples))
+      throw new Error(`msaa ${samples}: this WebGL implementation offers RGBA32F renderbuffers with ${JSON.stringify(offered)} samples`);
+  }
+  const fbo = framebufferOf(gl, floatRenderbuffer(gl, samples, gl.RGBA32F, width, height),
+                            floatRenderbuffer(gl, samples, gl.DEPTH_COMPONENT24, width, height));
+  const resolved = samples > 0 ? framebufferOf(gl, floatRenderbuffer(gl, 0, gl.RGBA32F, width, height), null) : fbo;
   const bind = gl.bindFramebuffer.bind(gl);
   gl.bindFramebuffer = (target, framebuffer) => bind(target, framebuffer === null ? fbo : framebuffer);
   const source = gl.shaderSource.bind(gl);
   gl.shaderSource = (shader, text) => source(shader, text.includes("LINEAR_OUTPUT")
     ? text.replace("#version 300 es\n", "#version 300 es\n#define LINEAR_OUTPUT 1\n") : text);
-  return fbo;
+  const resolve = () => {
+    if (resolved !== fbo) {
+      bind(gl.READ_FRAMEBUFFER, fbo);
+      bind(gl.DRAW_FRAMEBUFFER, resolved);
+      gl.disable(gl.SCISSOR_TEST);
+      gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    }
+    bind(gl.FRAMEBUFFER, resolved);
+    return resolved;
+  };
+  return { target: fbo, resolve };
 }
 
 // The viewer's EnvironmentRenderer (created by the renderer's first init) draws the
@@ -69,7 +97,7 @@ function toBase64(bytes) {
 }
 
 // spec: {gltf: url, environment: url | null, environmentIntensity, environmentRotationDeg,
-//        size: [w, h], camera: {cameraToWorld: 16 numbers column-major, yfovRad, znear, zfar}
+//        size: [w, h], msaa: samples (0: none), camera: {cameraToWorld: 16 numbers column-major, yfovRad, znear, zfar}
 //        | {index: glTF camera index}}
 window.renderGltf = async (spec) => {
   const [width, height] = spec.size;
@@ -78,7 +106,7 @@ window.renderGltf = async (spec) => {
   canvas.height = height;
   const gl = canvas.getContext("webgl2", { antialias: false, alpha: true, premultipliedAlpha: false });
   if (!gl) throw new Error("no WebGL2 context (run chromium with --use-angle=swiftshader --enable-unsafe-swiftshader)");
-  const fbo = linearTarget(gl, width, height);
+  const { target: fbo, resolve } = linearTarget(gl, width, height, spec.msaa ?? 0);
   const view = new GltfView(gl);
   const checkBackgroundHook = backgroundInCopyOnly(gl, view.renderer, fbo);
   const state = view.createState();
@@ -124,14 +152,15 @@ window.renderGltf = async (spec) => {
   }
   view.renderFrame(state, width, height);
   checkBackgroundHook();
-  gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+  resolve();
   const pixels = new Float32Array(width * height * 4);
   gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, pixels);
   const t3 = performance.now();
   const error = gl.getError();
   if (error !== gl.NO_ERROR) throw new Error(`WebGL error 0x${error.toString(16)} after the render`);
   return {
-    renderer: gl.getParameter(gl.RENDERER), version: gl.getParameter(gl.VERSION),
+    renderer: gl.getParameter(gl.getExtension("WEBGL_debug_renderer_info")?.UNMASKED_RENDERER_WEBGL ?? gl.RENDERER), version: gl.getParameter(gl.VERSION),
+    msaa: { rgba32f_sample_counts_offered: Array.from(gl.getInternalformatParameter(gl.RENDERBUFFER, gl.RGBA32F, gl.SAMPLES) || []) },
     pixels: toBase64(new Uint8Array(pixels.buffer)),
     seconds: { gltf: (t1 - t0) / 1000, environment: (t2 - t1) / 1000, frame: (t3 - t2) / 1000 },
   };
