@@ -1,6 +1,6 @@
 """Path-traced reference render of one fidelity "view spec" with Blender Cycles (CPU).
 
-    /work/bpyvenv/bin/python tools/cycles/render.py SPEC.json OUT [--threads N]
+    /work/bpyvenv/bin/python tools/cycles/render.py SPEC.json OUT [--threads N] [--set KEY=VALUE ...]
 
 writes OUT.f32 (float32 RGBA, rows top to bottom, linear scene radiance, PREMULTIPLIED
 alpha: the colour of a pixel is the radiance it receives, already weighted by its
@@ -162,7 +162,30 @@ LIGHT_PATHS = {
 }
 
 
-def _build_scene(bpy, spec: dict) -> None:
+def parse_overrides(pairs: list[str]) -> dict:
+    """--set KEY=VALUE for the LIGHT_PATHS settings (for noise studies); recorded in OUT.json."""
+    overrides = {}
+    for pair in pairs:
+        key, sep, text = pair.partition("=")
+        if not sep or key not in LIGHT_PATHS:
+            raise SpecError(f"--set {pair!r}: expected KEY=VALUE with KEY one of {', '.join(LIGHT_PATHS)}")
+        kind = type(LIGHT_PATHS[key])
+        try:
+            if kind is bool:
+                if text.lower() not in ("true", "false", "1", "0"):
+                    raise ValueError
+                value = text.lower() in ("true", "1")
+            else:
+                value = kind(text)
+                if value < 0:
+                    raise ValueError
+        except ValueError:
+            raise SpecError(f"--set {pair!r}: {key} takes a non-negative {kind.__name__}") from None
+        overrides[key] = value
+    return overrides
+
+
+def _build_scene(bpy, spec: dict, light_paths: dict) -> None:
     from mathutils import Matrix, Vector
 
     bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -216,7 +239,7 @@ def _build_scene(bpy, spec: dict) -> None:
         env.image.colorspace_settings.name = "Linear Rec.709"  # the EXR holds linear Rec.709 radiance
         env.image.reload()
         if env.image.size[0] == 0:
-            raise RuntimeError("no pixels")
+            raise RuntimeError("not an image Blender can read")
     except RuntimeError as exc:
         raise SpecError(f"Blender cannot read the environment {spec['environment']}: {exc}") from None
     env.projection = "EQUIRECTANGULAR"
@@ -247,7 +270,7 @@ def _build_scene(bpy, spec: dict) -> None:
     cycles.film_exposure = 1.0
     cycles.pixel_filter_type = "BLACKMAN_HARRIS"  # Cycles' default pixel filter, the protocol's
     cycles.filter_width = 1.5
-    for key, value in LIGHT_PATHS.items():
+    for key, value in light_paths.items():
         setattr(cycles, key, value)
     cycles.use_denoising = spec["denoise"]
     if spec["denoise"]:
@@ -297,6 +320,13 @@ def _render_to_array(bpy, threads: int | None) -> tuple[np.ndarray, int]:
 def main(argv: list[str]) -> int:
     args = list(argv)
     threads = None
+    set_pairs = []
+    while "--set" in args:
+        i = args.index("--set")
+        if i + 1 >= len(args):
+            _fail("--set needs KEY=VALUE")
+        set_pairs.append(args[i + 1])
+        del args[i:i + 2]
     if "--threads" in args:
         i = args.index("--threads")
         try:
@@ -307,7 +337,7 @@ def main(argv: list[str]) -> int:
             _fail("--threads needs a positive integer")
         del args[i:i + 2]
     if len(args) != 2:
-        _fail("usage: render.py SPEC.json OUT [--threads N]  (writes OUT.f32 and OUT.json)")
+        _fail("usage: render.py SPEC.json OUT [--threads N] [--set KEY=VALUE ...]  (writes OUT.f32 and OUT.json)")
     spec_path, out = Path(args[0]), args[1]
     if out.endswith(".f32"):
         out = out[:-4]
@@ -318,6 +348,7 @@ def main(argv: list[str]) -> int:
         _fail(f"OUT.json would overwrite the view spec {spec_path}: choose another OUT")
     try:
         spec = read_spec(spec_path)
+        light_paths = {**LIGHT_PATHS, **parse_overrides(set_pairs)}
     except SpecError as exc:
         _fail(str(exc))
 
@@ -328,7 +359,7 @@ def main(argv: list[str]) -> int:
 
     wall0, cpu0 = time.perf_counter(), resource.getrusage(resource.RUSAGE_SELF)
     try:
-        _build_scene(bpy, spec)
+        _build_scene(bpy, spec, light_paths)
     except SpecError as exc:
         _fail(str(exc))
     wall1 = time.perf_counter()
@@ -358,7 +389,7 @@ def main(argv: list[str]) -> int:
                   "(colour already weighted by coverage), alpha = coverage",
         "pixel_filter": f"{cycles.pixel_filter_type} {cycles.filter_width} px",
         "adaptive_sampling": False,
-        "light_paths": LIGHT_PATHS,
+        "light_paths": light_paths,
         "environment_mapping": "Mapping POINT rotation (0, 0, 90 deg) before Environment Texture: "
                                "pbrlab's equirect convention",
         "gltf": str(spec["gltf"]),
