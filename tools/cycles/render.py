@@ -17,8 +17,8 @@ Conventions (why each setting is what it is):
 - glTF is +Y up, Blender +Z up; Blender's glTF importer converts (x, y, z)_gltf to
   (x, -z, y)_blender (the importer's Yup2Zup conversion), and so does this script for the
   camera.
-- Environment: Cycles' equirectangular lookup (intern/cycles/kernel/geom/... / util
-  "direction_to_equirectangular": range (-2pi, pi, -pi, pi)) is
+- Environment: Cycles' equirectangular lookup (direction_to_equirectangular in Blender's
+  intern/cycles/kernel/camera/projection.h: range (-2pi, pi, -pi, pi)) is
   u = 0.5 - atan2(d.y, d.x) / (2 pi), v_from_top = acos(d.z) / pi, in Blender axes.
   pbrlab's (harness/pbrlab/scene/environment.py) is u = atan2(x, -z) / (2 pi),
   v_from_top = acos(y) / pi in glTF axes = atan2(bx, by) / (2 pi), acos(bz) / pi in Blender
@@ -33,12 +33,12 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import resource
 import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
 
@@ -47,7 +47,7 @@ class SpecError(Exception):
     """Bad input: reported as one line, no traceback."""
 
 
-def _fail(message: str) -> "NoReturn":  # noqa: F821
+def _fail(message: str) -> NoReturn:
     print(f"tools/cycles/render.py: {message}", file=sys.stderr)
     sys.exit(2)
 
