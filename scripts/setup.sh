@@ -60,8 +60,9 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # The npm tools, each from its lock file: the Khronos Sample Renderer (tools/sample_viewer)
-# the Khronos glTF Validator (tools/gltf_validator) and three.js for examples/threejs (tools/threejs).
-for tool in tools/sample_viewer tools/gltf_validator tools/threejs; do
+# the Khronos glTF Validator (tools/gltf_validator), three.js for examples/threejs (tools/threejs) and
+# three.js as the fidelity benchmark's peer (tools/threejs_gltf).
+for tool in tools/sample_viewer tools/gltf_validator tools/threejs tools/threejs_gltf; do
   tool_stamp=$tool/node_modules/.pbrlab-installed
   tool_want=$(sha256sum < $tool/package-lock.json | cut -c1-16)
   if ! { [ -f "$tool_stamp" ] && [ "$(cat "$tool_stamp")" = "$tool_want" ]; }; then

@@ -3,9 +3,9 @@ Blender's Cycles (the path-traced reference, tools/cycles/render.py run by a Pyt
 PyPI's ``bpy``), three.js (tools/threejs_gltf/render.mjs) and the Khronos Sample Viewer
 (tools/sample_viewer/render.mjs), the last two in headless Chromium.
 
-Every renderer is given the same view spec (staging.view_spec) and returns an HxWx4 float32
-image: rows top to bottom, linear radiance (no exposure, tonemap or encode), straight colour,
-alpha = coverage. The benchmark puts every one through the same display transform.
+Every renderer is given the same view spec (staging.view_spec) and ``render`` returns an HxWx4
+float32 image: rows top to bottom, linear radiance (no exposure, tonemap or encode), STRAIGHT
+colour (premultiplied outputs divided by alpha: PREMULTIPLIED), alpha = coverage. The benchmark puts every one through the same display transform.
 """
 
 from __future__ import annotations
@@ -31,6 +31,20 @@ TOOLS = {"cycles": REPO / "tools" / "cycles" / "render.py",
          "threejs": REPO / "tools" / "threejs_gltf" / "render.mjs",
          "sample_viewer": REPO / "tools" / "sample_viewer" / "render.mjs"}
 TIMEOUT_S = {"cycles": 3600, "threejs": 600, "sample_viewer": 600}
+# what each tool is given beyond the view: the Sample Viewer multisamples as model-viewer's
+# canvas and three.js do (tools/sample_viewer/render.mjs "msaa"; three.js's tool always does)
+VIEW_EXTRAS = {"sample_viewer": {"msaa": 4}}
+# whose linear output holds colour premultiplied by alpha (pbrlab's target is cleared to 0 and
+# blended ONE / ONE_MINUS_SRC_ALPHA, its multisample resolve averages over the cleared samples;
+# Cycles' film is premultiplied: tools/cycles/README.md); the peers' tools divide it out already
+PREMULTIPLIED = ("pbrlab", "cycles")
+
+
+def straight(linear: np.ndarray) -> np.ndarray:
+    """Colour divided by alpha where alpha > 0: what display.display_rgba8 takes."""
+    alpha = linear[..., 3:4]
+    colour = np.where(alpha > 0, linear[..., :3] / np.where(alpha > 0, alpha, 1.0), linear[..., :3])
+    return np.concatenate([colour, alpha], axis=-1).astype(np.float32)
 # where a Python with PyPI's bpy (Blender as a module; Python 3.11) is found
 BPY_PYTHON_ENV = "PBRLAB_BPY_PYTHON"
 BPY_PYTHON_DEFAULT = REPO / ".venv-bpy" / "bin" / "python"
@@ -93,7 +107,7 @@ def render_external(renderer: str, view: dict, keep: Path | None = None) -> tupl
         folder = Path(keep) if keep else Path(tmp)
         folder.mkdir(parents=True, exist_ok=True)
         spec_path, out = Path(tmp) / "view.json", folder / renderer
-        spec_path.write_text(json.dumps(view), encoding="utf-8")
+        spec_path.write_text(json.dumps({**view, **VIEW_EXTRAS.get(renderer, {})}), encoding="utf-8")
         # its own process group: a timeout ends the tool and what it started (a browser)
         proc = subprocess.Popen(_command(renderer, spec_path, out), stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True, start_new_session=True)
@@ -115,14 +129,16 @@ def render_external(renderer: str, view: dict, keep: Path | None = None) -> tupl
 
 
 def render(renderer: str, view: dict, render_block: dict | None = None) -> tuple[np.ndarray, dict]:
-    """(linear image, facts) of ``view`` by ``renderer`` (one of RENDERERS)."""
+    """(linear image with STRAIGHT colour, facts) of ``view`` by ``renderer`` (one of RENDERERS)."""
     if renderer == "pbrlab":
         from ...foundation.version import __version__
-        return render_pbrlab(view, render_block), {"renderer": f"pbrlab {__version__}",
-                                                    "render": dict(render_block or {})}
-    if renderer not in TOOLS:
+        image, facts = render_pbrlab(view, render_block), {"renderer": f"pbrlab {__version__}",
+                                                           "render": dict(render_block or {})}
+    elif renderer in TOOLS:
+        image, facts = render_external(renderer, view)
+    else:
         raise PbrlabError(f"unknown renderer {renderer!r}: expected one of {', '.join(RENDERERS)}")
-    return render_external(renderer, view)
+    return (straight(image) if renderer in PREMULTIPLIED else image), facts
 
 
 if __name__ == "__main__":  # python -m ...renderers VIEW.json RENDERER: a quick look
