@@ -10,7 +10,10 @@
   multisampled float colour and depth renderbuffers; ``resolve()`` blits them into the
   single-sampled float texture (glBlitFramebuffer from a multisampled to a single-sampled
   framebuffer averages each pixel's samples: OpenGL 4.5 core, section 18.3.1). The average
-  is of linear radiance, before exposure, tone mapping and the display encode.
+  is of linear radiance, before exposure, tone mapping and the display encode. With
+  ``resolve_filter="blackman_harris"`` the colour is a multisample texture and ``resolve()``
+  draws templates/resolve_samples.frag instead: each pixel the Blackman-Harris-weighted sum
+  of the samples within 1.5 px of its centre (Cycles' pixel filter), still in linear.
 
 Every readback returns a top-row-first array (image order), flipping GL's bottom-up rows.
 """
@@ -31,6 +34,8 @@ GL_FRAMEBUFFER_SRGB = 0x8DB9  # OpenGL 3.3 core, section 4.1.8 (sRGB conversion)
 HDR_DTYPES = {"f16": "f2", "f32": "f4"}
 _BYTES_PER_PIXEL = {"srgb8": 4, "unorm8": 4, "f16": 8, "f32": 16}
 GL_SAMPLE_POSITION = 0x8E50  # OpenGL 3.3 core, section 3.3.1 (GetMultisamplefv)
+RESOLVE_FILTERS = ("box", "blackman_harris")
+BLACKMAN_HARRIS_RADIUS = 1.5  # px either side of the centre: Cycles' default filter width, doubled (film.cpp)
 
 
 class Target:
@@ -38,8 +43,15 @@ class Target:
     with ``samples`` > 1 (float kinds only) a multisampled one, resolved into ``color`` by
     ``resolve()``."""
 
-    def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True, samples: int = 1):
+    def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True, samples: int = 1,
+                 resolve_filter: str = "box"):
         self.ctx, self.size, self.kind, self.samples = ctx, tuple(int(s) for s in size), kind, int(samples)
+        if resolve_filter not in RESOLVE_FILTERS:
+            raise PbrlabError(f"resolve_filter={resolve_filter!r}: expected one of {', '.join(RESOLVE_FILTERS)}")
+        if resolve_filter != "box" and not 1 < self.samples <= 16:
+            raise PbrlabError(f"the {resolve_filter} resolve filters a multisampled target's samples: "
+                              f"it needs 2 to 16 samples per pixel, got {self.samples}")
+        self.resolve_filter = resolve_filter
         w, h = self.size
         if w <= 0 or h <= 0 or w > 16384 or h > 16384:
             raise PbrlabError(f"render size {w}x{h} is out of range (1..16384 per side)")
@@ -58,7 +70,12 @@ class Target:
         self._resolved = None      # the framebuffer of ``color`` that resolve() blits into
         self._sample_offsets = None
         try:
-            if self.samples > 1:
+            if self.samples > 1 and resolve_filter != "box":  # read sample by sample: a texture
+                self._multisampled = ctx.texture(self.size, 4, samples=self.samples, dtype=HDR_DTYPES[kind])
+                self.depth = ctx.depth_renderbuffer(self.size, samples=self.samples) if depth else None
+                self.fbo = ctx.framebuffer([self._multisampled], self.depth)
+                self._resolved = ctx.framebuffer([self.color])
+            elif self.samples > 1:
                 self._multisampled = ctx.renderbuffer(self.size, 4, samples=self.samples, dtype=HDR_DTYPES[kind])
                 self.depth = ctx.depth_renderbuffer(self.size, samples=self.samples) if depth else None
                 self.fbo = ctx.framebuffer([self._multisampled], self.depth)
@@ -105,9 +122,31 @@ class Target:
         """``color`` holding what was drawn: for a multisampled target, each pixel's samples
         averaged into it by a framebuffer blit. The blit binds framebuffers of its own: bind
         (``use``) the target to draw into after it."""
-        if self._resolved is not None:
+        if self._resolved is not None and self.resolve_filter == "box":
             self.ctx.copy_framebuffer(self._resolved, self.fbo)
+        elif self._resolved is not None:
+            self._filtered_resolve()
         return self.color
+
+    def _filtered_resolve(self) -> None:
+        """templates/resolve_samples.frag into ``color``: every pixel from the samples around it."""
+        from .programs import program_from_templates  # loaded on use (programs imports targets' users)
+
+        program = program_from_templates(self.ctx, "fullscreen.vert", "resolve_samples.frag", {})
+        offsets = self.sample_offsets()
+        program["u_sample_count"].value = len(offsets)
+        program["u_offsets"].write(np.array(offsets + [(0.0, 0.0)] * (16 - len(offsets)), np.float32).tobytes())
+        program["u_radius"].value = BLACKMAN_HARRIS_RADIUS
+        program["u_samples"].value = 0
+        self._multisampled.use(location=0)
+        self.ctx.disable(moderngl.BLEND | moderngl.DEPTH_TEST | moderngl.CULL_FACE)
+        self._resolved.use()
+        self.ctx.viewport = (0, 0) + self.size
+        vao = self.ctx.vertex_array(program, [])
+        try:
+            vao.render(moderngl.TRIANGLES, vertices=3)
+        finally:
+            vao.release()
 
     def read(self) -> np.ndarray:
         """Top-row-first HxWx4: uint8 codes for srgb8/unorm8, float32 linear otherwise

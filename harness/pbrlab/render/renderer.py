@@ -321,7 +321,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.target.fbo.depth_mask = True
             copy.finish()
             resources.transmission_copy = copy
-        with targets.Target(ctx, (w, h), hdr_format, samples=samples) as hdr:
+        with targets.Target(ctx, (w, h), hdr_format, samples=samples,
+                            resolve_filter=scene.render.antialias_filter) as hdr:
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
             _reset_draw_state(ctx)

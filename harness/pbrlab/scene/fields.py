@@ -96,6 +96,10 @@ HDR_TARGETS = ("rgba32f", "rgba16f")
 # GL_MAX_SAMPLES known to pbrlab. Which of them this context takes is checked before a render
 # (pbrlab.gpu.gl_limits.check_antialias); llvmpipe (Mesa 22) takes 1 and 4.
 ANTIALIAS_SAMPLES = (1, 2, 4, 8, 16, 32)
+# render.antialias_filter: how a multisampled pixel is resolved (pbrlab.gpu.targets.RESOLVE_FILTERS):
+# "box" averages the pixel's own samples (the GL's blit), "blackman_harris" weighs the samples
+# within 1.5 px of the centre by the Blackman-Harris window (Cycles' default pixel filter)
+ANTIALIAS_FILTERS = ("box", "blackman_harris")
 LIGHT_TYPES = ("directional", "point", "spot")
 WORKFLOWS = ("metallic", "specular")
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
@@ -224,6 +228,10 @@ RENDER = {
                          default="pbrlab"),
     "antialias": Choice("Samples per pixel (multisampling, resolved in linear before exposure); 1 = none. "
                         "The GL must take the count (llvmpipe: 1 or 4).", ANTIALIAS_SAMPLES, default=1),
+    "antialias_filter": Choice("How the samples are resolved: box (each pixel's own, averaged) or "
+                               "blackman_harris (every sample within 1.5 px of the pixel's centre, weighted "
+                               "by the Blackman-Harris window: Cycles' pixel filter); needs antialias > 1, "
+                               "at most 16.", ANTIALIAS_FILTERS, default="box"),
 }
 
 

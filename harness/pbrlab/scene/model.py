@@ -213,6 +213,8 @@ class RenderSettings:
     # samples per pixel (1: no antialiasing): multisampled targets resolved in linear before
     # exposure, spheres covering their samples analytically (pbrlab.render.renderer, docs/rendering.md)
     antialias: int = 1
+    # how the samples are resolved: "box" (each pixel's own) or "blackman_harris" (gpu/targets.py)
+    antialias_filter: str = "box"
 
 
 @dataclass
@@ -663,6 +665,9 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     rs = top.child("render", {})
     render = RenderSettings(**{key: read_field(rs, RENDER, key) for key in RENDER})
     rs.finish()
+    if render.antialias_filter != "box" and not 1 < render.antialias <= 16:
+        rs.fail(f"{render.antialias_filter} filters the samples of multisampled pixels: it needs an antialias "
+                f"of 2 to 16, got {render.antialias}", "antialias_filter")
     if render.brdf_model == "unity":
         # the layers from the material's numbers, or from what its surface writes
         layers = {name: surface_layers.material_layers(m) for name, m in materials.items()}

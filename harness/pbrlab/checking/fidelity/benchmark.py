@@ -70,15 +70,16 @@ def reference_path(key: str, renderer: str, folder: Path = REFERENCES_DIR) -> Pa
     return Path(folder) / key / f"{renderer}.png"
 
 
-def _render_display(renderer: str, view: dict, render_block: dict, out: Path | None):
+def _render_display(name: str, renderer: str, view: dict, render_block: dict, out: Path | None):
+    """``renderer``'s display image of ``view``; its linear EXR and PNG kept in ``out`` as <name>.*"""
     t0 = time.perf_counter()
     linear, facts = renderers.render(renderer, view, render_block)
     seconds = time.perf_counter() - t0
     shown = display.display_rgba8(linear)
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
-        images.write_exr(out / f"{renderer}.exr", np.ascontiguousarray(linear, np.float32))
-        images.write_png(out / f"{renderer}.png", shown)
+        images.write_exr(out / f"{name}.exr", np.ascontiguousarray(linear, np.float32))
+        images.write_png(out / f"{name}.png", shown)
     return shown, facts, seconds
 
 
@@ -112,11 +113,8 @@ def run(scenarios=None, *, keys=None, scale: float = COMMITTED_SCALE, render=("p
             view = staging.view_spec(scenario, scale, environment, bounds, samples=samples, seed=seed,
                                      denoise=DENOISE)
             renderer = "cycles" if name == NOISE else name
-            image, fact, seconds = _render_display(renderer, view, render_block,
+            image, fact, seconds = _render_display(name, renderer, view, render_block,
                                                    (work / scenario.key) if work else None)
-            if name == NOISE and work:  # its files beside seed 0's, under its own name
-                for suffix in (".exr", ".png"):
-                    (work / scenario.key / f"cycles{suffix}").replace(work / scenario.key / f"{NOISE}{suffix}")
             shown[name], facts[name], row.seconds[name] = image, {**fact, "view": view}, seconds
             if update_references and name != "pbrlab":
                 path = reference_path(scenario.key, name, references)

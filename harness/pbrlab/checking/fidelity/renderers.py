@@ -48,8 +48,8 @@ def straight(linear: np.ndarray) -> np.ndarray:
 # where a Python with PyPI's bpy (Blender as a module; Python 3.11) is found
 BPY_PYTHON_ENV = "PBRLAB_BPY_PYTHON"
 BPY_PYTHON_DEFAULT = REPO / ".venv-bpy" / "bin" / "python"
-BPY_SETUP = ("python3.11 -m venv .venv-bpy && .venv-bpy/bin/pip install bpy (in the checkout; or point "
-             f"{BPY_PYTHON_ENV} at any Python that can `import bpy`)")
+BPY_SETUP = ("run `bash scripts/setup_cycles.sh` in the checkout (a Python 3.11 virtualenv .venv-bpy with "
+             f"PyPI's bpy 5.0.1), or point {BPY_PYTHON_ENV} at a Python that can `import bpy`")
 
 
 def bpy_python() -> Path:
