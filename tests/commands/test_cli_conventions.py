@@ -31,7 +31,7 @@ def test_every_command_has_full_sentence_help_and_takes_q_and_v(command):
 def test_only_commands_that_open_a_gl_context_take_backend(command):
     """--backend on a command that opens no GL context would be accepted and ignored."""
     sub = cli.build_parser()._subparsers._group_actions[0]
-    opens_gl = command in ("demo", "render", "eval", "hardcases", "bench")
+    opens_gl = command in ("demo", "render", "eval", "hardcases", "bench", "fidelity")
     assert ("--backend" in sub.choices[command]._option_string_actions) == opens_gl, command
     for name in ("amalgamate", "diff", "features", "port_unity", "paths"):  # none of them opens one
         source = Path(cli.__file__).with_name(f"{name}.py").read_text()

@@ -36,13 +36,13 @@ class _VersionAction(argparse.Action):
             print(f"  {line}")
         parser.exit()
 
-COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "port-unity", "paths",
-            "schema", "tables")
+COMMANDS = ("demo", "render", "eval", "amalgamate", "diff", "features", "hardcases", "bench", "fidelity", "port-unity",
+            "paths", "schema", "tables")
 
 
 # The commands that open an OpenGL context themselves, and so take --backend (the others
 # would accept it and ignore it).
-GL_COMMANDS = ("demo", "render", "eval", "hardcases", "bench")
+GL_COMMANDS = ("demo", "render", "eval", "hardcases", "bench", "fidelity")
 
 
 def _named_command(argv) -> str | None:

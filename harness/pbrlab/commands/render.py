@@ -1,4 +1,4 @@
-"""`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH] [--language hlsl]`: render a scene file.
+"""`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH] [--antialias N] [--language hlsl]`: render a scene file.
 
 Writes atomically and all or nothing: the PNG and the EXR are written to temporary files,
 each fsync'ed and read back, and only then renamed over the targets, so a failed render or
@@ -55,6 +55,27 @@ def load_scene_with_gltf_warnings(path):
             passed_on.add(key)  # once per message and place, as the default filter would
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     return scene, messages
+
+
+def parse_antialias(text: str | None) -> int | None:
+    """``--antialias 4``: samples per pixel, one of the scene format's (render.antialias)."""
+    from ..scene.fields import ANTIALIAS_SAMPLES
+
+    if text is None:
+        return None
+    if not text.strip().isdigit() or int(text) not in ANTIALIAS_SAMPLES:
+        raise PbrlabError(f"--antialias {text}: expected samples per pixel, one of "
+                          f"{', '.join(map(str, ANTIALIAS_SAMPLES))} (1: none), that this GL takes")
+    return int(text)
+
+
+def with_antialias(scene, samples: int | None):
+    """``scene`` with ``render.antialias`` = ``samples`` (None: as the scene says), on a copy."""
+    import dataclasses
+
+    if samples is None:
+        return scene
+    return dataclasses.replace(scene, render=dataclasses.replace(scene.render, antialias=samples))
 
 
 def parse_weights(text: str | None) -> tuple | None:
@@ -126,8 +147,10 @@ def run(args) -> int:
         if path and not path.lower().endswith(suffix):
             raise PbrlabError(f"{path}: expected a {suffix} file name")
     size = parse_size(args.size)
+    antialias = parse_antialias(args.antialias)
     scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant, args.gltf_scene,
                            parse_weights(args.weights), parse_time(args.time), args.animation, args.allow_outside)
+    scene = with_antialias(scene, antialias)
     context = gl.shared_context(args.backend)
     info = gl.context_info(context)
     console.detail(f"renderer: {info['GL_RENDERER']} ({info['GL_VERSION']}, backend {info['backend']})")
@@ -177,6 +200,9 @@ def register(sub, common):
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")
+    p.add_argument("--antialias", default=None, metavar="N",
+                   help="samples per pixel, overriding the scene's render.antialias (1: none; "
+                        "resolved in linear before exposure; llvmpipe takes 1 or 4)")
     p.add_argument("--no-specialise", action="store_true",
                    help="render with the full program (every effect compiled in) to compare")
     add_language_option(p)

@@ -228,6 +228,10 @@ _GL_FUNCTION_TYPES = {
                             ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ctypes.c_void_p]),
     "glPixelStorei": (None, [ctypes.c_uint, ctypes.c_int]),
     "glTexParameteri": (None, [ctypes.c_uint, ctypes.c_uint, ctypes.c_int]),
+    "glGetMultisamplefv": (None, [ctypes.c_uint, ctypes.c_uint, ctypes.POINTER(ctypes.c_float)]),
+    # OpenGL 4.2 core (ARB_internalformat_query): optional, gl_limits.sample_counts falls back
+    "glGetInternalformativ": (None, [ctypes.c_uint, ctypes.c_uint, ctypes.c_uint, ctypes.c_int,
+                                     ctypes.POINTER(ctypes.c_int)]),
 }
 
 

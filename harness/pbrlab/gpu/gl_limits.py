@@ -10,6 +10,8 @@ framebuffer.
 
 from __future__ import annotations
 
+import ctypes
+
 import numpy as np
 
 from ..foundation.errors import PbrlabError, SceneError
@@ -75,6 +77,50 @@ def check_float32_products(scene) -> None:
         if not np.all(np.abs(value) <= FLOAT32_MAX):
             raise SceneError(f"{scene.source}: {where}: color x intensity = {np.max(value):.4g} is "
                              f"beyond the float32 range (<= {FLOAT32_MAX:.8g}) the GPU computes in")
+
+
+# glGetInternalformativ's enums (OpenGL 4.2 core, section 22.3): the sample counts a
+# renderbuffer of an internal format takes, largest first.
+_GL_RENDERBUFFER, _GL_NUM_SAMPLE_COUNTS, _GL_SAMPLES = 0x8D41, 0x9380, 0x80A9
+_GL_DEPTH_COMPONENT24 = 0x81A6  # the depth renderbuffer moderngl makes (depth_renderbuffer)
+_GL_HDR_FORMATS = {"f32": 0x8814, "f16": 0x881A}  # RGBA32F, RGBA16F (targets.HDR_DTYPES)
+
+
+def sample_counts(ctx, kind: str) -> tuple[int, ...]:
+    """The samples per pixel a multisampled ``kind`` ("f32" or "f16") target with depth may
+    have on this context, ascending, 1 (no multisampling) first: the counts
+    glGetInternalformativ(GL_SAMPLES) gives for both the colour and the depth format (OpenGL
+    4.2); where the context lacks it (OpenGL 3.3), the powers of two up to GL_MAX_SAMPLES,
+    which RenderbufferStorageMultisample must accept (OpenGL 3.3 core, section 4.4.2)."""
+    most = _limit(ctx, "GL_MAX_SAMPLES", 1)
+    powers = {2 ** k for k in range(1, most.bit_length()) if 2 ** k <= most}
+    try:
+        from . import gl
+        query = gl.gl_function(ctx, "glGetInternalformativ")
+    except PbrlabError:
+        return (1, *sorted(powers))
+    taken = None
+    for internal_format in (_GL_HDR_FORMATS[kind], _GL_DEPTH_COMPONENT24):
+        count = ctypes.c_int(0)
+        query(_GL_RENDERBUFFER, internal_format, _GL_NUM_SAMPLE_COUNTS, 1, ctypes.byref(count))
+        values = (ctypes.c_int * max(count.value, 1))()
+        if count.value:
+            query(_GL_RENDERBUFFER, internal_format, _GL_SAMPLES, count.value, values)
+        found = {int(v) for v in values[:count.value] if v > 1}
+        taken = found if taken is None else taken & found
+    return (1, *sorted(taken))
+
+
+def check_antialias(ctx, scene, kind: str) -> None:
+    """Refuse a ``render.antialias`` this context's ``kind`` target cannot hold, naming what it can."""
+    samples = scene.render.antialias
+    counts = sample_counts(ctx, kind)
+    if samples not in counts:
+        taken = " or ".join([", ".join(map(str, counts[:-1])), str(counts[-1])] if len(counts) > 1 else ["1"])
+        raise SceneError(f"{scene.source}: render.antialias: {samples} samples per pixel; this GL's "
+                         f"{scene.render.hdr_target} target with depth takes {taken} "
+                         f"(GL_MAX_SAMPLES = {_limit(ctx, 'GL_MAX_SAMPLES', 1)}, "
+                         f"{ctx.info.get('GL_RENDERER', 'this renderer')})")
 
 
 def check_scene(ctx, scene) -> None:

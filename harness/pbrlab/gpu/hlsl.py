@@ -174,13 +174,14 @@ _CROSS_COMPILED = FileCache(CROSS_COMPILED_CACHED)
 
 
 def hlsl_to_glsl(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
-                 plain_uniforms: bool = False) -> str:
-    """A pixel shader (entry ``main``) in HLSL -> the GLSL 330 that spirv-cross writes."""
+                 plain_uniforms: bool = False, version: int = 330) -> str:
+    """A pixel shader (entry ``main``) in HLSL -> the GLSL ``version`` (330 unless the
+    shader needs more) that spirv-cross writes."""
     include_dirs = tuple(str(d) for d in include_dirs)
 
     def build():
-        glsl = cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize),
+        glsl = cross_to_glsl(compile_spirv(text, name, include_dirs, optimize=optimize), version,
                              plain_uniforms=plain_uniforms)
         return glsl, include_closure(text, [*include_dirs, HLSL_ROOT])
 
-    return _CROSS_COMPILED.get((text, name, include_dirs, optimize, plain_uniforms), build)
+    return _CROSS_COMPILED.get((text, name, include_dirs, optimize, plain_uniforms, version), build)

@@ -46,6 +46,18 @@ TEMPLATES = PACKAGE_FOLDER / "templates"
 FRAGMENT_SUFFIX = {"glsl": ".frag", "hlsl": ".hlsl"}
 LANGUAGES = tuple(FRAGMENT_SUFFIX)
 DEFAULT_SURFACE = "default_surface.inc"  # shared by both languages
+# A sphere program drawn into a multisampled target is compiled with this define, its value
+# the samples per pixel: it writes which samples the sphere covers (scene_geometry.inc) to
+# gl_SampleMask (GLSL 330 with ARB_sample_shading) or SV_Coverage (HLSL). spirv-cross writes
+# gl_SampleMask only from GLSL 400 on ("not supported before GLSL 400"), so such an HLSL
+# stage is cross-compiled to GLSL 400; every other one stays at 330.
+SAMPLES_DEFINE = "PBRLAB_SAMPLES"
+SAMPLE_MASK_GLSL_VERSION = 400
+
+
+def cross_version(defines: dict) -> int:
+    """The GLSL version an HLSL pixel shader with ``defines`` is cross-compiled to."""
+    return SAMPLE_MASK_GLSL_VERSION if SAMPLES_DEFINE in defines else 330
 _GL_FLOAT_MATRICES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}  # GL_FLOAT_MAT2, MAT3, MAT4
 # A uniform's GL type (glGetActiveUniform; the GL 4.6 core specification's table 7.3) by
 # its GLSL name, for binding checks and messages.
@@ -164,7 +176,7 @@ def hlsl_template_source(name: str, defines: dict, surface: Path | None = None) 
     """An HLSL pixel-shader template, compiled to SPIR-V and cross-compiled to GLSL 330."""
     display = f"pbrlab/templates/{name}"
     text, include_dirs = hlsl_template_text(name, defines, surface)
-    glsl = hlsl.hlsl_to_glsl(text, display, include_dirs, plain_uniforms=True)
+    glsl = hlsl.hlsl_to_glsl(text, display, include_dirs, plain_uniforms=True, version=cross_version(defines))
     return shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
 
 

@@ -6,11 +6,18 @@
 * Colour textures are uploaded as sRGB (hardware decode on sampling); data textures
   (normals, roughness, masks) as linear: the lecture's "when to bypass sRGB sampling".
 * HDR: linear RGBA16F or RGBA32F targets, read back as float32.
+* Multisampled HDR (``samples`` > 1, the scene's ``render.antialias``): drawing goes to
+  multisampled float colour and depth renderbuffers; ``resolve()`` blits them into the
+  single-sampled float texture (glBlitFramebuffer from a multisampled to a single-sampled
+  framebuffer averages each pixel's samples: OpenGL 4.5 core, section 18.3.1). The average
+  is of linear radiance, before exposure, tone mapping and the display encode.
 
 Every readback returns a top-row-first array (image order), flipping GL's bottom-up rows.
 """
 
 from __future__ import annotations
+
+import ctypes
 
 import moderngl
 import numpy as np
@@ -23,16 +30,21 @@ GL_SRGB8_ALPHA8 = 0x8C43  # OpenGL 3.3 core, table 8.13 (sized internal formats)
 GL_FRAMEBUFFER_SRGB = 0x8DB9  # OpenGL 3.3 core, section 4.1.8 (sRGB conversion)
 HDR_DTYPES = {"f16": "f2", "f32": "f4"}
 _BYTES_PER_PIXEL = {"srgb8": 4, "unorm8": 4, "f16": 8, "f32": 16}
+GL_SAMPLE_POSITION = 0x8E50  # OpenGL 3.3 core, section 3.3.1 (GetMultisamplefv)
 
 
 class Target:
-    """A framebuffer with one colour attachment (and optionally depth) of a given size."""
+    """A framebuffer with one colour attachment (and optionally depth) of a given size;
+    with ``samples`` > 1 (float kinds only) a multisampled one, resolved into ``color`` by
+    ``resolve()``."""
 
-    def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True):
-        self.ctx, self.size, self.kind = ctx, tuple(int(s) for s in size), kind
+    def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True, samples: int = 1):
+        self.ctx, self.size, self.kind, self.samples = ctx, tuple(int(s) for s in size), kind, int(samples)
         w, h = self.size
         if w <= 0 or h <= 0 or w > 16384 or h > 16384:
             raise PbrlabError(f"render size {w}x{h} is out of range (1..16384 per side)")
+        if self.samples != 1 and kind not in HDR_DTYPES:
+            raise PbrlabError(f"a {kind} target is single-sampled; multisampling is for f16 and f32")
         if kind == "srgb8":
             self.color = ctx.texture(self.size, 4, dtype="f1", internal_format=GL_SRGB8_ALPHA8)
         elif kind == "unorm8":
@@ -42,16 +54,26 @@ class Target:
         else:
             raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, unorm8, f16 or f32")
         self.depth = None
+        self._multisampled = None  # the multisampled colour renderbuffer, when samples > 1
+        self._resolved = None      # the framebuffer of ``color`` that resolve() blits into
+        self._sample_offsets = None
         try:
-            self.depth = ctx.depth_renderbuffer(self.size) if depth else None
-            self.fbo = ctx.framebuffer([self.color], self.depth)
+            if self.samples > 1:
+                self._multisampled = ctx.renderbuffer(self.size, 4, samples=self.samples, dtype=HDR_DTYPES[kind])
+                self.depth = ctx.depth_renderbuffer(self.size, samples=self.samples) if depth else None
+                self.fbo = ctx.framebuffer([self._multisampled], self.depth)
+                self._resolved = ctx.framebuffer([self.color])
+            else:
+                self.depth = ctx.depth_renderbuffer(self.size) if depth else None
+                self.fbo = ctx.framebuffer([self.color], self.depth)
         except moderngl.Error as exc:  # e.g. "framebuffer is incomplete": out of memory
-            self.color.release()
-            if self.depth is not None:
-                self.depth.release()
-            mib = w * h * (_BYTES_PER_PIXEL[kind] + (4 if depth else 0)) / 2**20
-            raise PbrlabError(f"cannot make a {w}x{h} {kind} render target ({mib:.0f} MiB): "
-                              f"{str(exc).strip() or 'GL error'}; render smaller (--size)") from None
+            for resource in (self._resolved, self._multisampled, self.color, self.depth):
+                if resource is not None:
+                    resource.release()
+            mib = w * h * (_BYTES_PER_PIXEL[kind] + (4 if depth else 0)) * self.samples / 2**20
+            raise PbrlabError(f"cannot make a {w}x{h} {kind} render target with {self.samples} sample(s) "
+                              f"per pixel ({mib:.0f} MiB): {str(exc).strip() or 'GL error'}; "
+                              "render smaller (--size) or with fewer samples") from None
 
     def use(self):
         """Bind for drawing; sRGB encoding is on exactly while an sRGB target is bound."""
@@ -62,22 +84,51 @@ class Target:
         else:
             self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
 
+    def sample_offsets(self) -> list[tuple[float, float]]:
+        """Where this target's samples lie in a pixel, as offsets from its centre in pixels
+        (glGetMultisamplefv(GL_SAMPLE_POSITION): positions in [0, 1], OpenGL 3.3 core,
+        section 3.3.1); [(0, 0)] for a single-sampled target. Binds the target."""
+        if self.samples == 1:
+            return [(0.0, 0.0)]
+        if self._sample_offsets is None:
+            self.fbo.use()
+            get_multisample = gl.gl_function(self.ctx, "glGetMultisamplefv")
+            offsets = []
+            for index in range(self.samples):
+                position = (ctypes.c_float * 2)()
+                get_multisample(GL_SAMPLE_POSITION, index, position)
+                offsets.append((position[0] - 0.5, position[1] - 0.5))
+            self._sample_offsets = offsets
+        return self._sample_offsets
+
+    def resolve(self) -> moderngl.Texture:
+        """``color`` holding what was drawn: for a multisampled target, each pixel's samples
+        averaged into it by a framebuffer blit. The blit binds framebuffers of its own: bind
+        (``use``) the target to draw into after it."""
+        if self._resolved is not None:
+            self.ctx.copy_framebuffer(self._resolved, self.fbo)
+        return self.color
+
     def read(self) -> np.ndarray:
-        """Top-row-first HxWx4: uint8 codes for srgb8/unorm8, float32 linear otherwise."""
+        """Top-row-first HxWx4: uint8 codes for srgb8/unorm8, float32 linear otherwise
+        (a multisampled target is resolved first)."""
         w, h = self.size
         if self.kind in ("srgb8", "unorm8"):
             data = self.fbo.read(components=4, dtype="f1")
             img = np.frombuffer(data, np.uint8).reshape(h, w, 4)
         else:
-            data = self.fbo.read(components=4, dtype="f4")
+            self.resolve()
+            source = self._resolved if self._resolved is not None else self.fbo
+            data = source.read(components=4, dtype="f4")
             img = np.frombuffer(data, np.float32).reshape(h, w, 4)
         return img[::-1].copy()
 
     def release(self):
         self.fbo.release()
         self.color.release()
-        if self.depth is not None:
-            self.depth.release()
+        for resource in (self._resolved, self._multisampled, self.depth):
+            if resource is not None:
+                resource.release()
 
     def __enter__(self):
         return self

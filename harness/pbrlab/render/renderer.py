@@ -1,6 +1,13 @@
 """GPU rendering of a scene: spheres ray-traced per pixel, meshes rasterised, one HDR
 float pass, then exposure + tonemap, then the display encode to 8-bit sRGB.
 
+With ``render.antialias`` = N > 1 the float pass is multisampled (N samples per pixel,
+targets.Target): meshes by the rasteriser's coverage, spheres by their own (the sphere
+program shades once per pixel and writes which samples' rays hit the sphere to the sample
+mask: scene_geometry.inc, pbrlab_sphere_coverage); the samples are averaged in linear
+radiance (targets.Target.resolve) before metering, exposure, tone mapping and the encode,
+and the linear image's alpha becomes the pixel's coverage.
+
 ``render_scene(scene)`` returns a ``Rendering`` with ``linear`` (HxWx4 float32 scene
 radiance, before exposure: what the EXR holds) and ``srgb8`` (HxWx4 uint8 display image).
 By default the tonemapped display values are rendered to float and encoded on the CPU with
@@ -32,6 +39,7 @@ from ..gpu.hlsl import HLSL_ROOT
 from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates
 from ..gpu.programs import set_uniform as _set
 from ..gpu.programs import set_uniform_array as _set_array
+from ..gpu.programs import SAMPLES_DEFINE
 from ..scene.model import HDR_TARGETS, Scene
 from ..scene.standard_material import BLENDED_ALPHA_MODES, source_of
 from ..gpu.shaders import GLSL_ROOT
@@ -279,6 +287,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     frame = scene_frame(scene)
     plan = features.plan_programs(scene, specialise)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
+    samples = scene.render.antialias
+    if samples != 1:
+        gl_limits.check_antialias(ctx, scene, hdr_format)
     w, h = frame.size
     resources = _SceneResources(ctx, scene, full=not plan.specialised)
     cube_holder = []
@@ -300,7 +311,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     draw_calls = 0
     try:
         if behind is not None:  # a transmissive material: first the scene it sees (transmission_copy.py)
-            copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format)
+            copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format, samples)
             copy.target.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
             _reset_draw_state(ctx)
@@ -310,14 +321,14 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.target.fbo.depth_mask = True
             copy.finish()
             resources.transmission_copy = copy
-        with targets.Target(ctx, (w, h), hdr_format) as hdr:
+        with targets.Target(ctx, (w, h), hdr_format, samples=samples) as hdr:
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
             _reset_draw_state(ctx)
             draw_calls += _draw_objects(ctx, hdr, _draw_order(scene, frame), draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
-            linear = hdr.read()
+            linear = hdr.read()  # resolved: each pixel's samples averaged in linear radiance
             if scene.render.exposure_metered:  # darkened just enough not to clip (pbrlab.maths.exposure)
                 metered = scene.render.exposure + metered_exposure(linear)
                 scene = dataclasses.replace(scene, render=dataclasses.replace(scene.render, exposure=metered))
@@ -370,7 +381,7 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
                 _apply_state(ctx, hdr, state)
                 draw_calls += 1
                 if obj.sphere is not None and material_pass.traces_spheres:
-                    _draw_sphere(ctx, obj, material, material_pass, keyed, draw, grabbed)
+                    _draw_sphere(ctx, hdr, obj, material, material_pass, keyed, draw, grabbed)
                 else:  # meshes, and spheres whose pass moves vertices (tessellated)
                     _draw_mesh(ctx, obj, material, material_pass, keyed, state, draw, grabbed, batch)
     return draw_calls
@@ -393,7 +404,8 @@ def _apply_state(ctx, hdr, state) -> None:
 
 
 def _grab(ctx, hdr, holder):
-    """A grab pass: a copy of the float target as drawn so far (released after the render)."""
+    """A grab pass: a copy of the float target as drawn so far (released after the render);
+    from a multisampled target the blit resolves (each pixel's samples averaged)."""
     texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
     texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
     copy = ctx.framebuffer([texture])
@@ -415,11 +427,16 @@ def _program(ctx, stem, material, material_pass, defines, draw, obj, grabbed):
     return program
 
 
-def _draw_sphere(ctx, obj, material, material_pass, defines, draw, grabbed):
-    """Back faces of the sphere's bounding cube, ray-traced in the fragment shader."""
+def _draw_sphere(ctx, hdr, obj, material, material_pass, defines, draw, grabbed):
+    """Back faces of the sphere's bounding cube, ray-traced in the fragment shader; into a
+    multisampled ``hdr``, the program also writes which samples the sphere covers."""
+    if hdr.samples > 1:
+        defines = {**defines, SAMPLES_DEFINE: hdr.samples}
     program = _program(ctx, "sphere", material, material_pass, defines, draw, obj, grabbed)
     centre, radius = obj.sphere
     _set(program, "u_sphere", (*centre, radius))
+    if hdr.samples > 1:  # the offsets the sphere's own coverage is tested at (scene_geometry.inc)
+        _set_array(program, "u_sample_offsets", hdr.sample_offsets())
     inside = bool(np.all(np.abs(draw.frame.position - centre) <= radius * 1.001))
     _set(program, "u_fullscreen", inside)
     if inside:
@@ -482,9 +499,10 @@ def _resolve(ctx, hdr, scene, transfer, language):
         "PBR_TONEMAP": f"PBR_TONEMAP_{scene.render.tonemap.upper()}",
         "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{shader_transfer}"})
     display_kind = {"EXACT": "f32", "HARDWARE": "srgb8"}.get(transfer, "unorm8")
+    radiance = hdr.resolve()  # before the display is bound (a multisampled target's blit binds its own)
     with targets.Target(ctx, hdr.size, display_kind, depth=False) as display:
         display.use()
-        hdr.color.use(0)
+        radiance.use(0)
         _set(resolve, "u_hdr", 0)
         _set(resolve, "u_exposure_ev", scene.render.exposure)
         vao = ctx.vertex_array(resolve, [])

@@ -53,14 +53,15 @@ def lod_scale(size) -> float:
 class TransmissionCopy:
     """The copy's target (``render_scene`` draws into it), then its mip-mapped texture."""
 
-    def __init__(self, ctx: moderngl.Context, size, hdr_format: str):
-        self.target = targets.Target(ctx, size, hdr_format)
+    def __init__(self, ctx: moderngl.Context, size, hdr_format: str, samples: int = 1):
+        self.target = targets.Target(ctx, size, hdr_format, samples=samples)
         self.size = self.target.size
 
     def finish(self) -> moderngl.Texture:
         """Generate the mip chain (glGenerateMipmap on the float texture: a 2x2 box per
-        level on llvmpipe) and set trilinear filtering, clamped at the screen's edges."""
-        texture = self.target.color
+        level on llvmpipe) and set trilinear filtering, clamped at the screen's edges. A
+        multisampled copy is resolved first (its samples averaged in linear radiance)."""
+        texture = self.target.resolve()
         texture.build_mipmaps()
         texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
         texture.repeat_x = texture.repeat_y = False

@@ -91,6 +91,11 @@ QUALITIES = ("high", "medium", "low")  # PBR_QUALITY_* (pbr/shading/dispatch.gls
 BRDF_MODELS = ("pbrlab", "unity")
 ALPHA_MODES = ("opaque", "cutout", "fade", "transparent")  # Unity's Rendering Mode
 HDR_TARGETS = ("rgba32f", "rgba16f")
+# render.antialias: samples per pixel, 1 = none. Powers of two, as GL implementations offer
+# them (OpenGL 4.5 core, section 9.2.4: an implementation's sample counts); 32 is beyond every
+# GL_MAX_SAMPLES known to pbrlab. Which of them this context takes is checked before a render
+# (pbrlab.gpu.gl_limits.check_antialias); llvmpipe (Mesa 22) takes 1 and 4.
+ANTIALIAS_SAMPLES = (1, 2, 4, 8, 16, 32)
 LIGHT_TYPES = ("directional", "point", "spot")
 WORKFLOWS = ("metallic", "specular")
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
@@ -217,6 +222,8 @@ RENDER = {
     "hdr_target": Choice("The float target; rgba16f clamps at 65504.", HDR_TARGETS, default="rgba32f"),
     "brdf_model": Choice("pbrlab's shading, or Unity's BRDF1/2/3 by tier (PBR_BRDF_MODEL).", BRDF_MODELS,
                          default="pbrlab"),
+    "antialias": Choice("Samples per pixel (multisampling, resolved in linear before exposure); 1 = none. "
+                        "The GL must take the count (llvmpipe: 1 or 4).", ANTIALIAS_SAMPLES, default=1),
 }
 
 

@@ -26,7 +26,7 @@ writes the JSON Schema (`pbrlab schema`) and the docs' tables. Format (docs/scen
                  {gltf: "model.glb", transform}]  (a whole glTF scene: pbrlab.importers.gltf)
     render      {quality: high, brdf_model: pbrlab|unity,
                  tonemap: none|reinhard|aces_fitted|aces_narkowicz|hable|khronos_neutral,
-                 exposure: 0 (EV stops, multiplier 2^exposure)}
+                 exposure: 0 (EV stops, multiplier 2^exposure), antialias: 1 (samples per pixel)}
 """
 
 from __future__ import annotations
@@ -210,6 +210,9 @@ class RenderSettings:
     # exposure metered from the rendered image, added to ``exposure`` (pbrlab.maths.exposure):
     # what `pbrlab render` chooses for a glTF file in physical light units left unset
     exposure_metered: bool = False
+    # samples per pixel (1: no antialiasing): multisampled targets resolved in linear before
+    # exposure, spheres covering their samples analytically (pbrlab.render.renderer, docs/rendering.md)
+    antialias: int = 1
 
 
 @dataclass

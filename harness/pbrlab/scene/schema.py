@@ -39,6 +39,8 @@ PARSER_ONLY_RULES = (
     "`specular_f90` is at least every channel of the dielectric's F0: `specular` (the specular workflow) or "
     "`dielectric_specular` (the metallic workflow; absent: 0.04).",
     "`camera.size` takes whole numbers written without a fraction (JSON Schema's integer admits `512.0`).",
+    "`render.antialias` is written without a fraction (a JSON Schema enum admits `4.0` for `4`); a count "
+    "the scene admits but the GL does not take (llvmpipe: 1 or 4) is refused before rendering.",
     "No key twice in one object, no nesting deeper than 32 levels (pbrlab.foundation.json_input).",
 )
 

@@ -81,10 +81,12 @@ def _render_both(name, sky, strip=None):
 def test_the_corpus_is_what_its_manifest_says():
     import hashlib
     manifest = json.loads((CORPUS / "MANIFEST.json").read_text())
-    assert set(manifest["models"]) == set(MEAN_CODES)
+    # the fidelity benchmark (benchmarks/fidelity/scenarios.json) uses the others
+    assert set(MEAN_CODES) <= set(manifest["models"])
     for name, entry in manifest["models"].items():
         assert hashlib.sha256((CORPUS / entry["file"]).read_bytes()).hexdigest() == entry["sha256"], name
-        assert entry["licence"] in (CORPUS / name / "LICENSE.md").read_text()
+        for licence in entry["licence"].split(" (")[0].split(" and "):
+            assert f'SPDX license identifier: "{licence}"' in (CORPUS / name / "LICENSE.md").read_text(), name
 
 
 @pytest.mark.parametrize("name", sorted(MEAN_CODES))

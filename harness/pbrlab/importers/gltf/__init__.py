@@ -227,11 +227,16 @@ def _placed_primitives(doc, reader, key, mesh_index, primitives, world, node_ind
                 primitive.fail(f"material \"{material.name}\" reads TEXCOORD_{uv_set} ({slot} texture), "
                                "which the primitive lacks")
         mapped = [slot for slot in ("normal", "clearcoat_normal") if slot in material.textures]
-        normal_uv = material.texture_uv_set.get(mapped[0], 0) if mapped else None  # tangents from its UVs
-        if normal_uv is None and material.anisotropy_strength > 0.0:
+        # tangents from the UVs the normal map is read with: its UV set, through its
+        # KHR_texture_transform (geometry.tangent_uvs)
+        tangent_slot = mapped[0] if mapped else None
+        if tangent_slot is None and material.anisotropy_strength > 0.0:
             # KHR_materials_anisotropy lies along the tangent: MikkTSpace from its map's UV set
             # (TEXCOORD_0 without a map) where the primitive has no TANGENT
-            normal_uv = material.texture_uv_set.get("anisotropy", 0)
+            tangent_slot = "anisotropy"
+        normal_uv = None if tangent_slot is None else (
+            material.texture_uv_set.get(tangent_slot, 0),
+            _linear_part(material.texture_transform.get(tangent_slot)))
         gkey = (mesh_index, p, flip, normal_uv, weights, *pose_key)
         if gkey not in geometries:
             geometries[gkey] = read_primitive(doc, mesh_index, p, primitive, normal_uv, warn, flip,
@@ -332,3 +337,12 @@ def _choose_camera(doc, scene: Scene, placed, index: int | None, size) -> Camera
         camera_index, world, where = placed[0]
         return gltf_camera(doc, camera_index, world, where, scene, size)
     return framing_camera(scene, size)
+
+
+def _linear_part(transform) -> tuple | None:
+    """The 2x2 linear part (rotation, scale) of a slot's GL-space UV transform, as a
+    hashable tuple (a geometry cache key), or None for none."""
+    if transform is None:
+        return None
+    linear = np.asarray(transform, np.float64)[:2, :2]
+    return None if np.array_equal(linear, np.eye(2)) else tuple(linear.reshape(-1).tolist())

@@ -36,7 +36,8 @@ def _triangle_list(indices: np.ndarray, mode: int) -> np.ndarray:
 def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldReader, needs_tangents_from,
                    warn, flip_winding: bool, key: tuple, weights: tuple = (), posing=None) -> Geometry | None:
     """The primitive's Geometry (its ``topology``: triangles, lines or points).
-    ``needs_tangents_from``: the UV set of the material's normal map, or None.
+    ``needs_tangents_from``: (UV set, the 2x2 linear part of its KHR_texture_transform as a
+    flat tuple or None) of the material's normal map, or None.
     ``weights``: its mesh's morph target weights (gltf.morph). ``posing``: a skin's
     (attributes, count, positions, normals, tangents) -> the posed three (gltf.skin)."""
     where = primitive.path
@@ -140,9 +141,51 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
         else:
             # with v up the image: the bitangent cross(n, t) w then points up the image, the
             # normal map's +Y (spec 3.9.3: "+X is right and +Y is up")
-            uv = uv1_gl if needs_tangents_from == 1 else uv0_gl
+            uv_set, linear = needs_tangents_from
+            uv = tangent_uvs(uv1_gl if uv_set == 1 else uv0_gl, linear)
+            positions, normals, uv0_gl, uv1_gl, colors, triangles, uv = split_mirrored_corners(
+                triangles, uv, positions, normals, uv0_gl, uv1_gl, colors, uv)
             tangents = mikktspace_tangents(positions, normals, uv, triangles)
     return _geometry(key, positions, normals, uv0_gl, tangents, uv1_gl, colors, triangles.reshape(-1), "triangles")
+
+
+def tangent_uvs(uv: np.ndarray, linear) -> np.ndarray:
+    """The UVs the normal map is read with, up to an offset: ``linear`` (the 2x2 rotation and
+    scale of its KHR_texture_transform in GL UV space, flat, or None) applied. MikkTSpace's
+    tangent is dP/ds of the texture's own s: a rotated or mirrored normal-map tile needs the
+    tangent of the transformed UVs (the extension: the transform applies to "the texture
+    coordinates" the texture is sampled with; three.js and the Sample Viewer take the
+    tangent frame of the transformed UVs)."""
+    if linear is None:
+        return uv
+    return uv @ np.asarray(linear, np.float64).reshape(2, 2).T
+
+
+def split_mirrored_corners(triangles, orientation_uv, *attributes):
+    """mikktspace.c's split of a vertex whose triangles disagree in UV orientation (a mirror
+    seam that shares its vertices): the vertex is copied for the triangles of the
+    orientation its other triangles lack (here: the clockwise ones), so each copy gets the
+    tangent and the sign of its own side instead of their mean. Returns the attributes
+    (every per-vertex array, copies appended) and the re-indexed triangles in the order
+    ``*attributes[:-1], triangles, attributes[-1]``."""
+    t = orientation_uv[triangles]
+    area = (t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1]) - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0])
+    count = len(orientation_uv)
+    positive = np.zeros(count, bool)
+    negative = np.zeros(count, bool)
+    positive[triangles[area > 0].reshape(-1)] = True
+    negative[triangles[area < 0].reshape(-1)] = True
+    shared = np.flatnonzero(positive & negative)
+    if shared.size == 0:
+        return (*attributes[:-1], triangles, attributes[-1])
+    copy_of = np.full(count, -1)
+    copy_of[shared] = count + np.arange(shared.size)
+    triangles = triangles.copy()
+    flipped = area < 0
+    corners = triangles[flipped]
+    triangles[flipped] = np.where(copy_of[corners] >= 0, copy_of[corners], corners)
+    extended = [np.concatenate([a, a[shared]], axis=0) for a in attributes]
+    return (*extended[:-1], triangles, extended[-1])
 
 
 def _uv_gl(uv: np.ndarray) -> np.ndarray:

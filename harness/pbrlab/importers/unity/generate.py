@@ -16,6 +16,7 @@ lighting, final colour) and the entry point.
 from __future__ import annotations
 
 from ...gpu.hlsl import line_directive
+from ...gpu.programs import SAMPLES_DEFINE
 from ...scene.surface_layers import FIELD_SIZES
 from . import model as M
 from .generate_pass import _ATTRIBUTES, UNITY_STRUCTS, _attribute, _zero, canonical, fit
@@ -173,10 +174,10 @@ _ENTRY = {
     ("hlsl", "sphere"): """
 uniform float4x4 u_view_proj;
 
-void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out float depth : SV_Depth) {
+void pbrlab_unity_sphere_pixel(float2 at, out float4 radiance, out float depth) {
     PbrlabFragment f;
     float3 d;
-    f.position = pbrlab_sphere_hit(position.xy, d, f.normal);
+    f.position = pbrlab_sphere_hit(at, d, f.normal);
     f.view = -d;
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);
@@ -186,15 +187,32 @@ void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out f
     float4 clip = mul(u_view_proj, float4(f.position, 1.0));
     depth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
 }
+
+#ifdef PBRLAB_SAMPLES
+void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out float depth : SV_Depth,
+          out uint coverage : SV_Coverage) {
+    float2 at;
+    coverage = uint(pbrlab_sphere_coverage(position.xy, at));
+    pbrlab_unity_sphere_pixel(at, radiance, depth);
+}
+#else
+void main(float4 position : SV_Position, out float4 radiance : SV_Target0, out float depth : SV_Depth) {
+    pbrlab_unity_sphere_pixel(position.xy, radiance, depth);
+}
+#endif
 """,
     ("glsl", "sphere"): """
 uniform mat4 u_view_proj;
 out vec4 out_radiance;
 
 void main() {
+    vec2 at = gl_FragCoord.xy;
+#ifdef PBRLAB_SAMPLES
+    gl_SampleMask[0] = pbrlab_sphere_coverage(gl_FragCoord.xy, at);
+#endif
     PbrlabFragment f;
     vec3 d;
-    f.position = pbrlab_sphere_hit(gl_FragCoord.xy, d, f.normal);
+    f.position = pbrlab_sphere_hit(at, d, f.normal);
     f.view = -d;
     f.uv = pbr_equirect_uv(f.normal);
     f.tangent = pbrlab_sphere_tangent(f.uv);
@@ -252,8 +270,10 @@ def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     suffix = SUFFIX[language]
     head = ["#version 330 core"] if language == "glsl" else []
     stage = {"PBRLAB_UNITY_VERTEX_STAGE": 1, "PBR_UNITY_VERTEX_STAGE": 1} if vertex_stage else {}
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage}),
-             f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage})]
+    if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
+        head.append("#extension GL_ARB_sample_shading : require")
+    head += [f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
     return head

@@ -217,7 +217,8 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
         display = f"{shader.path.name} (generated {language} {stem} program)"
         paths = [shader.path]
         if language == "hlsl":
-            glsl = hlsl.hlsl_to_glsl(text, display, dirs, plain_uniforms=True)
+            glsl = hlsl.hlsl_to_glsl(text, display, dirs, plain_uniforms=True,
+                                     version=programs.cross_version(defines))
             fragment = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
             paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
         else:

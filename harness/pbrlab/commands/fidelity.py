@@ -1,0 +1,67 @@
+"""`pbrlab fidelity [--scene KEY ...] [--render R ...] [--update-references] [--out DIR]`:
+the glTF Render Fidelity benchmark (docs/fidelity.md). Every scene of
+benchmarks/fidelity/scenarios.json under each of its lightings is rendered by pbrlab and
+scored with the protocol's metric (dB, lower is closer; -22 dB its pass line) against Cycles,
+beside three.js and the Khronos Sample Viewer. The references are committed at a quarter of
+the protocol's size; --render cycles threejs sample_viewer cycles_seed1 makes them anew
+(Cycles needs a Python with PyPI's bpy: PBRLAB_BPY_PYTHON). Writes OUT/results.json,
+OUT/results.md and per scene OUT/<scene>/{<renderer>.exr,.png, side_by_side.png}.
+Exit 1 when pbrlab is worse than its bound on a scene (the worst peer, widened by the
+reference's noise).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+
+def run(args) -> int:
+    import os
+
+    from ..checking.fidelity import benchmark
+    from ..foundation import console, outputs
+
+    if args.backend:
+        os.environ["PBRLAB_GL_BACKEND"] = args.backend
+
+    render = tuple(dict.fromkeys(["pbrlab", *args.render]))
+    rows = benchmark.run(keys=args.scene or None, scale=args.scale, render=render,
+                         update_references=args.update_references, out=Path(args.out),
+                         render_block={**benchmark.PBRLAB_RENDER, "antialias": args.antialias},
+                         samples=args.samples, log=console.note)
+    summary = benchmark.summary(rows)
+    failures = [r.key for r in rows if r.bound_db() is not None and r.scores.get("pbrlab", -1e9) > r.bound_db()]
+    results = {"summary": summary, "over_bound": failures,
+               "rows": [{"key": r.key, "size": list(r.size), "scores_db": r.scores, "noise_db": r.noise_db,
+                         "bound_db": r.bound_db(), "seconds": r.seconds} for r in rows]}
+    out = Path(args.out)
+    outputs.write_file(out / "results.json", (json.dumps(results, indent=1) + "\n").encode())
+    outputs.write_file(out / "results.md", (benchmark.table(rows) + "\n" + json.dumps(summary, indent=1) + "\n").encode())
+    print(benchmark.table(rows))
+    print(json.dumps(summary, indent=1))
+    if failures:
+        print(f"pbrlab is over its bound on {len(failures)} scene(s): {', '.join(failures)}")
+    return 1 if failures else 0
+
+
+def register(sub, common):
+    p = sub.add_parser("fidelity", parents=[common],
+                       help="Score pbrlab against a path tracer (Cycles) on the glTF Render Fidelity protocol, "
+                            "beside three.js and the Sample Viewer.",
+                       description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--scene", action="append", metavar="KEY",
+                   help="one scene@lighting (repeatable; default: all)")
+    p.add_argument("--render", nargs="+", default=[], metavar="RENDERER",
+                   choices=["cycles", "cycles_seed1", "threejs", "sample_viewer"],
+                   help="also render these now instead of reading the committed images")
+    p.add_argument("--update-references", action="store_true",
+                   help="write what --render made into benchmarks/fidelity/references")
+    p.add_argument("--scale", type=float, default=0.25,
+                   help="image size over the protocol's (default 0.25, the committed references')")
+    p.add_argument("--samples", type=int, default=256, help="Cycles samples per pixel (default 256)")
+    p.add_argument("--antialias", type=int, default=4,
+                   help="pbrlab's samples per pixel (the render block's antialias; default 4, 1 = off)")
+    p.add_argument("--out", default="out/fidelity", help="output folder (default: out/fidelity)")
+    p.set_defaults(run=run)
