@@ -37,8 +37,17 @@ from ..maths.reference import brdf as ref_brdf
 from ..maths.reference import prefilter as ref_prefilter
 from ..maths.reference import surface as ref_surface
 
-PREFILTER_FACE_SIZE = 128  # texels per face edge of level 0 (the mirror)
-PREFILTER_LEVELS = 6       # faces 128^2 ... 4^2: perceptual roughness 0, 0.2, ..., 1
+# The chain: level i holds perceptual roughness i / (PREFILTER_LEVELS - 1) (the shaders'
+# pbr_ibl_lod_from_perceptual_roughness), faces PREFILTER_FACE_SIZE >> i texels wide:
+# 256^2 (the mirror) .. 16^2 (roughness 1), in steps of 0.25. Sizes (issue 38): the mirror's
+# face of 256 texels spans 90 degrees, 0.35 degrees a texel at its centre, the equator texel
+# of a 1024 x 512 environment (Blender's and the fidelity benchmark's); roughness 1 was read
+# from 4^2 faces (22 degrees between texels) and its bilinear reconstruction of the lobe's
+# cosine ramp past a sun missed the float64 brute force by 2x in the dark directions beside
+# it; at 16^2 (5.6 degrees) that error is 16x smaller (h^2). Five levels, not six: a sixth
+# at this base would be 8^2 at roughness 1, and a base of 512 would hold 6.3 M float texels.
+PREFILTER_FACE_SIZE = 256  # texels per face edge of level 0 (the mirror)
+PREFILTER_LEVELS = 5       # faces 256^2 ... 16^2: perceptual roughness 0, 0.25, ..., 1
 PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling)
 # Bright texels (a sun, lamps): their radiance above PREFILTER_BRIGHT_FACTOR times the image's
 # mean luminance is taken out of the image the GPU samples and summed exactly, texel by texel
@@ -48,13 +57,13 @@ PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling
 # away (issue 38: up to 2x the float64 brute force at roughness 1, 37 % at 0.2, 256 samples;
 # 4096 samples still 16 %). The clipped image keeps a dynamic range FIS handles.
 PREFILTER_BRIGHT_FACTOR = 16.0
-# Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.4, lobes wider than 18
+# Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.5, lobes wider than 30
 # degrees) are the exact texel sum of the clipped image box-averaged (solid-angle weighted)
 # to PREFILTER_CPU_SOURCE_WIDTH[level] x half that, in float64 on the CPU: FIS's mip blur
 # read the equirect mips' pole rows and smeared the horizon (up to 38 % at roughness 1 after
 # the bright split); the sum is the brute force itself at a cell size well inside the lobe.
 PREFILTER_CPU_FIRST_LEVEL = 2
-PREFILTER_CPU_SOURCE_WIDTH = {2: 64, 3: 64, 4: 64, 5: 64}
+PREFILTER_CPU_SOURCE_WIDTH = {2: 64, 3: 64, 4: 64}
 PREFILTER_BRIGHT_TEXELS = 4096
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # ITU-R BT.709 (the library's pbr_luminance)
 
@@ -246,6 +255,12 @@ def _prefilter_cache_key(ctx: moderngl.Context, image: np.ndarray) -> str:
                           PREFILTER_FACE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES, Path(__file__).read_bytes())
 
 
+def prefilter_level_roughness(level: int) -> float:
+    """The perceptual roughness level ``level`` is filtered for: level / (PREFILTER_LEVELS - 1),
+    the inverse of pbr_ibl_lod_from_perceptual_roughness (glsl/pbr/ibl/environment_brdf.glsl)."""
+    return level / (PREFILTER_LEVELS - 1)
+
+
 def prefilter_level_size(level: int) -> int:
     """Texels per face edge of a level: PREFILTER_FACE_SIZE halved per level (a mip chain)."""
     return max(PREFILTER_FACE_SIZE >> level, 1)
@@ -291,30 +306,42 @@ def prefilter_bright_sum(directions: np.ndarray, bright, perceptual_roughness: f
     if len(d) == 0:
         return out
     alpha = perceptual_roughness ** 2
-    w = _lobe_weight_unscaled(directions @ d.T, alpha) * (alpha * alpha / np.pi) * solid
-    return (w @ radiance) / lobe_normalisation(alpha)
+    scale = (alpha * alpha / np.pi) / lobe_normalisation(alpha)
+    for start, stop in _blocks(directions.shape[0], len(d)):
+        w = _lobe_weight_unscaled(directions[start:stop] @ d.T, alpha)
+        w *= solid * scale
+        out[start:stop] = w @ radiance
+    return out
+
+
+# Directions x texels per block of the CPU sums: 2^18 float64 (2 MiB) stay in a core's cache;
+# one product over every direction at once (98 k x 2048 at level 1) was memory-bound, 4x slower.
+_BLOCK_ELEMENTS = 1 << 18
+
+
+def _blocks(directions: int, texels: int):
+    step = max(1, _BLOCK_ELEMENTS // max(texels, 1))
+    return [(start, min(start + step, directions)) for start in range(0, directions, step)]
 
 
 def _prefilter_levels(ctx: moderngl.Context, image: np.ndarray) -> list[np.ndarray]:
     """The PREFILTER_LEVELS levels, each 6 x n x n x 4 float32 (faces +X .. -Z, GL row
-    order): the clipped image filtered on the GPU one face at a time, plus the bright texels'
-    exact sum (split_bright) at rough levels; the mirror reads the whole image."""
+    order): the mirror resamples the whole image; level 1 is the clipped image filtered on the
+    GPU; the rougher levels the clipped image's exact texel sum on the CPU; every rough level
+    adds the bright texels' exact sum (split_bright)."""
     clipped, bright = split_bright(image)
-    mirror = _prefilter_gpu_levels(ctx, image, levels=1)
-    rough = _prefilter_gpu_levels(ctx, clipped, levels=PREFILTER_CPU_FIRST_LEVEL)
-    levels = [mirror[0]]
+    levels = [_prefilter_gpu_level(ctx, image, 0)]
     for level in range(1, PREFILTER_LEVELS):
         edge = prefilter_level_size(level)
         directions = ref_prefilter.cube_face_directions(edge).reshape(-1, 3)
-        roughness = level / (PREFILTER_LEVELS - 1)
-        extra = prefilter_bright_sum(directions, bright, roughness)
+        roughness = prefilter_level_roughness(level)
         if level < PREFILTER_CPU_FIRST_LEVEL:
-            faces = rough[level].copy()
+            faces = _prefilter_gpu_level(ctx, clipped, level)
         else:
             faces = np.ones((6, edge, edge, 4), np.float32)
             faces[..., :3] = _texel_sum(directions, box_average(clipped, PREFILTER_CPU_SOURCE_WIDTH[level]),
                                         roughness).reshape(6, edge, edge, 3)
-        faces[..., :3] += extra.reshape(6, edge, edge, 3).astype(np.float32)
+        faces[..., :3] += prefilter_bright_sum(directions, bright, roughness).reshape(6, edge, edge, 3)
         levels.append(faces)
     return levels
 
@@ -338,9 +365,14 @@ def _texel_sum(directions: np.ndarray, image: np.ndarray, perceptual_roughness: 
     exact solid angles): the brute force of maths/reference/prefilter.py with the image held
     constant over each texel."""
     d, solid = ref_prefilter.equirect_texels(*image.shape[:2])
-    w = _lobe_weight_unscaled(directions @ d.reshape(-1, 3).T, perceptual_roughness ** 2)
-    w *= solid.reshape(-1)
-    return (w @ image.reshape(-1, 3)) / w.sum(axis=1, keepdims=True)
+    d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), image.reshape(-1, 3)
+    alpha = perceptual_roughness ** 2
+    out = np.empty((directions.shape[0], 3))
+    for start, stop in _blocks(directions.shape[0], len(d)):
+        w = _lobe_weight_unscaled(directions[start:stop] @ d.T, alpha)
+        w *= solid
+        out[start:stop] = (w @ radiance) / w.sum(axis=1, keepdims=True)
+    return out
 
 
 def _lobe_weight_unscaled(NdotL: np.ndarray, alpha: float) -> np.ndarray:
@@ -355,8 +387,9 @@ def _lobe_weight_unscaled(NdotL: np.ndarray, alpha: float) -> np.ndarray:
     return NdotL
 
 
-def _prefilter_gpu_levels(ctx: moderngl.Context, image: np.ndarray, levels: int) -> list[np.ndarray]:
-    """Levels 0 .. levels - 1 of the image filtered on the GPU (prefilter.frag)."""
+def _prefilter_gpu_level(ctx: moderngl.Context, image: np.ndarray, level: int) -> np.ndarray:
+    """One level (6 x n x n x 4, faces +X .. -Z, GL row order) of the image filtered on the
+    GPU (prefilter.frag) for the level's roughness."""
     source = targets.upload_texture(ctx, np.concatenate(
         [image[..., :3], np.ones(image.shape[:2] + (1,), image.dtype)], axis=2).astype(np.float32),
         srgb=False)
@@ -364,29 +397,26 @@ def _prefilter_gpu_levels(ctx: moderngl.Context, image: np.ndarray, levels: int)
     program = program_from_templates(ctx, "fullscreen.vert", "prefilter.frag", {})
     vao = ctx.vertex_array(program, [])
     source_levels = 1 + int(np.floor(np.log2(max(image.shape[0], image.shape[1]))))
-    result = []
+    edge = prefilter_level_size(level)
+    faces = []
     try:
-        for level in range(levels):
-            edge = prefilter_level_size(level)
-            faces = []
-            with targets.Target(ctx, (edge, edge), "f32", depth=False) as target:
-                for face in range(6):
-                    target.use()
-                    source.use(0)
-                    program["u_source"].value = 0
-                    program["u_source_size"].value = (float(image.shape[1]), float(image.shape[0]))
-                    program["u_source_max_lod"].value = float(source_levels - 1)
-                    program["u_perceptual_roughness"].value = level / (PREFILTER_LEVELS - 1)
-                    program["u_sample_count"].value = PREFILTER_SAMPLES
-                    program["u_face"].value = face
-                    program["u_face_size"].value = float(edge)
-                    vao.render(moderngl.TRIANGLES, vertices=3)
-                    faces.append(np.ascontiguousarray(target.read()[::-1]))  # back to GL row order
-            result.append(np.stack(faces))
+        with targets.Target(ctx, (edge, edge), "f32", depth=False) as target:
+            for face in range(6):
+                target.use()
+                source.use(0)
+                program["u_source"].value = 0
+                program["u_source_size"].value = (float(image.shape[1]), float(image.shape[0]))
+                program["u_source_max_lod"].value = float(source_levels - 1)
+                program["u_perceptual_roughness"].value = prefilter_level_roughness(level)
+                program["u_sample_count"].value = PREFILTER_SAMPLES
+                program["u_face"].value = face
+                program["u_face_size"].value = float(edge)
+                vao.render(moderngl.TRIANGLES, vertices=3)
+                faces.append(np.ascontiguousarray(target.read()[::-1]))  # back to GL row order
     finally:
         vao.release()
         source.release()
-    return result
+    return np.stack(faces)
 
 
 def main(argv=None) -> int:
