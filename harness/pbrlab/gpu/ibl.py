@@ -7,13 +7,14 @@
   its listing "IntegrateBRDF".
 * ``prefiltered_environment(ctx, image)``: a cube map mip chain whose level i is the
   environment convolved with the GGX lobe of perceptual roughness i / (levels - 1), under
-  Karis's n = v = r assumption, computed on the GPU by GGX importance sampling with
-  filtered importance sampling (Krivanek & Colbert 2008, "Real-time Shading with Filtered
-  Importance Sampling", eq. 10) to avoid noise; sampled with seamless cube filtering
-  (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam (issue 38: the
-  former equirectangular chain, 8x4 at roughness 1, clamped the rows next to the poles and
-  made a star at the zenith and nadir, up to 5x the radiance of the float64 brute force,
-  maths/reference/prefilter.py).
+  Karis's n = v = r assumption: the mirror resampled on the GPU, level 1 by GGX importance
+  sampling with filtered importance sampling (Krivanek & Colbert 2008, "Real-time Shading with
+  Filtered Importance Sampling", eq. 10), the rougher levels by the exact texel sum on the CPU,
+  the brightest texels summed exactly at every rough level (split_bright); sampled with
+  seamless cube filtering (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam
+  (issue 38: the former equirectangular chain, 8x4 at roughness 1, clamped the rows next to
+  the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
+  brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
 The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 (``PBR_DFG_LUT_LOOKUP`` hook, ``pbr_ibl_lod_from_perceptual_roughness``).
