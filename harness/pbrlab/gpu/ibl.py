@@ -5,11 +5,16 @@
   (exact height-correlated Smith GGX) by a deterministic quadrature in GGX's sampling
   variables (``integrate_dfg``). Karis 2013, "Real Shading in Unreal Engine 4", eq. 8 and
   its listing "IntegrateBRDF".
-* ``prefiltered_environment(ctx, image)``: an equirectangular mip chain whose level i is
-  the environment convolved with the GGX lobe of perceptual roughness i / (levels - 1),
-  under Karis's n = v = r assumption, computed on the GPU by GGX importance sampling with
-  filtered importance sampling (Krivanek & Colbert 2008, "Real-time Shading with Filtered
-  Importance Sampling", eq. 10) to avoid noise.
+* ``prefiltered_environment(ctx, image)``: a cube map mip chain whose level i is the
+  environment convolved with the GGX lobe of perceptual roughness i / (levels - 1), under
+  Karis's n = v = r assumption: the mirror resampled on the GPU, level 1 by GGX importance
+  sampling with filtered importance sampling (Krivanek & Colbert 2008, "Real-time Shading with
+  Filtered Importance Sampling", eq. 10), the rougher levels by the exact texel sum on the CPU,
+  the brightest texels summed exactly at every rough level (split_bright); sampled with
+  seamless cube filtering (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam
+  (issue 38: the former equirectangular chain, 8x4 at roughness 1, clamped the rows next to
+  the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
+  brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
 The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 (``PBR_DFG_LUT_LOOKUP`` hook, ``pbr_ibl_lod_from_perceptual_roughness``).
@@ -26,15 +31,42 @@ import moderngl
 import numpy as np
 
 from ..foundation import disk_cache, outputs
-from . import targets
+from . import gl, targets
 from ..foundation.errors import PbrlabError
 from .programs import program_from_templates, template_source
 from ..maths.reference import brdf as ref_brdf
+from ..maths.reference import prefilter as ref_prefilter
 from ..maths.reference import surface as ref_surface
 
-PREFILTER_SIZE = (256, 128)  # level 0 of the prefiltered chain (equirect 2:1)
-PREFILTER_LEVELS = 6       # 256x128 ... 8x4: perceptual roughness 0, 0.2, ..., 1
+# The chain: level i holds perceptual roughness i / (PREFILTER_LEVELS - 1) (the shaders'
+# pbr_ibl_lod_from_perceptual_roughness), faces PREFILTER_FACE_SIZE >> i texels wide:
+# 256^2 (the mirror) .. 16^2 (roughness 1), in steps of 0.25. Sizes (issue 38): the mirror's
+# face of 256 texels spans 90 degrees, 0.35 degrees a texel at its centre, the equator texel
+# of a 1024 x 512 environment (Blender's and the fidelity benchmark's); roughness 1 was read
+# from 4^2 faces (22 degrees between texels) and its bilinear reconstruction of the lobe's
+# cosine ramp past a sun missed the float64 brute force by 2x in the dark directions beside
+# it; at 16^2 (5.6 degrees) that error is 16x smaller (h^2). Five levels, not six: a sixth
+# at this base would be 8^2 at roughness 1, and a base of 512 would hold 6.3 M float texels.
+PREFILTER_FACE_SIZE = 256  # texels per face edge of level 0 (the mirror)
+PREFILTER_LEVELS = 5       # faces 256^2 ... 16^2: perceptual roughness 0, 0.25, ..., 1
 PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling)
+# Bright texels (a sun, lamps): their radiance above PREFILTER_BRIGHT_FACTOR times the image's
+# mean luminance is taken out of the image the GPU samples and summed exactly, texel by texel
+# (prefilter_bright_sum), at most PREFILTER_BRIGHT_TEXELS of them (the threshold rises to keep
+# to that). Filtered importance sampling blurs each sample over a mip texel as large as its
+# share of the lobe: a sun 10^4 times the sky then leaks into directions several lobe widths
+# away (issue 38: up to 2x the float64 brute force at roughness 1, 37 % at 0.2, 256 samples;
+# 4096 samples still 16 %). The clipped image keeps a dynamic range FIS handles.
+PREFILTER_BRIGHT_FACTOR = 16.0
+# Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.5, lobes wider than 30
+# degrees) are the exact texel sum of the clipped image box-averaged (solid-angle weighted)
+# to PREFILTER_CPU_SOURCE_WIDTH[level] x half that, in float64 on the CPU: FIS's mip blur
+# read the equirect mips' pole rows and smeared the horizon (up to 38 % at roughness 1 after
+# the bright split); the sum is the brute force itself at a cell size well inside the lobe.
+PREFILTER_CPU_FIRST_LEVEL = 2
+PREFILTER_CPU_SOURCE_WIDTH = {2: 64, 3: 64, 4: 64}
+PREFILTER_BRIGHT_TEXELS = 4096
+LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # ITU-R BT.709 (the library's pbr_luminance)
 
 # The DFG table: layout (size and warped axes) in reference/surface.py and
 # glsl/pbr/ibl/environment_brdf.glsl; values from integrate_dfg, stored in
@@ -149,12 +181,12 @@ def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
     return targets.lookup_table_texture(ctx, dfg_lut())
 
 
-def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.Texture:
-    """The GGX-prefiltered mip chain of an equirectangular radiance image (HxWx3, linear),
-    as an RGBA32F texture with PREFILTER_LEVELS levels (see module docstring). The levels
-    come from the disk cache when an earlier process filtered the same image with the same
-    program on the same driver (_prefilter_cache_key): 256 samples per texel cost llvmpipe
-    about 0.3 s, a third of a render's start-up (issue 25)."""
+def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.TextureCube:
+    """The GGX-prefiltered cube mip chain of an equirectangular radiance image (HxWx3,
+    linear), as an RGBA32F cube texture with PREFILTER_LEVELS levels, trilinear and seamless
+    (see module docstring). The levels come from the disk cache when an earlier process
+    filtered the same image with the same program on the same driver (_prefilter_cache_key):
+    256 samples per texel cost llvmpipe a good part of a render's start-up (issue 25)."""
     name = _prefilter_cache_key(ctx, image)
     payload = disk_cache.load("prefiltered-environment", name)
     if payload is not None:
@@ -162,10 +194,53 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     else:
         levels = _prefilter_levels(ctx, image)
         disk_cache.store("prefiltered-environment", name, disk_cache.pack_arrays(levels))
-    result = targets.float_texture_from_levels(ctx, levels)
-    result.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
-    result.repeat_x, result.repeat_y = True, False
-    return result
+    return float_cube_from_levels(ctx, levels)
+
+
+# OpenGL 4.6 core: section 8.13 (cube map targets, one per face, +X, -X, +Y, -Y, +Z, -Z in
+# order), table 8.20 (GL_TEXTURE_MAX_LEVEL); ARB_seamless_cubemap_per_texture (the per-texture
+# TEXTURE_CUBE_MAP_SEAMLESS, the same enum as the global enable of OpenGL 3.2).
+_GL_TEXTURE_CUBE_MAP = 0x8513
+_GL_TEXTURE_CUBE_MAP_POSITIVE_X = 0x8515
+_GL_TEXTURE_MAX_LEVEL = 0x813D
+_GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
+_GL_RGBA32F, _GL_RGBA, _GL_FLOAT = 0x8814, 0x1908, 0x1406
+_GL_UNPACK_ALIGNMENT = 0x0CF5
+
+
+def float_cube_from_levels(ctx: moderngl.Context, levels) -> moderngl.TextureCube:
+    """An RGBA32F cube texture whose mip levels are ``levels`` (each 6 x n x n x 4 float32,
+    faces +X, -X, +Y, -Y, +Z, -Z, rows in GL order, level 0 first), trilinear, with seamless
+    filtering across the faces' edges: per texture where the driver has
+    ARB_seamless_cubemap_per_texture (llvmpipe has; then the scene's other cube maps,
+    scene/cubemap.py, filter as before), else the context-wide enable of OpenGL 3.2."""
+    first = np.ascontiguousarray(levels[0], np.float32)
+    size = first.shape[1]
+    tex = ctx.texture_cube((size, size), 4, first.tobytes(), dtype="f4")
+    unit = ctx.info["GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS"] - 1  # as targets._upload_levels
+    tex.use(unit)
+    tex_image_2d = gl.gl_function(ctx, "glTexImage2D")
+    tex_parameter = gl.gl_function(ctx, "glTexParameteri")
+    gl.gl_function(ctx, "glPixelStorei")(_GL_UNPACK_ALIGNMENT, 1)
+    for index, level in enumerate(levels[1:], start=1):
+        faces = np.ascontiguousarray(level, np.float32)
+        edge = faces.shape[1]
+        for face in range(6):
+            data = np.ascontiguousarray(faces[face])
+            tex_image_2d(_GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, index, _GL_RGBA32F, edge, edge, 0,
+                         _GL_RGBA, _GL_FLOAT, data.ctypes.data)  # copies before returning
+    tex_parameter(_GL_TEXTURE_CUBE_MAP, _GL_TEXTURE_MAX_LEVEL, len(levels) - 1)
+    if "GL_ARB_seamless_cubemap_per_texture" in ctx.extensions:
+        tex_parameter(_GL_TEXTURE_CUBE_MAP, _GL_TEXTURE_CUBE_MAP_SEAMLESS, 1)
+    else:
+        ctx.enable_direct(_GL_TEXTURE_CUBE_MAP_SEAMLESS)
+    tex.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+    return tex
+
+
+def black_cube(ctx: moderngl.Context) -> moderngl.TextureCube:
+    """A 1x1 black cube: what the full program samples in a scene without environment."""
+    return ctx.texture_cube((1, 1), 4, np.zeros(6 * 4, np.float32).tobytes(), dtype="f4")
 
 
 def _prefilter_cache_key(ctx: moderngl.Context, image: np.ndarray) -> str:
@@ -178,38 +253,171 @@ def _prefilter_cache_key(ctx: moderngl.Context, image: np.ndarray) -> str:
     driver = [ctx.info["GL_VENDOR"], ctx.info["GL_RENDERER"], ctx.info["GL_VERSION"],
               sorted((k, v) for k, v in os.environ.items() if k.startswith(("LP_", "GALLIUM_", "MESA_")))]
     return disk_cache.key("prefiltered-environment", pixels.shape, pixels.tobytes(), *programs, driver,
-                          PREFILTER_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES, Path(__file__).read_bytes())
+                          PREFILTER_FACE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES, Path(__file__).read_bytes())
+
+
+def prefilter_level_roughness(level: int) -> float:
+    """The perceptual roughness level ``level`` is filtered for: level / (PREFILTER_LEVELS - 1),
+    the inverse of pbr_ibl_lod_from_perceptual_roughness (glsl/pbr/ibl/environment_brdf.glsl)."""
+    return level / (PREFILTER_LEVELS - 1)
+
+
+def prefilter_level_size(level: int) -> int:
+    """Texels per face edge of a level: PREFILTER_FACE_SIZE halved per level (a mip chain)."""
+    return max(PREFILTER_FACE_SIZE >> level, 1)
+
+
+def lobe_normalisation(alpha: float) -> float:
+    """N(alpha) = integral of D(h) (n.l)+ over l, h the bisector of n and l (the prefilter's
+    weight, maths/reference/prefilter.py). With dl = 4 (h.l) dh = 4 (n.h) dh and
+    n.l = 2 (n.h)^2 - 1, in s = (n.h)^2 over [1/2, 1]: N = 4 pi int D(s) (2 s - 1) ds, and with
+    D = alpha^2 / (pi (1 - b s)^2), b = 1 - alpha^2 (Walter et al. 2007, eq. 33), the
+    antiderivative of (2 s - 1) / (1 - b s)^2 is (2 / b^2) ln(1 - b s) + (2 - b) / (b^2 (1 - b s)).
+    At alpha = 1 (b = 0) D = 1 / pi and N = 1."""
+    b = 1.0 - alpha * alpha
+    if b < 1e-6:
+        return 1.0
+
+    def antiderivative(x):
+        return (2.0 / b**2) * np.log1p(-b * x) + (2.0 - b) / (b**2 * (1.0 - b * x))
+    return float(4.0 * alpha * alpha * (antiderivative(1.0) - antiderivative(0.5)))
+
+
+def split_bright(image: np.ndarray):
+    """(the image with its bright texels clipped, the bright excess as (directions (K, 3),
+    solid angles (K,), radiance (K, 3))), float64; see PREFILTER_BRIGHT_FACTOR."""
+    rgb = np.asarray(image[..., :3], np.float64)
+    lum = np.maximum(rgb @ LUMINANCE, 0.0)
+    threshold = PREFILTER_BRIGHT_FACTOR * float(lum.mean())
+    if lum.size > PREFILTER_BRIGHT_TEXELS:
+        threshold = max(threshold, float(np.partition(lum.reshape(-1), -PREFILTER_BRIGHT_TEXELS - 1)[
+            -PREFILTER_BRIGHT_TEXELS - 1]))
+    bright = lum > threshold
+    keep = np.where(bright, threshold / np.where(bright, lum, 1.0), 1.0)[..., None]
+    clipped = rgb * keep
+    d, solid = ref_prefilter.equirect_texels(*rgb.shape[:2])
+    return clipped, (d[bright], solid[bright], (rgb - clipped)[bright])
+
+
+def prefilter_bright_sum(directions: np.ndarray, bright, perceptual_roughness: float) -> np.ndarray:
+    """The bright texels' share of the prefiltered radiance at unit directions (M, 3):
+    sum of L D(h) (n.l)+ dOmega over the texels, over N(alpha) (lobe_normalisation)."""
+    d, solid, radiance = bright
+    out = np.zeros((directions.shape[0], 3))
+    if len(d) == 0:
+        return out
+    alpha = perceptual_roughness ** 2
+    scale = (alpha * alpha / np.pi) / lobe_normalisation(alpha)
+    for start, stop in _blocks(directions.shape[0], len(d)):
+        w = _lobe_weight_unscaled(directions[start:stop] @ d.T, alpha)
+        w *= solid * scale
+        out[start:stop] = w @ radiance
+    return out
+
+
+# Directions x texels per block of the CPU sums: 2^18 float64 (2 MiB) stay in a core's cache;
+# one product over every direction at once (98 k x 2048 at level 1) was memory-bound, 4x slower.
+_BLOCK_ELEMENTS = 1 << 18
+
+
+def _blocks(directions: int, texels: int):
+    step = max(1, _BLOCK_ELEMENTS // max(texels, 1))
+    return [(start, min(start + step, directions)) for start in range(0, directions, step)]
 
 
 def _prefilter_levels(ctx: moderngl.Context, image: np.ndarray) -> list[np.ndarray]:
-    """The PREFILTER_LEVELS levels, each float32 in GL row order, filtered on the GPU."""
+    """The PREFILTER_LEVELS levels, each 6 x n x n x 4 float32 (faces +X .. -Z, GL row
+    order): the mirror resamples the whole image; level 1 is the clipped image filtered on the
+    GPU; the rougher levels the clipped image's exact texel sum on the CPU; every rough level
+    adds the bright texels' exact sum (split_bright)."""
+    clipped, bright = split_bright(image)
+    levels = [_prefilter_gpu_level(ctx, image, 0)]
+    for level in range(1, PREFILTER_LEVELS):
+        edge = prefilter_level_size(level)
+        directions = ref_prefilter.cube_face_directions(edge).reshape(-1, 3)
+        roughness = prefilter_level_roughness(level)
+        if level < PREFILTER_CPU_FIRST_LEVEL:
+            faces = _prefilter_gpu_level(ctx, clipped, level)
+        else:
+            faces = np.ones((6, edge, edge, 4), np.float32)
+            faces[..., :3] = _texel_sum(directions, box_average(clipped, PREFILTER_CPU_SOURCE_WIDTH[level]),
+                                        roughness).reshape(6, edge, edge, 3)
+        faces[..., :3] += prefilter_bright_sum(directions, bright, roughness).reshape(6, edge, edge, 3)
+        levels.append(faces)
+    return levels
+
+
+def box_average(image: np.ndarray, width: int) -> np.ndarray:
+    """The equirect image averaged over blocks to width x width / 2, each texel weighted by its
+    solid angle (rows near the poles are smaller); the image itself when it is not a whole
+    multiple of that size."""
+    h, w = image.shape[:2]
+    height = width // 2
+    if w % width or h % height or w < width:
+        return np.asarray(image, np.float64)
+    _, solid = ref_prefilter.equirect_texels(h, w)
+    fy, fx = h // height, w // width
+    weighted = (np.asarray(image, np.float64)[..., :3] * solid[..., None]).reshape(height, fy, width, fx, 3)
+    return weighted.sum(axis=(1, 3)) / solid.reshape(height, fy, width, fx).sum(axis=(1, 3))[..., None]
+
+
+def _texel_sum(directions: np.ndarray, image: np.ndarray, perceptual_roughness: float) -> np.ndarray:
+    """sum L D(h) (n.l)+ dOmega / sum D(h) (n.l)+ dOmega over the image's texels (their centres,
+    exact solid angles): the brute force of maths/reference/prefilter.py with the image held
+    constant over each texel."""
+    d, solid = ref_prefilter.equirect_texels(*image.shape[:2])
+    d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), image.reshape(-1, 3)
+    alpha = perceptual_roughness ** 2
+    out = np.empty((directions.shape[0], 3))
+    for start, stop in _blocks(directions.shape[0], len(d)):
+        w = _lobe_weight_unscaled(directions[start:stop] @ d.T, alpha)
+        w *= solid
+        out[start:stop] = (w @ radiance) / w.sum(axis=1, keepdims=True)
+    return out
+
+
+def _lobe_weight_unscaled(NdotL: np.ndarray, alpha: float) -> np.ndarray:
+    """D(h) (n.l)+ times pi / alpha^2, in place of NdotL: (n.l)+ / ((n.h)^2 (alpha^2 - 1) + 1)^2
+    with (n.h)^2 = (1 + n.l) / 2 (Walter et al. 2007, eq. 33; h the bisector of n and l)."""
+    np.maximum(NdotL, 0.0, out=NdotL)
+    q = NdotL + 1.0
+    q *= 0.5 * (alpha * alpha - 1.0)
+    q += 1.0
+    q *= q
+    NdotL /= q
+    return NdotL
+
+
+def _prefilter_gpu_level(ctx: moderngl.Context, image: np.ndarray, level: int) -> np.ndarray:
+    """One level (6 x n x n x 4, faces +X .. -Z, GL row order) of the image filtered on the
+    GPU (prefilter.frag) for the level's roughness."""
     source = targets.upload_texture(ctx, np.concatenate(
         [image[..., :3], np.ones(image.shape[:2] + (1,), image.dtype)], axis=2).astype(np.float32),
         srgb=False)
     source.repeat_x, source.repeat_y = True, False
     program = program_from_templates(ctx, "fullscreen.vert", "prefilter.frag", {})
     vao = ctx.vertex_array(program, [])
-    w0, h0 = PREFILTER_SIZE
     source_levels = 1 + int(np.floor(np.log2(max(image.shape[0], image.shape[1]))))
-    levels = []
+    edge = prefilter_level_size(level)
+    faces = []
     try:
-        for level in range(PREFILTER_LEVELS):
-            size = (max(w0 >> level, 1), max(h0 >> level, 1))
-            with targets.Target(ctx, size, "f32", depth=False) as target:
+        with targets.Target(ctx, (edge, edge), "f32", depth=False) as target:
+            for face in range(6):
                 target.use()
                 source.use(0)
                 program["u_source"].value = 0
                 program["u_source_size"].value = (float(image.shape[1]), float(image.shape[0]))
                 program["u_source_max_lod"].value = float(source_levels - 1)
-                program["u_perceptual_roughness"].value = level / (PREFILTER_LEVELS - 1)
+                program["u_perceptual_roughness"].value = prefilter_level_roughness(level)
                 program["u_sample_count"].value = PREFILTER_SAMPLES
-                program["u_target_size"].value = (float(size[0]), float(size[1]))
+                program["u_face"].value = face
+                program["u_face_size"].value = float(edge)
                 vao.render(moderngl.TRIANGLES, vertices=3)
-                levels.append(np.ascontiguousarray(target.read()[::-1]))  # back to GL row order
+                faces.append(np.ascontiguousarray(target.read()[::-1]))  # back to GL row order
     finally:
         vao.release()
         source.release()
-    return levels
+    return np.stack(faces)
 
 
 def main(argv=None) -> int:

@@ -100,7 +100,7 @@ class ContextCache:
     def black_environment(self) -> PreparedEnvironment:
         """No light at all: what the full program samples in a scene without environment."""
         return self._environments.get(("black",), lambda: PreparedEnvironment(
-            np.zeros((9, 3)), self.ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")))
+            np.zeros((9, 3)), ibl.black_cube(self.ctx)))
 
     def texture(self, source, srgb: bool, sampler: tuple | None = None) -> moderngl.Texture:
         """An image as a texture (colour data decoded from sRGB when ``srgb``): a file path

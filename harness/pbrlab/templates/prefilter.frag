@@ -1,6 +1,8 @@
 #version 330 core
-// One level of the GGX-prefiltered environment (harness/pbrlab/gpu/ibl.py): each texel is
-// the environment convolved with the GGX lobe around its direction, n = v = r (Karis 2013).
+// One face of one level of the GGX-prefiltered environment cube (harness/pbrlab/gpu/ibl.py):
+// each texel is the environment convolved with the GGX lobe around its direction, n = v = r
+// (Karis 2013). The source stays the equirectangular image; the target is a cube face, so
+// no texel of the result sits on a pole or a seam (issue 38).
 #include "pbr/ibl/importance_sampling.glsl"
 #include "pbr/ibl/equirect.glsl"
 #include "pbr/brdf/d_ggx.glsl"
@@ -10,11 +12,27 @@ uniform vec2 u_source_size;
 uniform float u_source_max_lod;
 uniform float u_perceptual_roughness;
 uniform int u_sample_count;
-uniform vec2 u_target_size;
+uniform int u_face;                // 0..5: +X, -X, +Y, -Y, +Z, -Z
+uniform float u_face_size;         // texels per edge of this level's faces
 out vec4 out_radiance;
 
+// The direction of a face texel: the OpenGL 4.6 specification, table 8.19 (major axis
+// direction, sc, tc per face), with s = x / size, t = y / size and sc, tc = 2 s - 1, 2 t - 1
+// (scene/cubemap.py, face_directions, the same table).
+vec3 pbrlab_cube_face_direction(int face, vec2 st) {
+    vec2 c = st * 2.0 - 1.0;
+    vec3 d;
+    if (face == 0) d = vec3(1.0, -c.y, -c.x);
+    else if (face == 1) d = vec3(-1.0, -c.y, c.x);
+    else if (face == 2) d = vec3(c.x, 1.0, c.y);
+    else if (face == 3) d = vec3(c.x, -1.0, -c.y);
+    else if (face == 4) d = vec3(c.x, -c.y, 1.0);
+    else d = vec3(-c.x, -c.y, -1.0);
+    return normalize(d);
+}
+
 void main() {
-    vec3 n = pbr_equirect_direction(gl_FragCoord.xy / u_target_size);
+    vec3 n = pbrlab_cube_face_direction(u_face, gl_FragCoord.xy / u_face_size);
     if (u_perceptual_roughness == 0.0) {  // a mirror: the source itself
         out_radiance = vec4(textureLod(u_source, pbr_equirect_uv(n), 0.0).rgb, 1.0);
         return;

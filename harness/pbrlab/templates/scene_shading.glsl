@@ -7,6 +7,9 @@
 #define PBRLAB_DECLARE_TEX2D(name) uniform sampler2D name
 #define PBRLAB_SAMPLE_TEX2D(name, uv) texture(name, uv)
 #define PBRLAB_SAMPLE_TEX2D_LOD(name, uv, lod) textureLod(name, uv, lod)
+// Cube maps (the prefiltered environment, harness/pbrlab/gpu/ibl.py), read along a direction.
+#define PBRLAB_DECLARE_TEXCUBE(name) uniform samplerCube name
+#define PBRLAB_SAMPLE_TEXCUBE_LOD(name, dir, lod) textureLod(name, dir, lod)
 // The columns t, b, n times v: a tangent-space vector in the world.
 #define PBRLAB_FROM_BASIS(t, b, n, v) (mat3(t, b, n) * (v))
 // A point of the world through a 4x4 matrix (column vectors): homogeneous clip coordinates.

@@ -9,6 +9,9 @@
 #define PBRLAB_DECLARE_TEX2D(name) Texture2D name; SamplerState sampler_##name
 #define PBRLAB_SAMPLE_TEX2D(name, uv) name.Sample(sampler_##name, uv)
 #define PBRLAB_SAMPLE_TEX2D_LOD(name, uv, lod) name.SampleLevel(sampler_##name, uv, lod)
+// Cube maps (the prefiltered environment, harness/pbrlab/gpu/ibl.py), read along a direction.
+#define PBRLAB_DECLARE_TEXCUBE(name) TextureCube name; SamplerState sampler_##name
+#define PBRLAB_SAMPLE_TEXCUBE_LOD(name, dir, lod) name.SampleLevel(sampler_##name, dir, lod)
 // The columns t, b, n times v: a tangent-space vector in the world (rows of float3x3).
 #define PBRLAB_FROM_BASIS(t, b, n, v) mul(v, float3x3(t, b, n))
 // A point of the world through a 4x4 matrix, uploaded as the GLSL programs' (sphere.hlsl's
