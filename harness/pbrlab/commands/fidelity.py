@@ -62,6 +62,7 @@ def register(sub, common):
                    help="image size over the protocol's (default 0.25, the committed references')")
     p.add_argument("--samples", type=int, default=256, help="Cycles samples per pixel (default 256)")
     p.add_argument("--antialias", type=int, default=4,
-                   help="pbrlab's samples per pixel (the render block's antialias; default 4, 1 = off)")
+                   help="pbrlab's samples per pixel (the render block's antialias; default 4, 1 = off; the "
+                        "benchmark's Blackman-Harris resolve and 2x supersampling stay)")
     p.add_argument("--out", default="out/fidelity", help="output folder (default: out/fidelity)")
     p.set_defaults(run=run)

@@ -16,6 +16,15 @@
   the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
   brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
+* ``irradiance_environment(ctx, image)``: a cube of the environment's irradiance over pi,
+  E(n) / pi = sum L (n.w)+ dOmega / sum (n.w)+ dOmega over its texels (the image box-averaged
+  to IRRADIANCE_SOURCE_WIDTH first), exact in float64 on the CPU: the Lambertian term of the
+  scene programs (pbrlab_indirect). It replaces the order-2 spherical harmonics (Ramamoorthi &
+  Hanrahan 2001), which cannot hold a sun's terminator: on Blender's sunrise a white sphere
+  seen from the side was 30 % (median per pixel) off the exact irradiance with SH9, which the
+  peers' convolved cube maps are not (issue 38). Dividing by the discrete sum of the cosine
+  weights, not by pi, keeps a constant environment exactly constant.
+
 The GLSL side reads them through pbr/ibl/environment_brdf.glsl
 (``PBR_DFG_LUT_LOOKUP`` hook, ``pbr_ibl_lod_from_perceptual_roughness``).
 """
@@ -58,6 +67,13 @@ PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling
 # away (issue 38: up to 2x the float64 brute force at roughness 1, 37 % at 0.2, 256 samples;
 # 4096 samples still 16 %). The clipped image keeps a dynamic range FIS handles.
 PREFILTER_BRIGHT_FACTOR = 16.0
+# The irradiance cube: faces 32^2 (2.8 degrees a texel at a face's centre: bilinear
+# reconstruction of a cosine-convolved function, whose curvature is at most that of cos, errs
+# by at most h^2/8 = 3e-4 of its peak), summed from the image averaged to 128 x 64 (a sun
+# spread over 2.8 degrees: the cosine lobe moves by sin(1.4 degrees) = 2.4 % of its peak at
+# most, on the terminator only).
+IRRADIANCE_FACE_SIZE = 32
+IRRADIANCE_SOURCE_WIDTH = 128
 # Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.5, lobes wider than 30
 # degrees) are the exact texel sum of the clipped image box-averaged (solid-angle weighted)
 # to PREFILTER_CPU_SOURCE_WIDTH[level] x half that, in float64 on the CPU: FIS's mip blur
@@ -236,6 +252,27 @@ def float_cube_from_levels(ctx: moderngl.Context, levels) -> moderngl.TextureCub
         ctx.enable_direct(_GL_TEXTURE_CUBE_MAP_SEAMLESS)
     tex.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     return tex
+
+
+def irradiance_faces(image: np.ndarray) -> np.ndarray:
+    """6 x IRRADIANCE_FACE_SIZE^2 x 4 float32 (faces +X .. -Z, GL rows, alpha 1): E(n) / pi
+    at every texel centre's direction (module docstring)."""
+    source = box_average(np.asarray(image, np.float64)[..., :3], IRRADIANCE_SOURCE_WIDTH)
+    d, solid = ref_prefilter.equirect_texels(*source.shape[:2])
+    d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), source.reshape(-1, 3)
+    normals = ref_prefilter.cube_face_directions(IRRADIANCE_FACE_SIZE).reshape(-1, 3)
+    out = np.empty((len(normals), 3))
+    for start, stop in _blocks(len(normals), len(d)):
+        w = np.maximum(normals[start:stop] @ d.T, 0.0) * solid
+        out[start:stop] = (w @ radiance) / w.sum(axis=1, keepdims=True)
+    faces = np.ones((len(normals), 4), np.float32)
+    faces[:, :3] = out
+    return faces.reshape(6, IRRADIANCE_FACE_SIZE, IRRADIANCE_FACE_SIZE, 4)
+
+
+def irradiance_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.TextureCube:
+    """The irradiance cube (irradiance_faces) as a seamless, bilinear RGBA32F cube texture."""
+    return float_cube_from_levels(ctx, [irradiance_faces(image)])
 
 
 def black_cube(ctx: moderngl.Context) -> moderngl.TextureCube:

@@ -44,25 +44,32 @@ class Target:
     ``resolve()``."""
 
     def __init__(self, ctx: moderngl.Context, size, kind: str, depth: bool = True, samples: int = 1,
-                 resolve_filter: str = "box"):
+                 resolve_filter: str = "box", downsample: int = 1):
         self.ctx, self.size, self.kind, self.samples = ctx, tuple(int(s) for s in size), kind, int(samples)
         if resolve_filter not in RESOLVE_FILTERS:
             raise PbrlabError(f"resolve_filter={resolve_filter!r}: expected one of {', '.join(RESOLVE_FILTERS)}")
-        if resolve_filter != "box" and not 1 < self.samples <= 16:
-            raise PbrlabError(f"the {resolve_filter} resolve filters a multisampled target's samples: "
-                              f"it needs 2 to 16 samples per pixel, got {self.samples}")
-        self.resolve_filter = resolve_filter
+        if resolve_filter != "box" and not (1 < self.samples or downsample > 1) or self.samples > 16:
+            raise PbrlabError(f"the {resolve_filter} resolve filters a pixel's samples: it needs 2 to 16 samples "
+                              f"per pixel or supersampling, got {self.samples} sample(s)")
+        if downsample < 1 or any(s % downsample for s in self.size):
+            raise PbrlabError(f"a {self.size[0]}x{self.size[1]} target does not downsample by {downsample}")
+        self.resolve_filter, self.downsample = resolve_filter, int(downsample)
+        # what resolve() writes and read() returns: the drawn size over the downsampling
+        self.output_size = (self.size[0] // self.downsample, self.size[1] // self.downsample)
+        shader_resolve = resolve_filter != "box" or self.downsample > 1
         w, h = self.size
         if w <= 0 or h <= 0 or w > 16384 or h > 16384:
             raise PbrlabError(f"render size {w}x{h} is out of range (1..16384 per side)")
         if self.samples != 1 and kind not in HDR_DTYPES:
             raise PbrlabError(f"a {kind} target is single-sampled; multisampling is for f16 and f32")
+        if shader_resolve and kind not in HDR_DTYPES:
+            raise PbrlabError(f"a {kind} target is resolved as drawn; filtering and downsampling are for f16 and f32")
         if kind == "srgb8":
             self.color = ctx.texture(self.size, 4, dtype="f1", internal_format=GL_SRGB8_ALPHA8)
         elif kind == "unorm8":
             self.color = ctx.texture(self.size, 4, dtype="f1")
         elif kind in HDR_DTYPES:
-            self.color = ctx.texture(self.size, 4, dtype=HDR_DTYPES[kind])
+            self.color = ctx.texture(self.output_size, 4, dtype=HDR_DTYPES[kind])
         else:
             raise PbrlabError(f"unknown target kind {kind!r}; use srgb8, unorm8, f16 or f32")
         self.depth = None
@@ -70,9 +77,12 @@ class Target:
         self._resolved = None      # the framebuffer of ``color`` that resolve() blits into
         self._sample_offsets = None
         try:
-            if self.samples > 1 and resolve_filter != "box":  # read sample by sample: a texture
-                self._multisampled = ctx.texture(self.size, 4, samples=self.samples, dtype=HDR_DTYPES[kind])
-                self.depth = ctx.depth_renderbuffer(self.size, samples=self.samples) if depth else None
+            if shader_resolve:  # read sample by sample: a (multisample) texture
+                many = self.samples if self.samples > 1 else 0  # moderngl: 0 is a single-sampled texture
+                self._multisampled = ctx.texture(self.size, 4, samples=many, dtype=HDR_DTYPES[kind])
+                if not many:  # texelFetch reads level 0: complete without mipmaps (no mipmap filter)
+                    self._multisampled.filter = (moderngl.NEAREST, moderngl.NEAREST)
+                self.depth = ctx.depth_renderbuffer(self.size, samples=many) if depth else None
                 self.fbo = ctx.framebuffer([self._multisampled], self.depth)
                 self._resolved = ctx.framebuffer([self.color])
             elif self.samples > 1:
@@ -122,7 +132,7 @@ class Target:
         """``color`` holding what was drawn: for a multisampled target, each pixel's samples
         averaged into it by a framebuffer blit. The blit binds framebuffers of its own: bind
         (``use``) the target to draw into after it."""
-        if self._resolved is not None and self.resolve_filter == "box":
+        if self._resolved is not None and self.resolve_filter == "box" and self.downsample == 1:
             self.ctx.copy_framebuffer(self._resolved, self.fbo)
         elif self._resolved is not None:
             self._filtered_resolve()
@@ -132,16 +142,18 @@ class Target:
         """templates/resolve_samples.frag into ``color``: every pixel from the samples around it."""
         from .programs import program_from_templates  # loaded on use (programs imports targets' users)
 
-        program = program_from_templates(self.ctx, "fullscreen.vert", "resolve_samples.frag", {})
+        program = program_from_templates(self.ctx, "fullscreen.vert", "resolve_samples.frag",
+                                         {} if self.samples > 1 else {"PBRLAB_SINGLE_SAMPLE": 1})
         offsets = self.sample_offsets()
         program["u_sample_count"].value = len(offsets)
         program["u_offsets"].write(np.array(offsets + [(0.0, 0.0)] * (16 - len(offsets)), np.float32).tobytes())
-        program["u_radius"].value = BLACKMAN_HARRIS_RADIUS
+        program["u_scale"].value = self.downsample
+        program["u_filter"].value = RESOLVE_FILTERS.index(self.resolve_filter)
         program["u_samples"].value = 0
         self._multisampled.use(location=0)
         self.ctx.disable(moderngl.BLEND | moderngl.DEPTH_TEST | moderngl.CULL_FACE)
         self._resolved.use()
-        self.ctx.viewport = (0, 0) + self.size
+        self.ctx.viewport = (0, 0) + self.output_size
         vao = self.ctx.vertex_array(program, [])
         try:
             vao.render(moderngl.TRIANGLES, vertices=3)
@@ -151,7 +163,7 @@ class Target:
     def read(self) -> np.ndarray:
         """Top-row-first HxWx4: uint8 codes for srgb8/unorm8, float32 linear otherwise
         (a multisampled target is resolved first)."""
-        w, h = self.size
+        w, h = self.output_size
         if self.kind in ("srgb8", "unorm8"):
             data = self.fbo.read(components=4, dtype="f1")
             img = np.frombuffer(data, np.uint8).reshape(h, w, 4)

@@ -66,9 +66,9 @@ class _SceneResources:
     neutral stand-ins the full program reads where the scene has nothing; kept between
     renders by the context's resource_cache."""
 
-    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2}
+    ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2, "u_env_irradiance": 4}
     TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
-    FIRST_MATERIAL_UNIT = 4
+    FIRST_MATERIAL_UNIT = 5
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -90,6 +90,7 @@ class _SceneResources:
             return
         self.env_sh = environment.sh
         self.env_textures["u_env_prefiltered"] = environment.prefiltered
+        self.env_textures["u_env_irradiance"] = environment.irradiance
 
     def neutral_texture(self, slot: str) -> moderngl.Texture:
         return self.cache.constant_texture(self.NEUTRAL_TEXEL.get(slot, (1.0, 1.0, 1.0, 1.0)))
@@ -276,6 +277,10 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if size is not None:  # on a copy: the caller's Scene keeps its own size
         scene = dataclasses.replace(scene, camera=dataclasses.replace(
             scene.camera, size=checked_size(size)))
+    supersample = scene.render.supersample
+    if supersample > 1:  # drawn larger, filtered down to the camera's size (targets.Target downsample)
+        scene = dataclasses.replace(scene, camera=dataclasses.replace(
+            scene.camera, size=tuple(int(s) * supersample for s in scene.camera.size)))
     if scene.camera.ortho_half_height is not None and scene.spheres:
         raise SceneError(f"{scene.source}: an orthographic camera draws meshes only; the scene has spheres")
     mesh_fragment = mesh_fragment or fragment_template("mesh", language)
@@ -322,7 +327,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.finish()
             resources.transmission_copy = copy
         with targets.Target(ctx, (w, h), hdr_format, samples=samples,
-                            resolve_filter=scene.render.antialias_filter) as hdr:
+                            resolve_filter=scene.render.antialias_filter, downsample=supersample) as hdr:
             hdr.use()
             ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
             _reset_draw_state(ctx)
@@ -501,7 +506,7 @@ def _resolve(ctx, hdr, scene, transfer, language):
         "PBR_COLOR_TRANSFER": f"PBR_COLOR_TRANSFER_{shader_transfer}"})
     display_kind = {"EXACT": "f32", "HARDWARE": "srgb8"}.get(transfer, "unorm8")
     radiance = hdr.resolve()  # before the display is bound (a multisampled target's blit binds its own)
-    with targets.Target(ctx, hdr.size, display_kind, depth=False) as display:
+    with targets.Target(ctx, hdr.output_size, display_kind, depth=False) as display:
         display.use()
         radiance.use(0)
         _set(resolve, "u_hdr", 0)

@@ -57,11 +57,13 @@ class _LRU:
 @dataclass
 class PreparedEnvironment:
     """The environment's light as the scene programs read it."""
-    sh: np.ndarray                 # 9x3 float64, SH9 of the radiance
-    prefiltered: moderngl.Texture  # GGX-prefiltered equirect mip chain (ibl.py)
+    sh: np.ndarray                 # 9x3 float64, SH9 of the radiance (Unity's ambient: ShadeSH9)
+    prefiltered: moderngl.Texture  # GGX-prefiltered cube mip chain (ibl.py)
+    irradiance: moderngl.Texture   # irradiance / pi cube (ibl.irradiance_environment)
 
     def release(self):
         self.prefiltered.release()
+        self.irradiance.release()
 
 
 class ContextCache:
@@ -93,14 +95,16 @@ class ContextCache:
         else:
             source = ("file", *file_key(environment.path))
         key = (source, float(environment.intensity))
-        return self._environments.get(key, lambda: PreparedEnvironment(
-            environment_sh(environment),
-            ibl.prefiltered_environment(self.ctx, environment_image(environment))))
+        def prepare():
+            image = environment_image(environment)
+            return PreparedEnvironment(environment_sh(environment), ibl.prefiltered_environment(self.ctx, image),
+                                       ibl.irradiance_environment(self.ctx, image))
+        return self._environments.get(key, prepare)
 
     def black_environment(self) -> PreparedEnvironment:
         """No light at all: what the full program samples in a scene without environment."""
         return self._environments.get(("black",), lambda: PreparedEnvironment(
-            np.zeros((9, 3)), ibl.black_cube(self.ctx)))
+            np.zeros((9, 3)), ibl.black_cube(self.ctx), ibl.black_cube(self.ctx)))
 
     def texture(self, source, srgb: bool, sampler: tuple | None = None) -> moderngl.Texture:
         """An image as a texture (colour data decoded from sRGB when ``srgb``): a file path

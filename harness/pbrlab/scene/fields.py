@@ -100,6 +100,9 @@ ANTIALIAS_SAMPLES = (1, 2, 4, 8, 16, 32)
 # "box" averages the pixel's own samples (the GL's blit), "blackman_harris" weighs the samples
 # within 1.5 px of the centre by the Blackman-Harris window (Cycles' default pixel filter)
 ANTIALIAS_FILTERS = ("box", "blackman_harris")
+# render.supersample: the image drawn this many times wider and taller, then filtered down
+# (antialias_filter) to its size in linear: every pixel shaded at supersample^2 places
+SUPERSAMPLES = (1, 2, 3, 4)
 LIGHT_TYPES = ("directional", "point", "spot")
 WORKFLOWS = ("metallic", "specular")
 PRIMITIVES = ("box", "icosphere", "uv_sphere", "cylinder", "plane", "torus")
@@ -232,6 +235,10 @@ RENDER = {
                                "blackman_harris (every sample within 1.5 px of the pixel's centre, weighted "
                                "by the Blackman-Harris window: Cycles' pixel filter); needs antialias > 1, "
                                "at most 16.", ANTIALIAS_FILTERS, default="box"),
+    "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
+                          "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
+                          "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",
+                          SUPERSAMPLES, default=1),
 }
 
 

@@ -215,6 +215,8 @@ class RenderSettings:
     antialias: int = 1
     # how the samples are resolved: "box" (each pixel's own) or "blackman_harris" (gpu/targets.py)
     antialias_filter: str = "box"
+    # the image drawn supersample times wider and taller, filtered down in linear (gpu/targets.py)
+    supersample: int = 1
 
 
 @dataclass
@@ -665,9 +667,9 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None, read_gl
     rs = top.child("render", {})
     render = RenderSettings(**{key: read_field(rs, RENDER, key) for key in RENDER})
     rs.finish()
-    if render.antialias_filter != "box" and not 1 < render.antialias <= 16:
-        rs.fail(f"{render.antialias_filter} filters the samples of multisampled pixels: it needs an antialias "
-                f"of 2 to 16, got {render.antialias}", "antialias_filter")
+    if render.antialias_filter != "box" and not (1 < render.antialias <= 16 or render.supersample > 1):
+        rs.fail(f"{render.antialias_filter} filters a pixel's samples: it needs an antialias of 2 to 16 or a "
+                f"supersample above 1, got antialias {render.antialias}", "antialias_filter")
     if render.brdf_model == "unity":
         # the layers from the material's numbers, or from what its surface writes
         layers = {name: surface_layers.material_layers(m) for name, m in materials.items()}

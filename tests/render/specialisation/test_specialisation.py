@@ -139,7 +139,7 @@ MINIMAL = one_sphere({"albedo": [0.8, 0.5, 0.3], "smoothness": 0.6},
 ABSENT_WHEN_UNUSED = ["u_emission", "u_occlusion", "u_alpha", "u_point_", "u_spot_", "u_env_sh",
                       "u_env_prefiltered", "u_albedo_map", "u_normal_map",
                       # call sites (the library's definitions stay, unused):
-                      "pbr_spot_attenuation(gi.light.dir", "pbr_sh9_irradiance(u_env_sh",
+                      "pbr_spot_attenuation(gi.light.dir", "textureLod(u_env_irradiance",
                       "u_directional_active"]
 
 
