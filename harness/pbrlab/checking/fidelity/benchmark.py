@@ -157,7 +157,10 @@ def _merge_facts(path: Path, facts: dict, seconds: dict) -> None:
     old = json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
     for name, fact in facts.items():
         old[name] = {**{k: v for k, v in fact.items() if k != "messages"}, "seconds": round(seconds[name], 2)}
-    path.write_text(json.dumps(old, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+    text = json.dumps(old, indent=1, sort_keys=True) + "\n"
+    # no machine's paths in a committed file: the checkout's made relative, a run's scratch dropped
+    text = text.replace(str(staging.REPO) + "/", "").replace(tempfile.gettempdir() + "/", "")
+    path.write_text(text, encoding="utf-8")
 
 
 SIDE_BY_SIDE = ("cycles", "pbrlab", "threejs", "sample_viewer")

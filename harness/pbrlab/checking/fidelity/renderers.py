@@ -72,7 +72,8 @@ def missing_setup(renderer: str) -> list[str]:
         if shutil.which("node") is None:
             missing.append("node (Debian package nodejs) is not on PATH")
         if not (TOOLS[renderer].parent / "node_modules").is_dir():
-            missing.append(f"{TOOLS[renderer].parent}/node_modules is missing (bash scripts/setup.sh)")
+            missing.append(f"{TOOLS[renderer].parent}/node_modules is missing (in a pbrlab checkout: "
+                           "bash scripts/setup.sh; elsewhere npm ci in that folder)")
     return missing
 
 
