@@ -25,8 +25,6 @@ QUOTED_DB = 0.1
 # pbrlab worse than the worst peer (docs/fidelity.md, "Where pbrlab is behind"), measured at
 # PBRLAB_RENDER; each entry says what the path tracer shows there
 OVER_BOUND = {
-    "khronos-SheenChair@sunrise": "the velvet's rim darkens at grazing angles where Cycles' and both peers' "
-                                  "brighten (the sheen layer's albedo scaling against its environment term)",
     "khronos-TransmissionRoughnessTest@sunrise": "0.2 dB over: the rough glass cubes' sun glints",
     "khronos-AnisotropyStrengthTest@sunrise": "0.1 dB over: every renderer is 10-12 dB from Cycles' anisotropy",
     "khronos-TextureTransformMultiTest@courtyard": "0.5 dB over: the label text's thin strokes",
