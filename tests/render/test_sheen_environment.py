@@ -16,7 +16,7 @@ from pbrlab.maths.reference import prefilter, sheen
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 
 
-def _errors(perceptual_roughness, count=200, seed=1):
+def _errors(perceptual_roughness, count=300, seed=1):
     image = images.read_image(locate("scenes") / "assets" / "environments" / "sunrise_256.exr")[..., :3]
     source = ibl.box_average(image.astype(np.float64), 128)
     d, solid = prefilter.equirect_texels(*source.shape[:2])
