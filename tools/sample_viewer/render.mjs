@@ -18,7 +18,7 @@
 //             "unpremultiply": false (true: colour divided by alpha where 0 < alpha),
 //             "iblSampler": {"lambertianSampleCount": 2048, ...} (see IBL_SAMPLER_SETTINGS)}
 // Defaults: environmentRotationDeg 90 (matches pbrlab's equirect convention, checked by
-// tools/threejs_gltf/check_orientation.py), msaa 0, unpremultiply true for a view spec camera
+// pbrlab.checking.fidelity.check_staging), msaa 0, unpremultiply true for a view spec camera
 // (the benchmark's output: colour not premultiplied) and false otherwise (as before);
 // iblSampler: the lowered settings below, with a view spec camera also VIEW_SPEC_IBL_SAMPLER.
 // Writes OUT.f32 (float32 RGBA, rows top to bottom, linear radiance before tonemap and
@@ -73,7 +73,7 @@ function iblSettings(overrides = {}) {
 // an environment with a small bright sun (/work/fidelity_staging/sunrise.exr, peak 34560)
 // leaves a white diffuse sphere 24 % (median) off its irradiance / pi, and 55 % (red mean)
 // from +X; with 2048 it is 4 % (the viewer's full defaults: 3 %), at 35 s instead of 10 s a
-// render on two shared cores (the full defaults: 150 s). tools/threejs_gltf/check_orientation.py.
+// render on two shared cores (the full defaults: 150 s). pbrlab.checking.fidelity.check_staging.
 const VIEW_SPEC_IBL_SAMPLER = { lambertianSampleCount: 2048 };
 
 function patchedViewer(text, settings) {

@@ -28,7 +28,7 @@ const THREE_DIR = join(HERE, "node_modules", "three");
 const PAGE = join(HERE, "page");
 // three.js samples its environment at u = pbrlab's u + 1/4 (see page/peer.mjs for the
 // derivation from three.js's source); this rotation about +Y removes the quarter turn.
-// Checked by tools/threejs_gltf/check_orientation.py (mirror and diffuse spheres).
+// Checked by pbrlab.checking.fidelity.check_staging (mirror and diffuse spheres).
 const ENVIRONMENT_ROTATION_DEG = -90.0;
 
 // /three/* -> node_modules/three, /page/* -> page/, /fs/ABS -> ABS when under an allowed root

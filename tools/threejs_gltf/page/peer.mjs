@@ -18,7 +18,7 @@
 //    EXRLoader.js, "outLineOffset"). pbrlab's u is atan2(d.x, -d.z) / 2pi: the same turning
 //    sense, three.js's u being pbrlab's plus 1/4. Sampling along R_y(-theta) d adds theta / 2pi
 //    to three.js's u, so environmentRotation.y = -pi/2 makes three.js see pbrlab's sky
-//    (render.mjs passes the angle; tools/threejs_gltf/check_orientation.py is the proof).
+//    (render.mjs passes the angle; pbrlab.checking.fidelity.check_staging is the proof).
 //  * The transmission pass (WebGLRenderer.js, renderTransmissionPass) renders the opaque
 //    objects into its own half-float, 4x multisampled target of the current viewport's size
 //    and restores the current render target after it, so it works when the frame itself goes

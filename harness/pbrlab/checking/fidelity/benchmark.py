@@ -166,14 +166,9 @@ def _merge_facts(path: Path, facts: dict, seconds: dict) -> None:
 SIDE_BY_SIDE = ("cycles", "pbrlab", "threejs", "sample_viewer")
 
 
-def _over_white(rgba8: np.ndarray) -> np.ndarray:
-    alpha = rgba8[..., 3:4].astype(np.float64) / 255.0
-    return np.rint(255.0 + (rgba8[..., :3] - 255.0) * alpha).astype(np.uint8)
-
-
 def _write_side_by_side(path: Path, shown: dict) -> None:
     """Cycles | pbrlab | three.js | Sample Viewer, each over white (as the metric sees them)."""
-    tiles = [_over_white(shown[n]) for n in SIDE_BY_SIDE if n in shown]
+    tiles = [np.rint(metric.over_white(shown[n])).astype(np.uint8) for n in SIDE_BY_SIDE if n in shown]
     gap = np.full((tiles[0].shape[0], 4, 3), 200, np.uint8)
     row = np.concatenate([x for t in tiles for x in (t, gap)][:-1], axis=1)
     images.write_png(path, row)

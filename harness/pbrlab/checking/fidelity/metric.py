@@ -28,7 +28,8 @@ _I = np.array([0.59597799, -0.27417610, -0.32180189])
 _Q = np.array([0.21147017, -0.52261711, 0.31114694])
 
 
-def _over_white(rgba8: np.ndarray) -> np.ndarray:
+def over_white(rgba8: np.ndarray) -> np.ndarray:
+    """colorDelta's blend: each colour over white by its alpha, float64 HxWx3."""
     rgba = rgba8.astype(np.float64)
     alpha = rgba[..., 3:4] / 255.0
     return 255.0 + (rgba[..., :3] - 255.0) * alpha
@@ -36,7 +37,7 @@ def _over_white(rgba8: np.ndarray) -> np.ndarray:
 
 def color_delta(candidate: np.ndarray, golden: np.ndarray) -> np.ndarray:
     """pixelmatch's YIQ delta per pixel (HxW float64) of two HxWx4 uint8 images."""
-    a, b = _over_white(candidate), _over_white(golden)
+    a, b = over_white(candidate), over_white(golden)
     y = a @ _Y - b @ _Y
     i = a @ _I - b @ _I
     q = a @ _Q - b @ _Q
