@@ -76,6 +76,8 @@
 #include "pbr/ibl/importance_sampling.glsl"
 #include "pbr/ibl/equirect.glsl"
 #include "pbr/ibl/environment_brdf.glsl"
+#include "pbr/ibl/horizon_occlusion.glsl"
+#include "pbr/ibl/dominant_direction.glsl"
 
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.glsl"

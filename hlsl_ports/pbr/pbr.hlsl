@@ -77,6 +77,8 @@
 #include "pbr/ibl/importance_sampling.hlsl"
 #include "pbr/ibl/equirect.hlsl"
 #include "pbr/ibl/environment_brdf.hlsl"
+#include "pbr/ibl/horizon_occlusion.hlsl"
+#include "pbr/ibl/dominant_direction.hlsl"
 
 // the surface API core (pbr/unity/ adds Unity's names on top: include it yourself)
 #include "pbr/surface/lighting_standard.hlsl"

@@ -73,6 +73,7 @@ class MaterialFeatures:
                                 # the environment seen through, the volume's attenuation
     specular_f90: bool = False  # an explicit F90 (KHR_materials_specular's specularFactor), not F90 from F0
     dielectric_specular: bool = False  # the metallic workflow's dielectric F0 is the material's, not 0.04
+    shading_normal: bool = False  # a normal map (or a surface that writes one) may tilt n from the geometric normal
 
 
 @dataclass(frozen=True)
@@ -82,6 +83,7 @@ class SceneFeatures:
     spot: int
     environment: bool          # indirect diffuse (SH9) and specular (prefiltered + DFG)
     energy_compensation: bool
+    horizon_occlusion: bool    # render.horizon_occlusion (compiled where a material's normal can tilt)
     quality: str
     brdf_model: str            # "pbrlab" or "unity" (PBR_BRDF_MODEL)
     tonemap: str
@@ -119,6 +121,7 @@ def material_features(material) -> MaterialFeatures:
         transmission="transmission" in layers,
         specular_f90="specular_f90" in layers,
         dielectric_specular="dielectric_specular" in layers,
+        shading_normal=surface_layers.tilts_shading_normal(material),
     )
 
 
@@ -128,6 +131,7 @@ def scene_features(scene) -> SceneFeatures:
         directional=counts["directional"], point=counts["point"], spot=counts["spot"],
         environment=scene.environment is not None,
         energy_compensation=scene.render.energy_compensation,
+        horizon_occlusion=scene.render.horizon_occlusion,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -155,7 +159,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                      ("UNLIT", m.unlit), ("SHEEN", m.sheen),
                      ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence),
                      ("TRANSMISSION", m.transmission), ("SPECULAR_F90", m.specular_f90),
-                     ("DIELECTRIC_SPECULAR", m.dielectric_specular)):
+                     ("DIELECTRIC_SPECULAR", m.dielectric_specular),
+                     ("HORIZON_OCCLUSION", m.shading_normal and s.horizon_occlusion)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

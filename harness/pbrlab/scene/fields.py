@@ -235,6 +235,9 @@ RENDER = {
                                "blackman_harris (every sample within 1.5 px of the pixel's centre, weighted "
                                "by the Blackman-Harris window: Cycles' pixel filter); needs antialias > 1, "
                                "at most 16.", ANTIALIAS_FILTERS, default="box"),
+    "horizon_occlusion": Flag("Take out the share of a normal-mapped surface's environment light that would "
+                              "come through the object (below its geometric normal's horizon: "
+                              "pbr/ibl/horizon_occlusion.glsl).", default=True),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",

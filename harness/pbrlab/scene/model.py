@@ -217,6 +217,9 @@ class RenderSettings:
     antialias_filter: str = "box"
     # the image drawn supersample times wider and taller, filtered down in linear (gpu/targets.py)
     supersample: int = 1
+    # a normal-mapped surface's environment light below its geometric horizon taken out
+    # (PBRLAB_HORIZON_OCCLUSION: pbr/ibl/horizon_occlusion.glsl)
+    horizon_occlusion: bool = True
 
 
 @dataclass

@@ -47,6 +47,8 @@ FIELD_SIZES = {f: 3 if f in ("ClearCoatNormal", "SheenColor", "AnisotropyDirecti
 _WRITE = re.compile(r"\.\s*(" + "|".join(sorted(LAYER_OF_FIELD, key=len, reverse=True)) +
                     r")\b(?:\s*\.\s*[xyzwrgba]{1,4}\b)?\s*[-+*/]?=(?!=)")
 _SURF = re.compile(r"\bvoid\s+surf\s*\(([^)]*)\)")
+# a write of a shading normal: `.Normal =`, `.ClearCoatNormal.xy +=` ... (not `.worldNormal =`)
+_NORMAL_WRITE = re.compile(r"\.\s*(?:Normal|ClearCoatNormal)\b(?:\s*\.\s*[xyzwrgba]{1,4}\b)?\s*[-+*/]?=(?!=)")
 LAYERS_PARAMETER = "inout SurfaceOutputStandardLayers layers"
 
 
@@ -90,6 +92,18 @@ def material_layers(material) -> frozenset:
     if own is not None:  # a shader of its own (scene.material_passes): the layers it compiles
         return own
     return surface_file_layers(material.surface)
+
+
+def tilts_shading_normal(material) -> bool:
+    """Whether ``material``'s shading normal may leave its geometric normal (the horizon
+    occlusion of scene_lighting.inc is compiled in then): a default-surface material with a
+    normal or coat-normal map, a surface file that writes Normal or ClearCoatNormal, and a
+    shader of its own (a Unity surface shader: its surf may)."""
+    if material.surface is None:
+        return bool({"normal", "clearcoat_normal"} & set(material.textures))
+    if material.source is not None and material.source.layers(material) is not None:
+        return True
+    return any(_NORMAL_WRITE.search(t) for t in surface_sources(material.surface))
 
 
 def check_twins(scene, surfaces: dict) -> None:

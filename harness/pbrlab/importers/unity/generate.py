@@ -120,7 +120,7 @@ def _layered_shading(shader: M.SurfaceShader) -> list[str]:
             if layer in shader.layers:
                 lines.append(f"    layers.{direction} = pbrlab_tangent_to_world_normal(layers.{direction}, "
                              "f.normal, f.tangent);")
-    lines.append("    vec4 c = pbrlab_shade_surface(pbrlabBase, f.position, f.view PBRLAB_LAYERS_ARG);")
+    lines.append("    vec4 c = pbrlab_shade_surface(pbrlabBase, f.position, f.view, f.normal PBRLAB_LAYERS_ARG);")
     return lines
 
 
