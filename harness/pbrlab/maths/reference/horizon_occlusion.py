@@ -34,10 +34,9 @@ def visible_share(alpha: float, v: np.ndarray, ng: np.ndarray, nodes: int = 256)
 
 
 def lobe_share_above(c, alpha):
-    """1/2 (1 + t / sqrt(alpha^2 + t^2)), t = c / (1 + sqrt(1 - c^2)) (horizon_occlusion.glsl)."""
-    c = np.clip(np.asarray(c, np.float64), -1.0, 1.0)
-    t = c / (1.0 + np.sqrt(np.maximum(1.0 - c * c, 0.0)))
-    return 0.5 + 0.5 * t / np.sqrt(np.maximum(alpha * alpha + t * t, 1e-300))
+    """1/2 (1 + c / sqrt(4 alpha^2 + c^2)) (horizon_occlusion.glsl)."""
+    c = np.asarray(c, np.float64)
+    return 0.5 + 0.5 * c / np.sqrt(np.maximum(4.0 * alpha * alpha + c * c, 1e-300))
 
 
 def specular_horizon_occlusion(RdotNg, NdotV, alpha):

@@ -1,0 +1,81 @@
+"""What the environment read's two corrections cost in the whole lit pixel: the horizon
+occlusion (render.horizon_occlusion, compiled where a normal can tilt) and the dominant
+direction (the pbrlab model's read along mix(r, n, alpha)), as static RDNA3 / RDNA2 / GCN5
+instructions and VGPRs of `pbrlab render`'s specialised programs (Mesa RADV/ACO on a null
+device: no GPU, nothing runs; pbrlab.bench.gpu's ACO_NOTE says what the figures are).
+
+Programs: the fidelity benchmark's DamagedHelmet (base colour, metallic-roughness, normal,
+occlusion and emission maps under an environment) and ClearCoatTest (a coat and its normal
+map); for each, the program as shipped, with horizon_occlusion off, and with the dominant
+read replaced by the mirror direction in the program's text (that line alone). A benchmark:
+it prints figures and asserts nothing.
+
+    python benchmarks/environment_read_cost.py
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from pathlib import Path
+
+from pbrlab.bench import gpu
+from pbrlab.checking.fidelity import staging
+from pbrlab.importers.loader import parse_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+MODELS = {"DamagedHelmet": ROOT / "corpus/gltf/khronos/DamagedHelmet/DamagedHelmet.glb",
+          "ClearCoatTest": ROOT / "corpus/gltf/khronos/ClearCoatTest/ClearCoatTest.glb"}
+DOMINANT = "vec3 lookup = pbr_specular_dominant_direction(n, r, alpha);"
+MIRROR = "vec3 lookup = r;"
+
+
+def _largest(scene, mirror_read: bool, families) -> dict:
+    """Per family, (instructions, VGPRs) of the scene's largest specialised GLSL program."""
+    jobs = {}
+    for index, program in enumerate(gpu.scene_programs(scene, "specialised")):
+        job = program.job("glsl")
+        if mirror_read:
+            if DOMINANT not in job.fragment:
+                raise SystemExit("the dominant read's line is not in the program: update this benchmark")
+            job = dataclasses.replace(job, fragment=job.fragment.replace(DOMINANT, MIRROR))
+        jobs[str(index)] = job
+    compiled = gpu._compile(jobs, families)
+    out = {}
+    for family in families:
+        stats = [compiled[family][key] for key in jobs]
+        best = max(stats, key=lambda s: s["Instructions"])
+        out[family] = (best["Instructions"], best["VGPRs"])
+    return out
+
+
+def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
+    """{variant: {family: (instructions, VGPRs)}} for MODELS[name] under the sunrise."""
+    model = MODELS[name]
+    environment = staging.ENVIRONMENTS_DIR / "sunrise.exr"
+    variants = {}
+    for label, horizon, mirror in (("as shipped", True, False), ("horizon occlusion off", False, False),
+                                   ("mirror read", True, True)):
+        scene = parse_scene({"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "size": [64, 64]},
+                             "environment": {"path": str(environment)}, "objects": [{"gltf": str(model)}],
+                             "render": {"horizon_occlusion": horizon}},
+                            origin=f"{name} under sunrise", base=model.parent)
+        variants[label] = _largest(scene, mirror, families)
+    return variants
+
+
+def main() -> None:
+    reason = gpu.unavailable_reason()
+    if reason:
+        raise SystemExit(f"RADV's null device is not available here: {reason}")
+    families = gpu.GPU_FAMILIES
+    print("largest specialised GLSL program, instructions / VGPRs per family "
+          + " / ".join(gpu.TITLES[f] for f in families))
+    for name in MODELS:
+        for label, per_family in figures(name, families).items():
+            print(f"  {name:16s} {label:22s} "
+                  + "  ".join(f"{gpu.TITLES[f]} {i:5d} / {v:3d}" for f, (i, v) in per_family.items()))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,24 @@
+"""benchmarks/environment_read_cost.py runs, and its variants are what they say: the horizon
+occlusion is compiled into a normal-mapped material's program only when render.horizon_occlusion
+is on, and the dominant read costs instructions over the mirror read it replaces."""
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+from pbrlab.bench import gpu
+
+SCRIPT = Path(__file__).resolve().parents[2] / "benchmarks" / "environment_read_cost.py"
+
+
+def test_environment_read_cost_variants():
+    if (why := gpu.unavailable_reason()) is not None:
+        pytest.fail(f"RADV null device unavailable (scripts/setup.sh installs it): {why}")
+    spec = importlib.util.spec_from_file_location("environment_read_cost", SCRIPT)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    figures = bench.figures("DamagedHelmet", families=("rdna3",))
+    shipped = figures["as shipped"]["rdna3"][0]
+    assert figures["horizon occlusion off"]["rdna3"][0] < shipped
+    assert figures["mirror read"]["rdna3"][0] < shipped
