@@ -46,25 +46,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from scipy import ndimage
-
 from pbrlab.checking import sample_viewer
-from pbrlab.checking.fidelity import renderers
 from pbrlab.foundation import images
 from pbrlab.importers.gltf import load_gltf
-from pbrlab.maths import srgb8
 from pbrlab.render.renderer import render_scene
 from pbrlab.checking.sample_viewer_prediction import DIFFERENCES, viewer_minus_pbrlab
 from pbrlab.scene.model import Environment
-from test_sample_viewer_agreement import CONSTANT_SKY, EDGE_PX, MAX_MEAN_CODES, _agreement
+from test_sample_viewer_agreement import CODES, CONSTANT_SKY, MAX_MEAN_CODES, _agreement, odd_one_out, render_threejs
 
 CORPUS = Path(__file__).resolve().parents[3] / "corpus" / "gltf" / "khronos"
 SIZE = (384, 256)
 MODELS = ("AttenuationTest", "ClearCoatCarPaint", "ClearCoatTest", "RiggedSimple", "SpecularTest", "UnlitTest")
-# The per-pixel bound, in 8-bit sRGB codes (any channel): twice the floor of two independent
-# renderers implementing the same lobes, pbrlab and three.js, which differ by at most 2 codes
-# over all of ClearCoatCarPaint's and RiggedSimple's compared pixels (measured with the test).
-CODES = 4
 
 
 @pytest.fixture(scope="module")
@@ -91,30 +83,7 @@ def _render_both(name, sky, strip=None):
 
 
 def _render_threejs(name, camera, sky):
-    """three.js r187's own glTF renderer (tools/threejs_gltf, as the fidelity benchmark runs it)
-    of the same file, camera and sky: straight linear colour, alpha its coverage."""
-    _, exr, _ = sky
-    distance = float(np.linalg.norm(np.asarray(camera.position) - camera.target))
-    view = {"gltf": str(CORPUS / name / f"{name}.glb"), "environment": str(exr), "size": list(SIZE),
-            "camera": {"eye": [float(x) for x in camera.position], "target": [float(x) for x in camera.target],
-                       "up": [float(x) for x in camera.up], "yfov_deg": float(camera.fov_y_deg),
-                       "znear": distance * sample_viewer.NEAR_FRACTION, "zfar": distance * sample_viewer.FAR_FACTOR},
-            "samples": 1, "seed": 0, "denoise": False}
-    image, _ = renderers.render_external("threejs", view)
-    return image
-
-
-def _odd_one_out(ours, viewer, third):
-    """Over the pixels all three cover (eroded by EDGE_PX), per renderer the fraction of pixels
-    where it alone is more than CODES from both others while they agree within CODES, and the
-    fraction where all three differ pairwise."""
-    covered = (ours[..., 3] > 0) & (viewer[..., 3] > 0) & (third[..., 3] > 0)
-    inner = ndimage.binary_erosion(covered, iterations=EDGE_PX)
-    a, b, c = (srgb8.encode(np.clip(x[..., :3], 0, None))[inner].astype(np.int32) for x in (ours, viewer, third))
-    ab, ac, bc = (np.abs(x - y).max(axis=-1) > CODES for x, y in ((a, b), (a, c), (b, c)))
-    return {"pbrlab": float(np.mean(ab & ac & ~bc)), "viewer": float(np.mean(ab & bc & ~ac)),
-            "three.js": float(np.mean(ac & bc & ~ab)), "all differ": float(np.mean(ab & ac & bc)),
-            "pixels": int(inner.sum())}
+    return render_threejs(CORPUS / name / f"{name}.glb", camera, sky[1], SIZE)
 
 
 def test_the_corpus_is_what_its_manifest_says():
@@ -138,7 +107,7 @@ def test_khronos_model_agrees_with_the_sample_renderer(name, sky):
     assert result.warnings == []  # every extension the model uses is honoured
     assert np.isfinite(ours).all()
     outcome, mean_codes, flip, coverage_mismatch, compared = _agreement(ours, theirs)
-    odd = _odd_one_out(ours, theirs, _render_threejs(name, result.scene.camera, sky))
+    odd = odd_one_out(ours, theirs, _render_threejs(name, result.scene.camera, sky))
     figures = (f"{name}: {compared} pixels, {outcome.fraction_over:.4f} over {CODES} codes from the viewer "
                f"(max {outcome.max_abs:g}), mean {mean_codes:.3f} codes, FLIP {flip}, coverage differs at "
                f"{coverage_mismatch}; the odd one out (of {odd['pixels']} pixels): pbrlab {odd['pbrlab']:.4f}, "
@@ -156,7 +125,7 @@ def test_the_arbitration_fails_for_a_wrong_light_unit(sky):
     result, ours, theirs = _render_both("SpecularTest", sky)
     brighter = ours.copy()
     brighter[..., :3] *= 1.1
-    odd = _odd_one_out(brighter, theirs, _render_threejs("SpecularTest", result.scene.camera, sky))
+    odd = odd_one_out(brighter, theirs, _render_threejs("SpecularTest", result.scene.camera, sky))
     print(odd)
     assert odd["pbrlab"] > odd["viewer"]
 
