@@ -62,9 +62,10 @@ clearcoat 0 / 0 / 0.009 / 0.001, anisotropy 0.0012 / 0 / 0 / 0 (0.0007 with the 
 0.0001 / 0 / 0 / 0, specular_metal 0 / 0 / 0 / 0, transmission 0.0058 / 0 / 0.4809 / 0.2164, sheen
 0 / 0.0453 / 0 / 0 (0 / 0.1412 / 0 / 0 with the sky: test_sheen_as_rendered_three_js_arbitrating
 holds that one as a check, the viewer's unscaled base being its own). On pbrlab's own assets the
-viewer and pbrlab mostly agree and three.js is the odd one out (its spot cones and PMREM), so the
-checks above keep the two-renderer tolerance; the Khronos models (test_khronos_models.py) are
-arbitrated.
+viewer and pbrlab mostly agree and three.js is the odd one out (on hierarchy_lights' spot and
+point lights and the transmission copy: not yet explained), and pbrlab alone differs on a few
+pixels (at most 0.58 %), so the checks above keep the two-renderer tolerance; the Khronos
+models (test_khronos_models.py) are arbitrated.
 
 Without chromium, node or the npm packages the tests fail with the set-up command
 (bash scripts/setup.sh); they are not skipped. Each viewer render takes 5-15 s (browser start and SwiftShader's IBL filtering).
