@@ -8,29 +8,14 @@ use one discretisation). Random normals and views, fixed seed."""
 import numpy as np
 import pytest
 
-from pbrlab.foundation import images
-from pbrlab.foundation.locations import locate
-from pbrlab.gpu import ibl
-from pbrlab.maths.reference import prefilter, sheen
-
-LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
+from pbrlab.maths.reference import sheen
+from sunrise_lobes import LUMINANCE, prefiltered_luminance, random_views, sunrise_texels
 
 
 def _errors(perceptual_roughness, count=300, seed=1):
-    image = images.read_image(locate("scenes") / "assets" / "environments" / "sunrise_256.exr")[..., :3]
-    source = ibl.box_average(image.astype(np.float64), 128)
-    d, solid = prefilter.equirect_texels(*source.shape[:2])
-    d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), source.reshape(-1, 3)
-    rng = np.random.default_rng(seed)
+    d, solid, radiance = sunrise_texels()
     irradiance_error, mirror_error = [], []
-    for _ in range(count):
-        n = rng.normal(size=3)
-        n /= np.linalg.norm(n)
-        t = rng.normal(size=3)
-        t -= n * (t @ n)
-        t /= np.linalg.norm(t)
-        mu = rng.uniform(0.02, 1.0)
-        v = mu * n + np.sqrt(1 - mu * mu) * t
+    for n, v, mu in random_views(count, seed, 0.02):
         NdotL = d @ n
         h = d + v
         h /= np.linalg.norm(h, axis=1, keepdims=True)
@@ -40,9 +25,7 @@ def _errors(perceptual_roughness, count=300, seed=1):
         exact, albedo = (w @ radiance) @ LUMINANCE, w.sum()
         cosine = np.where(NdotL > 0, NdotL * solid, 0.0)
         irradiance = (cosine @ radiance) / cosine.sum() @ LUMINANCE
-        r = 2 * mu * n - v
-        lobe = ibl._lobe_weight_unscaled(np.clip(d @ r, -1, 1)[None], perceptual_roughness ** 2)[0] * solid
-        mirror = (lobe @ radiance) / lobe.sum() @ LUMINANCE
+        mirror = prefiltered_luminance(d, solid, radiance, 2 * mu * n - v, perceptual_roughness ** 2)
         irradiance_error.append(abs(albedo * irradiance - exact) / exact)
         mirror_error.append(abs(albedo * mirror - exact) / exact)
     return np.array(irradiance_error), np.array(mirror_error)

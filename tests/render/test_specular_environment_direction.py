@@ -12,30 +12,15 @@ views, fixed seed; roughness from 0.5, where the lobe spans several texels. Meas
 import numpy as np
 import pytest
 
-from pbrlab.foundation import images
-from pbrlab.foundation.locations import locate
-from pbrlab.gpu import ibl
-from pbrlab.maths.reference import brdf, dominant_direction, prefilter
-
-LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
+from pbrlab.maths.reference import brdf, dominant_direction
+from sunrise_lobes import LUMINANCE, prefiltered_luminance, random_views, sunrise_texels
 
 
 def _errors(perceptual_roughness, count=300, seed=2):
-    image = images.read_image(locate("scenes") / "assets" / "environments" / "sunrise_256.exr")[..., :3]
-    source = ibl.box_average(image.astype(np.float64), 128)
-    d, solid = prefilter.equirect_texels(*source.shape[:2])
-    d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), source.reshape(-1, 3)
+    d, solid, radiance = sunrise_texels()
     alpha = perceptual_roughness ** 2
-    rng = np.random.default_rng(seed)
     dominant_error, mirror_error = [], []
-    for _ in range(count):
-        n = rng.normal(size=3)
-        n /= np.linalg.norm(n)
-        t = rng.normal(size=3)
-        t -= n * (t @ n)
-        t /= np.linalg.norm(t)
-        mu = rng.uniform(0.05, 1.0)
-        v = mu * n + np.sqrt(1 - mu * mu) * t
+    for n, v, mu in random_views(count, seed, 0.05):
         NdotL = d @ n
         h = d + v
         h /= np.linalg.norm(h, axis=1, keepdims=True)
@@ -44,14 +29,9 @@ def _errors(perceptual_roughness, count=300, seed=2):
         w = np.where(NdotL > 0, f * NdotL * solid, 0.0)
         exact, albedo = (w @ radiance) @ LUMINANCE, w.sum()
         r = 2 * mu * n - v
-
-        def prefiltered(direction):
-            lobe = ibl._lobe_weight_unscaled(np.clip(d @ direction, -1, 1)[None], alpha)[0] * solid
-            return (lobe @ radiance) / lobe.sum() @ LUMINANCE
-
         dominant = dominant_direction.specular_dominant_direction(n, r, alpha)
-        dominant_error.append(abs(albedo * prefiltered(dominant) - exact) / exact)
-        mirror_error.append(abs(albedo * prefiltered(r) - exact) / exact)
+        dominant_error.append(abs(albedo * prefiltered_luminance(d, solid, radiance, dominant, alpha) - exact) / exact)
+        mirror_error.append(abs(albedo * prefiltered_luminance(d, solid, radiance, r, alpha) - exact) / exact)
     return np.array(dominant_error), np.array(mirror_error)
 
 
