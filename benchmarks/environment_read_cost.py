@@ -7,21 +7,32 @@ device: no GPU, nothing runs; pbrlab.bench.gpu's ACO_NOTE says what the figures 
 Programs: the fidelity benchmark's DamagedHelmet (base colour, metallic-roughness, normal,
 occlusion and emission maps under an environment) and ClearCoatTest (a coat and its normal
 map); for each, the program as shipped, with horizon_occlusion off, and with the dominant
-read replaced by the mirror direction in the program's text (that line alone). A benchmark:
-it prints figures and asserts nothing.
+read replaced by the mirror direction in the program's text (that line alone). With
+``--time``, the paired llvmpipe cost too: process time of ``render_scene`` of each model framed
+at 512 x 512 with horizon occlusion on and off, interleaved after a warm-up of each, medians
+(run with LP_NUM_THREADS=1 so llvmpipe shades on this process's thread). A benchmark: it
+prints figures and asserts nothing.
 
     python benchmarks/environment_read_cost.py
+    LP_NUM_THREADS=1 python benchmarks/environment_read_cost.py --time [--repeats 7]
 """
 
 from __future__ import annotations
 
+import argparse
 import dataclasses
-
+import os
+import statistics
+import time
 from pathlib import Path
 
 from pbrlab.bench import gpu
 from pbrlab.checking.fidelity import staging
+from pbrlab.gpu import gl
+from pbrlab.importers.gltf import load_gltf
 from pbrlab.importers.loader import parse_scene
+from pbrlab.render.renderer import render_scene
+from pbrlab.scene.model import Environment
 
 ROOT = Path(__file__).resolve().parents[1]
 MODELS = {"DamagedHelmet": ROOT / "corpus/gltf/khronos/DamagedHelmet/DamagedHelmet.glb",
@@ -64,7 +75,31 @@ def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
     return variants
 
 
+def cpu_times(name: str, repeats: int, size: int = 512) -> dict:
+    """{horizon occlusion on/off: median process time (s) of render_scene} for MODELS[name]
+    framed at size x size under the sunrise, interleaved after one warm-up each."""
+    ctx = gl.shared_context()
+    environment = Environment(path=staging.ENVIRONMENTS_DIR / "sunrise.exr")
+    scenes = {}
+    for label, horizon in (("on", True), ("off", False)):
+        scene = load_gltf(MODELS[name], size=(size, size), environment=environment, emit_warnings=False).scene
+        scene.render.horizon_occlusion = horizon
+        scenes[label] = scene
+        render_scene(scene, ctx)  # compile, upload, prefilter, cache
+    times = {label: [] for label in scenes}
+    for _ in range(repeats):
+        for label, scene in scenes.items():
+            start = time.process_time()
+            render_scene(scene, ctx)
+            times[label].append(time.process_time() - start)
+    return {label: statistics.median(t) for label, t in times.items()}
+
+
 def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--time", action="store_true", help="also the llvmpipe process time (LP_NUM_THREADS=1)")
+    parser.add_argument("--repeats", type=int, default=7)
+    args = parser.parse_args()
     reason = gpu.unavailable_reason()
     if reason:
         raise SystemExit(f"RADV's null device is not available here: {reason}")
@@ -75,6 +110,12 @@ def main() -> None:
         for label, per_family in figures(name, families).items():
             print(f"  {name:16s} {label:22s} "
                   + "  ".join(f"{gpu.TITLES[f]} {i:5d} / {v:3d}" for f, (i, v) in per_family.items()))
+    if args.time:
+        print(f"llvmpipe, LP_NUM_THREADS={os.environ.get('LP_NUM_THREADS', 'unset')}: median process time of "
+              f"{args.repeats} renders at 512 x 512, horizon occlusion on / off, interleaved")
+        for name in MODELS:
+            t = cpu_times(name, args.repeats)
+            print(f"  {name:16s} on {1e3 * t['on']:7.1f} ms   off {1e3 * t['off']:7.1f} ms   ({t['on'] / t['off']:.3f}x)")
 
 
 if __name__ == "__main__":
