@@ -120,15 +120,29 @@ def _specular_metal(scene):
     return scene
 
 
+# Radiance below this counts as 0 in the bit-for-bit comparison: the denormal range and what
+# products of its values reach. Whether llvmpipe's rasteriser threads flush denormals depends
+# on the state the process gives them, and where a lobe underflows into that range (the
+# Blinn-Phong D's pow at a sphere's rim in chart_terms: 9e-39, and 9e-38 after a product) the
+# two programs' different instruction orders then round differently: seen in 3 of 7 full-suite
+# runs, never alone. 2^-100 (8e-31) is 23 orders below the half-float EXR's smallest step.
+BELOW_ANY_OUTPUT = 2.0 ** -100
+
+
+def _bits(linear):
+    return np.where(np.abs(linear) < BELOW_ANY_OUTPUT, np.float32(0.0), linear).view(np.uint32)
+
+
 @pytest.mark.parametrize("name", sorted(TEST_SCENES))
 def test_specialised_and_full_programs_render_bit_identical_images(name, gl_context):
     # The full program adds exact neutral values (0 emission, x1 occlusion and maps, a
     # black environment, zero spare lights) in the same order of operations, so the
-    # images agree bit for bit (measured: 0 ulp on every scene here).
+    # images agree bit for bit (measured: 0 ulp on every scene here, once values below
+    # BELOW_ANY_OUTPUT are taken as 0).
     specialised = render.render_scene(TEST_SCENES[name](), gl_context)
     full = render.render_scene(TEST_SCENES[name](), gl_context, specialise=False)
     assert specialised.programs.specialised and not full.programs.specialised
-    np.testing.assert_array_equal(specialised.linear.view(np.uint32), full.linear.view(np.uint32))
+    np.testing.assert_array_equal(_bits(specialised.linear), _bits(full.linear))
     np.testing.assert_array_equal(specialised.srgb8, full.srgb8)
 
 
