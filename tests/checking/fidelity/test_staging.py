@@ -36,13 +36,20 @@ def staged(tmp_path_factory):
     return models, environment, radiance
 
 
-@pytest.mark.parametrize("view", sorted(check_staging.VIEWS))
-def test_pbrlabs_mirror_shows_the_sky_the_right_way_round(staged, view):
+def _render_sphere(staged, model, view):
+    """pbrlab's linear image of a staging sphere from one of check_staging.VIEWS, the
+    environment's radiance and the camera (for check_staging.predicted)."""
     models, environment, radiance = staged
     camera = {"eye": check_staging.VIEWS[view], "target": [0.0, 0.0, 0.0], "up": [0.0, 1.0, 0.0],
               "yfov_deg": 45.0, "znear": 0.01, "zfar": 20.0}
-    linear, _ = renderers.render("pbrlab", {"gltf": str(models["mirror_sphere"]), **environment,
+    linear, _ = renderers.render("pbrlab", {"gltf": str(models[model]), **environment,
                                             "size": list(check_staging.SIZE), "camera": camera})
+    return linear, radiance, camera
+
+
+@pytest.mark.parametrize("view", sorted(check_staging.VIEWS))
+def test_pbrlabs_mirror_shows_the_sky_the_right_way_round(staged, view):
+    linear, radiance, camera = _render_sphere(staged, "mirror_sphere", view)
     expected, mask, hit = check_staging.predicted("mirror_sphere", radiance, camera)
     right = check_staging.compare(linear, expected, mask, hit)
     assert right["coverage_mismatch"] <= 0.01 * hit.sum(), right
@@ -53,11 +60,7 @@ def test_pbrlabs_mirror_shows_the_sky_the_right_way_round(staged, view):
 
 @pytest.mark.parametrize("view", sorted(check_staging.VIEWS))
 def test_pbrlabs_rough_white_sphere_has_lamberts_brightness(staged, view):
-    models, environment, radiance = staged
-    camera = {"eye": check_staging.VIEWS[view], "target": [0.0, 0.0, 0.0], "up": [0.0, 1.0, 0.0],
-              "yfov_deg": 45.0, "znear": 0.01, "zfar": 20.0}
-    linear, _ = renderers.render("pbrlab", {"gltf": str(models["diffuse_sphere"]), **environment,
-                                            "size": list(check_staging.SIZE), "camera": camera})
+    linear, radiance, camera = _render_sphere(staged, "diffuse_sphere", view)
     expected, mask, hit = check_staging.predicted("diffuse_sphere", radiance, camera)
     got = check_staging.compare(linear, expected, mask, hit)
     assert abs(got["mean_ratio"] - 1.0) <= EXPOSURE_BOUND, got
