@@ -62,9 +62,12 @@ def test_cli_reference_has_every_subcommand_and_option(built_site):
     assert set(_subcommands(parser)) == set(COMMANDS)
     page = _page(built_site, "cli")
     assert not _missing_from_cli_page(page, parser)
-    # the one-line help of each command, as the parser holds it
-    for name, sub in _subcommands(parser).items():
-        assert f"usage: pbrlab {name}" in _sections(page)[name]
+    # each command's usage, and its one-line help as the parser holds it
+    action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    for choice in action._choices_actions:
+        section = " ".join(re.sub(r"<[^>]+>", "", _sections(page)[choice.dest]).split())
+        assert f"usage: pbrlab {choice.dest}" in section
+        assert " ".join(choice.help.split()) in section, choice.dest
 
 
 def test_cli_check_fails_on_a_page_without_a_command(built_site):
