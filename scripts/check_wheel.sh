@@ -23,7 +23,8 @@ sdist=$(ls "$work"/dist/pbrlab-*.tar.gz)
 tar -tzf "$sdist" | sed 's|^[^/]*/||' > "$work/sdist.txt"
 for name in glsl/pbr/pbr.glsl hlsl_ports/pbr/pbr.hlsl scenes/example.json harness/pbrlab/commands/cli.py \
             tests/conftest.py goldens/chart_f0.exr docs/pyrender_vs_pbrlab.png docs/index.md mkdocs.yml \
-            scripts/mkdocs_hooks.py LICENSE requirements.txt Makefile; do
+            scripts/mkdocs_hooks.py scripts/mkdocs_cli_reference.py scripts/mkdocs_goldens.py docs/api/index.md \
+            LICENSE requirements.txt Makefile; do
   grep -qx "$name" "$work/sdist.txt" || { say "the sdist lacks $name"; exit 1; }
 done
 "$repo/.venv/bin/python" -c 'import sys, zipfile; print("\n".join(zipfile.ZipFile(sys.argv[1]).namelist()))' "$wheel" > "$work/wheel.txt"

@@ -5,50 +5,19 @@ as pasted, in a fresh project, with the interpreter running these tests."""
 
 from __future__ import annotations
 
-import os
 import re
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
 from doc_snippets import parse
+from site_build import ROOT, copy_site_sources, mkdocs_build, run
 
-ROOT = Path(__file__).resolve().parents[2]
 README = ROOT / "README.md"
 README_MAX_LINES = 200  # issue 27: what it is, a picture, the two commands, one example, links
 DOCUMENTS = [README, *sorted((ROOT / "docs").rglob("*.md"))]
 RUNNABLE = [doc for doc in DOCUMENTS if parse(doc).files or parse(doc).shell]
-# What the site build reads besides docs/ (mkdocs.yml): the files it includes, and glsl/, from
-# whose headers its hook writes the library-files page.
-SITE_SOURCES = ["mkdocs.yml", "scripts/mkdocs_hooks.py", "docs", "README.md", "glsl",
-                "scenes/example.json"]
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
-COMMAND_TIMEOUT_S = 300
-
-
-def _env() -> dict:
-    """This process's environment for a child, less pytest's own variables (an xdist worker's
-    would leak into the child's run), with this interpreter's folder first on PATH, so that
-    ``python`` in a snippet is the interpreter running these tests."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST_")}
-    env["PATH"] = os.pathsep.join([str(Path(sys.executable).parent), env.get("PATH", "")])
-    env["NO_MKDOCS_2_WARNING"] = "1"  # mkdocs-material's banner about its successor
-    return env
-
-
-def _run(args, cwd: Path) -> subprocess.CompletedProcess:
-    if args[0] == "python":
-        args = [sys.executable, *args[1:]]
-    return subprocess.run(args, cwd=cwd, env=_env(), capture_output=True, text=True,
-                          timeout=COMMAND_TIMEOUT_S)
-
-
-def _mkdocs_build(config: Path, site: Path) -> subprocess.CompletedProcess:
-    return _run(["python", "-m", "mkdocs", "build", "--strict", "--config-file", str(config),
-                 "--site-dir", str(site)], config.parent)
 
 
 def test_readme_is_a_short_front_page():
@@ -72,10 +41,8 @@ def test_readme_links_point_at_files_that_exist():
     assert not missing, missing
 
 
-def test_site_builds_with_strict(tmp_path):
-    site = tmp_path / "site"
-    result = _mkdocs_build(ROOT / "mkdocs.yml", site)
-    assert result.returncode == 0, result.stdout + result.stderr
+def test_site_builds_with_strict(built_site):
+    site = built_site
     # The included files arrived: glsl/README.md's function table, the README's example,
     # the example scene.
     assert "Functions, sources and measured worst-case error" in (site / "library" / "index.html").read_text(encoding="utf-8")
@@ -101,18 +68,20 @@ def test_site_builds_with_strict(tmp_path):
     assert files_page.count("Provides:") == len(list(glsl.rglob("*.glsl")))
 
 
-def test_strict_build_fails_on_a_broken_link(tmp_path):
-    """The check above can fail: a link to a page that does not exist stops the build."""
-    for name in SITE_SOURCES:
-        source, copy = ROOT / name, tmp_path / name
-        copy.parent.mkdir(parents=True, exist_ok=True)
-        (shutil.copytree if source.is_dir() else shutil.copy)(source, copy)
+@pytest.mark.parametrize("link", ["[nowhere](no-such-page.md)",
+                                  "![a golden the site does not serve](goldens/chart_f0.png)"],
+                         ids=["page", "golden-not-served"])
+def test_strict_build_fails_on_a_broken_link(site_tools, tmp_path, link):
+    """The check above can fail: a link to a page that does not exist stops the build, and so
+    does a picture of goldens/ that scripts/mkdocs_goldens.py does not serve (chart_f0.png is
+    in goldens/, but no page shows it)."""
+    copy_site_sources(tmp_path)
     page = tmp_path / "docs" / "conventions.md"
-    page.write_text(page.read_text(encoding="utf-8") + "\nSee [nowhere](no-such-page.md).\n",
-                    encoding="utf-8")
-    result = _mkdocs_build(tmp_path / "mkdocs.yml", tmp_path / "site")
+    page.write_text(page.read_text(encoding="utf-8") + f"\nSee {link}.\n", encoding="utf-8")
+    result = mkdocs_build(tmp_path / "mkdocs.yml", tmp_path / "site")
     assert result.returncode != 0
-    assert "no-such-page.md" in result.stdout + result.stderr
+    target = LINK.search(link).group(1)
+    assert target in result.stdout + result.stderr
 
 
 def test_readme_has_a_runnable_example():
@@ -130,14 +99,14 @@ def test_runnable_snippets_run_as_pasted(document, tmp_path):
     assert project.shell, f"{document.name}: runnable files, but no <!-- runs --> block runs them"
     project.write(tmp_path)
     for command in project.commands():
-        result = _run(command, tmp_path)
+        result = run(command, tmp_path)
         assert result.returncode == 0, f"{' '.join(command)}\n{result.stdout}\n{result.stderr}"
 
 
 def test_readme_example_first_run_names_the_missing_golden(tmp_path):
     """What the README says of the first run: it fails, and says how to create the golden."""
     parse(README).write(tmp_path)
-    result = _run(["python", "-m", "pytest"], tmp_path)
+    result = run(["python", "-m", "pytest"], tmp_path)
     assert result.returncode == 1, result.stdout + result.stderr
     assert "golden 'rim_sphere' is missing" in result.stdout
     assert "--update-goldens" in result.stdout

@@ -39,12 +39,13 @@ SRGB_SMALLEST_STEP_LINEAR = 1.0 / 255.0 / 12.92
 class Tolerance:
     """How far an obtained image may stray from the expected one, and why.
 
-    max_abs: largest allowed per-channel deviation, in the images' units (linear for float
-        images, code values for uint8 images); a pixel over it *fails*.
-    max_fraction: fraction of pixels (0..1) allowed to fail.
-    reason: one line saying why the numbers are this size (measured drift, conditioning).
-    max_rel: added to max_abs per channel, times |expected| (HDR values: a relative bound).
-    max_flip: largest allowed mean FLIP of 8-bit images (None: FLIP does not decide).
+    Attributes:
+        max_abs: largest allowed per-channel deviation, in the images' units (linear for float
+            images, code values for uint8 images); a pixel over it *fails*.
+        max_fraction: fraction of pixels (0..1) allowed to fail.
+        reason: one line saying why the numbers are this size (measured drift, conditioning).
+        max_rel: added to max_abs per channel, times |expected| (HDR values: a relative bound).
+        max_flip: largest allowed mean FLIP of 8-bit images (None: FLIP does not decide).
     """
 
     max_abs: float
@@ -174,15 +175,17 @@ _HEAT_DECADES = 4.0  # over-tolerance errors from 1x to 10^4 x the tolerance spa
 class DiffResult:
     """Metrics of one comparison. ``passed`` is the verdict; the rest explains it.
 
-    max_abs: largest per-channel |obtained - expected| over pixels finite in both images
-        (``units``); inf when the shapes differ.
-    rmse: root mean square of the per-channel differences over the same finite pixels.
-    fraction_over / pixels_over / pixel_count: pixels that fail (over the tolerance's bound
-        or non-finite in either image).
-    worst_pixel: (y, x) of the largest error, a non-finite pixel first; None if none.
-    nonfinite_obtained / nonfinite_expected: pixels with a NaN or Inf channel.
-    problem: "" or why the images could not be compared (shape mismatch).
-    flip_mean: mean FLIP for 8-bit sRGB images when requested and available, else None.
+    Attributes:
+        max_abs: largest per-channel |obtained - expected| over pixels finite in both images
+            (``units``); inf when the shapes differ.
+        rmse: root mean square of the per-channel differences over the same finite pixels.
+        fraction_over: the fraction of pixels that fail (over the tolerance's bound or
+            non-finite in either image); ``pixels_over`` of ``pixel_count``.
+        worst_pixel: (y, x) of the largest error, a non-finite pixel first; None if none.
+        nonfinite_obtained: pixels with a NaN or Inf channel (``nonfinite_expected``: in the
+            expected image).
+        problem: "" or why the images could not be compared (shape mismatch).
+        flip_mean: mean FLIP for 8-bit sRGB images when requested and available, else None.
     """
 
     passed: bool

@@ -1,15 +1,17 @@
 """pytest plugin for projects that test shaders with pbrlab (entry point ``pytest11: pbrlab``).
 
 Options:
-  --update-goldens       write goldens from this run's renders: the only way goldens change
-  --pbrlab-output DIR    failure artefacts and index.html (default: test-output/ in the rootdir)
-  --pbrlab-goldens DIR   the golden root (default: goldens/ in the rootdir)
+    - ``--update-goldens``: write goldens from this run's renders: the only way goldens change
+    - ``--pbrlab-output DIR``: failure artefacts and index.html (default: test-output/ in the rootdir)
+    - ``--pbrlab-tolerance-profile NAME``: the tolerances goldens are checked with (default: auto,
+      by GL renderer)
+    - ``--pbrlab-goldens DIR``: the golden root (default: goldens/ in the rootdir)
 
 Fixtures:
-  gl_context   the process's shared moderngl context, made current for each test (under pytest-xdist
-               each worker process has its own)
-  golden       ``golden.check(name, linear, srgb8, tolerance)``: ``pbrlab.checking.goldens.check_golden``
-               with this run's renderer info, update flag and folders
+    - ``gl_context``: the process's shared moderngl context, made current for each test (under
+      pytest-xdist each worker process has its own)
+    - ``golden``: ``golden.check(name, linear, srgb8, tolerance)``,
+      ``pbrlab.checking.goldens.check_golden`` with this run's renderer info, update flag and folders
 
 The plugin is inert until a test uses one of its fixtures or options: registering it (by
 installing pbrlab) opens no GL context, changes no environment variable (llvmpipe's CPU caps

@@ -110,7 +110,14 @@ def _vector(n: int):
     return wrap
 
 
-vec2, vec3, vec4 = _vector(2), _vector(3), _vector(4)
+# One assignment each, so that the API reference (docs/api/evaluate.md) reads the three
+# from the source with their docstrings.
+vec2 = _vector(2)
+"""``vec2(values)``: mark an array whose last axis holds vec2 components (a VectorInput)."""
+vec3 = _vector(3)
+"""``vec3(values)``: mark an array whose last axis holds vec3 components (a VectorInput)."""
+vec4 = _vector(4)
+"""``vec4(values)``: mark an array whose last axis holds vec4 components (a VectorInput)."""
 _GLSL_TYPE = {1: "float", 2: "vec2", 3: "vec3", 4: "vec4"}
 _HLSL_TYPE = {1: "float", 2: "float2", 3: "float3", 4: "float4"}
 LANGUAGES = ("glsl", "hlsl")
