@@ -71,6 +71,14 @@ def test_the_committed_wgsl_is_the_generated_one():
         "wgsl/pbrlab.wgsl is stale: regenerate it with python -m pbrlab.gpu.port_wgsl"
 
 
+def test_one_naga_version_is_pinned_and_installed():
+    """scripts/setup.sh installs the version pbrlab.gpu.naga names, and that is the binary found."""
+    import re
+    setup = (ROOT / "scripts" / "setup.sh").read_text(encoding="utf-8")
+    assert re.search(r"^NAGA_VERSION=(\S+)$", setup, re.M).group(1) == naga.NAGA_VERSION
+    assert naga.naga_version(_naga_or_fail()) == naga.NAGA_VERSION
+
+
 def test_naga_validates_the_shipped_wgsl():
     import subprocess
     run = subprocess.run([_naga_or_fail(), "--input-kind", "wgsl", str(SHIPPED)], capture_output=True, text=True,
