@@ -167,3 +167,9 @@ def test_the_shipped_wgsl_computes_what_the_glsl_computes(wgsl_values, name):
 def test_the_bound_tells_two_functions_apart(wgsl_values):
     """The control: the fast visibility in WGSL against the exact one in GLSL fails the bound."""
     assert _deviation(CONTROL[0], wgsl_values["control"]).max() > MAX_DEVIATION
+
+
+def test_the_shipped_wgsl_carries_the_licence_notice():
+    """As every shader file an engine copies (tests/library/test_license_notice.py), in its header."""
+    header = SHIPPED.read_text(encoding="utf-8").split("\nstruct ", 1)[0]
+    assert "// SPDX-License-Identifier: MIT. Part of pbrlab" in header
