@@ -1,6 +1,6 @@
-"""Build hook: the wheel carries the shader library, its HLSL twins and the example scenes.
+"""Build hook: the wheel carries the shader library, its HLSL twins, its WGSL amalgamation and the example scenes.
 
-``glsl/``, ``hlsl_ports/`` and ``scenes/`` sit at the top of the repository (engines copy them
+``glsl/``, ``hlsl_ports/``, ``wgsl/`` and ``scenes/`` sit at the top of the repository (engines copy them
 from there); ``build_py`` copies them into the package as ``pbrlab/data/<tree>``, where
 ``pbrlab.foundation.locations`` finds them through ``importlib.resources``. Everything else about the
 package is declared in pyproject.toml.
@@ -13,7 +13,7 @@ from setuptools import setup
 from setuptools.command.build_py import build_py
 
 HERE = Path(__file__).resolve().parent
-DATA_TREES = ("glsl", "hlsl_ports", "scenes")
+DATA_TREES = ("glsl", "hlsl_ports", "wgsl", "scenes")
 
 
 class build_py_with_shaders(build_py):

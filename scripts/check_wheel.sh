@@ -21,14 +21,14 @@ say "building the sdist and, from it, the wheel"
 wheel=$(ls "$work"/dist/pbrlab-*.whl)
 sdist=$(ls "$work"/dist/pbrlab-*.tar.gz)
 tar -tzf "$sdist" | sed 's|^[^/]*/||' > "$work/sdist.txt"
-for name in glsl/pbr/pbr.glsl hlsl_ports/pbr/pbr.hlsl scenes/example.json harness/pbrlab/commands/cli.py \
+for name in glsl/pbr/pbr.glsl hlsl_ports/pbr/pbr.hlsl wgsl/pbrlab.wgsl scenes/example.json harness/pbrlab/commands/cli.py \
             tests/conftest.py goldens/chart_f0.exr docs/pyrender_vs_pbrlab.png docs/index.md mkdocs.yml \
             scripts/mkdocs_hooks.py scripts/mkdocs_cli_reference.py scripts/mkdocs_goldens.py docs/api/index.md \
             LICENSE requirements.txt Makefile; do
   grep -qx "$name" "$work/sdist.txt" || { say "the sdist lacks $name"; exit 1; }
 done
 "$repo/.venv/bin/python" -c 'import sys, zipfile; print("\n".join(zipfile.ZipFile(sys.argv[1]).namelist()))' "$wheel" > "$work/wheel.txt"
-for name in pbrlab/data/glsl/pbr/pbr.glsl pbrlab/data/hlsl_ports/pbr/pbr.hlsl pbrlab/data/scenes/example.json; do
+for name in pbrlab/data/glsl/pbr/pbr.glsl pbrlab/data/hlsl_ports/pbr/pbr.hlsl pbrlab/data/wgsl/pbrlab.wgsl pbrlab/data/scenes/example.json; do
   grep -qx "$name" "$work/wheel.txt" || { say "the wheel lacks $name"; exit 1; }
 done
 
@@ -41,7 +41,7 @@ python3 -m venv "$work/venv"
 mkdir "$work/user"
 cd "$work/user"  # outside the checkout: nothing of the repository is importable from here
 export PATH="$work/venv/bin:$PATH"
-unset PBRLAB_GLSL_ROOT PBRLAB_HLSL_ROOT PBRLAB_SCENES_ROOT PYTHONPATH
+unset PBRLAB_GLSL_ROOT PBRLAB_HLSL_ROOT PBRLAB_WGSL_ROOT PBRLAB_SCENES_ROOT PYTHONPATH
 pbrlab --version | tee version.txt
 if grep -q "$repo" version.txt; then say "the wheel found shaders in the checkout"; exit 1; fi
 grep -q "(package data)" version.txt

@@ -15,6 +15,10 @@
 #      tools/gltf_validator (the Khronos glTF Validator) and tools/threejs (three.js and
 #      playwright-core, for examples/threejs), each pinned by its package-lock.json. Skipped where node_modules matches the lock file.
 #      (tools/chromium/launch.mjs, the Chromium start-up both browser tools import, needs no npm package.)
+#   4. naga-cli (the shader translator of wgpu, Bevy and Firefox's WebGPU; crates.io, pinned) into tools/naga,
+#      with `cargo install --locked`: examples/wgpu and the shipped WGSL (wgsl/pbrlab.wgsl, docs/wgsl.md)
+#      are made by it. Compiles for about 2 minutes on 2 cores; skipped when tools/naga holds that version.
+#      Needs cargo (rustup.rs, or Debian's cargo if it is recent enough); stops with a message where it is missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -71,6 +75,19 @@ for tool in tools/sample_viewer tools/gltf_validator tools/threejs tools/threejs
     echo "$tool_want" > "$tool_stamp"
   fi
 done
+
+# naga-cli, pinned (docs/wgsl.md): the version's stamp beside the binary.
+NAGA_VERSION=30.0.1
+naga_stamp=tools/naga/.pbrlab-installed
+if ! { [ -x tools/naga/bin/naga ] && [ "$(cat "$naga_stamp" 2>/dev/null)" = "$NAGA_VERSION" ]; }; then
+  if ! command -v cargo >/dev/null 2>&1; then
+    echo "setup: naga-cli $NAGA_VERSION needs cargo (Rust), which is not on PATH: install it (https://rustup.rs) and run again." >&2
+    exit 1
+  fi
+  echo "setup: cargo install naga-cli $NAGA_VERSION into tools/naga (a few minutes)"
+  cargo install --quiet --locked naga-cli --version "$NAGA_VERSION" --root tools/naga
+  echo "$NAGA_VERSION" > "$naga_stamp"
+fi
 
 stamp=.venv/.pbrlab-installed
 want=$(cat requirements.txt pyproject.toml | sha256sum | cut -c1-16)

@@ -29,10 +29,12 @@ def test_non_root_user_gets_the_exact_install_line_and_exit_1(tmp_path):
     assert "setup: creating the virtualenv" not in out.stdout
 
 
-def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
-    # A copy of the script in a scratch tree whose .venv stamp matches its requirements:
-    # the real .venv is never touched by the test suite.
+def _current_tree(tmp_path, naga: bool = True) -> Path:
+    """A copy of the script in a scratch tree whose .venv stamp matches its requirements, whose npm
+    tools match their lock files and (``naga``) whose tools/naga holds the pinned naga-cli: the
+    real .venv and tools are never touched by the test suite."""
     import hashlib
+    import re
     import shutil
 
     tree = tmp_path / "tree"
@@ -51,8 +53,30 @@ def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
         shutil.copy(ROOT / "tools" / name / "package-lock.json", tool)
         lock = hashlib.sha256((tool / "package-lock.json").read_bytes()).hexdigest()[:16]
         (tool / "node_modules" / ".pbrlab-installed").write_text(lock + "\n")
+    if naga:
+        version = re.search(r"^NAGA_VERSION=(\S+)$", (ROOT / "scripts" / "setup.sh").read_text(), re.M).group(1)
+        (tree / "tools" / "naga" / "bin").mkdir(parents=True)
+        (tree / "tools" / "naga" / "bin" / "naga").write_text("#!/bin/sh\nexit 0\n")
+        (tree / "tools" / "naga" / "bin" / "naga").chmod(0o755)
+        (tree / "tools" / "naga" / ".pbrlab-installed").write_text(version + "\n")
+    return tree
+
+
+def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
+    tree = _current_tree(tmp_path)
     env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:{os.environ['PATH']}")
     out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, timeout=60)
     assert out.returncode == 0, out.stderr
     assert out.stdout == "" and out.stderr == ""
+
+
+def test_naga_without_cargo_is_a_clear_error(tmp_path):
+    """naga-cli is missing and cargo is not on PATH: exit 1 with a line naming cargo (the control of
+    the no-op above: the same tree with tools/naga stops here)."""
+    tree = _current_tree(tmp_path, naga=False)
+    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:/usr/bin:/bin")
+    out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
+                         text=True, env=env, timeout=60)
+    assert out.returncode == 1
+    assert "naga-cli" in out.stderr and "needs cargo" in out.stderr, out.stderr

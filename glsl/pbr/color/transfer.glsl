@@ -48,7 +48,7 @@ vec3 pbr_decode_color_texel(vec3 texel) {
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_FAST
     return pbr_degamma_fast(texel);
 #else
-#error "PBR_COLOR_TRANSFER: unknown value"
+#error PBR_COLOR_TRANSFER: unknown value
 #endif
 }
 
@@ -63,7 +63,7 @@ vec3 pbr_encode_final_color(vec3 linearColor) {
 #elif PBR_COLOR_TRANSFER == PBR_COLOR_TRANSFER_FAST
     return pbr_regamma_fast(linearColor);
 #else
-#error "PBR_COLOR_TRANSFER: unknown value"
+#error PBR_COLOR_TRANSFER: unknown value
 #endif
 }
 

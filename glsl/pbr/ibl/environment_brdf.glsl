@@ -97,7 +97,7 @@ vec2 pbr_env_brdf(float NdotV, float perceptualRoughness) {
     return pbr_env_brdf_approx(NdotV, perceptualRoughness);
 #  endif
 #else
-#error "PBR_ENV_BRDF: unknown value"
+#error PBR_ENV_BRDF: unknown value
 #endif
 }
 

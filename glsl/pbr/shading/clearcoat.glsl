@@ -54,7 +54,7 @@
 #define PBR_CLEARCOAT_LAYERING PBR_CLEARCOAT_LAYERING_ALBEDO
 #endif
 #if PBR_CLEARCOAT_LAYERING != PBR_CLEARCOAT_LAYERING_ALBEDO && PBR_CLEARCOAT_LAYERING != PBR_CLEARCOAT_LAYERING_FRESNEL
-#error "PBR_CLEARCOAT_LAYERING: unknown value"
+#error PBR_CLEARCOAT_LAYERING: unknown value
 #endif
 
 // The coat's reflection of one punctual light: the lecture's C_light · π · BRDF · NdotL with

@@ -103,7 +103,7 @@
 #define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
 #endif
 #if PBR_BRDF_MODEL != PBR_BRDF_MODEL_PBRLAB && PBR_BRDF_MODEL != PBR_BRDF_MODEL_UNITY
-#error "PBR_BRDF_MODEL: unknown value (PBR_BRDF_MODEL_PBRLAB or PBR_BRDF_MODEL_UNITY)"
+#error PBR_BRDF_MODEL: unknown value (PBR_BRDF_MODEL_PBRLAB or PBR_BRDF_MODEL_UNITY)
 #endif
 
 // Unity's three BRDFs (UnityStandardBRDF.cginc), used by the unity model only.
@@ -167,7 +167,7 @@
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #else
-#  error "PBR_QUALITY: unknown value"
+#  error PBR_QUALITY: unknown value
 #endif
 
 #ifndef PBR_SPECULAR_D
@@ -191,7 +191,7 @@ float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha) {
 #elif PBR_SPECULAR_D == PBR_SPECULAR_D_BLINN_PHONG
     return pbr_D_BlinnPhong(NdotH, pbr_specPower_from_alpha(alpha));
 #else
-#error "PBR_SPECULAR_D: unknown value"
+#error PBR_SPECULAR_D: unknown value
 #endif
 }
 
@@ -213,7 +213,7 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 #elif PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_BOUND
     return pbr_V_SmithGGXBound(NdotL, NdotV);
 #else
-#error "PBR_SPECULAR_V: unknown value"
+#error PBR_SPECULAR_V: unknown value
 #endif
 }
 
@@ -272,7 +272,7 @@ vec3 pbr_specular_F_f90(vec3 f0, float f90, float VdotH) {
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
     return f0;
 #else
-#error "PBR_SPECULAR_F: unknown value"
+#error PBR_SPECULAR_F: unknown value
 #endif
 }
 
@@ -297,7 +297,7 @@ vec3 pbr_specular_F_deviation_bound_f90(vec3 f0, float f90) {
 #elif PBR_SPECULAR_F == PBR_SPECULAR_F_F0
     return vec3(0.0);
 #else
-#error "PBR_SPECULAR_F: unknown value"
+#error PBR_SPECULAR_F: unknown value
 #endif
 }
 
@@ -319,7 +319,7 @@ float pbr_diffuse_Fd(float NdotV, float NdotL, float LdotH, float perceptualRoug
 #elif PBR_DIFFUSE == PBR_DIFFUSE_BURLEY
     return pbr_Fd_Burley(NdotV, NdotL, LdotH, perceptualRoughness);
 #else
-#error "PBR_DIFFUSE: unknown value"
+#error PBR_DIFFUSE: unknown value
 #endif
 }
 

@@ -68,7 +68,7 @@ float pbr_sheen_V(float NdotL, float NdotV, float alpha) {
 #elif PBR_SHEEN_V == PBR_SHEEN_V_NEUBELT
     return pbr_V_Neubelt(NdotL, NdotV);
 #else
-#error "PBR_SHEEN_V: unknown value"
+#error PBR_SHEEN_V: unknown value
 #endif
 }
 

@@ -45,7 +45,7 @@ vec3 pbr_tonemap(vec3 color) {
 #elif PBR_TONEMAP == PBR_TONEMAP_KHRONOS_NEUTRAL
     return pbr_tonemap_khronos_neutral(color);
 #else
-#error "PBR_TONEMAP: unknown value"
+#error PBR_TONEMAP: unknown value
 #endif
 }
 

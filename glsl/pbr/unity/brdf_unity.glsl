@@ -272,7 +272,7 @@ vec3 pbr_unity_brdf_pbs(vec3 diffColor, vec3 specColor, float oneMinusReflectivi
     return pbr_unity_brdf3(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                            lightColor, lightDir, indirectDiffuse, indirectSpecular);
 #else
-#error "PBR_UNITY_BRDF: unknown value (PBR_UNITY_BRDF_1, _2 or _3)"
+#error PBR_UNITY_BRDF: unknown value (PBR_UNITY_BRDF_1, _2 or _3)
 #endif
 }
 

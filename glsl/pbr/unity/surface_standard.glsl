@@ -71,7 +71,7 @@
 #define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
 #endif
 #if PBR_ALPHA_MODE != PBR_ALPHA_MODE_OPAQUE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_CUTOUT && PBR_ALPHA_MODE != PBR_ALPHA_MODE_FADE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_TRANSPARENT
-#error "PBR_ALPHA_MODE: unknown value"
+#error PBR_ALPHA_MODE: unknown value
 #endif
 
 // Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.

@@ -1,10 +1,10 @@
-"""Where the shader library, its HLSL twins and the example scenes are: the one place that decides.
+"""Where the shader library, its HLSL twins, its WGSL amalgamation and the example scenes are: the one place that decides.
 
 Each tree is looked up in this order:
   1. an environment variable naming the folder (``PBRLAB_GLSL_ROOT``, ``PBRLAB_HLSL_ROOT``,
-     ``PBRLAB_SCENES_ROOT``), for a library being edited elsewhere;
+     ``PBRLAB_WGSL_ROOT``, ``PBRLAB_SCENES_ROOT``), for a library being edited elsewhere;
   2. the package data of an installed wheel, ``pbrlab/data/<tree>`` in the package
-     (setup.py copies ``glsl/``, ``hlsl_ports/`` and ``scenes/`` there);
+     (setup.py copies ``glsl/``, ``hlsl_ports/``, ``wgsl/`` and ``scenes/`` there);
   3. the checkout this module sits in (``<repo>/<tree>``), for an editable install.
 
 ``pbrlab paths`` and ``pbrlab --version`` print the answers.
@@ -18,7 +18,8 @@ from pathlib import Path
 from .errors import PbrlabError
 
 # tree name (the folder in the checkout and under pbrlab/data/ in a wheel) -> environment override
-TREES = {"glsl": "PBRLAB_GLSL_ROOT", "hlsl_ports": "PBRLAB_HLSL_ROOT", "scenes": "PBRLAB_SCENES_ROOT"}
+TREES = {"glsl": "PBRLAB_GLSL_ROOT", "hlsl_ports": "PBRLAB_HLSL_ROOT", "wgsl": "PBRLAB_WGSL_ROOT",
+         "scenes": "PBRLAB_SCENES_ROOT"}
 PACKAGE_DATA = "data"
 # The package's folder. Not importlib.resources.files("pbrlab"): only a folder on disk counts
 # here (below), and resources loads importlib.readers and zipfile, 10 ms of every start-up.
@@ -35,7 +36,7 @@ def _packaged(tree: str) -> Path | None:
 
 
 def locate(tree: str) -> Path:
-    """The folder holding ``tree`` ('glsl', 'hlsl_ports' or 'scenes'), by the order above."""
+    """The folder holding ``tree`` ('glsl', 'hlsl_ports', 'wgsl' or 'scenes'), by the order above."""
     if tree not in TREES:
         raise ValueError(f"unknown tree {tree!r}; expected one of {', '.join(TREES)}")
     override = os.environ.get(TREES[tree])

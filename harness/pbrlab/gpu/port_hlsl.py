@@ -26,6 +26,12 @@ else is copied byte for byte, so an HLSL body reads line for line as its GLSL so
      HLSL ``mul(v, m)`` or ``mul(m, v)`` depending on the storage order, which a textual
      port cannot know), struct constructors and array constructors (HLSL has neither:
      write field assignments), and HLSL reserved words used as identifiers.
+  6. An ``#error`` message, bare in the GLSL, is quoted in the twin (before rules 1 to 5, which
+     then leave it alone as they leave string literals). The GLSL cannot quote it: naga's
+     preprocessor (the GLSL front end of wgpu, docs/wgsl.md) rejects a quote character anywhere,
+     even in a skipped ``#if`` branch. The HLSL keeps it quoted because glslang, which compiles
+     the twins here, prints bare ``#error`` tokens spaced apart (``PBR_TONEMAP : unknown
+     value``), while DXC, Slang and glslang print a quoted message as written.
 """
 
 from __future__ import annotations
@@ -74,6 +80,7 @@ _IDENT = re.compile(r"\b[A-Za-z_]\w*\b")
 _GUARD_DEFINE = re.compile(r"^#\s*ifndef\s+(\w+)\s*\n#\s*define\s+\1\b[^\n]*\n", re.M)
 _LIBRARY_PATH = re.compile(r"(?<![\w.])((?:pbr/)?[\w/]*?[a-z0-9_]+)\.glsl\b")
 _GUARD_NAME = re.compile(r"\b(PBR_[A-Za-z0-9_<>]*?)_GLSL\b")
+_BARE_ERROR = re.compile(r'^([ \t]*#[ \t]*error[ \t]+)([^"\s][^\n]*?)[ \t]*$', re.M)
 
 
 class PortError(PbrlabError):
@@ -209,6 +216,11 @@ def _check_portable(mask: str, structs: set[str], where) -> None:
                                 "assign the fields")
 
 
+def _quote_error_messages(text: str) -> str:
+    """Rule 6: ``#error message`` -> ``#error "message"``."""
+    return _BARE_ERROR.sub(lambda m: f'{m.group(1)}"{m.group(2)}"', text)
+
+
 def _rename_files(text: str) -> str:
     """Rule 1 (code and comments alike)."""
     text = _LIBRARY_PATH.sub(lambda m: m.group(0) if m.group(1).startswith("glsl") else m.group(1) + ".hlsl", text)
@@ -218,6 +230,7 @@ def _rename_files(text: str) -> str:
 
 def port_text(text: str, name: str = "<glsl>", structs: set[str] | None = None) -> str:
     """The HLSL twin of one GLSL library file (``name`` is used in messages)."""
+    text = _quote_error_messages(text)
     structs = set(structs or ()) | set(_STRUCT.findall(_mask(text)))
 
     def where(index: int) -> str:

@@ -33,7 +33,7 @@
 // glslang defines the extension's macro for desktop GLSL only, so the check is skipped for
 // GLSL ES (there the #extension line is the shader's own responsibility).
 #  if !defined(GL_ES) && !defined(GL_EXT_shader_explicit_arithmetic_types_float16)
-#    error "PBR_FLOAT16 needs #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require before pbrlab's includes"
+#    error "PBR_FLOAT16 needs #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require before the pbrlab includes"
 #  endif
 #  define PBR_HALF float16_t
 #else

@@ -38,6 +38,7 @@ def test_bodies_read_line_for_line_the_same():
         assert len(inserted) == 1, rel
         i = inserted[0]
         for a, b in zip(g, h[:i] + h[i + 1:]):
+            a = port_hlsl._quote_error_messages(a)  # rule 6, before the others
             renamed = port_hlsl._rename_tokens(port_hlsl._rename_files(a))  # a line may open a call it does not close
             assert a == b or renamed == b or _port_line(port_hlsl._rename_files(a)) == b, (rel, a, b)
 
@@ -80,6 +81,16 @@ def test_file_rules_and_the_shim_line():
         "edit the GLSL, then regenerate",
         '#include "pbr/common/math.hlsl"  // see glsl/README.md, d_ggx.hlsl',
         "float3 f() { return ((float3)(1.0)); }", "#endif // PBR_X_HLSL"]
+
+
+def test_a_bare_error_message_is_quoted_and_left_alone():
+    """Rule 6: the GLSL's bare #error text (naga rejects quotes) is a quoted string in the twin, which
+    the code rules leave as they leave strings (vec3 and mix here would otherwise be renamed)."""
+    text = GUARDED.format(body="#if X\n#  error PBR_X: unknown value (vec3 mix)\n#endif")
+    lines = port_text(text, "pbr/x.glsl").splitlines()
+    assert '#  error "PBR_X: unknown value (vec3 mix)"' in lines
+    quoted = GUARDED.format(body='#error "already quoted"')
+    assert '#error "already quoted"' in port_text(quoted, "pbr/x.glsl").splitlines()
 
 
 @pytest.mark.parametrize("body, message", [
