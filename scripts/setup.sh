@@ -17,7 +17,8 @@
 #      (tools/chromium/launch.mjs, the Chromium start-up both browser tools import, needs no npm package.)
 #   4. naga-cli (the shader translator of wgpu, Bevy and Firefox's WebGPU; crates.io, pinned) into tools/naga,
 #      with `cargo install --locked`: examples/wgpu and the shipped WGSL (wgsl/pbrlab.wgsl, docs/wgsl.md)
-#      are made by it. Compiles for about 2 minutes on 2 cores; skipped when tools/naga holds that version.
+#      are made by it. Compiles for about 2 minutes on 2 cores, once per machine (kept in ~/.cache/pbrlab);
+#      skipped when tools/naga holds that version.
 #      Needs cargo (rustup.rs, or Debian's cargo if it is recent enough); stops with a message where it is missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -76,16 +77,26 @@ for tool in tools/sample_viewer tools/gltf_validator tools/threejs tools/threejs
   fi
 done
 
-# naga-cli, pinned (docs/wgsl.md): the version's stamp beside the binary.
+# naga-cli, pinned (docs/wgsl.md): the version's stamp beside the binary. Built once per machine
+# into a cache outside the checkout ($PBRLAB_TOOL_CACHE, default ~/.cache/pbrlab), then copied into
+# tools/naga, so a fresh clone (CI's) costs a copy, not a 2-minute compile.
 NAGA_VERSION=30.0.1
 naga_stamp=tools/naga/.pbrlab-installed
 if ! { [ -x tools/naga/bin/naga ] && [ "$(cat "$naga_stamp" 2>/dev/null)" = "$NAGA_VERSION" ]; }; then
-  if ! command -v cargo >/dev/null 2>&1; then
-    echo "setup: naga-cli $NAGA_VERSION needs cargo (Rust), which is not on PATH: install it (https://rustup.rs) and run again." >&2
-    exit 1
+  naga_cache=${PBRLAB_TOOL_CACHE:-$HOME/.cache/pbrlab}/naga-cli-$NAGA_VERSION
+  if ! [ -x "$naga_cache/bin/naga" ]; then
+    cargo=$(command -v cargo || true)
+    [ -z "$cargo" ] && [ -x "$HOME/.cargo/bin/cargo" ] && cargo=$HOME/.cargo/bin/cargo  # rustup's, off PATH
+    if [ -z "$cargo" ]; then
+      echo "setup: naga-cli $NAGA_VERSION needs cargo (Rust), which is not on PATH: install it (https://rustup.rs) and run again." >&2
+      exit 1
+    fi
+    echo "setup: cargo install naga-cli $NAGA_VERSION (about 2 minutes, once per machine)"
+    "$cargo" install --quiet --locked naga-cli --version "$NAGA_VERSION" --root "$naga_cache.part"
+    rm -rf "$naga_cache" && mv "$naga_cache.part" "$naga_cache"
   fi
-  echo "setup: cargo install naga-cli $NAGA_VERSION into tools/naga (a few minutes)"
-  cargo install --quiet --locked naga-cli --version "$NAGA_VERSION" --root tools/naga
+  mkdir -p tools/naga/bin
+  cp "$naga_cache/bin/naga" tools/naga/bin/naga
   echo "$NAGA_VERSION" > "$naga_stamp"
 fi
 

@@ -2,6 +2,7 @@
 apt-get line and the script stops before touching the virtualenv."""
 
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -72,11 +73,31 @@ def test_everything_installed_and_venv_current_is_a_quick_no_op(tmp_path):
 
 
 def test_naga_without_cargo_is_a_clear_error(tmp_path):
-    """naga-cli is missing and cargo is not on PATH: exit 1 with a line naming cargo (the control of
-    the no-op above: the same tree with tools/naga stops here)."""
+    """naga-cli is missing (in tools/naga and in the machine's cache) and cargo is neither on PATH
+    nor in ~/.cargo/bin: exit 1 with a line naming cargo (the control of the no-op above: the same
+    tree with tools/naga stops here)."""
     tree = _current_tree(tmp_path, naga=False)
-    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:/usr/bin:/bin")
+    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:/usr/bin:/bin",
+               HOME=str(tmp_path / "home"), PBRLAB_TOOL_CACHE=str(tmp_path / "cache"))
     out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
                          text=True, env=env, timeout=60)
     assert out.returncode == 1
     assert "naga-cli" in out.stderr and "needs cargo" in out.stderr, out.stderr
+
+
+def test_naga_built_once_per_machine_is_copied_into_a_fresh_tree(tmp_path):
+    """A fresh clone on a machine whose cache holds the pinned naga-cli: copied into tools/naga with
+    its stamp, no cargo needed (the same environment as the test above, plus the cache)."""
+    tree = _current_tree(tmp_path, naga=False)
+    version = re.search(r"^NAGA_VERSION=(\S+)$", (tree / "scripts" / "setup.sh").read_text(), re.M).group(1)
+    cached = tmp_path / "cache" / f"naga-cli-{version}" / "bin"
+    cached.mkdir(parents=True)
+    (cached / "naga").write_text("#!/bin/sh\necho cached naga\n")
+    (cached / "naga").chmod(0o755)
+    env = dict(os.environ, PATH=f"{_fake_bin(tmp_path, '1000', installed=True)}:/usr/bin:/bin",
+               HOME=str(tmp_path / "home"), PBRLAB_TOOL_CACHE=str(tmp_path / "cache"))
+    out = subprocess.run(["bash", str(tree / "scripts" / "setup.sh")], capture_output=True,
+                         text=True, env=env, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert (tree / "tools" / "naga" / "bin" / "naga").read_text() == "#!/bin/sh\necho cached naga\n"
+    assert (tree / "tools" / "naga" / ".pbrlab-installed").read_text().strip() == version

@@ -24,8 +24,8 @@ from ..foundation.errors import PbrlabError, ShaderCompileError
 
 NAGA_VERSION = "30.0.1"  # scripts/setup.sh installs this one
 _CHECKOUT_NAGA = Path(__file__).resolve().parents[3] / "tools" / "naga" / "bin" / "naga"
-_INSTALL_HINT = "bash scripts/setup.sh installs it (cargo install --locked naga-cli --version " \
-                f"{NAGA_VERSION} --root tools/naga)"
+_INSTALL_HINT = f"cargo install --locked naga-cli --version {NAGA_VERSION}, or set $PBRLAB_NAGA " \
+                "(in a pbrlab checkout, scripts/setup.sh installs it into tools/naga)"
 _TIMEOUT_S = 60
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
 

@@ -24,8 +24,8 @@ def _library() -> ctypes.CDLL:
     try:
         import slangpy
     except ImportError:
-        raise PbrlabError("slangpy (requirements.txt) is not installed: it carries the Slang compiler; "
-                          "bash scripts/setup.sh installs it") from None
+        raise PbrlabError("slangpy is not installed: it carries the Slang compiler; pip install slangpy==0.43.1 "
+                          "(in a pbrlab checkout, scripts/setup.sh does)") from None
     found = sorted(Path(slangpy.__file__).parent.glob("libslang-compiler.so*"))
     if not found:
         raise PbrlabError(f"slangpy {slangpy.__version__} has no libslang-compiler.so beside it")
