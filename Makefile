@@ -1,7 +1,8 @@
 # The two commands a new user needs (see README.md):
 #   make demo   set everything up, render the default material charts to out/
-#   make test   set everything up, run the whole test suite
-.PHONY: setup demo test bench clean
+#   make test   set everything up, run the whole test suite (about 10 minutes on 2 cores)
+#   make check  set everything up, run the quick subset: every layer, the slow modules left out (tests/slow_modules.py)
+.PHONY: setup demo test check bench clean
 
 PY := .venv/bin/python
 
@@ -13,6 +14,9 @@ demo: setup
 
 test: setup
 	@$(PY) -m pytest -n auto -p no:cacheprovider $(PYTEST_ARGS)
+
+check: setup
+	@$(PY) -m pytest -n auto -p no:cacheprovider -m "not slow" $(PYTEST_ARGS)
 
 bench: setup
 	@$(PY) -m pbrlab bench --out docs/bench
