@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from example_page import MIN_DRAWN_FRACTION, drawn_fraction, view_of_page
 from pbrlab.gpu import engine_tables
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import load_scene, parse_scene
@@ -90,6 +91,7 @@ def babylon_render(tmp_path_factory):
     # A shader that fails to compile says so here (Babylon.js logs the compiler's errors).
     problems = [m for m in meta["messages"] if not _is_driver_performance_notice(m)]
     assert not problems, problems
+    meta["files"] = {"library": library, "dfg": tmp / "pbrlab_dfg.exr"}
     width, height = meta["size"]
     return np.fromfile(tmp / "out.f32", np.float32).reshape(height, width, 4), meta
 
@@ -131,3 +133,27 @@ def test_the_tolerance_tells_a_rougher_gold_apart(babylon_render, gl_context):
     ours = render_scene(parse_scene(rougher, base=EXAMPLE), gl_context).linear
     ok, figures = _within_tolerance(ours, pixels)
     assert not ok, figures
+
+
+def test_the_page_shows_the_spheres(babylon_render, tmp_path):
+    """index.html as README.md has a reader open it draws scene.json on its canvas
+    (tests/examples/example_page.py: the bound and why)."""
+    _, meta = babylon_render
+    files = meta["files"]
+    status, rgb, messages = view_of_page(TOOL, EXAMPLE / "scene.json", files["library"], files["dfg"], tmp_path)
+    assert status == "scene.json, drawn by Babylon.js with the pbrlab library", status
+    assert not [m for m in messages if not _is_driver_performance_notice(m)], messages
+    assert drawn_fraction(rgb) >= MIN_DRAWN_FRACTION, f"{drawn_fraction(rgb):.1%} of the canvas drawn"
+
+
+def test_the_page_check_fails_on_an_empty_canvas(babylon_render, tmp_path):
+    """The control: the same page drawing a scene without objects says it drew, yet fails."""
+    _, meta = babylon_render
+    files = meta["files"]
+    empty = json.loads((EXAMPLE / "scene.json").read_text(encoding="utf-8"))
+    empty["objects"] = []
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps(empty), encoding="utf-8")
+    status, rgb, _ = view_of_page(TOOL, scene, files["library"], files["dfg"], tmp_path)
+    assert status == "scene.json, drawn by Babylon.js with the pbrlab library", status
+    assert drawn_fraction(rgb) < MIN_DRAWN_FRACTION, f"{drawn_fraction(rgb):.1%}"
