@@ -17,8 +17,8 @@ ExrLoaderGlobalConfiguration.FFLATEUrl = "/tools/babylonjs/node_modules/fflate/u
 ExrLoaderGlobalConfiguration.DefaultOutputType = EXROutputType.Float;
 // The library's DFG hook, declared above the library: an object-like macro naming a function
 // (sphere.fragment.glsl defines it below the library, where pbr_dfg_lut_uv exists), since
-// Babylon.js's preprocessor records `#define NAME VALUE` lines only, so it would not see a
-// function-like PBR_DFG_LUT_LOOKUP(NdotV, r) as defined.
+// Babylon.js's preprocessor records `#define NAME VALUE` lines only, so the conditionals it
+// evaluates itself would not see a function-like PBR_DFG_LUT_LOOKUP(NdotV, r) as defined.
 const PRELUDE = "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" +
   "uniform sampler2D u_dfg;\n" +
   "vec2 example_dfg_lookup(float NdotV, float perceptualRoughness);\n" +

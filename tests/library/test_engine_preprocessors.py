@@ -5,8 +5,9 @@ Babylon.js evaluates a shader's conditionals itself before WebGL sees it
 `#else`, `#endif`, ... as that directive, comments included; it splits code lines at `;`
 before it reads comments; it records `#define NAME VALUE` only when the line is exactly
 those three words; and it resolves a name one level deep (`#if A == B` reads the values of A
-and B, not the values of their values; `#if A` means `defined(A)`). The library is written
-so that this preprocessor picks exactly the branches a real one picks:
+and B, not the values of their values; `#if A` means `defined(A)`); a directive written with
+blanks after its `#` (`#  if`) it does not recognise and leaves to the driver. The library is
+written so that this preprocessor picks exactly the branches a real one picks:
 
 * no comment holds a preprocessor directive word, and no trailing comment holds a `;`
   (checked here on the text, with controls);
@@ -143,9 +144,10 @@ def _glslang_tokens(source: str, path: Path) -> list[str] | str:
     return re.findall(r"[A-Za-z_]\w*|\d[\w.]*|\S", run.stdout)
 
 
-def babylon_matches_glslang(library: str, defines: dict[str, str], tmp: Path) -> tuple[bool, str]:
+def babylon_matches_glslang(library: str, defines: dict[str, str], tmp: Path) -> tuple[bool, str, list[str]]:
     """Babylon.js's preprocessor then glslang's, against glslang's alone, on the same
-    source and defines (placed before the source, as Babylon.js's Effect does)."""
+    source and defines (placed before the source, as Babylon.js's Effect does): (same?, what
+    differs, glslang's tokens)."""
     define_lines = "".join(f"#define {k} {v}\n" for k, v in defines.items())
     (tmp / "in.glsl").write_text(library, encoding="utf-8")
     node = subprocess.run(["node", str(TOOL / "preprocess.mjs"), str(tmp / "in.glsl"), str(tmp / "out.glsl"),
@@ -157,12 +159,12 @@ def babylon_matches_glslang(library: str, defines: dict[str, str], tmp: Path) ->
     assert not isinstance(expected, str), f"glslang rejects the library itself: {expected}"
     got = _glslang_tokens(f"#version 300 es\n{define_lines}{babylon}", tmp / "b.frag")
     if isinstance(got, str):
-        return False, f"glslang rejects what Babylon.js made of it: {got[:400]}"
+        return False, f"glslang rejects what Babylon.js made of it: {got[:400]}", expected
     if got == expected:
-        return True, f"{len(got)} tokens alike"
+        return True, f"{len(got)} tokens alike", expected
     first = next((i for i, (a, b) in enumerate(zip(got, expected)) if a != b), min(len(got), len(expected)))
     return False, (f"{len(got)} tokens against {len(expected)}; first difference at token {first}: "
-                   f"{' '.join(got[first:first + 12])!r} against {' '.join(expected[first:first + 12])!r}")
+                   f"{' '.join(got[first:first + 12])!r} against {' '.join(expected[first:first + 12])!r}"), expected
 
 
 @pytest.fixture(scope="module")
@@ -176,19 +178,34 @@ def every_file_amalgamated(tmp_path_factory):
 
 @pytest.mark.parametrize("defines", CONFIGURATIONS, ids=lambda d: ",".join(f"{k}={v}" for k, v in d.items()) or "defaults")
 def test_babylons_preprocessor_keeps_the_branches_glslang_keeps(every_file_amalgamated, defines, tmp_path):
-    ok, detail = babylon_matches_glslang(every_file_amalgamated, defines, tmp_path)
+    ok, detail, _ = babylon_matches_glslang(every_file_amalgamated, defines, tmp_path)
     assert ok, f"{defines or 'defaults'}: {detail}"
 
 
 def test_the_comparison_fails_where_babylon_cannot_resolve(every_file_amalgamated, tmp_path):
     """Controls: a selector set by its name (two macro levels, which Babylon.js does not
     follow), and the library as it was before issue 36 (a directive word in a comment)."""
-    ok, detail = babylon_matches_glslang(every_file_amalgamated, {"PBR_QUALITY": "PBR_QUALITY_LOW"}, tmp_path)
+    ok, detail, _ = babylon_matches_glslang(every_file_amalgamated, {"PBR_QUALITY": "PBR_QUALITY_LOW"}, tmp_path)
     assert not ok, detail
     commented = every_file_amalgamated.replace("#define PBR_QUALITY_LOW 1\n",
                                                "// the only #if chain\n#define PBR_QUALITY_LOW 1\n", 1)
     assert commented != every_file_amalgamated
-    ok, detail = babylon_matches_glslang(commented, {}, tmp_path)
+    ok, detail, _ = babylon_matches_glslang(commented, {}, tmp_path)
+    assert not ok, detail
+
+
+def test_babylon_sees_the_hooks_as_object_like_macros(every_file_amalgamated, tmp_path):
+    """The table hooks defined above the library as examples/babylonjs does (a macro naming a
+    function) reach the library's table branch in Babylon.js as in glslang; the function-like
+    form, which Babylon.js's define table does not record, is the control that differs (the
+    sheen hook's: the DFG hook is tested under a `#  if`, with blanks after the `#`, which
+    Babylon.js leaves to the driver's preprocessor)."""
+    hooks = "#define PBR_DFG_LUT_LOOKUP example_dfg_lookup\n#define PBR_SHEEN_LUT_LOOKUP example_sheen_lookup\n"
+    ok, detail, tokens = babylon_matches_glslang(hooks + every_file_amalgamated, {}, tmp_path)
+    assert ok, detail
+    assert "example_dfg_lookup" in tokens and "example_sheen_lookup" in tokens  # the hooks are read
+    function_like = "#define PBR_SHEEN_LUT_LOOKUP(NdotV, r) example_sheen_lookup(NdotV, r)\n"
+    ok, detail, _ = babylon_matches_glslang(function_like + every_file_amalgamated, {}, tmp_path)
     assert not ok, detail
 
 
