@@ -13,7 +13,8 @@
 #      requirements (a stamp records their hash).
 #   3. npm ci in tools/sample_viewer (the Khronos glTF Sample Renderer and playwright-core),
 #      tools/gltf_validator (the Khronos glTF Validator) and tools/threejs (three.js and
-#      playwright-core, for examples/threejs), each pinned by its package-lock.json. Skipped where node_modules matches the lock file.
+#      playwright-core, for examples/threejs) and tools/babylonjs (Babylon.js and playwright-core, for
+#      examples/babylonjs and tests/library/test_engine_preprocessors.py), each pinned by its package-lock.json. Skipped where node_modules matches the lock file.
 #      (tools/chromium/launch.mjs, the Chromium start-up both browser tools import, needs no npm package.)
 #   4. naga-cli (the shader translator of wgpu, Bevy and Firefox's WebGPU; crates.io, pinned) into tools/naga,
 #      with `cargo install --locked`: examples/wgpu and the shipped WGSL (wgsl/pbrlab.wgsl, docs/wgsl.md)
@@ -66,8 +67,8 @@ fi
 
 # The npm tools, each from its lock file: the Khronos Sample Renderer (tools/sample_viewer)
 # the Khronos glTF Validator (tools/gltf_validator), three.js for examples/threejs (tools/threejs) and
-# three.js as the fidelity benchmark's peer (tools/threejs_gltf).
-for tool in tools/sample_viewer tools/gltf_validator tools/threejs tools/threejs_gltf; do
+# three.js as the fidelity benchmark's peer (tools/threejs_gltf) and Babylon.js (tools/babylonjs).
+for tool in tools/sample_viewer tools/gltf_validator tools/threejs tools/threejs_gltf tools/babylonjs; do
   tool_stamp=$tool/node_modules/.pbrlab-installed
   tool_want=$(sha256sum < $tool/package-lock.json | cut -c1-16)
   if ! { [ -f "$tool_stamp" ] && [ "$(cat "$tool_stamp")" = "$tool_want" ]; }; then

@@ -4,7 +4,8 @@
 // library_entry.glsl`) handed the exported DFG table (`pbrlab tables`, pbrlab_dfg.exr) through
 // the library's PBR_DFG_LUT_LOOKUP hook. renderScene returns the linear radiance it drew
 // (float RGBA, rows bottom to top), which tests/examples/test_threejs_example.py compares
-// with `pbrlab render` of the same scene.
+// with `pbrlab render` of the same scene; showScene draws the same spheres on the page's canvas,
+// tone mapped and sRGB encoded.
 import * as THREE from "three";
 import { EXRLoader } from "three/addons/loaders/EXRLoader.js";
 
@@ -39,17 +40,12 @@ function scaled(color, intensity) {
   return new THREE.Vector3(...color).multiplyScalar(intensity);
 }
 
-export async function renderScene({ scene: sceneUrl, library: libraryUrl, dfg: dfgUrl }) {
+// The scene's camera and meshes, one ShaderMaterial per sphere; display: 1 for the on-screen view.
+async function buildScene({ scene: sceneUrl, library: libraryUrl, dfg: dfgUrl }, display) {
   const [scene, library, vertex, fragment, dfg] = await Promise.all([
     text(sceneUrl).then(JSON.parse), text(libraryUrl), text(new URL("sphere.vert.glsl", HERE)),
     text(new URL("sphere.frag.glsl", HERE)), loadDfg(dfgUrl)]);
   const [width, height] = scene.camera.size ?? DEFAULTS.size;
-  const renderer = new THREE.WebGLRenderer({ antialias: false });
-  renderer.setPixelRatio(1);
-  renderer.setSize(width, height, false);
-  const target = new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType, depthBuffer: true,
-                                                              minFilter: THREE.NearestFilter,
-                                                              magFilter: THREE.NearestFilter });
   const camera = new THREE.PerspectiveCamera(scene.camera.fov_y_deg ?? DEFAULTS.fov_y_deg, width / height, 0.01, 1000);
   camera.position.set(...scene.camera.position);
   camera.up.set(...(scene.camera.up ?? DEFAULTS.up));
@@ -86,6 +82,7 @@ export async function renderScene({ scene: sceneUrl, library: libraryUrl, dfg: d
         u_light_count: { value: (scene.lights ?? []).length },
         u_light_direction: { value: lights.map((l) => l.direction) },
         u_light_radiance: { value: lights.map((l) => l.radiance) },
+        u_display: { value: display },
       },
     });
     // A bounding mesh, 10 % larger: the fragment shader finds the sphere itself.
@@ -93,6 +90,17 @@ export async function renderScene({ scene: sceneUrl, library: libraryUrl, dfg: d
     mesh.position.set(...center);
     world.add(mesh);
   }
+  return { world, camera, width, height };
+}
+
+export async function renderScene(urls) {
+  const { world, camera, width, height } = await buildScene(urls, 0);
+  const renderer = new THREE.WebGLRenderer({ antialias: false });
+  renderer.setPixelRatio(1);
+  renderer.setSize(width, height, false);
+  const target = new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType, depthBuffer: true,
+                                                              minFilter: THREE.NearestFilter,
+                                                              magFilter: THREE.NearestFilter });
   renderer.setRenderTarget(target);
   renderer.setClearColor(0x000000, 0);
   renderer.clear();
@@ -104,4 +112,15 @@ export async function renderScene({ scene: sceneUrl, library: libraryUrl, dfg: d
   const name = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
   renderer.dispose();
   return { width, height, pixels, renderer: name, three: THREE.REVISION };
+}
+
+// The page's view: the same scene on a visible canvas (8-bit, tone mapped, sRGB encoded).
+export async function showScene(canvas, urls) {
+  const { world, camera, width, height } = await buildScene(urls, 1);
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false });
+  renderer.setPixelRatio(1);
+  renderer.setSize(width, height, false);
+  renderer.setClearColor(0x000000, 0);
+  renderer.render(world, camera);
+  return renderer;
 }

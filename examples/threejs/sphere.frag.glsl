@@ -2,7 +2,9 @@
 // main.mjs places above this file, after the DFG hook). Linear radiance out, as pbrlab
 // render's EXR: the environment once (constant radiance u_environment: SH irradiance / pi and
 // prefiltered radiance are both that constant), then each directional light, as pbrlab's
-// scene programs do (harness/pbrlab/templates/scene_lighting.inc, pbrlab_shade_surface).
+// scene programs do (harness/pbrlab/templates/scene_lighting.inc, pbrlab_shade_surface). Where
+// u_display is 1 (the page's on-screen view) the radiance is tone mapped and sRGB encoded by
+// the library (pbr_tonemap, pbr_linear_to_srgb) for the 8-bit canvas.
 #define MAX_LIGHTS 4
 uniform vec4 u_sphere;                          // xyz centre, w radius
 uniform vec3 u_albedo;
@@ -12,6 +14,7 @@ uniform vec3 u_environment;                     // constant radiance (colour x i
 uniform int u_light_count;
 uniform vec3 u_light_direction[MAX_LIGHTS];     // the way light travels, unit
 uniform vec3 u_light_radiance[MAX_LIGHTS];      // colour x intensity
+uniform int u_display;
 in vec3 v_world;
 layout(location = 0) out vec4 radiance;
 
@@ -52,5 +55,5 @@ void main() {
         gi.light.color = u_light_radiance[i];
         c.rgb += LightingStandard(o, v, gi).rgb;
     }
-    radiance = vec4(c.rgb, 1.0);
+    radiance = vec4(u_display == 1 ? pbr_linear_to_srgb(pbr_tonemap(c.rgb)) : c.rgb, 1.0);
 }

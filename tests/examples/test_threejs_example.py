@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from example_page import MIN_DRAWN_FRACTION, drawn_fraction, view_of_page
 from pbrlab.gpu import engine_tables, shaders
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene import load_scene, parse_scene
@@ -84,6 +85,7 @@ def threejs_render(tmp_path_factory):
     # say nothing about the page and are left out.
     problems = [m for m in meta["messages"] if not _is_driver_performance_notice(m)]
     assert not problems, problems
+    meta["files"] = {"library": library, "dfg": tmp / "pbrlab_dfg.exr"}
     width, height = meta["size"]
     return np.fromfile(tmp / "out.f32", np.float32).reshape(height, width, 4), meta
 
@@ -133,3 +135,27 @@ def test_only_chromiums_performance_notices_are_left_out():
     assert not _is_driver_performance_notice("error: THREE.WebGLProgram: Shader Error 1282 - VALIDATE_STATUS false")
     assert not _is_driver_performance_notice("warning: THREE.WebGLProgram: Program Info Log: 'x' : undeclared identifier")
     assert not _is_driver_performance_notice("pageerror: GL Driver Message (OpenGL, Performance, x)")
+
+
+def test_the_page_shows_the_spheres(threejs_render, tmp_path):
+    """index.html as README.md has a reader open it draws scene.json on its canvas
+    (tests/examples/example_page.py: the bound and why)."""
+    _, meta = threejs_render
+    files = meta["files"]
+    status, rgb, messages = view_of_page(TOOL, EXAMPLE / "scene.json", files["library"], files["dfg"], tmp_path)
+    assert status == "scene.json, drawn by three.js with the pbrlab library", status
+    assert not [m for m in messages if not _is_driver_performance_notice(m)], messages
+    assert drawn_fraction(rgb) >= MIN_DRAWN_FRACTION, f"{drawn_fraction(rgb):.1%} of the canvas drawn"
+
+
+def test_the_page_check_fails_on_an_empty_canvas(threejs_render, tmp_path):
+    """The control: the same page drawing a scene without objects says it drew, yet fails."""
+    _, meta = threejs_render
+    files = meta["files"]
+    empty = json.loads((EXAMPLE / "scene.json").read_text(encoding="utf-8"))
+    empty["objects"] = []
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps(empty), encoding="utf-8")
+    status, rgb, _ = view_of_page(TOOL, scene, files["library"], files["dfg"], tmp_path)
+    assert status == "scene.json, drawn by three.js with the pbrlab library", status
+    assert drawn_fraction(rgb) < MIN_DRAWN_FRACTION, f"{drawn_fraction(rgb):.1%}"

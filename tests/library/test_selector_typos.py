@@ -3,7 +3,8 @@
 The preprocessor reads an undefined name as 0 in ``#if``; every selector family counts from 1,
 so ``#define PBR_QUALITY PBR_QUALITY_HGH`` matches no value and the family's ``#error`` fires
 (before, LOW was 0 and the typo silently gave the LOW tier). The families are found in the
-library itself (``#ifndef X`` / ``#define X X_...``), so a new selector is tested too.
+library itself (``#ifndef X`` / ``// X_... as a number`` / ``#define X N``), so a new selector
+is tested too.
 """
 
 import re
@@ -15,7 +16,9 @@ from pbrlab import evaluate
 from pbrlab.gpu import shaders
 from pbrlab.foundation.errors import ShaderCompileError
 
-_DEFAULT = re.compile(r"#\s*ifndef\s+(PBR_\w+)\s*\n\s*#\s*define\s+\1\s+\1_\w+")
+# A default is written as its value's number under a comment naming the value (glsl/README.md,
+# one-level preprocessors): "#ifndef X" / "// X_VALUE as a number ..." / "#define X 2".
+_DEFAULT = re.compile(r"#\s*ifndef\s+(PBR_\w+)\s*\n//\s*\1_\w+ as a number[^\n]*\n\s*#\s*define\s+\1\s+\d+\s*\n")
 UNITY_INCLUDE = "pbr/unity/surface_standard"  # the unity layer; the core umbrella does not include it
 
 

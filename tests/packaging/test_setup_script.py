@@ -48,7 +48,7 @@ def _current_tree(tmp_path, naga: bool = True) -> Path:
     (tree / ".venv" / "bin" / "python").chmod(0o755)
     digest = hashlib.sha256((tree / "requirements.txt").read_bytes() + (tree / "pyproject.toml").read_bytes())
     (tree / ".venv" / ".pbrlab-installed").write_text(digest.hexdigest()[:16] + "\n")
-    for name in ("sample_viewer", "gltf_validator", "threejs", "threejs_gltf"):  # the npm tools' packages, current too
+    for name in ("sample_viewer", "gltf_validator", "threejs", "threejs_gltf", "babylonjs"):  # the npm tools' packages, current too
         tool = tree / "tools" / name
         (tool / "node_modules").mkdir(parents=True)
         shutil.copy(ROOT / "tools" / name / "package-lock.json", tool)

@@ -71,6 +71,16 @@ export async function runPage(chromium, { resolveFile, transform = null, page: p
   }
 }
 
+// An example page's own view (examples/threejs, examples/babylonjs: a canvas #view and a
+// paragraph #status that reads "loading…" until the page has drawn or failed): waits for
+// it, writes a PNG of the canvas as shown and returns the status line.
+export async function screenshotView(page, pngPath) {
+  await page.waitForFunction(() => !document.getElementById("status").textContent.startsWith("loading"), null,
+                             { timeout: PAGE_READY_TIMEOUT_MS });
+  await page.locator("#view").screenshot({ path: pngPath });
+  return page.evaluate(() => document.getElementById("status").textContent);
+}
+
 // The float32 RGBA pixels a page read back with readPixels (rows bottom to top), sent as
 // base64, as rows top to bottom.
 export function rowsTopDown(base64, width, height) {

@@ -8,12 +8,15 @@
 //             "dfg": "/abs/pbrlab_dfg.exr"}
 // Writes OUT.f32 (float32 RGBA, rows top to bottom, linear radiance; alpha 0 where no
 // sphere) and OUT.json (size, WebGL renderer, three.js revision, console messages).
+// With "show": true in SPEC.json it opens the page as a reader does (index.html, the spec's
+// files served under the names README.md writes) and writes OUT.png (the canvas as shown)
+// and OUT.json (its status line, console messages) instead.
 // Chromium's start-up and the page's server: tools/chromium/launch.mjs.
 import { writeFile } from "node:fs/promises";
-import { dirname, join, resolve } from "node:path";
+import { basename, dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
-import { rowsTopDown, runPage, runTool } from "../chromium/launch.mjs";
+import { rowsTopDown, runPage, runTool, screenshotView } from "../chromium/launch.mjs";
 
 const HERE = dirname(fileURLToPath(import.meta.url));
 const REPO = resolve(HERE, "..", "..");
@@ -29,11 +32,22 @@ function servedFile(path, allowedFiles) {
   return ROOTS.some((root) => abs.startsWith(root + "/")) ? abs : null;
 }
 
+// The page as README.md has a reader open it: the spec's files at the names it writes.
+async function show(files, outPrefix) {
+  const named = { "scene.json": files[0], "pbrlab_library.glsl": files[1], "pbrlab_dfg.exr": files[2] };
+  const { result, messages } = await runPage(chromium, {
+    resolveFile: (path) => (dirname(path) === "/examples/threejs" && named[basename(path)]) || servedFile(path, []),
+    page: "/examples/threejs/index.html",
+  }, (page) => screenshotView(page, `${outPrefix}.png`));
+  await writeFile(`${outPrefix}.json`, JSON.stringify({ status: result, messages }, null, 1));
+}
+
 async function main(spec, outPrefix) {
   const files = ["scene", "library", "dfg"].map((key) => resolve(spec[key]));
+  if (spec.show) return show(files, outPrefix);
   const { result, messages } = await runPage(chromium, {
     resolveFile: (path) => servedFile(path, files),
-    page: "/examples/threejs/index.html",
+    page: "/examples/threejs/index.html?test",
   }, async (page, base) => {
     const urls = { scene: `${base}/fs${files[0]}`, library: `${base}/fs${files[1]}`, dfg: `${base}/fs${files[2]}` };
     return page.evaluate(async (u) => {

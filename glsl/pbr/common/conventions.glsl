@@ -30,9 +30,9 @@
 //    the practical energy-conservation rule (pbr/material/workflow.glsl).
 // 7. Prefixes: public functions pbr_, macros PBR_, include guards PBR_<PATH>_GLSL. No file
 //    declares uniforms, varyings, samplers or in/out globals: the caller owns resources.
-// 8. Variants: each alternative is its own function; a numbered #define selects it
+// 8. Variants: each alternative is its own function; a numbered macro selects it
 //    (e.g. PBR_SPECULAR_D = PBR_SPECULAR_D_GGX) and one dispatch function per term holds
-//    the only #if chain (pbr/shading/dispatch.glsl).
+//    the only conditional chain (pbr/shading/dispatch.glsl).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_COMMON_CONVENTIONS_GLSL
 #define PBR_COMMON_CONVENTIONS_GLSL

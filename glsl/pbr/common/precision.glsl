@@ -12,7 +12,7 @@
 // compiles it as float32: measured, docs/bench), so with PBR_FLOAT16 defined PBR_HALF is
 // float16_t, which reaches a GPU's 16-bit ALUs. That needs
 // GL_EXT_shader_explicit_arithmetic_types_float16, enabled by the including shader before
-// this file (#extension ... : require; Vulkan: the shaderFloat16 feature), or it is an error
+// this file (the extension directive with require; Vulkan: the shaderFloat16 feature), or it is an error
 // here. Where PBR_HALF_ARITHMETIC is 1 the LOW tier evaluates its lobe in the order that
 // stays inside half's range (pbr_DV_GGX_SmithCorrelatedFast_half).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
@@ -20,9 +20,9 @@
 #define PBR_COMMON_PRECISION_GLSL
 
 #if defined(PBR_FLOAT16) || defined(GL_ES)
-#  define PBR_HALF_ARITHMETIC 1
+#define PBR_HALF_ARITHMETIC 1
 #else
-#  define PBR_HALF_ARITHMETIC 0
+#define PBR_HALF_ARITHMETIC 0
 #endif
 
 // The smallest normal half, 2^-14 (below it mediump need not keep values).
@@ -30,7 +30,7 @@
 
 #ifdef PBR_FLOAT16
 // glslang defines the extension's macro for desktop GLSL only, so the check is skipped for
-// GLSL ES (there the #extension line is the shader's own responsibility).
+// GLSL ES (there the extension directive is the shader's own responsibility).
 #  if !defined(GL_ES) && !defined(GL_EXT_shader_explicit_arithmetic_types_float16)
 #    error PBR_FLOAT16 needs #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require before the pbrlab includes
 #  endif

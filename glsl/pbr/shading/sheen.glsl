@@ -15,7 +15,7 @@
 // Include:  "pbr/shading/sheen.glsl" (path relative to glsl/)
 // Config macros read: PBR_SHEEN_V = PBR_SHEEN_V_CHARLIE (1, default: Estevez & Kulla's
 //           visibility, KHR's reference) or PBR_SHEEN_V_NEUBELT (2: Ashikhmin's, cheaper);
-//           other values are an #error. PBR_SHEEN_LUT_LOOKUP(NdotV, sheenPerceptualRoughness),
+//           other values are a compile error. PBR_SHEEN_LUT_LOOKUP(NdotV, sheenPerceptualRoughness),
 //           a hook the caller may define to read its sheen albedo table (it owns the sampler),
 //           returning the float E: typically
 //             texture(table, pbr_sheen_lut_uv(NdotV, sheenPerceptualRoughness)).r
@@ -53,7 +53,8 @@
 #define PBR_SHEEN_V_CHARLIE 1
 #define PBR_SHEEN_V_NEUBELT 2
 #ifndef PBR_SHEEN_V
-#define PBR_SHEEN_V PBR_SHEEN_V_CHARLIE
+// PBR_SHEEN_V_CHARLIE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SHEEN_V 1
 #endif
 
 // alpha_g = sheenRoughness² (KHR), perceptual roughness clamped to [the floor, 1].

@@ -115,7 +115,7 @@ struct pbr_GI {
 // filmed scene programs by -3 .. -5 RDNA3 instructions (see pbr_prepare_surface_f90_dfg).
 vec3 pbr_indirect_specular_albedo_f90(vec3 f0, float f90, vec2 dfg) {
     vec3 albedo = pbr_specular_albedo_f90(f0, f90, dfg);
-#if PBR_ENERGY_COMPENSATION
+#if PBR_ENERGY_COMPENSATION != 0
     albedo *= pbr_energy_compensation(f0, dfg);
 #endif
     return albedo;
@@ -123,7 +123,7 @@ vec3 pbr_indirect_specular_albedo_f90(vec3 f0, float f90, vec2 dfg) {
 
 vec3 pbr_indirect_specular_albedo(vec3 f0, vec2 dfg) {
     vec3 albedo = pbr_specular_albedo(f0, dfg);
-#if PBR_ENERGY_COMPENSATION
+#if PBR_ENERGY_COMPENSATION != 0
     albedo *= pbr_energy_compensation(f0, dfg);
 #endif
     return albedo;

@@ -20,15 +20,16 @@
 #include "pbr/tonemap/aces.glsl"
 #include "pbr/tonemap/khronos_neutral.glsl"
 
-#define PBR_TONEMAP_NONE            1
-#define PBR_TONEMAP_REINHARD        2
-#define PBR_TONEMAP_HABLE           3
-#define PBR_TONEMAP_ACES_FITTED     4
-#define PBR_TONEMAP_ACES_NARKOWICZ  5
+#define PBR_TONEMAP_NONE 1
+#define PBR_TONEMAP_REINHARD 2
+#define PBR_TONEMAP_HABLE 3
+#define PBR_TONEMAP_ACES_FITTED 4
+#define PBR_TONEMAP_ACES_NARKOWICZ 5
 #define PBR_TONEMAP_KHRONOS_NEUTRAL 6
 
 #ifndef PBR_TONEMAP
-#define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
+// PBR_TONEMAP_KHRONOS_NEUTRAL as a number (glsl/README.md, one-level preprocessors)
+#define PBR_TONEMAP 6
 #endif
 
 vec3 pbr_tonemap(vec3 color) {

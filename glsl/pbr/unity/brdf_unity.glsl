@@ -57,7 +57,8 @@
 // The tier block of pbr/shading/dispatch.glsl (included above) has set PBR_UNITY_BRDF from
 // PBR_QUALITY; this file's own default is the same as the HIGH tier's.
 #ifndef PBR_UNITY_BRDF
-#define PBR_UNITY_BRDF PBR_UNITY_BRDF_1
+// PBR_UNITY_BRDF_1 as a number (glsl/README.md, one-level preprocessors)
+#define PBR_UNITY_BRDF 1
 #endif
 
 // Unity's epsilons and clamps, each as UnityStandardBRDF.cginc writes it (shared with
@@ -139,7 +140,7 @@ vec3 Unity_SafeNormalize(vec3 inVec) {
 
 // What BRDF3 reads from Unity's lookup texture unity_NHxRoughness (.r * LUT_RANGE), as the
 // analytic function the texture stands for. Unity bakes the texture in GeneratedTextures.cpp,
-// which is not public; this is Unity's own un-baked form, the `#else` branch of BRDF3_Unity_PBS
+// which is not public; this is Unity's own un-baked form, the fallback branch of BRDF3_Unity_PBS
 // in Unity 5.0's UnityStandardBRDF.cginc ("n = RoughnessToSpecPower(roughness) * .25;
 // specular = (n + 2) / (2 π²) · pow(dot(reflDir, light.dir), n)"): a normalized Phong lobe
 // around the mirror direction with a quarter of the Blinn-Phong exponent. Differences from
@@ -164,7 +165,7 @@ float pbr_unity_NHxRoughness_lookup(float rlPow4, float perceptualRoughness) {
 
 // Unity_GlossyEnvironment (UnityImageBasedLighting.cginc) remaps the perceptual roughness
 // before choosing the mip (mip = r' · UNITY_SPECCUBE_LOD_STEPS): r' = r (1.7 - 0.7 r), Mittring's
-// "surprisingly close approximation" of the spec-power based mapping in its #if 0 branch.
+// "surprisingly close approximation" of the spec-power based mapping in its disabled branch.
 float pbr_unity_glossy_environment_perceptual_roughness(float perceptualRoughness) {
     return perceptualRoughness * (1.7 - 0.7 * perceptualRoughness);
 }
@@ -258,7 +259,7 @@ vec3 pbr_unity_brdf3(vec3 diffColor, vec3 specColor, float oneMinusReflectivity,
 }
 
 // UNITY_BRDF_PBS: the BRDF of the tier (PBR_UNITY_BRDF, set by the tier block of
-// pbr/shading/dispatch.glsl). The only #if chain of the unity model's BRDF.
+// pbr/shading/dispatch.glsl). The only conditional chain of the unity model's BRDF.
 vec3 pbr_unity_brdf_pbs(vec3 diffColor, vec3 specColor, float oneMinusReflectivity, float smoothness,
                         vec3 normal, vec3 viewDir, vec3 lightColor, vec3 lightDir,
                         vec3 indirectDiffuse, vec3 indirectSpecular) {

@@ -34,7 +34,7 @@
 
 struct SurfaceOutput {
     vec3 Albedo;
-    vec3 Normal;     // tangent space when written by a surface function; world space here
+    vec3 Normal;     // tangent space when written by a surface function, world space here
     vec3 Emission;
     float Specular;  // exponent / 128
     float Gloss;     // specular intensity

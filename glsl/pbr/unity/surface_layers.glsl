@@ -155,19 +155,20 @@ struct SurfaceOutputStandardLayers {
 // pbr/shading/dispatch.glsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
 #ifndef PBR_BRDF_MODEL
-#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+// PBR_BRDF_MODEL_PBRLAB as a number (glsl/README.md, one-level preprocessors)
+#define PBR_BRDF_MODEL 1
 #endif
 
 vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 normal, vec3 viewDir, UnityGI gi,
                             vec3 sheenIndirect, vec3 coatIndirectSpecular, float occlusion) {
     vec3 c = base.rgb;
-#if PBR_LAYERS_SHEEN
+#if PBR_LAYERS_SHEEN != 0
     pbr_Sheen sheen;
     sheen.color = s.SheenColor;
     sheen.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(s.SheenSmoothness);
     c = pbr_lighting_sheen(c, sheen, normal, viewDir, gi, sheenIndirect, occlusion);
 #endif
-#if PBR_LAYERS_CLEARCOAT
+#if PBR_LAYERS_CLEARCOAT != 0
     pbr_ClearCoat coat;
     coat.mask = s.ClearCoatMask;
     coat.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(s.ClearCoatSmoothness);
@@ -183,11 +184,11 @@ vec4 LightingStandardLayers(vec4 base, SurfaceOutputStandardLayers s, vec3 norma
 // forms, so a program without the layer compiles as it did before it existed). These hold the
 // file's only PBR_LAYERS_SPECULAR_F90 choices (and the film's, in pbr_unity_lighting_layers_base);
 // each exists only where its layer is compiled in.
-#if PBR_LAYERS_ANISOTROPY
+#if PBR_LAYERS_ANISOTROPY != 0
 vec3 pbr_layers_lighting_anisotropic(vec3 diffColor, vec3 specColor, float f90, vec3 coatF0, float coatF90,
                                      float perceptualRoughness, float occlusion, vec3 n, vec3 viewDir, UnityGI gi,
                                      pbr_Anisotropy anisotropy) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_anisotropic_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
                                         n, viewDir, gi, anisotropy);
 #else
@@ -199,7 +200,7 @@ vec3 pbr_layers_lighting_anisotropic(vec3 diffColor, vec3 specColor, float f90, 
 
 vec3 pbr_layers_lighting_standard(vec3 diffColor, vec3 specColor, float f90, vec3 coatF0, float coatF90,
                                   float perceptualRoughness, float occlusion, vec3 n, vec3 viewDir, UnityGI gi) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_standard_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion, n,
                                      viewDir, gi);
 #else
@@ -207,11 +208,11 @@ vec3 pbr_layers_lighting_standard(vec3 diffColor, vec3 specColor, float f90, vec
 #endif
 }
 
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
 vec3 pbr_layers_lighting_transmission(vec3 diffColor, vec3 coatF0, float coatF90, float perceptualRoughness,
                                       float occlusion, vec3 n, vec3 viewDir, UnityGI gi, vec3 transmittedIndirect,
                                       pbr_Transmission tr) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_transmission_f90(diffColor, coatF0, coatF90, perceptualRoughness, occlusion, n, viewDir, gi,
                                          transmittedIndirect, tr);
 #else
@@ -235,13 +236,13 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     vec3 n = normalize(normal);
     float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
-#if PBR_LAYERS_IRIDESCENCE
+#if PBR_LAYERS_IRIDESCENCE != 0
     pbr_Iridescence film;
     film.factor = layers.IridescenceMask;
     film.ior = layers.IridescenceIor;
     film.thicknessNm = layers.IridescenceThickness;
     float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     specColor = pbr_iridescent_f0_f90(specColor, f90, NdotV, film);
     vec3 filmCoatF0 = pbr_iridescent_f0_f90(coatF0, coatF90, NdotV, film);
 #else
@@ -251,11 +252,11 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
     diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
     coatF0 = filmCoatF0;
 #endif
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
     vec3 transmissionDiffColor = diffColor;  // the whole diffuse colour: the transmission's weight
     diffColor = pbr_transmission_diffuse_color(diffColor, layers.Transmission);
 #endif
-#if PBR_LAYERS_ANISOTROPY
+#if PBR_LAYERS_ANISOTROPY != 0
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
     anisotropy.direction = layers.AnisotropyDirection;
@@ -265,7 +266,7 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
     vec3 c = pbr_layers_lighting_standard(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
                                           n, viewDir, gi);
 #endif
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
     pbr_Transmission tr;
     tr.factor = layers.Transmission;
     tr.thickness = layers.Thickness;
@@ -280,9 +281,9 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
 
 // The F0 of the metallic workflow's dielectric share, the coat over its diffuse: Unity's 0.04
 // (unity_ColorSpaceDielectricSpec) or, where PBR_LAYERS_DIELECTRIC_SPECULAR, the surface's
-// DielectricSpecular. The one #if of the layer.
+// DielectricSpecular. The layer's one preprocessor conditional.
 vec3 pbr_unity_dielectric_f0(SurfaceOutputStandardLayers layers) {
-#if PBR_LAYERS_DIELECTRIC_SPECULAR
+#if PBR_LAYERS_DIELECTRIC_SPECULAR != 0
     return layers.DielectricSpecular;
 #else
     return unity_ColorSpaceDielectricSpec.rgb;

@@ -30,12 +30,13 @@
 #include "pbr/common/guards.hlsl"
 
 #define PBR_COLOR_TRANSFER_HARDWARE 1
-#define PBR_COLOR_TRANSFER_SRGB     2
-#define PBR_COLOR_TRANSFER_GAMMA22  3
-#define PBR_COLOR_TRANSFER_FAST     4
+#define PBR_COLOR_TRANSFER_SRGB 2
+#define PBR_COLOR_TRANSFER_GAMMA22 3
+#define PBR_COLOR_TRANSFER_FAST 4
 
 #ifndef PBR_COLOR_TRANSFER
-#define PBR_COLOR_TRANSFER PBR_COLOR_TRANSFER_HARDWARE
+// PBR_COLOR_TRANSFER_HARDWARE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_COLOR_TRANSFER 1
 #endif
 
 // A colour texel as fetched -> linear colour.

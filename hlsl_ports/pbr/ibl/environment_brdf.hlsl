@@ -39,11 +39,12 @@
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/common/math.hlsl"
 
-// The selector's values (count from 1: a misspelt value is an #error, glsl/README.md).
+// The selector's values (count from 1: a misspelt value is a compile error, glsl/README.md).
 #define PBR_ENV_BRDF_TABLE 1
 #define PBR_ENV_BRDF_ANALYTIC 2
 #ifndef PBR_ENV_BRDF
-#define PBR_ENV_BRDF PBR_ENV_BRDF_TABLE
+// PBR_ENV_BRDF_TABLE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_ENV_BRDF 1
 #endif
 
 // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox): a fit of the

@@ -23,7 +23,9 @@
 // Points on the Hemisphere" (GLSL 3.30 has no bitfieldReverse).
 // GLSL ES 1.00 / WebGL 1 has no uint (nor bit operations), so there only
 // pbr_hammersley_float below exists; desktop GLSL, ES 3.00+ and HLSL (no GL_ES) keep this one.
-#if !(defined(GL_ES) && __VERSION__ < 300)
+// ES 1.00 is the one GLSL ES version below 3.00, so `> 100` tests it: Babylon.js's own
+// preprocessor reads __VERSION__ as 200 under WebGL2 (glsl/README.md, one-level preprocessors).
+#if !defined(GL_ES) || __VERSION__ > 100
 float2 pbr_hammersley(uint i, uint count) {
     uint bits = (i << 16u) | (i >> 16u);
     bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);

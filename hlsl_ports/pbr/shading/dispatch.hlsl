@@ -11,7 +11,7 @@
 //           PBR_MIN_PERCEPTUAL_ROUGHNESS, PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
 //           PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the selector values below.
 // Include:  "pbr/shading/dispatch.hlsl" (path relative to hlsl_ports/)
-// Config macros read: (each has a default, set with #ifndef below)
+// Config macros read: (each has a default, set below where undefined)
 //   PBR_QUALITY     PBR_QUALITY_HIGH (default, the exact model) | PBR_QUALITY_MEDIUM
 //                   (Hammon's V) | PBR_QUALITY_LOW (a cheaper lobe: V bounded without a square
 //                   root, no per-light Fresnel); see the tier block below; picks the defaults
@@ -31,8 +31,8 @@
 //                   BRDF1/2/3_Unity_PBS the unity model uses (the tier block below)
 //
 // The one variant mechanism of the library (pbr/common/conventions.hlsl §8): every
-// alternative is its own function in pbr/brdf/; a numbered #define selects it; each
-// dispatcher below holds the only #if chain of its term. Every dispatcher takes the same
+// alternative is its own function in pbr/brdf/; a numbered macro selects it; each
+// dispatcher below holds the only conditional chain of its term. Every dispatcher takes the same
 // parameters whatever the variant, so callers never change. Parameter mapping:
 //   D GGX, Beckmann: take 1 - NdotH² separately (pbr_one_minus_dot2: |n × h|², see d_ggx.hlsl).
 //   D Blinn-Phong: specPower = pbr_specPower_from_alpha(alpha) (Walter 2007 §5.2).
@@ -65,43 +65,46 @@
 #include "pbr/brdf/v_implicit.hlsl"
 #include "pbr/brdf/f_schlick.hlsl"
 
-// Every selector family counts from 1: an undefined name (a typo) reads as 0 in #if, which
-// no value matches, so the dispatcher's #error names the selector instead of picking a term.
-#define PBR_SPECULAR_D_GGX         1
-#define PBR_SPECULAR_D_BECKMANN    2
+// Every selector family counts from 1: an undefined name (a typo) reads as 0 in a conditional,
+// which no value matches, so the dispatcher's compile error names the selector instead of
+// picking a term.
+#define PBR_SPECULAR_D_GGX 1
+#define PBR_SPECULAR_D_BECKMANN 2
 #define PBR_SPECULAR_D_BLINN_PHONG 3
 
-#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED      1
+#define PBR_SPECULAR_V_SMITH_GGX_CORRELATED 1
 #define PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST 2
-#define PBR_SPECULAR_V_SMITH_GGX                 3
-#define PBR_SPECULAR_V_SCHLICK_GGX               4
-#define PBR_SPECULAR_V_COOK_TORRANCE             5
-#define PBR_SPECULAR_V_KELEMEN                   6
-#define PBR_SPECULAR_V_IMPLICIT                  7
-#define PBR_SPECULAR_V_SMITH_GGX_BOUND           8
+#define PBR_SPECULAR_V_SMITH_GGX 3
+#define PBR_SPECULAR_V_SCHLICK_GGX 4
+#define PBR_SPECULAR_V_COOK_TORRANCE 5
+#define PBR_SPECULAR_V_KELEMEN 6
+#define PBR_SPECULAR_V_IMPLICIT 7
+#define PBR_SPECULAR_V_SMITH_GGX_BOUND 8
 
-#define PBR_SPECULAR_F_SCHLICK    1
+#define PBR_SPECULAR_F_SCHLICK 1
 #define PBR_SPECULAR_F_SCHLICK_SG 2
-#define PBR_SPECULAR_F_NONE       3
-#define PBR_SPECULAR_F_F0         4
+#define PBR_SPECULAR_F_NONE 3
+#define PBR_SPECULAR_F_F0 4
 
 #define PBR_DIFFUSE_LAMBERT 1
-#define PBR_DIFFUSE_BURLEY  2
+#define PBR_DIFFUSE_BURLEY 2
 
-#define PBR_QUALITY_LOW    1
-#define PBR_QUALITY_HIGH   2
+#define PBR_QUALITY_LOW 1
+#define PBR_QUALITY_HIGH 2
 #define PBR_QUALITY_MEDIUM 3
 
 #ifndef PBR_QUALITY
-#define PBR_QUALITY PBR_QUALITY_HIGH
+// PBR_QUALITY_HIGH as a number (glsl/README.md, one-level preprocessors)
+#define PBR_QUALITY 2
 #endif
 
 // The BRDF model: non-zero values, so that an undefined name (which the preprocessor reads
 // as 0) is an error rather than a silent choice.
 #define PBR_BRDF_MODEL_PBRLAB 1
-#define PBR_BRDF_MODEL_UNITY  2
+#define PBR_BRDF_MODEL_UNITY 2
 #ifndef PBR_BRDF_MODEL
-#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+// PBR_BRDF_MODEL_PBRLAB as a number (glsl/README.md, one-level preprocessors)
+#define PBR_BRDF_MODEL 1
 #endif
 #if PBR_BRDF_MODEL != PBR_BRDF_MODEL_PBRLAB && PBR_BRDF_MODEL != PBR_BRDF_MODEL_UNITY
 #error "PBR_BRDF_MODEL: unknown value (PBR_BRDF_MODEL_PBRLAB or PBR_BRDF_MODEL_UNITY)"
@@ -145,26 +148,32 @@
 //   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.
 #if PBR_QUALITY == PBR_QUALITY_LOW
 #  ifndef PBR_UNITY_BRDF
-#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_3
+// PBR_UNITY_BRDF_3 as a number (glsl/README.md, one-level preprocessors)
+#define PBR_UNITY_BRDF 3
 #  endif
 #  ifndef PBR_SPECULAR_V
-#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_BOUND
+// PBR_SPECULAR_V_SMITH_GGX_BOUND as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_V 8
 #  endif
 #  ifndef PBR_SPECULAR_F
-#  define PBR_SPECULAR_F PBR_SPECULAR_F_F0
+// PBR_SPECULAR_F_F0 as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_F 4
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
 #elif PBR_QUALITY == PBR_QUALITY_MEDIUM
 #  ifndef PBR_UNITY_BRDF
-#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_2
+// PBR_UNITY_BRDF_2 as a number (glsl/README.md, one-level preprocessors)
+#define PBR_UNITY_BRDF 2
 #  endif
 #  ifndef PBR_SPECULAR_V
-#  define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
+// PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_V 2
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #elif PBR_QUALITY == PBR_QUALITY_HIGH
 #  ifndef PBR_UNITY_BRDF
-#  define PBR_UNITY_BRDF PBR_UNITY_BRDF_1
+// PBR_UNITY_BRDF_1 as a number (glsl/README.md, one-level preprocessors)
+#define PBR_UNITY_BRDF 1
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS
 #else
@@ -172,16 +181,20 @@
 #endif
 
 #ifndef PBR_SPECULAR_D
-#define PBR_SPECULAR_D PBR_SPECULAR_D_GGX
+// PBR_SPECULAR_D_GGX as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_D 1
 #endif
 #ifndef PBR_SPECULAR_V
-#define PBR_SPECULAR_V PBR_SPECULAR_V_SMITH_GGX_CORRELATED
+// PBR_SPECULAR_V_SMITH_GGX_CORRELATED as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_V 1
 #endif
 #ifndef PBR_SPECULAR_F
-#define PBR_SPECULAR_F PBR_SPECULAR_F_SCHLICK
+// PBR_SPECULAR_F_SCHLICK as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_F 1
 #endif
 #ifndef PBR_DIFFUSE
-#define PBR_DIFFUSE PBR_DIFFUSE_LAMBERT
+// PBR_DIFFUSE_LAMBERT as a number (glsl/README.md, one-level preprocessors)
+#define PBR_DIFFUSE 1
 #endif
 
 float pbr_specular_D(float NdotH, float oneMinusNdotH2, float alpha) {
@@ -238,7 +251,7 @@ float pbr_specular_DV(float nDotH, float nCrossH2, float h2, float NdotL, float 
 #if PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED
     return pbr_DV_GGX_SmithCorrelated(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
 #elif PBR_SPECULAR_D == PBR_SPECULAR_D_GGX && PBR_SPECULAR_V == PBR_SPECULAR_V_SMITH_GGX_CORRELATED_FAST
-#  if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC
+#  if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC != 0
     return pbr_DV_GGX_SmithCorrelatedFast_half(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
 #  else
     return pbr_DV_GGX_SmithCorrelatedFast(nDotH, nCrossH2, h2, NdotL, NdotV, alpha);
@@ -307,7 +320,7 @@ float3 pbr_specular_F_deviation_bound(float3 f0) {
 }
 
 float pbr_specular_lobe_limit(float DV) {
-#if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC
+#if PBR_QUALITY == PBR_QUALITY_LOW && PBR_HALF_ARITHMETIC != 0
     return min(DV, PBR_HALF_MAX);  // also maps a half +Inf to 65504 (min of Inf is defined)
 #else
     return DV;

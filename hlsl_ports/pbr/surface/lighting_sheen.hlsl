@@ -50,14 +50,15 @@
 #define PBR_SHEEN_ENERGY_NORMALIZED 1
 #define PBR_SHEEN_ENERGY_SPECIFICATION 2
 #ifndef PBR_SHEEN_ENERGY
-#define PBR_SHEEN_ENERGY PBR_SHEEN_ENERGY_NORMALIZED
+// PBR_SHEEN_ENERGY_NORMALIZED as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SHEEN_ENERGY 1
 #endif
 #if PBR_SHEEN_ENERGY != PBR_SHEEN_ENERGY_NORMALIZED && PBR_SHEEN_ENERGY != PBR_SHEEN_ENERGY_SPECIFICATION
 #error "PBR_SHEEN_ENERGY: unknown value"
 #endif
 
 struct pbr_Sheen {
-    float3 color;                 // linear; 0: no sheen (glTF sheenColorFactor x texture.rgb)
+    float3 color;                 // linear, 0: no sheen (glTF sheenColorFactor x texture.rgb)
     float perceptualRoughness;  // glTF sheenRoughnessFactor x texture.a
 };
 

@@ -116,7 +116,7 @@ struct pbr_GI {
 // filmed scene programs by -3 .. -5 RDNA3 instructions (see pbr_prepare_surface_f90_dfg).
 float3 pbr_indirect_specular_albedo_f90(float3 f0, float f90, float2 dfg) {
     float3 albedo = pbr_specular_albedo_f90(f0, f90, dfg);
-#if PBR_ENERGY_COMPENSATION
+#if PBR_ENERGY_COMPENSATION != 0
     albedo *= pbr_energy_compensation(f0, dfg);
 #endif
     return albedo;
@@ -124,7 +124,7 @@ float3 pbr_indirect_specular_albedo_f90(float3 f0, float f90, float2 dfg) {
 
 float3 pbr_indirect_specular_albedo(float3 f0, float2 dfg) {
     float3 albedo = pbr_specular_albedo(f0, dfg);
-#if PBR_ENERGY_COMPENSATION
+#if PBR_ENERGY_COMPENSATION != 0
     albedo *= pbr_energy_compensation(f0, dfg);
 #endif
     return albedo;

@@ -88,9 +88,9 @@
 
 struct pbr_Transmission {
     float factor;               // 0 = none .. 1 (glTF transmissionFactor x texture.r)
-    float thickness;            // scene units; 0 = thin-walled (glTF thicknessFactor x texture.g x scale)
-    float3 attenuationColor;      // linear; the colour white light becomes after attenuationDistance
-    float attenuationDistance;  // > 0; +Inf: no attenuation (the extension's default)
+    float thickness;            // scene units, 0 = thin-walled (glTF thicknessFactor x texture.g x scale)
+    float3 attenuationColor;      // linear, the colour white light becomes after attenuationDistance
+    float attenuationDistance;  // > 0, +Inf: no attenuation (the extension's default)
     float ior;                  // the volume's index of refraction (>= 1)
 };
 

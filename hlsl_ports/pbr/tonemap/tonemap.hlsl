@@ -21,15 +21,16 @@
 #include "pbr/tonemap/aces.hlsl"
 #include "pbr/tonemap/khronos_neutral.hlsl"
 
-#define PBR_TONEMAP_NONE            1
-#define PBR_TONEMAP_REINHARD        2
-#define PBR_TONEMAP_HABLE           3
-#define PBR_TONEMAP_ACES_FITTED     4
-#define PBR_TONEMAP_ACES_NARKOWICZ  5
+#define PBR_TONEMAP_NONE 1
+#define PBR_TONEMAP_REINHARD 2
+#define PBR_TONEMAP_HABLE 3
+#define PBR_TONEMAP_ACES_FITTED 4
+#define PBR_TONEMAP_ACES_NARKOWICZ 5
 #define PBR_TONEMAP_KHRONOS_NEUTRAL 6
 
 #ifndef PBR_TONEMAP
-#define PBR_TONEMAP PBR_TONEMAP_KHRONOS_NEUTRAL
+// PBR_TONEMAP_KHRONOS_NEUTRAL as a number (glsl/README.md, one-level preprocessors)
+#define PBR_TONEMAP 6
 #endif
 
 float3 pbr_tonemap(float3 color) {

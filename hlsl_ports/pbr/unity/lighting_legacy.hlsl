@@ -35,7 +35,7 @@
 
 struct SurfaceOutput {
     float3 Albedo;
-    float3 Normal;     // tangent space when written by a surface function; world space here
+    float3 Normal;     // tangent space when written by a surface function, world space here
     float3 Emission;
     float Specular;  // exponent / 128
     float Gloss;     // specular intensity

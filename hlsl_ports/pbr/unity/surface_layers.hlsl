@@ -156,19 +156,20 @@ struct SurfaceOutputStandardLayers {
 // pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
 #ifndef PBR_BRDF_MODEL
-#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+// PBR_BRDF_MODEL_PBRLAB as a number (glsl/README.md, one-level preprocessors)
+#define PBR_BRDF_MODEL 1
 #endif
 
 float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3 normal, float3 viewDir, UnityGI gi,
                             float3 sheenIndirect, float3 coatIndirectSpecular, float occlusion) {
     float3 c = base.rgb;
-#if PBR_LAYERS_SHEEN
+#if PBR_LAYERS_SHEEN != 0
     pbr_Sheen sheen;
     sheen.color = s.SheenColor;
     sheen.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(s.SheenSmoothness);
     c = pbr_lighting_sheen(c, sheen, normal, viewDir, gi, sheenIndirect, occlusion);
 #endif
-#if PBR_LAYERS_CLEARCOAT
+#if PBR_LAYERS_CLEARCOAT != 0
     pbr_ClearCoat coat;
     coat.mask = s.ClearCoatMask;
     coat.perceptualRoughness = pbr_perceptual_roughness_from_smoothness(s.ClearCoatSmoothness);
@@ -184,11 +185,11 @@ float4 LightingStandardLayers(float4 base, SurfaceOutputStandardLayers s, float3
 // forms, so a program without the layer compiles as it did before it existed). These hold the
 // file's only PBR_LAYERS_SPECULAR_F90 choices (and the film's, in pbr_unity_lighting_layers_base);
 // each exists only where its layer is compiled in.
-#if PBR_LAYERS_ANISOTROPY
+#if PBR_LAYERS_ANISOTROPY != 0
 float3 pbr_layers_lighting_anisotropic(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
                                      float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi,
                                      pbr_Anisotropy anisotropy) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_anisotropic_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
                                         n, viewDir, gi, anisotropy);
 #else
@@ -200,7 +201,7 @@ float3 pbr_layers_lighting_anisotropic(float3 diffColor, float3 specColor, float
 
 float3 pbr_layers_lighting_standard(float3 diffColor, float3 specColor, float f90, float3 coatF0, float coatF90,
                                   float perceptualRoughness, float occlusion, float3 n, float3 viewDir, UnityGI gi) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_standard_f90(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion, n,
                                      viewDir, gi);
 #else
@@ -208,11 +209,11 @@ float3 pbr_layers_lighting_standard(float3 diffColor, float3 specColor, float f9
 #endif
 }
 
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
 float3 pbr_layers_lighting_transmission(float3 diffColor, float3 coatF0, float coatF90, float perceptualRoughness,
                                       float occlusion, float3 n, float3 viewDir, UnityGI gi, float3 transmittedIndirect,
                                       pbr_Transmission tr) {
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     return pbr_lighting_transmission_f90(diffColor, coatF0, coatF90, perceptualRoughness, occlusion, n, viewDir, gi,
                                          transmittedIndirect, tr);
 #else
@@ -236,13 +237,13 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
     float3 n = normalize(normal);
     float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
-#if PBR_LAYERS_IRIDESCENCE
+#if PBR_LAYERS_IRIDESCENCE != 0
     pbr_Iridescence film;
     film.factor = layers.IridescenceMask;
     film.ior = layers.IridescenceIor;
     film.thicknessNm = layers.IridescenceThickness;
     float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
-#if PBR_LAYERS_SPECULAR_F90
+#if PBR_LAYERS_SPECULAR_F90 != 0
     specColor = pbr_iridescent_f0_f90(specColor, f90, NdotV, film);
     float3 filmCoatF0 = pbr_iridescent_f0_f90(coatF0, coatF90, NdotV, film);
 #else
@@ -252,11 +253,11 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
     coatF0 = filmCoatF0;
 #endif
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
     float3 transmissionDiffColor = diffColor;  // the whole diffuse colour: the transmission's weight
     diffColor = pbr_transmission_diffuse_color(diffColor, layers.Transmission);
 #endif
-#if PBR_LAYERS_ANISOTROPY
+#if PBR_LAYERS_ANISOTROPY != 0
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
     anisotropy.direction = layers.AnisotropyDirection;
@@ -266,7 +267,7 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     float3 c = pbr_layers_lighting_standard(diffColor, specColor, f90, coatF0, coatF90, perceptualRoughness, occlusion,
                                           n, viewDir, gi);
 #endif
-#if PBR_LAYERS_TRANSMISSION
+#if PBR_LAYERS_TRANSMISSION != 0
     pbr_Transmission tr;
     tr.factor = layers.Transmission;
     tr.thickness = layers.Thickness;
@@ -281,9 +282,9 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
 
 // The F0 of the metallic workflow's dielectric share, the coat over its diffuse: Unity's 0.04
 // (unity_ColorSpaceDielectricSpec) or, where PBR_LAYERS_DIELECTRIC_SPECULAR, the surface's
-// DielectricSpecular. The one #if of the layer.
+// DielectricSpecular. The layer's one preprocessor conditional.
 float3 pbr_unity_dielectric_f0(SurfaceOutputStandardLayers layers) {
-#if PBR_LAYERS_DIELECTRIC_SPECULAR
+#if PBR_LAYERS_DIELECTRIC_SPECULAR != 0
     return layers.DielectricSpecular;
 #else
     return unity_ColorSpaceDielectricSpec.rgb;

@@ -61,7 +61,8 @@
 // pbr/shading/dispatch.hlsl (included above) defines PBR_BRDF_MODEL's values and default;
 // this file's own default is the same.
 #ifndef PBR_BRDF_MODEL
-#define PBR_BRDF_MODEL PBR_BRDF_MODEL_PBRLAB
+// PBR_BRDF_MODEL_PBRLAB as a number (glsl/README.md, one-level preprocessors)
+#define PBR_BRDF_MODEL 1
 #endif
 
 #define PBR_ALPHA_MODE_OPAQUE 1
@@ -69,7 +70,8 @@
 #define PBR_ALPHA_MODE_FADE 3
 #define PBR_ALPHA_MODE_TRANSPARENT 4
 #ifndef PBR_ALPHA_MODE
-#define PBR_ALPHA_MODE PBR_ALPHA_MODE_OPAQUE
+// PBR_ALPHA_MODE_OPAQUE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_ALPHA_MODE 1
 #endif
 #if PBR_ALPHA_MODE != PBR_ALPHA_MODE_OPAQUE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_CUTOUT && PBR_ALPHA_MODE != PBR_ALPHA_MODE_FADE && PBR_ALPHA_MODE != PBR_ALPHA_MODE_TRANSPARENT
 #error "PBR_ALPHA_MODE: unknown value"

@@ -27,7 +27,7 @@
 // Config macros read: UNITY_UV_STARTS_AT_TOP (ComputeGrabScreenPos: defined, the grab
 //           texture's v runs downwards, Direct3D-like; the pbrlab harness renders with GL
 //           conventions and leaves it undefined, as Unity does for its OpenGL targets, so a
-//           shader's `#if UNITY_UV_STARTS_AT_TOP` takes the GL branch in both languages).
+//           shader's test of UNITY_UV_STARTS_AT_TOP takes the GL branch in both languages).
 //
 // Semantics: Unity 2018-2019 UnityCG.cginc (linear colour space, UNITY_NO_DXT5nm undefined
 // for UnpackNormalmapRGorAG); the fits are Unity's (from Ian Taylor's "sRGB approximations
