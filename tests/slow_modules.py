@@ -37,5 +37,7 @@ SLOW_MODULES = {
     "library/test_anisotropy.py": 12,
     "gpu/hlsl/test_compile_matrix.py": 11,
     "library/test_horizon_occlusion.py": 10,
+    # added after that run, timed alone (-n 1, one worker) when they joined:
+    "examples/test_babylonjs_example.py": 32,
 }
 TESTS = Path(__file__).resolve().parent
