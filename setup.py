@@ -1,4 +1,5 @@
-"""Build hook: the wheel carries the shader library, its HLSL twins, its WGSL amalgamation and the example scenes.
+"""Build hook: the wheel carries the shader library, its HLSL twins, its WGSL amalgamation, the example
+scenes and the engine snippet that samples the tables (examples/engine/).
 
 ``glsl/``, ``hlsl_ports/``, ``wgsl/`` and ``scenes/`` sit at the top of the repository (engines copy them
 from there); ``build_py`` copies them into the package as ``pbrlab/data/<tree>``, where
@@ -13,7 +14,7 @@ from setuptools import setup
 from setuptools.command.build_py import build_py
 
 HERE = Path(__file__).resolve().parent
-DATA_TREES = ("glsl", "hlsl_ports", "wgsl", "scenes")
+DATA_TREES = ("glsl", "hlsl_ports", "wgsl", "scenes", "examples/engine")  # examples/engine: `pbrlab tables` copies it out
 
 
 class build_py_with_shaders(build_py):

@@ -1,5 +1,14 @@
-"""The pytest plugin, run on small throw-away projects through pytester."""
+"""The pytest plugin, run on small throw-away projects through pytester.
 
+numpy and OpenImageIO are imported here, before any in-process run: pytester drops the modules
+a run imported, and neither extension loads twice in a process (numpy: "cannot load module
+more than once per process"; OpenImageIO's nanobind module aborts the process), which a lone
+run of this file otherwise hit (the whole suite imports both first)."""
+
+import re
+
+import numpy  # noqa: F401
+import OpenImageIO  # noqa: F401
 import pytest
 
 from pbrlab.gpu import gl
@@ -139,6 +148,66 @@ def test_failure_leaves_artefacts_and_an_index_page(project):
     project.makepyfile(test_chart=CHART_TEST.format(level=0.5))
     project.runpytest().assert_outcomes(passed=1)  # a green run removes the stale page
     assert not (project.path / "test-output" / "index.html").exists()
+
+
+def test_test_output_holds_only_this_runs_failures(project):
+    """Issue 36: a failure's images went away only when the same golden passed again, so a run
+    that no longer checks it (another -k, a renamed test) kept the last run's images beside its
+    own. A file the user put in test-output/ stays."""
+    project.makepyfile(test_chart=CHART_TEST.format(level=0.5))
+    project.runpytest("--update-goldens").assert_outcomes(passed=1)
+    project.makepyfile(test_chart=CHART_TEST.format(level=0.75))
+    project.runpytest().assert_outcomes(failed=1)
+    output = project.path / "test-output"
+    stale = output / "charts" / "flat"
+    assert (stale / "obtained.png").exists()  # control: the failure left its images
+    (output / "notes.txt").write_text("mine")
+
+    project.runpytest("-k", "not test_chart").assert_outcomes(deselected=1)
+    assert not stale.exists() and not (output / "charts").exists()
+    assert sorted(p.name for p in output.iterdir()) == ["notes.txt"]
+
+
+BROKEN_SHADER_TEST = """
+from pathlib import Path
+import numpy as np
+from pbrlab import evaluate
+
+def test_rim():
+    evaluate("my_rim(x)", includes=["rim.glsl"], include_dirs=[Path(__file__).parent], x=np.zeros(1, np.float32))
+"""
+BROKEN_RIM = "float my_rim(float NdotV) {\n    float x = undefined_thing;\n    return NdotV + y;\n}\n"
+# The failure section's lines (between its "___ test_rim ___" header and the next section)
+# within which the first error must stand, and its most lines: the error line, the two
+# messages of the second line, the what-failed line, a blank, the test's line and its
+# statement, the --tb hint.
+FIRST_ERROR_WITHIN = 1
+SECTION_MOST_LINES = 10
+
+
+def _failure_section(lines: list[str]) -> list[str]:
+    start = next(i for i, line in enumerate(lines) if line.strip("_ ") == "test_rim")
+    end = next(i for i in range(start + 1, len(lines)) if lines[i].startswith(("pbrlab:", "====")))
+    return lines[start + 1:end]
+
+
+def test_a_shader_error_in_a_test_shows_the_first_compiler_message_first(project):
+    """Issue 36: the compiler's first message came after about 60 lines of the harness's
+    traceback and a cascade of follow-on errors."""
+    project.makepyfile(test_rim=BROKEN_SHADER_TEST)
+    (project.path / "rim.glsl").write_text(BROKEN_RIM)
+    section = _failure_section(project.runpytest().outlines)
+    rim = project.path / "rim.glsl"
+    assert section[FIRST_ERROR_WITHIN - 1].startswith(f"ShaderCompileError: {rim}:2:"), section
+    assert "undefined_thing" in section[FIRST_ERROR_WITHIN - 1]
+    assert len(section) <= SECTION_MOST_LINES, section
+    test_line = next(i for i, line in enumerate(section) if re.match(r"test_rim\.py:\d+: in test_rim$", line))
+    assert section[test_line + 1].strip().startswith('evaluate("my_rim(x)"'), section
+    assert not any("evaluator.py" in line for line in section), section
+    # Control: pytest's own long report (asked for) has the harness's frames and runs longer,
+    # so the short section above is the plugin's doing.
+    long = _failure_section(project.runpytest("--tb=long").outlines)
+    assert any("evaluator.py" in line for line in long) and len(long) > 3 * SECTION_MOST_LINES
 
 
 def test_index_page_is_written_by_the_controller_under_xdist(project):

@@ -38,7 +38,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from ..foundation import golden_names
-from ..foundation.errors import PbrlabError
+from ..foundation.errors import PbrlabError, ShaderCompileError
 
 if TYPE_CHECKING:
     from .compare import DiffResult, Tolerance
@@ -100,12 +100,35 @@ def pytest_configure(config: pytest.Config) -> None:
     # A failure page of an earlier pbrlab run goes, with the records it was built from; a
     # project that never used pbrlab has no records folder, and nothing of its is touched.
     # Workers start after this, so they never lose a record of this run.
+    # So are the images its failures left (each record lists them): test-output/ holds only
+    # this run's, even where this run does not check those goldens again.
     if not _is_xdist_worker(config) and settings.records_dir.is_dir():
+        _remove_recorded_artefacts(settings.output_dir, _load_records(settings.records_dir))
         shutil.rmtree(settings.records_dir, ignore_errors=True)
+        (settings.output_dir / INDEX_NAME).unlink(missing_ok=True)
         try:
-            (settings.output_dir / INDEX_NAME).unlink()
-        except FileNotFoundError:
+            settings.output_dir.rmdir()  # only when nothing else is in it
+        except OSError:
             pass
+
+
+def _remove_recorded_artefacts(output_dir: Path, records: list[dict]) -> None:
+    """Delete the artefact files the records name, then each folder they leave empty, up to
+    ``output_dir`` (a file pbrlab did not write keeps its folder)."""
+    output_dir = output_dir.resolve()
+    for record in records:
+        for relative in (record.get("artefacts") or {}).values():
+            path = (output_dir / relative).resolve()
+            if output_dir not in path.parents:
+                continue  # a record names only files under the output folder; never follow one out
+            path.unlink(missing_ok=True)
+            for folder in path.parents:
+                if folder == output_dir:
+                    break
+                try:
+                    folder.rmdir()
+                except OSError:  # absent, or holds files of this run or of the user: leave it
+                    break
 
 
 def _options_given(config: pytest.Config) -> bool:
@@ -205,6 +228,29 @@ class GoldenFixture:
         records.mkdir(parents=True, exist_ok=True)
         outputs.write_file(records / f"{secrets.token_hex(8)}.json",
                            json.dumps(record, indent=1, default=str))
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
+    """A shader that fails to compile is reported as the compiler's messages (the first error
+    at its file and line first, compile_messages.py) and the test's own line, instead of the
+    harness's frames above them; ``--tb`` given on the command line keeps pytest's report."""
+    report = yield
+    if (report.failed and call.excinfo is not None and call.excinfo.errisinstance(ShaderCompileError)
+            and item.config.getoption("tbstyle", "auto") == "auto"):
+        report.longrepr = _shader_failure(item, call.excinfo)
+    return report
+
+
+def _shader_failure(item: pytest.Item, excinfo: pytest.ExceptionInfo) -> str:
+    lines = [f"{type(excinfo.value).__name__}: {excinfo.value}", ""]
+    in_test = [entry for entry in excinfo.traceback if Path(entry.path) == Path(item.path)]
+    if in_test:
+        entry = in_test[-1]
+        where = os.path.relpath(entry.path, item.config.rootpath)
+        lines += [f"{where}:{entry.lineno + 1}: in {entry.name}", f"    {entry.statement.lines[0].strip()}"]
+    lines.append("(pbrlab's pytest plugin left out the harness's frames; --tb=long shows them)")
+    return "\n".join(lines)
 
 
 @pytest.fixture(scope="session")

@@ -1,5 +1,9 @@
 """`pbrlab render SCENE [-o out.png] [--hdr out.exr] [--size WxH] [--antialias N] [--language hlsl]`: render a scene file.
 
+SCENE is a JSON scene, a glTF 2.0 file, or a Unity .shader: that is drawn on the default sphere
+(one unit sphere, one directional light, a dim grey environment, the shader's Properties at their
+defaults); for other lights or property values, name it as a material's "surface" in a scene.
+
 Writes atomically and all or nothing: the PNG and the EXR are written to temporary files,
 each fsync'ed and read back, and only then renamed over the targets, so a failed render or
 write (a full disk, SIGTERM) leaves no partial file and never replaces a good one. An
@@ -179,7 +183,8 @@ def register(sub, common):
                        help="Render a JSON scene or a glTF 2.0 file to a PNG and/or an EXR file.",
                        description=__doc__,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("scene", help="a JSON scene file (see docs/scenes.md) or a glTF 2.0 file (.gltf, .glb)")
+    p.add_argument("scene", help="a JSON scene file (see docs/scenes.md), a glTF 2.0 file (.gltf, .glb) or a "
+                                 "Unity .shader, drawn on the default sphere with its default properties")
     p.add_argument("--camera", type=int, default=None, metavar="N",
                    help="glTF: render from camera N (default: the first camera, else a framing view)")
     p.add_argument("--environment", default=None, metavar="FILE|R,G,B",

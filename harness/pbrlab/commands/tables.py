@@ -4,17 +4,22 @@ DIR/pbrlab_dfg.exr and .png: the split-sum DFG table (R = A, the F0 weight; G = 
 weight), 256 x 256; DIR/pbrlab_sheen_albedo.exr and .png: the sheen lobe's directional
 albedo E, 128 x 128. EXR: float32, the library's values exactly; PNG: 16-bit, value = code /
 65535 (the sheen's x 4). Sample them at the library's own coordinates (pbr_dfg_lut_uv,
-pbr_sheen_lut_uv; examples/engine/pbrlab_tables.glsl and .hlsl for an engine without the
-library), bilinear, clamped to the edge, with the image's bottom row at v = 0 (Direct3D and
-Vulkan: 1 - v). The docs' "Engine-ready tables" page has the details.
+pbr_sheen_lut_uv), bilinear, clamped to the edge, with the image's bottom row at v = 0
+(Direct3D and Vulkan: 1 - v). DIR/pbrlab_tables.glsl and .hlsl: a header that samples them
+so, for an engine without the library. The docs' "Engine-ready tables" page has the details.
 """
 
 from __future__ import annotations
 
 import argparse
+import shutil
 from pathlib import Path
 
 from ..foundation.errors import PbrlabError
+from ..foundation.locations import engine_snippets
+
+# The sampling header, copied beside the tables (the wheel ships it: setup.py's DATA_TREES).
+SNIPPETS = ("pbrlab_tables.glsl", "pbrlab_tables.hlsl")
 
 
 def run(args) -> int:
@@ -30,6 +35,9 @@ def run(args) -> int:
         raise PbrlabError(f"--out {out}: cannot create the folder: {exc.strerror or exc}") from None
     for path in write_tables(out):
         console.note(f"wrote {path}")
+    for name in SNIPPETS:
+        shutil.copyfile(engine_snippets() / name, out / name)
+        console.note(f"wrote {out / name}")
     return 0
 
 

@@ -53,6 +53,17 @@ def locate(tree: str) -> Path:
                       f"or reinstall pbrlab from a wheel or sdist")
 
 
+def engine_snippets() -> Path:
+    """The folder of the engine snippets that sample the tables (``examples/engine``): package
+    data in a wheel (setup.py copies it there), else the checkout's."""
+    for candidate in (PACKAGE_FOLDER / PACKAGE_DATA / "examples" / "engine",
+                      Path(__file__).resolve().parents[3] / "examples" / "engine"):
+        if candidate.is_dir():
+            return candidate
+    raise PbrlabError("cannot find pbrlab's examples/engine/ folder: it is neither package data of the "
+                      "installed pbrlab nor beside a checkout; reinstall pbrlab from a wheel or sdist")
+
+
 def checkout_folder(name: str) -> Path | None:
     """A folder of the checkout this module sits in (``<repo>/<name>``, e.g. ``goldens``), or
     None in an installed wheel, which ships no such folder."""

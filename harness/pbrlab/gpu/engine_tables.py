@@ -2,7 +2,8 @@
 environment BRDF, pbrlab.gpu.ibl) and the sheen albedo table (pbrlab.gpu.sheen_table), each as a
 float32 EXR (the exact values) and a 16-bit PNG (for loaders without EXR). `pbrlab tables
 --out DIR` writes them; docs/tables.md gives their orientation, encoding and lookup, and
-examples/engine/pbrlab_tables.glsl (.hlsl) samples them as the library does.
+examples/engine/pbrlab_tables.glsl (.hlsl; `pbrlab tables` copies them beside the tables)
+samples them as the library does.
 
 Orientation: image order, the first (top) row is the last row of the table (roughness 1),
 so a loader that puts the image's bottom row at texture coordinate v = 0 (OpenGL's

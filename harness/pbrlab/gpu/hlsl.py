@@ -34,6 +34,7 @@ from pathlib import Path
 from ..foundation.errors import PbrlabError, ShaderCompileError
 from ..foundation.file_identity import FileCache, include_closure
 from ..foundation.locations import locate
+from .compile_messages import compile_failure
 from .shaders import GLSL_ROOT, strip_bom
 
 HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
@@ -148,7 +149,7 @@ def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize:
         if proc.returncode != 0 or not out.is_file():
             log = (proc.stdout + proc.stderr).replace(str(Path(tmp) / "bom-free" / "root"), "")
             messages = map_messages(log, name, search)  # a BOM-free copy named as its original
-            raise ShaderCompileError(f"HLSL failed to compile (glslang):\n{messages}")
+            raise ShaderCompileError(compile_failure("HLSL failed to compile (glslang)", messages))
         return out.read_bytes()
 
 

@@ -12,7 +12,8 @@ line number alone, because Mesa's compiler sometimes reports the source-string n
 of the file that was being read when the error surfaced rather than the file of the
 line (seen with Mesa 22.3: an undeclared identifier in an include blamed on the
 includer). A message "N:L(col): error: ..." maps back to ``path:line:col``.
-``ShaderCompileError`` carries the mapped messages: ``path:line:col: error: ...``.
+``ShaderCompileError`` carries the mapped messages: ``path:line:col: error: ...``, the first
+error first and follow-ons after (compile_messages.py).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ import moderngl
 
 from ..foundation.errors import LoopLimitWarning, PbrlabError, ShaderCompileError
 from ..foundation.locations import locate
+from .compile_messages import compile_failure
 
 GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.glsl"
@@ -85,6 +87,12 @@ class Source:
             elif line.strip() and not set(line.strip()) <= {"="} and line.strip() != "GLSL Compiler failed":
                 out.append(line.rstrip())
         return "\n".join(out)
+
+
+# What an include-not-found message suggests: the ways a user adds a folder to the search.
+INCLUDE_DIRS_HINT = ("add the folder that holds it with -I DIR (pbrlab eval, pbrlab amalgamate) or "
+                     "include_dirs=[DIR] (pbrlab.evaluate); a material's surface file finds its includes "
+                     "relative to its own folder")
 
 
 def include_path(extra_dirs=()) -> list[Path]:
@@ -231,7 +239,7 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             if target is None:
                 raise PbrlabError(
                     f"{display}:{number}: cannot find include \"{included}\" "
-                    f"(searched: {', '.join(str(d) for d in search)})")
+                    f"(searched: {', '.join(str(d) for d in search)}); {INCLUDE_DIRS_HINT}")
             if target in stack:
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
@@ -347,4 +355,4 @@ def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> mo
                              else (vertex, "vertex"))
         messages = "\n".join(line for line in stage.map_messages(log).splitlines()
                              if line.strip() not in ("fragment_shader", "vertex_shader"))
-        raise ShaderCompileError(f"{stage_name} shader failed to compile:\n{messages}") from None
+        raise ShaderCompileError(compile_failure(f"{stage_name} shader failed to compile", messages)) from None

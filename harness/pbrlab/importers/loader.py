@@ -4,7 +4,7 @@ whole glTF files and whose materials may name Unity shaders, or a glTF 2.0 file 
 (pbrlab.importers.gltf). The scene model never imports an importer; this module hands it the
 glTF reader and the Unity shader reader, and loads each only when a file needs it.
 
-    scene = load_scene("scenes/unity_example/scene.json")   # or "model.glb"
+    scene = load_scene("scenes/unity_example/scene.json")   # or "model.glb", or "X.shader" (on a sphere)
     scene = parse_scene({...}, base=folder)                  # JSON data, glTF objects and Unity shaders allowed
 """
 
@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..foundation.errors import SceneError
 from ..scene import model as scene_model
 
 # The suffixes of glTF files (gltf.SUFFIXES; tests/importers/test_loader.py checks both agree),
@@ -72,14 +73,35 @@ def parse_scene(data, origin: str = "<scene>", base: Path | None = None) -> scen
     return scene_model.parse_scene(data, origin, base, read_gltf=read_gltf, shaders=SHADER_MATERIALS)
 
 
+def _refuse_what_is_no_json_scene(path: Path) -> None:
+    """A file not named .json whose text does not open with ``{`` (a GLSL surface, an HLSL
+    file, an image) is no scene: say what is, rather than the JSON parser's "Expecting value"."""
+    if path.suffix.lower() == ".json":
+        return
+    try:
+        head = path.read_bytes()[:4096].lstrip()
+    except OSError:
+        return  # the JSON reader says what is wrong with the file
+    if not head.startswith(b"{"):
+        raise SceneError(f"{path}: not a scene file: a scene is a JSON file (.json), a glTF file (.gltf, .glb) "
+                         f"or a Unity .shader (drawn on the default sphere); a GLSL surface file is drawn by "
+                         f"naming it as a material's \"surface\" in a JSON scene")
+
+
 def load_scene(path) -> scene_model.Scene:
     """A scene file: glTF by its suffix (its default scene and camera, the environment and
     render settings of its ``<model>.pbrlab.json`` beside it, as ``pbrlab render`` reads
-    it), else a JSON scene."""
+    it), a lone Unity ``.shader`` on the default sphere (shader_preview.py), else a JSON scene."""
+    from .shader_preview import is_lone_shader, preview_scene_data
+
+    if is_lone_shader(path):
+        path = Path(path)
+        return parse_scene(preview_scene_data(path), str(path), path.parent)
     if is_gltf(path):
         from .gltf import load_gltf
         from .gltf.settings import read_settings
 
         environment, render = read_settings(Path(path))
         return load_gltf(path, environment=environment, render=render).scene
+    _refuse_what_is_no_json_scene(Path(path))
     return scene_model.load_scene(path, read_gltf=read_gltf, shaders=SHADER_MATERIALS)
