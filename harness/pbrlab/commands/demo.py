@@ -20,7 +20,7 @@ from .render import add_language_option
 
 def run(args) -> int:
     from ..foundation import console, images, outputs, progress
-    from ..checking import contact_sheets
+    from ..checking import contact_sheets, goldens
     from ..gpu import gl
     from ..foundation.errors import PbrlabError
     from ..checking.charts import CHARTS
@@ -30,6 +30,8 @@ def run(args) -> int:
     from .render import check_finite
 
     out = Path(args.out)
+    golden_root = Path(args.goldens) if args.goldens is not None else checkout_folder("goldens")
+    refuse_golden_folder(out, golden_root)
     try:
         out.mkdir(parents=True, exist_ok=True)
     except FileExistsError:
@@ -40,7 +42,6 @@ def run(args) -> int:
     info = gl.context_info(ctx)
     console.note(f"pbrlab demo on {info['GL_RENDERER']} ({info['GL_VERSION']}, {info['backend']}), "
           f"shading in {args.language.upper()}")
-    golden_root = Path(args.goldens) if args.goldens is not None else checkout_folder("goldens")
     if golden_root is None:
         print(f"{NO_GOLDEN}: the goldens are in pbrlab's source checkout, not in the installed "
               "package (pass --goldens DIR to compare with a folder of them)")
@@ -52,7 +53,9 @@ def run(args) -> int:
             rendering = render_scene(GOLDEN_SCENES[name](), ctx, language=args.language)
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
-        with outputs.transaction([png, exr]) as tx:  # the pair, or neither
+        goldens_of_name = [] if golden_root is None else [(p, f"the golden {name}") for p in
+                                                          goldens.golden_paths(golden_root, name)]
+        with outputs.transaction([png, exr], goldens_of_name) as tx:  # the pair, or neither; never a golden
             images.write_png(png, rendering.srgb8, tx=tx)
             images.write_exr(exr, rendering.linear, metadata=rendering.info, tx=tx)
         if golden_root is None:
@@ -72,6 +75,20 @@ def run(args) -> int:
 
 
 NO_GOLDEN = "rendered, no golden to compare"
+
+
+def refuse_golden_folder(out: Path, golden_root: Path | None) -> None:
+    """Refuse an ``--out`` that is the goldens' folder or inside it, before any work: the demo's
+    images carry the goldens' names (chart_f0.png, ...), so they would replace the very files
+    they are checked against (``pbrlab demo --out goldens`` in the checkout did)."""
+    import os
+
+    from ..foundation.errors import PbrlabError
+    from ..foundation.safe_paths import is_within
+
+    if golden_root is not None and is_within(os.path.realpath(out), os.path.realpath(golden_root)):
+        raise PbrlabError(f"--out {out}: is the goldens' folder {golden_root} or inside it, and the demo's "
+                          "images have the goldens' names; choose another folder (default: out)")
 
 
 def _check(name, rendering, info, golden_root: Path, out: Path, profile: str) -> tuple[str, int]:

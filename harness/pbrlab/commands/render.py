@@ -117,10 +117,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
     from ..importers.loader import is_gltf
 
     if not is_gltf(path):
-        if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)) \
-                or allow_outside:
-            raise PbrlabError("--camera, --environment, --variant, --scene, --weights, --time, --animation and "
-                              "--allow-outside are for glTF files; a JSON scene names its own")
+        if any(option is not None for option in (camera, environment, variant, scene, weights, time, animation)):
+            raise PbrlabError("--camera, --environment, --variant, --scene, --weights, --time and --animation "
+                              "are for glTF files; a JSON scene names its own")
         scene, messages = load_scene_with_gltf_warnings(path)
         for message in messages:
             print(f"warning: {message}", file=sys.stderr)
@@ -141,15 +140,22 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 
 
 def run(args) -> int:
-    from ..gpu import gl
-    from ..foundation import images, outputs, progress
-    from ..render.renderer import input_files, render_scene
+    from ..foundation import safe_paths
 
     if not args.output and not args.hdr:
         raise PbrlabError("nothing to write: give -o OUT.png and/or --hdr OUT.exr")
     for path, suffix in ((args.output, ".png"), (args.hdr, ".exr")):
         if path and not path.lower().endswith(suffix):
             raise PbrlabError(f"{path}: expected a {suffix} file name")
+    with safe_paths.allowing_outside(args.allow_outside):  # every reader below, shaders' includes too
+        return _render(args)
+
+
+def _render(args) -> int:
+    from ..gpu import gl
+    from ..foundation import images, outputs, progress
+    from ..render.renderer import input_files, render_scene
+
     size = parse_size(args.size)
     antialias = parse_antialias(args.antialias)
     scene = load_any_scene(args.scene, args.camera, args.environment, size, args.variant, args.gltf_scene,
@@ -200,8 +206,9 @@ def register(sub, common):
     p.add_argument("--animation", default=None, metavar="N|NAME",
                    help="glTF: sample only this animation (an index or a name; default: all of them)")
     p.add_argument("--allow-outside", action="store_true",
-                   help="glTF: read buffers and images outside the file's folder (absolute paths, ..); "
-                        "refused by default")
+                   help="read files outside the model's folder: a glTF's buffers and images named by "
+                        "absolute paths or .., and (every format) files reached through symbolic links "
+                        "that lead out of the folder; refused by default (docs/faults.md)")
     p.add_argument("-o", "--output", help="sRGB 8-bit PNG (exposure + tonemap + sRGB encode)")
     p.add_argument("--hdr", help="linear float EXR of the scene radiance (before exposure)")
     p.add_argument("--size", help="override the camera size, WIDTHxHEIGHT")

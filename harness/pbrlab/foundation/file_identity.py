@@ -16,6 +16,8 @@ from collections import OrderedDict
 from pathlib import Path
 from typing import Callable, Iterable
 
+from . import safe_paths
+
 _INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
@@ -45,8 +47,9 @@ def include_closure(text: str, search_dirs: Iterable, here: Path | None = None) 
         for name in _INCLUDE.findall(body):
             for directory in ([folder] if folder else []) + search:
                 candidate = directory / name
-                if candidate.is_file():
-                    resolved = candidate.resolve()
+                if candidate.is_file():  # through links that stay in its folder only (safe_paths)
+                    resolved = safe_paths.inside(directory, name, f'#include "{name}" (searched in {directory})',
+                                                 climb=True)
                     if resolved not in found:
                         found.append(resolved)
                         try:

@@ -32,9 +32,11 @@ import os
 import re
 import secrets
 import signal
+import tempfile
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
 
+from . import output_targets
 from .errors import PbrlabError
 
 _TEMP_NAME = re.compile(r"^\.(?P<name>.+)\.(?P<pid>\d+)-[0-9a-f]{8}\.tmp(?P<suffix>\.[^.]*)?$")
@@ -50,8 +52,10 @@ def extension(path: Path) -> str:
     return Path(path).suffix
 
 
-def temp_name(path: Path) -> Path:
-    return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{extension(path)}")
+def temp_name(path: Path, folder: Path | None = None) -> Path:
+    """The temporary of ``path``, beside it (or in ``folder``), with its extension."""
+    name = f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp{extension(path)}"
+    return (path.parent if folder is None else folder) / name
 
 
 def _pid_alive(pid: int) -> bool:
@@ -83,7 +87,15 @@ def remove_stale_temps(folder: Path) -> list[Path]:
 
 
 def check_writable_target(path: Path) -> None:
-    """Raise PbrlabError when ``path`` cannot be written as a file."""
+    """Raise PbrlabError when ``path`` cannot be written: a regular file (or a link to one in its
+    folder) whose folder is writable, or a stream pbrlab writes through (output_targets)."""
+    target = output_targets.classify(path)
+    output_targets.close(target)
+    if target.file is not None:
+        _check_writable_file(Path(target.file))
+
+
+def _check_writable_file(path: Path) -> None:
     parent = path.parent
     if not parent.exists():
         raise PbrlabError(f"cannot write {path}: directory {parent} does not exist")
@@ -184,13 +196,28 @@ class Transaction:
         self.targets = [Path(t) for t in targets]
         refuse_duplicates(self.targets)
         refuse_inputs(self.targets, inputs)
-        for target in self.targets:
-            check_writable_target(target)
-        for folder in {t.parent for t in self.targets}:
+        self.kinds: dict[Path, output_targets.OutputTarget] = {}
+        try:
+            for target in self.targets:  # a file, a link in its folder, or a stream (output_targets)
+                self.kinds[target] = kind = output_targets.classify(target)
+                if kind.file is not None:
+                    _check_writable_file(kind.file)
+        except BaseException:
+            self._close_streams()
+            raise
+        # A file's temporary lies beside the file it replaces (a link's target, for a link); a
+        # stream's in the system's temporary folder (never in /dev).
+        folders = {t: (k.file.parent if k.file is not None else Path(tempfile.gettempdir()))
+                   for t, k in self.kinds.items()}
+        for folder in set(folders.values()):
             remove_stale_temps(folder)
-        self.temps = {t: temp_name(t) for t in self.targets}
+        self.temps = {t: temp_name(t, folders[t]) for t in self.targets}
         self.checks: dict[Path, list[Callable[[Path], None]]] = {t: [] for t in self.targets}
         _LIVE.update(self.temps.values())
+
+    def _close_streams(self) -> None:
+        for kind in self.kinds.values():
+            output_targets.close(kind)
 
     def temp(self, target) -> Path:
         return self.temps[Path(target)]
@@ -229,16 +256,21 @@ class Transaction:
                 raise PbrlabError(f"cannot write {target}: the file written is empty")
             for check in self.checks[target]:
                 check(tmp)
+        for target, tmp in self.temps.items():  # streams first: they can still fail (EPIPE, ENOSPC)
+            if self.kinds[target].is_stream:
+                output_targets.write_through(self.kinds[target], tmp)
         done = []
         for target, tmp in self.temps.items():
+            if self.kinds[target].is_stream:
+                continue
             try:
-                os.replace(tmp, target)
+                os.replace(tmp, self.kinds[target].file)
             except OSError as exc:
                 already = f" ({', '.join(map(str, done))} already replaced)" if done else ""
                 raise PbrlabError(f"cannot write {target}: {exc.strerror or exc}{already}") from None
             _LIVE.discard(tmp)
             done.append(target)
-        for folder in {t.parent for t in self.targets}:
+        for folder in {k.file.parent for k in self.kinds.values() if k.file is not None}:
             with contextlib.suppress(OSError):  # not every file system syncs folders
                 fd = os.open(folder, os.O_RDONLY)
                 try:
@@ -247,6 +279,7 @@ class Transaction:
                     os.close(fd)
 
     def abort(self) -> None:
+        self._close_streams()
         for tmp in self.temps.values():
             with contextlib.suppress(OSError):
                 tmp.unlink()

@@ -38,6 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from . import hlsl, shaders, source_cache
+from ..foundation import safe_paths
 from ..foundation.errors import PbrlabError
 from ..foundation.file_identity import FileCache, include_closure
 from ..foundation.locations import PACKAGE_FOLDER
@@ -120,6 +121,7 @@ def _surface_alias(surface: Path) -> Path:
         root = Path(tempfile.mkdtemp(prefix="pbrlab-surfaces-"))
         atexit.register(shutil.rmtree, root, True)
         _alias_root.append(root)
+        safe_paths.trust_links_in(root)  # its links are pbrlab's own, not a model's
     real = surface.resolve()
     folder = _alias_root[0] / hashlib.sha256(os.fsencode(real)).hexdigest()[:16]
     link = folder / (SURFACE_ALIAS + surface.suffix)

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import moderngl
 
+from ..foundation import safe_paths
 from ..foundation.errors import LoopLimitWarning, PbrlabError, ShaderCompileError
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
@@ -102,13 +103,14 @@ def include_path(extra_dirs=()) -> list[Path]:
 
 def resolve_include(name: str, search: list[Path], probed: list | None = None) -> Path | None:
     """The first file ``name`` in ``search``; each place looked at is added to ``probed``
-    (a file created there later would change the answer: source_cache checks them)."""
+    (a file created there later would change the answer: source_cache checks them). A file
+    reached through a symbolic link out of its folder is refused (safe_paths.inside)."""
     for directory in search:
         candidate = directory / name
         if probed is not None:
             probed.append(candidate)
         if candidate.is_file():
-            return candidate.resolve()
+            return safe_paths.inside(directory, name, f'#include "{name}" (searched in {directory})', climb=True)
     return None
 
 

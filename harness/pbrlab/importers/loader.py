@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..foundation import safe_paths
 from ..foundation.errors import SceneError
 from ..scene import model as scene_model
 
@@ -94,6 +95,10 @@ def load_scene(path) -> scene_model.Scene:
     it), a lone Unity ``.shader`` on the default sphere (shader_preview.py), else a JSON scene."""
     from .shader_preview import is_lone_shader, preview_scene_data
 
+    try:  # a scene file that is a link out of its folder (an unpacked archive's) is refused (safe_paths)
+        safe_paths.named_file(path)
+    except safe_paths.OutsideFolderError as exc:
+        raise SceneError(str(exc)) from None
     if is_lone_shader(path):
         path = Path(path)
         return parse_scene(preview_scene_data(path), str(path), path.parent)

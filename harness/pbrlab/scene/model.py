@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..foundation import json_input
+from ..foundation import json_input, safe_paths
 from . import meshes, surface_layers
 from ..foundation.errors import SceneError
 from ..maths.reference import shading as _shading
@@ -311,6 +311,10 @@ class _Reader:
         value = self.raw(key) if value is None else value
         if not isinstance(value, str) or not value or "\x00" in value:
             self.fail(f"expected a file path, got {json.dumps(value)}", key)
+        try:  # the folder rule first: a link out of the folder is refused, not followed (safe_paths)
+            safe_paths.inside(base, value, climb=True)
+        except safe_paths.OutsideFolderError as exc:
+            self.fail(exc.reason, key)
         try:
             path = (base / value).resolve(strict=True)
         except FileNotFoundError:

@@ -133,12 +133,14 @@ def test_an_output_over_a_buffer_read_from_outside_is_refused(tmp_path, capsys):
     assert (tmp_path / "quad.exr").read_bytes() == data
 
 
-def test_allow_outside_is_for_gltf_files(tmp_path, capsys):
+def test_allow_outside_also_takes_a_json_scene(tmp_path, capsys):
+    """Issue 39: a JSON scene's links out of its folder are refused too, so the flag that allows
+    them is no longer for glTF files only (tests/hostile/test_paths_round_three.py)."""
     scene = tmp_path / "scene.json"
-    scene.write_text(json.dumps({"camera": {"position": [0, 0, 3], "target": [0, 0, 0]}, "objects": []}))
-    status, err = _cli(["render", scene, "-o", tmp_path / "out.png", "--allow-outside"], capsys)
-    assert status == 2
-    assert "--allow-outside are for glTF files" in err
+    scene.write_text(json.dumps({"camera": {"position": [0, 0, 3], "target": [0, 0, 0]}, "objects": [
+        {"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "m"}], "materials": {"m": {}}}))
+    status, err = _cli(["render", scene, "-o", tmp_path / "out.png", "--size", "8x8", "--allow-outside"], capsys)
+    assert status == 0, err
 
 
 @pytest.mark.parametrize("uri", ["../x.png", "/etc/x.png", "C:/x.png", "sub/..\\..\\x.png"])

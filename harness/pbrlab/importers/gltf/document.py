@@ -14,7 +14,7 @@ import urllib.parse
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath, PureWindowsPath
 
-from ...foundation import json_input
+from ...foundation import json_input, safe_paths
 from ...foundation.errors import SceneError
 from . import meshopt
 from .fields import FieldReader, join, shown
@@ -133,7 +133,10 @@ class Document:
                              f"are read, not {uri}"
                              + ("" if "://" in uri else " (pass --allow-outside to read files outside it)"))
         try:
-            file = file.resolve()
+            file = safe_paths.inside(self.path.parent, urllib.parse.unquote(uri), allow=self.allow_outside)
+        except safe_paths.OutsideFolderError as exc:
+            self.fail(where, exc.reason)
+        try:
             if not file.is_file():
                 self.fail(where, f"file not found: {file}")
             return file.read_bytes()
@@ -212,6 +215,11 @@ def read_document(path, allow_outside: bool = False) -> Document:
     """The document of a .gltf or .glb file (asset.version 2.x). ``allow_outside``: its
     buffers and images may name files outside its folder (refused by default)."""
     path = Path(path)
+    allow_outside = allow_outside or safe_paths.outside_allowed()  # the CLI's flag, for a glTF a scene names
+    try:
+        safe_paths.named_file(path, allow_outside)
+    except safe_paths.OutsideFolderError as exc:
+        raise SceneError(str(exc)) from None
     if not path.is_file():
         raise SceneError(f"{path}: no such glTF file")
     data = path.read_bytes()

@@ -16,6 +16,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...foundation import safe_paths
 from ...foundation.errors import SceneError
 from . import model as M
 
@@ -76,6 +77,10 @@ def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
     if "path" in value:
         if not isinstance(value["path"], str):
             raise SceneError(f"{where}.path: expected a file name")
+        try:  # the folder rule first: a link out of the folder is refused, not followed (safe_paths)
+            safe_paths.inside(base, value["path"], climb=True)
+        except safe_paths.OutsideFolderError as exc:
+            raise SceneError(f"{where}.path: {exc.reason}") from None
         try:
             path = (base / value["path"]).resolve()
             found = path.is_file()

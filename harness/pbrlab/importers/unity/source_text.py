@@ -17,6 +17,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ...foundation import safe_paths
 from ...foundation.errors import PbrlabError
 
 # pbrlab's stand-ins for Unity's include files (UnityCG.cginc, Lighting.cginc, ...).
@@ -99,15 +100,17 @@ def resolve_included(name: str, folder: Path):
     """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
     folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``) and, for a
     package path (``Packages/...``), for Unity's packages' files; else None."""
-    candidates = [folder / name]
+    candidates = [(folder, folder / name)]  # (the user's folder it lies in, or None: pbrlab's own)
     root = project_root(name, folder)
     if root is not None:
-        candidates.append(root / name)
-    candidates.append(CGINC / Path(name).name)
+        candidates.append((root, root / name))
+    candidates.append((None, CGINC / Path(name).name))
     if name.startswith("Packages/"):
-        candidates.append(PACKAGE_STAND_INS / name)
-    for candidate in candidates:
+        candidates.append((None, PACKAGE_STAND_INS / name))
+    for user_folder, candidate in candidates:
         if candidate.is_file():
+            if user_folder is not None:  # read only through links that stay in the folder (safe_paths)
+                safe_paths.inside(user_folder, name, f'#include "{name}" in {folder}', climb=True)
             return candidate
     return None
 
