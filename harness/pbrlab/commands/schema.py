@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..foundation import console, outputs
+from ..foundation import console, output_targets, outputs
 
 
 def run(args) -> int:
@@ -24,7 +24,8 @@ def run(args) -> int:
         return 0
     with outputs.transaction([args.output], []) as tx:
         tx.write_text(args.output, text)
-    console.note(f"wrote {args.output}")
+    if not output_targets.names_a_stream(args.output):  # -o /dev/stdout: the schema alone
+        console.note(f"wrote {args.output}")
     return 0
 
 

@@ -146,6 +146,17 @@ def classify(path) -> OutputTarget:
     return OutputTarget(path, file=real)
 
 
+def names_a_stream(path) -> bool:
+    """Whether ``path`` names something written through, not a file (this process's streams, a
+    device, a FIFO): a command then keeps its "wrote ..." note off a stream it may share."""
+    if _STREAM_NAME.match(os.fspath(path)):
+        return True
+    try:
+        return not stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:
+        return False
+
+
 def close(target: OutputTarget) -> None:
     if target.owned and target.fd is not None:
         try:
