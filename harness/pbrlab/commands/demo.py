@@ -54,7 +54,7 @@ def run(args) -> int:
         check_finite(rendering.linear, name)
         png, exr = out / f"{name}.png", out / f"{name}.exr"
         goldens_of_name = [] if golden_root is None else [(p, f"the golden {name}") for p in
-                                                          goldens.golden_paths(golden_root, name)]
+                                                          goldens.golden_paths(golden_root, name).all()]
         with outputs.transaction([png, exr], goldens_of_name) as tx:  # the pair, or neither; never a golden
             images.write_png(png, rendering.srgb8, tx=tx)
             images.write_exr(exr, rendering.linear, metadata=rendering.info, tx=tx)

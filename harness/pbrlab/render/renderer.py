@@ -222,7 +222,7 @@ def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
         for slot, path in material.textures.items():
             if isinstance(path, (str, Path)):  # not an image an importer decoded from its file's bytes
                 found.append((path, f"material {name}'s {slot} texture"))
-        for prop, value in material.properties.items():  # a Unity shader's 2D properties (TextureValue)
+        for prop, value in material.properties.items():  # a shader material's texture properties (with a path)
             if isinstance(getattr(value, "path", None), Path):
                 found.append((value.path, f"material {name}'s {prop} texture property"))
         if material.surface is not None:
