@@ -125,12 +125,16 @@ def inside(base: str | Path, written: str | os.PathLike, referrer: str = "", *, 
     real_folder = os.path.realpath(folder)
     if is_within(real, real_folder):
         return real
+    def shown(p) -> str:  # as the user named things: relative when the base was given relative
+        return os.fspath(p) if base.is_absolute() else os.path.relpath(p)
+
     link = _first_link_out(folder, lexical, real_folder)
     if link is None:  # the written path itself leaves the folder (a reader without a written-path check)
-        reason = f"{written} lies outside {folder} (it resolves to {real})"
+        reason = f"{written} lies outside {shown(folder)} (it resolves to {real})"
     else:
-        reason = (f"{written}: {link[0]} is a symbolic link to {link[1]}, which leads outside "
-                  f"{folder} (to {real})")
+        prefix = "" if link[0] == lexical else f"{written}: "  # the named file itself is the link
+        reason = (f"{prefix}{shown(link[0])} is a symbolic link to {link[1]}, which leads outside "
+                  f"{shown(folder)} (to {real})")
     raise OutsideFolderError(referrer, f"{reason}; files are read only inside the model's folder "
                                        f"(pass {FLAG} to read it)")
 

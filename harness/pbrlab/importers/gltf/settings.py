@@ -18,6 +18,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from ...foundation import safe_paths
 from ...foundation.errors import SceneError
 from ...maths.exposure import METERED_TONEMAP
 from ...scene.model import Environment, RenderSettings, parse_scene
@@ -87,4 +88,5 @@ def parse_environment_option(text: str) -> Environment:
             colour = None
         if colour is not None:
             return _sections({"environment": {"color": colour}}, "--environment", Path("."))[0]
-    return _sections({"environment": {"path": text}}, "--environment", Path("."))[0]
+    with safe_paths.allowing_outside():  # typed on the command line: no model's folder to keep to
+        return _sections({"environment": {"path": text}}, "--environment", Path("."))[0]
