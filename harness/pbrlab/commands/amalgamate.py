@@ -16,6 +16,15 @@ from ..foundation.errors import PbrlabError
 
 
 def run(args) -> int:
+    from ..foundation import safe_paths
+
+    # The entry and -I folders are the user's own, named on the command line: includes follow
+    # links anywhere (the folder rule is for the files a model names: docs/faults.md).
+    with safe_paths.allowing_outside():
+        return _amalgamate(args)
+
+
+def _amalgamate(args) -> int:
     entry = Path(args.entry)
     if not entry.is_file():
         candidate = shaders.resolve_include(args.entry, shaders.include_path(args.include_dir))

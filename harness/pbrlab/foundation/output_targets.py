@@ -83,7 +83,7 @@ def _own_stream(path: Path, text: str) -> OutputTarget:
     return OutputTarget(Path(path), fd=fd)
 
 
-def _stream_of_kind(path: Path, st: os.stat_result, shown: str) -> OutputTarget:
+def _stream_of_kind(path: Path, st: os.stat_result, shown: str, open_it: bool = True) -> OutputTarget:
     """A non-regular file: written through (a safe device, a FIFO with a reader) or refused."""
     mode = st.st_mode
     if stat.S_ISDIR(mode):
@@ -102,6 +102,8 @@ def _stream_of_kind(path: Path, st: os.stat_result, shown: str) -> OutputTarget:
         _refuse(path, f"{shown}is a socket; pbrlab writes regular files")
     else:
         _refuse(path, f"{shown}is not a regular file (mode {oct(mode)})")
+    if not open_it:  # a check ahead of the work: opening and closing a FIFO would end its reader's read
+        return OutputTarget(Path(path))
     try:
         fd = os.open(path, flags)
     except OSError as exc:
@@ -113,8 +115,10 @@ def _stream_of_kind(path: Path, st: os.stat_result, shown: str) -> OutputTarget:
     return OutputTarget(Path(path), fd=fd, owned=True)
 
 
-def classify(path) -> OutputTarget:
-    """The output ``path`` names (module docstring), or a PbrlabError naming it."""
+def classify(path, open_streams: bool = True) -> OutputTarget:
+    """The output ``path`` names (module docstring), or a PbrlabError naming it. A device or
+    FIFO is opened for writing here (a FIFO without a reader refused now), unless
+    ``open_streams`` is false (a check ahead of the work; the transaction opens it later)."""
     path = Path(path)
     text = os.fspath(path)
     if _STREAM_NAME.match(text):
@@ -128,7 +132,7 @@ def classify(path) -> OutputTarget:
     if not stat.S_ISLNK(lst.st_mode):
         if stat.S_ISREG(lst.st_mode):
             return OutputTarget(path, file=path)
-        return _stream_of_kind(path, lst, "it ")
+        return _stream_of_kind(path, lst, "it ", open_streams)
     lead = os.readlink(path)
     real = Path(os.path.realpath(path))
     try:
@@ -138,7 +142,7 @@ def classify(path) -> OutputTarget:
     except OSError as exc:  # a loop
         _refuse(path, f"it is a symbolic link that cannot be followed ({exc.strerror or exc})")
     if st is not None and not stat.S_ISREG(st.st_mode):
-        return _stream_of_kind(path, st, f"it is a symbolic link to {lead}, which ")
+        return _stream_of_kind(path, st, f"it is a symbolic link to {lead}, which ", open_streams)
     folder = os.path.realpath(path.parent)
     if not is_within(real, folder):
         _refuse(path, f"it is a symbolic link to {lead}, which leads outside {path.parent or '.'} "

@@ -17,6 +17,11 @@ Rules, each answering a fault seen on earlier versions (issue 14):
   still fails (the folder vanished) is reported with the targets already replaced.
 * **Never an input.** A target that is the same file as an input of the command
   (resolved path, or device and inode for hard links) is refused before any work.
+* **Only regular files are renamed over** (issue 39). What a target names is decided first
+  (output_targets): a link to a file in its folder has that file replaced (the link stays),
+  a link out of the folder is refused; /dev/null, terminals, this process's /dev/stdout and
+  FIFOs with a reader are written through from the checked temporary after every file
+  passed; other devices and sockets are refused. A rename over /dev/null once replaced it.
 * **No litter.** Temporary files are named ``.NAME.PID-RANDOM.tmpSUFFIX`` beside their
   target (same file system, so the rename is atomic; the suffix keeps OpenImageIO's
   format choice). ``signal_cleanup`` makes SIGTERM, SIGHUP and SIGINT unwind
@@ -89,8 +94,7 @@ def remove_stale_temps(folder: Path) -> list[Path]:
 def check_writable_target(path: Path) -> None:
     """Raise PbrlabError when ``path`` cannot be written: a regular file (or a link to one in its
     folder) whose folder is writable, or a stream pbrlab writes through (output_targets)."""
-    target = output_targets.classify(path)
-    output_targets.close(target)
+    target = output_targets.classify(path, open_streams=False)
     if target.file is not None:
         _check_writable_file(Path(target.file))
 

@@ -40,6 +40,7 @@ import moderngl
 import numpy as np
 
 from . import gl, hlsl, shaders
+from ..foundation import safe_paths
 from ..foundation.errors import PbrlabError
 from ..foundation.file_identity import FileCache, include_closure
 
@@ -193,7 +194,10 @@ class Evaluator:
             program = shaders.build_program(self.ctx, self._vertex, fragment)
             return (program, self.ctx.vertex_array(program, [])), fragment.paths
 
-        return self._programs.get(key, build)
+        # The caller's own shader files and include folders: the folder rule is for a model's
+        # files (safe_paths), and a library symlinked into a project is no model's link out.
+        with safe_paths.allowing_outside():
+            return self._programs.get(key, build)
 
     def result_width(self, expression, includes, input_types, defines, include_dirs=(),
                      extensions=(), language="glsl") -> int:
