@@ -130,6 +130,8 @@ def _files(root: Path) -> dict:
         # links that stay inside model/
         "model/inside.png": ("link", "ok.png"),
         "model/sub/inside_up.png": ("link", "../ok.png"),
+        "secret/side.pbrlab.json": json.dumps({"environment": {"color": [1, 0, 0]}}).encode(),
+        "model/side.pbrlab.json": ("link", "../secret/side.pbrlab.json"),
     }
 
 
@@ -158,6 +160,7 @@ REFUSED = {
     "Unity texture property": ("unity.json", {"unity.json": _scene(
         surface="texture.shader", properties={"_MainTex": {"path": "albedo.png"}})}, "albedo.png"),
     "Unity #include": ("unityinc.json", {"unityinc.json": _scene(surface="including.shader")}, "helper.cginc"),
+    "glTF's side file (model.pbrlab.json)": ("side.gltf", dict([_gltf("side.gltf")]), "side.pbrlab.json"),
     "JSON .. then a link": ("sub/dotdot.json", {"sub/dotdot.json": _scene(textures={"albedo": "../shared/tex.png"})},
                             "tex.png"),
 }

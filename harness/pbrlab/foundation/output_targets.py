@@ -40,7 +40,7 @@ from .safe_paths import is_within
 
 # This process's descriptors by name (Linux's /dev/fd and /proc/self/fd; /dev/stdout and
 # /dev/stderr are links into them).
-_STREAM_NAME = re.compile(r"^(?:/dev/std(?P<std>out|err)|/dev/fd/(?P<fd>\d+)|/proc/self/fd/(?P<pfd>\d+))$")
+_STREAM_NAME = re.compile(r"^(?:/dev/std(?P<std>in|out|err)|/dev/fd/(?P<fd>\d+)|/proc/self/fd/(?P<pfd>\d+))$")
 
 # Character devices (Linux major, minor; None: every minor) that take any bytes without harm:
 # Documentation/admin-guide/devices.txt: 1/3 null, 1/5 zero, 1/7 full; 4 virtual consoles and
@@ -73,7 +73,7 @@ def _safe_device(st: os.stat_result) -> bool:
 
 def _own_stream(path: Path, text: str) -> OutputTarget:
     m = _STREAM_NAME.match(text)
-    fd = 1 if m["std"] == "out" else 2 if m["std"] == "err" else int(m["fd"] or m["pfd"])
+    fd = {"in": 0, "out": 1, "err": 2}[m["std"]] if m["std"] else int(m["fd"] or m["pfd"])
     if fd == 0:
         _refuse(path, "it is standard input")
     try:
@@ -107,7 +107,7 @@ def _stream_of_kind(path: Path, st: os.stat_result, shown: str, open_it: bool = 
     try:
         fd = os.open(path, flags)
     except OSError as exc:
-        if exc.errno == errno.ENXIO:
+        if exc.errno == errno.ENXIO and stat.S_ISFIFO(mode):
             _refuse(path, f"{shown}is a FIFO that no process reads")
         _refuse(path, f"cannot open it for writing: {exc.strerror or exc}")
     if stat.S_ISFIFO(mode):

@@ -66,6 +66,10 @@ def read_settings(model: Path, environment_option: str | None = None):
     environment, render = None, RenderSettings()
     path = side_file(model)
     if path.is_file():
+        try:  # a side file that is a link out of the model's folder is refused, not read (safe_paths)
+            safe_paths.inside(path.parent, path.name)
+        except safe_paths.OutsideFolderError as exc:
+            raise SceneError(str(exc)) from None
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except (json.JSONDecodeError, UnicodeDecodeError) as exc:
