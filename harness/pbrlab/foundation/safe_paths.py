@@ -125,6 +125,7 @@ def inside(base: str | Path, written: str | os.PathLike, referrer: str = "", *, 
     real_folder = os.path.realpath(folder)
     if is_within(real, real_folder):
         return real
+
     def shown(p) -> str:  # as the user named things: relative when the base was given relative
         return os.fspath(p) if base.is_absolute() else os.path.relpath(p)
 
