@@ -29,6 +29,8 @@ import moderngl
 from ..foundation.errors import LoopLimitWarning, PbrlabError, ShaderCompileError
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
+from . import source_limits
+from .cancellation import dies_on_signal
 
 GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.glsl"
@@ -199,6 +201,7 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             lines_out.append(f"#line {file_index * LINE_BLOCK + next_line} {file_index}")
 
     def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool, first_line: int = 1):
+        source_limits.check_include_depth(len(stack), display)
         file_index = len(source.files)
         source.files.append(display)
         emit_line_marker(file_index, first_line)
@@ -279,6 +282,7 @@ def strip_bom(text: str) -> str:
 def read_source(path: Path, where: str = "") -> str:
     """A shader file's text; unreadable or non-UTF-8 files raise PbrlabError naming it
     (``where``: the includer's file and line, when there is one)."""
+    source_limits.check_file_size(path, where)
     try:
         data = Path(path).read_bytes()
     except OSError as exc:
@@ -340,15 +344,42 @@ def loop_limit_warnings(source: Source, limit: int = LLVMPIPE_LOOP_LIMIT) -> lis
     return found
 
 
+def source_locator(source: Source):
+    """``locate(n)``: "file:line" of line n of ``source.text`` (its #line directives read)."""
+    places = []
+    file_index, line_number = 0, 0
+    for raw in source.text.splitlines():
+        m = _LINE_DIRECTIVE.match(raw) if "line" in raw else None
+        if m:
+            file_index, next_line = divmod(int(m.group(1)), LINE_BLOCK)
+            line_number = next_line - 1
+            places.append((file_index, 0))
+            continue
+        line_number += 1
+        places.append((file_index, line_number))
+
+    def locate(n: int) -> str:
+        index, line = places[min(n, len(places)) - 1] if places else (0, 1)
+        name = source.files[index] if index < len(source.files) else "<shader>"
+        return f"{name}:{max(line, 1)}"
+    return locate
+
+
 def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> moderngl.Program:
-    """Compile and link; errors are reported at the original file and line. On llvmpipe a
-    loop with literal bounds past its iteration cap gives a LoopLimitWarning naming it."""
+    """Compile and link; errors are reported at the original file and line. The texts are
+    checked against source_limits first (size, nesting, arrays, macro expansion), and the
+    compile, in-process in the driver, ends the process at once on SIGINT, SIGTERM or SIGHUP
+    (cancellation.dies_on_signal). On llvmpipe a loop with literal bounds past its iteration
+    cap gives a LoopLimitWarning naming it."""
+    for stage in (vertex, fragment):
+        source_limits.check_text(stage.text, source_locator(stage))
     if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
         for stage in (vertex, fragment):
             for message in loop_limit_warnings(stage):
                 warnings.warn(message, LoopLimitWarning, stacklevel=2)
     try:
-        return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
+        with dies_on_signal():
+            return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
     except moderngl.Error as exc:
         log = str(exc)
         stage, stage_name = ((fragment, "fragment") if "fragment_shader" in log
