@@ -219,7 +219,8 @@ def test_the_library_programs_are_within_every_limit(census):
 def _slow_surface_scene(tmp_path: Path) -> Path:
     """A surface of 1,000 dependent sin/cos statements: llvmpipe compiles it at the first
     draw in about 30 s (measured: 700 statements, 16.8 s for the whole render)."""
-    body = "".join(f"    x = sin(x * {1 + i * 1e-4:.6f} + y); y = cos(y + x * {i % 7 + 1}.0);\n" for i in range(1000))
+    salt = time.time_ns() % 1000 * 1e-9  # a text no earlier run compiled (Mesa's shader cache, if on)
+    body = "".join(f"    x = sin(x * {1 + i * 1e-4 + salt:.9f} + y); y = cos(y + x * {i % 7 + 1}.0);\n" for i in range(1000))
     (tmp_path / "slow.glsl").write_text("void surf(Input IN, inout SurfaceOutputStandard o) {\n"
                                         "    float x = IN.uv.x, y = IN.uv.y;\n" + body +
                                         "    o.Albedo = vec3(fract(x), fract(y), 0.5);\n}\n")
@@ -248,7 +249,8 @@ def test_a_signal_during_a_long_compile_stops_the_render_within_a_second(tmp_pat
     """Main: SIGTERM waited for the compile to end (about 30 s here)."""
     scene = _slow_surface_scene(tmp_path)
     proc = subprocess.Popen([sys.executable, "-m", "pbrlab.commands.cli", "render", str(scene), "-o", "out.png"],
-                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(HARNESS)),
+                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(HARNESS),
+                                                   MESA_SHADER_CACHE_DISABLE="true"),  # compile it every time
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         deadline = time.monotonic() + 120
@@ -274,3 +276,43 @@ def test_a_signal_during_a_long_compile_stops_the_render_within_a_second(tmp_pat
     assert "Traceback" not in err, err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.json", "slow.glsl"]  # no output, no temporary
     census["limits round three", "handled"] += 1
+
+
+def test_a_million_zero_scale_instances_are_refused_by_count(tmp_path, census):
+    """EXT_mesh_gpu_instancing with 10^6 instances of scale 0. Main: the import placed every
+    one (130 us each, measured) before finding "no triangle to draw", minutes later."""
+    import base64
+    import json
+
+    import numpy as np
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "importers" / "gltf"))
+    from gltf_helpers import quad_document
+
+    n = 1_000_000
+    doc = quad_document()
+    blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+    translations, scales = np.zeros((n, 3), np.float32), np.zeros((n, 3), np.float32)
+    translations[:, 0] = np.arange(n) * 1e-3
+    for values in (translations, scales):
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(blob), "byteLength": values.nbytes})
+        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                                 "count": n, "type": "VEC3"})
+        blob += values.tobytes()
+    (tmp_path / "m.bin").write_bytes(blob)
+    doc["buffers"] = [{"byteLength": len(blob), "uri": "m.bin"}]
+    accessors = len(doc["accessors"])
+    doc["nodes"] = [{"mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {
+        "attributes": {"TRANSLATION": accessors - 2, "SCALE": accessors - 1}}}}]
+    doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    (tmp_path / "m.gltf").write_text(json.dumps(doc))
+    _refused(_child("""
+        from pbrlab.foundation.errors import PbrlabError
+        from pbrlab.importers.gltf import load_gltf
+        try:
+            load_gltf("m.gltf", size=(8, 6), emit_warnings=False)
+            print("BUILT")
+        except PbrlabError as exc:
+            print("REFUSED", exc)
+        """, tmp_path), "m.gltf", "1000000 instances, over the limit of 65536")
+    census["limits round three", "refused cleanly"] += 1

@@ -201,7 +201,6 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             lines_out.append(f"#line {file_index * LINE_BLOCK + next_line} {file_index}")
 
     def walk(body: str, display: str, stack: tuple[Path, ...], conditional: bool, first_line: int = 1):
-        source_limits.check_include_depth(len(stack), display)
         file_index = len(source.files)
         source.files.append(display)
         emit_line_marker(file_index, first_line)
@@ -256,6 +255,7 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
             body = texts[target]
             if _is_guarded(body) and not inside_conditional:
                 emitted_guarded.add(target)
+            source_limits.check_include_depth(len(stack), f"{display}:{number}")
             if not line_directives:
                 lines_out.append(f"// ---- begin {included}")
             walk(body, _display_name(target), stack + (target,), inside_conditional)

@@ -101,6 +101,7 @@ def check_text(text: str, locate) -> None:
         raise ShaderLimitError(f"{locate(1)}: the program is {size} bytes with its includes, over the "
                                f"shader size limit of {MAX_SOURCE_BYTES} (source_limits.MAX_SOURCE_BYTES)")
     macros: dict[str, tuple[list[str] | None, list[str]]] = {}
+    defined_at: dict[str, int] = {}
     code: list[str] = []
     depth = 0
     for number, line in _logical_lines(text):
@@ -111,6 +112,7 @@ def check_text(text: str, locate) -> None:
             old = macros.get(definition.group(1))
             if old is None or len(body) >= len(old[1]):  # a redefinition: keep the larger
                 macros[definition.group(1)] = (params, body)
+                defined_at[definition.group(1)] = number
             tokens = body
         elif line.lstrip().startswith("#"):
             continue
@@ -129,10 +131,13 @@ def check_text(text: str, locate) -> None:
             if int(m.group(1)) > MAX_ARRAY_ELEMENTS:
                 raise ShaderLimitError(f"{locate(number)}: an array of {m.group(1)} elements, over the limit "
                                        f"of {MAX_ARRAY_ELEMENTS} (source_limits.MAX_ARRAY_ELEMENTS)")
-    tokens = _ExpansionSize(macros).sequence(code, ())[0]
+    sizes = _ExpansionSize(macros)
+    tokens = sizes.sequence(code, ())[0]
     if tokens > MAX_EXPANDED_TOKENS:
-        raise ShaderLimitError(f"{locate(1)}: macros expand the program to about {tokens} tokens, over the "
-                               f"limit of {MAX_EXPANDED_TOKENS} (source_limits.MAX_EXPANDED_TOKENS)")
+        largest = max(sizes.cost, key=lambda name: sum(sizes.cost[name]))  # the macro to blame
+        raise ShaderLimitError(f"{locate(defined_at[largest])}: macros expand the program to about {tokens} "
+                               f"tokens (the largest macro: {largest}, defined here), over "
+                               f"the limit of {MAX_EXPANDED_TOKENS} (source_limits.MAX_EXPANDED_TOKENS)")
 
 
 class _ExpansionSize:
