@@ -39,5 +39,7 @@ SLOW_MODULES = {
     "library/test_horizon_occlusion.py": 10,
     # added after that run, timed alone (-n 1, one worker) when they joined:
     "examples/test_babylonjs_example.py": 32,
+    "hostile/test_limits_round_three.py": 32,  # child processes: llvmpipe compiles, signals, a 10^6-instance glTF
+    "hostile/test_cache_round_three.py": 15,   # child processes reading FIFO and device entries, a render
 }
 TESTS = Path(__file__).resolve().parent

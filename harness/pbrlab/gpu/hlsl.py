@@ -35,7 +35,8 @@ from ..foundation.errors import PbrlabError, ShaderCompileError
 from ..foundation.file_identity import FileCache, include_closure
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
-from .shaders import GLSL_ROOT, strip_bom
+from . import source_limits
+from .shaders import GLSL_ROOT, _is_guarded, strip_bom
 
 HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.hlsl"
@@ -44,7 +45,13 @@ SPIRV_CROSS = "spirv-cross"
 _INSTALL_HINT = ("install the Debian/Ubuntu packages glslang-tools and spirv-cross "
                  "(sudo apt-get install glslang-tools spirv-cross; in a pbrlab checkout, "
                  "scripts/setup.sh does)")
+# Each tool run's limits: 60 s of wall time (the slowest compile measured in this project is
+# llvmpipe's 38 s for 4,000 statements, issue 26; glslang compiles the library's largest
+# program in under 1 s) and an address space of 4 GiB (the process's whole mapping, glslang's
+# code included; the runaway include cycle of issue 39 reached 5.8 GB). Over either, the
+# compile is a ShaderLimitError naming the limit.
 _TIMEOUT_S = 60
+TOOL_ADDRESS_SPACE_BYTES = 4 << 30
 # glslang: "ERROR: path:line: message" / "WARNING: path:line: message"
 _GLSLANG_MESSAGE = re.compile(r"^(ERROR|WARNING): (.+?):(\d+): (.*)$")
 _ENTRY_NAME = "pbrlab_entry.hlsl"
@@ -133,10 +140,88 @@ def _bom_free_search(text: str, include_dirs, tmp: Path) -> list[Path]:
     return search
 
 
+_HLSL_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*[<"]([^">]+)[">]', re.M)
+
+
+def check_limits(text: str, name: str, include_dirs) -> None:
+    """Refuse, before glslang reads it, an HLSL text whose includes form a cycle through a
+    file without an #ifndef include guard (glslang would follow it until memory ran out: 5.8 GB,
+    issue 39) or nest deeper than source_limits.MAX_INCLUDE_DEPTH, a file over
+    MAX_SOURCE_BYTES, or a text (all its files) over the other source_limits. Includes are
+    resolved as glslang does: the including file's folder, then ``include_dirs``, then
+    HLSL_ROOT; every #include counts, whichever #if holds it."""
+    search = [Path(d) for d in include_dirs] + [HLSL_ROOT]
+    texts: dict[Path, str] = {}
+    height: dict[Path, int] = {}  # deepest include chain below a file already walked
+    pieces = [(name, text)]
+
+    def walk(body: str, display: str, folder: Path | None, stack: tuple) -> int:
+        deepest = 0
+        for m in _HLSL_INCLUDE.finditer(body):
+            line = body.count("\n", 0, m.start()) + 1
+            target = next(((d / m.group(1)).resolve() for d in ([folder] if folder else []) + search
+                           if (d / m.group(1)).is_file()), None)
+            if target is None:
+                continue  # glslang reports it, at this line
+            where = f"{display}:{line}"
+            if target in stack:
+                if target in texts and _is_guarded(texts[target]):
+                    continue  # the #ifndef guard ends the cycle (glslang does not implement #pragma once)
+                chain = " -> ".join(str(p) for p in (*stack[1:], target))
+                raise source_limits.ShaderLimitError(f"{where}: include cycle: {chain}")
+            if target not in height:
+                source_limits.check_file_size(target, f"{where}: ")
+                texts[target] = strip_bom(target.read_text(encoding="utf-8", errors="replace"))
+                pieces.append((str(target), texts[target]))
+                height[target] = 0
+                source_limits.check_include_depth(len(stack), where)
+                height[target] = walk(texts[target], str(target), target.parent, stack + (target,))
+            source_limits.check_include_depth(len(stack) + height[target], where)
+            deepest = max(deepest, 1 + height[target])
+        return deepest
+
+    walk(text, name, None, ("<entry>",))
+    starts, offset = [], 0
+    for display, piece in pieces:
+        starts.append((offset, display))
+        offset += piece.count("\n") + 1
+
+    def locate(n: int) -> str:
+        first, display = next((start, shown) for start, shown in reversed(starts) if start < n)
+        return f"{display}:{n - first}"
+
+    source_limits.check_text("\n".join(piece for _, piece in pieces), locate)
+
+
+def _limit_address_space():  # runs in the child, between fork and exec
+    import resource
+    hard = resource.getrlimit(resource.RLIMIT_AS)[1]  # a limit can be lowered, never raised
+    cap = TOOL_ADDRESS_SPACE_BYTES if hard == resource.RLIM_INFINITY else min(hard, TOOL_ADDRESS_SPACE_BYTES)
+    resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+
+
+def _run_tool(cmd: list, name: str, **kwargs) -> subprocess.CompletedProcess:
+    """``cmd`` under the limits above; over one, a ShaderLimitError naming it and ``name``."""
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=_TIMEOUT_S,
+                              preexec_fn=_limit_address_space, **kwargs)
+    except subprocess.TimeoutExpired:
+        raise source_limits.ShaderLimitError(
+            f"{name}: {Path(cmd[0]).name} ran over the compile time limit of {_TIMEOUT_S} s "
+            "(hlsl._TIMEOUT_S) and was stopped") from None
+    if proc.returncode < 0 or "std::bad_alloc" in proc.stderr:
+        raise source_limits.ShaderLimitError(
+            f"{name}: {Path(cmd[0]).name} ended without a result (signal {-proc.returncode}"
+            f"{', out of memory' if 'bad_alloc' in proc.stderr else ''}) under the memory limit of "
+            f"{TOOL_ADDRESS_SPACE_BYTES >> 30} GiB (hlsl.TOOL_ADDRESS_SPACE_BYTES)")
+    return proc
+
+
 def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
                   extra_args=(), stage: str = "frag", entry: str = "main") -> bytes:
     """HLSL source -> SPIR-V bytes; ShaderCompileError (mapped messages) if it fails."""
     glslang = tool(GLSLANG)
+    check_limits(text, name, include_dirs)
     with tempfile.TemporaryDirectory(prefix="pbrlab-hlsl-") as tmp:
         search = _bom_free_search(text, include_dirs, Path(tmp))
         include_args = [f"-I{d}" for d in search] + [f"-I{HLSL_ROOT.resolve()}"]
@@ -145,7 +230,7 @@ def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize:
         src.write_text(strip_bom(text), encoding="utf-8")
         cmd = [glslang, "-D", "-V", "-e", entry, "-S", stage, "--auto-sampled-textures",
                *([] if optimize else ["-Od"]), *extra_args, *include_args, src.name, "-o", out.name]
-        proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=_TIMEOUT_S)
+        proc = _run_tool(cmd, name, cwd=tmp)
         if proc.returncode != 0 or not out.is_file():
             log = (proc.stdout + proc.stderr).replace(str(Path(tmp) / "bom-free" / "root"), "")
             messages = map_messages(log, name, search)  # a BOM-free copy named as its original
@@ -161,8 +246,7 @@ def cross_to_glsl(spirv: bytes, version: int = 330, *, plain_uniforms: bool = Fa
         path = Path(tmp) / "in.spv"
         path.write_bytes(spirv)
         flags = ["--glsl-emit-ubo-as-plain-uniforms"] if plain_uniforms else []
-        proc = subprocess.run([cross, "--version", str(version), "--no-es", *flags, str(path)],
-                              capture_output=True, text=True, timeout=_TIMEOUT_S)
+        proc = _run_tool([cross, "--version", str(version), "--no-es", *flags, str(path)], "<SPIR-V>")
     if proc.returncode != 0:
         raise ShaderCompileError(f"spirv-cross failed:\n{(proc.stdout + proc.stderr).strip()}")
     return proc.stdout

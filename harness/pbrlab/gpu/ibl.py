@@ -204,13 +204,21 @@ def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderng
     filtered the same image with the same program on the same driver (_prefilter_cache_key):
     256 samples per texel cost llvmpipe a good part of a render's start-up (issue 25)."""
     name = _prefilter_cache_key(ctx, image)
-    payload = disk_cache.load("prefiltered-environment", name)
-    if payload is not None:
-        levels = disk_cache.unpack_arrays(payload)
-    else:
+    levels = disk_cache.load("prefiltered-environment", name, _decode_levels)
+    if levels is None:
         levels = _prefilter_levels(ctx, image)
         disk_cache.store("prefiltered-environment", name, disk_cache.pack_arrays(levels))
     return float_cube_from_levels(ctx, levels)
+
+
+def _decode_levels(payload: bytes) -> list[np.ndarray]:
+    """A prefiltered environment's entry: PREFILTER_LEVELS float32 arrays of 6 x n x n x 4,
+    n = prefilter_level_size(level); ValueError when the payload is anything else."""
+    levels = disk_cache.unpack_arrays(payload)
+    expected = [(6, prefilter_level_size(level), prefilter_level_size(level), 4) for level in range(PREFILTER_LEVELS)]
+    if [level.shape for level in levels] != expected or any(level.dtype != np.float32 for level in levels):
+        raise ValueError(f"levels {[(level.dtype.name, level.shape) for level in levels]}, not float32 {expected}")
+    return levels
 
 
 # OpenGL 4.6 core: section 8.13 (cube map targets, one per face, +X, -X, +Y, -Y, +Z, -Z in

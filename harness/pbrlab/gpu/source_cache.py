@@ -26,13 +26,26 @@ SETTLED_NS = 2_000_000_000  # an input younger than this is not trusted to have 
 _CODE = (Path(shaders.__file__).read_bytes(), Path(__file__).read_bytes())
 
 
+def _decode_entry(payload: bytes) -> dict:
+    """An entry as ``expand`` wrote it (JSON: text, files, paths, inputs); ValueError or
+    TypeError when the payload is anything else."""
+    entry = json.loads(payload)
+    if not (isinstance(entry, dict) and isinstance(entry.get("text"), str)
+            and all(isinstance(entry.get(name), list) and all(isinstance(item, str) for item in entry[name])
+                    for name in ("files", "paths"))
+            and isinstance(entry.get("inputs"), list)
+            and all(isinstance(item, list) and len(item) == 2 and isinstance(item[0], str)
+                    and isinstance(item[1], list) for item in entry["inputs"])):
+        raise ValueError("not an expanded-source entry (text, files, paths, inputs)")
+    return entry
+
+
 def expand(text: str, name: str, include_dirs=()) -> shaders.Source:
     """``shaders.expand(text, name, include_dirs)``, from the disk cache when still valid."""
     search = [str(d) for d in shaders.include_path(include_dirs)]
     key = disk_cache.key(KIND, text, name, search, *_CODE)
-    payload = disk_cache.load(KIND, key)
-    if payload is not None:
-        entry = json.loads(payload)
+    entry = disk_cache.load(KIND, key, _decode_entry)
+    if entry is not None:
         if all(list(file_key(path)) == identity for path, identity in entry["inputs"]):
             return shaders.Source(entry["text"], entry["files"], [Path(p) for p in entry["paths"]])
     source = shaders.expand(text, name, include_dirs=include_dirs)

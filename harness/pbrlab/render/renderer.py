@@ -29,6 +29,7 @@ from . import features, instanced_draws, resource_cache
 from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
+from ..gpu.cancellation import dies_on_signal
 from . import transmission_copy
 from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
@@ -337,7 +338,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             draw_calls += _draw_objects(ctx, hdr, _draw_order(scene, frame), draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
-            linear = hdr.read()  # resolved: each pixel's samples averaged in linear radiance
+            with dies_on_signal():  # waits for llvmpipe to finish every draw
+                linear = hdr.read()  # resolved: each pixel's samples averaged in linear radiance
             if scene.render.exposure_metered:  # darkened just enough not to clip (pbrlab.maths.exposure)
                 metered = scene.render.exposure + metered_exposure(linear)
                 scene = dataclasses.replace(scene, render=dataclasses.replace(scene.render, exposure=metered))
@@ -454,7 +456,8 @@ def _draw_sphere(ctx, hdr, obj, material, material_pass, defines, draw, grabbed)
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "front"
     vao = ctx.vertex_array(program, [(draw.cube_vbo, "3f", "in_position")], index_buffer=draw.cube_ibo)
-    vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
+    with dies_on_signal():  # llvmpipe compiles a program's code at its first draw
+        vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
     vao.release()
 
 
@@ -496,7 +499,8 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
     topology = "triangles" if obj.geometry is None else obj.geometry.topology
-    vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
+    with dies_on_signal():  # llvmpipe compiles a program's code at its first draw
+        vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
     for resource in [vao, *buffers]:
         resource.release()
 
@@ -515,9 +519,10 @@ def _resolve(ctx, hdr, scene, transfer, language):
         _set(resolve, "u_hdr", 0)
         _set(resolve, "u_exposure_ev", scene.render.exposure)
         vao = ctx.vertex_array(resolve, [])
-        vao.render(moderngl.TRIANGLES, vertices=3)
+        with dies_on_signal():
+            vao.render(moderngl.TRIANGLES, vertices=3)
+            pixels = display.read()
         vao.release()
-        pixels = display.read()
         ctx.disable_direct(targets.GL_FRAMEBUFFER_SRGB)
     if transfer != "EXACT":
         return pixels

@@ -209,16 +209,36 @@ def _prepared_mesh(obj) -> tuple[tuple, float]:
     name = None
     if inputs is not None:
         name = disk_cache.key("mesh", inputs, Path(__file__).read_bytes(), np.__version__, _trimesh_identity())
-        payload = disk_cache.load("mesh", name)
-        if payload is not None:
-            *arrays, norm = disk_cache.unpack_arrays(payload)
-            return tuple(arrays), float(norm)
+        cached = disk_cache.load("mesh", name, _decode_mesh_entry)
+        if cached is not None:
+            return cached
     mesh = load_mesh(obj)
     arrays = vertex_arrays(mesh)
     norm = float(np.linalg.norm(mesh.vertices, axis=1).max())
     if name is not None:
         disk_cache.store("mesh", name, disk_cache.pack_arrays([*arrays, np.float64(norm)]))
     return arrays, norm
+
+
+def _decode_mesh_entry(payload: bytes) -> tuple[tuple, float]:
+    """A mesh entry's (vertex arrays, largest vertex norm), as vertex_arrays and
+    _prepared_mesh wrote them; ValueError when the payload is anything else."""
+    arrays = disk_cache.unpack_arrays(payload)
+    if len(arrays) != 6:
+        raise ValueError(f"{len(arrays)} arrays, not 6")
+    *vertex, norm = arrays
+    count = len(vertex[0]) if vertex[0].ndim == 2 else -1
+    for array, width in zip(vertex[:4], (3, 3, 2, 4)):  # positions, normals, uvs, tangents
+        if array.dtype != np.float32 or array.shape != (count, width):
+            raise ValueError(f"a vertex array of {array.dtype} {array.shape}, not float32 ({count}, {width})")
+    indices = vertex[4]
+    if indices.dtype != np.int32 or indices.ndim != 1 or len(indices) % 3:
+        raise ValueError(f"indices of {indices.dtype} {indices.shape}")
+    if len(indices) and (indices.min() < 0 or indices.max() >= count):
+        raise ValueError(f"indices outside 0..{count - 1}")
+    if norm.shape != () or not np.isfinite(norm):
+        raise ValueError(f"a vertex norm of shape {norm.shape}")
+    return tuple(vertex), float(norm)
 
 
 def bounding_radius(obj) -> float:
