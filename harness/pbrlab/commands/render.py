@@ -143,6 +143,9 @@ def load_any_scene(path, camera=None, environment=None, size=None, variant=None,
 def run(args) -> int:
     from ..gpu import gl
     from ..foundation import images, outputs, progress
+    import sys
+
+    from ..render.empty_frame import empty_frame_reason
     from ..render.renderer import input_files, render_scene
 
     if not args.output and not args.hdr:
@@ -169,6 +172,9 @@ def run(args) -> int:
         kind = "specialised" if rendering.programs.specialised else "full"
         console.note(f"{rendering.programs.distinct} {kind} program(s)")
         check_finite(rendering.linear, args.scene)
+        empty = empty_frame_reason(scene, rendering.linear)  # written anyway, never silently
+        if empty:
+            print(f"warning: {args.scene}: {empty}", file=sys.stderr)
         if args.hdr:
             images.write_exr(args.hdr, rendering.linear, metadata=rendering.info, tx=tx)
         if args.output:

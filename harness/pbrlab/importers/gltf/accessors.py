@@ -135,6 +135,12 @@ def _decoded_values(doc, decoded: np.ndarray, where, name, use, component, n, n_
     expected = np.dtype(COMPONENT_TYPES[component])
     if decoded.dtype.kind == "f" and component == FLOAT or decoded.dtype == expected:
         return decoded
+    if decoded.dtype.kind in "iu" and expected.kind in "iu":  # DracoPy widens integers (JOINTS: uint32)
+        info = np.iinfo(expected)
+        if decoded.size == 0 or (decoded.min() >= info.min and decoded.max() <= info.max):
+            return decoded.astype(expected)
+        doc.fail(where, f"the compressed data decodes integers from {int(decoded.min())} to {int(decoded.max())}; "
+                        f"{name} has components {COMPONENT_NAMES[component]} ({info.min} to {info.max})")
     doc.fail(where, f"the compressed data decodes {decoded.dtype} values; {name} has components "
                     f"{COMPONENT_NAMES[component]}")
 
