@@ -203,8 +203,9 @@ def register(sub, common):
                    help="glTF: morph target weights for every mesh with targets (default: the node's or mesh's)")
     p.add_argument("--time", default=None, metavar="T",
                    help="glTF: sample the animations at T seconds (default: the nodes as written, skins in that pose)")
-    p.add_argument("--animation", default=None, metavar="N|NAME",
-                   help="glTF: sample only this animation (an index or a name; default: all of them)")
+    p.add_argument("--animation", default=None, metavar="N|NAME|all",
+                   help="glTF: sample this animation (an index or a name), or all of them together "
+                        "(default: the first, with a warning naming the others)")
     p.add_argument("--allow-outside", action="store_true",
                    help="glTF: read buffers and images outside the file's folder (absolute paths, ..); "
                         "refused by default")

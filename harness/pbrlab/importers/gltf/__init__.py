@@ -113,7 +113,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     if scene is not None and not 0 <= scene < len(scenes):
         doc.fail("scenes", f"--scene {scene}: the file has {len(scenes)} scene{'s' * (len(scenes) != 1)}"
                            + (f" (0 to {len(scenes) - 1})" if scenes else ""))
-    pose = animations.sample(doc, time, animation)
+    pose = animations.sample(doc, time, animation, warn)
     worlds = None  # every node's world matrix, computed once a skin needs its joints'
     variant_index = None
     for name, spec in root.extensions():
