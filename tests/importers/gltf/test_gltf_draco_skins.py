@@ -24,6 +24,7 @@ from scipy import ndimage
 from gltf_helpers import read_glb
 from pbrlab.checking.golden_scenes import GLTF_DIR
 from pbrlab.commands import cli
+from pbrlab.foundation.errors import SceneError
 from pbrlab.importers.gltf import draco, load_gltf, skin
 from pbrlab.render.empty_frame import covered_fraction, empty_frame_reason
 from pbrlab.render.renderer import render_scene
@@ -199,3 +200,21 @@ def test_khronos_skinned_draco_variants_cover_what_their_twins_cover(model, tmp_
     off_band, covered, _ = _twin_disagreement(plain, compressed)
     assert covered > 0.02 * KHRONOS_SIZE[0] * KHRONOS_SIZE[1]
     assert off_band == 0, off_band
+
+
+def test_decoded_joints_beyond_the_accessors_component_type_are_refused(monkeypatch):
+    """Draco data may hold integers wider than the accessor's type (Khronos' Draco variants
+    of BrainStem, CesiumMan, RiggedFigure and RiggedSimple decode JOINTS_0 as uint32 for
+    UNSIGNED_SHORT accessors): taken when every value fits, refused by name when one does
+    not (here: the strip's joints widened to uint32 and 300 added to each)."""
+    original = draco.decode
+
+    def widened(doc, spec, attributes):
+        decoded = original(doc, spec, attributes)
+        decoded.attributes["JOINTS_0"] = decoded.attributes["JOINTS_0"].astype(np.uint32) + 300
+        return decoded
+
+    monkeypatch.setattr(draco, "decode", widened)
+    with pytest.raises(SceneError, match=r"attributes\.JOINTS_0: the compressed data decodes integers from 300 to "
+                                         r"301; accessor \d+ has components UNSIGNED_BYTE \(0 to 255\)"):
+        _load(COMPRESSED)
