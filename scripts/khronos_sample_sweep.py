@@ -129,7 +129,7 @@ def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
             "threejs_coverage": round(float(content.covered(theirs).mean()), 4)}
 
 
-def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None) -> dict:
+def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time: str | None = None) -> dict:
     from pbrlab.checking import content
     from pbrlab.foundation.images import read_image
 
@@ -142,7 +142,8 @@ def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None) -> dict
     start = time.perf_counter()
     try:
         run = subprocess.run([sys.executable, "-c", CLI, "render", str(model), "-o", str(png), "--hdr", str(exr),
-                              "--size", SIZE, "--environment", ENVIRONMENT],
+                              "--size", SIZE, "--environment", ENVIRONMENT]
+                             + (["--time", at_time] if at_time is not None and _animated(model) else []),
                              capture_output=True, text=True, timeout=TIME_LIMIT_S)
     except subprocess.TimeoutExpired:
         return {"model": name, "result": "failed", "reason": f"over {TIME_LIMIT_S} s"}
@@ -177,6 +178,18 @@ def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None) -> dict
     return row
 
 
+def _animated(model: Path) -> bool:
+    """Whether the file has animations (its JSON: the .gltf, or a .glb's first chunk)."""
+    data = model.read_bytes()
+    if model.suffix.lower() == ".glb":
+        length = int.from_bytes(data[12:16], "little")
+        data = data[20:20 + length]
+    try:
+        return bool(json.loads(data).get("animations"))
+    except (ValueError, AttributeError):
+        return False
+
+
 def markdown(rows: list[dict]) -> str:
     counts = Counter(r["result"] for r in rows)
     available = len(rows) - counts["not available"]
@@ -201,10 +214,16 @@ def main(argv=None) -> int:
     parser.add_argument("--markdown", type=Path, help="write the summary table here")
     parser.add_argument("--jobs", type=int, default=1, help="renders at once (default 1)")
     parser.add_argument("--no-threejs", action="store_true", help="leave out the comparison with three.js")
+    parser.add_argument("--only", default=None, metavar="MODEL,...",
+                        help="only these models (names of Models/ folders, comma-separated)")
+    parser.add_argument("--time", default=None, metavar="T",
+                        help="render animated files at T seconds (pbrlab render --time: their first animation); "
+                             "three.js, which draws the nodes as written, is then left out")
     args = parser.parse_args(argv)
     from pbrlab.checking.fidelity import renderers
     from pbrlab.foundation import images
 
+    args.no_threejs = args.no_threejs or args.time is not None
     missing = [] if args.no_threejs else renderers.missing_setup("threejs")
     if missing:
         print("three.js left out: " + "; ".join(missing), file=sys.stderr)
@@ -221,10 +240,14 @@ def main(argv=None) -> int:
             sky = np.array([float(v) for v in ENVIRONMENT.split(",")], np.float32)
             images.write_exr(sky_exr, np.ascontiguousarray(np.broadcast_to(sky, (16, 32, 3))))
         files = models(root)
+        if args.only:
+            chosen = set(args.only.split(","))
+            files = [f for f in files if f.relative_to(root / "Models").parts[0] in chosen]
+            absent = [a for a in absent if a.split("/")[1] in chosen]
         with ThreadPoolExecutor(max(1, args.jobs)) as pool:
             rows = [{"model": path.removeprefix("Models/"), "result": "not available",
                      "reason": "the snapshot lacks the file itself"} for path in absent]
-            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr), files):
+            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr, args.time), files):
                 print(f"{row['result']:>22}  {row['model']}  {row['reason']}", file=sys.stderr)
                 rows.append(row)
     if args.json:
