@@ -202,7 +202,8 @@ def register(sub, common):
     p.add_argument("--weights", default=None, metavar="W0,W1,...",
                    help="glTF: morph target weights for every mesh with targets (default: the node's or mesh's)")
     p.add_argument("--time", default=None, metavar="T",
-                   help="glTF: sample the animations at T seconds (default: the nodes as written, skins in that pose)")
+                   help="glTF: sample an animation at T seconds (--animation; default: the nodes as written, skins in "
+                        "that pose)")
     p.add_argument("--animation", default=None, metavar="N|NAME|all",
                    help="glTF: sample this animation (an index or a name), or all of them together "
                         "(default: the first, with a warning naming the others)")
