@@ -122,7 +122,8 @@ def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
         theirs, _ = renderers.render_external("threejs", view)
     except PbrlabError as exc:
         lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
-        return {"error": lines[-1][:300] if lines else "no message"}  # the tool's last line says why
+        named = [line for line in lines if "Error" in line] or lines[-1:] or ["no message"]
+        return {"error": named[0][:300]}  # the JS error's own line, not the stack under it
     ours = renderers.straight(linear)
     return {"coverage_pixels": content.coverage_disagreement(ours, theirs),
             "mean_codes": content.mean_colour_difference(ours, theirs, srgb8.encode),
