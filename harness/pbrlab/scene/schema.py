@@ -202,7 +202,8 @@ def _objects() -> dict:
                                        "animation": {"description": "The animation sampled: an index, a name, or "
                                                                     "\"all\" for every one together (default: "
                                                                     "the first).",
-                                                     "type": ["integer", "string"]}},
+                                                     "oneOf": [{"type": "integer", "minimum": 0},
+                                                               {"type": "string", "minLength": 1}]}},
                         "required": ["gltf"], "additionalProperties": False},
     }
 
