@@ -104,19 +104,19 @@ def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
     ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour."""
     from pbrlab.checking import content
     from pbrlab.checking.fidelity import renderers
-    from pbrlab.checking.sample_viewer import FAR_FACTOR, NEAR_FRACTION
     from pbrlab.foundation.errors import PbrlabError
     from pbrlab.importers.gltf import load_gltf
     from pbrlab.maths import srgb8
+    from pbrlab.render.depth_range import scene_frame
     from pbrlab.scene.model import Environment
 
-    camera = load_gltf(model, size=_size(), environment=Environment(color=np.array([0.3, 0.3, 0.3])),
-                       emit_warnings=False).scene.camera
-    distance = float(np.linalg.norm(np.asarray(camera.position, np.float64) - camera.target))
+    scene = load_gltf(model, size=_size(), environment=Environment(color=np.array([0.3, 0.3, 0.3])),
+                      emit_warnings=False).scene
+    camera, frame = scene.camera, scene_frame(scene)  # pbrlab's own near and far planes
     view = {"gltf": str(model), "size": list(_size()), "environment": str(sky_exr),
             "camera": {"eye": [float(x) for x in camera.position], "target": [float(x) for x in camera.target],
                        "up": [float(x) for x in camera.up], "yfov_deg": float(camera.fov_y_deg),
-                       "znear": distance * NEAR_FRACTION, "zfar": distance * FAR_FACTOR},
+                       "znear": float(frame.near), "zfar": float(frame.far)},
             "samples": 1, "seed": 0, "denoise": False}
     try:
         theirs, _ = renderers.render_external("threejs", view)
