@@ -16,7 +16,7 @@ and reports N of M by verdict:
 
 The comparison with three.js r187 (tools/threejs_gltf, headless Chromium; `--no-threejs` to
 leave it out, and it is left out with a note where its setup is missing) renders the camera
-pbrlab chose under the same constant sky, and compares linear images (pbrlab's EXR, three.js's
+pbrlab chose, with pbrlab's near and far planes, under the same constant sky, and compares linear images (pbrlab's EXR, three.js's
 float output) through the plain sRGB encode: no exposure or tonemap on either side.
 
 The models are not part of this repository (their licences vary): give a folder holding
