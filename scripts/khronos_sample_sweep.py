@@ -1,6 +1,23 @@
 """Renders every model variant of Khronos' glTF sample set that a reader can get, as a
-new user would (`pbrlab render FILE -o out.png`), and reports N of M rendered, refused
-(exit 2: the message) and failed (any other exit, or past the time limit).
+new user would (`pbrlab render FILE -o out.png --hdr out.exr`), checks what each image shows,
+and reports N of M by verdict:
+
+    drawn                 exit 0, surfaces cover pixels and some covered pixel is lit (over
+                          pbrlab.checking.content.BLACK_CODE), and, where three.js runs, its
+                          render of the same camera covers the same pixels away from
+                          silhouettes and its mean colour is within COLOUR_SCREEN_CODES
+    differs from three.js exit 0 and drawn, but three.js covers other pixels away from every
+                          silhouette, or its mean colour is further off (the figures say which)
+    empty                 exit 0 and no covered pixel (pbrlab render also warns)
+    black                 exit 0, pixels covered, none lit
+    refused               exit 2 (the message)
+    failed                any other exit, or past the time limit
+    not available         the snapshot lacks the file or a file it names
+
+The comparison with three.js r187 (tools/threejs_gltf, headless Chromium; `--no-threejs` to
+leave it out, and it is left out with a note where its setup is missing) renders the camera
+pbrlab chose, with pbrlab's near and far planes, under the same constant sky, and compares linear images (pbrlab's EXR, three.js's
+float output) through the plain sRGB encode: no exposure or tonemap on either side.
 
 The models are not part of this repository (their licences vary): give a folder holding
 them (`--models DIR`, with DIR/<Model>/<variant>/<file>), or a git directory of a
@@ -25,11 +42,19 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from urllib.parse import unquote
 
+import numpy as np
+
 MODEL_SUFFIXES = (".gltf", ".glb")
 SIZE = "160x120"
 ENVIRONMENT = "0.3,0.3,0.3"  # a constant sky: every model visible without a light of its own
 TIME_LIMIT_S = 600
 CLI = "import sys; from pbrlab.commands import cli; sys.exit(cli.main(sys.argv[1:]))"  # `pbrlab` itself
+# A screen, not an accuracy bound: the largest channel's mean over the jointly covered pixels.
+# Renderers that implement the same glTF material agree far closer (pbrlab, three.js and the
+# Sample Renderer within 2.7 codes mean on corpus/gltf/khronos, test_khronos_models.py); a
+# mean 8 codes off (3 % of the range) is a material or texture drawn differently, to look at.
+COLOUR_SCREEN_CODES = 8.0
+VERDICTS = ("drawn", "differs from three.js", "empty", "black", "refused", "failed", "not available")
 
 
 def extract(git_dir: Path, out: Path) -> list[str]:
@@ -69,16 +94,58 @@ def _name(model: Path, root: Path) -> str:
     return model.relative_to(root / "Models").as_posix()
 
 
-def render(model: Path, root: Path, out_dir: Path) -> dict:
+def _size() -> tuple[int, int]:
+    width, height = SIZE.split("x")
+    return int(width), int(height)
+
+
+def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
+    """three.js's render of the camera pbrlab chooses for ``model``, compared with pbrlab's
+    ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour."""
+    from pbrlab.checking import content
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.foundation.errors import PbrlabError
+    from pbrlab.importers.gltf import load_gltf
+    from pbrlab.maths import srgb8
+    from pbrlab.render.depth_range import scene_frame
+    from pbrlab.scene.model import Environment
+
+    scene = load_gltf(model, size=_size(), environment=Environment(color=np.array([0.3, 0.3, 0.3])),
+                      emit_warnings=False).scene
+    camera, frame = scene.camera, scene_frame(scene)  # pbrlab's own near and far planes
+    view = {"gltf": str(model), "size": list(_size()), "environment": str(sky_exr),
+            "camera": {"eye": [float(x) for x in camera.position], "target": [float(x) for x in camera.target],
+                       "up": [float(x) for x in camera.up], "yfov_deg": float(camera.fov_y_deg),
+                       "znear": float(frame.near), "zfar": float(frame.far)},
+            "samples": 1, "seed": 0, "denoise": False}
+    try:
+        theirs, _ = renderers.render_external("threejs", view)
+    except PbrlabError as exc:
+        lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
+        named = [line for line in lines if "Error" in line] or lines[-1:] or ["no message"]
+        return {"error": named[0][:300]}  # the JS error's own line, not the stack under it
+    ours = renderers.straight(linear)
+    return {"coverage_pixels": content.coverage_disagreement(ours, theirs),
+            "mean_codes": content.mean_colour_difference(ours, theirs, srgb8.encode),
+            "threejs_coverage": round(float(content.covered(theirs).mean()), 4)}
+
+
+def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time: str | None = None) -> dict:
+    from pbrlab.checking import content
+    from pbrlab.foundation.images import read_image
+
     name = _name(model, root)
     missing = [u for u in referenced_files(model) if not (model.parent / u).is_file()]
     if missing:
         return {"model": name, "result": "not available", "reason": f"the snapshot lacks {missing[0]}"}
-    png = out_dir / (re.sub(r"[^A-Za-z0-9]+", "_", name) + ".png")
+    stem = out_dir / re.sub(r"[^A-Za-z0-9]+", "_", name)
+    png, exr = stem.with_suffix(".png"), stem.with_suffix(".exr")
     start = time.perf_counter()
     try:
-        run = subprocess.run([sys.executable, "-c", CLI, "render", str(model), "-o", str(png), "--size", SIZE,
-                              "--environment", ENVIRONMENT], capture_output=True, text=True, timeout=TIME_LIMIT_S)
+        run = subprocess.run([sys.executable, "-c", CLI, "render", str(model), "-o", str(png), "--hdr", str(exr),
+                              "--size", SIZE, "--environment", ENVIRONMENT]
+                             + (["--time", at_time] if at_time is not None and _animated(model) else []),
+                             capture_output=True, text=True, timeout=TIME_LIMIT_S)
     except subprocess.TimeoutExpired:
         return {"model": name, "result": "failed", "reason": f"over {TIME_LIMIT_S} s"}
     seconds = round(time.perf_counter() - start, 1)
@@ -88,17 +155,53 @@ def render(model: Path, root: Path, out_dir: Path) -> dict:
     errors = [line for line in lines if not line.startswith("warning: ")]
     reason = "" if result == "rendered" else (errors[-1] if errors else f"exit {run.returncode}")
     reason = reason.replace(f"{model}: ", "").replace("pbrlab render: error: ", "")
-    return {"model": name, "result": result, "reason": reason, "warnings": warnings, "seconds": seconds}
+    row = {"model": name, "result": result, "reason": reason, "warnings": warnings, "seconds": seconds}
+    if result != "rendered":
+        return row
+    linear = read_image(exr)
+    shown = content.content(linear, read_image(png))
+    row.update(result=shown.verdict, coverage=round(shown.coverage, 4), lit=round(shown.lit_fraction, 4))
+    if shown.verdict == "empty":
+        row["reason"] = "no covered pixel"
+    elif shown.verdict == "black":
+        row["reason"] = f"{shown.coverage:.1%} covered, every covered pixel at or under code {content.BLACK_CODE}"
+    elif sky_exr is not None:
+        peer = threejs_comparison(model, linear, sky_exr)
+        row["threejs"] = peer
+        if "error" in peer:
+            row["reason"] = f"three.js did not render it: {peer['error']}"
+        elif peer["coverage_pixels"] > 0 or (peer["mean_codes"] or 0.0) > COLOUR_SCREEN_CODES:
+            row["result"] = "differs from three.js"
+            mean = "none shared" if peer["mean_codes"] is None else f"{peer['mean_codes']:.1f} codes"
+            row["reason"] = (f"{peer['coverage_pixels']} pixels covered by one only, off silhouettes; "
+                             f"mean colour {mean} apart (coverage {shown.coverage:.1%} / three.js "
+                             f"{peer['threejs_coverage']:.1%})")
+    return row
+
+
+def _animated(model: Path) -> bool:
+    """Whether the file has animations (its JSON: the .gltf, or a .glb's first chunk)."""
+    data = model.read_bytes()
+    if model.suffix.lower() == ".glb":
+        length = int.from_bytes(data[12:16], "little")
+        data = data[20:20 + length]
+    try:
+        return bool(json.loads(data).get("animations"))
+    except (ValueError, AttributeError):
+        return False
 
 
 def markdown(rows: list[dict]) -> str:
     counts = Counter(r["result"] for r in rows)
     available = len(rows) - counts["not available"]
-    lines = [f"**{counts['rendered']} of {available}** variants rendered, {counts['refused']} refused, "
-             f"{counts['failed']} failed ({counts['not available']} more not available in the snapshot).", "",
+    compared = sum(1 for r in rows if "threejs" in r and "error" not in r["threejs"])
+    lines = [f"**{counts['drawn']} of {available}** variants drawn ("
+             + ", ".join(f"{counts[v]} {v}" for v in VERDICTS[1:-1])
+             + f"; {counts['not available']} more not available in the snapshot); "
+               f"{compared} compared with three.js.", "",
              "| model / variant / file | result | reason |", "|---|---|---|"]
     for r in rows:
-        if r["result"] != "rendered":
+        if r["result"] != "drawn" or r.get("reason"):
             lines.append(f"| {r['model']} | {r['result']} | {r['reason'].replace('|', '/')} |")
     return "\n".join(lines) + "\n"
 
@@ -111,7 +214,20 @@ def main(argv=None) -> int:
     parser.add_argument("--json", type=Path, help="write every row here")
     parser.add_argument("--markdown", type=Path, help="write the summary table here")
     parser.add_argument("--jobs", type=int, default=1, help="renders at once (default 1)")
+    parser.add_argument("--no-threejs", action="store_true", help="leave out the comparison with three.js")
+    parser.add_argument("--only", default=None, metavar="MODEL,...",
+                        help="only these models (names of Models/ folders, comma-separated)")
+    parser.add_argument("--time", default=None, metavar="T",
+                        help="render animated files at T seconds (pbrlab render --time: their first animation); "
+                             "three.js, which draws the nodes as written, is then left out")
     args = parser.parse_args(argv)
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.foundation import images
+
+    args.no_threejs = args.no_threejs or args.time is not None
+    missing = [] if args.no_threejs else renderers.missing_setup("threejs")
+    if missing:
+        print("three.js left out: " + "; ".join(missing), file=sys.stderr)
     with tempfile.TemporaryDirectory() as tmp:
         root, absent = args.models, []
         if args.git is not None:
@@ -119,12 +235,21 @@ def main(argv=None) -> int:
             absent = extract(args.git, root)
         out_dir = Path(tmp) / "renders"
         out_dir.mkdir()
+        sky_exr = None
+        if not args.no_threejs and not missing:
+            sky_exr = Path(tmp) / "sky.exr"  # the constant sky as an equirect image for three.js
+            sky = np.array([float(v) for v in ENVIRONMENT.split(",")], np.float32)
+            images.write_exr(sky_exr, np.ascontiguousarray(np.broadcast_to(sky, (16, 32, 3))))
         files = models(root)
+        if args.only:
+            chosen = set(args.only.split(","))
+            files = [f for f in files if f.relative_to(root / "Models").parts[0] in chosen]
+            absent = [a for a in absent if a.split("/")[1] in chosen]
         with ThreadPoolExecutor(max(1, args.jobs)) as pool:
             rows = [{"model": path.removeprefix("Models/"), "result": "not available",
                      "reason": "the snapshot lacks the file itself"} for path in absent]
-            for row in pool.map(lambda m: render(m, root, out_dir), files):
-                print(f"{row['result']:>13}  {row['model']}  {row['reason']}", file=sys.stderr)
+            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr, args.time), files):
+                print(f"{row['result']:>22}  {row['model']}  {row['reason']}", file=sys.stderr)
                 rows.append(row)
     if args.json:
         args.json.write_text(json.dumps(rows, indent=1) + "\n", encoding="utf-8")

@@ -9,6 +9,12 @@ rebuild them byte for byte (DracoPy 2.2.0 and meshoptimizer 0.2.30a0 encode).
     draco_sphere_fallback.glb the same Draco data, the extension used but not required, and
                               an uncompressed fallback holding what the Draco data decodes to
                               (the extension's "Implementation note")
+    draco_skinned_strip.glb   skinned_strip.gltf's two-joint strip, its POSITION, NORMAL,
+                              JOINTS_0 (UNSIGNED_BYTE) and WEIGHTS_0 in Draco data only
+                              (required); joint 1 is written rotated 60 degrees about +Z, so
+                              the pose depends on every vertex's joints and weights
+    draco_skinned_strip_fallback.glb  the same Draco data, not required, and an uncompressed
+                              fallback holding what it decodes to
     meshopt_instances.glb     EXT_meshopt_compression only (a placeholder fallback buffer):
                               the sphere's positions (ATTRIBUTES), BYTE normals (OCTAHEDRAL),
                               UVs (EXPONENTIAL), indices (TRIANGLES); a floor strip's indices
@@ -32,7 +38,8 @@ import DracoPy
 import meshoptimizer
 import numpy as np
 
-from make_assets import HERE, Builder, _look_rotation, checker
+from make_animated_assets import _data, strip
+from make_assets import HERE, Builder, _look_rotation, _quaternion, checker
 
 DRACO_BITS = {"position": 14, "normal": 10, "tex_coord": 12}
 DRACO_LEVEL = 7  # DracoPy's compression_level (0..10)
@@ -117,6 +124,54 @@ def draco_spheres():
         if not fallback:
             b.json["extensionsRequired"] = ["KHR_draco_mesh_compression"]
         b.write_glb(HERE / ("draco_sphere_fallback.glb" if fallback else "draco_sphere.glb"))
+
+
+SKINNED_DRACO_IDS = {"JOINTS_0": 5, "WEIGHTS_0": 6}  # Draco generic attributes' unique ids (any unused id)
+WRITTEN_BEND_DEGREES = 60.0
+
+
+def draco_skinned_strips():
+    positions, normals, faces, joints, weights = strip()
+    encoded = DracoPy.encode(positions.astype(np.float32), faces.astype(np.uint32), normals=normals,
+                             quantization_bits=DRACO_BITS["position"],
+                             normal_quantization_bits=DRACO_BITS["normal"], compression_level=DRACO_LEVEL,
+                             generic_attributes={SKINNED_DRACO_IDS["JOINTS_0"]: joints.astype(np.uint8),
+                                                 SKINNED_DRACO_IDS["WEIGHTS_0"]: weights.astype(np.float32)})
+    decoded = DracoPy.decode(encoded)
+    ids = {DRACO_TYPE[a["attribute_type"]]: a["unique_id"] for a in decoded.attributes if a["attribute_type"] != 4}
+    ids.update(SKINNED_DRACO_IDS)
+    values = {k: np.asarray(decoded.get_attribute_by_unique_id(i)["data"]) for k, i in ids.items()}
+    count, corners = len(values["POSITION"]), np.asarray(decoded.faces, np.uint16).reshape(-1)
+    kinds = {"POSITION": ("VEC3", 5126), "NORMAL": ("VEC3", 5126), "JOINTS_0": ("VEC4", 5121),
+             "WEIGHTS_0": ("VEC4", 5126)}
+    for fallback in (False, True):
+        b = Builder()
+        clay = b.add("materials", {"name": "clay", "pbrMetallicRoughness": {
+            "baseColorFactor": [0.8, 0.5, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 0.6}})
+        if fallback:
+            attributes = {k: b.accessor(values[k].astype(np.uint8 if c == 5121 else np.float32), kind, c,
+                                        bounds=k == "POSITION") for k, (kind, c) in kinds.items()}
+            indices = b.accessor(corners, "SCALAR", 5123)
+        else:
+            attributes = {k: _accessor_without_view(b, count, kind, c, values[k] if k == "POSITION" else None)
+                          for k, (kind, c) in kinds.items()}
+            indices = _accessor_without_view(b, len(corners), "SCALAR", 5123)
+        view = b.view(encoded)
+        b.json["meshes"].append({"primitives": [{
+            "attributes": attributes, "indices": indices, "material": clay, "mode": 4,
+            "extensions": {"KHR_draco_mesh_compression": {"bufferView": view, "attributes": ids}}}]})
+        root = b.add("nodes", {"name": "joint 0", "children": [1]})
+        b.add("nodes", {"name": "joint 1", "translation": [0.0, 1.0, 0.0],
+                        "rotation": _quaternion([0, 0, 1], math.radians(WRITTEN_BEND_DEGREES))})
+        inverse_bind = np.stack([np.eye(4), np.array([[1, 0, 0, 0], [0, 1, 0, -1.0], [0, 0, 1, 0], [0, 0, 0, 1]])])
+        b.add("skins", {"joints": [0, 1], "skeleton": 0,
+                        "inverseBindMatrices": _data(b, inverse_bind.transpose(0, 2, 1).reshape(-1, 16), "MAT4")})
+        skinned = b.add("nodes", {"name": "strip", "mesh": 0, "skin": 0})
+        _lit(b, [root, skinned], camera_at=(0.0, 1.0, 5.0))
+        b.json["extensionsUsed"] = sorted(b.json["extensionsUsed"] + ["KHR_draco_mesh_compression"])
+        if not fallback:
+            b.json["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+        b.write_glb(HERE / ("draco_skinned_strip_fallback.glb" if fallback else "draco_skinned_strip.glb"))
 
 
 # ----------------------------------------------------------------------------- meshopt filters
@@ -321,6 +376,7 @@ def morph_scenes():
 
 def main():
     draco_spheres()
+    draco_skinned_strips()
     meshopt_instances()
     morph_scenes()
 

@@ -152,8 +152,11 @@ def run(args) -> int:
 
 
 def _render(args) -> int:
+    import sys
+
     from ..gpu import gl
     from ..foundation import images, outputs, progress
+    from ..render.empty_frame import empty_frame_reason
     from ..render.renderer import input_files, render_scene
 
     size = parse_size(args.size)
@@ -175,6 +178,9 @@ def _render(args) -> int:
         kind = "specialised" if rendering.programs.specialised else "full"
         console.note(f"{rendering.programs.distinct} {kind} program(s)")
         check_finite(rendering.linear, args.scene)
+        empty = empty_frame_reason(scene, rendering.linear)  # written anyway, never silently
+        if empty:
+            print(f"warning: {args.scene}: {empty}", file=sys.stderr)
         if args.hdr:
             images.write_exr(args.hdr, rendering.linear, metadata=rendering.info, tx=tx)
         if args.output:
@@ -202,9 +208,11 @@ def register(sub, common):
     p.add_argument("--weights", default=None, metavar="W0,W1,...",
                    help="glTF: morph target weights for every mesh with targets (default: the node's or mesh's)")
     p.add_argument("--time", default=None, metavar="T",
-                   help="glTF: sample the animations at T seconds (default: the nodes as written, skins in that pose)")
-    p.add_argument("--animation", default=None, metavar="N|NAME",
-                   help="glTF: sample only this animation (an index or a name; default: all of them)")
+                   help="glTF: sample an animation at T seconds (--animation; default: the nodes as written, skins in "
+                        "that pose)")
+    p.add_argument("--animation", default=None, metavar="N|NAME|all",
+                   help="glTF: sample this animation (an index or a name), or all of them together "
+                        "(default: the first, with a warning naming the others)")
     p.add_argument("--allow-outside", action="store_true",
                    help="read files outside the model's folder: a glTF's buffers and images named by "
                         "absolute paths or .., and (every format) files reached through symbolic links "

@@ -26,10 +26,11 @@ def is_gltf(path) -> bool:
     return Path(path).suffix.lower() in GLTF_SUFFIXES
 
 
-def read_gltf(path):
-    """``gltf.load_gltf(path)``: what a JSON scene's ``{"gltf": ...}`` object takes in."""
+def read_gltf(path, **options):
+    """``gltf.load_gltf(path, time=, animation=)``: what a JSON scene's ``{"gltf": ...}``
+    object takes in."""
     from .gltf import load_gltf
-    return load_gltf(path)
+    return load_gltf(path, **options)
 
 
 def _may_be_unity(path: Path) -> bool:

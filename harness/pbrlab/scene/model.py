@@ -579,7 +579,8 @@ def _object(r: _Reader, materials: dict, base: Path) -> SceneObject:
 
 def _gltf_subscene(r: _Reader, base: Path, read_gltf):
     """An object ``{"gltf": "model.glb", "transform": {...}}``: the file's whole scene
-    (nodes, materials, lights, camera) placed by the transform. Its materials are named
+    (nodes, materials, lights, camera) placed by the transform; ``"time"`` and ``"animation"``
+    pose it as ``pbrlab render --time --animation`` do (gltf.animation). Its materials are named
     "<file name>/<material>"; its camera serves when the scene gives none. ``read_gltf(path)``
     reads the file (``gltf.load_gltf``): the scene model sits below the importers and is
     handed their reader (scene_files), never imports it (docs/layers.md)."""
@@ -588,8 +589,16 @@ def _gltf_subscene(r: _Reader, base: Path, read_gltf):
                "(load_scene or parse_scene), as pbrlab render does", "gltf")
     path = r.file("gltf", base)
     transform = _transform(r.child("transform", {}))
+    options = {}  # the glTF animation: "time" in seconds, "animation" an index, a name or "all"
+    if r.has("time"):
+        options["time"] = r.number("time", lo=-1e30, hi=1e30)
+    if r.has("animation"):
+        animation = r.raw("animation")
+        if isinstance(animation, bool) or not isinstance(animation, (int, str)) or animation == "":
+            r.fail(f"expected an animation index, name or \"all\", got {json.dumps(animation)}", "animation")
+        options["animation"] = str(animation)
     r.finish()
-    sub = read_gltf(path)
+    sub = read_gltf(path, **options)
     prefix = f"{path.name}/"
     materials = {}
     for name, material in sub.scene.materials.items():

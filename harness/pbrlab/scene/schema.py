@@ -195,7 +195,15 @@ def _objects() -> dict:
                         "type": "object",
                         "properties": {"gltf": {"description": "A .gltf or .glb file.", "type": "string",
                                                 "minLength": 1},
-                                       "transform": transform},
+                                       "transform": transform,
+                                       "time": {"description": "Sample an animation at this time in seconds "
+                                                               "(default: the nodes as written).",
+                                                "type": "number"},
+                                       "animation": {"description": "The animation sampled: an index, a name, or "
+                                                                    "\"all\" for every one together (default: "
+                                                                    "the first).",
+                                                     "oneOf": [{"type": "integer", "minimum": 0},
+                                                               {"type": "string", "minLength": 1}]}},
                         "required": ["gltf"], "additionalProperties": False},
     }
 

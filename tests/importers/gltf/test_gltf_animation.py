@@ -183,10 +183,51 @@ def test_cubic_spline_scale_of_the_root_joint():
     np.testing.assert_allclose(strip.geometry.positions, 1.125 * _bent(0.0), rtol=0, atol=FLOAT32_INPUT)
 
 
-def test_all_animations_are_sampled_together_by_default():
-    strip, quad = _strip(time=0.5)
+FIRST_OF_FOUR = ("animation 0 sampled, the first of 4 (0 'bend', 1 'slide', 2 'breathe', 3 'morph'); glTF "
+                 "animations are alternatives: --animation NAME|INDEX picks another, --animation all samples them "
+                 "together")
+
+
+def test_the_first_animation_alone_is_sampled_by_default_and_the_others_are_named():
+    """glTF animations are alternatives (gltf/animation.py): at 0.5 s the default is "bend"
+    alone, 45 degrees, without breathe's 1.125 scale and with the quad unmorphed (0.5, not
+    0.75); the warning names all four."""
+    result = load_gltf(STRIP, size=SIZE, emit_warnings=False, time=0.5)
+    strip, quad = result.scene.objects[:2]
+    np.testing.assert_allclose(strip.geometry.positions, _bent(45.0), rtol=0, atol=FLOAT32_INPUT)
+    assert quad.geometry.positions[2, 1] == pytest.approx(0.5, abs=1e-6)
+    assert result.warnings == [FIRST_OF_FOUR]
+
+
+def test_animation_all_samples_every_animation_together():
+    strip, quad = _strip(time=0.5, animation="all")
     np.testing.assert_allclose(strip.geometry.positions, 1.125 * _bent(45.0), rtol=0, atol=2 * FLOAT32_INPUT)
     assert quad.geometry.positions[2, 1] == pytest.approx(0.75, abs=1e-6)
+
+
+def test_a_named_animation_or_a_file_with_one_gives_no_warning(tmp_path):
+    assert load_gltf(STRIP, size=SIZE, emit_warnings=False, time=0.5, animation="bend").warnings == []
+    doc = copy.deepcopy(DOC)
+    doc["animations"] = doc["animations"][:1]
+    assert load_gltf(write(tmp_path, doc), size=SIZE, emit_warnings=False, time=0.5).warnings == []
+
+
+def test_the_default_animation_is_named_on_the_command_line(tmp_path, capsys):
+    assert cli.main(["render", str(STRIP), "-o", str(tmp_path / "x.png"), "--size", "8x8", "--time", "0.5"]) == 0
+    assert f"warning: {FIRST_OF_FOUR}" in capsys.readouterr().err
+
+
+def test_a_json_scene_chooses_the_animation_of_its_gltf_object(tmp_path):
+    """The scene format's gltf object takes "time" and "animation" as the command line does."""
+    from pbrlab.importers.loader import load_scene
+    scene = {"objects": [{"gltf": str(STRIP), "time": 0.5, "animation": "all"}]}
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    strip = load_scene(tmp_path / "scene.json").objects[0]
+    np.testing.assert_allclose(strip.geometry.positions, 1.125 * _bent(45.0), rtol=0, atol=2 * FLOAT32_INPUT)
+    scene["objects"][0]["animation"] = 2.5
+    (tmp_path / "scene.json").write_text(json.dumps(scene))
+    with pytest.raises(SceneError, match=r"objects\[0\]\.animation: expected an animation index, name or \"all\""):
+        load_scene(tmp_path / "scene.json")
 
 
 @pytest.mark.parametrize("time, top", [(0.0, 0.5), (0.25, 0.625), (1.0, 1.0), (3.0, 1.0)])
@@ -237,7 +278,7 @@ def test_a_posed_render_differs_from_the_rest_pose(tmp_path, capsys):
     (["--time", "soon"], "--time soon: expected a finite number"),
     (["--time", "1", "--animation", "wave"],
      "--animation wave: no animation has that index or name (the file's animations: 0 'bend', 1 'slide', "
-     "2 'breathe', 3 'morph')"),
+     "2 'breathe', 3 'morph'; or all)"),
     (["--animation", "4"], "--animation 4: no animation has that index or name"),
 ])
 def test_bad_time_and_animation_are_refused_by_name(tmp_path, capsys, args, message):

@@ -86,8 +86,8 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     ``weights``: morph target weights for every mesh with targets (default: each node's
     or mesh's own, gltf.morph).
     ``time``: the animation time in seconds the nodes and morph weights are sampled at, and
-    ``animation`` the index or name of the one animation sampled (default: all of them at
-    ``time``; without either the nodes as written, gltf.animation). Skinned meshes are
+    ``animation`` the index or name of the animation sampled, or "all" (default: the first,
+    with a warning naming the others; without either the nodes as written, gltf.animation). Skinned meshes are
     posed by their joints either way (gltf.skin).
     ``allow_outside``: buffers and images may be files outside the glTF's folder (by
     default only files in it or below it are read: a downloaded model cannot read elsewhere).
@@ -113,7 +113,7 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
     if scene is not None and not 0 <= scene < len(scenes):
         doc.fail("scenes", f"--scene {scene}: the file has {len(scenes)} scene{'s' * (len(scenes) != 1)}"
                            + (f" (0 to {len(scenes) - 1})" if scenes else ""))
-    pose = animations.sample(doc, time, animation)
+    pose = animations.sample(doc, time, animation, warn)
     worlds = None  # every node's world matrix, computed once a skin needs its joints'
     variant_index = None
     for name, spec in root.extensions():

@@ -126,7 +126,9 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
 def _decoded_values(doc, decoded: np.ndarray, where, name, use, component, n, n_elements) -> np.ndarray:
     """Decoded values checked against their accessor: the same element count and size,
     and the accessor's component type (a float accessor takes float data; an integer one,
-    normalized or not, the same integers). Indices take any integers."""
+    normalized or not, integers in its component type's range: Draco data may store them
+    wider, as Khronos' Draco BrainStem does its UNSIGNED_SHORT JOINTS_0 in uint32). Indices
+    take any integers."""
     if decoded.shape != (n_elements, n):
         doc.fail(where, f"the compressed data decodes {decoded.shape[0]} elements of {decoded.shape[1]} "
                         f"components; {name} says {n_elements} of {n}")
@@ -135,6 +137,12 @@ def _decoded_values(doc, decoded: np.ndarray, where, name, use, component, n, n_
     expected = np.dtype(COMPONENT_TYPES[component])
     if decoded.dtype.kind == "f" and component == FLOAT or decoded.dtype == expected:
         return decoded
+    if decoded.dtype.kind in "iu" and expected.kind in "iu":  # stored wider than the accessor says
+        info = np.iinfo(expected)
+        if decoded.size == 0 or (decoded.min() >= info.min and decoded.max() <= info.max):
+            return decoded.astype(expected)
+        doc.fail(where, f"the compressed data decodes integers from {int(decoded.min())} to {int(decoded.max())}; "
+                        f"{name} has components {COMPONENT_NAMES[component]} ({info.min} to {info.max})")
     doc.fail(where, f"the compressed data decodes {decoded.dtype} values; {name} has components "
                     f"{COMPONENT_NAMES[component]}")
 

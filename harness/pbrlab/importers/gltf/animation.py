@@ -16,8 +16,16 @@ With t_k <= T < t_(k+1), td = t_(k+1) - t_k and s = (T - t_k) / td (Appendix C):
                  holds a_k, v_k, b_k in that order); a rotation is normalised after.
 
 Outside the keyframes' time range a channel holds its first or last keyframe's value
-(clamped; T = t_last gives v_last exactly). Animations are independent (3.11): by default
-all of them are sampled at T; ``--animation N|NAME`` samples one.
+(clamped; T = t_last gives v_last exactly).
+
+Which animations: the first by default, with a warning naming the others when the file has
+several; ``--animation N|NAME`` samples one, ``--animation all`` every one at once (a clip
+named "all" is chosen by its name first). glTF stores animations as alternatives: the spec
+(3.11, Note) "defines only animation storage ... no particular runtime behavior, such as:
+order of playing, auto-start", and its Implementation Note recommends that "each animation
+is self contained as an action" ("Walk" and "Run"); <model-viewer>, without animation-name,
+"always picks the first animation it finds in the model". Sampling every clip together
+mixes alternatives into one pose (Fox's Survey, Walk and Run; issue 39).
 """
 
 from __future__ import annotations
@@ -99,21 +107,37 @@ def interpolate(times: np.ndarray, values: np.ndarray, interpolation: str, t: fl
     return out
 
 
-def chosen_animations(doc: Document, animation: str | int | None) -> list[int]:
-    """The animations sampled: all of them, or the one ``--animation`` names (an index or
-    a name), refused with the file's list when it names none."""
+ALL = "all"  # --animation all: every animation sampled together
+
+
+def listed_animations(doc: Document) -> str:
+    """The file's animations as "0 'Survey', 1 'Walk'" (an unnamed one by its index)."""
+    names = [a.data.get("name") for a in doc.items("animations")]
+    return ", ".join(f"{i} {n!r}" if isinstance(n, str) else str(i) for i, n in enumerate(names)) or "none"
+
+
+def chosen_animations(doc: Document, animation: str | int | None, warn=None) -> list[int]:
+    """The animations sampled (module doc): the first, the one ``--animation`` names (an
+    index or a name), or all of them for "all"; refused with the file's list when it names
+    none. ``warn(message)`` hears which one was taken when the file has several and the
+    user named none."""
     animations = doc.items("animations")
-    if animation is None:
-        return list(range(len(animations)))
     names = [a.data.get("name") for a in animations]
-    listed = ", ".join(f"{i} {n!r}" if isinstance(n, str) else str(i) for i, n in enumerate(names)) or "none"
+    if animation is None:
+        if len(animations) > 1 and warn is not None:
+            warn(f"animation 0 sampled, the first of {len(animations)} ({listed_animations(doc)}); glTF "
+                 f"animations are alternatives: --animation NAME|INDEX picks another, --animation all samples "
+                 f"them together")
+        return [0]
     if animation in names:
         return [names.index(animation)]
     text = str(animation)
+    if text == ALL:
+        return list(range(len(animations)))
     if text.isdigit() and int(text) < len(animations):
         return [int(text)]
     doc.fail("animations", f"--animation {animation}: no animation has that index or name "
-                           f"(the file's animations: {listed})")
+                           f"(the file's animations: {listed_animations(doc)}; or all)")
 
 
 def check_time(time: float) -> float:
@@ -122,15 +146,15 @@ def check_time(time: float) -> float:
     return float(time)
 
 
-def sample(doc: Document, time: float | None, animation: str | None) -> Pose:
+def sample(doc: Document, time: float | None, animation: str | None, warn=None) -> Pose:
     """The pose at ``time`` (None with no animation chosen: no pose, the nodes as written;
-    an animation without a time: its first keyframes, t = 0)."""
+    an animation without a time: its first keyframes, t = 0). ``warn``: chosen_animations'."""
     if time is None and animation is None:
         return Pose()
     if not doc.items("animations"):
         doc.fail("animations", f"{'--time' if time is not None else '--animation'}: the file has no animations")
     time = 0.0 if time is None else check_time(time)
-    chosen = chosen_animations(doc, animation)
+    chosen = chosen_animations(doc, animation, warn)
     pose = Pose(time=time, animations=tuple(chosen))
     nodes = doc.items("nodes")
     for index in chosen:

@@ -39,7 +39,8 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
     ``needs_tangents_from``: (UV set, the 2x2 linear part of its KHR_texture_transform as a
     flat tuple or None) of the material's normal map, or None.
     ``weights``: its mesh's morph target weights (gltf.morph). ``posing``: a skin's
-    (attributes, count, positions, normals, tangents) -> the posed three (gltf.skin)."""
+    (attributes, count, positions, normals, tangents, decoded attributes) -> the posed three
+    (gltf.skin)."""
     where = primitive.path
     mode = primitive.enum("mode", tuple(range(7)), TRIANGLES, {**MODE_NAMES, **MODES})
     attributes = primitive.object("attributes")
@@ -82,7 +83,7 @@ def read_primitive(doc: Document, mesh: int, prim_index: int, primitive: FieldRe
                                                              "TANGENT": tangents}, count, warn, mesh, prim_index)
         positions, normals, tangents = displaced["POSITION"], displaced["NORMAL"], displaced["TANGENT"]
     if posing is not None:  # a skin poses the morphed mesh (3.7.3.3: morph targets first)
-        positions, normals, tangents = posing(attributes, count, positions, normals, tangents)
+        positions, normals, tangents = posing(attributes, count, positions, normals, tangents, decoded)
     for ext, _ in primitive.extensions():
         if ext == draco.EXTENSION and compressed is None:
             warn(f"{ext} ignored in mesh {mesh} primitive {prim_index} ({draco.PACKAGE} is not installed: "

@@ -44,8 +44,13 @@ def joint_matrices(doc: Document, skin_index: int, worlds: dict) -> np.ndarray:
     return np.stack([worlds[j] for j in joints]) @ inverse_bind
 
 
-def influences(doc: Document, attributes, count: int, joint_count: int, where: str):
-    """(joints (count, 4k) int, weights (count, 4k)) of every JOINTS_n / WEIGHTS_n pair."""
+def influences(doc: Document, attributes, count: int, joint_count: int, where: str, decoded: dict | None = None):
+    """(joints (count, 4k) int, weights (count, 4k)) of every JOINTS_n / WEIGHTS_n pair.
+    ``decoded``: glTF semantic -> values a compression extension decoded (gltf.draco); an
+    attribute it lists is read from them, not from its accessor's buffer view (which a
+    KHR_draco_mesh_compression primitive leaves out: the spec's zeros would weigh every
+    vertex 0 and collapse the mesh to a point)."""
+    decoded = decoded or {}
     joints, weights = [], []
     n = 0
     while attributes.has(f"JOINTS_{n}") or attributes.has(f"WEIGHTS_{n}"):
@@ -54,9 +59,9 @@ def influences(doc: Document, attributes, count: int, joint_count: int, where: s
                 attributes.fail(f"has {f'JOINTS_{n}' if name.startswith('W') else f'WEIGHTS_{n}'} "
                                 f"without {name} (spec 3.7.3.3: they come in pairs)")
         j = read_accessor(doc, attributes.index(f"JOINTS_{n}", "accessors"), f"{attributes.path}.JOINTS_{n}",
-                          "JOINTS", count).astype(np.int64)
+                          "JOINTS", count, decoded=decoded.get(f"JOINTS_{n}")).astype(np.int64)
         w = read_accessor(doc, attributes.index(f"WEIGHTS_{n}", "accessors"), f"{attributes.path}.WEIGHTS_{n}",
-                          "WEIGHTS", count)
+                          "WEIGHTS", count, decoded=decoded.get(f"WEIGHTS_{n}"))
         bad = np.flatnonzero((j >= joint_count).any(axis=1) & (w > 0).any(axis=1))
         if len(bad):
             attributes.fail(f"JOINTS_{n}: vertex {int(bad[0])} names joint {int(j[bad[0]].max())}; "
@@ -111,7 +116,7 @@ def mirrors(matrices: np.ndarray) -> bool:
 
 def posing(doc: Document, skin_index: int, matrices: np.ndarray):
     """The ``posing`` step gltf.geometry runs on a primitive the skin deforms."""
-    def pose(attributes, count, positions, normals, tangents):
-        joints, weights = influences(doc, attributes, count, len(matrices), f"skins[{skin_index}]")
+    def pose(attributes, count, positions, normals, tangents, decoded=None):
+        joints, weights = influences(doc, attributes, count, len(matrices), f"skins[{skin_index}]", decoded)
         return pose_vertices(skin_matrices(joints, weights, matrices), positions, normals, tangents)
     return pose
