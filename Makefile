@@ -1,6 +1,6 @@
 # The two commands a new user needs (see README.md):
 #   make demo   set everything up, render the default material charts to out/
-#   make test   set everything up, run the whole test suite (about 10 minutes on 2 cores)
+#   make test   set everything up, run the whole test suite (about 10 minutes on a quiet 2-core machine)
 #   make check  set everything up, run the quick subset: every layer, the slow modules left out (tests/slow_modules.py)
 .PHONY: setup demo test check bench clean
 
