@@ -13,37 +13,21 @@ scene without objects: its status says it drew, and 0.0 % of its canvas differs.
 
 from __future__ import annotations
 
-import json
-import os
-import signal
-import subprocess
 from pathlib import Path
 
 import numpy as np
 
+from browser_example import run_render_mjs
 from pbrlab.foundation import images
 
 PAGE_BACKGROUND = np.array([0x22, 0x22, 0x22])  # index.html's body background
 DRAWN_STEP = 8            # 8-bit steps from the background that count as drawn
 MIN_DRAWN_FRACTION = 0.25
-TIMEOUT_S = 240
 
 
 def view_of_page(tool: Path, scene: Path, library: Path, dfg: Path, tmp: Path) -> tuple[str, np.ndarray, list[str]]:
     """(status line, canvas RGB as uint8 HxWx3, console messages) of the example's page."""
-    spec = tmp / "show.json"
-    spec.write_text(json.dumps({"scene": str(scene), "library": str(library), "dfg": str(dfg), "show": True}),
-                    encoding="utf-8")
-    node = subprocess.Popen(["node", str(tool / "render.mjs"), str(spec), str(tmp / "page")],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
-    try:
-        stdout, stderr = node.communicate(timeout=TIMEOUT_S)
-    except subprocess.TimeoutExpired:
-        os.killpg(node.pid, signal.SIGKILL)
-        node.communicate()
-        raise
-    assert node.returncode == 0, stderr or stdout
-    meta = json.loads((tmp / "page.json").read_text(encoding="utf-8"))
+    meta = run_render_mjs(tool, {"scene": scene, "library": library, "dfg": dfg, "show": True}, tmp / "page")
     pixels = images.read_image(tmp / "page.png")
     assert pixels.dtype == np.uint8, pixels.dtype
     return meta["status"], pixels[..., :3], meta["messages"]

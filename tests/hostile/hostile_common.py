@@ -64,3 +64,18 @@ def assert_clean_refusal(exc, origin=None):
     assert "Traceback" not in text
     if origin is not None:
         assert text.startswith(origin), text
+
+
+# A Unity surface shader that shows its one texture property (the round-three path and output tests).
+UNITY_TEXTURE = """Shader "Test/Texture" {
+    Properties { _MainTex ("Texture", 2D) = "white" {} }
+    SubShader {
+        CGPROGRAM
+        #pragma surface surf Lambert
+        struct Input { float2 uv_MainTex; };
+        sampler2D _MainTex;
+        void surf (Input IN, inout SurfaceOutput o) { o.Albedo = tex2D (_MainTex, IN.uv_MainTex).rgb; }
+        ENDCG
+    }
+}
+"""

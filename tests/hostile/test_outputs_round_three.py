@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from hostile_common import base_scene
+from hostile_common import UNITY_TEXTURE, base_scene
 from pbrlab.commands import cli
 from pbrlab.foundation import images
 from pbrlab.foundation.locations import checkout_folder
@@ -242,25 +242,13 @@ def test_demo_never_writes_into_the_goldens(tmp_path, capsys, census):
     census["output = input", "refused cleanly"] += 1
 
 
-SHADER = """Shader "Test/Texture" {
-    Properties { _MainTex ("Texture", 2D) = "white" {} }
-    SubShader {
-        CGPROGRAM
-        #pragma surface surf Lambert
-        struct Input { float2 uv_MainTex; };
-        sampler2D _MainTex;
-        void surf (Input IN, inout SurfaceOutput o) { o.Albedo = tex2D (_MainTex, IN.uv_MainTex).rgb; }
-        ENDCG
-    }
-}
-"""
 
 
 @pytest.mark.parametrize("named", ["as written", "through a link"])
 def test_a_unity_texture_property_is_never_the_output(tmp_path, capsys, named, census):
     images.write_png(tmp_path / "tex.png", np.full((4, 4, 4), 200, np.uint8))
     before = (tmp_path / "tex.png").read_bytes()
-    (tmp_path / "tex.shader").write_text(SHADER)
+    (tmp_path / "tex.shader").write_text(UNITY_TEXTURE)
     scene = base_scene()
     scene["materials"]["m"] = {"surface": "tex.shader", "properties": {"_MainTex": {"path": "tex.png"}}}
     (tmp_path / "scene.json").write_text(json.dumps(scene))

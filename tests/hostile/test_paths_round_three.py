@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from hostile_common import base_scene
+from hostile_common import UNITY_TEXTURE, base_scene
 from pbrlab.commands import cli
 from pbrlab.foundation import images
 
@@ -74,18 +74,6 @@ def _quad(image_uri: str | None = None, buffer_uri: str | None = None) -> dict:
 SURFACE = "void surf(Input IN, inout SurfaceOutputStandard o) {\n    o.Albedo = vec3(0.8, 0.4, 0.2);\n}\n"
 SURFACE_INCLUDING = '#include "helper.glsl"\n' + SURFACE.replace("vec3(0.8, 0.4, 0.2)", "helper_albedo()")
 HELPER = "vec3 helper_albedo() { return vec3(1.0, 0.0, 0.0); }\n"
-UNITY_TEXTURE = """Shader "Test/Texture" {
-    Properties { _MainTex ("Texture", 2D) = "white" {} }
-    SubShader {
-        CGPROGRAM
-        #pragma surface surf Lambert
-        struct Input { float2 uv_MainTex; };
-        sampler2D _MainTex;
-        void surf (Input IN, inout SurfaceOutput o) { o.Albedo = tex2D (_MainTex, IN.uv_MainTex).rgb; }
-        ENDCG
-    }
-}
-"""
 UNITY_INCLUDING = UNITY_TEXTURE.replace("#pragma surface surf Lambert",
                                         '#pragma surface surf Lambert\n        #include "helper.cginc"')
 UNITY_HELPER = "float helper_value() { return 1.0; }\n"
