@@ -13,11 +13,12 @@ scene without objects: its status says it drew, and 0.0 % of its canvas differs.
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
 
-from browser_example import run_render_mjs
+from browser_example import is_driver_performance_notice, run_render_mjs
 from pbrlab.foundation import images
 
 PAGE_BACKGROUND = np.array([0x22, 0x22, 0x22])  # index.html's body background
@@ -35,3 +36,16 @@ def view_of_page(tool: Path, scene: Path, library: Path, dfg: Path, tmp: Path) -
 
 def drawn_fraction(rgb: np.ndarray) -> float:
     return float((np.abs(rgb.astype(np.int16) - PAGE_BACKGROUND).max(axis=-1) > DRAWN_STEP).mean())
+
+
+def page_of_scene(tool: Path, example: Path, files: dict, tmp: Path, without_objects: bool = False):
+    """(status line, drawn fraction, console messages other than driver notices) of the example's
+    page drawing its scene.json (or, for the control, that scene without objects)."""
+    scene = example / "scene.json"
+    if without_objects:
+        empty = json.loads(scene.read_text(encoding="utf-8"))
+        empty["objects"] = []
+        scene = tmp / "scene.json"
+        scene.write_text(json.dumps(empty), encoding="utf-8")
+    status, rgb, messages = view_of_page(tool, scene, files["library"], files["dfg"], tmp)
+    return status, drawn_fraction(rgb), [m for m in messages if not is_driver_performance_notice(m)]
