@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...foundation import disk_cache
 from .document import Document
 from .fields import FieldReader, shown
 
@@ -65,6 +66,12 @@ QUANTIZED_USES = {"POSITION": _INTEGERS, "NORMAL": {(5120, True), (5122, True)},
                   "TARGET_NORMAL": {(5120, True), (5122, True)}, "TARGET_TANGENT": {(5120, True), (5122, True)}}
 
 
+# An accessor without a bufferView is zeros made from nothing (a few bytes of JSON can ask for
+# billions): its float64 array is bounded by the share of one array in the 2 GiB memory budget
+# of a render, the disk cache's per-entry limit (foundation/disk_cache.py: 256 MiB, a mesh of 4.4
+# million vertices). An accessor read from a buffer is bounded by the file itself.
+MAX_UNBACKED_BYTES = disk_cache.MAX_ENTRY_BYTES
+
 def uses_quantization(doc: Document) -> bool:
     return QUANTIZATION in doc.root.strings("extensionsUsed")
 
@@ -107,8 +114,12 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
     view_index = accessor.index("bufferView", "bufferViews")
     if decoded is not None:
         values = _decoded_values(doc, decoded, where, name, use, component, n, n_elements)
-    elif view_index is None:
-        values = np.zeros((n_elements, n), dtype)  # spec 3.6.2.4: no buffer view means zeros
+    elif view_index is None:  # spec 3.6.2.4: no buffer view means zeros, which the file does not hold
+        if n_elements * n * 8 > MAX_UNBACKED_BYTES:
+            doc.fail(where, f"{name} has no bufferView and {n_elements} elements: {n_elements * n * 8 >> 20} MiB "
+                            f"of zeros as float64, over the limit of {MAX_UNBACKED_BYTES >> 20} MiB "
+                            "(accessors.MAX_UNBACKED_BYTES)")
+        values = np.zeros((n_elements, n), dtype)
     else:
         offset = accessor.integer("byteOffset", 0)
         values = _from_buffer_view(doc, view_index, offset, name, where, dtype, n, n_elements, strided=True)
