@@ -20,6 +20,7 @@ from ..foundation.version import __version__
 from ..foundation import console, outputs
 from ..foundation.errors import PbrlabError
 from ..gpu.gl import BACKENDS
+from ..gpu import driver_time_limit
 
 
 class _VersionAction(argparse.Action):
@@ -86,6 +87,7 @@ def main(argv=None) -> int:
     parser = build_parser(argv)
     args = parser.parse_args(argv)
     console.set_level(getattr(args, "verbosity", console.NORMAL))
+    driver_time_limit.enable()  # a compile that runs for hours ends with a message
     try:
         with outputs.signal_cleanup():
             return int(args.run(args) or 0)

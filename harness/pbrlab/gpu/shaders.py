@@ -33,6 +33,7 @@ from .compile_messages import compile_failure
 from . import source_limits
 from ..foundation import disk_cache
 from .cancellation import dies_on_signal
+from .driver_time_limit import within_time_limit
 
 GLSL_ROOT = locate("glsl")  # $PBRLAB_GLSL_ROOT, the wheel's package data, or the checkout
 UMBRELLA_INCLUDE = "pbr/pbr.glsl"
@@ -384,12 +385,26 @@ def check_limits(source: Source) -> None:
     disk_cache.store(WITHIN_LIMITS_KIND, name, b"ok")
 
 
+_PACKAGE_FILES = (str(Path(__file__).resolve().parents[1]), str(GLSL_ROOT))
+
+
+def program_label(vertex: Source, fragment: Source) -> str:
+    """The files of a program a user wrote (not pbrlab's templates or library), for a
+    message about the whole program; pbrlab's own entry files where there are none."""
+    files = list(dict.fromkeys(fragment.files[:1] + vertex.files[:1] + fragment.files + vertex.files))
+    own = [f for f in files if f and not f.startswith(_PACKAGE_FILES) and not f.startswith("<")]
+    named = own or files[:2]
+    more = f" and {len(own) - 3} more files" if len(own) > 3 else ""
+    return "the program of " + ", ".join(named[:3]) + more
+
+
 def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> moderngl.Program:
     """Compile and link; errors are reported at the original file and line. The texts are
     checked against source_limits first (size, nesting, arrays, macro expansion), and the
     compile, in-process in the driver, ends the process at once on SIGINT, SIGTERM or SIGHUP
     (cancellation.dies_on_signal). On llvmpipe a loop with literal bounds past its iteration
-    cap gives a LoopLimitWarning naming it."""
+    cap gives a LoopLimitWarning naming it. Under the ``pbrlab`` command the compile has a
+    time limit (driver_time_limit: the process ends with a message naming the program)."""
     for stage in (vertex, fragment):
         check_limits(stage)
     if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
@@ -397,7 +412,7 @@ def build_program(ctx: moderngl.Context, vertex: Source, fragment: Source) -> mo
             for message in loop_limit_warnings(stage):
                 warnings.warn(message, LoopLimitWarning, stacklevel=2)
     try:
-        with dies_on_signal():
+        with dies_on_signal(), within_time_limit(f"compiling {program_label(vertex, fragment)}"):
             return ctx.program(vertex_shader=vertex.text, fragment_shader=fragment.text)
     except moderngl.Error as exc:
         log = str(exc)

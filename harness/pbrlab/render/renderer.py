@@ -30,6 +30,7 @@ from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
 from ..gpu.cancellation import dies_on_signal
+from ..gpu.driver_time_limit import within_time_limit
 from . import transmission_copy
 from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
@@ -456,7 +457,8 @@ def _draw_sphere(ctx, hdr, obj, material, material_pass, defines, draw, grabbed)
         ctx.enable(moderngl.CULL_FACE)
         ctx.cull_face = "front"
     vao = ctx.vertex_array(program, [(draw.cube_vbo, "3f", "in_position")], index_buffer=draw.cube_ibo)
-    with dies_on_signal():  # llvmpipe compiles a program's code at its first draw
+    # llvmpipe compiles a program's code at its first draw
+    with dies_on_signal(), within_time_limit(f"drawing {obj.where or 'a sphere'} (material {material.name!r})"):
         vao.render(moderngl.TRIANGLES, vertices=3 if inside else 36)
     vao.release()
 
@@ -499,7 +501,8 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
     topology = "triangles" if obj.geometry is None else obj.geometry.topology
-    with dies_on_signal():  # llvmpipe compiles a program's code at its first draw
+    # llvmpipe compiles a program's code at its first draw
+    with dies_on_signal(), within_time_limit(f"drawing {obj.where or 'an object'} (material {material.name!r})"):
         vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
     for resource in [vao, *buffers]:
         resource.release()
