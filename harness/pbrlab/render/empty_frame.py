@@ -9,6 +9,9 @@ The causes are told apart from the scene itself, in this order:
   - out of view: no object's bounds reach into the view frustum (render.depth_range);
   - otherwise: the geometry is in view and still covers no pixel centre (materials of
     alpha 0, culled faces, triangles thinner than a pixel).
+A frame whose covered pixels are all exactly black is reported too: a scene without a light
+or an environment (a glTF file without KHR_lights_punctual rendered without --environment
+drew an opaque black PNG, exit 0), or lights that reach no visible surface.
 """
 
 from __future__ import annotations
@@ -37,9 +40,17 @@ def _triangle_area(obj) -> float:
 
 
 def empty_frame_reason(scene, linear: np.ndarray) -> str | None:
-    """None when a pixel is covered; else a sentence naming why nothing is (module doc)."""
+    """None when a covered pixel has colour; else a sentence naming why none has (module doc)."""
+    linear = np.asarray(linear)
     if covered_fraction(linear) > 0:
-        return None
+        covered = linear[..., 3] > 0
+        if np.any(linear[..., :3][covered] != 0):
+            return None
+        if not scene.lights and scene.environment is None:
+            return ("every covered pixel is black: the scene has no light and no environment (for a glTF "
+                    "file without KHR_lights_punctual, give --environment R,G,B or an image)")
+        return ("every covered pixel is black: no light reaches a visible surface, and nothing visible "
+                "emits (lights behind the objects, of zero intensity, or out of range)")
     if not scene.objects:
         return "the scene has no object"
     if all(_triangle_area(obj) == 0 for obj in scene.objects):

@@ -328,6 +328,11 @@ def vertex_array(ctx, program, obj, instances: np.ndarray | None = None):
     buffers = [vbo, ibo]
     if instances is not None:
         buffers.append(ctx.buffer(np.ascontiguousarray(instances, np.float32).tobytes()))
-        content.append((buffers[-1], "16f 9f/i", "in_model", "in_normal_matrix"))
+        # a program that never reads the normal (an unlit pass, a scene without light) has
+        # no in_normal_matrix: its bytes are skipped, as the vertex attributes' above
+        instance_layout = [name for name in ("in_model", "in_normal_matrix") if program.get(name, None) is not None]
+        instance_format = ("16f" if "in_model" in instance_layout else "16x4") + (
+            " 9f/i" if "in_normal_matrix" in instance_layout else " 9x4/i")
+        content.append((buffers[-1], instance_format, *instance_layout))
     vao = ctx.vertex_array(program, content, index_buffer=ibo)
     return vao, buffers

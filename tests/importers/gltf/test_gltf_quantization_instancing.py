@@ -139,3 +139,28 @@ def test_instance_attributes_of_different_counts_are_refused(tmp_path):
     with pytest.raises(SceneError, match=r"EXT_mesh_gpu_instancing.attributes.SCALE: accessor \d+ has 2 elements, "
                                          r"expected 3"):
         _load(tmp_path, doc)
+
+
+@pytest.mark.parametrize("unlit", [False, True], ids=["lit_without_light", "KHR_materials_unlit"])
+def test_instances_draw_when_the_program_never_reads_the_normal(tmp_path, unlit):
+    """A program that reads no normal (a scene without light or environment, an unlit
+    material) has no in_normal_matrix attribute. Main: the instanced draw named it anyway,
+    a KeyError traceback from moderngl (found rendering 3,000 instances of a file without
+    lights, issue 39)."""
+    from pbrlab.render.empty_frame import empty_frame_reason
+
+    doc = _instanced(quad_document())
+    if unlit:
+        doc["materials"][0].setdefault("extensions", {})["KHR_materials_unlit"] = {}
+        doc["extensionsUsed"].append("KHR_materials_unlit")
+    scene = load_gltf(write(tmp_path, doc), environment=None, size=SIZE, emit_warnings=False).scene
+    linear = render_scene(scene).linear
+    covered = linear[..., 3] > 0
+    assert covered.mean() > 0.05
+    if unlit:  # the base colour as it is: (0.8, 0.2, 0.1) in linear
+        np.testing.assert_allclose(np.median(linear[..., :3][covered], axis=0), doc["materials"][0][
+            "pbrMetallicRoughness"]["baseColorFactor"][:3], rtol=1e-6)
+        assert empty_frame_reason(scene, linear) is None
+    else:  # no light at all: black, and said so (render.empty_frame)
+        assert not np.any(linear[..., :3][covered])
+        assert "no light and no environment" in empty_frame_reason(scene, linear)
