@@ -359,3 +359,43 @@ def test_a_program_inside_the_driver_time_limit_renders(tmp_path, census):
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "out.png").stat().st_size > 0
     census["limits round three", "handled"] += 1
+
+
+def test_instances_over_many_nodes_are_refused_by_their_total(tmp_path, census):
+    """Three nodes of 30,000 instances each: within the limit a node, over the file's limit
+    of placed objects (instancing.MAX_PLACED_OBJECTS). Main: accepted, 90,000 objects (about
+    80 s of rendering; a thousand such nodes, 65 million)."""
+    import base64
+    import json
+
+    import numpy as np
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "importers" / "gltf"))
+    from gltf_helpers import quad_document
+
+    n = 30_000
+    doc = quad_document()
+    blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+    translations = np.zeros((n, 3), np.float32)
+    translations[:, 0] = np.arange(n) * 1e-3
+    doc["bufferViews"].append({"buffer": 0, "byteOffset": len(blob), "byteLength": translations.nbytes})
+    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                             "count": n, "type": "VEC3"})
+    blob += translations.tobytes()
+    (tmp_path / "m.bin").write_bytes(blob)
+    doc["buffers"] = [{"byteLength": len(blob), "uri": "m.bin"}]
+    doc["nodes"] = [{"mesh": 0, "translation": [0, k, 0], "extensions": {"EXT_mesh_gpu_instancing": {
+        "attributes": {"TRANSLATION": len(doc["accessors"]) - 1}}}} for k in range(3)]
+    doc["scenes"] = [{"nodes": [0, 1, 2]}]
+    doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    (tmp_path / "m.gltf").write_text(json.dumps(doc))
+    _refused(_child("""
+        from pbrlab.foundation.errors import PbrlabError
+        from pbrlab.importers.gltf import load_gltf
+        try:
+            load_gltf("m.gltf", size=(8, 6), emit_warnings=False)
+            print("BUILT")
+        except PbrlabError as exc:
+            print("REFUSED", exc)
+        """, tmp_path), "m.gltf", "nodes[2]: the file places over 65536 objects")
+    census["limits round three", "refused cleanly"] += 1

@@ -180,6 +180,10 @@ def load_gltf(path, camera: int | None = None, environment: Environment | None =
             for obj in placed_objects if instances is not None else []:
                 obj.instance_group = (str(doc.path), node_index)
             objects += placed_objects
+            if len(objects) > instancing.MAX_PLACED_OBJECTS:
+                doc.fail(node.path, f"the file places over {instancing.MAX_PLACED_OBJECTS} objects (primitives of "
+                                    "every node and instance), over the limit (instancing.MAX_PLACED_OBJECTS: "
+                                    "about a minute of rendering)")
     for name in root.strings("extensionsUsed"):  # used where nothing above looked
         if name not in honoured and not any(m.startswith(f"{name} ") for m in messages):
             warn(f"{name} ignored (listed in extensionsUsed)")

@@ -112,6 +112,7 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         doc.fail(where, f"{name} has {n_elements} elements, expected {count}")
     dtype = np.dtype(COMPONENT_TYPES[component]).newbyteorder("<")
     view_index = accessor.index("bufferView", "bufferViews")
+    doc.charge_read(n_elements * n * 8, where, name)  # the float64 (indices: int64) array, before it is made
     if decoded is not None:
         values = _decoded_values(doc, decoded, where, name, use, component, n, n_elements)
     elif view_index is None:  # spec 3.6.2.4: no buffer view means zeros, which the file does not hold

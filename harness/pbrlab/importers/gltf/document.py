@@ -31,6 +31,14 @@ TOP_LEVEL_ARRAYS = ("accessors", "animations", "buffers", "bufferViews", "camera
                     "meshes", "nodes", "samplers", "scenes", "skins", "textures")
 LIGHTS = "extensions.KHR_lights_punctual.lights"  # the one collection outside the top level
 
+# What one import may read from the file's accessors, counted as the float64 arrays it makes
+# each time a mesh, node, skin or morph target reads one (an accessor named by 1,000 JOINTS_n
+# sets, morph targets or skinned nodes is read 1,000 times: a few kilobytes of JSON can
+# multiply a buffer that way). Half of a render's memory budget of 2 GiB (disk_cache.py; the
+# other half for the GL buffers, textures and the image), and about 3 s of numpy work at
+# 1 GB/s. The largest read of the 2023 Khronos sample set: see docs/faults.md.
+MAX_READ_BYTES = 1 << 30
+
 
 @dataclass
 class Document:
@@ -41,12 +49,22 @@ class Document:
     _buffers: dict = field(default_factory=dict)
     _items: dict = field(default_factory=dict)
     _decoded_views: dict = field(default_factory=dict)
+    read_bytes: int = 0  # float64 bytes of accessor data read so far (charge_read)
 
     def __post_init__(self):
         self.root = FieldReader(self.json, "", self)
 
     def fail(self, where: str, message: str):
         raise SceneError(f"{self.path}: {where}: {message}")
+
+    def charge_read(self, nbytes: int, where: str, what: str) -> None:
+        """Count ``nbytes`` of decoded data against MAX_READ_BYTES, refusing the file at
+        ``where`` once the import has read more (module doc of MAX_READ_BYTES)."""
+        self.read_bytes += int(nbytes)
+        if self.read_bytes > MAX_READ_BYTES:
+            self.fail(where, f"{what}: the file's accessors, read where its meshes, nodes, skins and morph "
+                             f"targets use them, come to over {MAX_READ_BYTES >> 20} MiB as float64 "
+                             f"(gltf.document.MAX_READ_BYTES: the import's share of a render's 2 GiB)")
 
     def items(self, key: str) -> list[FieldReader]:
         """The top-level array ``key`` (or LIGHTS) as readers, checked once."""

@@ -75,8 +75,13 @@ def influences(doc: Document, attributes, count: int, joint_count: int, where: s
 
 
 def skin_matrices(joints: np.ndarray, weights: np.ndarray, matrices: np.ndarray) -> np.ndarray:
-    """(count, 4, 4): each vertex's weighted sum of its joints' matrices."""
-    return np.einsum("vi,vijk->vjk", weights, matrices[joints])
+    """(count, 4, 4): each vertex's weighted sum of its joints' matrices, one influence
+    column at a time (gathering every column's matrices at once made a (count, 4k, 4, 4)
+    array: 16 times the joints' own size, k JOINTS_n sets deep)."""
+    out = np.zeros((len(joints), 4, 4))
+    for i in range(joints.shape[1]):
+        out += weights[:, i, None, None] * matrices[joints[:, i]]
+    return out
 
 
 def pose_vertices(skin: np.ndarray, positions, normals, tangents):
