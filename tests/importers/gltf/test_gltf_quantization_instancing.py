@@ -164,3 +164,13 @@ def test_instances_draw_when_the_program_never_reads_the_normal(tmp_path, unlit)
     else:  # no light at all: black, and said so (render.empty_frame)
         assert not np.any(linear[..., :3][covered])
         assert "no light and no environment" in empty_frame_reason(scene, linear)
+
+
+@pytest.mark.parametrize("component", [{}, [5122], "SHORT", None])
+def test_a_component_type_that_is_no_number_is_refused_in_a_quantized_file(tmp_path, component):
+    """Main: with KHR_mesh_quantization in extensionsUsed, a componentType of {} or [5122]
+    ended in "TypeError: unhashable type" (found by mutating MeshPrimitiveModes.gltf)."""
+    doc = quantized_quad()
+    doc["accessors"][0]["componentType"] = component
+    with pytest.raises(SceneError, match=r"POSITION: accessor 0 has components .*, expected"):
+        _load(tmp_path, doc)

@@ -104,7 +104,7 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         allowed = ", ".join(f"{COMPONENT_NAMES[c]}{' normalized' if n else ''}" for c, n in sorted(components))
         got = COMPONENT_NAMES.get(component, shown(component)) if type(component) is int else shown(component)
         hint = (f" (or, with {QUANTIZATION} in extensionsUsed, that type)"
-                if (component, normalized) in quantized else "")
+                if type(component) is int and (component, normalized) in quantized else "")
         doc.fail(where, f"{name} has components {got}{' normalized' if normalized else ''}, expected {allowed}{hint}")
     n = ELEMENT_SIZES[element]
     n_elements = accessor.integer("count", None, lo=1)
