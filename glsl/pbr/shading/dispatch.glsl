@@ -135,16 +135,17 @@
 //   HIGH   float32, V -> SMITH_GGX_CORRELATED (Heitz 2014): the exact model.
 //   MEDIUM float32, V -> SMITH_GGX_CORRELATED_FAST (Hammon 2017, no square roots, at most
 //          29 % from the exact V); the HIGH tier's guards. The tier that buys ALU time.
-//   LOW    a different lobe (issue 25: a tier that buys instructions): GGX D in the
-//          cancelling 1 - NdotH² (1 - alpha²) form times V -> SMITH_GGX_BOUND = 0.5 / n·(l + v)
+//   LOW    a different lobe (issue 25: a tier that buys instructions): GGX D (HIGH's
+//          cancellation-free |n × h|² form) times V -> SMITH_GGX_BOUND = 0.5 / n·(l + v)
 //          (Heitz's V with its square roots bounded by 1: no more energy than the exact lobe),
 //          Schlick's F as the other tiers (issue 35: "everything has Fresnel"; the former
 //          F -> F0 left a grazing mirror at 1 % of HIGH's lobe, 51 against 5069 1/sr at
 //          NdotL = NdotV = 1e-3, roughness 0.5, F0 0.04), minimum perceptual roughness 0.089
-//          (Filament's mobile floor, which keeps the cancelling D within 1.9e-3 where n·l and
-//          n·v are exact). Per light 45.5 / 43.5 / 44.5 RDNA3 / RDNA2 / GCN5 instructions,
-//          0.74x HIGH on RDNA3 (F = F0: 39.5 / 37.5 / 39.75, 0.64x; Schlick's rise costs 6 on
-//          RDNA3, the spherical-Gaussian form 6.1: docs/bench).
+//          (Filament's mobile floor: D's peak fits half, below). Per light 49.5 / 47.5 / 48.5
+//          RDNA3 / RDNA2 / GCN5 instructions, 0.80x HIGH on RDNA3 (issue 25's lobe, F = F0 and
+//          the cancelling 1 - NdotH² (1 - alpha²): 39.5 / 37.5 / 39.75, 0.64x; Schlick's rise
+//          costs 6 on RDNA3, the spherical-Gaussian form 6.1; the |n × h|² form 4 more, bought
+//          by rotated frames, where the cancelling form was off by up to 9e4: dv_ggx_smith_bound.glsl).
 //          Where floats may be 16-bit (PBR_HALF_ARITHMETIC) D · V is capped at PBR_HALF_MAX
 //          (pbr_specular_lobe_limit), and Hammon's V, if selected, runs in half's range
 //          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/checking/hardcases/test_half.py).
@@ -242,8 +243,9 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 // clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
 // quotient that needs no normalised h and none of the terms' own clamps: the
 // height-correlated Smith V (HIGH, pbr_DV_GGX_SmithCorrelated) and Hammon's fast form of it
-// (MEDIUM and LOW, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where floats may be
-// 16-bit, PBR_HALF_ARITHMETIC); their other preconditions are pbr_brdf_standard's: NdotL in
+// (MEDIUM, and LOW where selected, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where
+// floats may be 16-bit, PBR_HALF_ARITHMETIC) and LOW's bound of it (pbr_DV_GGX_SmithBound), all
+// three from |n × h|² (no cancellation at the peak in any frame); their other preconditions are pbr_brdf_standard's: NdotL in
 // [0, 1], NdotV in [PBR_MIN_NDOTV, 1], alpha from the tier's clamped roughness. Every other pair is the
 // product of the two dispatchers above, from the normalised h (each V term floors its
 // cosines at PBR_MIN_NDOTV itself).

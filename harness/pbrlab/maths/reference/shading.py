@@ -190,9 +190,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        if d_var == "GGX" and v_var == "SMITH_GGX_BOUND":  # LOW's lobe: 1 - saturate(NdotH²)
-            D = brdf.D_GGX_from_sin2(1.0 - np.clip(n_dot_h * n_dot_h, 0.0, 1.0), alpha)
-        elif d_var == "GGX":  # 1 - NdotH² from the rejection: no cancellation at the mirror
+        if d_var == "GGX":  # 1 - NdotH² from the rejection: no cancellation at the mirror (every tier)
             D = brdf.D_GGX_from_sin2(sin2, alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)
