@@ -36,28 +36,16 @@ from pbrlab import evaluate, vec3
 from pbrlab.checking.hardcases import grazing
 from pbrlab.maths.reference import shading
 
+import frames
+
 SAMPLES = 10 ** 6
 U = 2.0 ** -24
 FRAME_EXACT_REL = 1e-4  # test_grazing_mirrors.REL: every tier since issue 35
 
 
-def _rotations(count, rng):
-    """Uniform random rotations (unit quaternions from 4 normals: Shoemake 1992)."""
-    q = rng.normal(size=(count, 4))
-    q /= np.linalg.norm(q, axis=-1, keepdims=True)
-    w, x, y, z = q.T
-    return np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)], -1),
-                     np.stack([2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)], -1),
-                     np.stack([2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)], -1)], -2)
-
-
 @pytest.fixture(scope="module")
 def rotated():
-    sample = grazing.mirror_sample(SAMPLES, seed=35)
-    turn = _rotations(SAMPLES, np.random.default_rng(35))
-    out = {k: np.einsum("nij,nj->ni", turn, sample[k].astype(np.float64)).astype(np.float32) for k in ("n", "l", "v")}
-    out["r"] = sample["r"]
-    return out
+    return frames.rotated_mirror_sample(SAMPLES, seed=35)
 
 
 def rounding_bound(sample, quality):
