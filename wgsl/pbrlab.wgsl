@@ -1389,7 +1389,7 @@ fn pbr_DV_GGX_SmithBound(nDotH_8: f32, nCrossH2_8: f32, h2_8: f32, NdotL_28: f32
     var NdotV_27: f32;
     var alpha_37: f32;
     var a2_6: f32;
-    var cos2_: f32;
+    var invH2_2: f32;
     var dn_2: f32;
 
     nDotH_9 = nDotH_8;
@@ -1401,18 +1401,19 @@ fn pbr_DV_GGX_SmithBound(nDotH_8: f32, nCrossH2_8: f32, h2_8: f32, NdotL_28: f32
     let _e12 = alpha_37;
     let _e13 = alpha_37;
     a2_6 = (_e12 * _e13);
-    let _e16 = nDotH_9;
-    let _e17 = nDotH_9;
-    let _e20 = h2_9;
-    cos2_ = clamp(((_e16 * _e17) * (1f / _e20)), 0f, 1f);
-    let _e28 = cos2_;
+    let _e17 = h2_9;
+    invH2_2 = (1f / _e17);
+    let _e20 = nCrossH2_9;
+    let _e21 = invH2_2;
+    let _e22 = invH2_2;
+    let _e23 = a2_6;
+    let _e27 = a2_6;
+    dn_2 = ((_e20 * (_e21 - (_e22 * _e23))) + _e27);
     let _e30 = a2_6;
-    dn_2 = (1f - (_e28 * (1f - _e30)));
-    let _e35 = a2_6;
-    let _e40 = dn_2;
-    let _e41 = dn_2;
-    let _e43 = nDotH_9;
-    return ((_e35 * 0.15915494f) / ((_e40 * _e41) * _e43));
+    let _e35 = dn_2;
+    let _e36 = dn_2;
+    let _e38 = nDotH_9;
+    return ((_e30 * 0.15915494f) / ((_e35 * _e36) * _e38));
 }
 
 fn pbr_G_Implicit(NdotL_30: f32, NdotV_28: f32) -> f32 {

@@ -102,8 +102,8 @@ def test_shade_punctual_variant_matches_reference(scene, selector, value):
 
 
 def test_quality_tier_selects_visibility_and_explicit_selector_wins(scene):
-    """MEDIUM = HIGH with the fast V; LOW = its own lobe (V -> SMITH_GGX_BOUND, F -> F0, the
-    0.089 roughness floor; dispatch.glsl): bit for bit the explicit selectors at that floor,
+    """MEDIUM = HIGH with the fast V; LOW = its own lobe (V -> SMITH_GGX_BOUND, Schlick's F as
+    every tier since issue 35, the 0.089 roughness floor; dispatch.glsl): bit for bit the explicit selectors at that floor,
     and against the float64 reference; an explicit selector wins over the tier's default."""
     subset = {k: v[:5_000] for k, v in scene.items()}
     medium = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_MEDIUM"})
@@ -111,13 +111,13 @@ def test_quality_tier_selects_visibility_and_explicit_selector_wins(scene):
     np.testing.assert_array_equal(medium, fast)
     low = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW"})
     rough = subset["roughness"] >= shading.MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
-    bound = gpu_shade(subset, shading.glsl_defines(specular_v="SMITH_GGX_BOUND", specular_f="F0"))
+    bound = gpu_shade(subset, shading.glsl_defines(specular_v="SMITH_GGX_BOUND"))
     np.testing.assert_array_equal(low[rough], bound[rough])
     assert not np.array_equal(low[~rough], bound[~rough])  # the LOW floor acts below 0.089
     check_against_reference("pbr_shade_punctual quality=LOW", subset, quality="LOW")
     explicit = gpu_shade(subset, {"PBR_QUALITY": "PBR_QUALITY_LOW", **shading.glsl_defines(specular_v="KELEMEN")})
-    kelemen = gpu_shade(subset, shading.glsl_defines(specular_v="KELEMEN", specular_f="F0"))
-    np.testing.assert_array_equal(explicit[rough], kelemen[rough])  # the tier's floor and F still apply
+    kelemen = gpu_shade(subset, shading.glsl_defines(specular_v="KELEMEN"))
+    np.testing.assert_array_equal(explicit[rough], kelemen[rough])  # the tier's floor still applies
     assert not np.array_equal(low, gpu_shade(subset))
 
 

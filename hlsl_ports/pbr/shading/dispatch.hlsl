@@ -14,15 +14,17 @@
 // Config macros read: (each has a default, set below where undefined)
 //   PBR_QUALITY     PBR_QUALITY_HIGH (default, the exact model) | PBR_QUALITY_MEDIUM
 //                   (Hammon's V) | PBR_QUALITY_LOW (a cheaper lobe: V bounded without a square
-//                   root, no per-light Fresnel); see the tier block below; picks the defaults
+//                   root, Schlick's Fresnel kept); see the tier block below; picks the defaults
 //   PBR_SPECULAR_D  PBR_SPECULAR_D_GGX (default) | _BECKMANN | _BLINN_PHONG
 //   PBR_SPECULAR_V  PBR_SPECULAR_V_SMITH_GGX_CORRELATED (HIGH default)
 //                   | _SMITH_GGX_CORRELATED_FAST (MEDIUM default) | _SMITH_GGX | _SCHLICK_GGX
 //                   | _COOK_TORRANCE | _KELEMEN | _IMPLICIT | _SMITH_GGX_BOUND (LOW default)
-//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (HIGH, MEDIUM default) | _SCHLICK_SG | _NONE (F = 1,
+//   PBR_SPECULAR_F  PBR_SPECULAR_F_SCHLICK (every tier's default) | _SCHLICK_SG | _NONE (F = 1,
 //                   for white-furnace checks and debugging) | _F0 (F = f0, no Fresnel rise:
-//                   LOW default); both Schlick forms take F90 = pbr_f90_from_f0(f0), or
-//                   the caller's F90 through the _f90 forms (KHR_materials_specular)
+//                   an explicit choice only, no tier selects it: at a grazing mirror it
+//                   reflects 1 % of Schlick's lobe); both Schlick forms take F90 =
+//                   pbr_f90_from_f0(f0), or the caller's F90 through the _f90 forms
+//                   (KHR_materials_specular)
 //   PBR_DIFFUSE     PBR_DIFFUSE_LAMBERT (default) | PBR_DIFFUSE_BURLEY
 //   PBR_BRDF_MODEL  PBR_BRDF_MODEL_PBRLAB (default: the library's physical shading) |
 //                   PBR_BRDF_MODEL_UNITY (Unity's built-in BRDFs formula for formula,
@@ -134,12 +136,17 @@
 //   HIGH   float32, V -> SMITH_GGX_CORRELATED (Heitz 2014): the exact model.
 //   MEDIUM float32, V -> SMITH_GGX_CORRELATED_FAST (Hammon 2017, no square roots, at most
 //          29 % from the exact V); the HIGH tier's guards. The tier that buys ALU time.
-//   LOW    a different lobe (issue 25: a tier that buys instructions): GGX D in the
-//          cancelling 1 - NdotH² (1 - alpha²) form times V -> SMITH_GGX_BOUND = 0.5 / n·(l + v)
+//   LOW    a different lobe (issue 25: a tier that buys instructions): GGX D (HIGH's
+//          cancellation-free |n × h|² form) times V -> SMITH_GGX_BOUND = 0.5 / n·(l + v)
 //          (Heitz's V with its square roots bounded by 1: no more energy than the exact lobe),
-//          F -> F0 (no per-light Fresnel rise, as Unity's BRDF2 for direct light), minimum
-//          perceptual roughness 0.089 (Filament's mobile floor, which keeps the cancelling D
-//          within 1.9e-3). About 0.64x HIGH's RDNA3 instructions per light (docs/bench).
+//          Schlick's F as the other tiers (issue 35: "everything has Fresnel"; the former
+//          F -> F0 left a grazing mirror at 1 % of HIGH's lobe, 51 against 5069 1/sr at
+//          NdotL = NdotV = 1e-3, roughness 0.5, F0 0.04), minimum perceptual roughness 0.089
+//          (Filament's mobile floor: D's peak fits half, below). Per light 49.5 / 47.5 / 48.5
+//          RDNA3 / RDNA2 / GCN5 instructions, 0.80x HIGH on RDNA3 (issue 25's lobe, F = F0 and
+//          the cancelling 1 - NdotH² (1 - alpha²): 39.5 / 37.5 / 39.75, 0.64x; Schlick's rise
+//          costs 6 on RDNA3, the spherical-Gaussian form 6.1; the |n × h|² form 4 more, bought
+//          by rotated frames, where the cancelling form was off by up to 9e4: dv_ggx_smith_bound.hlsl).
 //          Where floats may be 16-bit (PBR_HALF_ARITHMETIC) D · V is capped at PBR_HALF_MAX
 //          (pbr_specular_lobe_limit), and Hammon's V, if selected, runs in half's range
 //          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/checking/hardcases/test_half.py).
@@ -154,10 +161,6 @@
 #  ifndef PBR_SPECULAR_V
 // PBR_SPECULAR_V_SMITH_GGX_BOUND as a number (glsl/README.md, one-level preprocessors)
 #define PBR_SPECULAR_V 8
-#  endif
-#  ifndef PBR_SPECULAR_F
-// PBR_SPECULAR_F_F0 as a number (glsl/README.md, one-level preprocessors)
-#define PBR_SPECULAR_F 4
 #  endif
 #  define PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS PBR_MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP
 #elif PBR_QUALITY == PBR_QUALITY_MEDIUM
@@ -241,8 +244,9 @@ float pbr_specular_V(float NdotL, float NdotV, float NdotH, float VdotH, float a
 // clamped to [0, 1] (0 below the surface). GGX with each tier's V is fused into one
 // quotient that needs no normalised h and none of the terms' own clamps: the
 // height-correlated Smith V (HIGH, pbr_DV_GGX_SmithCorrelated) and Hammon's fast form of it
-// (MEDIUM and LOW, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where floats may be
-// 16-bit, PBR_HALF_ARITHMETIC); their other preconditions are pbr_brdf_standard's: NdotL in
+// (MEDIUM, and LOW where selected, pbr_DV_GGX_SmithCorrelatedFast; LOW in half's range where
+// floats may be 16-bit, PBR_HALF_ARITHMETIC) and LOW's bound of it (pbr_DV_GGX_SmithBound), all
+// three from |n × h|² (no cancellation at the peak in any frame); their other preconditions are pbr_brdf_standard's: NdotL in
 // [0, 1], NdotV in [PBR_MIN_NDOTV, 1], alpha from the tier's clamped roughness. Every other pair is the
 // product of the two dispatchers above, from the normalised h (each V term floors its
 // cosines at PBR_MIN_NDOTV itself).

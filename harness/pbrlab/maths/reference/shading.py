@@ -26,7 +26,8 @@ QUALITY = ("LOW", "HIGH", "MEDIUM")
 # PBR_QUALITY -> default PBR_SPECULAR_V and PBR_SPECULAR_F (the tier block of dispatch.glsl)
 QUALITY_DEFAULT_V = {"LOW": "SMITH_GGX_BOUND", "MEDIUM": "SMITH_GGX_CORRELATED_FAST",
                      "HIGH": "SMITH_GGX_CORRELATED"}
-QUALITY_DEFAULT_F = {"LOW": "F0", "MEDIUM": "SCHLICK", "HIGH": "SCHLICK"}
+# (every tier keeps Schlick's Fresnel rise since issue 35; F0, F = f0, is an explicit choice only)
+QUALITY_DEFAULT_F = {"LOW": "SCHLICK", "MEDIUM": "SCHLICK", "HIGH": "SCHLICK"}
 # PBR_QUALITY -> PBR_TIER_MIN_PERCEPTUAL_ROUGHNESS and the cap of pbr_specular_lobe_limit
 QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
                                     "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
@@ -114,7 +115,7 @@ def specular_F(f0, VdotH, variant="SCHLICK", f90=None):
         return brdf.F_SchlickSG(f0, np.asarray(VdotH)[..., None], f90)
     if variant == "NONE":
         return np.ones(np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
-    if variant == "F0":  # no Fresnel rise (the LOW tier)
+    if variant == "F0":  # no Fresnel rise (an explicit choice; no tier selects it since issue 35)
         return np.broadcast_to(np.asarray(f0, np.float64), np.broadcast_shapes(np.shape(f0), np.shape(VdotH) + (3,)))
     raise ValueError(variant)
 
@@ -189,9 +190,7 @@ def brdf_standard(n, v, l, diffuse_color, f0, perceptual_roughness, *, specular_
     NdotH = np.clip(n_dot_h, 0.0, 1.0)
     VdotH = np.where(has_half, LdotH, 1.0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        if d_var == "GGX" and v_var == "SMITH_GGX_BOUND":  # LOW's lobe: 1 - saturate(NdotH²)
-            D = brdf.D_GGX_from_sin2(1.0 - np.clip(n_dot_h * n_dot_h, 0.0, 1.0), alpha)
-        elif d_var == "GGX":  # 1 - NdotH² from the rejection: no cancellation at the mirror
+        if d_var == "GGX":  # 1 - NdotH² from the rejection: no cancellation at the mirror (every tier)
             D = brdf.D_GGX_from_sin2(sin2, alpha)
         else:
             D = specular_D(NdotH, alpha, d_var)

@@ -1,0 +1,89 @@
+"""What each quality tier costs in the whole lit pixel (issue 35): static RDNA3 / RDNA2 / GCN5
+instructions and VGPRs of `pbrlab render`'s specialised GLSL program for the metallic-roughness
+class with one light (Mesa RADV/ACO on a null device: no GPU, nothing runs; pbrlab.bench.gpu's
+ACO_NOTE says what the figures are), per tier, with the parts that no tier changes measured by
+removing them from the program's text: the light (PBRLAB_DIRECTIONAL_COUNT 0) and the
+environment (PBRLAB_ENV undefined).
+
+Scenes: a metallic-workflow torus (a mesh: the sphere impostor's ray intersection would add
+its own cost) under a uniform environment colour, and the fidelity benchmark's DamagedHelmet
+(base colour, metallic-roughness, normal, occlusion and emission maps) under the sunrise HDR;
+each with one directional light. A benchmark: it prints figures and asserts nothing.
+
+    python benchmarks/tier_program_cost.py
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+from pbrlab.bench import gpu
+from pbrlab.checking.fidelity import staging
+from pbrlab.importers.loader import parse_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+HELMET = ROOT / "corpus/gltf/khronos/DamagedHelmet/DamagedHelmet.glb"
+LIGHT = {"type": "directional", "direction": [0.4, -0.8, -0.5], "color": [1, 1, 1], "intensity": 1.4}
+CAMERA = {"position": [0, 0, 3], "target": [0, 0, 0], "size": [64, 64]}
+QUALITIES = ("high", "medium", "low")
+PARTS = {"whole pixel": (), "without the light": (("#define PBRLAB_DIRECTIONAL_COUNT 1", "#define PBRLAB_DIRECTIONAL_COUNT 0"),),
+         "without the environment": (("#define PBRLAB_ENV 1\n", "\n"),)}
+
+
+def _scene(name: str, quality: str):
+    if name == "metallic torus":
+        return parse_scene({"camera": CAMERA, "lights": [LIGHT], "environment": {"color": [0.05, 0.06, 0.08]},
+                            "materials": {"m": {"workflow": "metallic", "albedo": [0.7, 0.08, 0.05], "metallic": 0.5,
+                                                "smoothness": 0.6}},
+                            "objects": [{"mesh": {"primitive": "torus", "major_radius": 0.6, "minor_radius": 0.2},
+                                         "material": "m"}],
+                            "render": {"quality": quality}}, origin=f"{name} ({quality})", base=ROOT)
+    return parse_scene({"camera": CAMERA, "lights": [LIGHT],
+                        "environment": {"path": str(staging.ENVIRONMENTS_DIR / "sunrise.exr")},
+                        "objects": [{"gltf": str(HELMET)}], "render": {"quality": quality}},
+                       origin=f"{name} ({quality})", base=HELMET.parent)
+
+
+def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
+    """{(quality, part): {family: (instructions, VGPRs)}} of the scene's largest program."""
+    jobs = {}
+    for quality in QUALITIES:
+        for index, program in enumerate(gpu.scene_programs(_scene(name, quality), "specialised")):
+            job = program.job("glsl")
+            for part, edits in PARTS.items():
+                text = job.fragment
+                for old, new in edits:
+                    if old not in text:
+                        raise SystemExit(f"'{old.strip()}' is not in the program: update this benchmark")
+                    text = text.replace(old, new)
+                jobs[(quality, part, index)] = dataclasses.replace(job, fragment=text)
+    keyed = {"|".join(map(str, key)): job for key, job in jobs.items()}
+    compiled = gpu._compile(keyed, families)
+    out = {}
+    for (quality, part, index) in jobs:
+        for family in families:
+            stats = compiled[family][f"{quality}|{part}|{index}"]
+            best = out.setdefault((quality, part), {}).get(family, (0, 0))
+            if stats["Instructions"] > best[0]:
+                out[(quality, part)][family] = (stats["Instructions"], stats["VGPRs"])
+    return out
+
+
+def main() -> None:
+    reason = gpu.unavailable_reason()
+    if reason:
+        raise SystemExit(f"RADV's null device is not available here: {reason}")
+    families = gpu.GPU_FAMILIES
+    print("largest specialised GLSL program, instructions / VGPRs (x HIGH's whole pixel) per family "
+          + " / ".join(gpu.TITLES[f] for f in families))
+    for name in ("metallic torus", "DamagedHelmet"):
+        per = figures(name, families)
+        for (quality, part), by_family in per.items():
+            high = per[("high", "whole pixel")]
+            print(f"  {name:15s} {quality:6s} {part:24s} " + "  ".join(
+                f"{gpu.TITLES[f]} {i:4d} / {v:2d} ({i / high[f][0]:.3f}x)" for f, (i, v) in by_family.items()))
+
+
+if __name__ == "__main__":
+    main()
