@@ -120,7 +120,7 @@ def test_a_mesh_with_valid_tangents_renders_the_same_without_the_fallback(gl_con
     scene = _degenerate_plane(tmp_path, gl_context, tangent_along_normal=False)
     assert not tangent_frames.needs_fallback(scene.objects)
     without = render_scene(scene, gl_context).linear
-    monkeypatch.setattr(tangent_frames, "draw_defines", lambda objects, samples=1: {})  # the fallback compiled
+    monkeypatch.setattr(tangent_frames, "draw_defines", lambda *args, **kwargs: {})  # the fallback compiled
     with_fallback = render_scene(scene, gl_context).linear
     assert np.isfinite(without).all() and np.array_equal(without, with_fallback)
 
@@ -136,6 +136,6 @@ def test_tangents_along_the_normal_need_the_fallback(gl_context, tmp_path, monke
     covered = kept[..., 3] != 0
     assert np.isfinite(kept).all() and (kept[covered][:, :3] > 0).all()
     monkeypatch.setattr(tangent_frames, "draw_defines",
-                        lambda objects, samples=1: {tangent_frames.TANGENT_FALLBACK_DEFINE: 0})
+                        lambda *args, **kwargs: {tangent_frames.TANGENT_FALLBACK_DEFINE: 0})
     forced = render_scene(scene, gl_context).linear
     assert (forced[covered][:, :3] != kept[covered][:, :3]).any(axis=1).all()

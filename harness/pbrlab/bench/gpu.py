@@ -169,7 +169,8 @@ def scene_programs(scene, kind: str, checking: bool = True) -> dict:
         stem = "mesh" if obj.sphere is None or (unity and material.source.moves_vertices) else "sphere"
         defines = dict(plan.defines[obj.material])
         if not unity and obj.sphere is None:  # the renderer's _draw_mesh, one object per draw
-            defines.update(tangent_frames.draw_defines([obj], scene.render.antialias))
+            defines.update(tangent_frames.draw_defines([obj], defines, scene.render.antialias,
+                                                       material.surface is not None))
         program = SceneProgram(stem, tuple(sorted(defines.items())), material.surface, unity)
         names = out.setdefault(program, [])
         if obj.material not in names:

@@ -495,7 +495,8 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
         instances = instanced_draws.instance_data(batch)
     if getattr(material_pass, "tangents_from_mesh", False) and obj.sphere is None:
         # the degenerate-tangent fallback only where the mesh data can reach it (tangent_frames.py)
-        defines = {**defines, **tangent_frames.draw_defines(batch or [obj], draw.scene.render.antialias)}
+        defines = {**defines, **tangent_frames.draw_defines(batch or [obj], defines, draw.scene.render.antialias,
+                                                            material.surface is not None)}
     program = _program(ctx, "mesh", material, material_pass, defines, draw, obj, grabbed)
     if instances is None:
         _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))

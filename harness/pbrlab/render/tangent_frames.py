@@ -48,6 +48,7 @@ bounded by 16 ulp here): ``THRESHOLD`` = 1e-6 + 16 * 2^-24 * max |a_i|.
 
 from __future__ import annotations
 
+import weakref
 from collections import OrderedDict
 
 import numpy as np
@@ -58,8 +59,15 @@ ROUNDING_ULPS = 16            # float32 roundings of T and t, in units of 2^-24 
 OUTSIDE = 1.0 / 256.0         # barycentric weights down to -OUTSIDE covered (module doc)
 _SIMILARITY_TOLERANCE = 1e-9  # relative: M^T M = s^2 I within this is a rotation times a scale
 
-_OBJECT_BOUNDS: OrderedDict = OrderedDict()
-BOUNDS_KEPT = 32
+# A program reads the tangent only where a surface may tilt the normal or turn the
+# anisotropy direction (surface_pixel.inc): a normal or coat-normal map, an anisotropy, or a
+# surface file. Elsewhere the tangent's terms are multiplied by zero and folded away, so a
+# draw's bound is not computed (the define's default, the fallback, stays: safe either way).
+TANGENT_READERS = ("PBRLAB_NORMAL_MAP", "PBRLAB_CLEARCOAT_NORMAL_MAP", "PBRLAB_ANISOTROPY")
+# Bounds kept per vertex arrays and transform (a weak reference to the tangents: a mesh's
+# arrays are freed with it), most recently used last.
+_BOUNDS: OrderedDict = OrderedDict()
+BOUNDS_KEPT = 4096
 
 
 def _primitives(indices: np.ndarray, topology: str) -> np.ndarray:
@@ -121,28 +129,47 @@ def _world_margin(arrays, topology: str, transform: np.ndarray) -> float:
     return float(frame_bound(world_t[rows], world_n[rows]).min())
 
 
-def _object_margin(arrays, topology: str) -> tuple[float, float]:
+def _object_bound(arrays, topology: str) -> tuple[float, float]:
     """(least bound min|a| * min (u x v).e, largest |a_i|) in the mesh's own space: under
-    M = s R both scale by s (the directions rotate, lengths of a scale by s, of b by 1/s).
-    Kept per vertex arrays (by identity: the entry holds them, so no other array takes
-    their id while it is kept)."""
-    key = (id(arrays[1]), id(arrays[3]), id(arrays[4]), topology)
-    if key not in _OBJECT_BOUNDS:
-        tangents = np.asarray(arrays[3], np.float64)[:, :3]
-        rows = _primitives(arrays[4], topology)
-        if len(rows) == 0:
-            _OBJECT_BOUNDS[key] = (arrays, np.inf, 0.0)
-        else:
-            margin = frame_bound(tangents[rows], np.asarray(arrays[1], np.float64)[rows])
-            a_max = np.linalg.norm(_grown(tangents[rows]), axis=2).max(axis=1)
-            # margin + threshold = the bound itself; the threshold is re-derived per scale
-            bound = margin + FALLBACK_TAKEN_BELOW + ROUNDING_ULPS * 2.0 ** -24 * a_max
-            _OBJECT_BOUNDS[key] = (arrays, float(np.min(np.where(np.isfinite(bound), bound, -np.inf))),
-                                   float(a_max.max()))
-        while len(_OBJECT_BOUNDS) > BOUNDS_KEPT:
-            _OBJECT_BOUNDS.popitem(last=False)
-    _OBJECT_BOUNDS.move_to_end(key)
-    return _OBJECT_BOUNDS[key][1:]
+    M = s R both scale by s (the directions rotate, lengths of a scale by s, of b by 1/s)."""
+    tangents = np.asarray(arrays[3], np.float64)[:, :3]
+    rows = _primitives(arrays[4], topology)
+    if len(rows) == 0:
+        return np.inf, 0.0
+    margin = frame_bound(tangents[rows], np.asarray(arrays[1], np.float64)[rows])
+    a_max = np.linalg.norm(_grown(tangents[rows]), axis=2).max(axis=1)
+    bound = margin + _threshold(a_max)  # the bound itself; the threshold is re-derived per scale
+    return float(np.min(np.where(np.isfinite(bound), bound, -np.inf))), float(a_max.max())
+
+
+def _threshold(a_max):
+    """The least |t| bound that keeps the fallback untaken for tangents up to ``a_max`` (module doc)."""
+    return FALLBACK_TAKEN_BELOW + ROUNDING_ULPS * 2.0 ** -24 * a_max
+
+
+def _cached(arrays, topology: str, what, compute):
+    """``compute()``, kept per (vertex arrays, topology, ``what``) while the arrays live."""
+    key = (id(arrays[3]), id(arrays[1]), id(arrays[4]), topology, what)
+    entry = _BOUNDS.get(key)
+    if entry is not None and entry[0]() is arrays[3]:
+        _BOUNDS.move_to_end(key)
+        return entry[1]
+    value = compute()
+    _BOUNDS[key] = (weakref.ref(arrays[3]), value)
+    while len(_BOUNDS) > BOUNDS_KEPT:
+        _BOUNDS.popitem(last=False)
+    return value
+
+
+def _draw_safe(arrays, topology: str, transform) -> bool:
+    """Whether no pixel of the mesh drawn with ``transform`` can take the fallback."""
+    m3 = np.asarray(transform, np.float64)[:3, :3]
+    scale = _similarity_scale(m3)
+    if scale is None:
+        margin = _cached(arrays, topology, m3.tobytes(), lambda: _world_margin(arrays, topology, transform))
+        return margin > 0
+    bound, a_max = _cached(arrays, topology, "object", lambda: _object_bound(arrays, topology))
+    return scale * bound - _threshold(scale * a_max) > 0
 
 
 def needs_fallback(objects, samples: int = 1) -> bool:
@@ -155,21 +182,14 @@ def needs_fallback(objects, samples: int = 1) -> bool:
     obj = objects[0]
     arrays = meshes.mesh_data(obj).arrays
     topology = "triangles" if obj.geometry is None else obj.geometry.topology
-    for instance in objects:
-        m3 = np.asarray(instance.transform, np.float64)[:3, :3]
-        scale = _similarity_scale(m3)
-        if scale is None:
-            if _world_margin(arrays, topology, instance.transform) <= 0:
-                return True
-            continue
-        bound, a_max = _object_margin(arrays, topology)
-        if scale * bound - (FALLBACK_TAKEN_BELOW + ROUNDING_ULPS * 2.0 ** -24 * scale * a_max) <= 0:
-            return True
-    return False
+    return not all(_draw_safe(arrays, topology, instance.transform) for instance in objects)
 
 
-def draw_defines(objects, samples: int = 1) -> dict:
-    """The define a mesh draw of ``objects`` adds to its program's: the fallback left out
-    (``PBRLAB_TANGENT_FALLBACK 0``) where ``needs_fallback`` is False, nothing otherwise
-    (the templates' default keeps it)."""
+def draw_defines(objects, defines: dict, samples: int = 1, custom_surface: bool = False) -> dict:
+    """The define a mesh draw of ``objects`` adds to its program's ``defines``: the fallback
+    left out (``PBRLAB_TANGENT_FALLBACK 0``) where the program reads the tangent
+    (``TANGENT_READERS``, or a ``custom_surface`` file) and ``needs_fallback`` is False;
+    nothing otherwise (the templates' default keeps it)."""
+    if not custom_surface and not any(name in defines for name in TANGENT_READERS):
+        return {}
     return {} if needs_fallback(objects, samples) else {TANGENT_FALLBACK_DEFINE: 0}
