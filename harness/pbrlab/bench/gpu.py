@@ -28,7 +28,7 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass
 
-from ..render import features
+from ..render import features, tangent_frames
 from ..gpu import programs
 from ..foundation.errors import PbrlabError
 from ..gpu.isa import compile as gpu_isa
@@ -156,17 +156,22 @@ class SceneProgram:
         return gpu_isa.Job(name, text, language="hlsl", include_dirs=tuple(map(str, [*dirs, HLSL_ROOT])))
 
 
-def scene_programs(scene, kind: str) -> dict:
+def scene_programs(scene, kind: str, checking: bool = True) -> dict:
     """``{SceneProgram: [material, ...]}``: the distinct programs of one render of
-    ``scene`` (``kind`` specialised or full) and the materials drawn with each."""
-    plan = features.plan_programs(scene, specialise=kind == "specialised")
+    ``scene`` (``kind`` specialised or full; ``checking`` False: the production programs,
+    features.plan_programs) and the materials drawn with each. A mesh of pbrlab's own
+    material has the renderer's per-draw tangent define (tangent_frames.draw_defines)."""
+    plan = features.plan_programs(scene, specialise=kind == "specialised", checking=checking)
     out: dict = {}
     for obj in scene.objects:
         material = scene.materials[obj.material]
         unity = material.source is not None  # a shader of its own (a Unity shader's material)
         stem = "mesh" if obj.sphere is None or (unity and material.source.moves_vertices) else "sphere"
-        program = SceneProgram(stem, tuple(sorted(plan.defines[obj.material].items())),
-                               material.surface, unity)
+        defines = dict(plan.defines[obj.material])
+        if not unity and obj.sphere is None:  # the renderer's _draw_mesh, one object per draw
+            defines.update(tangent_frames.draw_defines([obj], defines, scene.render.antialias,
+                                                       material.surface is not None))
+        program = SceneProgram(stem, tuple(sorted(defines.items())), material.surface, unity)
         names = out.setdefault(program, [])
         if obj.material not in names:
             names.append(obj.material)

@@ -35,6 +35,10 @@ from . import texture_slots
 from ..foundation.errors import SceneError
 from ..maths.reference.shading import glsl_defines
 
+# The checking and production programs (templates/surface_pixel.inc; docs/specialisation.md):
+# PBRLAB_CHECKING 1 (the templates' default, `pbrlab render`'s) tests the surface's output for
+# NaN and Inf; the production program, compiled with PBRLAB_CHECKING 0, does not.
+CHECKING_DEFINE = "PBRLAB_CHECKING"
 MAX_LIGHTS_PER_TYPE = 8        # capacity of each light type's arrays in the full program
 MAX_SPECIALISED_PROGRAMS = 32  # past this many distinct (material x scene) feature sets:
                                # warn and render every material with the full program
@@ -221,11 +225,23 @@ class ProgramPlan:
     defines: dict            # material name -> defines
     specialised: bool
     distinct: int
+    checking: bool = True    # the checking programs (else the production ones: CHECKING_DEFINE)
 
 
-def plan_programs(scene, specialise: bool = True, limit: int = MAX_SPECIALISED_PROGRAMS) -> ProgramPlan:
+def plan_programs(scene, specialise: bool = True, limit: int = MAX_SPECIALISED_PROGRAMS,
+                  checking: bool = True) -> ProgramPlan:
     """Per material, the defines of its program; falls back to the full program for every
-    material when specialisation would need more than ``limit`` programs."""
+    material when specialisation would need more than ``limit`` programs. ``checking=False``:
+    the production programs (``CHECKING_DEFINE`` 0; the checking ones leave it to the
+    templates' default, 1)."""
+    plan = _plan_programs(scene, specialise, limit)
+    if not checking:
+        plan.defines = {name: {**d, CHECKING_DEFINE: 0} for name, d in plan.defines.items()}
+        plan.checking = False
+    return plan
+
+
+def _plan_programs(scene, specialise: bool, limit: int) -> ProgramPlan:
     s = scene_features(scene)
     per_material = {name: material_features(m) for name, m in scene.materials.items()}
     if specialise:
@@ -234,7 +250,7 @@ def plan_programs(scene, specialise: bool = True, limit: int = MAX_SPECIALISED_P
         if distinct <= limit:
             return ProgramPlan(defines, True, distinct)
         warnings.warn(f"the scene needs {distinct} specialised programs, more than {limit}: "
-                      "rendering every material with the full program instead", stacklevel=2)
+                      "rendering every material with the full program instead", stacklevel=3)
     for light_type in LIGHT_TYPES:
         if getattr(s, light_type) > MAX_LIGHTS_PER_TYPE:
             raise SceneError(f"the full program holds at most {MAX_LIGHTS_PER_TYPE} {light_type} "

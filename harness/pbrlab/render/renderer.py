@@ -25,7 +25,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, instanced_draws, resource_cache
+from . import features, instanced_draws, resource_cache, tangent_frames
 from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
@@ -254,7 +254,8 @@ def checked_size(size) -> tuple[int, int]:
 
 def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
                  transfer: str = "EXACT", specialise: bool = True,
-                 language: str = "glsl", mesh_fragment: str | None = None) -> Rendering:
+                 language: str = "glsl", mesh_fragment: str | None = None,
+                 checking: bool = True) -> Rendering:
     """Render ``scene`` (optionally at another ``size``) on ``ctx`` (default: shared).
 
     ``transfer`` picks the display encode: EXACT (default: float display values rounded
@@ -268,7 +269,10 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     pixel shaders, cross-compiled by glslang and spirv-cross (harness/pbrlab/gpu/programs.py);
     a material's ``surface`` file then needs its ``.hlsl`` twin beside it.
     ``mesh_fragment`` replaces the meshes' fragment template (the pyrender cross-check's
-    composition, templates/pyrender_mesh.frag).
+    composition, templates/pyrender_mesh.frag). ``checking=False`` shades with the production
+    programs (PBRLAB_CHECKING 0: no test of the surface's output for NaN or Inf, so a NaN
+    normal may shade black instead of making the pixel non-finite; features.plan_programs):
+    where every surface output is finite, the same image bit for bit.
     """
     if transfer not in COLOR_TRANSFERS:
         raise PbrlabError(f"transfer={transfer!r}: expected one of {', '.join(COLOR_TRANSFERS)}")
@@ -295,7 +299,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     ctx = gl.make_current(ctx or gl.shared_context())
     gl_limits.check_scene(ctx, scene)
     frame = scene_frame(scene)
-    plan = features.plan_programs(scene, specialise)
+    plan = features.plan_programs(scene, specialise, checking=checking)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
     samples = scene.render.antialias
     if samples != 1:
@@ -491,6 +495,10 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
     if batch is not None and len(batch) > 1:
         defines = {**defines, instanced_draws.INSTANCED_DEFINE: 1}
         instances = instanced_draws.instance_data(batch)
+    if getattr(material_pass, "tangents_from_mesh", False) and obj.sphere is None:
+        # the degenerate-tangent fallback only where the mesh data can reach it (tangent_frames.py)
+        defines = {**defines, **tangent_frames.draw_defines(batch or [obj], defines, draw.scene.render.antialias,
+                                                            material.surface is not None)}
     program = _program(ctx, "mesh", material, material_pass, defines, draw, obj, grabbed)
     if instances is None:
         _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))

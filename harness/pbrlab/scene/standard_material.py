@@ -32,6 +32,9 @@ class StandardPass:
     """The one pass of pbrlab's own material."""
     grab = None
     traces_spheres = True
+    # its mesh programs shade with mesh.vert's tangent (the mesh's own, transformed): the
+    # harness's bound on the vertex data (render/tangent_frames.py) speaks for them
+    tangents_from_mesh = True
 
     def __init__(self, alpha_mode: str):
         # pbrlab's own materials: the first surface drawn wins a depth tie
