@@ -54,6 +54,16 @@ CLI = "import sys; from pbrlab.commands import cli; sys.exit(cli.main(sys.argv[1
 # Sample Renderer within 2.7 codes mean on corpus/gltf/khronos, test_khronos_models.py); a
 # mean 8 codes off (3 % of the range) is a material or texture drawn differently, to look at.
 COLOUR_SCREEN_CODES = 8.0
+# What three.js's tool is asked beyond the camera (tools/threejs_gltf/render.mjs):
+THREEJS_VIEW = {
+    # one sample at each pixel centre, as pbrlab render's default --antialias 1: under 4x MSAA
+    # three.js's coverage (alpha > 0: any of 4 samples) took in bars thinner than a pixel that
+    # pbrlab's centre sample misses (AnisotropyRotationTest: 2 pixels "off silhouettes")
+    "msaa": 0,
+    # glass over nothing shows the sky (KHR_materials_transmission: the light from behind; pbrlab
+    # and the Sample Viewer), not three.js's white stand-in for a page behind the canvas
+    "transmissionBackground": [float(v) for v in ENVIRONMENT.split(",")],
+}
 VERDICTS = ("drawn", "differs from three.js", "empty", "black", "refused", "failed", "not available")
 
 
@@ -99,9 +109,28 @@ def _size() -> tuple[int, int]:
     return int(width), int(height)
 
 
-def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
+def side_by_side(ours: np.ndarray, theirs: np.ndarray) -> np.ndarray:
+    """pbrlab | three.js | where coverage differs (red: pbrlab only, blue: three.js only), as
+    sRGB8 RGB over a dark grey ground: both linear STRAIGHT images through the plain encode."""
+    from pbrlab.checking import content
+    from pbrlab.maths import srgb8
+
+    def shown(linear):
+        rgb = srgb8.encode(np.clip(linear[..., :3], 0, None)).astype(np.uint8)
+        return np.where(content.covered(linear)[..., None], rgb, np.uint8(40))
+    a, b = content.covered(ours), content.covered(theirs)
+    diff = np.full(ours.shape[:2] + (3,), 40, np.uint8)
+    diff[a & b] = 128
+    diff[a & ~b] = (255, 0, 0)
+    diff[b & ~a] = (0, 0, 255)
+    gap = np.full((ours.shape[0], 2, 3), 255, np.uint8)
+    return np.concatenate([shown(ours), gap, shown(theirs), gap, diff], axis=1)
+
+
+def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path, keep: Path | None = None) -> dict:
     """three.js's render of the camera pbrlab chooses for ``model``, compared with pbrlab's
-    ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour."""
+    ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour.
+    ``keep``: write KEEP.png (pbrlab | three.js | coverage) and three.js's console messages."""
     from pbrlab.checking import content
     from pbrlab.checking.fidelity import renderers
     from pbrlab.foundation.errors import PbrlabError
@@ -117,20 +146,33 @@ def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
             "camera": {"eye": [float(x) for x in camera.position], "target": [float(x) for x in camera.target],
                        "up": [float(x) for x in camera.up], "yfov_deg": float(camera.fov_y_deg),
                        "znear": float(frame.near), "zfar": float(frame.far)},
-            "samples": 1, "seed": 0, "denoise": False}
+            "samples": 1, "seed": 0, "denoise": False, **THREEJS_VIEW}
     try:
-        theirs, _ = renderers.render_external("threejs", view)
+        theirs, meta = renderers.render_external("threejs", view)
     except PbrlabError as exc:
         lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
         named = [line for line in lines if "Error" in line] or lines[-1:] or ["no message"]
         return {"error": named[0][:300]}  # the JS error's own line, not the stack under it
     ours = renderers.straight(linear)
-    return {"coverage_pixels": content.coverage_disagreement(ours, theirs),
+    # three.js draws on where GLTFLoader could not read a part (a texture it has no decoder
+    # for, a buffer it cannot fetch) and where the file requires an extension it does not
+    # know (it warns 'Unknown extension "NAME".' and draws the fallback, e.g. r147 on for
+    # KHR_materials_pbrSpecularGlossiness): its image is then of another model.
+    errors = [m.split(": ", 1)[1] for m in meta.get("messages", [])
+              if m.startswith("error: ") or (m.startswith("warning: ") and "Unknown extension" in m)]
+    if keep is not None:
+        from pbrlab.foundation.images import write_png
+        write_png(keep.with_suffix(".png"), side_by_side(ours, theirs))
+        np.savez_compressed(keep.with_suffix(".npz"), pbrlab=ours, threejs=theirs)
+        keep.with_suffix(".threejs.json").write_text(json.dumps(meta.get("messages", []), indent=1) + "\n")
+    return {**({"error": f"three.js logged: {errors[0][:300]}"} if errors else {}),
+            "coverage_pixels": content.coverage_disagreement(ours, theirs),
             "mean_codes": content.mean_colour_difference(ours, theirs, srgb8.encode),
             "threejs_coverage": round(float(content.covered(theirs).mean()), 4)}
 
 
-def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time: str | None = None) -> dict:
+def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time: str | None = None,
+           images: Path | None = None) -> dict:
     from pbrlab.checking import content
     from pbrlab.foundation.images import read_image
 
@@ -166,7 +208,8 @@ def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time
     elif shown.verdict == "black":
         row["reason"] = f"{shown.coverage:.1%} covered, every covered pixel at or under code {content.BLACK_CODE}"
     elif sky_exr is not None:
-        peer = threejs_comparison(model, linear, sky_exr)
+        keep = None if images is None else images / stem.name
+        peer = threejs_comparison(model, linear, sky_exr, keep)
         row["threejs"] = peer
         if "error" in peer:
             row["reason"] = f"three.js did not render it: {peer['error']}"
@@ -215,6 +258,9 @@ def main(argv=None) -> int:
     parser.add_argument("--markdown", type=Path, help="write the summary table here")
     parser.add_argument("--jobs", type=int, default=1, help="renders at once (default 1)")
     parser.add_argument("--no-threejs", action="store_true", help="leave out the comparison with three.js")
+    parser.add_argument("--images", type=Path, default=None, metavar="DIR",
+                        help="write each compared variant's pbrlab | three.js | coverage image here (PNG), "
+                             "both linear straight images (NPZ) and three.js's console messages")
     parser.add_argument("--only", default=None, metavar="MODEL,...",
                         help="only these models (names of Models/ folders, comma-separated)")
     parser.add_argument("--time", default=None, metavar="T",
@@ -228,6 +274,8 @@ def main(argv=None) -> int:
     missing = [] if args.no_threejs else renderers.missing_setup("threejs")
     if missing:
         print("three.js left out: " + "; ".join(missing), file=sys.stderr)
+    if args.images is not None:
+        args.images.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         root, absent = args.models, []
         if args.git is not None:
@@ -248,7 +296,7 @@ def main(argv=None) -> int:
         with ThreadPoolExecutor(max(1, args.jobs)) as pool:
             rows = [{"model": path.removeprefix("Models/"), "result": "not available",
                      "reason": "the snapshot lacks the file itself"} for path in absent]
-            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr, args.time), files):
+            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr, args.time, args.images), files):
                 print(f"{row['result']:>22}  {row['model']}  {row['reason']}", file=sys.stderr)
                 rows.append(row)
     if args.json:
