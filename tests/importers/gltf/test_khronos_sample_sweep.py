@@ -175,3 +175,26 @@ def test_a_required_extension_three_js_does_not_read_is_no_comparison(tmp_path):
     assert peer.get("error") == 'three.js logged: THREE.GLTFLoader: Unknown extension "KHR_materials_pbrSpecularGlossiness".', peer
     control, _ = _compare(sweep, plain, tmp_path)
     assert _agrees(sweep, control), control
+
+
+def test_the_sample_viewers_third_opinion_agrees_on_the_quad_and_sees_a_shifted_image(tmp_path):
+    """--sample-viewer: the Khronos Sample Viewer's image of the sweep's view, each side's
+    figures against it. On the quad pbrlab and three.js both agree with it (0 pixels off
+    silhouettes, mean within the screen); pbrlab's image moved by 10 px (control) does not."""
+    sweep = _sweep()
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.checking.sample_viewer import write_radiance_hdr
+    from pbrlab.foundation import images
+
+    assert not renderers.missing_setup("sample_viewer"), "bash scripts/setup.sh installs the Sample Viewer"
+    model = write(tmp_path, quad_document())
+    peer, linear = _compare(sweep, model, tmp_path)
+    threejs, _ = renderers.render("threejs", {**sweep._view(model, {"environment": str(tmp_path / "sky.exr")}),
+                                              **sweep.THREEJS_VIEW})
+    sky = {"environment": str(tmp_path / "sky.exr"), "environment_hdr": str(tmp_path / "sky.hdr")}
+    write_radiance_hdr(sky["environment_hdr"], images.read_image(sky["environment"])[..., :3])
+    third = sweep.sample_viewer_opinion(model, linear, threejs, sky)
+    for side in ("pbrlab", "threejs"):
+        assert third[side]["coverage_pixels"] == 0 and third[side]["mean_codes"] <= sweep.COLOUR_SCREEN_CODES, third
+    shifted = sweep.sample_viewer_opinion(model, np.roll(linear, 10, axis=1), threejs, sky)
+    assert shifted["pbrlab"]["coverage_pixels"] > 100, shifted
