@@ -197,12 +197,14 @@ def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path, keep: Pat
             "threejs_coverage": round(float(content.covered(theirs).mean()), 4), "image": theirs}
 
 
-def sample_viewer_opinion(model: Path, ours: np.ndarray, threejs: np.ndarray, sky: dict,
+def sample_viewer_opinion(model: Path, ours: np.ndarray, threejs: np.ndarray | None, sky: dict,
                           keep: Path | None = None) -> dict:
     """The Khronos Sample Renderer's image of the same view (tools/sample_viewer; one sample
     per pixel is asked, the tool's VIEW_EXTRAS make it 4x MSAA as the benchmark's), a third
-    opinion where pbrlab and three.js differ: each one's figures against it. ``sky``: the constant sky as EXR and as the Radiance HDR the viewer reads (RGBE
-    quantises 0.3 to 153/512 = 0.2988, 0.3 codes below the others' 0.3)."""
+    opinion where pbrlab and three.js differ (each one's figures against it), or the second
+    where three.js could not render the file (``threejs`` None). ``sky``: the constant sky as
+    EXR and as the Radiance HDR the viewer reads (RGBE keeps 0.3 as 0.3008: the same 8-bit
+    sRGB code, 149)."""
     from pbrlab.checking.fidelity import renderers
 
     theirs, meta = _peer_image("sample_viewer", {**_view(model, sky), "msaa": 0})
@@ -212,7 +214,7 @@ def sample_viewer_opinion(model: Path, ours: np.ndarray, threejs: np.ndarray, sk
         from pbrlab.foundation.images import write_png
         write_png(keep.with_name(keep.name + ".sample_viewer.png"), side_by_side(renderers.straight(ours), theirs))
     return {"pbrlab": _figures(renderers.straight(ours), theirs),
-            "threejs": _figures(threejs, theirs)}
+            **({} if threejs is None else {"threejs": _figures(threejs, theirs)})}
 
 
 def render(model: Path, root: Path, out_dir: Path, sky: dict | None, at_time: str | None = None,
@@ -258,6 +260,9 @@ def render(model: Path, root: Path, out_dir: Path, sky: dict | None, at_time: st
         row["threejs"] = peer
         if "error" in peer:
             row["reason"] = f"three.js did not render it: {peer['error']}"
+            if "environment_hdr" in sky:  # the Sample Viewer's opinion in its place
+                row["sample_viewer"] = sample_viewer_opinion(model, linear, None, sky, keep)
+                row["reason"] += "; " + _third_opinion_text(row["sample_viewer"])
         elif peer["coverage_pixels"] > 0 or (peer["mean_codes"] or 0.0) > COLOUR_SCREEN_CODES:
             row["result"] = "differs from three.js"
             mean = "none shared" if peer["mean_codes"] is None else f"{peer['mean_codes']:.1f} codes"
@@ -278,7 +283,8 @@ def _third_opinion_text(third: dict) -> str:
     def figures(f):
         mean = "none shared" if f["mean_codes"] is None else f"{f['mean_codes']:.1f} codes"
         return f"{f['coverage_pixels']} pixels, {mean}"
-    return f"from the Sample Viewer: pbrlab {figures(third['pbrlab'])}, three.js {figures(third['threejs'])}"
+    text = f"from the Sample Viewer: pbrlab {figures(third['pbrlab'])}"
+    return text + (f", three.js {figures(third['threejs'])}" if "threejs" in third else "")
 
 
 def _sky_colour() -> np.ndarray:
@@ -325,8 +331,9 @@ def main(argv=None) -> int:
                         help="write each compared variant's pbrlab | three.js | coverage image here (PNG), "
                              "both linear straight images (NPZ) and three.js's console messages")
     parser.add_argument("--sample-viewer", action="store_true",
-                        help="where pbrlab and three.js differ, render the Khronos Sample Viewer's image of the "
-                             "same view too and give both one's figures against it (a third opinion)")
+                        help="where pbrlab and three.js differ, or three.js could not render the file, render "
+                             "the Khronos Sample Viewer's image of the same view too and give each one's figures "
+                             "against it (a third opinion)")
     parser.add_argument("--only", default=None, metavar="MODEL,...",
                         help="only these models (names of Models/ folders, comma-separated)")
     parser.add_argument("--time", default=None, metavar="T",
