@@ -24,7 +24,8 @@
 //    and restores the current render target after it, so it works when the frame itself goes
 //    into a render target. With a clear alpha below 1 it clears that copy to white at alpha
 //    0.5 (three.js's stand-in for the page behind a transparent canvas): that is what a
-//    transmissive surface shows where nothing opaque is behind it, as in model-viewer.
+//    transmissive surface shows where nothing opaque is behind it, as in model-viewer,
+//    unless the spec gives transmissionBackground (useTransmissionBackground below).
 //  * Blending (NormalBlending, material.premultipliedAlpha false) is SRC_ALPHA,
 //    ONE_MINUS_SRC_ALPHA for colour and ONE, ONE_MINUS_SRC_ALPHA for alpha over a clear of
 //    (0, 0, 0, 0), and the multisample resolve averages colour and alpha alike: the target
