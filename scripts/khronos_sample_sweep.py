@@ -259,7 +259,7 @@ def render(model: Path, root: Path, out_dir: Path, sky: dict | None, at_time: st
         threejs_image = peer.pop("image", None)
         row["threejs"] = peer
         if "error" in peer:
-            row["reason"] = f"three.js did not render it: {peer['error']}"
+            row["reason"] = f"not compared with three.js: {peer['error']}"
             if "environment_hdr" in sky:  # the Sample Viewer's opinion in its place
                 row["sample_viewer"] = sample_viewer_opinion(model, linear, None, sky, keep)
                 row["reason"] += "; " + _third_opinion_text(row["sample_viewer"])
