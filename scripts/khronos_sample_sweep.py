@@ -16,8 +16,14 @@ and reports N of M by verdict:
 
 The comparison with three.js r187 (tools/threejs_gltf, headless Chromium; `--no-threejs` to
 leave it out, and it is left out with a note where its setup is missing) renders the camera
-pbrlab chose, with pbrlab's near and far planes, under the same constant sky, and compares linear images (pbrlab's EXR, three.js's
-float output) through the plain sRGB encode: no exposure or tonemap on either side.
+pbrlab chose, with pbrlab's near and far planes, under the same constant sky, one sample per
+pixel (as pbrlab's default), glass over nothing showing that sky (THREEJS_VIEW), with the
+Draco, KTX2 and meshopt decoders three.js ships, and compares linear images (pbrlab's EXR,
+three.js's float output) through the plain sRGB encode: no exposure or tonemap on either side.
+Where three.js logs an error (a part it could not load) or an unknown required extension, the
+variant is drawn but not compared, and the row says why. `--sample-viewer` adds a third
+opinion where the two differ (the Khronos Sample Viewer, tools/sample_viewer), `--images DIR`
+keeps each pair's images to look at.
 
 The models are not part of this repository (their licences vary): give a folder holding
 them (`--models DIR`, with DIR/<Model>/<variant>/<file>), or a git directory of a
@@ -54,6 +60,16 @@ CLI = "import sys; from pbrlab.commands import cli; sys.exit(cli.main(sys.argv[1
 # Sample Renderer within 2.7 codes mean on corpus/gltf/khronos, test_khronos_models.py); a
 # mean 8 codes off (3 % of the range) is a material or texture drawn differently, to look at.
 COLOUR_SCREEN_CODES = 8.0
+# What three.js's tool is asked beyond the camera (tools/threejs_gltf/render.mjs):
+THREEJS_VIEW = {
+    # one sample at each pixel centre, as pbrlab render's default --antialias 1: under 4x MSAA
+    # three.js's coverage (alpha > 0: any of 4 samples) took in bars thinner than a pixel that
+    # pbrlab's centre sample misses (AnisotropyRotationTest: 2 pixels "off silhouettes")
+    "msaa": 0,
+    # glass over nothing shows the sky (KHR_materials_transmission: the light from behind; pbrlab
+    # and the Sample Viewer), not three.js's white stand-in for a page behind the canvas
+    "transmissionBackground": [float(v) for v in ENVIRONMENT.split(",")],
+}
 VERDICTS = ("drawn", "differs from three.js", "empty", "black", "refused", "failed", "not available")
 
 
@@ -99,38 +115,110 @@ def _size() -> tuple[int, int]:
     return int(width), int(height)
 
 
-def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path) -> dict:
-    """three.js's render of the camera pbrlab chooses for ``model``, compared with pbrlab's
-    ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour."""
+def side_by_side(ours: np.ndarray, theirs: np.ndarray) -> np.ndarray:
+    """pbrlab | three.js | where coverage differs (red: pbrlab only, blue: three.js only), as
+    sRGB8 RGB over a dark grey ground: both linear STRAIGHT images through the plain encode."""
     from pbrlab.checking import content
-    from pbrlab.checking.fidelity import renderers
-    from pbrlab.foundation.errors import PbrlabError
-    from pbrlab.importers.gltf import load_gltf
     from pbrlab.maths import srgb8
+
+    def shown(linear):
+        rgb = srgb8.encode(np.clip(linear[..., :3], 0, None)).astype(np.uint8)
+        return np.where(content.covered(linear)[..., None], rgb, np.uint8(40))
+    a, b = content.covered(ours), content.covered(theirs)
+    diff = np.full(ours.shape[:2] + (3,), 40, np.uint8)
+    diff[a & b] = 128
+    diff[a & ~b] = (255, 0, 0)
+    diff[b & ~a] = (0, 0, 255)
+    gap = np.full((ours.shape[0], 2, 3), 255, np.uint8)
+    return np.concatenate([shown(ours), gap, shown(theirs), gap, diff], axis=1)
+
+
+def _view(model: Path, sky: dict) -> dict:
+    """The view spec (pbrlab.checking.fidelity) of the camera pbrlab chooses for ``model``,
+    with pbrlab's own near and far planes, under ``sky`` ({"environment": exr, ...})."""
+    from pbrlab.importers.gltf import load_gltf
     from pbrlab.render.depth_range import scene_frame
     from pbrlab.scene.model import Environment
 
-    scene = load_gltf(model, size=_size(), environment=Environment(color=np.array([0.3, 0.3, 0.3])),
-                      emit_warnings=False).scene
-    camera, frame = scene.camera, scene_frame(scene)  # pbrlab's own near and far planes
-    view = {"gltf": str(model), "size": list(_size()), "environment": str(sky_exr),
+    scene = load_gltf(model, size=_size(), environment=Environment(color=_sky_colour()), emit_warnings=False).scene
+    camera, frame = scene.camera, scene_frame(scene)
+    return {"gltf": str(model), "size": list(_size()), **sky,
             "camera": {"eye": [float(x) for x in camera.position], "target": [float(x) for x in camera.target],
                        "up": [float(x) for x in camera.up], "yfov_deg": float(camera.fov_y_deg),
                        "znear": float(frame.near), "zfar": float(frame.far)},
             "samples": 1, "seed": 0, "denoise": False}
+
+
+def _peer_image(renderer: str, view: dict) -> tuple[np.ndarray | None, dict]:
+    """(``renderer``'s straight linear image, its tool's report) or (None, {"error": line})."""
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.foundation.errors import PbrlabError
+
     try:
-        theirs, _ = renderers.render_external("threejs", view)
+        return renderers.render(renderer, view)
     except PbrlabError as exc:
         lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
         named = [line for line in lines if "Error" in line] or lines[-1:] or ["no message"]
-        return {"error": named[0][:300]}  # the JS error's own line, not the stack under it
-    ours = renderers.straight(linear)
+        return None, {"error": named[0][:300]}  # the JS error's own line, not the stack under it
+
+
+def _figures(ours: np.ndarray, theirs: np.ndarray) -> dict:
+    from pbrlab.checking import content
+    from pbrlab.maths import srgb8
+
     return {"coverage_pixels": content.coverage_disagreement(ours, theirs),
-            "mean_codes": content.mean_colour_difference(ours, theirs, srgb8.encode),
-            "threejs_coverage": round(float(content.covered(theirs).mean()), 4)}
+            "mean_codes": content.mean_colour_difference(ours, theirs, srgb8.encode)}
 
 
-def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time: str | None = None) -> dict:
+def threejs_comparison(model: Path, linear: np.ndarray, sky_exr: Path, keep: Path | None = None) -> dict:
+    """three.js's render of the camera pbrlab chooses for ``model``, compared with pbrlab's
+    ``linear`` image (pbrlab.checking.content): off-silhouette coverage pixels, mean colour.
+    ``keep``: write KEEP.png (pbrlab | three.js | coverage), KEEP.npz (both straight linear
+    images) and three.js's console messages."""
+    from pbrlab.checking import content
+    from pbrlab.checking.fidelity import renderers
+
+    theirs, meta = _peer_image("threejs", {**_view(model, {"environment": str(sky_exr)}), **THREEJS_VIEW})
+    if theirs is None:
+        return meta
+    ours = renderers.straight(linear)
+    # three.js draws on where GLTFLoader could not read a part (a texture it has no decoder
+    # for, a buffer it cannot fetch) and where the file requires an extension it does not
+    # know (it warns 'Unknown extension "NAME".' and draws the fallback, e.g. r147 on for
+    # KHR_materials_pbrSpecularGlossiness): its image is then of another model.
+    errors = [m.split(": ", 1)[1] for m in meta.get("messages", [])
+              if m.startswith("error: ") or (m.startswith("warning: ") and "Unknown extension" in m)]
+    if keep is not None:
+        from pbrlab.foundation.images import write_png
+        write_png(keep.with_suffix(".png"), side_by_side(ours, theirs))
+        np.savez_compressed(keep.with_suffix(".npz"), pbrlab=ours, threejs=theirs)
+        keep.with_suffix(".threejs.json").write_text(json.dumps(meta.get("messages", []), indent=1) + "\n")
+    return {**({"error": f"three.js logged: {errors[0][:300]}"} if errors else {}), **_figures(ours, theirs),
+            "threejs_coverage": round(float(content.covered(theirs).mean()), 4), "image": theirs}
+
+
+def sample_viewer_opinion(model: Path, ours: np.ndarray, threejs: np.ndarray | None, sky: dict,
+                          keep: Path | None = None) -> dict:
+    """The Khronos Sample Renderer's image of the same view (tools/sample_viewer; one sample
+    per pixel is asked, the tool's VIEW_EXTRAS make it 4x MSAA as the benchmark's), a third
+    opinion where pbrlab and three.js differ (each one's figures against it), or the second
+    where three.js could not render the file (``threejs`` None). ``sky``: the constant sky as
+    EXR and as the Radiance HDR the viewer reads (RGBE keeps 0.3 as 0.3008: the same 8-bit
+    sRGB code, 149)."""
+    from pbrlab.checking.fidelity import renderers
+
+    theirs, meta = _peer_image("sample_viewer", {**_view(model, sky), "msaa": 0})
+    if theirs is None:
+        return meta
+    if keep is not None:
+        from pbrlab.foundation.images import write_png
+        write_png(keep.with_name(keep.name + ".sample_viewer.png"), side_by_side(renderers.straight(ours), theirs))
+    return {"pbrlab": _figures(renderers.straight(ours), theirs),
+            **({} if threejs is None else {"threejs": _figures(threejs, theirs)})}
+
+
+def render(model: Path, root: Path, out_dir: Path, sky: dict | None, at_time: str | None = None,
+           images: Path | None = None) -> dict:
     from pbrlab.checking import content
     from pbrlab.foundation.images import read_image
 
@@ -165,18 +253,42 @@ def render(model: Path, root: Path, out_dir: Path, sky_exr: Path | None, at_time
         row["reason"] = "no covered pixel"
     elif shown.verdict == "black":
         row["reason"] = f"{shown.coverage:.1%} covered, every covered pixel at or under code {content.BLACK_CODE}"
-    elif sky_exr is not None:
-        peer = threejs_comparison(model, linear, sky_exr)
+    elif sky is not None:
+        keep = None if images is None else images / stem.name
+        peer = threejs_comparison(model, linear, Path(sky["environment"]), keep)
+        threejs_image = peer.pop("image", None)
         row["threejs"] = peer
         if "error" in peer:
-            row["reason"] = f"three.js did not render it: {peer['error']}"
+            row["reason"] = f"not compared with three.js: {peer['error']}"
+            if "environment_hdr" in sky:  # the Sample Viewer's opinion in its place
+                row["sample_viewer"] = sample_viewer_opinion(model, linear, None, sky, keep)
+                row["reason"] += "; " + _third_opinion_text(row["sample_viewer"])
         elif peer["coverage_pixels"] > 0 or (peer["mean_codes"] or 0.0) > COLOUR_SCREEN_CODES:
             row["result"] = "differs from three.js"
             mean = "none shared" if peer["mean_codes"] is None else f"{peer['mean_codes']:.1f} codes"
             row["reason"] = (f"{peer['coverage_pixels']} pixels covered by one only, off silhouettes; "
                              f"mean colour {mean} apart (coverage {shown.coverage:.1%} / three.js "
                              f"{peer['threejs_coverage']:.1%})")
+            if "environment_hdr" in sky:
+                third = sample_viewer_opinion(model, linear, threejs_image, sky, keep)
+                row["sample_viewer"] = third
+                row["reason"] += "; " + _third_opinion_text(third)
     return row
+
+
+def _third_opinion_text(third: dict) -> str:
+    if "error" in third:
+        return f"the Sample Viewer did not render it: {third['error']}"
+
+    def figures(f):
+        mean = "none shared" if f["mean_codes"] is None else f"{f['mean_codes']:.1f} codes"
+        return f"{f['coverage_pixels']} pixels, {mean}"
+    text = f"from the Sample Viewer: pbrlab {figures(third['pbrlab'])}"
+    return text + (f", three.js {figures(third['threejs'])}" if "threejs" in third else "")
+
+
+def _sky_colour() -> np.ndarray:
+    return np.array([float(v) for v in ENVIRONMENT.split(",")])
 
 
 def _animated(model: Path) -> bool:
@@ -215,6 +327,13 @@ def main(argv=None) -> int:
     parser.add_argument("--markdown", type=Path, help="write the summary table here")
     parser.add_argument("--jobs", type=int, default=1, help="renders at once (default 1)")
     parser.add_argument("--no-threejs", action="store_true", help="leave out the comparison with three.js")
+    parser.add_argument("--images", type=Path, default=None, metavar="DIR",
+                        help="write each compared variant's pbrlab | three.js | coverage image here (PNG), "
+                             "both linear straight images (NPZ) and three.js's console messages")
+    parser.add_argument("--sample-viewer", action="store_true",
+                        help="where pbrlab and three.js differ, or three.js could not render the file, render "
+                             "the Khronos Sample Viewer's image of the same view too and give each one's figures "
+                             "against it (a third opinion)")
     parser.add_argument("--only", default=None, metavar="MODEL,...",
                         help="only these models (names of Models/ folders, comma-separated)")
     parser.add_argument("--time", default=None, metavar="T",
@@ -226,8 +345,12 @@ def main(argv=None) -> int:
 
     args.no_threejs = args.no_threejs or args.time is not None
     missing = [] if args.no_threejs else renderers.missing_setup("threejs")
+    if args.sample_viewer and not args.no_threejs:
+        missing += renderers.missing_setup("sample_viewer")
     if missing:
         print("three.js left out: " + "; ".join(missing), file=sys.stderr)
+    if args.images is not None:
+        args.images.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         root, absent = args.models, []
         if args.git is not None:
@@ -235,11 +358,15 @@ def main(argv=None) -> int:
             absent = extract(args.git, root)
         out_dir = Path(tmp) / "renders"
         out_dir.mkdir()
-        sky_exr = None
+        sky = None  # the constant sky as an equirect image for three.js (and the Sample Viewer)
         if not args.no_threejs and not missing:
-            sky_exr = Path(tmp) / "sky.exr"  # the constant sky as an equirect image for three.js
-            sky = np.array([float(v) for v in ENVIRONMENT.split(",")], np.float32)
-            images.write_exr(sky_exr, np.ascontiguousarray(np.broadcast_to(sky, (16, 32, 3))))
+            sky = {"environment": str(Path(tmp) / "sky.exr")}
+            equirect = np.ascontiguousarray(np.broadcast_to(_sky_colour().astype(np.float32), (16, 32, 3)))
+            images.write_exr(sky["environment"], equirect)
+            if args.sample_viewer:
+                from pbrlab.checking.sample_viewer import write_radiance_hdr
+                sky["environment_hdr"] = str(Path(tmp) / "sky.hdr")
+                write_radiance_hdr(sky["environment_hdr"], equirect)
         files = models(root)
         if args.only:
             chosen = set(args.only.split(","))
@@ -248,7 +375,7 @@ def main(argv=None) -> int:
         with ThreadPoolExecutor(max(1, args.jobs)) as pool:
             rows = [{"model": path.removeprefix("Models/"), "result": "not available",
                      "reason": "the snapshot lacks the file itself"} for path in absent]
-            for row in pool.map(lambda m: render(m, root, out_dir, sky_exr, args.time), files):
+            for row in pool.map(lambda m: render(m, root, out_dir, sky, args.time, args.images), files):
                 print(f"{row['result']:>22}  {row['model']}  {row['reason']}", file=sys.stderr)
                 rows.append(row)
     if args.json:

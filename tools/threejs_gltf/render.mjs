@@ -11,7 +11,9 @@
 //             "camera": {"eye": [x, y, z], "target": [x, y, z], "up": [0, 1, 0],
 //                        "yfov_deg": 45, "znear": n, "zfar": f},
 //             optional: "msaa": 4 (the float target's samples; 0 for none),
-//             "environmentIntensity": 1, "threejsEnvironmentRotationDeg": -90}
+//             "environmentIntensity": 1, "threejsEnvironmentRotationDeg": -90,
+//             "transmissionBackground": [r, g, b] (a constant sky's linear colour: what glass
+//             over nothing shows, in place of three.js's white; page/peer.mjs)}
 // Other keys of the shared view spec (environment_hdr, samples, seed, denoise) are ignored.
 // Writes OUT.f32 (float32 RGBA, rows top to bottom, linear radiance, NOT premultiplied:
 // three.js's premultiplied colour divided by alpha where alpha > 0; alpha = coverage) and
@@ -93,6 +95,7 @@ async function main(spec, outPrefix) {
       environmentIntensity: spec.environmentIntensity ?? 1.0,
       environmentRotationRad: (spec.threejsEnvironmentRotationDeg ?? ENVIRONMENT_ROTATION_DEG) * Math.PI / 180,
       size: spec.size, msaa: spec.msaa ?? 4, camera: spec.camera,
+      transmissionBackground: spec.transmissionBackground ?? null,
     };
     return page.evaluate((s) => window.renderGltf(s), pageSpec);
   });

@@ -92,3 +92,109 @@ def test_three_js_covers_what_pbrlab_covers_on_the_quad_and_the_check_fails_on_a
     assert same["coverage_pixels"] == 0 and same["mean_codes"] <= sweep.COLOUR_SCREEN_CODES, same
     shifted = sweep.threejs_comparison(model, np.roll(linear, 10, axis=1), sky)
     assert shifted["coverage_pixels"] > 100, shifted
+
+
+# The comparison's own faults, each found on a Khronos model (docs/gltf.md, "The Khronos
+# sample set") and shown here on a small file: three.js's image must be of the same model,
+# under the same light, sampled as pbrlab samples it, or the verdict says nothing.
+
+REPO = Path(__file__).resolve().parents[3]
+
+
+def _compare(sweep, model: Path, tmp_path) -> tuple[dict, np.ndarray]:
+    """pbrlab's linear image of ``model`` under the sweep's sky, and the sweep's comparison
+    with three.js's render of it."""
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.foundation import images
+    from pbrlab.importers.gltf import load_gltf
+    from pbrlab.render.renderer import render_scene
+    from pbrlab.scene.model import Environment
+
+    problems = renderers.missing_setup("threejs")
+    assert not problems, "; ".join(problems) + " (bash scripts/setup.sh installs them)"
+    sky_rgb = np.array([float(v) for v in sweep.ENVIRONMENT.split(",")])
+    sky = tmp_path / "sky.exr"
+    images.write_exr(sky, np.ascontiguousarray(np.broadcast_to(sky_rgb.astype(np.float32), (16, 32, 3))))
+    scene = load_gltf(model, size=sweep._size(), environment=Environment(color=sky_rgb), emit_warnings=False).scene
+    linear = render_scene(scene).linear
+    return sweep.threejs_comparison(model, linear, sky), linear
+
+
+def _agrees(sweep, peer: dict) -> bool:
+    return "error" not in peer and peer["coverage_pixels"] == 0 and peer["mean_codes"] <= sweep.COLOUR_SCREEN_CODES
+
+
+def test_three_js_decodes_draco_meshes_and_basisu_textures_as_pbrlab_does(tmp_path):
+    """GLTFLoader draws a KHR_draco_mesh_compression mesh only with a DRACOLoader and a
+    KHR_texture_basisu texture only with a KTX2Loader (AnisotropyBarnLamp's KTX2 variant: 82.6
+    codes apart, its four textures not loaded; the 11 Draco variants not compared at all).
+    With the decoders three.js ships set as model-viewer sets them, the Draco sphere and the
+    ETC1S-textured quad agree with pbrlab's decode; without them (main) three.js fails on the
+    sphere ("No DRACOLoader instance provided")."""
+    sweep = _sweep()
+    for name in ("draco_sphere.glb", "formats_etc1s.gltf", "formats_base_etc1s.ktx2"):
+        (tmp_path / name).write_bytes((REPO / "scenes" / "gltf" / name).read_bytes())
+    for model in ("draco_sphere.glb", "formats_etc1s.gltf"):
+        peer, _ = _compare(sweep, tmp_path / model, tmp_path)
+        assert _agrees(sweep, peer), (model, peer)
+
+
+def test_three_js_glass_over_nothing_shows_the_sky_not_a_white_page(tmp_path, monkeypatch):
+    """A clear, smooth KHR_materials_transmission quad with nothing behind it: the light from
+    behind is the sky's (0.3), as pbrlab draws it; three.js's transmission pass clears to
+    white under a transparent canvas (the glass models 19 to 52 codes apart). The control
+    asks three.js as main did, without the sky behind its glass, and differs."""
+    sweep = _sweep()
+    doc = quad_document()
+    doc["extensionsUsed"] = ["KHR_materials_transmission"]
+    doc["materials"][0] = {"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0.0,
+                                                    "roughnessFactor": 0.0},
+                           "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}}
+    model = write(tmp_path, doc)
+    peer, _ = _compare(sweep, model, tmp_path)
+    assert _agrees(sweep, peer), peer
+    monkeypatch.setattr(sweep, "THREEJS_VIEW", {k: v for k, v in sweep.THREEJS_VIEW.items()
+                                                 if k != "transmissionBackground"})
+    white, _ = _compare(sweep, model, tmp_path)
+    assert white["mean_codes"] > 3 * sweep.COLOUR_SCREEN_CODES, white
+
+
+def test_a_required_extension_three_js_does_not_read_is_no_comparison(tmp_path):
+    """three.js r187 no longer reads KHR_materials_pbrSpecularGlossiness: it warns 'Unknown
+    extension' and draws the default white metal (SpecGlossVsMetalRough: 44.6 codes "apart",
+    pbrlab's two bottles alike). The comparison names the extension instead of a verdict;
+    the same quad without the extension (control) is compared and agrees."""
+    sweep = _sweep()
+    plain = write(tmp_path, quad_document(), "plain.gltf")
+    doc = quad_document()
+    doc["extensionsUsed"] = doc["extensionsRequired"] = ["KHR_materials_pbrSpecularGlossiness"]
+    doc["materials"][0] = {"extensions": {"KHR_materials_pbrSpecularGlossiness": {
+        "diffuseFactor": [0.8, 0.2, 0.1, 1], "specularFactor": [0.04, 0.04, 0.04], "glossinessFactor": 0.5}}}
+    spec_gloss = write(tmp_path, doc, "spec_gloss.gltf")
+    peer, _ = _compare(sweep, spec_gloss, tmp_path)
+    assert peer.get("error") == 'three.js logged: THREE.GLTFLoader: Unknown extension "KHR_materials_pbrSpecularGlossiness".', peer
+    control, _ = _compare(sweep, plain, tmp_path)
+    assert _agrees(sweep, control), control
+
+
+def test_the_sample_viewers_third_opinion_agrees_on_the_quad_and_sees_a_shifted_image(tmp_path):
+    """--sample-viewer: the Khronos Sample Viewer's image of the sweep's view, each side's
+    figures against it. On the quad pbrlab and three.js both agree with it (0 pixels off
+    silhouettes, mean within the screen); pbrlab's image moved by 10 px (control) does not."""
+    sweep = _sweep()
+    from pbrlab.checking.fidelity import renderers
+    from pbrlab.checking.sample_viewer import write_radiance_hdr
+    from pbrlab.foundation import images
+
+    assert not renderers.missing_setup("sample_viewer"), "bash scripts/setup.sh installs the Sample Viewer"
+    model = write(tmp_path, quad_document())
+    peer, linear = _compare(sweep, model, tmp_path)
+    threejs, _ = renderers.render("threejs", {**sweep._view(model, {"environment": str(tmp_path / "sky.exr")}),
+                                              **sweep.THREEJS_VIEW})
+    sky = {"environment": str(tmp_path / "sky.exr"), "environment_hdr": str(tmp_path / "sky.hdr")}
+    write_radiance_hdr(sky["environment_hdr"], images.read_image(sky["environment"])[..., :3])
+    third = sweep.sample_viewer_opinion(model, linear, threejs, sky)
+    for side in ("pbrlab", "threejs"):
+        assert third[side]["coverage_pixels"] == 0 and third[side]["mean_codes"] <= sweep.COLOUR_SCREEN_CODES, third
+    shifted = sweep.sample_viewer_opinion(model, np.roll(linear, 10, axis=1), threejs, sky)
+    assert shifted["pbrlab"]["coverage_pixels"] > 100, shifted

@@ -24,7 +24,8 @@
 //    and restores the current render target after it, so it works when the frame itself goes
 //    into a render target. With a clear alpha below 1 it clears that copy to white at alpha
 //    0.5 (three.js's stand-in for the page behind a transparent canvas): that is what a
-//    transmissive surface shows where nothing opaque is behind it, as in model-viewer.
+//    transmissive surface shows where nothing opaque is behind it, as in model-viewer,
+//    unless the spec gives transmissionBackground (useTransmissionBackground below).
 //  * Blending (NormalBlending, material.premultipliedAlpha false) is SRC_ALPHA,
 //    ONE_MINUS_SRC_ALPHA for colour and ONE, ONE_MINUS_SRC_ALPHA for alpha over a clear of
 //    (0, 0, 0, 0), and the multisample resolve averages colour and alpha alike: the target
@@ -33,11 +34,40 @@
 import * as THREE from "three";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { EXRLoader } from "three/addons/loaders/EXRLoader.js";
+import { DRACOLoader } from "three/addons/loaders/DRACOLoader.js";
+import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
+import { MeshoptDecoder } from "three/addons/libs/meshopt_decoder.module.js";
+
+// The decoders three.js ships beside GLTFLoader (examples/jsm/libs, served under /three/), set
+// as model-viewer sets them: without them GLTFLoader draws no KHR_draco_mesh_compression mesh,
+// no KHR_texture_basisu texture and no EXT_meshopt_compression buffer (it logs "Couldn't load
+// texture" and draws the material without it), and a comparison would be of a different model.
+function gltfLoader(renderer) {
+  const draco = new DRACOLoader().setDecoderPath("/three/examples/jsm/libs/draco/gltf/");
+  const ktx2 = new KTX2Loader().setTranscoderPath("/three/examples/jsm/libs/basis/").detectSupport(renderer);
+  const loader = new GLTFLoader().setDRACOLoader(draco).setKTX2Loader(ktx2).setMeshoptDecoder(MeshoptDecoder);
+  return { loader, dispose: () => { draco.dispose(); ktx2.dispose(); } };
+}
 
 function toBase64(bytes) {
   let text = "";
   for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
   return btoa(text);
+}
+
+// What a transmissive surface shows where no opaque object is behind it. three.js r187's
+// transmission pass (WebGLRenderer.js, renderTransmissionPass) clears its copy of the opaque
+// objects with the renderer's clear colour, or, under a clear alpha below 1 as here, with
+// setClearColor(0xffffff, 0.5): the page behind a transparent canvas, so glass over nothing
+// shows white. KHR_materials_transmission's light from behind is the scene's, the environment
+// where nothing else is (as pbrlab and the Sample Viewer draw it). Given the constant sky's
+// linear colour, that one clear is made the sky at alpha 1 (the call is recognised by its
+// arguments; the frame's own clear, (0, 0, 0, 0), is untouched, and the pass restores it).
+function useTransmissionBackground(renderer, rgb) {
+  const sky = new THREE.Color().setRGB(rgb[0], rgb[1], rgb[2], THREE.LinearSRGBColorSpace);
+  const setClearColor = renderer.setClearColor.bind(renderer);
+  renderer.setClearColor = (color, alpha) =>
+    (color === 0xffffff && alpha === 0.5) ? setClearColor(sky, 1) : setClearColor(color, alpha);
 }
 
 // The sample counts the implementation offers for a float colour renderbuffer (WebGL2
@@ -61,6 +91,7 @@ window.renderGltf = async (spec) => {
   renderer.toneMapping = THREE.NoToneMapping;
   renderer.toneMappingExposure = 1.0;
   renderer.outputColorSpace = THREE.LinearSRGBColorSpace;
+  if (spec.transmissionBackground) useTransmissionBackground(renderer, spec.transmissionBackground);
   const gl = renderer.getContext();
   if (!gl.getExtension("EXT_color_buffer_float")) throw new Error("EXT_color_buffer_float is missing");
   if (!gl.getExtension("EXT_float_blend")) throw new Error("EXT_float_blend is missing (blending into RGBA32F)");
@@ -75,7 +106,9 @@ window.renderGltf = async (spec) => {
   const scene = new THREE.Scene();
   scene.background = null;
   const t0 = performance.now();
-  const gltf = await new GLTFLoader().loadAsync(spec.gltf);
+  const decoders = gltfLoader(renderer);
+  const gltf = await decoders.loader.loadAsync(spec.gltf);
+  decoders.dispose();
   scene.add(gltf.scene);
   const t1 = performance.now();
   let pmrem = null;

@@ -8,7 +8,9 @@
   nearest 8-bit code, round(v * 255 / 65535), the precision the texture upload keeps.
 * KTX2 with Basis Universal (KHR_texture_basisu, mimeType image/ktx2) through gltf.ktx2's
   transcoder; WebP (EXT_texture_webp) through Pillow (gltf.webp). Each is recognised by its
-  bytes' signature, whatever the mimeType says (AnisotropyBarnLamp's KTX2 variant gives none).
+  bytes' signature, whatever the mimeType says (AnisotropyBarnLamp's KTX2 variant gives none);
+  a texture whose core source is such an image is drawn with a warning (not valid glTF:
+  extension_of_bytes, gltf.materials), as viewers that follow the rule do not draw it.
 """
 
 from __future__ import annotations
@@ -25,6 +27,17 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 KTX2_SIGNATURE = ktx2.SIGNATURE
 # The core specification's two types and the two an image-format extension adds.
 MIME_TYPES = ("image/jpeg", "image/png", ktx2.MIME_TYPE, webp.MIME_TYPE)
+
+
+FORMAT_NAMES = {ktx2.EXTENSION: "KTX2", webp.EXTENSION: "WebP"}
+
+
+def extension_of_bytes(data: bytes) -> str | None:
+    """The image-format extension that must name these bytes (KTX2, WebP), None for PNG and
+    JPEG, the core's: a texture's core source may only be those (glTF 2.0, 5.18 images)."""
+    if data.startswith(KTX2_SIGNATURE):
+        return ktx2.EXTENSION
+    return webp.EXTENSION if webp.is_webp(data) else None
 
 
 def check_mime_type(spec) -> None:

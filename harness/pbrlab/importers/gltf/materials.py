@@ -114,6 +114,7 @@ class MaterialReader:
     def __init__(self, doc: Document, file_key: tuple, warn):
         self.doc, self.file_key, self.warn = doc, file_key, warn
         self._images: dict[int, np.ndarray] = {}
+        self._extension_format: dict[int, str | None] = {}  # image -> the extension its bytes need
 
     # --- images and textures ----------------------------------------------------------
     def image(self, index: int) -> np.ndarray:
@@ -128,6 +129,7 @@ class MaterialReader:
             else:
                 spec.fail("has neither uri nor bufferView")
             self._images[index] = images.decode_image(self.doc, data, spec)
+            self._extension_format[index] = images.extension_of_bytes(data)
         return self._images[index]
 
     def texture(self, info: FieldReader, material: Material, slot: str, srgb: bool, name: str):
@@ -137,6 +139,12 @@ class MaterialReader:
         source = texture_source(texture, texture_index,
                                 lambda message: self.warn(f"{message} (material \"{name}\")"))
         pixels = self.image(source)
+        needed = self._extension_format[source]
+        if needed and needed not in dict(texture.extensions()):
+            self.warn(f"texture {texture_index}'s core source images[{source}] is {images.FORMAT_NAMES[needed]}, "
+                      f"not valid glTF without {needed} on the texture (core images are PNG or JPEG); drawn as "
+                      f"{images.FORMAT_NAMES[needed]}, which viewers that follow the extension's rule, as three.js "
+                      f"r187, do not (material \"{name}\")")
         sampler_index = texture.index("sampler", "samplers")
         sampler = (FieldReader({}, "default sampler", self.doc) if sampler_index is None
                    else self.doc.items("samplers")[sampler_index])
