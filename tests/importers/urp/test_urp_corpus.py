@@ -37,6 +37,9 @@ BLANK_BY_DEFAULT = {
         "the outline shell's colour is _Color, whose default is (0, 0, 0, 0): a black shell around the sphere",
     "VKev__Unity-URP-Shaders-Code/Assets/Shaders/Object_Shader/Toon_Shader/URP_Toon.shader":
         "_LightMaxIntensity defaults to 0, which scales every toon band: black",
+    "ColinLeung-NiloCat__UnityURPUnlitScreenSpaceDecalShader/URP_NiloCatExtension_ScreenSpaceDecal_Unlit.shader":
+        "a screen-space decal: it projects the scene's depth (its own sampler2D _CameraDepthTexture, which "
+        "pbrlab draws no depth pre-pass for and leaves unbound) into its box and clips what falls outside: black",
 }
 
 

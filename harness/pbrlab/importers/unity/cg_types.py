@@ -167,6 +167,36 @@ def tokenize(text: str):
     return toks, directives
 
 
+_CONDITION = re.compile(r"#\s*(if|ifdef|ifndef|elif|else|endif)\b")
+
+
+def _enclosing_conditions(text: str, directives, pos: int) -> list:
+    """The preprocessor lines that put ``pos`` where it is: each open #if (its #elif and
+    #else up to the branch ``pos`` lies in), outermost first; a file's include guard
+    (``#ifndef X`` then ``#define X`` first) is not one, nor is anything closed before."""
+    stack = []   # per open #if: its lines so far
+    spans = [(s, e) for s, e in directives if s < pos]
+    guard = None
+    if len(directives) >= 2:
+        first, second = (text[s:e] for s, e in directives[:2])
+        m = re.match(r"#\s*ifndef\s+(\w+)", first)
+        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", second):
+            guard = directives[0][0]
+    for s, e in spans:
+        m = _CONDITION.match(text, s)
+        if not m or s == guard:
+            continue
+        line = text[s:e].strip()
+        if m.group(1).startswith("if"):
+            stack.append([line])
+        elif m.group(1) == "endif":
+            if stack:
+                stack.pop()
+        elif stack:
+            stack[-1].append(line)
+    return [line for block in stack for line in block]
+
+
 class CgSyntaxError(Exception):
     def __init__(self, message, pos):
         super().__init__(message)
@@ -174,6 +204,16 @@ class CgSyntaxError(Exception):
 
 
 # --- edits -------------------------------------------------------------------------------
+
+# A float literal with a suffix GLSL lacks (``1.0h``, ``0.5H``), in a default argument the port
+# copies into an overload (primary() drops the suffix where the literal stands).
+_SUFFIXED_FLOAT = re.compile(r"\b((?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?)[hH]\b|(?<![\w.])(\.\d+(?:[eE][+-]?\d+)?)[hH]\b")
+
+
+def _glsl_literals(text: str) -> str:
+    """``text`` with its float literals' ``h`` suffixes dropped (``1.0h`` -> ``1.0``)."""
+    return _SUFFIXED_FLOAT.sub(lambda m: m.group(1) or m.group(2), text)
+
 
 class Edits:
     """Insertions before/after expressions and token replacements, applied in one pass.
@@ -246,11 +286,14 @@ class Symbols:
     functions: dict = field(default_factory=dict)  # name -> [Signature]
     globals: dict = field(default_factory=dict)    # name -> Type
     aliases: dict = field(default_factory=dict)    # object-like #define NAME OTHER
+    # structs whose members depend on the preprocessor (an #if among them, or a macro member):
+    # their zero is the function pbr_unity_zero_<name>() the port defines (_Parser.struct)
+    conditional: set = field(default_factory=set)
 
     def copy(self):
         return Symbols({k: dict(v) for k, v in self.structs.items()},
                        {k: list(v) for k, v in self.functions.items()},
-                       dict(self.globals), dict(self.aliases))
+                       dict(self.globals), dict(self.aliases), set(self.conditional))
 
 
 LIBRARY_FILES = (  # what the harness's GLSL path includes before a port (generate.py)
@@ -548,12 +591,14 @@ class _Parser:
         name = self.name().text
         fields = {}
         self.sym.structs[name] = fields
-        self.expect("{")
+        self.sym.conditional.discard(name)
+        open_ = self.expect("{")
+        members, macro_member = [], False   # (position, name, Type) in declaration order
         while not self.accept("}"):
             if self.accept(";"):
                 continue
             self.qualifiers()
-            t = self.type_spec()
+            t = None if self._macro_member_ahead() else self.type_spec()
             if t is None:
                 # a macro member: INTERNAL_DATA, UNITY_FOG_COORDS(3), UNITY_VERTEX_INPUT_INSTANCE_ID
                 tok = self.next()
@@ -562,18 +607,59 @@ class _Parser:
                 if self.at("("):
                     self.skip_balanced("(", ")")
                 self.accept(";")
+                macro_member = True
                 continue
             while True:
-                n = self.name().text
+                name_tok = self.name()
+                n = name_tok.text
                 ft = self.array_suffix(t)
                 self.semantic()
                 fields[n] = ft
+                members.append((name_tok.s, n, ft))
                 if not self.accept(","):
                     break
             self.expect(";")
+        close = self.toks[self.i - 1]
+        inside = [(s, e) for s, e in self.directives if open_.s < s < close.s]
         if self.peek().kind == "id":
             self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
-        self.expect(";")
+        end = self.expect(";")
+        if inside or macro_member:
+            self.sym.conditional.add(name)
+            if not self.decl_only and not self.scopes:
+                self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    def _macro_member_ahead(self) -> bool:
+        """Whether the struct member ahead is a bare macro (UNITY_VERTEX_INPUT_INSTANCE_ID
+        before another member or the closing brace), not ``Type name``: a name after a
+        type is followed by ``;``, ``,``, ``:`` or ``[``."""
+        first, second = self.peek(), self.peek(1)
+        if first.kind != "id" or builtin_type(first.text) is not None or first.text in self.sym.structs:
+            return False
+        return second.kind == "id" and self.peek(2).text not in (";", ",", ":", "[")
+
+    def _define_conditional_zero(self, name, start, end, members, inside):
+        """The zero of a struct whose members depend on the preprocessor: GLSL has no
+        ``(Struct)0``, and a constructor would list the members of every #if branch. Its
+        prototype goes on the struct's last line (the port keeps its line count); its body at
+        the end of the file, each member zeroed under the struct's own #if lines, the whole
+        under the #if lines that enclose the struct (their #else and #elif branches kept
+        empty) and a guard of its own (an include read twice defines it once). A macro
+        member (its name unknown here) is left as GLSL leaves a local: undefined."""
+        zero = f"pbr_unity_zero_{name}"
+        self.edits.close(end, f" {name} {zero}();")
+        body = [(s, self.text[s:e].strip()) for s, e in inside]
+        for pos, member, ty in members:
+            try:
+                body.append((pos, f"    z.{member} = {self.zero_value(ty)};"))
+            except CgSyntaxError:
+                continue  # a member of a type without a zero here (a sampler): left undefined
+        lines = [f"{name} {zero}() {{", f"    {name} z;"] + [t for _, t in sorted(body)] + ["    return z;", "}"]
+        guard = f"PBR_UNITY_ZERO_{name}_DEFINED"
+        enclosing = _enclosing_conditions(self.text, self.directives, start)
+        text = "\n".join([*enclosing, f"#ifndef {guard}", f"#define {guard}", *lines, "#endif",
+                          *["#endif"] * sum(1 for c in enclosing if c.startswith("#if"))])
+        self.edits.close(len(self.text), "\n" + text + "\n")
 
     def semantic(self):
         if self.at(":") and self.peek(1).kind == "id":
@@ -658,7 +744,7 @@ class _Parser:
             # port keeps its line count): each shorter form calls the full one with the defaults.
             overloads = []
             for k in range(first_default, len(params)):
-                args = [n for _, n in spelled[:k]] + [f"({d})" for d in defaults[k:]]
+                args = [n for _, n in spelled[:k]] + [f"({_glsl_literals(d)})" for d in defaults[k:]]
                 call = f"{name}({', '.join(args)})"
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
@@ -1014,6 +1100,8 @@ class _Parser:
         if ty.array > 0:
             element = self.zero_value(ty.element())
             return f"{ty.element().cg()}[{ty.array}]({', '.join([element] * ty.array)})"
+        if ty.base in self.sym.conditional:
+            return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:
             members = self.sym.structs[ty.base].values()
             return f"{ty.base}({', '.join(self.zero_value(m) for m in members)})"

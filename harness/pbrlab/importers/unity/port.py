@@ -26,6 +26,8 @@ port stays line for line with the original and compile errors map back by line):
         scalar; GLSL neither has that overload nor lets a shader overload a built-in).
      6. ``discard`` -> ``PBR_UNITY_DISCARD`` (cg_compat.glsl: nothing in a vertex stage, where
         GLSL refuses the word even in a function that stage never calls).
+     7. A matrix element ``M._mRC`` (HLSL: row R, column C) -> ``M[C][R]`` (GLSL names columns
+        first).
 """
 
 from __future__ import annotations
@@ -41,9 +43,11 @@ from .source_text import PORT_MARKER, included_text
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
-# HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry.
+# HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry
+# (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
+# list whose last parameters are under an #if).
 _SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)])", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
@@ -100,6 +104,8 @@ def port_code(code: str) -> str:
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
     code = re.sub(r"\bdiscard\b", "PBR_UNITY_DISCARD", code)  # GLSL refuses discard in a vertex stage
+    # HLSL's matrix element M._mRC (row R, column C, from 0) is GLSL's M[C][R] (columns first)
+    code = re.sub(r"\._m([0-3])([0-3])\b", r"[\2][\1]", code)
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
     return _globals_uniform(code)
 

@@ -21,6 +21,8 @@
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
 #define kDielectricSpec float4(0.04, 0.04, 0.04, 1.0 - 0.04)
+// The name URP 7 to 10 spelled it with (kDieletricSpec), which shaders of that time use.
+#define kDieletricSpec kDielectricSpec
 // URP's mip count for the reflection probe's roughness levels (UNITY_SPECCUBE_LOD_STEPS).
 #define PBRLAB_URP_SPECCUBE_LOD_STEPS 6.0
 
@@ -100,6 +102,22 @@ Light GetAdditionalLight(uint i, float3 positionWS) {
     return pbrlab_urp_no_light();
 }
 Light GetAdditionalLight(uint i, float3 positionWS, float4 shadowMask) { return GetAdditionalLight(i, positionWS); }
+// Shadows (Shadows.hlsl's names): no shadow maps here, so every light is unshadowed (1).
+float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
+float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
+float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
+float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
+float AdditionalLightShadow(int lightIndex, float3 positionWS, float3 lightDirection, float4 shadowMask,
+                            float4 occlusionProbeChannels) { return 1.0; }
+float4 GetShadowCoord(VertexPositionInputs vertexInput) { return float4(0.0, 0.0, 0.0, 0.0); }
+float3 ApplyShadowBias(float3 positionWS, float3 normalWS, float3 lightDirection) { return positionWS; }
+
+// URP's per-object light list: the i-th additional light is the scene's i-th here (every
+// light reaches every object), so the index is i and the light is GetAdditionalLight's.
+int GetPerObjectLightIndex(uint index) { return int(index); }
+Light GetAdditionalPerObjectLight(int perObjectLightIndex, float3 positionWS) {
+    return GetAdditionalLight(uint(perObjectLightIndex), positionWS);
+}
 
 // Ambient light: the environment's SH9 as Unity's ambient probe (irradiance / pi).
 float3 SampleSH(float3 normalWS) {
@@ -119,6 +137,10 @@ float3 SampleSHPixel(float3 L2Term, float3 normalWS) { return SampleSH(normalWS)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
 
 // URP's mip for a perceptual roughness: pr (1.7 - 0.7 pr) of its 6 levels, in pbrlab's chain.
+// The same mip as a number: perceptual roughness pr to pr (1.7 - 0.7 pr) times the steps.
+float PerceptualRoughnessToMipmapLevel(float perceptualRoughness) {
+    return perceptualRoughness * (1.7 - 0.7 * perceptualRoughness) * PBRLAB_URP_SPECCUBE_LOD_STEPS;
+}
 float3 GlossyEnvironmentReflection(float3 reflectVector, float perceptualRoughness, float occlusion) {
 #ifdef PBRLAB_ENV
     return PBR_UNITY_GLOSSY_ENVIRONMENT(reflectVector, perceptualRoughness) * occlusion;
@@ -427,6 +449,12 @@ float4 UniversalFragmentPBR(InputData inputData, float3 albedo, float metallic, 
     s.clearCoatMask = 0.0;
     s.clearCoatSmoothness = 1.0;
     return UniversalFragmentPBR(inputData, s);
+}
+
+// The Lightweight Render Pipeline's name (URP before 7.0) for UniversalFragmentPBR.
+float4 LightweightFragmentPBR(InputData inputData, float3 albedo, float metallic, float3 specular, float smoothness,
+                              float occlusion, float3 emission, float alpha) {
+    return UniversalFragmentPBR(inputData, albedo, metallic, specular, smoothness, occlusion, emission, alpha);
 }
 
 #endif
