@@ -53,7 +53,7 @@ def test_the_zero_keeps_the_struct_s_if_lines_and_the_enclosing_ones():
             "struct S {\n    float4 p;\n#if B\n    float2 uv;\n#else\n    float3 uv;\n#endif\n"
             "    UNITY_VERTEX_INPUT_INSTANCE_ID\n};\n"
             "S make() { S s = (S)0; return s; }\n#endif\n#endif\n")
-    ported = cg_types.convert(code)
+    ported = cg_types.convert(code, srp=True)
     lines = ported.splitlines()
     assert lines[12] == "}; S pbr_unity_zero_S();"  # the prototype on the struct's last line
     assert "S s = pbr_unity_zero_S();" in ported
@@ -66,10 +66,18 @@ def test_the_zero_keeps_the_struct_s_if_lines_and_the_enclosing_ones():
 
 
 def test_a_struct_without_if_lines_keeps_its_constructor_zero():
-    ported = cg_types.convert("struct T { float a; float2 b; };\nT f() { return (T)0; }\n")
+    ported = cg_types.convert("struct T { float a; float2 b; };\nT f() { return (T)0; }\n", srp=True)
     assert "T(0.0, float2(0.0))" in ported and "pbr_unity_zero" not in ported
 
 
+def test_the_built_in_pipeline_s_port_keeps_its_constructor_zeros():
+    """Only SRP programs get the zero functions: a built-in pipeline's struct with an #if keeps
+    the port it had (its macro members expand to nothing there)."""
+    code = "struct V {\n    float4 p;\n#if A\n    float2 uv;\n#endif\n};\nV f() { return (V)0; }\n"
+    assert "pbr_unity_zero" not in cg_types.convert(code)
+    assert "pbr_unity_zero_V()" in cg_types.convert(code, srp=True)
+
+
 def test_a_default_argument_s_half_literal_loses_its_suffix_in_the_overload():
-    ported = cg_types.convert("half f(half x, half s = 0.5h) { return x * s; }\n")
+    ported = cg_types.convert("half f(half x, half s = 0.5h) { return x * s; }\n", srp=True)
     assert "f(x, (0.5))" in ported and "0.5h" not in ported

@@ -382,7 +382,7 @@ class E:
 
 
 class _Parser:
-    def __init__(self, text, symbols: Symbols, declarations_only=False):
+    def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
         self.text = text
         self.toks, self.directives = tokenize(text)
         self.i = 0
@@ -395,6 +395,7 @@ class _Parser:
         self.scopes = []
         self.ret = None
         self.decl_only = declarations_only
+        self.srp = srp  # a Scriptable Render Pipeline's program (conditional structs' zeros)
         self.skipped = []
 
     # token helpers
@@ -624,7 +625,7 @@ class _Parser:
         if self.peek().kind == "id":
             self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
         end = self.expect(";")
-        if inside or macro_member:
+        if (inside or macro_member) and self.srp:
             self.sym.conditional.add(name)
             if not self.decl_only and not self.scopes:
                 self._define_conditional_zero(name, open_.s, end.e, members, inside)
@@ -726,10 +727,13 @@ class _Parser:
                     break
         self.expect(")")
         self.semantic()
-        self.sym.functions.setdefault(name, []).append(Signature(ret, params))
+        # one entry per signature: a prototype and its definition (or an include's prototype
+        # known twice) are one function, not an ambiguous pair of overloads
+        known = self.sym.functions.setdefault(name, [])
         first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
-        for k in range(first_default, len(params)):  # f(a, b = 1) may be called as f(a)
-            self.sym.functions[name].append(Signature(ret, params[:k]))
+        for k in [len(params), *range(first_default, len(params))]:  # f(a, b = 1) may be called as f(a)
+            if Signature(ret, params[:k]) not in known:
+                known.append(Signature(ret, params[:k]))
         if self.accept(";"):
             return
         if self.decl_only:
@@ -750,7 +754,9 @@ class _Parser:
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
             self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
 
-    def declarators(self, t, is_global, const):
+    def declarators(self, t, is_global, const, const_word=None):
+        """``const_word``: a local's ``const``, dropped where an initialiser is not a constant
+        expression (HLSL allows ``const float k = 1.0 / length(n);``, GLSL does not)."""
         while True:
             n = self.name().text
             vt = self.array_suffix(t)
@@ -762,7 +768,12 @@ class _Parser:
                 elif self.decl_only:
                     self.assignment()
                 else:
-                    self.coerce(self.assignment(), vt)
+                    init = self.assignment()
+                    self.coerce(init, vt)
+                    names = re.findall(r"\b[A-Za-z_]\w*\b", self.text[init.s:init.e])
+                    if const_word is not None and any(builtin_type(w) is None for w in names):
+                        self.delete_word(const_word)
+                        const_word = None
             self.declare(n, vt)
             if not self.accept(","):
                 break
@@ -902,7 +913,8 @@ class _Parser:
             if self.at("struct"):
                 self.next()
             ty = self.type_spec()
-            self.declarators(ty, is_global=False, const=False)
+            const = next((q for q in quals if q.text == "const"), None)
+            self.declarators(ty, is_global=False, const=False, const_word=const)
         else:
             first = self.peek()
             e = self.expression()
@@ -1375,10 +1387,12 @@ def _rename_in_directives(text: str, directives) -> list:
     return out
 
 
-def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
+def convert_detail(text: str, symbols: Symbols | None = None, srp: bool = False) -> Result:
+    """``srp``: a Scriptable Render Pipeline's program, whose structs' members depend on the
+    preprocessor (their zeros are functions: _Parser._define_conditional_zero)."""
     symbols = (symbols or library()).copy()
     try:
-        parser = _Parser(text, symbols)
+        parser = _Parser(text, symbols, srp=srp)
     except CgSyntaxError:
         return Result(text, [1])
     parser.program()
@@ -1387,15 +1401,15 @@ def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
     return Result(parser.edits.apply(text), parser.skipped)
 
 
-def convert(text: str, symbols: Symbols | None = None) -> str:
-    return convert_detail(text, symbols).text
+def convert(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
+    return convert_detail(text, symbols, srp).text
 
 
-def with_declarations(text: str) -> Symbols:
+def with_declarations(text: str, srp: bool = False) -> Symbols:
     """The library's symbols and the declarations of ``text`` (a program's included files)."""
     symbols = library().copy()
     try:
-        _Parser(text, symbols, declarations_only=True).program()
+        _Parser(text, symbols, declarations_only=True, srp=srp).program()
     except CgSyntaxError:
         pass  # an include the parser cannot read adds nothing
     return symbols

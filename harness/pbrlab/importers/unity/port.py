@@ -158,12 +158,12 @@ _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, r
 
 def _macro_arguments(code: str, start: int):
     """(the arguments, the offset after ``)``) of a call whose ``(`` is at ``start``, split at
-    top-level commas; None when the parentheses do not close on the same line."""
+    top-level commas (a call may span lines); None when the parentheses do not close."""
     depth, args, begin = 0, [], start + 1
     for i in range(start, len(code)):
         c = code[i]
-        if c == "\n":
-            return None
+        if c == "#" and code[code.rfind("\n", 0, i) + 1:i].strip() == "":
+            return None  # a preprocessor line inside: not a call this rule reads
         if c in "([":
             depth += 1
         elif c in ")]":
@@ -177,17 +177,25 @@ def _macro_arguments(code: str, start: int):
     return None
 
 
+# The start of a #define line up to its replacement text (``#define NAME(a, b) ``): a use of
+# the texture API after it is the shader's own macro's (``#define SAMPLE_MASK(uv)
+# SAMPLE_TEXTURE2D(_Mask, sampler_Mask, uv)``), spelled in Cg like any other.
+_DEFINE_BODY = re.compile(r"#\s*define\s+\w+(?:\([^()]*\))?\s")
+
+
 def _expand_srp_texture_macros(code: str) -> str:
     """Each use of the SRP texture API on a code line spelled in Cg (``SAMPLE_TEXTURE2D(t, s, uv)``
-    -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int); preprocessor lines
-    (the stand-ins' own definitions) are left alone; lines are kept."""
+    -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int), also in a #define's
+    replacement text; other preprocessor lines and the name a #define defines (the stand-ins'
+    own definitions) are left alone; lines are kept."""
     out, pos = [], 0
     for m in _SRP_MACRO.finditer(code):
         if m.start() < pos:
             continue
         line_start = code.rfind("\n", 0, m.start()) + 1
-        if code[line_start:m.start()].lstrip().startswith("#"):
-            continue
+        head = code[line_start:m.start()].lstrip()
+        if head.startswith("#") and not _DEFINE_BODY.match(head):
+            continue  # a directive, or the name a #define defines: the stand-ins' own definitions
         found = _macro_arguments(code, m.end() - 1)
         if found is None:
             continue
@@ -197,9 +205,21 @@ def _expand_srp_texture_macros(code: str) -> str:
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
-        out += [code[pos:m.start()], _SRP_TEXTURE_MACROS[m.group(1)](args)]
+        spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)
+        # the lines a call spans are kept (an argument dropped takes its line breaks with it)
+        spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
+        out += [code[pos:m.start()], spelled]
         pos = end
     return "".join(out) + code[pos:]
+
+
+# Core RP's ZERO_INITIALIZE(type, name) on a code line: ``name = (type)0``, which the type pass
+# ports (a macro would bring the cast in only after the port).
+_ZERO_INITIALIZE = re.compile(r"^(?![ \t]*#)(.*?)\bZERO_INITIALIZE\s*\(\s*(\w+)\s*,\s*(\w+)\s*\)", re.M)
+
+
+def _spell_zero_initialize(code: str) -> str:
+    return _ZERO_INITIALIZE.sub(lambda m: f"{m.group(1)}{m.group(3)} = ({m.group(2)})0", code)
 
 
 def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
@@ -207,12 +227,12 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
-    spell = _expand_srp_texture_macros if srp else (lambda text: text)
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(text))) if srp else (lambda text: text)
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
-    symbols = cg_types.with_declarations(spell(included)) if included.strip() else None
-    segments = _code_segments(cg_types.convert(spell(program), symbols))
+    symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
+    segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = _drop_unity_redeclarations(port_code(code))
     for i, (is_code, t) in enumerate(segments):

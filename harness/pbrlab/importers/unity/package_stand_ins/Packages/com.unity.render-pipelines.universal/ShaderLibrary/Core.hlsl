@@ -67,6 +67,9 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 #endif
 
 // Instancing and stereo: one instance, one eye (the built-in prelude's names, where it has them).
+#define UNITY_ANY_INSTANCING_ENABLED 0
+// A local set to its type's zero (Core RP's ZERO_INITIALIZE; the GLSL port spells it out first).
+#define ZERO_INITIALIZE(type, name) name = (type)0
 #ifndef UNITY_VERTEX_INPUT_INSTANCE_ID
 #define UNITY_VERTEX_INPUT_INSTANCE_ID
 #endif
