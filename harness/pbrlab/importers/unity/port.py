@@ -138,7 +138,9 @@ def port_program(shader: M.SurfaceShader) -> str:
 
 # The Scriptable Render Pipelines' texture API (Core RP's ShaderLibrary macros, which the
 # Universal Render Pipeline's shaders use): in HLSL the stand-ins define them as Unity does;
-# for GLSL each use is spelled in Cg's forms before the two passes, which port those.
+# for GLSL each use is spelled in Cg's forms before the two passes, which port those (URP's
+# reflection probe unity_SpecCube0, read by its mip in Unity's steps, through the stand-in
+# Lighting.hlsl's pbrlab_urp_reflection_probe).
 _SRP_TEXTURE_MACROS = {
     "TEXTURE2D": lambda a: f"sampler2D {a[0]}",
     "TEXTURECUBE": lambda a: f"samplerCUBE {a[0]}",
@@ -150,8 +152,10 @@ _SRP_TEXTURE_MACROS = {
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
-    "SAMPLE_TEXTURECUBE": lambda a: f"texCUBE({a[0]}, {a[2]})",
-    "SAMPLE_TEXTURECUBE_LOD": lambda a: f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))",
+    "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
+                                     else f"texCUBE({a[0]}, {a[2]})"),
+    "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
+                                         else f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))"),
 }
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 

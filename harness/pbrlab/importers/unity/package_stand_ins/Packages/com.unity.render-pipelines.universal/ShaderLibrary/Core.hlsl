@@ -100,6 +100,9 @@ float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
 
+// numer / denom, and 1 where they are equal (Core RP's SafeDiv: 0 / 0 and inf / inf are 1).
+float SafeDiv(float numer, float denom) { return (numer != denom) ? numer / denom : 1.0; }
+
 // v / |v|, and 0-safe: |v|^2 floored at FLT_MIN (Unity's SafeNormalize).
 float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 

@@ -17,6 +17,7 @@
 #define PBRLAB_URP_LIGHTING_HLSL
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
@@ -141,6 +142,42 @@ float3 SampleSHPixel(float3 L2Term, float3 normalWS) { return SampleSH(normalWS)
 float PerceptualRoughnessToMipmapLevel(float perceptualRoughness) {
     return perceptualRoughness * (1.7 - 0.7 * perceptualRoughness) * PBRLAB_URP_SPECCUBE_LOD_STEPS;
 }
+// The reflection probe as URP shaders read it themselves: unity_SpecCube0 (and its sampler
+// samplerunity_SpecCube0) is the scene environment's prefiltered chain, its mip given in
+// Unity's steps (0 mirror .. PBRLAB_URP_SPECCUBE_LOD_STEPS rough), each the same fraction of
+// pbrlab's chain (u_env_lod_count levels: level i holds perceptual roughness i / (count - 1));
+// black without an environment. unity_SpecCube0_HDR's decode is the identity here (the
+// environment is float radiance: multiplier 1, exponent 1). HLSL reads the probe through a
+// struct's SampleLevel, GLSL through the port's spelling of SAMPLE_TEXTURECUBE_LOD
+// (importers/unity/port.py); unity_SpecCube1 (probe blending) is not provided.
+float4 pbrlab_urp_reflection_probe(float3 direction, float mip) {
+#ifdef PBRLAB_ENV
+    float lod = mip / PBRLAB_URP_SPECCUBE_LOD_STEPS * (u_env_lod_count - 1.0);
+    return float4(PBRLAB_SAMPLE_TEXCUBE_LOD(u_env_prefiltered, direction, lod).rgb, 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#ifndef __VERSION__
+struct PbrlabURPReflectionProbe {
+    float unused;
+    float4 SampleLevel(SamplerState s, float3 direction, float mip) { return pbrlab_urp_reflection_probe(direction, mip); }
+    float4 Sample(SamplerState s, float3 direction) { return pbrlab_urp_reflection_probe(direction, 0.0); }
+};
+static PbrlabURPReflectionProbe unity_SpecCube0;
+SamplerState samplerunity_SpecCube0;
+#endif
+// Unity's HDR decode of a probe texel: instructions.x * alpha^instructions.y * rgb, alpha
+// the texel's when instructions.w is 1 (else 1).
+float3 DecodeHDREnvironment(float4 encodedIrradiance, float4 decodeInstructions) {
+    float alpha = max(decodeInstructions.w * (encodedIrradiance.a - 1.0) + 1.0, 0.0);
+    return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * encodedIrradiance.rgb;
+}
+// The probes' baked occlusion of the shadow mask: none here (every channel 1).
+#define unity_ProbesOcclusion float4(1.0, 1.0, 1.0, 1.0)
+// The mesh's rendering layers, as RenderingLayers.hlsl's GetMeshRenderingLayer (every layer).
+uint GetMeshRenderingLightLayer() { return 0xFFFFFFFFu; }
+
 float3 GlossyEnvironmentReflection(float3 reflectVector, float perceptualRoughness, float occlusion) {
 #ifdef PBRLAB_ENV
     return PBR_UNITY_GLOSSY_ENVIRONMENT(reflectVector, perceptualRoughness) * occlusion;
