@@ -81,3 +81,17 @@ def test_the_built_in_pipeline_s_port_keeps_its_constructor_zeros():
 def test_a_default_argument_s_half_literal_loses_its_suffix_in_the_overload():
     ported = cg_types.convert("half f(half x, half s = 0.5h) { return x * s; }\n", srp=True)
     assert "f(x, (0.5))" in ported and "0.5h" not in ported
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_varying_under_a_pipeline_keyword_reaches_the_fragment_stage(language):
+    """URP enables _ADDITIONAL_LIGHTS where a pass declares it; the reader reads the pass's
+    structs with it on (parse.URP.keywords), so the varying under ``#ifdef _ADDITIONAL_LIGHTS``
+    is carried between the stages (before: in neither language, the fragment read 0 in HLSL
+    and an undefined value in GLSL). Content: the world position + 0.5 on the plane y = 0
+    filling the view: green 0.5 everywhere, red and blue spanning the plane's extent seen."""
+    got = _render(SHADERS / "urp_keyword_varying.shader", language)
+    assert (got[..., 3] > 0).all()
+    assert np.abs(got[..., 1] - 0.5).max() < 1e-6    # y = 0: float32 rounding of 0.5 + ~1e-8
+    assert np.ptp(got[..., 0]) > 0.6 and np.ptp(got[..., 2]) > 0.6  # x and z vary across it
+    assert got[..., 0].min() > 0.0 and got[..., 0].max() < 1.0      # within the unit plane

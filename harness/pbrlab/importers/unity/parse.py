@@ -527,6 +527,7 @@ class Pipeline:
     srp: bool = False       # a Scriptable Render Pipeline: its programs are ported as SRP
                             # code (model.VertexFragmentPass.srp)
     rewrites: tuple = ()    # functions text -> text applied to its programs after the spellings
+    keywords: tuple = ()    # keywords it enables where a program declares them (its renderer's)
 
 
 BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG",), ())
@@ -551,7 +552,9 @@ URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalf
                ),
                srp=True,
                # Shader Graph's texture objects (UnityTexture2D locals) spelled out
-               rewrites=(texture_objects.spelled_out,))
+               rewrites=(texture_objects.spelled_out,),
+               # URP's default renderer: per-pixel additional lights
+               keywords=("_ADDITIONAL_LIGHTS",))
 
 
 def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
@@ -722,7 +725,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         program = pattern.sub(replacement, program)
     for rewrite in pipeline.rewrites:
         program = rewrite(program)
-    vf = parse_pass(program, path, first, p, pipeline.spellings)
+    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf
