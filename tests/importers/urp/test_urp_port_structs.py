@@ -95,3 +95,45 @@ def test_a_varying_under_a_pipeline_keyword_reaches_the_fragment_stage(language)
     assert np.abs(got[..., 1] - 0.5).max() < 1e-6    # y = 0: float32 rounding of 0.5 + ~1e-8
     assert np.ptp(got[..., 0]) > 0.6 and np.ptp(got[..., 2]) > 0.6  # x and z vary across it
     assert got[..., 0].min() > 0.0 and got[..., 0].max() < 1.0      # within the unit plane
+
+
+MACRO_PARAMS = """#if defined(SM)
+#define MASK_PARAM , const half4 shadow_mask
+#define MASK_ARG , shadow_mask
+#else
+#define MASK_PARAM
+#define MASK_ARG
+#endif
+void f(in const float3 p, inout half3 d MASK_PARAM, const half3 albedo = half3(1, 1, 1), float3 o = 0) { d += albedo + o; }
+"""
+CALLER = "void g() { half3 d = 0; f(float3(0, 0, 0), d MASK_ARG); }\n"
+
+
+def test_defaults_after_a_parameter_list_macro_forward_what_the_macro_declares():
+    """Delt06's ``..., inout half3 spec SHADOW_MASK_PARAM, const half3 albedo = ...``: the shorter
+    forms keep the macro and forward its parameters through PBR_UNITY_ARGS_<macro>, defined at
+    the end of the file under each #define's own #if lines; the caller's argument macro is read
+    past (its ``half3 d = 0`` is still splatted); ``in const`` becomes GLSL's ``const in``; a
+    scalar default of a vector parameter is splatted (``float3(0)``)."""
+    ported = cg_types.convert(MACRO_PARAMS + CALLER, srp=True)
+    assert "half3 d = float3(0)" in ported  # the caller read past its argument macro
+    assert "void f(const in float3 p, inout half3 d MASK_PARAM);" in ported  # the prototype, on its line
+    tail = ported.split("void g()")[1]
+    assert "#if defined(SM)\n#undef PBR_UNITY_ARGS_MASK_PARAM\n#define PBR_UNITY_ARGS_MASK_PARAM , shadow_mask\n#endif" in tail
+    assert "#else\n#undef PBR_UNITY_ARGS_MASK_PARAM\n#define PBR_UNITY_ARGS_MASK_PARAM \n#endif" in tail
+    assert ("void f(const in float3 p, inout half3 d MASK_PARAM) { f(p, d PBR_UNITY_ARGS_MASK_PARAM, "
+            "(half3(1, 1, 1)), (float3(0))); }") in tail
+    assert len(ported.split("void g()")[0].splitlines()) == 8  # lines kept up to the caller
+
+
+@pytest.mark.parametrize("mask", [False, True])
+def test_the_forwarding_overloads_compile_in_glsl_with_the_macro_either_way(mask, tmp_path):
+    """The port compiles with the macro empty and with it declaring a parameter."""
+    import pbrlab
+    from pbrlab.importers.unity import port
+    code = ("#define SM\n" if mask else "") + MACRO_PARAMS + (
+        "float4 pbr_test() { half4 shadow_mask = half4(1, 1, 1, 1); half3 d = 0; f(float3(0, 0, 0), d MASK_ARG); "
+        "return float4(d, 1); }\n")
+    (tmp_path / "t.glsl").write_text(port.port_text(code, srp=True))
+    got = pbrlab.evaluate("pbr_test()", includes=["unity_compat/cg_compat.glsl", "t.glsl"], include_dirs=[tmp_path])
+    assert np.asarray(got).tolist() == [1.0, 1.0, 1.0, 1.0]  # d += albedo (1) + o (0)

@@ -696,6 +696,7 @@ class _Parser:
         self.expect("(")
         params, scope = [], {}
         spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
+        param_macros = []            # (the number of parameters before it, a parameter-list macro)
         if not self.at(")"):
             while True:
                 if self.at("void") and self.at(")", 1):
@@ -703,6 +704,12 @@ class _Parser:
                     break
                 first = self.peek().s
                 pq = self.qualifiers()
+                words = [q.text for q in pq]
+                if not self.decl_only and "const" in words and any(w in ("in", "out", "inout") for w in words[:words.index("const")]):
+                    # HLSL takes ``in const``; GLSL wants const first
+                    direction = next(q for q in pq if q.text in ("in", "out", "inout"))
+                    self.delete_word(pq[words.index("const")])
+                    self.edits.open(direction.s, "const ")
                 pt = self.type_spec()
                 if pt is None:
                     self.fail("parameter type")
@@ -710,26 +717,33 @@ class _Parser:
                 pn = name_tok.text
                 pt = self.array_suffix(pt)
                 self.semantic()
-                spelled.append((self.text[first:name_tok.e], pn))
+                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", self.text[first:name_tok.e]), pn))
                 default = None
                 if self.at("="):
                     eq = self.next()
                     start = self.peek().s
-                    self.assignment()
+                    value = self.assignment()
                     default = self.text[start:self.toks[self.i - 1].e]
+                    if value.t is not None and value.t.scalar and pt.vector:
+                        default = f"{pt.cg()}({default})"  # HLSL splats a scalar default; GLSL does not
                     if not self.decl_only:  # GLSL has no default arguments: overloads below
                         self.edits.replace(eq.s, self.toks[self.i - 1].e, "")
                 defaults.append(default)
                 qual = next((q.text for q in pq if q.text in ("out", "inout")), "in")
                 params.append(Param(qual, pt))
                 scope[pn] = pt
+                # a macro that brings parameters of its own (``, const half4 mask`` or nothing),
+                # written after this parameter: kept where it stands
+                while self.peek().kind == "id" and self.peek(1).text in (",", ")"):
+                    param_macros.append((len(params), self.next().text))
                 if not self.accept(","):
                     break
         self.expect(")")
         self.semantic()
         # one entry per signature: a prototype and its definition (or an include's prototype
         # known twice) are one function, not an ambiguous pair of overloads
-        known = self.sym.functions.setdefault(name, [])
+        # (a parameter-list macro's parameters are unknown here: calls to it are left untyped)
+        known = self.sym.functions.setdefault(name, []) if not param_macros else []
         first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
         for k in [len(params), *range(first_default, len(params))]:  # f(a, b = 1) may be called as f(a)
             if Signature(ret, params[:k]) not in known:
@@ -743,7 +757,9 @@ class _Parser:
         self.scopes = [scope]
         self.block(new_scope=False)
         self.scopes, self.ret = [], None
-        if first_default < len(params):
+        if first_default < len(params) and param_macros:
+            self._macro_default_overloads(ret, name, spelled, defaults, first_default, param_macros)
+        elif first_default < len(params):
             # HLSL's default arguments as GLSL overloads, on the closing brace's line (the
             # port keeps its line count): each shorter form calls the full one with the defaults.
             overloads = []
@@ -753,6 +769,53 @@ class _Parser:
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
             self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
+
+    def _macro_default_overloads(self, ret, name, spelled, defaults, first_default, param_macros):
+        """Default arguments of a parameter list that also holds parameter macros
+        (``..., inout half3 spec SHADOW_MASK_PARAM, const half3 albedo = half3(1, 1, 1)``): each
+        shorter form keeps the macros before its cut in its parameters and forwards what they
+        declare through PBR_UNITY_ARGS_<macro>, the names of the parameters each #define of the
+        macro in this file brings, defined at the end of the file under that #define's own #if
+        lines. The shorter forms' prototypes go on the closing brace's line (lines kept), their
+        bodies after those #defines. A macro this file does not define: no shorter forms (the
+        compiler names the default argument)."""
+        definitions = {}
+        for s, e in self.directives:
+            m = re.match(r"#\s*define\s+(\w+)(?!\()[ \t]*(.*)", self.text[s:e], re.S)
+            if m and m.group(1) in {mac for _, mac in param_macros}:
+                definitions.setdefault(m.group(1), []).append((s, m.group(2).replace("\\\n", " ").strip()))
+        if any(mac not in definitions for _, mac in param_macros):
+            return
+        tail = []
+        for mac, found in definitions.items():
+            for pos, body in found:
+                names = [re.findall(r"[A-Za-z_]\w*", piece)[-1] for piece in body.split(",")
+                         if re.findall(r"[A-Za-z_]\w*", piece)]
+                conditions = _enclosing_conditions(self.text, self.directives, pos)
+                args = "".join(f", {n}" for n in names)
+                tail += [*conditions, f"#undef PBR_UNITY_ARGS_{mac}", f"#define PBR_UNITY_ARGS_{mac} {args}",
+                         *["#endif"] * sum(1 for c in conditions if c.startswith("#if"))]
+
+        def listed(k, spell, spell_macro):
+            """The first k parameters (spell: their text or their name), each followed by the
+            parameter macros written after it."""
+            out = ""
+            for i, item in enumerate(spelled[:k]):
+                out += (", " if i else "") + spell(item)
+                out += "".join(f" {spell_macro(mac)}" for at, mac in param_macros if at == i + 1)
+            return out
+
+        prototypes, bodies = [], []
+        for k in range(first_default, len(spelled)):
+            if any(at > k for at, _ in param_macros):
+                return  # a macro after the cut: its parameters have no value in the shorter form
+            head = f"{ret.cg()} {name}({listed(k, lambda p: p[0], lambda mac: mac)})"
+            args = listed(k, lambda p: p[1], lambda mac: f"PBR_UNITY_ARGS_{mac}")
+            args += "".join(f", ({_glsl_literals(d)})" for d in defaults[k:])
+            prototypes.append(f" {head};")
+            bodies.append(f"{head} {{ {'return ' if ret.base != 'void' else ''}{name}({args}); }}")
+        self.edits.close(self.toks[self.i - 1].e, "".join(prototypes))
+        self.edits.close(len(self.text), "\n" + "\n".join(tail + bodies) + "\n")
 
     def declarators(self, t, is_global, const, const_word=None):
         """``const_word``: a local's ``const``, dropped where an initialiser is not a constant
@@ -1216,6 +1279,10 @@ class _Parser:
         if not self.at(")"):
             while True:
                 args.append(self.assignment())
+                # an argument-list macro after it (``d SHADOW_MASK_ARG``: ``, mask`` or nothing),
+                # left where it stands
+                while self.peek().kind == "id" and self.peek(1).text in (",", ")"):
+                    self.next()
                 if not self.accept(","):
                     break
         close = self.expect(")")
