@@ -37,6 +37,13 @@ BLANK_BY_DEFAULT = {
         "the outline shell's colour is _Color, whose default is (0, 0, 0, 0): a black shell around the sphere",
     "VKev__Unity-URP-Shaders-Code/Assets/Shaders/Object_Shader/Toon_Shader/URP_Toon.shader":
         "_LightMaxIntensity defaults to 0, which scales every toon band: black",
+    "decentraland__unity-renderer/unity-renderer/Assets/Rendering/Shaders/Toon/Compiled/ToonShaderCompiled.shader":
+        "its graph ends in Shader Graph's Fog node, lerp(colour, fog colour, 1 - density): outside fog (no fog "
+        "keyword, as here) URP's node gives density 0, so the pixel is the fog colour, black here (pbrlab has no "
+        "fog; Unity's is its Lighting settings' colour). Checked with density 1: it draws colour (its default matcaps are white)",
+    "ColinLeung-NiloCat__UnityURPUnlitScreenSpaceDecalShader/URP_NiloCatExtension_ScreenSpaceDecal_Unlit.shader":
+        "a screen-space decal: it projects the scene's depth (its own sampler2D _CameraDepthTexture, which "
+        "pbrlab draws no depth pre-pass for and leaves unbound) into its box and clips what falls outside: black",
 }
 
 

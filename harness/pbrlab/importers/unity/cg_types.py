@@ -167,6 +167,36 @@ def tokenize(text: str):
     return toks, directives
 
 
+_CONDITION = re.compile(r"#\s*(if|ifdef|ifndef|elif|else|endif)\b")
+
+
+def _enclosing_conditions(text: str, directives, pos: int) -> list:
+    """The preprocessor lines that put ``pos`` where it is: each open #if (its #elif and
+    #else up to the branch ``pos`` lies in), outermost first; a file's include guard
+    (``#ifndef X`` then ``#define X`` first) is not one, nor is anything closed before."""
+    stack = []   # per open #if: its lines so far
+    spans = [(s, e) for s, e in directives if s < pos]
+    guard = None
+    if len(directives) >= 2:
+        first, second = (text[s:e] for s, e in directives[:2])
+        m = re.match(r"#\s*ifndef\s+(\w+)", first)
+        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", second):
+            guard = directives[0][0]
+    for s, e in spans:
+        m = _CONDITION.match(text, s)
+        if not m or s == guard:
+            continue
+        line = text[s:e].strip()
+        if m.group(1).startswith("if"):
+            stack.append([line])
+        elif m.group(1) == "endif":
+            if stack:
+                stack.pop()
+        elif stack:
+            stack[-1].append(line)
+    return [line for block in stack for line in block]
+
+
 class CgSyntaxError(Exception):
     def __init__(self, message, pos):
         super().__init__(message)
@@ -174,6 +204,16 @@ class CgSyntaxError(Exception):
 
 
 # --- edits -------------------------------------------------------------------------------
+
+# A float literal with a suffix GLSL lacks (``1.0h``, ``0.5H``), in a default argument the port
+# copies into an overload (primary() drops the suffix where the literal stands).
+_SUFFIXED_FLOAT = re.compile(r"\b((?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?)[hH]\b|(?<![\w.])(\.\d+(?:[eE][+-]?\d+)?)[hH]\b")
+
+
+def _glsl_literals(text: str) -> str:
+    """``text`` with its float literals' ``h`` suffixes dropped (``1.0h`` -> ``1.0``)."""
+    return _SUFFIXED_FLOAT.sub(lambda m: m.group(1) or m.group(2), text)
+
 
 class Edits:
     """Insertions before/after expressions and token replacements, applied in one pass.
@@ -246,11 +286,14 @@ class Symbols:
     functions: dict = field(default_factory=dict)  # name -> [Signature]
     globals: dict = field(default_factory=dict)    # name -> Type
     aliases: dict = field(default_factory=dict)    # object-like #define NAME OTHER
+    # structs whose members depend on the preprocessor (an #if among them, or a macro member):
+    # their zero is the function pbr_unity_zero_<name>() the port defines (_Parser.struct)
+    conditional: set = field(default_factory=set)
 
     def copy(self):
         return Symbols({k: dict(v) for k, v in self.structs.items()},
                        {k: list(v) for k, v in self.functions.items()},
-                       dict(self.globals), dict(self.aliases))
+                       dict(self.globals), dict(self.aliases), set(self.conditional))
 
 
 LIBRARY_FILES = (  # what the harness's GLSL path includes before a port (generate.py)
@@ -339,7 +382,7 @@ class E:
 
 
 class _Parser:
-    def __init__(self, text, symbols: Symbols, declarations_only=False):
+    def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
         self.text = text
         self.toks, self.directives = tokenize(text)
         self.i = 0
@@ -352,6 +395,7 @@ class _Parser:
         self.scopes = []
         self.ret = None
         self.decl_only = declarations_only
+        self.srp = srp  # a Scriptable Render Pipeline's program (conditional structs' zeros)
         self.skipped = []
 
     # token helpers
@@ -548,12 +592,14 @@ class _Parser:
         name = self.name().text
         fields = {}
         self.sym.structs[name] = fields
-        self.expect("{")
+        self.sym.conditional.discard(name)
+        open_ = self.expect("{")
+        members, macro_member = [], False   # (position, name, Type) in declaration order
         while not self.accept("}"):
             if self.accept(";"):
                 continue
             self.qualifiers()
-            t = self.type_spec()
+            t = None if self._macro_member_ahead() else self.type_spec()
             if t is None:
                 # a macro member: INTERNAL_DATA, UNITY_FOG_COORDS(3), UNITY_VERTEX_INPUT_INSTANCE_ID
                 tok = self.next()
@@ -562,18 +608,59 @@ class _Parser:
                 if self.at("("):
                     self.skip_balanced("(", ")")
                 self.accept(";")
+                macro_member = True
                 continue
             while True:
-                n = self.name().text
+                name_tok = self.name()
+                n = name_tok.text
                 ft = self.array_suffix(t)
                 self.semantic()
                 fields[n] = ft
+                members.append((name_tok.s, n, ft))
                 if not self.accept(","):
                     break
             self.expect(";")
+        close = self.toks[self.i - 1]
+        inside = [(s, e) for s, e in self.directives if open_.s < s < close.s]
         if self.peek().kind == "id":
             self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
-        self.expect(";")
+        end = self.expect(";")
+        if (inside or macro_member) and self.srp:
+            self.sym.conditional.add(name)
+            if not self.decl_only and not self.scopes:
+                self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    def _macro_member_ahead(self) -> bool:
+        """Whether the struct member ahead is a bare macro (UNITY_VERTEX_INPUT_INSTANCE_ID
+        before another member or the closing brace), not ``Type name``: a name after a
+        type is followed by ``;``, ``,``, ``:`` or ``[``."""
+        first, second = self.peek(), self.peek(1)
+        if first.kind != "id" or builtin_type(first.text) is not None or first.text in self.sym.structs:
+            return False
+        return second.kind == "id" and self.peek(2).text not in (";", ",", ":", "[")
+
+    def _define_conditional_zero(self, name, start, end, members, inside):
+        """The zero of a struct whose members depend on the preprocessor: GLSL has no
+        ``(Struct)0``, and a constructor would list the members of every #if branch. Its
+        prototype goes on the struct's last line (the port keeps its line count); its body at
+        the end of the file, each member zeroed under the struct's own #if lines, the whole
+        under the #if lines that enclose the struct (their #else and #elif branches kept
+        empty) and a guard of its own (an include read twice defines it once). A macro
+        member (its name unknown here) is left as GLSL leaves a local: undefined."""
+        zero = f"pbr_unity_zero_{name}"
+        self.edits.close(end, f" {name} {zero}();")
+        body = [(s, self.text[s:e].strip()) for s, e in inside]
+        for pos, member, ty in members:
+            try:
+                body.append((pos, f"    z.{member} = {self.zero_value(ty)};"))
+            except CgSyntaxError:
+                continue  # a member of a type without a zero here (a sampler): left undefined
+        lines = [f"{name} {zero}() {{", f"    {name} z;"] + [t for _, t in sorted(body)] + ["    return z;", "}"]
+        guard = f"PBR_UNITY_ZERO_{name}_DEFINED"
+        enclosing = _enclosing_conditions(self.text, self.directives, start)
+        text = "\n".join([*enclosing, f"#ifndef {guard}", f"#define {guard}", *lines, "#endif",
+                          *["#endif"] * sum(1 for c in enclosing if c.startswith("#if"))])
+        self.edits.close(len(self.text), "\n" + text + "\n")
 
     def semantic(self):
         if self.at(":") and self.peek(1).kind == "id":
@@ -609,6 +696,7 @@ class _Parser:
         self.expect("(")
         params, scope = [], {}
         spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
+        param_macros = []            # (the number of parameters before it, a parameter-list macro)
         if not self.at(")"):
             while True:
                 if self.at("void") and self.at(")", 1):
@@ -616,6 +704,12 @@ class _Parser:
                     break
                 first = self.peek().s
                 pq = self.qualifiers()
+                words = [q.text for q in pq]
+                if not self.decl_only and "const" in words and any(w in ("in", "out", "inout") for w in words[:words.index("const")]):
+                    # HLSL takes ``in const``; GLSL wants const first
+                    direction = next(q for q in pq if q.text in ("in", "out", "inout"))
+                    self.delete_word(pq[words.index("const")])
+                    self.edits.open(direction.s, "const ")
                 pt = self.type_spec()
                 if pt is None:
                     self.fail("parameter type")
@@ -623,27 +717,37 @@ class _Parser:
                 pn = name_tok.text
                 pt = self.array_suffix(pt)
                 self.semantic()
-                spelled.append((self.text[first:name_tok.e], pn))
+                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", self.text[first:name_tok.e]), pn))
                 default = None
                 if self.at("="):
                     eq = self.next()
                     start = self.peek().s
-                    self.assignment()
+                    value = self.assignment()
                     default = self.text[start:self.toks[self.i - 1].e]
+                    if value.t is not None and value.t.scalar and pt.vector:
+                        default = f"{pt.cg()}({default})"  # HLSL splats a scalar default; GLSL does not
                     if not self.decl_only:  # GLSL has no default arguments: overloads below
                         self.edits.replace(eq.s, self.toks[self.i - 1].e, "")
                 defaults.append(default)
                 qual = next((q.text for q in pq if q.text in ("out", "inout")), "in")
                 params.append(Param(qual, pt))
                 scope[pn] = pt
+                # a macro that brings parameters of its own (``, const half4 mask`` or nothing),
+                # written after this parameter: kept where it stands
+                while self.peek().kind == "id" and self.peek(1).text in (",", ")"):
+                    param_macros.append((len(params), self.next().text))
                 if not self.accept(","):
                     break
         self.expect(")")
         self.semantic()
-        self.sym.functions.setdefault(name, []).append(Signature(ret, params))
+        # one entry per signature: a prototype and its definition (or an include's prototype
+        # known twice) are one function, not an ambiguous pair of overloads
+        # (a parameter-list macro's parameters are unknown here: calls to it are left untyped)
+        known = self.sym.functions.setdefault(name, []) if not param_macros else []
         first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
-        for k in range(first_default, len(params)):  # f(a, b = 1) may be called as f(a)
-            self.sym.functions[name].append(Signature(ret, params[:k]))
+        for k in [len(params), *range(first_default, len(params))]:  # f(a, b = 1) may be called as f(a)
+            if Signature(ret, params[:k]) not in known:
+                known.append(Signature(ret, params[:k]))
         if self.accept(";"):
             return
         if self.decl_only:
@@ -653,18 +757,69 @@ class _Parser:
         self.scopes = [scope]
         self.block(new_scope=False)
         self.scopes, self.ret = [], None
-        if first_default < len(params):
+        if first_default < len(params) and param_macros:
+            self._macro_default_overloads(ret, name, spelled, defaults, first_default, param_macros)
+        elif first_default < len(params):
             # HLSL's default arguments as GLSL overloads, on the closing brace's line (the
             # port keeps its line count): each shorter form calls the full one with the defaults.
             overloads = []
             for k in range(first_default, len(params)):
-                args = [n for _, n in spelled[:k]] + [f"({d})" for d in defaults[k:]]
+                args = [n for _, n in spelled[:k]] + [f"({_glsl_literals(d)})" for d in defaults[k:]]
                 call = f"{name}({', '.join(args)})"
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
             self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
 
-    def declarators(self, t, is_global, const):
+    def _macro_default_overloads(self, ret, name, spelled, defaults, first_default, param_macros):
+        """Default arguments of a parameter list that also holds parameter macros
+        (``..., inout half3 spec SHADOW_MASK_PARAM, const half3 albedo = half3(1, 1, 1)``): each
+        shorter form keeps the macros before its cut in its parameters and forwards what they
+        declare through PBR_UNITY_ARGS_<macro>, the names of the parameters each #define of the
+        macro in this file brings, defined at the end of the file under that #define's own #if
+        lines. The shorter forms' prototypes go on the closing brace's line (lines kept), their
+        bodies after those #defines. A macro this file does not define: no shorter forms (the
+        compiler names the default argument)."""
+        definitions = {}
+        for s, e in self.directives:
+            m = re.match(r"#\s*define\s+(\w+)(?!\()[ \t]*(.*)", self.text[s:e], re.S)
+            if m and m.group(1) in {mac for _, mac in param_macros}:
+                definitions.setdefault(m.group(1), []).append((s, m.group(2).replace("\\\n", " ").strip()))
+        if any(mac not in definitions for _, mac in param_macros):
+            return
+        tail = []
+        for mac, found in definitions.items():
+            for pos, body in found:
+                names = [re.findall(r"[A-Za-z_]\w*", piece)[-1] for piece in body.split(",")
+                         if re.findall(r"[A-Za-z_]\w*", piece)]
+                conditions = _enclosing_conditions(self.text, self.directives, pos)
+                args = "".join(f", {n}" for n in names)
+                tail += [*conditions, f"#undef PBR_UNITY_ARGS_{mac}", f"#define PBR_UNITY_ARGS_{mac} {args}",
+                         *["#endif"] * sum(1 for c in conditions if c.startswith("#if"))]
+
+        def listed(k, spell, spell_macro):
+            """The first k parameters (spell: their text or their name), each followed by the
+            parameter macros written after it."""
+            out = ""
+            for i, item in enumerate(spelled[:k]):
+                out += (", " if i else "") + spell(item)
+                out += "".join(f" {spell_macro(mac)}" for at, mac in param_macros if at == i + 1)
+            return out
+
+        prototypes, bodies = [], []
+        for k in range(first_default, len(spelled)):
+            if any(at > k for at, _ in param_macros):
+                return  # a macro after the cut: its parameters have no value in the shorter form
+            head = f"{ret.cg()} {name}({listed(k, lambda p: p[0], lambda mac: mac)})"
+            args = listed(k, lambda p: p[1], lambda mac: f"PBR_UNITY_ARGS_{mac}")
+            args += "".join(f", ({_glsl_literals(d)})" for d in defaults[k:])
+            prototypes.append(f" {head};")
+            bodies.append(f"{head} {{ {'return ' if ret.base != 'void' else ''}{name}({args}); }}")
+        self.edits.close(self.toks[self.i - 1].e, "".join(prototypes))
+        self.edits.close(len(self.text), "\n" + "\n".join(tail + bodies) + "\n")
+
+    def declarators(self, t, is_global, const, const_word=None):
+        """``const_word``: a local's ``const``, dropped where an initialiser is not a constant
+        expression (HLSL allows ``const float k = 1.0 / length(n);``, GLSL does not)."""
         while True:
             n = self.name().text
             vt = self.array_suffix(t)
@@ -676,7 +831,12 @@ class _Parser:
                 elif self.decl_only:
                     self.assignment()
                 else:
-                    self.coerce(self.assignment(), vt)
+                    init = self.assignment()
+                    self.coerce(init, vt)
+                    names = re.findall(r"\b[A-Za-z_]\w*\b", self.text[init.s:init.e])
+                    if const_word is not None and any(builtin_type(w) is None for w in names):
+                        self.delete_word(const_word)
+                        const_word = None
             self.declare(n, vt)
             if not self.accept(","):
                 break
@@ -816,7 +976,8 @@ class _Parser:
             if self.at("struct"):
                 self.next()
             ty = self.type_spec()
-            self.declarators(ty, is_global=False, const=False)
+            const = next((q for q in quals if q.text == "const"), None)
+            self.declarators(ty, is_global=False, const=False, const_word=const)
         else:
             first = self.peek()
             e = self.expression()
@@ -1014,6 +1175,8 @@ class _Parser:
         if ty.array > 0:
             element = self.zero_value(ty.element())
             return f"{ty.element().cg()}[{ty.array}]({', '.join([element] * ty.array)})"
+        if ty.base in self.sym.conditional:
+            return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:
             members = self.sym.structs[ty.base].values()
             return f"{ty.base}({', '.join(self.zero_value(m) for m in members)})"
@@ -1116,6 +1279,10 @@ class _Parser:
         if not self.at(")"):
             while True:
                 args.append(self.assignment())
+                # an argument-list macro after it (``d SHADOW_MASK_ARG``: ``, mask`` or nothing),
+                # left where it stands
+                while self.peek().kind == "id" and self.peek(1).text in (",", ")"):
+                    self.next()
                 if not self.accept(","):
                     break
         close = self.expect(")")
@@ -1287,10 +1454,12 @@ def _rename_in_directives(text: str, directives) -> list:
     return out
 
 
-def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
+def convert_detail(text: str, symbols: Symbols | None = None, srp: bool = False) -> Result:
+    """``srp``: a Scriptable Render Pipeline's program, whose structs' members depend on the
+    preprocessor (their zeros are functions: _Parser._define_conditional_zero)."""
     symbols = (symbols or library()).copy()
     try:
-        parser = _Parser(text, symbols)
+        parser = _Parser(text, symbols, srp=srp)
     except CgSyntaxError:
         return Result(text, [1])
     parser.program()
@@ -1299,15 +1468,15 @@ def convert_detail(text: str, symbols: Symbols | None = None) -> Result:
     return Result(parser.edits.apply(text), parser.skipped)
 
 
-def convert(text: str, symbols: Symbols | None = None) -> str:
-    return convert_detail(text, symbols).text
+def convert(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
+    return convert_detail(text, symbols, srp).text
 
 
-def with_declarations(text: str) -> Symbols:
+def with_declarations(text: str, srp: bool = False) -> Symbols:
     """The library's symbols and the declarations of ``text`` (a program's included files)."""
     symbols = library().copy()
     try:
-        _Parser(text, symbols, declarations_only=True).program()
+        _Parser(text, symbols, declarations_only=True, srp=srp).program()
     except CgSyntaxError:
         pass  # an include the parser cannot read adds nothing
     return symbols

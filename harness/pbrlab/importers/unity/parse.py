@@ -20,7 +20,7 @@ from pathlib import Path
 from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
-from . import shaderlab
+from . import shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, top_level)
@@ -526,6 +526,8 @@ class Pipeline:
                             # shaders use in signatures and directives, in the forms the reader knows
     srp: bool = False       # a Scriptable Render Pipeline: its programs are ported as SRP
                             # code (model.VertexFragmentPass.srp)
+    rewrites: tuple = ()    # functions text -> text applied to its programs after the spellings
+    keywords: tuple = ()    # keywords it enables where a program declares them (its renderer's)
 
 
 BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG",), ())
@@ -548,7 +550,11 @@ URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalf
                    # Unity 2022's include that also reads the file's #pragma lines: an include here
                    (re.compile(r"#(\s*)include_with_pragmas\b"), r"#\1include"),
                ),
-               srp=True)
+               srp=True,
+               # Shader Graph's texture objects (UnityTexture2D locals) spelled out
+               rewrites=(texture_objects.spelled_out,),
+               # URP's default renderer: per-pixel additional lights
+               keywords=("_ADDITIONAL_LIGHTS",))
 
 
 def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
@@ -717,7 +723,9 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     program, first = layout.program_text(p.program, sub)
     for pattern, replacement in pipeline.spellings:
         program = pattern.sub(replacement, program)
-    vf = parse_pass(program, path, first, p, pipeline.spellings)
+    for rewrite in pipeline.rewrites:
+        program = rewrite(program)
+    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf

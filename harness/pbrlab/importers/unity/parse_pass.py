@@ -12,7 +12,8 @@ from pathlib import Path
 
 from . import model as M
 from .conditionals import active_text, defines_of
-from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, included_text, line_of,
+from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
+                          included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
@@ -105,13 +106,16 @@ def _unresolved_include(program: str, folder: Path):
     return None
 
 
-def parse_pass(program: str, path: Path, first_line: int, block, spellings=()) -> M.VertexFragmentPass:
+def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), keywords=()) -> M.VertexFragmentPass:
     """``spellings``: the pipeline's (parse.Pipeline.spellings), already applied to ``program``
-    and applied here to the files it includes (the functions and structs they define)."""
+    and applied here to the files it includes (the functions and structs they define);
+    ``keywords``: the pipeline's (parse.Pipeline.keywords), on where the program declares them,
+    as when it is drawn (a varying under ``#ifdef _ADDITIONAL_LIGHTS`` is one of its stages')."""
     masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
-    everything = active_text(everything, defines_of(everything))  # the default variant's branches
+    on = [k for k in keywords if k in declared_keywords(program)]
+    everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"

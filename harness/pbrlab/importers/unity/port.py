@@ -26,6 +26,8 @@ port stays line for line with the original and compile errors map back by line):
         scalar; GLSL neither has that overload nor lets a shader overload a built-in).
      6. ``discard`` -> ``PBR_UNITY_DISCARD`` (cg_compat.glsl: nothing in a vertex stage, where
         GLSL refuses the word even in a function that stage never calls).
+     7. A matrix element ``M._mRC`` (HLSL: row R, column C) -> ``M[C][R]`` (GLSL names columns
+        first).
 """
 
 from __future__ import annotations
@@ -41,9 +43,11 @@ from .source_text import PORT_MARKER, included_text
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
-# HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry.
+# HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry
+# (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
+# list whose last parameters are under an #if).
 _SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)])", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
@@ -100,6 +104,8 @@ def port_code(code: str) -> str:
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
     code = re.sub(r"\bdiscard\b", "PBR_UNITY_DISCARD", code)  # GLSL refuses discard in a vertex stage
+    # HLSL's matrix element M._mRC (row R, column C, from 0) is GLSL's M[C][R] (columns first)
+    code = re.sub(r"\._m([0-3])([0-3])\b", r"[\2][\1]", code)
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
     return _globals_uniform(code)
 
@@ -132,7 +138,9 @@ def port_program(shader: M.SurfaceShader) -> str:
 
 # The Scriptable Render Pipelines' texture API (Core RP's ShaderLibrary macros, which the
 # Universal Render Pipeline's shaders use): in HLSL the stand-ins define them as Unity does;
-# for GLSL each use is spelled in Cg's forms before the two passes, which port those.
+# for GLSL each use is spelled in Cg's forms before the two passes, which port those (URP's
+# reflection probe unity_SpecCube0, read by its mip in Unity's steps, through the stand-in
+# Lighting.hlsl's pbrlab_urp_reflection_probe).
 _SRP_TEXTURE_MACROS = {
     "TEXTURE2D": lambda a: f"sampler2D {a[0]}",
     "TEXTURECUBE": lambda a: f"samplerCUBE {a[0]}",
@@ -144,20 +152,22 @@ _SRP_TEXTURE_MACROS = {
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
-    "SAMPLE_TEXTURECUBE": lambda a: f"texCUBE({a[0]}, {a[2]})",
-    "SAMPLE_TEXTURECUBE_LOD": lambda a: f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))",
+    "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
+                                     else f"texCUBE({a[0]}, {a[2]})"),
+    "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
+                                         else f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))"),
 }
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 
 
 def _macro_arguments(code: str, start: int):
     """(the arguments, the offset after ``)``) of a call whose ``(`` is at ``start``, split at
-    top-level commas; None when the parentheses do not close on the same line."""
+    top-level commas (a call may span lines); None when the parentheses do not close."""
     depth, args, begin = 0, [], start + 1
     for i in range(start, len(code)):
         c = code[i]
-        if c == "\n":
-            return None
+        if c == "#" and code[code.rfind("\n", 0, i) + 1:i].strip() == "":
+            return None  # a preprocessor line inside: not a call this rule reads
         if c in "([":
             depth += 1
         elif c in ")]":
@@ -171,17 +181,25 @@ def _macro_arguments(code: str, start: int):
     return None
 
 
+# The start of a #define line up to its replacement text (``#define NAME(a, b) ``): a use of
+# the texture API after it is the shader's own macro's (``#define SAMPLE_MASK(uv)
+# SAMPLE_TEXTURE2D(_Mask, sampler_Mask, uv)``), spelled in Cg like any other.
+_DEFINE_BODY = re.compile(r"#\s*define\s+\w+(?:\([^()]*\))?\s")
+
+
 def _expand_srp_texture_macros(code: str) -> str:
     """Each use of the SRP texture API on a code line spelled in Cg (``SAMPLE_TEXTURE2D(t, s, uv)``
-    -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int); preprocessor lines
-    (the stand-ins' own definitions) are left alone; lines are kept."""
+    -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int), also in a #define's
+    replacement text; other preprocessor lines and the name a #define defines (the stand-ins'
+    own definitions) are left alone; lines are kept."""
     out, pos = [], 0
     for m in _SRP_MACRO.finditer(code):
         if m.start() < pos:
             continue
         line_start = code.rfind("\n", 0, m.start()) + 1
-        if code[line_start:m.start()].lstrip().startswith("#"):
-            continue
+        head = code[line_start:m.start()].lstrip()
+        if head.startswith("#") and not _DEFINE_BODY.match(head):
+            continue  # a directive, or the name a #define defines: the stand-ins' own definitions
         found = _macro_arguments(code, m.end() - 1)
         if found is None:
             continue
@@ -191,9 +209,21 @@ def _expand_srp_texture_macros(code: str) -> str:
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
-        out += [code[pos:m.start()], _SRP_TEXTURE_MACROS[m.group(1)](args)]
+        spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)
+        # the lines a call spans are kept (an argument dropped takes its line breaks with it)
+        spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
+        out += [code[pos:m.start()], spelled]
         pos = end
     return "".join(out) + code[pos:]
+
+
+# Core RP's ZERO_INITIALIZE(type, name) on a code line: ``name = (type)0``, which the type pass
+# ports (a macro would bring the cast in only after the port).
+_ZERO_INITIALIZE = re.compile(r"^(?![ \t]*#)(.*?)\bZERO_INITIALIZE\s*\(\s*(\w+)\s*,\s*(\w+)\s*\)", re.M)
+
+
+def _spell_zero_initialize(code: str) -> str:
+    return _ZERO_INITIALIZE.sub(lambda m: f"{m.group(1)}{m.group(3)} = ({m.group(2)})0", code)
 
 
 def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
@@ -201,12 +231,12 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
-    spell = _expand_srp_texture_macros if srp else (lambda text: text)
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(text))) if srp else (lambda text: text)
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
-    symbols = cg_types.with_declarations(spell(included)) if included.strip() else None
-    segments = _code_segments(cg_types.convert(spell(program), symbols))
+    symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
+    segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
     code = _drop_unity_redeclarations(port_code(code))
     for i, (is_code, t) in enumerate(segments):

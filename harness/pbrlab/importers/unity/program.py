@@ -90,6 +90,8 @@ def _prototypes(masked: str) -> list[str]:
         head = m.group(1)
         if outer[line_start:m.start()].lstrip().startswith("#") or head.split()[0] in _NOT_A_RETURN_TYPE:
             continue
+        if re.search(r"^[ \t]*#", head, re.M):
+            continue  # a parameter list with #if lines: no one-line prototype says it
         out.append(re.sub(r"\s+", " ", re.sub(r"\binline\s+", "", head)) + ";")
     return out
 

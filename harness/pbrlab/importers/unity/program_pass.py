@@ -11,6 +11,11 @@ on every file they read; binding is ``program.bind``'s, as for a surface program
 
 from __future__ import annotations
 
+import atexit
+import shutil
+import tempfile
+from pathlib import Path
+
 from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
@@ -19,9 +24,35 @@ from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
 from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_text,
-                          project_root)
+                          own_package_root, project_root)
 
 _STAGES = {"vertex": "vert", "fragment": "frag"}
+
+
+_PACKAGE_LINKS: dict = {}
+
+
+# The include files a package's own paths may name (copied for glslang: package_links).
+_INCLUDE_SUFFIXES = {".hlsl", ".cginc", ".hlslinc", ".glslinc", ".inc", ".compute"}
+
+
+def package_links(package: str, root: Path) -> Path:
+    """A folder (one per process and package, removed at exit) holding ``Packages/<package>``:
+    a copy of the include files under the package's folder ``root``, through which glslang,
+    which resolves an #include by folders alone, finds the package's own
+    ``Packages/<package>/...`` paths (a copy, not a link: the include closure reads no link
+    that leads out of its folder)."""
+    key = (package, Path(root).resolve())
+    if key not in _PACKAGE_LINKS:
+        folder = Path(tempfile.mkdtemp(prefix="pbrlab-unity-package-"))
+        atexit.register(shutil.rmtree, folder, True)
+        for path in key[1].rglob("*"):
+            if path.suffix.lower() in _INCLUDE_SUFFIXES and path.is_file() and not path.is_symlink():
+                copy = folder / "Packages" / package / path.relative_to(key[1])
+                copy.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(path, copy)
+        _PACKAGE_LINKS[key] = folder
+    return _PACKAGE_LINKS[key]
 
 
 def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
@@ -45,8 +76,10 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
 
     def build():
         # the Unity project's roots its project-path includes resolve from (Assets/..., Packages/...)
-        roots = {project_root(m.group(1), vf.path.parent)
-                 for m in INCLUDE.finditer(blank_comments(vf.program + "\n" + included_text(vf.program, vf.path.parent)))}
+        names = [m.group(1) for m in INCLUDE.finditer(blank_comments(vf.program + "\n" + included_text(vf.program, vf.path.parent)))]
+        roots = {project_root(n, vf.path.parent) for n in names}
+        # a package's own paths (Packages/<it>/...) from a folder that links Packages/<it> to it
+        roots |= {package_links(*own) for own in (own_package_root(n, vf.path.parent) for n in names) if own}
         dirs = [TEMPLATES, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS, vf.path.parent]
         stages, paths = {}, [vf.path]
         for stage in ("vertex", "fragment"):

@@ -14,6 +14,7 @@ end's one error.
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -104,6 +105,9 @@ def resolve_included(name: str, folder: Path):
     root = project_root(name, folder)
     if root is not None:
         candidates.append((root, root / name))
+    own = own_package_root(name, folder)
+    if own is not None:
+        candidates.append((own[1], own[1] / name.split("/", 2)[2]))
     candidates.append((None, CGINC / Path(name).name))
     if name.startswith("Packages/"):
         candidates.append((None, PACKAGE_STAND_INS / name))
@@ -127,6 +131,33 @@ def project_root(name: str, folder: Path) -> Path | None:
     for ancestor in [folder, *folder.parents]:
         if (ancestor / name).is_file():
             return ancestor
+    return None
+
+
+def own_package_root(name: str, folder: Path):
+    """For ``Packages/<package>/<rest>`` written in a file of that package itself (Unity maps
+    ``Packages/<package>/`` to the package's folder, wherever the package lies), (package, the
+    package's folder): the nearest folder at or above ``folder`` whose package.json names the
+    package, or else (a package copied without its package.json) the nearest that holds
+    ``<rest>``; None for Unity's own packages (com.unity.*: pbrlab's stand-ins), for other
+    paths, and where a project folder holds the path (project_root)."""
+    parts = name.split("/", 2)
+    if len(parts) < 3 or parts[0] != "Packages" or parts[1].startswith("com.unity.") or not parts[2]:
+        return None
+    package, rest = parts[1], parts[2]
+    ancestors = [folder, *folder.parents]
+    if any((a / name).is_file() for a in ancestors):
+        return None
+    for ancestor in ancestors:
+        try:
+            named = json.loads((ancestor / "package.json").read_text(encoding="utf-8")).get("name")
+        except (OSError, ValueError, AttributeError):
+            continue
+        if named == package:
+            return (package, ancestor) if (ancestor / rest).is_file() else None
+    for ancestor in ancestors:
+        if (ancestor / rest).is_file():
+            return package, ancestor
     return None
 
 

@@ -19,8 +19,9 @@ from ..unity import URP
 from ..unity import material as unity_material
 from ..unity.source_text import blank_comments
 
-# The keywords URP's default renderer enables globally, where a shader declares them.
-PIPELINE_KEYWORDS = ("_ADDITIONAL_LIGHTS",)
+# The keywords URP's default renderer enables globally, where a shader declares them (the
+# reader reads the programs' structs with them on: parse.URP.keywords).
+PIPELINE_KEYWORDS = URP.keywords
 _URP_TAG = re.compile(r'"RenderPipeline"\s*=\s*"Universal(?:Render)?Pipeline"')
 _URP_INCLUDE = re.compile(r'#\s*include\s+"Packages/com\.unity\.render-pipelines\.universal/')
 

@@ -54,7 +54,22 @@
 #define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
 #endif
 
+// HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
+// fwidth in a vertex stage, which has no derivatives, is 0 (as cg_compat.glsl's ddx, ddy).
+#ifdef __VERSION__
+float rcp(float x) { return 1.0 / x; }
+vec2 rcp(vec2 x) { return 1.0 / x; }
+vec3 rcp(vec3 x) { return 1.0 / x; }
+vec4 rcp(vec4 x) { return 1.0 / x; }
+#ifdef PBR_UNITY_VERTEX_STAGE
+#define fwidth(x) ((x) * 0.0)
+#endif
+#endif
+
 // Instancing and stereo: one instance, one eye (the built-in prelude's names, where it has them).
+#define UNITY_ANY_INSTANCING_ENABLED 0
+// A local set to its type's zero (Core RP's ZERO_INITIALIZE; the GLSL port spells it out first).
+#define ZERO_INITIALIZE(type, name) name = (type)0
 #ifndef UNITY_VERTEX_INPUT_INSTANCE_ID
 #define UNITY_VERTEX_INPUT_INSTANCE_ID
 #endif
@@ -85,10 +100,28 @@ float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
 
+// numer / denom, and 1 where they are equal (Core RP's SafeDiv: 0 / 0 and inf / inf are 1).
+float SafeDiv(float numer, float denom) { return (numer != denom) ? numer / denom : 1.0; }
+
 // v / |v|, and 0-safe: |v|^2 floored at FLT_MIN (Unity's SafeNormalize).
 float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 
+// SRP's names for the object's inverse matrix and the view's (the built-in prelude has
+// UNITY_MATRIX_M, _V, _I_V, _P, _VP).
+#define UNITY_MATRIX_I_M unity_WorldToObject
+#define UNITY_PREV_MATRIX_M unity_ObjectToWorld
+#define UNITY_PREV_MATRIX_I_M unity_WorldToObject
+#define UNITY_MATRIX_I_P unity_CameraInvProjection
+
+// A [0, 1] depth to the eye's distance and to [0, 1] of the far plane, with the
+// _ZBufferParams the caller passes (Core RP's signatures; the built-in ones take z alone):
+// 1 / (zBufferParam.z z + zBufferParam.w) and 1 / (zBufferParam.x z + zBufferParam.y).
+float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
+float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
+
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+// The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
+float4 GetScaledScreenParams() { return _ScreenParams; }
 float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
 float4x4 GetObjectToWorldMatrix() { return unity_ObjectToWorld; }
 float4x4 GetWorldToObjectMatrix() { return unity_WorldToObject; }
@@ -99,6 +132,8 @@ float3 TransformWorldToView(float3 positionWS) { return mul(UNITY_MATRIX_V, floa
 float4 TransformWorldToHClip(float3 positionWS) { return mul(UNITY_MATRIX_VP, float4(positionWS, 1.0)); }
 float4 TransformObjectToHClip(float3 positionOS) { return TransformWorldToHClip(TransformObjectToWorld(positionOS)); }
 float4 TransformWViewToHClip(float3 positionVS) { return mul(UNITY_MATRIX_P, float4(positionVS, 1.0)); }
+// A world direction to clip space (w dropped: a direction has no position).
+float3 TransformWorldToHClipDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_VP, dirWS); }
 float3 TransformObjectToWorldDir(float3 dirOS) { return SafeNormalize(mul((float3x3)unity_ObjectToWorld, dirOS)); }
 float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float3x3)unity_WorldToObject, dirWS)); }
 // Normals by the inverse transpose: n^T M^-1, as Unity writes it.

@@ -17,10 +17,13 @@
 #define PBRLAB_URP_LIGHTING_HLSL
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
 #define kDielectricSpec float4(0.04, 0.04, 0.04, 1.0 - 0.04)
+// The name URP 7 to 10 spelled it with (kDieletricSpec), which shaders of that time use.
+#define kDieletricSpec kDielectricSpec
 // URP's mip count for the reflection probe's roughness levels (UNITY_SPECCUBE_LOD_STEPS).
 #define PBRLAB_URP_SPECCUBE_LOD_STEPS 6.0
 
@@ -100,6 +103,22 @@ Light GetAdditionalLight(uint i, float3 positionWS) {
     return pbrlab_urp_no_light();
 }
 Light GetAdditionalLight(uint i, float3 positionWS, float4 shadowMask) { return GetAdditionalLight(i, positionWS); }
+// Shadows (Shadows.hlsl's names): no shadow maps here, so every light is unshadowed (1).
+float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
+float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
+float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
+float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
+float AdditionalLightShadow(int lightIndex, float3 positionWS, float3 lightDirection, float4 shadowMask,
+                            float4 occlusionProbeChannels) { return 1.0; }
+float4 GetShadowCoord(VertexPositionInputs vertexInput) { return float4(0.0, 0.0, 0.0, 0.0); }
+float3 ApplyShadowBias(float3 positionWS, float3 normalWS, float3 lightDirection) { return positionWS; }
+
+// URP's per-object light list: the i-th additional light is the scene's i-th here (every
+// light reaches every object), so the index is i and the light is GetAdditionalLight's.
+int GetPerObjectLightIndex(uint index) { return int(index); }
+Light GetAdditionalPerObjectLight(int perObjectLightIndex, float3 positionWS) {
+    return GetAdditionalLight(uint(perObjectLightIndex), positionWS);
+}
 
 // Ambient light: the environment's SH9 as Unity's ambient probe (irradiance / pi).
 float3 SampleSH(float3 normalWS) {
@@ -119,6 +138,46 @@ float3 SampleSHPixel(float3 L2Term, float3 normalWS) { return SampleSH(normalWS)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
 
 // URP's mip for a perceptual roughness: pr (1.7 - 0.7 pr) of its 6 levels, in pbrlab's chain.
+// The same mip as a number: perceptual roughness pr to pr (1.7 - 0.7 pr) times the steps.
+float PerceptualRoughnessToMipmapLevel(float perceptualRoughness) {
+    return perceptualRoughness * (1.7 - 0.7 * perceptualRoughness) * PBRLAB_URP_SPECCUBE_LOD_STEPS;
+}
+// The reflection probe as URP shaders read it themselves: unity_SpecCube0 (and its sampler
+// samplerunity_SpecCube0) is the scene environment's prefiltered chain, its mip given in
+// Unity's steps (0 mirror .. PBRLAB_URP_SPECCUBE_LOD_STEPS rough), each the same fraction of
+// pbrlab's chain (u_env_lod_count levels: level i holds perceptual roughness i / (count - 1));
+// black without an environment. unity_SpecCube0_HDR's decode is the identity here (the
+// environment is float radiance: multiplier 1, exponent 1). HLSL reads the probe through a
+// struct's SampleLevel, GLSL through the port's spelling of SAMPLE_TEXTURECUBE_LOD
+// (importers/unity/port.py); unity_SpecCube1 (probe blending) is not provided.
+float4 pbrlab_urp_reflection_probe(float3 direction, float mip) {
+#ifdef PBRLAB_ENV
+    float lod = mip / PBRLAB_URP_SPECCUBE_LOD_STEPS * (u_env_lod_count - 1.0);
+    return float4(PBRLAB_SAMPLE_TEXCUBE_LOD(u_env_prefiltered, direction, lod).rgb, 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#ifndef __VERSION__
+struct PbrlabURPReflectionProbe {
+    float unused;
+    float4 SampleLevel(SamplerState s, float3 direction, float mip) { return pbrlab_urp_reflection_probe(direction, mip); }
+    float4 Sample(SamplerState s, float3 direction) { return pbrlab_urp_reflection_probe(direction, 0.0); }
+};
+static PbrlabURPReflectionProbe unity_SpecCube0;
+SamplerState samplerunity_SpecCube0;
+#endif
+// Unity's HDR decode of a probe texel: instructions.x * alpha^instructions.y * rgb, alpha
+// the texel's when instructions.w is 1 (else 1).
+float3 DecodeHDREnvironment(float4 encodedIrradiance, float4 decodeInstructions) {
+    float alpha = max(decodeInstructions.w * (encodedIrradiance.a - 1.0) + 1.0, 0.0);
+    return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * encodedIrradiance.rgb;
+}
+// The probes' baked occlusion of the shadow mask: none here (every channel 1).
+#define unity_ProbesOcclusion float4(1.0, 1.0, 1.0, 1.0)
+// The mesh's rendering layers, as RenderingLayers.hlsl's GetMeshRenderingLayer (every layer).
+uint GetMeshRenderingLightLayer() { return 0xFFFFFFFFu; }
+
 float3 GlossyEnvironmentReflection(float3 reflectVector, float perceptualRoughness, float occlusion) {
 #ifdef PBRLAB_ENV
     return PBR_UNITY_GLOSSY_ENVIRONMENT(reflectVector, perceptualRoughness) * occlusion;
@@ -427,6 +486,12 @@ float4 UniversalFragmentPBR(InputData inputData, float3 albedo, float metallic, 
     s.clearCoatMask = 0.0;
     s.clearCoatSmoothness = 1.0;
     return UniversalFragmentPBR(inputData, s);
+}
+
+// The Lightweight Render Pipeline's name (URP before 7.0) for UniversalFragmentPBR.
+float4 LightweightFragmentPBR(InputData inputData, float3 albedo, float metallic, float3 specular, float smoothness,
+                              float occlusion, float3 emission, float alpha) {
+    return UniversalFragmentPBR(inputData, albedo, metallic, specular, smoothness, occlusion, emission, alpha);
 }
 
 #endif

@@ -1,0 +1,9 @@
+// pbrlab stand-in for Core RP's ShaderLibrary/API/D3D11.hlsl: the texture and sampler macros, which pbrlab's
+// stand-in Core.hlsl defines (written for pbrlab from Unity's documentation of the names;
+// Unity's own file is under the Unity Companion License and is not copied).
+#ifndef PBRLAB_CORE_RP_API_D3D11_HLSL
+#define PBRLAB_CORE_RP_API_D3D11_HLSL
+
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+
+#endif

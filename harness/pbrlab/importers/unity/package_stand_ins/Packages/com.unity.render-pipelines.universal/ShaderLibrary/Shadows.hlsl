@@ -1,0 +1,9 @@
+// pbrlab stand-in for URP's ShaderLibrary/Shadows.hlsl: the shadow functions, without shadow maps (TransformWorldToShadowCoord, MainLightRealtimeShadow: full light), which pbrlab's
+// stand-in Lighting.hlsl defines (written for pbrlab from Unity's documentation of the names;
+// Unity's own file is under the Unity Companion License and is not copied).
+#ifndef PBRLAB_URP_SHADOWS_HLSL
+#define PBRLAB_URP_SHADOWS_HLSL
+
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
+
+#endif
