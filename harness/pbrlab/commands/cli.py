@@ -87,9 +87,9 @@ def main(argv=None) -> int:
     parser = build_parser(argv)
     args = parser.parse_args(argv)
     console.set_level(getattr(args, "verbosity", console.NORMAL))
-    driver_time_limit.enable()  # a compile that runs for hours ends with a message
     try:
-        with outputs.signal_cleanup():
+        # a compile that would run for hours ends with a message (gpu.driver_time_limit)
+        with outputs.signal_cleanup(), driver_time_limit.enabled():
             return int(args.run(args) or 0)
     except PbrlabError as exc:
         print(f"pbrlab {args.command}: error: {exc}", file=sys.stderr)

@@ -14,8 +14,8 @@ ends at once with status 143, as after ``kill``; SIGKILL follows 2 s later if it
 not. Nothing half-written can be left: outputs are renamed into place only when whole.
 The watchdog ends when the pipe closes, that is when this process ends.
 
-The limit is a command-line guard, enabled by ``pbrlab``'s main (``enable``): a program
-using pbrlab as a library keeps its own process and sets its own timeouts.
+The limit is a command-line guard, kept while ``pbrlab``'s main runs a command (``enabled``):
+a program using pbrlab as a library keeps its own process and sets its own timeouts.
 
 LIMIT_S = 120 s: the slowest program pbrlab itself builds compiles in a few seconds, a
 4,000-statement surface in 38 s (llvmpipe, issue 26); 120 s lets three times that through
@@ -70,10 +70,27 @@ _watchdog: subprocess.Popen | None = None
 _lock = threading.Lock()
 
 
-def enable() -> None:
-    """Keep the limit on every later driver call of this process (pbrlab's main calls it)."""
-    global _enabled
+@contextlib.contextmanager
+def enabled() -> Iterator[None]:
+    """Keep the limit on the driver calls within the block (pbrlab's main runs a command in
+    it); after the outermost block the watchdog is ended, so a program that called main()
+    in its own process (a test, a script) keeps no limit and no child."""
+    global _enabled, _watchdog
+    previous = _enabled
     _enabled = True
+    try:
+        yield
+    finally:
+        _enabled = previous
+        if not previous and _watchdog is not None:
+            watchdog, _watchdog = _watchdog, None
+            if watchdog.stdin is not None:
+                watchdog.stdin.close()  # end of input: the watchdog exits
+            try:
+                watchdog.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                watchdog.kill()
+                watchdog.wait()
 
 
 def limit_s() -> float:

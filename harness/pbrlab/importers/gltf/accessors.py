@@ -112,14 +112,14 @@ def read_accessor(doc: Document, index, where: str, use: str, count: int | None 
         doc.fail(where, f"{name} has {n_elements} elements, expected {count}")
     dtype = np.dtype(COMPONENT_TYPES[component]).newbyteorder("<")
     view_index = accessor.index("bufferView", "bufferViews")
+    if decoded is None and view_index is None and n_elements * n * 8 > MAX_UNBACKED_BYTES:
+        doc.fail(where, f"{name} has no bufferView and {n_elements} elements: {n_elements * n * 8 >> 20} MiB "
+                        f"of zeros as float64, over the limit of {MAX_UNBACKED_BYTES >> 20} MiB "
+                        "(accessors.MAX_UNBACKED_BYTES)")
     doc.charge_read(n_elements * n * 8, where, name)  # the float64 (indices: int64) array, before it is made
     if decoded is not None:
         values = _decoded_values(doc, decoded, where, name, use, component, n, n_elements)
     elif view_index is None:  # spec 3.6.2.4: no buffer view means zeros, which the file does not hold
-        if n_elements * n * 8 > MAX_UNBACKED_BYTES:
-            doc.fail(where, f"{name} has no bufferView and {n_elements} elements: {n_elements * n * 8 >> 20} MiB "
-                            f"of zeros as float64, over the limit of {MAX_UNBACKED_BYTES >> 20} MiB "
-                            "(accessors.MAX_UNBACKED_BYTES)")
         values = np.zeros((n_elements, n), dtype)
     else:
         offset = accessor.integer("byteOffset", 0)
