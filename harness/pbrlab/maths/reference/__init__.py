@@ -13,6 +13,8 @@ formula, so that ``tests/library`` can compare the GPU against it:
   shading    variant dispatch, standard BRDF, punctual lights (shading/, lighting/)
   tonemap    exposure and tonemappers              (glsl/pbr/tonemap/)
   surface    environment BRDF, pbr_lighting_standard, Unity helpers (ibl/, surface/, unity/)
+  multiple_scattering  GGX's albedo with multiple scattering (random walk, Kulla-Conty), the
+             reference of pbr_energy_compensation (ibl/environment_brdf.glsl)
   unity_brdf Unity's BRDF1/2/3 and GI inputs, transcribed from Unity's .cginc sources
              (not from glsl/pbr/unity/, which tests/importers/unity/ checks against it)
 
