@@ -129,18 +129,42 @@ def smooth_normals(positions: np.ndarray, faces: np.ndarray) -> np.ndarray:
     return _unit_rows(summed)[0]
 
 
+def _distinct_rows(columns: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """(index of the first row of each distinct row, each row's distinct number) of the rows
+    made of ``columns`` (equal length)."""
+    order = np.lexsort(columns[::-1])
+    ordered = np.stack([c[order] for c in columns], axis=1)
+    starts = np.ones(len(order), bool)
+    starts[1:] = (ordered[1:] != ordered[:-1]).any(axis=1)
+    number = np.empty(len(order), np.int64)
+    number[order] = np.cumsum(starts) - 1
+    return order[starts], number
+
+
 def _assemble(positions, faces, corner_uv, corner_normals=None) -> Primitive:
     """A Primitive from welded ``positions`` (n, 3), ``faces`` (m, 3) into them, each
     corner's uv (m, 3, 2) and, for hard edges, each corner's normal (m, 3, 3; smooth
     normals of the welded mesh when None). Corners sharing a position, a uv and a normal
     share one vertex."""
-    if corner_normals is None:
-        corner_normals = smooth_normals(positions, faces)[faces]
-    keys = np.concatenate([faces.reshape(-1, 1).astype(np.float64), corner_uv.reshape(-1, 2),
-                           corner_normals.reshape(-1, 3)], axis=1)
-    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
-    return Primitive(positions=positions[faces.ravel()[first]], normals=corner_normals.reshape(-1, 3)[first],
-                     uv=corner_uv.reshape(-1, 2)[first], faces=inverse.reshape(-1, 3).astype(np.int64))
+    index, uv = faces.ravel(), corner_uv.reshape(-1, 2)
+    if corner_normals is not None:  # hard edges (box, cylinder: small): every attribute decides
+        first, vertex = _distinct_rows([index, *uv.T, *corner_normals.reshape(-1, 3).T])
+        return Primitive(positions[index[first]], corner_normals.reshape(-1, 3)[first], uv[first],
+                         vertex.reshape(-1, 3))
+    normals = smooth_normals(positions, faces)
+    # each position keeps the uv of its first corner; corners with another uv (the seam's,
+    # the poles') become vertices of their own, one per distinct (position, uv)
+    first_corner = np.full(len(positions), len(index))
+    np.minimum.at(first_corner, index, np.arange(len(index)))
+    used = first_corner < len(index)
+    own = np.all(uv == uv[first_corner[index].clip(max=len(index) - 1)], axis=1)
+    renumber = np.cumsum(used) - 1
+    vertex = renumber[index]
+    other = np.flatnonzero(~own)
+    extra_first, extra = _distinct_rows([index[other], *uv[other].T])
+    vertex[other] = used.sum() + extra
+    kept = np.concatenate([first_corner[used], other[extra_first]])
+    return Primitive(positions[index[kept]], normals[index[kept]], uv[kept], vertex.reshape(-1, 3))
 
 
 def _weld(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
