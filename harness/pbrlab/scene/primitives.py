@@ -211,6 +211,7 @@ def _welded_revolution(grid, faces, per, sections):
 
 
 def uv_sphere(radius: float) -> Primitive:
+    """A latitude/longitude sphere, poles on +-Z (mapping: the module docstring)."""
     bands, sections = UV_SPHERE_BANDS, UV_SPHERE_SECTIONS
     theta = np.linspace(0.0, np.pi, num=bands)
     profile = np.column_stack((np.sin(theta), -np.cos(theta))) * radius
@@ -229,6 +230,7 @@ def uv_sphere(radius: float) -> Primitive:
 
 
 def torus(major_radius: float, minor_radius: float) -> Primitive:
+    """A torus about +Z, u around the major circle, v around the tube."""
     sections, tube = TORUS_SECTIONS, TORUS_TUBE_SECTIONS
     phi = np.linspace(0, 2 * np.pi, tube + 1, endpoint=True)
     profile = np.column_stack((minor_radius * np.cos(phi), minor_radius * np.sin(phi))) + [major_radius, 0]
@@ -239,6 +241,7 @@ def torus(major_radius: float, minor_radius: float) -> Primitive:
 
 
 def cylinder(radius: float, height: float) -> Primitive:
+    """A capped cylinder along Z, centred; the side and each cap mapped on their own."""
     sections = CYLINDER_SECTIONS
     half = abs(float(height)) / 2.0
     profile = np.array([[0, -half], [radius, -half], [radius, half], [0, half]], np.float64)
@@ -261,6 +264,7 @@ def cylinder(radius: float, height: float) -> Primitive:
 
 
 def box(size: float) -> Primitive:
+    """A cube of edge ``size`` centred at the origin, each face mapped over [0, 1]^2."""
     corners = np.array([[(k >> 2) & 1, (k >> 1) & 1, k & 1] for k in range(8)], np.float64)
     positions = (corners - 0.5) * np.asarray([size] * 3, np.float64)
     faces = np.array(_BOX_FACES, np.int64)
@@ -275,6 +279,7 @@ def box(size: float) -> Primitive:
 
 
 def plane(size: float) -> Primitive:
+    """A square of side ``size`` in XZ facing +Y, u along +X, v along -Z."""
     s = size / 2
     positions = np.array([[-s, 0, -s], [s, 0, -s], [s, 0, s], [-s, 0, s]], np.float64)
     uv = np.array([[0, 1], [1, 1], [1, 0], [0, 0]], np.float64)
@@ -296,12 +301,14 @@ def _subdivided(positions: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, n
 
 
 def _to_radius(positions: np.ndarray, radius: float) -> np.ndarray:
+    """Each point moved along its direction from the origin to ``radius`` (trimesh's step)."""
     scalar = np.sqrt(np.dot(positions ** 2, [1, 1, 1]))
     unit = positions / scalar.reshape((-1, 1))
     return positions + unit * (radius - scalar).reshape((-1, 1))
 
 
 def icosphere(radius: float, subdivisions: int) -> Primitive:
+    """A subdivided icosahedron on the sphere of ``radius``, mapped as the uv_sphere."""
     radius = float(radius)
     unit = {0: 0.0, 1: _ICOSAHEDRON_A, 2: _ICOSAHEDRON_B}
     positions = np.array([[np.sign(c) * unit[abs(c)] for c in row] for row in _ICOSAHEDRON_VERTICES], np.float64)
