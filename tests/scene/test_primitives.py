@@ -142,7 +142,7 @@ def test_cylinder_side_and_caps_cover_the_texture():
 # the per-vertex tangent averages the gradients of the triangles around it (Lengyel
 # 2001), whose directions turn by at most one step of longitude across a vertex: 360/64 =
 # 5.6 degrees on the uv_sphere, 360/32 = 11.25 on the torus and the cylinder's side, 0 on
-# the box's flat faces; on the icosphere an edge spans 63.4 / 2^s degrees of arc
+# the box's flat faces (0.5 allowed there: far above float32 rounding, far below a wrong axis); on the icosphere an edge spans 63.4 / 2^s degrees of arc
 # (the icosahedron's edge, halved per subdivision), that is (63.4 / 2^s) / sin(polar
 # angle) of longitude (checked where that is under 30 degrees: sin > 0.3 at s = 3;
 # measured 1.7 .. 10.7 there).
