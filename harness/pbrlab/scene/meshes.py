@@ -1,4 +1,4 @@
-"""Meshes for the rasteriser: files read with trimesh, generated primitives, and the
+"""Meshes for the rasteriser: files read with trimesh, primitives made in numpy (primitives.py), and the
 per-vertex attributes the mesh program needs (positions, normals, UVs, tangents)."""
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ import numpy as np
 from ..foundation import disk_cache
 from ..foundation.errors import SceneError
 from ..foundation.file_identity import file_key
+from . import primitives
 
 _PRIMITIVE_DEFAULTS = {
     "box": {"size": 1.0},
@@ -31,9 +32,7 @@ PRIMITIVE_PARAMETERS = _PRIMITIVE_DEFAULTS  # what a scene's {"primitive": ...} 
 INTEGER_PARAMETERS = {"subdivisions": (0, 8)}
 
 
-def _primitive(spec: dict):
-    import trimesh
-
+def _primitive(spec: dict) -> primitives.Primitive:
     kind = spec["primitive"]
     params = dict(_PRIMITIVE_DEFAULTS[kind])
     for key, value in spec.items():
@@ -43,22 +42,7 @@ def _primitive(spec: dict):
             raise SceneError(f"mesh primitive {kind}: unknown parameter {key}; "
                              f"use {', '.join(params) or 'none'}")
         params[key] = value
-    if kind == "box":
-        return trimesh.creation.box(extents=[params["size"]] * 3)
-    if kind == "icosphere":
-        return trimesh.creation.icosphere(subdivisions=int(params["subdivisions"]), radius=params["radius"])
-    if kind == "uv_sphere":
-        return trimesh.creation.uv_sphere(radius=params["radius"])
-    if kind == "cylinder":
-        return trimesh.creation.cylinder(radius=params["radius"], height=params["height"])
-    if kind == "torus":
-        return trimesh.creation.torus(major_radius=params["major_radius"],
-                                      minor_radius=params["minor_radius"])
-    s = params["size"] / 2  # plane: a square in XZ facing +Y, UVs over [0, 1]^2
-    vertices = np.array([[-s, 0, -s], [s, 0, -s], [s, 0, s], [-s, 0, s]], float)
-    mesh = trimesh.Trimesh(vertices, [[0, 2, 1], [0, 3, 2]], process=False)
-    mesh.visual = trimesh.visual.TextureVisuals(uv=np.array([[0, 1], [1, 1], [1, 0], [0, 0]], float))
-    return mesh
+    return primitives.make(kind, params)
 
 
 def _load_obj(path, trimesh):
@@ -76,11 +60,12 @@ def _load_obj(path, trimesh):
 
 
 def load_mesh(obj):
-    """The trimesh.Trimesh of a scene object (file or primitive)."""
-    import trimesh
-
+    """The mesh of a scene object: a primitives.Primitive (made in numpy, no trimesh
+    import) or a file's trimesh.Trimesh."""
     if obj.primitive is not None:
         return _primitive(obj.primitive)
+    import trimesh
+
     try:
         if Path(obj.mesh_path).suffix.lower() == ".obj":
             mesh = _load_obj(obj.mesh_path, trimesh)
@@ -208,13 +193,15 @@ def _prepared_mesh(obj) -> tuple[tuple, float]:
     inputs = _mesh_inputs(obj)
     name = None
     if inputs is not None:
-        name = disk_cache.key("mesh", inputs, Path(__file__).read_bytes(), np.__version__, _trimesh_identity())
+        # a primitive is made by primitives.py, a file read by trimesh
+        maker = (Path(primitives.__file__).read_bytes() if obj.primitive is not None else _trimesh_identity())
+        name = disk_cache.key("mesh", inputs, Path(__file__).read_bytes(), np.__version__, maker)
         cached = disk_cache.load("mesh", name, _decode_mesh_entry)
         if cached is not None:
             return cached
     mesh = load_mesh(obj)
     arrays = vertex_arrays(mesh)
-    norm = float(np.linalg.norm(mesh.vertices, axis=1).max())
+    norm = float(np.linalg.norm(_surface(mesh)[0], axis=1).max())
     if name is not None:
         disk_cache.store("mesh", name, disk_cache.pack_arrays([*arrays, np.float64(norm)]))
     return arrays, norm
@@ -288,15 +275,33 @@ def tangents(positions, normals, uvs, faces) -> np.ndarray:
     return np.concatenate([t, w[:, None]], axis=1)
 
 
-def vertex_arrays(mesh):
-    """Flat float32 arrays (positions, normals, uvs, tangents) and int32 indices."""
+def _surface(mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(positions, triangles, normals, uvs) of a primitives.Primitive or a trimesh.Trimesh
+    (UVs zero where the file has none), float64 and int64."""
+    if isinstance(mesh, primitives.Primitive):
+        return mesh.positions, mesh.faces, mesh.normals, mesh.uv
     positions = np.asarray(mesh.vertices, np.float64)
-    faces = np.asarray(mesh.faces, np.int64)
-    normals = np.asarray(mesh.vertex_normals, np.float64)
     uv = getattr(mesh.visual, "uv", None)
     if uv is None or len(uv) != len(positions):
         uv = np.zeros((len(positions), 2))
-    uv = np.asarray(uv, np.float64)
+    return (positions, np.asarray(mesh.faces, np.int64), np.asarray(mesh.vertex_normals, np.float64),
+            np.asarray(uv, np.float64))
+
+
+def as_trimesh(mesh):
+    """``mesh`` as a trimesh.Trimesh (for pyrender's check): a primitive with its normals
+    and UVs, a file's mesh as it is."""
+    if not isinstance(mesh, primitives.Primitive):
+        return mesh
+    import trimesh
+
+    return trimesh.Trimesh(mesh.positions, mesh.faces, vertex_normals=mesh.normals, process=False,
+                           visual=trimesh.visual.TextureVisuals(uv=mesh.uv))
+
+
+def vertex_arrays(mesh):
+    """Flat float32 arrays (positions, normals, uvs, tangents) and int32 indices."""
+    positions, faces, normals, uv = _surface(mesh)
     tan = tangents(positions, normals, uv, faces)
     return (positions.astype(np.float32), normals.astype(np.float32), uv.astype(np.float32),
             tan.astype(np.float32), faces.astype(np.int32).reshape(-1))

@@ -166,7 +166,7 @@ def _worker(platform: str, scene_path: str, out_path: str) -> None:
         pr_material = pyrender.MetallicRoughnessMaterial(
             baseColorFactor=[float(c) for c in material.albedo] + [1.0],
             metallicFactor=float(material.metallic), roughnessFactor=float(1.0 - material.smoothness))
-        mesh = pyrender.Mesh.from_trimesh(meshes.load_mesh(obj), material=pr_material, smooth=True)
+        mesh = pyrender.Mesh.from_trimesh(meshes.as_trimesh(meshes.load_mesh(obj)), material=pr_material, smooth=True)
         pr_scene.add(mesh, pose=obj.transform)
     for light in scene.lights:
         if light.type != "directional":

@@ -15,6 +15,8 @@ lighting, final colour) and the entry point.
 
 from __future__ import annotations
 
+import re
+
 from ...gpu.hlsl import line_directive
 from ...gpu.programs import SAMPLES_DEFINE
 from ...scene.surface_layers import FIELD_SIZES
@@ -369,6 +371,30 @@ def _appdata_read(shader: M.SurfaceShader, language: str) -> dict:
     return out
 
 
+# The vertex function's ``out Input o``: Unity's UNITY_INITIALIZE_OUTPUT(Input, o) zero-fills it
+# wherever Unity compiles through HLSL (every platform since Unity 5's HLSLcc), and the HLSL
+# path starts it at (Input)0. GLSL leaves an ``out`` parameter undefined at entry and the macro
+# is empty in GLSL (Unity's old GLSL targets), so a vertex function that reads a member before
+# writing it (Tilt Brush's NeonPulse: o.color = TbVertToSrgb(o.color)) read garbage: in GLSL
+# the parameter is ``inout`` and the caller zeroes every member first (_zero_input_lines).
+_OUT_INPUT = re.compile(r"\bout(\s+Input\s+\w+\s*[,)])")
+
+
+def input_starts_zero(program: str) -> str:
+    """The GLSL port's text with ``out Input o`` parameters made ``inout`` (see above); the
+    vertex stage (program._vertex_stage) applies it to the ported program it includes."""
+    return _OUT_INPUT.sub(r"inout\1", program)
+
+
+def _zero_input_lines(shader: M.SurfaceShader) -> str:
+    lines = []
+    for kind, name in shader.input_members:
+        glsl_type = port_code_types(kind).strip()
+        if re.fullmatch(r"(float|int|uint|bool|[biu]?vec[234]|mat[234](x[234])?)", glsl_type):
+            lines.append(f"    o.{name} = {glsl_type}(0);")
+    return "\n".join(lines)
+
+
 def vertex_source(shader: M.SurfaceShader, language: str, program: str, display: str, defines: dict) -> str:
     """The vertex stage of a shader with a vertex: function: Unity's appdata_full from the
     mesh, the user's function, then world position, normal, tangent, UV and the custom
@@ -422,6 +448,7 @@ out vec4 v_tangent;
 void main() {{
 {fill}
     Input o;
+{_zero_input_lines(shader)}
     {call}
     vec4 world = unity_ObjectToWorld * {read["position"]};
     v_position = world.xyz;

@@ -18,6 +18,8 @@ Programs are kept in the context's scene-program cache (``programs.program_cache
 
 from __future__ import annotations
 
+import dataclasses
+
 import re
 from pathlib import Path
 
@@ -181,6 +183,8 @@ def _vertex_stage(shader: M.SurfaceShader, language: str, defines: dict, dirs) -
         return (shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"]),
                 include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
     include, virtual = program_include(shader)
+    virtual = {name: dataclasses.replace(file, text=generate.input_starts_zero(file.text))
+               for name, file in virtual.items()}
     text = generate.vertex_source(shader, "glsl", include, shader.path.name, defines)
     source = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
     return source, source.paths + ported_sources(virtual)
