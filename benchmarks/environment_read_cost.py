@@ -127,9 +127,7 @@ def main() -> None:
     parser.add_argument("--time", action="store_true", help="also the llvmpipe process time (LP_NUM_THREADS=1)")
     parser.add_argument("--repeats", type=int, default=7)
     args = parser.parse_args()
-    reason = gpu.unavailable_reason()
-    if reason:
-        raise SystemExit(f"RADV's null device is not available here: {reason}")
+    gpu.require_null_device()
     families = gpu.GPU_FAMILIES
     print("largest specialised GLSL program, instructions / VGPRs per family "
           + " / ".join(gpu.TITLES[f] for f in families))

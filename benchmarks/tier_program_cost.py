@@ -71,9 +71,7 @@ def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
 
 
 def main() -> None:
-    reason = gpu.unavailable_reason()
-    if reason:
-        raise SystemExit(f"RADV's null device is not available here: {reason}")
+    gpu.require_null_device()
     families = gpu.GPU_FAMILIES
     print("largest specialised GLSL program, instructions / VGPRs (x HIGH's whole pixel) per family "
           + " / ".join(gpu.TITLES[f] for f in families))

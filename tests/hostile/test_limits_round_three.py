@@ -18,6 +18,7 @@ import textwrap
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 try:
@@ -281,40 +282,10 @@ def test_a_signal_during_a_long_compile_stops_the_render_within_a_second(tmp_pat
 def test_a_million_zero_scale_instances_are_refused_by_count(tmp_path, census):
     """EXT_mesh_gpu_instancing with 10^6 instances of scale 0. Main: the import placed every
     one (130 us each, measured) before finding "no triangle to draw", minutes later."""
-    import base64
-    import json
-
-    import numpy as np
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "importers" / "gltf"))
-    from gltf_helpers import quad_document
-
     n = 1_000_000
-    doc = quad_document()
-    blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
-    translations, scales = np.zeros((n, 3), np.float32), np.zeros((n, 3), np.float32)
-    translations[:, 0] = np.arange(n) * 1e-3
-    for values in (translations, scales):
-        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(blob), "byteLength": values.nbytes})
-        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
-                                 "count": n, "type": "VEC3"})
-        blob += values.tobytes()
-    (tmp_path / "m.bin").write_bytes(blob)
-    doc["buffers"] = [{"byteLength": len(blob), "uri": "m.bin"}]
-    accessors = len(doc["accessors"])
-    doc["nodes"] = [{"mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {
-        "attributes": {"TRANSLATION": accessors - 2, "SCALE": accessors - 1}}}}]
-    doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
-    (tmp_path / "m.gltf").write_text(json.dumps(doc))
-    _refused(_child("""
-        from pbrlab.foundation.errors import PbrlabError
-        from pbrlab.importers.gltf import load_gltf
-        try:
-            load_gltf("m.gltf", size=(8, 6), emit_warnings=False)
-            print("BUILT")
-        except PbrlabError as exc:
-            print("REFUSED", exc)
-        """, tmp_path), "m.gltf", "1000000 instances, over the limit of 65536")
+    scales = np.zeros((n, 3), np.float32)
+    _write_instanced_quads(tmp_path, n, [{}], scales)
+    _refused(_import_in_child(tmp_path), "m.gltf", "1000000 instances, over the limit of 65536")
     census["limits round three", "refused cleanly"] += 1
 
 
@@ -365,31 +336,46 @@ def test_instances_over_many_nodes_are_refused_by_their_total(tmp_path, census):
     """Three nodes of 30,000 instances each: within the limit a node, over the file's limit
     of placed objects (instancing.MAX_PLACED_OBJECTS). Main: accepted, 90,000 objects (about
     80 s of rendering; a thousand such nodes, 65 million)."""
+    _write_instanced_quads(tmp_path, 30_000, [{"translation": [0, k, 0]} for k in range(3)])
+    _refused(_import_in_child(tmp_path), "m.gltf", "nodes[2]: the file places over 65536 objects")
+    census["limits round three", "refused cleanly"] += 1
+
+
+def _write_instanced_quads(folder: Path, n: int, nodes: list, scales=None) -> None:
+    """m.gltf (+ m.bin) in ``folder``: the quad of gltf_helpers placed by one node per entry of
+    ``nodes`` (extra node fields), each with ``n`` EXT_mesh_gpu_instancing instances 1 mm apart
+    (and ``scales``, an (n, 3) array, when given)."""
     import base64
     import json
-
-    import numpy as np
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "importers" / "gltf"))
     from gltf_helpers import quad_document
 
-    n = 30_000
     doc = quad_document()
     blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
     translations = np.zeros((n, 3), np.float32)
     translations[:, 0] = np.arange(n) * 1e-3
-    doc["bufferViews"].append({"buffer": 0, "byteOffset": len(blob), "byteLength": translations.nbytes})
-    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
-                             "count": n, "type": "VEC3"})
-    blob += translations.tobytes()
-    (tmp_path / "m.bin").write_bytes(blob)
+    attributes = {}
+    for name, values in (("TRANSLATION", translations), ("SCALE", scales)):
+        if values is None:
+            continue
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(blob), "byteLength": values.nbytes})
+        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                                 "count": n, "type": "VEC3"})
+        attributes[name] = len(doc["accessors"]) - 1
+        blob += values.tobytes()
+    (folder / "m.bin").write_bytes(blob)
     doc["buffers"] = [{"byteLength": len(blob), "uri": "m.bin"}]
-    doc["nodes"] = [{"mesh": 0, "translation": [0, k, 0], "extensions": {"EXT_mesh_gpu_instancing": {
-        "attributes": {"TRANSLATION": len(doc["accessors"]) - 1}}}} for k in range(3)]
-    doc["scenes"] = [{"nodes": [0, 1, 2]}]
+    doc["nodes"] = [{**extra, "mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes": attributes}}}
+                    for extra in nodes]
+    doc["scenes"] = [{"nodes": list(range(len(nodes)))}]
     doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
-    (tmp_path / "m.gltf").write_text(json.dumps(doc))
-    _refused(_child("""
+    (folder / "m.gltf").write_text(json.dumps(doc))
+
+
+def _import_in_child(folder: Path) -> tuple[int, str]:
+    """Import m.gltf in a child (its time and address space limited): BUILT or REFUSED <message>."""
+    return _child("""
         from pbrlab.foundation.errors import PbrlabError
         from pbrlab.importers.gltf import load_gltf
         try:
@@ -397,5 +383,4 @@ def test_instances_over_many_nodes_are_refused_by_their_total(tmp_path, census):
             print("BUILT")
         except PbrlabError as exc:
             print("REFUSED", exc)
-        """, tmp_path), "m.gltf", "nodes[2]: the file places over 65536 objects")
-    census["limits round three", "refused cleanly"] += 1
+        """, folder)

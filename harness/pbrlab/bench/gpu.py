@@ -81,6 +81,13 @@ def unavailable_reason() -> str | None:
     return gpu_isa.available()
 
 
+def require_null_device() -> None:
+    """For a benchmark script: exit with the reason when RADV's null device cannot compile here."""
+    reason = unavailable_reason()
+    if reason:
+        raise SystemExit(f"RADV's null device is not available here: {reason}")
+
+
 # ---- compiling, each distinct program once --------------------------------------------------
 
 def _compile(jobs: dict, families) -> dict:

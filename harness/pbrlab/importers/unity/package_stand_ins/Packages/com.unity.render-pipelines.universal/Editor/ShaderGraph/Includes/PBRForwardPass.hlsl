@@ -45,25 +45,13 @@ void InitializeInputData(Varyings input, SurfaceDescription surfaceDescription, 
     inputData.shadowMask = float4(1.0, 1.0, 1.0, 1.0);
 }
 
-PackedVaryings vert(Attributes input)
-{
-    Varyings output = BuildVaryings(input);
-    return PackVaryings(output);
-}
+#include "Packages/com.unity.render-pipelines.universal/Editor/ShaderGraph/Includes/PbrlabGraphPass.hlsl"
 
 float4 frag(PackedVaryings packedInput) : SV_Target
 {
-    Varyings unpacked = UnpackVaryings(packedInput);
-    SurfaceDescriptionInputs surfaceDescriptionInputs = BuildSurfaceDescriptionInputs(unpacked);
-    SurfaceDescription surfaceDescription = SurfaceDescriptionFunction(surfaceDescriptionInputs);
-#if defined(_AlphaClip) || defined(_ALPHATEST_ON)
-    clip(surfaceDescription.Alpha - surfaceDescription.AlphaClipThreshold);
-#endif
-#if defined(_AlphaClip) || defined(_ALPHATEST_ON) || defined(_SURFACE_TYPE_TRANSPARENT) || !defined(SHADERPASS)
-    float alpha = surfaceDescription.Alpha;
-#else
-    float alpha = 1.0;
-#endif
+    Varyings unpacked;
+    float alpha;
+    SurfaceDescription surfaceDescription = pbrlab_graph_surface(packedInput, unpacked, alpha);
     InputData inputData;
     InitializeInputData(unpacked, surfaceDescription, inputData);
     SurfaceData surface = (SurfaceData)0;

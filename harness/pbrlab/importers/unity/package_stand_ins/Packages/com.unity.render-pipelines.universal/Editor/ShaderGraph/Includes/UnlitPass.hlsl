@@ -6,25 +6,13 @@
 #ifndef PBRLAB_URP_SG_UNLIT_PASS_HLSL
 #define PBRLAB_URP_SG_UNLIT_PASS_HLSL
 
-PackedVaryings vert(Attributes input)
-{
-    Varyings output = BuildVaryings(input);
-    return PackVaryings(output);
-}
+#include "Packages/com.unity.render-pipelines.universal/Editor/ShaderGraph/Includes/PbrlabGraphPass.hlsl"
 
 float4 frag(PackedVaryings packedInput) : SV_Target
 {
-    Varyings unpacked = UnpackVaryings(packedInput);
-    SurfaceDescriptionInputs surfaceDescriptionInputs = BuildSurfaceDescriptionInputs(unpacked);
-    SurfaceDescription surfaceDescription = SurfaceDescriptionFunction(surfaceDescriptionInputs);
-#if defined(_AlphaClip) || defined(_ALPHATEST_ON)
-    clip(surfaceDescription.Alpha - surfaceDescription.AlphaClipThreshold);
-#endif
-#if defined(_AlphaClip) || defined(_ALPHATEST_ON) || defined(_SURFACE_TYPE_TRANSPARENT) || !defined(SHADERPASS)
-    float alpha = surfaceDescription.Alpha;
-#else
-    float alpha = 1.0;
-#endif
+    Varyings unpacked;
+    float alpha;
+    SurfaceDescription surfaceDescription = pbrlab_graph_surface(packedInput, unpacked, alpha);
 #ifdef SHADERPASS
     float3 color = surfaceDescription.BaseColor;
 #else
