@@ -170,14 +170,14 @@ def test_high_tier_costs_no_more_than_the_filament_peer_on_every_amd_family(tier
         assert high <= peer, (fam, high, peer)
 
 
-def test_low_tier_costs_at_most_081_high_and_medium_sits_between_on_every_amd_family(tier_costs):
+def test_tier_costs_are_ordered_low_medium_high_on_every_amd_family(tier_costs):
     """The tiers' order in cost: MEDIUM strictly between LOW and HIGH on every family (measured
-    56.625 / 54.625 / 54.625 between 49.5 / 47.5 / 48.5 and 61.625 / 57.625 / 57.625). LOW at
-    most 0.81x HIGH on RDNA3 is a regression pin, not a target: issue 25 reached 0.641x (39.5)
-    without a Fresnel rise and with the cancelling 1 - NdotH²; issue 35 put back Schlick's rise
-    (+6) and |n × h|² (+4, rotated frames), measured 49.5 against 61.625, 0.803x. Their errors'
-    order (LOW > MEDIUM > HIGH) is the bench's accuracy table (docs/bench)."""
-    assert tier_costs["low"]["rdna3"] <= 0.81 * tier_costs["high"]["rdna3"], tier_costs
+    56.625 / 54.625 / 54.625 between 49.5 / 47.5 / 48.5 and 61.625 / 57.625 / 57.625), the
+    order their errors take the other way (LOW > MEDIUM > HIGH: the bench's accuracy table,
+    docs/bench). No ratio is asserted: issue 25's 0.641x (39.5) dropped the Fresnel rise and
+    wrote D in a cancelling form; issue 35 put back Schlick's rise (+6) and |n x h|^2 (+4,
+    rotated frames), 0.803x, and a ratio pinned at a measured value is no derived bound. The
+    ratio the README states is generated from the bench's own run (bench.headline)."""
     for fam in gpu.GPU_FAMILIES:
         low, medium, high = (tier_costs[name][fam] for name in ("low", "medium", "high"))
         assert low < medium < high, (fam, low, medium, high)
