@@ -106,14 +106,20 @@ def limit_s() -> float:
 
 
 def _send(line: str) -> None:
+    """``line`` to the watchdog, started (again) where there is none or it has ended."""
     global _watchdog
-    if _watchdog is None or _watchdog.poll() is not None:
-        _watchdog = subprocess.Popen(
-            [sys.executable, "-I", "-S", "-c", _WATCHDOG, str(os.getpid())],
-            stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, close_fds=True)
-    assert _watchdog.stdin is not None
-    _watchdog.stdin.write(line.encode("utf-8", "replace") + b"\n")
-    _watchdog.stdin.flush()
+    for _ in range(2):  # a watchdog killed from outside since the last line: start another once
+        if _watchdog is None or _watchdog.poll() is not None:
+            _watchdog = subprocess.Popen(
+                [sys.executable, "-I", "-S", "-c", _WATCHDOG, str(os.getpid())],
+                stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, close_fds=True)
+        try:
+            assert _watchdog.stdin is not None
+            _watchdog.stdin.write(line.encode("utf-8", "replace") + b"\n")
+            _watchdog.stdin.flush()
+            return
+        except BrokenPipeError:
+            _watchdog.wait()
 
 
 @contextlib.contextmanager
