@@ -41,6 +41,7 @@ def _render(surface, language, **kw):
 
 def _write(tmp_path, name, text):
     path = tmp_path / name
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text, encoding="utf-8")
     return path
 
@@ -149,6 +150,45 @@ Fallback "My/Plain" }""")
     shader = parse.read_shader(path)
     assert shader.passes[0].path.name == "plain.shader"
     assert any('Fallback "My/Plain"' in n for n in shader.notes)
+
+
+_PLAIN = """Shader "Lib/Plain" { SubShader { Pass { Name "FORWARD" Tags { "LightMode" = "ForwardBase" } CGPROGRAM
+#pragma vertex v
+#pragma fragment f
+float4 v(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
+fixed4 f() : SV_Target { return fixed4(0.25, 0.5, 1, 1); }
+ENDCG } } }"""
+_USER = """Shader "Game/Uses" { SubShader { UsePass "Lib/Plain/FORWARD" } }"""
+_FALLS_BACK = """Shader "Game/Falls" { SubShader { Pass { CGPROGRAM
+#pragma vertex v
+#pragma geometry g
+#pragma fragment f
+ENDCG } } Fallback "Lib/Plain" }"""
+
+
+@pytest.mark.parametrize("text", [_USER, _FALLS_BACK], ids=["UsePass", "Fallback"])
+def test_a_shader_is_found_by_name_anywhere_in_its_unity_project(tmp_path, text):
+    """Unity finds the shader a UsePass or Fallback names by its `Shader "name"` anywhere in the
+    project (its Assets and Packages), not only beside the shader: a library shader in another
+    folder of Assets is found, and its pass drawn."""
+    _write(tmp_path / "Project" / "Assets" / "ThirdParty" / "Lib", "plain.shader", _PLAIN)
+    (tmp_path / "Project" / "Packages").mkdir()
+    path = _write(tmp_path / "Project" / "Assets" / "Game" / "Shaders", "uses.shader", text)
+    shader = parse.read_shader(path)
+    assert shader.passes[0].path.name == "plain.shader"
+
+
+@pytest.mark.parametrize("text, message", [(_USER, 'no shader "Lib/Plain" here'),
+                                           (_FALLS_BACK, 'Fallback "Lib/Plain" is a shader pbrlab does not have')],
+                         ids=["UsePass", "Fallback"])
+def test_outside_a_unity_project_a_shader_elsewhere_is_not_found(tmp_path, text, message):
+    """Control: the same two folders with no Assets folder above them are no Unity project, so
+    nothing outside the shader's own folder is searched, and the message says where to put it."""
+    _write(tmp_path / "Project" / "ThirdParty" / "Lib", "plain.shader", _PLAIN)
+    path = _write(tmp_path / "Project" / "Game" / "Shaders", "uses.shader", text)
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(path)
+    assert message in str(info.value) and "Unity project's Assets" in str(info.value)
 
 
 @pytest.mark.parametrize("text, message", [

@@ -623,22 +623,41 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
         raise UnityShaderError(
             f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
             f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
-            "shader's folder (or below it), or name it in $PBRLAB_UNITY_SHADERS")
+            "shader's folder (or below it) or its Unity project's Assets, or name its folder in "
+            "$PBRLAB_UNITY_SHADERS")
     shader = read_shader(found, pipeline)
     shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
                         f'"{layout.fallback}" ({found}) is drawn instead')
     return shader
 
 
+def unity_project_folders(near: Path) -> list:
+    """The folders of the Unity project ``near`` lies in, where Unity finds a shader by its
+    name wherever it is (UsePass, Fallback, Shader.Find): ``Assets`` and ``Packages`` of the
+    nearest folder above ``near`` that holds an ``Assets`` folder with ``near`` inside it; none
+    for a file outside a Unity project."""
+    resolved = near.resolve()
+    for ancestor in resolved.parents:
+        assets = ancestor / "Assets"
+        if assets.is_dir() and assets in resolved.parents:
+            return [folder for folder in (assets, ancestor / "Packages") if folder.is_dir()]
+    return []
+
+
 def find_shader(name: str, near: Path):
     """The ``.shader`` file whose ``Shader "name"`` is ``name`` (or ``Legacy Shaders/name``,
-    Unity's old built-in names), in the folder of ``near`` and below, then the folders of
-    $PBRLAB_UNITY_SHADERS."""
+    Unity's old built-in names), in the folder of ``near`` and below, then anywhere in its Unity
+    project (``unity_project_folders``), then the folders of $PBRLAB_UNITY_SHADERS."""
     import os
     wanted = {name, f"Legacy Shaders/{name}"}
-    roots = [near.parent] + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p]
+    roots = ([near.parent] + unity_project_folders(near)
+             + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p])
+    seen = set()
     for root in roots:
         for candidate in sorted(root.rglob("*.shader")):
+            if candidate in seen:
+                continue
+            seen.add(candidate)
             try:
                 head = candidate.read_text(encoding="utf-8", errors="replace")[:4000]
             except OSError:
@@ -740,7 +759,8 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
     found = find_shader(shader_name, path) if shader_name else None
     if found is None:
         raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
-                               ".shader file in this shader's folder or name it in $PBRLAB_UNITY_SHADERS)")
+                               ".shader file in this shader's folder or its Unity project's Assets, or name "
+                               "its folder in $PBRLAB_UNITY_SHADERS)")
     try:
         layout = shaderlab.read_layout(found.read_text(encoding="utf-8").removeprefix("\ufeff"), found)
     except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:
