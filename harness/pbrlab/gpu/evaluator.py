@@ -78,6 +78,8 @@ def as_float32(name: str, value) -> np.ndarray:
                         f"(nearest: {int(converted)}); float32 holds every integer up to "
                         f"2^24 = {_EXACT_INT}")
         return out
+    if arr.dtype == np.float32:  # every float32 value is the input as given: no copy, no check
+        return arr
     if kind == "f":
         wide = arr.astype(np.float64, copy=False)
         over = np.isfinite(wide) & (np.abs(wide) > FLOAT32_MAX)
@@ -178,6 +180,7 @@ class Evaluator:
         self._programs = FileCache(PROGRAMS_CACHED, _release_program)
         self._vertex = shaders.expand(_template("fullscreen.vert"), "<fullscreen.vert>")
         self._vao_cache: dict = {}
+        self._widths: dict = {}  # probe key -> (the probe program it was measured with, width)
 
     def _program(self, expression, includes, input_types, defines, probe, include_dirs=(),
                  extensions=(), language="glsl"):
@@ -201,33 +204,47 @@ class Evaluator:
 
     def result_width(self, expression, includes, input_types, defines, include_dirs=(),
                      extensions=(), language="glsl") -> int:
-        """Components of the expression's type (1 for float/int/bool, n for vecn)."""
+        """Components of the expression's type (1 for float/int/bool, n for vecn), from a 1x1
+        draw of the probe program, kept while the cache keeps that program (a file it includes
+        changed on disk: the program is rebuilt, and the width measured again)."""
         program, vao = self._program(expression, includes, input_types, defines, True,
                                      include_dirs, extensions, language)
+        key = (expression, includes, input_types, tuple(sorted(defines.items())), include_dirs,
+               extensions, language)
+        known = self._widths.get(key)
+        if known is not None and known[0] is program:
+            return known[1]
         textures = [self.ctx.texture((1, 1), n if n != 3 else 4, dtype="f4")
                     for _, n in input_types]
         out = self._run(program, vao, input_types, textures, (1, 1))
         for tex in textures:
             tex.release()
-        return int(out[0, 0, 0])
+        if len(self._widths) >= 4 * PROGRAMS_CACHED:  # as bounded as the programs it names
+            self._widths.clear()
+        self._widths[key] = (program, int(out[0, 0, 0]))
+        return self._widths[key][1]
 
-    def _run(self, program, vao, input_types, textures, size):
+    def _run(self, program, vao, input_types, textures, size, channels=4):
         for unit, ((name, _), tex) in enumerate(zip(input_types, textures)):
             tex.use(unit)
             uniform = program.get(f"pbrlab_in_{name}", None)
             if uniform is not None:  # unused inputs are optimised away
                 uniform.value = unit
-        target = self.ctx.texture(size, 4, dtype="f4")
+        # R32F / RG32F / RGBA32F: only the result's components are stored and read back (a
+        # float target keeps every float32 bit of the components it has; RGB32F is not
+        # colour-renderable in GL 3.3, so a vec3 result takes RGBA32F)
+        target = self.ctx.texture(size, channels, dtype="f4")
         fbo = self.ctx.framebuffer([target])
+        out = np.empty((size[1], size[0], channels), np.float32)
         try:
             fbo.use()
             self.ctx.viewport = (0, 0) + size
             vao.render(moderngl.TRIANGLES, vertices=3)
-            data = fbo.read(components=4, dtype="f4", viewport=(0, 0) + size)
+            fbo.read_into(out, components=channels, dtype="f4", viewport=(0, 0) + size)
         finally:
             fbo.release()
             target.release()
-        return np.frombuffer(data, dtype=np.float32).reshape(size[1], size[0], 4)
+        return out
 
     def __call__(self, expression: str, includes=None, defines=None, include_dirs=(),
                  extensions=(), language="glsl", **inputs) -> np.ndarray:
@@ -273,26 +290,38 @@ class Evaluator:
         for start in range(0, count, CHUNK):
             stop = min(start + CHUNK, count)
             result[start:stop] = self._run_chunk(program, vao, input_types,
-                                                 [f[start:stop] for f in flats])[:, :width]
+                                                 [f[start:stop] for f in flats],
+                                                 4 if width == 3 else width)[:, :width]
         return result.reshape(shape + ((width,) if width > 1 else ()))
 
-    def _run_chunk(self, program, vao, input_types, flats) -> np.ndarray:
-        """One draw over ``flats`` (each count x n, count <= CHUNK): count x 4 results."""
+    def _run_chunk(self, program, vao, input_types, flats, channels=4) -> np.ndarray:
+        """One draw over ``flats`` (each count x n, count <= CHUNK): count x channels results."""
         count = len(flats[0]) if flats else 1
         cols = min(count, _MAX_WIDTH)
         rows = math.ceil(count / cols)
         textures = []
         try:
             for (name, n), full in zip(input_types, flats):
-                channels = 4 if n == 3 else n  # RGB32F rows are not 4-byte aligned in GL
-                padded = np.zeros((rows * cols, channels), np.float32)
-                padded[:count, :n] = full
-                textures.append(self.ctx.texture((cols, rows), channels, padded.tobytes(), dtype="f4"))
-            out = self._run(program, vao, input_types, textures, (cols, rows))
+                if n == 3:  # RGB32F rows are not 4-byte aligned in GL: padded to RGBA
+                    padded = np.zeros((rows * cols, 4), np.float32)
+                    padded[:count, :n] = full
+                    textures.append(self.ctx.texture((cols, rows), 4, padded, dtype="f4"))
+                    continue
+                # the rows the elements fill, written from the input itself (no padded copy),
+                # then the last row's remainder; the texels past the end are never read back
+                data = np.ascontiguousarray(full, dtype=np.float32)
+                texture = self.ctx.texture((cols, rows), n, dtype="f4")
+                textures.append(texture)
+                whole = count // cols
+                if whole:
+                    texture.write(data[:whole * cols], viewport=(0, 0, cols, whole))
+                if count > whole * cols:
+                    texture.write(data[whole * cols:], viewport=(0, whole, count - whole * cols, 1))
+            out = self._run(program, vao, input_types, textures, (cols, rows), channels)
         finally:
             for tex in textures:
                 tex.release()
-        return out.reshape(rows * cols, 4)[:count]
+        return out.reshape(rows * cols, channels)[:count]
 
 
 def _release_program(entry) -> None:
