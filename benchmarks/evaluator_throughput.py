@@ -105,7 +105,7 @@ def main(argv=None) -> int:
         samples, numpy_median = times[(name, "gpu")], statistics.median(times[(name, "numpy")])
         median = statistics.median(samples)
         print(f"{name:28s} {median:9.4f} {min(samples):8.4f} {max(samples):8.4f} "
-              f"{median / args.samples * 1e9:10.1f} {numpy_median:11.4f} {median / numpy_median:8.2f}")
+              f"{median / args.samples * 1e9:10.1f} {numpy_median:11.6f} {median / numpy_median:8.2f}")
     return 0
 
 
