@@ -317,9 +317,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     surface_layers.check_twins(scene, surfaces)
     ctx = gl.make_current(ctx or gl.shared_context())
+    scene, sun = _with_environment_sun(ctx, scene)  # the sun a light like the scene's own, for the limits too
     gl_limits.check_scene(ctx, scene)
     frame = scene_frame(scene)
-    scene, sun = _with_environment_sun(ctx, scene)
     plan = features.plan_programs(scene, specialise, checking=checking)
     hdr_format = HDR_TARGETS[scene.render.hdr_target]
     samples = scene.render.antialias
@@ -327,7 +327,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         gl_limits.check_antialias(ctx, scene, hdr_format)
     w, h = frame.size
     resources = _SceneResources(ctx, scene, full=not plan.specialised, sun=sun)
-    if sun is not None:  # the sun's depth pass, before any target of the frame is bound
+    if sun is not None and scene.objects:  # the sun's depth pass, before any target of the frame is bound
         resources.sun_shadow = shadow_map.SunShadow(ctx, scene, sun)
     cube_holder = []
 

@@ -39,7 +39,11 @@ from . import instanced_draws
 from ..scene import meshes
 from ..scene.standard_material import BLENDED_ALPHA_MODES
 
-SHADOW_MAP_SIZE = 2048       # texels per side
+# texels per side: the fidelity benchmark frames each model (its bounds span about the view) at
+# 384 drawn pixels (192 x supersample 2), so a texel is about a fifth of a drawn pixel and the
+# shadow edge's whole uncertainty (the filter's reach plus the offsets, 5.2 texels: module doc)
+# about one pixel; memory 16 MiB (32-bit depth)
+SHADOW_MAP_SIZE = 2048
 PAD_TEXELS = 4.0             # around the casters' extent: the 3x3 filter reaches 1.5 texels out
 NORMAL_OFFSET_TEXELS = 1.5 * np.sqrt(2.0)   # the taps' farthest reach (module doc), in texels
 DEPTH_BIAS_TEXELS = 1.0      # what is not planar (module doc), in texels
@@ -88,7 +92,7 @@ class LightFrame:
 
 def light_frame(scene, direction, size: int = SHADOW_MAP_SIZE) -> LightFrame | None:
     """The frame fitted to ``scene``'s objects for light travelling along ``direction``."""
-    objects = [o for o in scene.objects]
+    objects = list(scene.objects)  # casters and receivers: every one inside the map
     if not objects:
         return None
     corners = np.concatenate([_object_box(o) for o in objects])
@@ -113,7 +117,7 @@ def light_frame(scene, direction, size: int = SHADOW_MAP_SIZE) -> LightFrame | N
 
 
 class ShadowMap:
-    """The depth of the casters seen along the light (a DEPTH32F texture), and its uniforms."""
+    """The depth of the casters seen along the light (a depth texture), and its uniforms."""
 
     def __init__(self, ctx: moderngl.Context, scene, frame: LightFrame):
         self.frame = frame
@@ -142,11 +146,6 @@ class ShadowMap:
         finally:
             fbo.release()
             program.release()
-
-    def depths(self) -> np.ndarray:
-        """The stored depths, rows of v from 0 (float32, size x size): for tests."""
-        data = np.frombuffer(self.texture.read(), np.float32)
-        return data.reshape(self.frame.size, self.frame.size)
 
     def uniforms(self) -> dict:
         f = self.frame
