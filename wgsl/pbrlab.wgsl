@@ -3539,6 +3539,22 @@ fn pbr_sh9_irradiance(sh: array<vec3<f32>, 9>, n_32: vec3<f32>) -> vec3<f32> {
     return (((((((0.429043f * _e7) * ((_e9.x * _e11.x) - (_e14.y * _e16.y))) + (((0.743125f * _e24) * _e26.z) * _e29.z)) + (0.886227f * _e36)) - (0.247708f * _e42)) + (0.858086f * ((((_e50 * _e51.x) * _e54.y) + ((_e59 * _e60.x) * _e63.z)) + ((_e69 * _e70.y) * _e73.z)))) + (1.023328f * (((_e84 * _e85.x) + (_e90 * _e91.y)) + (_e97 * _e98.z))));
 }
 
+fn pbr_disc_light_alpha(alpha_66: f32, angularRadius: f32) -> f32 {
+    var alpha_67: f32;
+    var angularRadius_1: f32;
+    var disc: f32;
+
+    alpha_67 = alpha_66;
+    angularRadius_1 = angularRadius;
+    let _e4 = angularRadius_1;
+    disc = (_e4 / 1.2871885f);
+    let _e10 = alpha_67;
+    let _e11 = alpha_67;
+    let _e13 = disc;
+    let _e14 = disc;
+    return min(sqrt(((_e10 * _e11) + (_e13 * _e14))), 1f);
+}
+
 fn pbr_hammersley(i: u32, count: u32) -> vec2<f32> {
     var i_1: u32;
     var count_1: u32;
@@ -3609,21 +3625,21 @@ fn pbr_hammersley_float(i_2: f32, count_2: f32) -> vec2<f32> {
     return vec2<f32>((_e37 / _e38), _e40);
 }
 
-fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_66: f32) -> vec3<f32> {
+fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_68: f32) -> vec3<f32> {
     var xi_1: vec2<f32>;
-    var alpha_67: f32;
+    var alpha_69: f32;
     var phi_1: f32;
     var cosTheta2_: f32;
     var cosTheta_6: f32;
     var sinTheta: f32;
 
     xi_1 = xi;
-    alpha_67 = alpha_66;
+    alpha_69 = alpha_68;
     let _e7 = xi_1;
     phi_1 = (6.2831855f * _e7.x);
     let _e12 = xi_1;
-    let _e16 = alpha_67;
-    let _e17 = alpha_67;
+    let _e16 = alpha_69;
+    let _e17 = alpha_69;
     let _e21 = xi_1;
     cosTheta2_ = ((1f - _e12.y) / (1f + (((_e16 * _e17) - 1f) * _e21.y)));
     let _e27 = cosTheta2_;
@@ -3638,14 +3654,14 @@ fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_66: f32) -> vec3<f32> {
     return vec3<f32>((_e37 * cos(_e38)), (_e41 * sin(_e42)), _e45);
 }
 
-fn pbr_pdf_GGX_half_vector(NdotH_32: f32, alpha_68: f32) -> f32 {
+fn pbr_pdf_GGX_half_vector(NdotH_32: f32, alpha_70: f32) -> f32 {
     var NdotH_33: f32;
-    var alpha_69: f32;
+    var alpha_71: f32;
 
     NdotH_33 = NdotH_32;
-    alpha_69 = alpha_68;
+    alpha_71 = alpha_70;
     let _e4 = NdotH_33;
-    let _e5 = alpha_69;
+    let _e5 = alpha_71;
     let _e6 = pbr_D_GGX(_e4, _e5);
     let _e7 = NdotH_33;
     return (_e6 * _e7);
@@ -3718,33 +3734,33 @@ fn pbr_equirect_direction(uv: vec2<f32>) -> vec3<f32> {
     return vec3<f32>((sin(_e16) * sin(_e18)), cos(_e21), (-(sin(_e23)) * cos(_e26)));
 }
 
-fn pbr_lobe_share_above(c_23: f32, alpha_70: f32) -> f32 {
+fn pbr_lobe_share_above(c_23: f32, alpha_72: f32) -> f32 {
     var c_24: f32;
-    var alpha_71: f32;
+    var alpha_73: f32;
 
     c_24 = c_23;
-    alpha_71 = alpha_70;
+    alpha_73 = alpha_72;
     let _e6 = c_24;
-    let _e9 = alpha_71;
-    let _e11 = alpha_71;
+    let _e9 = alpha_73;
+    let _e11 = alpha_73;
     let _e13 = c_24;
     let _e14 = c_24;
     return (0.5f + ((0.5f * _e6) * inverseSqrt(max((((4f * _e9) * _e11) + (_e13 * _e14)), 0.000000000000000000000000000001f))));
 }
 
-fn pbr_specular_horizon_occlusion(RdotNg: f32, NdotV_68: f32, alpha_72: f32) -> f32 {
+fn pbr_specular_horizon_occlusion(RdotNg: f32, NdotV_68: f32, alpha_74: f32) -> f32 {
     var RdotNg_1: f32;
     var NdotV_69: f32;
-    var alpha_73: f32;
+    var alpha_75: f32;
 
     RdotNg_1 = RdotNg;
     NdotV_69 = NdotV_68;
-    alpha_73 = alpha_72;
+    alpha_75 = alpha_74;
     let _e6 = RdotNg_1;
-    let _e7 = alpha_73;
+    let _e7 = alpha_75;
     let _e8 = pbr_lobe_share_above(_e6, _e7);
     let _e9 = NdotV_69;
-    let _e10 = alpha_73;
+    let _e10 = alpha_75;
     let _e11 = pbr_lobe_share_above(_e9, _e10);
     return min((_e8 / _e11), 1f);
 }
@@ -3757,20 +3773,20 @@ fn pbr_diffuse_horizon_occlusion(NdotNg: f32) -> f32 {
     return clamp((0.5f + (0.5f * _e4)), 0f, 1f);
 }
 
-fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_74: f32) -> vec3<f32> {
+fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f32) -> vec3<f32> {
     var n_37: vec3<f32>;
     var r_10: vec3<f32>;
-    var alpha_75: f32;
+    var alpha_77: f32;
     var d_1: vec3<f32>;
     var len2_: f32;
     var local_26: vec3<f32>;
 
     n_37 = n_36;
     r_10 = r_9;
-    alpha_75 = alpha_74;
+    alpha_77 = alpha_76;
     let _e6 = r_10;
     let _e7 = n_37;
-    let _e8 = alpha_75;
+    let _e8 = alpha_77;
     d_1 = mix(_e6, _e7, vec3(_e8));
     let _e12 = d_1;
     let _e13 = d_1;

@@ -71,6 +71,7 @@
 #include "pbr/lighting/punctual.glsl"
 #include "pbr/lighting/attenuation.glsl"
 #include "pbr/lighting/sh9.glsl"
+#include "pbr/lighting/disc_light.glsl"
 
 // image-based light
 #include "pbr/ibl/importance_sampling.glsl"

@@ -72,6 +72,7 @@
 #include "pbr/lighting/punctual.hlsl"
 #include "pbr/lighting/attenuation.hlsl"
 #include "pbr/lighting/sh9.hlsl"
+#include "pbr/lighting/disc_light.hlsl"
 
 // image-based light
 #include "pbr/ibl/importance_sampling.hlsl"

@@ -26,9 +26,9 @@ VECTORS_PER_LIGHT = {"directional": 2, "point": 3, "spot": 5}
 # mat4 and a mat3 (11), material (8), SH9 (9), samplers and flags; 256 leaves room.
 RESERVED_UNIFORM_VECTORS = 256
 # Texture units the harness takes before a material's own: the DFG table and the
-# prefiltered environment, the sheen table, the transmission copy, the irradiance cube
-# (render._SceneResources.FIRST_MATERIAL_UNIT).
-RESERVED_TEXTURE_UNITS = 5
+# prefiltered environment, the sheen table, the transmission copy, the irradiance cube, the
+# sun's shadow map (render._SceneResources.FIRST_MATERIAL_UNIT).
+RESERVED_TEXTURE_UNITS = 6
 
 
 def _limit(ctx, name: str, fallback: int) -> int:

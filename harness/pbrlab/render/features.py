@@ -94,6 +94,7 @@ class SceneFeatures:
     exposure: bool             # exposure != 0 (a multiply in the resolve pass)
     hdr_target: str
     orthographic: bool = False  # parallel projection: one view direction
+    sun_shadow: bool = False   # directional light 0 is the environment's sun, shadowed (render.environment_sun)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -136,6 +137,7 @@ def scene_features(scene) -> SceneFeatures:
         environment=scene.environment is not None,
         energy_compensation=scene.render.energy_compensation,
         horizon_occlusion=scene.render.horizon_occlusion,
+        sun_shadow=scene.render.environment_sun,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -157,6 +159,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_HDR_HALF"] = 1
     if s.orthographic:
         defines["PBRLAB_ORTHOGRAPHIC"] = 1
+    if s.sun_shadow and not m.unlit:
+        defines["PBRLAB_SUN_SHADOW"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),

@@ -25,7 +25,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, instanced_draws, resource_cache, tangent_frames
+from . import features, instanced_draws, resource_cache, shadow_map, tangent_frames
 from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
@@ -42,7 +42,7 @@ from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates
 from ..gpu.programs import set_uniform as _set
 from ..gpu.programs import set_uniform_array as _set_array
 from ..gpu.programs import SAMPLES_DEFINE
-from ..scene.model import HDR_TARGETS, Scene
+from ..scene.model import HDR_TARGETS, Light, Scene
 from ..scene.standard_material import BLENDED_ALPHA_MODES, source_of
 from ..gpu.shaders import GLSL_ROOT
 
@@ -70,12 +70,14 @@ class _SceneResources:
 
     ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2, "u_env_irradiance": 4}
     TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
-    FIRST_MATERIAL_UNIT = 5
+    SUN_SHADOW_UNIT = 5  # the environment's sun's shadow map (shadow_map.py), when render.environment_sun finds one
+    FIRST_MATERIAL_UNIT = 6
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
-    def __init__(self, ctx, scene: Scene, full: bool):
+    def __init__(self, ctx, scene: Scene, full: bool, sun=None):
         self.full = full
+        self.sun_shadow = None  # set by render_scene once the shadow map is drawn
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
@@ -85,7 +87,7 @@ class _SceneResources:
         if any("sheen" in surface_layers.material_layers(m) for m in scene.materials.values()):
             self.env_textures["u_sheen_lut"] = self.cache.sheen()
         if scene.environment is not None:
-            environment = self.cache.environment(scene.environment)
+            environment = self.cache.environment(scene.environment, sun)
         elif full:  # the full program always samples an environment: a black one
             environment = self.cache.black_environment()
         else:
@@ -104,6 +106,8 @@ class _SceneResources:
                 self.env_textures[name].use(unit)
                 _set(program, name, unit)
         _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
+        if self.sun_shadow is not None:
+            self.sun_shadow.bind(program, self.SUN_SHADOW_UNIT)
         if self.transmission_copy is not None:  # a program that does not transmit declares none of it
             self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
         _upload_material(program, material)
@@ -118,6 +122,22 @@ class _SceneResources:
                     self.neutral_texture(slot).use(unit)
                     _set(program, f"u_{slot}_map", unit)
                     unit += 1
+
+
+def _with_environment_sun(ctx, scene: Scene):
+    """(scene, sun): with render.environment_sun and an environment that has a sun
+    (gpu/environment_sun.py), the sun as directional light 0 (shadow_map.py shadows it) and the
+    environment read without it (_SceneResources); otherwise the scene with the option off."""
+    if not scene.render.environment_sun:
+        return scene, None
+    sun = None
+    if scene.environment is not None:
+        sun = resource_cache.context_cache(ctx).environment_sun(scene.environment)
+    if sun is None:  # nothing to split off: the scene is drawn as without the option
+        return dataclasses.replace(scene, render=dataclasses.replace(scene.render, environment_sun=False)), None
+    light = Light(type="directional", color=np.asarray(sun.radiance, np.float64), intensity=1.0,
+                  direction=np.asarray(sun.direction, np.float64))
+    return dataclasses.replace(scene, lights=[light, *scene.lights]), sun
 
 
 def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
@@ -297,6 +317,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     surface_bindings.check_bindings(scene, surfaces, [HLSL_ROOT if language == "hlsl" else GLSL_ROOT])
     surface_layers.check_twins(scene, surfaces)
     ctx = gl.make_current(ctx or gl.shared_context())
+    scene, sun = _with_environment_sun(ctx, scene)  # the sun a light like the scene's own, for the limits too
     gl_limits.check_scene(ctx, scene)
     frame = scene_frame(scene)
     plan = features.plan_programs(scene, specialise, checking=checking)
@@ -305,7 +326,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     if samples != 1:
         gl_limits.check_antialias(ctx, scene, hdr_format)
     w, h = frame.size
-    resources = _SceneResources(ctx, scene, full=not plan.specialised)
+    resources = _SceneResources(ctx, scene, full=not plan.specialised, sun=sun)
+    if sun is not None and scene.objects:  # the sun's depth pass, before any target of the frame is bound
+        resources.sun_shadow = shadow_map.SunShadow(ctx, scene, sun)
     cube_holder = []
 
     def environment_cube():  # made once per render, only if a shader samples a cube
@@ -354,6 +377,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         cube_ibo.release()
         if copy is not None:
             copy.release()
+        if resources.sun_shadow is not None:
+            resources.sun_shadow.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,

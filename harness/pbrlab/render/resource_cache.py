@@ -22,7 +22,7 @@ import moderngl
 import numpy as np
 
 from ..gpu import ibl, targets
-from ..scene.environment import environment_image, environment_sh
+from ..scene.environment import environment_image, environment_sh, project_equirect
 from ..foundation.file_identity import file_key as _file_key
 from ..foundation.errors import PbrlabError
 from ..foundation.images import read_image
@@ -75,6 +75,7 @@ class ContextCache:
         self._sheen = None
         self._environments = _LRU(ENVIRONMENTS_PER_CONTEXT, PreparedEnvironment.release)
         self._textures = _LRU(TEXTURES_PER_CONTEXT, moderngl.Texture.release)
+        self._suns = {}
 
     def dfg(self) -> moderngl.Texture:
         if self._dfg is None:
@@ -88,18 +89,34 @@ class ContextCache:
             self._sheen = sheen_table.sheen_texture(self.ctx)
         return self._sheen
 
-    def environment(self, environment) -> PreparedEnvironment:
-        """A scene's environment (constant colour or image file, times its intensity)."""
+    def environment(self, environment, sun=None) -> PreparedEnvironment:
+        """A scene's environment (constant colour or image file, times its intensity); with
+        ``sun`` (gpu/environment_sun.py, found in this environment) the sky without it."""
         if environment.color is not None:
             source = ("color", tuple(float(c) for c in environment.color))
         else:
             source = ("file", *file_key(environment.path))
-        key = (source, float(environment.intensity))
+        key = (source, float(environment.intensity), sun is not None)
         def prepare():
             image = environment_image(environment)
-            return PreparedEnvironment(environment_sh(environment), ibl.prefiltered_environment(self.ctx, image),
+            if sun is None:
+                return PreparedEnvironment(environment_sh(environment), ibl.prefiltered_environment(self.ctx, image),
+                                           ibl.irradiance_environment(self.ctx, image))
+            from ..gpu.environment_sun import sunless
+            image = sunless(image, sun)
+            return PreparedEnvironment(project_equirect(image), ibl.prefiltered_environment(self.ctx, image),
                                        ibl.irradiance_environment(self.ctx, image))
         return self._environments.get(key, prepare)
+
+    def environment_sun(self, environment):
+        """The sun of an image environment (gpu/environment_sun.find_sun), or None; found once."""
+        if environment.color is not None:
+            return None
+        key = ("sun", *file_key(environment.path), float(environment.intensity))
+        if key not in self._suns:
+            from ..gpu.environment_sun import find_sun
+            self._suns[key] = find_sun(environment_image(environment))
+        return self._suns[key]
 
     def black_environment(self) -> PreparedEnvironment:
         """No light at all: what the full program samples in a scene without environment."""

@@ -43,8 +43,10 @@ SAMPLES = 256            # Cycles samples per pixel of the committed references
 DENOISE = True
 # pbrlab's render block in the benchmark (docs/scenes.md, "Anti-aliasing"; docs/fidelity.md
 # measures each step): 4x multisampling, drawn at 2x and resolved with Cycles' own pixel filter
-# (Blackman-Harris over 1.5 px), so the reference's filter is no difference to score
-PBRLAB_RENDER = {"antialias": 4, "antialias_filter": "blackman_harris", "supersample": 2}
+# (Blackman-Harris over 1.5 px), so the reference's filter is no difference to score; the
+# environment's sun, where it has one (sunrise), split off as a light that casts shadows
+# (render.environment_sun: every sunrise row closer, docs/fidelity.md)
+PBRLAB_RENDER = {"antialias": 4, "antialias_filter": "blackman_harris", "supersample": 2, "environment_sun": True}
 
 
 @dataclass
