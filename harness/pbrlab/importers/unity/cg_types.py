@@ -849,8 +849,11 @@ class _Parser:
             if self.at("{"):
                 self.fail("nested initialiser")
             items.append(self.assignment())
-            if not self.accept(","):
+            comma = self.accept(",")
+            if comma is None:
                 break
+            if self.at("}"):  # HLSL's trailing comma, which a GLSL constructor does not take
+                self.edits.replace(comma.s, comma.e, "")
         close = self.expect("}")
         if t.array:
             size = str(t.array) if t.array > 0 else str(len(items))

@@ -508,6 +508,7 @@ SKIPPED_LIGHT_MODES = {
     "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
     "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
     "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
+    "picking": "an editor pass",  # the Scene view's object picking (Terrain-Utilities' "Picking")
 }
 DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
 
@@ -652,6 +653,7 @@ def find_shader(name: str, near: Path):
 def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN) -> list:
     path = layout.path
     passes = []
+    first_note = len(notes)
     for item in sub.items:
         kind = item[0]
         if kind == "program":
@@ -688,7 +690,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             _, name, line = item
             passes.append(M.GrabPass(name, line))
     if not any(p.kind != "grab" for p in passes):
-        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped)")
+        skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
+        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
+                               + (f": {skipped})" if skipped else ")"))
     return passes
 
 

@@ -30,7 +30,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import generate, port
+from . import cg_spellings, generate, port
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
@@ -155,8 +155,9 @@ def ported_sources(virtual: dict) -> list[Path]:
 
 
 def hlsl_program(shader) -> str:
-    """The CGPROGRAM as written, less a byte-order mark opening a bare program file."""
-    return shaders.strip_bom(shader.program)
+    """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
+    spellings glslang takes (cg_spellings)."""
+    return cg_spellings.respelled(shaders.strip_bom(shader.program))
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
