@@ -10,7 +10,8 @@
 //           unity_DeltaTime, _WorldSpaceCameraPos, _ProjectionParams (1, near, far, 1/far),
 //           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject,
 //           unity_MatrixVP, unity_MatrixV, unity_MatrixInvV, glstate_matrix_projection,
-//           unity_CameraProjection, unity_CameraInvProjection, _ZBufferParams (GL depth,
+//           unity_CameraProjection, unity_CameraInvProjection, unity_WorldToCamera and
+//           unity_CameraToWorld (the camera transform's frame, +z forward), _ZBufferParams (GL depth,
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
@@ -80,6 +81,9 @@ uniform float4x4 unity_MatrixInvV;
 uniform float4x4 glstate_matrix_projection;
 uniform float4x4 unity_CameraProjection;
 uniform float4x4 unity_CameraInvProjection;
+// the camera transform's own frame (+z forward, unlike the view matrix's -z): world to it and back
+uniform float4x4 unity_WorldToCamera;
+uniform float4x4 unity_CameraToWorld;
 uniform float4 _ZBufferParams;
 uniform float4 unity_OrthoParams;
 uniform float4 _SpecColor;

@@ -278,3 +278,30 @@ def test_a_subshader_whose_passes_are_all_skipped_names_each_skip():
     first = outcome.message.splitlines()[0]
     assert "nothing here draws (every pass skipped: Pass 'Picking' (LightMode Picking) skipped: an editor pass; " \
            "Pass 'Selection' (LightMode SceneSelectionPass) skipped: an editor pass)" in first
+
+
+CAMERA_BODY = """\
+            float3 world = mul(unity_ObjectToWorld, float4(i.uv.x * 2 - 1, i.uv.y * 2 - 1, 0.25, 1)).xyz;
+            float3 camera = mul(unity_WorldToCamera, float4(world, 1)).xyz;
+            float3 view = UnityWorldToViewPos(world);
+            float3 back = mul(unity_CameraToWorld, float4(camera, 1)).xyz;
+            if (_Mode < 0.5) return float4(camera - view * float3(1, 1, -1), 1);
+            if (_Mode < 1.5) return float4(back - world, 1);
+            return float4(camera - view, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_world_to_camera_is_the_camera_transforms_frame(tmp_path, language):
+    """unity_WorldToCamera is the camera transform's world-to-local matrix, +z forward: the
+    view position with z negated (the view matrix looks down -z); unity_CameraToWorld takes it
+    back. Points within 4 of the origin, seen from 3.2: two float32 matrix products each of
+    terms up to ~8, 2 * 4 * 8 * 2^-24 = 3.8e-6; bound 5e-6. Control: the view position itself
+    (z not negated) is off by twice the eye depth (> 1)."""
+    shader = _shader(tmp_path, "camera", CAMERA_BODY, '        _Mode ("Mode", Float) = 0', "        float _Mode;")
+    to_camera = _render(tmp_path, shader, language, {"_Mode": 0.0})
+    back = _render(tmp_path, shader, language, {"_Mode": 1.0})
+    covered = _covered(to_camera)
+    assert np.max(np.abs(to_camera[covered][:, :3])) <= 5e-6
+    assert np.max(np.abs(back[covered][:, :3])) <= 5e-6
+    unflipped = _render(tmp_path, shader, language, {"_Mode": 2.0})
+    assert np.min(np.abs(unflipped[covered][:, 2])) > 1.0

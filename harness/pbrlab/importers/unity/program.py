@@ -275,6 +275,11 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "glstate_matrix_projection", _column_major(frame.proj))
     _set(program, "unity_CameraProjection", _column_major(frame.proj))
     _set(program, "unity_CameraInvProjection", _column_major(np.linalg.inv(frame.proj)))
+    # the camera transform's local frame, +z forward (Camera.transform: the view matrix with z
+    # negated; Unity's own Internal-CombineDepthNormals negates z after it to reach view space)
+    world_to_camera = np.diag([1.0, 1.0, -1.0, 1.0]) @ frame.view
+    _set(program, "unity_WorldToCamera", _column_major(world_to_camera))
+    _set(program, "unity_CameraToWorld", _column_major(np.linalg.inv(world_to_camera)))
     w, h = frame.size
     _set(program, "_ScreenParams", (float(w), float(h), 1.0 + 1.0 / w, 1.0 + 1.0 / h))
     near, far = frame.near, frame.far
