@@ -36,6 +36,7 @@
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
+//           UNITY_DECLARE_TEX2DARRAY(_NOSAMPLER), UNITY_SAMPLE_TEX2DARRAY(_LOD) (coord.z the layer),
 //           UNITY_SAMPLE_TEXCUBE(_LOD), UNITY_DECLARE/SAMPLE_SCREENSPACE_TEXTURE;
 //           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
 //           gives, white = the far plane by default: no depth pre-pass here);
@@ -157,6 +158,13 @@ vec4 _WorldSpaceLightPos0;
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) uniform sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) texture(tex, (uv).xy)
+// HLSLSupport.cginc's 2D texture arrays: coord.z is the layer (rounded to the nearest, clamped
+// to the layers there are: GL's rule, as Direct3D's). Functions, so the port's type pass knows
+// the float4 they return. A material binds a one-layer array (unity/texture_arrays.py).
+#define UNITY_DECLARE_TEX2DARRAY(tex) uniform sampler2DArray tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) uniform sampler2DArray tex
+vec4 UNITY_SAMPLE_TEX2DARRAY(sampler2DArray tex, vec3 coord) { return texture(tex, coord); }
+vec4 UNITY_SAMPLE_TEX2DARRAY_LOD(sampler2DArray tex, vec3 coord, float lod) { return textureLod(tex, coord, lod); }
 
 vec4 UnityObjectToClipPos(vec3 pos) {
     return unity_MatrixVP * (unity_ObjectToWorld * vec4(pos, 1.0));

@@ -36,6 +36,7 @@
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
+//           UNITY_DECLARE_TEX2DARRAY(_NOSAMPLER), UNITY_SAMPLE_TEX2DARRAY(_LOD) (coord.z the layer),
 //           UNITY_SAMPLE_TEXCUBE(_LOD), UNITY_DECLARE/SAMPLE_SCREENSPACE_TEXTURE;
 //           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
 //           gives, white = the far plane by default: no depth pre-pass here);
@@ -160,6 +161,12 @@ static float4 _WorldSpaceLightPos0;
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) texCUBElod(tex, float4(dir, lod))
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, (uv).xy)
+// HLSLSupport.cginc's 2D texture arrays (coord.z the layer), sampled with the one shared sampler
+// state of unity_hlsl_support.hlsl (glslang combines it into the texture).
+#define UNITY_DECLARE_TEX2DARRAY(tex) Texture2DArray tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
+#define UNITY_SAMPLE_TEX2DARRAY(tex, coord) (tex).Sample(pbrlab_unity_sampler, (coord))
+#define UNITY_SAMPLE_TEX2DARRAY_LOD(tex, coord, lod) (tex).SampleLevel(pbrlab_unity_sampler, (coord), (lod))
 
 float4 UnityObjectToClipPos(float3 pos) {
     return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0)));

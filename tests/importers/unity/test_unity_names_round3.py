@@ -305,3 +305,46 @@ def test_world_to_camera_is_the_camera_transforms_frame(tmp_path, language):
     assert np.max(np.abs(back[covered][:, :3])) <= 5e-6
     unflipped = _render(tmp_path, shader, language, {"_Mode": 2.0})
     assert np.min(np.abs(unflipped[covered][:, 2])) > 1.0
+
+
+ARRAY = """
+Shader "t/array" {
+    Properties { _Layers ("Layers", 2DArray) = "red" {} }
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        UNITY_DECLARE_TEX2DARRAY(_Layers);
+        struct v2f { float4 pos : SV_POSITION; float2 uv : TEXCOORD0; };
+        v2f vert(appdata_base v) { v2f o; o.pos = UnityObjectToClipPos(v.vertex); o.uv = v.texcoord.xy; return o; }
+        float4 frag(v2f i) : SV_Target {
+            float3 c = UNITY_SAMPLE_TEX2DARRAY(_Layers, float3(i.uv, 3)) * 0.5;
+            return float4(c + UNITY_SAMPLE_TEX2DARRAY_LOD(_Layers, float3(i.uv, 0), 0).rgb * 0.25, 1);
+        }
+        ENDCG
+    } }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("default, want", [(None, (0.75, 0.0, 0.0)), ("gray", (0.375, 0.375, 0.375))])
+def test_a_texture_array_property_is_one_layer_of_its_texel(tmp_path, language, default, want):
+    """UNITY_DECLARE_TEX2DARRAY / UNITY_SAMPLE_TEX2DARRAY(_LOD): a one-layer array of the
+    property's texel, every layer index clamped to it; the float4 truncated to float3 as HLSL
+    does (the port's type pass knows the sample's type). Exact: 0.5 and 0.25 of 1 and 0.5. The
+    material's default name changes it (the control: red against gray)."""
+    shader = tmp_path / "array.shader"
+    shader.write_text(ARRAY)
+    image = _render(tmp_path, shader, language, {"_Layers": default} if default else None)
+    assert np.all(image[_covered(image)][:, :3] == np.array(want, np.float32))
+
+
+def test_a_texture_array_from_an_image_file_is_refused_by_name(tmp_path):
+    from pbrlab.foundation.images import write_png
+    write_png(tmp_path / "layer.png", np.full((2, 2, 4), 255, np.uint8))
+    shader = tmp_path / "array.shader"
+    shader.write_text(ARRAY)
+    with pytest.raises(PbrlabError, match=r"_Layers is sampled as a texture array .* layer\.png"):
+        _render(tmp_path, shader, "glsl", {"_Layers": {"path": "layer.png"}})

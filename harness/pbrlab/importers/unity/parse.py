@@ -490,6 +490,9 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
         if name not in properties:
             properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
                                           ("implicit",))
+    for name in re.findall(r"\bUNITY_DECLARE_TEX2DARRAY(?:_NOSAMPLER)?\s*\(\s*(" + IDENT + r")\s*\)", masked):
+        if name not in properties:  # a texture array: one white layer (texture_arrays.py)
+            properties[name] = M.Property(name, name, "2DArray", "white", ("implicit",))
 
 
 def parse_text(text: str, path: Path) -> M.SurfaceShader:

@@ -30,7 +30,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import cg_spellings, generate, port
+from . import cg_spellings, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
@@ -296,8 +296,10 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
-            bound = _bind_texture(program, name, kind, unit)  # False: the compiler dropped the sampler
-            sized = bool(programs.uniforms_named(program, f"{name}_TexelSize"))
+            arrayed = texture_arrays.bind_array(program, name, value, cache, unit)  # a one-layer array
+            unit += arrayed
+            bound = not arrayed and _bind_texture(program, name, kind, unit)  # False: the compiler dropped it
+            sized = not arrayed and bool(programs.uniforms_named(program, f"{name}_TexelSize"))
             if bound or sized:
                 texture = (environment_cube() if value.cube else cache.texture(value.path, value.srgb)
                            if value.path is not None else cache.constant_texture(value.texel))
