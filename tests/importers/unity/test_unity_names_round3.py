@@ -348,3 +348,25 @@ def test_a_texture_array_from_an_image_file_is_refused_by_name(tmp_path):
     shader.write_text(ARRAY)
     with pytest.raises(PbrlabError, match=r"_Layers is sampled as a texture array .* layer\.png"):
         _render(tmp_path, shader, "glsl", {"_Layers": {"path": "layer.png"}})
+
+
+def test_a_surface_program_reading_an_engine_set_global_is_refused_by_name(tmp_path):
+    """The same rule for a surface program (its Input and lighting are generated): the tree
+    imposter's lights, at the line that reads them."""
+    shader = tmp_path / "imposter.shader"
+    shader.write_text(textwrap.dedent("""\
+        Shader "t/imposter" {
+            SubShader {
+                CGPROGRAM
+                #pragma surface surf Lambert
+                float3 _TerrainTreeLightDirections[4];
+                struct Input { float2 uv_MainTex; };
+                void surf (Input IN, inout SurfaceOutput o) {
+                    o.Albedo = _TerrainTreeLightDirections[0];
+                }
+                ENDCG
+            }
+        }
+        """))
+    with pytest.raises(PbrlabError, match=r"imposter\.shader:8: uses _TerrainTreeLightDirections, part of the lights"):
+        _render(tmp_path, shader, "glsl")

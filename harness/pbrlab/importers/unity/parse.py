@@ -20,6 +20,7 @@ from pathlib import Path
 from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
+from .engine_inputs import check_engine_inputs
 from . import shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
@@ -373,6 +374,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
+    check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
 
     def where(index: int) -> str:  # an index past the program's text lies in an include
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
