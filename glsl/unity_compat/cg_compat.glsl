@@ -3,7 +3,7 @@
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
 //           sincos(x, s, c), lit(NdotL, NdotH, m) (HLSL's lighting coefficients), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
-//           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
+//           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), fwidth (GLSL's; 0 in a vertex stage: a fragment function the vertex stage compiles but never calls), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
 //           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex2Dlod (uv.w is
@@ -31,6 +31,7 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #ifdef PBR_UNITY_VERTEX_STAGE
 #define ddx(x) ((x) * 0.0)
 #define ddy(x) ((x) * 0.0)
+#define fwidth(x) ((x) * 0.0)
 #else
 #define ddx dFdx
 #define ddy dFdy

@@ -10,7 +10,8 @@
 //           unity_DeltaTime, _WorldSpaceCameraPos, _ProjectionParams (1, near, far, 1/far),
 //           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject,
 //           unity_MatrixVP, unity_MatrixV, unity_MatrixInvV, glstate_matrix_projection,
-//           unity_CameraProjection, unity_CameraInvProjection, _ZBufferParams (GL depth,
+//           unity_CameraProjection, unity_CameraInvProjection, unity_WorldToCamera and
+//           unity_CameraToWorld (the camera transform's frame, +z forward), _ZBufferParams (GL depth,
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
@@ -35,6 +36,7 @@
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
+//           UNITY_DECLARE_TEX2DARRAY(_NOSAMPLER), UNITY_SAMPLE_TEX2DARRAY(_LOD) (coord.z the layer),
 //           UNITY_SAMPLE_TEXCUBE(_LOD), UNITY_DECLARE/SAMPLE_SCREENSPACE_TEXTURE;
 //           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
 //           gives, white = the far plane by default: no depth pre-pass here);
@@ -77,6 +79,9 @@ uniform mat4 unity_MatrixInvV;
 uniform mat4 glstate_matrix_projection;
 uniform mat4 unity_CameraProjection;
 uniform mat4 unity_CameraInvProjection;
+// the camera transform's own frame (+z forward, unlike the view matrix's -z): world to it and back
+uniform mat4 unity_WorldToCamera;
+uniform mat4 unity_CameraToWorld;
 uniform vec4 _ZBufferParams;
 uniform vec4 unity_OrthoParams;
 uniform vec4 _SpecColor;
@@ -153,6 +158,13 @@ vec4 _WorldSpaceLightPos0;
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) uniform sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) texture(tex, (uv).xy)
+// HLSLSupport.cginc's 2D texture arrays: coord.z is the layer (rounded to the nearest, clamped
+// to the layers there are: GL's rule, as Direct3D's). Functions, so the port's type pass knows
+// the float4 they return. A material binds a one-layer array (unity/texture_arrays.py).
+#define UNITY_DECLARE_TEX2DARRAY(tex) uniform sampler2DArray tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) uniform sampler2DArray tex
+vec4 UNITY_SAMPLE_TEX2DARRAY(sampler2DArray tex, vec3 coord) { return texture(tex, coord); }
+vec4 UNITY_SAMPLE_TEX2DARRAY_LOD(sampler2DArray tex, vec3 coord, float lod) { return textureLod(tex, coord, lod); }
 
 vec4 UnityObjectToClipPos(vec3 pos) {
     return unity_MatrixVP * (unity_ObjectToWorld * vec4(pos, 1.0));

@@ -10,7 +10,8 @@
 //           unity_DeltaTime, _WorldSpaceCameraPos, _ProjectionParams (1, near, far, 1/far),
 //           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject,
 //           unity_MatrixVP, unity_MatrixV, unity_MatrixInvV, glstate_matrix_projection,
-//           unity_CameraProjection, unity_CameraInvProjection, _ZBufferParams (GL depth,
+//           unity_CameraProjection, unity_CameraInvProjection, unity_WorldToCamera and
+//           unity_CameraToWorld (the camera transform's frame, +z forward), _ZBufferParams (GL depth,
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
@@ -35,6 +36,7 @@
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
+//           UNITY_DECLARE_TEX2DARRAY(_NOSAMPLER), UNITY_SAMPLE_TEX2DARRAY(_LOD) (coord.z the layer),
 //           UNITY_SAMPLE_TEXCUBE(_LOD), UNITY_DECLARE/SAMPLE_SCREENSPACE_TEXTURE;
 //           UNITY_DECLARE_DEPTH_TEXTURE, SAMPLE_DEPTH_TEXTURE(_PROJ, _LOD) (the texture a material
 //           gives, white = the far plane by default: no depth pre-pass here);
@@ -80,6 +82,9 @@ uniform float4x4 unity_MatrixInvV;
 uniform float4x4 glstate_matrix_projection;
 uniform float4x4 unity_CameraProjection;
 uniform float4x4 unity_CameraInvProjection;
+// the camera transform's own frame (+z forward, unlike the view matrix's -z): world to it and back
+uniform float4x4 unity_WorldToCamera;
+uniform float4x4 unity_CameraToWorld;
 uniform float4 _ZBufferParams;
 uniform float4 unity_OrthoParams;
 uniform float4 _SpecColor;
@@ -156,6 +161,12 @@ static float4 _WorldSpaceLightPos0;
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) texCUBElod(tex, float4(dir, lod))
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, (uv).xy)
+// HLSLSupport.cginc's 2D texture arrays (coord.z the layer), sampled with the one shared sampler
+// state of unity_hlsl_support.hlsl (glslang combines it into the texture).
+#define UNITY_DECLARE_TEX2DARRAY(tex) Texture2DArray tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
+#define UNITY_SAMPLE_TEX2DARRAY(tex, coord) (tex).Sample(pbrlab_unity_sampler, (coord))
+#define UNITY_SAMPLE_TEX2DARRAY_LOD(tex, coord, lod) (tex).SampleLevel(pbrlab_unity_sampler, (coord), (lod))
 
 float4 UnityObjectToClipPos(float3 pos) {
     return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0)));

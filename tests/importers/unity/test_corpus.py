@@ -64,6 +64,16 @@ BLANK_BY_DEFAULT = {
         "fixed4(tex2D(_MainTex).rgb, ...): _MainTex defaults to black (the video player binds the frame)",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a depth texture into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth_MSAA.shader":
+        "ColorMask 0 (ZWrite On): it resolves a multisampled depth texture into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/BlitTexArraySliceToDepth.shader":
+        "ColorMask 0 (ZWrite On): it copies a layer of a depth texture array into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Utils/CrossBlendNeighbors.shader":
+        "PackHeightmap of heights from _TopTex/_BottomTex/_LeftTex/_RightTex, which default to black, plus "
+        "_Offsets (no Property; the terrain sets it): 0",
+    "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Utils/TerrainHeightBlitCopy.shader":
+        "PackHeightmap(height * _Height_Scale + _Height_Offset): neither has a Property (the terrain sets "
+        "them), so both are 0",
     "builtin-2019.4/DefaultResourcesExtra/Sprites-Mask.shader":
         "ColorMask 0: a sprite mask writes the stencil only (it drew white while ColorMask was ignored)",
     "builtin-2019.4/DefaultResourcesExtra/UI/UI-Lit-RefractionDetail.shader":

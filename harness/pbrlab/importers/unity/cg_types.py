@@ -849,8 +849,11 @@ class _Parser:
             if self.at("{"):
                 self.fail("nested initialiser")
             items.append(self.assignment())
-            if not self.accept(","):
+            comma = self.accept(",")
+            if comma is None:
                 break
+            if self.at("}"):  # HLSL's trailing comma, which a GLSL constructor does not take
+                self.edits.replace(comma.s, comma.e, "")
         close = self.expect("}")
         if t.array:
             size = str(t.array) if t.array > 0 else str(len(items))
@@ -959,8 +962,25 @@ class _Parser:
                 self.next()
                 self.expect(";")
                 return
-            if t.text == "switch":
-                self.fail("switch")
+            if t.text == "switch":  # switch (e) { case k: ... default: ... }: its statements typed as any
+                self.next()
+                self.expect("(")
+                self.expression()
+                self.expect(")")
+                self.expect("{")
+                self.scopes.append({})
+                while not self.accept("}"):
+                    if self.accept("case"):
+                        self.expression()
+                        self.expect(":")
+                    elif self.accept("default"):
+                        self.expect(":")
+                    elif self.peek().kind == "eof":
+                        self.fail("unterminated switch")
+                    else:
+                        self.statement()
+                self.scopes.pop()
+                return
             if t.text == "struct":
                 self.struct()
                 return

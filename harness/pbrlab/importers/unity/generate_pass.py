@@ -229,7 +229,10 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         params = ["float3 in_position : POSITION", "float3 in_normal : NORMAL", "float2 in_uv : TEXCOORD0",
                   "float4 in_tangent : TANGENT", "float2 in_uv1 : TEXCOORD1", "float4 in_color : COLOR0",
                   "out float4 pbrlab_clip : SV_Position"]
-        params += [f"out {kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
+        # an integer varying is flat on both sides (HLSL's nointerpolation; the fragment side's
+        # integer input is flat already, and a linker refuses a mismatch)
+        params += [f"{'nointerpolation ' if _flat(kind) else ''}out {kind} pbrlab_vary_{s} : TEXCOORD{i}"
+                   for i, (s, kind) in enumerate(varyings(vf, where))]
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
                   f", out float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
         body.append(f"    pbrlab_clip = {position};")

@@ -20,6 +20,7 @@ from pathlib import Path
 from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
+from .engine_inputs import check_engine_inputs
 from . import shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
@@ -373,6 +374,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
+    check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
 
     def where(index: int) -> str:  # an index past the program's text lies in an include
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -490,6 +492,9 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
         if name not in properties:
             properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
                                           ("implicit",))
+    for name in re.findall(r"\bUNITY_DECLARE_TEX2DARRAY(?:_NOSAMPLER)?\s*\(\s*(" + IDENT + r")\s*\)", masked):
+        if name not in properties:  # a texture array: one white layer (texture_arrays.py)
+            properties[name] = M.Property(name, name, "2DArray", "white", ("implicit",))
 
 
 def parse_text(text: str, path: Path) -> M.SurfaceShader:
@@ -508,6 +513,7 @@ SKIPPED_LIGHT_MODES = {
     "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
     "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
     "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
+    "picking": "an editor pass",  # the Scene view's object picking (Terrain-Utilities' "Picking")
 }
 DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
 
@@ -671,6 +677,7 @@ def find_shader(name: str, near: Path):
 def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN) -> list:
     path = layout.path
     passes = []
+    first_note = len(notes)
     for item in sub.items:
         kind = item[0]
         if kind == "program":
@@ -707,7 +714,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             _, name, line = item
             passes.append(M.GrabPass(name, line))
     if not any(p.kind != "grab" for p in passes):
-        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped)")
+        skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
+        raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
+                               + (f": {skipped})" if skipped else ")"))
     return passes
 
 

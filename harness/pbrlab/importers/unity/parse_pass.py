@@ -12,6 +12,7 @@ from pathlib import Path
 
 from . import model as M
 from .conditionals import active_text, defines_of
+from .engine_inputs import check_engine_inputs
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -116,6 +117,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     on = [k for k in keywords if k in declared_keywords(program)]
     everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
+    check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"

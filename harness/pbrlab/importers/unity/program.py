@@ -30,7 +30,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import generate, port
+from . import cg_spellings, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
@@ -155,8 +155,9 @@ def ported_sources(virtual: dict) -> list[Path]:
 
 
 def hlsl_program(shader) -> str:
-    """The CGPROGRAM as written, less a byte-order mark opening a bare program file."""
-    return shaders.strip_bom(shader.program)
+    """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
+    spellings glslang takes (cg_spellings)."""
+    return cg_spellings.respelled(shaders.strip_bom(shader.program))
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
@@ -274,6 +275,11 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "glstate_matrix_projection", _column_major(frame.proj))
     _set(program, "unity_CameraProjection", _column_major(frame.proj))
     _set(program, "unity_CameraInvProjection", _column_major(np.linalg.inv(frame.proj)))
+    # the camera transform's local frame, +z forward (Camera.transform: the view matrix with z
+    # negated; Unity's own Internal-CombineDepthNormals negates z after it to reach view space)
+    world_to_camera = np.diag([1.0, 1.0, -1.0, 1.0]) @ frame.view
+    _set(program, "unity_WorldToCamera", _column_major(world_to_camera))
+    _set(program, "unity_CameraToWorld", _column_major(np.linalg.inv(world_to_camera)))
     w, h = frame.size
     _set(program, "_ScreenParams", (float(w), float(h), 1.0 + 1.0 / w, 1.0 + 1.0 / h))
     near, far = frame.near, frame.far
@@ -290,8 +296,10 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
-            bound = _bind_texture(program, name, kind, unit)  # False: the compiler dropped the sampler
-            sized = bool(programs.uniforms_named(program, f"{name}_TexelSize"))
+            arrayed = texture_arrays.bind_array(program, name, value, cache, unit)  # a one-layer array
+            unit += arrayed
+            bound = not arrayed and _bind_texture(program, name, kind, unit)  # False: the compiler dropped it
+            sized = not arrayed and bool(programs.uniforms_named(program, f"{name}_TexelSize"))
             if bound or sized:
                 texture = (environment_cube() if value.cube else cache.texture(value.path, value.srgb)
                            if value.path is not None else cache.constant_texture(value.texel))

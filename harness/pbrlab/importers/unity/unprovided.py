@@ -30,11 +30,13 @@ UNPROVIDED = {
                     "light cookies and attenuation textures"),
     **dict.fromkeys(("_ShadowMapTexture", "unity_WorldToShadow", "_ShadowCoord", "V2F_SHADOW_CASTER",
                      "TRANSFER_SHADOW_CASTER", "TRANSFER_SHADOW_CASTER_NORMALOFFSET", "SHADOW_CASTER_FRAGMENT",
-                     "UnityApplyLinearShadowBias", "UnityClipSpaceShadowCasterPos"),
+                     "UnityApplyLinearShadowBias", "UnityClipSpaceShadowCasterPos", "UnitySampleShadowmap",
+                     "UnitySampleShadowmap_PCF3x3", "UnitySampleShadowmap_PCF5x5", "UnitySampleShadowmap_PCF7x7",
+                     "UnityComputeShadowFade", "UnityComputeShadowFadeDistance", "UnityGetRawBakedOcclusions",
+                     "UnitySampleBakedOcclusion", "UnityMixRealtimeAndBakedShadows", "_ShadowMapTexture_TexelSize"),
                     "shadow maps and shadow-caster passes"),
-    **dict.fromkeys(("UNITY_DECLARE_TEX2DARRAY", "UNITY_SAMPLE_TEX2DARRAY", "UNITY_DECLARE_TEX3D",
-                     "sampler2DArray"),
-                    "texture arrays and 3D textures as Unity declares them"),
+    **dict.fromkeys(("UNITY_DECLARE_TEX3D", "UNITY_DECLARE_TEXCUBEARRAY", "UNITY_SAMPLE_TEXCUBEARRAY"),
+                    "3D textures and cube-map arrays as Unity declares them"),
     **dict.fromkeys(("unity_SpecCube1", "unity_SpecCube0_BoxMax", "unity_SpecCube0_BoxMin",
                      "unity_SpecCube0_ProbePosition", "BoxProjectedCubemapDirection"),
                     "box-projected and blended reflection probes"),
@@ -94,9 +96,13 @@ def named_missing(message: str, shader=None):
         m = _MISSING_INCLUDE.search(line)
         if m:
             return m.group(1), "one of Unity's include files pbrlab has no stand-in for"
+        source = _source_line(line, shader)
+        m = _NAME.search(source)  # a syntax error at a line that uses one (a declaring macro)
+        if m:
+            return m.group(1), UNPROVIDED[m.group(1)]
         name = _unprovided_spelled(line.split("error", 1)[1] if "error" in line else "")
         if name is None:
-            name = _unprovided_spelled(_source_line(line, shader))
+            name = _unprovided_spelled(source)
         if name is not None:
             return name, "a Unity name pbrlab does not provide"
         break  # the first error decides: later ones follow from it
