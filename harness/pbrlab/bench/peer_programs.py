@@ -145,7 +145,7 @@ def _capture_one(root: Path, peer: str, case: Case, gltf: Path, environment: dic
     spec_path.write_text(json.dumps(spec))
     node = shutil.which("node")
     if node is None:
-        raise PbrlabError("node is not installed: run `bash scripts/setup.sh`")
+        raise PbrlabError("node is not installed (in a pbrlab checkout, `bash scripts/setup.sh` installs it)")
     result = subprocess.run([node, str(root / TOOLS[peer]), str(spec_path), str(out)], capture_output=True, text=True)
     if result.returncode != 0:
         raise PbrlabError(f"{TOOLS[peer]} {case.key}: {(result.stderr.strip().splitlines() or ['failed'])[-1]}")
