@@ -109,3 +109,23 @@ def test_generated_gltf_is_deterministic():
     a = peer_gltf.gltf_bytes("sheen", 4)
     assert a == peer_gltf.gltf_bytes("sheen", 4)
     assert a != peer_gltf.gltf_bytes("sheen", 1)
+
+
+def test_capture_reproduces_the_committed_programs(tmp_path):
+    """Both peers rendered again in headless Chromium (the capture path of
+    tools/threejs_gltf/render.mjs and tools/sample_viewer/render.mjs) give the committed
+    programs of CASE text for text: the committed captures are what the tools produce, and the
+    generated file is the one they were captured from."""
+    root = FOLDER.parents[1]
+    missing = [path for path in ("tools/threejs_gltf/node_modules/three",
+                                 "tools/sample_viewer/node_modules/@khronosgroup/gltf-viewer",
+                                 "tools/threejs_gltf/node_modules/playwright-core")
+               if not (root / path).is_dir()]
+    missing += [p for p in ("/usr/bin/chromium",) if not Path(p).exists()]
+    assert not missing, f"missing {', '.join(missing)} (bash scripts/setup.sh installs them)"
+    manifest = peer_programs.capture(root, tmp_path, [CASE], log=lambda line: None)
+    for peer in peer_programs.PEERS:
+        assert (tmp_path / peer / f"{CASE.key}.frag").read_text() == (FOLDER / peer / f"{CASE.key}.frag").read_text(), peer
+        assert manifest["cases"][CASE.key][peer]["programs_matched"] == 1
+    assert manifest["cases"][CASE.key]["gltf_sha256"] == json.loads(
+        (FOLDER / "manifest.json").read_text())["cases"][CASE.key]["gltf_sha256"]
