@@ -30,11 +30,12 @@ from PIL import Image
 
 SEGMENTS = (32, 16)        # UV sphere: longitude x latitude quads
 TEXTURE_SIZE = 64
-LIGHT_DIRECTION = (0.4, -0.8, -0.5)   # where the directional lights shine (world), the tier bench's
-LIGHT_INTENSITY_LUX = 3.0
+LIGHT_DIRECTION = (0.4, -0.8, -0.5)   # where the lights shine (world; benchmarks/tier_program_cost.py's light)
+LIGHT_INTENSITY_LUX = 3.0   # split evenly over the lights (the count, not the value, enters a program)
 LIGHT_COUNTS = (0, 1, 4)
 
-# class -> (the material's extensions and factors beyond the shared core, texture set)
+# class -> the material's extensions beyond the shared core (base colour, metallic-roughness and
+# normal textures; specular-glossiness reads images 0 and 3, unlit only the base colour)
 CLASSES = {
     "metallic-roughness": {},
     "specular-glossiness": {"KHR_materials_pbrSpecularGlossiness": {

@@ -33,7 +33,6 @@ checks it), so every float is 32-bit either way, as in desktop GLSL.
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import json
 import re
