@@ -151,3 +151,64 @@ def test_iridescence_mix_and_thickness_match_the_extension():
                  rtol=1e-6, atol=1e-4)
     # defaults of the extension: min 100, max 400, g = 1 (no texture) -> the maximum
     assert evaluate("pbr_iridescence_thickness(100.0, 400.0, 1.0)", INCLUDE, x=0.0) == 400.0
+
+
+# pbr_F_Iridescence before it was made branch-free (its two special cases were early returns;
+# now both are selected at the end, so a program inlining it more than once can share one
+# evaluation: benchmarks/whole_program_cost.py). Kept here to show the change is image-neutral.
+_BRANCHING_FORM = """
+#include "pbr/brdf/f_iridescence.glsl"
+vec3 branching_F_Iridescence(float outsideIor, float filmIor, float cosTheta1, float thicknessNm, vec3 baseF0) {
+    if (!(thicknessNm > 0.0)) return pbr_F_Schlick(baseF0, cosTheta1);
+    float c1 = pbr_saturate(cosTheta1);
+    float n1 = outsideIor;
+    float n2 = mix(n1, filmIor, smoothstep(0.0, PBR_IRIDESCENCE_FILM_FADE_NM, thicknessNm));
+    float ratio = n1 / n2;
+    float cos2Sq = 1.0 - ratio * ratio * (1.0 - c1 * c1);
+    if (cos2Sq < 0.0) return vec3(1.0);
+    float c2 = sqrt(cos2Sq);
+    float r0 = (n2 - n1) / (n2 + n1);
+    float R12 = pbr_F_Schlick(r0 * r0, c1);
+    float T121 = 1.0 - R12;
+    float phi21 = n2 < n1 ? 0.0 : PBR_PI;
+    vec3 f0 = clamp(baseF0, 0.0, PBR_IRIDESCENCE_MAX_BASE_F0);
+    vec3 eta3 = vec3(pbr_ior_from_f0(f0.x), pbr_ior_from_f0(f0.y), pbr_ior_from_f0(f0.z));
+    vec3 r1 = (eta3 - vec3(n2)) / (eta3 + vec3(n2));
+    vec3 R23 = pbr_F_Schlick(r1 * r1, c2);
+    vec3 phi23 = vec3(eta3.x < n2 ? PBR_PI : 0.0, eta3.y < n2 ? PBR_PI : 0.0, eta3.z < n2 ? PBR_PI : 0.0);
+    vec3 phi = vec3(phi21) + phi23;
+    float opd = 2.0 * n2 * thicknessNm * c2;
+    vec3 R123 = clamp(R12 * R23, PBR_IRIDESCENCE_MIN_R123, PBR_IRIDESCENCE_MAX_R123);
+    vec3 r123 = sqrt(R123);
+    vec3 Rs = (T121 * T121) * R23 / (vec3(1.0) - R123);
+    vec3 C1 = (Rs - vec3(T121)) * r123;
+    vec3 C2 = C1 * r123;
+    vec3 I = vec3(R12) + Rs
+           + C1 * (2.0 * pbr_iridescence_sensitivity(opd, phi))
+           + C2 * (2.0 * pbr_iridescence_sensitivity(2.0 * opd, 2.0 * phi));
+    return pbr_saturate(I);
+}
+"""
+
+
+def test_branch_free_form_equals_the_branching_form_bit_for_bit(tmp_path):
+    """The selects return what the early returns did, on the whole grid (thickness 0 and the
+    fade, total internal reflection with film IOR 0.8 and outside IOR 1.5 / 16, grazing and
+    out-of-range cosines): equality, no tolerance (same operations, same inputs)."""
+    (tmp_path / "branching.glsl").write_text(_BRANCHING_FORM)
+    D, C, N, f0 = _grid()
+    D = np.concatenate([D[:, :1], np.full_like(D[:, :1], -5.0), D], axis=1)
+    C = np.concatenate([C[:, :1], C[:, :1], C], axis=1)
+    N = np.concatenate([N[:, :1], N[:, :1], N], axis=1)
+    f0 = np.concatenate([f0[:, :1], f0[:, :1], f0], axis=1)
+    for n1 in (1.0, 1.5, 1.0 / 16.0, 16.0):
+        new = evaluate(CALL, INCLUDE, n1=n1, n2=N, c=C, d=D, f0=vec3(f0))
+        old = evaluate("branching_F_Iridescence(n1, n2, c, d, f0)", ("branching.glsl",),
+                       include_dirs=(str(tmp_path),), n1=n1, n2=N, c=C, d=D, f0=vec3(f0))
+        np.testing.assert_array_equal(new, old)
+    # control: the comparison sees a changed case (TIR returning 0.5 instead of 1)
+    (tmp_path / "changed.glsl").write_text(_BRANCHING_FORM.replace("return vec3(1.0);", "return vec3(0.5);"))
+    changed = evaluate("branching_F_Iridescence(n1, n2, c, d, f0)", ("changed.glsl",), include_dirs=(str(tmp_path),),
+                       n1=1.5, n2=1.0, c=0.2, d=300.0, f0=vec3([0.04, 0.04, 0.04]))
+    assert not np.array_equal(changed, evaluate(CALL, INCLUDE, n1=1.5, n2=1.0, c=0.2, d=300.0,
+                                                f0=vec3([0.04, 0.04, 0.04])))

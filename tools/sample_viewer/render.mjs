@@ -16,7 +16,9 @@
 //             "environmentIntensity": 1, "environmentRotationDeg": 90,
 //             "msaa": 0 (or 4: the float target multisampled and resolved),
 //             "unpremultiply": false (true: colour divided by alpha where 0 < alpha),
-//             "iblSampler": {"lambertianSampleCount": 2048, ...} (see IBL_SAMPLER_SETTINGS)}
+//             "iblSampler": {"lambertianSampleCount": 2048, ...} (see IBL_SAMPLER_SETTINGS),
+//             "capturePrograms": true (also OUT.programs.json: every WebGL2 program the page
+//             linked, its sources and draw count; ../chromium/program_capture.mjs)}
 // Defaults: environmentRotationDeg 90 (matches pbrlab's equirect convention, checked by
 // pbrlab.checking.fidelity.check_staging), msaa 0, unpremultiply true for a view spec camera
 // (the benchmark's output: colour not premultiplied) and false otherwise (as before);
@@ -33,6 +35,7 @@ import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
 import { encode } from "fast-png";
 import { rowsTopDown, runPage, runTool } from "../chromium/launch.mjs";
+import { capturedPrograms, installProgramCapture } from "../chromium/program_capture.mjs";
 
 const HERE = dirname(fileURLToPath(import.meta.url));
 const VIEWER_DIST = join(HERE, "node_modules", "@khronosgroup", "gltf-viewer", "dist");
@@ -163,13 +166,16 @@ async function main(given, outPrefix) {
     t1 = Date.now();
     const pageSpec = { ...spec, gltf: `${base}/fs${resolve(spec.gltf)}`,
                        environment: spec.environment ? `${base}/fs${resolve(spec.environment)}` : null };
-    return page.evaluate((s) => window.renderGltf(s), pageSpec);
+    if (spec.capturePrograms) await page.evaluate(installProgramCapture);
+    const rendered = await page.evaluate((s) => window.renderGltf(s), pageSpec);
+    return spec.capturePrograms ? { ...rendered, programs: await page.evaluate(capturedPrograms) } : rendered;
   });
   const t2 = Date.now();
   const [width, height] = spec.size;
   const rows = rowsTopDown(result.pixels, width, height);
   if (straight) unpremultiply(rows);
   await writeFile(`${outPrefix}.f32`, Buffer.from(rows.buffer));
+  if (spec.capturePrograms) await writeFile(`${outPrefix}.programs.json`, JSON.stringify(result.programs, null, 1));
   await writeFile(`${outPrefix}.png`, encode({ width, height, data: srgb8(rows, width, height), channels: 4 }));
   await writeFile(`${outPrefix}.json`, JSON.stringify({
     size: [width, height], renderer: result.renderer, version: `gltf-viewer ${VIEWER_VERSION}`,

@@ -13,7 +13,9 @@
 //             optional: "msaa": 4 (the float target's samples; 0 for none),
 //             "environmentIntensity": 1, "threejsEnvironmentRotationDeg": -90,
 //             "transmissionBackground": [r, g, b] (a constant sky's linear colour: what glass
-//             over nothing shows, in place of three.js's white; page/peer.mjs)}
+//             over nothing shows, in place of three.js's white; page/peer.mjs),
+//             "capturePrograms": true (also OUT.programs.json: every WebGL2 program the page
+//             linked, its sources and draw count; ../chromium/program_capture.mjs)}
 // Other keys of the shared view spec (environment_hdr, samples, seed, denoise) are ignored.
 // Writes OUT.f32 (float32 RGBA, rows top to bottom, linear radiance, NOT premultiplied:
 // three.js's premultiplied colour divided by alpha where alpha > 0; alpha = coverage) and
@@ -24,6 +26,7 @@ import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
 import { rowsTopDown, runPage, runTool } from "../chromium/launch.mjs";
+import { capturedPrograms, installProgramCapture } from "../chromium/program_capture.mjs";
 
 const HERE = dirname(fileURLToPath(import.meta.url));
 const THREE_DIR = join(HERE, "node_modules", "three");
@@ -97,13 +100,16 @@ async function main(spec, outPrefix) {
       size: spec.size, msaa: spec.msaa ?? 4, camera: spec.camera,
       transmissionBackground: spec.transmissionBackground ?? null,
     };
-    return page.evaluate((s) => window.renderGltf(s), pageSpec);
+    if (spec.capturePrograms) await page.evaluate(installProgramCapture);
+    const rendered = await page.evaluate((s) => window.renderGltf(s), pageSpec);
+    return spec.capturePrograms ? { ...rendered, programs: await page.evaluate(capturedPrograms) } : rendered;
   });
   const t2 = Date.now();
   const [width, height] = spec.size;
   const rows = rowsTopDown(result.pixels, width, height);
   const partialCoverage = unpremultiply(rows);
   await writeFile(`${outPrefix}.f32`, Buffer.from(rows.buffer));
+  if (spec.capturePrograms) await writeFile(`${outPrefix}.programs.json`, JSON.stringify(result.programs, null, 1));
   const { pixels, ...rest } = result;
   await writeFile(`${outPrefix}.json`, JSON.stringify({
     size: [width, height], renderer: rest.renderer, version: `three.js r${rest.three}`, three: rest.three,

@@ -107,15 +107,18 @@ float3 pbr_iridescence_sensitivity(float opdNm, float3 shift) {
 }
 
 float3 pbr_F_Iridescence(float outsideIor, float filmIor, float cosTheta1, float thicknessNm, float3 baseF0) {
-    if (!(thicknessNm > 0.0)) return pbr_F_Schlick(baseF0, cosTheta1);  // no film (decided)
+    // Branch-free (both special cases select at the end): a program that inlines this
+    // function in more than one place (the environment's lighting call and each light's, which
+    // see the same NdotV) can then share one evaluation; with early returns each call kept its
+    // own copy (benchmarks/whole_program_cost.py, iridescence with one light and an
+    // environment: 1332 -> 836 RDNA3 instructions). The selected values are the same.
     float c1 = pbr_saturate(cosTheta1);
     float n1 = outsideIor;
     float n2 = lerp(n1, filmIor, smoothstep(0.0, PBR_IRIDESCENCE_FILM_FADE_NM, thicknessNm));
     // Snell's law into the film
     float ratio = n1 / n2;
     float cos2Sq = 1.0 - ratio * ratio * (1.0 - c1 * c1);
-    if (cos2Sq < 0.0) return ((float3)(1.0));  // total internal reflection at the film's top
-    float c2 = sqrt(cos2Sq);
+    float c2 = sqrt(max(cos2Sq, 0.0));  // cos2Sq < 0: total internal reflection (selected below)
     // outside -> film
     float r0 = (n2 - n1) / (n2 + n1);
     float R12 = pbr_F_Schlick(r0 * r0, c1);
@@ -138,7 +141,8 @@ float3 pbr_F_Iridescence(float outsideIor, float filmIor, float cosTheta1, float
     float3 I = ((float3)(R12)) + Rs
            + C1 * (2.0 * pbr_iridescence_sensitivity(opd, phi))
            + C2 * (2.0 * pbr_iridescence_sensitivity(2.0 * opd, 2.0 * phi));
-    return pbr_saturate(I);
+    float3 F = cos2Sq < 0.0 ? ((float3)(1.0)) : pbr_saturate(I);  // total internal reflection at the film's top
+    return thicknessNm > 0.0 ? F : pbr_F_Schlick(baseF0, cosTheta1);  // d <= 0 or NaN: no film (decided)
 }
 
 // KHR_materials_iridescence, "Implementation Notes": F = mix(F_schlick, F_iridescence,

@@ -126,6 +126,40 @@ def test_safe_normalize_matches_float64_normalize_over_every_scale():
     assert (evaluate("pbr_safe_normalize(vec3(0.0))", x=0.0) == 0.0).all()
 
 
+# pbr_safe_normalize before it was made branch-free (the zero vector was an early return; now
+# it is selected at the end, so a program inlining it more than once can share one evaluation:
+# benchmarks/whole_program_cost.py). Kept here to show the change is image-neutral.
+_BRANCHING_SAFE_NORMALIZE = """
+#include "pbr/common/guards.glsl"
+vec3 branching_safe_normalize(vec3 v) {
+    float m = pbr_max3(abs(v));
+    if (!(m >= PBR_FLT_MIN)) return vec3(0.0);
+    float k = m > PBR_SAFE_NORMALIZE_HUGE ? 0.0625 : 1.0;
+    vec3 s = (v * k) / (m * k);
+    return s * inversesqrt(dot(s, s));
+}
+"""
+
+
+def test_safe_normalize_equals_its_branching_form_bit_for_bit(tmp_path):
+    """Every scale of test_safe_normalize_matches_float64_normalize_over_every_scale plus the
+    zero vector, denormal, infinite and NaN components: the same bits, no tolerance."""
+    (tmp_path / "branching.glsl").write_text(_BRANCHING_SAFE_NORMALIZE)
+    rng = np.random.default_rng(5)
+    d = rng.normal(size=(10_000, 3)) * (10.0 ** rng.uniform(-45, 38, 10_000))[:, None]
+    edges = [[0, 0, 0], [-0.0, 0, 0], [1e-40, 0, 0], [1e-39, -1e-39, 0], [np.inf, 1, 0], [np.nan, 1, 0],
+             [3e38, 3e38, -3e38], [1, 0, 0]]
+    d = np.concatenate([d, np.array(edges)]).astype(F32)
+    new = evaluate("pbr_safe_normalize(d)", ("pbr/common/guards.glsl",), d=vec3(d))
+    old = evaluate("branching_safe_normalize(d)", ("branching.glsl",), include_dirs=(str(tmp_path),), d=vec3(d))
+    np.testing.assert_array_equal(new, old)
+    # control: the comparison sees a changed zero case
+    (tmp_path / "changed.glsl").write_text(_BRANCHING_SAFE_NORMALIZE.replace("return vec3(0.0);", "return vec3(1.0);"))
+    changed = evaluate("branching_safe_normalize(d)", ("changed.glsl",), include_dirs=(str(tmp_path),),
+                       d=vec3(np.zeros((1, 3), F32)))
+    assert not np.array_equal(changed, evaluate("pbr_safe_normalize(d)", ("pbr/common/guards.glsl",),
+                                                d=vec3(np.zeros((1, 3), F32))))
+
 def test_Kelemen_VdotH_floor_is_the_shading_models_smallest_VdotH():
     got = evaluate("pbr_V_Kelemen(x)", x=np.array([0.0, 1e-9, guards.MIN_VDOTH], F32))
     assert (got == got[-1]).all()

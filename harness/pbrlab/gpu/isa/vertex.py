@@ -12,7 +12,9 @@ from __future__ import annotations
 
 from ...foundation.errors import PbrlabError
 
-_FLOAT = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
+# matrices: the peers' captured WebGL programs pass one (the Sample Viewer's v_TBN, a mat3);
+# a matrix's constructor takes its components column by column, so it is fed like a vector
+_FLOAT = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4, "mat2": 4, "mat3": 9, "mat4": 16}
 _INT = {"int": ("int", 1), "ivec2": ("int", 2), "ivec3": ("int", 3), "ivec4": ("int", 4),
         "uint": ("uint", 1), "uvec2": ("uint", 2), "uvec3": ("uint", 3), "uvec4": ("uint", 4)}
 
