@@ -249,39 +249,46 @@ fn pbr_safe_normalize(v_4: vec3<f32>) -> vec3<f32> {
     var local_3: f32;
     var k: f32;
     var s_2: vec3<f32>;
+    var unit: vec3<f32>;
+    var local_4: vec3<f32>;
 
     v_5 = v_4;
     let _e2 = v_5;
     let _e4 = pbr_max3_(abs(_e2));
     m = _e4;
     let _e6 = m;
-    if !((_e6 >= 0.000000000000000000000000000000000000011754944f)) {
-        return vec3(0f);
-    }
-    let _e12 = m;
-    if (_e12 > 42535296000000000000000000000000000000f) {
+    if (_e6 > 42535296000000000000000000000000000000f) {
         local_3 = 0.0625f;
     } else {
         local_3 = 1f;
     }
-    let _e18 = local_3;
-    k = _e18;
-    let _e20 = v_5;
-    let _e21 = k;
-    let _e23 = m;
-    let _e24 = k;
-    s_2 = ((_e20 * _e21) / vec3((_e23 * _e24)));
-    let _e29 = s_2;
-    let _e30 = s_2;
-    let _e31 = s_2;
-    return (_e29 * inverseSqrt(dot(_e30, _e31)));
+    let _e12 = local_3;
+    k = _e12;
+    let _e14 = v_5;
+    let _e15 = k;
+    let _e17 = m;
+    let _e18 = k;
+    s_2 = ((_e14 * _e15) / vec3((_e17 * _e18)));
+    let _e23 = s_2;
+    let _e24 = s_2;
+    let _e25 = s_2;
+    unit = (_e23 * inverseSqrt(dot(_e24, _e25)));
+    let _e30 = m;
+    if (_e30 >= 0.000000000000000000000000000000000000011754944f) {
+        let _e33 = unit;
+        local_4 = _e33;
+    } else {
+        local_4 = vec3(0f);
+    }
+    let _e37 = local_4;
+    return _e37;
 }
 
 fn pbr_one_minus_dot2_(a: vec3<f32>, b: vec3<f32>) -> f32 {
     var a_1: vec3<f32>;
     var b_1: vec3<f32>;
     var c: vec3<f32>;
-    var local_4: f32;
+    var local_5: f32;
 
     a_1 = a;
     b_1 = b;
@@ -293,11 +300,11 @@ fn pbr_one_minus_dot2_(a: vec3<f32>, b: vec3<f32>) -> f32 {
     if (dot(_e8, _e9) > 0f) {
         let _e13 = c;
         let _e14 = c;
-        local_4 = dot(_e13, _e14);
+        local_5 = dot(_e13, _e14);
     } else {
-        local_4 = 1f;
+        local_5 = 1f;
     }
-    let _e18 = local_4;
+    let _e18 = local_5;
     return _e18;
 }
 
@@ -316,7 +323,7 @@ fn pbr_length2_nonzero(x_14: vec3<f32>) -> f32 {
 
 fn pbr_srgb_to_linear(c_1: f32) -> f32 {
     var c_2: f32;
-    var local_5: f32;
+    var local_6: f32;
 
     c_2 = c_1;
     let _e2 = c_2;
@@ -325,12 +332,12 @@ fn pbr_srgb_to_linear(c_1: f32) -> f32 {
     let _e5 = c_2;
     if (_e5 <= 0.04045f) {
         let _e8 = c_2;
-        local_5 = (_e8 / 12.92f);
+        local_6 = (_e8 / 12.92f);
     } else {
         let _e11 = c_2;
-        local_5 = pow(((_e11 + 0.055f) / 1.055f), 2.4f);
+        local_6 = pow(((_e11 + 0.055f) / 1.055f), 2.4f);
     }
-    let _e21 = local_5;
+    let _e21 = local_6;
     return _e21;
 }
 
@@ -349,7 +356,7 @@ fn pbr_srgb_to_linear_1(c_3: vec3<f32>) -> vec3<f32> {
 
 fn pbr_linear_to_srgb(c_5: f32) -> f32 {
     var c_6: f32;
-    var local_6: f32;
+    var local_7: f32;
 
     c_6 = c_5;
     let _e2 = c_6;
@@ -358,12 +365,12 @@ fn pbr_linear_to_srgb(c_5: f32) -> f32 {
     let _e5 = c_6;
     if (_e5 <= 0.0031308f) {
         let _e8 = c_6;
-        local_6 = (_e8 * 12.92f);
+        local_7 = (_e8 * 12.92f);
     } else {
         let _e14 = c_6;
-        local_6 = ((1.055f * pow(_e14, 0.41666666f)) - 0.055f);
+        local_7 = ((1.055f * pow(_e14, 0.41666666f)) - 0.055f);
     }
-    let _e23 = local_6;
+    let _e23 = local_7;
     return _e23;
 }
 
@@ -699,7 +706,7 @@ fn pbr_BRDF_BlinnPhongClassic(NdotH_2: f32, NdotL_2: f32, specPower_4: f32) -> f
     var NdotH_3: f32;
     var NdotL_3: f32;
     var specPower_5: f32;
-    var local_7: f32;
+    var local_8: f32;
 
     NdotH_3 = NdotH_2;
     NdotL_3 = NdotL_2;
@@ -710,11 +717,11 @@ fn pbr_BRDF_BlinnPhongClassic(NdotH_2: f32, NdotL_2: f32, specPower_4: f32) -> f
         let _e11 = specPower_5;
         let _e12 = pbr_blinn_phong_lobe(_e10, _e11);
         let _e14 = NdotL_3;
-        local_7 = ((0.31830987f * _e12) / max(_e14, 0.0001f));
+        local_8 = ((0.31830987f * _e12) / max(_e14, 0.0001f));
     } else {
-        local_7 = 0f;
+        local_8 = 0f;
     }
-    let _e20 = local_7;
+    let _e20 = local_8;
     return _e20;
 }
 
@@ -1689,7 +1696,7 @@ fn pbr_BTDF_Walter_GGX_cosine(n_2: vec3<f32>, v_6: vec3<f32>, l: vec3<f32>, alph
     var NdotV_34: f32;
     var NdotL_36: f32;
     var h_2: vec3<f32>;
-    var local_8: vec3<f32>;
+    var local_9: vec3<f32>;
     var VdotH_18: f32;
     var LdotH_2: f32;
     var refracts: bool;
@@ -1698,7 +1705,7 @@ fn pbr_BTDF_Walter_GGX_cosine(n_2: vec3<f32>, v_6: vec3<f32>, l: vec3<f32>, alph
     var G: f32;
     var T: f32;
     var ft: f32;
-    var local_9: f32;
+    var local_10: f32;
 
     n_3 = n_2;
     v_7 = v_6;
@@ -1725,12 +1732,12 @@ fn pbr_BTDF_Walter_GGX_cosine(n_2: vec3<f32>, v_6: vec3<f32>, l: vec3<f32>, alph
     let _e37 = h_2;
     if (dot(_e36, _e37) < 0f) {
         let _e41 = h_2;
-        local_8 = -(_e41);
+        local_9 = -(_e41);
     } else {
         let _e43 = h_2;
-        local_8 = _e43;
+        local_9 = _e43;
     }
-    let _e45 = local_8;
+    let _e45 = local_9;
     h_2 = _e45;
     let _e46 = v_7;
     let _e47 = h_2;
@@ -1773,11 +1780,11 @@ fn pbr_BTDF_Walter_GGX_cosine(n_2: vec3<f32>, v_6: vec3<f32>, l: vec3<f32>, alph
     let _e118 = refracts;
     if _e118 {
         let _e119 = ft;
-        local_9 = _e119;
+        local_10 = _e119;
     } else {
-        local_9 = 0f;
+        local_10 = 0f;
     }
-    let _e122 = local_9;
+    let _e122 = local_10;
     return _e122;
 }
 
@@ -1852,15 +1859,15 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     var r0_: f32;
     var R12_: f32;
     var T121_: f32;
-    var local_10: f32;
+    var local_11: f32;
     var phi21_: f32;
     var f0_14: vec3<f32>;
     var eta3_: vec3<f32>;
     var r1_: vec3<f32>;
     var R23_: vec3<f32>;
-    var local_11: f32;
     var local_12: f32;
     var local_13: f32;
+    var local_14: f32;
     var phi23_: vec3<f32>;
     var phi: vec3<f32>;
     var opd: f32;
@@ -1870,156 +1877,167 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     var C1_: vec3<f32>;
     var C2_: vec3<f32>;
     var I: vec3<f32>;
+    var local_15: vec3<f32>;
+    var F: vec3<f32>;
+    var local_16: vec3<f32>;
 
     outsideIor_1 = outsideIor;
     filmIor_1 = filmIor;
     cosTheta1_1 = cosTheta1_;
     thicknessNm_1 = thicknessNm;
     baseF0_1 = baseF0_;
-    let _e10 = thicknessNm_1;
-    if !((_e10 > 0f)) {
-        let _e14 = baseF0_1;
-        let _e15 = cosTheta1_1;
-        let _e16 = pbr_F_Schlick_1(_e14, _e15);
-        return _e16;
-    }
-    let _e17 = cosTheta1_1;
-    let _e18 = pbr_saturate(_e17);
-    c1_ = _e18;
-    let _e20 = outsideIor_1;
-    n1_ = _e20;
-    let _e22 = n1_;
-    let _e23 = filmIor_1;
-    let _e26 = thicknessNm_1;
-    n2_ = mix(_e22, _e23, smoothstep(0f, 0.03f, _e26));
-    let _e30 = n1_;
-    let _e31 = n2_;
-    ratio = (_e30 / _e31);
-    let _e35 = ratio;
-    let _e36 = ratio;
-    let _e39 = c1_;
-    let _e40 = c1_;
-    cos2Sq = (1f - ((_e35 * _e36) * (1f - (_e39 * _e40))));
-    let _e46 = cos2Sq;
-    if (_e46 < 0f) {
-        return vec3(1f);
-    }
-    let _e51 = cos2Sq;
-    c2_ = sqrt(_e51);
-    let _e54 = n2_;
-    let _e55 = n1_;
-    let _e57 = n2_;
-    let _e58 = n1_;
-    r0_ = ((_e54 - _e55) / (_e57 + _e58));
-    let _e62 = r0_;
-    let _e63 = r0_;
-    let _e65 = c1_;
-    let _e66 = pbr_F_Schlick((_e62 * _e63), _e65);
-    R12_ = _e66;
-    let _e69 = R12_;
-    T121_ = (1f - _e69);
-    let _e72 = n2_;
-    let _e73 = n1_;
-    if (_e72 < _e73) {
-        local_10 = 0f;
-    } else {
-        local_10 = 3.1415927f;
-    }
-    let _e78 = local_10;
-    phi21_ = _e78;
-    let _e80 = baseF0_1;
-    f0_14 = clamp(_e80, vec3(0f), vec3(0.9999f));
-    let _e87 = f0_14;
-    let _e89 = pbr_ior_from_f0_(_e87.x);
-    let _e90 = f0_14;
-    let _e92 = pbr_ior_from_f0_(_e90.y);
-    let _e93 = f0_14;
-    let _e95 = pbr_ior_from_f0_(_e93.z);
-    eta3_ = vec3<f32>(_e89, _e92, _e95);
-    let _e98 = eta3_;
-    let _e99 = n2_;
-    let _e102 = eta3_;
-    let _e103 = n2_;
-    r1_ = ((_e98 - vec3(_e99)) / (_e102 + vec3(_e103)));
-    let _e108 = r1_;
-    let _e109 = r1_;
-    let _e111 = c2_;
-    let _e112 = pbr_F_Schlick_1((_e108 * _e109), _e111);
-    R23_ = _e112;
-    let _e114 = eta3_;
-    let _e116 = n2_;
-    if (_e114.x < _e116) {
-        local_11 = 3.1415927f;
-    } else {
+    let _e10 = cosTheta1_1;
+    let _e11 = pbr_saturate(_e10);
+    c1_ = _e11;
+    let _e13 = outsideIor_1;
+    n1_ = _e13;
+    let _e15 = n1_;
+    let _e16 = filmIor_1;
+    let _e19 = thicknessNm_1;
+    n2_ = mix(_e15, _e16, smoothstep(0f, 0.03f, _e19));
+    let _e23 = n1_;
+    let _e24 = n2_;
+    ratio = (_e23 / _e24);
+    let _e28 = ratio;
+    let _e29 = ratio;
+    let _e32 = c1_;
+    let _e33 = c1_;
+    cos2Sq = (1f - ((_e28 * _e29) * (1f - (_e32 * _e33))));
+    let _e39 = cos2Sq;
+    c2_ = sqrt(max(_e39, 0f));
+    let _e44 = n2_;
+    let _e45 = n1_;
+    let _e47 = n2_;
+    let _e48 = n1_;
+    r0_ = ((_e44 - _e45) / (_e47 + _e48));
+    let _e52 = r0_;
+    let _e53 = r0_;
+    let _e55 = c1_;
+    let _e56 = pbr_F_Schlick((_e52 * _e53), _e55);
+    R12_ = _e56;
+    let _e59 = R12_;
+    T121_ = (1f - _e59);
+    let _e62 = n2_;
+    let _e63 = n1_;
+    if (_e62 < _e63) {
         local_11 = 0f;
+    } else {
+        local_11 = 3.1415927f;
     }
-    let _e121 = local_11;
-    let _e122 = eta3_;
-    let _e124 = n2_;
-    if (_e122.y < _e124) {
+    let _e68 = local_11;
+    phi21_ = _e68;
+    let _e70 = baseF0_1;
+    f0_14 = clamp(_e70, vec3(0f), vec3(0.9999f));
+    let _e77 = f0_14;
+    let _e79 = pbr_ior_from_f0_(_e77.x);
+    let _e80 = f0_14;
+    let _e82 = pbr_ior_from_f0_(_e80.y);
+    let _e83 = f0_14;
+    let _e85 = pbr_ior_from_f0_(_e83.z);
+    eta3_ = vec3<f32>(_e79, _e82, _e85);
+    let _e88 = eta3_;
+    let _e89 = n2_;
+    let _e92 = eta3_;
+    let _e93 = n2_;
+    r1_ = ((_e88 - vec3(_e89)) / (_e92 + vec3(_e93)));
+    let _e98 = r1_;
+    let _e99 = r1_;
+    let _e101 = c2_;
+    let _e102 = pbr_F_Schlick_1((_e98 * _e99), _e101);
+    R23_ = _e102;
+    let _e104 = eta3_;
+    let _e106 = n2_;
+    if (_e104.x < _e106) {
         local_12 = 3.1415927f;
     } else {
         local_12 = 0f;
     }
-    let _e129 = local_12;
-    let _e130 = eta3_;
-    let _e132 = n2_;
-    if (_e130.z < _e132) {
+    let _e111 = local_12;
+    let _e112 = eta3_;
+    let _e114 = n2_;
+    if (_e112.y < _e114) {
         local_13 = 3.1415927f;
     } else {
         local_13 = 0f;
     }
-    let _e137 = local_13;
-    phi23_ = vec3<f32>(_e121, _e129, _e137);
-    let _e140 = phi21_;
-    let _e142 = phi23_;
-    phi = (vec3(_e140) + _e142);
-    let _e146 = n2_;
-    let _e148 = thicknessNm_1;
-    let _e150 = c2_;
-    opd = (((2f * _e146) * _e148) * _e150);
-    let _e153 = R12_;
-    let _e154 = R23_;
-    R123_ = clamp((_e153 * _e154), vec3(0f), vec3(0.9999f));
+    let _e119 = local_13;
+    let _e120 = eta3_;
+    let _e122 = n2_;
+    if (_e120.z < _e122) {
+        local_14 = 3.1415927f;
+    } else {
+        local_14 = 0f;
+    }
+    let _e127 = local_14;
+    phi23_ = vec3<f32>(_e111, _e119, _e127);
+    let _e130 = phi21_;
+    let _e132 = phi23_;
+    phi = (vec3(_e130) + _e132);
+    let _e136 = n2_;
+    let _e138 = thicknessNm_1;
+    let _e140 = c2_;
+    opd = (((2f * _e136) * _e138) * _e140);
+    let _e143 = R12_;
+    let _e144 = R23_;
+    R123_ = clamp((_e143 * _e144), vec3(0f), vec3(0.9999f));
+    let _e152 = R123_;
+    r123_ = sqrt(_e152);
+    let _e155 = T121_;
+    let _e156 = T121_;
+    let _e158 = R23_;
     let _e162 = R123_;
-    r123_ = sqrt(_e162);
-    let _e165 = T121_;
-    let _e166 = T121_;
-    let _e168 = R23_;
-    let _e172 = R123_;
-    Rs = (((_e165 * _e166) * _e168) / (vec3(1f) - _e172));
-    let _e176 = Rs;
-    let _e177 = T121_;
-    let _e180 = r123_;
-    C1_ = ((_e176 - vec3(_e177)) * _e180);
-    let _e183 = C1_;
-    let _e184 = r123_;
-    C2_ = (_e183 * _e184);
-    let _e187 = R12_;
-    let _e189 = Rs;
-    let _e191 = C1_;
-    let _e193 = opd;
-    let _e194 = phi;
-    let _e195 = pbr_iridescence_sensitivity(_e193, _e194);
-    let _e199 = C2_;
-    let _e202 = opd;
-    let _e205 = phi;
-    let _e207 = pbr_iridescence_sensitivity((2f * _e202), (2f * _e205));
-    I = (((vec3(_e187) + _e189) + (_e191 * (2f * _e195))) + (_e199 * (2f * _e207)));
-    let _e212 = I;
-    let _e213 = pbr_saturate_1(_e212);
-    return _e213;
+    Rs = (((_e155 * _e156) * _e158) / (vec3(1f) - _e162));
+    let _e166 = Rs;
+    let _e167 = T121_;
+    let _e170 = r123_;
+    C1_ = ((_e166 - vec3(_e167)) * _e170);
+    let _e173 = C1_;
+    let _e174 = r123_;
+    C2_ = (_e173 * _e174);
+    let _e177 = R12_;
+    let _e179 = Rs;
+    let _e181 = C1_;
+    let _e183 = opd;
+    let _e184 = phi;
+    let _e185 = pbr_iridescence_sensitivity(_e183, _e184);
+    let _e189 = C2_;
+    let _e192 = opd;
+    let _e195 = phi;
+    let _e197 = pbr_iridescence_sensitivity((2f * _e192), (2f * _e195));
+    I = (((vec3(_e177) + _e179) + (_e181 * (2f * _e185))) + (_e189 * (2f * _e197)));
+    let _e202 = cos2Sq;
+    if (_e202 < 0f) {
+        local_15 = vec3(1f);
+    } else {
+        let _e207 = I;
+        let _e208 = pbr_saturate_1(_e207);
+        local_15 = _e208;
+    }
+    let _e210 = local_15;
+    F = _e210;
+    let _e212 = thicknessNm_1;
+    if (_e212 > 0f) {
+        let _e215 = F;
+        local_16 = _e215;
+    } else {
+        let _e216 = baseF0_1;
+        let _e217 = cosTheta1_1;
+        let _e218 = pbr_F_Schlick_1(_e216, _e217);
+        local_16 = _e218;
+    }
+    let _e220 = local_16;
+    return _e220;
 }
 
-fn pbr_iridescence_mix(F: vec3<f32>, Firidescence: vec3<f32>, iridescenceFactor: f32) -> vec3<f32> {
-    var F_1: vec3<f32>;
+fn pbr_iridescence_mix(F_1: vec3<f32>, Firidescence: vec3<f32>, iridescenceFactor: f32) -> vec3<f32> {
+    var F_2: vec3<f32>;
     var Firidescence_1: vec3<f32>;
     var iridescenceFactor_1: f32;
 
-    F_1 = F;
+    F_2 = F_1;
     Firidescence_1 = Firidescence;
     iridescenceFactor_1 = iridescenceFactor;
-    let _e6 = F_1;
+    let _e6 = F_2;
     let _e7 = Firidescence_1;
     let _e8 = iridescenceFactor_1;
     let _e9 = pbr_saturate(_e8);
@@ -2112,9 +2130,9 @@ fn pbr_sheen_lambda(cosTheta_4: f32, alpha_46: f32) -> f32 {
     var cosTheta_5: f32;
     var alpha_47: f32;
     var below: bool;
-    var local_14: f32;
+    var local_17: f32;
     var L: f32;
-    var local_15: f32;
+    var local_18: f32;
 
     cosTheta_5 = cosTheta_4;
     alpha_47 = alpha_46;
@@ -2127,26 +2145,26 @@ fn pbr_sheen_lambda(cosTheta_4: f32, alpha_46: f32) -> f32 {
     let _e16 = below;
     if _e16 {
         let _e17 = cosTheta_5;
-        local_14 = _e17;
+        local_17 = _e17;
     } else {
         let _e19 = cosTheta_5;
-        local_14 = (1f - _e19);
+        local_17 = (1f - _e19);
     }
-    let _e22 = local_14;
+    let _e22 = local_17;
     let _e23 = alpha_47;
     let _e24 = pbr_sheen_lambda_exponent(_e22, _e23);
     L = _e24;
     let _e26 = below;
     if _e26 {
         let _e27 = L;
-        local_15 = _e27;
+        local_18 = _e27;
     } else {
         let _e30 = alpha_47;
         let _e31 = pbr_sheen_lambda_exponent(0.5f, _e30);
         let _e33 = L;
-        local_15 = ((2f * _e31) - _e33);
+        local_18 = ((2f * _e31) - _e33);
     }
-    let _e36 = local_15;
+    let _e36 = local_18;
     return exp(_e36);
 }
 
@@ -2346,7 +2364,7 @@ fn pbr_brdf_standard_terms(n_6: vec3<f32>, v_10: vec3<f32>, l_4: vec3<f32>, perc
     var halfLength2_: f32;
     var nDotHalfSum: f32;
     var halfRejection: vec3<f32>;
-    var local_16: f32;
+    var local_19: f32;
 
     n_7 = n_6;
     v_11 = v_10;
@@ -2401,11 +2419,11 @@ fn pbr_brdf_standard_terms(n_6: vec3<f32>, v_10: vec3<f32>, l_4: vec3<f32>, perc
     let _e74 = nDotHalfSum;
     if (_e74 >= 0.0000000000000008881784f) {
         let _e77 = (*piDV);
-        local_16 = _e77;
+        local_19 = _e77;
     } else {
-        local_16 = 0f;
+        local_19 = 0f;
     }
-    let _e80 = local_16;
+    let _e80 = local_19;
     (*piDV) = _e80;
     return;
 }
@@ -2817,9 +2835,9 @@ fn pbr_anisotropy_direction(t_1: vec3<f32>, b_4: vec3<f32>, directionSample: vec
     var directionSample_1: vec2<f32>;
     var rotation_1: f32;
     var hasDirection: bool;
-    var local_17: f32;
+    var local_20: f32;
     var x_19: f32;
-    var local_18: f32;
+    var local_21: f32;
     var y_1: f32;
     var c_20: f32;
     var s_5: f32;
@@ -2834,20 +2852,20 @@ fn pbr_anisotropy_direction(t_1: vec3<f32>, b_4: vec3<f32>, directionSample: vec
     let _e14 = hasDirection;
     if _e14 {
         let _e15 = directionSample_1;
-        local_17 = _e15.x;
+        local_20 = _e15.x;
     } else {
-        local_17 = 1f;
+        local_20 = 1f;
     }
-    let _e19 = local_17;
+    let _e19 = local_20;
     x_19 = _e19;
     let _e21 = hasDirection;
     if _e21 {
         let _e22 = directionSample_1;
-        local_18 = _e22.y;
+        local_21 = _e22.y;
     } else {
-        local_18 = 0f;
+        local_21 = 0f;
     }
-    let _e26 = local_18;
+    let _e26 = local_21;
     y_1 = _e26;
     let _e28 = rotation_1;
     c_20 = cos(_e28);
@@ -2885,7 +2903,7 @@ fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>,
     var nDotHalfSum_1: f32;
     var D_1: f32;
     var V: f32;
-    var local_19: f32;
+    var local_22: f32;
 
     n_17 = n_16;
     v_23 = v_22;
@@ -2955,11 +2973,11 @@ fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>,
     let _e103 = nDotHalfSum_1;
     if (min(_e102, _e103) >= 0.0000000000000008881784f) {
         let _e107 = (*DV_2);
-        local_19 = _e107;
+        local_22 = _e107;
     } else {
-        local_19 = 0f;
+        local_22 = 0f;
     }
-    let _e110 = local_19;
+    let _e110 = local_22;
     (*DV_2) = _e110;
     return;
 }
@@ -3051,7 +3069,7 @@ fn pbr_anisotropic_bent_normal(n_22: vec3<f32>, v_28: vec3<f32>, anisotropicDire
     var bend: f32;
     var bend2_: f32;
     var bent: vec3<f32>;
-    var local_20: vec3<f32>;
+    var local_23: vec3<f32>;
 
     n_23 = n_22;
     v_29 = v_28;
@@ -3083,12 +3101,12 @@ fn pbr_anisotropic_bent_normal(n_22: vec3<f32>, v_28: vec3<f32>, anisotropicDire
     let _e46 = bent;
     if (dot(_e45, _e46) > 0f) {
         let _e50 = bent;
-        local_20 = _e50;
+        local_23 = _e50;
     } else {
         let _e51 = n_23;
-        local_20 = _e51;
+        local_23 = _e51;
     }
-    let _e53 = local_20;
+    let _e53 = local_23;
     return _e53;
 }
 
@@ -3316,7 +3334,7 @@ fn pbr_transmission_thin_punctual(n_28: vec3<f32>, v_32: vec3<f32>, l_26: vec3<f
     var NdotV_67: f32;
     var lobe: f32;
     var through: bool;
-    var local_21: vec3<f32>;
+    var local_24: vec3<f32>;
 
     n_29 = n_28;
     v_33 = v_32;
@@ -3364,11 +3382,11 @@ fn pbr_transmission_thin_punctual(n_28: vec3<f32>, v_32: vec3<f32>, l_26: vec3<f
         let _e72 = baseColor_3;
         let _e75 = lobe;
         let _e77 = NdotLm;
-        local_21 = ((_e71 * _e72) * ((3.1415927f * _e75) * _e77));
+        local_24 = ((_e71 * _e72) * ((3.1415927f * _e75) * _e77));
     } else {
-        local_21 = vec3(0f);
+        local_24 = vec3(0f);
     }
-    let _e83 = local_21;
+    let _e83 = local_24;
     return _e83;
 }
 
@@ -3377,8 +3395,8 @@ fn pbr_beer_lambert(c_21: f32, x_22: f32) -> f32 {
     var x_23: f32;
     var cs: f32;
     var xs: f32;
-    var local_22: f32;
-    var local_23: f32;
+    var local_25: f32;
+    var local_26: f32;
 
     c_22 = c_21;
     x_23 = x_22;
@@ -3390,18 +3408,18 @@ fn pbr_beer_lambert(c_21: f32, x_22: f32) -> f32 {
     if (_e14 > 0f) {
         let _e17 = cs;
         let _e19 = xs;
-        local_23 = exp2((log2(_e17) * _e19));
+        local_26 = exp2((log2(_e17) * _e19));
     } else {
         let _e22 = xs;
         if (_e22 > 0f) {
-            local_22 = 0f;
+            local_25 = 0f;
         } else {
-            local_22 = 1f;
+            local_25 = 1f;
         }
-        let _e28 = local_22;
-        local_23 = _e28;
+        let _e28 = local_25;
+        local_26 = _e28;
     }
-    let _e30 = local_23;
+    let _e30 = local_26;
     return _e30;
 }
 
@@ -3409,7 +3427,7 @@ fn pbr_volume_attenuation(distance_: f32, attenuationColor: vec3<f32>, attenuati
     var distance_1: f32;
     var attenuationColor_1: vec3<f32>;
     var attenuationDistance_1: f32;
-    var local_24: f32;
+    var local_27: f32;
     var x_24: f32;
 
     distance_1 = distance_;
@@ -3419,11 +3437,11 @@ fn pbr_volume_attenuation(distance_: f32, attenuationColor: vec3<f32>, attenuati
     if (_e6 > 0f) {
         let _e9 = distance_1;
         let _e10 = attenuationDistance_1;
-        local_24 = (_e9 / max(_e10, 0.000000000000000000000000000000000000011754944f));
+        local_27 = (_e9 / max(_e10, 0.000000000000000000000000000000000000011754944f));
     } else {
-        local_24 = 0f;
+        local_27 = 0f;
     }
-    let _e16 = local_24;
+    let _e16 = local_27;
     x_24 = _e16;
     let _e18 = attenuationColor_1;
     let _e20 = x_24;
@@ -3670,7 +3688,7 @@ fn pbr_pdf_GGX_half_vector(NdotH_32: f32, alpha_70: f32) -> f32 {
 fn pbr_tangent_to_world(v_36: vec3<f32>, n_34: vec3<f32>) -> vec3<f32> {
     var v_37: vec3<f32>;
     var n_35: vec3<f32>;
-    var local_25: vec3<f32>;
+    var local_28: vec3<f32>;
     var up: vec3<f32>;
     var t_10: vec3<f32>;
     var b_12: vec3<f32>;
@@ -3679,11 +3697,11 @@ fn pbr_tangent_to_world(v_36: vec3<f32>, n_34: vec3<f32>) -> vec3<f32> {
     n_35 = n_34;
     let _e4 = n_35;
     if (abs(_e4.z) < 0.999f) {
-        local_25 = vec3<f32>(0f, 0f, 1f);
+        local_28 = vec3<f32>(0f, 0f, 1f);
     } else {
-        local_25 = vec3<f32>(1f, 0f, 0f);
+        local_28 = vec3<f32>(1f, 0f, 0f);
     }
-    let _e18 = local_25;
+    let _e18 = local_28;
     up = _e18;
     let _e20 = up;
     let _e21 = n_35;
@@ -3779,7 +3797,7 @@ fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f3
     var alpha_77: f32;
     var d_1: vec3<f32>;
     var len2_: f32;
-    var local_26: vec3<f32>;
+    var local_29: vec3<f32>;
 
     n_37 = n_36;
     r_10 = r_9;
@@ -3795,12 +3813,12 @@ fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f3
     if (_e16 > 0.000000000001f) {
         let _e19 = d_1;
         let _e20 = len2_;
-        local_26 = (_e19 * inverseSqrt(_e20));
+        local_29 = (_e19 * inverseSqrt(_e20));
     } else {
         let _e23 = n_37;
-        local_26 = _e23;
+        local_29 = _e23;
     }
-    let _e25 = local_26;
+    let _e25 = local_29;
     return _e25;
 }
 
@@ -4499,7 +4517,7 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     var d_2: vec3<f32>;
     var t_12: vec3<f32>;
     var t2_: f32;
-    var local_27: vec3<f32>;
+    var local_30: vec3<f32>;
 
     n_57 = n_56;
     direction_1 = direction;
@@ -4518,13 +4536,13 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     if (_e19 > 0.0000010000001f) {
         let _e24 = t_12;
         let _e25 = t2_;
-        local_27 = (_e24 * inverseSqrt(max(_e25, 0.000000000000000000000000000000000000011754944f)));
+        local_30 = (_e24 * inverseSqrt(max(_e25, 0.000000000000000000000000000000000000011754944f)));
     } else {
         let _e34 = n_57;
         let _e35 = pbr_tangent_to_world(vec3<f32>(1f, 0f, 0f), _e34);
-        local_27 = _e35;
+        local_30 = _e35;
     }
-    let _e37 = local_27;
+    let _e37 = local_30;
     return _e37;
 }
 
@@ -4583,7 +4601,7 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     var halfSum_2: vec3<f32>;
     var LdotH_11: f32;
     var Fd: f32;
-    var local_28: f32;
+    var local_31: f32;
     var brdf_2: vec3<f32>;
 
     s_18 = s_17;
@@ -4610,11 +4628,11 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     let _e40 = nDotL;
     if (_e40 > 0f) {
         let _e43 = Fd;
-        local_28 = _e43;
+        local_31 = _e43;
     } else {
-        local_28 = 0f;
+        local_31 = 0f;
     }
-    let _e46 = local_28;
+    let _e46 = local_31;
     Fd = _e46;
     let _e47 = s_18;
     let _e49 = Fd;
@@ -4770,18 +4788,18 @@ fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0
     return _e37;
 }
 
-fn pbr_f0_from_schlick(F_2: vec3<f32>, cosTheta_7: f32) -> vec3<f32> {
-    var F_3: vec3<f32>;
+fn pbr_f0_from_schlick(F_3: vec3<f32>, cosTheta_7: f32) -> vec3<f32> {
+    var F_4: vec3<f32>;
     var cosTheta_8: f32;
     var x_25: f32;
 
-    F_3 = F_2;
+    F_4 = F_3;
     cosTheta_8 = cosTheta_7;
     let _e5 = cosTheta_8;
     let _e6 = pbr_saturate(_e5);
     let _e8 = pbr_pow5_((1f - _e6));
     x_25 = min(_e8, 0.9999f);
-    let _e12 = F_3;
+    let _e12 = F_4;
     let _e13 = x_25;
     let _e17 = x_25;
     let _e21 = pbr_saturate_1(((_e12 - vec3(_e13)) / vec3((1f - _e17))));
@@ -4867,7 +4885,7 @@ fn pbr_transmitted_direction(n_68: vec3<f32>, v_66: vec3<f32>, tr: pbr_Transmiss
     var n_69: vec3<f32>;
     var v_67: vec3<f32>;
     var tr_1: pbr_Transmission;
-    var local_29: vec3<f32>;
+    var local_32: vec3<f32>;
 
     n_69 = n_68;
     v_67 = v_66;
@@ -4878,12 +4896,12 @@ fn pbr_transmitted_direction(n_68: vec3<f32>, v_66: vec3<f32>, tr: pbr_Transmiss
         let _e11 = v_67;
         let _e12 = tr_1;
         let _e14 = pbr_refraction_direction(_e10, _e11, _e12.ior);
-        local_29 = _e14;
+        local_32 = _e14;
     } else {
         let _e15 = v_67;
-        local_29 = -(_e15);
+        local_32 = -(_e15);
     }
-    let _e18 = local_29;
+    let _e18 = local_32;
     return _e18;
 }
 
@@ -4893,7 +4911,7 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
     var coatF0_33: vec3<f32>;
     var tr_3: pbr_Transmission;
     var t_13: pbr_PreparedTransmission;
-    var local_30: vec3<f32>;
+    var local_33: vec3<f32>;
     var attenuation: vec3<f32>;
 
     s_23 = s_22;
@@ -4914,11 +4932,11 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
         let _e24 = tr_3;
         let _e26 = tr_3;
         let _e28 = pbr_volume_attenuation(_e22.thickness, _e24.attenuationColor, _e26.attenuationDistance);
-        local_30 = _e28;
+        local_33 = _e28;
     } else {
-        local_30 = vec3(1f);
+        local_33 = vec3(1f);
     }
-    let _e32 = local_30;
+    let _e32 = local_33;
     attenuation = _e32;
     let _e35 = tr_3;
     let _e37 = pbr_saturate(_e35.factor);
@@ -5310,7 +5328,7 @@ fn pbr_tonemap_aces_narkowicz(x_28: vec3<f32>) -> vec3<f32> {
 fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
     var color_11: vec3<f32>;
     var x_30: f32;
-    var local_31: f32;
+    var local_34: f32;
     var offset: f32;
     var peak: f32;
     var d_3: f32 = 0.24f;
@@ -5329,11 +5347,11 @@ fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
         let _e13 = x_30;
         let _e14 = x_30;
         let _e15 = x_30;
-        local_31 = (_e13 - ((_e14 * _e15) / 0.16f));
+        local_34 = (_e13 - ((_e14 * _e15) / 0.16f));
     } else {
-        local_31 = 0.04f;
+        local_34 = 0.04f;
     }
-    let _e24 = local_31;
+    let _e24 = local_34;
     offset = _e24;
     let _e26 = color_11;
     let _e27 = offset;
