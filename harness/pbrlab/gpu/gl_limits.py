@@ -142,4 +142,4 @@ def check_scene(ctx, scene) -> None:
         if len(material.textures) > units:
             raise SceneError(f"{scene.source}: materials.{name}.textures: {len(material.textures)} "
                              f"textures; a material binds at most {units} on this GL "
-                             "(GL_MAX_TEXTURE_IMAGE_UNITS less the environment's two)")
+                             f"(GL_MAX_TEXTURE_IMAGE_UNITS less the {RESERVED_TEXTURE_UNITS} the renderer's lighting takes)")
