@@ -40,7 +40,10 @@
 //   PBR_IBL_HORIZON_OCCLUSION   1 (HIGH, MEDIUM default): a caller whose normal can tilt from
 //                   the geometric one takes out the lobes' share below its horizon
 //                   (pbr/ibl/horizon_occlusion.glsl) | 0 (LOW default): it does not
-//   (The last three are the tier's choices for the environment read: issue 35, LOW's whole
+//   PBR_SPECULAR_OCCLUSION      PBR_SPECULAR_OCCLUSION_LAGARDE (HIGH, MEDIUM default: Lagarde &
+//                   de Rousiers' fit of the lobe's occlusion from ambient occlusion) |
+//                   _AMBIENT (LOW default: the ambient occlusion itself; pbr/ibl/environment_brdf.glsl)
+//   (The last four are the tier's choices for the environment read: issue 35, LOW's whole
 //   pixel; docs/shading.md, "What each tier changes in the whole pixel".)
 //
 // The one variant mechanism of the library (pbr/common/conventions.glsl §8): every
@@ -100,6 +103,9 @@
 
 #define PBR_DIFFUSE_LAMBERT 1
 #define PBR_DIFFUSE_BURLEY 2
+
+#define PBR_SPECULAR_OCCLUSION_LAGARDE 1
+#define PBR_SPECULAR_OCCLUSION_AMBIENT 2
 
 #define PBR_QUALITY_LOW 1
 #define PBR_QUALITY_HIGH 2
@@ -162,11 +168,12 @@
 //          (pbr_DV_GGX_SmithCorrelatedFast_half: the half study, tests/checking/hardcases/test_half.py).
 //          The environment read (issue 35: a tier of the lobe alone saved 3 % of the whole
 //          lit pixel): LOW reads it along the mirror direction (no dominant direction), without
-//          horizon occlusion and without multiple-scattering compensation (single scattering:
-//          it loses the energy of further bounces, gains none); RDNA3 instructions each saves
+//          horizon occlusion, without multiple-scattering compensation (single scattering:
+//          it loses the energy of further bounces, gains none) and with the ambient occlusion
+//          itself as the specular occlusion (no pow); RDNA3 instructions each saves
 //          and the image error: docs/shading.md, "What each tier changes in the whole pixel".
-//          HIGH and MEDIUM keep all three (PBR_ENERGY_COMPENSATION, PBR_IBL_DOMINANT_DIRECTION,
-//          PBR_IBL_HORIZON_OCCLUSION 1); an explicit value wins over the tier, as for the terms.
+//          HIGH and MEDIUM keep all four (PBR_ENERGY_COMPENSATION, PBR_IBL_DOMINANT_DIRECTION,
+//          PBR_IBL_HORIZON_OCCLUSION 1, PBR_SPECULAR_OCCLUSION_LAGARDE); an explicit value wins over the tier, as for the terms.
 //   In the unity model (PBR_BRDF_MODEL_UNITY) the tiers pick Unity's BRDFs the way Unity's
 //   graphics tiers do (UNITY_PBS_USE_BRDF1/2/3): HIGH -> BRDF1, MEDIUM -> BRDF2, LOW -> BRDF3;
 //   Unity's BRDFs carry their own guards, so the pbrlab guards above do not apply to them.
@@ -183,6 +190,10 @@
 #  endif
 #  ifndef PBR_IBL_HORIZON_OCCLUSION
 #define PBR_IBL_HORIZON_OCCLUSION 0
+#  endif
+#  ifndef PBR_SPECULAR_OCCLUSION
+// PBR_SPECULAR_OCCLUSION_AMBIENT as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_OCCLUSION 2
 #  endif
 #  ifndef PBR_SPECULAR_V
 // PBR_SPECULAR_V_SMITH_GGX_BOUND as a number (glsl/README.md, one-level preprocessors)
@@ -218,6 +229,10 @@
 #endif
 #ifndef PBR_IBL_HORIZON_OCCLUSION
 #define PBR_IBL_HORIZON_OCCLUSION 1
+#endif
+#ifndef PBR_SPECULAR_OCCLUSION
+// PBR_SPECULAR_OCCLUSION_LAGARDE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_OCCLUSION 1
 #endif
 
 #ifndef PBR_SPECULAR_D

@@ -223,7 +223,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
-                energy_compensated=compensated, f90=f90)
+                energy_compensated=compensated, f90=f90, quality=quality)
         if max(material.sheen_color) > 0.0:  # the sheen on the base, not on its emission
             emission = np.broadcast_to(material.emission, p.shape)
             color = emission + _sheened(scene, material, color - emission, n, v, p)
@@ -293,7 +293,7 @@ def environment_reflected(scene, material, n, v) -> np.ndarray:
     prefiltered = np.broadcast_to(scene.environment.color * scene.environment.intensity, n.shape)
     return coupled / np.pi * irradiance * material.occlusion + ref_surface.indirect_specular_split_sum(
         prefiltered, np.broadcast_to(f0, n.shape), r, NdotV, material.occlusion, dfg,
-        energy_compensated=compensated, f90=f90)
+        energy_compensated=compensated, f90=f90, quality=quality)
 
 
 def transmitted_light(scene, material, n, v, p) -> np.ndarray:
@@ -532,7 +532,7 @@ def _coated(scene, material, base, n, v, p, quality):
     if scene.environment is not None:
         prefiltered = scene.environment.color * scene.environment.intensity
         coat += np.asarray(prefiltered, float) * (ref_clearcoat.clearcoat_albedo(dfg) * ref_surface.specular_occlusion(
-            NcdotV, material.occlusion, rough * rough))[:, None]
+            NcdotV, material.occlusion, rough * rough, quality))[:, None]
     weight = ref_clearcoat.clearcoat_base_weight(material.clearcoat, NcdotV, dfg)
     return base * weight[:, None] + material.clearcoat * coat
 
