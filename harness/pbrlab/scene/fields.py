@@ -224,7 +224,8 @@ RENDER = {
     "tonemap": Choice("The PNG's tone mapper (the EXR holds radiance before exposure).", TONEMAPPERS,
                       default="none"),
     "exposure": Number("EV stops: the PNG's radiance x 2^exposure.", default=0.0, lo=-64.0, hi=64.0),
-    "energy_compensation": Flag("Multiple-scattering energy compensation (PBR_ENERGY_COMPENSATION).",
+    "energy_compensation": Flag("Multiple-scattering energy compensation (PBR_ENERGY_COMPENSATION) where the "
+                                "quality tier has it (high, medium; low reads single scattering); false: none.",
                                 default=True),
     "hdr_target": Choice("The float target; rgba16f clamps at 65504.", HDR_TARGETS, default="rgba32f"),
     "brdf_model": Choice("pbrlab's shading, or Unity's BRDF1/2/3 by tier (PBR_BRDF_MODEL).", BRDF_MODELS,
@@ -237,7 +238,8 @@ RENDER = {
                                "at most 16.", ANTIALIAS_FILTERS, default="box"),
     "horizon_occlusion": Flag("Take out the share of a normal-mapped surface's environment light that would "
                               "come through the object (below its geometric normal's horizon: "
-                              "pbr/ibl/horizon_occlusion.glsl).", default=True),
+                              "pbr/ibl/horizon_occlusion.glsl), in the quality tiers that have it "
+                              "(high, medium; not low).", default=True),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",
