@@ -40,6 +40,13 @@
 #include "pbr/shading/dispatch.glsl"
 #include "pbr/common/math.glsl"
 
+// PBR_SPECULAR_OCCLUSION's default is the tier's, set by pbr/shading/dispatch.glsl (included
+// above); this file's own default (every file that reads a selector has one) is never taken.
+#ifndef PBR_SPECULAR_OCCLUSION
+// PBR_SPECULAR_OCCLUSION_LAGARDE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_OCCLUSION 1
+#endif
+
 // The selector's values (count from 1: a misspelt value is a compile error, glsl/README.md).
 #define PBR_ENV_BRDF_TABLE 1
 #define PBR_ENV_BRDF_ANALYTIC 2

@@ -90,7 +90,11 @@
 #include "pbr/common/math.hlsl"
 
 // PBR_ENERGY_COMPENSATION's default is the tier's (pbr/shading/dispatch.hlsl: 1 in HIGH and
-// MEDIUM, 0 in LOW), set there through environment_brdf.hlsl's include.
+// MEDIUM, 0 in LOW), set there through environment_brdf.hlsl's include; this file's own
+// default (every file that reads a selector has one) is therefore never the one taken.
+#ifndef PBR_ENERGY_COMPENSATION
+#define PBR_ENERGY_COMPENSATION 1
+#endif
 
 struct pbr_Light {
     float3 color;
