@@ -238,8 +238,7 @@ RENDER = {
                                "at most 16.", ANTIALIAS_FILTERS, default="box"),
     "horizon_occlusion": Flag("Take out the share of a normal-mapped surface's environment light that would "
                               "come through the object (below its geometric normal's horizon: "
-                              "pbr/ibl/horizon_occlusion.glsl), in the quality tiers that have it "
-                              "(high, medium; not low).", default=True),
+                              "pbr/ibl/horizon_occlusion.glsl).", default=True),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",
