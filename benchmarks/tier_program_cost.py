@@ -8,7 +8,16 @@ environment (PBRLAB_ENV undefined).
 Scenes: a metallic-workflow torus (a mesh: the sphere impostor's ray intersection would add
 its own cost) under a uniform environment colour, and the fidelity benchmark's DamagedHelmet
 (base colour, metallic-roughness, normal, occlusion and emission maps) under the sunrise HDR;
-each with one directional light. A benchmark: it prints figures and asserts nothing.
+each with one directional light. The programs are the production ones (`pbrlab render`'s,
+without the checking program's NaN/Inf test: gpu.scene_programs(..., checking=False)).
+
+Image error of each tier (rendered on this machine's OpenGL, linear radiance, covered pixels;
+relative error of the luminance, median / p99 / max, and the share of pixels more than 1 %
+off): the torus against the float64 CPU renderer (pbrlab.render.cpu_render: a constant
+environment, an untextured mesh) drawing the exact model (quality high, with its
+multiple-scattering compensation); DamagedHelmet against HIGH's own image, since no float64
+path covers its texture maps and HDR environment. A benchmark: it prints figures and asserts
+nothing.
 
     python benchmarks/tier_program_cost.py
 """
@@ -17,6 +26,8 @@ from __future__ import annotations
 
 import dataclasses
 from pathlib import Path
+
+import numpy as np
 
 from pbrlab.bench import gpu
 from pbrlab.checking.fidelity import staging
@@ -49,7 +60,7 @@ def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
     """{(quality, part): {family: (instructions, VGPRs)}} of the scene's largest program."""
     jobs = {}
     for quality in QUALITIES:
-        for index, program in enumerate(gpu.scene_programs(_scene(name, quality), "specialised")):
+        for index, program in enumerate(gpu.scene_programs(_scene(name, quality), "specialised", checking=False)):
             job = program.job("glsl")
             for part, edits in PARTS.items():
                 text = job.fragment
@@ -70,6 +81,33 @@ def figures(name: str, families=gpu.GPU_FAMILIES) -> dict:
     return out
 
 
+def _luminance(rgb):
+    return rgb[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
+
+
+def image_errors(name: str) -> dict:
+    """{quality: (median, p99, max, share over 1 %)} of the relative luminance error of each
+    tier's render against the reference named in the module's docstring."""
+    from pbrlab.gpu import gl
+    from pbrlab.render.renderer import render_scene
+
+    ctx = gl.shared_context()
+    images = {q: render_scene(_scene(name, q), ctx).linear.astype(np.float64) for q in QUALITIES}
+    if name == "metallic torus":
+        from pbrlab.render.cpu_render import render_scene_cpu
+        reference = render_scene_cpu(_scene(name, "high"))
+    else:
+        reference = images["high"]
+    covered = (reference[..., 3] > 0) & np.all([im[..., 3] > 0 for im in images.values()], axis=0)
+    ref = _luminance(reference[covered])
+    out = {}
+    for quality, image in images.items():
+        rel = np.abs(_luminance(image[covered]) - ref) / np.maximum(ref, 1e-6)
+        out[quality] = (float(np.median(rel)), float(np.percentile(rel, 99)), float(rel.max()),
+                        float((rel > 0.01).mean()))
+    return out
+
+
 def main() -> None:
     gpu.require_null_device()
     families = gpu.GPU_FAMILIES
@@ -81,6 +119,12 @@ def main() -> None:
             high = per[("high", "whole pixel")]
             print(f"  {name:15s} {quality:6s} {part:24s} " + "  ".join(
                 f"{gpu.TITLES[f]} {i:4d} / {v:2d} ({i / high[f][0]:.3f}x)" for f, (i, v) in by_family.items()))
+    print("image error, relative luminance error per covered pixel: median / p99 / max (share > 1 %)")
+    for name, against in (("metallic torus", "the float64 CPU renderer's exact model"),
+                          ("DamagedHelmet", "HIGH's image")):
+        for quality, (median, p99, worst, share) in image_errors(name).items():
+            print(f"  {name:15s} {quality:6s} against {against}: {median:.2e} / {p99:.2e} / {worst:.2e} "
+                  f"({share:.1%})")
 
 
 if __name__ == "__main__":

@@ -58,10 +58,14 @@ def test_low_tier_error_against_high_tier_is_measured(renders):
     # LOW is its own lobe (issue 25): V bounded without a square root (0.5 / n·(l + v)),
     # Schlick's F (issue 35; issue 25's LOW had F = f0), the 0.089 roughness floor; it reads the
     # same DFG table as HIGH for the coupling (its lobe reflects no more than HIGH's, so the
-    # furnace holds). Measured on this scene: relative to 0.01 + |high|, median 0.0044, p99
-    # 0.029, max 5.0; display mean 0.23 codes, max 103 (with F = f0: median 0.0046, p99 0.033,
-    # max 4.7, mean 0.25, max 98 codes: the bound V, darker at grazing, now meets HIGH's rise).
-    # The former LOW (Hammon's V and Schlick's F): median 0.0013, p99 0.0068, mean 0.067 codes.
-    # The tiers must differ (the selector works) and stay in that envelope.
-    assert 2e-3 < np.median(rel) < 1e-2 and np.quantile(rel, 0.99) < 0.06
-    assert 0.1 < srgb.mean() < 0.5
+    # furnace holds). Since issue 35's whole-pixel tier it also reads the environment along the
+    # mirror direction, without horizon occlusion, without multiple-scattering compensation and
+    # with the AO as its specular occlusion (pbr/shading/dispatch.glsl). Measured on this scene:
+    # relative to 0.01 + |high|, median 0.0158, p99 0.086, max 5.07; display mean 0.83 codes,
+    # max 103. With the lobe alone (before): median 0.0044, p99 0.029, max 5.0, mean 0.23 codes;
+    # with F = f0: median 0.0046, p99 0.033. The former LOW (Hammon's V and Schlick's F): median
+    # 0.0013, p99 0.0068, mean 0.067 codes. The lower limits sit above the lobe-only LOW's
+    # figures, so they fail if the environment choices are not in effect (the control); the
+    # upper ones keep LOW in this envelope (a tier is a choice the docs measure, not a bug).
+    assert 1e-2 < np.median(rel) < 3e-2 and np.quantile(rel, 0.99) < 0.15
+    assert 0.5 < srgb.mean() < 1.5

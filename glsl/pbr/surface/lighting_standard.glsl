@@ -32,8 +32,8 @@
 //           vec3 pbr_indirect_diffuse_color_f90(vec3 diffuseColor, vec3 coatF0, float coatF90,
 //                                               vec2 dfg)
 // Include:  "pbr/surface/lighting_standard.glsl" (path relative to glsl/)
-// Config macros read: PBR_ENERGY_COMPENSATION (1 default: compensate multiple scattering
-//           in the environment specular; 0: single scattering only);
+// Config macros read: PBR_ENERGY_COMPENSATION (1, the HIGH and MEDIUM tiers' default: compensate
+//           multiple scattering in the environment specular; 0, LOW's: single scattering only);
 //           those of pbr/shading/dispatch.glsl and pbr/ibl/environment_brdf.glsl.
 //           (Unity's own BRDFs, its environment term included, are a model of their own:
 //           PBR_BRDF_MODEL_UNITY, pbr/unity/brdf_unity.glsl.)
@@ -88,6 +88,9 @@
 #include "pbr/shading/energy_conservation.glsl"
 #include "pbr/common/math.glsl"
 
+// PBR_ENERGY_COMPENSATION's default is the tier's (pbr/shading/dispatch.glsl: 1 in HIGH and
+// MEDIUM, 0 in LOW), set there through environment_brdf.glsl's include; this file's own
+// default (every file that reads a selector has one) is therefore never the one taken.
 #ifndef PBR_ENERGY_COMPENSATION
 #define PBR_ENERGY_COMPENSATION 1
 #endif

@@ -73,6 +73,12 @@ def _light_terms(light, p):
     return l, radiance * atten
 
 
+def _energy_compensated(scene) -> bool:
+    """PBR_ENERGY_COMPENSATION of the scene's programs: render.energy_compensation false turns it
+    off in every tier; true leaves the tier's choice (pbr/shading/dispatch.glsl; LOW: off)."""
+    return scene.render.energy_compensation and ref_shading.QUALITY_ENERGY_COMPENSATION[scene.render.quality.upper()]
+
+
 def _surface(material):
     """(diffuse colour, f0, coat F0, perceptual roughness): the coat is the dielectric over
     the diffuse (the metallic workflow's dielectric F0, 0.04 unless the material gives its
@@ -184,7 +190,7 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                 dfg=dfg, factor=material.transmission, thickness=material.thickness,
                 attenuation_color=material.attenuation_color, attenuation_distance=material.attenuation_distance,
                 ior=material.ior, quality=quality, specular_f=specular_f,
-                energy_compensated=scene.render.energy_compensation, coat_f90=coat_f90))
+                energy_compensated=_energy_compensated(scene), coat_f90=coat_f90))
             diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
         direct_diffuse = ref_surface.coupled_diffuse_color(
             diffuse, coat_f0, ref_surface.specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
@@ -210,14 +216,14 @@ def render_scene_cpu(scene, unmodelled: str = "raise") -> np.ndarray:
                 color += ref_surface.lighting_transmission(whole_diffuse, coat_f0, rough, material.occlusion, n, v,
                                                            n, zero, behind, **terms)
         if env_sh is not None:
-            compensated = scene.render.energy_compensation
+            compensated = _energy_compensated(scene)
             indirect_diffuse = ref_surface.coupled_diffuse_color(
                 diffuse, coat_f0, ref_surface.indirect_specular_albedo(coat_f0, dfg, compensated, coat_f90))
             color += indirect_diffuse / np.pi * np.maximum(sh_irradiance(env_sh, n), 0) * material.occlusion
             prefiltered = scene.environment.color * scene.environment.intensity
             color += ref_surface.indirect_specular_split_sum(
                 np.broadcast_to(prefiltered, p.shape), f0, r, NdotV, material.occlusion, dfg,
-                energy_compensated=compensated, f90=f90)
+                energy_compensated=compensated, f90=f90, quality=quality)
         if max(material.sheen_color) > 0.0:  # the sheen on the base, not on its emission
             emission = np.broadcast_to(material.emission, p.shape)
             color = emission + _sheened(scene, material, color - emission, n, v, p)
@@ -248,7 +254,7 @@ def transmitted_fraction(scene, material, n, v) -> np.ndarray:
         factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
         attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
         specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
-        energy_compensated=scene.render.energy_compensation, coat_f90=material.specular_f90)
+        energy_compensated=_energy_compensated(scene), coat_f90=material.specular_f90)
 
 
 def _explicit_f90s(material) -> tuple:
@@ -278,7 +284,7 @@ def environment_reflected(scene, material, n, v) -> np.ndarray:
     r = float(ref_shading.clamp_perceptual_roughness(rough, quality))
     NdotV = np.maximum(np.sum(n * v, axis=-1), ref_shading.MIN_NDOTV)
     dfg = ref_albedo.split_sum_terms_at_alpha(NdotV, r * r)
-    compensated = scene.render.energy_compensation
+    compensated = _energy_compensated(scene)
     coat_f90, f90 = _explicit_f90s(material)
     diffuse = ref_surface.transmission_diffuse_color(diffuse, material.transmission)
     coupled = ref_surface.coupled_diffuse_color(
@@ -287,7 +293,7 @@ def environment_reflected(scene, material, n, v) -> np.ndarray:
     prefiltered = np.broadcast_to(scene.environment.color * scene.environment.intensity, n.shape)
     return coupled / np.pi * irradiance * material.occlusion + ref_surface.indirect_specular_split_sum(
         prefiltered, np.broadcast_to(f0, n.shape), r, NdotV, material.occlusion, dfg,
-        energy_compensated=compensated, f90=f90)
+        energy_compensated=compensated, f90=f90, quality=quality)
 
 
 def transmitted_light(scene, material, n, v, p) -> np.ndarray:
@@ -309,7 +315,7 @@ def transmitted_light(scene, material, n, v, p) -> np.ndarray:
             factor=material.transmission, thickness=material.thickness, attenuation_color=material.attenuation_color,
             attenuation_distance=material.attenuation_distance, ior=material.ior, quality=quality,
             specular_f=material.brdf.get("specular_f") or ref_shading.QUALITY_DEFAULT_F[quality],
-            energy_compensated=scene.render.energy_compensation, coat_f90=material.specular_f90)
+            energy_compensated=_energy_compensated(scene), coat_f90=material.specular_f90)
     return total
 
 
@@ -526,7 +532,7 @@ def _coated(scene, material, base, n, v, p, quality):
     if scene.environment is not None:
         prefiltered = scene.environment.color * scene.environment.intensity
         coat += np.asarray(prefiltered, float) * (ref_clearcoat.clearcoat_albedo(dfg) * ref_surface.specular_occlusion(
-            NcdotV, material.occlusion, rough * rough))[:, None]
+            NcdotV, material.occlusion, rough * rough, quality))[:, None]
     weight = ref_clearcoat.clearcoat_base_weight(material.clearcoat, NcdotV, dfg)
     return base * weight[:, None] + material.clearcoat * coat
 

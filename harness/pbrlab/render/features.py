@@ -152,7 +152,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
     defines["PBR_ALPHA_MODE"] = f"PBR_ALPHA_MODE_{m.alpha_mode.upper()}"
     defines["PBR_QUALITY"] = f"PBR_QUALITY_{s.quality.upper()}"
     defines["PBR_BRDF_MODEL"] = f"PBR_BRDF_MODEL_{s.brdf_model.upper()}"
-    defines["PBR_ENERGY_COMPENSATION"] = int(s.energy_compensation)
+    if not s.energy_compensation:  # else the tier's choice (pbr/shading/dispatch.glsl: LOW leaves it out)
+        defines["PBR_ENERGY_COMPENSATION"] = 0
     if m.workflow == "specular":
         defines["PBRLAB_WORKFLOW_SPECULAR"] = 1
     if s.hdr_target == "rgba16f":

@@ -224,7 +224,8 @@ RENDER = {
     "tonemap": Choice("The PNG's tone mapper (the EXR holds radiance before exposure).", TONEMAPPERS,
                       default="none"),
     "exposure": Number("EV stops: the PNG's radiance x 2^exposure.", default=0.0, lo=-64.0, hi=64.0),
-    "energy_compensation": Flag("Multiple-scattering energy compensation (PBR_ENERGY_COMPENSATION).",
+    "energy_compensation": Flag("Multiple-scattering energy compensation (PBR_ENERGY_COMPENSATION) where the "
+                                "quality tier has it (high, medium; low reads single scattering); false: none.",
                                 default=True),
     "hdr_target": Choice("The float target; rgba16f clamps at 65504.", HDR_TARGETS, default="rgba32f"),
     "brdf_model": Choice("pbrlab's shading, or Unity's BRDF1/2/3 by tier (PBR_BRDF_MODEL).", BRDF_MODELS,

@@ -13,7 +13,9 @@
 //           float pbr_specular_occlusion(float NdotV, float occlusion, float alpha)
 //           float pbr_ibl_lod_from_perceptual_roughness(float perceptualRoughness, float lodCount)
 // Include:  "pbr/ibl/environment_brdf.hlsl" (path relative to hlsl_ports/)
-// Config macros read: PBR_ENV_BRDF (default PBR_ENV_BRDF_TABLE), which environment BRDF
+// Config macros read: PBR_SPECULAR_OCCLUSION (the tier's default: pbr/shading/dispatch.hlsl),
+//           how pbr_specular_occlusion derives the lobe's occlusion from ambient occlusion;
+//           PBR_ENV_BRDF (default PBR_ENV_BRDF_TABLE), which environment BRDF
 //           pbr_env_brdf returns:
 //             PBR_ENV_BRDF_TABLE     the DFG table through PBR_DFG_LUT_LOOKUP (the accurate
 //                                    option); the analytic fit where the hook is undefined
@@ -38,6 +40,13 @@
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/ibl/environment_brdf.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/shading/dispatch.hlsl"
 #include "pbr/common/math.hlsl"
+
+// PBR_SPECULAR_OCCLUSION's default is the tier's, set by pbr/shading/dispatch.hlsl (included
+// above); this file's own default (every file that reads a selector has one) is never taken.
+#ifndef PBR_SPECULAR_OCCLUSION
+// PBR_SPECULAR_OCCLUSION_LAGARDE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_SPECULAR_OCCLUSION 1
+#endif
 
 // The selector's values (count from 1: a misspelt value is a compile error, glsl/README.md).
 #define PBR_ENV_BRDF_TABLE 1
@@ -154,10 +163,19 @@ float3 pbr_energy_compensation(float3 f0, float2 dfg) {
     return 1.0 + f0 * (1.0 / max(dfg.x + dfg.y, PBR_MIN_SPECULAR_ALBEDO) - 1.0);
 }
 
-// Specular occlusion from ambient occlusion: Lagarde & de Rousiers 2014, "Moving
-// Frostbite to PBR", listing 26: saturate((NdotV + ao)^exp2(-16 alpha - 1) - 1 + ao).
+// Specular occlusion from ambient occlusion, the tier's choice (PBR_SPECULAR_OCCLUSION,
+// pbr/shading/dispatch.hlsl): Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing
+// 26: saturate((NdotV + ao)^exp2(-16 alpha - 1) - 1 + ao) (HIGH, MEDIUM); or the ambient
+// occlusion itself (LOW: no pow, and where the material has no occlusion, ao = 1, nothing).
+// Both are in [0, 1] for ao in [0, 1]: an occluded lobe reflects less, never more.
 float pbr_specular_occlusion(float NdotV, float occlusion, float alpha) {
+#if PBR_SPECULAR_OCCLUSION == PBR_SPECULAR_OCCLUSION_LAGARDE
     return clamp(pow(NdotV + occlusion, exp2(-16.0 * alpha - 1.0)) - 1.0 + occlusion, 0.0, 1.0);
+#elif PBR_SPECULAR_OCCLUSION == PBR_SPECULAR_OCCLUSION_AMBIENT
+    return occlusion;
+#else
+#error "PBR_SPECULAR_OCCLUSION: unknown value"
+#endif
 }
 
 // The mip of a prefiltered environment whose level i was filtered for perceptual

@@ -50,6 +50,6 @@ def lighting_clearcoat(base, mask, coat_perceptual_roughness, nc, v, light_dir, 
     NcdotV = np.maximum(np.sum(_f(nc) * _f(v), axis=-1), shading.MIN_NDOTV)
     direct = clearcoat_punctual(nc, v, light_dir, light_color, r, **variants)
     environment = _f(coat_prefiltered) * (clearcoat_albedo(dfg) * surface.specular_occlusion(
-        NcdotV, _f(occlusion), r * r))[..., None]
+        NcdotV, _f(occlusion), r * r, variants.get("quality", "HIGH")))[..., None]
     weight = clearcoat_base_weight(mask, NcdotV, dfg, layering)
     return _f(base) * weight[..., None] + _f(mask)[..., None] * (direct + environment)

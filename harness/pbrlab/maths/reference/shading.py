@@ -33,6 +33,12 @@ QUALITY_MIN_PERCEPTUAL_ROUGHNESS = {"LOW": MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP,
                                     "MEDIUM": MIN_PERCEPTUAL_ROUGHNESS, "HIGH": MIN_PERCEPTUAL_ROUGHNESS}
 # (HALF_MAX in LOW only where floats may be 16-bit, PBR_HALF_ARITHMETIC: not in float32 GLSL)
 QUALITY_MAX_SPECULAR_LOBE = {"LOW": np.inf, "MEDIUM": np.inf, "HIGH": np.inf}
+# PBR_QUALITY -> default PBR_ENERGY_COMPENSATION (issue 35: LOW's environment read is single
+# scattering; PBR_IBL_DOMINANT_DIRECTION and PBR_IBL_HORIZON_OCCLUSION, also off in LOW, change
+# nothing under the constant environments and unmapped normals the float64 renderer draws)
+QUALITY_ENERGY_COMPENSATION = {"LOW": False, "MEDIUM": True, "HIGH": True}
+# PBR_QUALITY -> default PBR_SPECULAR_OCCLUSION (surface.specular_occlusion)
+QUALITY_SPECULAR_OCCLUSION = {"LOW": "AMBIENT", "MEDIUM": "LAGARDE", "HIGH": "LAGARDE"}
 
 
 def _variants(specular_d, specular_v, specular_f, diffuse, quality):

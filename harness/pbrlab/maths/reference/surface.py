@@ -118,16 +118,19 @@ def energy_compensation(f0, dfg):
     return 1 + _f(f0) * (1 / e - 1)
 
 
-def specular_occlusion(NdotV, occlusion, alpha):
-    """Lagarde & de Rousiers 2014, listing 26."""
+def specular_occlusion(NdotV, occlusion, alpha, quality="HIGH"):
+    """The tier's PBR_SPECULAR_OCCLUSION: Lagarde & de Rousiers 2014, listing 26 (HIGH, MEDIUM),
+    or the ambient occlusion itself (LOW)."""
+    if shading.QUALITY_SPECULAR_OCCLUSION[quality] == "AMBIENT":
+        return np.broadcast_to(_f(occlusion), np.broadcast(_f(NdotV), _f(occlusion), _f(alpha)).shape)
     return np.clip((_f(NdotV) + occlusion) ** np.exp2(-16 * _f(alpha) - 1) - 1 + occlusion, 0, 1)
 
 
 def indirect_specular_split_sum(prefiltered, f0, perceptual_roughness, NdotV, occlusion, dfg,
-                                energy_compensated=True, f90=None):
+                                energy_compensated=True, f90=None, quality="HIGH"):
     """Scalars and arrays shaped like NdotV; colours with a last axis of 3."""
     return _f(prefiltered) * indirect_specular_albedo(f0, dfg, energy_compensated, f90) * specular_occlusion(
-        NdotV, _f(occlusion), _f(perceptual_roughness) ** 2)[..., None]
+        NdotV, _f(occlusion), _f(perceptual_roughness) ** 2, quality)[..., None]
 
 
 def one_minus_reflectivity_from_metallic(metallic):
@@ -157,7 +160,8 @@ def lighting_standard(diffuse_color, f0, coat_f0, perceptual_roughness, occlusio
     direct_diffuse = coupled_diffuse_color(diffuse_color, coat_f0,
                                            specular_albedo_bound(coat_f0, dfg, specular_f, coat_f90))
     direct = shading.shade_punctual(n, v, light_dir, light_color, direct_diffuse, f0, r, f90=f90, **variants)
-    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90)
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90,
+                                       variants.get("quality", "HIGH"))
     indirect_diffuse_color = coupled_diffuse_color(
         diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated, coat_f90))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
@@ -209,7 +213,8 @@ def lighting_anisotropic(diffuse_color, f0, coat_f0, perceptual_roughness, occlu
     NdotL = np.clip(np.sum(n * _f(light_dir), axis=-1), 0.0, 1.0)
     lobe = anisotropy.brdf_anisotropic_specular(n, v, light_dir, t, b, f0, r, strength, quality, f90)
     direct = direct + _f(light_color) * lobe * (shading.LIGHT_UNIT_SCALE * NdotL)[..., None]
-    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90)
+    spec = indirect_specular_split_sum(prefiltered, f0, r, NdotV, occlusion, dfg, energy_compensated, f90,
+                                       variants.get("quality", "HIGH"))
     indirect_diffuse_color = coupled_diffuse_color(
         diffuse_color, coat_f0, indirect_specular_albedo(coat_f0, dfg, energy_compensated, coat_f90))
     return direct + indirect_diffuse_color * _f(indirect_diffuse) * _f(occlusion)[..., None] + spec
