@@ -704,7 +704,12 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     if mode.lower() not in pipeline.drawn:
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
         return None
-    if p.fixed_function:
+    if p.fixed_function and p.program is not None:
+        # a program draws the pass: Unity ignores its fixed-function commands (docs, "ShaderLab:
+        # legacy lighting" / "legacy texture combining" apply to passes without one)
+        words = ", ".join(dict.fromkeys(w for w, _ in p.fixed_function))
+        notes.append(f"{path}:{p.fixed_function[0][1]}: {label}: {words} ignored: a program draws this pass")
+    elif p.fixed_function:
         word, line = p.fixed_function[0]
         raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
                                "programmable passes only")
