@@ -79,6 +79,9 @@ def _structs(masked: str) -> dict:
         end = matching_brace(masked, m.end() - 1)
         members = []
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        # a macro member (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)) has no ';' of its own: cut it
+        # out so the member after it is read (Unity's Unlit template puts one before SV_POSITION)
+        body = re.sub(r"\b[A-Z][A-Z0-9_]*\s*\([^()]*\)", " ", body)
         for decl in body.split(";"):
             decl = decl.strip()
             if not decl or "(" in decl:  # a macro (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)): no member here
@@ -149,7 +152,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         found[role] = sig
     structs = _structs(everything)
     vf = M.VertexFragmentPass(
-        path=path, name=block.name, light_mode=block.tags.get("LightMode", "Always"),
+        path=path, name=block.name, light_mode=block.light_mode or "Always",
         program=program, program_line=first_line, vertex=vertex, fragment=fragment,
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],

@@ -1,0 +1,141 @@
+"""Fixed-function ShaderLab passes (importers/unity/fixed_function.py): the program pbrlab
+generates for ``Lighting On`` / ``Material`` / ``SetTexture`` / ``AlphaTest`` computes what
+Unity's manual says, in both languages.
+
+The lit colour is checked on the front face of a box seen head-on (the camera looks down -z at
+the +z face; the box's other faces face away): the face is flat, so N.L, and with it the
+per-vertex colour, is the same at its four vertices and the interpolated colour equals the
+per-vertex value at every pixel of the face (no interpolation error to account for).
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+import pytest
+
+from pbrlab.foundation.images import write_png
+from pbrlab.importers.loader import parse_scene
+from pbrlab.render.renderer import render_scene
+
+LANGUAGES = ["glsl", "hlsl"]
+LIGHT_DIRECTION = np.array([-0.4, -0.6, -0.7])  # the way the light travels (world space)
+LIGHT_COLOUR = np.array([0.9, 0.8, 0.7])
+# float32 evaluation of the lit colour: about 30 roundings (transforms, normalisations, the
+# dot product, three multiply-adds) of values at most 2, each within 2^-24 relative, so at most
+# 30 * 2 * 6e-8 = 3.6e-6 apart from the float64 value.
+LIT_BOUND = 3.6e-6
+
+SHADER = """
+Shader "t/{name}" {{
+    Properties {{
+        _MainTex ("Texture", 2D) = "white" {{}}
+        _Diffuse ("Diffuse", Color) = (0.6, 0.5, 0.4, 0.8)
+        _Cutoff ("Cutoff", Range(0, 1)) = 0.5
+    }}
+    SubShader {{
+        Pass {{
+            Tags {{ "LightMode" = "Vertex" }}
+            {body}
+        }}
+    }}
+}}
+"""
+
+
+def _render(tmp_path, language, name, body, texture=None, lights=True):
+    shader = tmp_path / f"{name}.shader"
+    shader.write_text(textwrap.dedent(SHADER.format(name=name, body=body)))
+    material = {"surface": str(shader)}
+    if texture is not None:
+        material["properties"] = {"_MainTex": {"path": str(texture)}}
+    scene = {
+        "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [48, 48]},
+        "lights": [{"type": "directional", "direction": LIGHT_DIRECTION.tolist(), "color": LIGHT_COLOUR.tolist(),
+                    "intensity": 1.0}] if lights else [],
+        "materials": {"m": material},
+        "objects": [{"mesh": {"primitive": "box", "size": 1.0}, "material": "m"}],
+    }
+    return render_scene(parse_scene(scene, "t", tmp_path), language=language).linear
+
+
+def _face(image):
+    """The pixels of the box's front face, one pixel in from its edges (no edge coverage)."""
+    covered = image[..., 3] > 0
+    rows, cols = np.nonzero(covered)
+    inner = np.zeros_like(covered)
+    inner[rows.min() + 1:rows.max(), cols.min() + 1:cols.max()] = True
+    assert covered.mean() > 0.1 and inner.sum() > 50
+    return image[inner & covered]
+
+
+def lit_colour(diffuse, ambient_term, emission, normal, light_direction, light_colour):
+    """Unity's legacy vertex lighting of one directional light (the manual's "ShaderLab: legacy
+    lighting"): saturate(Emission + Ambient * ambient light + Diffuse * light * max(0, N.L)),
+    alpha the Diffuse alpha; float64."""
+    to_light = -np.asarray(light_direction, float) / np.linalg.norm(light_direction)
+    n_dot_l = max(0.0, float(np.dot(normal, to_light)))
+    rgb = np.asarray(emission[:3]) + ambient_term + np.asarray(diffuse[:3]) * np.asarray(light_colour) * n_dot_l
+    return np.clip(np.append(rgb, diffuse[3]), 0.0, 1.0)
+
+
+LIT = """
+            Material {{ Diffuse [_Diffuse] Ambient (0.3, 0.3, 0.3, 1) Emission (0.05, 0.1, 0.0, 0) }}
+            Lighting {lighting}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lighting_on_is_unitys_per_vertex_lighting(tmp_path, language):
+    """Lighting On under a directional light, no ambient light (no environment): every pixel of
+    the face is the float64 lit colour within LIT_BOUND; the control (the light's colour not
+    applied) is far off."""
+    image = _render(tmp_path, language, "lit", LIT.format(lighting="On"))
+    face = _face(image)
+    expected = lit_colour((0.6, 0.5, 0.4, 0.8), 0.0, (0.05, 0.1, 0.0, 0.0), (0.0, 0.0, 1.0), LIGHT_DIRECTION,
+                          LIGHT_COLOUR)
+    error = np.abs(face[:, :3] - expected[:3]).max(axis=1)
+    assert (error > LIT_BOUND).mean() == 0.0, (error.max(), face[0], expected)
+    control = lit_colour((0.6, 0.5, 0.4, 0.8), 0.0, (0.05, 0.1, 0.0, 0.0), (0.0, 0.0, 1.0), LIGHT_DIRECTION,
+                         (1.0, 1.0, 1.0))
+    assert (np.abs(face[:, :3] - control[:3]).max(axis=1) > 100 * LIT_BOUND).mean() == 1.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lighting_off_is_white_and_lights_do_not_reach_other_passes(tmp_path, language):
+    """Lighting Off: the primary colour is white (no BindChannels Color), whatever the lights."""
+    face = _face(_render(tmp_path, language, "unlit", LIT.format(lighting="Off")))
+    np.testing.assert_array_equal(face[:, :3], 1.0)
+
+
+@pytest.fixture
+def grey(tmp_path):
+    path = tmp_path / "grey.png"
+    write_png(path, np.full((4, 4, 4), 90, np.uint8))
+    return path
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_texture_times_primary_double(tmp_path, grey, language):
+    """``combine texture * primary DOUBLE`` is twice ``combine texture`` (primary white: Lighting
+    Off) at every pixel: the same texel in both renders, so equal to float32 rounding of one
+    doubling (exact); the control without DOUBLE is half of it."""
+    plain = _face(_render(tmp_path, language, "plain", "SetTexture [_MainTex] { combine texture }", grey))
+    double = _face(_render(tmp_path, language, "double", "SetTexture [_MainTex] { combine texture * primary DOUBLE }",
+                           grey))
+    single = _face(_render(tmp_path, language, "single", "SetTexture [_MainTex] { combine texture * primary }", grey))
+    assert 0.05 < plain[:, :3].min() and plain[:, :3].max() < 0.5  # DOUBLE stays below the clamp at 1
+    np.testing.assert_array_equal(double[:, :3], 2.0 * plain[:, :3])
+    assert (single[:, :3] != 2.0 * plain[:, :3]).all()
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_alpha_test_discards_what_fails(tmp_path, language):
+    """Alpha 0.3 (constantColor's, after the comma): AlphaTest Greater [_Cutoff] (0.5) draws
+    nothing, AlphaTest Less [_Cutoff] draws the face (the control)."""
+    stage = "SetTexture [_MainTex] { constantColor (1, 1, 1, 0.3) combine texture, constant }"
+    kept = _render(tmp_path, language, "kept", stage + "\n AlphaTest Less [_Cutoff]")
+    dropped = _render(tmp_path, language, "dropped", stage + "\n AlphaTest Greater [_Cutoff]")
+    assert (kept[..., 3] > 0).mean() > 0.1
+    assert not (dropped[..., :3] != 0).any() and not (dropped[..., 3] > 0).any()
