@@ -26,6 +26,10 @@ LIGHT_COLOUR = np.array([0.9, 0.8, 0.7])
 # dot product, three multiply-adds) of values at most 2, each within 2^-24 relative, so at most
 # 30 * 2 * 6e-8 = 3.6e-6 apart from the float64 value.
 LIT_BOUND = 3.6e-6
+# Interpolated from the vertices: LIT_BOUND at each vertex, plus the rasteriser's interpolation
+# of the colour and of the position the expectation is read at, each a few float32 ulps of
+# values at most 1.5 (2 x 2 x 1.5 x 6e-8 = 3.6e-7): 4e-6 (measured: 3.5e-7 in both languages).
+VERTEX_BOUND = 4e-6
 
 SHADER = """
 Shader "t/{name}" {{
@@ -139,3 +143,109 @@ def test_alpha_test_discards_what_fails(tmp_path, language):
     dropped = _render(tmp_path, language, "dropped", stage + "\n AlphaTest Greater [_Cutoff]")
     assert (kept[..., 3] > 0).mean() > 0.1
     assert not (dropped[..., :3] != 0).any() and not (dropped[..., 3] > 0).any()
+
+
+POSITION_SHADER = """
+Shader "t/position" {
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        struct v2f { float4 pos : SV_POSITION; float3 p : TEXCOORD0; };
+        v2f vert(appdata_base v) { v2f o; o.pos = UnityObjectToClipPos(v.vertex); o.p = v.vertex.xyz + 1.0; return o; }
+        float4 frag(v2f i) : SV_Target { return float4(i.p, 1.0); }
+        ENDCG
+    } }
+}
+"""
+POINT_POSITION = np.array([0.8, 0.6, 1.5])
+POINT_COLOUR = np.array([1.0, 0.9, 0.8])
+POINT_INTENSITY = 1.5
+POINT_RANGE = 10.0
+CAMERA = np.array([0.0, 0.0, 3.2])
+SPECULAR_LIT = """
+            Material { Diffuse [_Diffuse] Ambient (0, 0, 0, 1) Specular (0.5, 0.4, 0.3, 1) Shininess 0.2 }
+            Lighting On
+            SeparateSpecular On
+"""
+
+
+def _render_two_lights(tmp_path, language, name, text):
+    shader = tmp_path / f"{name}.shader"
+    shader.write_text(textwrap.dedent(text))
+    scene = {
+        "camera": {"position": CAMERA.tolist(), "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [48, 48]},
+        "lights": [{"type": "directional", "direction": LIGHT_DIRECTION.tolist(), "color": LIGHT_COLOUR.tolist(),
+                    "intensity": 1.0},
+                   {"type": "point", "position": POINT_POSITION.tolist(), "color": POINT_COLOUR.tolist(),
+                    "intensity": POINT_INTENSITY, "range": POINT_RANGE}],
+        "materials": {"m": {"surface": str(shader)}},
+        "objects": [{"mesh": {"primitive": "box", "size": 1.0}, "material": "m"}],
+    }
+    return render_scene(parse_scene(scene, "t", tmp_path), language=language).linear
+
+
+def vertex_colours(p, normal, diffuse, specular, shininess, lights):
+    """(primary, specular) of Unity's legacy vertex lighting at one vertex, float64: per light
+    (to-light direction, colour reaching the vertex) diffuse * colour * max(0, N.L), and where
+    N.L > 0 specular * colour * max(0, N.H)^(shininess * 128), H the half vector of L and the
+    direction to the eye (the manual's "ShaderLab: legacy lighting"); each sum clamped to [0, 1]."""
+    to_eye = (CAMERA - p) / np.linalg.norm(CAMERA - p)
+    lit, spec = np.zeros(3), np.zeros(3)
+    for to_light, colour in lights(p):
+        n_dot_l = max(0.0, float(np.dot(normal, to_light)))
+        lit += np.asarray(diffuse) * colour * n_dot_l
+        if n_dot_l > 0:
+            h = (to_light + to_eye) / np.linalg.norm(to_light + to_eye)
+            spec += np.asarray(specular) * colour * max(0.0, float(np.dot(normal, h))) ** (shininess * 128.0)
+    return np.clip(lit, 0, 1), np.clip(spec, 0, 1)
+
+
+def _scene_lights(p):
+    from pbrlab.maths.reference.lighting import distance_attenuation
+    d = POINT_POSITION - p
+    directional = -LIGHT_DIRECTION / np.linalg.norm(LIGHT_DIRECTION)
+    # the harness's point light reaching the vertex: its own falloff (pbr/lighting/attenuation)
+    point = POINT_COLOUR * POINT_INTENSITY * distance_attenuation(float(np.dot(d, d)), POINT_RANGE)
+    return [(directional, LIGHT_COLOUR), (d / np.linalg.norm(d), point)]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_vertex_lighting_with_specular_is_interpolated_from_unitys_vertex_values(tmp_path, language):
+    """A directional and a point light, SeparateSpecular On: each face pixel is the float64
+    per-vertex colours of the face's triangle interpolated at that pixel's surface point (read
+    from a second render that writes the object-space position), primary and specular each
+    clamped per vertex, added and clamped per pixel; the control (the per-pixel colour at the
+    surface point, no vertex interpolation) is off at most pixels."""
+    from pbrlab.scene import primitives
+    image = _render_two_lights(tmp_path, language, "lit2", SHADER.format(name="lit2", body=SPECULAR_LIT))
+    where = _render_two_lights(tmp_path, language, "position", POSITION_SHADER)
+    covered = (image[..., 3] > 0) & (where[..., 3] > 0)
+    points = where[covered][:, :3].astype(np.float64) - 1.0
+    inside = np.abs(points[:, :2]).max(axis=1) < 0.48      # off the face's edges
+    points, colours = points[inside], image[covered][inside][:, :3]
+    assert len(points) > 200 and np.allclose(points[:, 2], 0.5, atol=1e-6)
+    box = primitives.box(1.0)
+    front = [f for f in box.faces if np.allclose(box.positions[f][:, 2], 0.5)]
+    assert len(front) == 2
+    normal = np.array([0.0, 0.0, 1.0])
+    expected, control = [], []
+    for p in points:
+        for f in front:
+            a, b, c = box.positions[f][:, :2]
+            m = np.array([b - a, c - a]).T
+            u, v = np.linalg.solve(m, p[:2] - a)
+            weights = np.array([1 - u - v, u, v])
+            if weights.min() >= -1e-9:
+                break
+        per_vertex = [vertex_colours(box.positions[i], normal, (0.6, 0.5, 0.4), (0.5, 0.4, 0.3), 0.2, _scene_lights)
+                      for i in f]
+        primary = sum(w * pv[0] for w, pv in zip(weights, per_vertex))
+        specular = sum(w * pv[1] for w, pv in zip(weights, per_vertex))
+        expected.append(np.clip(primary + specular, 0, 1))
+        here = vertex_colours(p, normal, (0.6, 0.5, 0.4), (0.5, 0.4, 0.3), 0.2, _scene_lights)
+        control.append(np.clip(here[0] + here[1], 0, 1))
+    error = np.abs(colours - np.array(expected)).max(axis=1)
+    assert (error > VERTEX_BOUND).mean() == 0.0, error.max()
+    assert (np.abs(colours - np.array(control)).max(axis=1) > 10 * VERTEX_BOUND).mean() > 0.5

@@ -24,8 +24,9 @@ combining", "ShaderLab: legacy alpha testing", "ShaderLab: legacy BindChannels")
   ``saturate((dot(L, spotDir) - atten.x) * atten.y)``, as Unity's vertex lights (UnityCG.cginc's
   ShadeVertexLightsFull computes the same terms). ColorMaterial AmbientAndDiffuse takes Ambient
   and Diffuse from the vertex colour, Emission the Emission.
-* Lighting Off: the primary colour is the vertex colour where BindChannels binds "Color", else
-  white.
+* Lighting Off: the primary colour is the Color command's (``Color [_Prop]`` / ``Color (r, g, b, a)``),
+  else the vertex colour where BindChannels binds "Color", else white; a pass with no command
+  at all draws white.
 * Each SetTexture stage combines ``previous`` (the last stage's result; the primary colour for the
   first), ``primary``, ``texture`` (the stage's texture at its mesh UV, tiling and offset applied)
   and ``constant`` (constantColor): ``a * b``, ``a + b``, ``a - b``, ``a +- b`` (a + b - 0.5),
@@ -44,6 +45,7 @@ from __future__ import annotations
 
 import re
 
+from . import model as M
 from .source_text import UnityShaderError
 
 # ShaderLab's AlphaTest comparisons as Cg operators (pass when ``alpha OP value``).
@@ -86,6 +88,7 @@ class _Pass:
         self.stages = []              # [(texture property, constant Cg or None, combine text, line)]
         self.alpha_test = None        # (operator, value Cg)
         self.binds_color = False
+        self.color = None             # the Color command's (the unlit primary colour)
         self.texcoord = {}            # stage index (or -1: every) -> mesh channel "in UV n"
         self.used = set()             # properties the program reads
         for c in commands:
@@ -130,6 +133,8 @@ class _Pass:
                     elif not (source in ("vertex", "normal", "tangent") and target == source):
                         raise UnityShaderError(f'{where}: BindChannels Bind "{m.group(1)}", {m.group(2)}: '
                                                "a binding pbrlab does not run")
+            elif word == "color":
+                self.color = self._read(args, properties, where)
             elif word == "combine":
                 raise UnityShaderError(f"{where}: combine outside a SetTexture block")
 
@@ -144,9 +149,9 @@ class _Pass:
         if m is None:
             raise UnityShaderError(f"{where}: SetTexture needs a texture property: SetTexture [_Name] {{ ... }}")
         texture = m.group(1)
-        prop = properties.get(texture)
-        if prop is None:
-            raise UnityShaderError(f"{where}: SetTexture [{texture}]: not one of the shader's Properties")
+        if texture not in properties:  # as a sampler no Properties line declares: white, as in Unity
+            properties[texture] = M.Property(texture, texture, "2D", "white", ("implicit",))
+        prop = properties[texture]
         if prop.kind.lower() != "2d":
             raise UnityShaderError(f"{where}: SetTexture [{texture}]: a {prop.kind} texture in a fixed-function "
                                    "stage (texture-coordinate generation) is not supported by pbrlab")
@@ -294,7 +299,8 @@ def translate(commands, properties: dict, path) -> str:
             out += ["    o.primary = saturate(float4(lit + spec, diffuseColour.a));",
                     "    o.specular = float4(0.0, 0.0, 0.0, 0.0);"]
     else:
-        out += [f"    o.primary = {'v.color' if ff.binds_color else 'float4(1.0, 1.0, 1.0, 1.0)'};",
+        unlit = ff.color or ("v.color" if ff.binds_color else "float4(1.0, 1.0, 1.0, 1.0)")
+        out += [f"    o.primary = {unlit};",
                 "    o.specular = float4(0.0, 0.0, 0.0, 0.0);"]
     out += ["    return o;", "}", "float4 pbrlab_ff_frag(pbrlab_ff_v2f i) : SV_Target {",
             "    float4 s_primary = i.primary;", "    float4 s_previous = i.primary;"]

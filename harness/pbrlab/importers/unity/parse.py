@@ -718,20 +718,21 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         # legacy lighting" / "legacy texture combining" apply to passes without one)
         words = ", ".join(dict.fromkeys(w for w, _ in p.fixed_function))
         notes.append(f"{path}:{p.fixed_function[0][1]}: {label}: {words} ignored: a program draws this pass")
-    elif p.fixed_function:  # Unity generates its program; so does pbrlab (fixed_function.py)
-        outer = [c for c in sub.state if c.word.lower() in shaderlab.FIXED_FUNCTION]
-        program = fixed_function.translate(outer + p.fixed_commands, props, path)
-        vf = parse_pass(program, path, p.line, p)
-        apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
-        return vf
     if p.program is None:
         state = M.RenderState()
         apply_state(sub.state + p.state, state, props, path, [], surface=False)
-        if state.color_mask == "0":
+        if not p.fixed_function and state.color_mask == "0":
             notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
             return None
-        raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
-                               "fixed-function default, which pbrlab does not have")
+        if pipeline is not BUILTIN:
+            raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
+                                   "runs programmable passes only")
+        # Unity generates a program for a fixed-function pass (a pass with no command at all
+        # draws white); so does pbrlab (fixed_function.py), which the front end then reads
+        outer = [c for c in sub.state if c.word.lower() in shaderlab.FIXED_FUNCTION]
+        vf = parse_pass(fixed_function.translate(outer + p.fixed_commands, props, path), path, p.line, p)
+        apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+        return vf
     if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
                                + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN

@@ -28,7 +28,7 @@ _TOKEN = re.compile(r'"[^"\n]*"|[A-Za-z_][\w.]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][
 # Commands of a Pass that belong to the fixed-function pipeline (no program runs them).
 FIXED_FUNCTION = frozenset(w.lower() for w in (
     "SetTexture", "Material", "Lighting", "SeparateSpecular", "ColorMaterial", "BindChannels",
-    "AlphaTest", "Combine"))
+    "AlphaTest", "Combine", "Color"))
 
 
 # ShaderLab's commands: a command's arguments end where the next command begins (several may
@@ -37,7 +37,7 @@ COMMANDS = frozenset(w.lower() for w in (
     "Cull", "ZWrite", "ZTest", "Blend", "BlendOp", "ColorMask", "Offset", "Lighting", "Fog", "AlphaTest",
     "AlphaToMask", "Stencil", "Name", "Tags", "LOD", "Pass", "UsePass", "GrabPass", "SetTexture",
     "Material", "SeparateSpecular", "ColorMaterial", "BindChannels", "Conservative", "ZClip", "SubShader",
-    "Fallback", "CustomEditor", "Properties", "Dependency"))
+    "Fallback", "CustomEditor", "Properties", "Dependency", "Color"))
 
 
 class ShaderLabError(PbrlabError):
