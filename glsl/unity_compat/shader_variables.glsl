@@ -17,6 +17,7 @@
 //           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
 //           vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight),
 //           vec3 ShadeVertexLights(vec4 vertex, vec3 normal) (UnityCG.cginc's vertex lighting);
+//           vec4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
@@ -61,7 +62,8 @@
 // Include:  "unity_compat/shader_variables.glsl" (path relative to glsl/). Its HLSL twin
 //           hlsl_ports/unity_compat/shader_variables.hlsl is hand-written (matrices: GLSL M * v
 //           is HLSL mul(M, v)); HLSL's instancing macro declares `type var;`.
-// Config macros read: none.
+// Config macros read: PBR_UNITY_SH_IRRADIANCE(n) (UNITY_LIGHTMODEL_AMBIENT: the caller's ambient
+//           lookup, as pbr/unity/global_illumination reads it; default black).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
@@ -194,8 +196,27 @@ vec3 UnityObjectToViewPos(vec4 pos) {
 // UnityCG.cginc describe it): in view space, the ambient colour plus, for each of the first
 // lightCount vertex lights, its colour * max(0, N.L) * 1 / (1 + |d|^2 * atten.z), times the spot
 // cone saturate((max(0, L.spotDir) - atten.x) * atten.y) when spotLight; ShadeVertexLights is
-// four lights without spots. Unity_LightmodelAmbient is pbr/unity/global_illumination's.
-vec4 Unity_LightmodelAmbient();
+// four lights without spots.
+//
+// UNITY_LIGHTMODEL_AMBIENT (glstate_lightmodel_ambient, the one ambient colour of Unity's legacy
+// vertex lighting): here the ambient probe's mean over all directions, read through the
+// caller's PBR_UNITY_SH_IRRADIANCE(n) (what ShadeSH9 returns; black where the caller defines
+// none, as pbr/unity/global_illumination's default). For an SH of bands 0-2 the mean over the
+// sphere equals the mean of its values on the six axes: every band-1 and band-2 function
+// (x, xy, 3z^2 - 1, x^2 - y^2, ...) averages to 0 on +-x, +-y, +-z as over the sphere; exact
+// where the lookup needs no clamp at 0 (a sky's irradiance is positive everywhere).
+vec4 Unity_LightmodelAmbient() {
+#ifdef PBR_UNITY_SH_IRRADIANCE
+    vec3 sum = PBR_UNITY_SH_IRRADIANCE(vec3(1.0, 0.0, 0.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(-1.0, 0.0, 0.0))
+             + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 1.0, 0.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, -1.0, 0.0))
+             + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 0.0, 1.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 0.0, -1.0));
+    return vec4(sum / 6.0, 1.0);
+#else
+    return vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()
+
 vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight) {
     vec3 viewpos = UnityObjectToViewPos(vertex.xyz);
     vec3 viewN = normalize(mat3(UNITY_MATRIX_IT_MV) * normal);

@@ -6,7 +6,6 @@
 //           Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(float smoothness,
 //               vec3 worldViewDir, vec3 normal, vec3 fresnel0)
 //           vec3 ShadeSH9(vec4 normal)                       ambient irradiance / pi
-//           vec4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT  Unity's legacy ambient colour
 //           vec3 Unity_GlossyEnvironment(Unity_GlossyEnvironmentData glossIn)
 //           UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normalWorld)
 //           UnityGI UnityGlobalIllumination(UnityGIInput data, float occlusion, vec3 normalWorld,
@@ -68,20 +67,6 @@ Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(float smoothness, vec3 w
 vec3 ShadeSH9(vec4 normal) {
     return PBR_UNITY_SH_IRRADIANCE(normal.xyz);
 }
-
-// UNITY_LIGHTMODEL_AMBIENT (glstate_lightmodel_ambient, the ambient colour of Unity's legacy
-// vertex lighting, one colour for every direction): here the ambient probe's mean over all
-// directions, what ShadeSH9 averages to over the sphere. For an SH of bands 0-2 that mean equals
-// the mean of its values on the six axes (every band-1 and band-2 function averages to 0 on
-// them, as over the sphere: x, xy, 3z^2 - 1, x^2 - y^2 on +-x, +-y, +-z); exact where the caller's
-// lookup needs no clamp at 0 (a sky's irradiance is positive everywhere).
-vec4 Unity_LightmodelAmbient() {
-    vec3 sum = ShadeSH9(vec4(1.0, 0.0, 0.0, 1.0)) + ShadeSH9(vec4(-1.0, 0.0, 0.0, 1.0))
-             + ShadeSH9(vec4(0.0, 1.0, 0.0, 1.0)) + ShadeSH9(vec4(0.0, -1.0, 0.0, 1.0))
-             + ShadeSH9(vec4(0.0, 0.0, 1.0, 1.0)) + ShadeSH9(vec4(0.0, 0.0, -1.0, 1.0));
-    return vec4(sum / 6.0, 1.0);
-}
-#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()
 
 vec3 Unity_GlossyEnvironment(Unity_GlossyEnvironmentData glossIn) {
     return PBR_UNITY_GLOSSY_ENVIRONMENT(glossIn.reflUVW, glossIn.roughness);

@@ -249,3 +249,73 @@ def test_vertex_lighting_with_specular_is_interpolated_from_unitys_vertex_values
     error = np.abs(colours - np.array(expected)).max(axis=1)
     assert (error > VERTEX_BOUND).mean() == 0.0, error.max()
     assert (np.abs(colours - np.array(control)).max(axis=1) > 10 * VERTEX_BOUND).mean() > 0.5
+
+
+def _read(tmp_path, text):
+    from pbrlab.importers.unity import parse
+    path = tmp_path / "s.shader"
+    path.write_text(textwrap.dedent(text))
+    return parse.read_shader(path)
+
+
+VERTEX_AND_LIGHTMAP = """
+Shader "t/vl" {
+    SubShader {
+        Pass { Tags { "LightMode" = "Vertex" } Lighting On SetTexture [_MainTex] { combine texture * primary } }
+        Pass { Tags { "LIGHTMODE" = "VertexLM" } SetTexture [_MainTex] { combine texture } }
+        %s
+    }
+}
+"""
+
+
+def test_vertex_pass_draws_and_lightmap_pass_is_skipped(tmp_path):
+    """No object here has a lightmap: the Vertex pass draws (a generated program), the VertexLM
+    pass (its tag spelt LIGHTMODE, as in Unity's own shaders) is skipped with a note."""
+    shader = _read(tmp_path, VERTEX_AND_LIGHTMAP % "")
+    assert [p.light_mode for p in shader.passes] == ["Vertex"]
+    assert "pbrlab_ff_vert" in shader.passes[0].program
+    assert any("LightMode VertexLM" in n and "lightmapped objects only" in n for n in shader.notes)
+
+
+def test_vertex_pass_is_skipped_beside_a_forward_base_pass(tmp_path):
+    """Unity's forward path draws a SubShader's ForwardBase pass, not its Vertex pass (control:
+    without the ForwardBase pass the Vertex pass draws, above)."""
+    forward = """Pass { Tags { "LightMode" = "ForwardBase" }
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+        fixed4 frag() : SV_Target { return 1; }
+        ENDCG }"""
+    shader = _read(tmp_path, VERTEX_AND_LIGHTMAP % forward)
+    assert [p.light_mode for p in shader.passes] == ["ForwardBase"]
+    assert any("LightMode Vertex) skipped" in n and "ForwardBase" in n for n in shader.notes)
+
+
+def test_category_commands_reach_its_subshaders(tmp_path):
+    """A Category's Blend and Lighting apply to the SubShaders inside it (Unity's Category: a
+    group of commands for every SubShader below it); control: the same pass outside a Category."""
+    inner = 'SubShader { Pass { Material { Diffuse (1, 0, 0, 1) } SetTexture [_MainTex] { combine primary } } }'
+    grouped = _read(tmp_path, 'Shader "t/c" { Category { Blend SrcAlpha One Lighting On %s } }' % inner)
+    alone = _read(tmp_path, 'Shader "t/c" { %s }' % inner)
+    assert grouped.passes[0].state.blend_factors == ("SrcAlpha", "One")
+    assert "UNITY_LIGHTMODEL_AMBIENT" in grouped.passes[0].program
+    assert not alone.passes[0].state.blend_factors and "UNITY_LIGHTMODEL_AMBIENT" not in alone.passes[0].program
+
+
+@pytest.mark.parametrize("combine, cg", [
+    ("texture * primary", "s_texture * s_primary"),
+    ("previous + constant", "s_previous + s_constant"),
+    ("texture - previous", "s_texture - s_previous"),
+    ("texture +- primary", "s_texture + s_primary - 0.5"),
+    ("texture lerp(constant) previous", "lerp(s_previous, s_texture, (s_constant).a)"),
+    ("texture * primary + constant", "s_texture * s_primary + s_constant"),
+    ("one - texture", "(1.0 - s_texture)"),
+    ("constant alpha", "s_constant.aaaa"),
+])
+def test_combiner_expressions_are_the_manuals(combine, cg):
+    """Each combiner form of "ShaderLab: legacy texture combining" as its Cg expression."""
+    from pbrlab.importers.unity.fixed_function import combine_expression
+    assert combine_expression(combine, "x") == cg
