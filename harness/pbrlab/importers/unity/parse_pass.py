@@ -73,17 +73,20 @@ def _function_signature(masked: str, name: str, where_of):
     return m.group(1), params, rest.group(1) or "", m.start()
 
 
+# Upper-case macro words (with their arguments) at the start of a struct member's text.
+_LEADING_MACROS = re.compile(r"^(?:[A-Z][A-Z0-9_]*(?:\s*\([^()]*\))?\s+)+(?=[A-Za-z_])")
+
+
 def _structs(masked: str) -> dict:
     out = {}
     for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
         end = matching_brace(masked, m.end() - 1)
         members = []
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
-        # a macro member (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)) has no ';' of its own: cut it
-        # out so the member after it is read (Unity's Unlit template puts one before SV_POSITION)
-        body = re.sub(r"\b[A-Z][A-Z0-9_]*\s*\([^()]*\)", " ", body)
         for decl in body.split(";"):
-            decl = decl.strip()
+            # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
+            # lead the member written after them: cut them off so that member is read
+            decl = _LEADING_MACROS.sub("", decl.strip())
             if not decl or "(" in decl:  # a macro (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)): no member here
                 continue
             semantic = ""
