@@ -319,3 +319,21 @@ def test_combiner_expressions_are_the_manuals(combine, cg):
     """Each combiner form of "ShaderLab: legacy texture combining" as its Cg expression."""
     from pbrlab.importers.unity.fixed_function import combine_expression
     assert combine_expression(combine, "x") == cg
+
+
+def test_a_macro_member_before_a_member_does_not_hide_it():
+    """UNITY_FOG_COORDS(1) and UNITY_VERTEX_OUTPUT_STEREO have no ';' of their own: the member
+    written after them is still read (Reflect-VertexLit's COLOR0 after its fog macro); a macro
+    member with its own ';' (UNITY_POSITION(pos);) is no member here, as before."""
+    from pbrlab.importers.unity.parse_pass import _structs
+    struct = _structs("""struct v2f {
+        float2 uv : TEXCOORD0;
+        UNITY_FOG_COORDS(1)
+        fixed4 diff : COLOR0;
+        UNITY_FOG_COORDS(2)
+        UNITY_VERTEX_OUTPUT_STEREO
+        float4 screenPos : TEXCOORD2;
+        UNITY_POSITION(pos);
+    };""")["v2f"]
+    assert struct.members == [("float2", "uv", "TEXCOORD0"), ("fixed4", "diff", "COLOR0"),
+                              ("float4", "screenPos", "TEXCOORD2")]
