@@ -38,7 +38,8 @@ combining", "ShaderLab: legacy alpha testing", "ShaderLab: legacy BindChannels")
   its comparison of the final alpha with its value.
 
 Fog is not drawn here (the harness draws no fog, as for written passes). What this module does not
-know is refused naming the command and its line.
+know is refused naming the command and its line (among them TexGen and texture matrices, which
+Unity 5.0 removed: its "Upgrading to Unity 5.0" guide).
 """
 
 from __future__ import annotations
@@ -154,7 +155,8 @@ class _Pass:
         prop = properties[texture]
         if prop.kind.lower() != "2d":
             raise UnityShaderError(f"{where}: SetTexture [{texture}]: a {prop.kind} texture in a fixed-function "
-                                   "stage (texture-coordinate generation) is not supported by pbrlab")
+                                   "stage needs texture-coordinate generation (TexGen), which Unity removed in "
+                                   "5.0 and pbrlab does not run")
         self.used.add(texture)
         constant, combine = None, None
         # its commands, several may share a line: constantColor (...) combine a * b, c
@@ -170,7 +172,7 @@ class _Pass:
                 combine = rest
             elif key == "matrix":
                 raise UnityShaderError(f"{where}: SetTexture [{texture}] {{ matrix }}: texture matrices are not "
-                                       "supported by pbrlab")
+                                       "supported by pbrlab (Unity removed them in 5.0)")
         if combine is None:
             raise UnityShaderError(f"{where}: SetTexture [{texture}] has no combine")
         self.stages.append((texture, constant, combine, where))
