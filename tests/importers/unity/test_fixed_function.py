@@ -337,3 +337,39 @@ def test_a_macro_member_before_a_member_does_not_hide_it():
     };""")["v2f"]
     assert struct.members == [("float2", "uv", "TEXCOORD0"), ("fixed4", "diff", "COLOR0"),
                               ("float4", "screenPos", "TEXCOORD2")]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lightmodel_ambient_is_the_ambient_probes_mean(tmp_path, language):
+    """Material { Ambient (1, 1, 1, 1) }, no light, under the sky: the face is
+    UNITY_LIGHTMODEL_AMBIENT, the mean over the six axes of the sky's SH9 irradiance / pi
+    (float64), within LIT_BOUND (the SH coefficients reach the GPU as float32: 6e-8 relative);
+    that mean is the sphere's mean (checked here against 20,000 Fibonacci directions, 1e-3
+    relative, the quadrature's own error); the control (ShadeSH9 along the face's normal, what a
+    per-normal ambient would give) differs."""
+    from pbrlab.foundation.locations import locate
+    from pbrlab.maths.reference.lighting import sh9_irradiance
+    from pbrlab.scene.environment import environment_sh
+    shader = tmp_path / "ambient.shader"
+    shader.write_text(textwrap.dedent(SHADER.format(name="ambient", body="""
+            Material { Ambient (1, 1, 1, 1) }
+            Lighting On""")))
+    scene = parse_scene({
+        "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [48, 48]},
+        "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
+        "materials": {"m": {"surface": str(shader)}},
+        "objects": [{"mesh": {"primitive": "box", "size": 1.0}, "material": "m"}],
+    }, "t", tmp_path)
+    face = _face(render_scene(scene, language=language).linear)
+    sh = environment_sh(scene.environment)
+    axes = np.concatenate([np.eye(3), -np.eye(3)])
+    expected = np.maximum(sh9_irradiance(sh, axes), 0.0).mean(axis=0) / np.pi
+    i = np.arange(20000) + 0.5
+    z, phi = 1 - 2 * i / 20000, np.pi * (1 + 5 ** 0.5) * i
+    sphere = np.stack([np.sqrt(1 - z * z) * np.cos(phi), np.sqrt(1 - z * z) * np.sin(phi), z], axis=1)
+    np.testing.assert_allclose(np.maximum(sh9_irradiance(sh, sphere), 0.0).mean(axis=0) / np.pi, expected, rtol=1e-3)
+    assert 0.02 < expected.min() and expected.max() < 1.0
+    error = np.abs(face[:, :3] - expected).max(axis=1)
+    assert (error > LIT_BOUND).mean() == 0.0, (error.max(), face[0], expected)
+    control = np.maximum(sh9_irradiance(sh, [0.0, 0.0, 1.0]), 0.0) / np.pi
+    assert (np.abs(face[:, :3] - control).max(axis=1) > 100 * LIT_BOUND).all()
