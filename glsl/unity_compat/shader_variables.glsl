@@ -16,6 +16,11 @@
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
 //           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
+//           vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight),
+//           vec3 ShadeVertexLights(vec4 vertex, vec3 normal) (UnityCG.cginc's vertex lighting);
+//           vec4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
+//           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
+//           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
 //           globals the caller's light loop sets before each Lighting<Name> call, since one
 //           program here shades every light; w = 0 directional, 1 positional);
@@ -59,7 +64,8 @@
 // Include:  "unity_compat/shader_variables.glsl" (path relative to glsl/). Its HLSL twin
 //           hlsl_ports/unity_compat/shader_variables.hlsl is hand-written (matrices: GLSL M * v
 //           is HLSL mul(M, v)); HLSL's instancing macro declares `type var;`.
-// Config macros read: none.
+// Config macros read: PBR_UNITY_SH_IRRADIANCE(n) (UNITY_LIGHTMODEL_AMBIENT: the caller's ambient
+//           lookup, as pbr/unity/global_illumination reads it; default black).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
@@ -90,6 +96,12 @@ uniform vec4 unity_SpecCube0_HDR;
 #define PBR_UNITY_SPEC_COLOR _SpecColor
 vec4 _LightColor0;
 vec4 _WorldSpaceLightPos0;
+// Unity's vertex lights (UnityShaderVariables.cginc; legacy vertex-lit rendering): plain
+// globals the caller's vertex stage sets (pbrlab: 8 black lights, but a Vertex pass's lights).
+vec4 unity_LightColor[8];
+vec4 unity_LightPosition[8];
+vec4 unity_LightAtten[8];
+vec4 unity_SpotDirection[8];
 
 #define UNITY_MATRIX_M unity_ObjectToWorld
 #define UNITY_MATRIX_V unity_MatrixV
@@ -190,6 +202,54 @@ vec3 UnityObjectToViewPos(vec3 pos) {
 
 vec3 UnityObjectToViewPos(vec4 pos) {
     return UnityObjectToViewPos(pos.xyz);
+}
+
+// Unity's vertex lighting (UnityCG.cginc's ShadeVertexLightsFull, as Unity's manual and
+// UnityCG.cginc describe it): in view space, the ambient colour plus, for each of the first
+// lightCount vertex lights, its colour * max(0, N.L) * 1 / (1 + |d|^2 * atten.z), times the spot
+// cone saturate((max(0, L.spotDir) - atten.x) * atten.y) when spotLight; ShadeVertexLights is
+// four lights without spots.
+//
+// UNITY_LIGHTMODEL_AMBIENT (glstate_lightmodel_ambient, the one ambient colour of Unity's legacy
+// vertex lighting): here the ambient probe's mean over all directions, read through the
+// caller's PBR_UNITY_SH_IRRADIANCE(n) (what ShadeSH9 returns; black where the caller defines
+// none, as pbr/unity/global_illumination's default). For an SH of bands 0-2 the mean over the
+// sphere equals the mean of its values on the six axes: every band-1 and band-2 function
+// (x, xy, 3z^2 - 1, x^2 - y^2, ...) averages to 0 on +-x, +-y, +-z as over the sphere; exact
+// where the lookup needs no clamp at 0 (a sky's irradiance is positive everywhere).
+vec4 Unity_LightmodelAmbient() {
+#ifdef PBR_UNITY_SH_IRRADIANCE
+    vec3 sum = PBR_UNITY_SH_IRRADIANCE(vec3(1.0, 0.0, 0.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(-1.0, 0.0, 0.0))
+             + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 1.0, 0.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, -1.0, 0.0))
+             + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 0.0, 1.0)) + PBR_UNITY_SH_IRRADIANCE(vec3(0.0, 0.0, -1.0));
+    return vec4(sum / 6.0, 1.0);
+#else
+    return vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()
+
+vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight) {
+    vec3 viewpos = UnityObjectToViewPos(vertex.xyz);
+    vec3 viewN = normalize(mat3(UNITY_MATRIX_IT_MV) * normal);
+    vec3 lightColor = Unity_LightmodelAmbient().xyz;
+    for (int i = 0; i < lightCount; i++) {
+        vec3 toLight = unity_LightPosition[i].xyz - viewpos * unity_LightPosition[i].w;
+        float lengthSq = max(dot(toLight, toLight), 0.000001);
+        toLight *= inversesqrt(lengthSq);
+        float atten = 1.0 / (1.0 + lengthSq * unity_LightAtten[i].z);
+        if (spotLight) {
+            float rho = max(0.0, dot(toLight, unity_SpotDirection[i].xyz));
+            atten *= clamp((rho - unity_LightAtten[i].x) * unity_LightAtten[i].y, 0.0, 1.0);
+        }
+        float diff = max(0.0, dot(viewN, toLight));
+        lightColor += unity_LightColor[i].rgb * (diff * atten);
+    }
+    return lightColor;
+}
+
+vec3 ShadeVertexLights(vec4 vertex, vec3 normal) {
+    return ShadeVertexLightsFull(vertex, normal, 4, false);
 }
 
 vec3 UnityWorldToViewPos(vec3 pos) {

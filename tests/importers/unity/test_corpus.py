@@ -76,6 +76,17 @@ BLANK_BY_DEFAULT = {
         "them), so both are 0",
     "builtin-2019.4/DefaultResourcesExtra/Sprites-Mask.shader":
         "ColorMask 0: a sprite mask writes the stencil only (it drew white while ColorMask was ignored)",
+    # their Category's Blend (read since Category commands reach its SubShaders) multiplies what
+    # lies behind the sphere: the black background (they drew unblended while it was dropped)
+    "builtin-2019.4/DefaultResourcesExtra/Particle Blend.shader":
+        "Blend DstColor One (a Category's): colour times the target, the black background",
+    "builtin-2019.4/DefaultResourcesExtra/Particle Multiply.shader":
+        "Blend Zero SrcColor (a Category's): the target times the colour, the black background",
+    "builtin-2019.4/DefaultResourcesExtra/Particle MultiplyDouble.shader":
+        "Blend DstColor SrcColor (a Category's): both terms times the target, the black background",
+    "builtin-2019.4/DefaultResourcesExtra/Mobile/Mobile-Particle-Multiply.shader":
+        "Blend Zero SrcColor (a Category's; a fixed-function pass): the target times the colour, the "
+        "black background",
     "builtin-2019.4/DefaultResourcesExtra/UI/UI-Lit-RefractionDetail.shader":
         "the refraction mask defaults to white, so the colour is the GrabPass of what lies behind: the "
         "black background",

@@ -48,12 +48,12 @@ def _write(tmp_path, name, text):
 
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_second_subshader_runs_with_cginclude_and_loose_property_syntax(language):
-    """The first SubShader is fixed-function (cannot run here), the second's surface program
+    """The first SubShader is fixed-function with a texture matrix (cannot run here), the second's surface program
     takes surf from the CGINCLUDE; _Tint is a 3-component colour bound to a fixed3 and
     Emission = _Tint * _Gain + _Bias exactly (the two other properties share a line)."""
     shader = parse.read_shader(HERE / "layered.shader")
     assert [p.kind for p in shader.passes] == ["surface"]
-    assert any("SubShader 2 of 2 runs" in n and "fixed-function" in n for n in shader.notes)
+    assert any("SubShader 2 of 2 runs" in n and "texture matrices" in n for n in shader.notes)
     props = shader.properties
     assert props["_Tint"].default == (0.5, 0.25, 1.0, 1.0) and props["_Tint"].attributes == ("Header(Colours)", "HDR")
     assert props["_Gain"].kind == "Float" and props["_Bias"].range == (0.0, 1.0)
@@ -145,7 +145,7 @@ struct Input { float3 worldPos; };
 void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }
 ENDCG } }""")
     path = _write(tmp_path, "fancy.shader", """Shader "My/Fancy" {
-SubShader { Pass { Lighting On Material { Diffuse (1,1,1,1) } } }
+SubShader { Pass { Lighting On Material { Diffuse (1,1,1,1) } SetTexture [_T] { matrix [_M] combine texture } } }
 Fallback "My/Plain" }""")
     shader = parse.read_shader(path)
     assert shader.passes[0].path.name == "plain.shader"
@@ -192,10 +192,14 @@ def test_outside_a_unity_project_a_shader_elsewhere_is_not_found(tmp_path, text,
 
 
 @pytest.mark.parametrize("text, message", [
-    ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { combine texture } } } FallBack "VertexLit" }',
+    ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { matrix [_M] combine texture } } } FallBack "VertexLit" }',
      'Fallback "VertexLit" is a shader pbrlab does not have'),
-    ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { combine texture } } } }',
-     "a fixed-function Pass (SetTexture)"),
+    ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { matrix [_M] combine texture } } } }',
+     "SetTexture [_MainTex] { matrix }: texture matrices are not supported"),
+    ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { combine texture * primary QUIRKY } } } }',
+     "combine: 'primary QUIRKY' is not a source"),
+    ('Shader "x" { SubShader { Pass { Material { Glow (1, 1, 1, 1) } } } }',
+     "Material { Glow }: not a fixed-function material colour"),
     ('Shader "x" { Properties { _A ("A", Range(0, 1)) = 5 } SubShader { } }', "outside its Range(0, 1)"),
     ('Shader "x" { Properties { _A ("A", Float) = nan } SubShader { } }', "is not a finite float32 number"),
     ('Shader "x" { Properties { _C ("C", Color) = (1e999, 0, 0, 1) } SubShader { } }', "not a finite float32"),

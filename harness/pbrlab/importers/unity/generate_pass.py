@@ -178,6 +178,53 @@ def _main_light(language: str) -> str:
 """.replace("vec4", "float4" if language == "hlsl" else "vec4")
 
 
+# Unity's vertex lights (a Vertex pass: legacy vertex-lit rendering, and fixed-function passes,
+# fixed_function.py): up to 8, directional first, in view space as Unity sets them
+# (unity_LightPosition: the direction to a directional light, w 0; a positional light's
+# position, w 1). A positional light's falloff (and a spot's cone) is the harness's, at the mesh
+# vertex, folded into unity_LightColor as for ForwardAdd programs (_main_light): its
+# unity_LightAtten is then (-1, 1, 0, 3e38), no further falloff, cone or range. Other passes
+# see 8 black lights (Unity: "Always: no lighting is applied").
+VERTEX_LIGHTS = 8
+
+
+def _vertex_lights(language: str) -> str:
+    def view(v: str) -> str:
+        return f"mul(unity_MatrixV, {v}).xyz" if language == "hlsl" else f"(unity_MatrixV * {v}).xyz"
+    lines = ["    for (int pbrlab_i = 0; pbrlab_i < 8; pbrlab_i++) {",
+             "        unity_LightColor[pbrlab_i] = vec4(0.0, 0.0, 0.0, 0.0);",
+             "        unity_LightPosition[pbrlab_i] = vec4(0.0, 0.0, 1.0, 0.0);",
+             "        unity_LightAtten[pbrlab_i] = vec4(-1.0, 1.0, 0.0, 3.0e38);",
+             "        unity_SpotDirection[pbrlab_i] = vec4(0.0, 0.0, 1.0, 0.0);",
+             "    }",
+             "#if defined(PBRLAB_UNITY_VERTEX_LIGHTS)",
+             f"    vec3 pbrlab_vl_world = {_world_position(language)};",
+             "    int pbrlab_n = 0;",
+             "#if PBRLAB_DIRECTIONAL_COUNT > 0",
+             "    for (int pbrlab_d = 0; pbrlab_d < PBRLAB_DIRECTIONAL_COUNT && pbrlab_n < 8; pbrlab_d++, pbrlab_n++) {",
+             "        unity_LightColor[pbrlab_n] = vec4(u_directional_radiance[pbrlab_d], 1.0);",
+             f"        unity_LightPosition[pbrlab_n] = vec4({view('vec4(-u_directional_direction[pbrlab_d], 0.0)')}, 0.0);",
+             "    }",
+             "#endif"]
+    for kind in ("point", "spot"):
+        upper = kind.upper()
+        lines += [f"#if PBRLAB_{upper}_COUNT > 0",
+                  f"    for (int pbrlab_p = 0; pbrlab_p < PBRLAB_{upper}_COUNT && pbrlab_n < 8; pbrlab_p++, pbrlab_n++) {{",
+                  f"        UnityLight pbrlab_vl = pbrlab_positional_light(u_{kind}_position[pbrlab_p], "
+                  f"u_{kind}_radiance[pbrlab_p], u_{kind}_range[pbrlab_p], pbrlab_vl_world);"]
+        if kind == "spot":
+            lines.append("        pbrlab_vl.color *= pbr_spot_attenuation(pbrlab_vl.dir, u_spot_direction[pbrlab_p], "
+                         "u_spot_cone[pbrlab_p].x, u_spot_cone[pbrlab_p].y);")
+        lines += ["        unity_LightColor[pbrlab_n] = vec4(pbrlab_vl.color, 1.0);",
+                  f"        unity_LightPosition[pbrlab_n] = vec4({view(f'vec4(u_{kind}_position[pbrlab_p], 1.0)')}, 1.0);",
+                  "    }", "#endif"]
+    lines.append("#endif")
+    text = "\n".join(lines) + "\n"
+    if language == "hlsl":
+        text = re.sub(r"\bvec([234])\b", r"float\1", text)
+    return text
+
+
 # A positional ForwardAdd light is evaluated at the surface point: the vertex stage hands the
 # mesh vertex's world position (before the pass's vertex function moves it) to the fragment.
 _POSITIONAL_ADD = "#if defined(PBRLAB_UNITY_ADD_POINT) || defined(PBRLAB_UNITY_ADD_SPOT)"
@@ -198,7 +245,8 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     outs = _outputs(vf, where)
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = {_world_position(language)};",
-            "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language)]
+            "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language),
+            _vertex_lights(language)]
     args = []
     for qual, kind, name, semantic in vf.vertex_params:
         local = f"pbrlab_arg_{name}"

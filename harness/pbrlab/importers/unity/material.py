@@ -66,6 +66,8 @@ def light_programs(unity_pass, defines: dict) -> list[tuple[dict, bool]]:
                 out += [({**defines, kind: 1, f"PBRLAB_UNITY_ADD_{kind}": i}, False)
                         for i in range(defines.get(f"PBRLAB_{kind}_COUNT", 0))]
             return out
+        if mode == "vertex":  # Unity's vertex lights (generate_pass._vertex_lights)
+            return [({**defines, "PBRLAB_UNITY_VERTEX_LIGHTS": 1}, False)]
         return [(defines, False)]
     if not unity_pass.light_keywords:
         return [(defines, False)]

@@ -21,7 +21,7 @@ from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
 from .engine_inputs import check_engine_inputs
-from . import shaderlab, texture_objects
+from . import fixed_function, shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, top_level)
@@ -191,6 +191,8 @@ def apply_state(commands, state: M.RenderState, props: dict, path: Path, warning
     for c in commands:
         where = f"{path}:{c.line}"
         word = c.word.lower()
+        if word in shaderlab.FIXED_FUNCTION:
+            continue  # fixed-function commands: fixed_function.py's (or ignored where a program draws)
         if "[" in c.args and _state_words(c.args, props, where) is None:
             warnings.append(f"{where}: {c.word} {c.args}: set by the engine at run time, not by a "
                             "property; the default state stands")
@@ -511,11 +513,14 @@ SKIPPED_LIGHT_MODES = {
     "meta": "no lightmap baking here", "deferred": "forward rendering only",
     "prepassbase": "forward rendering only", "prepassfinal": "forward rendering only",
     "motionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
-    "scenepickingpass": "an editor pass", "vertex": "the legacy vertex-lit path is not drawn",
-    "vertexlm": "the legacy vertex-lit path is not drawn", "vertexlmrgbm": "the legacy vertex-lit path is not drawn",
+    "scenepickingpass": "an editor pass",
     "picking": "an editor pass",  # the Scene view's object picking (Terrain-Utilities' "Picking")
+    # Unity draws a lightmapped object's VertexLM pass instead of its Vertex pass; here no
+    # object has a lightmap, so the Vertex pass draws (legacy vertex-lit rendering)
+    "vertexlm": "for lightmapped objects only (no lightmap here: the Vertex pass draws)",
+    "vertexlmrgbm": "for lightmapped objects only (no lightmap here: the Vertex pass draws)",
 }
-DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "")
+DRAWN_LIGHT_MODES = ("always", "forwardbase", "forwardadd", "srpdefaultunlit", "vertex", "")
 
 
 @dataclass(frozen=True)
@@ -678,6 +683,7 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
     path = layout.path
     passes = []
     first_note = len(notes)
+    forward = any(item[0] == "pass" and item[1].light_mode.lower() == "forwardbase" for item in sub.items)
     for item in sub.items:
         kind = item[0]
         if kind == "program":
@@ -696,6 +702,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             warnings.extend(shader.warnings)
             shader.warnings = warnings
             passes.append(shader)
+        elif kind == "pass" and item[1].light_mode.lower() == "vertex" and forward:
+            notes.append(f"{path}:{item[1].line}: Pass (LightMode Vertex) skipped: its SubShader has "
+                         "ForwardBase passes, which Unity's forward path draws instead")
         elif kind == "pass":
             vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
             if vf is not None:
@@ -724,7 +733,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     """The vertex/fragment pass of ``Pass { ... }`` in ``sub``, or None where the harness
     skips it (a LightMode it does not draw, a depth-only pass), with a note saying so."""
     path = layout.path
-    mode = p.tags.get("LightMode", "")
+    mode = p.light_mode
     label = f"Pass{' ' + repr(p.name) if p.name else ''}"
     if mode.lower() in pipeline.skipped:
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {pipeline.skipped[mode.lower()]}")
@@ -732,18 +741,26 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     if mode.lower() not in pipeline.drawn:
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
         return None
-    if p.fixed_function:
-        word, line = p.fixed_function[0]
-        raise UnityShaderError(f"{path}:{line}: a fixed-function Pass ({word}): pbrlab runs "
-                               "programmable passes only")
+    if p.fixed_function and p.program is not None:
+        # a program draws the pass: Unity ignores its fixed-function commands (docs, "ShaderLab:
+        # legacy lighting" / "legacy texture combining" apply to passes without one)
+        words = ", ".join(dict.fromkeys(w for w, _ in p.fixed_function))
+        notes.append(f"{path}:{p.fixed_function[0][1]}: {label}: {words} ignored: a program draws this pass")
     if p.program is None:
         state = M.RenderState()
         apply_state(sub.state + p.state, state, props, path, [], surface=False)
-        if state.color_mask == "0":
+        if not p.fixed_function and state.color_mask == "0":
             notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
             return None
-        raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
-                               "fixed-function default, which pbrlab does not have")
+        if pipeline is not BUILTIN:
+            raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
+                                   "runs programmable passes only")
+        # Unity generates a program for a fixed-function pass (a pass with no command at all
+        # draws white); so does pbrlab (fixed_function.py), which the front end then reads
+        outer = [c for c in sub.state if c.word.lower() in shaderlab.FIXED_FUNCTION]
+        vf = parse_pass(fixed_function.translate(outer + p.fixed_commands, props, path), path, p.line, p)
+        apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+        return vf
     if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
                                + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN

@@ -74,6 +74,10 @@ def _function_signature(masked: str, name: str, where_of):
     return m.group(1), params, rest.group(1) or "", m.start()
 
 
+# Upper-case macro words (with their arguments) at the start of a struct member's text.
+_LEADING_MACROS = re.compile(r"^(?:[A-Z][A-Z0-9_]*(?:\s*\([^()]*\))?\s+)+(?=[A-Za-z_])")
+
+
 def _structs(masked: str) -> dict:
     out = {}
     for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
@@ -81,7 +85,9 @@ def _structs(masked: str) -> dict:
         members = []
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
         for decl in body.split(";"):
-            decl = decl.strip()
+            # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
+            # lead the member written after them: cut them off so that member is read
+            decl = _LEADING_MACROS.sub("", decl.strip())
             if not decl or "(" in decl:  # a macro (UNITY_FOG_COORDS(1), SHADOW_COORDS(2)): no member here
                 continue
             semantic = ""
@@ -151,7 +157,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         found[role] = sig
     structs = _structs(everything)
     vf = M.VertexFragmentPass(
-        path=path, name=block.name, light_mode=block.tags.get("LightMode", "Always"),
+        path=path, name=block.name, light_mode=block.light_mode or "Always",
         program=program, program_line=first_line, vertex=vertex, fragment=fragment,
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],

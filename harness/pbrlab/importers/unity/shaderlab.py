@@ -28,7 +28,7 @@ _TOKEN = re.compile(r'"[^"\n]*"|[A-Za-z_][\w.]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][
 # Commands of a Pass that belong to the fixed-function pipeline (no program runs them).
 FIXED_FUNCTION = frozenset(w.lower() for w in (
     "SetTexture", "Material", "Lighting", "SeparateSpecular", "ColorMaterial", "BindChannels",
-    "AlphaTest", "Combine"))
+    "AlphaTest", "Combine", "Color"))
 
 
 # ShaderLab's commands: a command's arguments end where the next command begins (several may
@@ -37,7 +37,7 @@ COMMANDS = frozenset(w.lower() for w in (
     "Cull", "ZWrite", "ZTest", "Blend", "BlendOp", "ColorMask", "Offset", "Lighting", "Fog", "AlphaTest",
     "AlphaToMask", "Stencil", "Name", "Tags", "LOD", "Pass", "UsePass", "GrabPass", "SetTexture",
     "Material", "SeparateSpecular", "ColorMaterial", "BindChannels", "Conservative", "ZClip", "SubShader",
-    "Fallback", "CustomEditor", "Properties", "Dependency"))
+    "Fallback", "CustomEditor", "Properties", "Dependency", "Color"))
 
 
 class ShaderLabError(PbrlabError):
@@ -71,8 +71,9 @@ class Block:
 @dataclass
 class StateCommand:
     word: str             # as written (Cull, ZWrite, Blend, ...)
-    args: str             # the rest of its line
+    args: str             # the rest of its line ("{...}" for a block)
     line: int
+    body: str = ""        # a block's text between its braces (Material { ... }, SetTexture [_T] { ... })
 
 
 @dataclass
@@ -83,6 +84,13 @@ class PassBlock:
     state: list = field(default_factory=list)       # [StateCommand]
     program: Block | None = None
     fixed_function: list = field(default_factory=list)  # [(word, line)]
+    fixed_commands: list = field(default_factory=list)  # [StateCommand]: the fixed-function commands
+                                                        # in order, with their blocks' text
+
+    @property
+    def light_mode(self) -> str:
+        """Its LightMode tag ("" when none); tag names are case-insensitive ("LIGHTMODE")."""
+        return next((v for k, v in self.tags.items() if k.lower() == "lightmode"), "")
 
 
 @dataclass
@@ -108,6 +116,8 @@ class ShaderLabFile:
     subshaders: list = field(default_factory=list)
     fallback: str | None = None                     # None: none given; "Off" as "off"
     fallback_line: int = 0
+    category_state: list = field(default_factory=list)  # [StateCommand] of a Category { ... }
+                                                        # (every SubShader inside reads them first)
 
     def program_text(self, block: Block, subshader: SubShaderBlock | None) -> tuple[str, int]:
         """(text, first line): ``block``'s code after every CGINCLUDE of its language that
@@ -158,6 +168,7 @@ class _Tokens:
             self.items.append((m.group(0), line, m.start()))
         self.blocks = starts
         self.i = 0
+        self.masked = masked
 
     def peek(self, k: int = 0):
         j = self.i + k
@@ -187,6 +198,11 @@ class _Tokens:
             depth += {"{": 1, "}": -1}.get(tok, 0)
             if depth == 0:
                 return offset
+
+    def block_body(self) -> str:
+        """From a '{' to after its '}': the text between them."""
+        open_at = self.peek()[2]
+        return self.masked[open_at + 1:self.skip_braces()]
 
     def rest_of_line(self, line: int) -> str:
         words = []
@@ -238,12 +254,11 @@ def _pass(t: _Tokens, line: int) -> PassBlock:
             p.tags = t.tags()
         elif word in FIXED_FUNCTION:
             p.fixed_function.append((tok, tline))
-            t.rest_of_line(tline)
-            if t.peek()[0] == "{":
-                t.skip_braces()
+            args = t.rest_of_line(tline)
+            body = t.block_body() if t.peek()[0] == "{" else ""
+            p.fixed_commands.append(StateCommand(tok, args, tline, body))
         elif t.peek()[0] == "{":   # Stencil { ... }, Fog { ... }
-            p.state.append(StateCommand(tok, "{...}", tline))
-            t.skip_braces()
+            p.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
         else:
             p.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
 
@@ -293,8 +308,7 @@ def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
             t.expect("}")
             s.items.append(("grabpass", name or "_GrabTexture", tline))
         elif t.peek()[0] == "{":
-            s.state.append(StateCommand(tok, "{...}", tline))
-            t.skip_braces()
+            s.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
         else:
             s.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
 
@@ -337,7 +351,9 @@ def read_layout(text: str, path: Path) -> ShaderLabFile:
             layout.properties_span = (open_at + 1, close_at)
             layout.properties_line = tline
         elif word == "subshader":
-            layout.subshaders.append(_subshader(t, tline))
+            sub = _subshader(t, tline)
+            sub.state[:0] = layout.category_state   # a Category's commands come first
+            layout.subshaders.append(sub)
         elif word == "fallback":
             value = t.next()[0]
             layout.fallback = "off" if (value or "").lower() == "off" else _string(value)
@@ -354,7 +370,11 @@ def read_layout(text: str, path: Path) -> ShaderLabFile:
             if t.peek()[0] == "=":
                 t.next()
                 t.next()
-        elif t.peek()[0] == "{":
+        elif word == "tags" and t.peek()[0] == "{":   # a Category's tags: not the passes' state
             t.skip_braces()
+        elif t.peek()[0] == "{":   # a Category's Material { ... }, Fog { ... }, BindChannels { ... }
+            layout.category_state.append(StateCommand(tok, "{...}", tline, t.block_body()))
+        elif word in COMMANDS:     # a Category's Blend, Cull, Lighting, ...
+            layout.category_state.append(StateCommand(tok, t.rest_of_line(tline), tline))
         else:
             t.rest_of_line(tline)

@@ -1,7 +1,8 @@
 Shader "pbrlab tests/Layered" {
 // ShaderLab as Unity accepts it: type names in any case, attributes on their own line, a
 // three-component colour, several properties on one line, a CGINCLUDE holding the surface
-// function, a first SubShader this harness cannot run (a fixed-function pass) and a second
+// function, a first SubShader this harness cannot run (a fixed-function pass with a texture
+// matrix) and a second
 // that it can.
 Properties {
     [Header(Colours)]
@@ -17,7 +18,7 @@ struct Input { float3 worldPos; };
 void surf(Input IN, inout SurfaceOutput o) { o.Emission = _Tint * _Gain + _Bias; o.Albedo = 0; }
 ENDCG
 SubShader {
-    Pass { SetTexture [_MainTex] { combine texture } }
+    Pass { SetTexture [_MainTex] { matrix [_Tint] combine texture } }
 }
 SubShader {
     LOD 200
