@@ -231,7 +231,7 @@ def hlsl_renamed(vf, glsl: str) -> str:
 def glsl_stage_macros(vf, in_geometry: bool) -> str:
     """PBRLAB_GEOMETRY_APPEND / _RESTART: the geometry stage's (an emitted vertex, the end of a
     strip) or, in the vertex and fragment stages, nothing."""
-    if not in_geometry:
+    if not in_geometry:  # (vf may have no geometry stage: a geometry function no pragma names)
         return "#define PBRLAB_GEOMETRY_APPEND(v)\n#define PBRLAB_GEOMETRY_RESTART()\n"
     g = vf.geometry
     writes = []

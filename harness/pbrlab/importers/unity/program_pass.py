@@ -103,7 +103,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             else:
                 include, virtual = program_include(vf)
                 text = _stage_text(stage_vf, "glsl", stage, defines, blended, include, vf.path.name,
-                                   geometry_stage.glsl_stage_macros(vf, False) if geometry else "")
+                                   geometry_stage.glsl_stage_macros(vf, False))  # (also for an unused geom)
                 if geometry and stage == "fragment":
                     text = geometry_stage.fragment_inputs_renamed(text)
                 stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
