@@ -104,9 +104,13 @@ def glsl_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragm
         program_line=first_line, vertex="main", fragment="main", vertex_params=[], vertex_return="void",
         vertex_return_semantic="", fragment_params=[], fragment_return="void", fragment_return_semantic="",
         structs={}, language=LANGUAGE)
-    vf.warnings.append(f"{path}:{first_line}: a GLSLPROGRAM: Unity compiles it for OpenGL only; both of "
-                       "pbrlab's languages run the GLSL as written")
     return vf
+
+
+def note(path: Path, first_line: int) -> str:
+    """The note a drawn GLSLPROGRAM pass gets (the shader's notes)."""
+    return (f"{path}:{first_line}: a GLSLPROGRAM: Unity compiles it for OpenGL only; both of pbrlab's "
+            "languages run the GLSL as written")
 
 
 # VertexFragmentPass.language of a GLSLPROGRAM pass (program_pass builds it here).

@@ -717,9 +717,10 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         raise UnityShaderError(f"{path}:{p.line}: a Pass without a program draws Unity's "
                                "fixed-function default, which pbrlab does not have")
     if p.program.language == "GLSL":  # a GLSL snippet, in either pipeline (glslprogram.py)
-        from .glslprogram import glsl_pass, implicit_samplers
+        from .glslprogram import glsl_pass, implicit_samplers, note
         text, first = layout.program_text(p.program, sub)
         vf = glsl_pass(text, path, first, p)
+        notes.append(note(path, first))
         for kind, name in implicit_samplers(text):  # a texture Unity binds by default, as for Cg
             props.setdefault(name, M.Property(name, name, kind, "white", ("implicit",)))
         apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
