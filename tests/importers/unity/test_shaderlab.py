@@ -160,8 +160,11 @@ Fallback "My/Plain" }""")
     ('Shader "x" { Properties { _A ("A", Float) = nan } SubShader { } }', "is not a finite float32 number"),
     ('Shader "x" { Properties { _C ("C", Color) = (1e999, 0, 0, 1) } SubShader { } }', "not a finite float32"),
     ('Shader "x" { Properties { _A ("A", Float) = 1 junk } SubShader { } }', "cannot read this Properties text"),
-    ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma geometry g\n#pragma fragment f\nENDCG } } }',
-     "#pragma geometry: a geometry shader is not supported"),
+    ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma hull h\n#pragma fragment f\nENDCG } } }',
+     "#pragma hull: a hull (tessellation) shader is not supported"),
+    ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma geometry g\n#pragma fragment f\n'
+     'float4 v(float4 p : POSITION) : SV_POSITION { return p; }\nfloat4 f() : SV_Target { return 1; }\nENDCG } } }',
+     "#pragma geometry g: no function void g(...) is defined"),
     ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma fragment f\nENDCG } } }',
      "#pragma vertex v: no function v(...) is defined"),
     ('Shader "x" { SubShader { CGPROGRAM\nfloat4 x;\n } }', "CGPROGRAM without ENDCG"),
