@@ -19,6 +19,7 @@ import pytest
 from pbrlab.checking import unity_corpus as corpus
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.loader import parse_scene
+from pbrlab.importers.unity import UnityShaderNote
 from pbrlab.render.renderer import render_scene
 
 CAMERA = {"position": [0.0, 1.3, 1.5], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [64, 64]}
@@ -30,6 +31,8 @@ TINT = (1.0, 0.5, 0.25)
 # per NDC unit) times |NDC| <= 1: (10 + 10 + 10) * 6e-8 * 1.2 = 2.2e-6, bound 3e-6.
 # Measured on llvmpipe: 3.7e-7 (both languages; 2 of 4096 pixel centres near the edge left out).
 UV_BOUND = 3e-6
+# Every drawn snippet notes that both languages run its GLSL (checked in the first test).
+pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnityShaderNote")
 # A pixel centre this close (in pixels) to the plane's edge may fall either way under the
 # rasteriser's snapping (llvmpipe: 1/256 px); such pixels are left out.
 EDGE_PX = 0.02
@@ -108,8 +111,9 @@ def problems(image, colour, inside, near_edge) -> list[str]:
 
 @pytest.mark.parametrize("language", ["glsl", "hlsl"])
 def test_a_snippet_draws_its_uvs_where_float64_says(tmp_path, language):
-    """Both languages run the GLSL as written (Unity has no HLSL of a GLSLPROGRAM)."""
-    image = _render(tmp_path, language, "uv")
+    """Both languages run the GLSL as written (Unity has no HLSL of a GLSLPROGRAM), and say so."""
+    with pytest.warns(UnityShaderNote, match=r"uv\.shader:\d+: a GLSLPROGRAM: Unity compiles it for OpenGL only"):
+        image = _render(tmp_path, language, "uv")
     colour, inside, near_edge = expected(image.shape[:2])
     assert inside.mean() > 0.3
     assert problems(image, colour, inside, near_edge) == []
@@ -175,3 +179,14 @@ def test_what_desktop_gl_lacks_is_named(tmp_path, head, named, language):
     shader.write_text(textwrap.dedent(text.format(name="refused", tint="1, 1, 1", colour="vec4(1.0)")))
     with pytest.raises(PbrlabError, match=r"refused\.shader:\d+: .*" + named):
         render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language)
+
+
+def test_the_names_before_unity_5_4_are_its_matrices(tmp_path):
+    """``_Object2World`` (Unity 5.4 renamed it unity_ObjectToWorld) takes the plane's points to
+    the world: their (x, z) there give the UVs of the expectation."""
+    text = SNIPPET.replace("uniform vec4 _Tint;", "uniform vec4 _Tint; uniform mat4 _Object2World; varying vec3 wp;")
+    text = text.replace("uv = gl_MultiTexCoord0.xy;", "wp = (_Object2World * gl_Vertex).xyz;")
+    colour = f"vec4(vec2(wp.x / {SIZE} + 0.5, 0.5 - wp.z / {SIZE}) * _Tint.xy, _Tint.z, 1.0)"
+    image = _render(tmp_path, "glsl", "old_names", text=text.format(name="old_names", colour=colour,
+                                                                  tint=", ".join(map(str, TINT))))
+    assert problems(image, *expected(image.shape[:2])) == []

@@ -166,14 +166,13 @@ def _members(vf, kind: str, where: str) -> list:
 
 
 def _canonical(semantic: str) -> str:
-    from .generate_pass import canonical
+    from .generate_pass import canonical  # (generate_pass imports port, which imports this module)
     return canonical(semantic)
 
 
-def vertex_pass(vf):
-    """The pass as the vertex entry sees it: it passes on the geometry input struct's
-    members (its own outputs), with or without a position."""
-    return vf
+def _fit(expr: str, have: int, want: int, w: float = 0.0) -> str:
+    from .generate_pass import fit
+    return fit(expr, have, want, "glsl", w)
 
 
 def fragment_pass(vf):
@@ -221,6 +220,11 @@ def hlsl_renamed(vf, glsl: str) -> str:
         for _, member, semantic in _members(vf, kind, g.where):
             if semantic and _canonical(semantic) not in _POSITION:
                 glsl = re.sub(r"\b" + re.escape(f"{param}_{member}") + r"\b", prefix + _canonical(semantic), glsl)
+    unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
+                if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))]
+    if unlinked:  # spirv-cross named a varying otherwise than <param>_<member>: say so, not a link error
+        raise UnityShaderError(f"{g.where}: {g.name}(): pbrlab cannot link the geometry stage's "
+                               f"{', '.join(unlinked)} to the vertex or fragment stage")
     instance = re.search(r"uniform _Global (\w+);", glsl)
     if instance:
         glsl = re.sub(r"\b_Global\b", "_GlobalGeometry", glsl)
@@ -235,24 +239,17 @@ def glsl_stage_macros(vf, in_geometry: bool) -> str:
         return "#define PBRLAB_GEOMETRY_APPEND(v)\n#define PBRLAB_GEOMETRY_RESTART()\n"
     g = vf.geometry
     writes = []
-    for _, member, semantic in _members(vf, g.output_type, g.where):
+    for mtype, member, semantic in _members(vf, g.output_type, g.where):
         if not semantic:
             continue
         s, name = _canonical(semantic), f"pbrlab_emitted.{_glsl_name(member)}"
         if s in _POSITION:
-            writes.append(f"gl_Position = {_fit4(name, vf, g.output_type, member)};")
+            writes.append(f"gl_Position = {_fit(name, component_count(mtype), 4, 1.0)};")
         else:
             writes.append(f"pbrlab_gvary_{s} = {name};")
     body = " ".join([f"{g.output_type} pbrlab_emitted = (v);", *writes, "EmitVertex();"])
     return (f"#define PBRLAB_GEOMETRY_APPEND(v) {{ {body} }}\n"
             "#define PBRLAB_GEOMETRY_RESTART() EndPrimitive()\n")
-
-
-def _fit4(expr: str, vf, kind: str, member: str) -> str:
-    mtype = next(t for t, n, _ in vf.structs[kind].members if n == member)
-    n = component_count(mtype)
-    from .generate_pass import fit
-    return fit(expr, n, 4, "glsl", 1.0)
 
 
 def glsl_declarations(vf, vertex_outputs: dict) -> str:
@@ -280,13 +277,12 @@ def glsl_entry(vf, main_light: str, vertex_outputs: dict) -> str:
             s = _canonical(semantic) if semantic else ""
             target = f"    pbrlab_in[{k}].{_glsl_name(member)} = "
             n = component_count(mtype)
-            from .generate_pass import fit
             if s in _POSITION:
-                body.append(target + fit(f"gl_in[{k}].gl_Position", 4, n, "glsl") + ";")
+                body.append(target + _fit(f"gl_in[{k}].gl_Position", 4, n) + ";")
             elif s in vertex_outputs:
                 body.append(target + f"pbrlab_vary_{s}[{k}];")
-            elif n:
-                body.append(target + (f"{port_code_types(mtype)}(0)" if n > 1 else f"{port_code_types(mtype)}(0)") + ";")
+            elif n:  # a member the vertex stage does not write: 0, as an unwritten HLSL input
+                body.append(target + f"{port_code_types(mtype)}(0);")
     args = []
     for role, text, name in g.params:
         if role == "input":

@@ -75,6 +75,9 @@ _MATRICES = {
     "gl_ModelViewMatrixInverseTranspose": "transpose(unity_WorldToObject * unity_MatrixInvV)",
     "gl_NormalMatrix": "mat3(transpose(unity_WorldToObject * unity_MatrixInvV))",
 }
+# Unity 5.4 renamed these built-ins (its upgrade guide); a snippet of before still declares the
+# old names, which Unity kept setting.
+_RENAMED = {"_Object2World": "unity_ObjectToWorld", "_World2Object": "unity_WorldToObject"}
 _COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 
 
@@ -149,6 +152,8 @@ def _spell(program: str, stage: str) -> str:
         code = re.sub(r"\battribute\b", "in", code)
         code = re.sub(r"\btexture(?:2D|Cube)\b", "texture", code)
         code = re.sub(r"\bgl_FragColor\b", "pbrlab_frag_color", code)
+        for old, new in _RENAMED.items():
+            code = re.sub(r"\b" + old + r"\b", new, code)
         code = re.sub(r"\bgl_FragData\s*\[\s*0\s*\]", "pbrlab_frag_color", code)
         for name, spelled in _MATRICES.items():
             code = re.sub(r"\b" + name + r"\b", spelled, code)
@@ -170,7 +175,9 @@ def stage_text(vf, stage: str, defines: dict, blended: bool) -> tuple:
     snippet on its own lines, then the harness's main around the snippet's: (head, snippet, tail)."""
     from .generate import _defines
     from .generate_pass import _POSITIONAL_ADD, _main_light, _world_position
-    code = blank_comments(vf.program)
+    code = _code_only(blank_comments(vf.program), lambda c: c)
+    for old, new in _RENAMED.items():
+        code = re.sub(r"\b" + old + r"\b", new, code)
     head = ["#version 330 core", _defines({**defines, stage: 1, "SHADER_API_GLCORE": 1}),
             '#include "scene_shading.glsl"']
     head += [f"uniform {t} {n};" for n, t in _GLOBALS.items() if not _declared(code, n)]
