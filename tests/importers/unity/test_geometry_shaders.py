@@ -184,3 +184,36 @@ def test_what_is_not_run_is_named(tmp_path, change, named):
     with pytest.raises(PbrlabError, match=r"refused\.shader:\d+: .*" + named.replace("[", r"\[").replace("(", r"\(")
                        .replace(")", r"\)").replace("]", r"\]")):
         render_scene(parse_scene(data, "t", tmp_path), language="glsl")
+
+
+# The same copies made by functions of the program that take the stream (HLSL allows an
+# ``inout TriangleStream<T>`` parameter anywhere).
+HELPERS = """
+        void emit(inout TriangleStream<g2f> s, v2g v, float shift, float ident) {{
+            g2f o;
+            o.pos = v.pos;
+            o.pos.x += shift * o.pos.w;
+            o.colour = float3(v.uv, ident);
+            s.Append(o);
+        }}
+        void copy(v2g IN[3], inout TriangleStream<g2f> s, float shift, float ident) {{
+            for (int k = 0; k < 3; k++) emit(s, IN[k], shift, ident);
+            s.RestartStrip();
+        }}
+        [maxvertexcount(6)]
+        void geom(triangle v2g IN[3], inout TriangleStream<g2f> triStream) {{
+            copy(IN, triStream, -0.45, 0.25);
+            copy(IN, triStream, 0.45, 0.75);
+        }}
+"""
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_stream_handed_to_functions_emits_the_same(tmp_path, language):
+    text = COPIES.replace(COPIES[COPIES.index("        [maxvertexcount(6)]"):COPIES.index("        float4 frag")], HELPERS)
+    shader = tmp_path / "helpers.shader"
+    shader.write_text(textwrap.dedent(text.format(name="helpers", pragma="#pragma geometry geom")))
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    assert copies_problems(image) == []

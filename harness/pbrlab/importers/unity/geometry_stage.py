@@ -28,8 +28,8 @@ fragment stages define them as nothing (the geometry function is dead code there
 ``main`` fills the input array from ``gl_in[k].gl_Position`` and the vertex stage's outputs
 and ``SV_PrimitiveID`` from ``gl_PrimitiveIDIn``, and calls the function.
 
-A stream passed on to another function (``void emit(inout TriangleStream<T> s)``) is not
-spelled: its use is left for the compiler to name.
+A function of the program that takes the stream (``void emit(inout TriangleStream<T> s, ...)``)
+loses that parameter too, and a call handing the stream on (``emit(stream, ...)``) that argument.
 """
 
 from __future__ import annotations
@@ -97,6 +97,11 @@ def spell_for_glsl(text: str) -> str:
     for name in streams:
         text = re.sub(r"\b" + name + r"\s*\.\s*Append\s*\(", "PBRLAB_GEOMETRY_APPEND(", text)
         text = re.sub(r"\b" + name + r"\s*\.\s*RestartStrip\s*\(\s*\)", "PBRLAB_GEOMETRY_RESTART()", text)
+        # the stream handed on to a function of the program (whose parameter is dropped above)
+        keep = lambda m: "\n" * m.group(0).count("\n")
+        text = re.sub(r"(?<=\()\s*" + name + r"\s*,\s*", keep, text)
+        text = re.sub(r"\s*,\s*" + name + r"\s*(?=[,)])", keep, text)
+        text = re.sub(r"(?<=\()\s*" + name + r"\s*(?=\))", keep, text)
     return text
 
 
