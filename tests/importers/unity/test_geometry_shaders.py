@@ -217,3 +217,17 @@ def test_a_stream_handed_to_functions_emits_the_same(tmp_path, language):
     data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
     image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
     assert copies_problems(image) == []
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_position_passes_as_sv_position(tmp_path, language):
+    """A struct member with the legacy POSITION semantic is the clip position between the stages
+    (as SV_Position), also into and out of the geometry stage."""
+    text = COPIES.replace("SV_POSITION", "POSITION").format(
+        name="position", pragma="#pragma geometry geom", left=-0.45, right=0.45, colour="IN[k].uv", primitive_id="")
+    shader = tmp_path / "position.shader"
+    shader.write_text(textwrap.dedent(text))
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    assert copies_problems(image) == []

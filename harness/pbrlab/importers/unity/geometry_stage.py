@@ -310,7 +310,10 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
     head = "\n".join(generate.prelude(language, defines, vertex_stage=True))
     name = f"{vf.path.name} (generated {language} geometry stage)"
     if language == "hlsl":
-        text = (head + "\n" + hlsl.line_directive(vf.program_line, display) + "\n" + program_text + "\n"
+        # POSITION passes as SV_Position between Unity's stages (as the vertex entry treats it); in
+        # glslang's geometry stage only SV_Position is gl_in[k].gl_Position / gl_Position
+        text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
+                + program_text + "\n"
                 + hlsl_entry(vf, _main_light("hlsl")))
         spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main")
         glsl = hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True))
