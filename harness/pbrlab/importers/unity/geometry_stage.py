@@ -198,22 +198,53 @@ def _glsl_name(name: str) -> str:
     return RENAME_PREFIX + name if name in RESERVED else name
 
 
-def refuse_unsupported(vf, defines: dict) -> None:
-    """A ForwardAdd pass of a positional light reads the surface point the vertex stage hands
-    on; a geometry stage makes new vertices, whose point that is not."""
-    if any(k in defines for k in ("PBRLAB_UNITY_ADD_POINT", "PBRLAB_UNITY_ADD_SPOT")):
-        raise UnityShaderError(f"{vf.geometry.where}: a geometry shader in a ForwardAdd pass lit by a point "
-                               "or spot light is not supported by pbrlab (the light's falloff needs the "
-                               "surface point of each emitted vertex)")
+# A ForwardAdd pass of a point or spot light folds the light's falloff into _LightColor0 at the
+# surface point (generate_pass._main_light). Behind a geometry stage the fragment's point is
+# that of the emitted vertices, which the stage writes from each one's clip position: clip =
+# P (e, 1) for the eye point e, of whose four rows three are solved for e (x, y and, for a
+# perspective P, whose last row is (0, 0, -1, 0), w; for an orthographic one, z): the depth row
+# of a perspective P is left out, where float32 loses (far/near) times its precision (measured
+# 2e-3 relative through the inverse of P at near 1e-4); then world = V^-1 (e, 1). The geometry
+# function's own _LightColor0 is the light at its triangle's first vertex (the point the vertex
+# stage gives).
+POSITIONAL_ADD = "defined(PBRLAB_UNITY_ADD_POINT) || defined(PBRLAB_UNITY_ADD_SPOT)"
+_WORLD_OF_CLIP = """vec3 pbrlab_world_of_clip(vec4 clip_position) {
+    mat4 p = glstate_matrix_projection;
+    int r = p[3][3] == 0.0 ? 3 : 2;
+    mat3 rows = transpose(mat3(vec3(p[0][0], p[1][0], p[2][0]), vec3(p[0][1], p[1][1], p[2][1]),
+                               vec3(p[0][r], p[1][r], p[2][r])));
+    vec3 eye = inverse(rows) * (vec3(clip_position.x, clip_position.y, clip_position[r]) - vec3(p[3][0], p[3][1], p[3][r]));
+    return (unity_MatrixInvV * vec4(eye, 1.0)).xyz;
+}
+"""
 
 
-def hlsl_entry(vf, main_light: str) -> str:
-    """The HLSL geometry entry: the user's parameters, the pass's light, a call of geom."""
+def positional_add(defines: dict) -> bool:
+    return any(k in defines for k in ("PBRLAB_UNITY_ADD_POINT", "PBRLAB_UNITY_ADD_SPOT"))
+
+
+def hlsl_entry(vf, main_light: str, world_register: int) -> str:
+    """The HLSL geometry entry: the user's parameters (and, for a positional ForwardAdd light,
+    the vertex stage's world points, its TEXCOORD ``world_register``), the pass's light, a
+    call of geom."""
     g = vf.geometry
+    count = PRIMITIVES[g.primitive][1]
     params = ", ".join(text for _, text, _ in g.params)
     args = ", ".join(name for _, _, name in g.params)
-    return (f"[maxvertexcount({g.max_vertices})]\nvoid pbrlab_geometry_main({params}) {{\n"
+    return (f"[maxvertexcount({g.max_vertices})]\nvoid pbrlab_geometry_main({params}\n#if {POSITIONAL_ADD}\n"
+            f", {g.primitive} float3 pbrlab_vary_world_position[{count}] : TEXCOORD{world_register}\n#endif\n) {{\n"
+            f"#if {POSITIONAL_ADD}\n    float3 pbrlab_world_position = pbrlab_vary_world_position[0];\n#endif\n"
             f"{main_light}    {g.name}({args});\n}}\n")
+
+
+def hlsl_world_written(glsl: str) -> str:
+    """The spirv-cross geometry stage of a positional ForwardAdd light writing each emitted
+    vertex's world point for the fragment (POSITIONAL_ADD)."""
+    declarations = ("uniform mat4 unity_MatrixInvV;\nuniform mat4 glstate_matrix_projection;\n"
+                    "out vec3 pbrlab_gvary_world_position;\n" + _WORLD_OF_CLIP)
+    glsl = re.sub(r"^(layout\([^)]*max_vertices[^)]*\) out;\n)", lambda m: m.group(1) + declarations, glsl,
+                  count=1, flags=re.M)
+    return glsl.replace("EmitVertex();", "pbrlab_gvary_world_position = pbrlab_world_of_clip(gl_Position); EmitVertex();")
 
 
 def hlsl_renamed(vf, glsl: str) -> str:
@@ -226,7 +257,8 @@ def hlsl_renamed(vf, glsl: str) -> str:
             if semantic and _canonical(semantic) not in _POSITION:
                 glsl = re.sub(r"\b" + re.escape(f"{param}_{member}") + r"\b", prefix + _canonical(semantic), glsl)
     unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
-                if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))]
+                if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))
+                and m.group(1) != "pbrlab_vary_world_position"]
     if unlinked:  # spirv-cross named a varying otherwise than <param>_<member>: say so, not a link error
         raise UnityShaderError(f"{g.where}: {g.name}(): pbrlab cannot link the geometry stage's "
                                f"{', '.join(unlinked)} to the vertex or fragment stage")
@@ -252,8 +284,11 @@ def glsl_stage_macros(vf, in_geometry: bool) -> str:
             writes.append(f"gl_Position = {_fit(name, component_count(mtype), 4, 1.0)};")
         else:
             writes.append(f"pbrlab_gvary_{s} = {name};")
-    body = " ".join([f"{g.output_type} pbrlab_emitted = (v);", *writes, "EmitVertex();"])
-    return (f"#define PBRLAB_GEOMETRY_APPEND(v) {{ {body} }}\n"
+    body = " ".join([f"{g.output_type} pbrlab_emitted = (v);", *writes, "PBRLAB_GEOMETRY_WORLD(); EmitVertex();"])
+    return (f"#if {POSITIONAL_ADD}\nin vec3 pbrlab_vary_world_position[];\nout vec3 pbrlab_gvary_world_position;\n"
+            + _WORLD_OF_CLIP + "#define PBRLAB_GEOMETRY_WORLD() pbrlab_gvary_world_position = "
+            "pbrlab_world_of_clip(gl_Position)\n#else\n#define PBRLAB_GEOMETRY_WORLD()\n#endif\n"
+            f"#define PBRLAB_GEOMETRY_APPEND(v) {{ {body} }}\n"
             "#define PBRLAB_GEOMETRY_RESTART() EndPrimitive()\n")
 
 
@@ -276,7 +311,8 @@ def glsl_entry(vf, main_light: str, vertex_outputs: dict) -> str:
     """The GLSL geometry stage's main (module docstring)."""
     g = vf.geometry
     count = PRIMITIVES[g.primitive][1]
-    body = [main_light, f"    {g.input_type} pbrlab_in[{count}];"]
+    body = [f"#if {POSITIONAL_ADD}", "    vec3 pbrlab_world_position = pbrlab_vary_world_position[0];", "#endif",
+            main_light, f"    {g.input_type} pbrlab_in[{count}];"]
     for k in range(count):
         for mtype, member, semantic in _members(vf, g.input_type, g.where):
             s = _canonical(semantic) if semantic else ""
@@ -306,7 +342,6 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
     from ...gpu import hlsl, shaders
     from . import generate
     from .generate_pass import _main_light, varyings
-    refuse_unsupported(vf, defines)
     head = "\n".join(generate.prelude(language, defines, vertex_stage=True))
     name = f"{vf.path.name} (generated {language} geometry stage)"
     if language == "hlsl":
@@ -314,9 +349,11 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
         # glslang's geometry stage only SV_Position is gl_in[k].gl_Position / gl_Position
         text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
                 + program_text + "\n"
-                + hlsl_entry(vf, _main_light("hlsl")))
+                + hlsl_entry(vf, _main_light("hlsl"), len(varyings(vf, vf.geometry.where))))
         spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main")
         glsl = hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True))
+        if positional_add(defines):
+            glsl = hlsl_world_written(glsl)
         return (shaders.Source(glsl, [f"{name} (GLSL from spirv-cross)"]),
                 include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
     outputs = dict(varyings(vf, vf.geometry.where))
