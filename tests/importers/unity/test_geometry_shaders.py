@@ -295,3 +295,14 @@ def test_a_point_light_is_evaluated_at_the_emitted_surface(tmp_path, language):
         return (np.abs(image - plain)[..., :3].max(-1) / np.maximum(plain[..., :3].max(-1), 1e-3))[covered].max()
     assert worst(geometry) <= ADD_BOUND
     assert worst(moved) > ADD_BOUND
+
+
+def test_the_spelling_keeps_to_the_functions_that_take_a_stream():
+    """A variable of another function named as a stream parameter keeps its uses."""
+    text = ("float2 f(float x) { float s, c; sincos(x, s, c); return float2(s, c); }\n"
+            "void emit(inout TriangleStream<g2f> s, g2f o) { s.Append(o); }\n"
+            "void geom(triangle v2g IN[3], inout TriangleStream<g2f> s) { emit(s, o); }\n")
+    spelled = spell_for_glsl(text)
+    assert "sincos(x, s, c); return float2(s, c);" in spelled
+    assert "void emit( g2f o) { PBRLAB_GEOMETRY_APPEND(o); }" in spelled.replace("  ", " ")
+    assert "{ emit(o); }" in spelled

@@ -39,7 +39,7 @@ import re
 from dataclasses import dataclass
 
 from .cg_types import RENAME_PREFIX, RESERVED
-from .source_text import IDENT, UnityShaderError, component_count
+from .source_text import IDENT, UnityShaderError, blank_comments, component_count, matching_brace
 
 # HLSL's geometry input primitives and the GLSL layout each one is (GLSL 3.30, 4.3.8.1:
 # points, lines, lines_adjacency, triangles, triangles_adjacency), with its vertex count.
@@ -78,30 +78,47 @@ def _blank(text: str) -> str:
     return re.sub(r"[^\n]", " ", text)
 
 
+# A function whose parameters include a stream: its name, its parameter list, its body's "{".
+_STREAM_FUNCTION = re.compile(r"\b" + IDENT + r"\s*\(([^()]*\binout\s+(?:" + "|".join(STREAMS) + r")\s*<[^()]*)\)"
+                              r"\s*(?::\s*\w+\s*)?\{")
+
+
+def _lines_only(m) -> str:
+    return "\n" * m.group(0).count("\n")
+
+
+def _stream_body(body: str, name: str) -> str:
+    """A body of a function taking the stream ``name``: its Append and RestartStrip spelled,
+    the stream dropped where it is handed on as an argument (line breaks kept)."""
+    body = re.sub(r"\b" + name + r"\s*\.\s*Append\s*\(", "PBRLAB_GEOMETRY_APPEND(", body)
+    body = re.sub(r"\b" + name + r"\s*\.\s*RestartStrip\s*\(\s*\)", "PBRLAB_GEOMETRY_RESTART()", body)
+    body = re.sub(r"(?<=\()\s*" + name + r"\s*,\s*", _lines_only, body)
+    body = re.sub(r"\s*,\s*" + name + r"\s*(?=[,)])", _lines_only, body)
+    return re.sub(r"(?<=\()\s*" + name + r"\s*(?=\))", _lines_only, body)
+
+
 def spell_for_glsl(text: str) -> str:
     """The geometry syntax of HLSL in ``text`` spelled in Cg for the GLSL port (module
-    docstring), line for line; a text without it unchanged."""
+    docstring), line for line, in each function that takes a stream; a text without it
+    unchanged."""
     if "Stream" not in text and "maxvertexcount" not in text:
         return text
     text = _MAX_VERTEX_COUNT.sub(lambda m: _blank(m.group(0)), text)
     text = _PRIMITIVE_WORD.sub(lambda m: _blank(m.group(0)), text)
-    streams = set()
-
-    def drop_param(m):
-        streams.add(m.group(3))
-        return "\n" * m.group(0).count("\n")
-
-    # the stream parameter with the comma before it (or after it, when it comes first)
-    text = re.sub(r",\s*" + _STREAM_PARAM.pattern, drop_param, text)
-    text = re.sub(_STREAM_PARAM.pattern + r"\s*,?", drop_param, text)
-    for name in streams:
-        text = re.sub(r"\b" + name + r"\s*\.\s*Append\s*\(", "PBRLAB_GEOMETRY_APPEND(", text)
-        text = re.sub(r"\b" + name + r"\s*\.\s*RestartStrip\s*\(\s*\)", "PBRLAB_GEOMETRY_RESTART()", text)
-        # the stream handed on to a function of the program (whose parameter is dropped above)
-        keep = lambda m: "\n" * m.group(0).count("\n")
-        text = re.sub(r"(?<=\()\s*" + name + r"\s*,\s*", keep, text)
-        text = re.sub(r"\s*,\s*" + name + r"\s*(?=[,)])", keep, text)
-        text = re.sub(r"(?<=\()\s*" + name + r"\s*(?=\))", keep, text)
+    masked = blank_comments(text)
+    for m in reversed(list(_STREAM_FUNCTION.finditer(masked))):
+        end = matching_brace(masked, m.end() - 1)
+        if end is None:
+            continue
+        params = text[m.start(1):m.end(1)]
+        names = [p.group(3) for p in _STREAM_PARAM.finditer(params)]
+        # the stream parameter with the comma before it (or after it, when it comes first)
+        params = re.sub(r",\s*" + _STREAM_PARAM.pattern, _lines_only, params)
+        params = re.sub(_STREAM_PARAM.pattern + r"\s*,?", _lines_only, params)
+        body = text[m.end():end]
+        for name in names:
+            body = _stream_body(body, name)
+        text = text[:m.start(1)] + params + text[m.end(1):m.end()] + body + text[end:]
     return text
 
 
