@@ -306,3 +306,17 @@ def test_the_spelling_keeps_to_the_functions_that_take_a_stream():
     assert "sincos(x, s, c); return float2(s, c);" in spelled
     assert "void emit( g2f o) { PBRLAB_GEOMETRY_APPEND(o); }" in spelled.replace("  ", " ")
     assert "{ emit(o); }" in spelled
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_maxvertexcount_may_be_an_expression_of_the_programs_macros(tmp_path, language):
+    """[maxvertexcount(COPIES * 3)] with #define COPIES 2 (GLSL: after the program, whose macros it
+    names; a constant expression in a layout is GL_ARB_enhanced_layouts')."""
+    text = COPIES.replace("[maxvertexcount(6)]", "#define COPIES 2\n        [maxvertexcount(COPIES * 3)]").format(
+        name="expression", pragma="#pragma geometry geom", left=-0.45, right=0.45, colour="IN[k].uv", primitive_id="")
+    shader = tmp_path / "expression.shader"
+    shader.write_text(textwrap.dedent(text))
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    assert copies_problems(image) == []

@@ -315,7 +315,7 @@ def glsl_declarations(vf, vertex_outputs: dict) -> str:
     (its pbrlab_vary_<SEMANTIC> outputs)."""
     g = vf.geometry
     layout, count = PRIMITIVES[g.primitive]
-    lines = [f"layout({layout}) in;", f"layout({STREAMS[g.stream]}, max_vertices = {g.max_vertices}) out;"]
+    lines = [f"layout({layout}) in;"]
     flat = lambda t: "flat " if t.startswith(("int", "uint", "bool")) else ""
     lines += [f"{flat(t)}in {port_code_types(t)} pbrlab_vary_{s}[];" for s, t in vertex_outputs.items()]
     for mtype, member, semantic in _members(vf, g.output_type, g.where):
@@ -348,7 +348,10 @@ def glsl_entry(vf, main_light: str, vertex_outputs: dict) -> str:
         elif role == "primitive_id":  # int or uint, as the parameter is declared
             args.append(re.match(r"(?:in\s+)?(\w+)", text).group(1) + "(gl_PrimitiveIDIn)")
     body.append(f"    {g.name}({', '.join(args)});")
-    return "\n".join(["void main() {"] + body + ["}"]) + "\n"
+    # after the program, whose macros [maxvertexcount(...)] may name (an expression: a constant
+    # expression in a layout qualifier is GLSL 4.40's, or GL_ARB_enhanced_layouts')
+    layout = f"layout({STREAMS[g.stream]}, max_vertices = {g.max_vertices}) out;"
+    return "\n".join([layout, "void main() {"] + body + ["}"]) + "\n"
 
 
 def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: str, display: str,
@@ -374,6 +377,8 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
         return (shaders.Source(glsl, [f"{name} (GLSL from spirv-cross)"]),
                 include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
     outputs = dict(varyings(vf, vf.geometry.where))
+    if not re.fullmatch(r"\d+", vf.geometry.max_vertices):
+        head = head.replace("#version 330 core", "#version 330 core\n#extension GL_ARB_enhanced_layouts : require", 1)
     text = (head + "\n" + glsl_declarations(vf, outputs) + glsl_stage_macros(vf, True) + "#line 1\n" + program_text + "\n"
             + glsl_entry(vf, _main_light("glsl"), outputs))
     source = shaders.expand(text, name, include_dirs=dirs, virtual=virtual or {})
