@@ -190,3 +190,14 @@ def test_the_names_before_unity_5_4_are_its_matrices(tmp_path):
     image = _render(tmp_path, "glsl", "old_names", text=text.format(name="old_names", colour=colour,
                                                                   tint=", ".join(map(str, TINT))))
     assert problems(image, *expected(image.shape[:2])) == []
+
+
+def test_unitycg_glslinc_transforms_texture_coordinates(tmp_path):
+    """A GLSLINCLUDE of UnityCG.glslinc (pbrlab's stand-in): TRANSFORM_TEX with the material's
+    _MainTex_ST (the default tiling 1, offset 0, so the UVs as they are) draws the UVs."""
+    text = SNIPPET.replace("uniform vec4 _Tint;", '#include "UnityCG.glslinc"\n        uniform vec4 _Tint; '
+                           "uniform vec4 _MainTex_ST; uniform sampler2D _MainTex;")
+    text = text.replace("uv = gl_MultiTexCoord0.xy;", "uv = TRANSFORM_TEX(gl_MultiTexCoord0, _MainTex);")
+    image = _render(tmp_path, "glsl", "glslinc", text=text.format(name="glslinc", tint=", ".join(map(str, TINT)),
+                                                                  colour="vec4(uv * _Tint.xy, _Tint.z, 1.0)"))
+    assert problems(image, *expected(image.shape[:2])) == []

@@ -175,7 +175,7 @@ def stage_text(vf, stage: str, defines: dict, blended: bool) -> tuple:
     snippet on its own lines, then the harness's main around the snippet's: (head, snippet, tail)."""
     from .generate import _defines
     from .generate_pass import _POSITIONAL_ADD, _main_light, _world_position
-    code = _code_only(blank_comments(vf.program), lambda c: c)
+    code = blank_comments(vf.program)
     for old, new in _RENAMED.items():
         code = re.sub(r"\b" + old + r"\b", new, code)
     head = ["#version 330 core", _defines({**defines, stage: 1, "SHADER_API_GLCORE": 1}),
