@@ -48,7 +48,8 @@
 //           UNITY_DEFINE_INSTANCED_PROP declares a plain uniform, UNITY_ACCESS_INSTANCED_PROP,
 //           UNITY_SETUP_INSTANCE_ID, UNITY_TRANSFER_INSTANCE_ID, UNITY_VERTEX_INPUT_INSTANCE_ID,
 //           UNITY_VERTEX_OUTPUT_STEREO, UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO,
-//           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX: no
+//           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
+//           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
 //           Unity defines it for its GLSL targets);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
@@ -130,6 +131,8 @@ static float4 unity_SpotDirection[8];
 #define UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o)
 #define UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output)
 #define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input)
+#define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
+#define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
 #define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
 

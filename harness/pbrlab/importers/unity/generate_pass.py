@@ -142,7 +142,7 @@ def _outputs(vf, where: str) -> list[tuple]:
             out += [(canonical(s), t, f"{name}.{n}") for t, n, s in _struct(vf, kind) if s]
         elif semantic:
             out.append((canonical(semantic), kind, name))
-    if not any(s in _POSITION for s, _, _ in out):
+    if not any(s in _POSITION for s, _, _ in out) and vf.geometry is None:  # a geometry stage may place them
         raise UnityShaderError(f"{where}: {vf.vertex}() writes no SV_POSITION: the vertex stage must "
                                "give the clip-space position")
     return out
@@ -270,8 +270,8 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         if "." not in expr and expr != "pbrlab_out":
             expr = f"pbrlab_arg_{expr}"
         access[semantic] = (kind, expr)
-    pos_kind, pos_expr = next(access[s] for s in _POSITION if s in access)
-    position = fit(pos_expr, _size(pos_kind, where), 4, language, 1.0)
+    pos_kind, pos_expr = next((access[s] for s in _POSITION if s in access), ("float4", None))
+    position = fit(pos_expr, _size(pos_kind, where), 4, language, 1.0) if pos_expr else f"{_vec(4, language)}(0.0, 0.0, 0.0, 1.0)"
     lines = []
     if language == "hlsl":
         params = ["float3 in_position : POSITION", "float3 in_normal : NORMAL", "float2 in_uv : TEXCOORD0",

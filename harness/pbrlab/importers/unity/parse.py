@@ -761,6 +761,15 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         vf = parse_pass(fixed_function.translate(outer + p.fixed_commands, props, path), path, p.line, p)
         apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
         return vf
+    if p.program.language == "GLSL":  # a GLSL snippet, in either pipeline (glslprogram.py)
+        from .glslprogram import glsl_pass, implicit_samplers, note
+        text, first = layout.program_text(p.program, sub)
+        vf = glsl_pass(text, path, first, p)
+        notes.append(note(path, first))
+        for kind, name in implicit_samplers(text):  # a texture Unity binds by default, as for Cg
+            props.setdefault(name, M.Property(name, name, kind, "white", ("implicit",)))
+        apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+        return vf
     if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
                                + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN

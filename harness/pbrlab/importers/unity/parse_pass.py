@@ -11,6 +11,7 @@ import re
 from pathlib import Path
 
 from . import model as M
+from .geometry_stage import parse_geometry
 from .conditionals import active_text, defines_of
 from .engine_inputs import check_engine_inputs
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -19,7 +20,7 @@ from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, chec
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # Stages pbrlab does not run, named in the refusal.
-UNSUPPORTED_STAGES = {"geometry": "a geometry shader", "hull": "a hull (tessellation) shader",
+UNSUPPORTED_STAGES = {"hull": "a hull (tessellation) shader",
                       "domain": "a domain (tessellation) shader"}
 
 
@@ -137,7 +138,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     for stage, words in UNSUPPORTED_STAGES.items():
         if stage in pragmas:
             raise UnityShaderError(f"{where(pragmas[stage][1])}: #pragma {stage}: {words} is not supported "
-                                   "by pbrlab (vertex and fragment stages only)")
+                                   "by pbrlab (vertex, geometry and fragment stages only)")
     if "vertex" not in pragmas or "fragment" not in pragmas:
         missing = "vertex" if "vertex" not in pragmas else "fragment"
         raise UnityShaderError(f"{where(0)}: a Pass program needs #pragma vertex and #pragma fragment "
@@ -156,13 +157,15 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
                                    "is defined")
         found[role] = sig
     structs = _structs(everything)
+    geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
+                if "geometry" in pragmas else None)
     vf = M.VertexFragmentPass(
         path=path, name=block.name, light_mode=block.light_mode or "Always",
         program=program, program_line=first_line, vertex=vertex, fragment=fragment,
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
-        fragment_return_semantic=found["fragment"][2], structs=structs)
+        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry)
     vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
                                        r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     return vf

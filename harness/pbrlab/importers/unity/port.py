@@ -37,6 +37,7 @@ from pathlib import Path
 
 from . import cg_spellings, cg_types
 from . import model as M
+from .geometry_stage import spell_for_glsl
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, included_text
 
@@ -231,8 +232,9 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
-    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(cg_spellings.respelled(text)))) if srp \
-        else cg_spellings.respelled
+    def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry syntax
+        return spell_for_glsl(cg_spellings.respelled(text))
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)

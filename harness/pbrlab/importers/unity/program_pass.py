@@ -19,7 +19,7 @@ from pathlib import Path
 from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
-from . import generate, generate_pass
+from . import generate, generate_pass, geometry_stage, glslprogram
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -56,7 +56,7 @@ def package_links(package: str, root: Path) -> Path:
 
 
 def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
-                display: str) -> str:
+                display: str, before_program: str = "") -> str:
     where = f"{vf.path}:{vf.program_line}"
     head = generate.prelude(language, defines, vertex_stage=stage == "vertex")
     if language == "hlsl":
@@ -67,7 +67,7 @@ def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, pro
         entry = generate_pass.vertex_entry(vf, language, where)
     else:
         entry = generate_pass.fragment_entry(vf, language, where, blended)
-    return "\n".join(head) + "\n" + line + "\n" + program_text + "\n" + entry
+    return "\n".join(head) + "\n" + before_program + line + "\n" + program_text + "\n" + entry
 
 
 def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: dict, blended: bool):
@@ -81,23 +81,42 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         # a package's own paths (Packages/<it>/...) from a folder that links Packages/<it> to it
         roots |= {package_links(*own) for own in (own_package_root(n, vf.path.parent) for n in names) if own}
         dirs = [TEMPLATES, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS, vf.path.parent]
+        if vf.language == glslprogram.LANGUAGE:  # a GLSLPROGRAM: its GLSL as written, in either language
+            program, paths = glslprogram.build_glsl_program(ctx, vf, defines, blended, dirs)
+            return indexed(program, vf.path), paths
         stages, paths = {}, [vf.path]
+        geometry = vf.geometry is not None  # a #pragma geometry: geometry_stage.py
         for stage in ("vertex", "fragment"):
             display = f"{vf.path.name} (generated {language} {stage} stage)"
+            # behind a geometry stage the fragment reads the geometry output struct's varyings
+            stage_vf = geometry_stage.fragment_pass(vf) if geometry and stage == "fragment" else vf
             if language == "hlsl":
-                text = _stage_text(vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
+                text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
                 glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
                                           plain_uniforms=True)
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)
+                elif geometry:
+                    glsl = geometry_stage.fragment_inputs_renamed(glsl)
                 stages[stage] = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
                 paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
             else:
                 include, virtual = program_include(vf)
-                text = _stage_text(vf, "glsl", stage, defines, blended, include, vf.path.name)
+                text = _stage_text(stage_vf, "glsl", stage, defines, blended, include, vf.path.name,
+                                   geometry_stage.glsl_stage_macros(vf, False))  # (also for an unused geom)
+                if geometry and stage == "fragment":
+                    text = geometry_stage.fragment_inputs_renamed(text)
                 stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
                 paths += stages[stage].paths + ported_sources(virtual)
-        program = indexed(shaders.build_program(ctx, stages["vertex"], stages["fragment"]), vf.path)
+        if geometry:
+            include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)
+            stages["geometry"], read = geometry_stage.build_geometry_stage(
+                vf, language, defines, dirs, include, str(vf.path) if language == "hlsl" else vf.path.name, virtual)
+            paths += read + (ported_sources(virtual) if virtual else [])
+            program = geometry_stage.link(ctx, stages["vertex"], stages["geometry"], stages["fragment"])
+        else:
+            program = shaders.build_program(ctx, stages["vertex"], stages["fragment"])
+        program = indexed(program, vf.path)
         return program, paths
 
     try:

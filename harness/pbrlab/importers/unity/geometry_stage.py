@@ -1,0 +1,416 @@
+"""A vertex/fragment pass's geometry stage (``#pragma geometry geom``): Unity's
+
+    [maxvertexcount(N)]
+    void geom(triangle v2g IN[3], inout TriangleStream<g2f> stream) { ... stream.Append(o); ... }
+
+run between the pass's vertex and fragment stages, in both languages.
+
+    g = parse_geometry(text, "geom", where, offset)      # parse_pass: vf.geometry
+    source = geometry_source(vf, "hlsl", defines, text)  # program_pass: the stage's GLSL
+
+HLSL: the program as written plus an entry of ours (``pbrlab_geometry_main``: the user's
+parameter list, the pass's light as the other stages set it, then a call of ``geom``), through
+glslang (``-S geom``) and spirv-cross, which write a GLSL 330 geometry shader. spirv-cross names
+the stage's inputs ``<param>_<member>`` and its outputs ``<stream>_<member>``; they are renamed
+here to the names the other stages use: the vertex stage's outputs ``pbrlab_vary_<SEMANTIC>``
+(of the geometry input struct's members), the fragment stage's inputs
+``pbrlab_gvary_<SEMANTIC>`` (of the output struct's members; ``fragment_pass`` is the pass as
+the fragment entry sees it: its varyings are the geometry output struct's).
+
+GLSL: the port of the program, in which ``spell_for_glsl`` (port.port_text) has spelled the
+geometry syntax in Cg the type pass reads: the ``[maxvertexcount]`` attribute and the primitive
+word (``triangle``) dropped, the stream parameter dropped, ``stream.Append(x)`` ->
+``PBRLAB_GEOMETRY_APPEND(x)`` and ``stream.RestartStrip()`` -> ``PBRLAB_GEOMETRY_RESTART()``.
+The geometry entry defines those two as writing the output struct's members to the stage's
+outputs, its SV_POSITION to ``gl_Position``, then ``EmitVertex()`` / ``EndPrimitive()``
+(the GLSL 3.30 specification, section 8.12, "Geometry Shader Functions"); the vertex and
+fragment stages define them as nothing (the geometry function is dead code there). Its
+``main`` fills the input array from ``gl_in[k].gl_Position`` and the vertex stage's outputs
+and ``SV_PrimitiveID`` from ``gl_PrimitiveIDIn``, and calls the function.
+
+A function of the program that takes the stream (``void emit(inout TriangleStream<T> s, ...)``)
+loses that parameter too, and a call handing the stream on (``emit(stream, ...)``) that argument.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from dataclasses import dataclass
+
+from .cg_types import RENAME_PREFIX, RESERVED
+from .source_text import IDENT, UnityShaderError, blank_comments, component_count, matching_brace
+
+# HLSL's geometry input primitives and the GLSL layout each one is (GLSL 3.30, 4.3.8.1:
+# points, lines, lines_adjacency, triangles, triangles_adjacency), with its vertex count.
+PRIMITIVES = {"point": ("points", 1), "line": ("lines", 2), "lineadj": ("lines_adjacency", 4),
+              "triangle": ("triangles", 3), "triangleadj": ("triangles_adjacency", 6)}
+# HLSL's stream objects and the GLSL output layout each one writes.
+STREAMS = {"PointStream": "points", "LineStream": "line_strip", "TriangleStream": "triangle_strip"}
+
+_MAX_VERTEX_COUNT = re.compile(r"\[\s*maxvertexcount\s*\(((?:[^()]|\([^()]*\))*)\)\s*\]")
+_PRIMITIVE_WORD = re.compile(r"\b(" + "|".join(PRIMITIVES) + r")\s+(?=" + IDENT + r"\s+" + IDENT + r"\s*\[)")
+_STREAM_PARAM = re.compile(r"\binout\s+(" + "|".join(STREAMS) + r")\s*<\s*(" + IDENT + r")\s*>\s*(" + IDENT + r")")
+_POSITION = ("SV_POSITION", "POSITION")
+
+
+@dataclass
+class GeometryFunction:
+    name: str
+    max_vertices: str            # the [maxvertexcount(...)] expression, as written
+    primitive: str               # point, line, lineadj, triangle, triangleadj
+    input_type: str              # the struct of one input vertex
+    input_name: str
+    output_type: str             # the stream's vertex struct
+    stream: str                  # TriangleStream, LineStream, PointStream
+    stream_name: str
+    params: list                 # [(role, text as written, name)]: role input, stream, primitive_id
+    where: str
+
+
+def port_code_types(kind: str) -> str:
+    from .port import port_code_types as rename  # port.py imports this module
+    return rename(kind)
+
+
+def _blank(text: str) -> str:
+    """``text`` as spaces, its line breaks kept."""
+    return re.sub(r"[^\n]", " ", text)
+
+
+# A function whose parameters include a stream: its name, its parameter list, its body's "{".
+_STREAM_FUNCTION = re.compile(r"\b" + IDENT + r"\s*\(([^()]*\binout\s+(?:" + "|".join(STREAMS) + r")\s*<[^()]*)\)"
+                              r"\s*(?::\s*\w+\s*)?\{")
+
+
+def _lines_only(m) -> str:
+    return "\n" * m.group(0).count("\n")
+
+
+def _stream_body(body: str, name: str) -> str:
+    """A body of a function taking the stream ``name``: its Append and RestartStrip spelled,
+    the stream dropped where it is handed on as an argument (line breaks kept)."""
+    body = re.sub(r"\b" + name + r"\s*\.\s*Append\s*\(", "PBRLAB_GEOMETRY_APPEND(", body)
+    body = re.sub(r"\b" + name + r"\s*\.\s*RestartStrip\s*\(\s*\)", "PBRLAB_GEOMETRY_RESTART()", body)
+    body = re.sub(r"(?<=\()\s*" + name + r"\s*,\s*", _lines_only, body)
+    body = re.sub(r"\s*,\s*" + name + r"\s*(?=[,)])", _lines_only, body)
+    return re.sub(r"(?<=\()\s*" + name + r"\s*(?=\))", _lines_only, body)
+
+
+def spell_for_glsl(text: str) -> str:
+    """The geometry syntax of HLSL in ``text`` spelled in Cg for the GLSL port (module
+    docstring), line for line, in each function that takes a stream; a text without it
+    unchanged."""
+    if "Stream" not in text and "maxvertexcount" not in text:
+        return text
+    text = _MAX_VERTEX_COUNT.sub(lambda m: _blank(m.group(0)), text)
+    text = _PRIMITIVE_WORD.sub(lambda m: _blank(m.group(0)), text)
+    masked = blank_comments(text)
+    for m in reversed(list(_STREAM_FUNCTION.finditer(masked))):
+        end = matching_brace(masked, m.end() - 1)
+        if end is None:
+            continue
+        params = text[m.start(1):m.end(1)]
+        names = [p.group(3) for p in _STREAM_PARAM.finditer(params)]
+        # the stream parameter with the comma before it (or after it, when it comes first)
+        params = re.sub(r",\s*" + _STREAM_PARAM.pattern, _lines_only, params)
+        params = re.sub(_STREAM_PARAM.pattern + r"\s*,?", _lines_only, params)
+        body = text[m.end():end]
+        for name in names:
+            body = _stream_body(body, name)
+        text = text[:m.start(1)] + params + text[m.end(1):m.end()] + body + text[end:]
+    return text
+
+
+def _split_params(text: str) -> list[str]:
+    out, depth, cur = [], 0, []
+    for ch in text:
+        if ch == "," and depth == 0:
+            out.append("".join(cur).strip())
+            cur = []
+            continue
+        depth += {"(": 1, ")": -1, "<": 1, ">": -1}.get(ch, 0)
+        cur.append(ch)
+    out.append("".join(cur).strip())
+    return [p for p in out if p and p != "void"]
+
+
+def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> GeometryFunction:
+    """The geometry function ``name`` of ``masked`` (the program and its includes, comments
+    blanked, the drawn variant's branches); ``where_of(offset)`` names a place in the program."""
+    where = where_of(pragma_offset)
+    m = re.search(r"(" + _MAX_VERTEX_COUNT.pattern + r")?\s*\bvoid\s+" + re.escape(name) + r"\s*\(", masked)
+    if m is None:
+        raise UnityShaderError(f"{where}: #pragma geometry {name}: no function void {name}(...) is defined")
+    if m.group(1) is None:
+        raise UnityShaderError(f"{where}: #pragma geometry {name}: {name}() has no [maxvertexcount(N)] "
+                               "attribute (HLSL requires one on a geometry function)")
+    depth, i = 1, m.end()
+    while i < len(masked) and depth:
+        depth += {"(": 1, ")": -1}.get(masked[i], 0)
+        i += 1
+    params, found = [], {}
+    for text in _split_params(masked[m.end():i - 1]):
+        stream = _STREAM_PARAM.search(text)
+        array = re.match(r"(?:(" + "|".join(PRIMITIVES) + r")\s+)(" + IDENT + r")\s+(" + IDENT + r")\s*\[\s*(\w+)\s*\]", text)
+        primitive_id = re.match(r"(?:in\s+)?(uint|int)\s+(" + IDENT + r")\s*:\s*SV_PrimitiveID\s*$", text, re.I)
+        if stream:
+            found["stream"] = stream.groups()
+            params.append(("stream", text, stream.group(3)))
+        elif array:
+            found["input"] = array.groups()
+            params.append(("input", text, array.group(3)))
+        elif primitive_id:
+            params.append(("primitive_id", text, primitive_id.group(2)))
+        else:
+            raise UnityShaderError(f"{where}: {name}(): the parameter {text!r} is not one pbrlab runs "
+                                   "(an input array such as triangle v2g IN[3], an inout TriangleStream<T>, "
+                                   "a uint : SV_PrimitiveID)")
+    if "input" not in found or "stream" not in found:
+        raise UnityShaderError(f"{where}: {name}() needs an input array (triangle v2g IN[3]) and an "
+                               "inout stream (TriangleStream<g2f>)")
+    primitive, input_type, input_name, count = found["input"]
+    if primitive != "triangle":
+        # the harness draws triangles: a point/line geometry input would never be fed
+        raise UnityShaderError(f"{where}: {name}() takes {primitive} input: pbrlab draws triangle meshes, "
+                               "so only a triangle geometry input is fed")
+    return GeometryFunction(name=name, max_vertices=m.group(2).strip(), primitive=primitive,
+                            input_type=input_type, input_name=input_name, output_type=found["stream"][1],
+                            stream=found["stream"][0], stream_name=found["stream"][2], params=params,
+                            where=where)
+
+
+def _members(vf, kind: str, where: str) -> list:
+    members = vf.structs.get(kind)
+    if members is None:
+        raise UnityShaderError(f"{where}: the geometry stage's struct {kind} is not defined")
+    return members.members
+
+
+def _canonical(semantic: str) -> str:
+    from .generate_pass import canonical  # (generate_pass imports port, which imports this module)
+    return canonical(semantic)
+
+
+def _fit(expr: str, have: int, want: int, w: float = 0.0) -> str:
+    from .generate_pass import fit
+    return fit(expr, have, want, "glsl", w)
+
+
+def fragment_pass(vf):
+    """The pass as the fragment entry sees it: its vertex stage outputs the geometry output
+    struct (the varyings the fragment reads are that struct's members)."""
+    g = vf.geometry
+    return dataclasses.replace(vf, vertex_return=g.output_type, vertex_return_semantic="", vertex_params=[],
+                               geometry=None)
+
+
+def fragment_inputs_renamed(text: str) -> str:
+    """The fragment stage's inputs named as the geometry stage writes them."""
+    return re.sub(r"\bpbrlab_vary_", "pbrlab_gvary_", text)
+
+
+def _glsl_name(name: str) -> str:
+    """A member or variable name as the GLSL port spells it (cg_types renames reserved words)."""
+    return RENAME_PREFIX + name if name in RESERVED else name
+
+
+# A ForwardAdd pass of a point or spot light folds the light's falloff into _LightColor0 at the
+# surface point (generate_pass._main_light). Behind a geometry stage the fragment's point is
+# that of the emitted vertices, which the stage writes from each one's clip position: clip =
+# P (e, 1) for the eye point e, of whose four rows three are solved for e (x, y and, for a
+# perspective P, whose last row is (0, 0, -1, 0), w; for an orthographic one, z): the depth row
+# of a perspective P is left out, where float32 loses (far/near) times its precision (measured
+# 2e-3 relative through the inverse of P at near 1e-4); then world = V^-1 (e, 1). The geometry
+# function's own _LightColor0 is the light at its triangle's first vertex (the point the vertex
+# stage gives).
+POSITIONAL_ADD = "defined(PBRLAB_UNITY_ADD_POINT) || defined(PBRLAB_UNITY_ADD_SPOT)"
+_WORLD_OF_CLIP = """vec3 pbrlab_world_of_clip(vec4 clip_position) {
+    mat4 p = glstate_matrix_projection;
+    int r = p[3][3] == 0.0 ? 3 : 2;
+    mat3 rows = transpose(mat3(vec3(p[0][0], p[1][0], p[2][0]), vec3(p[0][1], p[1][1], p[2][1]),
+                               vec3(p[0][r], p[1][r], p[2][r])));
+    vec3 eye = inverse(rows) * (vec3(clip_position.x, clip_position.y, clip_position[r]) - vec3(p[3][0], p[3][1], p[3][r]));
+    return (unity_MatrixInvV * vec4(eye, 1.0)).xyz;
+}
+"""
+
+
+def positional_add(defines: dict) -> bool:
+    return any(k in defines for k in ("PBRLAB_UNITY_ADD_POINT", "PBRLAB_UNITY_ADD_SPOT"))
+
+
+def hlsl_entry(vf, main_light: str, world_register: int) -> str:
+    """The HLSL geometry entry: the user's parameters (and, for a positional ForwardAdd light,
+    the vertex stage's world points, its TEXCOORD ``world_register``), the pass's light, a
+    call of geom."""
+    g = vf.geometry
+    count = PRIMITIVES[g.primitive][1]
+    params = ", ".join(text for _, text, _ in g.params)
+    args = ", ".join(name for _, _, name in g.params)
+    return (f"[maxvertexcount({g.max_vertices})]\nvoid pbrlab_geometry_main({params}\n#if {POSITIONAL_ADD}\n"
+            f", {g.primitive} float3 pbrlab_vary_world_position[{count}] : TEXCOORD{world_register}\n#endif\n) {{\n"
+            f"#if {POSITIONAL_ADD}\n    float3 pbrlab_world_position = pbrlab_vary_world_position[0];\n#endif\n"
+            f"{main_light}    {g.name}({args});\n}}\n")
+
+
+def hlsl_world_written(glsl: str) -> str:
+    """The spirv-cross geometry stage of a positional ForwardAdd light writing each emitted
+    vertex's world point for the fragment (POSITIONAL_ADD)."""
+    declarations = ("uniform mat4 unity_MatrixInvV;\nuniform mat4 glstate_matrix_projection;\n"
+                    "out vec3 pbrlab_gvary_world_position;\n" + _WORLD_OF_CLIP)
+    glsl = re.sub(r"^(layout\([^)]*max_vertices[^)]*\) out;\n)", lambda m: m.group(1) + declarations, glsl,
+                  count=1, flags=re.M)
+    return glsl.replace("EmitVertex();", "pbrlab_gvary_world_position = pbrlab_world_of_clip(gl_Position); EmitVertex();")
+
+
+def hlsl_renamed(vf, glsl: str) -> str:
+    """spirv-cross's names for the geometry stage's inputs and outputs -> the other stages'
+    (module docstring); its ``_Global`` struct and instance renamed as the vertex stage's."""
+    g = vf.geometry
+    for kind, param, prefix in ((g.input_type, g.input_name, "pbrlab_vary_"),
+                                (g.output_type, g.stream_name, "pbrlab_gvary_")):
+        for _, member, semantic in _members(vf, kind, g.where):
+            if semantic and _canonical(semantic) not in _POSITION:
+                glsl = re.sub(r"\b" + re.escape(f"{param}_{member}") + r"\b", prefix + _canonical(semantic), glsl)
+    unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
+                if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))
+                and m.group(1) != "pbrlab_vary_world_position"]
+    if unlinked:  # spirv-cross named a varying otherwise than <param>_<member>: say so, not a link error
+        raise UnityShaderError(f"{g.where}: {g.name}(): pbrlab cannot link the geometry stage's "
+                               f"{', '.join(unlinked)} to the vertex or fragment stage")
+    instance = re.search(r"uniform _Global (\w+);", glsl)
+    if instance:
+        glsl = re.sub(r"\b_Global\b", "_GlobalGeometry", glsl)
+        glsl = re.sub(r"\b" + instance.group(1) + r"\b", "pbrlab_geometry_globals", glsl)
+    return glsl
+
+
+def glsl_stage_macros(vf, in_geometry: bool) -> str:
+    """PBRLAB_GEOMETRY_APPEND / _RESTART: the geometry stage's (an emitted vertex, the end of a
+    strip) or, in the vertex and fragment stages, nothing."""
+    if not in_geometry:  # (vf may have no geometry stage: a geometry function no pragma names)
+        return "#define PBRLAB_GEOMETRY_APPEND(v)\n#define PBRLAB_GEOMETRY_RESTART()\n"
+    g = vf.geometry
+    writes = []
+    for mtype, member, semantic in _members(vf, g.output_type, g.where):
+        if not semantic:
+            continue
+        s, name = _canonical(semantic), f"pbrlab_emitted.{_glsl_name(member)}"
+        if s in _POSITION:
+            writes.append(f"gl_Position = {_fit(name, component_count(mtype), 4, 1.0)};")
+        else:
+            writes.append(f"pbrlab_gvary_{s} = {name};")
+    body = " ".join([f"{g.output_type} pbrlab_emitted = (v);", *writes, "PBRLAB_GEOMETRY_WORLD(); EmitVertex();"])
+    return (f"#if {POSITIONAL_ADD}\nin vec3 pbrlab_vary_world_position[];\nout vec3 pbrlab_gvary_world_position;\n"
+            + _WORLD_OF_CLIP + "#define PBRLAB_GEOMETRY_WORLD() pbrlab_gvary_world_position = "
+            "pbrlab_world_of_clip(gl_Position)\n#else\n#define PBRLAB_GEOMETRY_WORLD()\n#endif\n"
+            f"#define PBRLAB_GEOMETRY_APPEND(v) {{ {body} }}\n"
+            "#define PBRLAB_GEOMETRY_RESTART() EndPrimitive()\n")
+
+
+def glsl_declarations(vf, vertex_outputs: dict) -> str:
+    """The GLSL geometry stage's layouts, inputs and outputs (before the program: the stream's
+    macros write the outputs); ``vertex_outputs``: {semantic: type} the vertex stage passes on
+    (its pbrlab_vary_<SEMANTIC> outputs)."""
+    g = vf.geometry
+    layout, count = PRIMITIVES[g.primitive]
+    lines = [f"layout({layout}) in;"]
+    flat = lambda t: "flat " if t.startswith(("int", "uint", "bool")) else ""
+    lines += [f"{flat(t)}in {port_code_types(t)} pbrlab_vary_{s}[];" for s, t in vertex_outputs.items()]
+    for mtype, member, semantic in _members(vf, g.output_type, g.where):
+        if semantic and _canonical(semantic) not in _POSITION:
+            lines.append(f"{flat(mtype)}out {port_code_types(mtype)} pbrlab_gvary_{_canonical(semantic)};")
+    return "\n".join(lines) + "\n"
+
+
+def glsl_entry(vf, main_light: str, vertex_outputs: dict) -> str:
+    """The GLSL geometry stage's main (module docstring)."""
+    g = vf.geometry
+    count = PRIMITIVES[g.primitive][1]
+    body = [f"#if {POSITIONAL_ADD}", "    vec3 pbrlab_world_position = pbrlab_vary_world_position[0];", "#endif",
+            main_light, f"    {g.input_type} pbrlab_in[{count}];"]
+    for k in range(count):
+        for mtype, member, semantic in _members(vf, g.input_type, g.where):
+            s = _canonical(semantic) if semantic else ""
+            target = f"    pbrlab_in[{k}].{_glsl_name(member)} = "
+            n = component_count(mtype)
+            if s in _POSITION:
+                body.append(target + _fit(f"gl_in[{k}].gl_Position", 4, n) + ";")
+            elif s in vertex_outputs:
+                body.append(target + f"pbrlab_vary_{s}[{k}];")
+            elif n:  # a member the vertex stage does not write: 0, as an unwritten HLSL input
+                body.append(target + f"{port_code_types(mtype)}(0);")
+    args = []
+    for role, text, name in g.params:
+        if role == "input":
+            args.append("pbrlab_in")
+        elif role == "primitive_id":  # int or uint, as the parameter is declared
+            args.append(re.match(r"(?:in\s+)?(\w+)", text).group(1) + "(gl_PrimitiveIDIn)")
+    body.append(f"    {g.name}({', '.join(args)});")
+    # after the program, whose macros [maxvertexcount(...)] may name (an expression: a constant
+    # expression in a layout qualifier is GLSL 4.40's, or GL_ARB_enhanced_layouts')
+    layout = f"layout({STREAMS[g.stream]}, max_vertices = {g.max_vertices}) out;"
+    return "\n".join([layout, "void main() {"] + body + ["}"]) + "\n"
+
+
+def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: str, display: str,
+                         virtual=None):
+    """(the geometry stage as a ``shaders.Source``, the files it read). ``program_text``: the
+    program as written (HLSL) or the line that includes its port (GLSL, ``virtual`` its files)."""
+    from ...foundation.file_identity import include_closure
+    from ...gpu import hlsl, shaders
+    from . import generate
+    from .generate_pass import _main_light, varyings
+    head = "\n".join(generate.prelude(language, defines, vertex_stage=True))
+    name = f"{vf.path.name} (generated {language} geometry stage)"
+    if language == "hlsl":
+        # POSITION passes as SV_Position between Unity's stages (as the vertex entry treats it); in
+        # glslang's geometry stage only SV_Position is gl_in[k].gl_Position / gl_Position
+        text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
+                + program_text + "\n"
+                + hlsl_entry(vf, _main_light("hlsl"), len(varyings(vf, vf.geometry.where))))
+        spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main")
+        glsl = hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True))
+        if positional_add(defines):
+            glsl = hlsl_world_written(glsl)
+        return (shaders.Source(glsl, [f"{name} (GLSL from spirv-cross)"]),
+                include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
+    outputs = dict(varyings(vf, vf.geometry.where))
+    if not re.fullmatch(r"\d+", vf.geometry.max_vertices):
+        head = head.replace("#version 330 core", "#version 330 core\n#extension GL_ARB_enhanced_layouts : require", 1)
+    text = (head + "\n" + glsl_declarations(vf, outputs) + glsl_stage_macros(vf, True) + "#line 1\n" + program_text + "\n"
+            + glsl_entry(vf, _main_light("glsl"), outputs))
+    source = shaders.expand(text, name, include_dirs=dirs, virtual=virtual or {})
+    return source, list(source.paths)
+
+
+def link(ctx, vertex, geometry, fragment):
+    """``shaders.build_program`` with a geometry stage: the same limits and compile guards,
+    errors at the original file and line of the stage that failed."""
+    import warnings
+
+    import moderngl
+
+    from ...foundation.errors import LoopLimitWarning, ShaderCompileError
+    from ...gpu import shaders
+    from ...gpu.cancellation import dies_on_signal
+    from ...gpu.compile_messages import compile_failure
+    from ...gpu.driver_time_limit import within_time_limit
+    stages = {"vertex": vertex, "geometry": geometry, "fragment": fragment}
+    for stage in stages.values():
+        shaders.check_limits(stage)
+    if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
+        for stage in stages.values():
+            for message in shaders.loop_limit_warnings(stage):
+                warnings.warn(message, LoopLimitWarning, stacklevel=2)
+    try:
+        with dies_on_signal(), within_time_limit(f"compiling {shaders.program_label(vertex, fragment)}"):
+            return ctx.program(vertex_shader=vertex.text, geometry_shader=geometry.text,
+                               fragment_shader=fragment.text)
+    except moderngl.Error as exc:
+        log = str(exc)
+        name = next((n for n in ("geometry", "fragment") if f"{n}_shader" in log), "vertex")
+        messages = "\n".join(line for line in stages[name].map_messages(log).splitlines()
+                              if line.strip() not in ("fragment_shader", "vertex_shader", "geometry_shader"))
+        raise ShaderCompileError(compile_failure(f"{name} shader failed to compile", messages)) from None
