@@ -1879,6 +1879,7 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     var I: vec3<f32>;
     var local_15: vec3<f32>;
     var F: vec3<f32>;
+    var noFilm: vec3<f32>;
     var local_16: vec3<f32>;
 
     outsideIor_1 = outsideIor;
@@ -2015,18 +2016,20 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     }
     let _e210 = local_15;
     F = _e210;
-    let _e212 = thicknessNm_1;
-    if (_e212 > 0f) {
-        let _e215 = F;
-        local_16 = _e215;
+    let _e212 = baseF0_1;
+    let _e213 = cosTheta1_1;
+    let _e214 = pbr_F_Schlick_1(_e212, _e213);
+    noFilm = _e214;
+    let _e216 = thicknessNm_1;
+    if (_e216 > 0f) {
+        let _e219 = F;
+        local_16 = _e219;
     } else {
-        let _e216 = baseF0_1;
-        let _e217 = cosTheta1_1;
-        let _e218 = pbr_F_Schlick_1(_e216, _e217);
-        local_16 = _e218;
+        let _e220 = noFilm;
+        local_16 = _e220;
     }
-    let _e220 = local_16;
-    return _e220;
+    let _e222 = local_16;
+    return _e222;
 }
 
 fn pbr_iridescence_mix(F_1: vec3<f32>, Firidescence: vec3<f32>, iridescenceFactor: f32) -> vec3<f32> {
