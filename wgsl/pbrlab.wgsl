@@ -1879,6 +1879,7 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     var I: vec3<f32>;
     var local_15: vec3<f32>;
     var F: vec3<f32>;
+    var noFilm: vec3<f32>;
     var local_16: vec3<f32>;
 
     outsideIor_1 = outsideIor;
@@ -2015,18 +2016,20 @@ fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm
     }
     let _e210 = local_15;
     F = _e210;
-    let _e212 = thicknessNm_1;
-    if (_e212 > 0f) {
-        let _e215 = F;
-        local_16 = _e215;
+    let _e212 = baseF0_1;
+    let _e213 = cosTheta1_1;
+    let _e214 = pbr_F_Schlick_1(_e212, _e213);
+    noFilm = _e214;
+    let _e216 = thicknessNm_1;
+    if (_e216 > 0f) {
+        let _e219 = F;
+        local_16 = _e219;
     } else {
-        let _e216 = baseF0_1;
-        let _e217 = cosTheta1_1;
-        let _e218 = pbr_F_Schlick_1(_e216, _e217);
-        local_16 = _e218;
+        let _e220 = noFilm;
+        local_16 = _e220;
     }
-    let _e220 = local_16;
-    return _e220;
+    let _e222 = local_16;
+    return _e222;
 }
 
 fn pbr_iridescence_mix(F_1: vec3<f32>, Firidescence: vec3<f32>, iridescenceFactor: f32) -> vec3<f32> {
@@ -4517,6 +4520,8 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     var d_2: vec3<f32>;
     var t_12: vec3<f32>;
     var t2_: f32;
+    var projected: vec3<f32>;
+    var fallback: vec3<f32>;
     var local_30: vec3<f32>;
 
     n_57 = n_56;
@@ -4532,18 +4537,22 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     let _e15 = t_12;
     let _e16 = t_12;
     t2_ = dot(_e15, _e16);
-    let _e19 = t2_;
-    if (_e19 > 0.0000010000001f) {
-        let _e24 = t_12;
-        let _e25 = t2_;
-        local_30 = (_e24 * inverseSqrt(max(_e25, 0.000000000000000000000000000000000000011754944f)));
+    let _e19 = t_12;
+    let _e20 = t2_;
+    projected = (_e19 * inverseSqrt(max(_e20, 0.000000000000000000000000000000000000011754944f)));
+    let _e30 = n_57;
+    let _e31 = pbr_tangent_to_world(vec3<f32>(1f, 0f, 0f), _e30);
+    fallback = _e31;
+    let _e33 = t2_;
+    if (_e33 > 0.0000010000001f) {
+        let _e38 = projected;
+        local_30 = _e38;
     } else {
-        let _e34 = n_57;
-        let _e35 = pbr_tangent_to_world(vec3<f32>(1f, 0f, 0f), _e34);
-        local_30 = _e35;
+        let _e39 = fallback;
+        local_30 = _e39;
     }
-    let _e37 = local_30;
-    return _e37;
+    let _e41 = local_30;
+    return _e41;
 }
 
 fn pbr_anisotropic_reflection_normal(n_58: vec3<f32>, v_58: vec3<f32>, anisotropy: pbr_Anisotropy, perceptualRoughness_56: f32) -> vec3<f32> {

@@ -17,7 +17,9 @@ baseline loop):
 * The scene programs (specialised, 1, 2 and 4 directional lights, HIGH and LOW): per-light
   increments coupled 57, 57.5 (HIGH) and 51, 51.5 (LOW, with Schlick's Fresnel since issue 35;
   38, 38 before) RDNA3, uncoupled 58, 58 and 52, 52.5 (39, 38.5);
-  anisotropic 175, 177.5 against 174, 178. Bound: |coupled - uncoupled| <= 3 per light.
+  anisotropic 89, 91.5 against 89, 91.5 (139, 140.5 against 138, 140.5 before
+  pbr_anisotropic_tangent's fallback became a select: each light kept a branch of its own;
+  175, 177.5 earlier). Bound: |coupled - uncoupled| <= 3 per light.
 """
 
 import pytest
