@@ -51,7 +51,8 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets);
+//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
 //           LIGHTING_COORDS(idx1, idx2), UNITY_LIGHTING_COORDS(idx1, idx2), TRANSFER_SHADOW(a),
@@ -132,6 +133,15 @@ vec4 unity_SpotDirection[8];
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
 #define UNITY_INITIALIZE_OUTPUT(type, name)
+
+// HLSLSupport.cginc's flow-control hints: HLSL attributes on Direct3D, nothing on Unity's GLSL
+// targets (GLSL has no attributes); a hint, never a change of what is computed.
+#define UNITY_BRANCH
+#define UNITY_FLATTEN
+#define UNITY_UNROLL
+#define UNITY_UNROLLX(n)
+#define UNITY_LOOP
+#define UNITY_FASTOPT
 
 // AutoLight.cginc with no shadow keyword (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE) and the
 // light's attenuation left to _LightColor0: Unity's own definitions of that case, where

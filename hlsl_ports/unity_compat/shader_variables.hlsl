@@ -51,7 +51,8 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets);
+//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
 //           LIGHTING_COORDS(idx1, idx2), UNITY_LIGHTING_COORDS(idx1, idx2), TRANSFER_SHADOW(a),
@@ -135,6 +136,15 @@ static float4 unity_SpotDirection[8];
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
 #define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
+
+// HLSLSupport.cginc's flow-control hints: HLSL attributes, as Unity defines them for Direct3D
+// (glslang's HLSL front end reads [branch], [flatten], [unroll], [unroll(n)], [loop], [fastopt]).
+#define UNITY_BRANCH [branch]
+#define UNITY_FLATTEN [flatten]
+#define UNITY_UNROLL [unroll]
+#define UNITY_UNROLLX(n) [unroll(n)]
+#define UNITY_LOOP [loop]
+#define UNITY_FASTOPT [fastopt]
 
 // AutoLight.cginc with no shadow keyword (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE) and the
 // light's attenuation left to _LightColor0: Unity's own definitions of that case, where

@@ -12,7 +12,11 @@ program (offsets and lines kept):
   DrawMeshInstancedIndirect), where it may assign the per-instance matrices to
   ``unity_ObjectToWorld`` (FXC's compatibility mode lets a program write a global; glslang and
   GLSL refuse a write to a uniform). The harness draws the default variant, which never calls
-  it: its body is blanked (lines kept), leaving an empty function.
+  it: its body is blanked (lines kept), leaving an empty function;
+- HLSLSupport.cginc's flow-control hints (``UNITY_UNROLL for (...)``, ``UNITY_BRANCH if``,
+  ``UNITY_UNROLLX(4)``, ...): attributes on Direct3D, nothing on Unity's GLSL targets; blanked
+  (a hint, never a change of what is computed), so the Cg type pass reads the statement after
+  it (it did not: the literals of such a function kept their ``h`` suffixes in GLSL).
 
     text = respelled(cg_text)
 """
@@ -23,6 +27,7 @@ import re
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
 _SWITCH = re.compile(r"\bswitch\s*\(")
+_FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
 
 
 def _closing(text: str, open_index: int) -> int:
@@ -60,9 +65,10 @@ def _blank_procedural_setup(text: str) -> str:
 
 
 def respelled(text: str) -> str:
-    """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int
-    and a procedural-instancing setup function's body blanked."""
+    """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
+    a procedural-instancing setup function's body and Unity's flow-control hints blanked."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
+    text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     out, pos = [], 0
     for m in _SWITCH.finditer(text):
         if m.start() < pos:

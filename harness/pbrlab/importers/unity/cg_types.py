@@ -276,6 +276,9 @@ class Signature:
     params: list
 
 
+# `#define one half3(1., 1., 1.)`: a constant of the constructor's type (its whole body one call)
+_CONSTRUCTOR_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+([A-Za-z_]\w*)[ \t]*\(([^()\n]*)\)[ \t]*(?://[^\n]*)?$",
+                                 re.M)
 _NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
                             r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
 
@@ -391,6 +394,10 @@ class _Parser:
             literal = m.group(2)
             base = "float" if re.search(r"[.eEfFhH]", literal) else "uint" if literal[-1] in "uU" else "int"
             symbols.globals.setdefault(m.group(1), Type(base))
+        for m in _CONSTRUCTOR_DEFINE.finditer(text):
+            constructed = builtin_type(m.group(2))
+            if constructed is not None and constructed.numeric:
+                symbols.globals.setdefault(m.group(1), constructed)
         self.edits = Edits()
         self.scopes = []
         self.ret = None
