@@ -12,11 +12,16 @@ peers' programs are picked and rewritten. A benchmark: it prints figures and ass
     python benchmarks/whole_program_cost.py --extras        # and 0 / 4 lights, no environment
     python benchmarks/whole_program_cost.py --class sheen   # one class
     python benchmarks/whole_program_cost.py --capture       # recapture the peers (Chromium, node)
+    python benchmarks/whole_program_cost.py --json docs/bench/whole_program_cost.json
+        # also write the figures, from which python -m pbrlab.bench.class_headline writes the
+        # README's table
 """
 
 from __future__ import annotations
 
 import argparse
+import datetime
+import json
 from pathlib import Path
 
 from pbrlab.bench import gpu, peer_gltf, peer_programs
@@ -45,6 +50,7 @@ def main() -> None:
     parser.add_argument("--extras", action="store_true", help="also 0 and 4 lights, and no environment")
     parser.add_argument("--capture", action="store_true", help="recapture the peers' programs first (Chromium)")
     parser.add_argument("--folder", type=Path, default=FOLDER, help="the captured programs (default: %(default)s)")
+    parser.add_argument("--json", type=Path, help="also write the figures to this JSON file")
     args = parser.parse_args()
     selected = peer_programs.cases(tuple(args.classes or peer_gltf.CLASSES), extras=args.extras)
     try:
@@ -54,6 +60,18 @@ def main() -> None:
         results = peer_programs.measure(args.folder, selected)
     except PbrlabError as exc:
         raise SystemExit(f"whole_program_cost: {exc}") from None
+    if args.json:
+        manifest = json.loads((args.folder / "manifest.json").read_text(encoding="utf-8"))
+        versions = manifest.get("versions", {})
+        for row in results.values():  # sources as paths in the repository, not this machine's
+            for entry in row.values():
+                source = Path(entry["source"])
+                entry["source"] = (source.relative_to(ROOT).as_posix() if source.is_absolute()
+                                   and source.is_relative_to(ROOT) else entry["source"])
+        args.json.write_text(json.dumps({
+            "date": datetime.date.today().isoformat(),
+            "versions": {"three.js": versions.get("three", "?"), "Sample Viewer": versions.get("gltf-viewer", "?")},
+            "results": results}, indent=1) + "\n", encoding="utf-8")
     print(gpu.ACO_NOTE)
     print()
     print("RDNA3 instructions / VGPRs per case ((n/i): the peer does not implement the class; "

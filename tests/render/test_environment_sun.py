@@ -1,5 +1,5 @@
 """The environment's sun as a shadow-casting light (render.environment_sun):
-gpu/environment_sun.py finds it and splits it off, render/shadow_map.py shadows it,
+scene/environment_sun.py finds it and splits it off, render/shadow_map.py shadows it,
 pbr/lighting/disc_light.glsl widens the lobes to its disc.
 
 * recovery: a disc of known radiance on a constant sky (float64), its direction, irradiance
@@ -20,7 +20,7 @@ import pytest
 
 from pbrlab import evaluate
 from pbrlab.foundation import images
-from pbrlab.gpu import environment_sun as es
+from pbrlab.scene import environment_sun as es
 from pbrlab.importers.loader import parse_scene
 from pbrlab.render import shadow_map
 from pbrlab.render.renderer import render_scene

@@ -126,7 +126,7 @@ class _SceneResources:
 
 def _with_environment_sun(ctx, scene: Scene):
     """(scene, sun): with render.environment_sun and an environment that has a sun
-    (gpu/environment_sun.py), the sun as directional light 0 (shadow_map.py shadows it) and the
+    (scene/environment_sun.py), the sun as directional light 0 (shadow_map.py shadows it) and the
     environment read without it (_SceneResources); otherwise the scene with the option off."""
     if not scene.render.environment_sun:
         return scene, None

@@ -91,7 +91,7 @@ class ContextCache:
 
     def environment(self, environment, sun=None) -> PreparedEnvironment:
         """A scene's environment (constant colour or image file, times its intensity); with
-        ``sun`` (gpu/environment_sun.py, found in this environment) the sky without it."""
+        ``sun`` (scene/environment_sun.py, found in this environment) the sky without it."""
         if environment.color is not None:
             source = ("color", tuple(float(c) for c in environment.color))
         else:
@@ -102,19 +102,19 @@ class ContextCache:
             if sun is None:
                 return PreparedEnvironment(environment_sh(environment), ibl.prefiltered_environment(self.ctx, image),
                                            ibl.irradiance_environment(self.ctx, image))
-            from ..gpu.environment_sun import sunless
+            from ..scene.environment_sun import sunless
             image = sunless(image, sun)
             return PreparedEnvironment(project_equirect(image), ibl.prefiltered_environment(self.ctx, image),
                                        ibl.irradiance_environment(self.ctx, image))
         return self._environments.get(key, prepare)
 
     def environment_sun(self, environment):
-        """The sun of an image environment (gpu/environment_sun.find_sun), or None; found once."""
+        """The sun of an image environment (scene/environment_sun.find_sun), or None; found once."""
         if environment.color is not None:
             return None
         key = ("sun", *file_key(environment.path), float(environment.intensity))
         if key not in self._suns:
-            from ..gpu.environment_sun import find_sun
+            from ..scene.environment_sun import find_sun
             self._suns[key] = find_sun(environment_image(environment))
         return self._suns[key]
 

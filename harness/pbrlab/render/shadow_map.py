@@ -1,4 +1,4 @@
-"""A shadow map for one directional light (the environment's sun: gpu/environment_sun.py,
+"""A shadow map for one directional light (the environment's sun: scene/environment_sun.py,
 render.environment_sun): a depth pass of the scene's meshes seen along the light, read back by
 the scene programs with percentage-closer filtering (scene_lighting.inc, pbrlab_sun_visibility).
 

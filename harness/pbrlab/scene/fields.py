@@ -240,7 +240,7 @@ RENDER = {
                               "come through the object (below its geometric normal's horizon: "
                               "pbr/ibl/horizon_occlusion.glsl).", default=True),
     "environment_sun": Flag("Split the environment image's sun (a compact source holding at least a fifth of its "
-                            "light: gpu/environment_sun.py) off as a directional light that casts shadows "
+                            "light: scene/environment_sun.py) off as a directional light that casts shadows "
                             "(render/shadow_map.py); the rest stays the environment. Nothing changes for an "
                             "environment without a sun.", default=False),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "

@@ -220,7 +220,7 @@ class RenderSettings:
     # a normal-mapped surface's environment light below its geometric horizon taken out
     # (PBRLAB_HORIZON_OCCLUSION: pbr/ibl/horizon_occlusion.glsl)
     horizon_occlusion: bool = True
-    # the environment's sun (a compact source holding a large share of its light: gpu/environment_sun.py)
+    # the environment's sun (a compact source holding a large share of its light: scene/environment_sun.py)
     # drawn as a directional light with a shadow map (render/shadow_map.py) and taken out of the environment
     environment_sun: bool = False
 

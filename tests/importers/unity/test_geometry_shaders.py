@@ -22,7 +22,7 @@ import pytest
 from pbrlab.checking import unity_corpus as corpus
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.loader import parse_scene
-from pbrlab.importers.unity.geometry_stage import spell_for_glsl
+from pbrlab.importers.unity.geometry_syntax import spell_for_glsl
 from pbrlab.render.renderer import render_scene
 
 SHIFTS = (-0.45, 0.45)

@@ -178,7 +178,7 @@ class VertexFragmentPass:
     fragment_return_semantic: str
     structs: dict                   # name -> ShaderStruct (the program's own)
     declared: frozenset = frozenset()
-    geometry: object = None         # geometry_stage.GeometryFunction of a #pragma geometry
+    geometry: object = None         # geometry_syntax.GeometryFunction of a #pragma geometry
     state: RenderState = field(default_factory=RenderState)
     language: str = "hlsl"
     properties: dict = field(default_factory=dict)       # the file's, shared by its passes

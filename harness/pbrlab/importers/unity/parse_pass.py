@@ -11,7 +11,7 @@ import re
 from pathlib import Path
 
 from . import model as M
-from .geometry_stage import parse_geometry
+from .geometry_syntax import parse_geometry
 from .conditionals import active_text, defines_of
 from .engine_inputs import check_engine_inputs
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,

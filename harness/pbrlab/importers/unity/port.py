@@ -37,7 +37,7 @@ from pathlib import Path
 
 from . import cg_spellings, cg_types
 from . import model as M
-from .geometry_stage import spell_for_glsl
+from .geometry_syntax import spell_for_glsl
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, included_text
 

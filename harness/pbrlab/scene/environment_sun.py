@@ -37,7 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..scene.environment import equirect_directions
+from .environment import equirect_directions
 
 SUN_LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # Rec. 709 / sRGB luminance weights
 # A texel is the sun's when its luminance is within a factor 100 of the peak: Blender's sunrise's
