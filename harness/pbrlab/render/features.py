@@ -95,6 +95,7 @@ class SceneFeatures:
     hdr_target: str
     orthographic: bool = False  # parallel projection: one view direction
     sun_shadow: bool = False   # directional light 0 is the environment's sun, shadowed (render.environment_sun)
+    sky_visibility: int = 0    # K shadow maps for the environment's visibility (render.environment_visibility)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -138,6 +139,7 @@ def scene_features(scene) -> SceneFeatures:
         energy_compensation=scene.render.energy_compensation,
         horizon_occlusion=scene.render.horizon_occlusion,
         sun_shadow=scene.render.environment_sun,
+        sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -161,6 +163,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_ORTHOGRAPHIC"] = 1
     if s.sun_shadow and not m.unlit:
         defines["PBRLAB_SUN_SHADOW"] = 1
+    if s.sky_visibility and s.environment and not m.unlit:
+        defines["PBRLAB_SKY_VISIBILITY"] = s.sky_visibility
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),
