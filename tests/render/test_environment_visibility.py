@@ -50,7 +50,7 @@ def multi_bounce(v, albedo=F0):
 LIPSCHITZ = float(np.max(np.abs(np.diff(multi_bounce(np.linspace(0, 1, 100001))))) * 100000)
 
 
-def scene(visibility, box=True, sphere=False):
+def scene(visibility, box=True, sphere=False, albedo=0.0, diffuse=False):
     objects = [{"mesh": {"primitive": "plane", "size": PLANE}, "material": "black"}]
     if box:
         objects.append({"mesh": {"primitive": "box", "size": BOX_SIZE}, "material": "black",
@@ -59,8 +59,9 @@ def scene(visibility, box=True, sphere=False):
         objects = [{"mesh": {"primitive": "icosphere", "radius": 1.0, "subdivisions": 4}, "material": "black"}]
     return parse_scene({
         "camera": dict(CAMERA), "environment": {"color": SKY},
-        "materials": {"black": {"albedo": [0.0, 0.0, 0.0], "smoothness": 0.0}},
-        "objects": objects, "render": {"environment_visibility": visibility}}, origin="test_environment_visibility")
+        "materials": {"black": {"albedo": [albedo] * 3, "smoothness": 0.0}},
+        "objects": objects, "render": {"environment_visibility": visibility, "environment_visibility_diffuse": diffuse}},
+        origin="test_environment_visibility")
 
 
 def _box_hit(origins, directions):
@@ -222,3 +223,28 @@ def test_the_median_cut_splits_the_flux_evenly_and_keeps_it(lights):
     omega = equirect_directions(ev.MIN_ROWS, 2 * ev.MIN_ROWS)[1].sum()
     np.testing.assert_allclose(flux.sum(), omega * SKY[1], rtol=1e-7)
     assert flux.max() / flux.min() < 1.15  # a constant sky: regions of (nearly) equal solid angle
+
+
+def test_the_diffuse_is_scaled_only_with_its_flag(renders):
+    """The diffuse light of a white plane (white minus black render: the specular is the same)
+    is the option-off's to rounding without the flag; with it, its ratio to the option-off's is
+    the fit at the albedo 0.8 of the V the black plane's specular ratio shows (that ratio is
+    max(V, f(V)) at F0 0.04, which exceeds V by at most EXCESS: V lies within EXCESS below it;
+    the fit at 0.8 has slope at most its LIPSCHITZ there)."""
+    on_black, off_black = renders
+    off = np.asarray(render_scene(scene(0, albedo=0.8)).linear, np.float64)[..., 1] - off_black[..., 1]
+    on = np.asarray(render_scene(scene(K, albedo=0.8)).linear, np.float64)[..., 1] - on_black[..., 1]
+    flagged = np.asarray(render_scene(scene(K, albedo=0.8, diffuse=True)).linear, np.float64)[..., 1]
+    flagged = flagged - on_black[..., 1]
+    points, seen = plane_points()
+    assert (np.abs(on - off)[seen] > ROUNDING * np.abs(off)[seen]).sum() == 0
+    v = np.linspace(0, 1, 100001)
+    excess = float(np.max(multi_bounce(v) - v))                        # 0.002 near V = 0.9
+    slope = float(np.max(np.abs(np.diff(multi_bounce(v, 0.8)))) * 100000)
+    specular = ratio(on_black, off_black)
+    expected = multi_bounce(specular, 0.8)
+    bound = slope * excess + 4 * ROUNDING   # four renders' rounding in the two ratios
+    shadowed = seen & (specular < 0.9)
+    assert shadowed.sum() > 100
+    assert (np.abs(flagged / off - expected)[shadowed] > bound).sum() == 0
+    assert (flagged[shadowed] < off[shadowed]).all()   # darker in the box's shadow: the flag acts

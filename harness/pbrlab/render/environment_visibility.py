@@ -14,12 +14,16 @@ Estimator, per point p with shading normal n (scene_lighting.inc, pbrlab_environ
 
 with s_k(p) the share of l_k's shadow map's percentage-closer taps that see the sky from p (as
 render/shadow_map.py reads the sun's). It is a ratio: where nothing stands in the way V = 1
-exactly and the environment's irradiance is as before; under a constant sky V is the
-quadrature over the K directions of the cosine-weighted visible fraction of the hemisphere,
-(1/pi) int_{n.l>0} vis(l) n.l dl. The environment's diffuse light (and the sheen's, which reads
-the same irradiance) is multiplied by V; its specular light by V too (the specular lobe is
-not resolved by K directions: the diffuse estimate stands in for it, as ambient occlusion
-applied as specular occlusion does).
+exactly and the environment's light is as before; under a constant sky V is the quadrature
+over the K directions of the cosine-weighted visible fraction of the hemisphere,
+(1/pi) int_{n.l>0} vis(l) n.l dl. The environment's specular light (and the clear coat's) is
+multiplied by it (the coat's by V itself; specular occlusion from the visibility: the lobe is not resolved by K
+directions, the cosine-weighted estimate stands in for it), through Jimenez et al. 2016's
+multi-bounce fit with the specular colour as the albedo (light the surroundings send back);
+with render.environment_visibility_diffuse the diffuse and sheen light too, through the same
+fit with the diffuse albedo. On the fidelity benchmark the specular alone moved the median
+closer to Cycles and the diffuse moved it away (docs/fidelity.md): a path tracer fills the
+hidden sky with light bounced off and emitted by the scene.
 
 Error against the true visible fraction (tests/render/test_environment_visibility.py bounds
 both): the quadrature's, from K: a region's directions all count with its centroid, so only
@@ -81,7 +85,6 @@ def median_cut(image: np.ndarray, count: int) -> SkyLights:
     directions, solid_angle = equirect_directions(height, width)
     flux_rgb = radiance * solid_angle[..., None]
     luminance = flux_rgb @ SUN_LUMINANCE
-    area = _summed(solid_angle)
     lum = _summed(luminance)
     rgb = _summed(flux_rgb)
     weighted = _summed(directions * np.where(luminance > 0, luminance, 0.0)[..., None])

@@ -96,6 +96,7 @@ class SceneFeatures:
     orthographic: bool = False  # parallel projection: one view direction
     sun_shadow: bool = False   # directional light 0 is the environment's sun, shadowed (render.environment_sun)
     sky_visibility: int = 0    # K shadow maps for the environment's visibility (render.environment_visibility)
+    sky_visibility_diffuse: bool = False  # ... applied to the diffuse too (render.environment_visibility_diffuse)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -140,6 +141,7 @@ def scene_features(scene) -> SceneFeatures:
         horizon_occlusion=scene.render.horizon_occlusion,
         sun_shadow=scene.render.environment_sun,
         sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
+        sky_visibility_diffuse=scene.render.environment_visibility_diffuse,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -165,6 +167,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_SUN_SHADOW"] = 1
     if s.sky_visibility and s.environment and not m.unlit:
         defines["PBRLAB_SKY_VISIBILITY"] = s.sky_visibility
+        if s.sky_visibility_diffuse:
+            defines["PBRLAB_SKY_VISIBILITY_DIFFUSE"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),

@@ -226,6 +226,8 @@ class RenderSettings:
     # the environment's light scaled by the share the scene's own geometry leaves visible, from
     # this many shadow maps (0: off; render/environment_visibility.py)
     environment_visibility: int = 0
+    # ... applied to the environment's diffuse (and sheen) light too, not only its specular
+    environment_visibility_diffuse: bool = False
 
 
 @dataclass
