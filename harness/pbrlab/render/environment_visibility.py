@@ -121,14 +121,6 @@ def median_cut(image: np.ndarray, count: int) -> SkyLights:
     return SkyLights(np.array(dirs), np.array(fluxes), regions)
 
 
-def estimate(lights: SkyLights, normal, sees_sky) -> np.ndarray:
-    """The estimator of the module doc in float64: ``sees_sky`` is K shares in [0, 1]."""
-    weights = lights.flux * np.maximum(lights.directions @ np.asarray(normal, np.float64), 0.0)[:, None]
-    total = weights.sum(axis=0)
-    lit = (weights * np.asarray(sees_sky, np.float64)[:, None]).sum(axis=0)
-    return np.where(total > 0, lit / np.where(total > 0, total, 1.0), 1.0)
-
-
 def sky_casters(scene) -> list:
     """The sun's casters (shadow_map.casters) less the transmissive: light comes through those in a
     path tracer, and a test grid of glass spheres would darken itself."""
