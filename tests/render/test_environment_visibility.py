@@ -7,8 +7,8 @@ max(V, f(V)), Jimenez et al.'s multi-bounce fit at F0 0.04, applied here to the 
 
 * the float64 estimator with exact ray casting (the same K directions and fluxes) against the
   true cosine-weighted visible fraction (1/pi) int vis cos, by float64 ray casting over
-  256^2 cosine-weighted cells (their error: the share of cells the box's outline crosses): both are weighted means of region
-  visibilities in [0, 1], so |V_K - V| <= TV(p, q) + sum_k q_k |x_k - y_k|, with p the
+  256^2 cosine-weighted cells (their error: the share of cells the box's outline crosses): both
+  are weighted means of region visibilities in [0, 1], so |V_K - V| <= TV(p, q) + sum_k q_k |x_k - y_k|, with p the
   estimator's weights (F_k cos l_k), q the regions' true cosine weights, x_k the visibility
   along l_k and y_k the cosine-weighted seen share of region k's texels (zero but where a
   region straddles the box's outline; per point, float64);
@@ -64,7 +64,8 @@ def scene(visibility, box=True, sphere=False, albedo=0.0, diffuse=False):
     return parse_scene({
         "camera": dict(CAMERA), "environment": {"color": SKY},
         "materials": {"black": {"albedo": [albedo] * 3, "smoothness": 0.0}},
-        "objects": objects, "render": {"environment_visibility": visibility, "environment_visibility_diffuse": diffuse}},
+        "objects": objects,
+        "render": {"environment_visibility": visibility, "environment_visibility_diffuse": diffuse}},
         origin="test_environment_visibility")
 
 

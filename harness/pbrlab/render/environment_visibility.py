@@ -45,9 +45,9 @@ import moderngl
 import numpy as np
 
 from . import shadow_map
-from ..gpu.environment_sun import SUN_LUMINANCE
 from ..scene.environment import equirect_directions
 
+LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # Rec. 709 weights, as the sun's split weighs flux
 COUNTS = (0, 16, 32, 64)   # render.environment_visibility's choices (0: off)
 # texels per tile side: the benchmark frames a model at 384 drawn pixels, so a texel is about
 # 0.75 of a drawn pixel: the sky's shadows are soft (K directions), a coarser map than the sun's
@@ -84,7 +84,7 @@ def median_cut(image: np.ndarray, count: int) -> SkyLights:
     height, width = radiance.shape[:2]
     directions, solid_angle = equirect_directions(height, width)
     flux_rgb = radiance * solid_angle[..., None]
-    luminance = flux_rgb @ SUN_LUMINANCE
+    luminance = flux_rgb @ LUMINANCE
     lum = _summed(luminance)
     rgb = _summed(flux_rgb)
     weighted = _summed(directions * np.where(luminance > 0, luminance, 0.0)[..., None])
@@ -130,7 +130,10 @@ def sky_casters(scene) -> list:
 class EnvironmentVisibility:
     """The K shadow maps of one render (an atlas of tiles) and how a program reads them."""
 
-    def __init__(self, ctx: moderngl.Context, scene, image: np.ndarray, count: int):
+    def __init__(self, ctx: moderngl.Context, scene, image: np.ndarray, count: int, sun=None):
+        if sun is not None:  # the sky without the sun, as environment_sun.sunless makes it: its texels filled
+            image = np.array(image, np.float32)[..., :3]
+            image[sun.mask] = np.asarray(sun.fill, np.float32)
         self.lights = median_cut(image, count)
         self.grid = math.ceil(math.sqrt(count))
         size = self.grid * TILE

@@ -344,10 +344,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         resources.sun_shadow = shadow_map.SunShadow(ctx, scene, sun)
     if scene.render.environment_visibility:  # the sky's K maps, from the sky the environment lookup reads
         from ..scene.environment import environment_image
-        from ..gpu.environment_sun import sunless
-        image = environment_image(scene.environment)
         resources.sky_visibility = environment_visibility.EnvironmentVisibility(
-            ctx, scene, image if sun is None else sunless(image, sun), scene.render.environment_visibility)
+            ctx, scene, environment_image(scene.environment), scene.render.environment_visibility, sun)
     cube_holder = []
 
     def environment_cube():  # made once per render, only if a shader samples a cube
