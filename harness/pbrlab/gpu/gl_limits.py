@@ -22,13 +22,15 @@ FLOAT32_MAX = float(np.finfo(np.float32).max)
 # element each takes one slot. directional: direction, radiance; point: position,
 # radiance, range; spot: position, radiance, range, direction, cone.
 VECTORS_PER_LIGHT = {"directional": 2, "point": 3, "spot": 5}
+# per direction of render.environment_visibility: three affine maps, the direction, its flux
+VECTORS_PER_SKY_DIRECTION = 5
 # Vectors the scene programs use besides the lights: camera (4 vec3 + viewport), two
 # mat4 and a mat3 (11), material (8), SH9 (9), samplers and flags; 256 leaves room.
 RESERVED_UNIFORM_VECTORS = 256
 # Texture units the harness takes before a material's own: the DFG table and the
 # prefiltered environment, the sheen table, the transmission copy, the irradiance cube, the
-# sun's shadow map (render._SceneResources.FIRST_MATERIAL_UNIT).
-RESERVED_TEXTURE_UNITS = 6
+# sun's shadow map, the environment's visibility maps (render._SceneResources.FIRST_MATERIAL_UNIT).
+RESERVED_TEXTURE_UNITS = 7
 
 
 def _limit(ctx, name: str, fallback: int) -> int:
@@ -130,6 +132,7 @@ def check_scene(ctx, scene) -> None:
     budget = _limit(ctx, "GL_MAX_FRAGMENT_UNIFORM_VECTORS", 1024) - RESERVED_UNIFORM_VECTORS
     counts = {t: sum(1 for light in scene.lights if light.type == t) for t in VECTORS_PER_LIGHT}
     used = sum(VECTORS_PER_LIGHT[t] * n for t, n in counts.items())
+    budget -= VECTORS_PER_SKY_DIRECTION * scene.render.environment_visibility
     if used > budget:
         most = ", ".join(f"at most {budget // VECTORS_PER_LIGHT[t]} {t}" for t in VECTORS_PER_LIGHT)
         have = ", ".join(f"{n} {t}" for t, n in counts.items() if n)

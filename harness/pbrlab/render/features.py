@@ -95,6 +95,8 @@ class SceneFeatures:
     hdr_target: str
     orthographic: bool = False  # parallel projection: one view direction
     sun_shadow: bool = False   # directional light 0 is the environment's sun, shadowed (render.environment_sun)
+    sky_visibility: int = 0    # K shadow maps for the environment's visibility (render.environment_visibility)
+    sky_visibility_diffuse: bool = False  # ... applied to the diffuse too (render.environment_visibility_diffuse)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -138,6 +140,8 @@ def scene_features(scene) -> SceneFeatures:
         energy_compensation=scene.render.energy_compensation,
         horizon_occlusion=scene.render.horizon_occlusion,
         sun_shadow=scene.render.environment_sun,
+        sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
+        sky_visibility_diffuse=scene.render.environment_visibility_diffuse,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -162,6 +166,10 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_ORTHOGRAPHIC"] = 1
     if s.sun_shadow and not m.unlit:
         defines["PBRLAB_SUN_SHADOW"] = 1
+    if s.sky_visibility and s.environment and not m.unlit:
+        defines["PBRLAB_SKY_VISIBILITY"] = s.sky_visibility
+        if s.sky_visibility_diffuse:
+            defines["PBRLAB_SKY_VISIBILITY_DIFFUSE"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),

@@ -25,7 +25,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import features, instanced_draws, resource_cache, shadow_map, tangent_frames
+from . import environment_visibility, features, instanced_draws, resource_cache, shadow_map, tangent_frames
 from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
@@ -71,13 +71,15 @@ class _SceneResources:
     ENV_UNITS = {"u_dfg_lut": 0, "u_env_prefiltered": 1, "u_sheen_lut": 2, "u_env_irradiance": 4}
     TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
     SUN_SHADOW_UNIT = 5  # the environment's sun's shadow map (shadow_map.py), when render.environment_sun finds one
-    FIRST_MATERIAL_UNIT = 6
+    SKY_SHADOW_UNIT = 6  # the environment's visibility maps (environment_visibility.py), render.environment_visibility
+    FIRST_MATERIAL_UNIT = 7
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
     def __init__(self, ctx, scene: Scene, full: bool, sun=None):
         self.full = full
         self.sun_shadow = None  # set by render_scene once the shadow map is drawn
+        self.sky_visibility = None  # set by render_scene once the visibility maps are drawn
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
@@ -108,6 +110,8 @@ class _SceneResources:
         _set(program, "u_env_lod_count", float(ibl.PREFILTER_LEVELS))
         if self.sun_shadow is not None:
             self.sun_shadow.bind(program, self.SUN_SHADOW_UNIT)
+        if self.sky_visibility is not None:
+            self.sky_visibility.bind(program, self.SKY_SHADOW_UNIT)
         if self.transmission_copy is not None:  # a program that does not transmit declares none of it
             self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
         _upload_material(program, material)
@@ -138,6 +142,14 @@ def _with_environment_sun(ctx, scene: Scene):
     light = Light(type="directional", color=np.asarray(sun.radiance, np.float64), intensity=1.0,
                   direction=np.asarray(sun.direction, np.float64))
     return dataclasses.replace(scene, lights=[light, *scene.lights]), sun
+
+
+def _with_environment_visibility(scene: Scene) -> Scene:
+    """The scene with render.environment_visibility off where it has nothing to do: no
+    environment, or no object to cast or receive (environment_visibility.py)."""
+    if scene.render.environment_visibility and (scene.environment is None or not scene.objects):
+        return dataclasses.replace(scene, render=dataclasses.replace(scene.render, environment_visibility=0))
+    return scene
 
 
 def _upload_scene_uniforms(program, scene: Scene, frame, env_sh):
@@ -318,6 +330,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     surface_layers.check_twins(scene, surfaces)
     ctx = gl.make_current(ctx or gl.shared_context())
     scene, sun = _with_environment_sun(ctx, scene)  # the sun a light like the scene's own, for the limits too
+    scene = _with_environment_visibility(scene)
     gl_limits.check_scene(ctx, scene)
     frame = scene_frame(scene)
     plan = features.plan_programs(scene, specialise, checking=checking)
@@ -329,6 +342,10 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     resources = _SceneResources(ctx, scene, full=not plan.specialised, sun=sun)
     if sun is not None and scene.objects:  # the sun's depth pass, before any target of the frame is bound
         resources.sun_shadow = shadow_map.SunShadow(ctx, scene, sun)
+    if scene.render.environment_visibility:  # the sky's K maps, from the sky the environment lookup reads
+        from ..scene.environment import environment_image
+        resources.sky_visibility = environment_visibility.EnvironmentVisibility(
+            ctx, scene, environment_image(scene.environment), scene.render.environment_visibility, sun)
     cube_holder = []
 
     def environment_cube():  # made once per render, only if a shader samples a cube
@@ -379,6 +396,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.release()
         if resources.sun_shadow is not None:
             resources.sun_shadow.release()
+        if resources.sky_visibility is not None:
+            resources.sky_visibility.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,

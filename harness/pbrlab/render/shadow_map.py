@@ -116,6 +116,46 @@ def light_frame(scene, direction, size: int = SHADOW_MAP_SIZE) -> LightFrame | N
     return LightFrame(origin=origin_local @ basis, axes=axes, texel=texel, size=size)
 
 
+def draw_depth(ctx: moderngl.Context, scene, frame: LightFrame, fbo, viewport=None, objects=None,
+               single_sided: bool = False) -> None:
+    """The casters' depth along ``frame``'s light into ``fbo``'s depth attachment, within
+    ``viewport`` (x, y, w, h; the whole target when None): one tile of an atlas of maps
+    (render/environment_visibility.py) or a whole map; ``objects``: the casters (``casters``
+    when None). ``single_sided``: a material that is not double-sided casts only from the faces
+    that face the light (a rasteriser does not draw a single-sided face seen from behind; a closed
+    mesh still has a face towards the light on every ray through it). The frame's axes (u, v, w)
+    are right-handed with w into the map, so a face whose normal points at the light (along -w)
+    winds clockwise there. The caller clears it first."""
+    program = ctx.program(vertex_shader=_VERTEX, fragment_shader=_FRAGMENT)
+    try:
+        fbo.use()
+        if viewport is not None:
+            fbo.viewport = viewport
+        ctx.enable(moderngl.DEPTH_TEST)
+        ctx.disable(moderngl.CULL_FACE | moderngl.BLEND)
+        ctx.depth_func = "<"
+        program["u_origin"].value = tuple(frame.origin)
+        program["u_axes"].write(np.ascontiguousarray(frame.axes, np.float32).tobytes())
+        for obj in casters(scene) if objects is None else objects:
+            material = scene.materials[obj.material]
+            if single_sided and not material.double_sided:
+                ctx.enable(moderngl.CULL_FACE)
+                ctx.front_face, ctx.cull_face = "cw", "back"
+            else:
+                ctx.disable(moderngl.CULL_FACE)
+            program["u_model"].value = tuple(instanced_draws.model_matrix(obj.transform))
+            vao, buffers = meshes.vertex_array(ctx, program, obj)
+            topology = "triangles" if obj.geometry is None else obj.geometry.topology
+            if topology == "triangles":
+                vao.render(moderngl.TRIANGLES)
+            for resource in [vao, *buffers]:
+                resource.release()
+    finally:
+        ctx.front_face = "ccw"
+        ctx.disable(moderngl.CULL_FACE)
+        program.release()
+
+
 class ShadowMap:
     """The depth of the casters seen along the light (a depth texture), and its uniforms."""
 
@@ -126,26 +166,12 @@ class ShadowMap:
         self.texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
         self.texture.repeat_x = self.texture.repeat_y = False
         fbo = ctx.framebuffer(depth_attachment=self.texture)
-        program = ctx.program(vertex_shader=_VERTEX, fragment_shader=_FRAGMENT)
         try:
             fbo.use()
             ctx.clear(depth=1.0)
-            ctx.enable(moderngl.DEPTH_TEST)
-            ctx.disable(moderngl.CULL_FACE | moderngl.BLEND)
-            ctx.depth_func = "<"
-            program["u_origin"].value = tuple(frame.origin)
-            program["u_axes"].write(np.ascontiguousarray(frame.axes, np.float32).tobytes())
-            for obj in casters(scene):
-                program["u_model"].value = tuple(instanced_draws.model_matrix(obj.transform))
-                vao, buffers = meshes.vertex_array(ctx, program, obj)
-                topology = "triangles" if obj.geometry is None else obj.geometry.topology
-                if topology == "triangles":
-                    vao.render(moderngl.TRIANGLES)
-                for resource in [vao, *buffers]:
-                    resource.release()
+            draw_depth(ctx, scene, frame, fbo)
         finally:
             fbo.release()
-            program.release()
 
     def uniforms(self) -> dict:
         f = self.frame

@@ -243,6 +243,14 @@ RENDER = {
                             "light: scene/environment_sun.py) off as a directional light that casts shadows "
                             "(render/shadow_map.py); the rest stays the environment. Nothing changes for an "
                             "environment without a sun.", default=False),
+    "environment_visibility": Choice("Scale the environment's specular light at each point by the share of the "
+                                     "environment the scene's own geometry leaves visible, estimated from this many "
+                                     "shadow maps along directions of equal flux (render/environment_visibility.py); "
+                                     "0: off.", (0, 16, 32, 64), default=0),
+    "environment_visibility_diffuse": Flag("With environment_visibility: scale the environment's diffuse (and sheen) "
+                                           "light too. A path tracer fills what is hidden with light bounced off and "
+                                           "emitted by the scene, which this does not add (docs/fidelity.md).",
+                                           default=False),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",

@@ -223,6 +223,11 @@ class RenderSettings:
     # the environment's sun (a compact source holding a large share of its light: scene/environment_sun.py)
     # drawn as a directional light with a shadow map (render/shadow_map.py) and taken out of the environment
     environment_sun: bool = False
+    # the environment's light scaled by the share the scene's own geometry leaves visible, from
+    # this many shadow maps (0: off; render/environment_visibility.py)
+    environment_visibility: int = 0
+    # ... applied to the environment's diffuse (and sheen) light too, not only its specular
+    environment_visibility_diffuse: bool = False
 
 
 @dataclass
