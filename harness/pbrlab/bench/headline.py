@@ -65,38 +65,51 @@ def block(doc: dict) -> str:
     return "\n".join(lines)
 
 
-def replace_block(text: str, new_block: str, name: str) -> str:
-    start, stop = text.find(BEGIN), text.find(END)
+def replace_between(text: str, new_block: str, name: str, begin: str, end: str, what: str) -> str:
+    """``text`` with the block from the line ``begin`` to the line ``end`` replaced."""
+    start, stop = text.find(begin), text.find(end)
     if start < 0 or stop < start:
-        raise PbrlabError(f"{name}: no bench-figures block (the lines {BEGIN!r} ... {END!r})")
-    return text[:start] + new_block + text[stop + len(END):]
+        raise PbrlabError(f"{name}: no {what} block (the lines {begin!r} ... {end!r})")
+    return text[:start] + new_block + text[stop + len(end):]
 
 
-def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m pbrlab.bench.headline", description=__doc__.split("\n\n")[0])
+def replace_block(text: str, new_block: str, name: str) -> str:
+    return replace_between(text, new_block, name, BEGIN, END, "bench-figures")
+
+
+def write_pages(argv, prog: str, description: str, make_block, replace, what: str) -> int:
+    """The command of a generated block: ``prog JSON PAGE... [--check]`` writes
+    ``make_block(json)`` into each page through ``replace`` (or, with --check, only compares:
+    exit 1 when a page differs, 2 on an unreadable input)."""
+    parser = argparse.ArgumentParser(prog=prog, description=description)
     parser.add_argument("json", type=Path)
     parser.add_argument("pages", type=Path, nargs="+")
     parser.add_argument("--check", action="store_true", help="compare only; exit 1 when a page differs")
     args = parser.parse_args(argv)
     try:
-        new = block(json.loads(args.json.read_text(encoding="utf-8")))
+        new = make_block(json.loads(args.json.read_text(encoding="utf-8")))
         stale = []
         for page in args.pages:
             text = page.read_text(encoding="utf-8")
-            updated = replace_block(text, new, str(page))
+            updated = replace(text, new, str(page))
             if updated != text:
                 stale.append(str(page))
                 if not args.check:
                     page.write_text(updated, encoding="utf-8")
-    except (PbrlabError, OSError, json.JSONDecodeError) as exc:
-        print(f"pbrlab.bench.headline: {exc}", file=sys.stderr)
+    except (PbrlabError, OSError, json.JSONDecodeError, KeyError) as exc:
+        print(f"{prog}: {exc}", file=sys.stderr)
         return 2
     if args.check and stale:
-        print(f"stale bench figures in {', '.join(stale)}: run python -m pbrlab.bench.headline "
-              f"{args.json} {' '.join(map(str, args.pages))}", file=sys.stderr)
+        print(f"stale {what} in {', '.join(stale)}: run {prog} {args.json} {' '.join(map(str, args.pages))}",
+              file=sys.stderr)
         return 1
     return 0
 
 
+def main(argv=None) -> int:
+    return write_pages(argv, "python -m pbrlab.bench.headline", __doc__.split("\n\n")[0], block,
+                       replace_block, "bench figures")
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    raise SystemExit(main())

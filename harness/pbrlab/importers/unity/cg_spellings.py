@@ -25,22 +25,11 @@ from __future__ import annotations
 
 import re
 
+from .source_text import matching_paren
+
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
 _SWITCH = re.compile(r"\bswitch\s*\(")
 _FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
-
-
-def _closing(text: str, open_index: int) -> int:
-    """The offset of the ``)`` that closes the ``(`` at ``open_index``; -1 when none does."""
-    depth = 0
-    for i in range(open_index, len(text)):
-        if text[i] == "(":
-            depth += 1
-        elif text[i] == ")":
-            depth -= 1
-            if depth == 0:
-                return i
-    return -1
 
 
 _PROCEDURAL = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+instancing_options\b[^\n]*\bprocedural:(\w+)", re.M)
@@ -73,7 +62,7 @@ def respelled(text: str) -> str:
     for m in _SWITCH.finditer(text):
         if m.start() < pos:
             continue
-        close = _closing(text, m.end() - 1)
+        close = matching_paren(text, m.end() - 1)
         if close < 0:
             continue
         selector = text[m.end():close]

@@ -48,16 +48,23 @@ def line_of(text: str, index: int) -> int:
     return text.count("\n", 0, index) + 1
 
 
-def matching_brace(text: str, open_index: int) -> int:
+def matching_brace(text: str, open_index: int, opening: str = "{", closing: str = "}") -> int:
+    """The offset of the ``closing`` that closes the ``opening`` at ``open_index``; -1 when
+    none does."""
     depth = 0
     for i in range(open_index, len(text)):
-        if text[i] == "{":
+        if text[i] == opening:
             depth += 1
-        elif text[i] == "}":
+        elif text[i] == closing:
             depth -= 1
             if depth == 0:
                 return i
     return -1
+
+
+def matching_paren(text: str, open_index: int) -> int:
+    """The offset of the ``)`` that closes the ``(`` at ``open_index``; -1 when none does."""
+    return matching_brace(text, open_index, "(", ")")
 
 
 def top_level(masked: str) -> str:

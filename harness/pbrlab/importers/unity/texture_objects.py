@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-from .source_text import blank_comments, matching_brace
+from .source_text import blank_comments, matching_brace, matching_paren
 
 _TEXTURE = re.compile(r"\bUnityTexture2D\s+(\w+)\s*=\s*UnityBuildTexture2DStruct(NoScale)?\s*\(\s*(\w+)\s*\)\s*;")
 _SAMPLER = re.compile(r"\bUnitySamplerState\s+(\w+)\s*=\s*UnityBuildSamplerStateStruct\s*\(\s*(\w+)\s*\)\s*;")
@@ -39,18 +39,6 @@ def _block_end(masked: str, pos: int) -> int:
                 return end if end >= 0 else len(masked)
             depth -= 1
     return len(masked)
-
-
-def _call_end(text: str, open_paren: int) -> int:
-    depth = 0
-    for i in range(open_paren, len(text)):
-        if text[i] == "(":
-            depth += 1
-        elif text[i] == ")":
-            depth -= 1
-            if depth == 0:
-                return i
-    return -1
 
 
 def _members(name: str, texture: str | None, scale: str, sampler: str):
@@ -72,7 +60,7 @@ def _spell_block(block: str, name: str, texture: str | None, scale: str, sampler
         for m in call.finditer(block):
             if m.start() < pos:
                 continue
-            end = _call_end(block, m.end() - 1)
+            end = matching_paren(block, m.end() - 1)
             if end < 0:
                 return None
             uv = block[m.end():end]
