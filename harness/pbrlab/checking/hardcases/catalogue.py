@@ -274,6 +274,7 @@ TERMS: tuple[Function, ...] = (
        "roughness)"),
     # brdf/d_charlie.glsl, brdf/v_charlie.glsl, shading/sheen.glsl (KHR_materials_sheen)
     _f("pbr_D_Charlie", "NdotH:cosine alpha:alpha", D),
+    _f("pbr_disc_light_alpha", "alpha:alpha angularRadius:angle", _unit("widened alpha")),
     _f("pbr_sheen_lambda_exponent", "x:cosine alpha:alpha", Bound("|L| <= 30", -30.0, 30.0)),
     _f("pbr_sheen_lambda", "cosTheta:cosine alpha:alpha", Bound("0 <= Λ <= 2.2e4", 0.0, 2.2e4)),
     # V's largest values at the cosine floor 1e-4 (float32 1e-4 is 1e-4 (1 - 2.5e-9)): Neubelt 1/(8e-4),
@@ -674,6 +675,8 @@ DECIDED = {
         ("strength 0", "no anisotropy: bend = 1, the normal itself", {"v": (0.6, 0.0, 0.8), "d": (0.0, 1.0, 0.0),
                                                                       "strength": 0.0, "roughness": 0.3},
          "vec3(0.0, 0.0, 1.0)")],
+    "pbr_disc_light_alpha": [("radius 0", "a point source: sqrt(alpha²) is alpha exactly for float32 alpha in "
+                              "[2^-63, 1], so the lobe is the light's own", {"alpha": 0.25, "angularRadius": 0.0}, 0.25)],
     "pbr_D_Beckmann": [("NdotH = 0", "0/0 (exp(-inf) / 0); decided: 0, the limit", {"NdotH": 0.0, "alpha": 0.5}, 0.0)],
     "pbr_G1_SmithGGX": [("NdotX = 0, alpha = 0", "2·0/(0 + 0); decided 0: no light along the horizon",
                          {"NdotX": 0.0, "alpha": 0.0}, 0.0)],

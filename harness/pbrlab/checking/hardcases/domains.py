@@ -11,6 +11,8 @@ NaN and ±Inf included.
 
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -173,6 +175,13 @@ KINDS: dict[str, Kind] = {k.name: k for k in (
         Edge("negative", -1.0, "below the clamp range"),
         Edge("huge", 1e19, "x² approaches float32's maximum (3.4e38)"),
     ), (-0.0, DENORMAL, -DENORMAL, 2.0, -1e19), _uniform(-2.0, 2.0)),
+    # a distant source's angular radius, radians (the sun: 4.65e-3; Blender's sunrise disc: 9.8e-3)
+    Kind("angle", 9.8e-3, (
+        Edge("0", 0.0, "a point source: the lobe must be left exactly as it is"),
+        Edge("negative", -9.8e-3, "a sign error upstream: the width enters squared, so its sign must not matter"),
+        Edge("pi", math.pi, "a source as wide as the sky: the widened alpha must stay at most 1"),
+        Edge("huge", 1e19, "r² approaches float32's maximum: the widened alpha must still be finite"),
+    ), (-0.0, DENORMAL, 1e-30, 1e30, -1e30), _log_uniform(1e-4, 0.1)),
 )}
 
 
