@@ -18,6 +18,15 @@ last bits of a result can differ between machines. Unless ``$PBRLAB_LLVMPIPE_CPU
 says ``native``, the factory sets ``GALLIUM_OVERRIDE_CPU_CAPS`` (default ``sse4.1``, which
 every x86-64 CPU since 2008 has) before the driver loads, so renders are reproducible
 across x86-64 hosts. This must happen before the first context of the process.
+
+Mesa's shader disk cache: Mesa 22.3 keys a cached llvmpipe binary by the program's text and
+the driver's build, not by ``GALLIUM_OVERRIDE_CPU_CAPS`` or ``LP_NATIVE_VECTOR_WIDTH``, so a
+binary compiled on the 256-bit code path was loaded by a later 128-bit process (and the other
+way round) and its last bits followed whichever path ran first: the specialised and full
+programs of the README's scene then differed by 2 ulp in 352 values, in 1 full run of 3, and
+agreed with the cache disabled. Unless the caller names a cache folder
+(``MESA_SHADER_CACHE_DIR``, or the older ``MESA_GLSL_CACHE_DIR``) or disables the cache, the
+factory gives each code path its own folder (``shader_cache_folder``), set with the CPU pin.
 """
 
 from __future__ import annotations
@@ -47,11 +56,23 @@ _INSTALL_HINT = (
 )
 
 
+def shader_cache_folder() -> str:
+    """Mesa's shader cache folder for this process's llvmpipe code path (module doc): the
+    user's cache folder's mesa_shader_cache/pbrlab-<caps>-<vector width>."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    caps = os.environ.get("GALLIUM_OVERRIDE_CPU_CAPS", "native")
+    width = os.environ.get("LP_NATIVE_VECTOR_WIDTH", "default")
+    return os.path.join(base, "mesa_shader_cache", f"pbrlab-{re.sub(r'[^A-Za-z0-9.]', '_', caps)}-{width}")
+
+
 def pin_llvmpipe_cpu_caps() -> str:
-    """Pin llvmpipe's code generation to one CPU feature level; returns the level used."""
+    """Pin llvmpipe's code generation to one CPU feature level, and keep Mesa's shader cache
+    apart per code path (module doc); returns the level used."""
     caps = os.environ.get(CPU_CAPS_ENV, DEFAULT_CPU_CAPS)
     if caps != "native":
         os.environ.setdefault("GALLIUM_OVERRIDE_CPU_CAPS", caps)
+    if not any(os.environ.get(name) for name in ("MESA_SHADER_CACHE_DIR", "MESA_GLSL_CACHE_DIR")):
+        os.environ["MESA_SHADER_CACHE_DIR"] = shader_cache_folder()
     return os.environ.get("GALLIUM_OVERRIDE_CPU_CAPS", "native")
 
 
