@@ -67,5 +67,11 @@ def test_low_tier_error_against_high_tier_is_measured(renders):
     # 0.0013, p99 0.0068, mean 0.067 codes. The lower limits sit above the lobe-only LOW's
     # figures, so they fail if the environment choices are not in effect (the control); the
     # upper ones keep LOW in this envelope (a tier is a choice the docs measure, not a bug).
+    # NOT derived: the upper limits are the measured figures with room (median 0.0158 < 3e-2,
+    # p99 0.086 < 0.15, mean 0.83 < 1.5 codes), moved with LOW's environment read in issue 35;
+    # no float64 reference draws this textured scene under its HDR sky, so LOW's accuracy is
+    # held by derived bounds elsewhere (tests/render/test_gpu_matches_cpu_reference.py at
+    # quality low, the furnace, reciprocity and grazing-Fresnel tests). Deriving these limits,
+    # or replacing them with a per-pixel bound and an asserted fraction, is open (issue 35).
     assert 1e-2 < np.median(rel) < 3e-2 and np.quantile(rel, 0.99) < 0.15
     assert 0.5 < srgb.mean() < 1.5
