@@ -5,18 +5,21 @@ ACO_NOTE says what the figures are), per tier, with the parts that no tier chang
 removing them from the program's text: the light (PBRLAB_DIRECTIONAL_COUNT 0) and the
 environment (PBRLAB_ENV undefined).
 
-Scenes: a metallic-workflow torus (a mesh: the sphere impostor's ray intersection would add
-its own cost) under a uniform environment colour, and the fidelity benchmark's DamagedHelmet
-(base colour, metallic-roughness, normal, occlusion and emission maps) under the sunrise HDR;
-each with one directional light. The programs are the production ones (`pbrlab render`'s,
+Scenes: the whole-program bench's metallic-roughness class (pbrlab.bench.peer_gltf: a textured
+sphere mesh with base colour, metallic-roughness and normal maps, one directional light, under
+the sunrise HDR; the class issue 35's LOW <= 0.7x HIGH is stated for), a metallic-workflow torus
+(a mesh without maps: the sphere impostor's ray intersection would add its own cost) under a
+uniform environment colour, and the fidelity benchmark's DamagedHelmet (base colour,
+metallic-roughness, normal, occlusion and emission maps) under the sunrise HDR; the last two
+with this file's directional light. The programs are the production ones (`pbrlab render`'s,
 without the checking program's NaN/Inf test: gpu.scene_programs(..., checking=False)).
 
 Image error of each tier (rendered on this machine's OpenGL, linear radiance, covered pixels;
 relative error of the luminance, median / p99 / max, and the share of pixels more than 1 %
 off): the torus against the float64 CPU renderer (pbrlab.render.cpu_render: a constant
 environment, an untextured mesh) drawing the exact model (quality high, with its
-multiple-scattering compensation); DamagedHelmet against HIGH's own image, since no float64
-path covers its texture maps and HDR environment. A benchmark: it prints figures and asserts
+multiple-scattering compensation); the class and DamagedHelmet against HIGH's own image,
+since no float64 path covers texture maps and an HDR environment. A benchmark: it prints figures and asserts
 nothing.
 
     python benchmarks/tier_program_cost.py
@@ -42,7 +45,28 @@ PARTS = {"whole pixel": (), "without the light": (("#define PBRLAB_DIRECTIONAL_C
          "without the environment": (("#define PBRLAB_ENV 1\n", "\n"),)}
 
 
+CLASS = "metallic-roughness class"
+
+
+def _class_scene():
+    """The whole-program bench's metallic-roughness file (pbrlab.bench.peer_gltf), loaded as
+    pbrlab.bench.peer_programs loads it (sunrise HDR), at 64 x 64."""
+    import tempfile
+
+    from pbrlab.bench import peer_gltf
+    from pbrlab.importers.gltf import load_gltf
+    from pbrlab.scene.model import Environment
+
+    folder = Path(tempfile.mkdtemp(prefix="pbrlab-tier-class-"))
+    path, _ = peer_gltf.write(folder, "metallic-roughness", 1)
+    environment = Environment(path=staging.ENVIRONMENTS_DIR / "sunrise.exr")
+    return load_gltf(path, environment=environment, size=(64, 64), emit_warnings=False).scene
+
+
 def _scene(name: str, quality: str):
+    if name == CLASS:
+        scene = _class_scene()
+        return dataclasses.replace(scene, render=dataclasses.replace(scene.render, quality=quality))
     if name == "metallic torus":
         return parse_scene({"camera": CAMERA, "lights": [LIGHT], "environment": {"color": [0.05, 0.06, 0.08]},
                             "materials": {"m": {"workflow": "metallic", "albedo": [0.7, 0.08, 0.05], "metallic": 0.5,
@@ -113,17 +137,17 @@ def main() -> None:
     families = gpu.GPU_FAMILIES
     print("largest specialised GLSL program, instructions / VGPRs (x HIGH's whole pixel) per family "
           + " / ".join(gpu.TITLES[f] for f in families))
-    for name in ("metallic torus", "DamagedHelmet"):
+    for name in (CLASS, "metallic torus", "DamagedHelmet"):
         per = figures(name, families)
         for (quality, part), by_family in per.items():
             high = per[("high", "whole pixel")]
-            print(f"  {name:15s} {quality:6s} {part:24s} " + "  ".join(
+            print(f"  {name:24s} {quality:6s} {part:24s} " + "  ".join(
                 f"{gpu.TITLES[f]} {i:4d} / {v:2d} ({i / high[f][0]:.3f}x)" for f, (i, v) in by_family.items()))
     print("image error, relative luminance error per covered pixel: median / p99 / max (share > 1 %)")
-    for name, against in (("metallic torus", "the float64 CPU renderer's exact model"),
+    for name, against in ((CLASS, "HIGH's image"), ("metallic torus", "the float64 CPU renderer's exact model"),
                           ("DamagedHelmet", "HIGH's image")):
         for quality, (median, p99, worst, share) in image_errors(name).items():
-            print(f"  {name:15s} {quality:6s} against {against}: {median:.2e} / {p99:.2e} / {worst:.2e} "
+            print(f"  {name:24s} {quality:6s} against {against}: {median:.2e} / {p99:.2e} / {worst:.2e} "
                   f"({share:.1%})")
 
 

@@ -2536,7 +2536,10 @@ fn pbr_shade_punctual(n_12: vec3<f32>, v_16: vec3<f32>, l_10: vec3<f32>, lightRa
     var f0_28: vec3<f32>;
     var perceptualRoughness_17: f32;
     var NdotL_48: f32;
-    var brdf: vec3<f32>;
+    var piFd_3: f32;
+    var piDV_3: f32;
+    var LdotH_8: f32;
+    var piBrdf: vec3<f32>;
 
     n_13 = n_12;
     v_17 = v_16;
@@ -2548,18 +2551,22 @@ fn pbr_shade_punctual(n_12: vec3<f32>, v_16: vec3<f32>, l_10: vec3<f32>, lightRa
     let _e14 = n_13;
     let _e15 = l_11;
     NdotL_48 = clamp(dot(_e14, _e15), 0f, 1f);
-    let _e21 = n_13;
-    let _e22 = v_17;
-    let _e23 = l_11;
-    let _e24 = diffuseColor_9;
-    let _e25 = f0_28;
-    let _e26 = perceptualRoughness_17;
-    let _e27 = pbr_brdf_standard(_e21, _e22, _e23, _e24, _e25, _e26);
-    brdf = _e27;
-    let _e29 = lightRadiance_1;
-    let _e30 = brdf;
-    let _e33 = NdotL_48;
-    return ((_e29 * _e30) * (3.1415927f * _e33));
+    let _e24 = n_13;
+    let _e25 = v_17;
+    let _e26 = l_11;
+    let _e27 = perceptualRoughness_17;
+    pbr_brdf_standard_terms(_e24, _e25, _e26, _e27, (&piFd_3), (&piDV_3), (&LdotH_8));
+    let _e34 = diffuseColor_9;
+    let _e35 = piFd_3;
+    let _e37 = piDV_3;
+    let _e38 = f0_28;
+    let _e39 = LdotH_8;
+    let _e40 = pbr_specular_F(_e38, _e39);
+    piBrdf = ((_e34 * _e35) + (_e37 * _e40));
+    let _e44 = lightRadiance_1;
+    let _e45 = piBrdf;
+    let _e47 = NdotL_48;
+    return ((_e44 * _e45) * _e47);
 }
 
 fn pbr_shade_punctual_f90_(n_14: vec3<f32>, v_18: vec3<f32>, l_12: vec3<f32>, lightRadiance_2: vec3<f32>, diffuseColor_10: vec3<f32>, f0_29: vec3<f32>, f90_10: f32, perceptualRoughness_18: f32) -> vec3<f32> {
@@ -2572,7 +2579,10 @@ fn pbr_shade_punctual_f90_(n_14: vec3<f32>, v_18: vec3<f32>, l_12: vec3<f32>, li
     var f90_11: f32;
     var perceptualRoughness_19: f32;
     var NdotL_49: f32;
-    var brdf_1: vec3<f32>;
+    var piFd_4: f32;
+    var piDV_4: f32;
+    var LdotH_9: f32;
+    var piBrdf_1: vec3<f32>;
 
     n_15 = n_14;
     v_19 = v_18;
@@ -2585,19 +2595,23 @@ fn pbr_shade_punctual_f90_(n_14: vec3<f32>, v_18: vec3<f32>, l_12: vec3<f32>, li
     let _e16 = n_15;
     let _e17 = l_13;
     NdotL_49 = clamp(dot(_e16, _e17), 0f, 1f);
-    let _e23 = n_15;
-    let _e24 = v_19;
-    let _e25 = l_13;
-    let _e26 = diffuseColor_11;
-    let _e27 = f0_30;
-    let _e28 = f90_11;
+    let _e26 = n_15;
+    let _e27 = v_19;
+    let _e28 = l_13;
     let _e29 = perceptualRoughness_19;
-    let _e30 = pbr_brdf_standard_f90_(_e23, _e24, _e25, _e26, _e27, _e28, _e29);
-    brdf_1 = _e30;
-    let _e32 = lightRadiance_3;
-    let _e33 = brdf_1;
-    let _e36 = NdotL_49;
-    return ((_e32 * _e33) * (3.1415927f * _e36));
+    pbr_brdf_standard_terms(_e26, _e27, _e28, _e29, (&piFd_4), (&piDV_4), (&LdotH_9));
+    let _e36 = diffuseColor_11;
+    let _e37 = piFd_4;
+    let _e39 = piDV_4;
+    let _e40 = f0_30;
+    let _e41 = f90_11;
+    let _e42 = LdotH_9;
+    let _e43 = pbr_specular_F_f90_(_e40, _e41, _e42);
+    piBrdf_1 = ((_e36 * _e37) + (_e39 * _e43));
+    let _e47 = lightRadiance_3;
+    let _e48 = piBrdf_1;
+    let _e50 = NdotL_49;
+    return ((_e47 * _e48) * _e50);
 }
 
 fn pbr_env_brdf_approx(NdotV_46: f32, perceptualRoughness_20: f32) -> vec2<f32> {
@@ -2628,27 +2642,31 @@ fn pbr_env_brdf_approx(NdotV_46: f32, perceptualRoughness_20: f32) -> vec2<f32> 
 fn pbr_dfg_lut_uv(NdotV_48: f32, perceptualRoughness_22: f32) -> vec2<f32> {
     var NdotV_49: f32;
     var perceptualRoughness_23: f32;
+    var size: vec2<f32> = vec2<f32>(256f, 256f);
     var alpha_57: f32;
     var x_18: f32;
     var y: f32;
-    var size: vec2<f32> = vec2<f32>(256f, 256f);
+    var xy: vec2<f32>;
 
     NdotV_49 = NdotV_48;
     perceptualRoughness_23 = perceptualRoughness_22;
-    let _e4 = perceptualRoughness_23;
-    let _e5 = perceptualRoughness_23;
-    alpha_57 = (_e4 * _e5);
-    let _e9 = NdotV_49;
-    let _e10 = pbr_saturate(_e9);
-    x_18 = (log2((1f + (_e10 * 333.33334f))) * 0.119258545f);
-    let _e18 = alpha_57;
-    let _e19 = pbr_saturate(_e18);
-    y = (log2(((_e19 + 0.003f) * 199.00497f)) * 0.13087323f);
+    let _e8 = perceptualRoughness_23;
+    let _e9 = perceptualRoughness_23;
+    alpha_57 = (_e8 * _e9);
+    let _e13 = NdotV_49;
+    let _e14 = pbr_saturate(_e13);
+    x_18 = (log2((1f + (_e14 * 333.33334f))) * 0.119258545f);
+    let _e22 = alpha_57;
+    let _e23 = pbr_saturate(_e22);
+    y = (log2(((_e23 + 0.003f) * 199.00497f)) * 0.13087323f);
     let _e32 = x_18;
     let _e33 = y;
-    let _e40 = size;
-    let _e48 = size;
-    return (((clamp(vec2<f32>(_e32, _e33), vec2(0f), vec2(1f)) * (_e40 - vec2(1f))) + vec2(0.5f)) / _e48);
+    xy = clamp(vec2<f32>(_e32, _e33), vec2(0f), vec2(1f));
+    let _e41 = xy;
+    let _e42 = size;
+    let _e46 = size;
+    let _e50 = size;
+    return ((_e41 * ((_e42 - vec2(1f)) / _e46)) + (vec2(0.5f) / _e50));
 }
 
 fn pbr_env_brdf(NdotV_50: f32, perceptualRoughness_24: f32) -> vec2<f32> {
@@ -2888,7 +2906,7 @@ fn pbr_anisotropy_direction(t_1: vec3<f32>, b_4: vec3<f32>, directionSample: vec
     return _e53;
 }
 
-fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>, t_3: vec3<f32>, b_6: vec3<f32>, perceptualRoughness_28: f32, strength_2: f32, DV_2: ptr<function, f32>, LdotH_8: ptr<function, f32>) {
+fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>, t_3: vec3<f32>, b_6: vec3<f32>, perceptualRoughness_28: f32, strength_2: f32, DV_2: ptr<function, f32>, LdotH_10: ptr<function, f32>) {
     var n_17: vec3<f32>;
     var v_23: vec3<f32>;
     var l_17: vec3<f32>;
@@ -2936,7 +2954,7 @@ fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>,
     let _e40 = halfSum_1;
     halfLength2_1 = dot(_e39, _e40);
     let _e44 = halfLength2_1;
-    (*LdotH_8) = (0.5f * sqrt(_e44));
+    (*LdotH_10) = (0.5f * sqrt(_e44));
     let _e47 = halfLength2_1;
     invHalfLength = inverseSqrt(clamp(_e47, 0.0000000000000000000000000000007888609f, 4f));
     let _e55 = n_17;
@@ -2995,7 +3013,7 @@ fn pbr_brdf_anisotropic_specular(n_18: vec3<f32>, v_24: vec3<f32>, l_18: vec3<f3
     var perceptualRoughness_31: f32;
     var strength_5: f32;
     var DV_3: f32;
-    var LdotH_9: f32;
+    var LdotH_11: f32;
 
     n_19 = n_18;
     v_25 = v_24;
@@ -3012,12 +3030,12 @@ fn pbr_brdf_anisotropic_specular(n_18: vec3<f32>, v_24: vec3<f32>, l_18: vec3<f3
     let _e22 = b_9;
     let _e23 = perceptualRoughness_31;
     let _e24 = strength_5;
-    pbr_brdf_anisotropic_terms(_e18, _e19, _e20, _e21, _e22, _e23, _e24, (&DV_3), (&LdotH_9));
+    pbr_brdf_anisotropic_terms(_e18, _e19, _e20, _e21, _e22, _e23, _e24, (&DV_3), (&LdotH_11));
     let _e29 = DV_3;
     let _e30 = f0_42;
     let _e31 = f0_42;
     let _e32 = pbr_f90_from_f0_(_e31);
-    let _e33 = LdotH_9;
+    let _e33 = LdotH_11;
     let _e34 = pbr_F_Schlick_2(_e30, _e32, _e33);
     return (_e29 * _e34);
 }
@@ -3033,7 +3051,7 @@ fn pbr_brdf_anisotropic_specular_f90_(n_20: vec3<f32>, v_26: vec3<f32>, l_20: ve
     var perceptualRoughness_33: f32;
     var strength_7: f32;
     var DV_4: f32;
-    var LdotH_10: f32;
+    var LdotH_12: f32;
 
     n_21 = n_20;
     v_27 = v_26;
@@ -3051,11 +3069,11 @@ fn pbr_brdf_anisotropic_specular_f90_(n_20: vec3<f32>, v_26: vec3<f32>, l_20: ve
     let _e24 = b_11;
     let _e25 = perceptualRoughness_33;
     let _e26 = strength_7;
-    pbr_brdf_anisotropic_terms(_e20, _e21, _e22, _e23, _e24, _e25, _e26, (&DV_4), (&LdotH_10));
+    pbr_brdf_anisotropic_terms(_e20, _e21, _e22, _e23, _e24, _e25, _e26, (&DV_4), (&LdotH_12));
     let _e31 = DV_4;
     let _e32 = f0_44;
     let _e33 = f90_17;
-    let _e34 = LdotH_10;
+    let _e34 = LdotH_12;
     let _e35 = pbr_F_Schlick_2(_e32, _e33, _e34);
     return (_e31 * _e35);
 }
@@ -4608,10 +4626,10 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     var l_31: vec3<f32>;
     var nDotL: f32;
     var halfSum_2: vec3<f32>;
-    var LdotH_11: f32;
+    var LdotH_13: f32;
     var Fd: f32;
     var local_31: f32;
-    var brdf_2: vec3<f32>;
+    var brdf: vec3<f32>;
 
     s_18 = s_17;
     frame_2 = frame_1;
@@ -4626,11 +4644,11 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     halfSum_2 = (_e14 + _e15.v);
     let _e20 = halfSum_2;
     let _e21 = halfSum_2;
-    LdotH_11 = (0.5f * sqrt(dot(_e20, _e21)));
+    LdotH_13 = (0.5f * sqrt(dot(_e20, _e21)));
     let _e26 = s_18;
     let _e28 = s_18;
     let _e34 = nDotL;
-    let _e35 = LdotH_11;
+    let _e35 = LdotH_13;
     let _e36 = s_18;
     let _e38 = pbr_diffuse_Fd(clamp(dot(_e26.n, _e28.v), 0.0001f, 1f), _e34, _e35, _e36.perceptualRoughness);
     Fd = _e38;
@@ -4655,9 +4673,9 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     let _e64 = s_18;
     let _e66 = frame_2;
     let _e68 = pbr_brdf_anisotropic_specular_f90_(_e51.n, _e53.v, _e55, _e56.t, _e58.b, _e60.f0_, _e62.f90_, _e64.perceptualRoughness, _e66.strength);
-    brdf_2 = ((_e47.directDiffuseColor * _e49) + _e68);
+    brdf = ((_e47.directDiffuseColor * _e49) + _e68);
     let _e71 = light_3;
-    let _e73 = brdf_2;
+    let _e73 = brdf;
     let _e76 = nDotL;
     return ((_e71.color * _e73) * (3.1415927f * clamp(_e76, 0f, 1f)));
 }

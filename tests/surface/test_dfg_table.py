@@ -133,3 +133,75 @@ def test_a_lookup_without_the_texel_centre_remap_would_fail(reference_grid):
     raw = ((table[j0, i0] * (1 - tx) + table[j0, i1] * tx) * (1 - ty)
            + (table[j1, i0] * (1 - tx) + table[j1, i1] * tx) * ty)
     assert np.abs(raw - want).max() > TABLE_TOLERANCE
+
+
+# ---- the LOW tier's table (PBR_DFG_LUT_LAYOUT_SQRT: x = sqrt(NdotV), y = perceptual roughness) ----
+
+LOW = {"PBR_QUALITY": "PBR_QUALITY_LOW"}  # the tier selects the layout (pbr/shading/dispatch.glsl)
+# LOW's domain: NdotV from PBR_MIN_NDOTV, roughness from the tier's floor 0.089
+ROUGH_LOW = np.unique(np.concatenate([np.linspace(ref_shading.MIN_PERCEPTUAL_ROUGHNESS_MEDIUMP, 1.0, 14),
+                                      [0.1, 0.12, 0.2]]))
+
+
+@pytest.fixture(scope="module")
+def reference_grid_low():
+    mu, rough = np.meshgrid(MU, ROUGH_LOW, indexing="ij")
+    return mu, rough, ref_albedo.split_sum_terms_grid(mu, rough ** 2)
+
+
+def test_low_tier_selects_the_square_root_layout_and_the_renderer_binds_its_table():
+    assert ref_shading.QUALITY_DFG_LUT_LAYOUT == {"LOW": "SQRT", "MEDIUM": "WARPED", "HIGH": "WARPED"}
+    NdotV, rough = np.array([0.0, 0.25, 1.0]), np.array([0.5, 0.3, 1.0])
+    for quality, layout in ref_shading.QUALITY_DFG_LUT_LAYOUT.items():
+        got = evaluate("pbr_dfg_lut_uv(NdotV, r)", INCLUDES, defines={"PBR_QUALITY": f"PBR_QUALITY_{quality}"},
+                       NdotV=NdotV, r=rough)
+        np.testing.assert_allclose(got, np.stack(ref_surface.dfg_lut_uv(NdotV, rough, layout), -1), rtol=0, atol=1e-6)
+
+
+def test_square_root_uv_matches_reference_and_hits_the_edge_texels():
+    NdotV, rough = np.meshgrid(np.linspace(0, 1, 101), np.linspace(0, 1, 101), indexing="ij")
+    got = evaluate("pbr_dfg_lut_uv(NdotV, r)", INCLUDES, defines=LOW, NdotV=NdotV, r=rough)
+    u, v = ref_surface.dfg_lut_uv(NdotV, rough, "SQRT")
+    # float32 sqrt (within 1 ulp, 6e-8) and one multiply-add: 1e-6 is 1/256 of a texel
+    np.testing.assert_allclose(got, np.stack([u, v], -1), rtol=0, atol=1e-6)
+    w, h = ref_surface.DFG_LUT_WIDTH, ref_surface.DFG_LUT_HEIGHT
+    corners = evaluate("pbr_dfg_lut_uv(NdotV, r)", INCLUDES, defines=LOW, NdotV=np.array([0.0, 1.0]),
+                       r=np.array([0.0, 1.0]))
+    np.testing.assert_allclose(corners, [[0.5 / w, 0.5 / h], [1 - 0.5 / w, 1 - 0.5 / h]], atol=1e-6)
+
+
+def test_shipped_square_root_table_is_what_the_quadrature_computes():
+    table = ibl.dfg_lut("SQRT")[::-1]
+    assert table.shape == (ref_surface.DFG_LUT_HEIGHT, ref_surface.DFG_LUT_WIDTH, 2)
+    assert table.dtype == np.float32 and np.isfinite(table).all()
+    xs, ys = ref_surface.dfg_lut_nodes("SQRT")
+    for j in (0, 11, 22, 23, 130, ref_surface.DFG_LUT_HEIGHT - 1):
+        y = np.full_like(xs, ys[j])
+        mu, rough = ref_surface.dfg_lut_texel_coordinates(xs, y, "SQRT")
+        rough = np.maximum(rough, ref_shading.MIN_PERCEPTUAL_ROUGHNESS)  # rows no tier reads: 0.045's
+        np.testing.assert_array_equal(table[j], ibl.integrate_dfg(mu, rough).astype(np.float32))
+
+
+def test_square_root_table_as_sampled_is_within_1e_3_of_the_reference_on_low_domain(reference_grid_low):
+    # The same bound as the warped table's (the issue's 1e-3, absolute in A and B and in A + B).
+    # Measured: max 1.3e-4 in A or B, 2.1e-4 in A + B (at NdotV = 1e-2, roughness 0.089, the
+    # sharpest dip LOW reads; a denser 400 x 120 grid gives the same 1.3e-4), 7x inside it;
+    # the warped table on this grid 4.0e-5.
+    mu, rough, want = reference_grid_low
+    got = ref_surface.sample_dfg_lut(ibl.dfg_lut("SQRT")[::-1], mu, rough, "SQRT")
+    err = np.abs(got - want)
+    assert err.max() < TABLE_TOLERANCE, (err.max(), mu.flat[err.max(-1).argmax()], rough.flat[err.max(-1).argmax()])
+    assert np.abs(got.sum(-1) - want.sum(-1)).max() < TABLE_TOLERANCE
+    # node values are integrals of a lobe that reflects at most what arrives, so a bilinear
+    # blend of them cannot exceed 1 (the white furnace of the environment stays <= 1)
+    assert got.sum(-1).max() <= 1.0
+
+
+def test_each_table_read_in_the_other_layout_fails_the_bound(reference_grid_low):
+    """Control: the layouts are not interchangeable (a renderer binding the wrong table for
+    the tier would be caught by the bound above): measured 0.53 and 0.52 off."""
+    mu, rough, want = reference_grid_low
+    swapped = ref_surface.sample_dfg_lut(ibl.dfg_lut("WARPED")[::-1], mu, rough, "SQRT")
+    assert np.abs(swapped - want).max() > 10 * TABLE_TOLERANCE
+    swapped = ref_surface.sample_dfg_lut(ibl.dfg_lut("SQRT")[::-1], mu, rough, "WARPED")
+    assert np.abs(swapped - want).max() > 10 * TABLE_TOLERANCE

@@ -34,7 +34,8 @@
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.glsl,
 //           pbr/surface/lighting_sheen.glsl, pbr/surface/lighting_anisotropy.glsl,
-//           pbr/surface/lighting_iridescence.glsl and pbr/surface/lighting_transmission.glsl.
+//           pbr/surface/lighting_iridescence.glsl and pbr/surface/lighting_transmission.glsl;
+//           PBR_UNITY_NORMAL_IS_UNIT (pbr/unity/surface_standard.glsl).
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
 // The fields here are named as URP's SurfaceData names them (clearCoatMask,
@@ -234,7 +235,7 @@ vec4 pbr_unity_lighting_layers_base(vec3 diffColor, vec3 specColor, vec3 coatF0,
                                     float f90, float coatF90) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
-    vec3 n = normalize(normal);
+    vec3 n = pbr_unity_surface_normal(normal);
     float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
 #if PBR_LAYERS_IRIDESCENCE != 0
     pbr_Iridescence film;
@@ -354,7 +355,7 @@ vec3 TransmittedDirection(vec3 normal, vec3 viewDir, SurfaceOutputStandardLayers
     tr.attenuationColor = layers.AttenuationColor;
     tr.attenuationDistance = layers.AttenuationDistance;
     tr.ior = layers.TransmissionIor;
-    return pbr_transmitted_direction(normalize(normal), viewDir, tr);
+    return pbr_transmitted_direction(pbr_unity_surface_normal(normal), viewDir, tr);
 }
 
 // The normal (world) whose mirror direction the anisotropic base reads its prefiltered
@@ -364,7 +365,7 @@ vec3 AnisotropicReflectionNormal(vec3 normal, vec3 viewDir, SurfaceOutputStandar
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
     anisotropy.direction = layers.AnisotropyDirection;
-    return pbr_anisotropic_reflection_normal(normalize(normal), viewDir, anisotropy,
+    return pbr_anisotropic_reflection_normal(pbr_unity_surface_normal(normal), viewDir, anisotropy,
                                              SmoothnessToPerceptualRoughness(smoothness));
 }
 #endif

@@ -1,5 +1,6 @@
-"""The library's lookup tables as image files an engine loads: the DFG table (split-sum
-environment BRDF, pbrlab.gpu.ibl) and the sheen albedo table (pbrlab.gpu.sheen_table), each as a
+"""The library's lookup tables as image files an engine loads: the DFG tables (split-sum
+environment BRDF, pbrlab.gpu.ibl: the warped layout HIGH and MEDIUM read, and the LOW tier's
+square-root layout, PBR_DFG_LUT_LAYOUT) and the sheen albedo table (pbrlab.gpu.sheen_table), each as a
 float32 EXR (the exact values) and a 16-bit PNG (for loaders without EXR). `pbrlab tables
 --out DIR` writes them; docs/tables.md gives their orientation, encoding and lookup, and
 examples/engine/pbrlab_tables.glsl (.hlsl; `pbrlab tables` copies them beside the tables)
@@ -36,10 +37,14 @@ class Table:
     glsl_uv: str                # the library's texture-coordinate function
 
 
-def _dfg():
+def _dfg(layout="WARPED"):
     from .ibl import dfg_lut
-    table = dfg_lut()
+    table = dfg_lut(layout)
     return np.concatenate([table, np.zeros_like(table[..., :1])], axis=-1)  # RGB: A, B, 0
+
+
+def _dfg_sqrt():
+    return _dfg("SQRT")
 
 
 def _sheen():
@@ -49,6 +54,9 @@ def _sheen():
 
 TABLES = (
     Table("pbrlab_dfg", _dfg, "R = A (the F0 weight), G = B (the F90 weight), B = 0", 1.0, "pbr_dfg_lut_uv"),
+    # the LOW tier's (PBR_DFG_LUT_LAYOUT_SQRT: x = sqrt(NdotV), y = perceptual roughness)
+    Table("pbrlab_dfg_sqrt", _dfg_sqrt, "R = A (the F0 weight), G = B (the F90 weight), B = 0", 1.0,
+          "pbr_dfg_lut_uv"),
     Table("pbrlab_sheen_albedo", _sheen, "R (grey) = E, the white sheen lobe's directional albedo", 4.0,
           "pbr_sheen_lut_uv"),
 )

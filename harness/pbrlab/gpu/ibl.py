@@ -46,6 +46,7 @@ from .programs import program_from_templates, template_source
 from ..maths.reference import brdf as ref_brdf
 from ..maths.reference import prefilter as ref_prefilter
 from ..maths.reference import surface as ref_surface
+from ..maths.reference import shading as ref_shading
 
 # The chain: level i holds perceptual roughness i / (PREFILTER_LEVELS - 1) (the shaders'
 # pbr_ibl_lod_from_perceptual_roughness), faces PREFILTER_FACE_SIZE >> i texels wide:
@@ -89,6 +90,11 @@ LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # ITU-R BT.709 (the library's pb
 # data/dfg_lut.npy (computing 256 x 256 texels takes about a minute, so it is made once by
 # `python -m pbrlab.gpu.ibl --write-dfg` and checked by tests/surface/test_dfg_table.py).
 DFG_LUT_FILE = Path(__file__).resolve().parent / "data" / "dfg_lut.npy"
+# The LOW tier's table (PBR_DFG_LUT_LAYOUT_SQRT: x = sqrt(NdotV), y = perceptual roughness),
+# made and checked the same way (about 15 s); its rows below PBR_MIN_PERCEPTUAL_ROUGHNESS hold
+# that roughness's values (no tier reads below it, and alpha -> 0 is a mirror's singular lobe).
+DFG_LUT_FILES = {"WARPED": DFG_LUT_FILE,
+                 "SQRT": Path(__file__).resolve().parent / "data" / "dfg_lut_sqrt.npy"}
 DFG_W_PANELS = 6       # equal panels in w = log(1 - u) over the partially visible band
 DFG_NODES = 24         # Gauss-Legendre nodes per panel
 DFG_PHI_NODES = 32     # Gauss-Legendre nodes in phi
@@ -170,31 +176,35 @@ def integrate_dfg(NdotV, perceptual_roughness) -> np.ndarray:
     return out.reshape(shape + (2,))
 
 
-def compute_dfg_lut() -> np.ndarray:
+def compute_dfg_lut(layout: str = "WARPED") -> np.ndarray:
     """HEIGHT x WIDTH x 2 float32, image order (top row first = the last row, y = 1): texel
-    (i, j) of GL row j holds (A, B) at the warped axes x = i / (WIDTH - 1), y = j / (HEIGHT - 1)."""
-    xs = np.arange(ref_surface.DFG_LUT_WIDTH) / (ref_surface.DFG_LUT_WIDTH - 1)
-    ys = np.arange(ref_surface.DFG_LUT_HEIGHT) / (ref_surface.DFG_LUT_HEIGHT - 1)
+    (i, j) of GL row j holds (A, B) at the axes of ``layout`` (reference/surface.py
+    dfg_lut_nodes, dfg_lut_axes)."""
+    xs, ys = ref_surface.dfg_lut_nodes(layout)
     y, x = np.meshgrid(ys, xs, indexing="ij")
-    NdotV, rough = ref_surface.dfg_lut_texel_coordinates(x, y)
+    NdotV, rough = ref_surface.dfg_lut_texel_coordinates(x, y, layout)
+    if layout == "SQRT":  # rows below the library's smallest roughness: its values
+        rough = np.maximum(rough, ref_shading.MIN_PERCEPTUAL_ROUGHNESS)
     rows = [integrate_dfg(NdotV[j], rough[j]) for j in range(len(ys))]
     return np.stack(rows)[::-1].astype(np.float32)
 
 
-@lru_cache(maxsize=1)
-def dfg_lut() -> np.ndarray:
-    """The shipped table (data/dfg_lut.npy), HEIGHT x WIDTH x 2 float32, image order."""
-    if not DFG_LUT_FILE.exists():
-        raise PbrlabError(f"{DFG_LUT_FILE} is missing; create it with python -m pbrlab.gpu.ibl --write-dfg")
-    table = np.load(DFG_LUT_FILE)
+@lru_cache(maxsize=2)
+def dfg_lut(layout: str = "WARPED") -> np.ndarray:
+    """The shipped table of ``layout`` (data/dfg_lut[_sqrt].npy), HEIGHT x WIDTH x 2 float32,
+    image order."""
+    path = DFG_LUT_FILES[layout]
+    if not path.exists():
+        raise PbrlabError(f"{path} is missing; create it with python -m pbrlab.gpu.ibl --write-dfg")
+    table = np.load(path)
     if table.shape != (ref_surface.DFG_LUT_HEIGHT, ref_surface.DFG_LUT_WIDTH, 2):
-        raise PbrlabError(f"{DFG_LUT_FILE}: shape {table.shape} is not the layout's; "
+        raise PbrlabError(f"{path}: shape {table.shape} is not the layout's; "
                           "regenerate it with python -m pbrlab.gpu.ibl --write-dfg")
     return table
 
 
-def dfg_texture(ctx: moderngl.Context) -> moderngl.Texture:
-    return targets.lookup_table_texture(ctx, dfg_lut())
+def dfg_texture(ctx: moderngl.Context, layout: str = "WARPED") -> moderngl.Texture:
+    return targets.lookup_table_texture(ctx, dfg_lut(layout))
 
 
 def prefiltered_environment(ctx: moderngl.Context, image: np.ndarray) -> moderngl.TextureCube:
@@ -467,12 +477,13 @@ def _prefilter_gpu_level(ctx: moderngl.Context, image: np.ndarray, level: int) -
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m pbrlab.gpu.ibl", description=__doc__.splitlines()[0])
-    parser.add_argument("--write-dfg", action="store_true", help=f"recompute {DFG_LUT_FILE.name}")
+    parser.add_argument("--write-dfg", action="store_true", help="recompute the DFG tables (data/dfg_lut*.npy)")
     args = parser.parse_args(argv)
     if args.write_dfg:
         DFG_LUT_FILE.parent.mkdir(exist_ok=True)
-        outputs.write_npy(DFG_LUT_FILE, compute_dfg_lut())
-        print(DFG_LUT_FILE)
+        for layout, path in DFG_LUT_FILES.items():
+            outputs.write_npy(path, compute_dfg_lut(layout))
+            print(path)
     return 0
 
 

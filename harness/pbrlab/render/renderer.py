@@ -36,6 +36,7 @@ from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from ..foundation.errors import PbrlabError, SceneError
 from ..maths.exposure import metered_exposure
+from ..maths.reference import shading as ref_shading
 from ..foundation.file_identity import include_closure
 from ..gpu.hlsl import HLSL_ROOT
 from ..gpu.programs import LANGUAGES, fragment_template, program_from_templates
@@ -84,7 +85,9 @@ class _SceneResources:
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
-        self.env_textures = {"u_dfg_lut": self.cache.dfg()}
+        # in the tier's layout (PBR_DFG_LUT_LAYOUT, pbr/shading/dispatch.glsl: LOW reads its own)
+        layout = ref_shading.QUALITY_DFG_LUT_LAYOUT[scene.render.quality.upper()]
+        self.env_textures = {"u_dfg_lut": self.cache.dfg(layout)}
         # the sheen albedo table (sheen_table.py), for materials with a sheen (PBRLAB_SHEEN)
         if any("sheen" in surface_layers.material_layers(m) for m in scene.materials.values()):
             self.env_textures["u_sheen_lut"] = self.cache.sheen()

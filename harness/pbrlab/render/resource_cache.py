@@ -71,16 +71,18 @@ class ContextCache:
 
     def __init__(self, ctx: moderngl.Context):
         self.ctx = ctx
-        self._dfg = None
+        self._dfg = {}
         self._sheen = None
         self._environments = _LRU(ENVIRONMENTS_PER_CONTEXT, PreparedEnvironment.release)
         self._textures = _LRU(TEXTURES_PER_CONTEXT, moderngl.Texture.release)
         self._suns = {}
 
-    def dfg(self) -> moderngl.Texture:
-        if self._dfg is None:
-            self._dfg = ibl.dfg_texture(self.ctx)
-        return self._dfg
+    def dfg(self, layout: str = "WARPED") -> moderngl.Texture:
+        """The DFG table of ``layout`` (PBR_DFG_LUT_LAYOUT: the tier's, ibl.dfg_lut), made once
+        per context."""
+        if layout not in self._dfg:
+            self._dfg[layout] = ibl.dfg_texture(self.ctx, layout)
+        return self._dfg[layout]
 
     def sheen(self) -> moderngl.Texture:
         """The sheen albedo table (sheen_table.sheen_texture), made once per context."""

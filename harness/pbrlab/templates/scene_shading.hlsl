@@ -74,6 +74,11 @@ PBRLAB_DECLARE_TEX2D(u_sheen_lut);
 #define PBR_LAYERS_DIELECTRIC_SPECULAR 1
 #endif
 
+// Every normal the scene programs hand the lighting is unit already (surface_pixel.inc builds
+// it with pbrlab_tangent_to_world_normal, which normalises): the Unity-named lighting
+// functions skip their own normalisation (pbr/unity/surface_standard.glsl).
+#define PBR_UNITY_NORMAL_IS_UNIT 1
+
 #include "pbr/pbr.hlsl"
 #include "pbr/lighting/attenuation.hlsl"
 #include "pbr/lighting/sh9.hlsl"

@@ -22,6 +22,12 @@
 //             PBR_ENV_BRDF_ANALYTIC  the analytic fit (pbr_env_brdf_approx) even where a
 //                                    table is given: no texture, no fetch (the table-free
 //                                    option; its error and cost: docs/shading.md)
+//           PBR_DFG_LUT_LAYOUT (the tier's default: pbr/shading/dispatch.hlsl), the axes of
+//           the table pbr_dfg_lut_uv addresses:
+//             PBR_DFG_LUT_LAYOUT_WARPED  (HIGH, MEDIUM) logarithmic in NdotV and alpha, below
+//             PBR_DFG_LUT_LAYOUT_SQRT    (LOW) x = sqrt(NdotV), y = perceptual roughness: one
+//                                        square root, no logarithm (its own table,
+//                                        harness/pbrlab/gpu/ibl.py)
 //           PBR_DFG_LUT_LOOKUP(NdotV, perceptualRoughness), a hook the caller
 //           may define to sample its DFG table (it owns the sampler), returning vec2(A, B):
 //           typically texture(table, pbr_dfg_lut_uv(NdotV, perceptualRoughness)).rg with
@@ -89,13 +95,39 @@ float2 pbr_env_brdf_approx(float NdotV, float perceptualRoughness) {
 #define PBR_DFG_LUT_ALPHA_MIN_INV 199.004975          // 1 / (0.045² + 0.003)
 #define PBR_DFG_LUT_ALPHA_LOG_NORM 0.130873226        // 1 / log2((1 + 0.003) / (0.045² + 0.003))
 
+// The LOW tier's layout (PBR_DFG_LUT_LAYOUT_SQRT): texel (i, j) holds (A, B) at
+// x = sqrt(NdotV) = i / (WIDTH - 1), y = perceptual roughness = j / (HEIGHT - 1), the same
+// 256 x 256 and texel-centre convention as the warped table. The square root spreads the
+// grazing dip (texel spacing in NdotV 1.5e-5 at 0); the roughness axis is linear, enough
+// above LOW's floor 0.089 (alpha 7.9e-3): as sampled within 1.3e-4 of the float64 integral in
+// A and B over NdotV in [1e-4, 1] x roughness in [0.089, 1] (tests/surface/test_dfg_table.py),
+// against 4.0e-5 for the warped table; both inside the table's 1e-3 bound. One square root
+// where the warped axes take two logarithms (RDNA3 instructions: docs/shading.md). (Texel
+// centres at the axis values themselves would save the remap's two multiply-adds, but clamp
+// to edge then holds the last half texel, 2.7e-3 off at NdotV = 1, roughness 1: measured.)
+// Both layouts remap as one multiply-add per axis, xy (size - 1) / size + 0.5 / size, whose
+// constants fold.
+// (The selector's values are pbr/shading/dispatch.hlsl's, with the tier's default; this file's
+// own default is never taken.)
+#ifndef PBR_DFG_LUT_LAYOUT
+// PBR_DFG_LUT_LAYOUT_WARPED as a number (glsl/README.md, one-level preprocessors)
+#define PBR_DFG_LUT_LAYOUT 1
+#endif
+
 float2 pbr_dfg_lut_uv(float NdotV, float perceptualRoughness) {
+    float2 size = float2(PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT);
+#if PBR_DFG_LUT_LAYOUT == PBR_DFG_LUT_LAYOUT_SQRT
+    float2 xy = float2(sqrt(pbr_saturate(NdotV)), pbr_saturate(perceptualRoughness));
+#elif PBR_DFG_LUT_LAYOUT == PBR_DFG_LUT_LAYOUT_WARPED
     float alpha = perceptualRoughness * perceptualRoughness;
     float x = log2(1.0 + pbr_saturate(NdotV) * PBR_DFG_LUT_NDOTV_INV_SCALE) * PBR_DFG_LUT_NDOTV_LOG_NORM;
     float y = log2((pbr_saturate(alpha) + PBR_DFG_LUT_ALPHA_OFFSET) * PBR_DFG_LUT_ALPHA_MIN_INV)
             * PBR_DFG_LUT_ALPHA_LOG_NORM;
-    float2 size = float2(PBR_DFG_LUT_WIDTH, PBR_DFG_LUT_HEIGHT);
-    return (clamp(float2(x, y), 0.0, 1.0) * (size - 1.0) + 0.5) / size;
+    float2 xy = clamp(float2(x, y), 0.0, 1.0);
+#else
+#error "PBR_DFG_LUT_LAYOUT: unknown value (PBR_DFG_LUT_LAYOUT_WARPED or PBR_DFG_LUT_LAYOUT_SQRT)"
+#endif
+    return xy * ((size - 1.0) / size) + 0.5 / size;
 }
 
 float2 pbr_env_brdf(float NdotV, float perceptualRoughness) {

@@ -17,6 +17,11 @@
 // l points from the surface to the light. NdotL <= 0 returns 0 (max(0, NdotL) times the
 // BRDF's finite value there); l = -v returns the diffuse part only (see
 // pbr/shading/standard.hlsl for every edge).
+// PBR_LIGHT_UNIT_SCALE is π (conventions §5) and pbr_brdf_standard[_f90] is (diffuseColor πFd +
+// πDV F) / π (pbr_brdf_standard_terms), so the light's term is written as π BRDF times
+// NdotL: the 1/π and the π cancel here, in the source. Left to the compiler they stay two
+// multiplications (x / π · π is not x in float: 4 RDNA3 instructions a light, measured in
+// the scene programs); the value differs from the two-step form by float rounding only.
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_LIGHTING_PUNCTUAL_HLSL
 #define PBR_LIGHTING_PUNCTUAL_HLSL
@@ -28,16 +33,20 @@
 float3 pbr_shade_punctual(float3 n, float3 v, float3 l, float3 lightRadiance,
                         float3 diffuseColor, float3 f0, float perceptualRoughness) {
     float NdotL = clamp(dot(n, l), 0.0, 1.0);
-    float3 brdf = pbr_brdf_standard(n, v, l, diffuseColor, f0, perceptualRoughness);
-    return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
+    float piFd, piDV, LdotH;
+    pbr_brdf_standard_terms(n, v, l, perceptualRoughness, piFd, piDV, LdotH);
+    float3 piBrdf = diffuseColor * piFd + piDV * pbr_specular_F(f0, LdotH);  // PBR_LIGHT_UNIT_SCALE · BRDF
+    return lightRadiance * piBrdf * NdotL;
 }
 
 // The same with an explicit F90 (pbr_brdf_standard_f90: KHR_materials_specular's specularFactor).
 float3 pbr_shade_punctual_f90(float3 n, float3 v, float3 l, float3 lightRadiance,
                             float3 diffuseColor, float3 f0, float f90, float perceptualRoughness) {
     float NdotL = clamp(dot(n, l), 0.0, 1.0);
-    float3 brdf = pbr_brdf_standard_f90(n, v, l, diffuseColor, f0, f90, perceptualRoughness);
-    return lightRadiance * brdf * (PBR_LIGHT_UNIT_SCALE * NdotL);
+    float piFd, piDV, LdotH;
+    pbr_brdf_standard_terms(n, v, l, perceptualRoughness, piFd, piDV, LdotH);
+    float3 piBrdf = diffuseColor * piFd + piDV * pbr_specular_F_f90(f0, f90, LdotH);  // PBR_LIGHT_UNIT_SCALE · BRDF
+    return lightRadiance * piBrdf * NdotL;
 }
 
 #endif // PBR_LIGHTING_PUNCTUAL_HLSL

@@ -45,6 +45,16 @@
 //                   _AMBIENT (LOW default: the ambient occlusion itself; pbr/ibl/environment_brdf.hlsl)
 //   (The last four are the tier's choices for the environment read: issue 35, LOW's whole
 //   pixel; docs/shading.md, "What each tier changes in the whole pixel".)
+//   PBR_NORMAL_MAP_FRAME        PBR_NORMAL_MAP_FRAME_ORTHONORMAL (HIGH, MEDIUM default: a
+//                   tangent-space normal goes to the world through the interpolated tangent made
+//                   orthogonal to n and unit, Gram-Schmidt) | _MIKKTSPACE (LOW default: through
+//                   the interpolated tangent as it arrives, bitangent sign · n × t, the result
+//                   normalised once: the pixel-shader form mikktspace.h prescribes for maps it
+//                   baked). Read by the caller that maps normals (pbrlab's scene template,
+//                   pbrlab_tangent_to_world_normal); the library maps none itself.
+//   PBR_DFG_LUT_LAYOUT          PBR_DFG_LUT_LAYOUT_WARPED (HIGH, MEDIUM default) | _SQRT (LOW
+//                   default): the axes of the DFG table pbr_dfg_lut_uv addresses
+//                   (pbr/ibl/environment_brdf.hlsl; the caller binds the table of that layout).
 //
 // The one variant mechanism of the library (pbr/common/conventions.hlsl §8): every
 // alternative is its own function in pbr/brdf/; a numbered macro selects it; each
@@ -107,6 +117,12 @@
 
 #define PBR_SPECULAR_OCCLUSION_LAGARDE 1
 #define PBR_SPECULAR_OCCLUSION_AMBIENT 2
+
+#define PBR_NORMAL_MAP_FRAME_ORTHONORMAL 1
+#define PBR_NORMAL_MAP_FRAME_MIKKTSPACE 2
+
+#define PBR_DFG_LUT_LAYOUT_WARPED 1
+#define PBR_DFG_LUT_LAYOUT_SQRT 2
 
 #define PBR_QUALITY_LOW 1
 #define PBR_QUALITY_HIGH 2
@@ -171,7 +187,10 @@
 //          lit pixel): LOW reads it along the mirror direction (no dominant direction), without
 //          horizon occlusion, without multiple-scattering compensation (single scattering:
 //          it loses the energy of further bounces, gains none) and with the ambient occlusion
-//          itself as the specular occlusion (no pow); RDNA3 instructions each saves
+//          itself as the specular occlusion (no pow), and it maps normal-map normals through
+//          MikkTSpace's pixel-shader frame (PBR_NORMAL_MAP_FRAME: no Gram-Schmidt, one
+//          normalisation) and reads its DFG table at x = sqrt(NdotV), y = perceptual roughness
+//          (PBR_DFG_LUT_LAYOUT: no logarithms); RDNA3 instructions each saves
 //          and the image error: docs/shading.md, "What each tier changes in the whole pixel".
 //          HIGH and MEDIUM keep all four (PBR_ENERGY_COMPENSATION, PBR_IBL_DOMINANT_DIRECTION,
 //          PBR_IBL_HORIZON_OCCLUSION 1, PBR_SPECULAR_OCCLUSION_LAGARDE); an explicit value wins over the tier, as for the terms.
@@ -195,6 +214,14 @@
 #  ifndef PBR_SPECULAR_OCCLUSION
 // PBR_SPECULAR_OCCLUSION_AMBIENT as a number (glsl/README.md, one-level preprocessors)
 #define PBR_SPECULAR_OCCLUSION 2
+#  endif
+#  ifndef PBR_NORMAL_MAP_FRAME
+// PBR_NORMAL_MAP_FRAME_MIKKTSPACE as a number (glsl/README.md, one-level preprocessors)
+#define PBR_NORMAL_MAP_FRAME 2
+#  endif
+#  ifndef PBR_DFG_LUT_LAYOUT
+// PBR_DFG_LUT_LAYOUT_SQRT as a number (glsl/README.md, one-level preprocessors)
+#define PBR_DFG_LUT_LAYOUT 2
 #  endif
 #  ifndef PBR_SPECULAR_V
 // PBR_SPECULAR_V_SMITH_GGX_BOUND as a number (glsl/README.md, one-level preprocessors)
@@ -234,6 +261,15 @@
 #ifndef PBR_SPECULAR_OCCLUSION
 // PBR_SPECULAR_OCCLUSION_LAGARDE as a number (glsl/README.md, one-level preprocessors)
 #define PBR_SPECULAR_OCCLUSION 1
+#endif
+#ifndef PBR_NORMAL_MAP_FRAME
+// PBR_NORMAL_MAP_FRAME_ORTHONORMAL as a number (glsl/README.md, one-level preprocessors)
+#define PBR_NORMAL_MAP_FRAME 1
+#endif
+// Read by the caller that maps normals, not here: checked here, so a misspelt value fails in
+// every program that includes the library, mapping or not.
+#if PBR_NORMAL_MAP_FRAME != PBR_NORMAL_MAP_FRAME_ORTHONORMAL && PBR_NORMAL_MAP_FRAME != PBR_NORMAL_MAP_FRAME_MIKKTSPACE
+#error "PBR_NORMAL_MAP_FRAME: unknown value (PBR_NORMAL_MAP_FRAME_ORTHONORMAL or PBR_NORMAL_MAP_FRAME_MIKKTSPACE)"
 #endif
 
 #ifndef PBR_SPECULAR_D

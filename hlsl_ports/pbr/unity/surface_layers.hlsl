@@ -34,7 +34,8 @@
 //           skip that layer's code); PBR_BRDF_MODEL (the LayersBase functions exist in the
 //           pbrlab model only); those of pbr/surface/lighting_clearcoat.hlsl,
 //           pbr/surface/lighting_sheen.hlsl, pbr/surface/lighting_anisotropy.hlsl,
-//           pbr/surface/lighting_iridescence.hlsl and pbr/surface/lighting_transmission.hlsl.
+//           pbr/surface/lighting_iridescence.hlsl and pbr/surface/lighting_transmission.hlsl;
+//           PBR_UNITY_NORMAL_IS_UNIT (pbr/unity/surface_standard.hlsl).
 //
 // Unity's built-in pipeline has no layers; its Standard struct stays as Unity defines it.
 // The fields here are named as URP's SurfaceData names them (clearCoatMask,
@@ -235,7 +236,7 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
                                     float f90, float coatF90) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
-    float3 n = normalize(normal);
+    float3 n = pbr_unity_surface_normal(normal);
     float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
 #if PBR_LAYERS_IRIDESCENCE != 0
     pbr_Iridescence film;
@@ -355,7 +356,7 @@ float3 TransmittedDirection(float3 normal, float3 viewDir, SurfaceOutputStandard
     tr.attenuationColor = layers.AttenuationColor;
     tr.attenuationDistance = layers.AttenuationDistance;
     tr.ior = layers.TransmissionIor;
-    return pbr_transmitted_direction(normalize(normal), viewDir, tr);
+    return pbr_transmitted_direction(pbr_unity_surface_normal(normal), viewDir, tr);
 }
 
 // The normal (world) whose mirror direction the anisotropic base reads its prefiltered
@@ -365,7 +366,7 @@ float3 AnisotropicReflectionNormal(float3 normal, float3 viewDir, SurfaceOutputS
     pbr_Anisotropy anisotropy;
     anisotropy.strength = layers.Anisotropy;
     anisotropy.direction = layers.AnisotropyDirection;
-    return pbr_anisotropic_reflection_normal(normalize(normal), viewDir, anisotropy,
+    return pbr_anisotropic_reflection_normal(pbr_unity_surface_normal(normal), viewDir, anisotropy,
                                              SmoothnessToPerceptualRoughness(smoothness));
 }
 #endif

@@ -21,6 +21,8 @@
 //           LightingStandard_GI / UnityGlobalIllumination):
 //           float pbr_unity_gi_occlusion(float occlusion)  (the factor the GI step applies to
 //                 gi.indirect: occlusion in the unity model, 1 in the pbrlab model)
+//           vec3 pbr_unity_surface_normal(vec3 normal)  (the normal the lighting reads:
+//                 normalize(normal), or normal itself where PBR_UNITY_NORMAL_IS_UNIT is 1)
 //           float pbr_unity_environment_lod(float perceptualRoughness, float lodCount)  (the
 //                 mip of a prefiltered chain whose level i is filtered for perceptual roughness
 //                 i / (lodCount - 1): Unity_GlossyEnvironment's remap in the unity model)
@@ -34,7 +36,11 @@
 //           PBR_BRDF_MODEL (pbr/shading/dispatch.hlsl: PBR_BRDF_MODEL_PBRLAB default,
 //           PBR_BRDF_MODEL_UNITY: LightingStandard[Specular] shade with Unity's BRDF of the
 //           tier, pbr/unity/brdf_unity.hlsl); those of pbr/surface/lighting_standard.hlsl
-//           and pbr/unity/brdf_unity.hlsl.
+//           and pbr/unity/brdf_unity.hlsl; PBR_UNITY_NORMAL_IS_UNIT (0 by default: LightingStandard
+//           and the layered lighting normalise s.Normal, as UnityPBSLighting.cginc does, since a
+//           surface function may write any length | 1: the caller guarantees a unit s.Normal and
+//           the second normalisation is left out; pbrlab's scene programs, which normalise the
+//           normal they build from the tangent frame, define it: 8 to 12 RDNA3 instructions a pixel).
 //
 // Semantics are Unity's (docs.unity3d.com, "Writing Surface Shaders"; UnityPBSLighting.cginc
 // and UnityStandardUtils.cginc of Unity 5-2019). Two models (PBR_BRDF_MODEL):
@@ -188,17 +194,31 @@ float pbr_unity_environment_lod(float perceptualRoughness, float lodCount) {
 // coatF0: the dielectric coat over the diffuse (pbr_lighting_standard; the unity model,
 // whose diffuse is Unity's diffColor, does not read it): unity_ColorSpaceDielectricSpec.rgb
 // from LightingStandard, s.Specular from LightingStandardSpecular.
+// The surface's normal as the lighting reads it: normalised unless the caller guarantees a unit
+// one (PBR_UNITY_NORMAL_IS_UNIT, the file header). A function, not a function-like macro:
+// engines' one-level preprocessors (Babylon.js) expand only object-like ones (glsl/README.md).
+#ifndef PBR_UNITY_NORMAL_IS_UNIT
+#define PBR_UNITY_NORMAL_IS_UNIT 0
+#endif
+float3 pbr_unity_surface_normal(float3 normal) {
+#if PBR_UNITY_NORMAL_IS_UNIT != 0
+    return normal;
+#else
+    return normalize(normal);
+#endif
+}
+
 float4 pbr_unity_lighting(float3 diffColor, float3 specColor, float3 coatF0, float oneMinusReflectivity,
                         float smoothness, float occlusion, float alpha, float3 normal,
                         float3 viewDir, UnityGI gi) {
     float outputAlpha;
     diffColor = PreMultiplyAlpha(diffColor, alpha, oneMinusReflectivity, outputAlpha);
 #if PBR_BRDF_MODEL == PBR_BRDF_MODEL_UNITY
-    float3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normalize(normal),
+    float3 c = pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, pbr_unity_surface_normal(normal),
                                 viewDir, gi.light.color, gi.light.dir, gi.indirect.diffuse, gi.indirect.specular);
 #else
     float3 c = pbr_lighting_standard(diffColor, specColor, coatF0, SmoothnessToPerceptualRoughness(smoothness),
-                                   occlusion, normalize(normal), viewDir, gi);
+                                   occlusion, pbr_unity_surface_normal(normal), viewDir, gi);
 #endif
     return float4(c, outputAlpha);
 }

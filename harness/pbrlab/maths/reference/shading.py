@@ -39,6 +39,8 @@ QUALITY_MAX_SPECULAR_LOBE = {"LOW": np.inf, "MEDIUM": np.inf, "HIGH": np.inf}
 QUALITY_ENERGY_COMPENSATION = {"LOW": False, "MEDIUM": True, "HIGH": True}
 # PBR_QUALITY -> default PBR_SPECULAR_OCCLUSION (surface.specular_occlusion)
 QUALITY_SPECULAR_OCCLUSION = {"LOW": "AMBIENT", "MEDIUM": "LAGARDE", "HIGH": "LAGARDE"}
+# PBR_QUALITY -> default PBR_DFG_LUT_LAYOUT (surface.dfg_lut_axes; the table the renderer binds)
+QUALITY_DFG_LUT_LAYOUT = {"LOW": "SQRT", "MEDIUM": "WARPED", "HIGH": "WARPED"}
 
 
 def _variants(specular_d, specular_v, specular_f, diffuse, quality):

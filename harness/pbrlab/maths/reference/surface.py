@@ -21,9 +21,21 @@ DFG_LUT_C_ALPHA = 0.003
 DFG_LUT_ALPHA_MIN = shading.MIN_PERCEPTUAL_ROUGHNESS ** 2
 
 
-def dfg_lut_axes(NdotV, perceptual_roughness):
-    """(x, y) in [0, 1] of the warped table axes (float64)."""
+DFG_LUT_LAYOUTS = ("WARPED", "SQRT")  # PBR_DFG_LUT_LAYOUT_*: the LOW tier reads SQRT
+#   SQRT: x = sqrt(NdotV), y = perceptual roughness (no warp constants).
+
+
+def _layout(layout):
+    if layout not in DFG_LUT_LAYOUTS:
+        raise ValueError(f"layout={layout!r}: expected one of {DFG_LUT_LAYOUTS}")
+    return layout
+
+
+def dfg_lut_axes(NdotV, perceptual_roughness, layout="WARPED"):
+    """(x, y) in [0, 1] of the table axes of ``layout`` (float64)."""
     NdotV = np.clip(_f(NdotV), 0.0, 1.0)
+    if _layout(layout) == "SQRT":
+        return np.sqrt(NdotV), np.clip(_f(perceptual_roughness), 0.0, 1.0)
     alpha = np.clip(_f(perceptual_roughness) ** 2, 0.0, 1.0)
     x = np.log2(1 + NdotV / DFG_LUT_C_NDOTV) / np.log2(1 + 1 / DFG_LUT_C_NDOTV)
     y = (np.log2((alpha + DFG_LUT_C_ALPHA) / (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA))
@@ -31,25 +43,35 @@ def dfg_lut_axes(NdotV, perceptual_roughness):
     return np.clip(x, 0.0, 1.0), np.clip(y, 0.0, 1.0)
 
 
-def dfg_lut_texel_coordinates(x, y):
+def dfg_lut_texel_coordinates(x, y, layout="WARPED"):
     """Inverse of dfg_lut_axes: the (NdotV, perceptual roughness) of table axes (x, y)."""
+    if _layout(layout) == "SQRT":
+        return np.clip(_f(x), 0.0, 1.0) ** 2, np.clip(_f(y), 0.0, 1.0)
     NdotV = DFG_LUT_C_NDOTV * (2.0 ** (_f(x) * np.log2(1 + 1 / DFG_LUT_C_NDOTV)) - 1)
     scale = np.log2((1 + DFG_LUT_C_ALPHA) / (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA))
     alpha = (DFG_LUT_ALPHA_MIN + DFG_LUT_C_ALPHA) * 2.0 ** (_f(y) * scale) - DFG_LUT_C_ALPHA
     return np.clip(NdotV, 0.0, 1.0), np.sqrt(np.clip(alpha, 0.0, 1.0))
 
 
-def dfg_lut_uv(NdotV, perceptual_roughness):
+def dfg_lut_nodes(layout="WARPED"):
+    """The axis values (xs, ys) the table's texels hold, column i and GL row j, for either
+    layout: x = i / (WIDTH - 1), y = j / (HEIGHT - 1) (the first and last texels at the axis'
+    ends, read at texel-centre coordinates: dfg_lut_uv)."""
+    _layout(layout)
+    return np.arange(DFG_LUT_WIDTH) / (DFG_LUT_WIDTH - 1), np.arange(DFG_LUT_HEIGHT) / (DFG_LUT_HEIGHT - 1)
+
+
+def dfg_lut_uv(NdotV, perceptual_roughness, layout="WARPED"):
     """pbr_dfg_lut_uv: texture coordinates of the texel-centre lookup."""
-    x, y = dfg_lut_axes(NdotV, perceptual_roughness)
+    x, y = dfg_lut_axes(NdotV, perceptual_roughness, layout)
     return ((x * (DFG_LUT_WIDTH - 1) + 0.5) / DFG_LUT_WIDTH,
             (y * (DFG_LUT_HEIGHT - 1) + 0.5) / DFG_LUT_HEIGHT)
 
 
-def sample_dfg_lut(table, NdotV, perceptual_roughness):
+def sample_dfg_lut(table, NdotV, perceptual_roughness, layout="WARPED"):
     """What a GPU reads from ``table`` (HEIGHT x WIDTH x 2, row j = y j / (HEIGHT - 1), GL row
     order) at pbr_dfg_lut_uv: bilinear filtering, clamp to edge, in float64."""
-    u, v = dfg_lut_uv(NdotV, perceptual_roughness)
+    u, v = dfg_lut_uv(NdotV, perceptual_roughness, layout)
     h, w = table.shape[:2]
     fx, fy = u * w - 0.5, v * h - 0.5
     i0 = np.clip(np.floor(fx).astype(int), 0, w - 1)
