@@ -202,18 +202,12 @@ def _box_hit(origins, directions, lo, hi):
 
 def expected_shadow(sun_to, size, band):
     """Per pixel: (on the plane and seen, in the box's shadow, within ``band`` of its edge)."""
-    from pbrlab.render.depth_range import camera_frame
+    from pbrlab.maths.camera import camera_frame, camera_rays
 
-    width, height = size
     eye = np.array(CAMERA["position"])
-    forward = -eye / np.linalg.norm(eye)
-    right = np.cross(forward, [0.0, 1.0, 0.0])
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    tan_half = math.tan(math.radians(CAMERA["fov_y_deg"]) / 2)
-    x = ((np.arange(width) + 0.5) / width * 2 - 1) * tan_half * width / height
-    y = (1 - (np.arange(height) + 0.5) / height * 2) * tan_half
-    rays = forward + x[None, :, None] * right + y[:, None, None] * up
+    data = shadow_scene("unused.exr")
+    data["camera"]["size"], data["environment"] = list(size), {"color": [0.0, 0.0, 0.0]}
+    rays = camera_rays(camera_frame(parse_scene(data, origin="the shadow scene's camera").camera, 1.0))
     s = -eye[1] / rays[..., 1]
     points = eye + s[..., None] * rays
     half = BOX["size"] / 2

@@ -80,16 +80,10 @@ def _box_hit(origins, directions):
 
 def plane_points():
     """Per pixel centre: the point on the plane (y = 0) and whether the camera sees it there."""
-    w, h = CAMERA["size"]
+    from pbrlab.maths.camera import camera_frame, camera_rays
+
     eye = np.array(CAMERA["position"])
-    forward = -eye / np.linalg.norm(eye)
-    right = np.cross(forward, [0.0, 1.0, 0.0])
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    tan_half = math.tan(math.radians(CAMERA["fov_y_deg"]) / 2)
-    x = ((np.arange(w) + 0.5) / w * 2 - 1) * tan_half * w / h
-    y = (1 - (np.arange(h) + 0.5) / h * 2) * tan_half
-    rays = forward + x[None, :, None] * right + y[:, None, None] * up
+    rays = camera_rays(camera_frame(scene(0).camera, 1.0))  # the renderers' own rays
     points = eye + (-eye[1] / rays[..., 1])[..., None] * rays
     seen = ~_box_hit(np.broadcast_to(eye, rays.shape), rays)
     return points, seen
