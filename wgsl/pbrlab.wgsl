@@ -26,6 +26,7 @@
 //   pbr_F_Schlick_2(vec3<f32>, f32, f32) -> vec3<f32>   <- GLSL pbr_F_Schlick (overload)
 //   pbr_F_SchlickSG_1(vec3<f32>, f32, f32) -> vec3<f32>   <- GLSL pbr_F_SchlickSG (overload)
 //   pbr_f90_from_f0_(vec3<f32>) -> f32   <- GLSL pbr_f90_from_f0 (ends in a digit)
+//   pbr_iridescence_xyz_to_rec709_(vec3<f32>) -> vec3<f32>   <- GLSL pbr_iridescence_xyz_to_rec709 (ends in a digit)
 //   pbr_specular_F_f90_(vec3<f32>, f32, f32) -> vec3<f32>   <- GLSL pbr_specular_F_f90 (ends in a digit)
 //   pbr_specular_F_deviation_bound_f90_(vec3<f32>, f32) -> vec3<f32>   <- GLSL pbr_specular_F_deviation_bound_f90 (ends in a digit)
 //   pbr_brdf_standard_f90_(vec3<f32>, vec3<f32>, vec3<f32>, vec3<f32>, vec3<f32>, f32, f32) -> vec3<f32>   <- GLSL pbr_brdf_standard_f90 (ends in a digit)
@@ -43,6 +44,19 @@
 //   pbr_iridescent_f0_f90_(vec3<f32>, f32, f32, pbr_Iridescence) -> vec3<f32>   <- GLSL pbr_iridescent_f0_f90 (ends in a digit)
 //   pbr_lighting_transmission_f90_(vec3<f32>, vec3<f32>, f32, f32, f32, vec3<f32>, vec3<f32>, pbr_GI, vec3<f32>, pbr_Transmission) -> vec3<f32>   <- GLSL pbr_lighting_transmission_f90 (ends in a digit)
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
+struct pbr_ThinFilm {
+    n1_: f32,
+    n2_: f32,
+    c1_: f32,
+    cos2Sq: f32,
+    c2_: f32,
+    R12_: f32,
+    T121_: f32,
+    thicknessNm: f32,
+    xyz1_: vec3<f32>,
+    S2_: vec3<f32>,
+}
+
 struct pbr_Light {
     color: vec3<f32>,
     dir: vec3<f32>,
@@ -97,6 +111,11 @@ struct pbr_Iridescence {
     factor: f32,
     ior: f32,
     thicknessNm: f32,
+}
+
+struct pbr_IridescentF0_ {
+    f0_: vec3<f32>,
+    coatF0_: vec3<f32>,
 }
 
 struct pbr_Transmission {
@@ -1844,192 +1863,305 @@ fn pbr_iridescence_sensitivity(opdNm: f32, shift: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(vec3<f32>(3.2404542f, -1.5371385f, -0.4985314f), _e98), dot(vec3<f32>(-0.969266f, 1.8760108f, 0.041556f), _e105), dot(vec3<f32>(0.0556434f, -0.2040259f, 1.0572252f), _e112));
 }
 
-fn pbr_F_Iridescence(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm: f32, baseF0_: vec3<f32>) -> vec3<f32> {
+fn pbr_iridescence_sensitivity_xyz(opdNm_2: f32) -> vec3<f32> {
+    var opdNm_3: f32;
+    var phase_1: f32;
+    var phase2_1: f32;
+    var amplitude_1: vec3<f32> = vec3<f32>(0.000000090458144f, 0.00000010687371f, 0.00000010696994f);
+    var xyz_1: vec3<f32>;
+
+    opdNm_3 = opdNm_2;
+    let _e5 = opdNm_3;
+    phase_1 = (0.000000006283185f * clamp(_e5, 0f, 100000f));
+    let _e11 = phase_1;
+    let _e12 = phase_1;
+    phase2_1 = (_e11 * _e12);
+    let _e41 = amplitude_1;
+    let _e46 = phase_1;
+    let _e50 = phase2_1;
+    xyz_1 = ((_e41 * cos((vec3<f32>(1681000f, 1795300f, 2208400f) * _e46))) * exp((-(_e50) * vec3<f32>(4327800000f, 9304600000f, 6612100000f))));
+    let _e61 = xyz_1;
+    let _e70 = phase_1;
+    let _e74 = phase2_1;
+    xyz_1.x = (_e61.x + ((0.00000001644083f * cos((2239900f * _e70))) * exp((-(_e74) * 4528200000f))));
+    let _e81 = xyz_1;
+    return (_e81 / vec3(0.00000010685f));
+}
+
+fn pbr_iridescence_xyz_to_rec709_(xyz_2: vec3<f32>) -> vec3<f32> {
+    var xyz_3: vec3<f32>;
+
+    xyz_3 = xyz_2;
+    let _e8 = xyz_3;
+    let _e15 = xyz_3;
+    let _e22 = xyz_3;
+    return vec3<f32>(dot(vec3<f32>(3.2404542f, -1.5371385f, -0.4985314f), _e8), dot(vec3<f32>(-0.969266f, 1.8760108f, 0.041556f), _e15), dot(vec3<f32>(0.0556434f, -0.2040259f, 1.0572252f), _e22));
+}
+
+fn pbr_thin_film(outsideIor: f32, filmIor: f32, cosTheta1_: f32, thicknessNm: f32) -> pbr_ThinFilm {
     var outsideIor_1: f32;
     var filmIor_1: f32;
     var cosTheta1_1: f32;
     var thicknessNm_1: f32;
-    var baseF0_1: vec3<f32>;
-    var c1_: f32;
-    var n1_: f32;
-    var n2_: f32;
+    var f_1: pbr_ThinFilm;
     var ratio: f32;
-    var cos2Sq: f32;
-    var c2_: f32;
     var r0_: f32;
-    var R12_: f32;
-    var T121_: f32;
-    var local_11: f32;
-    var phi21_: f32;
-    var f0_14: vec3<f32>;
-    var eta3_: vec3<f32>;
-    var r1_: vec3<f32>;
-    var R23_: vec3<f32>;
-    var local_12: f32;
-    var local_13: f32;
-    var local_14: f32;
-    var phi23_: vec3<f32>;
-    var phi: vec3<f32>;
     var opd: f32;
-    var R123_: vec3<f32>;
-    var r123_: vec3<f32>;
-    var Rs: vec3<f32>;
-    var C1_: vec3<f32>;
-    var C2_: vec3<f32>;
-    var I: vec3<f32>;
-    var local_15: vec3<f32>;
-    var F: vec3<f32>;
-    var noFilm: vec3<f32>;
-    var local_16: vec3<f32>;
 
     outsideIor_1 = outsideIor;
     filmIor_1 = filmIor;
     cosTheta1_1 = cosTheta1_;
     thicknessNm_1 = thicknessNm;
+    let _e10 = outsideIor_1;
+    f_1.n1_ = _e10;
+    let _e12 = thicknessNm_1;
+    f_1.thicknessNm = _e12;
+    let _e14 = cosTheta1_1;
+    let _e15 = pbr_saturate(_e14);
+    f_1.c1_ = _e15;
+    let _e17 = f_1;
+    let _e19 = filmIor_1;
+    let _e22 = thicknessNm_1;
+    f_1.n2_ = mix(_e17.n1_, _e19, smoothstep(0f, 0.03f, _e22));
+    let _e25 = f_1;
+    let _e27 = f_1;
+    ratio = (_e25.n1_ / _e27.n2_);
+    let _e33 = ratio;
+    let _e34 = ratio;
+    let _e37 = f_1;
+    let _e39 = f_1;
+    f_1.cos2Sq = (1f - ((_e33 * _e34) * (1f - (_e37.c1_ * _e39.c1_))));
+    let _e46 = f_1;
+    f_1.c2_ = sqrt(max(_e46.cos2Sq, 0f));
+    let _e51 = f_1;
+    let _e53 = f_1;
+    let _e56 = f_1;
+    let _e58 = f_1;
+    r0_ = ((_e51.n2_ - _e53.n1_) / (_e56.n2_ + _e58.n1_));
+    let _e64 = r0_;
+    let _e65 = r0_;
+    let _e67 = f_1;
+    let _e69 = pbr_F_Schlick((_e64 * _e65), _e67.c1_);
+    f_1.R12_ = _e69;
+    let _e72 = f_1;
+    f_1.T121_ = (1f - _e72.R12_);
+    let _e76 = f_1;
+    let _e79 = thicknessNm_1;
+    let _e81 = f_1;
+    opd = (((2f * _e76.n2_) * _e79) * _e81.c2_);
+    let _e86 = opd;
+    let _e87 = pbr_iridescence_sensitivity_xyz(_e86);
+    f_1.xyz1_ = _e87;
+    let _e90 = opd;
+    let _e92 = pbr_iridescence_sensitivity_xyz((2f * _e90));
+    let _e93 = pbr_iridescence_xyz_to_rec709_(_e92);
+    f_1.S2_ = _e93;
+    let _e94 = f_1;
+    return _e94;
+}
+
+fn pbr_iridescence_airy_channel(f_2: pbr_ThinFilm, eta3_: f32, S1_: f32, S2_: f32) -> f32 {
+    var f_3: pbr_ThinFilm;
+    var eta3_1: f32;
+    var S1_1: f32;
+    var S2_1: f32;
+    var r1_: f32;
+    var R23_: f32;
+    var R123_: f32;
+    var r123_: f32;
+    var Rs: f32;
+    var C1_: f32;
+    var C2_: f32;
+
+    f_3 = f_2;
+    eta3_1 = eta3_;
+    S1_1 = S1_;
+    S2_1 = S2_;
+    let _e8 = eta3_1;
+    let _e9 = f_3;
+    let _e12 = eta3_1;
+    let _e13 = f_3;
+    r1_ = ((_e8 - _e9.n2_) / (_e12 + _e13.n2_));
+    let _e18 = r1_;
+    let _e19 = r1_;
+    let _e21 = f_3;
+    let _e23 = pbr_F_Schlick((_e18 * _e19), _e21.c2_);
+    R23_ = _e23;
+    let _e25 = f_3;
+    let _e27 = R23_;
+    R123_ = clamp((_e25.R12_ * _e27), 0f, 0.9999f);
+    let _e33 = R123_;
+    r123_ = sqrt(_e33);
+    let _e36 = f_3;
+    let _e38 = f_3;
+    let _e41 = R23_;
+    let _e44 = R123_;
+    Rs = (((_e36.T121_ * _e38.T121_) * _e41) / (1f - _e44));
+    let _e48 = Rs;
+    let _e49 = f_3;
+    let _e52 = r123_;
+    C1_ = ((_e48 - _e49.T121_) * _e52);
+    let _e55 = C1_;
+    let _e56 = r123_;
+    C2_ = (_e55 * _e56);
+    let _e59 = f_3;
+    let _e61 = Rs;
+    let _e63 = C1_;
+    let _e65 = S1_1;
+    let _e69 = C2_;
+    let _e71 = S2_1;
+    return (((_e59.R12_ + _e61) + (_e63 * (2f * _e65))) + (_e69 * (2f * _e71)));
+}
+
+fn pbr_iridescence_airy(f_4: pbr_ThinFilm, baseF0_: vec3<f32>) -> vec3<f32> {
+    var f_5: pbr_ThinFilm;
+    var baseF0_1: vec3<f32>;
+    var f0_14: vec3<f32>;
+    var eta3_2: vec3<f32>;
+    var pi21_: bool;
+    var local_11: f32;
+    var local_12: f32;
+    var local_13: f32;
+    var cosPhi: vec3<f32>;
+    var S1_2: vec3<f32>;
+
+    f_5 = f_4;
     baseF0_1 = baseF0_;
-    let _e10 = cosTheta1_1;
-    let _e11 = pbr_saturate(_e10);
-    c1_ = _e11;
-    let _e13 = outsideIor_1;
-    n1_ = _e13;
-    let _e15 = n1_;
-    let _e16 = filmIor_1;
-    let _e19 = thicknessNm_1;
-    n2_ = mix(_e15, _e16, smoothstep(0f, 0.03f, _e19));
-    let _e23 = n1_;
-    let _e24 = n2_;
-    ratio = (_e23 / _e24);
-    let _e28 = ratio;
-    let _e29 = ratio;
-    let _e32 = c1_;
-    let _e33 = c1_;
-    cos2Sq = (1f - ((_e28 * _e29) * (1f - (_e32 * _e33))));
-    let _e39 = cos2Sq;
-    c2_ = sqrt(max(_e39, 0f));
-    let _e44 = n2_;
-    let _e45 = n1_;
-    let _e47 = n2_;
-    let _e48 = n1_;
-    r0_ = ((_e44 - _e45) / (_e47 + _e48));
-    let _e52 = r0_;
-    let _e53 = r0_;
-    let _e55 = c1_;
-    let _e56 = pbr_F_Schlick((_e52 * _e53), _e55);
-    R12_ = _e56;
-    let _e59 = R12_;
-    T121_ = (1f - _e59);
-    let _e62 = n2_;
-    let _e63 = n1_;
-    if (_e62 < _e63) {
-        local_11 = 0f;
+    let _e4 = baseF0_1;
+    f0_14 = clamp(_e4, vec3(0f), vec3(0.9999f));
+    let _e11 = f0_14;
+    let _e13 = pbr_ior_from_f0_(_e11.x);
+    let _e14 = f0_14;
+    let _e16 = pbr_ior_from_f0_(_e14.y);
+    let _e17 = f0_14;
+    let _e19 = pbr_ior_from_f0_(_e17.z);
+    eta3_2 = vec3<f32>(_e13, _e16, _e19);
+    let _e22 = f_5;
+    let _e24 = f_5;
+    pi21_ = !((_e22.n2_ < _e24.n1_));
+    let _e29 = eta3_2;
+    let _e31 = f_5;
+    let _e34 = pi21_;
+    if ((_e29.x < _e31.n2_) != _e34) {
+        local_11 = -1f;
     } else {
-        local_11 = 3.1415927f;
+        local_11 = 1f;
     }
-    let _e68 = local_11;
-    phi21_ = _e68;
-    let _e70 = baseF0_1;
-    f0_14 = clamp(_e70, vec3(0f), vec3(0.9999f));
-    let _e77 = f0_14;
-    let _e79 = pbr_ior_from_f0_(_e77.x);
-    let _e80 = f0_14;
-    let _e82 = pbr_ior_from_f0_(_e80.y);
-    let _e83 = f0_14;
-    let _e85 = pbr_ior_from_f0_(_e83.z);
-    eta3_ = vec3<f32>(_e79, _e82, _e85);
-    let _e88 = eta3_;
-    let _e89 = n2_;
-    let _e92 = eta3_;
-    let _e93 = n2_;
-    r1_ = ((_e88 - vec3(_e89)) / (_e92 + vec3(_e93)));
-    let _e98 = r1_;
-    let _e99 = r1_;
-    let _e101 = c2_;
-    let _e102 = pbr_F_Schlick_1((_e98 * _e99), _e101);
-    R23_ = _e102;
-    let _e104 = eta3_;
-    let _e106 = n2_;
-    if (_e104.x < _e106) {
-        local_12 = 3.1415927f;
+    let _e40 = local_11;
+    let _e41 = eta3_2;
+    let _e43 = f_5;
+    let _e46 = pi21_;
+    if ((_e41.y < _e43.n2_) != _e46) {
+        local_12 = -1f;
     } else {
-        local_12 = 0f;
+        local_12 = 1f;
     }
-    let _e111 = local_12;
-    let _e112 = eta3_;
-    let _e114 = n2_;
-    if (_e112.y < _e114) {
-        local_13 = 3.1415927f;
+    let _e52 = local_12;
+    let _e53 = eta3_2;
+    let _e55 = f_5;
+    let _e58 = pi21_;
+    if ((_e53.z < _e55.n2_) != _e58) {
+        local_13 = -1f;
     } else {
-        local_13 = 0f;
+        local_13 = 1f;
     }
-    let _e119 = local_13;
-    let _e120 = eta3_;
-    let _e122 = n2_;
-    if (_e120.z < _e122) {
-        local_14 = 3.1415927f;
+    let _e64 = local_13;
+    cosPhi = vec3<f32>(_e40, _e52, _e64);
+    let _e67 = cosPhi;
+    let _e68 = f_5;
+    let _e71 = pbr_iridescence_xyz_to_rec709_((_e67 * _e68.xyz1_));
+    S1_2 = _e71;
+    let _e73 = f_5;
+    let _e74 = eta3_2;
+    let _e76 = S1_2;
+    let _e78 = f_5;
+    let _e81 = pbr_iridescence_airy_channel(_e73, _e74.x, _e76.x, _e78.S2_.x);
+    let _e82 = f_5;
+    let _e83 = eta3_2;
+    let _e85 = S1_2;
+    let _e87 = f_5;
+    let _e90 = pbr_iridescence_airy_channel(_e82, _e83.y, _e85.y, _e87.S2_.y);
+    let _e91 = f_5;
+    let _e92 = eta3_2;
+    let _e94 = S1_2;
+    let _e96 = f_5;
+    let _e99 = pbr_iridescence_airy_channel(_e91, _e92.z, _e94.z, _e96.S2_.z);
+    return vec3<f32>(_e81, _e90, _e99);
+}
+
+fn pbr_iridescence_select(f_6: pbr_ThinFilm, baseF0_2: vec3<f32>, I: vec3<f32>) -> vec3<f32> {
+    var f_7: pbr_ThinFilm;
+    var baseF0_3: vec3<f32>;
+    var I_1: vec3<f32>;
+    var local_14: vec3<f32>;
+    var F: vec3<f32>;
+    var noFilm: vec3<f32>;
+    var local_15: vec3<f32>;
+
+    f_7 = f_6;
+    baseF0_3 = baseF0_2;
+    I_1 = I;
+    let _e6 = f_7;
+    if (_e6.cos2Sq < 0f) {
+        local_14 = vec3(1f);
     } else {
-        local_14 = 0f;
+        let _e12 = I_1;
+        let _e13 = pbr_saturate_1(_e12);
+        local_14 = _e13;
     }
-    let _e127 = local_14;
-    phi23_ = vec3<f32>(_e111, _e119, _e127);
-    let _e130 = phi21_;
-    let _e132 = phi23_;
-    phi = (vec3(_e130) + _e132);
-    let _e136 = n2_;
-    let _e138 = thicknessNm_1;
-    let _e140 = c2_;
-    opd = (((2f * _e136) * _e138) * _e140);
-    let _e143 = R12_;
-    let _e144 = R23_;
-    R123_ = clamp((_e143 * _e144), vec3(0f), vec3(0.9999f));
-    let _e152 = R123_;
-    r123_ = sqrt(_e152);
-    let _e155 = T121_;
-    let _e156 = T121_;
-    let _e158 = R23_;
-    let _e162 = R123_;
-    Rs = (((_e155 * _e156) * _e158) / (vec3(1f) - _e162));
-    let _e166 = Rs;
-    let _e167 = T121_;
-    let _e170 = r123_;
-    C1_ = ((_e166 - vec3(_e167)) * _e170);
-    let _e173 = C1_;
-    let _e174 = r123_;
-    C2_ = (_e173 * _e174);
-    let _e177 = R12_;
-    let _e179 = Rs;
-    let _e181 = C1_;
-    let _e183 = opd;
-    let _e184 = phi;
-    let _e185 = pbr_iridescence_sensitivity(_e183, _e184);
-    let _e189 = C2_;
-    let _e192 = opd;
-    let _e195 = phi;
-    let _e197 = pbr_iridescence_sensitivity((2f * _e192), (2f * _e195));
-    I = (((vec3(_e177) + _e179) + (_e181 * (2f * _e185))) + (_e189 * (2f * _e197)));
-    let _e202 = cos2Sq;
-    if (_e202 < 0f) {
-        local_15 = vec3(1f);
+    let _e15 = local_14;
+    F = _e15;
+    let _e17 = baseF0_3;
+    let _e18 = f_7;
+    let _e20 = pbr_F_Schlick_1(_e17, _e18.c1_);
+    noFilm = _e20;
+    let _e22 = f_7;
+    if (_e22.thicknessNm > 0f) {
+        let _e26 = F;
+        local_15 = _e26;
     } else {
-        let _e207 = I;
-        let _e208 = pbr_saturate_1(_e207);
-        local_15 = _e208;
+        let _e27 = noFilm;
+        local_15 = _e27;
     }
-    let _e210 = local_15;
-    F = _e210;
-    let _e212 = baseF0_1;
-    let _e213 = cosTheta1_1;
-    let _e214 = pbr_F_Schlick_1(_e212, _e213);
-    noFilm = _e214;
-    let _e216 = thicknessNm_1;
-    if (_e216 > 0f) {
-        let _e219 = F;
-        local_16 = _e219;
-    } else {
-        let _e220 = noFilm;
-        local_16 = _e220;
-    }
-    let _e222 = local_16;
-    return _e222;
+    let _e29 = local_15;
+    return _e29;
+}
+
+fn pbr_F_Iridescence_thin_film(f_8: pbr_ThinFilm, baseF0_4: vec3<f32>) -> vec3<f32> {
+    var f_9: pbr_ThinFilm;
+    var baseF0_5: vec3<f32>;
+
+    f_9 = f_8;
+    baseF0_5 = baseF0_4;
+    let _e4 = f_9;
+    let _e5 = baseF0_5;
+    let _e6 = f_9;
+    let _e7 = baseF0_5;
+    let _e8 = pbr_iridescence_airy(_e6, _e7);
+    let _e9 = pbr_iridescence_select(_e4, _e5, _e8);
+    return _e9;
+}
+
+fn pbr_F_Iridescence(outsideIor_2: f32, filmIor_2: f32, cosTheta1_2: f32, thicknessNm_2: f32, baseF0_6: vec3<f32>) -> vec3<f32> {
+    var outsideIor_3: f32;
+    var filmIor_3: f32;
+    var cosTheta1_3: f32;
+    var thicknessNm_3: f32;
+    var baseF0_7: vec3<f32>;
+
+    outsideIor_3 = outsideIor_2;
+    filmIor_3 = filmIor_2;
+    cosTheta1_3 = cosTheta1_2;
+    thicknessNm_3 = thicknessNm_2;
+    baseF0_7 = baseF0_6;
+    let _e10 = outsideIor_3;
+    let _e11 = filmIor_3;
+    let _e12 = cosTheta1_3;
+    let _e13 = thicknessNm_3;
+    let _e14 = pbr_thin_film(_e10, _e11, _e12, _e13);
+    let _e15 = baseF0_7;
+    let _e16 = pbr_F_Iridescence_thin_film(_e14, _e15);
+    return _e16;
 }
 
 fn pbr_iridescence_mix(F_1: vec3<f32>, Firidescence: vec3<f32>, iridescenceFactor: f32) -> vec3<f32> {
@@ -2133,9 +2265,9 @@ fn pbr_sheen_lambda(cosTheta_4: f32, alpha_46: f32) -> f32 {
     var cosTheta_5: f32;
     var alpha_47: f32;
     var below: bool;
-    var local_17: f32;
+    var local_16: f32;
     var L: f32;
-    var local_18: f32;
+    var local_17: f32;
 
     cosTheta_5 = cosTheta_4;
     alpha_47 = alpha_46;
@@ -2148,26 +2280,26 @@ fn pbr_sheen_lambda(cosTheta_4: f32, alpha_46: f32) -> f32 {
     let _e16 = below;
     if _e16 {
         let _e17 = cosTheta_5;
-        local_17 = _e17;
+        local_16 = _e17;
     } else {
         let _e19 = cosTheta_5;
-        local_17 = (1f - _e19);
+        local_16 = (1f - _e19);
     }
-    let _e22 = local_17;
+    let _e22 = local_16;
     let _e23 = alpha_47;
     let _e24 = pbr_sheen_lambda_exponent(_e22, _e23);
     L = _e24;
     let _e26 = below;
     if _e26 {
         let _e27 = L;
-        local_18 = _e27;
+        local_17 = _e27;
     } else {
         let _e30 = alpha_47;
         let _e31 = pbr_sheen_lambda_exponent(0.5f, _e30);
         let _e33 = L;
-        local_18 = ((2f * _e31) - _e33);
+        local_17 = ((2f * _e31) - _e33);
     }
-    let _e36 = local_18;
+    let _e36 = local_17;
     return exp(_e36);
 }
 
@@ -2367,7 +2499,7 @@ fn pbr_brdf_standard_terms(n_6: vec3<f32>, v_10: vec3<f32>, l_4: vec3<f32>, perc
     var halfLength2_: f32;
     var nDotHalfSum: f32;
     var halfRejection: vec3<f32>;
-    var local_19: f32;
+    var local_18: f32;
 
     n_7 = n_6;
     v_11 = v_10;
@@ -2422,11 +2554,11 @@ fn pbr_brdf_standard_terms(n_6: vec3<f32>, v_10: vec3<f32>, l_4: vec3<f32>, perc
     let _e74 = nDotHalfSum;
     if (_e74 >= 0.0000000000000008881784f) {
         let _e77 = (*piDV);
-        local_19 = _e77;
+        local_18 = _e77;
     } else {
-        local_19 = 0f;
+        local_18 = 0f;
     }
-    let _e80 = local_19;
+    let _e80 = local_18;
     (*piDV) = _e80;
     return;
 }
@@ -2618,7 +2750,7 @@ fn pbr_env_brdf_approx(NdotV_46: f32, perceptualRoughness_20: f32) -> vec2<f32> 
     var NdotV_47: f32;
     var perceptualRoughness_21: f32;
     var c0_: vec4<f32> = vec4<f32>(-1f, -0.0275f, -0.572f, 0.022f);
-    var c1_1: vec4<f32> = vec4<f32>(1f, 0.0425f, 1.04f, -0.04f);
+    var c1_: vec4<f32> = vec4<f32>(1f, 0.0425f, 1.04f, -0.04f);
     var r_5: vec4<f32>;
     var a004_: f32;
 
@@ -2626,7 +2758,7 @@ fn pbr_env_brdf_approx(NdotV_46: f32, perceptualRoughness_20: f32) -> vec2<f32> 
     perceptualRoughness_21 = perceptualRoughness_20;
     let _e20 = perceptualRoughness_21;
     let _e21 = c0_;
-    let _e23 = c1_1;
+    let _e23 = c1_;
     r_5 = ((_e20 * _e21) + _e23);
     let _e26 = r_5;
     let _e28 = r_5;
@@ -2856,9 +2988,9 @@ fn pbr_anisotropy_direction(t_1: vec3<f32>, b_4: vec3<f32>, directionSample: vec
     var directionSample_1: vec2<f32>;
     var rotation_1: f32;
     var hasDirection: bool;
-    var local_20: f32;
+    var local_19: f32;
     var x_19: f32;
-    var local_21: f32;
+    var local_20: f32;
     var y_1: f32;
     var c_20: f32;
     var s_5: f32;
@@ -2873,20 +3005,20 @@ fn pbr_anisotropy_direction(t_1: vec3<f32>, b_4: vec3<f32>, directionSample: vec
     let _e14 = hasDirection;
     if _e14 {
         let _e15 = directionSample_1;
-        local_20 = _e15.x;
+        local_19 = _e15.x;
     } else {
-        local_20 = 1f;
+        local_19 = 1f;
     }
-    let _e19 = local_20;
+    let _e19 = local_19;
     x_19 = _e19;
     let _e21 = hasDirection;
     if _e21 {
         let _e22 = directionSample_1;
-        local_21 = _e22.y;
+        local_20 = _e22.y;
     } else {
-        local_21 = 0f;
+        local_20 = 0f;
     }
-    let _e26 = local_21;
+    let _e26 = local_20;
     y_1 = _e26;
     let _e28 = rotation_1;
     c_20 = cos(_e28);
@@ -2924,7 +3056,7 @@ fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>,
     var nDotHalfSum_1: f32;
     var D_1: f32;
     var V: f32;
-    var local_22: f32;
+    var local_21: f32;
 
     n_17 = n_16;
     v_23 = v_22;
@@ -2994,11 +3126,11 @@ fn pbr_brdf_anisotropic_terms(n_16: vec3<f32>, v_22: vec3<f32>, l_16: vec3<f32>,
     let _e103 = nDotHalfSum_1;
     if (min(_e102, _e103) >= 0.0000000000000008881784f) {
         let _e107 = (*DV_2);
-        local_22 = _e107;
+        local_21 = _e107;
     } else {
-        local_22 = 0f;
+        local_21 = 0f;
     }
-    let _e110 = local_22;
+    let _e110 = local_21;
     (*DV_2) = _e110;
     return;
 }
@@ -3090,7 +3222,7 @@ fn pbr_anisotropic_bent_normal(n_22: vec3<f32>, v_28: vec3<f32>, anisotropicDire
     var bend: f32;
     var bend2_: f32;
     var bent: vec3<f32>;
-    var local_23: vec3<f32>;
+    var local_22: vec3<f32>;
 
     n_23 = n_22;
     v_29 = v_28;
@@ -3122,12 +3254,12 @@ fn pbr_anisotropic_bent_normal(n_22: vec3<f32>, v_28: vec3<f32>, anisotropicDire
     let _e46 = bent;
     if (dot(_e45, _e46) > 0f) {
         let _e50 = bent;
-        local_23 = _e50;
+        local_22 = _e50;
     } else {
         let _e51 = n_23;
-        local_23 = _e51;
+        local_22 = _e51;
     }
-    let _e53 = local_23;
+    let _e53 = local_22;
     return _e53;
 }
 
@@ -3355,7 +3487,7 @@ fn pbr_transmission_thin_punctual(n_28: vec3<f32>, v_32: vec3<f32>, l_26: vec3<f
     var NdotV_67: f32;
     var lobe: f32;
     var through: bool;
-    var local_24: vec3<f32>;
+    var local_23: vec3<f32>;
 
     n_29 = n_28;
     v_33 = v_32;
@@ -3403,11 +3535,11 @@ fn pbr_transmission_thin_punctual(n_28: vec3<f32>, v_32: vec3<f32>, l_26: vec3<f
         let _e72 = baseColor_3;
         let _e75 = lobe;
         let _e77 = NdotLm;
-        local_24 = ((_e71 * _e72) * ((3.1415927f * _e75) * _e77));
+        local_23 = ((_e71 * _e72) * ((3.1415927f * _e75) * _e77));
     } else {
-        local_24 = vec3(0f);
+        local_23 = vec3(0f);
     }
-    let _e83 = local_24;
+    let _e83 = local_23;
     return _e83;
 }
 
@@ -3416,8 +3548,8 @@ fn pbr_beer_lambert(c_21: f32, x_22: f32) -> f32 {
     var x_23: f32;
     var cs: f32;
     var xs: f32;
+    var local_24: f32;
     var local_25: f32;
-    var local_26: f32;
 
     c_22 = c_21;
     x_23 = x_22;
@@ -3429,18 +3561,18 @@ fn pbr_beer_lambert(c_21: f32, x_22: f32) -> f32 {
     if (_e14 > 0f) {
         let _e17 = cs;
         let _e19 = xs;
-        local_26 = exp2((log2(_e17) * _e19));
+        local_25 = exp2((log2(_e17) * _e19));
     } else {
         let _e22 = xs;
         if (_e22 > 0f) {
-            local_25 = 0f;
+            local_24 = 0f;
         } else {
-            local_25 = 1f;
+            local_24 = 1f;
         }
-        let _e28 = local_25;
-        local_26 = _e28;
+        let _e28 = local_24;
+        local_25 = _e28;
     }
-    let _e30 = local_26;
+    let _e30 = local_25;
     return _e30;
 }
 
@@ -3448,7 +3580,7 @@ fn pbr_volume_attenuation(distance_: f32, attenuationColor: vec3<f32>, attenuati
     var distance_1: f32;
     var attenuationColor_1: vec3<f32>;
     var attenuationDistance_1: f32;
-    var local_27: f32;
+    var local_26: f32;
     var x_24: f32;
 
     distance_1 = distance_;
@@ -3458,11 +3590,11 @@ fn pbr_volume_attenuation(distance_: f32, attenuationColor: vec3<f32>, attenuati
     if (_e6 > 0f) {
         let _e9 = distance_1;
         let _e10 = attenuationDistance_1;
-        local_27 = (_e9 / max(_e10, 0.000000000000000000000000000000000000011754944f));
+        local_26 = (_e9 / max(_e10, 0.000000000000000000000000000000000000011754944f));
     } else {
-        local_27 = 0f;
+        local_26 = 0f;
     }
-    let _e16 = local_27;
+    let _e16 = local_26;
     x_24 = _e16;
     let _e18 = attenuationColor_1;
     let _e20 = x_24;
@@ -3667,7 +3799,7 @@ fn pbr_hammersley_float(i_2: f32, count_2: f32) -> vec2<f32> {
 fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_68: f32) -> vec3<f32> {
     var xi_1: vec2<f32>;
     var alpha_69: f32;
-    var phi_1: f32;
+    var phi: f32;
     var cosTheta2_: f32;
     var cosTheta_6: f32;
     var sinTheta: f32;
@@ -3675,7 +3807,7 @@ fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_68: f32) -> vec3<f32> {
     xi_1 = xi;
     alpha_69 = alpha_68;
     let _e7 = xi_1;
-    phi_1 = (6.2831855f * _e7.x);
+    phi = (6.2831855f * _e7.x);
     let _e12 = xi_1;
     let _e16 = alpha_69;
     let _e17 = alpha_69;
@@ -3686,9 +3818,9 @@ fn pbr_importance_sample_GGX(xi: vec2<f32>, alpha_68: f32) -> vec3<f32> {
     let _e31 = cosTheta2_;
     sinTheta = sqrt(max((1f - _e31), 0f));
     let _e37 = sinTheta;
-    let _e38 = phi_1;
+    let _e38 = phi;
     let _e41 = sinTheta;
-    let _e42 = phi_1;
+    let _e42 = phi;
     let _e45 = cosTheta_6;
     return vec3<f32>((_e37 * cos(_e38)), (_e41 * sin(_e42)), _e45);
 }
@@ -3709,7 +3841,7 @@ fn pbr_pdf_GGX_half_vector(NdotH_32: f32, alpha_70: f32) -> f32 {
 fn pbr_tangent_to_world(v_36: vec3<f32>, n_34: vec3<f32>) -> vec3<f32> {
     var v_37: vec3<f32>;
     var n_35: vec3<f32>;
-    var local_28: vec3<f32>;
+    var local_27: vec3<f32>;
     var up: vec3<f32>;
     var t_10: vec3<f32>;
     var b_12: vec3<f32>;
@@ -3718,11 +3850,11 @@ fn pbr_tangent_to_world(v_36: vec3<f32>, n_34: vec3<f32>) -> vec3<f32> {
     n_35 = n_34;
     let _e4 = n_35;
     if (abs(_e4.z) < 0.999f) {
-        local_28 = vec3<f32>(0f, 0f, 1f);
+        local_27 = vec3<f32>(0f, 0f, 1f);
     } else {
-        local_28 = vec3<f32>(1f, 0f, 0f);
+        local_27 = vec3<f32>(1f, 0f, 0f);
     }
-    let _e18 = local_28;
+    let _e18 = local_27;
     up = _e18;
     let _e20 = up;
     let _e21 = n_35;
@@ -3757,19 +3889,19 @@ fn pbr_equirect_uv(dir: vec3<f32>) -> vec2<f32> {
 
 fn pbr_equirect_direction(uv: vec2<f32>) -> vec3<f32> {
     var uv_1: vec2<f32>;
-    var phi_2: f32;
+    var phi_1: f32;
     var theta: f32;
 
     uv_1 = uv;
     let _e5 = uv_1;
-    phi_2 = (6.2831855f * _e5.x);
+    phi_1 = (6.2831855f * _e5.x);
     let _e10 = uv_1;
     theta = ((1f - _e10.y) * 3.1415927f);
     let _e16 = theta;
-    let _e18 = phi_2;
+    let _e18 = phi_1;
     let _e21 = theta;
     let _e23 = theta;
-    let _e26 = phi_2;
+    let _e26 = phi_1;
     return vec3<f32>((sin(_e16) * sin(_e18)), cos(_e21), (-(sin(_e23)) * cos(_e26)));
 }
 
@@ -3818,7 +3950,7 @@ fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f3
     var alpha_77: f32;
     var d_1: vec3<f32>;
     var len2_: f32;
-    var local_29: vec3<f32>;
+    var local_28: vec3<f32>;
 
     n_37 = n_36;
     r_10 = r_9;
@@ -3834,12 +3966,12 @@ fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f3
     if (_e16 > 0.000000000001f) {
         let _e19 = d_1;
         let _e20 = len2_;
-        local_29 = (_e19 * inverseSqrt(_e20));
+        local_28 = (_e19 * inverseSqrt(_e20));
     } else {
         let _e23 = n_37;
-        local_29 = _e23;
+        local_28 = _e23;
     }
-    let _e25 = local_29;
+    let _e25 = local_28;
     return _e25;
 }
 
@@ -4540,7 +4672,7 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     var t2_: f32;
     var projected: vec3<f32>;
     var fallback: vec3<f32>;
-    var local_30: vec3<f32>;
+    var local_29: vec3<f32>;
 
     n_57 = n_56;
     direction_1 = direction;
@@ -4564,12 +4696,12 @@ fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
     let _e33 = t2_;
     if (_e33 > 0.0000010000001f) {
         let _e38 = projected;
-        local_30 = _e38;
+        local_29 = _e38;
     } else {
         let _e39 = fallback;
-        local_30 = _e39;
+        local_29 = _e39;
     }
-    let _e41 = local_30;
+    let _e41 = local_29;
     return _e41;
 }
 
@@ -4628,7 +4760,7 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     var halfSum_2: vec3<f32>;
     var LdotH_13: f32;
     var Fd: f32;
-    var local_31: f32;
+    var local_30: f32;
     var brdf: vec3<f32>;
 
     s_18 = s_17;
@@ -4655,11 +4787,11 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     let _e40 = nDotL;
     if (_e40 > 0f) {
         let _e43 = Fd;
-        local_31 = _e43;
+        local_30 = _e43;
     } else {
-        local_31 = 0f;
+        local_30 = 0f;
     }
-    let _e46 = local_31;
+    let _e46 = local_30;
     Fd = _e46;
     let _e47 = s_18;
     let _e49 = Fd;
@@ -4857,39 +4989,169 @@ fn pbr_iridescent_f0_(f0_75: vec3<f32>, NdotV_75: f32, film: pbr_Iridescence) ->
     return _e21;
 }
 
-fn pbr_iridescent_f0_f90_(f0_77: vec3<f32>, f90_32: f32, NdotV_77: f32, film_2: pbr_Iridescence) -> vec3<f32> {
+fn pbr_iridescent_f0_with_coat(f0_77: vec3<f32>, coatF0_30: vec3<f32>, NdotV_77: f32, film_2: pbr_Iridescence) -> pbr_IridescentF0_ {
     var f0_78: vec3<f32>;
-    var f90_33: f32;
+    var coatF0_31: vec3<f32>;
     var NdotV_78: f32;
     var film_3: pbr_Iridescence;
-    var unitF0_: vec3<f32>;
+    var thin: pbr_ThinFilm;
+    var r_11: pbr_IridescentF0_;
+    var coatI: vec3<f32>;
+    var I_2: vec3<f32>;
+    var F_5: vec3<f32>;
+    var coatF: vec3<f32>;
 
     f0_78 = f0_77;
-    f90_33 = f90_32;
+    coatF0_31 = coatF0_30;
     NdotV_78 = NdotV_77;
     film_3 = film_2;
-    let _e8 = f0_78;
+    let _e9 = film_3;
+    let _e11 = NdotV_78;
+    let _e12 = film_3;
+    let _e14 = pbr_thin_film(1f, _e9.ior, _e11, _e12.thicknessNm);
+    thin = _e14;
+    let _e17 = thin;
+    let _e18 = coatF0_31;
+    let _e19 = pbr_iridescence_airy(_e17, _e18);
+    coatI = _e19;
+    let _e21 = thin;
+    let _e22 = f0_78;
+    let _e23 = pbr_iridescence_airy(_e21, _e22);
+    I_2 = _e23;
+    let _e25 = thin;
+    let _e26 = f0_78;
+    let _e27 = I_2;
+    let _e28 = pbr_iridescence_select(_e25, _e26, _e27);
+    F_5 = _e28;
+    let _e30 = thin;
+    let _e31 = coatF0_31;
+    let _e32 = coatI;
+    let _e33 = pbr_iridescence_select(_e30, _e31, _e32);
+    coatF = _e33;
+    let _e36 = coatF0_31;
+    let _e37 = coatF;
+    let _e38 = NdotV_78;
+    let _e39 = pbr_f0_from_schlick(_e37, _e38);
+    let _e40 = film_3;
+    let _e42 = pbr_iridescence_mix(_e36, _e39, _e40.factor);
+    r_11.coatF0_ = _e42;
+    let _e44 = f0_78;
+    let _e45 = F_5;
+    let _e46 = NdotV_78;
+    let _e47 = pbr_f0_from_schlick(_e45, _e46);
+    let _e48 = film_3;
+    let _e50 = pbr_iridescence_mix(_e44, _e47, _e48.factor);
+    r_11.f0_ = _e50;
+    let _e51 = r_11;
+    return _e51;
+}
+
+fn pbr_iridescent_f0_f90_(f0_79: vec3<f32>, f90_32: f32, NdotV_79: f32, film_4: pbr_Iridescence) -> vec3<f32> {
+    var f0_80: vec3<f32>;
+    var f90_33: f32;
+    var NdotV_80: f32;
+    var film_5: pbr_Iridescence;
+    var unitF0_: vec3<f32>;
+
+    f0_80 = f0_79;
+    f90_33 = f90_32;
+    NdotV_80 = NdotV_79;
+    film_5 = film_4;
+    let _e8 = f0_80;
     let _e9 = f90_33;
     let _e14 = pbr_saturate_1((_e8 / vec3(max(_e9, 0.000000000000000000000000000000000000011754944f))));
     unitF0_ = _e14;
     let _e16 = f90_33;
     let _e17 = unitF0_;
-    let _e18 = NdotV_78;
-    let _e19 = film_3;
+    let _e18 = NdotV_80;
+    let _e19 = film_5;
     let _e20 = pbr_iridescent_f0_(_e17, _e18, _e19);
     return (_e16 * _e20);
 }
 
-fn pbr_iridescent_diffuse_color(diffuseColor_38: vec3<f32>, coatF0_30: vec3<f32>, filmCoatF0_: vec3<f32>) -> vec3<f32> {
+fn pbr_iridescent_f0_f90_with_coat(f0_81: vec3<f32>, f90_34: f32, coatF0_32: vec3<f32>, coatF90_12: f32, NdotV_81: f32, film_6: pbr_Iridescence) -> pbr_IridescentF0_ {
+    var f0_82: vec3<f32>;
+    var f90_35: f32;
+    var coatF0_33: vec3<f32>;
+    var coatF90_13: f32;
+    var NdotV_82: f32;
+    var film_7: pbr_Iridescence;
+    var thin_1: pbr_ThinFilm;
+    var unitCoatF0_: vec3<f32>;
+    var unitF0_1: vec3<f32>;
+    var coatI_1: vec3<f32>;
+    var I_3: vec3<f32>;
+    var F_6: vec3<f32>;
+    var coatF_1: vec3<f32>;
+    var r_12: pbr_IridescentF0_;
+
+    f0_82 = f0_81;
+    f90_35 = f90_34;
+    coatF0_33 = coatF0_32;
+    coatF90_13 = coatF90_12;
+    NdotV_82 = NdotV_81;
+    film_7 = film_6;
+    let _e13 = film_7;
+    let _e15 = NdotV_82;
+    let _e16 = film_7;
+    let _e18 = pbr_thin_film(1f, _e13.ior, _e15, _e16.thicknessNm);
+    thin_1 = _e18;
+    let _e20 = coatF0_33;
+    let _e21 = coatF90_13;
+    let _e26 = pbr_saturate_1((_e20 / vec3(max(_e21, 0.000000000000000000000000000000000000011754944f))));
+    unitCoatF0_ = _e26;
+    let _e28 = f0_82;
+    let _e29 = f90_35;
+    let _e34 = pbr_saturate_1((_e28 / vec3(max(_e29, 0.000000000000000000000000000000000000011754944f))));
+    unitF0_1 = _e34;
+    let _e36 = thin_1;
+    let _e37 = unitCoatF0_;
+    let _e38 = pbr_iridescence_airy(_e36, _e37);
+    coatI_1 = _e38;
+    let _e40 = thin_1;
+    let _e41 = unitF0_1;
+    let _e42 = pbr_iridescence_airy(_e40, _e41);
+    I_3 = _e42;
+    let _e44 = thin_1;
+    let _e45 = unitF0_1;
+    let _e46 = I_3;
+    let _e47 = pbr_iridescence_select(_e44, _e45, _e46);
+    F_6 = _e47;
+    let _e49 = thin_1;
+    let _e50 = unitCoatF0_;
+    let _e51 = coatI_1;
+    let _e52 = pbr_iridescence_select(_e49, _e50, _e51);
+    coatF_1 = _e52;
+    let _e56 = coatF90_13;
+    let _e57 = unitCoatF0_;
+    let _e58 = coatF_1;
+    let _e59 = NdotV_82;
+    let _e60 = pbr_f0_from_schlick(_e58, _e59);
+    let _e61 = film_7;
+    let _e63 = pbr_iridescence_mix(_e57, _e60, _e61.factor);
+    r_12.coatF0_ = (_e56 * _e63);
+    let _e66 = f90_35;
+    let _e67 = unitF0_1;
+    let _e68 = F_6;
+    let _e69 = NdotV_82;
+    let _e70 = pbr_f0_from_schlick(_e68, _e69);
+    let _e71 = film_7;
+    let _e73 = pbr_iridescence_mix(_e67, _e70, _e71.factor);
+    r_12.f0_ = (_e66 * _e73);
+    let _e75 = r_12;
+    return _e75;
+}
+
+fn pbr_iridescent_diffuse_color(diffuseColor_38: vec3<f32>, coatF0_34: vec3<f32>, filmCoatF0_: vec3<f32>) -> vec3<f32> {
     var diffuseColor_39: vec3<f32>;
-    var coatF0_31: vec3<f32>;
+    var coatF0_35: vec3<f32>;
     var filmCoatF0_1: vec3<f32>;
 
     diffuseColor_39 = diffuseColor_38;
-    coatF0_31 = coatF0_30;
+    coatF0_35 = coatF0_34;
     filmCoatF0_1 = filmCoatF0_;
     let _e6 = diffuseColor_39;
-    let _e7 = coatF0_31;
+    let _e7 = coatF0_35;
     let _e8 = pbr_diffuse_albedo_from_diffuse_color(_e6, _e7);
     let _e10 = filmCoatF0_1;
     let _e11 = pbr_max3_(_e10);
@@ -4912,7 +5174,7 @@ fn pbr_transmitted_direction(n_68: vec3<f32>, v_66: vec3<f32>, tr: pbr_Transmiss
     var n_69: vec3<f32>;
     var v_67: vec3<f32>;
     var tr_1: pbr_Transmission;
-    var local_32: vec3<f32>;
+    var local_31: vec3<f32>;
 
     n_69 = n_68;
     v_67 = v_66;
@@ -4923,32 +5185,32 @@ fn pbr_transmitted_direction(n_68: vec3<f32>, v_66: vec3<f32>, tr: pbr_Transmiss
         let _e11 = v_67;
         let _e12 = tr_1;
         let _e14 = pbr_refraction_direction(_e10, _e11, _e12.ior);
-        local_32 = _e14;
+        local_31 = _e14;
     } else {
         let _e15 = v_67;
-        local_32 = -(_e15);
+        local_31 = -(_e15);
     }
-    let _e18 = local_32;
+    let _e18 = local_31;
     return _e18;
 }
 
-fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor_42: vec3<f32>, coatF0_32: vec3<f32>, tr_2: pbr_Transmission) -> pbr_PreparedTransmission {
+fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor_42: vec3<f32>, coatF0_36: vec3<f32>, tr_2: pbr_Transmission) -> pbr_PreparedTransmission {
     var s_23: pbr_PreparedSurface;
     var diffuseColor_43: vec3<f32>;
-    var coatF0_33: vec3<f32>;
+    var coatF0_37: vec3<f32>;
     var tr_3: pbr_Transmission;
     var t_13: pbr_PreparedTransmission;
-    var local_33: vec3<f32>;
+    var local_32: vec3<f32>;
     var attenuation: vec3<f32>;
 
     s_23 = s_22;
     diffuseColor_43 = diffuseColor_42;
-    coatF0_33 = coatF0_32;
+    coatF0_37 = coatF0_36;
     tr_3 = tr_2;
     let _e10 = s_23;
     t_13.s = _e10;
     let _e12 = diffuseColor_43;
-    let _e13 = coatF0_33;
+    let _e13 = coatF0_37;
     let _e14 = pbr_diffuse_albedo_from_diffuse_color(_e12, _e13);
     t_13.rho = _e14;
     let _e16 = tr_3;
@@ -4959,11 +5221,11 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
         let _e24 = tr_3;
         let _e26 = tr_3;
         let _e28 = pbr_volume_attenuation(_e22.thickness, _e24.attenuationColor, _e26.attenuationDistance);
-        local_33 = _e28;
+        local_32 = _e28;
     } else {
-        local_33 = vec3(1f);
+        local_32 = vec3(1f);
     }
-    let _e32 = local_33;
+    let _e32 = local_32;
     attenuation = _e32;
     let _e35 = tr_3;
     let _e37 = pbr_saturate(_e35.factor);
@@ -4975,9 +5237,9 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
     return _e43;
 }
 
-fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_34: vec3<f32>, perceptualRoughness_64: f32, occlusion_32: f32, n_70: vec3<f32>, v_68: vec3<f32>, tr_4: pbr_Transmission, dfg_35: vec2<f32>) -> pbr_PreparedTransmission {
+fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>, perceptualRoughness_64: f32, occlusion_32: f32, n_70: vec3<f32>, v_68: vec3<f32>, tr_4: pbr_Transmission, dfg_35: vec2<f32>) -> pbr_PreparedTransmission {
     var diffuseColor_45: vec3<f32>;
-    var coatF0_35: vec3<f32>;
+    var coatF0_39: vec3<f32>;
     var perceptualRoughness_65: f32;
     var occlusion_33: f32;
     var n_71: vec3<f32>;
@@ -4986,7 +5248,7 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_34: vec3<f32>
     var dfg_36: vec2<f32>;
 
     diffuseColor_45 = diffuseColor_44;
-    coatF0_35 = coatF0_34;
+    coatF0_39 = coatF0_38;
     perceptualRoughness_65 = perceptualRoughness_64;
     occlusion_33 = occlusion_32;
     n_71 = n_70;
@@ -4994,8 +5256,8 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_34: vec3<f32>
     tr_5 = tr_4;
     dfg_36 = dfg_35;
     let _e16 = diffuseColor_45;
-    let _e17 = coatF0_35;
-    let _e18 = coatF0_35;
+    let _e17 = coatF0_39;
+    let _e18 = coatF0_39;
     let _e19 = perceptualRoughness_65;
     let _e20 = occlusion_33;
     let _e21 = n_71;
@@ -5003,16 +5265,16 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_34: vec3<f32>
     let _e23 = dfg_36;
     let _e24 = pbr_prepare_surface_dfg(_e16, _e17, _e18, _e19, _e20, _e21, _e22, _e23);
     let _e25 = diffuseColor_45;
-    let _e26 = coatF0_35;
+    let _e26 = coatF0_39;
     let _e27 = tr_5;
     let _e28 = pbr_prepare_transmission_from_surface(_e24, _e25, _e26, _e27);
     return _e28;
 }
 
-fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_36: vec3<f32>, coatF90_12: f32, perceptualRoughness_66: f32, occlusion_34: f32, n_72: vec3<f32>, v_70: vec3<f32>, tr_6: pbr_Transmission, dfg_37: vec2<f32>) -> pbr_PreparedTransmission {
+fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<f32>, coatF90_14: f32, perceptualRoughness_66: f32, occlusion_34: f32, n_72: vec3<f32>, v_70: vec3<f32>, tr_6: pbr_Transmission, dfg_37: vec2<f32>) -> pbr_PreparedTransmission {
     var diffuseColor_47: vec3<f32>;
-    var coatF0_37: vec3<f32>;
-    var coatF90_13: f32;
+    var coatF0_41: vec3<f32>;
+    var coatF90_15: f32;
     var perceptualRoughness_67: f32;
     var occlusion_35: f32;
     var n_73: vec3<f32>;
@@ -5021,8 +5283,8 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_36: vec3<
     var dfg_38: vec2<f32>;
 
     diffuseColor_47 = diffuseColor_46;
-    coatF0_37 = coatF0_36;
-    coatF90_13 = coatF90_12;
+    coatF0_41 = coatF0_40;
+    coatF90_15 = coatF90_14;
     perceptualRoughness_67 = perceptualRoughness_66;
     occlusion_35 = occlusion_34;
     n_73 = n_72;
@@ -5030,10 +5292,10 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_36: vec3<
     tr_7 = tr_6;
     dfg_38 = dfg_37;
     let _e18 = diffuseColor_47;
-    let _e19 = coatF0_37;
-    let _e20 = coatF90_13;
-    let _e21 = coatF0_37;
-    let _e22 = coatF90_13;
+    let _e19 = coatF0_41;
+    let _e20 = coatF90_15;
+    let _e21 = coatF0_41;
+    let _e22 = coatF90_15;
     let _e23 = perceptualRoughness_67;
     let _e24 = occlusion_35;
     let _e25 = n_73;
@@ -5041,7 +5303,7 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_36: vec3<
     let _e27 = dfg_38;
     let _e28 = pbr_prepare_surface_f90_dfg(_e18, _e19, _e20, _e21, _e22, _e23, _e24, _e25, _e26, _e27);
     let _e29 = diffuseColor_47;
-    let _e30 = coatF0_37;
+    let _e30 = coatF0_41;
     let _e31 = tr_7;
     let _e32 = pbr_prepare_transmission_from_surface(_e28, _e29, _e30, _e31);
     return _e32;
@@ -5127,9 +5389,9 @@ fn pbr_lighting_transmission_prepared(t_20: pbr_PreparedTransmission, light_8: p
     return (_e6.weight * (_e10 + ((_e11.s.indirectDiffuseColor * _e14) * _e16.s.occlusion)));
 }
 
-fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_38: vec3<f32>, perceptualRoughness_68: f32, occlusion_36: f32, n_74: vec3<f32>, v_72: vec3<f32>, gi_18: pbr_GI, transmittedIndirect_4: vec3<f32>, tr_8: pbr_Transmission) -> vec3<f32> {
+fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, perceptualRoughness_68: f32, occlusion_36: f32, n_74: vec3<f32>, v_72: vec3<f32>, gi_18: pbr_GI, transmittedIndirect_4: vec3<f32>, tr_8: pbr_Transmission) -> vec3<f32> {
     var diffuseColor_49: vec3<f32>;
-    var coatF0_39: vec3<f32>;
+    var coatF0_43: vec3<f32>;
     var perceptualRoughness_69: f32;
     var occlusion_37: f32;
     var n_75: vec3<f32>;
@@ -5141,7 +5403,7 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_38: vec3<f32>, p
     var dfg_39: vec2<f32>;
 
     diffuseColor_49 = diffuseColor_48;
-    coatF0_39 = coatF0_38;
+    coatF0_43 = coatF0_42;
     perceptualRoughness_69 = perceptualRoughness_68;
     occlusion_37 = occlusion_36;
     n_75 = n_74;
@@ -5158,7 +5420,7 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_38: vec3<f32>, p
     let _e27 = pbr_env_brdf(max(dot(_e21, _e22), 0.0001f), _e26);
     dfg_39 = _e27;
     let _e29 = diffuseColor_49;
-    let _e30 = coatF0_39;
+    let _e30 = coatF0_43;
     let _e31 = roughness_9;
     let _e32 = occlusion_37;
     let _e33 = n_75;
@@ -5172,10 +5434,10 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_38: vec3<f32>, p
     return _e41;
 }
 
-fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_40: vec3<f32>, coatF90_14: f32, perceptualRoughness_70: f32, occlusion_38: f32, n_76: vec3<f32>, v_74: vec3<f32>, gi_20: pbr_GI, transmittedIndirect_6: vec3<f32>, tr_10: pbr_Transmission) -> vec3<f32> {
+fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_44: vec3<f32>, coatF90_16: f32, perceptualRoughness_70: f32, occlusion_38: f32, n_76: vec3<f32>, v_74: vec3<f32>, gi_20: pbr_GI, transmittedIndirect_6: vec3<f32>, tr_10: pbr_Transmission) -> vec3<f32> {
     var diffuseColor_51: vec3<f32>;
-    var coatF0_41: vec3<f32>;
-    var coatF90_15: f32;
+    var coatF0_45: vec3<f32>;
+    var coatF90_17: f32;
     var perceptualRoughness_71: f32;
     var occlusion_39: f32;
     var n_77: vec3<f32>;
@@ -5187,8 +5449,8 @@ fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_40: vec3<f3
     var dfg_40: vec2<f32>;
 
     diffuseColor_51 = diffuseColor_50;
-    coatF0_41 = coatF0_40;
-    coatF90_15 = coatF90_14;
+    coatF0_45 = coatF0_44;
+    coatF90_17 = coatF90_16;
     perceptualRoughness_71 = perceptualRoughness_70;
     occlusion_39 = occlusion_38;
     n_77 = n_76;
@@ -5205,8 +5467,8 @@ fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_40: vec3<f3
     let _e29 = pbr_env_brdf(max(dot(_e23, _e24), 0.0001f), _e28);
     dfg_40 = _e29;
     let _e31 = diffuseColor_51;
-    let _e32 = coatF0_41;
-    let _e33 = coatF90_15;
+    let _e32 = coatF0_45;
+    let _e33 = coatF90_17;
     let _e34 = roughness_10;
     let _e35 = occlusion_39;
     let _e36 = n_77;
@@ -5355,7 +5617,7 @@ fn pbr_tonemap_aces_narkowicz(x_28: vec3<f32>) -> vec3<f32> {
 fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
     var color_11: vec3<f32>;
     var x_30: f32;
-    var local_34: f32;
+    var local_33: f32;
     var offset: f32;
     var peak: f32;
     var d_3: f32 = 0.24f;
@@ -5374,11 +5636,11 @@ fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
         let _e13 = x_30;
         let _e14 = x_30;
         let _e15 = x_30;
-        local_34 = (_e13 - ((_e14 * _e15) / 0.16f));
+        local_33 = (_e13 - ((_e14 * _e15) / 0.16f));
     } else {
-        local_34 = 0.04f;
+        local_33 = 0.04f;
     }
-    let _e24 = local_34;
+    let _e24 = local_33;
     offset = _e24;
     let _e26 = color_11;
     let _e27 = offset;

@@ -8,6 +8,13 @@
 //           vec3 pbr_iridescent_f0_f90(vec3 f0, float f90, float NdotV, pbr_Iridescence film)
 //                (an explicit F90: KHR_materials_specular's specularFactor)
 //           vec3 pbr_iridescent_diffuse_color(vec3 diffuseColor, vec3 coatF0, vec3 filmCoatF0)
+//           struct pbr_IridescentF0
+//           pbr_IridescentF0 pbr_iridescent_f0_with_coat(vec3 f0, vec3 coatF0, float NdotV,
+//                                                        pbr_Iridescence film)
+//           pbr_IridescentF0 pbr_iridescent_f0_f90_with_coat(vec3 f0, float f90, vec3 coatF0,
+//                                                            float coatF90, float NdotV,
+//                                                            pbr_Iridescence film)
+//                (the film over the base's F0 and over its coat's, the film evaluated once)
 // Include:  "pbr/surface/lighting_iridescence.hlsl" (path relative to hlsl_ports/)
 // Config macros read: none.
 //
@@ -54,6 +61,13 @@
 // iridescence = 0 returns f0 exactly (mix with weight 0); thickness 0 is pbr_F_Schlick of the
 // base (pbr_F_Iridescence's rule), so F0_film = F0 up to the inversion's float32 rounding.
 // Python twin: harness/pbrlab/maths/reference/surface.py iridescent_f0.
+// A base and the coat over its diffuse see the same film at the same view: the _with_coat forms
+// return both F0' (each bit for bit pbr_iridescent_f0[_f90] of its F0) from one pbr_thin_film
+// (pbr/brdf/f_iridescence.hlsl): the coat's Airy sum, then the base's, then both selected and
+// folded, so the film's shared terms die once both sums are formed. Register demand of the
+// iridescence class's program (benchmarks/whole_program_cost.py, RDNA3 before ACO's
+// scheduler): two pbr_iridescent_f0 calls 50 (60 VGPRs allocated), each base finished in
+// turn 49 (60), this order 48 (48).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_SURFACE_LIGHTING_IRIDESCENCE_HLSL
 #define PBR_SURFACE_LIGHTING_IRIDESCENCE_HLSL
@@ -86,11 +100,43 @@ float3 pbr_iridescent_f0(float3 f0, float NdotV, pbr_Iridescence film) {
     return pbr_iridescence_mix(f0, pbr_f0_from_schlick(filmF, NdotV), film.factor);
 }
 
+struct pbr_IridescentF0 {
+    float3 f0;      // the base's F0' (pbr_iridescent_f0[_f90] of its F0)
+    float3 coatF0;  // the coat's F0' over the diffuse (the same of the coat's F0)
+};
+
+pbr_IridescentF0 pbr_iridescent_f0_with_coat(float3 f0, float3 coatF0, float NdotV, pbr_Iridescence film) {
+    pbr_ThinFilm thin = pbr_thin_film(1.0, film.ior, NdotV, film.thicknessNm);
+    pbr_IridescentF0 r;
+    float3 coatI = pbr_iridescence_airy(thin, coatF0);
+    float3 I = pbr_iridescence_airy(thin, f0);
+    float3 F = pbr_iridescence_select(thin, f0, I);
+    float3 coatF = pbr_iridescence_select(thin, coatF0, coatI);
+    r.coatF0 = pbr_iridescence_mix(coatF0, pbr_f0_from_schlick(coatF, NdotV), film.factor);
+    r.f0 = pbr_iridescence_mix(f0, pbr_f0_from_schlick(F, NdotV), film.factor);
+    return r;
+}
+
 // With an explicit F90 (f90 >= every channel of f0): the film over the unit-strength F0
 // c = f0 / f90, scaled back by f90 (see the header). f90 = 0 (then f0 = 0) returns 0.
 float3 pbr_iridescent_f0_f90(float3 f0, float f90, float NdotV, pbr_Iridescence film) {
     float3 unitF0 = pbr_saturate(f0 / max(f90, PBR_FLT_MIN));
     return f90 * pbr_iridescent_f0(unitF0, NdotV, film);
+}
+
+pbr_IridescentF0 pbr_iridescent_f0_f90_with_coat(float3 f0, float f90, float3 coatF0, float coatF90, float NdotV,
+                                                 pbr_Iridescence film) {
+    pbr_ThinFilm thin = pbr_thin_film(1.0, film.ior, NdotV, film.thicknessNm);
+    float3 unitCoatF0 = pbr_saturate(coatF0 / max(coatF90, PBR_FLT_MIN));
+    float3 unitF0 = pbr_saturate(f0 / max(f90, PBR_FLT_MIN));
+    float3 coatI = pbr_iridescence_airy(thin, unitCoatF0);
+    float3 I = pbr_iridescence_airy(thin, unitF0);
+    float3 F = pbr_iridescence_select(thin, unitF0, I);
+    float3 coatF = pbr_iridescence_select(thin, unitCoatF0, coatI);
+    pbr_IridescentF0 r;
+    r.coatF0 = coatF90 * pbr_iridescence_mix(unitCoatF0, pbr_f0_from_schlick(coatF, NdotV), film.factor);
+    r.f0 = f90 * pbr_iridescence_mix(unitF0, pbr_f0_from_schlick(F, NdotV), film.factor);
+    return r;
 }
 
 // The diffuse colour whose albedo under the filmed coat (filmCoatF0 = pbr_iridescent_f0 of

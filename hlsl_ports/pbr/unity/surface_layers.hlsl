@@ -245,14 +245,13 @@ float4 pbr_unity_lighting_layers_base(float3 diffColor, float3 specColor, float3
     film.thicknessNm = layers.IridescenceThickness;
     float NdotV = max(dot(n, viewDir), PBR_MIN_NDOTV);
 #if PBR_LAYERS_SPECULAR_F90 != 0
-    specColor = pbr_iridescent_f0_f90(specColor, f90, NdotV, film);
-    float3 filmCoatF0 = pbr_iridescent_f0_f90(coatF0, coatF90, NdotV, film);
+    pbr_IridescentF0 filmF0 = pbr_iridescent_f0_f90_with_coat(specColor, f90, coatF0, coatF90, NdotV, film);
 #else
-    specColor = pbr_iridescent_f0(specColor, NdotV, film);
-    float3 filmCoatF0 = pbr_iridescent_f0(coatF0, NdotV, film);
+    pbr_IridescentF0 filmF0 = pbr_iridescent_f0_with_coat(specColor, coatF0, NdotV, film);
 #endif
-    diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmCoatF0);
-    coatF0 = filmCoatF0;
+    specColor = filmF0.f0;
+    diffColor = pbr_iridescent_diffuse_color(diffColor, coatF0, filmF0.coatF0);
+    coatF0 = filmF0.coatF0;
 #endif
 #if PBR_LAYERS_TRANSMISSION != 0
     float3 transmissionDiffColor = diffColor;  // the whole diffuse colour: the transmission's weight

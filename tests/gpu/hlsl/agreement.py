@@ -52,6 +52,8 @@ STRUCT_BUILDERS["SurfaceOutputStandardLayers"] = ("test_surface_layers", (
     ("float", "iridescenceMask"), ("float", "iridescenceIor"), ("float", "iridescenceThickness")))
 STRUCT_BUILDERS["pbr_Iridescence"] = ("test_iridescence", (("float", "factor"), ("float", "ior"),
                                                           ("float", "thicknessNm")))
+STRUCT_BUILDERS["pbr_ThinFilm"] = ("test_thin_film", (("float", "outsideIor"), ("float", "filmIor"),
+                                                     ("float", "cosTheta1"), ("float", "thicknessNm")))
 STRUCT_BUILDERS["pbr_Transmission"] = ("test_transmission", (("float", "factor"), ("float", "thickness"),
                                                             ("vec3", "attenuationColor"),
                                                             ("float", "attenuationDistance"), ("float", "volumeIor")))
@@ -105,6 +107,13 @@ SPECIAL = {
     "pbr_prepare_transmission_dfg": [(f"test_prepare_transmission_dfg_{part}",
                                       STRUCT_BUILDERS["pbr_PreparedTransmission"][1])
                                      for part in ("surface", "rho", "weight")],
+    # the film's base-independent terms and both films at once (issue 35): their fields, summed
+    "pbr_thin_film": [("test_thin_film_fields", STRUCT_BUILDERS["pbr_ThinFilm"][1])],
+    "pbr_iridescent_f0_with_coat": [("test_iridescent_f0_with_coat", (
+        ("vec3", "f0"), ("vec3", "coatF0"), ("float", "NdotV"), ("pbr_Iridescence", "film")))],
+    "pbr_iridescent_f0_f90_with_coat": [("test_iridescent_f0_f90_with_coat", (
+        ("vec3", "f0"), ("float", "f90"), ("vec3", "coatF0"), ("float", "coatF90"), ("float", "NdotV"),
+        ("pbr_Iridescence", "film")))],
     "pbr_sh9_irradiance": [("test_sh9_irradiance", (("vec3", "a"), ("vec3", "b"), ("vec3", "n")))],
     "pbr_brdf_standard_terms": [("test_pbr_brdf_standard_terms", (("vec3", "n"), ("vec3", "v"), ("vec3", "l"),
                                                                   ("float", "perceptualRoughness")))],

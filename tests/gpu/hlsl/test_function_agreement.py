@@ -61,7 +61,13 @@ for _name in ("pbr_lighting_standard", "pbr_lighting_standard_dfg", "pbr_unity_l
 # The LayersBaseTransmission pair is the same film and lobe through the same body (the
 # wrapper's layers carry no transmission; pbr_lighting_transmission itself agrees within
 # 2 ulp): measured worst 7 ulp there too.
-for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0", "pbr_iridescent_f0_f90"):
+# The film split into its base-independent terms and each base's (issue 35: pbr_thin_film, whose
+# S_xyz and S2 carry the phase; the Airy sums and the F over them; both films at once) carries
+# the same phase: the same bound.
+for _name in ("pbr_iridescence_sensitivity", "pbr_F_Iridescence", "pbr_iridescent_f0", "pbr_iridescent_f0_f90",
+              "pbr_iridescence_sensitivity_xyz", "pbr_thin_film", "pbr_iridescence_airy",
+              "pbr_iridescence_airy_channel", "pbr_F_Iridescence_thin_film", "pbr_iridescent_f0_with_coat",
+              "pbr_iridescent_f0_f90_with_coat"):
     STATED_BOUNDS[_name] = ("abs+rel", (5e-7, 1e-6), "fma contraction of the interference phase (see above)")
 # The LayersBase lightings carry that phase error times the light (radiance up to e^7 here), so
 # one sample is not their worst: on main's library (before the explicit F90), each function

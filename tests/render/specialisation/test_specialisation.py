@@ -346,7 +346,7 @@ ANISOTROPY_TOKENS = ["u_anisotropy_strength", "u_anisotropy_rotation", "pbrlab_s
 
 # The thin film's uniforms and call sites: only where a material's base has a film.
 IRIDESCENCE_TOKENS = ["u_iridescence", "u_iridescence_ior", "u_iridescence_thickness",
-                      "pbrlab_surf_iridescence(IN,layers)", "specColor=pbr_iridescent_f0(specColor"]
+                      "pbrlab_surf_iridescence(IN,layers)", "filmF0=pbr_iridescent_f0_with_coat(specColor"]
 # The transmission's uniforms and call sites, and the scene's transmission copy it reads
 # (templates/transmission_scene.inc): only where a material transmits.
 TRANSMISSION_TOKENS = ["u_transmission", "u_attenuation_color", "pbrlab_surf_transmission(IN,layers)",
@@ -400,7 +400,7 @@ def test_a_material_without_a_base_layer_has_none_of_its_code(tmp_path, layer, s
 LAYERED_SURFACES = ROOT / "tests" / "surface" / "layered_surfaces"
 LAYER_CALL_SITES = {"clearcoat": ",layers,o.Normal,v,gi,", "sheen": "u_sheen_lut",
                     "anisotropy": "AnisotropicReflectionNormal(o.Normal",
-                    "iridescence": "specColor=pbr_iridescent_f0(specColor",
+                    "iridescence": "filmF0=pbr_iridescent_f0_with_coat(specColor",
                     "transmission": "TransmittedDirection(o.Normal"}
 
 

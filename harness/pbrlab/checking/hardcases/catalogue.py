@@ -310,10 +310,37 @@ TERMS: tuple[Function, ...] = (
     # S of the film's optical path: |S| <= (row sums of the XYZ -> Rec. 709 matrix 5.28) · 1.0011
     _f("pbr_iridescence_sensitivity", "opd:thickness shift:phase3", Bound("|S| <= 5.3", -5.3, 5.3)),
     _f("pbr_iridescence_mix", "F:unit3 Fi:unit3 t:unit", F),
+    # the film split into its base-independent terms (pbr_thin_film) and each base's (issue 35):
+    # S_xyz's terms at zero shift are at most their value at OPD 0, 1.0011 (x: both lobes)
+    _f("pbr_iridescence_sensitivity_xyz", "opd:thickness", Bound("|S_xyz| <= 1.0012", -1.0012, 1.0012)),
+    # rows of |M| sum to at most 5.2761: |rgb| <= 5.2761 for |xyz| <= 1, plus three roundings
+    _f("pbr_iridescence_xyz_to_rec709", "xyz:unit3", Bound("|rgb| <= 5.2762", -5.2762, 5.2762)),
+    # S2, the struct's one vector that is not a copy of an input: |S| <= 5.3 as S's
+    _f("pbr_thin_film", "n1:eta n2:eta c:cosine d:thickness", Bound("|S2| <= 5.3", -5.3, 5.3),
+       "pbr_thin_film(n1, n2, c, d).S2"),
+    # one channel's Airy sum with S1, S2 in [0, 1]: 0 <= R12 + Rs <= 1 (Rs <= T121), |C_m| <= 1
+    # (|Rs - T121| <= T121, r123 <= 1), so -4 <= I <= 5 (plus a few roundings: 1e-5)
+    _f("pbr_iridescence_airy_channel", "n1:eta n2:eta c:cosine d:thickness eta3:eta s1:unit s2:unit",
+       Bound("-4 <= I <= 5 (+1e-5)", -4.00001, 5.00001), "pbr_iridescence_airy_channel(pbr_thin_film(n1, n2, c, d), "
+       "eta3, s1, s2)"),
+    # the unsaturated sum with the film's own S (|S| <= 5.3): -21.2 <= I <= 22.2 (+1e-4)
+    _f("pbr_iridescence_airy", "n1:eta n2:eta c:cosine d:thickness f0:unit3",
+       Bound("-21.2 <= I <= 22.2 (+1e-4)", -21.2001, 22.2001), "pbr_iridescence_airy(pbr_thin_film(n1, n2, c, d), f0)"),
+    _f("pbr_iridescence_select", "n1:eta n2:eta c:cosine d:thickness f0:unit3 I:signed3", F,
+       "pbr_iridescence_select(pbr_thin_film(n1, n2, c, d), f0, I)"),
+    _f("pbr_F_Iridescence_thin_film", "n1:eta n2:eta c:cosine d:thickness f0:unit3", F,
+       "pbr_F_Iridescence_thin_film(pbr_thin_film(n1, n2, c, d), f0)"),
     # the film with an explicit F90 (surface/lighting_iridescence.glsl), under f90 >= max(f0):
     # 0 <= F0' <= F90 <= 1
     _f("pbr_iridescent_f0_f90", "f0:unit3 f90:unit c:cosine t:unit n2:eta d:thickness", _unit("F0'"),
        "pbr_iridescent_f0_f90(min(f0, vec3(f90)), f90, c, pbr_Iridescence(t, n2, d))"),
+    # both films at once (surface/lighting_iridescence.glsl): the base's F0' and the coat's, each
+    # a pbr_iridescent_f0[_f90]: 0 <= F0' <= F90 <= 1
+    _f("pbr_iridescent_f0_with_coat", "f0:unit3 cf0:unit3 c:cosine t:unit n2:eta d:thickness", _unit("F0'"),
+       "pbr_iridescent_f0_with_coat(f0, cf0, c, pbr_Iridescence(t, n2, d)).f0"),
+    _f("pbr_iridescent_f0_f90_with_coat", "f0:unit3 f90:unit cf0:unit3 cf90:unit c:cosine t:unit n2:eta d:thickness",
+       _unit("F0'"), "pbr_iridescent_f0_f90_with_coat(min(f0, vec3(f90)), f90, min(cf0, vec3(cf90)), cf90, c, "
+       "pbr_Iridescence(t, n2, d)).coatF0"),
     _f("pbr_iridescence_thickness", "lo:thickness hi:thickness g:unit",
        Bound("|thickness| <= 1e30 (+1 %)", -1.01e30, 1.01e30)),
     # tonemap/
@@ -661,6 +688,22 @@ DECIDED = {
          {"v": (-0.6, 0.0, 0.8), "l": (0.6, 0.0, 0.8), "f0": (0.1, 0.1, 0.1), "f90": 1.0},
          "pbr_brdf_anisotropic_specular(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(l), "
          "vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), f0, roughness, strength)")],
+    "pbr_iridescent_f0_with_coat": [
+        ("the plain film", "one pbr_thin_film for two F0s: the base's F0' is pbr_iridescent_f0 of it, bit for bit",
+         {"c": 0.3, "d": 700.0, "t": 1.0}, "pbr_iridescent_f0(f0, c, pbr_Iridescence(t, n2, d))"),
+        ("thickness 0", "no film for either base: the film's select at d = 0 with the shared terms",
+         {"d": 0.0, "t": 1.0}, "pbr_iridescent_f0(f0, c, pbr_Iridescence(t, n2, d))")],
+    "pbr_iridescent_f0_f90_with_coat": [
+        ("the coat's film", "the coat's F0' is pbr_iridescent_f0_f90 of the coat's F0 and F90, bit for bit",
+         {"c": 0.2, "d": 300.0, "cf90": 0.5, "t": 1.0},
+         "pbr_iridescent_f0_f90(min(cf0, vec3(cf90)), cf90, c, pbr_Iridescence(t, n2, d))"),
+        ("coat F90 0", "specularFactor 0 on the coat: F0 0 and the film's fold 0; decided 0",
+         {"cf0": (0.3, 0.3, 0.3), "cf90": 0.0}, "vec3(0.0)")],
+    "pbr_F_Iridescence_thin_film": [
+        ("thickness 0", "the split's select: no film, the base's Schlick Fresnel (as pbr_F_Iridescence)", {"d": 0.0},
+         "pbr_F_Schlick(f0, c)"),
+        ("TIR in the film", "film IOR below the outside IOR past the critical angle: F = 1 from the shared cos²θ2",
+         {"n1": 1.5, "n2": 1.0, "c": 0.2}, 1.0)],
     "pbr_iridescent_f0_f90": [
         ("F90 0", "specularFactor 0 (then F0 0): no reflection, the film's included; decided 0 (F0 / max(F90, "
          "FLT_MIN) = 0)", {"f0": (0.3, 0.3, 0.3), "f90": 0.0}, "vec3(0.0)"),

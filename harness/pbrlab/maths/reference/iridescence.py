@@ -113,6 +113,57 @@ def F_Iridescence(outside_ior, film_ior, cos_theta1, thickness_nm, base_f0, *, m
     return np.where(no_film[..., None], F_Schlick(base_f0, c1[..., None]), out)
 
 
+def sensitivity_xyz(opd_nm):
+    """pbr_iridescence_sensitivity_xyz: the normalised XYZ terms at zero phase shift
+    (iridescence_sensitivity before its matrix, shift 0); [..., 3]."""
+    phase = 2.0 * np.pi * 1e-9 * np.clip(_f(opd_nm), 0.0, MAX_OPD_NM)[..., None]
+    val, pos, var = _f(XYZ_VAL), _f(XYZ_POS), _f(XYZ_VAR)
+    xyz = val * np.sqrt(2.0 * np.pi * var) * np.cos(pos * phase) * np.exp(-phase ** 2 * var)
+    x2 = X2_VAL * np.sqrt(2.0 * np.pi * X2_VAR) * np.cos(X2_POS * phase[..., 0]) * np.exp(-X2_VAR * phase[..., 0] ** 2)
+    return np.concatenate([(xyz[..., 0] + x2)[..., None], xyz[..., 1:]], axis=-1) / XYZ_NORM
+
+
+def xyz_to_rec709(xyz):
+    """pbr_iridescence_xyz_to_rec709: the IEC 61966-2-1 matrix; [..., 3]."""
+    return _f(xyz) @ _f(XYZ_TO_REC709).T
+
+
+def thin_film(outside_ior, film_ior, cos_theta1, thickness_nm):
+    """pbr_thin_film: the film's terms that do not read the base, as a dict of arrays (the
+    struct's fields): n1, n2, c1, cos2_sq, c2, R12, T121, thickness, xyz1 = S_xyz(OPD) [..., 3],
+    S2 = S(2 OPD, 2φ) [..., 3] (cos 2φ = 1 for φ in {0, π, 2π})."""
+    n1, n2_film, c1, d = np.broadcast_arrays(*map(_f, (outside_ior, film_ior, cos_theta1, thickness_nm)))
+    c1 = np.clip(c1, 0.0, 1.0)
+    n2 = n1 + (n2_film - n1) * _smoothstep(0.0, FILM_FADE_NM, d)
+    cos2_sq = 1.0 - (n1 / n2) ** 2 * (1.0 - c1 ** 2)
+    c2 = np.sqrt(np.maximum(cos2_sq, 0.0))
+    R12 = F_Schlick(((n2 - n1) / (n2 + n1)) ** 2, c1)
+    opd = 2.0 * n2 * d * c2
+    return {"n1": n1, "n2": n2, "c1": c1, "cos2_sq": cos2_sq, "c2": c2, "R12": R12, "T121": 1.0 - R12,
+            "thickness": d, "xyz1": sensitivity_xyz(opd), "S2": xyz_to_rec709(sensitivity_xyz(2.0 * opd))}
+
+
+def F_Iridescence_thin_film(film, base_f0):
+    """pbr_F_Iridescence_thin_film: F_Iridescence of base_f0 [..., 3] under ``thin_film``'s
+    terms, the phase shift φ = φ21 + φ23 applied as the sign cos φ = ±1 of each channel's
+    XYZ terms (cos(x + φ) = cos φ cos x for φ in {0, π, 2π}). The same method as
+    F_Iridescence: equal to it in float64 to rounding (tests/library/test_iridescence.py)."""
+    n1, n2, c2, R12, T121 = (film[k][..., None] for k in ("n1", "n2", "c2", "R12", "T121"))
+    base_f0 = _f(base_f0)
+    eta3 = ior_from_f0(np.clip(base_f0, 0.0, MAX_BASE_F0))
+    cos_phi = np.where((eta3 < n2) != ~(n2 < n1), -1.0, 1.0)
+    S1 = xyz_to_rec709(cos_phi * film["xyz1"])
+    R23 = F_Schlick(((eta3 - n2) / (eta3 + n2)) ** 2, c2)
+    R123 = np.clip(R12 * R23, MIN_R123, MAX_R123)
+    r123 = np.sqrt(R123)
+    Rs = T121 ** 2 * R23 / (1.0 - R123)
+    C1 = (Rs - T121) * r123
+    I = R12 + Rs + C1 * 2.0 * S1 + C1 * r123 * 2.0 * film["S2"]
+    out = np.where((film["cos2_sq"] < 0.0)[..., None], 1.0, np.clip(I, 0.0, 1.0))
+    no_film = ~(film["thickness"] > 0.0)
+    return np.where(no_film[..., None], F_Schlick(base_f0, film["c1"][..., None]), out)
+
+
 def iridescence_mix(F, F_iridescence, factor):
     t = np.clip(_f(factor), 0.0, 1.0)[..., None]
     return _f(F) + (_f(F_iridescence) - _f(F)) * t

@@ -164,3 +164,16 @@ def iridescent_f0_f90(f0, f90, NdotV, factor, film_ior, thickness_nm):
     f0, f90 = _f(f0), _f(f90)
     c = np.clip(f0 / np.where(f90 > 0.0, f90, 1.0)[..., None], 0.0, 1.0)
     return f90[..., None] * surface.iridescent_f0(c, NdotV, factor, film_ior, thickness_nm)
+
+
+def iridescent_f0_f90_with_coat(f0, f90, coat_f0, coat_f90, NdotV, factor, film_ior, thickness_nm):
+    """pbr_iridescent_f0_f90_with_coat: (iridescent_f0_f90 of f0 with f90, of coat_f0 with
+    coat_f90), one film for both (reference/surface.py iridescent_f0_with_coat)."""
+    from . import surface
+
+    def unit(x, x90):
+        x, x90 = _f(x), _f(x90)
+        return np.clip(x / np.where(x90 > 0.0, x90, 1.0)[..., None], 0.0, 1.0)
+    base, coat = surface.iridescent_f0_with_coat(unit(f0, f90), unit(coat_f0, coat_f90), NdotV, factor, film_ior,
+                                                 thickness_nm)
+    return _f(f90)[..., None] * base, _f(coat_f90)[..., None] * coat

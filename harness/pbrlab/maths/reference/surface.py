@@ -262,6 +262,19 @@ def iridescent_f0(f0, NdotV, factor, film_ior, thickness_nm):
     return _f(f0) * (1.0 - t) + f0_from_schlick(film, NdotV) * t
 
 
+def iridescent_f0_with_coat(f0, coat_f0, NdotV, factor, film_ior, thickness_nm):
+    """pbr_iridescent_f0_with_coat: (iridescent_f0 of f0, iridescent_f0 of coat_f0), the film's
+    base-independent terms shared (reference/iridescence.py thin_film)."""
+    from . import iridescence
+    film = iridescence.thin_film(1.0, film_ior, NdotV, thickness_nm)
+    t = np.clip(_f(factor), 0.0, 1.0)[..., None]
+
+    def fold(base):
+        filmed = iridescence.F_Iridescence_thin_film(film, base)
+        return _f(base) * (1.0 - t) + f0_from_schlick(filmed, NdotV) * t
+    return fold(f0), fold(coat_f0)
+
+
 def iridescent_diffuse_color(diffuse_color, coat_f0, film_coat_f0):
     """pbr_iridescent_diffuse_color: rho (1 - max3(film_coat_f0)) (floored as the coupling's),
     rho = diffuse_albedo_from_diffuse_color(diffuse_color, coat_f0)."""

@@ -4,8 +4,9 @@
 // Provides: test_gi, test_surface, test_surface_specular, test_light, test_indirect,
 //           test_surface_legacy, test_gi_input, test_glossy_environment, test_clearcoat,
 //           test_surface_layers, test_prepared_surface, test_anisotropic_frame_of,
-//           test_prepared_transmission (struct builders),
-//           test_prepare_surface[_dfg], test_anisotropic_frame, test_prepare_transmission_dfg_*
+//           test_prepared_transmission, test_thin_film (struct builders),
+//           test_prepare_surface[_dfg], test_anisotropic_frame, test_prepare_transmission_dfg_*,
+//           test_thin_film_fields, test_iridescent_f0[_f90]_with_coat
 //           (struct results, their fields summed),
 //           test_sh9_irradiance,
 //           test_UnityGlossyEnvironmentSetup, test_UnityGlobalIllumination[_gloss][_indirect],
@@ -99,6 +100,27 @@ pbr_Iridescence test_iridescence(float factor, float ior, float thicknessNm) {
     film.ior = ior;
     film.thicknessNm = thicknessNm;
     return film;
+}
+
+pbr_ThinFilm test_thin_film(float outsideIor, float filmIor, float cosTheta1, float thicknessNm) {
+    return pbr_thin_film(outsideIor, filmIor, cosTheta1, thicknessNm);
+}
+
+vec3 test_thin_film_fields(float outsideIor, float filmIor, float cosTheta1, float thicknessNm) {
+    pbr_ThinFilm f = pbr_thin_film(outsideIor, filmIor, cosTheta1, thicknessNm);
+    return vec3(f.n1, f.n2, f.c1) + 2.0 * vec3(f.cos2Sq, f.c2, f.R12) + 3.0 * vec3(f.T121, f.thicknessNm, 0.0)
+         + 5.0 * f.xyz1 + 7.0 * f.S2;
+}
+
+vec3 test_iridescent_f0_with_coat(vec3 f0, vec3 coatF0, float NdotV, pbr_Iridescence film) {
+    pbr_IridescentF0 r = pbr_iridescent_f0_with_coat(f0, coatF0, NdotV, film);
+    return r.f0 + 2.0 * r.coatF0;
+}
+
+vec3 test_iridescent_f0_f90_with_coat(vec3 f0, float f90, vec3 coatF0, float coatF90, float NdotV,
+                                      pbr_Iridescence film) {
+    pbr_IridescentF0 r = pbr_iridescent_f0_f90_with_coat(f0, f90, coatF0, coatF90, NdotV, film);
+    return r.f0 + 2.0 * r.coatF0;
 }
 
 pbr_Anisotropy test_anisotropy(float strength, vec3 direction) {
