@@ -482,8 +482,12 @@ def _edge_cases(function: Function) -> list[Case]:
 
 # The shading model's geometric hard cases: (name, why, n, v, l, exact value or None).
 # "exact" GLSL expressions restate the library's decided value with the same operations.
-_DIFFUSE_ONLY = ("diffuseColor * pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), dot(n, l), "
-                 "0.0, pbr_clamp_perceptual_roughness(roughness))")
+_DIFFUSE_FD = ("pbr_diffuse_Fd(clamp(dot(n, v), PBR_MIN_NDOTV, 1.0), dot(n, l), "
+               "0.0, pbr_clamp_perceptual_roughness(roughness))")
+_DIFFUSE_ONLY = f"diffuseColor * {_DIFFUSE_FD}"
+# pbr_shade_punctual's light term is π BRDF times NdotL, the 1/π and the light unit's π cancelled
+# in the source (pbr/lighting/punctual.glsl): the decided diffuse-only value in that order
+_DIFFUSE_ONLY_LIT = (f"radiance * (diffuseColor * (PBR_PI * {_DIFFUSE_FD})) * clamp(dot(n, l), 0.0, 1.0)")
 _GEOMETRY_CASES = (
     ("V = -L", "l and v opposite: no half vector exists (l + v = 0); decided: no specular, diffuse kept",
      UP, (-0.6, 0.0, -0.8), (0.6, 0.0, 0.8), "diffuse"),
@@ -586,8 +590,6 @@ def _shading_cases(function: Function) -> list[Case]:
     cases = []
     base = typical_inputs(function)
     base.update(n=UP, v=(-0.6, 0.0, 0.8), l=(0.6, 0.0, 0.8), roughness=0.0)
-    wrap = ((lambda e: f"radiance * ({e}) * (PBR_LIGHT_UNIT_SCALE * clamp(dot(n, l), 0.0, 1.0))")
-            if "radiance" in function.expression else (lambda e: e))
     # The decided values live in pbr_brdf_standard before any variant's term is called:
     # checked exactly at each tier and diffuse variant, by bound for the other selectors.
     exact_here = function.variant.startswith(("quality=", "diffuse="))
@@ -601,7 +603,7 @@ def _shading_cases(function: Function) -> list[Case]:
         if exact == "follows":
             exact, near = None, (_follows(function, inputs) if exact_here else None)
         elif exact == "diffuse":
-            exact = wrap(_DIFFUSE_ONLY)
+            exact = _DIFFUSE_ONLY_LIT if "radiance" in function.expression else _DIFFUSE_ONLY
         elif exact == "safe_normalize_v":  # the far camera normalised by the library's guard
             exact, expression = None, function.expression.replace("(n, v,", "(n, pbr_safe_normalize(v),")
         cases.append(Case(function, name, why, inputs, exact, expression, near))
