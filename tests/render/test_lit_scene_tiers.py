@@ -53,25 +53,21 @@ def test_medium_tier_error_against_high_tier_is_measured(renders):
     assert srgb.max() <= 3
 
 
-def test_low_tier_error_against_high_tier_is_measured(renders):
+def test_low_tier_differs_from_high_by_its_environment_choices(renders):
     rel, srgb = _tier_error(renders, "low")
     # LOW is its own lobe (issue 25): V bounded without a square root (0.5 / n·(l + v)),
-    # Schlick's F (issue 35; issue 25's LOW had F = f0), the 0.089 roughness floor; it reads the
-    # same DFG table as HIGH for the coupling (its lobe reflects no more than HIGH's, so the
-    # furnace holds). Since issue 35's whole-pixel tier it also reads the environment along the
-    # mirror direction, without horizon occlusion, without multiple-scattering compensation and
-    # with the AO as its specular occlusion (pbr/shading/dispatch.glsl). Measured on this scene:
-    # relative to 0.01 + |high|, median 0.0158, p99 0.086, max 5.07; display mean 0.83 codes,
-    # max 103. With the lobe alone (before): median 0.0044, p99 0.029, max 5.0, mean 0.23 codes;
-    # with F = f0: median 0.0046, p99 0.033. The former LOW (Hammon's V and Schlick's F): median
-    # 0.0013, p99 0.0068, mean 0.067 codes. The lower limits sit above the lobe-only LOW's
-    # figures, so they fail if the environment choices are not in effect (the control); the
-    # upper ones keep LOW in this envelope (a tier is a choice the docs measure, not a bug).
-    # NOT derived: the upper limits are the measured figures with room (median 0.0158 < 3e-2,
-    # p99 0.086 < 0.15, mean 0.83 < 1.5 codes), moved with LOW's environment read in issue 35;
-    # no float64 reference draws this textured scene under its HDR sky, so LOW's accuracy is
-    # held by derived bounds elsewhere (tests/render/test_gpu_matches_cpu_reference.py at
-    # quality low, the furnace, reciprocity and grazing-Fresnel tests). Deriving these limits,
-    # or replacing them with a per-pixel bound and an asserted fraction, is open (issue 35).
-    assert 1e-2 < np.median(rel) < 3e-2 and np.quantile(rel, 0.99) < 0.15
-    assert 0.5 < srgb.mean() < 1.5
+    # Schlick's F (issue 35; issue 25's LOW had F = f0), the 0.089 roughness floor. Since issue
+    # 35's whole-pixel tier it also reads the environment along the mirror direction, without
+    # horizon occlusion, without multiple-scattering compensation and with the AO as its
+    # specular occlusion, and reads its own DFG table (pbr/shading/dispatch.glsl). Measured on
+    # this scene: relative to 0.01 + |high|, median 0.0158, p99 0.086, max 5.07; display mean
+    # 0.83 codes, max 103. With the lobe alone (before the environment choices): median 0.0044,
+    # p99 0.029, mean 0.23 codes. This test is the control that the environment choices are in
+    # effect: its lower limits sit above the lobe-only LOW's figures. It asserts no upper limit:
+    # how far LOW's mirror read of this HDR sky is from HIGH's dominant-direction read has no
+    # bound to derive (it is the sky's own variation), and the former upper limits were the
+    # measured figures with room (removed, session 39). LOW's accuracy is held by derived bounds
+    # where a float64 reference exists (tests/render/test_gpu_matches_cpu_reference.py at
+    # quality low under a constant sky, the white furnace, reciprocity and grazing Fresnel in
+    # tests/checking/hardcases) and its image here by the lit_scene_low golden.
+    assert np.median(rel) > 1e-2 and srgb.mean() > 0.5
