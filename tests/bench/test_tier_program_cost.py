@@ -57,3 +57,31 @@ def test_image_errors_of_the_tiers():
     errors = bench.image_errors("metallic torus")
     assert errors["high"][2] <= HIGH_RELATIVE_BOUND, errors["high"]
     assert errors["low"][0] > errors["high"][2], errors  # LOW's median beyond HIGH's worst
+
+
+# LOW's normal-map frame and DFG table axes forced back to HIGH's
+HIGH_FRAME_AND_TABLE = "#define PBR_NORMAL_MAP_FRAME 1\n#define PBR_DFG_LUT_LAYOUT 1\n"
+
+
+def test_the_class_costs_follow_the_tiers_and_lows_frame_and_table_save():
+    """On the whole-program bench's metallic-roughness class (normal-mapped): LOW < MEDIUM <
+    HIGH, and LOW's program with HIGH's frame and table costs more, and more again than with
+    only one of them set back (each choice saves on its own: no measured figure pinned)."""
+    if (why := gpu.unavailable_reason()) is not None:
+        pytest.fail(f"RADV null device unavailable (scripts/setup.sh installs it): {why}")
+    bench = _bench()
+    per = bench.figures(bench.CLASS, families=("rdna3",))
+    whole = {q: per[(q, "whole pixel")]["rdna3"][0] for q in bench.QUALITIES}
+    assert whole["low"] < whole["medium"] < whole["high"], whole
+    (program,) = gpu.scene_programs(bench._scene(bench.CLASS, "low"), "specialised", checking=False)
+    job = program.job("glsl")
+    marker = "#define PBR_QUALITY PBR_QUALITY_LOW\n"
+    assert marker in job.fragment
+    variants = {name: dataclasses.replace(job, fragment=job.fragment.replace(marker, marker + extra))
+                for name, extra in (("frame", "#define PBR_NORMAL_MAP_FRAME 1\n"),
+                                    ("table", "#define PBR_DFG_LUT_LAYOUT 1\n"),
+                                    ("both", HIGH_FRAME_AND_TABLE))}
+    compiled = gpu._compile(variants, ("rdna3",))["rdna3"]
+    count = {name: compiled[name]["Instructions"] for name in variants}
+    assert whole["low"] < count["frame"] < count["both"], (whole["low"], count)
+    assert whole["low"] < count["table"] < count["both"], (whole["low"], count)
