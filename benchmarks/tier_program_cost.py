@@ -28,6 +28,7 @@ nothing.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -48,9 +49,11 @@ PARTS = {"whole pixel": (), "without the light": (("#define PBRLAB_DIRECTIONAL_C
 CLASS = "metallic-roughness class"
 
 
+@functools.lru_cache(maxsize=1)
 def _class_scene():
     """The whole-program bench's metallic-roughness file (pbrlab.bench.peer_gltf), loaded as
-    pbrlab.bench.peer_programs loads it (sunrise HDR), at 64 x 64."""
+    pbrlab.bench.peer_programs loads it (sunrise HDR), at 64 x 64; written and loaded once per
+    process (each tier is a copy with its own quality)."""
     import tempfile
 
     from pbrlab.bench import peer_gltf
