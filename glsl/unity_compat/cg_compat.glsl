@@ -7,7 +7,8 @@
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
 //           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex2Dlod (uv.w is
-//           the LOD), tex2Dbias, tex2Dproj, texCUBE, texCUBElod, and the type names
+//           the LOD), tex2Dbias, tex2Dproj, tex2Dgrad (and tex2D's form with derivatives), texCUBE,
+//           texCUBElod, texCUBEbias, texCUBEgrad, pbr_unity_load (Texture2D.Load), asuint / asint / asfloat, rcp, mad, log10, and the type names
 //           samplerCUBE (= samplerCube); pbr_unity_pow (pow with HLSL's scalar promotion:
 //           port-unity renames pow to it), fmod(vecN, float).
 // Include:  "unity_compat/cg_compat.glsl" (path relative to glsl/), GLSL ONLY: HLSL has every
@@ -112,6 +113,57 @@ vec4 tex2Dbias(sampler2D s, vec4 uv) { return textureLod(s, uv.xy, 0.0); }  // n
 vec4 tex2Dbias(sampler2D s, vec4 uv) { return texture(s, uv.xy, uv.w); }
 #endif
 vec4 tex2Dproj(sampler2D s, vec4 uv) { return textureProj(s, uv); }
+vec4 tex2Dproj(sampler2D s, vec3 uv) { return textureProj(s, uv); }
 vec4 texCUBE(samplerCube s, vec3 dir) { return texture(s, dir); }
 vec4 texCUBElod(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, dir.w); }
+// Texture2D.Load(int3(x, y, mip)) as the GLSL port spells it (importers/unity/texture_methods.py).
+vec4 pbr_unity_load(sampler2D s, ivec3 p) { return texelFetch(s, p.xy, p.z); }
+// Explicit derivatives (Cg's tex2Dgrad, and tex2D's four-argument form: the same lookup).
+vec4 tex2Dgrad(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, uv, dx, dy); }
+vec4 tex2D(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, uv, dx, dy); }
+vec4 texCUBEgrad(samplerCube s, vec3 dir, vec3 dx, vec3 dy) { return textureGrad(s, dir, dx, dy); }
+#ifdef PBR_UNITY_VERTEX_STAGE
+vec4 texCUBEbias(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, 0.0); }  // no LOD to bias
+#else
+vec4 texCUBEbias(samplerCube s, vec4 dir) { return texture(s, dir.xyz, dir.w); }
+#endif
+
+// HLSL's bit casts (Microsoft's HLSL intrinsic reference): asuint / asint /
+// asfloat reinterpret the 32 bits; an integer to an integer keeps the bits (GLSL's uint(int)).
+uint asuint(float x) { return floatBitsToUint(x); }
+uvec2 asuint(vec2 x) { return floatBitsToUint(x); }
+uvec3 asuint(vec3 x) { return floatBitsToUint(x); }
+uvec4 asuint(vec4 x) { return floatBitsToUint(x); }
+uint asuint(int x) { return uint(x); }
+uint asuint(uint x) { return x; }
+int asint(float x) { return floatBitsToInt(x); }
+ivec2 asint(vec2 x) { return floatBitsToInt(x); }
+ivec3 asint(vec3 x) { return floatBitsToInt(x); }
+ivec4 asint(vec4 x) { return floatBitsToInt(x); }
+int asint(uint x) { return int(x); }
+int asint(int x) { return x; }
+float asfloat(uint x) { return uintBitsToFloat(x); }
+vec2 asfloat(uvec2 x) { return uintBitsToFloat(x); }
+vec3 asfloat(uvec3 x) { return uintBitsToFloat(x); }
+vec4 asfloat(uvec4 x) { return uintBitsToFloat(x); }
+float asfloat(int x) { return intBitsToFloat(x); }
+vec2 asfloat(ivec2 x) { return intBitsToFloat(x); }
+vec3 asfloat(ivec3 x) { return intBitsToFloat(x); }
+vec4 asfloat(ivec4 x) { return intBitsToFloat(x); }
+float asfloat(float x) { return x; }
+
+// HLSL's rcp, mad and log10 (GLSL has none of the three names).
+float rcp(float x) { return 1.0 / x; }
+vec2 rcp(vec2 x) { return 1.0 / x; }
+vec3 rcp(vec3 x) { return 1.0 / x; }
+vec4 rcp(vec4 x) { return 1.0 / x; }
+float mad(float a, float b, float c) { return a * b + c; }
+vec2 mad(vec2 a, vec2 b, vec2 c) { return a * b + c; }
+vec3 mad(vec3 a, vec3 b, vec3 c) { return a * b + c; }
+vec4 mad(vec4 a, vec4 b, vec4 c) { return a * b + c; }
+float log10(float x) { return log2(x) * 0.30102999566398120; }  // log10(2)
+vec2 log10(vec2 x) { return log2(x) * 0.30102999566398120; }
+vec3 log10(vec3 x) { return log2(x) * 0.30102999566398120; }
+vec4 log10(vec4 x) { return log2(x) * 0.30102999566398120; }
+vec4 atan2(vec4 y, vec4 x) { return atan(y, x); }
 #endif

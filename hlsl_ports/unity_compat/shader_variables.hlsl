@@ -8,7 +8,7 @@
 //
 // Provides: uniforms _Time (t/20, t, 2t, 3t), _SinTime (sin t/8, t/4, t/2, t), _CosTime,
 //           unity_DeltaTime, _WorldSpaceCameraPos, _ProjectionParams (1, near, far, 1/far),
-//           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject,
+//           _ScreenParams (w, h, 1 + 1/w, 1 + 1/h), unity_ObjectToWorld, unity_WorldToObject, unity_WorldTransformParams,
 //           unity_MatrixVP, unity_MatrixV, unity_MatrixInvV, glstate_matrix_projection,
 //           unity_CameraProjection, unity_CameraInvProjection, unity_WorldToCamera and
 //           unity_CameraToWorld (the camera transform's frame, +z forward), _ZBufferParams (GL depth,
@@ -37,7 +37,7 @@
 //           float4 ComputeScreenPos(float4 clipPos), float4 UnityPixelSnap(float4 clipPos),
 //           float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
-//           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL (read the vertex
+//           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL, TANGENT_SPACE_ROTATION (read the vertex
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
 //           instancing and stereo macros as no-ops (UNITY_INSTANCING_BUFFER_START/END,
 //           UNITY_DECLARE_TEX2D(_NOSAMPLER), UNITY_SAMPLE_TEX2D(_SAMPLER), UNITY_DECLARE_TEXCUBE,
@@ -84,6 +84,8 @@ uniform float4 _ProjectionParams;
 uniform float4 _ScreenParams;
 uniform float4x4 unity_ObjectToWorld;
 uniform float4x4 unity_WorldToObject;
+// w: -1 where the object's transform mirrors (a negative determinant), else 1; x, y, z 0
+uniform float4 unity_WorldTransformParams;
 uniform float4x4 unity_MatrixVP;
 uniform float4x4 unity_MatrixV;
 uniform float4x4 unity_MatrixInvV;
@@ -345,6 +347,8 @@ float LinearEyeDepth(float z) {
 #define COMPUTE_EYEDEPTH(o) o = -UnityObjectToViewPos(v.vertex).z
 #define COMPUTE_DEPTH_01 (-(UnityObjectToViewPos(v.vertex).z * _ProjectionParams.w))
 #define COMPUTE_VIEW_NORMAL normalize(mul((float3x3)UNITY_MATRIX_IT_MV, v.normal))
+// UnityCG.cginc's object-space tangent frame of the vertex input `v` (rows tangent, binormal, normal).
+#define TANGENT_SPACE_ROTATION float3 binormal = cross(normalize(v.normal), normalize(v.tangent.xyz)) * v.tangent.w; float3x3 rotation = float3x3(v.tangent.xyz, binormal, v.normal)
 
 // UnityCG.cginc's minimal image-effect vertex stage: position to clip space, UV passed on.
 struct appdata_img {

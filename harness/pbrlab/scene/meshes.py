@@ -329,7 +329,9 @@ def vertex_array(ctx, program, obj, instances: np.ndarray | None = None):
         else:
             fmt.append(f[0] + "x4")  # skip the attribute's bytes
     fmt_string = " ".join(fmt)
-    content = [(vbo, fmt_string, *layout)]
+    # a vertex stage that reads no attribute (Unity's procedural passes: SV_VertexID alone)
+    # still draws every index of the mesh; moderngl refuses a buffer that binds nothing
+    content = [(vbo, fmt_string, *layout)] if layout else []
     buffers = [vbo, ibo]
     if instances is not None:
         buffers.append(ctx.buffer(np.ascontiguousarray(instances, np.float32).tobytes()))

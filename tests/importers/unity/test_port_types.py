@@ -99,12 +99,19 @@ def test_unknown_types_are_left_alone():
 
 
 def test_a_declaration_the_parser_cannot_read_is_kept_and_reported():
-    # a nested initialiser list is beyond the parser (a switch statement was, until it read them)
-    cg = "float4 f(float4 x) { float2 a[2] = { {1, 2}, {3, 4} }; return x; }\nfloat g() { float3 c = 1; return c; }\n"
+    # an HLSL class is beyond the parser (a nested initialiser list was, until it read them)
+    cg = "class C { float f() { return 1; } };\nfloat g() { float3 c = 1; return c; }\n"
     result = cg_types.convert_detail(cg)
     assert result.skipped == [1]
-    assert result.text == "float4 f(float4 x) { float2 a[2] = { {1, 2}, {3, 4} }; return x; }\n" \
+    assert result.text == "class C { float f() { return 1; } };\n" \
         "float g() { float3 c = float3(1); return c.x; }\n"
+
+
+def test_a_nested_initialiser_of_an_array_of_vectors_is_spelled_in_constructors():
+    cg = "float4 f(float4 x) { float2 a[2] = { {1, 2}, {3, 4} }; return x; }\n"
+    result = cg_types.convert_detail(cg)
+    assert result.skipped == []
+    assert result.text == "float4 f(float4 x) { float2 a[2] = float2[2]( float2(1, 2), float2(3, 4) ); return x; }\n"
 
 
 def test_library_signatures_come_from_the_glsl_includes():

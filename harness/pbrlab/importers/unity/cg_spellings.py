@@ -16,19 +16,35 @@ program (offsets and lines kept):
 - HLSLSupport.cginc's flow-control hints (``UNITY_UNROLL for (...)``, ``UNITY_BRANCH if``,
   ``UNITY_UNROLLX(4)``, ...): attributes on Direct3D, nothing on Unity's GLSL targets; blanked
   (a hint, never a change of what is computed), so the Cg type pass reads the statement after
-  it (it did not: the literals of such a function kept their ``h`` suffixes in GLSL).
+  it (it did not: the literals of such a function kept their ``h`` suffixes in GLSL);
+- Unity 5.3's names of the object matrices, ``_Object2World`` and ``_World2Object``: Unity 5.4
+  renamed them ``unity_ObjectToWorld`` / ``unity_WorldToObject`` and its shader upgrader rewrites
+  a program that still spells them so (Unity 5.4 release notes, "Shaders: ... automatically
+  upgraded"); the same rewrite here;
+- HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
+  ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
+- a function the program defines under the name of one of UnityCG.cginc's (or another include's
+  pbrlab always compiles: ``ComputeScreenPos`` written out in a program that includes nothing):
+  Unity compiles only the includes a program names, so there it is the program's own function;
+  pbrlab's program always holds its Unity layer, so the program's function and its calls are
+  renamed ``pbrlab_program_<name>`` (a program that includes UnityCG.cginc and defines the same
+  overload again is refused by Unity's compiler too: a redefinition).
 
     text = respelled(cg_text)
 """
 
 from __future__ import annotations
 
+import functools
 import re
 
 from .source_text import matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
 _SWITCH = re.compile(r"\bswitch\s*\(")
+_UPGRADED_NAMES = {"_Object2World": "unity_ObjectToWorld", "_World2Object": "unity_WorldToObject"}
+_UPGRADED = re.compile(r"\b(" + "|".join(_UPGRADED_NAMES) + r")\b")
+_TEMPLATE_TYPE = re.compile(r"\b(?:vector\s*<\s*(\w+)\s*,\s*([1-4])\s*>|matrix\s*<\s*(\w+)\s*,\s*([1-4])\s*,\s*([1-4])\s*>)")
 _FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
 
 
@@ -53,11 +69,54 @@ def _blank_procedural_setup(text: str) -> str:
     return text
 
 
+_DEFINITION = re.compile(r"^[ \t]*(?:inline[ \t]+)?[A-Za-z_]\w*[ \t]+([A-Za-z_]\w*)[ \t]*\(([^;{}()]*)\)"
+                         r"(?:\s*:\s*\w+)?\s*\{", re.M)
+_PARAM_WORDS = {"in", "out", "inout", "uniform", "const"}
+
+
+@functools.lru_cache(maxsize=1)
+def _library_functions() -> dict:
+    """name -> the parameter types of each overload the Unity layer every pbrlab program of a
+    Unity shader holds defines."""
+    from .cg_types import library
+    return {name: {tuple(p.type for p in sig.params) for sig in sigs} for name, sigs in library().functions.items()}
+
+
+def _parameter_types(params: str):
+    """The types of a definition's parameters (Cg spellings), None where one is not a built-in type."""
+    from .cg_types import builtin_type
+    out = []
+    for param in filter(None, (p.strip() for p in params.split(","))):
+        words = [w for w in re.findall(r"[A-Za-z_]\w*", param.split(":")[0]) if w not in _PARAM_WORDS]
+        t = builtin_type(words[0]) if len(words) == 2 else None
+        if t is None:
+            return None
+        out.append(t)
+    return tuple(out)
+
+
+def _rename_own_library_functions(text: str) -> str:
+    """A definition of one of the Unity layer's overloads (the same name and parameter types)
+    renamed with its calls (a different overload of the name is a legitimate HLSL overload:
+    left alone)."""
+    library = _library_functions()
+    own = {m.group(1) for m in _DEFINITION.finditer(text)
+           if m.group(1) in library and _parameter_types(m.group(2)) in library[m.group(1)]}
+    if not own:
+        return text
+    return re.sub(r"\b(" + "|".join(sorted(own)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
-    a procedural-instancing setup function's body and Unity's flow-control hints blanked."""
+    a procedural-instancing setup function's body and Unity's flow-control hints blanked,
+    Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
+    text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
+    text = _rename_own_library_functions(text)
+    text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
+                              f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0
     for m in _SWITCH.finditer(text):
         if m.start() < pos:

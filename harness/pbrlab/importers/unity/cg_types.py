@@ -327,6 +327,12 @@ def library() -> Symbols:
             _Parser(text, symbols, declarations_only=True).program()
             for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", text, re.M):
                 symbols.aliases.setdefault(m.group(1), m.group(2))
+            # `#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()`: a value of the
+            # function's type (a call without arguments, its one overload)
+            for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)\(\)[ \t]*$", text, re.M):
+                overloads = [f for f in symbols.functions.get(m.group(2), []) if not f.params]
+                if len(overloads) == 1:
+                    symbols.globals.setdefault(m.group(1), overloads[0].ret)
     return symbols
 
 
@@ -369,6 +375,13 @@ RESERVED = frozenset("""
     lessThanEqual greaterThanEqual equal notEqual
 """.split())
 RENAME_PREFIX = "pbr_unity_"
+
+
+def is_reserved(name: str) -> bool:
+    """Whether GLSL refuses ``name`` as a program's own: a reserved word above, or a name with
+    the gl_ prefix or a double underscore (GLSL 3.30 section 3.7, "Identifiers"; HLSL takes
+    both, ``float4 gl_Position : SV_POSITION;``)."""
+    return name in RESERVED or name.startswith("gl_") or "__" in name
 
 
 @dataclass
@@ -437,7 +450,7 @@ class _Parser:
         t = self.next()
         if t.kind != "id":
             raise CgSyntaxError(f"expected a name, found {t.text!r}", t.s)
-        if t.text in RESERVED and not self.decl_only:
+        if is_reserved(t.text) and not self.decl_only:
             self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
         return t
 
@@ -854,8 +867,12 @@ class _Parser:
         items = []
         while not self.at("}"):
             if self.at("{"):
-                self.fail("nested initialiser")
-            items.append(self.assignment())
+                if not t.array:
+                    self.fail("nested initialiser")
+                self.brace_init(t.element())  # an array of vectors or structs: {{0, 1}, {2, 3}}
+                items.append(None)
+            else:
+                items.append(self.assignment())
             comma = self.accept(",")
             if comma is None:
                 break
@@ -866,7 +883,8 @@ class _Parser:
             size = str(t.array) if t.array > 0 else str(len(items))
             self.edits.replace(open_.s, open_.e, f"{t.element().cg()}[{size}](")
             for it in items:
-                self.coerce(it, t.element())
+                if it is not None:
+                    self.coerce(it, t.element())
         elif t.base in self.sym.structs:
             self.edits.replace(open_.s, open_.e, f"{t.base}(")
         elif t.numeric:
@@ -1123,6 +1141,12 @@ class _Parser:
                 self.condition(x)
             return E(*span, Type("bool"), False)
         if o in ("|", "^", "&", "<<", ">>"):
+            if o in ("|", "^", "&") and {a.t.base, b.t.base} == {"int", "uint"} and a.t.numeric and b.t.numeric:
+                # HLSL converts the int operand to uint; GLSL 330 takes one signedness only
+                for x in (a, b):
+                    if x.t.base == "int":
+                        self.wrap(x, Type("uint", x.t.dim).cg())
+                return E(*span, Type("uint", max(a.t.dim, b.t.dim)), False)
             return E(*span, a.t if a.t.numeric else None, False)
         t = self.common(a.t, b.t)
         if t is None:
@@ -1174,7 +1198,12 @@ class _Parser:
             x = self.unary()
             if t.text == "!":
                 if x.t is not None and x.t.vector:
-                    return E(t.s, x.e, None, False)
+                    # HLSL's componentwise not (of a numeric vector: x == 0): GLSL's not()
+                    if not self.decl_only:
+                        inner = "(" if x.t.base == "bool" else f"(bvec{x.t.dim}("
+                        self.edits.replace(t.s, t.e, "not" + inner)
+                        self.edits.close(x.e, ")" if x.t.base == "bool" else "))")
+                    return E(t.s, x.e, Type("bool", x.t.dim), False)
                 self.condition(x)
                 return E(t.s, x.e, Type("bool"), False)
             return E(t.s, x.e, x.t, False)
@@ -1327,7 +1356,7 @@ class _Parser:
                     self.edits.replace(name.s, name.e, Type(ctor.base, ctor.cols, ctor.dim).cg())
                 self.edits.close(close.e, ")")
             return E(name.s, close.e, ctor if ctor.numeric else None, True)
-        if name.text in RESERVED and not self.decl_only:
+        if is_reserved(name.text) and not self.decl_only:
             self.edits.replace(name.s, name.e, RENAME_PREFIX + name.text)
         args, close = self.arguments()
         span = (name.s, close.e)
@@ -1476,7 +1505,7 @@ def _rename_in_directives(text: str, directives) -> list:
         if not m:
             continue
         for w in re.finditer(r"\b[A-Za-z_]\w*\b", line[m.end():]):
-            if w.group(0) in RESERVED:
+            if is_reserved(w.group(0)):
                 out.append((s + m.end() + w.start(), s + m.end() + w.end(), RENAME_PREFIX + w.group(0)))
     return out
 

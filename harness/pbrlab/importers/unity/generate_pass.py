@@ -20,6 +20,7 @@ from __future__ import annotations
 import re
 
 from . import model as M
+from .cg_types import RENAME_PREFIX, is_reserved
 from .port import port_code_types
 from .source_text import UnityShaderError, component_count
 
@@ -40,6 +41,10 @@ _ATTRIBUTES = {
     "TEXCOORD0": ("in_uv", 2, 0.0), "TEXCOORD1": ("in_uv1", 2, 0.0), "COLOR0": ("in_color", 4, 0.0),
 }
 _POSITION = ("SV_POSITION", "POSITION")
+# System values a vertex function may take (Unity's procedural draws index a buffer by them):
+# the index the mesh's index buffer gives the vertex, and the instance's (0: one instance).
+_SYSTEM_VALUES = {"SV_VERTEXID": ("pbrlab_vertex_id", "gl_VertexID"),
+                  "SV_INSTANCEID": ("pbrlab_instance_id", "gl_InstanceID")}
 
 
 def canonical(semantic: str) -> str:
@@ -117,7 +122,10 @@ def _fill_struct(vf, kind: str, var: str, language: str, value_of) -> list[str]:
     return out
 
 
-def _attribute(semantic: str, n: int, language: str):
+def _attribute(semantic: str, n: int, language: str, kind: str = "uint"):
+    if semantic in _SYSTEM_VALUES:
+        hlsl, glsl = _SYSTEM_VALUES[semantic]
+        return f"({kind}){hlsl}" if language == "hlsl" else f"{_type(kind, language)}({glsl})"
     if semantic in _ATTRIBUTES:
         expr, have, w = _ATTRIBUTES[semantic]
         return fit(expr, have, n, language, w)
@@ -253,11 +261,11 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         if _struct(vf, kind) is not None:
             body += _declare(kind, local, language)
             if qual != "out":
-                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language))
+                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language, t))
         else:
             n = _size(kind, where)
             body.append(f"    {_type(kind, language)} {local} = "
-                        f"{(_attribute(canonical(semantic), n, language) if qual != 'out' else None) or _zero(kind, language)};")
+                        f"{(_attribute(canonical(semantic), n, language, kind) if qual != 'out' else None) or _zero(kind, language)};")
         args.append(local)
     call = f"{vf.vertex}({', '.join(args)})"
     if vf.vertex_return != "void":
@@ -276,10 +284,11 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     if language == "hlsl":
         params = ["float3 in_position : POSITION", "float3 in_normal : NORMAL", "float2 in_uv : TEXCOORD0",
                   "float4 in_tangent : TANGENT", "float2 in_uv1 : TEXCOORD1", "float4 in_color : COLOR0",
+                  "uint pbrlab_vertex_id : SV_VertexID", "uint pbrlab_instance_id : SV_InstanceID",
                   "out float4 pbrlab_clip : SV_Position"]
         # an integer varying is flat on both sides (HLSL's nointerpolation; the fragment side's
         # integer input is flat already, and a linker refuses a mismatch)
-        params += [f"{'nointerpolation ' if _flat(kind) else ''}out {kind} pbrlab_vary_{s} : TEXCOORD{i}"
+        params += [f"{'nointerpolation ' if _flat(kind, s, vf) else ''}out {kind} pbrlab_vary_{s} : TEXCOORD{i}"
                    for i, (s, kind) in enumerate(varyings(vf, where))]
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
                   f", out float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
@@ -287,16 +296,25 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     else:
         lines += ["in vec3 in_position;", "in vec3 in_normal;", "in vec2 in_uv;", "in vec4 in_tangent;",
                   "in vec2 in_uv1;", "in vec4 in_color;"]
-        lines += [f"{_flat(kind)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += [f"{_flat(kind, s, vf)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
         lines += [_POSITIONAL_ADD, "out vec3 pbrlab_vary_world_position;", "#endif", "void main() {"]
         body.append(f"    gl_Position = {position};")
     for s, kind in varyings(vf, where):
         body.append(f"    pbrlab_vary_{s} = {access[s][1]};")
-    return "\n".join(lines + body + ["}"]) + "\n"
+    return "\n".join(lines + body + ["}"]) + "\n" if language == "hlsl" else _members_as_ported(
+        "\n".join(lines + body + ["}"]) + "\n")
 
 
-def _flat(kind: str) -> str:
-    return "flat " if kind.startswith(("int", "uint", "bool")) else ""
+def _flat(kind: str, semantic: str = "", vf=None) -> str:
+    """"flat " for an integer varying (flat in both languages), or one the program's struct
+    declares ``nointerpolation`` (HLSL's flat: each triangle takes its provoking vertex's)."""
+    if kind.startswith(("int", "uint", "bool")):
+        return "flat "
+    if vf is not None and semantic and any(
+            canonical(sem) == semantic for struct in vf.structs.values() for _, name, sem in struct.members
+            if name in struct.flat):
+        return "flat "
+    return ""
 
 
 def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended: bool) -> str:
@@ -352,14 +370,24 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
     lines = []
     if language == "hlsl":
         params = ["float4 pbrlab_frag_position : SV_Position", "bool pbrlab_front_facing : SV_IsFrontFace"]
-        params += [f"{kind} pbrlab_vary_{s} : TEXCOORD{i}" for i, (s, kind) in enumerate(varyings(vf, where))]
+        params += [f"{'nointerpolation ' if _flat(kind, s, vf) and not _flat(kind) else ''}{kind} pbrlab_vary_{s} : TEXCOORD{i}"
+                   for i, (s, kind) in enumerate(varyings(vf, where))]
         params.append("out float4 pbrlab_radiance : SV_Target0")
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
                   f", float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
     else:
-        lines += [f"{_flat(kind)}in {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += [f"{_flat(kind, s, vf)}in {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
         lines += [_POSITIONAL_ADD, "in vec3 pbrlab_vary_world_position;", "#endif"]
         lines += ["out vec4 pbrlab_radiance;", "void main() {",
                   "    vec4 pbrlab_frag_position = gl_FragCoord;", "    bool pbrlab_front_facing = gl_FrontFacing;"]
-        return "\n".join(lines + body + ["}"]) + "\n"
+        return _members_as_ported("\n".join(lines + body + ["}"]) + "\n")
     return "\n".join(lines + body + ["}"]) + "\n"
+
+
+_MEMBER = re.compile(r"\.([A-Za-z_]\w*)\b")
+
+
+def _members_as_ported(glsl: str) -> str:
+    """The GLSL entry's reads and writes of the program's struct members, named as the port
+    names them (cg_types.is_reserved: ``gl_Position``, ``sample`` -> pbr_unity_...)."""
+    return _MEMBER.sub(lambda m: "." + (RENAME_PREFIX + m.group(1) if is_reserved(m.group(1)) else m.group(1)), glsl)

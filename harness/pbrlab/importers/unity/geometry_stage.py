@@ -37,7 +37,7 @@ from __future__ import annotations
 import dataclasses
 import re
 
-from .cg_types import RENAME_PREFIX, RESERVED
+from .cg_types import RENAME_PREFIX, is_reserved
 from .geometry_syntax import PRIMITIVES, STREAMS, _POSITION
 from .source_text import UnityShaderError, component_count
 
@@ -49,6 +49,10 @@ def port_code_types(kind: str) -> str:
 
 def _members(vf, kind: str, where: str) -> list:
     members = vf.structs.get(kind)
+    if members is None and component_count(kind):
+        raise UnityShaderError(f"{where}: the geometry stage takes an array of {kind} (a bare value per vertex, "
+                               "not a struct): pbrlab runs a geometry function whose vertices come as one array of "
+                               "the vertex stage's output struct (triangle v2g IN[3])")
     if members is None:
         raise UnityShaderError(f"{where}: the geometry stage's struct {kind} is not defined")
     return members.members
@@ -79,7 +83,7 @@ def fragment_inputs_renamed(text: str) -> str:
 
 def _glsl_name(name: str) -> str:
     """A member or variable name as the GLSL port spells it (cg_types renames reserved words)."""
-    return RENAME_PREFIX + name if name in RESERVED else name
+    return RENAME_PREFIX + name if is_reserved(name) else name
 
 
 # A ForwardAdd pass of a point or spot light folds the light's falloff into _LightColor0 at the

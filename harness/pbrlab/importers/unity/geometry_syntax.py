@@ -129,6 +129,10 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
             found["stream"] = stream.groups()
             params.append(("stream", text, stream.group(3)))
         elif array:
+            if "input" in found:  # HLSL takes several per-vertex arrays; pbrlab one struct array
+                raise UnityShaderError(f"{where}: {name}() takes its vertices as several arrays ({found['input'][2]}[], "
+                                       f"{array.group(3)}[]): pbrlab runs a geometry function whose vertices come "
+                                       "as one array of the vertex stage's output struct (triangle v2g IN[3])")
             found["input"] = array.groups()
             params.append(("input", text, array.group(3)))
         elif primitive_id:

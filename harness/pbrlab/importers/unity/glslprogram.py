@@ -102,6 +102,14 @@ def glsl_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragm
         if not re.search(r"^[ \t]*#[ \t]*if(?:def[ \t]+|[ \t]+defined[ \t]*\(?[ \t]*)" + stage + r"\b", masked, re.M):
             raise UnityShaderError(f"{where(0)}: a GLSLPROGRAM needs both stages, each under "
                                    f"#ifdef VERTEX / #ifdef FRAGMENT (no #ifdef {stage})")
+    # Unity compiles a snippet's HULL, DOMAIN and GEOMETRY blocks as those stages; pbrlab builds
+    # a GLSLPROGRAM's vertex and fragment stages only, so one with more is refused at its block
+    # (drawn without them, the tessellated or generated primitives would be missing silently)
+    m = re.search(r"^[ \t]*#[ \t]*if(?:def[ \t]+|[ \t]+defined[ \t]*\(?[ \t]*)(HULL|DOMAIN|GEOMETRY)\b", masked, re.M)
+    if m:
+        stage = {"HULL": "tessellation control", "DOMAIN": "tessellation evaluation"}.get(m.group(1), "geometry")
+        raise UnityShaderError(f"{where(m.start())}: #ifdef {m.group(1)}: a GLSLPROGRAM's {stage} stage, which "
+                               "pbrlab does not build (a GLSLPROGRAM runs its VERTEX and FRAGMENT stages here)")
     vf = M.VertexFragmentPass(
         path=path, name=block.name, light_mode=block.tags.get("LightMode", "Always"), program=program,
         program_line=first_line, vertex="main", fragment="main", vertex_params=[], vertex_return="void",

@@ -154,9 +154,11 @@ class SurfaceShader:
 
 @dataclass
 class ShaderStruct:
-    """A struct of a vertex/fragment program: [(type, name, semantic or "")] in order."""
+    """A struct of a vertex/fragment program: [(type, name, semantic or "")] in order;
+    ``flat``: the members declared ``nointerpolation`` (HLSL's flat varyings)."""
     name: str
     members: list
+    flat: frozenset = frozenset()
 
 
 @dataclass

@@ -20,6 +20,7 @@ from pathlib import Path
 from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
+from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from . import fixed_function, shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
@@ -246,8 +247,9 @@ def apply_state(commands, state: M.RenderState, props: dict, path: Path, warning
 def _pragma(program: str, where) -> tuple:
     found = list(re.finditer(r"^[ \t]*#[ \t]*pragma[ \t]+surface[ \t]+(\w+)[ \t]+(\w+)([^\n]*)$", program, re.M))
     if not found:
-        raise UnityShaderError(f"{where(0)}: no '#pragma surface <function> <LightingModel>' line: "
-                               "only surface shaders are supported (vertex/fragment shaders are not)")
+        raise UnityShaderError(f"{where(0)}: no '#pragma surface <function> <LightingModel>' line: a file "
+                               "without a Shader \"name\" { ... } block is read as a bare surface program "
+                               "(a vertex/fragment program needs its ShaderLab Pass)")
     if len(found) > 1:
         raise UnityShaderError(f"{where(found[1].start())}: a second #pragma surface")
     m = found[0]
@@ -377,6 +379,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     everything = masked + "\n" + included_text(program, path.parent)
     everything = active_text(everything, defines_of(everything))  # the default variant's branches
     check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
+    check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
 
     def where(index: int) -> str:  # an index past the program's text lies in an include
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -573,6 +576,8 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
     text = text.removeprefix("\ufeff")
     masked = blank_comments(text)
     if not re.search(r"^\s*Shader\s*\"", masked, re.M):
+        if not masked.strip():
+            raise UnityShaderError(f"{path}:1: the file is empty (no Shader \"name\" {{ ... }} block, no program)")
         shader = parse_program(text, path, 1)
         if text.startswith(PORT_MARKER):
             shader.language = "glsl"

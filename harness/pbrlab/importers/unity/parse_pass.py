@@ -13,6 +13,7 @@ from pathlib import Path
 from . import model as M
 from .geometry_syntax import parse_geometry
 from .conditionals import active_text, defines_of
+from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
@@ -79,11 +80,21 @@ def _function_signature(masked: str, name: str, where_of):
 _LEADING_MACROS = re.compile(r"^(?:[A-Z][A-Z0-9_]*(?:\s*\([^()]*\))?\s+)+(?=[A-Za-z_])")
 
 
+# UnityCG.cginc's vertex functions a #pragma may name and the structs they take and give, as
+# Unity declares them (Unity manual, "Built-in shader include files": vert_img, the image
+# effects' vertex stage); their bodies are the Unity layer's (unity_compat/shader_variables).
+UNITY_CG_FUNCTIONS = """
+struct appdata_img { float4 vertex : POSITION; half2 texcoord : TEXCOORD0; };
+struct v2f_img { float4 pos : SV_POSITION; half2 uv : TEXCOORD0; };
+v2f_img vert_img(appdata_img v) { }
+"""
+
+
 def _structs(masked: str) -> dict:
     out = {}
     for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
         end = matching_brace(masked, m.end() - 1)
-        members = []
+        members, flat = [], set()
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
         for decl in body.split(";"):
             # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
@@ -95,13 +106,15 @@ def _structs(masked: str) -> dict:
             sm = re.search(r":\s*(\w+)\s*$", decl)
             if sm:
                 semantic, decl = sm.group(1), decl[:sm.start()].strip()
-            words = [w for w in decl.replace(",", " , ").split()
-                     if w not in ("nointerpolation", "linear", "centroid", "noperspective", "sample")]
+            all_words = decl.replace(",", " , ").split()
+            words = [w for w in all_words if w not in ("nointerpolation", "linear", "centroid", "noperspective", "sample")]
             if len(words) < 2:
                 continue
             kind, names = words[0], [w for w in words[1:] if w != ","]
             members.extend((kind, n, semantic) for n in names)
-        out[m.group(1)] = M.ShaderStruct(m.group(1), members)
+            if "nointerpolation" in all_words:
+                flat.update(names)
+        out[m.group(1)] = M.ShaderStruct(m.group(1), members, frozenset(flat))
     return out
 
 
@@ -125,6 +138,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     on = [k for k in keywords if k in declared_keywords(program)]
     everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
     check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
+    check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -146,7 +160,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     vertex, fragment = pragmas["vertex"][0][0], pragmas["fragment"][0][0]
     found = {}
     for role, name in (("vertex", vertex), ("fragment", fragment)):
-        sig = _function_signature(everything, name, where)
+        sig = _function_signature(everything, name, where) or _function_signature(UNITY_CG_FUNCTIONS, name, where)
         if sig is None:
             unresolved = _unresolved_include(program, path.parent)
             if unresolved:  # most likely where the function lives: name the file, not the function
@@ -156,7 +170,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
                                    "is defined")
         found[role] = sig
-    structs = _structs(everything)
+    structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
                 if "geometry" in pragmas else None)
     vf = M.VertexFragmentPass(

@@ -40,6 +40,7 @@ from . import model as M
 from .geometry_syntax import spell_for_glsl
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, included_text
+from .texture_methods import spelled_texture_methods
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
@@ -118,16 +119,28 @@ def _unity_globals() -> frozenset:
     return frozenset(re.findall(r"^(?:uniform\s+)?(?:vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M))
 
 
-_GLOBAL_DECLARATION = re.compile(r"^([ \t]*)(uniform\s+(?:vec[234]|mat[234]|float)\s+(\w+)\s*;)", re.M)
+_GLOBAL_DECLARATION = re.compile(r"^([ \t]*)(uniform\s+(vec[234]|mat[234]|float)\s+(\w+(?:\s*,\s*\w+)*)\s*;)", re.M)
 
 
 def _drop_unity_redeclarations(code: str) -> str:
     """A program's own declaration of a global Unity declares for it (``fixed4 _LightColor0;``,
     written where Lighting.cginc is not included) is one GLSL refuses as a redeclaration: it is
-    kept as a comment, on its line."""
+    kept as a comment, on its line; from a list (``float4 _LightColor0, _MainTex_ST;``) only
+    Unity's names are taken out."""
     names = _unity_globals()
-    return _GLOBAL_DECLARATION.sub(lambda m: f"{m.group(1)}/* {m.group(2)} (declared by UnityShaderVariables) */"
-                                   if m.group(3) in names else m.group(0), code)
+
+    def drop(m):
+        declared = [n.strip() for n in m.group(4).split(",")]
+        kept = [n for n in declared if n not in names]
+        if len(kept) == len(declared):
+            return m.group(0)
+        newlines = "\n" * m.group(2).count("\n")  # the port stays line for line
+        ours = ", ".join(n for n in declared if n in names)
+        if not kept:
+            return f"{m.group(1)}/* uniform {m.group(3)} {ours}; (declared by UnityShaderVariables) */{newlines}"
+        return (f"{m.group(1)}uniform {m.group(3)} {', '.join(kept)}; "
+                f"/* {ours}: declared by UnityShaderVariables */{newlines}")
+    return _GLOBAL_DECLARATION.sub(drop, code)
 
 
 def port_program(shader: M.SurfaceShader) -> str:
@@ -227,13 +240,34 @@ def _spell_zero_initialize(code: str) -> str:
     return _ZERO_INITIALIZE.sub(lambda m: f"{m.group(1)}{m.group(3)} = ({m.group(2)})0", code)
 
 
+_STRUCT_OPEN = re.compile(r"\bstruct\s+\w+\s*\{")
+_MEMBER_INTERPOLATION = re.compile(r"\b(?:nointerpolation|linear|centroid|noperspective|sample)\s+(?=[A-Za-z_])")
+
+
+def _drop_member_interpolation(text: str) -> str:
+    """HLSL's interpolation modifiers on struct members (``nointerpolation float4 p : TEXCOORD0;``)
+    taken out of the structs (GLSL takes none inside a struct); the harness's varyings carry
+    ``nointerpolation`` as ``flat`` (generate_pass), blanks keep the offsets."""
+    out, pos = [], 0
+    for m in _STRUCT_OPEN.finditer(text):
+        if m.start() < pos:
+            continue
+        end = text.find("}", m.end())
+        if end < 0:
+            break
+        body = _MEMBER_INTERPOLATION.sub(lambda q: " " * len(q.group(0)), text[m.end():end])
+        out += [text[pos:m.end()], body]
+        pos = end
+    return "".join(out) + text[pos:]
+
+
 def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
     """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry syntax
-        return spell_for_glsl(cg_spellings.respelled(text))
+        return _drop_member_interpolation(spelled_texture_methods(spell_for_glsl(cg_spellings.respelled(text))))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations
     if folder is not None:

@@ -269,6 +269,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "_WorldSpaceCameraPos", tuple(frame.position))
     _set(program, "unity_ObjectToWorld", _column_major(model))
     _set(program, "unity_WorldToObject", _column_major(np.linalg.inv(model)))
+    _set(program, "unity_WorldTransformParams", (0.0, 0.0, 0.0, -1.0 if np.linalg.det(model[:3, :3]) < 0.0 else 1.0))
     _set(program, "unity_MatrixVP", _column_major(frame.view_proj))
     _set(program, "unity_MatrixV", _column_major(frame.view))
     _set(program, "unity_MatrixInvV", _column_major(np.linalg.inv(frame.view)))

@@ -1,0 +1,103 @@
+"""Direct3D 11's texture objects spelled in Cg's texture functions, for the GLSL port.
+
+A built-in-pipeline program may declare its textures and samplers as Direct3D 11 objects and
+sample through their methods (what UnityCG's ``UNITY_DECLARE_TEX2D`` expands to on D3D11)::
+
+    Texture2D _Albedo, _Mask;            SamplerState sampler_linear_repeat;
+    float4 c = _Albedo.Sample(sampler_linear_repeat, uv);
+
+HLSL takes this as written. GLSL has no separate samplers: each texture object becomes a
+combined sampler (``sampler2D _Albedo, _Mask;``, bound as every other texture property), the
+sampler objects unused ints, and each method call the Cg function of the same lookup
+(Microsoft's HLSL reference, "Texture2D"): ``Sample(s, uv)`` -> ``tex2D(t, uv)``,
+``SampleLevel(s, uv, lod)`` -> ``tex2Dlod(t, float4(uv, 0, lod))``, ``SampleBias(s, uv, b)`` ->
+``tex2Dbias(t, float4(uv, 0, b))``, ``SampleGrad(s, uv, dx, dy)`` -> ``tex2Dgrad(t, uv, dx, dy)``,
+``Load(int3(x, y, mip))`` -> ``pbr_unity_load(t, int3(...))`` (texelFetch); the cube's
+``Sample`` / ``SampleLevel`` -> ``texCUBE`` / ``texCUBElod``. The sampler's own state (an inline
+sampler's filter and wrap, by its name) is the texture's here, as for every combined sampler.
+Any other method (``GetDimensions``, ``Gather``) is left as written and the compiler names it.
+Lines are kept.
+
+    text = spelled_texture_methods(cg_text)
+"""
+
+from __future__ import annotations
+
+import re
+
+_DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState)(?:\s*<\s*\w+\s*>)?"
+                          r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
+_COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
+_METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
+
+
+def _arguments(code: str, start: int):
+    """(arguments split at top-level commas, the offset after ``)``) of the call whose ``(`` is
+    at ``start``; None when it does not close."""
+    depth, args, begin = 0, [], start + 1
+    for i in range(start, len(code)):
+        c = code[i]
+        if c in "([":
+            depth += 1
+        elif c in ")]":
+            depth -= 1
+            if depth == 0:
+                args.append(code[begin:i].strip())
+                return args, i + 1
+        elif c == "," and depth == 1:
+            args.append(code[begin:i].strip())
+            begin = i + 1
+    return None
+
+
+def _call(kind: str, method: str, texture: str, args: list):
+    """The Cg spelling of ``texture.method(args)`` (args with the sampler first, except Load)."""
+    if kind == "Texture2D":
+        if method == "Load" and len(args) == 1:
+            return f"pbr_unity_load({texture}, {args[0]})"
+        if method == "Sample" and len(args) == 2:
+            return f"tex2D({texture}, {args[1]})"
+        if method == "SampleLevel" and len(args) == 3:
+            return f"tex2Dlod({texture}, float4({args[1]}, 0.0, {args[2]}))"
+        if method == "SampleBias" and len(args) == 3:
+            return f"tex2Dbias({texture}, float4({args[1]}, 0.0, {args[2]}))"
+        if method == "SampleGrad" and len(args) == 4:
+            return f"tex2Dgrad({texture}, {args[1]}, {args[2]}, {args[3]})"
+    if kind == "TextureCube":
+        if method == "Sample" and len(args) == 2:
+            return f"texCUBE({texture}, {args[1]})"
+        if method == "SampleLevel" and len(args) == 3:
+            return f"texCUBElod({texture}, float4({args[1]}, {args[2]}))"
+    return None  # another method or form: left for the compiler to name
+
+
+def spelled_texture_methods(code: str) -> str:
+    """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg."""
+    kinds = {}
+    for m in _DECLARATION.finditer(code):
+        for name in m.group(2).split(","):
+            kinds[name.strip()] = m.group(1)
+    if not kinds:
+        return code
+
+    def declaration(m):
+        names = [n.strip() for n in m.group(2).split(",")]
+        if m.group(1) in _COMBINED:
+            return f"{_COMBINED[m.group(1)]} {', '.join(names)};"
+        return "static const int " + ", ".join(f"{n} = 0" for n in names) + ";"
+    code = _DECLARATION.sub(declaration, code)
+    out, pos = [], 0
+    for m in _METHOD.finditer(code):
+        if m.start() < pos or kinds.get(m.group(1)) not in _COMBINED:
+            continue
+        found = _arguments(code, m.end() - 1)
+        if found is None:
+            continue
+        args, end = found
+        spelled = _call(kinds[m.group(1)], m.group(2), m.group(1), args)
+        if spelled is None:
+            continue
+        spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
+        out += [code[pos:m.start()], spelled]
+        pos = end
+    return "".join(out) + code[pos:]
