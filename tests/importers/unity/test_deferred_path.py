@@ -286,3 +286,78 @@ def test_deferred_shading_adds_each_light(language):
     assert (np.abs(both - summed) <= bound).all()
     assert (images["both"][..., 3] <= 1.0).all()  # the coverage, not a sum of alphas
     assert (np.abs(both - images["sun"][..., :3]) > bound).any()
+
+
+COMBINE_DEPTH_NORMALS = ROOT / "Internal-CombineDepthNormals.shader"
+STEREO_SCALE = 1.7777  # Unity's manual, "Camera's depth texture": the view normal's stereographic scale
+
+
+# A screen-filling square (the pass is a full-screen blit: it reads the G-buffer at its mesh's
+# uv, ZTest Always): the plane primitive (u along +x, v along -z) seen straight down from
+# SCREEN_DISTANCE with up -z, its side 2 d tan(fov / 2), so a pixel centre's uv is its screen
+# uv; in front of it a ray-traced pbrlab sphere, which the G-buffer shows (drawn before the
+# square, which then covers it: ZTest Always).
+SCREEN_DISTANCE = 3.0
+SCREEN_FOV_DEG = 40.0
+
+
+def _blit_scene(shader: Path):
+    side = 2 * SCREEN_DISTANCE * np.tan(np.radians(SCREEN_FOV_DEG / 2))
+    data = {
+        "camera": {"position": [0.0, 2.0, 0.0], "target": [0.0, -1.0, 0.0], "up": [0.0, 0.0, -1.0],
+                   "fov_y_deg": SCREEN_FOV_DEG, "size": [64, 64]},
+        "lights": [SUN],
+        "materials": {"m": {"surface": str(shader)}, "s": {"albedo": [0.5, 0.3, 0.2], "smoothness": 0.7}},
+        "objects": [{"sphere": {"center": [0.0, 0.0, 0.0], "radius": 0.6}, "material": "s"},  # drawn first
+                    {"mesh": {"primitive": "plane", "size": float(side)}, "transform": {"translate": [0.0, -1.0, 0.0]},
+                     "material": "m"}],
+        "render": {"quality": "high", "tonemap": "khronos_neutral"},
+    }
+    return parse_scene(data, origin="deferred blit scene", base=shader.parent)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_combine_depth_normals_encodes_the_gbuffer_normal_in_view_space(language):
+    """Internal-CombineDepthNormals (Unity builds _CameraDepthNormalsTexture from the G-buffer
+    with it: _CameraNormalsTexture is RT2): rg = the stereographic encoding of the sampled RT2
+    normal taken into view space (unity_WorldToCamera, z negated: +z towards the camera), b =
+    EncodeFloatRG's high part of Linear01Depth (a is the target's coverage here). float64 side
+    from the sampled texels and the float64 ray-sphere depth. Bounds: rg is a rotation, a
+    divide by 1 + n.z in [1, 2] and a scale: well-conditioned, 16 u of float32 (1e-6); b is
+    v - frac(255 v) / 255 with v's error (2.6e-6 of the eye depth, the depth test's bound, over
+    far) carried once into each term: 2 * 255 / 255 times that, on pixels whose frac(255 v) is
+    not within 1e-3 of a wrap (where the low byte jumps by a whole code). Control: the world
+    normal, not the view one, fails."""
+    scene = _blit_scene(COMBINE_DEPTH_NORMALS)
+    frame = scene_frame(scene)
+    d = camera_rays(frame)
+    o = np.asarray(frame.position, np.float64)
+    b = d @ o
+    closest2 = o @ o - b * b
+    on_sphere = closest2 <= 0.36
+    t_sphere = -b - np.sqrt(np.maximum(0.36 - closest2, 0.0))
+    eye = np.where(on_sphere, t_sphere * (d @ frame.forward), SCREEN_DISTANCE)
+    rim = np.abs(np.sqrt(closest2) - 0.6) < 0.05  # the sphere's rim: a pixel's depth is ill-conditioned
+    inside = ~rim
+    gbuffer = _gbuffer(scene)
+    image = render_scene(scene, language=language).linear.astype(np.float64)
+    covered = inside & (image[..., 3] > 0) & (gbuffer["depth"] < 1.0)
+    assert covered.mean() > 0.7 and (covered & on_sphere).sum() > 500
+    world = gbuffer["gbuffer2"][..., :3] * 2 - 1   # unnormalised, as the shader takes it
+    rotation = np.asarray(frame.view, np.float64)[:3, :3]  # rows right, up, -forward
+    view = world @ rotation.T                       # (n.right, n.up, -n.forward): Unity's, z negated
+
+    def encode(n):
+        return n[..., :2] / (1.0 + n[..., 2:3]) / STEREO_SCALE * 0.5 + 0.5
+
+    err = np.abs(image[..., :2] - encode(view))[covered]
+    assert err.max() <= 1e-6, err.max()
+    depth01 = eye / frame.far
+    low = np.mod(255.0 * depth01, 1.0)
+    high = depth01 - low / 255.0
+    away = covered & (np.minimum(low, 1.0 - low) > 1e-3)
+    bound = 2 * 2.6e-6 * eye / frame.far + 1e-6
+    assert away.sum() > 1000
+    assert (np.abs(image[..., 2] - high) <= bound)[away].all(), (np.abs(image[..., 2] - high) / bound)[away].max()
+    wrong = np.abs(image[..., :2] - encode(world))[covered]  # control
+    assert (wrong.max(axis=-1) > 1e-6).mean() > 0.9
