@@ -361,3 +361,35 @@ def test_combine_depth_normals_encodes_the_gbuffer_normal_in_view_space(language
     assert (np.abs(image[..., 2] - high) <= bound)[away].all(), (np.abs(image[..., 2] - high) / bound)[away].max()
     wrong = np.abs(image[..., :2] - encode(world))[covered]  # control
     assert (wrong.max(axis=-1) > 1e-6).mean() > 0.9
+
+
+def test_a_transparent_queue_is_not_in_the_depth_texture(tmp_path):
+    """Unity's depth texture holds the opaque queues (<= 2500): the depth pass's shader tagged
+    Queue Transparent reads the far plane everywhere (Linear01Depth 1, to float32 rounding of
+    1 / (x + y) = 1), where its Geometry twin (the depth test above) reads its own sphere."""
+    shader = tmp_path / "depth01_transparent.shader"
+    shader.write_text(textwrap.dedent(DEPTH_SHADER).replace("SubShader {", 'SubShader { Tags { "Queue"="Transparent" }', 1))
+    image = render_scene(_parsed(shader, [SUN]), language="glsl").linear.astype(np.float64)
+    covered = image[..., 3] > 0
+    assert covered.sum() > 1000
+    assert (np.abs(image[..., 0][covered] - 1.0) <= 4 * 2.0 ** -24).all()
+
+
+def test_a_textured_material_in_the_gbuffer_is_refused_by_name(tmp_path):
+    """The G-buffer takes a pbrlab material's constant values: a textured one in a scene whose
+    shader reads the G-buffer is refused, naming the object and the material."""
+    from pbrlab.foundation.errors import PbrlabError
+    image = Path(__file__).resolve().parents[3] / "scenes" / "assets" / "bricks_albedo.png"
+    data = _scene(DEFERRED_SHADING, [SUN])
+    data["materials"]["t"] = {"albedo": [1, 1, 1], "textures": {"albedo": str(image)}}
+    data["objects"].append({"sphere": {"center": [0.0, 0.0, -3.0], "radius": 0.5}, "material": "t"})
+    scene = parse_scene(data, origin="deferred test scene", base=DEFERRED_SHADING.parent)
+    with pytest.raises(PbrlabError, match=r"objects\[1\].*material 't'.*textures"):
+        render_scene(scene, language="glsl")
+
+
+def test_deferred_shading_skips_the_ldr_decode_pass_with_a_note():
+    """Internal-DeferredShading's second pass decodes the LDR light buffer (_LightBuffer), which
+    Unity draws only without HDR: skipped, saying so (the harness's target is float)."""
+    with pytest.warns(UserWarning, match=r"skipped: it decodes the LDR light buffer \(_LightBuffer\)"):
+        render_scene(_parsed(DEFERRED_SHADING, [SUN]), language="glsl")
