@@ -393,3 +393,44 @@ def test_deferred_shading_skips_the_ldr_decode_pass_with_a_note():
     Unity draws only without HDR: skipped, saying so (the harness's target is float)."""
     with pytest.warns(UserWarning, match=r"skipped: it decodes the LDR light buffer \(_LightBuffer\)"):
         render_scene(_parsed(DEFERRED_SHADING, [SUN]), language="glsl")
+
+
+DEFERRED_REFLECTIONS = ROOT / "Internal-DeferredReflections.shader"
+# A constant environment of colours a float16 cube stores exactly (the prefiltered mips of a
+# constant are that constant): the probe's radiance is known in every direction and mip.
+CONSTANT_SKY = [0.75, 0.5, 0.25]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_deferred_reflections_is_brdf1_indirect_specular_of_the_gbuffer(language):
+    """Internal-DeferredReflections, drawn for the default reflection (the scene's environment:
+    an unbounded box, falloff 1 in alpha), = BRDF1's indirect specular term of the sampled
+    G-buffer surface with the probe's radiance times its occlusion (diffuse colour 0, no light):
+    surfaceReduction * env * FresnelLerp(specColor, grazingTerm, n.v). Bound: that term is a
+    few float32 products, pow5 and a lerp (about 20 u = 1.2e-6 relative), the probe exact, v
+    off by the reconstructed point's 4.4e-7: 4e-6 relative. Control: twice the sky fails."""
+    data = _scene(DEFERRED_REFLECTIONS, [SUN])
+    data["environment"] = {"color": CONSTANT_SKY}
+    scene = parse_scene(data, origin="deferred test scene", base=DEFERRED_REFLECTIONS.parent)
+    frame = scene_frame(scene)
+    d, t, inside = _sphere_hits(frame)
+    g = _gbuffer(scene)
+    normal = g["gbuffer2"][..., :3] * 2 - 1
+    normal = normal / np.linalg.norm(normal, axis=-1, keepdims=True)
+    spec = g["gbuffer1"][..., :3]
+
+    def expected(sky):
+        return unity_brdf.brdf1_unity_pbs(np.zeros(3), spec, 1.0 - spec.max(axis=-1), g["gbuffer1"][..., 3], normal,
+                                          -d, np.zeros(3), np.array([0.0, 1.0, 0.0]), np.zeros(3),
+                                          np.asarray(sky, np.float64) * g["gbuffer0"][..., 3:4])
+
+    image = render_scene(scene, language=language).linear.astype(np.float64)
+    covered = inside & (g["depth"] < 1.0)
+    assert covered.sum() > 1000
+    want = expected(CONSTANT_SKY)
+    bound = 4e-6 * np.abs(want) + 1e-7
+    err = np.abs(image[..., :3] - want)
+    assert (err[covered] <= bound[covered]).all(), (err / bound)[covered].max()
+    assert (image[..., 3][covered] == 1.0).all()  # the falloff of an unbounded probe
+    wrong = np.abs(image[..., :3] - expected(2 * np.asarray(CONSTANT_SKY)))
+    assert (wrong[covered].max(axis=-1) > bound[covered].max(axis=-1)).mean() > 0.9

@@ -1,6 +1,6 @@
 """Globals a Unity shader declares itself but only one of Unity's engine subsystems sets (the
 previous frame's matrices of motion vectors, the terrain's
-tree-imposter lights, the deferred path's reflection probes): the harness has none of those subsystems, so such a global would stay
+tree-imposter lights): the harness has none of those subsystems, so such a global would stay
 zero and draw a picture Unity never shows. A vertex/fragment pass whose drawn variant reads one
 is refused naming it, at its line, before anything is compiled (a compiler would accept the
 shader's own declaration).
@@ -17,8 +17,6 @@ from .source_text import UnityShaderError, line_of
 
 _MOTION = ("motion vectors: the previous frame's camera and object matrices, which a single still "
            "frame does not have")
-_PROBES = ("box-projected and blended reflection probes, which the deferred reflection pass draws one "
-           "by one (the harness has one environment and no probe)")
 _TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into its billboard "
                   "imposter texture (the harness has no terrain)")
 
@@ -26,9 +24,6 @@ _TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into i
 ENGINE_FED = {
     "_NonJitteredVP": _MOTION, "_PreviousVP": _MOTION, "_PreviousM": _MOTION,
     "_StereoNonJitteredVP": _MOTION, "_StereoPreviousVP": _MOTION,
-    # the deferred reflection pass's probe (its blend distance; its box and HDR decode in
-    # UnityGIInput's per-probe arrays), drawn once per reflection probe
-    "unity_SpecCube1_ProbePosition": _PROBES,
     "_TerrainTreeLightDirections": _TREE_IMPOSTER, "_TerrainTreeLightColors": _TREE_IMPOSTER,
 }
 _NAME = re.compile(r"\b(" + "|".join(sorted(ENGINE_FED, key=len, reverse=True)) + r")\b")

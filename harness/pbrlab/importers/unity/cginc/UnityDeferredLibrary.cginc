@@ -45,6 +45,43 @@ static const float _LightAsQuad = 0.0;
 
 UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
 
+// The deferred reflection pass's probe. The harness's one reflection source is the scene's
+// environment: Unity's default reflection (the sky's probe), which Unity's deferred path draws
+// with this pass over the whole screen. Its box is unbounded (the environment lies at
+// infinity), here +-1e30 (float32-safe), so Internal-DeferredReflections' distance to the box is
+// 0 and its falloff saturate(1 - 0 / blend distance) is 1 for any positive blend distance
+// (unity_SpecCube1_ProbePosition.w, "set to the blend distance for this probe": 1 here).
+static const float4 unity_SpecCube0_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
+static const float4 unity_SpecCube0_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
+static const float4 unity_SpecCube0_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);  // w 0: no box projection
+static const float4 unity_SpecCube1_ProbePosition = float4(0.0, 0.0, 0.0, 1.0);
+
+// UnityGIInput as the deferred reflection pass fills it (UnityGlobalIllumination.cginc's, with
+// the per-probe arrays the forward GI input of pbrlab's library leaves out), and
+// UnityGI_IndirectSpecular of one probe: the environment's radiance at the mip of the
+// perceptual roughness along reflUVW (Unity_GlossyEnvironment; DecodeHDR with probeHDR is the
+// identity for the harness's float environment, as unity_SpecCube0_HDR says) times occlusion.
+// No box projection (UNITY_SPECCUBE_BOX_PROJECTION is not drawn), no blending of two probes
+// (boxMin[0].w = 1 turns it off in Unity's deferred pass too).
+struct pbrlab_DeferredGIInput
+{
+    UnityLight light;
+    float3 worldPos;
+    half3 worldViewDir;
+    half atten;
+    half3 ambient;
+    float4 probeHDR[2];
+    float4 boxMin[2];
+    float4 boxMax[2];
+    float4 probePosition[2];
+};
+#define UnityGIInput pbrlab_DeferredGIInput
+
+half3 UnityGI_IndirectSpecular(pbrlab_DeferredGIInput data, half occlusion, Unity_GlossyEnvironmentData glossIn)
+{
+    return Unity_GlossyEnvironment(glossIn) * occlusion;
+}
+
 struct unity_v2f_deferred {
     float4 pos : SV_POSITION;
     float4 uv : TEXCOORD0;
