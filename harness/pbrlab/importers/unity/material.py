@@ -11,7 +11,10 @@ order. A GrabPass copies what is drawn so far; a surface program draws once, or,
 Unity's per-light keywords, as Unity's forward path does (a base program for directional
 lights, ambient and emission, and a ForwardAdd program per other light type, added on top); a
 vertex/fragment pass draws as its LightMode says (ForwardBase once with DIRECTIONAL, ForwardAdd
-once per further light), blended, depth-tested and culled by its own lines.
+once per further light), blended, depth-tested and culled by its own lines; a deferred light
+pass (vertex function vert_deferred) once per scene light, reading the camera's depth texture
+and G-buffer (deferred.py; render/camera_textures.py renders them), in which a Unity shader's
+object of an opaque queue shows Unity's default material (``gbuffer_surface``).
 """
 
 from __future__ import annotations
@@ -235,7 +238,8 @@ def _skipped(unity_pass, path: Path) -> bool:
     reason = deferred.skipped_reason(unity_pass)
     if reason is not None:
         from . import UnityShaderWarning
-        warnings.warn(f"{path.name}: Pass {unity_pass.name or ''} at line {unity_pass.program_line} skipped: {reason}",
+        named = f"Pass '{unity_pass.name}'" if unity_pass.name else "the Pass"
+        warnings.warn(f"{path.name}: {named} at line {unity_pass.program_line} skipped: {reason}",
                       UnityShaderWarning, stacklevel=3)
     return reason is not None
 
