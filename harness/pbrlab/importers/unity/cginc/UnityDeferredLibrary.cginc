@@ -89,10 +89,10 @@ struct unity_v2f_deferred {
 };
 
 // The volume's vertex: its clip position, its screen position (ComputeScreenPos, divided per
-// pixel), and the ray to it in view space with +z forward (Unity's view space looks down -z:
-// x and y keep their signs once z is negated... here the whole view position is negated in
-// x and y, as Unity's does, and the per-pixel scale by far / ray.z turns both signs back);
-// a full-screen quad's ray is its normal (_LightAsQuad 1), which the harness never draws.
+// pixel), and the view-space position with x and y negated: Unity's view space looks down -z,
+// so the per-pixel scale by far / ray.z (negative) turns x and y back and gives the ray to the
+// far plane with +z forward, the frame of unity_CameraToWorld. A full-screen quad's ray is its
+// normal (_LightAsQuad 1), which the harness never draws.
 unity_v2f_deferred vert_deferred(float4 vertex : POSITION, float3 normal : NORMAL)
 {
     unity_v2f_deferred o;
