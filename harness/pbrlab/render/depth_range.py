@@ -28,7 +28,12 @@ the one CameraFrame. Where the camera is inside geometry's bounds and its triang
 the eye, near falls back to far * 1e-5, and so it does when any object's material moves its
 vertices in a program of its own (a Unity `vertex:` function, a vertex/fragment pass): the
 mesh's bounds say nothing of where such a program puts it (normal extrusion pushed a sphere's
-front through a near plane set from its undisplaced box). A scene with a Unity shader keeps
+front through a near plane set from its undisplaced box), unless a program reads the camera's
+depth texture (render/camera_textures.py): then near is its engine's camera near plane
+(Unity's 0.3, clipping what Unity's camera clips), as that texture's precision is the near
+plane's (a window depth z resolves eye depth e to within e^2 / near * dz: at the corpus
+scene's e = 2.2 and the fallback's near = 1e-4, a float32 depth's dz = 2^-24 is 1.3e-3 of the
+depth; at near 0.3, 4.4e-7). A scene with a Unity shader keeps
 a near plane no farther than Unity's default camera's (its material source's camera_near,
 importers/unity/material.py's UNITY_CAMERA_NEAR): its programs read
 the planes (`_ProjectionParams`, `_ZBufferParams`, `unity_CameraInvProjection`), and one that
@@ -45,6 +50,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import camera_textures
 from ..scene import meshes
 from ..maths.camera import NEAR_FAR_MARGIN, CameraFrame, camera_frame
 from ..foundation.errors import SceneError
@@ -104,6 +110,8 @@ def scene_frame(scene) -> CameraFrame:
     if scene.camera.ortho_half_height is not None:
         return frame  # linear depth: (far - near) / 2^24 everywhere, precise already
     if any(_moves_vertices(scene.materials.get(obj.material)) for obj in scene.objects):
+        if camera_textures.needed(scene):  # a program reads the camera's depth: its engine's near plane
+            return camera_frame(scene.camera, radius, (_engine_near(scene) * NEAR_FAR_MARGIN, frame.far / NEAR_FAR_MARGIN))
         return frame  # its geometry is where its program puts it, not where its bounds are
     depths = visible_depths(scene, frame)
     if depths is None:
@@ -114,6 +122,14 @@ def scene_frame(scene) -> CameraFrame:
     if nears:  # a shader that reads the camera's planes expects its engine's near plane or nearer
         depths = (min(depths[0], min(nears) * NEAR_FAR_MARGIN), depths[1])
     return camera_frame(scene.camera, radius, depths)
+
+
+def _engine_near(scene) -> float:
+    """The nearest camera near plane the scene's material sources ask for (Unity's 0.3)."""
+    nears = [source.camera_near for source in (getattr(scene.materials.get(obj.material), "source", None)
+                                               for obj in scene.objects)
+             if source is not None and source.camera_near is not None]
+    return min(nears) if nears else scene_radius(scene) * 1e-5
 
 
 def visible_depths(scene, frame: CameraFrame) -> tuple[float, float] | None:

@@ -25,7 +25,7 @@ from pathlib import Path
 import moderngl
 import numpy as np
 
-from . import environment_visibility, features, instanced_draws, resource_cache, shadow_map, tangent_frames
+from . import camera_textures, environment_visibility, features, instanced_draws, resource_cache, shadow_map, tangent_frames
 from ..gpu import gl, gl_limits, ibl, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
@@ -81,6 +81,7 @@ class _SceneResources:
         self.full = full
         self.sun_shadow = None  # set by render_scene once the shadow map is drawn
         self.sky_visibility = None  # set by render_scene once the visibility maps are drawn
+        self.camera_textures = None  # set by render_scene where a program reads them (camera_textures.py)
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
@@ -345,6 +346,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     resources = _SceneResources(ctx, scene, full=not plan.specialised, sun=sun)
     if sun is not None and scene.objects:  # the sun's depth pass, before any target of the frame is bound
         resources.sun_shadow = shadow_map.SunShadow(ctx, scene, sun)
+    if camera_textures.needed(scene):  # the camera's depth texture and G-buffer, before the frame
+        resources.camera_textures = camera_textures.CameraTextures(ctx, scene, frame)
     if scene.render.environment_visibility:  # the sky's K maps, from the sky the environment lookup reads
         from ..scene.environment import environment_image
         resources.sky_visibility = environment_visibility.EnvironmentVisibility(
@@ -401,6 +404,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             resources.sun_shadow.release()
         if resources.sky_visibility is not None:
             resources.sky_visibility.release()
+        if resources.camera_textures is not None:
+            resources.camera_textures.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
@@ -435,7 +440,8 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
         material = scene.materials[obj.material]
         source = source_of(material)
         defines = {**draw.plan.defines[obj.material], **source.defines(material)}
-        grabbed = {}
+        # the camera's textures (camera_textures.py) are bound as a grab's, by name
+        grabbed = dict(draw.resources.camera_textures.by_name) if draw.resources.camera_textures else {}
         for material_pass in source.passes(material):
             if material_pass.grab is not None:  # what is drawn so far, for the passes after it
                 grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder)

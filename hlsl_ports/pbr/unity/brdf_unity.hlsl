@@ -14,7 +14,10 @@
 //           vec3 viewDir, UnityLight light, UnityIndirect gi), vec3 BRDF3_Direct, BRDF3_Indirect;
 //           the same with flat parameters (light colour and direction, indirect diffuse and
 //           specular): vec3 pbr_unity_brdf1, pbr_unity_brdf2, pbr_unity_brdf3, and
-//           vec3 pbr_unity_brdf_pbs (Unity's UNITY_BRDF_PBS: the tier's BRDF, PBR_UNITY_BRDF);
+//           vec3 pbr_unity_brdf_pbs (the tier's BRDF, PBR_UNITY_BRDF), and Unity's macro
+//           UNITY_BRDF_PBS with Unity's signature: vec4 pbr_unity_BRDF_PBS(vec3 diffColor, ...,
+//           UnityLight light, UnityIndirect gi) (a vertex/fragment pass calls it: the deferred
+//           light passes);
 //           float pbr_unity_NHxRoughness(float rlPow4, float perceptualRoughness);
 //           float pbr_unity_glossy_environment_perceptual_roughness(float perceptualRoughness).
 // Include:  "pbr/unity/brdf_unity.hlsl" (path relative to hlsl_ports/). pbr/unity/surface_standard.hlsl
@@ -297,4 +300,13 @@ float4 BRDF3_Unity_PBS(float3 diffColor, float3 specColor, float oneMinusReflect
     return float4(pbr_unity_brdf3(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
                                 light.color, light.dir, gi.diffuse, gi.specular), 1.0);
 }
+
+// UNITY_BRDF_PBS (UnityPBSLighting.cginc): the BRDF of the graphics tier (UNITY_PBS_USE_BRDF1/2/3),
+// here the quality tier's (pbr_unity_brdf_pbs).
+float4 pbr_unity_BRDF_PBS(float3 diffColor, float3 specColor, float oneMinusReflectivity, float smoothness,
+                        float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi) {
+    return float4(pbr_unity_brdf_pbs(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir,
+                                   light.color, light.dir, gi.diffuse, gi.specular), 1.0);
+}
+#define UNITY_BRDF_PBS pbr_unity_BRDF_PBS
 #endif

@@ -42,8 +42,9 @@ BLANK_BY_DEFAULT = {
         "keyword, as here) URP's node gives density 0, so the pixel is the fog colour, black here (pbrlab has no "
         "fog; Unity's is its Lighting settings' colour). Checked with density 1: it draws colour (its default matcaps are white)",
     "ColinLeung-NiloCat__UnityURPUnlitScreenSpaceDecalShader/URP_NiloCatExtension_ScreenSpaceDecal_Unlit.shader":
-        "a screen-space decal: it projects the scene's depth (its own sampler2D _CameraDepthTexture, which "
-        "pbrlab draws no depth pre-pass for and leaves unbound) into its box and clips what falls outside: black",
+        "a screen-space decal: it projects the scene's depth (its own sampler2D _CameraDepthTexture, the depth "
+        "pre-pass of the opaque queues, render/camera_textures.py) into its box and clips what falls outside; "
+        "its own sphere is of queue Transparent-499 (2501), so the depth texture holds the far plane only: black",
 }
 
 

@@ -1,5 +1,5 @@
-"""Globals a Unity shader declares itself but only one of Unity's engine subsystems sets (a
-G-buffer of the deferred path, the previous frame's matrices of motion vectors, the terrain's
+"""Globals a Unity shader declares itself but only one of Unity's engine subsystems sets (the
+previous frame's matrices of motion vectors, the terrain's
 tree-imposter lights): the harness has none of those subsystems, so such a global would stay
 zero and draw a picture Unity never shows. A vertex/fragment pass whose drawn variant reads one
 is refused naming it, at its line, before anything is compiled (a compiler would accept the
@@ -15,7 +15,6 @@ from pathlib import Path
 
 from .source_text import UnityShaderError, line_of
 
-_DEFERRED = "the deferred path's G-buffer, which the harness does not render (it shades forward)"
 _MOTION = ("motion vectors: the previous frame's camera and object matrices, which a single still "
            "frame does not have")
 _TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into its billboard "
@@ -23,7 +22,6 @@ _TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into i
 
 # name -> the engine feature that sets it (docs/unity.md, "Unity names set by an engine subsystem").
 ENGINE_FED = {
-    "_CameraNormalsTexture": _DEFERRED,        # the deferred normals buffer (RT2) a depth-normals combine reads
     "_NonJitteredVP": _MOTION, "_PreviousVP": _MOTION, "_PreviousM": _MOTION,
     "_StereoNonJitteredVP": _MOTION, "_StereoPreviousVP": _MOTION,
     "_TerrainTreeLightDirections": _TREE_IMPOSTER, "_TerrainTreeLightColors": _TREE_IMPOSTER,

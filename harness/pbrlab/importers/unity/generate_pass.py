@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import re
 
+from . import deferred
 from . import model as M
 from .cg_types import RENAME_PREFIX, is_reserved
 from .port import port_code_types
@@ -331,7 +332,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
 
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = pbrlab_vary_world_position;", "#endif",
-            _main_light(language)]
+            _main_light(language), deferred.light_assignments(language)]
     args = []
     for qual, kind, name, semantic in vf.fragment_params:
         local = f"pbrlab_arg_{name}"

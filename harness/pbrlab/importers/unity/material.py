@@ -11,11 +11,16 @@ order. A GrabPass copies what is drawn so far; a surface program draws once, or,
 Unity's per-light keywords, as Unity's forward path does (a base program for directional
 lights, ambient and emission, and a ForwardAdd program per other light type, added on top); a
 vertex/fragment pass draws as its LightMode says (ForwardBase once with DIRECTIONAL, ForwardAdd
-once per further light), blended, depth-tested and culled by its own lines.
+once per further light), blended, depth-tested and culled by its own lines; a deferred light
+pass (vertex function vert_deferred) once per scene light, reading the camera's depth texture
+and G-buffer (deferred.py; render/camera_textures.py renders them), in which a Unity shader's
+object of an opaque queue shows Unity's default material (``gbuffer_surface``).
 """
 
 from __future__ import annotations
 
+import dataclasses
+import re
 import warnings
 from pathlib import Path
 
@@ -25,6 +30,7 @@ from ...gpu.programs import set_uniform as _set
 from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
+from . import deferred
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
@@ -56,6 +62,8 @@ def light_programs(unity_pass, defines: dict) -> list[tuple[dict, bool]]:
     ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
     path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
     if unity_pass.kind != "surface":
+        if deferred.is_light_pass(unity_pass):  # the deferred path's: once per light (deferred.py)
+            return [(keyed, False) for keyed in deferred.light_draws(defines)]
         mode = unity_pass.light_mode.lower()
         if mode == "forwardbase":
             return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
@@ -140,8 +148,12 @@ class ProgramPass:
         self.traces_spheres = unity_pass.kind == "surface" and not moves_vertices
 
     def draws(self, defines: dict) -> list:
-        return [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
-                for keyed, additive in light_programs(self.unity_pass, defines)]
+        out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
+               for keyed, additive in light_programs(self.unity_pass, defines)]
+        if deferred.is_light_pass(self.unity_pass):  # lights after the first: the coverage stays
+            out[1:] = [(keyed, dataclasses.replace(state, blend=(*state.blend[:2], moderngl.ZERO, moderngl.ONE))
+                        if state.blend is not None else state) for keyed, state in out[1:]]
+        return out
 
     def program(self, ctx, stem, defines, language, surface, mesh_fragment):
         from . import program as unity_program
@@ -176,7 +188,21 @@ class UnitySource:
 
     def passes(self, material) -> list:
         return [GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices)
-                for p in self.shader.passes]
+                for p in self.shader.passes if not _skipped(p, self.shader.path)]
+
+    def camera_textures(self, material) -> frozenset:
+        """The camera's textures its passes read (render/camera_textures.py renders them; scene/gbuffer_surface.py)."""
+        from ...scene.gbuffer_surface import read_by
+        return frozenset().union(*(read_by(p.program) for p in self.shader.passes if p.kind != "grab"))
+
+    def gbuffer_surface(self, material):
+        """What the object shows in the depth pre-pass and the G-buffer: in the depth texture
+        when its shader's Queue is opaque (Unity's rule: render queue <= 2500, Geometry by
+        default); its surface there Unity's default material's (Default-Material: Standard,
+        white albedo, metallic 0, smoothness 0.5): the harness has no Deferred pass of its own
+        to run (render/camera_textures.py)."""
+        from ...scene.gbuffer_surface import DEFAULT_STANDARD_SURFACE
+        return DEFAULT_STANDARD_SURFACE if _render_queue(self.shader.path) <= _OPAQUE_QUEUE_LIMIT else None
 
     def defines(self, material) -> dict:
         return {k: 1 for k in material.keywords}  # the keywords the material enables
@@ -189,6 +215,33 @@ class UnitySource:
 
     def layers(self, material) -> frozenset:
         return frozenset().union(*(p.layers for p in self.shader.passes if p.kind == "surface"))
+
+
+# Unity's named render queues ("Queue"="Transparent+1"); the depth texture and the G-buffer
+# hold the objects of queue 2500 and below (Unity's manual, "Camera's depth texture").
+_QUEUES = {"background": 1000, "geometry": 2000, "alphatest": 2450, "transparent": 3000, "overlay": 4000}
+_OPAQUE_QUEUE_LIMIT = 2500
+_QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
+
+
+def _render_queue(path: Path) -> int:
+    """The render queue the shader's first Queue tag names (Geometry, 2000, without one)."""
+    from .source_text import blank_comments
+    m = _QUEUE_TAG.search(blank_comments(path.read_text(encoding="utf-8", errors="replace")))
+    if m is None or m.group(1).lower() not in _QUEUES:
+        return _QUEUES["geometry"]
+    return _QUEUES[m.group(1).lower()] + int((m.group(2) or "0").replace(" ", ""))
+
+
+def _skipped(unity_pass, path: Path) -> bool:
+    """A pass of a deferred shader Unity does not draw in the harness's setting (deferred.py), warned."""
+    reason = deferred.skipped_reason(unity_pass)
+    if reason is not None:
+        from . import UnityShaderWarning
+        named = f"Pass '{unity_pass.name}'" if unity_pass.name else "the Pass"
+        warnings.warn(f"{path.name}: {named} at line {unity_pass.program_line} skipped: {reason}",
+                      UnityShaderWarning, stacklevel=3)
+    return reason is not None
 
 
 def reads(path: Path) -> bool:

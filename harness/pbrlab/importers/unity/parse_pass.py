@@ -73,7 +73,14 @@ def _function_signature(masked: str, name: str, where_of):
         return None
     where = where_of(m.start())
     params = [_param(p, where) for p in _split_params(params_text) if p != "void"]
-    return m.group(1), params, rest.group(1) or "", m.start()
+    kind = m.group(1)
+    if masked[:m.start(1)].rstrip().endswith("#"):  # a return type chosen by #if lines (`#ifdef
+        # UNITY_HDR_ON half4 #else fixed4 #endif frag(...)`, Internal-DeferredShading): the last type
+        # written before them (the variants' types are the same type here: half and fixed are float)
+        code = [line for line in masked[:m.start(1)].splitlines() if not line.lstrip().startswith("#")]
+        words = re.findall(IDENT, "\n".join(code)[-200:])
+        kind = words[-1] if words else kind
+    return kind, params, rest.group(1) or "", m.start()
 
 
 # Upper-case macro words (with their arguments) at the start of a struct member's text.

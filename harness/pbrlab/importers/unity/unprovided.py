@@ -41,9 +41,12 @@ UNPROVIDED = {
                     "box-projected and blended reflection probes"),
     **dict.fromkeys(("unity_ProbeVolumeSH", "unity_ProbeVolumeWorldToObject", "SHEvalLinearL0L1_SampleProbeVolume"),
                     "light probe proxy volumes"),
-    **dict.fromkeys(("_CameraDepthNormalsTexture", "DecodeDepthNormal", "_CameraMotionVectorsTexture",
-                     "_CameraGBufferTexture0", "_CameraGBufferTexture1", "_CameraGBufferTexture2"),
-                    "the camera's depth-normals, motion-vector and G-buffer textures"),
+    **dict.fromkeys(("_CameraDepthNormalsTexture", "DecodeDepthNormal", "_CameraMotionVectorsTexture"),
+                    "the camera's depth-normals and motion-vector textures"),
+    # the G-buffer's RT0..RT2 and the depth texture are rendered (render/camera_textures.py); RT3
+    # (emission and ambient, the light buffer the lights add onto) is not
+    "_CameraGBufferTexture3": "the G-buffer's emission and ambient target (RT3), which the harness's G-buffer pre-pass does not make",
+    "unity_LightmapFade": "baked lightmaps, which the harness does not bake (the fade of realtime light into dual lightmaps)",
 }
 _NAME = re.compile(r"\b(" + "|".join(sorted(UNPROVIDED, key=len, reverse=True)) + r")\b")
 
