@@ -327,6 +327,15 @@ def library() -> Symbols:
             _Parser(text, symbols, declarations_only=True).program()
             for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", text, re.M):
                 symbols.aliases.setdefault(m.group(1), m.group(2))
+    # `#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()`: a value of the function's type
+    # (a call of a library function without arguments is the macro's whole body)
+    for rel in LIBRARY_FILES:
+        path = library_file(rel)
+        text = path.read_text(encoding="utf-8") if path.is_file() else ""
+        for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*\([ \t]*\)[ \t]*$", text, re.M):
+            signatures = [sig for sig in symbols.functions.get(m.group(2), []) if not sig.params]
+            if len(signatures) == 1:
+                symbols.globals.setdefault(m.group(1), signatures[0].ret)
     return symbols
 
 
@@ -542,8 +551,8 @@ class _Parser:
             return self.function(t, quals)
         words = {q.text for q in quals}
         if not self.decl_only:
-            for q in quals:
-                if q.text in ("static", "inline"):
+            for q in quals:  # a global's lone `static` stays for port._globals_uniform: not a uniform
+                if q.text == "inline" or (q.text == "static" and "const" in words):
                     self.delete_word(q)
             if not words & {"static", "const", "uniform", "extern"} and t.base != "void":
                 self.edits.open(first.s, "uniform ")

@@ -76,8 +76,14 @@ def _code_segments(text: str):
     return out
 
 
+# HLSL's ``static`` global (a variable of the stage's own, not a uniform; the type pass keeps the
+# word on one that is not const): GLSL's plain global, the word dropped (GLSL reserves it)
+_STATIC_GLOBAL = re.compile(r"^(\s*)static\s+")
+
+
 def _globals_uniform(code: str) -> str:
-    """``uniform`` before global variable declarations (brace depth 0, not functions/structs)."""
+    """``uniform`` before global variable declarations (brace depth 0, not functions/structs);
+    ``static`` dropped before one (_STATIC_GLOBAL)."""
     lines, depth, out = code.split("\n"), 0, []
     decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
     for line in lines:
@@ -85,6 +91,8 @@ def _globals_uniform(code: str) -> str:
             m = decl.match(line)
             if m:
                 line = f"{m.group(1)}uniform {m.group(2)}{line[m.end():]}"
+            else:
+                line = _STATIC_GLOBAL.sub(r"\1", line)
         depth += line.count("{") - line.count("}")
         out.append(line)
     return "\n".join(out)
