@@ -206,7 +206,7 @@ half3 HSVtoRGB(half3 hsv)
 // The particle's colour applied to `albedo` by Color Mode (header).
 #if defined(_COLOROVERLAY_ON)
 #define fragColorMode(i) \
-    albedo.rgb = lerp(1.0 - 2.0 * (1.0 - albedo.rgb) * (1.0 - i.color.rgb), 2.0 * albedo.rgb * i.color.rgb, step(albedo.rgb, 0.5)); \
+    albedo.rgb = lerp(1.0 - 2.0 * (1.0 - albedo.rgb) * (1.0 - i.color.rgb), 2.0 * albedo.rgb * i.color.rgb, step(albedo.rgb, half3(0.5, 0.5, 0.5))); \
     albedo.a *= i.color.a;
 #elif defined(_COLORCOLOR_ON)
 #define fragColorMode(i) \
