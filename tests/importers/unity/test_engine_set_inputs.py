@@ -322,3 +322,25 @@ def test_soft_particles_are_refused_without_a_depth_texture(tmp_path):
     data["materials"]["m"]["keywords"] = ["SOFTPARTICLES_ON"]
     with pytest.raises(PbrlabError, match="_CameraDepthTexture"):
         parse_scene(data, "test scene", tmp_path)
+
+
+# Every feature keyword of the particle shaders compiles, draws finite pixels and agrees across
+# the languages (the structs hold every variant's members: UnityStandardParticles.cginc).
+PARTICLE_VARIANTS = {
+    "Particle Standard Unlit.shader": [["_REQUIRE_UV2"], ["_FADING_ON"], ["EFFECT_BUMP"], ["_NORMALMAP"],
+                                       ["_ALPHATEST_ON"], ["_ALPHABLEND_ON"], ["_ALPHAPREMULTIPLY_ON"],
+                                       ["_ALPHAMODULATE_ON"],
+                                       ["_COLORCOLOR_ON", "_REQUIRE_UV2", "_FADING_ON", "EFFECT_BUMP", "_EMISSION"]],
+    "Particle Standard Surface.shader": [["_REQUIRE_UV2"], ["_FADING_ON"], ["EFFECT_BUMP"], ["_NORMALMAP"],
+                                         ["_METALLICGLOSSMAP"], ["_ALPHABLEND_ON"]],
+}
+
+
+@pytest.mark.parametrize("shader,keywords", [(s, k) for s, ks in sorted(PARTICLE_VARIANTS.items()) for k in ks],
+                         ids=lambda x: "+".join(x) if isinstance(x, list) else x.split(".")[0].replace(" ", "_"))
+def test_standard_particles_variants_render_in_both_languages(tmp_path, shader, keywords):
+    data = corpus.scene_for(BUILTIN / shader)
+    data["materials"]["m"]["keywords"] = keywords
+    images = [_render(data, tmp_path, language) for language in LANGUAGES]
+    assert all(np.isfinite(image).all() for image in images)
+    assert corpus.agreement(*images) <= 1e-4  # test_corpus.py AGREEMENT_BOUND

@@ -1,11 +1,10 @@
 // pbrlab stand-in for Unity's UnityStandardParticles.cginc (Particles/Standard Unlit, Particles/
 // Standard Surface and user shaders written on them).
 //
-// Provides: the vertex input appdata_particles (POSITION, NORMAL, COLOR, TEXCOORD0 and, with
-//   flipbook blending, the blend in TEXCOORD1; TANGENT with _NORMALMAP), the surface Input
-//   (color, texcoord, texcoord2AndBlend, projectedPosition, grabPassPosition as the keywords
-//   enable them) and the unlit pass's VertexOutput (the same, with SV_POSITION and the fog
-//   coordinate); readTexture(tex, Input) and readTexture(tex, VertexOutput); the material's
+// Provides: the vertex input appdata_particles (POSITION, NORMAL, COLOR, TEXCOORD0, the
+//   flipbook blend in TEXCOORD1, TANGENT), the surface Input (color, texcoord,
+//   texcoord2AndBlend, projectedPosition, grabPassPosition) and the unlit pass's VertexOutput
+//   (the same, with SV_POSITION and the fog coordinate); readTexture(tex, Input) and readTexture(tex, VertexOutput); the material's
 //   uniforms (_MainTex, _MainTex_ST, _Color, _BumpMap, _BumpScale, _EmissionMap,
 //   _EmissionColor, _MetallicGlossMap, _Metallic, _Glossiness, _CameraDepthTexture,
 //   _SoftParticleFadeParams, _CameraFadeParams, _Cutoff; _GrabTexture, _DistortionStrengthScaled,
@@ -42,7 +41,7 @@
 //   RGBtoHSV / HSVtoRGB: the branchless conversion of Sam Hocevar ("Fast branchless RGB to HSV
 //   conversion in GLSL", lolengine.net, 2013), which Unity's are: hue from the largest channel's
 //   sextant, with 1e-10 keeping a grey's division finite.
-// Differences: SOFTPARTICLES_ON is refused by keyword (source_text.STAND_IN_REFUSED_KEYWORDS):
+// Differences: the structs' members are there in every variant (see them). SOFTPARTICLES_ON is refused by keyword (source_text.STAND_IN_REFUSED_KEYWORDS):
 //   it reads the camera's depth texture, which the harness does not supply; Unity sets it
 //   globally only when soft particles are on and the camera renders a depth texture, so the
 //   default variant, without it, is what runs. The Standard Particle shader GUI derives
@@ -62,35 +61,28 @@
 #define _DISTORTION_ON 1
 #endif
 
+// The structs hold every member in every variant (Unity's declare the flipbook, fading and
+// distortion members under their keywords): the harness reads a pass's structs once per shader,
+// not per material keywords, and wires its stages by them; a member a variant does not use is
+// written 0 and read by none. TEXCOORD0 is float4 (xy this frame's UV, zw the next frame's),
+// as Unity's vertex fetch gives it whatever the variant reads.
 struct appdata_particles
 {
     float4 vertex : POSITION;
     float3 normal : NORMAL;
     float4 color : COLOR;
-#if defined(_FLIPBOOK_BLENDING)
-    float4 texcoords : TEXCOORD0;          // xy this frame, zw the next
-    float texcoordBlend : TEXCOORD1;       // how far towards the next frame
-#else
-    float2 texcoords : TEXCOORD0;
-#endif
-#if defined(_NORMALMAP)
+    float4 texcoords : TEXCOORD0;          // xy this frame, zw the next (flipbook blending)
+    float texcoordBlend : TEXCOORD1;       // how far towards the next frame (flipbook blending)
     float4 tangent : TANGENT;
-#endif
 };
 
 struct Input
 {
     float4 color : COLOR;
     float2 texcoord;
-#if defined(_FLIPBOOK_BLENDING)
-    float3 texcoord2AndBlend;
-#endif
-#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
-    float4 projectedPosition;              // screen position, z the eye depth
-#endif
-#if defined(_DISTORTION_ON)
-    float4 grabPassPosition;
-#endif
+    float3 texcoord2AndBlend;              // flipbook blending
+    float4 projectedPosition;              // soft particles, camera fading: screen position, z the eye depth
+    float4 grabPassPosition;               // distortion
 };
 
 struct VertexOutput
@@ -99,15 +91,9 @@ struct VertexOutput
     float4 color : COLOR;
     UNITY_FOG_COORDS(0)
     float2 texcoord : TEXCOORD1;
-#if defined(_FLIPBOOK_BLENDING)
     float3 texcoord2AndBlend : TEXCOORD2;
-#endif
-#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
     float4 projectedPosition : TEXCOORD3;
-#endif
-#if defined(_DISTORTION_ON)
     float4 grabPassPosition : TEXCOORD4;
-#endif
 };
 
 sampler2D _MainTex;
@@ -263,6 +249,9 @@ void vert(inout appdata_particles v, out Input o)
 {
     UNITY_INITIALIZE_OUTPUT(Input, o);
     float4 clipPosition = UnityObjectToClipPos(v.vertex);
+    o.texcoord2AndBlend = float3(0.0, 0.0, 0.0);
+    o.projectedPosition = float4(0.0, 0.0, 0.0, 0.0);
+    o.grabPassPosition = float4(0.0, 0.0, 0.0, 0.0);
 #if defined(_FLIPBOOK_BLENDING)
     o.texcoord = v.texcoords.xy;
     o.texcoord2AndBlend = float3(v.texcoords.zw, v.texcoordBlend);
@@ -327,6 +316,9 @@ void vertParticleUnlit(appdata_particles v, out VertexOutput o)
     float4 clipPosition = UnityObjectToClipPos(v.vertex);
     o.vertex = clipPosition;
     o.color = v.color;
+    o.texcoord2AndBlend = float3(0.0, 0.0, 0.0);
+    o.projectedPosition = float4(0.0, 0.0, 0.0, 0.0);
+    o.grabPassPosition = float4(0.0, 0.0, 0.0, 0.0);
     vertTexcoord(v, o);
     vertFading(o);
     vertDistortion(o);
