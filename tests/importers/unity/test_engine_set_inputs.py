@@ -97,14 +97,14 @@ def _tree_scene(shader: Path, properties: dict) -> dict:
     }
 
 
-def _expected_tree_light(n_dot_l_of, object_space: bool = True) -> np.ndarray:
-    """Sum over the first three directional lights of colour x intensity x n_dot_l_of(N.L),
+def _expected_tree_light(n_dot_l_of, object_space: bool = True, slots: int = 3) -> np.ndarray:
+    """Sum over the first ``slots`` directional lights of colour x intensity x n_dot_l_of(N.L),
     N the plane's normal in object space (+Y), L towards the light in object space
     (the mapping), or, for the control, the world-space direction taken as it is."""
     normal = np.array([0.0, 1.0, 0.0])
     to_object = _rotation(PLANE_ROTATE_DEG).T
     total = np.zeros(3)
-    for light in [l for l in TREE_LIGHTS if l["type"] == "directional"][:3]:
+    for light in [l for l in TREE_LIGHTS if l["type"] == "directional"][:slots]:
         towards = -_unit(light["direction"])
         if object_space:
             towards = _unit(to_object @ towards)
@@ -116,10 +116,19 @@ def _expected_tree_light(n_dot_l_of, object_space: bool = True) -> np.ndarray:
 # ambient (no environment). Leaves: the wrap-around diffuse max(0, 0.6 N.L + 0.4), translucency
 # off (_TranslucencyColor 0), the specular off (gloss, _TranslucencyMap's alpha, 0: Leaves has
 # no _SpecColor property).
+# The soft-occlusion Rendertex passes (UnityBuiltin2xTreeLibrary.cginc's imposter path) sum all
+# four slots: bark's colour x max(0, N.L) (_AO tangent.w + _BaseLight), here _AO 0 and _BaseLight
+# 1 (the tangent's sign out of it); leaves' colour x (max(0, tangent . (L _Occlusion, _AO)) +
+# _BaseLight), here _Occlusion and _AO 0: the colours alone (no direction: the control is the
+# count of slots, three instead of four).
 TREE_CASES = {
-    "TreeCreatorBarkRendertex": ({"_SpecColor": [0.0, 0.0, 0.0, 1.0]}, lambda nl: max(0.0, nl)),
-    "TreeCreatorLeavesRendertex": ({"_TranslucencyColor": [0.0, 0.0, 0.0, 1.0], "_TranslucencyMap": "GLOSS_ZERO"},
-                                   lambda nl: max(0.0, 0.6 * nl + 0.4)),
+    "TreeCreator/TreeCreatorBarkRendertex": ({"_SpecColor": [0.0, 0.0, 0.0, 1.0]}, lambda nl: max(0.0, nl), 3),
+    "TreeCreator/TreeCreatorLeavesRendertex": (
+        {"_TranslucencyColor": [0.0, 0.0, 0.0, 1.0], "_TranslucencyMap": "GLOSS_ZERO"},
+        lambda nl: max(0.0, 0.6 * nl + 0.4), 3),
+    "SoftOcclusion/TreeSoftOcclusionBarkRendertex": ({"_AO": 0.0, "_BaseLight": 1.0}, lambda nl: max(0.0, nl), 4),
+    "SoftOcclusion/TreeSoftOcclusionLeavesRendertex": ({"_AO": 0.0, "_Occlusion": 0.0, "_BaseLight": 1.0},
+                                                       lambda nl: 1.0, 4),
 }
 # Float32 bound, relative to the largest channel: N.L is computed per vertex (a normalize of a
 # transformed direction, a 3-term dot: each step within 2^-24 relative, about ten steps), then
@@ -132,22 +141,27 @@ TREE_RELATIVE_BOUND = 2e-6
 @pytest.mark.parametrize("language", LANGUAGES)
 @pytest.mark.parametrize("name", sorted(TREE_CASES))
 def test_tree_imposter_lights_are_the_scenes_directional_lights_in_object_space(tmp_path, name, language):
-    """Every covered pixel of the turned plane is the float64 sum over the scene's first three
-    directional lights (the fourth and the point light not counted); the control, the same
-    sum with world-space directions (no object transform), is far off."""
-    properties, n_dot_l_of = TREE_CASES[name]
+    """Every covered pixel of the turned plane is the float64 sum over the scene's first
+    directional lights the shader reads (three, or the soft-occlusion passes' four; the point
+    light never counted); the control, the same sum with world-space directions (no object
+    transform), or over three slots where no direction is read, is far off."""
+    properties, n_dot_l_of, slots = TREE_CASES[name]
     if properties.get("_TranslucencyMap") == "GLOSS_ZERO":  # white, alpha (gloss) 0
         from pbrlab.foundation.images import write_png
         write_png(tmp_path / "gloss_zero.png", np.array([[[255, 255, 255, 0]]], np.uint8))
         properties = {**properties, "_TranslucencyMap": {"path": str(tmp_path / "gloss_zero.png")}}
-    image = _render(_tree_scene(BUILTIN / "Nature" / "TreeCreator" / f"{name}.shader", properties), tmp_path, language)
-    covered = image[..., 3] > 0
+    data = _tree_scene(BUILTIN / "Nature" / f"{name}.shader", properties)
+    image = _render(data, tmp_path, language)
+    covered = _coverage(data, tmp_path)
     assert covered.mean() > 0.2, f"the plane covers {covered.mean():.2f} of the image"
-    expected = _expected_tree_light(n_dot_l_of)
+    expected = _expected_tree_light(n_dot_l_of, slots=slots)
     bound = TREE_RELATIVE_BOUND * np.abs(expected).max()
     error = np.abs(image[covered][:, :3] - expected).max(axis=1)
     assert (error > bound).mean() == 0.0, f"{(error > bound).mean():.3f} of pixels over {bound:.3g}; worst {error.max():.3g}"
-    world = _expected_tree_light(n_dot_l_of, object_space=False)
+    if slots == 4 and n_dot_l_of(0.0) == 1.0:  # no direction read: the control is the slots' count
+        world = _expected_tree_light(n_dot_l_of, slots=3)
+    else:
+        world = _expected_tree_light(n_dot_l_of, object_space=False, slots=slots)
     control = np.abs(image[covered][:, :3] - world).max(axis=1)
     assert (control > bound).mean() == 1.0, "world-space directions would pass: the test cannot tell the spaces apart"
 

@@ -116,6 +116,10 @@ _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(float|half|fixed)([34](?:x4)?)[
                        r"(?:\[[ \t]*(\d+)[ \t]*\])?[ \t]*;", re.M)
 
 
+_STATIC_DECLARED = re.compile(r"^[ \t]*(static[ \t]+)(float|half|fixed)([34](?:x4)?)[ \t]+(\w+)[ \t]*"
+                              r"(?:\[[ \t]*(\d+)[ \t]*\])?[ \t]*;", re.M)
+
+
 def _outside_braces(text: str) -> str:
     """``text`` with what lies inside braces blanked (newlines kept): the same offsets."""
     out, depth = [], 0
@@ -126,25 +130,30 @@ def _outside_braces(text: str) -> str:
     return "".join(out)
 
 
-def fill_declared(program: str, active_program: str) -> tuple[str, tuple]:
+def _unitys(m) -> bool:
+    """Whether declaration ``m`` (_DECLARED) is of a FILLED name with Unity's type and length."""
+    if m.group(4) not in FILLED:
+        return False
+    kind, count, _ = FILLED[m.group(4)]
+    return f"float{m.group(3)}" == kind and (int(m.group(5)) if m.group(5) else None) == count
+
+
+def fill_declared(program: str, active_program: str, active_included: str = "") -> tuple[str, tuple]:
     """(``program`` with its own declarations of FILLED names made ``static``: a global of
     the stage's own, which its entry point fills (the GLSL port drops the word: a plain
     global), the names so filled). ``active_program``: ``program`` with comments and the
-    branches not drawn blanked (the same offsets). Only a declaration at brace depth 0 with
-    Unity's type and array length (float, half or fixed alike) is taken; any other keeps its
-    name refused (check_engine_inputs)."""
-    taken = []
-    for m in _DECLARED.finditer(_outside_braces(active_program)):
-        if m.group(4) not in FILLED:
-            continue
-        kind, count, _ = FILLED[m.group(4)]
-        if f"float{m.group(3)}" == kind and (int(m.group(5)) if m.group(5) else None) == count:
-            taken.append(m)
+    branches not drawn blanked (the same offsets); ``active_included``: the same of the files
+    it includes, where a ``static`` declaration (a stand-in's: UnityBuiltin2xTreeLibrary.cginc)
+    is filled as it stands. Only a declaration at brace depth 0 with Unity's type and array
+    length (float, half or fixed alike) is taken; any other keeps its name refused
+    (check_engine_inputs)."""
+    taken = [m for m in _DECLARED.finditer(_outside_braces(active_program)) if _unitys(m)]
     text = program
     for m in reversed(taken):  # `uniform float4x4 X;` -> `static float4x4 X;`; `float3 X[4];` -> `static float3 X[4];`
         start = m.start(1) if m.group(1) else m.start(2)
         text = text[:start] + "static " + text[m.start(2):]
-    return text, tuple(dict.fromkeys(m.group(4) for m in taken))
+    static = [m for m in _STATIC_DECLARED.finditer(_outside_braces(active_included)) if _unitys(m)]
+    return text, tuple(dict.fromkeys(m.group(4) for m in taken + static))
 
 
 def fill_statements(filled, language: str) -> str:

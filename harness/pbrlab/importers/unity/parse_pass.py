@@ -126,7 +126,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
     # a global only Unity's engine sets: filled from the scene where the program declares it
     # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused
-    drawn_text, filled = fill_declared(program, everything[:len(masked)])
+    drawn_text, filled = fill_declared(program, everything[:len(masked)], everything[len(masked):])
     if filled and "geometry" not in {m.group(1) for m in _PRAGMA.finditer(masked)}:
         program = drawn_text
     else:
