@@ -358,3 +358,14 @@ def test_standard_particles_variants_render_in_both_languages(tmp_path, shader, 
     images = [_render(data, tmp_path, language) for language in LANGUAGES]
     assert all(np.isfinite(image).all() for image in images)
     assert corpus.agreement(*images) <= 1e-4  # test_corpus.py AGREEMENT_BOUND
+
+
+def test_a_motion_matrix_declared_otherwise_is_refused_naming_unitys_declaration(tmp_path):
+    """A program declaring _PreviousVP otherwise than Unity (float3x3) reads nothing pbrlab
+    fills: refused at its use, saying how Unity declares it."""
+    shader = tmp_path / "other.shader"
+    shader.write_text(MOTION_PASS.replace("float4x4 _PreviousVP;", "float3x3 _PreviousVP;"))
+    outcome = corpus.run_shader(shader, "hlsl")
+    assert outcome.status == "refused"
+    assert "other.shader:" in outcome.message and "uses _PreviousVP, part of motion vectors" in outcome.message
+    assert "declares them as Unity does (float4x4, at global scope)" in outcome.message

@@ -1,7 +1,7 @@
 """Globals a Unity shader declares itself but only one of Unity's engine subsystems sets (a
 G-buffer of the deferred path, the previous frame's matrices of motion vectors, the terrain's
-tree-imposter lights): the harness has none of those subsystems, so such a global would stay
-zero and draw a picture Unity never shows. A vertex/fragment pass whose drawn variant reads one
+tree-imposter lights): where the harness has nothing to fill one from, it would stay zero and
+draw a picture Unity never shows. A vertex/fragment pass whose drawn variant reads one
 is refused naming it, at its line, before anything is compiled (a compiler would accept the
 shader's own declaration).
 
@@ -26,16 +26,20 @@ from pathlib import Path
 from .source_text import UnityShaderError, line_of
 
 _DEFERRED = "the deferred path's G-buffer, which the harness does not render (it shades forward)"
-_MOTION = ("motion vectors: the previous frame's camera and object matrices, which a single still "
-           "frame does not have")
-_TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into its billboard "
-                  "imposter texture (the harness has no terrain)")
+_MOTION = ("motion vectors: the previous frame's camera and object matrices, which pbrlab fills (a still "
+           "frame's) only where the program itself declares them as Unity does (float4x4, at global scope)")
+_STEREO_MOTION = ("motion vectors of a stereo render: each eye's previous-frame matrices (pbrlab renders "
+                  "one eye)")
+_TREE_IMPOSTER = ("the lights Unity's terrain sets when it renders a tree into its billboard imposter "
+                  "texture, which pbrlab fills from the scene's directional lights only where the program "
+                  "itself declares them as Unity does (float3[4] directions, float4[4] colours, at global scope)")
 
-# name -> the engine feature that sets it (docs/unity.md, "Unity names set by an engine subsystem").
+# name -> the engine feature that sets it (docs/unity.md, "Unity names set by an engine subsystem";
+# the ones FILLED below are refused only where not declared as Unity declares them).
 ENGINE_FED = {
     "_CameraNormalsTexture": _DEFERRED,        # the deferred normals buffer (RT2) a depth-normals combine reads
     "_NonJitteredVP": _MOTION, "_PreviousVP": _MOTION, "_PreviousM": _MOTION,
-    "_StereoNonJitteredVP": _MOTION, "_StereoPreviousVP": _MOTION,
+    "_StereoNonJitteredVP": _STEREO_MOTION, "_StereoPreviousVP": _STEREO_MOTION,
     "_TerrainTreeLightDirections": _TREE_IMPOSTER, "_TerrainTreeLightColors": _TREE_IMPOSTER,
 }
 _NAME = re.compile(r"\b(" + "|".join(sorted(ENGINE_FED, key=len, reverse=True)) + r")\b")
