@@ -94,8 +94,8 @@ def check_engine_inputs(active_program: str, path: Path, first_line: int, filled
 # directional lights. The shaders use a direction as the unit vector towards the light in the
 # tree's object space (dot with the object-space v.normal, and half-way with
 # ObjSpaceViewDir), a colour's rgb as the light's colour (times N.L, added): so slot i holds
-# the scene's i-th directional light (scene order; at most 4, the array's length; the corpus
-# shaders read 3): direction normalize(unity_WorldToObject (-light direction, 0)), colour
+# the scene's i-th directional light (scene order; at most 4, the array's length; the TreeCreator
+# Rendertex shaders read 3, the soft-occlusion ones through UnityBuiltin2xTreeLibrary.cginc 4): direction normalize(unity_WorldToObject (-light direction, 0)), colour
 # (color x intensity, 1), the harness's _LightColor0 convention. A slot without a light is no
 # light: colour 0 and direction 0 (a zero direction keeps the shader's normalize(L + V)
 # finite; times colour 0 it adds nothing). Positional lights have no direction to give: a
@@ -118,8 +118,7 @@ FILLED = {
 # a global's declaration: its `uniform` (1), base (2: float|half|fixed), dimensions (3), name (4), length (5)
 _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(float|half|fixed)([34](?:x4)?)[ \t]+(\w+)[ \t]*"
                        r"(?:\[[ \t]*(\d+)[ \t]*\])?[ \t]*;", re.M)
-
-
+# the same groups of a `static` one (a stand-in's own global, filled as it stands)
 _STATIC_DECLARED = re.compile(r"^[ \t]*(static[ \t]+)(float|half|fixed)([34](?:x4)?)[ \t]+(\w+)[ \t]*"
                               r"(?:\[[ \t]*(\d+)[ \t]*\])?[ \t]*;", re.M)
 
