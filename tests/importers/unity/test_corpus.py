@@ -74,6 +74,9 @@ BLANK_BY_DEFAULT = {
     "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Utils/TerrainHeightBlitCopy.shader":
         "PackHeightmap(height * _Height_Scale + _Height_Offset): neither has a Property (the terrain sets "
         "them), so both are 0",
+    "builtin-2019.4/DefaultResourcesExtra/Internal-MotionVectors.shader":
+        "camera motion of a still camera (the previous frame's matrices are this one's): (0, 0, 0, 1) "
+        "at every pixel (tests/importers/unity/test_engine_set_inputs.py)",
     "builtin-2019.4/DefaultResourcesExtra/Sprites-Mask.shader":
         "ColorMask 0: a sprite mask writes the stencil only (it drew white while ColorMask was ignored)",
     # their Category's Blend (read since Category commands reach its SubShaders) multiplies what

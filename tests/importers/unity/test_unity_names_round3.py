@@ -214,21 +214,22 @@ def test_object_to_clip_pos_ods_is_the_mono_clip_position(tmp_path, language):
 
 
 ENGINE_FED = """\
-            return mul(_PreviousVP, float4(i.uv, 0, 1));"""
+            return mul(_StereoPreviousVP[0], float4(i.uv, 0, 1));"""
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_a_global_only_the_engine_sets_is_refused_by_name(tmp_path, language):
-    """A pass reading _PreviousVP (motion vectors: the previous frame's matrices) is refused
-    at its line, naming it; declaring it without reading it (the control) renders."""
-    reads = _shader(tmp_path, "reads", ENGINE_FED, globals_="        float4x4 _PreviousVP;")
+    """A pass reading _StereoPreviousVP (stereo motion vectors: the previous frame's matrices
+    per eye; the mono ones are filled from the scene, test_engine_set_inputs.py) is refused at
+    its line, naming it; declaring it without reading it (the control) renders."""
+    reads = _shader(tmp_path, "reads", ENGINE_FED, globals_="        float4x4 _StereoPreviousVP[2];")
     with pytest.raises(PbrlabError) as caught:
         _render(tmp_path, reads, language)
     message = str(caught.value)
-    assert "reads.shader:" in message and "uses _PreviousVP, part of motion vectors" in message
+    assert "reads.shader:" in message and "uses _StereoPreviousVP, part of motion vectors" in message
     assert "\n" not in message.split("reads.shader", 1)[1].split("pbrlab does not provide it")[0]
     declares = _shader(tmp_path, "declares", "            return float4(i.uv, 0, 1);",
-                       globals_="        float4x4 _PreviousVP;")
+                       globals_="        float4x4 _StereoPreviousVP[2];")
     assert _covered(_render(tmp_path, declares, language)).any()
 
 

@@ -555,8 +555,8 @@ class _Parser:
             return self.function(t, quals)
         words = {q.text for q in quals}
         if not self.decl_only:
-            for q in quals:
-                if q.text in ("static", "inline"):
+            for q in quals:  # a global's lone `static` stays for port._globals_uniform: not a uniform
+                if q.text == "inline" or (q.text == "static" and "const" in words):
                     self.delete_word(q)
             if not words & {"static", "const", "uniform", "extern"} and t.base != "void":
                 self.edits.open(first.s, "uniform ")

@@ -22,6 +22,7 @@ import re
 from . import deferred
 from . import model as M
 from .cg_types import RENAME_PREFIX, is_reserved
+from .engine_inputs import fill_statements
 from .port import port_code_types
 from .source_text import UnityShaderError, component_count
 
@@ -255,7 +256,7 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = {_world_position(language)};",
             "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language),
-            _vertex_lights(language)]
+            _vertex_lights(language), fill_statements(vf.engine_filled, language)]
     args = []
     for qual, kind, name, semantic in vf.vertex_params:
         local = f"pbrlab_arg_{name}"
@@ -332,7 +333,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
 
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = pbrlab_vary_world_position;", "#endif",
-            _main_light(language), deferred.light_assignments(language)]
+            _main_light(language), deferred.light_assignments(language), fill_statements(vf.engine_filled, language)]
     args = []
     for qual, kind, name, semantic in vf.fragment_params:
         local = f"pbrlab_arg_{name}"

@@ -190,6 +190,7 @@ class VertexFragmentPass:
     # declares (a struct of one include built in another, a property of the program read in an
     # include); the built-in pipeline's programs keep per-file ports, as Unity's Cg
     srp: bool = False
+    engine_filled: tuple = ()       # engine-set globals the scene fills (engine_inputs.FILLED)
     output_fields = {}              # (a surface program's output struct; none here)
     kind = "vertex-fragment"
 

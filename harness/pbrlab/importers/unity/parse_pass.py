@@ -14,7 +14,7 @@ from . import model as M
 from .geometry_syntax import parse_geometry
 from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
-from .engine_inputs import check_engine_inputs
+from .engine_inputs import check_engine_inputs, fill_declared
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -144,7 +144,14 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     on = [k for k in keywords if k in declared_keywords(program)]
     everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
-    check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
+    # a global only Unity's engine sets: filled from the scene where the program declares it
+    # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused
+    drawn_text, filled = fill_declared(program, everything[:len(masked)], everything[len(masked):])
+    if filled and "geometry" not in {m.group(1) for m in _PRAGMA.finditer(masked)}:
+        program = drawn_text
+    else:
+        filled = ()
+    check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
 
     def where(index: int) -> str:
@@ -186,7 +193,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
-        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry)
+        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, engine_filled=filled)
     vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
                                        r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     return vf

@@ -77,8 +77,33 @@ def _code_segments(text: str):
     return out
 
 
+# HLSL's ``static`` global (a variable of the stage's own, not a uniform; the type pass keeps the
+# word on one that is not const): GLSL's plain global, the word dropped (GLSL reserves it). HLSL
+# zero-initialises a static without an initialiser; GLSL leaves a global undefined, so one of a
+# numeric type gets the zero written out.
+_STATIC_GLOBAL = re.compile(r"^(\s*)static\s+")
+_STATIC_UNINITIALISED = re.compile(r"^(\s*)static\s+((?:[biu]?vec[234]|mat[234](?:x[234])?|float|int|uint|bool))\s+"
+                                   r"(\w+)\s*(?:\[\s*(\d+)\s*\])?\s*;")
+
+
+def _static_global(line: str) -> str:
+    """A depth-0 line that declares a ``static`` global, as GLSL's plain global (above)."""
+    m = _STATIC_UNINITIALISED.match(line)
+    if m is None:
+        return _STATIC_GLOBAL.sub(r"\1", line)
+    indent, kind, name, count = m.groups()
+    zero = f"{kind}(0)"
+    if count:
+        size = f"[{count}]"
+        value = f"{kind}{size}({', '.join([zero] * int(count))})"
+    else:
+        size, value = "", zero
+    return f"{indent}{kind} {name}{size} = {value};{line[m.end():]}"
+
+
 def _globals_uniform(code: str) -> str:
-    """``uniform`` before global variable declarations (brace depth 0, not functions/structs)."""
+    """``uniform`` before global variable declarations (brace depth 0, not functions/structs);
+    ``static`` dropped before one (_STATIC_GLOBAL)."""
     lines, depth, out = code.split("\n"), 0, []
     decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
     for line in lines:
@@ -86,6 +111,8 @@ def _globals_uniform(code: str) -> str:
             m = decl.match(line)
             if m:
                 line = f"{m.group(1)}uniform {m.group(2)}{line[m.end():]}"
+            else:
+                line = _static_global(line)
         depth += line.count("{") - line.count("}")
         out.append(line)
     return "\n".join(out)

@@ -270,6 +270,10 @@ STAND_IN_REFUSED_KEYWORDS = {
         "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
                                    "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
     },
+    "UnityStandardParticles.cginc": {
+        "SOFTPARTICLES_ON": "soft particles fade by the scene's depth in the camera's depth texture "
+                            "(_CameraDepthTexture), which pbrlab does not supply",
+    },
 }
 
 
