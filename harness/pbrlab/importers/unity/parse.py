@@ -765,7 +765,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         from .glslprogram import glsl_pass, implicit_samplers, note
         text, first = layout.program_text(p.program, sub)
         vf = glsl_pass(text, path, first, p)
-        notes.append(note(path, first))
+        notes.append(note(path, first, text))
         for kind, name in implicit_samplers(text):  # a texture Unity binds by default, as for Cg
             props.setdefault(name, M.Property(name, name, kind, "white", ("implicit",)))
         apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
