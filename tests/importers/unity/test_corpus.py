@@ -68,6 +68,9 @@ BLANK_BY_DEFAULT = {
         "ColorMask 0 (ZWrite On): it resolves a multisampled depth texture into the depth buffer, no colour",
     "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/BlitTexArraySliceToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a layer of a depth texture array into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/BlitTexArraySliceToDepth_MSAA.shader":
+        "ColorMask 0 (ZWrite On): it resolves a layer of a multisampled depth texture array into the depth "
+        "buffer, no colour (its read is under SHADER_API_D3D11; the variant drawn writes depth 0.9)",
     "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Utils/CrossBlendNeighbors.shader":
         "PackHeightmap of heights from _TopTex/_BottomTex/_LeftTex/_RightTex, which default to black, plus "
         "_Offsets (no Property; the terrain sets it): 0",
