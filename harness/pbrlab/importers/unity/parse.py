@@ -691,7 +691,7 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             if block.language != "CG":
                 raise UnityShaderError(f"{path}:{block.line}: {block.keyword} is not supported: pbrlab runs "
                                        "CGPROGRAM blocks (Unity's built-in render pipeline)")
-            if pipeline is not BUILTIN:
+            if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
                 raise UnityShaderError(f"{path}:{block.line}: a surface program (#pragma surface) belongs to Unity's "
                                        f"built-in render pipeline, not {pipeline.name}")
             program, first = layout.program_text(block, sub)
@@ -702,8 +702,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             warnings.extend(shader.warnings)
             shader.warnings = warnings
             passes.append(shader)
-        elif kind == "pass" and item[1].light_mode.lower() == "vertex" and forward:
-            notes.append(f"{path}:{item[1].line}: Pass (LightMode Vertex) skipped: its SubShader has "
+        elif kind == "pass" and forward and item[1].light_mode.lower() in ("vertex", "vertexlm", "vertexlmrgbm") \
+                and item[1].light_mode.lower() in pipeline.drawn:  # a lightmapped object's VertexLM too (lightmaps.py)
+            notes.append(f"{path}:{item[1].line}: Pass (LightMode {item[1].light_mode}) skipped: its SubShader has "
                          "ForwardBase passes, which Unity's forward path draws instead")
         elif kind == "pass":
             vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
@@ -752,7 +753,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         if not p.fixed_function and state.color_mask == "0":
             notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
             return None
-        if pipeline is not BUILTIN:
+        if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
             raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
                                    "runs programmable passes only")
         # Unity generates a program for a fixed-function pass (a pass with no command at all
@@ -772,7 +773,8 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         return vf
     if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
-                               + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN
+                               + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)"
+                                  if pipeline.name == BUILTIN.name
                                   else f"{pipeline.name} runs CGPROGRAM and HLSLPROGRAM blocks"))
     program, first = layout.program_text(p.program, sub)
     for pattern, replacement in pipeline.spellings:

@@ -14,6 +14,7 @@ from . import model as M
 from .geometry_syntax import parse_geometry
 from .conditionals import active_text, defines_of
 from .engine_inputs import check_engine_inputs
+from .lightmaps import declares_lightmap_on
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -122,7 +123,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
-    on = [k for k in keywords if k in declared_keywords(program)]
+    on = [k for k in keywords if k in declared_keywords(program)
+          or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))]  # a lightmapped object's (lightmaps.py)
     everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
     check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
 
