@@ -62,6 +62,9 @@ BLANK_BY_DEFAULT = {
         "ColorMask 0 and a fragment returning 0: it occludes, it draws no colour",
     "builtin-2019.4/DefaultResourcesExtra/VideoComposite.shader":
         "fixed4(tex2D(_MainTex).rgb, ...): _MainTex defaults to black (the video player binds the frame)",
+    "builtin-2019.4/DefaultResourcesExtra/GIDebug/ShowLightMask.shader":
+        "discards every fragment: dot(_ChannelSelect, texel) is 0 with _ChannelSelect unset (no Property; the "
+        "GI debug view sets it); on the corpus scene's lightmapped sphere (unity_LightmapST)",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a depth texture into the depth buffer, no colour",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth_MSAA.shader":
