@@ -247,3 +247,20 @@ def test_a_surface_shader_with_a_lightmap_is_refused(tmp_path):
     """))
     with pytest.raises(PbrlabError, match="a surface shader with a lightmap: pbrlab's surface programs do not draw"):
         _render(tmp_path, surface, "glsl", {"path": str(path)})
+
+
+def test_a_surface_program_reading_the_lightmap_without_one_is_refused(tmp_path):
+    """A surface program's own read of unity_LightmapST (a vertex: function) is refused at its
+    line too: with no lightmap it would read zeros."""
+    surface = tmp_path / "surflm.shader"
+    surface.write_text(textwrap.dedent("""
+        Shader "t/surflm" { SubShader { CGPROGRAM
+        #pragma surface surf Lambert vertex:vert
+        struct Input { float2 lm; };
+        void vert (inout appdata_full v, out Input o) {
+            UNITY_INITIALIZE_OUTPUT(Input, o); o.lm = v.texcoord1.xy * unity_LightmapST.xy; }
+        void surf (Input IN, inout SurfaceOutput o) { o.Albedo = float3(IN.lm, 0); }
+        ENDCG } }
+    """))
+    with pytest.raises(PbrlabError, match=r"surflm\.shader:6: uses unity_LightmapST, part of baked lightmaps"):
+        _render(tmp_path, surface, "glsl")

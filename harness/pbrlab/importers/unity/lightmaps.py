@@ -20,8 +20,9 @@ The harness bakes nothing; it draws what Unity draws for an object with that lig
   Quality on mobile: 8-bit, sampled as sRGB, decoded 4.59482 rgb). Linear colour space
   throughout, as the harness renders. Sampled bilinearly with mipmaps, clamped to the edge;
 - ``LIGHTMAP_ON`` is defined in each vertex/fragment program that declares it (its
-  ``#pragma multi_compile`` lines, or ``multi_compile_fwdbase``, whose variants include it), as
-  Unity sets it for a lightmapped renderer;
+  ``#pragma multi_compile`` lines, or ``multi_compile_fwdbase``, whose variants include it: Unity
+  manual, "Shader variants and keywords", its built-in shortcuts), as Unity sets it for a
+  lightmapped renderer;
 - a lightmapped object's legacy vertex-lit pass is its ``VertexLMRGBM`` pass (``VertexLM`` for a
   dLDR lightmap) instead of its ``Vertex`` pass, as in Unity's vertex-lit path (Unity manual,
   "Pass tags": VertexLMRGBM for RGBM-encoded lightmaps on PC and consoles, VertexLM for
@@ -135,7 +136,7 @@ _FWDBASE = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+multi_compile_fwdbase\b", re.M
 
 def declares_lightmap_on(program: str) -> bool:
     """Whether ``program`` has a LIGHTMAP_ON variant: a multi_compile/shader_feature naming it,
-    or multi_compile_fwdbase (Unity manual, "Declaring and using shader keywords": its set of
+    or multi_compile_fwdbase (Unity manual, "Shader variants and keywords": its set of
     ForwardBase keywords includes LIGHTMAP_ON)."""
     return "LIGHTMAP_ON" in declared_keywords(program) or bool(_FWDBASE.search(blank_comments(program)))
 
@@ -164,7 +165,9 @@ def check_reads(shader, lightmap: Lightmap | None, r, keywords=()) -> None:
                 r.fail(f"{p.path}:{p.program_line}: LIGHTMAP_ON (set for a lightmapped object): {reason}",
                        "lightmap")
         return
-    for p in programs_drawn:
+    read_by = programs_drawn + [p for p in shader.passes if getattr(p, "kind", "") == "surface"
+                                and getattr(p, "language", "") == "hlsl"]
+    for p in read_by:  # a surface program reading one would read zeros: refused as well
         found = first_read(p.program, keywords)
         if found:
             name, offset = found
