@@ -127,6 +127,9 @@ def vertex_lit_passes(passes: list, lightmap: Lightmap | None) -> list:
     return passes
 
 
+# Textures Unity's engine binds per renderer, which no material property sets (parse's implicit
+# texture properties leave them out): the supplied lightmap's.
+ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap"})
 # What a supplied lightmap provides (cginc/UnityLightmapDecoding.cginc).
 SUPPLIED = ("unity_Lightmap", "unity_LightmapST", "unity_Lightmap_HDR", "DecodeLightmap", "DecodeLightmapRGBM",
             "DecodeLightmapDoubleLDR")

@@ -21,6 +21,7 @@ from ...scene.surface_layers import written_layers
 from . import model as M
 from .conditionals import active_text, defines_of
 from .engine_inputs import check_engine_inputs
+from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
@@ -491,7 +492,7 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
     masked = re.sub(r"\bUNITY_DECLARE_TEXCUBE\s*\(\s*(\w+)\s*\)", r"samplerCUBE \1", masked)
     masked = re.sub(r"\bsampler2D_(?:float|half)\b", "sampler2D", masked)
     for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + IDENT + r")\s*;", masked):
-        if name not in properties:
+        if name not in properties and name not in ENGINE_SET_TEXTURES:  # (the object's lightmap: lightmaps.py)
             properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
                                           ("implicit",))
     for name in re.findall(r"\bUNITY_DECLARE_TEX2DARRAY(?:_NOSAMPLER)?\s*\(\s*(" + IDENT + r")\s*\)", masked):
