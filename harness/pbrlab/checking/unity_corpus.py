@@ -87,7 +87,8 @@ def _reads_lightmap(shader: Path) -> bool:
     reader refuses (its render says why)."""
     from ..importers.unity import BUILTIN, read_shader
     from ..importers.unity.lightmaps import needs_lightmap
-    if Path(shader).suffix != ".shader":
+    from ..importers.urp import material as urp
+    if Path(shader).suffix != ".shader" or urp.reads(Path(shader)):  # a URP shader: no supplied lightmap
         return False
     try:
         return needs_lightmap(read_shader(Path(shader), BUILTIN))

@@ -241,7 +241,8 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
         if refused:
             r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
-    lightmaps.check_reads(shader, lightmap, r, m.keywords)
+    if pipeline in (None, BUILTIN):  # (URP's package stand-ins have their own lightmap macros)
+        lightmaps.check_reads(shader, lightmap, r, m.keywords)
     surface = shader.surface
     if surface is not None:
         m.alpha_mode = surface.pragma.alpha_mode
