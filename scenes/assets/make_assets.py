@@ -1,7 +1,8 @@
 """Generates the example scenes' assets (committed next to this script; run it again to
 rebuild them byte for byte): procedural brick textures (albedo and emission as sRGB
 colour, normal and metallic/smoothness as linear data), a leaf with an alpha cut-out, an
-HDR sky (equirectangular EXR), and a UV-mapped cushion model (OBJ).
+HDR sky (equirectangular EXR), a UV-mapped cushion model (OBJ), and an RGBM-encoded baked
+lightmap (8-bit RGBA: the Unity corpus scene's supplied lightmap, importers/unity/lightmaps.py).
 
     .venv/bin/python scenes/assets/make_assets.py
 """
@@ -117,10 +118,23 @@ def torture():
     images.write_exr(HERE / "broken_sky.exr", sky_image)
 
 
+def lightmap():
+    """A 16 x 16 RGBM lightmap (Unity's Normal Quality encoding: decoded 34.49 a^2.2 rgb, rgb
+    sampled as sRGB): a warm light falling off across u, a cool one along v, the multiplier
+    brightest at the centre; every texel a different value."""
+    n = 16
+    v, u = np.meshgrid((np.arange(n) + 0.5) / n, (np.arange(n) + 0.5) / n, indexing="ij")
+    rgb = np.stack([0.25 + 0.7 * u, 0.35 + 0.3 * u * v, 0.3 + 0.65 * v], axis=-1)
+    m = 0.2 + 0.6 * np.exp(-((u - 0.5) ** 2 + (v - 0.5) ** 2) * 4.0)
+    rgbm = np.concatenate([rgb, m[..., None]], axis=-1)
+    images.write_png(HERE / "lightmap_rgbm.png", np.round(rgbm * 255).astype(np.uint8))
+
+
 if __name__ == "__main__":
     bricks()
     leaf()
     sky()
     cushion()
     torture()
+    lightmap()
     print(f"wrote assets to {HERE}")

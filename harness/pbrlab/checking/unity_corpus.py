@@ -52,9 +52,21 @@ def corpus_shaders(root: Path) -> list[Path]:
     return sorted(p for p in Path(root).rglob("*.shader") if p.is_file())
 
 
+# The corpus scene's supplied lightmap (importers/unity/lightmaps.py; scenes/assets/make_assets.py),
+# for a shader whose drawn vertex/fragment program reads one: the sphere's lightmap UVs (its one UV
+# set) scaled by a half and offset by a quarter, into the middle of the image.
+LIGHTMAP = {"path": str(locate("scenes") / "assets" / "lightmap_rgbm.png"), "encoding": "rgbm",
+            "scale_offset": [0.5, 0.5, 0.25, 0.25]}
+
+
 def scene_for(shader: Path) -> dict:
     """A small scene that shows a shader: a UV sphere (mesh: UVs, tangents, vertices a
-    vertex function can move) under a directional and a point light and the sky."""
+    vertex function can move) under a directional and a point light and the sky; a lightmapped
+    sphere (LIGHTMAP) where the shader's drawn vertex/fragment program reads Unity's lightmap,
+    which it cannot run without (every other shader sees the sphere as it always has)."""
+    material = {"surface": str(shader)}
+    if _reads_lightmap(shader):
+        material["lightmap"] = dict(LIGHTMAP)
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
                    "size": list(SIZE)},
@@ -63,10 +75,25 @@ def scene_for(shader: Path) -> dict:
             {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
         ],
         "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
-        "materials": {"m": {"surface": str(shader)}},
+        "materials": {"m": material},
         "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
         "render": {"quality": "high", "tonemap": "khronos_neutral"},
     }
+
+
+def _reads_lightmap(shader: Path) -> bool:
+    """Whether ``shader`` (a Unity .shader read without a lightmap) draws a vertex/fragment
+    program that reads the object's lightmap; False for anything else, and for a shader the
+    reader refuses (its render says why)."""
+    from ..importers.unity import BUILTIN, read_shader
+    from ..importers.unity.lightmaps import needs_lightmap
+    from ..importers.urp import material as urp
+    if Path(shader).suffix != ".shader" or urp.reads(Path(shader)):  # a URP shader: no supplied lightmap
+        return False
+    try:
+        return needs_lightmap(read_shader(Path(shader), BUILTIN))
+    except PbrlabError:
+        return False
 
 
 def run_shader(shader: Path, language: str) -> Outcome:

@@ -140,6 +140,15 @@ def _material(texture_slots, brdf_terms) -> dict:
                        "type": "object"},
         "keywords": {"description": "The Unity shader keywords to enable (its multi_compile / shader_feature).",
                      "type": "array", "items": {"type": "string"}},
+        "lightmap": {"description": "A Unity shader's baked lightmap, supplied (the harness bakes none): the image "
+                                    "(unity_Lightmap), scale_offset (unity_LightmapST: scale xy, offset zw of the "
+                                    "mesh's second UV set) and encoding (full_hdr: default for .exr/.hdr; rgbm: "
+                                    "default for others; dldr). Sets LIGHTMAP_ON where a pass declares it.",
+                     "type": "object", "additionalProperties": False, "required": ["path"],
+                     "properties": {"path": {"type": "string", "minLength": 1},
+                                    "scale_offset": {"type": "array", "items": {"type": "number"},
+                                                     "minItems": 4, "maxItems": 4},
+                                    "encoding": {"enum": ["full_hdr", "rgbm", "dldr"]}}},
     })
     material["allOf"] = [
         # the workflow's own F0 field: metallic or specular, not the other's
@@ -157,7 +166,7 @@ def _material(texture_slots, brdf_terms) -> dict:
     material["dependentSchemas"] = {k: {"required": ["transmission"],
                                         "properties": {"transmission": {"exclusiveMinimum": 0}}}
                                     for k in TRANSMISSION_KEYS[1:]}
-    material["dependentRequired"] = {"properties": ["surface"], "keywords": ["surface"]}
+    material["dependentRequired"] = {"properties": ["surface"], "keywords": ["surface"], "lightmap": ["surface"]}
     return material
 
 

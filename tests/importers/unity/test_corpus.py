@@ -62,12 +62,18 @@ BLANK_BY_DEFAULT = {
         "ColorMask 0 and a fragment returning 0: it occludes, it draws no colour",
     "builtin-2019.4/DefaultResourcesExtra/VideoComposite.shader":
         "fixed4(tex2D(_MainTex).rgb, ...): _MainTex defaults to black (the video player binds the frame)",
+    "builtin-2019.4/DefaultResourcesExtra/GIDebug/ShowLightMask.shader":
+        "discards every fragment: dot(_ChannelSelect, texel) is 0 with _ChannelSelect unset (no Property; the "
+        "GI debug view sets it); on the corpus scene's lightmapped sphere (unity_LightmapST)",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a depth texture into the depth buffer, no colour",
     "builtin-2019.4/DefaultResourcesExtra/Internal-BlitToDepth_MSAA.shader":
         "ColorMask 0 (ZWrite On): it resolves a multisampled depth texture into the depth buffer, no colour",
     "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/BlitTexArraySliceToDepth.shader":
         "ColorMask 0 (ZWrite On): it copies a layer of a depth texture array into the depth buffer, no colour",
+    "builtin-2019.4/DefaultResourcesExtra/VR/Shaders/BlitTexArraySliceToDepth_MSAA.shader":
+        "ColorMask 0 (ZWrite On): it resolves a layer of a multisampled depth texture array into the depth "
+        "buffer, no colour (its read is under SHADER_API_D3D11; the variant drawn writes depth 0.9)",
     "builtin-2019.4/DefaultResourcesExtra/TerrainShaders/Utils/CrossBlendNeighbors.shader":
         "PackHeightmap of heights from _TopTex/_BottomTex/_LeftTex/_RightTex, which default to black, plus "
         "_Offsets (no Property; the terrain sets it): 0",

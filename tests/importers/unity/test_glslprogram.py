@@ -169,8 +169,7 @@ def test_a_rectangle_texture_reads_the_texel_at_unnormalised_coordinates(tmp_pat
 
 
 @pytest.mark.parametrize("head, named", [
-    ("#pragma only_renderers gles3", "only_renderers gles3: Unity compiles this GLSLPROGRAM only for"),
-    ("#extension GL_OES_EGL_image_external : require", "GL_OES_EGL_image_external: an external"),
+    ("#pragma only_renderers d3d11 metal", "only_renderers d3d11 metal: Unity compiles this GLSLPROGRAM only for"),
 ])
 @pytest.mark.parametrize("language", ["glsl", "hlsl"])
 def test_what_desktop_gl_lacks_is_named(tmp_path, head, named, language):
@@ -201,3 +200,62 @@ def test_unitycg_glslinc_transforms_texture_coordinates(tmp_path):
     image = _render(tmp_path, "glsl", "glslinc", text=text.format(name="glslinc", tint=", ".join(map(str, TINT)),
                                                                   colour="vec4(uv * _Tint.xy, _Tint.z, 1.0)"))
     assert problems(image, *expected(image.shape[:2])) == []
+
+
+ES_SNIPPET = SNIPPET.replace("GLSLPROGRAM\n", "GLSLPROGRAM\n        #pragma only_renderers {renderers}\n"
+                             "        precision mediump float;\n").replace(
+    "void main() {{ gl_FragColor = {colour}; }}",
+    "void main() {{\n        #ifdef SHADER_API_GLES3\n            gl_FragColor = {colour};\n"
+    "        #else\n            gl_FragColor = vec4(uv.yx, 0.0, 1.0);\n        #endif\n        }}")
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_gles3_only_snippet_runs_as_unity_compiles_it_for_gles3(tmp_path, language):
+    """``#pragma only_renderers gles3``: compiled as for OpenGL ES 3 (SHADER_API_GLES3 defined, a
+    precision statement accepted), its UVs where float64 says, within UV_BOUND; a note says so."""
+    text = ES_SNIPPET.format(name="es", renderers="gles3", tint=", ".join(map(str, TINT)),
+                             colour="vec4(uv * _Tint.xy, _Tint.z, 1.0)")
+    with pytest.warns(UnityShaderNote, match=r"for OpenGL ES only \(SHADER_API_GLES3\)"):
+        image = _render(tmp_path, language, "es", text=text)
+    assert problems(image, *expected(image.shape[:2])) == []
+
+
+def test_a_snippet_for_desktop_and_es_takes_the_desktop_branch(tmp_path):
+    """The control: with glcore among its renderers the snippet is compiled for desktop GL
+    (SHADER_API_GLES3 undefined), whose branch writes (v, u, 0): the expectation fails."""
+    text = ES_SNIPPET.format(name="both", renderers="glcore gles3", tint=", ".join(map(str, TINT)),
+                             colour="vec4(uv * _Tint.xy, _Tint.z, 1.0)")
+    image = _render(tmp_path, "glsl", "both", text=text)
+    assert problems(image, *expected(image.shape[:2]))
+
+
+def _external(tmp_path, name, head, sampler, read, texture):
+    text = SNIPPET.replace("GLSLPROGRAM\n", f"GLSLPROGRAM\n        {head}\n").replace(
+        "uniform vec4 _Tint;", f'#include "UnityCG.glslinc"\n        uniform vec4 _Tint; uniform {sampler} _MainTex;')
+    shader = tmp_path / f"{name}.shader"
+    shader.write_text(textwrap.dedent(text.format(name=name, tint="1, 1, 1", colour=read)))
+    data = corpus.scene_for(shader)
+    data["camera"] = CAMERA
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": SIZE}, "material": "m"}]
+    data["materials"]["m"]["properties"] = {"_MainTex": {"path": str(texture)}}
+    return render_scene(parse_scene(data, "t", tmp_path), language="glsl").linear
+
+
+@pytest.mark.parametrize("extension, read", [
+    ("#extension GL_OES_EGL_image_external : require", "textureExternal(_MainTex, uv)"),
+    ("#extension GL_OES_EGL_image_external_essl3 : require", "texture(_MainTex, uv)"),
+])
+def test_an_external_image_is_the_materials_2d_texture(tmp_path, extension, read):
+    """A ``samplerExternalOES`` reads the texture the material gives the property, as a
+    ``sampler2D`` of it reads (the same texels and weights: equal to float32 rounding, 1e-6);
+    the control, the same texture read mirrored, differs."""
+    from pbrlab.foundation.images import write_png
+    texture = tmp_path / "frame.png"
+    write_png(texture, np.random.default_rng(3).integers(0, 256, (4, 6, 4), dtype=np.uint8))
+    with pytest.warns(UnityShaderNote, match="external image .samplerExternalOES. is the property's 2D texture"):
+        external = _external(tmp_path, "external", extension, "samplerExternalOES", read, texture)
+    plain = _external(tmp_path, "plain", "", "sampler2D", "texture2D(_MainTex, uv)", texture)
+    mirrored = _external(tmp_path, "mirrored", "", "sampler2D", "texture2D(_MainTex, 1.0 - uv)", texture)
+    assert (external[..., 3] > 0).mean() > 0.3 and np.ptp(plain[..., :3]) > 0.1
+    np.testing.assert_allclose(external, plain, rtol=0, atol=1e-6)
+    assert (np.abs(mirrored - plain).max(-1) > 1e-6).mean() > 0.1

@@ -96,7 +96,7 @@ _CG_TYPE = re.compile(r"(float|half|fixed|double|min16float|min10float|int|min16
                       r"(?:([1-4])(?:x([1-4]))?)?")
 _GLSL_TYPE = re.compile(r"(?:(vec|ivec|uvec|bvec)([2-4])|mat([2-4])(?:x([2-4]))?)")
 _GLSL_VEC_BASE = {"vec": "float", "ivec": "int", "uvec": "uint", "bvec": "bool"}
-_OPAQUE = re.compile(r"sampler(?:1D|2D|3D|CUBE|Cube|2DShadow|2D_float|2D_half|CUBE_float|CUBE_half|2DArray)?|"
+_OPAQUE = re.compile(r"sampler(?:1D|2D|3D|CUBE|Cube|2DShadow|2D_float|2D_half|CUBE_float|CUBE_half|2DArray|2DMS|2DMSArray)?|"
                      r"Texture[123]D(?:Array)?|TextureCube|SamplerState|SamplerComparisonState")
 VOID = Type("void", 0)
 

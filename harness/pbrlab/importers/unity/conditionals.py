@@ -47,11 +47,17 @@ def _evaluate(condition: str, defines: dict):
 
 def _define_value(value: str, defines: dict) -> int:
     """The number an object-like ``#define`` stands for in a later ``#if``: its integer, the
-    value of the macro it names (``#define SKYBOX_SUNDISK SKYBOX_SUNDISK_HQ``), else 1."""
+    value of the macro it names (``#define SKYBOX_SUNDISK SKYBOX_SUNDISK_HQ``), the value of a
+    condition it spells (``#define USING_FOG (defined(FOG_LINEAR) || defined(FOG_EXP))``, taken
+    with the macros defined where it is defined), else 1."""
     if re.fullmatch(r"-?\d+", value):
         return int(value)
     if re.fullmatch(r"[A-Za-z_]\w*", value) and value in defines:
         return defines[value]
+    if re.search(r"\bdefined\b", value):
+        condition = _evaluate(value, defines)
+        if condition is not None:
+            return int(condition)
     return 1
 
 

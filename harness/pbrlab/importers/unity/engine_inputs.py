@@ -23,6 +23,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from . import multisampled_textures
 from .source_text import UnityShaderError, line_of
 
 _MOTION = ("motion vectors: the previous frame's camera and object matrices, which pbrlab fills (a still "
@@ -61,20 +62,21 @@ def engine_input_read(active_program: str, filled=()):
 
 
 # Direct3D 10's multisampled texture objects declared outright (``Texture2DMSArray<float> t;``):
-# a material binds single-sampled 2D textures, and the GLSL port has no such declaration.
-_MULTISAMPLED = re.compile(r"\b(Texture2DMS(?:Array)?)\s*<")
-MULTISAMPLED_FEATURE = ("multisampled textures (Direct3D's Texture2DMS objects), which a material cannot bind "
-                        "(its textures are single-sampled 2D)")
+# a declaration alone is kept (GLSL's sampler2DMS / sampler2DMSArray: multisampled_textures.py);
+# a read of one in the drawn variant needs a multisampled texture bound, which a material cannot
+# give (its textures are single-sampled 2D).
+MULTISAMPLED_FEATURE = ("multisampled textures (Direct3D's Texture2DMS objects): reading one needs a "
+                        "multisampled texture, which a material cannot bind (its textures are single-sampled 2D)")
 
 
 def check_engine_inputs(active_program: str, path: Path, first_line: int, filled=()) -> None:
     """Refuse a program whose drawn variant reads a global only an engine subsystem sets (other
-    than ``filled``: fill_declared's), or declares a multisampled texture object."""
+    than ``filled``: fill_declared's), or reads a multisampled texture object."""
     found = engine_input_read(active_program, filled)
     feature = ENGINE_FED[found[0]] if found else None
-    m = _MULTISAMPLED.search(active_program)
-    if m and (found is None or m.start() < found[1]):
-        found, feature = (m.group(1), m.start()), MULTISAMPLED_FEATURE
+    read = multisampled_textures.first_read(active_program)
+    if read and (found is None or read[1] < found[1]):
+        found, feature = read, MULTISAMPLED_FEATURE
     if found is None:
         return
     name, offset = found

@@ -35,9 +35,17 @@ Both languages run the snippet as written: Unity compiles ``GLSLPROGRAM`` only f
 platforms and has no HLSL of it, so pbrlab's HLSL language (the program as its author wrote
 it) runs the same GLSL; a note says so.
 
-Refused, naming the reason: ``#pragma only_renderers`` naming no desktop OpenGL renderer
-(Unity compiles the program for none of pbrlab's platforms), and ``samplerExternalOES`` /
-``GL_OES_EGL_image_external`` (an Android/EGL external image: desktop GL has no such sampler).
+A snippet for OpenGL ES only (``#pragma only_renderers gles3`` or ``gles``, no desktop renderer)
+runs as Unity compiles it for that renderer: ``SHADER_API_GLES3`` (or ``SHADER_API_GLES``) and
+``SHADER_API_MOBILE`` defined instead of ``SHADER_API_GLCORE`` (Unity manual, "Built-in shader
+macros"), its ES-only constructs in their desktop spellings: ``#version 300 es`` gives way to the
+harness's ``#version 330 core`` (as any ``#version``), precision qualifiers are accepted and
+ignored by desktop GLSL (GLSL 3.30, 4.5.2: "no semantic meaning"), so the snippet computes at
+float32 everywhere, where a device may compute a ``mediump`` value at half precision; external
+images (``samplerExternalOES``) as 2D textures (external_images.py). A note says so.
+
+Refused, naming the reason: ``#pragma only_renderers`` naming no OpenGL renderer (Unity compiles
+the program for none of pbrlab's platforms).
 """
 
 from __future__ import annotations
@@ -45,13 +53,17 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from . import external_images
 from . import model as M
 from .source_text import UnityShaderError, blank_comments, line_of
 
 # Unity's names of its OpenGL renderers that a desktop GL 3.3 context runs (Unity manual,
 # "Targeting shader compilation APIs": glcore = OpenGL 3.x/4.x, opengl = the legacy name).
 DESKTOP_GL_RENDERERS = {"glcore", "opengl"}
-_EXTERNAL_IMAGE = re.compile(r"\bsamplerExternalOES\b|\bGL_OES_EGL_image_external(?:_essl3)?\b")
+# Unity's OpenGL ES renderers, each with the macro its compilation defines (Unity manual, "Built-in
+# shader macros": SHADER_API_GLES3 for OpenGL ES 3.x, SHADER_API_GLES for 2.0; both mobile APIs).
+ES_RENDERERS = {"gles3": "SHADER_API_GLES3", "gles": "SHADER_API_GLES"}
+_ONLY_RENDERERS = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+only_renderers[ \t]+([^\n]*)$", re.M)
 
 # The globals the spelled built-ins read, declared where the snippet does not declare them
 # (program.bind sets them, as for every Unity pass).
@@ -89,15 +101,11 @@ def glsl_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragm
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, index)}"
 
-    m = re.search(r"^[ \t]*#[ \t]*pragma[ \t]+only_renderers[ \t]+([^\n]*)$", masked, re.M)
-    if m and not DESKTOP_GL_RENDERERS & set(m.group(1).split()):
+    m = _ONLY_RENDERERS.search(masked)
+    if m and not (DESKTOP_GL_RENDERERS | set(ES_RENDERERS)) & set(m.group(1).split()):
         raise UnityShaderError(f"{where(m.start())}: #pragma only_renderers {m.group(1).strip()}: Unity compiles "
-                               "this GLSLPROGRAM only for those renderers, none of them desktop OpenGL "
-                               "(glcore), which pbrlab runs")
-    m = _EXTERNAL_IMAGE.search(masked)
-    if m:
-        raise UnityShaderError(f"{where(m.start())}: {m.group(0)}: an external (Android/EGL camera or video) "
-                               "image, which desktop OpenGL and pbrlab do not have")
+                               "this GLSLPROGRAM only for those renderers, none of them OpenGL (glcore, gles3, "
+                               "gles), which pbrlab runs")
     for stage in ("VERTEX", "FRAGMENT"):
         if not re.search(r"^[ \t]*#[ \t]*if(?:def[ \t]+|[ \t]+defined[ \t]*\(?[ \t]*)" + stage + r"\b", masked, re.M):
             raise UnityShaderError(f"{where(0)}: a GLSLPROGRAM needs both stages, each under "
@@ -118,10 +126,28 @@ def glsl_pass(program: str, path: Path, first_line: int, block) -> M.VertexFragm
     return vf
 
 
-def note(path: Path, first_line: int) -> str:
+def api_macro(program: str) -> str:
+    """The SHADER_API_ macro of the renderer the snippet is compiled for: desktop OpenGL's
+    (glcore) unless ``#pragma only_renderers`` names only OpenGL ES renderers (module docstring)."""
+    m = _ONLY_RENDERERS.search(blank_comments(program))
+    named = set(m.group(1).split()) if m else DESKTOP_GL_RENDERERS
+    if named & DESKTOP_GL_RENDERERS:
+        return "SHADER_API_GLCORE"
+    return next(macro for name, macro in ES_RENDERERS.items() if name in named)
+
+
+def note(path: Path, first_line: int, program: str = "") -> str:
     """The note a drawn GLSLPROGRAM pass gets (the shader's notes)."""
-    return (f"{path}:{first_line}: a GLSLPROGRAM: Unity compiles it for OpenGL only; both of pbrlab's "
+    text = (f"{path}:{first_line}: a GLSLPROGRAM: Unity compiles it for OpenGL only; both of pbrlab's "
             "languages run the GLSL as written")
+    api = api_macro(program)
+    if api != "SHADER_API_GLCORE":
+        text += (f"; for OpenGL ES only ({api}), run on desktop GL: precision qualifiers ignored (float32 "
+                 "throughout)")
+    if external_images.uses_external_images(blank_comments(program)):
+        text += ("; its external image (samplerExternalOES) is the property's 2D texture, read as the RGB "
+                 "a device's driver returns (no YUV conversion here)")
+    return text
 
 
 # VertexFragmentPass.language of a GLSLPROGRAM pass (program_pass builds it here).
@@ -131,7 +157,8 @@ LANGUAGE = "unity-glsl"
 def implicit_samplers(program: str) -> list[tuple]:
     """[(kind, name)] of the snippet's sampler uniforms (Unity binds a default texture to each:
     parse's implicit texture properties)."""
-    found = re.findall(r"\buniform\s+(sampler2D|sampler2DRect|samplerCube)\s+(\w+)\s*;", blank_comments(program))
+    found = re.findall(r"\buniform\s+(sampler2D|sampler2DRect|samplerCube|samplerExternalOES)\s+(\w+)\s*;",
+                       blank_comments(program))
     return [("Cube" if kind == "samplerCube" else "2D", name) for kind, name in found]
 
 
@@ -156,6 +183,7 @@ def _spell(program: str, stage: str) -> str:
         for name in _LIGHT_GLOBALS:  # set in main from the scene's light
             code = re.sub(r"\buniform\s+\w+\s+" + name + r"\s*;", f"/* {name}: the pass's light */", code)
         code = re.sub(r"^([ \t]*#[ \t]*version\b[^\n]*)", r"// \1", code, flags=re.M)
+        code = external_images.spelled_for_desktop(code)
         code = re.sub(r"\bvarying\b", "out" if stage == "VERTEX" else "in", code)
         code = re.sub(r"\battribute\b", "in", code)
         code = re.sub(r"\btexture(?:2D|Cube)\b", "texture", code)
@@ -186,7 +214,7 @@ def stage_text(vf, stage: str, defines: dict, blended: bool) -> tuple:
     code = blank_comments(vf.program)
     for old, new in _RENAMED.items():
         code = re.sub(r"\b" + old + r"\b", new, code)
-    head = ["#version 330 core", _defines({**defines, stage: 1, "SHADER_API_GLCORE": 1}),
+    head = ["#version 330 core", _defines({**defines, stage: 1, **_api_defines(vf.program)}),
             '#include "scene_shading.glsl"']
     head += [f"uniform {t} {n};" for n, t in _GLOBALS.items() if not _declared(code, n)]
     head += [f"{t} {n};" for n, t in _LIGHT_GLOBALS.items()]
@@ -206,6 +234,12 @@ def stage_text(vf, stage: str, defines: dict, blended: bool) -> tuple:
                 _main_light("glsl"), "    pbrlab_snippet_main();",
                 f"    pbrlab_radiance = vec4(pbrlab_target_radiance(pbrlab_frag_color.rgb), {alpha});"]
     return "\n".join(head) + "\n", _spell(vf.program, stage), "void main() {\n" + "\n".join(main) + "\n}\n"
+
+
+def _api_defines(program: str) -> dict:
+    """The renderer's macros (api_macro; an ES renderer is a mobile one: SHADER_API_MOBILE)."""
+    api = api_macro(program)
+    return {api: 1} if api == "SHADER_API_GLCORE" else {api: 1, "SHADER_API_MOBILE": 1}
 
 
 def build_glsl_program(ctx, vf, defines: dict, blended: bool, dirs: list):

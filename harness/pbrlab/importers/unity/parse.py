@@ -22,6 +22,7 @@ from . import model as M
 from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
+from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, shaderlab, texture_objects
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
@@ -494,7 +495,7 @@ def _implicit_texture_properties(program: str, properties: dict) -> None:
     masked = re.sub(r"\bUNITY_DECLARE_TEXCUBE\s*\(\s*(\w+)\s*\)", r"samplerCUBE \1", masked)
     masked = re.sub(r"\bsampler2D_(?:float|half)\b", "sampler2D", masked)
     for kind, name in re.findall(r"\b(sampler2D|samplerCUBE|samplerCube)\s+(" + IDENT + r")\s*;", masked):
-        if name not in properties:
+        if name not in properties and name not in ENGINE_SET_TEXTURES:  # (the object's lightmap: lightmaps.py)
             properties[name] = M.Property(name, name, "2D" if kind == "sampler2D" else "Cube", "white",
                                           ("implicit",))
     for name in re.findall(r"\bUNITY_DECLARE_TEX2DARRAY(?:_NOSAMPLER)?\s*\(\s*(" + IDENT + r")\s*\)", masked):
@@ -696,7 +697,7 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             if block.language != "CG":
                 raise UnityShaderError(f"{path}:{block.line}: {block.keyword} is not supported: pbrlab runs "
                                        "CGPROGRAM blocks (Unity's built-in render pipeline)")
-            if pipeline is not BUILTIN:
+            if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
                 raise UnityShaderError(f"{path}:{block.line}: a surface program (#pragma surface) belongs to Unity's "
                                        f"built-in render pipeline, not {pipeline.name}")
             program, first = layout.program_text(block, sub)
@@ -707,8 +708,9 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
             warnings.extend(shader.warnings)
             shader.warnings = warnings
             passes.append(shader)
-        elif kind == "pass" and item[1].light_mode.lower() == "vertex" and forward:
-            notes.append(f"{path}:{item[1].line}: Pass (LightMode Vertex) skipped: its SubShader has "
+        elif kind == "pass" and forward and item[1].light_mode.lower() in ("vertex", "vertexlm", "vertexlmrgbm") \
+                and item[1].light_mode.lower() in pipeline.drawn:  # a lightmapped object's VertexLM too (lightmaps.py)
+            notes.append(f"{path}:{item[1].line}: Pass (LightMode {item[1].light_mode}) skipped: its SubShader has "
                          "ForwardBase passes, which Unity's forward path draws instead")
         elif kind == "pass":
             vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
@@ -757,7 +759,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         if not p.fixed_function and state.color_mask == "0":
             notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
             return None
-        if pipeline is not BUILTIN:
+        if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
             raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
                                    "runs programmable passes only")
         # Unity generates a program for a fixed-function pass (a pass with no command at all
@@ -770,14 +772,15 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         from .glslprogram import glsl_pass, implicit_samplers, note
         text, first = layout.program_text(p.program, sub)
         vf = glsl_pass(text, path, first, p)
-        notes.append(note(path, first))
+        notes.append(note(path, first, text))
         for kind, name in implicit_samplers(text):  # a texture Unity binds by default, as for Cg
             props.setdefault(name, M.Property(name, name, kind, "white", ("implicit",)))
         apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
         return vf
     if p.program.language not in pipeline.languages:
         raise UnityShaderError(f"{path}:{p.program.line}: {p.program.keyword} is not supported: "
-                               + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)" if pipeline is BUILTIN
+                               + ("pbrlab runs CGPROGRAM blocks (Unity's built-in render pipeline)"
+                                  if pipeline.name == BUILTIN.name
                                   else f"{pipeline.name} runs CGPROGRAM and HLSLPROGRAM blocks"))
     program, first = layout.program_text(p.program, sub)
     for pattern, replacement in pipeline.spellings:

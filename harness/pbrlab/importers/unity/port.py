@@ -35,7 +35,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from . import cg_spellings, cg_types
+from . import cg_spellings, cg_types, multisampled_textures
 from . import model as M
 from .geometry_syntax import spell_for_glsl
 from .output_struct import layered_struct
@@ -294,6 +294,7 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry syntax
+        text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
         return _drop_member_interpolation(spelled_texture_methods(spell_for_glsl(cg_spellings.respelled(text))))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations

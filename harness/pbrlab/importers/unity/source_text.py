@@ -269,6 +269,13 @@ STAND_IN_REFUSED_KEYWORDS = {
     "UnityStandardCore.cginc": {
         "_SPECULARHIGHLIGHTS_OFF": "the Standard shader's Specular Highlights toggle (off: no direct "
                                    "specular) is not honoured by pbrlab's UnityStandardCore.cginc",
+        # a lightmapped object's (importers/unity/lightmaps.py)
+        "LIGHTMAP_ON": "a lightmapped object's GI (from its lightmap) is not drawn by pbrlab's "
+                       "UnityStandardCore.cginc, which lights by the environment",
+    },
+    "UnityGlobalIllumination.cginc": {
+        "LIGHTMAP_ON": "a lightmapped object's GI (from its lightmap) is not drawn by pbrlab's "
+                       "UnityGlobalIllumination.cginc, which lights by the environment",
     },
     "UnityStandardParticles.cginc": {
         "SOFTPARTICLES_ON": "soft particles fade by the scene's depth in the camera's depth texture "

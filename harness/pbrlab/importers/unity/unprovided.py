@@ -14,11 +14,17 @@ from .source_text import UnityShaderError
 
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
-    **dict.fromkeys(("unity_Lightmap", "unity_LightmapST", "unity_LightmapInd", "unity_DynamicLightmap",
-                     "unity_DynamicLightmapST", "unity_DynamicDirectionality", "DecodeLightmap",
-                     "DecodeDirectionalLightmap", "DecodeRealtimeLightmap", "UNITY_SAMPLE_TEX2D_SAMPLER",
-                     "unity_ShadowMask", "UNITY_SAMPLE_SHADOWMASK"),
-                    "baked lightmaps, which the harness does not bake"),
+    # (the baked lightmap itself, unity_Lightmap/unity_LightmapST/DecodeLightmap, is the one a
+    # material supplies: lightmaps.py)
+    **dict.fromkeys(("unity_LightmapInd", "DecodeDirectionalLightmap", "UNITY_SAMPLE_TEX2D_SAMPLER"),
+                    "directional lightmaps (the dominant-direction texture beside a lightmap), which a supplied "
+                    "lightmap does not include"),
+    **dict.fromkeys(("unity_ShadowMask", "UNITY_SAMPLE_SHADOWMASK"),
+                    "baked shadow masks, which a supplied lightmap does not include"),
+    **dict.fromkeys(("unity_DynamicLightmap", "unity_DynamicLightmapST", "unity_DynamicDirectionality",
+                     "DecodeRealtimeLightmap"),
+                    "realtime GI lightmaps (Enlighten's, with per-renderer UVs in TEXCOORD2), which the harness "
+                    "does not compute"),
     **dict.fromkeys(("UnityMetaVertexPosition", "UnityMetaFragment", "UnityMetaInput",
                      "unity_MetaVertexControl", "unity_MetaFragmentControl"),
                     "the lightmap-baking meta pass"),

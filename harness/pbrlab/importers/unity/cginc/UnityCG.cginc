@@ -3,3 +3,4 @@
 // "Unity shaders", lists them), so this file is empty.
 
 #include "UnityCGPacking.cginc"
+#include "UnityLightmapDecoding.cginc"
