@@ -35,7 +35,7 @@
 //           vec3 WorldSpaceViewDir(vec4 localPos), vec3 WorldSpaceLightDir(vec4 localPos),
 //           vec3 ObjSpaceViewDir(vec4 localPos), vec3 ObjSpaceLightDir(vec4 localPos),
 //           vec4 ComputeScreenPos(vec4 clipPos), vec4 UnityPixelSnap(vec4 clipPos),
-//           float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
+//           bool IsGammaSpace() (false: linear colour space), float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
 //           COMPUTE_EYEDEPTH(o), COMPUTE_DEPTH_01, COMPUTE_VIEW_NORMAL, TANGENT_SPACE_ROTATION (read the vertex
 //           input `v`, as Unity's); appdata_img, v2f_img, v2f_img vert_img(appdata_img);
@@ -334,6 +334,10 @@ vec4 UnityPixelSnap(vec4 pos) {
 // z = 1, i.e. 1/eyeDepth = z (1/far - 1/near) + 1/near = _ZBufferParams.z z + _ZBufferParams.w;
 // Linear01Depth is eyeDepth / far. An orthographic camera's depth is linear already (Unity's
 // shaders branch on unity_OrthoParams.w instead of calling these).
+// UnityCG.cginc's IsGammaSpace(): whether the project renders in gamma colour space; pbrlab
+// lights in linear space (docs/conventions.md), Unity's linear colour space: false.
+bool IsGammaSpace() { return false; }
+
 float Linear01Depth(float z) {
     return 1.0 / (_ZBufferParams.x * z + _ZBufferParams.y);
 }

@@ -316,3 +316,61 @@ def test_tangent_space_rotation_and_world_transform_params(tmp_path, language):
     # sphere's 5.6-degree facets) = 1.2e-3 (31 bands x 64 sections)
     assert np.abs(image[covered, :2] - 1.0).max() <= 1.2e-3
     assert np.percentile(image[covered, 2], 99) <= 0.1
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("scale", [0.25, 0.3])
+def test_a_global_the_program_writes_starts_as_its_property(tmp_path, language, scale):
+    """FXC's compatibility mode (how Unity compiles) lets a program write a global: the write
+    lasts the invocation, the value before it is the property's. `_Scale *= 2` in a helper the
+    fragment calls, twice in a list declaration with another written global: 2 x scale, 4 x
+    scale; IsGammaSpace() is false (linear colour space)."""
+    shader = tmp_path / "written.shader"
+    shader.write_text(textwrap.dedent("""
+        Shader "t/written" {
+            Properties { _Scale ("s", Float) = 0.25 }
+            SubShader { Pass {
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "UnityCG.cginc"
+            float _Scale, _Twice;
+            float4 vert(float4 vertex : POSITION) : SV_POSITION { return UnityObjectToClipPos(vertex); }
+            void doubled() { _Scale *= 2.0; _Twice = _Scale * 2.0; }
+            float4 frag() : SV_Target { doubled(); return float4(_Scale, _Twice, IsGammaSpace() ? 1 : 0, 1); }
+            ENDCG
+        } } }
+        """))
+    data = corpus.scene_for(shader)
+    data["materials"]["m"]["properties"] = {"_Scale": scale}
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear
+    covered = _covered(image)
+    assert np.abs(image[covered, :3] - np.array([2 * scale, 4 * scale, 0.0])).max() <= EXACT
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_an_array_member_is_one_varying_per_element(tmp_path, language):
+    """``float2 uv[3] : TEXCOORD0`` (the image effects' neighbour taps) occupies TEXCOORD0..2:
+    each element reaches the fragment stage as written (the sphere's UV plus k x (0.25, 0.125))."""
+    shader = tmp_path / "taps.shader"
+    shader.write_text(textwrap.dedent("""
+        Shader "t/taps" { SubShader { Pass {
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "UnityCG.cginc"
+            struct v2f { float4 pos : SV_POSITION; float2 uv[3] : TEXCOORD0; };
+            v2f vert(appdata_base v) {
+                v2f o; o.pos = UnityObjectToClipPos(v.vertex);
+                for (int k = 0; k < 3; k++) o.uv[k] = v.texcoord.xy + k * float2(0.25, 0.125);
+                return o; }
+            float4 frag(v2f i) : SV_Target { return float4(i.uv[1] - i.uv[0], i.uv[2].x - i.uv[1].x, 1); }
+            ENDCG
+        } } }
+        """))
+    image = _render(tmp_path, shader, language)
+    covered = _covered(image)
+    # each element is interpolated on its own (llvmpipe: a0 + dadx x + dady y in float32, terms
+    # larger than the value), which moves an interpolated value by up to ~1e-5 of its size
+    # (tests/importers/unity/test_corpus.py's note); the difference of two, values <= 1.5: 2e-5
+    assert np.abs(image[covered, :3] - np.array([0.25, 0.125, 0.25])).max() <= 2e-5

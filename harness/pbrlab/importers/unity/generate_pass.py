@@ -23,6 +23,7 @@ from . import deferred
 from . import model as M
 from .cg_types import RENAME_PREFIX, is_reserved
 from .engine_inputs import fill_statements
+from .written_globals import copy_statements
 from .port import port_code_types
 from .source_text import UnityShaderError, component_count
 
@@ -256,7 +257,8 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = {_world_position(language)};",
             "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language),
-            _vertex_lights(language), fill_statements(vf.engine_filled, language)]
+            _vertex_lights(language), fill_statements(vf.engine_filled, language),
+            copy_statements(vf.written_globals)]
     args = []
     for qual, kind, name, semantic in vf.vertex_params:
         local = f"pbrlab_arg_{name}"
@@ -333,7 +335,8 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
 
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = pbrlab_vary_world_position;", "#endif",
-            _main_light(language), deferred.light_assignments(language), fill_statements(vf.engine_filled, language)]
+            _main_light(language), deferred.light_assignments(language), fill_statements(vf.engine_filled, language),
+            copy_statements(vf.written_globals)]
     args = []
     for qual, kind, name, semantic in vf.fragment_params:
         local = f"pbrlab_arg_{name}"

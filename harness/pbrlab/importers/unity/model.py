@@ -191,6 +191,7 @@ class VertexFragmentPass:
     # include); the built-in pipeline's programs keep per-file ports, as Unity's Cg
     srp: bool = False
     engine_filled: tuple = ()       # engine-set globals the scene fills (engine_inputs.FILLED)
+    written_globals: tuple = ()     # ((name, type), ...) globals the program writes (written_globals.py)
     output_fields = {}              # (a surface program's output struct; none here)
     kind = "vertex-fragment"
 

@@ -16,6 +16,7 @@ from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .lightmaps import declares_lightmap_on
+from .written_globals import copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -119,7 +120,16 @@ def _structs(masked: str) -> dict:
             if len(words) < 2:
                 continue
             kind, names = words[0], [w for w in words[1:] if w != ","]
-            members.extend((kind, n, semantic) for n in names)
+            array = re.fullmatch(r"(" + IDENT + r")\s*\[\s*(\d+)\s*\]", "".join(names))
+            if array and semantic:
+                # ``half2 uv[9] : TEXCOORD0``: one varying per element, at consecutive semantics
+                # (TEXCOORD0 .. TEXCOORD8; Microsoft's HLSL reference, "Semantics")
+                base = re.fullmatch(r"(\D*?)(\d*)", semantic)
+                first = int(base.group(2) or 0)
+                names = [f"{array.group(1)}[{k}]" for k in range(int(array.group(2)))]
+                members.extend((kind, n, f"{base.group(1)}{first + k}") for k, n in enumerate(names))
+            else:
+                members.extend((kind, n, semantic) for n in names)
             if "nointerpolation" in all_words:
                 flat.update(names)
         out[m.group(1)] = M.ShaderStruct(m.group(1), members, frozenset(flat))
@@ -145,7 +155,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     on = [k for k in keywords if k in declared_keywords(program)
           or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))]  # a lightmapped object's (lightmaps.py)
-    everything = active_text(everything, defines_of(everything, on))  # the drawn variant's branches
+    defines = defines_of(everything, on)
+    everything = active_text(everything, defines)  # the drawn variant's branches
     # a global only Unity's engine sets: filled from the scene where the program declares it
     # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused
     drawn_text, filled = fill_declared(program, everything[:len(masked)], everything[len(masked):])
@@ -155,6 +166,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         filled = ()
     check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
+    written = ()
+    if "geometry" not in {m.group(1) for m in _PRAGMA.finditer(masked)}:  # globals the program writes
+        program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -195,7 +209,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
-        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, engine_filled=filled)
+        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, engine_filled=filled,
+        written_globals=written)
     vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
                                        r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     return vf

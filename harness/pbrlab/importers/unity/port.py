@@ -48,7 +48,7 @@ _INT = re.compile(r"\b(int|bool|uint)([234])\b")
 # HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry
 # (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
 # list whose last parameters are under an #if).
-_SEMANTIC = re.compile(r"(\w)\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
+_SEMANTIC = re.compile(r"([\w\]])\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
                        r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before

@@ -1,0 +1,92 @@
+"""Globals a Unity program assigns to (``float2 uv; ... uv = i.uv * 2.0;`` at global scope):
+Unity compiles Direct3D programs with FXC's backwards-compatibility mode, which lets a program
+write a global; the value written lives in that invocation only (the global is the uniform's
+value until then). glslang and GLSL refuse a write to a uniform. So each written global keeps
+its uniform (its material property binds as before), the functions read and write a
+``static`` copy, ``pbrlab_written_<name>``, and the pass's entry points set the copy from the
+uniform before calling the program (generate_pass: the same in both stages). Lines are kept.
+
+    program, written = copied_written_globals(program, active_program)
+    statements = copy_statements(written)     # an entry point's, before the program runs
+"""
+
+from __future__ import annotations
+
+import re
+
+from .engine_inputs import _outside_braces
+
+PREFIX = "pbrlab_written"
+
+
+def copy_name(name: str) -> str:
+    """The static copy's name (no double underscore: GLSL reserves it)."""
+    return PREFIX + ("" if name.startswith("_") else "_") + name
+_TYPE = r"(?:float|half|fixed|int|uint|bool|min16float)(?:[1-4](?:x[1-4])?)?"
+# a global's declaration at brace depth 0: qualifier (1), type (2), names (3); not static, const
+_DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(" + _TYPE + r")[ \t]+(\w+(?:[ \t]*,[ \t]*\w+)*|\w+[ \t]*=[^;{}]*)[ \t]*;",
+                       re.M)
+# a function body: the brace after a parameter list (and an optional ": SEMANTIC")
+_BODY_OPEN = re.compile(r"\)\s*(?::\s*\w+\s*)?\{")
+
+
+def _function_bodies(active: str) -> list:
+    out, depth, start = [], 0, None
+    for i, ch in enumerate(active):
+        if ch == "{":
+            if depth == 0:
+                head = active[max(0, i - 300):i + 1]
+                m = None
+                for m in _BODY_OPEN.finditer(head):
+                    pass
+                start = i + 1 if m is not None and m.end() == len(head) else None
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+            if depth == 0 and start is not None:
+                out.append((start, i))
+                start = None
+    return out
+
+
+def _written(name: str, body: str) -> bool:
+    """Whether ``body`` assigns to ``name`` (=, op=, ++, --; a member or element of it too)."""
+    target = rf"(?<![\w.])\b{re.escape(name)}\b(?:\s*\.\s*\w+|\s*\[[^\]]*\])*"
+    return re.search(target + r"\s*(?:[-+*/%&|^]|<<|>>)?=(?!=)", body) is not None or \
+        re.search(rf"(?:\+\+|--)\s*{target}|{target}\s*(?:\+\+|--)", body) is not None
+
+
+def copied_written_globals(program: str, active_program: str) -> tuple[str, tuple]:
+    """(``program`` with each global it writes read and written through its ``static`` copy in
+    its functions, the copy declared before the global, on its line; ((name, type), ...) so copied).
+    ``active_program``: ``program`` with comments and undrawn branches blanked (same offsets)."""
+    top = _outside_braces(active_program)
+    bodies = _function_bodies(active_program)
+    found = []
+    for m in _DECLARED.finditer(top):
+        if re.match(r"\s*(?:static|const)\b", m.group(0)):
+            continue
+        for name in (n.split("=")[0].strip() for n in m.group(3).split(",")):
+            if any(_written(name, active_program[s:e]) for s, e in bodies):
+                found.append((m, name, m.group(2)))
+    if not found:
+        return program, ()
+    text = program
+    edits = []  # (start, end, replacement), applied from the end
+    for s, e in bodies:
+        for _, name, _ in found:
+            for use in re.finditer(rf"(?<![\w.])\b{re.escape(name)}\b", active_program[s:e]):
+                edits.append((s + use.start(), s + use.end(), copy_name(name)))
+    by_declaration = {}
+    for m, name, kind in found:
+        by_declaration.setdefault((m.start(), kind), []).append(copy_name(name))
+    for (start, kind), copies in by_declaration.items():  # at the line's start, one declaration:
+        edits.append((start, start, f"static {kind} {', '.join(copies)}; "))  # the GLSL port reads it there
+    for start, end, replacement in sorted(edits, key=lambda x: (x[0], x[1]), reverse=True):
+        text = text[:start] + replacement + text[end:]
+    return text, tuple((name, kind) for _, name, kind in found)
+
+
+def copy_statements(written) -> str:
+    """An entry point's statements that give each copy its uniform's value."""
+    return "".join(f"    {copy_name(name)} = {name};\n" for name, _ in written)
