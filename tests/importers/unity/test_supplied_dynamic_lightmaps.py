@@ -28,7 +28,8 @@ from test_supplied_lightmaps import BLOCK, CAMERA, N, SIZE, expected  # noqa: E4
 
 pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnityShaderNote")
 
-GIDEBUG = Path(__file__).resolve().parents[3] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra" / "GIDebug"
+GIDEBUG = (Path(__file__).resolve().parents[3] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra"
+           / "GIDebug")
 SCALE_OFFSET = (0.8, 0.7, 0.1, 0.2)   # unity_DynamicLightmapST
 BAKED_SCALE_OFFSET = (0.5, 0.4, 0.3, 0.05)  # unity_LightmapST where a shader reads both (a different chart)
 LOWEST, HIGHEST = 0.05, 4.0           # the texels' range (the bound's range of values)
@@ -41,8 +42,10 @@ LOWEST, HIGHEST = 0.05, 4.0           # the texels' range (the bound's range of 
 BOUND = 3e-6
 
 
-def _shader(tmp_path, body="return float4(DecodeRealtimeLightmap(UNITY_SAMPLE_TEX2D(unity_DynamicLightmap, i.lm)), 1);",
-            pragmas="", name="dyn",
+DECODE = "return float4(DecodeRealtimeLightmap(UNITY_SAMPLE_TEX2D(unity_DynamicLightmap, i.lm)), 1);"
+
+
+def _shader(tmp_path, body=DECODE, pragmas="", name="dyn",
             uv="o.lm = v.texcoord2.xy * unity_DynamicLightmapST.xy + unity_DynamicLightmapST.zw;"):
     text = f"""
     Shader "t/{name}" {{
@@ -150,8 +153,7 @@ def test_dynamiclightmap_on_is_set_where_a_pass_declares_it_and_texcoord2_is_0_w
     the decode (as the first test's image); without one the other branch, which shows TEXCOORD2
     itself: 0 (no mesh here has a Mesh.uv3), so black where the plane is drawn."""
     path, texels = _blocks(tmp_path)
-    body = ("#ifdef DYNAMICLIGHTMAP_ON\n return float4(DecodeRealtimeLightmap(UNITY_SAMPLE_TEX2D(unity_DynamicLightmap, "
-            "i.lm)), 1);\n#else\n return float4(i.lm, 0, 1);\n#endif")
+    body = "#ifdef DYNAMICLIGHTMAP_ON\n " + DECODE + "\n#else\n return float4(i.lm, 0, 1);\n#endif"
     uv = ("o.lm = v.texcoord2.xy;\n#ifdef DYNAMICLIGHTMAP_ON\n o.lm = v.texcoord2.xy * unity_DynamicLightmapST.xy "
           "+ unity_DynamicLightmapST.zw;\n#endif")
     shader = _shader(tmp_path, body, "#pragma multi_compile_fwdbase", name="fwdbase", uv=uv)

@@ -135,14 +135,19 @@ def _fill_struct(vf, kind: str, var: str, language: str, value_of) -> list[str]:
     return out
 
 
-def _attribute(semantic: str, n: int, language: str, kind: str = "uint"):
+def _attribute(semantic: str, n: int, language: str, kind: str = "uint", realtime_uv: bool = False):
+    """The mesh attribute of ``semantic`` as ``n`` components, or None (0); ``realtime_uv``: TEXCOORD2
+    may be the realtime lightmap UVs (this module's vertex entry defines them)."""
     if semantic in _SYSTEM_VALUES:
         hlsl, glsl = _SYSTEM_VALUES[semantic]
         return f"({kind}){hlsl}" if language == "hlsl" else f"{_type(kind, language)}({glsl})"
     if semantic in _ATTRIBUTES:
         expr, have, w = _ATTRIBUTES[semantic]
         return fit(expr, have, n, language, w)
-    if semantic == "TEXCOORD2":  # the realtime lightmap UVs where a realtime lightmap is supplied
+    if semantic == "TEXCOORD2" and realtime_uv and not kind.removeprefix("min16").startswith(("int", "uint", "bool")):
+        # the realtime lightmap UVs where a realtime lightmap is supplied (an integer member: 0; a
+        # surface program's vertex input, generate.py, keeps 0: a surface shader takes no realtime
+        # lightmap, dynamic_lightmaps.check_reads)
         return fit(_REALTIME_LIGHTMAP_UV, 2, n, language, 0.0)
     return None  # TEXCOORD3..7 and others: no such attribute on meshes here: 0
 
@@ -276,11 +281,11 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         if _struct(vf, kind) is not None:
             body += _declare(kind, local, language)
             if qual != "out":
-                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language, t))
+                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language, t, True))
         else:
             n = _size(kind, where)
             body.append(f"    {_type(kind, language)} {local} = "
-                        f"{(_attribute(canonical(semantic), n, language, kind) if qual != 'out' else None) or _zero(kind, language)};")
+                        f"{(_attribute(canonical(semantic), n, language, kind, True) if qual != 'out' else None) or _zero(kind, language)};")
         args.append(local)
     call = f"{vf.vertex}({', '.join(args)})"
     if vf.vertex_return != "void":
