@@ -2,7 +2,8 @@
 rebuild them byte for byte): procedural brick textures (albedo and emission as sRGB
 colour, normal and metallic/smoothness as linear data), a leaf with an alpha cut-out, an
 HDR sky (equirectangular EXR), a UV-mapped cushion model (OBJ), and an RGBM-encoded baked
-lightmap (8-bit RGBA: the Unity corpus scene's supplied lightmap, importers/unity/lightmaps.py).
+lightmap (8-bit RGBA: the Unity corpus scene's supplied lightmap, importers/unity/lightmaps.py)
+and a realtime GI lightmap (float EXR: its supplied realtime lightmap, importers/unity/dynamic_lightmaps.py).
 
     .venv/bin/python scenes/assets/make_assets.py
 """
@@ -130,6 +131,15 @@ def lightmap():
     images.write_png(HERE / "lightmap_rgbm.png", np.round(rgbm * 255).astype(np.uint8))
 
 
+def realtime_lightmap():
+    """A 16 x 16 realtime GI lightmap (Unity's RGB9E5 output: float RGB, read as it is, linear):
+    green-blue light rising across u, red along v, from 0.05 to 2.5; every texel a different value."""
+    n = 16
+    v, u = np.meshgrid((np.arange(n) + 0.5) / n, (np.arange(n) + 0.5) / n, indexing="ij")
+    rgb = np.stack([0.05 + 2.0 * v, 0.1 + 1.5 * u * (1.0 - 0.5 * v), 0.2 + 2.3 * u * u], axis=-1)
+    images.write_exr(HERE / "realtime_lightmap.exr", rgb.astype(np.float32))
+
+
 if __name__ == "__main__":
     bricks()
     leaf()
@@ -137,4 +147,5 @@ if __name__ == "__main__":
     cushion()
     torture()
     lightmap()
+    realtime_lightmap()
     print(f"wrote assets to {HERE}")

@@ -59,14 +59,24 @@ LIGHTMAP = {"path": str(locate("scenes") / "assets" / "lightmap_rgbm.png"), "enc
             "scale_offset": [0.5, 0.5, 0.25, 0.25]}
 
 
+# Its supplied realtime GI lightmap (importers/unity/dynamic_lightmaps.py; scenes/assets/make_assets.py),
+# for a shader whose drawn vertex/fragment program reads one: the sphere's realtime lightmap UVs
+# (TEXCOORD2: its one UV set) scaled by 0.6 and offset by 0.3 and 0.1, into another part of the image.
+DYNAMIC_LIGHTMAP = {"path": str(locate("scenes") / "assets" / "realtime_lightmap.exr"),
+                    "scale_offset": [0.6, 0.6, 0.3, 0.1]}
+
+
 def scene_for(shader: Path) -> dict:
     """A small scene that shows a shader: a UV sphere (mesh: UVs, tangents, vertices a
     vertex function can move) under a directional and a point light and the sky; a lightmapped
     sphere (LIGHTMAP) where the shader's drawn vertex/fragment program reads Unity's lightmap,
-    which it cannot run without (every other shader sees the sphere as it always has)."""
+    which it cannot run without, and a realtime GI lightmap (DYNAMIC_LIGHTMAP) where it reads
+    Unity's realtime lightmap (every other shader sees the sphere as it always has)."""
     material = {"surface": str(shader)}
     if _reads_lightmap(shader):
         material["lightmap"] = dict(LIGHTMAP)
+    if _reads_lightmap(shader, realtime=True):
+        material["dynamic_lightmap"] = dict(DYNAMIC_LIGHTMAP)
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
                    "size": list(SIZE)},
@@ -81,17 +91,18 @@ def scene_for(shader: Path) -> dict:
     }
 
 
-def _reads_lightmap(shader: Path) -> bool:
+def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
     """Whether ``shader`` (a Unity .shader read without a lightmap) draws a vertex/fragment
-    program that reads the object's lightmap; False for anything else, and for a shader the
-    reader refuses (its render says why)."""
+    program that reads the object's lightmap (with ``realtime``, its realtime GI lightmap); False
+    for anything else, and for a shader the reader refuses (its render says why)."""
     from ..importers.unity import BUILTIN, read_shader
+    from ..importers.unity.dynamic_lightmaps import needs_dynamic_lightmap
     from ..importers.unity.lightmaps import needs_lightmap
     from ..importers.urp import material as urp
     if Path(shader).suffix != ".shader" or urp.reads(Path(shader)):  # a URP shader: no supplied lightmap
         return False
     try:
-        return needs_lightmap(read_shader(Path(shader), BUILTIN))
+        return (needs_dynamic_lightmap if realtime else needs_lightmap)(read_shader(Path(shader), BUILTIN))
     except PbrlabError:
         return False
 

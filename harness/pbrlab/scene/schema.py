@@ -149,6 +149,16 @@ def _material(texture_slots, brdf_terms) -> dict:
                                     "scale_offset": {"type": "array", "items": {"type": "number"},
                                                      "minItems": 4, "maxItems": 4},
                                     "encoding": {"enum": ["full_hdr", "rgbm", "dldr"]}}},
+        "dynamic_lightmap": {"description": "A Unity shader's realtime GI (Enlighten) lightmap, supplied (the harness "
+                                            "runs no Enlighten): an HDR image (.exr/.hdr: Unity's RGB9E5 output, "
+                                            "unity_DynamicLightmap) and scale_offset (unity_DynamicLightmapST: "
+                                            "scale xy, offset zw of the realtime lightmap UVs, TEXCOORD2: the mesh's "
+                                            "lightmap UVs, its second UV set). Sets DYNAMICLIGHTMAP_ON where a pass "
+                                            "declares it.",
+                             "type": "object", "additionalProperties": False, "required": ["path"],
+                             "properties": {"path": {"type": "string", "minLength": 1},
+                                            "scale_offset": {"type": "array", "items": {"type": "number"},
+                                                             "minItems": 4, "maxItems": 4}}},
     })
     material["allOf"] = [
         # the workflow's own F0 field: metallic or specular, not the other's
@@ -166,7 +176,8 @@ def _material(texture_slots, brdf_terms) -> dict:
     material["dependentSchemas"] = {k: {"required": ["transmission"],
                                         "properties": {"transmission": {"exclusiveMinimum": 0}}}
                                     for k in TRANSMISSION_KEYS[1:]}
-    material["dependentRequired"] = {"properties": ["surface"], "keywords": ["surface"], "lightmap": ["surface"]}
+    material["dependentRequired"] = {"properties": ["surface"], "keywords": ["surface"], "lightmap": ["surface"],
+                                    "dynamic_lightmap": ["surface"]}
     return material
 
 

@@ -5,7 +5,8 @@ the harness, in HLSL (the program as written) or GLSL (its ``port-unity`` port).
 
 Each stage is the Unity prelude (``generate.prelude``), a ``#line`` to the shader file, the
 program, then an entry point of this module's: the vertex entry builds the vertex function's
-input from the mesh's attributes by Unity's semantics (POSITION, NORMAL, TANGENT, TEXCOORD0/1,
+input from the mesh's attributes by Unity's semantics (POSITION, NORMAL, TANGENT, TEXCOORD0/1 (and 2 for
+an object given a realtime GI lightmap: dynamic_lightmaps.py),
 COLOR; what a mesh here lacks is 0, and w of POSITION 1), calls it and passes its outputs on
 by semantic; the fragment entry rebuilds the fragment function's input from them (SV_POSITION
 and VPOS the fragment's window position, VFACE / SV_IsFrontFace its facing) and writes what it
@@ -44,6 +45,16 @@ _ATTRIBUTES = {
     "TEXCOORD0": ("in_uv", 2, 0.0), "TEXCOORD1": ("in_uv1", 2, 0.0), "COLOR0": ("in_color", 4, 0.0),
 }
 _POSITION = ("SV_POSITION", "POSITION")
+# TEXCOORD2 (Mesh.uv3; no mesh here has one: 0), or for an object given a realtime GI lightmap
+# the realtime lightmap UVs: Unity packs them from uv3, else from uv2 (TEXCOORD1), the lightmap
+# UVs here (importers/unity/dynamic_lightmaps.py, which defines PBRLAB_REALTIME_LIGHTMAP_UV).
+_REALTIME_LIGHTMAP_UV = "pbrlab_texcoord2"
+
+
+def _realtime_lightmap_uv(language: str) -> list[str]:
+    zero = "float2(0.0, 0.0)" if language == "hlsl" else "vec2(0.0)"
+    return ["#ifdef PBRLAB_REALTIME_LIGHTMAP_UV", f"#define {_REALTIME_LIGHTMAP_UV} in_uv1", "#else",
+            f"#define {_REALTIME_LIGHTMAP_UV} {zero}", "#endif"]
 # System values a vertex function may take (Unity's procedural draws index a buffer by them):
 # the index the mesh's index buffer gives the vertex, and the instance's (0: one instance).
 _SYSTEM_VALUES = {"SV_VERTEXID": ("pbrlab_vertex_id", "gl_VertexID"),
@@ -125,14 +136,21 @@ def _fill_struct(vf, kind: str, var: str, language: str, value_of) -> list[str]:
     return out
 
 
-def _attribute(semantic: str, n: int, language: str, kind: str = "uint"):
+def _attribute(semantic: str, n: int, language: str, kind: str = "uint", realtime_uv: bool = False):
+    """The mesh attribute of ``semantic`` as ``n`` components, or None (0); ``realtime_uv``: TEXCOORD2
+    may be the realtime lightmap UVs (this module's vertex entry defines them)."""
     if semantic in _SYSTEM_VALUES:
         hlsl, glsl = _SYSTEM_VALUES[semantic]
         return f"({kind}){hlsl}" if language == "hlsl" else f"{_type(kind, language)}({glsl})"
     if semantic in _ATTRIBUTES:
         expr, have, w = _ATTRIBUTES[semantic]
         return fit(expr, have, n, language, w)
-    return None  # TEXCOORD2..7 and others: no such attribute on meshes here: 0
+    if semantic == "TEXCOORD2" and realtime_uv and not kind.removeprefix("min16").startswith(("int", "uint", "bool")):
+        # the realtime lightmap UVs where a realtime lightmap is supplied (an integer member: 0; a
+        # surface program's vertex input, generate.py, keeps 0: a surface shader takes no realtime
+        # lightmap, dynamic_lightmaps.check_reads)
+        return fit(_REALTIME_LIGHTMAP_UV, 2, n, language, 0.0)
+    return None  # TEXCOORD3..7 and others: no such attribute on meshes here: 0
 
 
 def _outputs(vf, where: str) -> list[tuple]:
@@ -265,11 +283,11 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         if _struct(vf, kind) is not None:
             body += _declare(kind, local, language)
             if qual != "out":
-                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language, t))
+                body += _fill_struct(vf, kind, local, language, lambda s, n, t: _attribute(s, n, language, t, True))
         else:
             n = _size(kind, where)
             body.append(f"    {_type(kind, language)} {local} = "
-                        f"{(_attribute(canonical(semantic), n, language, kind) if qual != 'out' else None) or _zero(kind, language)};")
+                        f"{(_attribute(canonical(semantic), n, language, kind, True) if qual != 'out' else None) or _zero(kind, language)};")
         args.append(local)
     call = f"{vf.vertex}({', '.join(args)})"
     if vf.vertex_return != "void":
@@ -294,12 +312,13 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
         # integer input is flat already, and a linker refuses a mismatch)
         params += [f"{'nointerpolation ' if _flat(kind, s, vf) else ''}out {kind} pbrlab_vary_{s} : TEXCOORD{i}"
                    for i, (s, kind) in enumerate(varyings(vf, where))]
+        lines += _realtime_lightmap_uv(language)
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
                   f", out float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
         body.append(f"    pbrlab_clip = {position};")
     else:
         lines += ["in vec3 in_position;", "in vec3 in_normal;", "in vec2 in_uv;", "in vec4 in_tangent;",
-                  "in vec2 in_uv1;", "in vec4 in_color;"]
+                  "in vec2 in_uv1;", "in vec4 in_color;"] + _realtime_lightmap_uv(language)
         lines += [f"{_flat(kind, s, vf)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
         lines += [_POSITIONAL_ADD, "out vec3 pbrlab_vary_world_position;", "#endif", "void main() {"]
         body.append(f"    gl_Position = {position};")
@@ -378,6 +397,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         params += [f"{'nointerpolation ' if _flat(kind, s, vf) and not _flat(kind) else ''}{kind} pbrlab_vary_{s} : TEXCOORD{i}"
                    for i, (s, kind) in enumerate(varyings(vf, where))]
         params.append("out float4 pbrlab_radiance : SV_Target0")
+        lines += _realtime_lightmap_uv(language)
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
                   f", float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
     else:

@@ -128,8 +128,9 @@ def vertex_lit_passes(passes: list, lightmap: Lightmap | None) -> list:
 
 
 # Textures Unity's engine binds per renderer, which no material property sets (parse's implicit
-# texture properties leave them out): the supplied lightmap's.
-ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap"})
+# texture properties leave them out): the supplied lightmap's, and the realtime GI lightmap's
+# (dynamic_lightmaps.py).
+ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap", "unity_DynamicLightmap"})
 # What a supplied lightmap provides (cginc/UnityLightmapDecoding.cginc).
 SUPPLIED = ("unity_Lightmap", "unity_LightmapST", "unity_Lightmap_HDR", "DecodeLightmap", "DecodeLightmapRGBM",
             "DecodeLightmapDoubleLDR")

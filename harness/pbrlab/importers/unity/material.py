@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import lightmaps
+from . import dynamic_lightmaps, lightmaps
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
@@ -142,15 +142,17 @@ class ProgramPass:
     """A surface program or a vertex/fragment pass of a Unity shader."""
     grab = None
 
-    def __init__(self, unity_pass, alpha_mode: str, moves_vertices: bool, lightmap=None):
+    def __init__(self, unity_pass, alpha_mode: str, moves_vertices: bool, lightmap=None, dynamic_lightmap=None):
         self.unity_pass = unity_pass
         self.alpha_mode = alpha_mode
         self.lightmap = lightmap  # the material's supplied lightmap (lightmaps.py), or None
+        self.dynamic_lightmap = dynamic_lightmap  # its realtime GI lightmap (dynamic_lightmaps.py), or None
         # a sphere is ray-traced by a surface program that leaves vertices where they are
         self.traces_spheres = unity_pass.kind == "surface" and not moves_vertices
 
     def draws(self, defines: dict) -> list:
-        defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap)}
+        defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
+                   **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap)}
         out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
                for keyed, additive in light_programs(self.unity_pass, defines)]
         if deferred.is_light_pass(self.unity_pass):  # lights after the first: the coverage stays
@@ -175,7 +177,8 @@ class ProgramPass:
             _set(program, name, unit + i)
             w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab
             _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
-        lightmaps.bind(program, self.lightmap, cache, unit + len(grabbed))
+        used = lightmaps.bind(program, self.lightmap, cache, unit + len(grabbed))
+        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + len(grabbed) + used)
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate
@@ -190,10 +193,11 @@ class UnitySource:
         self.shader = shader  # model.UnityShader: every pass that runs
         self.moves_vertices = shader.moves_vertices
         self.lightmap = lightmap  # the supplied lightmap of the material's objects (lightmaps.py)
+        self.dynamic_lightmap = None  # their supplied realtime GI lightmap (dynamic_lightmaps.py)
 
     def passes(self, material) -> list:
         return [GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
-                                                                 self.lightmap)
+                                                                 self.lightmap, self.dynamic_lightmap)
                 for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap)
                 if not _skipped(p, self.shader.path)]
 
@@ -269,13 +273,20 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     if lightmap is not None and pipeline not in (None, BUILTIN):
         r.fail(f"a supplied lightmap is read for Unity's built-in render pipeline only, not {pipeline.name}",
                "lightmap")
+    dynamic = dynamic_lightmaps.read_dynamic_lightmap(r, base)
+    if dynamic is not None and pipeline not in (None, BUILTIN):
+        r.fail(f"a supplied realtime GI lightmap is read for Unity's built-in render pipeline only, not "
+               f"{pipeline.name}", "dynamic_lightmap")
     try:
-        shader = load_shader(m.surface, lightmaps.lightmapped(BUILTIN, lightmap) if lightmap else pipeline or BUILTIN)
+        shader = load_shader(m.surface, dynamic_lightmaps.realtime_lit(
+            lightmaps.lightmapped(BUILTIN, lightmap) if lightmap else pipeline or BUILTIN, dynamic))
     except UnityShaderError as exc:
         r.fail(str(exc), "surface")
     m.source = (source_type or UnitySource)(shader)
     if lightmap is not None:
         m.source.lightmap = lightmap
+    if dynamic is not None:
+        m.source.dynamic_lightmap = dynamic
     for key in _NOT_FOR_UNITY + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
@@ -297,6 +308,7 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     m.keywords = tuple(dict.fromkeys(keywords))
     if pipeline in (None, BUILTIN):  # (URP's package stand-ins have their own lightmap macros)
         lightmaps.check_reads(shader, lightmap, r, m.keywords)
+        dynamic_lightmaps.check_reads(shader, dynamic, r, m.keywords)
     surface = shader.surface
     if surface is not None:
         m.alpha_mode = surface.pragma.alpha_mode

@@ -15,6 +15,7 @@ from .geometry_syntax import parse_geometry
 from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
+from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
 from .written_globals import copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -154,7 +155,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     on = [k for k in keywords if k in declared_keywords(program)
-          or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))]  # a lightmapped object's (lightmaps.py)
+          or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))  # a lightmapped object's (lightmaps.py)
+          or (k == "DYNAMICLIGHTMAP_ON" and declares_dynamic_lightmap_on(program))]  # (dynamic_lightmaps.py)
     defines = defines_of(everything, on)
     everything = active_text(everything, defines)  # the drawn variant's branches
     # a global only Unity's engine sets: filled from the scene where the program declares it

@@ -272,10 +272,15 @@ STAND_IN_REFUSED_KEYWORDS = {
         # a lightmapped object's (importers/unity/lightmaps.py)
         "LIGHTMAP_ON": "a lightmapped object's GI (from its lightmap) is not drawn by pbrlab's "
                        "UnityStandardCore.cginc, which lights by the environment",
+        # an object lit by realtime GI (importers/unity/dynamic_lightmaps.py)
+        "DYNAMICLIGHTMAP_ON": "an object's realtime GI (from its realtime lightmap) is not drawn by pbrlab's "
+                              "UnityStandardCore.cginc, which lights by the environment",
     },
     "UnityGlobalIllumination.cginc": {
         "LIGHTMAP_ON": "a lightmapped object's GI (from its lightmap) is not drawn by pbrlab's "
                        "UnityGlobalIllumination.cginc, which lights by the environment",
+        "DYNAMICLIGHTMAP_ON": "an object's realtime GI (from its realtime lightmap) is not drawn by pbrlab's "
+                              "UnityGlobalIllumination.cginc, which lights by the environment",
     },
     "UnityStandardParticles.cginc": {
         "SOFTPARTICLES_ON": "soft particles fade by the scene's depth in the camera's depth texture "

@@ -21,10 +21,10 @@ UNPROVIDED = {
                     "lightmap does not include"),
     **dict.fromkeys(("unity_ShadowMask", "UNITY_SAMPLE_SHADOWMASK"),
                     "baked shadow masks, which a supplied lightmap does not include"),
-    **dict.fromkeys(("unity_DynamicLightmap", "unity_DynamicLightmapST", "unity_DynamicDirectionality",
-                     "DecodeRealtimeLightmap"),
-                    "realtime GI lightmaps (Enlighten's, with per-renderer UVs in TEXCOORD2), which the harness "
-                    "does not compute"),
+    # (the realtime GI lightmap itself, unity_DynamicLightmap/unity_DynamicLightmapST/
+    # DecodeRealtimeLightmap, is the one a material supplies: dynamic_lightmaps.py)
+    "unity_DynamicDirectionality": "directional realtime GI lightmaps (the dominant-direction texture beside "
+                                   "a realtime lightmap), which a supplied realtime lightmap does not include",
     **dict.fromkeys(("UnityMetaVertexPosition", "UnityMetaFragment", "UnityMetaInput",
                      "unity_MetaVertexControl", "unity_MetaFragmentControl"),
                     "the lightmap-baking meta pass"),

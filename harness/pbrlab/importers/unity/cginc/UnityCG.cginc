@@ -4,3 +4,4 @@
 
 #include "UnityCGPacking.cginc"
 #include "UnityLightmapDecoding.cginc"
+#include "UnityRealtimeLightmap.cginc"
