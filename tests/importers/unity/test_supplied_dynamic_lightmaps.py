@@ -24,7 +24,7 @@ from pbrlab.importers.loader import parse_scene
 from pbrlab.render.renderer import render_scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from test_supplied_lightmaps import BLOCK, CAMERA, N, SIZE, expected  # noqa: E402
+from test_supplied_lightmaps import BLOCK, CAMERA, N, SIZE, expected, _shader as baked_shader  # noqa: E402
 
 pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnityShaderNote")
 
@@ -47,31 +47,8 @@ DECODE = "return float4(DecodeRealtimeLightmap(UNITY_SAMPLE_TEX2D(unity_DynamicL
 
 def _shader(tmp_path, body=DECODE, pragmas="", name="dyn",
             uv="o.lm = v.texcoord2.xy * unity_DynamicLightmapST.xy + unity_DynamicLightmapST.zw;"):
-    text = f"""
-    Shader "t/{name}" {{
-        SubShader {{ Pass {{
-            CGPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            {pragmas}
-            #include "UnityCG.cginc"
-            struct v2f {{ float4 pos : SV_POSITION; float2 lm : TEXCOORD0; }};
-            v2f vert (appdata_full v) {{
-                v2f o;
-                o.pos = UnityObjectToClipPos(v.vertex);
-                {uv}
-                return o;
-            }}
-            float4 frag (v2f i) : SV_Target {{
-                {body}
-            }}
-            ENDCG
-        }} }}
-    }}
-    """
-    path = tmp_path / f"{name}.shader"
-    path.write_text(textwrap.dedent(text))
-    return path
+    """The baked test's pass (test_supplied_lightmaps._shader) with the realtime lightmap's UVs."""
+    return baked_shader(tmp_path, body, pragmas, name, uv)
 
 
 def _blocks(tmp_path, name="realtime.exr", seed=23):

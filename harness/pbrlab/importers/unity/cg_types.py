@@ -1393,6 +1393,11 @@ class _Parser:
         if any(a.t is None or not a.t.numeric or a.t.cols for a in args) or not args:
             return None
         if kind == "bool1":
+            a = args[0]
+            if len(args) == 1 and not self.decl_only and (a.t.dim == 1 or a.t.base != "bool"):
+                # HLSL's any/all of a numeric value test its components against 0, and take a
+                # scalar; GLSL's take a bool vector only: any(bvecN(x)), of a scalar any(bvec2(x))
+                self.wrap(a, f"bvec{max(a.t.dim, 2)}")
             return Type("bool")
         dims = [a.t.dim for a in args if a.t.dim > 1]
         n = min(dims) if dims else 1

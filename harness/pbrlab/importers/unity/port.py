@@ -39,7 +39,7 @@ from . import cg_spellings, cg_types, multisampled_textures
 from . import model as M
 from .geometry_syntax import spell_for_glsl
 from .output_struct import layered_struct
-from .source_text import PORT_MARKER, included_text
+from .source_text import PORT_MARKER, call_arguments, included_text
 from .texture_methods import spelled_texture_methods
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
@@ -201,27 +201,6 @@ _SRP_TEXTURE_MACROS = {
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 
 
-def _macro_arguments(code: str, start: int):
-    """(the arguments, the offset after ``)``) of a call whose ``(`` is at ``start``, split at
-    top-level commas (a call may span lines); None when the parentheses do not close."""
-    depth, args, begin = 0, [], start + 1
-    for i in range(start, len(code)):
-        c = code[i]
-        if c == "#" and code[code.rfind("\n", 0, i) + 1:i].strip() == "":
-            return None  # a preprocessor line inside: not a call this rule reads
-        if c in "([":
-            depth += 1
-        elif c in ")]":
-            depth -= 1
-            if depth == 0:
-                args.append(code[begin:i].strip())
-                return args, i + 1
-        elif c == "," and depth == 1:
-            args.append(code[begin:i].strip())
-            begin = i + 1
-    return None
-
-
 # The start of a #define line up to its replacement text (``#define NAME(a, b) ``): a use of
 # the texture API after it is the shader's own macro's (``#define SAMPLE_MASK(uv)
 # SAMPLE_TEXTURE2D(_Mask, sampler_Mask, uv)``), spelled in Cg like any other.
@@ -241,7 +220,7 @@ def _expand_srp_texture_macros(code: str) -> str:
         head = code[line_start:m.start()].lstrip()
         if head.startswith("#") and not _DEFINE_BODY.match(head):
             continue  # a directive, or the name a #define defines: the stand-ins' own definitions
-        found = _macro_arguments(code, m.end() - 1)
+        found = call_arguments(code, m.end() - 1)
         if found is None:
             continue
         args, end = found

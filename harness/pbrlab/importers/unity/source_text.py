@@ -62,6 +62,27 @@ def matching_brace(text: str, open_index: int, opening: str = "{", closing: str 
     return -1
 
 
+def call_arguments(code: str, start: int):
+    """(the arguments, the offset after ``)``) of a call whose ``(`` is at ``start``, split at
+    top-level commas (a call may span lines); None when the parentheses do not close."""
+    depth, args, begin = 0, [], start + 1
+    for i in range(start, len(code)):
+        c = code[i]
+        if c == "#" and code[code.rfind("\n", 0, i) + 1:i].strip() == "":
+            return None  # a preprocessor line inside: not a call this rule reads
+        if c in "([":
+            depth += 1
+        elif c in ")]":
+            depth -= 1
+            if depth == 0:
+                args.append(code[begin:i].strip())
+                return args, i + 1
+        elif c == "," and depth == 1:
+            args.append(code[begin:i].strip())
+            begin = i + 1
+    return None
+
+
 def matching_paren(text: str, open_index: int) -> int:
     """The offset of the ``)`` that closes the ``(`` at ``open_index``; -1 when none does."""
     return matching_brace(text, open_index, "(", ")")

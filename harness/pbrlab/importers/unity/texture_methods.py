@@ -25,29 +25,12 @@ from __future__ import annotations
 
 import re
 
+from .source_text import call_arguments
+
 _DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState)(?:\s*<\s*\w+\s*>)?"
                           r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
 _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
-
-
-def _arguments(code: str, start: int):
-    """(arguments split at top-level commas, the offset after ``)``) of the call whose ``(`` is
-    at ``start``; None when it does not close."""
-    depth, args, begin = 0, [], start + 1
-    for i in range(start, len(code)):
-        c = code[i]
-        if c in "([":
-            depth += 1
-        elif c in ")]":
-            depth -= 1
-            if depth == 0:
-                args.append(code[begin:i].strip())
-                return args, i + 1
-        elif c == "," and depth == 1:
-            args.append(code[begin:i].strip())
-            begin = i + 1
-    return None
 
 
 def _call(kind: str, method: str, texture: str, args: list):
@@ -90,7 +73,7 @@ def spelled_texture_methods(code: str) -> str:
     for m in _METHOD.finditer(code):
         if m.start() < pos or kinds.get(m.group(1)) not in _COMBINED:
             continue
-        found = _arguments(code, m.end() - 1)
+        found = call_arguments(code, m.end() - 1)
         if found is None:
             continue
         args, end = found
