@@ -10,8 +10,8 @@
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
 
-// Whether colours are in gamma space: pbrlab renders linear (Unity's Linear colour space).
-bool IsGammaSpace() { return false; }
+// IsGammaSpace() (false: pbrlab renders linear, Unity's Linear colour space) is the Unity
+// layer's, which every program of a Unity shader holds (unity_compat/shader_variables).
 
 #define SHADERGRAPH_FOG(position, color, density) color = float4(0.0, 0.0, 0.0, 0.0); density = 0.0
 #define SHADERGRAPH_AMBIENT_SKY float4(SampleSH(float3(0.0, 1.0, 0.0)), 1.0)
