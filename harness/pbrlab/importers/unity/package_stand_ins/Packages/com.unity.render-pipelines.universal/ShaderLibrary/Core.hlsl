@@ -28,6 +28,17 @@
 #endif
 #define TWO_PI 6.28318530718
 #define INV_PI 0.31830988618
+// Core RP's Macros.hlsl constants: multiples of pi and their reciprocals, to the digits
+// Core RP spells them (pi = 3.14159265358979...).
+#define FOUR_PI 12.5663706144
+#define INV_TWO_PI 0.15915494309
+#define INV_FOUR_PI 0.07957747155
+#define HALF_PI 1.57079632679
+#define INV_HALF_PI 0.636619772367
+#define LOG2_E 1.44269504089
+#define INV_SQRT2 0.70710678118
+#define FLT_MAX 3.402823466e+38
+#define HALF_MAX 65504.0
 
 // SRP-batcher constant buffers: plain uniforms here.
 #define CBUFFER_START(name)
@@ -139,6 +150,12 @@ float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float
 // Normals by the inverse transpose: n^T M^-1, as Unity writes it.
 float3 TransformObjectToWorldNormal(float3 normalOS) { return SafeNormalize(mul(normalOS, (float3x3)unity_WorldToObject)); }
 float3 TransformWorldToViewDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_V, dirWS); }
+// Core RP's overload with doNormalize: the same direction, normalized when asked (SafeNormalize).
+float3 TransformWorldToViewDir(float3 dirWS, bool doNormalize) {
+    float3 dirVS = mul((float3x3)UNITY_MATRIX_V, dirWS);
+    if (doNormalize) return SafeNormalize(dirVS);
+    return dirVS;
+}
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
