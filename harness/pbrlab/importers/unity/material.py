@@ -204,7 +204,8 @@ class UnitySource:
     def camera_textures(self, material) -> frozenset:
         """The camera's textures its passes read (render/camera_textures.py renders them; scene/gbuffer_surface.py)."""
         from ...scene.gbuffer_surface import read_by
-        return frozenset().union(*(read_by(p.program) for p in self.shader.passes if p.kind != "grab"))
+        return frozenset().union(*(read_by(_read_text(p, self.shader.path)) for p in self.shader.passes
+                                   if p.kind != "grab"))
 
     def gbuffer_surface(self, material):
         """What the object shows in the depth pre-pass and the G-buffer: in the depth texture
@@ -233,6 +234,16 @@ class UnitySource:
 _QUEUES = {"background": 1000, "geometry": 2000, "alphatest": 2450, "transparent": 3000, "overlay": 4000}
 _OPAQUE_QUEUE_LIMIT = 2500
 _QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
+
+
+def _read_text(unity_pass, path: Path) -> str:
+    """The text whose names say which camera textures a pass reads: its program, and for a URP
+    program the files it includes too (URP's DeclareDepthTexture.hlsl declares the depth texture
+    its SampleSceneDepth reads, which the program need not name)."""
+    if not getattr(unity_pass, "srp", False):
+        return unity_pass.program
+    from .source_text import included_text
+    return unity_pass.program + included_text(unity_pass.program, path.parent)
 
 
 def _render_queue(path: Path) -> int:

@@ -63,6 +63,11 @@
 #define SAMPLE_TEXTURE2D_BIAS(t, s, uv, bias) t.SampleBias(s, uv, bias)
 #define SAMPLE_TEXTURECUBE(t, s, d) t.Sample(s, d)
 #define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
+// The _X forms (a texture array per eye in XR; one 2D texture without XR, as here).
+#define TEXTURE2D_X(t) Texture2D t
+#define TEXTURE2D_X_FLOAT(t) Texture2D t
+#define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
+#define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
