@@ -1,0 +1,141 @@
+"""URP's scene-texture includes and Core RP names (issue 34): the DeclareDepthTexture.hlsl
+stand-in reads the harness's real depth pre-pass (render/camera_textures.py), and Core RP's
+Macros.hlsl constants and TransformWorldToViewDir(dir, doNormalize) exist.
+
+Scene (as tests/importers/unity/test_deferred_path.py): the corpus scene's camera looking at a
+ray-traced unit sphere whose material is the shader under test; the depth pre-pass traces that
+sphere exactly. Checked on the pixels whose centre ray meets the float64 sphere at least
+SILHOUETTE_MARGIN inside its rim.
+"""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import numpy as np
+import pytest
+
+from pbrlab.checking import unity_corpus as corpus
+from pbrlab.importers.loader import parse_scene
+from pbrlab.maths.camera import camera_rays
+from pbrlab.render.depth_range import scene_frame
+from pbrlab.render.renderer import render_scene
+
+LANGUAGES = ("glsl", "hlsl")
+SUN = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0}
+SILHOUETTE_MARGIN = 0.95
+
+_URP_PASS = """
+Shader "t/%(name)s" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            %(include)s
+            struct Attributes { float4 positionOS : POSITION; };
+            struct Varyings { float4 positionCS : SV_POSITION; };
+            Varyings vert(Attributes IN) {
+                Varyings OUT;
+                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                return OUT;
+            }
+            float4 frag(Varyings IN) : SV_Target {
+                %(body)s
+            }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+# SampleSceneDepth at the pixel's screen uv, LoadSceneDepth at its integer coordinates.
+DEPTH_SHADER = _URP_PASS % {
+    "name": "urp depth",
+    "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/DeclareDepthTexture.hlsl"',
+    "body": """float raw = SampleSceneDepth(GetNormalizedScreenSpaceUV(IN.positionCS));
+                float loaded = LoadSceneDepth(uint2(IN.positionCS.xy));
+                return float4(Linear01Depth(raw, _ZBufferParams), LinearEyeDepth(raw, _ZBufferParams),
+                              LinearEyeDepth(loaded, _ZBufferParams), 1.0);""",
+}
+
+# Core RP's constants and TransformWorldToViewDir's two forms (the view rotation keeps length).
+NAMES_SHADER = _URP_PASS % {
+    "name": "urp core names",
+    "include": "",
+    "body": """float3 d = float3(1.0, 2.0, 3.0);
+                return float4(INV_TWO_PI + 10.0 * HALF_PI, FOUR_PI + INV_FOUR_PI + INV_HALF_PI,
+                              length(TransformWorldToViewDir(d, true)) + 10.0 * length(TransformWorldToViewDir(d, false)),
+                              1.0);""",
+}
+
+
+def _scene(shader_text: str, tmp_path):
+    shader = tmp_path / "t.shader"
+    shader.write_text(textwrap.dedent(shader_text))
+    data = corpus.scene_for(shader)
+    data.pop("environment")
+    data["lights"] = [SUN]
+    data["objects"] = [{"sphere": {"center": [0.0, 0.0, 0.0], "radius": 1.0}, "material": "m"}]
+    return parse_scene(data, origin="urp scene-texture test scene", base=shader.parent)
+
+
+def _sphere_hits(frame):
+    """(unit ray directions, float64 distance to the unit sphere or NaN, rays well inside the rim)."""
+    d = camera_rays(frame)
+    o = np.asarray(frame.position, np.float64)
+    b = d @ o
+    closest2 = o @ o - b * b
+    t = -b - np.sqrt(np.maximum(1.0 - closest2, 0.0))
+    return d, np.where(closest2 <= 1.0, t, np.nan), closest2 <= SILHOUETTE_MARGIN ** 2
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
+    """Linear01Depth(SampleSceneDepth(uv), _ZBufferParams) = eye depth / far of the float64
+    ray-sphere hit; LinearEyeDepth of SampleSceneDepth and of LoadSceneDepth = eye depth. The
+    bound is test_deferred_path.py's (the same texture, the same float32 chain): the window depth
+    z is stored in float32 after a few roundings (K_DEPTH_ULPS = 6 units of 2^-24: clip product,
+    divide, * 0.5 + 0.5, store, and the ray's float32 error through the depth), and 1/e is affine
+    in z with slope (1/near - 1/far), so e moves by e^2 (1/near - 1/far) dz; plus 8 ulp of e for
+    LinearEyeDepth's own float32 arithmetic. Control: the neighbouring pixel's depth fails it."""
+    scene = _scene(DEPTH_SHADER, tmp_path)
+    frame = scene_frame(scene)
+    d, t, inside = _sphere_hits(frame)
+    image = render_scene(scene, language=language).linear.astype(np.float64)
+    covered = inside & (image[..., 3] > 0)
+    assert covered.sum() > 1000
+    eye = t * (d @ frame.forward)
+    k_depth_ulps = 6.0
+    bound = eye ** 2 * (1 / frame.near - 1 / frame.far) * k_depth_ulps * 2.0 ** -24 + 8 * 2.0 ** -24 * eye
+    err01 = np.abs(image[..., 0] - eye / frame.far)
+    assert (err01[covered] <= (bound / frame.far)[covered]).all(), (err01 / bound * frame.far)[covered].max()
+    for channel in (1, 2):  # SampleSceneDepth, LoadSceneDepth
+        err = np.abs(image[..., channel] - eye)
+        assert (err[covered] <= bound[covered]).all(), (channel, (err / bound)[covered].max())
+    shifted = np.abs(np.roll(image[..., 2], 1, axis=0) - eye)  # control: the neighbouring pixel's depth
+    assert (shifted[covered] > bound[covered]).mean() > 0.9
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_core_rp_constants_and_view_direction(tmp_path, language):
+    """INV_TWO_PI + 10 HALF_PI, FOUR_PI + INV_FOUR_PI + INV_HALF_PI against float64 pi, and
+    |TransformWorldToViewDir(d, true)| + 10 |TransformWorldToViewDir(d, false)| = 1 + 10 |d|
+    (the view's rotation keeps length). Bound: float32 rounding of sums near 16 and 38, 4 ulp
+    (2^-24 relative each) of the result; the constants carry 11-12 digits, below that. Control:
+    the unnormalized form alone (10 |d| + |d|) fails it."""
+    image = render_scene(_scene(NAMES_SHADER, tmp_path), language=language).linear.astype(np.float64)
+    covered = image[..., 3] > 0
+    assert covered.sum() > 1000
+    expected = np.array([1 / (2 * math.pi) + 10 * math.pi / 2,
+                         4 * math.pi + 1 / (4 * math.pi) + 2 / math.pi,
+                         1.0 + 10.0 * math.sqrt(14.0)])
+    bound = 4 * 2.0 ** -24 * np.abs(expected) * 4  # 4 ulp of each sum's float32 terms (up to 4 terms)
+    err = np.abs(image[..., :3][covered] - expected)
+    assert (err <= bound).all(), (err / bound).max(axis=0)
+    wrong = 11.0 * math.sqrt(14.0)  # control: no normalization
+    assert abs(wrong - expected[2]) > bound[2]
