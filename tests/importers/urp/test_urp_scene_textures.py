@@ -139,3 +139,57 @@ def test_core_rp_constants_and_view_direction(tmp_path, language):
     assert (err <= bound).all(), (err / bound).max(axis=0)
     wrong = 11.0 * math.sqrt(14.0)  # control: no normalization
     assert abs(wrong - expected[2]) > bound[2]
+
+
+# SampleSceneColor: a URP plane over the whole view (ZTest Always, seen straight down, as
+# test_deferred_path.py's blit scene) over a pbrlab sphere drawn before it;
+# the plane shows 2 SampleSceneColor(uv) + 0.25 in r, g and LoadSceneColor in b.
+OPAQUE_SHADER = (_URP_PASS % {
+    "name": "urp opaque",
+    "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/DeclareOpaqueTexture.hlsl"',
+    "body": """float3 c = SampleSceneColor(GetNormalizedScreenSpaceUV(IN.positionCS));
+                float3 loaded = LoadSceneColor(uint2(IN.positionCS.xy));
+                return float4(2.0 * c.rg + 0.25, loaded.b, 1.0);""",
+}).replace('Tags { "LightMode" = "UniversalForward" }', 'Tags { "LightMode" = "UniversalForward" }\n            ZTest Always')
+SCREEN_DISTANCE = 3.0
+SCREEN_FOV_DEG = 40.0
+
+
+def _opaque_scene(tmp_path, with_plane: bool):
+    shader = tmp_path / "opaque.shader"
+    shader.write_text(textwrap.dedent(OPAQUE_SHADER))
+    side = 2 * SCREEN_DISTANCE * np.tan(np.radians(SCREEN_FOV_DEG / 2))
+    objects = [{"sphere": {"center": [0.0, 0.0, 0.0], "radius": 0.6}, "material": "s"}]  # drawn first
+    if with_plane:
+        objects.append({"mesh": {"primitive": "plane", "size": float(side)},
+                        "transform": {"translate": [0.0, -1.0, 0.0]}, "material": "m"})
+    data = {
+        "camera": {"position": [0.0, 2.0, 0.0], "target": [0.0, -1.0, 0.0], "up": [0.0, 0.0, -1.0],
+                   "fov_y_deg": SCREEN_FOV_DEG, "size": [64, 64]},
+        "lights": [SUN],
+        "materials": {"m": {"surface": str(shader)}, "s": {"albedo": [0.5, 0.3, 0.2], "smoothness": 0.7}},
+        "objects": objects,
+    }
+    return parse_scene(data, origin="urp opaque-texture test scene", base=shader.parent)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_scene_color_is_the_opaque_copy(tmp_path, language):
+    """SampleSceneColor / LoadSceneColor read the copy of the target drawn before the plane (a
+    GrabPass's copy: a float blit, exact), so the plane shows 2 L + 0.25 in r and g and L in b,
+    where L is the render of the sphere alone. At a pixel centre the bilinear sample's weights
+    are exactly (1, 0) (uv = (x + 0.5) / 64 is exact in float32), so the only error is the
+    float32 rounding of 2 L + 0.25: 1 ulp, bounded by 2^-23 of the value. Control: the sphere
+    image one pixel down fails that bound on the sphere's lit pixels."""
+    alone = render_scene(_opaque_scene(tmp_path, False), language=language).linear.astype(np.float64)
+    image = render_scene(_opaque_scene(tmp_path, True), language=language).linear.astype(np.float64)
+    expected = np.concatenate([2 * alone[..., :2] + 0.25, alone[..., 2:3]], axis=-1)
+    bound = 2.0 ** -23 * np.maximum(np.abs(expected), 2.0 ** -10)
+    sphere = alone[..., 3] > 0
+    assert sphere.sum() > 300 and (alone[..., :3][sphere].max(axis=-1) > 0.01).mean() > 0.5  # lit, not black
+    assert (image[..., 3] > 0).all()
+    err = np.abs(image[..., :3] - expected)
+    assert (err <= bound).all(), (err / bound).max()
+    shifted = np.concatenate([2 * np.roll(alone, 1, axis=0)[..., :2] + 0.25, np.roll(alone, 1, axis=0)[..., 2:3]], -1)
+    lit = sphere & (alone[..., :3].max(axis=-1) > 0.01)
+    assert (np.abs(image[..., :3] - shifted) > bound)[lit].any(axis=-1).mean() > 0.9

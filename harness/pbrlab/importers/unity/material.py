@@ -32,6 +32,7 @@ from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
 from . import dynamic_lightmaps, lightmaps
+from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
@@ -196,10 +197,16 @@ class UnitySource:
         self.dynamic_lightmap = None  # their supplied realtime GI lightmap (dynamic_lightmaps.py)
 
     def passes(self, material) -> list:
-        return [GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
-                                                                 self.lightmap, self.dynamic_lightmap)
-                for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap)
-                if not _skipped(p, self.shader.path)]
+        out = []
+        for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
+            if _skipped(p, self.shader.path):
+                continue
+            if p.kind != "grab" and not any(q.grab == OPAQUE_TEXTURE for q in out) and \
+                    OPAQUE_TEXTURE in _NAMED_TEXTURES.findall(_read_text(p, self.shader.path)):
+                out.append(GrabPass(GrabPassModel(OPAQUE_TEXTURE, p.program_line)))  # URP's opaque copy
+            out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
+                                                                        self.lightmap, self.dynamic_lightmap))
+        return out
 
     def camera_textures(self, material) -> frozenset:
         """The camera's textures its passes read (render/camera_textures.py renders them; scene/gbuffer_surface.py)."""
@@ -234,6 +241,12 @@ class UnitySource:
 _QUEUES = {"background": 1000, "geometry": 2000, "alphatest": 2450, "transparent": 3000, "overlay": 4000}
 _OPAQUE_QUEUE_LIMIT = 2500
 _QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
+
+
+# URP's opaque texture (DeclareOpaqueTexture.hlsl): a copy of the target as drawn before the
+# object, as a built-in GrabPass makes (the stand-in says what it holds).
+OPAQUE_TEXTURE = "_CameraOpaqueTexture"
+_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture)\b")
 
 
 def _read_text(unity_pass, path: Path) -> str:
