@@ -193,3 +193,31 @@ def test_scene_color_is_the_opaque_copy(tmp_path, language):
     shifted = np.concatenate([2 * np.roll(alone, 1, axis=0)[..., :2] + 0.25, np.roll(alone, 1, axis=0)[..., 2:3]], -1)
     lit = sphere & (alone[..., :3].max(axis=-1) > 0.01)
     assert (np.abs(image[..., :3] - shifted) > bound)[lit].any(axis=-1).mean() > 0.9
+
+
+# URP's main-light globals against the scene's first directional light.
+MAIN_LIGHT_SHADER = _URP_PASS % {
+    "name": "urp main light",
+    "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"',
+    "body": """Light main = GetMainLight();
+                float off = abs(_MainLightColor.r - main.color.r) + abs(_MainLightPosition.w);
+                return float4(_MainLightPosition.xyz * 0.25 + 0.5 + float3(off, 0.0, 0.0), 1.0);""",
+}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_main_light_globals_are_the_first_directional_light(tmp_path, language):
+    """_MainLightPosition.xyz = the unit direction towards the sun (float64 -normalize(direction)),
+    w 0, and _MainLightColor = GetMainLight().color (any difference, or a w, is added to red). Bound: the
+    direction's float32 normalization and the * 0.25 + 0.5, a few ulp of 0.5..0.75 (4 * 2^-24 *
+    0.75 = 1.8e-7 per ulp counted, 8 counted). Control: the direction not negated (towards the
+    light, not from it) fails."""
+    image = render_scene(_scene(MAIN_LIGHT_SHADER, tmp_path), language=language).linear.astype(np.float64)
+    covered = image[..., 3] > 0
+    assert covered.sum() > 1000
+    towards = -np.asarray(SUN["direction"], np.float64) / np.linalg.norm(SUN["direction"])
+    bound = 8 * 2.0 ** -24
+    err = np.abs(image[..., :3][covered] - (towards * 0.25 + 0.5))
+    assert (err <= bound).all(), err.max()
+    wrong = np.abs(image[..., :3][covered] - (-towards * 0.25 + 0.5))  # control: the light's own direction
+    assert (wrong > bound).any(axis=-1).all()

@@ -198,6 +198,7 @@ _SRP_TEXTURE_MACROS = {
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_GRAD": lambda a: f"tex2Dgrad({a[0]}, {a[2]}, {a[3]}, {a[4]})",
     "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
                                      else f"texCUBE({a[0]}, {a[2]})"),
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
@@ -253,7 +254,7 @@ def _expand_srp_texture_macros(code: str) -> str:
         need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1,
                 "SAMPLER": 1}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
-            need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 3
+            need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
         spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)

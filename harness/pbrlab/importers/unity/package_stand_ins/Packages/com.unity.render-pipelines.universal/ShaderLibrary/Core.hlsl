@@ -61,6 +61,7 @@
 #define SAMPLE_TEXTURE2D(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
 #define SAMPLE_TEXTURE2D_BIAS(t, s, uv, bias) t.SampleBias(s, uv, bias)
+#define SAMPLE_TEXTURE2D_GRAD(t, s, uv, dpdx, dpdy) t.SampleGrad(s, uv, dpdx, dpdy)
 #define SAMPLE_TEXTURECUBE(t, s, d) t.Sample(s, d)
 #define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
 // The _X forms (a texture array per eye in XR; one 2D texture without XR, as here).
@@ -128,6 +129,20 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 #define UNITY_PREV_MATRIX_M unity_ObjectToWorld
 #define UNITY_PREV_MATRIX_I_M unity_WorldToObject
 #define UNITY_MATRIX_I_P unity_CameraInvProjection
+#define UNITY_MATRIX_I_VP mul(UNITY_MATRIX_I_V, UNITY_MATRIX_I_P)
+// GL's clip-space near plane: z = -w (Unity's UNITY_NEAR_CLIP_VALUE on OpenGL, not reversed-Z).
+#define UNITY_NEAR_CLIP_VALUE (-1.0)
+// The screen's size at URP's render scale, which is 1 here: _ScreenParams.
+#define _ScaledScreenParams _ScreenParams
+// URP's main light globals (Input.hlsl): the direction towards the scene's first directional
+// light (w 0) and its radiance; with none, URP's defaults: (0, 0, 1, 0) and black.
+#if defined(PBRLAB_DIRECTIONAL_COUNT) && PBRLAB_DIRECTIONAL_COUNT > 0
+#define _MainLightPosition float4(-u_directional_direction[0], 0.0)
+#define _MainLightColor float4(u_directional_radiance[0], 1.0)
+#else
+#define _MainLightPosition float4(0.0, 0.0, 1.0, 0.0)
+#define _MainLightColor float4(0.0, 0.0, 0.0, 0.0)
+#endif
 
 // A [0, 1] depth to the eye's distance and to [0, 1] of the far plane, with the
 // _ZBufferParams the caller passes (Core RP's signatures; the built-in ones take z alone):
@@ -136,6 +151,17 @@ float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferPa
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
 
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+// A screen position ([0, 1], y up as on GL, where UNITY_UV_STARTS_AT_TOP is undefined) and a
+// device depth (GL clip z / w, [-1, 1]) to world space through the inverse view-projection:
+// clip (ndc * 2 - 1, depth, 1), then the homogeneous divide (Core RP's ComputeClipSpacePosition
+// and ComputeWorldSpacePosition).
+float4 ComputeClipSpacePosition(float2 positionNDC, float deviceDepth) {
+    return float4(positionNDC * 2.0 - 1.0, deviceDepth, 1.0);
+}
+float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4 invViewProjMatrix) {
+    float4 positionHWS = mul(invViewProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
+    return positionHWS.xyz / positionHWS.w;
+}
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
