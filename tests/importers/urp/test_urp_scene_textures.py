@@ -221,3 +221,28 @@ def test_main_light_globals_are_the_first_directional_light(tmp_path, language):
     assert (err <= bound).all(), err.max()
     wrong = np.abs(image[..., :3][covered] - (-towards * 0.25 + 0.5))  # control: the light's own direction
     assert (wrong > bound).any(axis=-1).all()
+
+
+COMMON_SHADER = _URP_PASS % {
+    "name": "urp common functions",
+    "include": "",
+    "body": """float3 grey = Desaturate(float3(0.2, 0.5, 0.8), 0.25);
+                return float4(grey.r, grey.b, Remap01(0.6, 2.0, 0.4), 1.0);""",
+}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_desaturate_and_remap01(tmp_path, language):
+    """Desaturate((0.2, 0.5, 0.8), 0.25) = mean 0.5 + deviation / 4 = (0.425, 0.5, 0.575);
+    Remap01(0.6, 2, 0.4) = saturate(1.2 - 0.4) = 0.8. Bound: a few float32 roundings of values
+    below 1, 4 ulp (4 * 2^-24). Control: desaturating towards Rec. 709 luminance (0.4758)
+    instead of the mean gives r 0.407, outside the bound."""
+    image = render_scene(_scene(COMMON_SHADER, tmp_path), language=language).linear.astype(np.float64)
+    covered = image[..., 3] > 0
+    assert covered.sum() > 1000
+    expected = np.array([0.425, 0.575, 0.8])
+    bound = 4 * 2.0 ** -24
+    err = np.abs(image[..., :3][covered] - expected)
+    assert (err <= bound).all(), err.max()
+    luminance = 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.8
+    assert abs(luminance + (0.2 - luminance) * 0.25 - expected[0]) > bound  # control

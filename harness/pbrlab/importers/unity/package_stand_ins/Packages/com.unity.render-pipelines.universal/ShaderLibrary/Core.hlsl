@@ -150,6 +150,15 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
 
+// Core RP's Common.hlsl: x remapped so that start -> 0 and start + length -> 1, clamped, from
+// 1 / length and start / length: saturate(x rcpLength - startTimesRcpLength).
+float Remap01(float x, float rcpLength, float startTimesRcpLength) { return saturate(x * rcpLength - startTimesRcpLength); }
+// Core RP's Color.hlsl: the colour's deviation from the mean of its channels scaled by
+// saturation (0: grey at the mean, 1: unchanged).
+float3 Desaturate(float3 value, float saturation) {
+    float mean = (value.r + value.g + value.b) / 3.0;
+    return mean + (value - mean) * saturation;
+}
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
 // A screen position ([0, 1], y up as on GL, where UNITY_UV_STARTS_AT_TOP is undefined) and a
 // device depth (GL clip z / w, [-1, 1]) to world space through the inverse view-projection:
