@@ -32,6 +32,7 @@ from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
 from . import dynamic_lightmaps, lightmaps
+from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
@@ -196,15 +197,22 @@ class UnitySource:
         self.dynamic_lightmap = None  # their supplied realtime GI lightmap (dynamic_lightmaps.py)
 
     def passes(self, material) -> list:
-        return [GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
-                                                                 self.lightmap, self.dynamic_lightmap)
-                for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap)
-                if not _skipped(p, self.shader.path)]
+        out = []
+        for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
+            if _skipped(p, self.shader.path):
+                continue
+            if p.kind != "grab" and not any(q.grab == OPAQUE_TEXTURE for q in out) and \
+                    OPAQUE_TEXTURE in _NAMED_TEXTURES.findall(_read_text(p, self.shader.path)):
+                out.append(GrabPass(GrabPassModel(OPAQUE_TEXTURE, p.program_line)))  # URP's opaque copy
+            out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
+                                                                        self.lightmap, self.dynamic_lightmap))
+        return out
 
     def camera_textures(self, material) -> frozenset:
         """The camera's textures its passes read (render/camera_textures.py renders them; scene/gbuffer_surface.py)."""
         from ...scene.gbuffer_surface import read_by
-        return frozenset().union(*(read_by(p.program) for p in self.shader.passes if p.kind != "grab"))
+        return frozenset().union(*(read_by(_read_text(p, self.shader.path)) for p in self.shader.passes
+                                   if p.kind != "grab"))
 
     def gbuffer_surface(self, material):
         """What the object shows in the depth pre-pass and the G-buffer: in the depth texture
@@ -233,6 +241,22 @@ class UnitySource:
 _QUEUES = {"background": 1000, "geometry": 2000, "alphatest": 2450, "transparent": 3000, "overlay": 4000}
 _OPAQUE_QUEUE_LIMIT = 2500
 _QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
+
+
+# URP's opaque texture (DeclareOpaqueTexture.hlsl): a copy of the target as drawn before the
+# object, as a built-in GrabPass makes (the stand-in says what it holds).
+OPAQUE_TEXTURE = "_CameraOpaqueTexture"
+_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture)\b")
+
+
+def _read_text(unity_pass, path: Path) -> str:
+    """The text whose names say which camera textures a pass reads: its program, and for a URP
+    program the files it includes too (URP's DeclareDepthTexture.hlsl declares the depth texture
+    its SampleSceneDepth reads, which the program need not name)."""
+    if not getattr(unity_pass, "srp", False):
+        return unity_pass.program
+    from .source_text import included_text
+    return unity_pass.program + included_text(unity_pass.program, path.parent)
 
 
 def _render_queue(path: Path) -> int:

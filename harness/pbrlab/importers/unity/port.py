@@ -190,9 +190,15 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURECUBE_PARAM": lambda a: f"samplerCUBE {a[0]}, int {a[1]}",
     "TEXTURE2D_ARGS": lambda a: f"{a[0]}, {a[1]}",
     "TEXTURECUBE_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    # the _X forms: an XR eye's texture array in URP, one 2D texture without XR (as here)
+    "TEXTURE2D_X": lambda a: f"sampler2D {a[0]}",
+    "TEXTURE2D_X_FLOAT": lambda a: f"sampler2D {a[0]}",
+    "SAMPLE_TEXTURE2D_X": lambda a: f"tex2D({a[0]}, {a[2]})",
+    "SAMPLE_TEXTURE2D_X_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_GRAD": lambda a: f"tex2Dgrad({a[0]}, {a[2]}, {a[3]}, {a[4]})",
     "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
                                      else f"texCUBE({a[0]}, {a[2]})"),
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
@@ -224,9 +230,10 @@ def _expand_srp_texture_macros(code: str) -> str:
         if found is None:
             continue
         args, end = found
-        need = {"TEXTURE2D": 1, "TEXTURECUBE": 1, "SAMPLER": 1}.get(m.group(1), 2)
+        need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1,
+                "SAMPLER": 1}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
-            need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 3
+            need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
         spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)

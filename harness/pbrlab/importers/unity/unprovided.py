@@ -71,9 +71,11 @@ _AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
 def _provided() -> frozenset:
     """The names pbrlab's Unity layer defines (macros, uniforms, functions, structs)."""
     from .cg_types import LIBRARY_FILES, library_file
+    from .source_text import PACKAGE_STAND_INS
     names = set()
-    for rel in LIBRARY_FILES + ("templates/unity_hlsl_support.hlsl",):
-        path = library_file(rel)
+    # the library's files, and the stand-ins for Unity's packages' files (URP's, Core RP's)
+    paths = [library_file(rel) for rel in LIBRARY_FILES + ("templates/unity_hlsl_support.hlsl",)]
+    for path in paths + sorted(PACKAGE_STAND_INS.rglob("*.hlsl")):
         if path.is_file():
             text = path.read_text(encoding="utf-8")
             names.update(re.findall(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", text, re.M))

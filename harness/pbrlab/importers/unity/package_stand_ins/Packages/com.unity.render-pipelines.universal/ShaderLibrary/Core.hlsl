@@ -28,6 +28,17 @@
 #endif
 #define TWO_PI 6.28318530718
 #define INV_PI 0.31830988618
+// Core RP's Macros.hlsl constants: multiples of pi and their reciprocals, to the digits
+// Core RP spells them (pi = 3.14159265358979...).
+#define FOUR_PI 12.5663706144
+#define INV_TWO_PI 0.15915494309
+#define INV_FOUR_PI 0.07957747155
+#define HALF_PI 1.57079632679
+#define INV_HALF_PI 0.636619772367
+#define LOG2_E 1.44269504089
+#define INV_SQRT2 0.70710678118
+#define FLT_MAX 3.402823466e+38
+#define HALF_MAX 65504.0
 
 // SRP-batcher constant buffers: plain uniforms here.
 #define CBUFFER_START(name)
@@ -50,8 +61,14 @@
 #define SAMPLE_TEXTURE2D(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
 #define SAMPLE_TEXTURE2D_BIAS(t, s, uv, bias) t.SampleBias(s, uv, bias)
+#define SAMPLE_TEXTURE2D_GRAD(t, s, uv, dpdx, dpdy) t.SampleGrad(s, uv, dpdx, dpdy)
 #define SAMPLE_TEXTURECUBE(t, s, d) t.Sample(s, d)
 #define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
+// The _X forms (a texture array per eye in XR; one 2D texture without XR, as here).
+#define TEXTURE2D_X(t) Texture2D t
+#define TEXTURE2D_X_FLOAT(t) Texture2D t
+#define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
+#define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
@@ -112,6 +129,20 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 #define UNITY_PREV_MATRIX_M unity_ObjectToWorld
 #define UNITY_PREV_MATRIX_I_M unity_WorldToObject
 #define UNITY_MATRIX_I_P unity_CameraInvProjection
+#define UNITY_MATRIX_I_VP mul(UNITY_MATRIX_I_V, UNITY_MATRIX_I_P)
+// GL's clip-space near plane: z = -w (Unity's UNITY_NEAR_CLIP_VALUE on OpenGL, not reversed-Z).
+#define UNITY_NEAR_CLIP_VALUE (-1.0)
+// The screen's size at URP's render scale, which is 1 here: _ScreenParams.
+#define _ScaledScreenParams _ScreenParams
+// URP's main light globals (Input.hlsl): the direction towards the scene's first directional
+// light (w 0) and its radiance; with none, URP's defaults: (0, 0, 1, 0) and black.
+#if defined(PBRLAB_DIRECTIONAL_COUNT) && PBRLAB_DIRECTIONAL_COUNT > 0
+#define _MainLightPosition float4(-u_directional_direction[0], 0.0)
+#define _MainLightColor float4(u_directional_radiance[0], 1.0)
+#else
+#define _MainLightPosition float4(0.0, 0.0, 1.0, 0.0)
+#define _MainLightColor float4(0.0, 0.0, 0.0, 0.0)
+#endif
 
 // A [0, 1] depth to the eye's distance and to [0, 1] of the far plane, with the
 // _ZBufferParams the caller passes (Core RP's signatures; the built-in ones take z alone):
@@ -119,7 +150,27 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
 
+// Core RP's Common.hlsl: x remapped so that start -> 0 and start + length -> 1, clamped, from
+// 1 / length and start / length: saturate(x rcpLength - startTimesRcpLength).
+float Remap01(float x, float rcpLength, float startTimesRcpLength) { return saturate(x * rcpLength - startTimesRcpLength); }
+// Core RP's Color.hlsl: the colour's deviation from the mean of its channels scaled by
+// saturation (0: grey at the mean, 1: unchanged).
+float3 Desaturate(float3 value, float saturation) {
+    float mean = (value.r + value.g + value.b) / 3.0;
+    return mean + (value - mean) * saturation;
+}
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+// A screen position ([0, 1], y up as on GL, where UNITY_UV_STARTS_AT_TOP is undefined) and a
+// device depth (GL clip z / w, [-1, 1]) to world space through the inverse view-projection:
+// clip (ndc * 2 - 1, depth, 1), then the homogeneous divide (Core RP's ComputeClipSpacePosition
+// and ComputeWorldSpacePosition).
+float4 ComputeClipSpacePosition(float2 positionNDC, float deviceDepth) {
+    return float4(positionNDC * 2.0 - 1.0, deviceDepth, 1.0);
+}
+float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4 invViewProjMatrix) {
+    float4 positionHWS = mul(invViewProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
+    return positionHWS.xyz / positionHWS.w;
+}
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
@@ -139,6 +190,12 @@ float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float
 // Normals by the inverse transpose: n^T M^-1, as Unity writes it.
 float3 TransformObjectToWorldNormal(float3 normalOS) { return SafeNormalize(mul(normalOS, (float3x3)unity_WorldToObject)); }
 float3 TransformWorldToViewDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_V, dirWS); }
+// Core RP's overload with doNormalize: the same direction, normalized when asked (SafeNormalize).
+float3 TransformWorldToViewDir(float3 dirWS, bool doNormalize) {
+    float3 dirVS = mul((float3x3)UNITY_MATRIX_V, dirWS);
+    if (doNormalize) return SafeNormalize(dirVS);
+    return dirVS;
+}
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
