@@ -35,4 +35,15 @@ float4 pbrlab_lit(float n_dot_l, float n_dot_h, float m) {
 // from the fragment's facing); glslang would take the semantic as its own built-in and drop
 // the member from the struct, so the semantic is renamed to a plain one.
 #define VFACE PBRLAB_VFACE
+// unity_SpecCube0 as texCUBE / texCUBElod / UNITY_SAMPLE_TEXCUBE(_LOD) read it: an object whose
+// Sample and SampleLevel are unity_surface.inc's pbrlab_unity_reflection_probe (the URP
+// stand-in's Lighting.hlsl, included after this, keeps this one).
+#define PBRLAB_UNITY_SPECCUBE0
+struct PbrlabUnityReflectionProbe {
+    float unused;
+    float4 Sample(SamplerState s, float3 direction) { return pbrlab_unity_reflection_probe(direction, 0.0); }
+    float4 SampleLevel(SamplerState s, float3 direction, float mip) { return pbrlab_unity_reflection_probe(direction, mip); }
+};
+static PbrlabUnityReflectionProbe unity_SpecCube0;
+SamplerState samplerunity_SpecCube0;
 #endif

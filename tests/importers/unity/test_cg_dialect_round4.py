@@ -374,3 +374,44 @@ def test_an_array_member_is_one_varying_per_element(tmp_path, language):
     # larger than the value), which moves an interpolated value by up to ~1e-5 of its size
     # (tests/importers/unity/test_corpus.py's note); the difference of two, values <= 1.5: 2e-5
     assert np.abs(image[covered, :3] - np.array([0.25, 0.125, 0.25])).max() <= 2e-5
+
+
+PROBE = """
+Shader "t/probe" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    #include "UnityCG.cginc"
+    struct v2f { float3 worldRefl : TEXCOORD0; float4 pos : SV_POSITION; };
+    v2f vert (float4 vertex : POSITION, float3 normal : NORMAL) {
+        v2f o; o.pos = UnityObjectToClipPos(vertex);
+        float3 worldPos = mul(unity_ObjectToWorld, vertex).xyz;
+        o.worldRefl = reflect(-normalize(UnityWorldSpaceViewDir(worldPos)), UnityObjectToWorldNormal(normal));
+        return o; }
+    fixed4 frag (v2f i) : SV_Target {
+        half4 sharp = UNITY_SAMPLE_TEXCUBE(unity_SpecCube0, i.worldRefl);
+        half4 rough = UNITY_SAMPLE_TEXCUBE_LOD(unity_SpecCube0, i.worldRefl, 6.0);
+        half4 old = texCUBElod(unity_SpecCube0, float4(i.worldRefl, 3.0));
+        return float4(DecodeHDR(sharp, unity_SpecCube0_HDR).r, rough.g, old.b, 1); }
+    ENDCG
+} } }
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_pass_reads_the_reflection_probe_the_scene_environment(tmp_path, language):
+    """unity_SpecCube0 read by a vertex/fragment pass (Unity manual's environment-reflection
+    example; UNITY_SAMPLE_TEXCUBE, _LOD at mip 6, texCUBElod): the scene environment's
+    prefiltered chain; under a constant sky every level and direction is that radiance (float32
+    filtering of equal texels: exact to rounding). Control: without an environment, black."""
+    shader = tmp_path / "probe.shader"
+    shader.write_text(PROBE)
+    sky = [0.25, 0.5, 0.75]
+    data = corpus.scene_for(shader)
+    data["environment"] = {"color": sky}
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear
+    covered = _covered(image)
+    assert np.abs(image[covered, :3] - np.array(sky)).max() <= 1e-6
+    del data["environment"]
+    dark = render_scene(parse_scene(data, "t", tmp_path), language=language).linear
+    assert np.abs(dark[covered, :3]).max() == 0.0

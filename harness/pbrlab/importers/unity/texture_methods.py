@@ -54,8 +54,40 @@ def _call(kind: str, method: str, texture: str, args: list):
     return None  # another method or form: left for the compiler to name
 
 
+_PROBE_READ = re.compile(r"\b(UNITY_SAMPLE_TEXCUBE_LOD|UNITY_SAMPLE_TEXCUBE|texCUBElod|texCUBE)\s*\(\s*unity_SpecCube0\s*,")
+
+
+def spelled_probe_reads(code: str) -> str:
+    """Each read of the reflection probe ``unity_SpecCube0`` (UNITY_SAMPLE_TEXCUBE(_LOD),
+    texCUBE(lod)) as a call of the Unity layer's pbrlab_unity_reflection_probe(direction, mip)
+    (templates/unity_surface.inc): GLSL has no object to stand for the probe."""
+    out, pos = [], 0
+    for m in _PROBE_READ.finditer(code):
+        if m.start() < pos:
+            continue
+        found = call_arguments(code, code.index("(", m.start()))
+        if found is None:
+            continue
+        args, end = found
+        form = m.group(1)
+        if form in ("UNITY_SAMPLE_TEXCUBE", "texCUBE") and len(args) == 2:
+            spelled = f"pbrlab_unity_reflection_probe({args[1]}, 0.0)"
+        elif form == "UNITY_SAMPLE_TEXCUBE_LOD" and len(args) == 3:
+            spelled = f"pbrlab_unity_reflection_probe({args[1]}, {args[2]})"
+        elif form == "texCUBElod" and len(args) == 2:
+            spelled = f"pbrlab_unity_reflection_probe(({args[1]}).xyz, ({args[1]}).w)"
+        else:
+            continue
+        spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
+        out += [code[pos:m.start()], spelled]
+        pos = end
+    return "".join(out) + code[pos:]
+
+
 def spelled_texture_methods(code: str) -> str:
-    """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg."""
+    """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg,
+    and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads)."""
+    code = spelled_probe_reads(code)
     kinds = {}
     for m in _DECLARATION.finditer(code):
         for name in m.group(2).split(","):

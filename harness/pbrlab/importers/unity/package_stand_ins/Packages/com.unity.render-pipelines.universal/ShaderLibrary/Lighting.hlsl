@@ -158,7 +158,7 @@ float4 pbrlab_urp_reflection_probe(float3 direction, float mip) {
     return float4(0.0, 0.0, 0.0, 1.0);
 #endif
 }
-#ifndef __VERSION__
+#if !defined(__VERSION__) && !defined(PBRLAB_UNITY_SPECCUBE0)  // the harness's own (unity_hlsl_support.hlsl) stands
 struct PbrlabURPReflectionProbe {
     float unused;
     float4 SampleLevel(SamplerState s, float3 direction, float mip) { return pbrlab_urp_reflection_probe(direction, mip); }
