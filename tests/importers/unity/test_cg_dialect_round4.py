@@ -415,3 +415,22 @@ def test_a_pass_reads_the_reflection_probe_the_scene_environment(tmp_path, langu
     del data["environment"]
     dark = render_scene(parse_scene(data, "t", tmp_path), language=language).linear
     assert np.abs(dark[covered, :3]).max() == 0.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_float4x4_times_a_float3_assigned_to_a_float3(tmp_path, language):
+    """`r = mul(M, r)` with M a float4x4 (the view matrix: a rotation and a translation) and r a
+    float3 (FXC takes it: the matrix cut to three columns, the result truncated on assignment):
+    the same as mul((float3x3)M, r); control: with the translation (float4(r, 1)) it differs."""
+    def render(expression, name):
+        body = f"""
+            float3 r = float3(i.uv, 0.5);
+            r = {expression};
+            return float4(frac(r * 0.5), 1);"""
+        return _render(tmp_path, _shader(tmp_path, name, body), language)
+    got = render("mul(UNITY_MATRIX_V, r)", "cut")
+    want = render("mul((float3x3)UNITY_MATRIX_V, r)", "three")
+    moved = render("mul(UNITY_MATRIX_V, float4(r, 1)).xyz", "moved")
+    covered = _covered(want)
+    assert np.abs(got[covered, :3] - want[covered, :3]).max() <= EXACT
+    assert np.abs(moved[covered, :3] - want[covered, :3]).max() > 0.1

@@ -1490,6 +1490,12 @@ def _mul_type(a: Type | None, b: Type | None):
         return Type("float", a.dim)
     if a.vector and b.cols and a.dim == b.dim:
         return Type("float", b.cols)
+    # a float4x4 times a float3 (either side): the matrix cut to the vector's length, the
+    # result the matrix's other size (cg_compat.glsl's mul(mat4, vec3): four components)
+    if a.cols and b.vector and b.dim < a.cols:
+        return Type("float", a.dim)
+    if a.vector and b.cols and a.dim < b.dim:
+        return Type("float", b.cols)
     if a.cols and b.cols and a.cols == b.dim:
         return Type("float", a.dim, b.cols)
     return None
