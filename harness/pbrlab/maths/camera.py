@@ -65,12 +65,14 @@ def camera_frame(camera, scene_radius: float, depths: tuple[float, float] | None
                        up * tan_half, (w, h), proj @ view, view, proj, near, far)
 
 
-def camera_rays(frame: CameraFrame) -> np.ndarray:
+def camera_rays(frame: CameraFrame, offset: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
     """Unit ray directions through every pixel centre, top row first: HxWx3 float64.
-    Same formula as templates/surface_pixel.inc."""
+    Same formula as templates/surface_pixel.inc. ``offset`` moves every sample from its pixel's
+    centre by that many pixels (x to the right, y down the image): a test's neighbours of a
+    pixel's sample, to find the pixels whose expectation changes within a pixel."""
     w, h = frame.size
-    x = (np.arange(w) + 0.5) / w * 2 - 1
-    y = (np.arange(h)[::-1] + 0.5) / h * 2 - 1  # GL rows count from the bottom
+    x = (np.arange(w) + 0.5 + offset[0]) / w * 2 - 1
+    y = (np.arange(h)[::-1] + 0.5 - offset[1]) / h * 2 - 1  # GL rows count from the bottom
     d = (frame.forward[None, None] + x[None, :, None] * frame.right[None, None]
          + y[:, None, None] * frame.up[None, None])
     return d / np.linalg.norm(d, axis=-1, keepdims=True)

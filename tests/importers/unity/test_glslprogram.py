@@ -22,6 +22,8 @@ from pbrlab.importers.loader import parse_scene
 from pbrlab.importers.unity import UnityShaderNote
 from pbrlab.render.renderer import render_scene
 
+from unity_inputs import pixel_rays
+
 CAMERA = {"position": [0.0, 1.3, 1.5], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [64, 64]}
 SIZE = 1.6
 TINT = (1.0, 0.5, 0.25)
@@ -72,15 +74,7 @@ def _render(tmp_path, language, name, colour="vec4(uv * _Tint.xy, _Tint.z, 1.0)"
 
 def _uv(size, offset=(0.0, 0.0)):
     """(uv, inside, near an edge) per pixel centre (offset in pixels), float64; row 0 the top."""
-    h, w = size
-    eye, target = np.array(CAMERA["position"]), np.array(CAMERA["target"])
-    forward = (target - eye) / np.linalg.norm(target - eye)
-    right = np.cross(forward, [0.0, 1.0, 0.0])
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    t = np.tan(np.radians(CAMERA["fov_y_deg"]) / 2)
-    px, py = np.meshgrid(np.arange(w) + 0.5 + offset[0], np.arange(h) + 0.5 + offset[1])
-    d = forward + ((px / w) * 2 - 1)[..., None] * t * (w / h) * right + (1 - (py / h) * 2)[..., None] * t * up
+    eye, d = pixel_rays(CAMERA, size, offset)
     hit = eye + d * (-eye[1] / d[..., 1])[..., None]
     u, v = hit[..., 0] / SIZE + 0.5, 0.5 - hit[..., 2] / SIZE
     return np.stack([u, v], -1), (u >= 0) & (u <= 1) & (v >= 0) & (v <= 1)

@@ -24,6 +24,7 @@ from pbrlab.importers.loader import parse_scene
 from pbrlab.render.renderer import render_scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from unity_inputs import pixel_rays  # noqa: E402
 from test_supplied_lightmaps import BLOCK, CAMERA, N, SIZE, expected, _shader as baked_shader  # noqa: E402
 
 pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnityShaderNote")
@@ -184,15 +185,7 @@ def _layout_coverage(size, scale_offset):
     [o, o + s] (the plane primitive's UV square [0, 1]^2 placed at uv * s + o, z = 0, by
     UV1sAsPositions), and whether its four neighbours' centres agree (the pixel is off the edge)."""
     def inside(offset=(0.0, 0.0)):
-        h, w = size
-        eye, target = np.array(CAMERA["position"]), np.array(CAMERA["target"])
-        forward = (target - eye) / np.linalg.norm(target - eye)
-        right = np.cross(forward, [0.0, 1.0, 0.0])
-        right /= np.linalg.norm(right)
-        up = np.cross(right, forward)
-        t = np.tan(np.radians(CAMERA["fov_y_deg"]) / 2)
-        px, py = np.meshgrid(np.arange(w) + 0.5 + offset[0], np.arange(h) + 0.5 + offset[1])
-        d = forward + ((px / w) * 2 - 1)[..., None] * t * (w / h) * right + (1 - (py / h) * 2)[..., None] * t * up
+        eye, d = pixel_rays(CAMERA, size, offset)
         hit = eye + d * (-eye[2] / d[..., 2])[..., None]
         s, o = np.array(scale_offset[:2]), np.array(scale_offset[2:])
         return ((hit[..., :2] >= o) & (hit[..., :2] <= o + s)).all(-1)

@@ -39,3 +39,16 @@ def lighting_inputs(rng, n):
     return dict(normal=normal, v=v, l=l, albedo=albedo, metallic=metallic, smoothness=smoothness,
                 occlusion=rng.uniform(0.0, 1.0, n), light=rng.uniform(0.0, 2.0, (n, 3)),
                 idiff=rng.uniform(0.0, 1.0, (n, 3)), ispec=rng.uniform(0.0, 2.0, (n, 3)))
+
+
+def pixel_rays(camera, size, offset=(0.0, 0.0)):
+    """(eye, unit ray directions HxWx3) of a test scene's camera dict (position, target,
+    fov_y_deg; up +y) at size (h, w), each ray through its pixel's centre moved by ``offset``
+    pixels: the renderer's own ray formula (maths.camera.camera_rays), in float64."""
+    from types import SimpleNamespace
+    from pbrlab.maths.camera import camera_frame, camera_rays
+    eye = np.array(camera["position"], np.float64)
+    frame = camera_frame(SimpleNamespace(position=eye, target=np.array(camera["target"], np.float64),
+                                         up=np.array([0.0, 1.0, 0.0]), fov_y_deg=camera["fov_y_deg"],
+                                         size=(size[1], size[0])), 1.0)
+    return eye, camera_rays(frame, offset)
