@@ -31,3 +31,18 @@ def test_a_folder_the_caller_names_is_kept(tmp_path):
     """Control: the caller's own MESA_SHADER_CACHE_DIR is not replaced."""
     mine = str(tmp_path / "mine")
     assert _folder(tmp_path, MESA_SHADER_CACHE_DIR=mine, LP_NATIVE_VECTOR_WIDTH="256") == mine
+
+
+def test_the_folder_is_made_on_a_machine_without_a_cache_folder(tmp_path):
+    """Mesa creates only the last folder of the path: with no ~/.cache (a fresh CI machine) it
+    printed "Failed to create ... for shader cache" and disabled the cache. The factory makes
+    the whole path; the control is the same path's parent, absent before."""
+    home = tmp_path / "fresh" / ".cache"
+    assert not home.parent.exists()
+    out = subprocess.run([sys.executable, "-c", _PRINT_FOLDER], capture_output=True, text=True, check=True,
+                         env={**{k: v for k, v in os.environ.items()
+                                 if k not in ("MESA_SHADER_CACHE_DIR", "MESA_GLSL_CACHE_DIR")},
+                              "XDG_CACHE_HOME": str(home)})
+    folder = out.stdout.strip().splitlines()[-1]
+    assert folder.startswith(str(home)) and os.path.isdir(folder)
+    assert "Failed to create" not in out.stderr

@@ -72,7 +72,14 @@ def pin_llvmpipe_cpu_caps() -> str:
     if caps != "native":
         os.environ.setdefault("GALLIUM_OVERRIDE_CPU_CAPS", caps)
     if not any(os.environ.get(name) for name in ("MESA_SHADER_CACHE_DIR", "MESA_GLSL_CACHE_DIR")):
-        os.environ["MESA_SHADER_CACHE_DIR"] = shader_cache_folder()
+        folder = shader_cache_folder()
+        # Mesa makes only the last folder of the path: on a fresh machine without ~/.cache it
+        # printed "Failed to create ... for shader cache" and ran every process uncached.
+        try:
+            os.makedirs(folder, exist_ok=True)
+        except OSError:
+            pass  # unwritable home: Mesa says so and runs uncached, as it would anyway
+        os.environ["MESA_SHADER_CACHE_DIR"] = folder
     return os.environ.get("GALLIUM_OVERRIDE_CPU_CAPS", "native")
 
 
