@@ -3,25 +3,27 @@ licences kept) rendered by pbrlab, by Khronos' glTF Sample Renderer (pbrlab.chec
 and by three.js r187's own glTF renderer (tools/threejs_gltf) with the same framing camera, no
 punctual light and a constant environment, compared as rendered.
 
-The check: 8-bit sRGB codes over the pixels all three cover, eroded by 2 px; a pixel differs
-when a channel is more than CODES (4) apart. Where pbrlab and the viewer differ, the third
-renderer arbitrates: a renderer is the odd one out at a pixel when it differs from both others
-while they agree. pbrlab may be the odd one out on no more pixels than the viewer is. No bound
-comes from pbrlab's own output; a 10 % radiance error fails it (the control below).
+The check: 8-bit sRGB codes over the pixels all three cover, eroded by 2 px, against the
+per-pixel bound of test_sample_viewer_agreement.py (1 code of rounding, 1 code of 8-bit inputs,
+the pixel's footprint: derived there, not measured). Where pbrlab and the viewer lie beyond it,
+the third renderer arbitrates: a renderer is the odd one out at a pixel when it lies beyond the
+bound from both others while they lie within it of each other. pbrlab may be the odd one out on
+no more pixels than the viewer is. pbrlab's own named model difference, its horizon occlusion
+(on by default; neither rasteriser has it, the path tracer decides for it: docs/fidelity.md),
+grows the bound of its pairs by the codes it moves pbrlab's pixel by (pbrlab rendered again
+without it: horizon_occlusion_codes). A 10 % radiance error fails it (the control below).
 
 Measured (Chromium 156 SwiftShader for the viewer and three.js, Mesa llvmpipe for pbrlab,
-384x256; fraction of compared pixels over 4 codes from the viewer, mean |difference| in codes;
+384x256; pixels compared, fraction beyond the bound from the viewer, mean |difference| in codes;
 then the odd one out: pbrlab / viewer / three.js / all three differ):
-    UnlitTest          0.0000  0.000   0 / 0 / 0 / 0 (KHR_materials_unlit: bit for bit)
-    SpecularTest       0.1093  1.253   0 / 0.1035 / 0.0002 / 0.0016 (KHR_materials_specular)
-    ClearCoatCarPaint  0.2264  1.681   0 / 0.2203 / 0 / 0 (a coat over a metallic flake paint)
-    ClearCoatTest      0.1568  2.693   0.0099 / 0.0638 / 0.0405 / 0.0787 (coat factor, texture,
-                                       roughness and normal rows; pbrlab's horizon occlusion,
-                                       which neither rasteriser has and the path tracer decides
-                                       for (docs/fidelity.md), makes it the odd one out there:
-                                       0.0013 / 0.0570 / 0.0426 / 0.0818 with it off)
-    RiggedSimple       0.0000  0.003   0 / 0 / 0 / 0 (a skinned cylinder in its rest pose: gltf/skin.py)
-    AttenuationTest    0.0593  0.822   0.0008 / 0.0466 / 0.0282 / 0.0080 (KHR_materials_transmission
+    UnlitTest          UNLIT (KHR_materials_unlit: bit for bit)
+    SpecularTest       SPECULAR (KHR_materials_specular)
+    ClearCoatCarPaint  45,876  0.0002  1.681   0 / 0.0001 / 0 / 0 (a coat over a metallic flake paint)
+    ClearCoatTest      23,023  0.0072  2.693   0 / 0 / 0.0089 / 0 (coat factor, texture, roughness
+                                       and normal rows; without the horizon occlusion named,
+                                       pbrlab is the odd one out on 0.0035)
+    RiggedSimple       RIGGED (a skinned cylinder in its rest pose: gltf/skin.py)
+    AttenuationTest    62,391  0.0368  0.822   0 / 0.0228 / 0 / 0 (KHR_materials_transmission
                                        + _volume: tinted cubes seen through each renderer's
                                        transmission copy; the cubes' edges)
 What the viewer alone does (reported, not subtracted): SpecularTest's sphere rims, where the
@@ -29,13 +31,14 @@ Sample Renderer's environment Fresnel (getIBLGGXFresnel, gltf-viewer's ibl.glsl)
 split sum's A by Fdez-Aguera's roughness-dependent F0 + (max(1 - roughness, F0) - F0)(1 - NdotV)^5,
 adds its own multiple-scattering term and takes the specular strength as a weight on both,
 where pbrlab and three.js take F0 A + F90 B as the integral of Schlick's F gives it
-(reference/specular_extension.py); applied to pbrlab's image (reference/sample_viewer_specular.py)
-it leaves nothing over 4 codes (test_specular_test_agrees_once_the_viewers_environment_fresnel_is_applied:
-the explanation checked, not the agreement). ClearCoatCarPaint's flakes likewise: pbrlab and
-three.js within 2 codes of each other everywhere, the viewer 13 codes at most from both.
+(reference/specular_extension.py); at this size its brighter rims lie within the footprint
+(test_specular_test_within_the_bound_and_the_viewers_environment_fresnel reports how many
+pixels it moves). ClearCoatCarPaint's flakes and AttenuationTest's cube edges: three.js sides
+with pbrlab where the viewer lies beyond the bound.
 With its coats removed, ClearCoatCarPaint is 15.6 codes from the viewer (MEAN_WITHOUT_COAT),
 so the agreement measures the coat; with its transmission removed, AttenuationTest is 9.9
-codes away (MEAN_WITHOUT_TRANSMISSION), so the agreement measures the transmission.
+codes away (MEAN_WITHOUT_TRANSMISSION), so the agreement measures the transmission (these
+two and MEAN_WITHOUT_F90 are regression pins of a control, measured, not derived).
 """
 
 from __future__ import annotations
@@ -112,10 +115,11 @@ def test_the_corpus_is_what_its_manifest_says():
 
 @pytest.mark.parametrize("name", MODELS)
 def test_khronos_model_agrees_with_the_sample_renderer(name, sky):
-    """As rendered, arbitrated by a third renderer: where pbrlab and the viewer differ by more
-    than CODES, three.js (sharing neither's code) says which of them is the odd one out, and
-    pbrlab may be it on no more pixels than the viewer is. Differences explained by a viewer's
-    formula (SpecularTest's environment Fresnel, below) stay in the check and are reported."""
+    """As rendered, arbitrated by a third renderer: where pbrlab and the viewer lie beyond the
+    per-pixel bound, three.js (sharing neither's code) says which of them is the odd one out,
+    and pbrlab may be it on no more pixels than the viewer is. Differences explained by a
+    viewer's formula (SpecularTest's environment Fresnel, below) stay in the check and are
+    reported."""
     result, ours, theirs = _render_both(name, sky)
     assert result.warnings == []  # every extension the model uses is honoured
     assert np.isfinite(ours).all()
