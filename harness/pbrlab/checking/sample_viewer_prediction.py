@@ -3,7 +3,11 @@ differences (reference/sample_viewer_transmission.py, reference/sample_viewer_sp
 gltf-viewer 1.1.0) add to or take from pbrlab's render, per pixel, in float64.
 
     delta, texture_edges = viewer_minus_pbrlab(scene)
-    predicted = ours[..., :3] + delta
+
+A diagnostic and the size of a named difference, never a correction: the agreement checks
+(tests/importers/gltf/test_sample_viewer_agreement.py, test_khronos_models.py) compare the
+two images as rendered and grow the per-pixel bound by the codes ``delta`` moves pbrlab's pixel
+by, and report which named difference accounts for each pixel beyond the plain bound.
 
 Per pixel of a material without coat, sheen, film, anisotropy, occlusion or surface
 function (a metal in the metallic workflow only), with the geometry the CPU renderer sees

@@ -1,7 +1,8 @@
 """reference/sample_viewer_sheen.py (the Khronos Sample Renderer's sheen, gltf-viewer 1.1.0)
 against the viewer's formulas as its shaders write them, and
-sample_viewer_prediction.viewer_minus_pbrlab_sheen's input checks. The prediction itself is
-checked against the viewer's image in test_sample_viewer_agreement.py."""
+sample_viewer_prediction.viewer_minus_pbrlab_sheen's input checks. The prediction names, beside
+the as-rendered check of test_sample_viewer_agreement.py, the formula behind each pixel where
+the viewer lies beyond the bound."""
 
 from __future__ import annotations
 

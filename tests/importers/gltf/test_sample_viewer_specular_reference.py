@@ -1,7 +1,7 @@
 """reference/sample_viewer_specular.py (the glTF Sample Renderer's getIBLGGXFresnel and its
 image-based mix) against what its sources say it must be, and the prediction's refusal of
-materials it does not model. No browser: the agreement itself is
-test_khronos_models.py::test_specular_test_agrees_once_the_viewers_environment_fresnel_is_applied."""
+materials it does not model. No browser: the as-rendered comparison that reports it is
+test_khronos_models.py::test_specular_test_within_the_bound_and_the_viewers_environment_fresnel."""
 
 from __future__ import annotations
 
