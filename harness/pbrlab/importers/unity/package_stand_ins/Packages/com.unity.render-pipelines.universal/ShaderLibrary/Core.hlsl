@@ -173,36 +173,13 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
 }
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
-float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
-float4x4 GetObjectToWorldMatrix() { return unity_ObjectToWorld; }
-float4x4 GetWorldToObjectMatrix() { return unity_WorldToObject; }
-float4x4 GetWorldToHClipMatrix() { return UNITY_MATRIX_VP; }
-float3 TransformObjectToWorld(float3 positionOS) { return mul(unity_ObjectToWorld, float4(positionOS, 1.0)).xyz; }
-float3 TransformWorldToObject(float3 positionWS) { return mul(unity_WorldToObject, float4(positionWS, 1.0)).xyz; }
-float3 TransformWorldToView(float3 positionWS) { return mul(UNITY_MATRIX_V, float4(positionWS, 1.0)).xyz; }
-float4 TransformWorldToHClip(float3 positionWS) { return mul(UNITY_MATRIX_VP, float4(positionWS, 1.0)); }
-float4 TransformObjectToHClip(float3 positionOS) { return TransformWorldToHClip(TransformObjectToWorld(positionOS)); }
-float4 TransformWViewToHClip(float3 positionVS) { return mul(UNITY_MATRIX_P, float4(positionVS, 1.0)); }
-// A world direction to clip space (w dropped: a direction has no position).
-float3 TransformWorldToHClipDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_VP, dirWS); }
-float3 TransformObjectToWorldDir(float3 dirOS) { return SafeNormalize(mul((float3x3)unity_ObjectToWorld, dirOS)); }
-float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float3x3)unity_WorldToObject, dirWS)); }
-// Normals by the inverse transpose: n^T M^-1, as Unity writes it.
-float3 TransformObjectToWorldNormal(float3 normalOS) { return SafeNormalize(mul(normalOS, (float3x3)unity_WorldToObject)); }
-float3 TransformWorldToViewDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_V, dirWS); }
-// Core RP's overload with doNormalize: the same direction, normalized when asked (SafeNormalize).
-float3 TransformWorldToViewDir(float3 dirWS, bool doNormalize) {
-    float3 dirVS = mul((float3x3)UNITY_MATRIX_V, dirWS);
-    if (doNormalize) return SafeNormalize(dirVS);
-    return dirVS;
-}
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
     return _WorldSpaceCameraPos - positionWS;
 }
 float3 GetWorldSpaceNormalizeViewDir(float3 positionWS) { return normalize(GetWorldSpaceViewDir(positionWS)); }
-float GetOddNegativeScale() { return determinant((float3x3)unity_ObjectToWorld) < 0.0 ? -1.0 : 1.0; }
 
 struct VertexPositionInputs {
     float3 positionWS;
@@ -245,17 +222,6 @@ VertexNormalInputs GetVertexNormalInputs(float3 normalOS, float4 tangentOS) {
     return o;
 }
 
-// The tangent frame as a matrix whose rows are the tangent, the bitangent (the normal crossed
-// with the tangent, its sign the tangent's w: flipSign) and the normal (Core RP's
-// CreateTangentToWorld); TransformTangentToWorld takes it.
-float3x3 CreateTangentToWorld(float3 normal, float3 tangent, float flipSign) {
-    float3 bitangent = cross(normal, tangent) * flipSign;
-    return float3x3(tangent, bitangent, normal);
-}
-// A tangent-space normal to world space through the rows (T, B, N).
-float3 TransformTangentToWorld(float3 dirTS, float3x3 tangentToWorld) { return mul(dirTS, tangentToWorld); }
-// World to tangent space through the rows (T, B, N): the transpose's product.
-float3 TransformWorldToTangent(float3 dirWS, float3x3 tangentToWorld) { return mul(tangentToWorld, dirWS); }
 float3 NormalizeNormalPerPixel(float3 normalWS) { return normalize(normalWS); }
 float3 NormalizeNormalPerVertex(float3 normalWS) { return normalize(normalWS); }
 

@@ -1,0 +1,143 @@
+"""URP and Core RP include stand-ins, round 2 (issue 34): names real URP shaders read that the
+stand-ins lacked. unity_AmbientSky / Equator / Ground from the scene's ambient SH; the space
+transforms' optional doNormalize argument.
+
+Scene: the corpus camera looking at a unit UV sphere (a mesh, so its object transform is the
+one given) whose material is the URP pass under test; the pass returns a constant, so every
+covered pixel is checked.
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+import pytest
+
+from pbrlab.foundation.locations import locate
+from pbrlab.importers.loader import parse_scene
+from pbrlab.render.renderer import render_scene
+
+LANGUAGES = ("glsl", "hlsl")
+
+URP_PASS = """
+Shader "t/%(name)s" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            %(include)s
+            struct Attributes { float4 positionOS : POSITION; };
+            struct Varyings { float4 positionCS : SV_POSITION; };
+            Varyings vert(Attributes IN) {
+                Varyings OUT;
+                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                return OUT;
+            }
+            float4 frag(Varyings IN) : SV_Target {
+                %(body)s
+            }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+def urp_pass(name: str, body: str, include: str = "") -> str:
+    return textwrap.dedent(URP_PASS % {"name": name, "include": include, "body": body})
+
+
+def render_constant(tmp_path, text: str, language: str, *, environment: bool = True,
+                    transform: dict | None = None, lights: list | None = None) -> np.ndarray:
+    """The covered pixels' linear RGBA of a unit UV sphere drawn with the shader ``text``."""
+    shader = tmp_path / "t.shader"
+    shader.write_text(text)
+    data = {
+        "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [48, 48]},
+        "lights": lights or [],
+        "materials": {"m": {"surface": str(shader)}},
+        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m",
+                     **({"transform": transform} if transform else {})}],
+    }
+    if environment:
+        data["environment"] = {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5}
+    scene = parse_scene(data, origin="urp library test scene", base=tmp_path)
+    image = render_scene(scene, language=language).linear.astype(np.float64)
+    covered = image[..., 3] > 0
+    assert covered.sum() > 200
+    return image[covered], scene
+
+
+# Unity's three ambient colours: the scene SH's irradiance (ShadeSH9's, / pi, clamped at 0 as
+# pbrlab's PBR_UNITY_SH_IRRADIANCE) from above, the mean of the four horizontal axes, from below.
+AMBIENT_AXES = {
+    "unity_AmbientSky": [[0.0, 1.0, 0.0]],
+    "unity_AmbientEquator": [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]],
+    "unity_AmbientGround": [[0.0, -1.0, 0.0]],
+}
+# The SH coefficients reach the GPU as float32 and the lookup sums 9 products (and 4 lookups
+# for the equator): 32 float32 ulps (2^-24 relative each) of a value below 1 bounds it.
+AMBIENT_BOUND = 32 * 2.0 ** -24
+
+
+def _expected_ambient(scene, name: str) -> np.ndarray:
+    from pbrlab.maths.reference.lighting import sh9_irradiance
+    from pbrlab.scene.environment import environment_sh
+    sh = environment_sh(scene.environment)
+    return (np.maximum(sh9_irradiance(sh, np.asarray(AMBIENT_AXES[name])), 0.0) / np.pi).mean(axis=0)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("name", sorted(AMBIENT_AXES))
+def test_ambient_colours_are_the_sh_from_above_sides_below(tmp_path, language, name):
+    """unity_AmbientSky / Equator / Ground (URP UnityInput's globals; RenderSettings' ambient
+    "from above", "from the sides", "from below") returned as the pixel: the float64 SH9
+    irradiance of the sky along +y, the four horizontal axes' mean, -y, within AMBIENT_BOUND on
+    every covered pixel. Control: the sky's and the ground's colours differ from each other and
+    from the other two by far more than the bound (a swapped or flat ambient fails), and with no
+    environment the colour is black."""
+    pixels, scene = render_constant(tmp_path, urp_pass("ambient", f"return float4({name}.rgb, 1.0);"), language)
+    expected = _expected_ambient(scene, name)
+    assert 0.01 < expected.min() and expected.max() < 1.0
+    err = np.abs(pixels[:, :3] - expected).max(axis=1)
+    assert (err > AMBIENT_BOUND).mean() == 0.0, (err.max(), pixels[0], expected)
+    for other in AMBIENT_AXES:
+        if other != name:
+            assert np.abs(_expected_ambient(scene, other) - expected).max() > 100 * AMBIENT_BOUND
+    dark, _ = render_constant(tmp_path, urp_pass("ambient", f"return float4({name}.rgb, 1.0);"), language,
+                              environment=False)
+    assert np.abs(dark[:, :3]).max() == 0.0
+
+
+# The object scaled by 2 (uniformly: unity_ObjectToWorld = 2 I, unity_WorldToObject = I / 2),
+# a unit direction d: each transform's length with and without normalization.
+SCALE = 2.0
+TRANSFORMS_BODY = """float3 d = float3(1.0, 2.0, 2.0) / 3.0;
+                return float4(length(TransformObjectToWorldNormal(d, false)) + 10.0 * length(TransformObjectToWorldNormal(d)),
+                              length(TransformWorldToObjectNormal(d, false)) + 10.0 * length(TransformObjectToWorldDir(d, false)),
+                              length(TransformWorldToObjectDir(d, false)) + 10.0 * length(TransformObjectToWorldNormal(d, true)),
+                              1.0);"""
+# n^T M^-1 = d / 2, n^T M = 2 d, M d = 2 d, M^-1 d = d / 2; the one-argument and true forms are unit.
+TRANSFORMS_EXPECTED = np.array([1 / SCALE + 10.0, SCALE + 10.0 * SCALE, 1 / SCALE + 10.0])
+# float32: the 3x3 product, the length and the sum, each a few ulps of values up to 22:
+# 8 ulps (2^-24 relative) of the result.
+TRANSFORMS_BOUND = 8 * 2.0 ** -24 * TRANSFORMS_EXPECTED
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_space_transforms_take_do_normalize(tmp_path, language):
+    """Core RP's TransformObjectToWorldNormal(n, doNormalize), TransformWorldToObjectNormal,
+    TransformObjectToWorldDir(d, false), TransformWorldToObjectDir(d, false) under a uniform
+    scale of 2: lengths 1/2, 2, 2, 1/2 unnormalized, 1 with the default or true. Control: the
+    normalized length in place of each unnormalized one (10 + 1 each) fails the bound."""
+    pixels, _ = render_constant(tmp_path, urp_pass("transforms", TRANSFORMS_BODY), language,
+                                transform={"scale": SCALE})
+    err = np.abs(pixels[:, :3] - TRANSFORMS_EXPECTED)
+    assert (err <= TRANSFORMS_BOUND).all(), (err / TRANSFORMS_BOUND).max(axis=0)
+    normalized = np.array([11.0, 1.0 + 10.0 * SCALE, 11.0])  # control: doNormalize ignored
+    assert (np.abs(normalized - TRANSFORMS_EXPECTED) > TRANSFORMS_BOUND).all()
