@@ -141,3 +141,27 @@ def test_space_transforms_take_do_normalize(tmp_path, language):
     assert (err <= TRANSFORMS_BOUND).all(), (err / TRANSFORMS_BOUND).max(axis=0)
     normalized = np.array([11.0, 1.0 + 10.0 * SCALE, 11.0])  # control: doNormalize ignored
     assert (np.abs(normalized - TRANSFORMS_EXPECTED) > TRANSFORMS_BOUND).all()
+
+
+# Core RP's three-argument SAMPLE_DEPTH_TEXTURE and four-argument _LOD on URP's camera depth,
+# beside SampleSceneDepth (the stand-in DeclareDepthTexture's, proven against the float64
+# ray-sphere depth in test_urp_scene_textures.py) at the same uv.
+DEPTH_BODY = """float2 uv = GetNormalizedScreenSpaceUV(IN.positionCS);
+                return float4(SAMPLE_DEPTH_TEXTURE(_CameraDepthTexture, sampler_CameraDepthTexture, uv),
+                              SAMPLE_DEPTH_TEXTURE_LOD(_CameraDepthTexture, sampler_CameraDepthTexture, uv, 0),
+                              SampleSceneDepth(uv), 1.0);"""
+DEPTH_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/DeclareDepthTexture.hlsl"'
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_core_sample_depth_texture_takes_a_sampler(tmp_path, language):
+    """SAMPLE_DEPTH_TEXTURE(tex, sampler, uv) and SAMPLE_DEPTH_TEXTURE_LOD(tex, sampler, uv, 0)
+    in a URP program (Core RP's forms; the built-in two-argument macro would refuse them) read
+    the same texel as SampleSceneDepth(uv): equal bit for bit (one texture, one uv, nearest).
+    The depth is the sphere's, not a constant: it spans a range inside (0, 1) (the far plane's
+    1.0 would be a missing pre-pass). Control: the neighbouring pixel's SampleSceneDepth differs
+    on most pixels."""
+    pixels, _ = render_constant(tmp_path, urp_pass("depth", DEPTH_BODY, DEPTH_INCLUDE), language)
+    assert (pixels[:, 0] == pixels[:, 2]).all() and (pixels[:, 1] == pixels[:, 2]).all()
+    assert 0.0 < pixels[:, 2].min() < pixels[:, 2].max() < 1.0
+    assert (pixels[:, 0] != np.roll(pixels[:, 2], 1)).mean() > 0.5

@@ -69,6 +69,13 @@
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
 #define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+// Core RP's depth reads take a sampler (three arguments; the built-in pipeline's, which the
+// Unity prelude defines, take two): in a program that includes Core.hlsl, Core's win, as in
+// Unity where URP programs never see UnityCG.cginc's. The red channel of the texture's sample.
+#undef SAMPLE_DEPTH_TEXTURE
+#undef SAMPLE_DEPTH_TEXTURE_LOD
+#define SAMPLE_DEPTH_TEXTURE(t, s, uv) t.Sample(s, uv).r
+#define SAMPLE_DEPTH_TEXTURE_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod).r
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
