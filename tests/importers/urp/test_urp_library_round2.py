@@ -165,3 +165,49 @@ def test_core_sample_depth_texture_takes_a_sampler(tmp_path, language):
     assert (pixels[:, 0] == pixels[:, 2]).all() and (pixels[:, 1] == pixels[:, 2]).all()
     assert 0.0 < pixels[:, 2].min() < pixels[:, 2].max() < 1.0
     assert (pixels[:, 0] != np.roll(pixels[:, 2], 1)).mean() > 0.5
+
+
+# A shader's own PI after Core (FXC: a warning, the new body) and its own struct LightingData
+# (a URP 10 shader's name, which URP 12 added to Lighting.hlsl); OutputAlpha's two forms; and
+# SurfaceData, declared by SurfaceInput.hlsl alone (URP's SurfaceData.hlsl), before Lighting.hlsl.
+OWN_NAMES_INCLUDE = """#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceInput.hlsl"
+            void FillSurface(out SurfaceData s) { s = (SurfaceData)0; s.alpha = 0.375; }
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
+            #define PI 3.0
+            struct LightingData { float3 mine; };"""
+OWN_NAMES_BODY = """LightingData d; d.mine = float3(0.5, 0.25, 0.125);
+                SurfaceData s; FillSurface(s);
+                return float4(PI * 0.1 + d.mine.x, OutputAlpha(s.alpha) - 0.5, OutputAlpha(s.alpha, 1.0), 1.0);"""
+# PI 0.1 + 0.5, 1 - 0.5, 0.375: sums of a few float32 roundings near 1, 4 ulps (2^-24 relative).
+OWN_NAMES_EXPECTED = np.array([3.0 * 0.1 + 0.5, 0.5, 0.375])
+OWN_NAMES_BOUND = 4 * 2.0 ** -24
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_shaders_own_pi_and_lighting_data_win(tmp_path, language):
+    """The shader's #define PI 3.0 after Core is the PI its code reads (0.8 in red; Core's pi
+    would give 0.814159), its struct LightingData is the one its code fills (not URP 12's),
+    OutputAlpha(a) is 1 (opaque, the default surface type) and OutputAlpha(a, 1) is a. Control:
+    Core's PI in red fails the bound, and the same shader with Core's LightingData members
+    (no own struct) is refused at the line that reads d.mine."""
+    pixels, _ = render_constant(tmp_path, urp_pass("own names", OWN_NAMES_BODY, OWN_NAMES_INCLUDE), language)
+    err = np.abs(pixels[:, :3] - OWN_NAMES_EXPECTED).max(axis=1)
+    assert (err <= OWN_NAMES_BOUND).all(), err.max()
+    assert abs(3.14159265359 * 0.1 + 0.5 - OWN_NAMES_EXPECTED[0]) > OWN_NAMES_BOUND  # control: Core's PI
+    from pbrlab.foundation.errors import PbrlabError
+    without = OWN_NAMES_INCLUDE.replace("struct LightingData { float3 mine; };", "")
+    with pytest.raises(PbrlabError, match="mine"):
+        render_constant(tmp_path, urp_pass("own names", OWN_NAMES_BODY, without), language)
+
+
+def test_user_definitions_are_read_from_the_shaders_own_files(tmp_path):
+    """PBRLAB_USER_DEFINES_<name> for a name the program or its own include file defines, not
+    for one only pbrlab's stand-ins define, nor one in a comment."""
+    from types import SimpleNamespace
+    from pbrlab.importers.unity.user_definitions import program_defines
+    (tmp_path / "own.hlsl").write_text("#define HALF_PI 1.5\nstruct LightingData { float a; };\n")
+    program = ('#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"\n'
+               '#include "own.hlsl"\n// #define PI 3\n#define TWO_PI 6.0\n')
+    found = program_defines(SimpleNamespace(program=program, path=tmp_path / "t.shader"))
+    assert found == {"PBRLAB_USER_DEFINES_HALF_PI": 1, "PBRLAB_USER_DEFINES_LightingData": 1,
+                     "PBRLAB_USER_DEFINES_TWO_PI": 1}

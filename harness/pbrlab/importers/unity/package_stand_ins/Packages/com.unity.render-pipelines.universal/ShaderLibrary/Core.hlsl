@@ -22,23 +22,50 @@
 #define HALF_MIN 6.103515625e-5
 #define HALF_MIN_SQRT 0.0078125
 #define FLT_MIN 1.175494351e-38
+// The constants below are left undefined where the shader #defines the name itself, as well
+// as where it did so before including Core (FXC takes a redefinition's body, with a warning;
+// importers/unity/user_definitions.py). No stand-in reads them.
+#if !defined(FLT_EPS) && !defined(PBRLAB_USER_DEFINES_FLT_EPS)
 #define FLT_EPS 5.960464478e-8
-#ifndef PI
+#endif
+#if !defined(PI) && !defined(PBRLAB_USER_DEFINES_PI)
 #define PI 3.14159265359
 #endif
+#if !defined(TWO_PI) && !defined(PBRLAB_USER_DEFINES_TWO_PI)
 #define TWO_PI 6.28318530718
+#endif
+#if !defined(INV_PI) && !defined(PBRLAB_USER_DEFINES_INV_PI)
 #define INV_PI 0.31830988618
+#endif
 // Core RP's Macros.hlsl constants: multiples of pi and their reciprocals, to the digits
 // Core RP spells them (pi = 3.14159265358979...).
+#if !defined(FOUR_PI) && !defined(PBRLAB_USER_DEFINES_FOUR_PI)
 #define FOUR_PI 12.5663706144
+#endif
+#if !defined(INV_TWO_PI) && !defined(PBRLAB_USER_DEFINES_INV_TWO_PI)
 #define INV_TWO_PI 0.15915494309
+#endif
+#if !defined(INV_FOUR_PI) && !defined(PBRLAB_USER_DEFINES_INV_FOUR_PI)
 #define INV_FOUR_PI 0.07957747155
+#endif
+#if !defined(HALF_PI) && !defined(PBRLAB_USER_DEFINES_HALF_PI)
 #define HALF_PI 1.57079632679
+#endif
+#if !defined(INV_HALF_PI) && !defined(PBRLAB_USER_DEFINES_INV_HALF_PI)
 #define INV_HALF_PI 0.636619772367
+#endif
+#if !defined(LOG2_E) && !defined(PBRLAB_USER_DEFINES_LOG2_E)
 #define LOG2_E 1.44269504089
+#endif
+#if !defined(INV_SQRT2) && !defined(PBRLAB_USER_DEFINES_INV_SQRT2)
 #define INV_SQRT2 0.70710678118
+#endif
+#if !defined(FLT_MAX) && !defined(PBRLAB_USER_DEFINES_FLT_MAX)
 #define FLT_MAX 3.402823466e+38
+#endif
+#if !defined(HALF_MAX) && !defined(PBRLAB_USER_DEFINES_HALF_MAX)
 #define HALF_MAX 65504.0
+#endif
 
 // SRP-batcher constant buffers: plain uniforms here.
 #define CBUFFER_START(name)
@@ -123,6 +150,16 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
+
+// URP's ShaderVariablesFunctions: the alpha a pass writes, the surface's own for a transparent
+// surface (surfaceType 1) and 1 for an opaque one (0, the default); AlphaDiscard clips
+// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere).
+float OutputAlpha(float outputAlpha, float surfaceType = 0.0) { return surfaceType == 1.0 ? outputAlpha : 1.0; }
+void AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
+#ifdef _ALPHATEST_ON
+    clip(alpha - cutoff + offset);
+#endif
+}
 
 // numer / denom, and 1 where they are equal (Core RP's SafeDiv: 0 / 0 and inf / inf are 1).
 float SafeDiv(float numer, float denom) { return (numer != denom) ? numer / denom : 1.0; }

@@ -18,6 +18,7 @@
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceData.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
@@ -201,19 +202,6 @@ struct InputData {
     float2 normalizedScreenSpaceUV;
     float4 shadowMask;
     float3x3 tangentToWorld;
-};
-
-struct SurfaceData {
-    float3 albedo;
-    float3 specular;
-    float metallic;
-    float smoothness;
-    float3 normalTS;
-    float3 emission;
-    float occlusion;
-    float alpha;
-    float clearCoatMask;
-    float clearCoatSmoothness;
 };
 
 struct BRDFData {
@@ -418,6 +406,9 @@ float4 UniversalFragmentBlinnPhong(InputData inputData, float3 diffuse, float4 s
 // The shadow mask a pixel's baked shadows come from: none here (no lightmaps), every channel 1.
 float4 CalculateShadowMask(InputData inputData) { return float4(1.0, 1.0, 1.0, 1.0); }
 
+// URP 12's LightingData and the functions that take it; left out where the shader declares a
+// struct LightingData of its own (written for an earlier URP: importers/unity/user_definitions.py).
+#ifndef PBRLAB_USER_DEFINES_LightingData
 // A pixel's light by kind, summed by CalculateLightingColor: the global illumination, the main
 // light, the additional lights and the vertex lights, times the albedo, plus the emission.
 struct LightingData {
@@ -451,6 +442,7 @@ float4 CalculateFinalColor(LightingData lightingData, float alpha) {
 float4 CalculateFinalColor(LightingData lightingData, float3 albedo, float alpha, float fogCoord) {
     return float4(CalculateLightingColor(lightingData, albedo), alpha);  // no fog here
 }
+#endif
 
 // The lit pixel: ambient and reflections, the main light, every additional light, emission.
 float4 UniversalFragmentPBR(InputData inputData, SurfaceData surfaceData) {
