@@ -211,3 +211,46 @@ def test_user_definitions_are_read_from_the_shaders_own_files(tmp_path):
     found = program_defines(SimpleNamespace(program=program, path=tmp_path / "t.shader"))
     assert found == {"PBRLAB_USER_DEFINES_HALF_PI": 1, "PBRLAB_USER_DEFINES_LightingData": 1,
                      "PBRLAB_USER_DEFINES_TWO_PI": 1}
+
+
+# Core RP's BSDF.hlsl and ImageBasedLighting.hlsl names at fixed arguments, one sum a channel.
+BSDF_INCLUDE = """#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/BSDF.hlsl"
+            #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/ImageBasedLighting.hlsl\""""
+BSDF_BODY = """float f = F_Schlick(float3(0.1, 0.1, 0.1), 0.5).x;
+                return float4(f + F_Schlick(0.2, 0.5, 0.3) + Lambert(),
+                              D_GGX(0.9, 0.3) + DV_SmithJointGGX(0.9, 0.6, 0.7, 0.3) + V_SmithJointGGX(0.5, 0.8, 0.6),
+                              MipmapLevelToPerceptualRoughness(PerceptualRoughnessToMipmapLevel(0.4)) + PerceptualRoughnessToMipmapLevel(0.4, 8u),
+                              1.0);"""
+
+
+def _bsdf_expected() -> np.ndarray:
+    """The float64 terms (reference/brdf.py, each from its paper) and the mip's formula."""
+    from pbrlab.maths.reference import brdf
+    red = brdf.F_Schlick(0.1, 0.5) + brdf.F_Schlick(0.2, 0.3, f90=0.5) + brdf.Fd_Lambert()
+    green = (brdf.D_GGX(0.9, 0.3) + brdf.D_GGX(0.9, 0.3) * brdf.V_SmithGGXCorrelated(0.6, 0.7, 0.3)
+             + brdf.V_SmithGGXCorrelated(0.5, 0.8, 0.6))
+    blue = 0.4 + 0.4 * (1.7 - 0.7 * 0.4) * 8  # the round trip is the identity; 8 levels' mip
+    return np.array([red, green, blue], np.float64)
+
+
+# float32 evaluation of each term (a few ulps: pow5, the squares, a sqrt, a divide) summed: 16
+# ulps (2^-24 relative) of each channel's value; the round trip's sqrt near 1.7^2 - 2.8 f loses
+# ~1.7^2 / 1.4 / pr = 5 times the float32 rounding of its argument: inside the same bound.
+BSDF_BOUND = 16 * 2.0 ** -24
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_core_bsdf_and_ibl_terms_are_the_papers(tmp_path, language):
+    """F_Schlick (Schlick 1994; a float3 and a scalar f0 with f90), Lambert (1/pi), D_GGX
+    (Walter 2007), V_SmithJointGGX and DV_SmithJointGGX (Heitz 2014's height-correlated Smith,
+    Unity's `roughness` = alpha), PerceptualRoughnessToMipmapLevel in Unity's two forms and
+    MipmapLevelToPerceptualRoughness its inverse, against their float64 formulas within
+    BSDF_BOUND relative. Control: D_GGX given the perceptual roughness (sqrt 0.3) instead of
+    alpha differs by far more than the bound."""
+    pixels, _ = render_constant(tmp_path, urp_pass("bsdf", BSDF_BODY, BSDF_INCLUDE), language)
+    expected = _bsdf_expected()
+    err = np.abs(pixels[:, :3] - expected) / expected
+    assert (err <= BSDF_BOUND).all(), err.max(axis=0)
+    from pbrlab.maths.reference import brdf
+    wrong = expected[1] - brdf.D_GGX(0.9, 0.3) + brdf.D_GGX(0.9, 0.3 ** 0.5)  # control: perceptual roughness as alpha
+    assert abs(wrong - expected[1]) / expected[1] > 100 * BSDF_BOUND
