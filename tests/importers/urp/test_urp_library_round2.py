@@ -254,3 +254,25 @@ def test_core_bsdf_and_ibl_terms_are_the_papers(tmp_path, language):
     from pbrlab.maths.reference import brdf
     wrong = expected[1] - brdf.D_GGX(0.9, 0.3) + brdf.D_GGX(0.9, 0.3 ** 0.5)  # control: perceptual roughness as alpha
     assert abs(wrong - expected[1]) / expected[1] > 100 * BSDF_BOUND
+
+
+# URP_Water's include: Lighting.hlsl written lighting.hlsl (Unity on Windows and macOS reads it).
+CASE_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/lighting.hlsl"'
+CASE_BODY = "return float4(GetMainLight().color, 1.0);"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_package_include_in_another_case_is_read_with_a_warning(tmp_path, language):
+    """A Packages/ include whose letter case differs from the stand-in's is read as the stand-in
+    (the main light's colour, the scene's first directional light's radiance (0.25, 0.5, 1) in
+    float32, exact), with a warning naming the shader file and the include's line. Control: a
+    name no stand-in matches in any case is refused, naming it."""
+    sun = {"type": "directional", "direction": [0.0, 0.0, -1.0], "color": [0.25, 0.5, 1.0], "intensity": 1.0}
+    text = urp_pass("case", CASE_BODY, CASE_INCLUDE)
+    line = text.splitlines().index(next(s for s in text.splitlines() if "lighting.hlsl" in s)) + 1
+    with pytest.warns(UserWarning, match=rf"t\.shader:{line}: #include .*lighting\.hlsl.* read as .*Lighting\.hlsl"):
+        pixels, _ = render_constant(tmp_path, text, language, environment=False, lights=[sun])
+    assert (pixels[:, :3] == np.array([0.25, 0.5, 1.0])).all()
+    from pbrlab.foundation.errors import PbrlabError
+    with pytest.raises(PbrlabError, match="lightingx.hlsl"):
+        render_constant(tmp_path, text.replace("lighting.hlsl", "lightingx.hlsl"), language, environment=False)
