@@ -276,3 +276,25 @@ def test_package_include_in_another_case_is_read_with_a_warning(tmp_path, langua
     from pbrlab.foundation.errors import PbrlabError
     with pytest.raises(PbrlabError, match="lightingx.hlsl"):
         render_constant(tmp_path, text.replace("lighting.hlsl", "lightingx.hlsl"), language, environment=False)
+
+
+# URP's shadow-map sampling as a shader calls it itself (Shadows.hlsl's names): no shadow map here.
+SHADOW_BODY = """ShadowSamplingData data = GetMainLightShadowSamplingData();
+                float4 params = GetMainLightShadowParams();
+                float4 coord = TransformWorldToShadowCoord(float3(0.0, 0.0, 0.0));
+                float lit = SampleShadowmap(TEXTURE2D_ARGS(_MainLightShadowmapTexture, sampler_MainLightShadowmapTexture),
+                                            coord, data, params, false);
+                return float4(0.5 * lit, params.x + 0.25, 0.125 * data.shadowmapSize.x, 1.0);"""
+SHADOW_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"'
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_shadow_map_sampling_is_unshadowed(tmp_path, language):
+    """SampleShadowmap with the main light's ShadowSamplingData and _MainLightShadowParams
+    (URP 12's names) under a directional light: 1 (no shadow map: lerp(1, 1, strength)), the
+    strength 0 as URP's with shadows off; (0.5, 0.25, 0.125) exactly on every pixel (a shadowed
+    sample, any strength but 0 or a sampling data left unset fails it)."""
+    sun = {"type": "directional", "direction": [0.0, 0.0, -1.0], "color": [1.0, 1.0, 1.0], "intensity": 1.0}
+    pixels, _ = render_constant(tmp_path, urp_pass("shadow", SHADOW_BODY, SHADOW_INCLUDE), language,
+                                environment=False, lights=[sun])
+    assert (pixels[:, :3] == np.array([0.5, 0.25, 0.125])).all()

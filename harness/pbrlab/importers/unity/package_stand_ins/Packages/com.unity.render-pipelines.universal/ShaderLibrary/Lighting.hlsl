@@ -106,6 +106,34 @@ Light GetAdditionalLight(uint i, float3 positionWS) {
 Light GetAdditionalLight(uint i, float3 positionWS, float4 shadowMask) { return GetAdditionalLight(i, positionWS); }
 // Shadows (Shadows.hlsl's names): no shadow maps here, so every light is unshadowed (1).
 float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
+// The main light's shadow map and the parameters URP's SampleShadowmap reads (URP 12's
+// ShadowSamplingData: the soft-shadow tap offsets and the map's size; _MainLightShadowParams:
+// strength, soft flag, fade scale and bias). No shadow map here: every texel of it would read
+// lit (1), so SampleShadowmap's attenuation, lerp(1, map, strength), is 1 for any strength (the
+// main light's is 0, as URP's with shadows off), and the texture is never sampled.
+struct ShadowSamplingData {
+    float4 shadowOffset0;
+    float4 shadowOffset1;
+    float4 shadowOffset2;
+    float4 shadowOffset3;
+    float4 shadowmapSize;
+};
+TEXTURE2D(_MainLightShadowmapTexture);
+SAMPLER(sampler_MainLightShadowmapTexture);
+ShadowSamplingData GetMainLightShadowSamplingData() {
+    ShadowSamplingData data;
+    data.shadowOffset0 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset1 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset2 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset3 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowmapSize = float4(1.0, 1.0, 1.0, 1.0);
+    return data;
+}
+float4 GetMainLightShadowParams() { return float4(0.0, 0.0, 0.0, 0.0); }
+float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
+                      float4 shadowParams, bool isPerspectiveProjection) {
+    return 1.0;
+}
 float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
