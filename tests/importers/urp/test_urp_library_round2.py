@@ -79,7 +79,13 @@ AMBIENT_AXES = {
     "unity_AmbientSky": [[0.0, 1.0, 0.0]],
     "unity_AmbientEquator": [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]],
     "unity_AmbientGround": [[0.0, -1.0, 0.0]],
+    # URP's _GlossyEnvironmentColor: the probe's constant term, its mean over the sphere, which
+    # the six axes' mean is for bands 0-2 (test_fixed_function.py checks that against 20,000
+    # directions)
+    "_GlossyEnvironmentColor": [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -1.0, 0.0],
+                                [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]],
 }
+AMBIENT_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"'
 # The SH coefficients reach the GPU as float32 and the lookup sums 9 products (and 4 lookups
 # for the equator): 32 float32 ulps (2^-24 relative each) of a value below 1 bounds it.
 AMBIENT_BOUND = 32 * 2.0 ** -24
@@ -96,12 +102,14 @@ def _expected_ambient(scene, name: str) -> np.ndarray:
 @pytest.mark.parametrize("name", sorted(AMBIENT_AXES))
 def test_ambient_colours_are_the_sh_from_above_sides_below(tmp_path, language, name):
     """unity_AmbientSky / Equator / Ground (URP UnityInput's globals; RenderSettings' ambient
-    "from above", "from the sides", "from below") returned as the pixel: the float64 SH9
-    irradiance of the sky along +y, the four horizontal axes' mean, -y, within AMBIENT_BOUND on
+    "from above", "from the sides", "from below") and _GlossyEnvironmentColor returned as the
+    pixel: the float64 SH9 irradiance of the sky along +y, the four horizontal axes' mean, -y,
+    the six axes' mean, within AMBIENT_BOUND on
     every covered pixel. Control: the sky's and the ground's colours differ from each other and
     from the other two by far more than the bound (a swapped or flat ambient fails), and with no
     environment the colour is black."""
-    pixels, scene = render_constant(tmp_path, urp_pass("ambient", f"return float4({name}.rgb, 1.0);"), language)
+    text = urp_pass("ambient", f"return float4({name}.rgb, 1.0);", AMBIENT_INCLUDE)
+    pixels, scene = render_constant(tmp_path, text, language)
     expected = _expected_ambient(scene, name)
     assert 0.01 < expected.min() and expected.max() < 1.0
     err = np.abs(pixels[:, :3] - expected).max(axis=1)
@@ -109,8 +117,7 @@ def test_ambient_colours_are_the_sh_from_above_sides_below(tmp_path, language, n
     for other in AMBIENT_AXES:
         if other != name:
             assert np.abs(_expected_ambient(scene, other) - expected).max() > 100 * AMBIENT_BOUND
-    dark, _ = render_constant(tmp_path, urp_pass("ambient", f"return float4({name}.rgb, 1.0);"), language,
-                              environment=False)
+    dark, _ = render_constant(tmp_path, text, language, environment=False)
     assert np.abs(dark[:, :3]).max() == 0.0
 
 

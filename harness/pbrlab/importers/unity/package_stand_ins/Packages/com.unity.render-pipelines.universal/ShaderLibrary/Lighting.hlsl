@@ -202,6 +202,11 @@ float3 DecodeHDREnvironment(float4 encodedIrradiance, float4 decodeInstructions)
     float alpha = max(decodeInstructions.w * (encodedIrradiance.a - 1.0) + 1.0, 0.0);
     return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * encodedIrradiance.rgb;
 }
+// URP's indirect specular where a shader's glossy reflections are off (Input.hlsl's
+// _GlossyEnvironmentColor): URP sets it to the ambient probe's constant (L0) term times the
+// reflection intensity (1 here), which is the probe's mean over all directions: the Unity
+// prelude's Unity_LightmodelAmbient() (black without an environment).
+#define _GlossyEnvironmentColor Unity_LightmodelAmbient()
 // The probes' baked occlusion of the shadow mask: none here (every channel 1).
 #define unity_ProbesOcclusion float4(1.0, 1.0, 1.0, 1.0)
 // The mesh's rendering layers, as RenderingLayers.hlsl's GetMeshRenderingLayer (every layer).
