@@ -305,3 +305,100 @@ def test_shadow_map_sampling_is_unshadowed(tmp_path, language):
     pixels, _ = render_constant(tmp_path, urp_pass("shadow", SHADOW_BODY, SHADOW_INCLUDE), language,
                                 environment=False, lights=[sun])
     assert (pixels[:, :3] == np.array([0.5, 0.25, 0.125])).all()
+
+
+# URP's Lit shader as projects copy it: its forward pass from URP's Shaders/LitInput.hlsl and
+# LitForwardPass.hlsl (stand-ins), beside a pass that fills SurfaceData and InputData itself and
+# calls UniversalFragmentPBR (proven against the float64 URP model in test_urp_shaders.py).
+LIT_PROPERTIES = """Properties {
+        _BaseMap("Base", 2D) = "white" {}
+        _BaseColor("Color", Color) = (0.8, 0.5, 0.3, 1)
+        _Metallic("Metallic", Range(0, 1)) = 0.3
+        _Smoothness("Smoothness", Range(0, 1)) = %(smoothness)s
+    }"""
+LIT_COPY = """
+Shader "t/lit copy" {
+    %(properties)s
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Name "ForwardLit"
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma shader_feature _NORMALMAP
+            #pragma vertex LitPassVertex
+            #pragma fragment LitPassFragment
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitInput.hlsl"
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitForwardPass.hlsl"
+            ENDHLSL
+        }
+    }
+}
+"""
+LIT_DIRECT = """
+Shader "t/lit direct" {
+    %(properties)s
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
+            float4 _BaseColor;
+            float _Metallic, _Smoothness;
+            struct Attributes { float4 positionOS : POSITION; float3 normalOS : NORMAL; };
+            struct Varyings { float4 positionCS : SV_POSITION; float3 positionWS : TEXCOORD0; float3 normalWS : TEXCOORD1; };
+            Varyings vert(Attributes IN) {
+                Varyings OUT;
+                OUT.positionWS = TransformObjectToWorld(IN.positionOS.xyz);
+                OUT.positionCS = TransformWorldToHClip(OUT.positionWS);
+                OUT.normalWS = TransformObjectToWorldNormal(IN.normalOS);
+                return OUT;
+            }
+            float4 frag(Varyings IN) : SV_Target {
+                SurfaceData s = (SurfaceData)0;
+                s.albedo = _BaseColor.rgb; s.metallic = _Metallic; s.smoothness = _Smoothness;
+                s.occlusion = 1.0; s.alpha = 1.0; s.normalTS = float3(0.0, 0.0, 1.0);
+                InputData d = (InputData)0;
+                d.positionWS = IN.positionWS;
+                d.normalWS = normalize(IN.normalWS);
+                d.viewDirectionWS = GetWorldSpaceNormalizeViewDir(IN.positionWS);
+                d.bakedGI = SampleSH(d.normalWS);
+                d.shadowMask = float4(1.0, 1.0, 1.0, 1.0);
+                return float4(UniversalFragmentPBR(d, s).rgb, 1.0);
+            }
+            ENDHLSL
+        }
+    }
+}
+"""
+# The same float32 operations in two programs the compiler may order differently (~100 of them
+# from the normal to the lit colour): 64 ulps (2^-24 relative) of the colour, floored at 2^-10
+# (dark pixels: the absolute rounding of the terms summed there).
+LIT_BOUND_ULPS = 64
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_urp_lit_copy_is_universal_fragment_pbr(tmp_path, language):
+    """URP's Lit forward pass (LitInput.hlsl + LitForwardPass.hlsl: base colour times the white
+    base map, _Metallic, _Smoothness, no maps) under the corpus's sun and sky equals a pass that
+    gives UniversalFragmentPBR the same SurfaceData and InputData itself, on every covered pixel
+    within LIT_BOUND_ULPS. Control: the direct pass at smoothness 0.5 instead of 0.6 differs
+    beyond the bound on most lit pixels."""
+    sun = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0}
+
+    def render(template, smoothness):
+        text = textwrap.dedent(template % {"properties": LIT_PROPERTIES % {"smoothness": smoothness}})
+        sub = tmp_path / f"{'copy' if template is LIT_COPY else 'direct'}-{smoothness}"
+        sub.mkdir(exist_ok=True)
+        pixels, _ = render_constant(sub, text, language, lights=[sun])
+        return pixels[:, :3]
+
+    copy, direct = render(LIT_COPY, "0.6"), render(LIT_DIRECT, "0.6")
+    assert copy.shape == direct.shape and copy.max() > 0.1
+    bound = LIT_BOUND_ULPS * 2.0 ** -24 * np.maximum(np.abs(direct), 2.0 ** -10)
+    assert (np.abs(copy - direct) <= bound).all(), (np.abs(copy - direct) / bound).max()
+    other = render(LIT_DIRECT, "0.5")  # control
+    assert (np.abs(other - copy) > bound).any(axis=1).mean() > 0.5
