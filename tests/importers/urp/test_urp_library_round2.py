@@ -17,35 +17,11 @@ import pytest
 from pbrlab.foundation.locations import locate
 from pbrlab.importers.loader import parse_scene
 from pbrlab.render.renderer import render_scene
+from test_urp_scene_textures import _URP_PASS as URP_PASS  # pytest puts this folder on sys.path
 
 LANGUAGES = ("glsl", "hlsl")
 
-URP_PASS = """
-Shader "t/%(name)s" {
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-            %(include)s
-            struct Attributes { float4 positionOS : POSITION; };
-            struct Varyings { float4 positionCS : SV_POSITION; };
-            Varyings vert(Attributes IN) {
-                Varyings OUT;
-                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                return OUT;
-            }
-            float4 frag(Varyings IN) : SV_Target {
-                %(body)s
-            }
-            ENDHLSL
-        }
-    }
-}
-"""
+# URP_PASS (the scene-texture tests'): %(name)s, %(include)s after Core.hlsl, %(body)s the fragment's.
 
 
 def urp_pass(name: str, body: str, include: str = "") -> str:
@@ -53,8 +29,8 @@ def urp_pass(name: str, body: str, include: str = "") -> str:
 
 
 def render_constant(tmp_path, text: str, language: str, *, environment: bool = True,
-                    transform: dict | None = None, lights: list | None = None) -> np.ndarray:
-    """The covered pixels' linear RGBA of a unit UV sphere drawn with the shader ``text``."""
+                    transform: dict | None = None, lights: list | None = None) -> tuple:
+    """(the covered pixels' linear RGBA, the scene) of a unit UV sphere drawn with the shader ``text``."""
     shader = tmp_path / "t.shader"
     shader.write_text(text)
     data = {
@@ -316,34 +292,27 @@ LIT_PROPERTIES = """Properties {
         _Metallic("Metallic", Range(0, 1)) = 0.3
         _Smoothness("Smoothness", Range(0, 1)) = %(smoothness)s
     }"""
-LIT_COPY = """
-Shader "t/lit copy" {
+LIT_SHELL = """
+Shader "t/lit" {
     %(properties)s
     SubShader {
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
         Pass {
-            Name "ForwardLit"
             Tags { "LightMode" = "UniversalForward" }
             HLSLPROGRAM
-            #pragma shader_feature _NORMALMAP
-            #pragma vertex LitPassVertex
-            #pragma fragment LitPassFragment
-            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitInput.hlsl"
-            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitForwardPass.hlsl"
+%(program)s
             ENDHLSL
         }
     }
 }
 """
-LIT_DIRECT = """
-Shader "t/lit direct" {
-    %(properties)s
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
+LIT_COPY = """            #pragma shader_feature _NORMALMAP
+            #pragma vertex LitPassVertex
+            #pragma fragment LitPassFragment
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitInput.hlsl"
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/LitForwardPass.hlsl"
+"""
+LIT_DIRECT = """            #pragma vertex vert
             #pragma fragment frag
             #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
             float4 _BaseColor;
@@ -369,10 +338,6 @@ Shader "t/lit direct" {
                 d.shadowMask = float4(1.0, 1.0, 1.0, 1.0);
                 return float4(UniversalFragmentPBR(d, s).rgb, 1.0);
             }
-            ENDHLSL
-        }
-    }
-}
 """
 # The same float32 operations in two programs the compiler may order differently (~100 of them
 # from the normal to the lit colour): 64 ulps (2^-24 relative) of the colour, floored at 2^-10
@@ -390,7 +355,8 @@ def test_urp_lit_copy_is_universal_fragment_pbr(tmp_path, language):
     sun = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0}
 
     def render(template, smoothness):
-        text = textwrap.dedent(template % {"properties": LIT_PROPERTIES % {"smoothness": smoothness}})
+        text = textwrap.dedent(LIT_SHELL % {"properties": LIT_PROPERTIES % {"smoothness": smoothness},
+                                            "program": template})
         sub = tmp_path / f"{'copy' if template is LIT_COPY else 'direct'}-{smoothness}"
         sub.mkdir(exist_ok=True)
         pixels, _ = render_constant(sub, text, language, lights=[sun])
