@@ -19,6 +19,8 @@
 //           float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight),
 //           float3 ShadeVertexLights(float4 vertex, float3 normal) (UnityCG.cginc's vertex lighting);
 //           float4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
+//           unity_AmbientSky, unity_AmbientEquator, unity_AmbientGround (its irradiance from above,
+//           the sides, below);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
@@ -245,6 +247,41 @@ float4 Unity_LightmodelAmbient() {
 #endif
 }
 #define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()
+
+// unity_AmbientSky, unity_AmbientEquator, unity_AmbientGround (UnityShaderVariables.cginc's and
+// URP UnityInput.hlsl's globals; RenderSettings.ambientSkyColor / ambientEquatorColor /
+// ambientGroundColor, documented as the ambient light "coming from above", "from the sides" and
+// "from below"; a flat ambient colour is all three). pbrlab's scene has no gradient setting: its
+// ambient is the environment's SH, so the three are that SH's irradiance (the caller's
+// PBR_UNITY_SH_IRRADIANCE(n), what ShadeSH9 returns) from above (+y), the mean of the four
+// horizontal axes (+-x, +-z), and from below (-y); a uniform environment L gives L for all three,
+// as Unity's flat mode. Black where the caller defines no lookup. Alpha 1.
+float4 Unity_AmbientSkyColor() {
+#ifdef PBR_UNITY_SH_IRRADIANCE
+    return float4(PBR_UNITY_SH_IRRADIANCE(float3(0.0, 1.0, 0.0)), 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+float4 Unity_AmbientEquatorColor() {
+#ifdef PBR_UNITY_SH_IRRADIANCE
+    float3 sum = PBR_UNITY_SH_IRRADIANCE(float3(1.0, 0.0, 0.0)) + PBR_UNITY_SH_IRRADIANCE(float3(-1.0, 0.0, 0.0))
+             + PBR_UNITY_SH_IRRADIANCE(float3(0.0, 0.0, 1.0)) + PBR_UNITY_SH_IRRADIANCE(float3(0.0, 0.0, -1.0));
+    return float4(sum * 0.25, 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+float4 Unity_AmbientGroundColor() {
+#ifdef PBR_UNITY_SH_IRRADIANCE
+    return float4(PBR_UNITY_SH_IRRADIANCE(float3(0.0, -1.0, 0.0)), 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define unity_AmbientSky Unity_AmbientSkyColor()
+#define unity_AmbientEquator Unity_AmbientEquatorColor()
+#define unity_AmbientGround Unity_AmbientGroundColor()
 
 float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight) {
     float3 viewpos = UnityObjectToViewPos(vertex.xyz);

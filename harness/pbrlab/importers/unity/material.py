@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, lightmaps
+from . import dynamic_lightmaps, lightmaps, user_definitions
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -153,7 +153,8 @@ class ProgramPass:
 
     def draws(self, defines: dict) -> list:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
-                   **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap)}
+                   **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap),
+                   **user_definitions.program_defines(self.unity_pass)}
         out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
                for keyed, additive in light_programs(self.unity_pass, defines)]
         if deferred.is_light_pass(self.unity_pass):  # lights after the first: the coverage stays

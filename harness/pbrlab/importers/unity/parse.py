@@ -24,6 +24,7 @@ from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, shaderlab, texture_objects
+from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, top_level)
@@ -787,6 +788,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         program = pattern.sub(replacement, program)
     for rewrite in pipeline.rewrites:
         program = rewrite(program)
+    program = respell_package_includes(program, path, first, warnings)
     vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)

@@ -22,23 +22,50 @@
 #define HALF_MIN 6.103515625e-5
 #define HALF_MIN_SQRT 0.0078125
 #define FLT_MIN 1.175494351e-38
+// The constants below are left undefined where the shader #defines the name itself, as well
+// as where it did so before including Core (FXC takes a redefinition's body, with a warning;
+// importers/unity/user_definitions.py). No stand-in reads them.
+#if !defined(FLT_EPS) && !defined(PBRLAB_USER_DEFINES_FLT_EPS)
 #define FLT_EPS 5.960464478e-8
-#ifndef PI
+#endif
+#if !defined(PI) && !defined(PBRLAB_USER_DEFINES_PI)
 #define PI 3.14159265359
 #endif
+#if !defined(TWO_PI) && !defined(PBRLAB_USER_DEFINES_TWO_PI)
 #define TWO_PI 6.28318530718
+#endif
+#if !defined(INV_PI) && !defined(PBRLAB_USER_DEFINES_INV_PI)
 #define INV_PI 0.31830988618
+#endif
 // Core RP's Macros.hlsl constants: multiples of pi and their reciprocals, to the digits
 // Core RP spells them (pi = 3.14159265358979...).
+#if !defined(FOUR_PI) && !defined(PBRLAB_USER_DEFINES_FOUR_PI)
 #define FOUR_PI 12.5663706144
+#endif
+#if !defined(INV_TWO_PI) && !defined(PBRLAB_USER_DEFINES_INV_TWO_PI)
 #define INV_TWO_PI 0.15915494309
+#endif
+#if !defined(INV_FOUR_PI) && !defined(PBRLAB_USER_DEFINES_INV_FOUR_PI)
 #define INV_FOUR_PI 0.07957747155
+#endif
+#if !defined(HALF_PI) && !defined(PBRLAB_USER_DEFINES_HALF_PI)
 #define HALF_PI 1.57079632679
+#endif
+#if !defined(INV_HALF_PI) && !defined(PBRLAB_USER_DEFINES_INV_HALF_PI)
 #define INV_HALF_PI 0.636619772367
+#endif
+#if !defined(LOG2_E) && !defined(PBRLAB_USER_DEFINES_LOG2_E)
 #define LOG2_E 1.44269504089
+#endif
+#if !defined(INV_SQRT2) && !defined(PBRLAB_USER_DEFINES_INV_SQRT2)
 #define INV_SQRT2 0.70710678118
+#endif
+#if !defined(FLT_MAX) && !defined(PBRLAB_USER_DEFINES_FLT_MAX)
 #define FLT_MAX 3.402823466e+38
+#endif
+#if !defined(HALF_MAX) && !defined(PBRLAB_USER_DEFINES_HALF_MAX)
 #define HALF_MAX 65504.0
+#endif
 
 // SRP-batcher constant buffers: plain uniforms here.
 #define CBUFFER_START(name)
@@ -69,6 +96,13 @@
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
 #define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+// Core RP's depth reads take a sampler (three arguments; the built-in pipeline's, which the
+// Unity prelude defines, take two): in a program that includes Core.hlsl, Core's win, as in
+// Unity where URP programs never see UnityCG.cginc's. The red channel of the texture's sample.
+#undef SAMPLE_DEPTH_TEXTURE
+#undef SAMPLE_DEPTH_TEXTURE_LOD
+#define SAMPLE_DEPTH_TEXTURE(t, s, uv) t.Sample(s, uv).r
+#define SAMPLE_DEPTH_TEXTURE_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod).r
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
@@ -116,6 +150,16 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
+
+// URP's ShaderVariablesFunctions: the alpha a pass writes, the surface's own for a transparent
+// surface (surfaceType 1) and 1 for an opaque one (0, the default); AlphaDiscard clips
+// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere).
+float OutputAlpha(float outputAlpha, float surfaceType = 0.0) { return surfaceType == 1.0 ? outputAlpha : 1.0; }
+void AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
+#ifdef _ALPHATEST_ON
+    clip(alpha - cutoff + offset);
+#endif
+}
 
 // numer / denom, and 1 where they are equal (Core RP's SafeDiv: 0 / 0 and inf / inf are 1).
 float SafeDiv(float numer, float denom) { return (numer != denom) ? numer / denom : 1.0; }
@@ -173,36 +217,13 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
 }
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
-float4x4 GetWorldToViewMatrix() { return UNITY_MATRIX_V; }
-float4x4 GetObjectToWorldMatrix() { return unity_ObjectToWorld; }
-float4x4 GetWorldToObjectMatrix() { return unity_WorldToObject; }
-float4x4 GetWorldToHClipMatrix() { return UNITY_MATRIX_VP; }
-float3 TransformObjectToWorld(float3 positionOS) { return mul(unity_ObjectToWorld, float4(positionOS, 1.0)).xyz; }
-float3 TransformWorldToObject(float3 positionWS) { return mul(unity_WorldToObject, float4(positionWS, 1.0)).xyz; }
-float3 TransformWorldToView(float3 positionWS) { return mul(UNITY_MATRIX_V, float4(positionWS, 1.0)).xyz; }
-float4 TransformWorldToHClip(float3 positionWS) { return mul(UNITY_MATRIX_VP, float4(positionWS, 1.0)); }
-float4 TransformObjectToHClip(float3 positionOS) { return TransformWorldToHClip(TransformObjectToWorld(positionOS)); }
-float4 TransformWViewToHClip(float3 positionVS) { return mul(UNITY_MATRIX_P, float4(positionVS, 1.0)); }
-// A world direction to clip space (w dropped: a direction has no position).
-float3 TransformWorldToHClipDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_VP, dirWS); }
-float3 TransformObjectToWorldDir(float3 dirOS) { return SafeNormalize(mul((float3x3)unity_ObjectToWorld, dirOS)); }
-float3 TransformWorldToObjectDir(float3 dirWS) { return SafeNormalize(mul((float3x3)unity_WorldToObject, dirWS)); }
-// Normals by the inverse transpose: n^T M^-1, as Unity writes it.
-float3 TransformObjectToWorldNormal(float3 normalOS) { return SafeNormalize(mul(normalOS, (float3x3)unity_WorldToObject)); }
-float3 TransformWorldToViewDir(float3 dirWS) { return mul((float3x3)UNITY_MATRIX_V, dirWS); }
-// Core RP's overload with doNormalize: the same direction, normalized when asked (SafeNormalize).
-float3 TransformWorldToViewDir(float3 dirWS, bool doNormalize) {
-    float3 dirVS = mul((float3x3)UNITY_MATRIX_V, dirWS);
-    if (doNormalize) return SafeNormalize(dirVS);
-    return dirVS;
-}
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
     return _WorldSpaceCameraPos - positionWS;
 }
 float3 GetWorldSpaceNormalizeViewDir(float3 positionWS) { return normalize(GetWorldSpaceViewDir(positionWS)); }
-float GetOddNegativeScale() { return determinant((float3x3)unity_ObjectToWorld) < 0.0 ? -1.0 : 1.0; }
 
 struct VertexPositionInputs {
     float3 positionWS;
@@ -245,17 +266,6 @@ VertexNormalInputs GetVertexNormalInputs(float3 normalOS, float4 tangentOS) {
     return o;
 }
 
-// The tangent frame as a matrix whose rows are the tangent, the bitangent (the normal crossed
-// with the tangent, its sign the tangent's w: flipSign) and the normal (Core RP's
-// CreateTangentToWorld); TransformTangentToWorld takes it.
-float3x3 CreateTangentToWorld(float3 normal, float3 tangent, float flipSign) {
-    float3 bitangent = cross(normal, tangent) * flipSign;
-    return float3x3(tangent, bitangent, normal);
-}
-// A tangent-space normal to world space through the rows (T, B, N).
-float3 TransformTangentToWorld(float3 dirTS, float3x3 tangentToWorld) { return mul(dirTS, tangentToWorld); }
-// World to tangent space through the rows (T, B, N): the transpose's product.
-float3 TransformWorldToTangent(float3 dirWS, float3x3 tangentToWorld) { return mul(tangentToWorld, dirWS); }
 float3 NormalizeNormalPerPixel(float3 normalWS) { return normalize(normalWS); }
 float3 NormalizeNormalPerVertex(float3 normalWS) { return normalize(normalWS); }
 

@@ -18,6 +18,7 @@
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceData.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
@@ -105,6 +106,34 @@ Light GetAdditionalLight(uint i, float3 positionWS) {
 Light GetAdditionalLight(uint i, float3 positionWS, float4 shadowMask) { return GetAdditionalLight(i, positionWS); }
 // Shadows (Shadows.hlsl's names): no shadow maps here, so every light is unshadowed (1).
 float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
+// The main light's shadow map and the parameters URP's SampleShadowmap reads (URP 12's
+// ShadowSamplingData: the soft-shadow tap offsets and the map's size; _MainLightShadowParams:
+// strength, soft flag, fade scale and bias). No shadow map here: every texel of it would read
+// lit (1), so SampleShadowmap's attenuation, lerp(1, map, strength), is 1 for any strength (the
+// main light's is 0, as URP's with shadows off), and the texture is never sampled.
+struct ShadowSamplingData {
+    float4 shadowOffset0;
+    float4 shadowOffset1;
+    float4 shadowOffset2;
+    float4 shadowOffset3;
+    float4 shadowmapSize;
+};
+TEXTURE2D(_MainLightShadowmapTexture);
+SAMPLER(sampler_MainLightShadowmapTexture);
+ShadowSamplingData GetMainLightShadowSamplingData() {
+    ShadowSamplingData data;
+    data.shadowOffset0 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset1 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset2 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowOffset3 = float4(0.0, 0.0, 0.0, 0.0);
+    data.shadowmapSize = float4(1.0, 1.0, 1.0, 1.0);
+    return data;
+}
+float4 GetMainLightShadowParams() { return float4(0.0, 0.0, 0.0, 0.0); }
+float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
+                      float4 shadowParams, bool isPerspectiveProjection) {
+    return 1.0;
+}
 float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
@@ -173,6 +202,11 @@ float3 DecodeHDREnvironment(float4 encodedIrradiance, float4 decodeInstructions)
     float alpha = max(decodeInstructions.w * (encodedIrradiance.a - 1.0) + 1.0, 0.0);
     return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * encodedIrradiance.rgb;
 }
+// URP's indirect specular where a shader's glossy reflections are off (Input.hlsl's
+// _GlossyEnvironmentColor): URP sets it to the ambient probe's constant (L0) term times the
+// reflection intensity (1 here), which is the probe's mean over all directions: the Unity
+// prelude's Unity_LightmodelAmbient() (black without an environment).
+#define _GlossyEnvironmentColor Unity_LightmodelAmbient()
 // The probes' baked occlusion of the shadow mask: none here (every channel 1).
 #define unity_ProbesOcclusion float4(1.0, 1.0, 1.0, 1.0)
 // The mesh's rendering layers, as RenderingLayers.hlsl's GetMeshRenderingLayer (every layer).
@@ -201,19 +235,6 @@ struct InputData {
     float2 normalizedScreenSpaceUV;
     float4 shadowMask;
     float3x3 tangentToWorld;
-};
-
-struct SurfaceData {
-    float3 albedo;
-    float3 specular;
-    float metallic;
-    float smoothness;
-    float3 normalTS;
-    float3 emission;
-    float occlusion;
-    float alpha;
-    float clearCoatMask;
-    float clearCoatSmoothness;
 };
 
 struct BRDFData {
@@ -418,6 +439,9 @@ float4 UniversalFragmentBlinnPhong(InputData inputData, float3 diffuse, float4 s
 // The shadow mask a pixel's baked shadows come from: none here (no lightmaps), every channel 1.
 float4 CalculateShadowMask(InputData inputData) { return float4(1.0, 1.0, 1.0, 1.0); }
 
+// URP 12's LightingData and the functions that take it; left out where the shader declares a
+// struct LightingData of its own (written for an earlier URP: importers/unity/user_definitions.py).
+#ifndef PBRLAB_USER_DEFINES_LightingData
 // A pixel's light by kind, summed by CalculateLightingColor: the global illumination, the main
 // light, the additional lights and the vertex lights, times the albedo, plus the emission.
 struct LightingData {
@@ -451,6 +475,7 @@ float4 CalculateFinalColor(LightingData lightingData, float alpha) {
 float4 CalculateFinalColor(LightingData lightingData, float3 albedo, float alpha, float fogCoord) {
     return float4(CalculateLightingColor(lightingData, albedo), alpha);  // no fog here
 }
+#endif
 
 // The lit pixel: ambient and reflections, the main light, every additional light, emission.
 float4 UniversalFragmentPBR(InputData inputData, SurfaceData surfaceData) {

@@ -1,9 +1,24 @@
-// pbrlab stand-in for URP's ShaderLibrary/SurfaceData.hlsl: the SurfaceData struct, which pbrlab's
-// stand-in Lighting.hlsl defines (written for pbrlab from Unity's documentation of the names;
-// Unity's own file is under the Unity Companion License and is not copied).
+// pbrlab stand-in for URP's ShaderLibrary/SurfaceData.hlsl: the SurfaceData struct (a surface's
+// albedo, specular, metallic, smoothness, tangent-space normal, emission, occlusion, alpha and
+// clear coat), which URP's SurfaceInput.hlsl and Lighting.hlsl include, written for pbrlab from
+// Unity's documentation of the names (Unity's own file is under the Unity Companion License and
+// is not copied).
 #ifndef PBRLAB_URP_SURFACEDATA_HLSL
 #define PBRLAB_URP_SURFACEDATA_HLSL
 
-#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+
+struct SurfaceData {
+    float3 albedo;
+    float3 specular;
+    float metallic;
+    float smoothness;
+    float3 normalTS;
+    float3 emission;
+    float occlusion;
+    float alpha;
+    float clearCoatMask;
+    float clearCoatSmoothness;
+};
 
 #endif
