@@ -48,10 +48,9 @@ DENOISE = True
 # (render.environment_sun: every sunrise row closer, docs/fidelity.md); the environment's specular
 # light scaled by the sky the model itself leaves visible, from 16 shadow maps
 # (render.environment_visibility: median -18.4 -> -18.7 dB; 32 or 64 maps move the median by
-# 0.03 dB, no row by 0.4); a volume's path length measured along the view ray through its mesh
-# (render.volume_chord: what a path tracer traces, as KHR_materials_volume prefers)
+# 0.03 dB, no row by 0.4)
 PBRLAB_RENDER = {"antialias": 4, "antialias_filter": "blackman_harris", "supersample": 2, "environment_sun": True,
-                 "environment_visibility": 16, "volume_chord": True}
+                 "environment_visibility": 16}
 
 
 @dataclass
