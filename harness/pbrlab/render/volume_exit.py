@@ -59,13 +59,11 @@ CHORD_REFINE = 5
 
 _VERTEX = """#version 330 core
 in vec3 in_position;
-uniform mat4 u_model;
-uniform mat4 u_view_proj;
-out vec3 v_world;
+uniform mat4 u_model, u_view_proj;
+out vec3 v_world;  // the back face's world position, what the pass stores
 void main() {
-    vec4 world = u_model * vec4(in_position, 1.0);
-    v_world = world.xyz;
-    gl_Position = u_view_proj * world;
+    v_world = (u_model * vec4(in_position, 1.0)).xyz;
+    gl_Position = u_view_proj * vec4(v_world, 1.0);
 }
 """
 _FRAGMENT = """#version 330 core
@@ -127,9 +125,11 @@ class VolumeExit:
                 set_uniform(program, "u_id", self.ids[obj.material])
                 set_uniform(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
                 vao, buffers = meshes.vertex_array(ctx, program, obj)
-                vao.render(moderngl.TRIANGLES)
-                for resource in [vao, *buffers]:
-                    resource.release()
+                try:
+                    vao.render(moderngl.TRIANGLES)
+                finally:  # released if the draw fails too
+                    for resource in (vao, *buffers):
+                        resource.release()
         finally:
             ctx.disable(moderngl.CULL_FACE | moderngl.DEPTH_TEST)
             ctx.cull_face = "back"
