@@ -14,7 +14,8 @@ their sum), split by where the pixel lies:
 
 For each, its share of the squared error, its share of the pixels, and what the score would be
 with those pixels matched (the delta set to 0 there): how many dB that kind of pixel costs.
-Also the share of the squared error the worst 1 % of the pixels hold. With --png, a heat map of delta squared (white 0, black the row's largest) beside the two images.
+Also the share of the squared error the worst 1 % of the pixels hold. With --png, a heat map of
+delta squared (white 0, black the row's largest) beside the two images.
 A measurement: it prints figures and asserts nothing.
 
     python benchmarks/fidelity_error_map.py OUT_DIR KEY [KEY ...] [--png DIR] [--emissive]
@@ -77,7 +78,8 @@ def categories(pbrlab: np.ndarray, cycles: np.ndarray, dark: np.ndarray | None =
     edge = ndimage.binary_dilation(edges, iterations=EDGE_PX) & covered
     emissive = np.zeros(covered.shape, bool)
     if dark is not None:
-        emissive = (np.abs(pbrlab[..., :3].astype(int) - dark[..., :3].astype(int)) >= EMISSIVE_CODES).any(axis=-1) & covered & ~edge
+        lit = np.abs(pbrlab[..., :3].astype(int) - dark[..., :3].astype(int)) >= EMISSIVE_CODES
+        emissive = lit.any(axis=-1) & covered & ~edge
     bright = ((pbrlab[..., :3] >= HIGHLIGHT_CODE) | (cycles[..., :3] >= HIGHLIGHT_CODE)).any(axis=-1)
     highlight = bright & covered & ~edge & ~emissive
     rest = covered & ~edge & ~emissive & ~highlight

@@ -23,7 +23,8 @@ from pbrlab.foundation import images
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_KEYS = ("khronos-AttenuationTest@sunrise", "khronos-AttenuationTest@courtyard")
-RENDER_BLOCKS = {"thickness": benchmark.PBRLAB_RENDER, "volume_chord": {**benchmark.PBRLAB_RENDER, "volume_chord": True}}
+RENDER_BLOCKS = {"thickness": benchmark.PBRLAB_RENDER,
+                 "volume_chord": {**benchmark.PBRLAB_RENDER, "volume_chord": True}}
 
 
 def main() -> None:
