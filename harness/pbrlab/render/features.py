@@ -97,6 +97,7 @@ class SceneFeatures:
     sun_shadow: bool = False   # directional light 0 is the environment's sun, shadowed (render.environment_sun)
     sky_visibility: int = 0    # K shadow maps for the environment's visibility (render.environment_visibility)
     sky_visibility_diffuse: bool = False  # ... applied to the diffuse too (render.environment_visibility_diffuse)
+    volume_chord: bool = False  # a volume's path length from its back faces (render.volume_chord)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -142,6 +143,7 @@ def scene_features(scene) -> SceneFeatures:
         sun_shadow=scene.render.environment_sun,
         sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
         sky_visibility_diffuse=scene.render.environment_visibility_diffuse,
+        volume_chord=scene.render.volume_chord,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -170,6 +172,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
         defines["PBRLAB_SKY_VISIBILITY"] = s.sky_visibility
         if s.sky_visibility_diffuse:
             defines["PBRLAB_SKY_VISIBILITY_DIFFUSE"] = 1
+    if s.volume_chord and m.transmission:  # render/volume_exit.py
+        defines["PBRLAB_VOLUME_CHORD"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),

@@ -31,7 +31,7 @@ from ..scene import meshes, surface_layers
 from ..gpu import targets
 from ..gpu.cancellation import dies_on_signal
 from ..gpu.driver_time_limit import within_time_limit
-from . import transmission_copy
+from . import transmission_copy, volume_exit
 from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from ..foundation.errors import PbrlabError, SceneError
@@ -73,7 +73,8 @@ class _SceneResources:
     TRANSMISSION_COPY_UNIT = 3  # the scene's transmission copy (transmission_copy.py), when it has one
     SUN_SHADOW_UNIT = 5  # the environment's sun's shadow map (shadow_map.py), when render.environment_sun finds one
     SKY_SHADOW_UNIT = 6  # the environment's visibility maps (environment_visibility.py), render.environment_visibility
-    FIRST_MATERIAL_UNIT = 7
+    VOLUME_EXIT_UNIT = 7  # the volumes' exit points (volume_exit.py), render.volume_chord
+    FIRST_MATERIAL_UNIT = 8
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -85,6 +86,7 @@ class _SceneResources:
         self.cache = resource_cache.context_cache(ctx)
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
+        self.volume_exit = None  # set by render_scene once the volumes' back faces are drawn
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         # in the tier's layout (PBR_DFG_LUT_LAYOUT, pbr/shading/dispatch.glsl: LOW reads its own)
         layout = ref_shading.QUALITY_DFG_LUT_LAYOUT[scene.render.quality.upper()]
@@ -118,6 +120,8 @@ class _SceneResources:
             self.sky_visibility.bind(program, self.SKY_SHADOW_UNIT)
         if self.transmission_copy is not None:  # a program that does not transmit declares none of it
             self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
+        if self.volume_exit is not None:
+            self.volume_exit.bind(program, self.VOLUME_EXIT_UNIT, material.name)
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
@@ -352,6 +356,9 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         from ..scene.environment import environment_image
         resources.sky_visibility = environment_visibility.EnvironmentVisibility(
             ctx, scene, environment_image(scene.environment), scene.render.environment_visibility, sun)
+    behind = transmission_copy.seen_through(scene, plan)
+    if scene.render.volume_chord and behind is not None:  # the volumes' back faces, before the frame
+        resources.volume_exit = volume_exit.VolumeExit(ctx, scene, frame, plan)
     cube_holder = []
 
     def environment_cube():  # made once per render, only if a shader samples a cube
@@ -366,7 +373,6 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
     cube_ibo = ctx.buffer(_CUBE_TRIANGLES.tobytes())
     draw = _Draw(plan, surfaces, language, mesh_fragment, scene, frame, resources, cube_vbo, cube_ibo,
                  grab_holder)
-    behind = transmission_copy.seen_through(scene, plan)
     copy = None
     draw_calls = 0
     try:
@@ -406,6 +412,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             resources.sky_visibility.release()
         if resources.camera_textures is not None:
             resources.camera_textures.release()
+        if resources.volume_exit is not None:
+            resources.volume_exit.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,

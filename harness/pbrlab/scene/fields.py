@@ -251,6 +251,10 @@ RENDER = {
                                            "light too. A path tracer fills what is hidden with light bounced off and "
                                            "emitted by the scene, which this does not add (docs/fidelity.md).",
                                            default=False),
+    "volume_chord": Flag("A volume's path length (KHR_materials_volume: Beer-Lambert, where the transmitted ray "
+                         "leaves it) measured along the view ray through its mesh, from a pass of its back "
+                         "faces (render/volume_exit.py), instead of read from its thickness; a thickness of 0 "
+                         "stays thin-walled.", default=False),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",

@@ -228,6 +228,9 @@ class RenderSettings:
     environment_visibility: int = 0
     # ... applied to the environment's diffuse (and sheen) light too, not only its specular
     environment_visibility_diffuse: bool = False
+    # a volume's path length (KHR_materials_volume) measured along the view ray through its
+    # geometry instead of read from its thickness (render/volume_exit.py)
+    volume_chord: bool = False
 
 
 @dataclass
