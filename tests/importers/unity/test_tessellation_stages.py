@@ -199,3 +199,31 @@ def test_a_malformed_hull_is_named(tmp_path, change, named):
     data = corpus.scene_for(shader)
     with pytest.raises(PbrlabError, match=r"refused\.shader:\d+: .*" + named):
         render_scene(parse_scene(data, "t", tmp_path), language="glsl")
+
+
+PLAIN_VERTEX = """v2f plain(appdata_base v) {
+            v2f o;
+            o.pos = float4(%s * v.vertex.x / 0.3, -%s * v.vertex.z / 0.3, 0.0, 1.0);
+            o.colour = 1;
+            return o;
+        }
+        ControlPoint vert(""" % (S, S)
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_triangle_cw_keeps_the_front_faces(tmp_path, language):
+    """Under Cull Back a level-1 patch of [outputtopology("triangle_cw")] covers what the mesh
+    drawn without tessellation does (Unity's tessellation shaders draw their front faces so:
+    tessellation_syntax.ORDERS); control: triangle_ccw turns them to back faces (nothing drawn)."""
+    def coverage(name, text):
+        shader = tmp_path / f"{name}.shader"
+        shader.write_text(text.replace("Cull Off", "Cull Back"))
+        data = corpus.scene_for(shader)
+        data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+        return render_scene(parse_scene(data, "t", tmp_path), language=language).linear[..., 3] > 0
+    plain = _text("plain").replace("#pragma hull hull", "").replace("#pragma domain domain", "")
+    plain = plain.replace("#pragma vertex vert", "#pragma vertex plain").replace("ControlPoint vert(", PLAIN_VERTEX)
+    flat = coverage("plain", plain)
+    assert flat.mean() > 0.3
+    assert np.array_equal(coverage("cw", _text("cw", factor=1)), flat)
+    assert not coverage("ccw", _text("ccw", factor=1).replace("triangle_cw", "triangle_ccw")).any()

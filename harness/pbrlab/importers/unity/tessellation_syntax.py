@@ -31,8 +31,15 @@ SPACINGS = {"integer": "equal_spacing", "fractional_odd": "fractional_odd_spacin
             "fractional_even": "fractional_even_spacing"}
 # [domain(...)] -> (GLSL primitive mode, outer level count, inner level count, domain location size)
 DOMAINS = {"tri": ("triangles", 3, 1, 3), "quad": ("quads", 4, 2, 2)}
-# [outputtopology(...)] -> GLSL vertex order (glslang maps triangle_cw to SPIR-V's VertexOrderCw)
-ORDERS = {"triangle_cw": "cw", "triangle_ccw": "ccw"}
+# [outputtopology(...)] -> GLSL vertex order. Unity's tessellation shaders write triangle_cw with
+# Cull Back and the barycentric domain p = u p0 + v p1 + w p2, and draw their meshes' front faces:
+# triangle_cw keeps a patch's winding (D3D's front faces are clockwise). pbrlab draws Unity's
+# meshes with GL's counter-clockwise front faces, so triangle_cw is GL's ccw (which keeps the
+# patch's winding here; measured: a level-1 patch under Cull Back covers what the untessellated
+# triangle does, tests/importers/unity/test_tessellation_stages.py) and triangle_ccw is cw.
+# (glslang writes SPIR-V's VertexOrderCw for triangle_cw, but spirv-cross drops the order with
+# the spacing: the evaluation stage's layout is written here in both languages.)
+ORDERS = {"triangle_cw": "ccw", "triangle_ccw": "cw"}
 
 _ATTRIBUTE = re.compile(r"\[\s*(domain|outputcontrolpoints|outputtopology|partitioning|patchconstantfunc|"
                         r"maxtessfactor)\s*\(\s*([^()\]]*?)\s*\)\s*\]")
