@@ -24,9 +24,10 @@ from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, chec
                           matching_brace, resolve_included, respelled, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
-# Stages whose text is built apart from the vertex and fragment stages' (geometry_stage.py,
-# tessellation_stage.py): the program's engine-filled and written globals are not copied there.
-_APART = ("geometry", "hull", "domain")
+# A stage whose text is built apart from the vertex and fragment stages' (geometry_stage.py):
+# the program's engine-filled and written globals are not set there (tessellation_stage.py's
+# entries set them as the vertex and fragment entries do).
+_APART = ("geometry",)
 
 
 def _split_params(text: str) -> list[str]:

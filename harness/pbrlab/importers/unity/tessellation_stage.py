@@ -32,7 +32,9 @@ import dataclasses
 import re
 
 from .geometry_stage import _canonical, _fit, _glsl_name, _members, port_code_types, positional_add
+from .engine_inputs import fill_statements
 from .geometry_syntax import _POSITION
+from .written_globals import copy_statements
 from .source_text import UnityShaderError, component_count
 
 PATCH_VERTICES = 3  # each mesh triangle is one patch (tessellation_syntax refuses other sizes)
@@ -228,6 +230,13 @@ def glsl_evaluation(vf, main_light: str) -> tuple[str, str]:
     return "\n".join(decl) + "\n", "\n".join(["void main() {"] + body + ["}"]) + "\n"
 
 
+def _entry_start(vf, language: str) -> str:
+    """What each entry does before the program runs, as the vertex and fragment entries do: the
+    pass's light, the engine-filled globals, the written globals' copies (written_globals.py)."""
+    from .generate_pass import _main_light
+    return _main_light(language) + fill_statements(vf.engine_filled, language) + copy_statements(vf.written_globals)
+
+
 def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_text: str, display: str,
                               virtual=None):
     """(control stage, evaluation stage, the files they read), as ``shaders.Source``s.
@@ -236,7 +245,7 @@ def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_te
     from ...foundation.file_identity import include_closure
     from ...gpu import hlsl, shaders
     from . import generate
-    from .generate_pass import _main_light, varyings
+    from .generate_pass import varyings
     t = vf.tessellation
     if positional_add(defines):  # the light's falloff at each generated point: not wired here
         raise UnityShaderError(f"{t.where}: a ForwardAdd pass of a point or spot light with tessellation "
@@ -245,7 +254,7 @@ def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_te
     names = {kind: f"{vf.path.name} (generated {language} {kind} stage)" for kind in ("hull", "domain")}
     if language == "hlsl":
         text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
-                + program_text + "\n" + hlsl_entries(vf, _main_light("hlsl")))
+                + program_text + "\n" + hlsl_entries(vf, _entry_start(vf, "hlsl")))
         control = hlsl.cross_to_glsl(hlsl.compile_spirv(text, names["hull"], dirs, stage="tesc",
                                                         entry="pbrlab_hull_main"), version=400, plain_uniforms=True)
         evaluation = hlsl.cross_to_glsl(hlsl.compile_spirv(text, names["domain"], dirs, stage="tese",
@@ -256,8 +265,8 @@ def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_te
                 include_closure(text, [*dirs, hlsl.HLSL_ROOT]))
     head = head.replace("#version 330 core", "#version 330 core\n" + _EXTENSION, 1)
     stages = []
-    for kind, (decl, main) in (("hull", glsl_control(vf, _main_light("glsl"), dict(varyings(vf, t.where)))),
-                               ("domain", glsl_evaluation(vf, _main_light("glsl")))):
+    for kind, (decl, main) in (("hull", glsl_control(vf, _entry_start(vf, "glsl"), dict(varyings(vf, t.where)))),
+                               ("domain", glsl_evaluation(vf, _entry_start(vf, "glsl")))):
         text = head + "\n" + decl + "#line 1\n" + program_text + "\n" + main
         stages.append(shaders.expand(text, names[kind], include_dirs=dirs, virtual=virtual or {}))
     return stages[0], stages[1], [*stages[0].paths, *stages[1].paths]
