@@ -188,9 +188,6 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         given, missing = ("hull", "domain") if "hull" in pragmas else ("domain", "hull")
         raise UnityShaderError(f"{where(pragmas[given][1])}: #pragma {given} without #pragma {missing}: "
                                "tessellation needs both a hull and a domain function")
-    if "hull" in pragmas and "geometry" in pragmas:
-        raise UnityShaderError(f"{where(pragmas['geometry'][1])}: #pragma geometry with #pragma hull: pbrlab "
-                               "runs a geometry stage or tessellation stages, not both")
     if "vertex" not in pragmas or "fragment" not in pragmas:
         missing = "vertex" if "vertex" not in pragmas else "fragment"
         raise UnityShaderError(f"{where(0)}: a Pass program needs #pragma vertex and #pragma fragment "

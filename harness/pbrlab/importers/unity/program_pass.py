@@ -87,7 +87,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         stages, paths = {}, [vf.path]
         tessellated = vf.tessellation is not None  # #pragma hull / domain: tessellation_stage.py
         geometry = vf.geometry is not None or tessellated  # a #pragma geometry: geometry_stage.py
-        behind = tessellation_stage.fragment_pass if tessellated else geometry_stage.fragment_pass
+        behind = geometry_stage.fragment_pass if vf.geometry is not None else tessellation_stage.fragment_pass
         for stage in ("vertex", "fragment"):
             display = f"{vf.path.name} (generated {language} {stage} stage)"
             # behind a geometry (domain) stage the fragment reads its output struct's varyings
@@ -113,12 +113,15 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         if geometry:
             include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)
             shown = str(vf.path) if language == "hlsl" else vf.path.name
+            read = []
             if tessellated:
                 stages["tess_control"], stages["tess_evaluation"], read = tessellation_stage.build_tessellation_stages(
                     vf, language, defines, dirs, include, shown, virtual)
-            else:
-                stages["geometry"], read = geometry_stage.build_geometry_stage(
-                    vf, language, defines, dirs, include, shown, virtual)
+            if vf.geometry is not None:  # (behind tessellation stages it is given the domain's vertices)
+                stages["geometry"], more = geometry_stage.build_geometry_stage(
+                    tessellation_stage.fragment_pass(vf) if tessellated else vf, language, defines, dirs, include,
+                    shown, virtual)
+                read += more
             paths += read + (ported_sources(virtual) if virtual else [])
             program = geometry_stage.link_stages(ctx, stages)
         else:

@@ -31,7 +31,8 @@ from __future__ import annotations
 import dataclasses
 import re
 
-from .geometry_stage import _canonical, _fit, _glsl_name, _members, port_code_types, positional_add
+from .geometry_stage import (_canonical, _fit, _glsl_name, _members, glsl_stage_macros, port_code_types,
+                             positional_add)
 from .engine_inputs import fill_statements
 from .geometry_syntax import _POSITION
 from .written_globals import copy_statements
@@ -42,10 +43,17 @@ _EXTENSION = "#extension GL_ARB_tessellation_shader : require"
 
 
 def fragment_pass(vf):
-    """The pass as the fragment entry sees it: its varyings are the domain output struct's."""
+    """The pass as the stage after the domain stage sees it (the fragment entry, or a geometry
+    stage's, geometry_stage.py): its varyings are the domain output struct's."""
     t = vf.tessellation
     return dataclasses.replace(vf, vertex_return=t.domain_return, vertex_return_semantic="", vertex_params=[],
                                tessellation=None)
+
+
+def _domain_prefix(vf) -> str:
+    """The domain stage's outputs: the fragment stage's inputs, or a geometry stage's (which
+    reads the vertices it is given as ``pbrlab_vary_<SEMANTIC>``)."""
+    return "pbrlab_vary_" if vf.geometry is not None else "pbrlab_gvary_"
 
 
 def _flat(kind: str) -> str:
@@ -134,7 +142,7 @@ def hlsl_renamed(vf, control: str, evaluation: str) -> tuple[str, str]:
                        + [(f"_entryPointOutput_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs] + extras,
                        "hull", t.where)
     evaluation = _renamed(evaluation, [(f"pbrlab_patch_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs]
-                          + [(f"_entryPointOutput_{m}", f"pbrlab_gvary_{s}") for _, m, s in finals], "domain", t.where)
+                          + [(f"_entryPointOutput_{m}", _domain_prefix(vf) + s) for _, m, s in finals], "domain", t.where)
     primitive = {"tri": "triangles", "quad": "quads"}[t.domain]
     evaluation = re.sub(r"^layout\(" + primitive + r"\) in;", f"layout({primitive}, {t.spacing}, {t.order}) in;",
                         evaluation, count=1, flags=re.M)
@@ -213,7 +221,7 @@ def glsl_evaluation(vf, main_light: str) -> tuple[str, str]:
     decl = [f"layout({primitive}, {t.spacing}, {t.order}) in;"]
     decl += _declare(vf, t.output_type, "in", "pbrlab_tvary_", "[]")
     decl += [f"patch in {port_code_types(kind)} {var};" for kind, _, var in _extras(vf)]
-    decl += _declare(vf, t.domain_return, "out", "pbrlab_gvary_", "")
+    decl += _declare(vf, t.domain_return, "out", _domain_prefix(vf), "")
     body = [main_light, f"    {t.output_type} pbrlab_patch[{t.output_points}];"]
     sources = {s: f"pbrlab_tvary_{s}" for _, _, s in _varying_members(vf, t.output_type, t.where)}
     for k in range(t.output_points):
@@ -226,7 +234,7 @@ def glsl_evaluation(vf, main_light: str) -> tuple[str, str]:
               "location": "gl_TessCoord" if t.dimension == 3 else "gl_TessCoord.xy"}
     body.append(f"    {t.domain_return} pbrlab_out = {t.domain_function}("
                 f"{', '.join(values[r] for r, _ in t.domain_params)});")
-    body += _write(vf, t.domain_return, "pbrlab_out", "pbrlab_gvary_", "gl_Position")
+    body += _write(vf, t.domain_return, "pbrlab_out", _domain_prefix(vf), "gl_Position")
     return "\n".join(decl) + "\n", "\n".join(["void main() {"] + body + ["}"]) + "\n"
 
 
@@ -267,6 +275,7 @@ def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_te
     stages = []
     for kind, (decl, main) in (("hull", glsl_control(vf, _entry_start(vf, "glsl"), dict(varyings(vf, t.where)))),
                                ("domain", glsl_evaluation(vf, _entry_start(vf, "glsl")))):
-        text = head + "\n" + decl + "#line 1\n" + program_text + "\n" + main
+        # (a geometry function of the program is dead code here: its stream macros are nothing)
+        text = head + "\n" + decl + glsl_stage_macros(vf, False) + "#line 1\n" + program_text + "\n" + main
         stages.append(shaders.expand(text, names[kind], include_dirs=dirs, virtual=virtual or {}))
     return stages[0], stages[1], [*stages[0].paths, *stages[1].paths]

@@ -41,7 +41,9 @@ DOMAINS = {"tri": ("triangles", 3, 1, 3), "quad": ("quads", 4, 2, 2)}
 # the spacing: the evaluation stage's layout is written here in both languages.)
 ORDERS = {"triangle_cw": "ccw", "triangle_ccw": "cw"}
 
-_ATTRIBUTE = re.compile(r"\[\s*(domain|outputcontrolpoints|outputtopology|partitioning|patchconstantfunc|"
+# (UNITY_domain etc.: Unity's HLSLSupport.cginc names for the same attributes, written by shaders
+# that define them as the plain ones)
+_ATTRIBUTE = re.compile(r"\[\s*(?:UNITY_)?(domain|outputcontrolpoints|outputtopology|partitioning|patchconstantfunc|"
                         r"maxtessfactor)\s*\(\s*([^()\]]*?)\s*\)\s*\]")
 _PATCH = re.compile(r"\b(?:const\s+)?(InputPatch|OutputPatch)\s*<\s*(" + IDENT + r")\s*,\s*(\w+)\s*>\s*(" + IDENT + r")")
 
