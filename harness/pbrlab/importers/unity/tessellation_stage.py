@@ -195,13 +195,9 @@ def glsl_control(vf, main_light: str, vertex_outputs: dict) -> tuple[str, str]:
     body = [main_light, f"    {t.control_type} pbrlab_patch[{t.patch_size}];"]
     for k in range(t.patch_size):
         body += _fill(vf, t.control_type, f"pbrlab_patch[{k}]", {s: f"pbrlab_vary_{s}" for s in vertex_outputs}, k)
-    values = {"patch": "pbrlab_patch"}
-    for role, kind in t.hull_params + t.constant_params:
-        if role != "patch":
-            values[role] = f"{kind}({'gl_InvocationID' if role == 'control_point_id' else 'gl_PrimitiveID'})"
-    call = lambda params: ", ".join(values[r] if r == "patch" else
-                                    f"{k}({'gl_InvocationID' if r == 'control_point_id' else 'gl_PrimitiveID'})"
-                                    for r, k in params)
+    ids = {"control_point_id": "gl_InvocationID", "primitive_id": "gl_PrimitiveID"}
+    # (an id as the parameter declares it: int or uint)
+    call = lambda params: ", ".join("pbrlab_patch" if r == "patch" else f"{k}({ids[r]})" for r, k in params)
     body.append(f"    {t.output_type} pbrlab_point = {t.hull}({call(t.hull_params)});")
     body += _write(vf, t.output_type, "pbrlab_point", "pbrlab_tvary_", "gl_out[gl_InvocationID].gl_Position",
                    "[gl_InvocationID]")

@@ -22,6 +22,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from .geometry_syntax import _split_params  # (a parameter list split at its top-level commas)
 from .source_text import IDENT, UnityShaderError
 
 # D3D11's partitioning modes and the GLSL spacing each one is (GLSL 4.00 section 4.3.8.1 /
@@ -84,19 +85,6 @@ def spell_for_glsl(text: str) -> str:
         return text
     text = _ATTRIBUTE.sub(lambda m: _blank(m.group(0)), text)
     return _PATCH.sub(lambda m: f"{m.group(2)} {m.group(4)}[{m.group(3)}]", text)
-
-
-def _split_params(text: str) -> list[str]:
-    out, depth, cur = [], 0, []
-    for ch in text:
-        if ch == "," and depth == 0:
-            out.append("".join(cur).strip())
-            cur = []
-            continue
-        depth += {"(": 1, ")": -1, "<": 1, ">": -1}.get(ch, 0)
-        cur.append(ch)
-    out.append("".join(cur).strip())
-    return [p for p in out if p and p != "void"]
 
 
 def _function(masked: str, name: str, where: str, pragma: str):
