@@ -227,3 +227,24 @@ def test_triangle_cw_keeps_the_front_faces(tmp_path, language):
     assert flat.mean() > 0.3
     assert np.array_equal(coverage("cw", _text("cw", factor=1)), flat)
     assert not coverage("ccw", _text("ccw", factor=1).replace("triangle_cw", "triangle_ccw")).any()
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_the_patch_constant_struct_reaches_the_domain(tmp_path, language):
+    """A member of the patch-constant struct besides the levels (an array of a custom semantic)
+    is the domain function's: the colour it writes, exactly (a patch varying, not interpolated);
+    control: the colour of the uv interpolation (the test shader's own) differs."""
+    text = _text("tint").replace("float inside : SV_InsideTessFactor; }", "float inside : SV_InsideTessFactor; "
+                                 "float3 tint[2] : TINT; }")
+    text = text.replace("f.inside = 4.0;", "f.inside = 4.0; f.tint[0] = 0; f.tint[1] = float3(0.25, 0.5, 0.75);")
+    text = text.replace("o.colour = float3(", "o.colour = f.tint[1] + 0 * float3(")
+    shader = tmp_path / "tint.shader"
+    shader.write_text(text)
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    drawn = image[..., 3] > 0
+    assert drawn.mean() > 0.3
+    assert np.array_equal(image[drawn][:, :3], np.tile([0.25, 0.5, 0.75], (int(drawn.sum()), 1)))
+    plain = _render(tmp_path, language, "untinted")
+    assert not np.array_equal(plain[drawn][:, :3], image[drawn][:, :3])

@@ -137,12 +137,17 @@ def hlsl_renamed(vf, control: str, evaluation: str) -> tuple[str, str]:
     cps = _varying_members(vf, t.control_type, t.where)
     outs = _varying_members(vf, t.output_type, t.where)
     finals = _varying_members(vf, t.domain_return, t.where)
-    extras = [(f"@patchConstantOutput_{m}", v) for _, m, v in _extras(vf)]
+    # the patch-constant struct's other members: spirv-cross's _patchConstantOutput_<member> (an
+    # array's element <member>_<i>_) in the control stage, pbrlab_factors_<member> in the evaluation
+    # stage -> pbrlab_patch_<member> (glsl_control / glsl_evaluation spell them so)
+    extras = [(f"_patchConstantOutput_{v[len('pbrlab_patch_'):]}", v) for _, _, v in _extras(vf)]
+    factors = [(f"pbrlab_factors_{v[len('pbrlab_patch_'):]}", v) for _, _, v in _extras(vf)]
     control = _renamed(control, [(f"pbrlab_patch_{m}", f"pbrlab_vary_{s}") for _, m, s in cps]
                        + [(f"_entryPointOutput_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs] + extras,
                        "hull", t.where)
     evaluation = _renamed(evaluation, [(f"pbrlab_patch_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs]
-                          + [(f"_entryPointOutput_{m}", _domain_prefix(vf) + s) for _, m, s in finals], "domain", t.where)
+                          + [(f"_entryPointOutput_{m}", _domain_prefix(vf) + s) for _, m, s in finals] + factors,
+                          "domain", t.where)
     primitive = {"tri": "triangles", "quad": "quads"}[t.domain]
     evaluation = re.sub(r"^layout\(" + primitive + r"\) in;", f"layout({primitive}, {t.spacing}, {t.order}) in;",
                         evaluation, count=1, flags=re.M)
