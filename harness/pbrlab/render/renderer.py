@@ -570,9 +570,13 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)
     topology = "triangles" if obj.geometry is None else obj.geometry.topology
+    mode = _TOPOLOGY[topology]
+    patch = (getattr(program, "extra", None) or {}).get("patch_vertices")
+    if patch and topology == "triangles":  # a program with tessellation stages: each triangle a patch
+        ctx.patch_vertices, mode = patch, moderngl.PATCHES
     # llvmpipe compiles a program's code at its first draw
     with dies_on_signal(), within_time_limit(f"drawing {obj.where or 'an object'} (material {material.name!r})"):
-        vao.render(_TOPOLOGY[topology], instances=1 if instances is None else len(instances))
+        vao.render(mode, instances=1 if instances is None else len(instances))
     for resource in [vao, *buffers]:
         resource.release()
 

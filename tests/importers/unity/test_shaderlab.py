@@ -205,7 +205,10 @@ def test_outside_a_unity_project_a_shader_elsewhere_is_not_found(tmp_path, text,
     ('Shader "x" { Properties { _C ("C", Color) = (1e999, 0, 0, 1) } SubShader { } }', "not a finite float32"),
     ('Shader "x" { Properties { _A ("A", Float) = 1 junk } SubShader { } }', "cannot read this Properties text"),
     ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma hull h\n#pragma fragment f\nENDCG } } }',
-     "#pragma hull: a hull (tessellation) shader is not supported"),
+     "#pragma hull without #pragma domain: tessellation needs both a hull and a domain function"),
+    ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma hull h\n#pragma domain d\n'
+     '#pragma fragment f\nfloat4 v(float4 p : POSITION) : SV_POSITION { return p; }\n'
+     'float4 f() : SV_Target { return 1; }\nENDCG } } }', "#pragma hull h: no function h(...) is defined"),
     ('Shader "x" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma geometry g\n#pragma fragment f\n'
      'float4 v(float4 p : POSITION) : SV_POSITION { return p; }\nfloat4 f() : SV_Target { return 1; }\nENDCG } } }',
      "#pragma geometry g: no function void g(...) is defined"),

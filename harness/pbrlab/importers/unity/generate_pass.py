@@ -171,7 +171,8 @@ def _outputs(vf, where: str) -> list[tuple]:
             out += [(canonical(s), t, f"{name}.{n}") for t, n, s in _struct(vf, kind) if s]
         elif semantic:
             out.append((canonical(semantic), kind, name))
-    if not any(s in _POSITION for s, _, _ in out) and vf.geometry is None:  # a geometry stage may place them
+    if not any(s in _POSITION for s, _, _ in out) and vf.geometry is None and vf.tessellation is None:
+        # (a geometry or domain stage may place them)
         raise UnityShaderError(f"{where}: {vf.vertex}() writes no SV_POSITION: the vertex stage must "
                                "give the clip-space position")
     return out

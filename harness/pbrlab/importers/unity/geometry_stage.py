@@ -257,8 +257,14 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
 
 
 def link(ctx, vertex, geometry, fragment):
-    """``shaders.build_program`` with a geometry stage: the same limits and compile guards,
-    errors at the original file and line of the stage that failed."""
+    """``shaders.build_program`` with a geometry stage (link_stages)."""
+    return link_stages(ctx, {"vertex": vertex, "geometry": geometry, "fragment": fragment})
+
+
+def link_stages(ctx, stages: dict):
+    """``shaders.build_program`` with a geometry stage or tessellation stages (``stages``:
+    moderngl's shader keywords without ``_shader``): the same limits and compile guards, errors
+    at the original file and line of the stage that failed."""
     import warnings
 
     import moderngl
@@ -268,7 +274,6 @@ def link(ctx, vertex, geometry, fragment):
     from ...gpu.cancellation import dies_on_signal
     from ...gpu.compile_messages import compile_failure
     from ...gpu.driver_time_limit import within_time_limit
-    stages = {"vertex": vertex, "geometry": geometry, "fragment": fragment}
     for stage in stages.values():
         shaders.check_limits(stage)
     if "llvmpipe" in str(ctx.info.get("GL_RENDERER", "")).lower():
@@ -276,12 +281,12 @@ def link(ctx, vertex, geometry, fragment):
             for message in shaders.loop_limit_warnings(stage):
                 warnings.warn(message, LoopLimitWarning, stacklevel=2)
     try:
-        with dies_on_signal(), within_time_limit(f"compiling {shaders.program_label(vertex, fragment)}"):
-            return ctx.program(vertex_shader=vertex.text, geometry_shader=geometry.text,
-                               fragment_shader=fragment.text)
+        label = shaders.program_label(stages["vertex"], stages["fragment"])
+        with dies_on_signal(), within_time_limit(f"compiling {label}"):
+            return ctx.program(**{f"{name}_shader": source.text for name, source in stages.items()})
     except moderngl.Error as exc:
         log = str(exc)
-        name = next((n for n in ("geometry", "fragment") if f"{n}_shader" in log), "vertex")
+        name = next((n for n in stages if n != "vertex" and f"{n}_shader" in log), "vertex")
         messages = "\n".join(line for line in stages[name].map_messages(log).splitlines()
-                              if line.strip() not in ("fragment_shader", "vertex_shader", "geometry_shader"))
+                              if line.strip() not in {f"{n}_shader" for n in stages})
         raise ShaderCompileError(compile_failure(f"{name} shader failed to compile", messages)) from None

@@ -181,6 +181,7 @@ class VertexFragmentPass:
     structs: dict                   # name -> ShaderStruct (the program's own)
     declared: frozenset = frozenset()
     geometry: object = None         # geometry_syntax.GeometryFunction of a #pragma geometry
+    tessellation: object = None     # tessellation_syntax.Tessellation of #pragma hull / domain
     state: RenderState = field(default_factory=RenderState)
     language: str = "hlsl"
     properties: dict = field(default_factory=dict)       # the file's, shared by its passes

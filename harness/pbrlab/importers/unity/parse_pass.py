@@ -12,6 +12,7 @@ from pathlib import Path
 
 from . import model as M
 from .geometry_syntax import parse_geometry
+from .tessellation_syntax import parse_tessellation
 from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
@@ -23,9 +24,10 @@ from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, chec
                           matching_brace, resolve_included, respelled, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
-# Stages pbrlab does not run, named in the refusal.
-UNSUPPORTED_STAGES = {"hull": "a hull (tessellation) shader",
-                      "domain": "a domain (tessellation) shader"}
+# A stage whose text is built apart from the vertex and fragment stages' (geometry_stage.py):
+# the program's engine-filled and written globals are not set there (tessellation_stage.py's
+# entries set them as the vertex and fragment entries do).
+_APART = ("geometry",)
 
 
 def _split_params(text: str) -> list[str]:
@@ -162,14 +164,15 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     # a global only Unity's engine sets: filled from the scene where the program declares it
     # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused
     drawn_text, filled = fill_declared(program, everything[:len(masked)], everything[len(masked):])
-    if filled and "geometry" not in {m.group(1) for m in _PRAGMA.finditer(masked)}:
+    staged = {m.group(1) for m in _PRAGMA.finditer(masked)}
+    if filled and not staged & set(_APART):
         program = drawn_text
     else:
         filled = ()
     check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
     written = ()
-    if "geometry" not in {m.group(1) for m in _PRAGMA.finditer(masked)}:  # globals the program writes
+    if not staged & set(_APART):  # globals the program writes
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
 
     def where(index: int) -> str:
@@ -181,10 +184,10 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     if "surface" in pragmas:
         raise UnityShaderError(f"{where(pragmas['surface'][1])}: #pragma surface inside a Pass: Unity "
                                "allows surface programs only directly in a SubShader")
-    for stage, words in UNSUPPORTED_STAGES.items():
-        if stage in pragmas:
-            raise UnityShaderError(f"{where(pragmas[stage][1])}: #pragma {stage}: {words} is not supported "
-                                   "by pbrlab (vertex, geometry and fragment stages only)")
+    if ("hull" in pragmas) != ("domain" in pragmas):
+        given, missing = ("hull", "domain") if "hull" in pragmas else ("domain", "hull")
+        raise UnityShaderError(f"{where(pragmas[given][1])}: #pragma {given} without #pragma {missing}: "
+                               "tessellation needs both a hull and a domain function")
     if "vertex" not in pragmas or "fragment" not in pragmas:
         missing = "vertex" if "vertex" not in pragmas else "fragment"
         raise UnityShaderError(f"{where(0)}: a Pass program needs #pragma vertex and #pragma fragment "
@@ -205,13 +208,16 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
                 if "geometry" in pragmas else None)
+    tessellation = (parse_tessellation(everything, pragmas["hull"][0][0], pragmas["domain"][0][0], structs, where,
+                                       (pragmas["hull"][1], pragmas["domain"][1])) if "hull" in pragmas else None)
     vf = M.VertexFragmentPass(
         path=path, name=block.name, light_mode=block.light_mode or "Always",
         program=program, program_line=first_line, vertex=vertex, fragment=fragment,
         vertex_params=found["vertex"][1], vertex_return=found["vertex"][0],
         vertex_return_semantic=found["vertex"][2],
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
-        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, engine_filled=filled,
+        fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, tessellation=tessellation,
+        engine_filled=filled,
         written_globals=written)
     vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
                                        r")\s*(?:=[^;]*)?;", top_level(everything), re.M))

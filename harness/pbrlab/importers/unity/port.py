@@ -38,6 +38,7 @@ from pathlib import Path
 from . import cg_spellings, cg_types, multisampled_textures
 from . import model as M
 from .geometry_syntax import spell_for_glsl
+from .tessellation_syntax import spell_for_glsl as spell_tessellation
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, call_arguments, included_text
 from .texture_methods import spelled_texture_methods
@@ -53,8 +54,8 @@ _SEMANTIC = re.compile(r"([\w\]])\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLO
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
-# ``case X : return;`` is not a declaration).
-_DECLARED_SEMANTIC = re.compile(r"\b((?!case\b)[A-Za-z_]\w*\s+[A-Za-z_]\w*)\s*:\s*"
+# ``case X : return;`` is not a declaration); an array member too (``float3 v[4] : TANUCORNER;``).
+_DECLARED_SEMANTIC = re.compile(r"\b((?!case\b)[A-Za-z_]\w*\s+[A-Za-z_]\w*(?:\s*\[\s*\w+\s*\])?)\s*:\s*"
                                 r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=[;,)])")
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
@@ -283,9 +284,9 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
-    def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry syntax
+    def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
         text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
-        return _drop_member_interpolation(spelled_texture_methods(spell_for_glsl(cg_spellings.respelled(text))))
+        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(cg_spellings.respelled(text)))))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations
     if folder is not None:

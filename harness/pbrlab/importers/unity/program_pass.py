@@ -19,7 +19,7 @@ from pathlib import Path
 from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
-from . import generate, generate_pass, geometry_stage, glslprogram
+from . import generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -85,11 +85,13 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             program, paths = glslprogram.build_glsl_program(ctx, vf, defines, blended, dirs)
             return indexed(program, vf.path), paths
         stages, paths = {}, [vf.path]
-        geometry = vf.geometry is not None  # a #pragma geometry: geometry_stage.py
+        tessellated = vf.tessellation is not None  # #pragma hull / domain: tessellation_stage.py
+        geometry = vf.geometry is not None or tessellated  # a #pragma geometry: geometry_stage.py
+        behind = geometry_stage.fragment_pass if vf.geometry is not None else tessellation_stage.fragment_pass
         for stage in ("vertex", "fragment"):
             display = f"{vf.path.name} (generated {language} {stage} stage)"
-            # behind a geometry stage the fragment reads the geometry output struct's varyings
-            stage_vf = geometry_stage.fragment_pass(vf) if geometry and stage == "fragment" else vf
+            # behind a geometry (domain) stage the fragment reads its output struct's varyings
+            stage_vf = behind(vf) if geometry and stage == "fragment" else vf
             if language == "hlsl":
                 text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
                 glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
@@ -110,13 +112,23 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 paths += stages[stage].paths + ported_sources(virtual)
         if geometry:
             include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)
-            stages["geometry"], read = geometry_stage.build_geometry_stage(
-                vf, language, defines, dirs, include, str(vf.path) if language == "hlsl" else vf.path.name, virtual)
+            shown = str(vf.path) if language == "hlsl" else vf.path.name
+            read = []
+            if tessellated:
+                stages["tess_control"], stages["tess_evaluation"], read = tessellation_stage.build_tessellation_stages(
+                    vf, language, defines, dirs, include, shown, virtual)
+            if vf.geometry is not None:  # (behind tessellation stages it is given the domain's vertices)
+                stages["geometry"], more = geometry_stage.build_geometry_stage(
+                    tessellation_stage.fragment_pass(vf) if tessellated else vf, language, defines, dirs, include,
+                    shown, virtual)
+                read += more
             paths += read + (ported_sources(virtual) if virtual else [])
-            program = geometry_stage.link(ctx, stages["vertex"], stages["geometry"], stages["fragment"])
+            program = geometry_stage.link_stages(ctx, stages)
         else:
             program = shaders.build_program(ctx, stages["vertex"], stages["fragment"])
         program = indexed(program, vf.path)
+        if tessellated:  # drawn as patches (renderer._draw_mesh)
+            program.extra["patch_vertices"] = tessellation_stage.PATCH_VERTICES
         return program, paths
 
     try:
