@@ -32,6 +32,8 @@ import numpy as np
 import pytest
 
 from pbrlab.checking import unity_corpus as corpus
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.unity import cg_types, program
 from pbrlab.importers.loader import parse_scene
 from pbrlab.importers.unity.argument_truncation import truncated_arguments
 from pbrlab.importers.unity.conditionals import _evaluate
@@ -212,6 +214,21 @@ def test_textmeshpro_constructs_change_the_pixel_as_unity_does(tmp_path, languag
         got, want = _render(tmp_path, language, **case)
         assert np.abs(got - want).max() <= EXACT, case
         assert np.abs(got - base).max() > 0.05, case
+
+
+@pytest.mark.parametrize("owner, name, replacement, language, refusal", [
+    (cg_types._Parser, "bool_of_unknown", lambda self, e, target: None, "glsl",
+     "cannot be assigned to variable of type bool"),
+    (cg_types._Parser, "comma_after_directive", lambda self, comma: None, "glsl", "syntax error"),
+    (program, "truncated_arguments", lambda text, srp=False: text, "hlsl", "'UnpackUV' : no matching overloaded"),
+])
+def test_without_each_mend_the_compiler_refuses_as_before(tmp_path, monkeypatch, owner, name, replacement,
+                                                         language, refusal):
+    """Control: each mend undone, the shader is refused with the compiler's error the TextMesh
+    Pro shaders met (so the renders above are the mends' doing)."""
+    monkeypatch.setattr(owner, name, replacement)
+    with pytest.raises(PbrlabError, match=refusal):
+        _render(tmp_path, language)
 
 
 def test_bitwise_or_in_a_condition_is_evaluated():
