@@ -853,6 +853,7 @@ class _Parser:
                 else:
                     init = self.assignment()
                     self.coerce(init, vt)
+                    self.bool_of_unknown(init, vt)
                     names = re.findall(r"\b[A-Za-z_]\w*\b", self.text[init.s:init.e])
                     if const_word is not None and any(builtin_type(w) is None for w in names):
                         self.delete_word(const_word)
@@ -878,6 +879,8 @@ class _Parser:
                 break
             if self.at("}"):  # HLSL's trailing comma, which a GLSL constructor does not take
                 self.edits.replace(comma.s, comma.e, "")
+            else:
+                self.comma_after_directive(comma)
         close = self.expect("}")
         if t.array:
             size = str(t.array) if t.array > 0 else str(len(items))
@@ -892,6 +895,16 @@ class _Parser:
         else:
             self.fail("initialiser")
         self.edits.replace(close.s, close.e, ")")
+
+    def comma_after_directive(self, comma):
+        """An initialiser's comma before a preprocessor line (TextMesh Pro: ``{a, b,`` then
+        ``#if X`` ``c, d,`` ``#endif`` ``};``): where the lines after it are compiled out, HLSL
+        reads a trailing comma, which a GLSL constructor refuses. The comma moves to the start
+        of the line after the last directive before the next item, so it goes with that item."""
+        between = [e for s, e in self.directives if comma.e <= s and e <= self.peek().s]
+        if between and self.text.startswith("\n", between[-1]):
+            self.edits.replace(comma.s, comma.e, "")
+            self.edits.close(between[-1] + 1, ",")
 
     # --- statements
     def block(self, new_scope=True):
@@ -1058,6 +1071,8 @@ class _Parser:
             self.next()
             self.edits.drop(lhs.row_index)  # a matrix row written: left as is (known gap)
             rhs = self.assignment()
+            if t.text == "=":
+                self.bool_of_unknown(rhs, lhs.t)
             if lhs.t is not None and rhs.t is not None:
                 if t.text == "=":
                     self.coerce(rhs, lhs.t)
@@ -1457,6 +1472,16 @@ class _Parser:
                 self.truncate(e, target.dim)
             else:
                 self.wrap(e, target.cg())
+
+
+    def bool_of_unknown(self, e: E, target: Type | None):
+        """A value of a type this pass cannot infer (a global another include declares:
+        TextMesh Pro's ``bool raisedBevel = step(1, fmod(_ShaderFlags, 2));``) given to a scalar
+        bool: ``bool(e)``, HLSL's conversion (nonzero is true; a vector's first component, as
+        HLSL's truncation takes it), which GLSL's constructor spells for a bool, a number or a
+        vector alike, so it is right whatever ``e``'s type turns out to be."""
+        if e.t is None and target == Type("bool") and not self.decl_only:
+            self.wrap(e, "bool")
 
 
 def _base(a: Type, b: Type) -> str:

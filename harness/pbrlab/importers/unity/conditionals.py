@@ -36,8 +36,15 @@ def _evaluate(condition: str, defines: dict):
                   lambda m: "1" if (m.group(1) or m.group(2)) in defines else "0", expr)
     expr = re.sub(r"\b[A-Za-z_]\w*\b", lambda m: str(defines.get(m.group(0), 0)), expr)
     expr = expr.replace("&&", " and ").replace("||", " or ")
+    # C's bitwise | & ^ (TextMesh Pro's ``#if (UNDERLAY_ON | UNDERLAY_INNER)``): Python takes
+    # them as C does beside and/or, but binds them tighter than a comparison and looser than a
+    # unary ``not`` (C: the other way round both), so with either of those beside them the
+    # condition is beyond this reader
+    bitwise = re.search(r"[|&^]", expr)
+    if bitwise and re.search(r"[<>=]|!(?!=)", expr):
+        return None
     expr = re.sub(r"!(?!=)", " not ", expr)
-    if not re.fullmatch(r"[\d\s()<>=!+\-*/andort]*", expr):
+    if not re.fullmatch(r"[\d\s()<>=!+\-*/|&^andort]*", expr):
         return None
     try:
         return bool(eval(expr, {"__builtins__": {}}, {}))  # digits, comparisons, and/or/not only

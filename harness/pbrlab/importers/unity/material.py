@@ -293,7 +293,7 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     ``pipeline`` (parse.BUILTIN by default) picks the SubShaders and passes that run, and
     ``source_type`` (UnitySource by default) is the material source made of the shader: the
     Universal Render Pipeline's importer (importers/urp/) passes its own."""
-    from . import BUILTIN, UnityShaderError, load_shader, resolve_properties
+    from . import BUILTIN, UnityShaderError, load_shader, read_shader, resolve_properties
     lightmap = lightmaps.read_lightmap(r, base)
     if lightmap is not None and pipeline not in (None, BUILTIN):
         r.fail(f"a supplied lightmap is read for Unity's built-in render pipeline only, not {pipeline.name}",
@@ -302,16 +302,12 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     if dynamic is not None and pipeline not in (None, BUILTIN):
         r.fail(f"a supplied realtime GI lightmap is read for Unity's built-in render pipeline only, not "
                f"{pipeline.name}", "dynamic_lightmap")
+    drawn = dynamic_lightmaps.realtime_lit(lightmaps.lightmapped(BUILTIN, lightmap) if lightmap else pipeline or BUILTIN,
+                                           dynamic)
     try:
-        shader = load_shader(m.surface, dynamic_lightmaps.realtime_lit(
-            lightmaps.lightmapped(BUILTIN, lightmap) if lightmap else pipeline or BUILTIN, dynamic))
+        shader = load_shader(m.surface, drawn)
     except UnityShaderError as exc:
         r.fail(str(exc), "surface")
-    m.source = (source_type or UnitySource)(shader)
-    if lightmap is not None:
-        m.source.lightmap = lightmap
-    if dynamic is not None:
-        m.source.dynamic_lightmap = dynamic
     for key in _NOT_FOR_UNITY + TRANSMISSION_KEYS:
         if r.has(key):
             r.fail(f"a Unity surface shader's material takes its values from `properties` "
@@ -331,6 +327,17 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
         if refused:
             r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
+    if m.keywords:  # the variant the material draws: the struct members and functions its
+        # keywords' #if branches hold (parse_pass reads a program's conditionals for its model)
+        try:
+            shader = read_shader(m.surface, dataclasses.replace(drawn, keywords=drawn.keywords + m.keywords))
+        except UnityShaderError as exc:
+            r.fail(str(exc), "surface")
+    m.source = (source_type or UnitySource)(shader)
+    if lightmap is not None:
+        m.source.lightmap = lightmap
+    if dynamic is not None:
+        m.source.dynamic_lightmap = dynamic
     if pipeline in (None, BUILTIN):  # (URP's package stand-ins have their own lightmap macros)
         lightmaps.check_reads(shader, lightmap, r, m.keywords)
         dynamic_lightmaps.check_reads(shader, dynamic, r, m.keywords)

@@ -33,6 +33,7 @@ from ...gpu.programs import set_uniform as _set
 from . import cg_spellings, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
+from .argument_truncation import truncated_arguments
 from .properties import TextureValue
 from .source_text import CGINC, blank_comments, included_files, included_text, resolve_included, top_level
 
@@ -156,8 +157,10 @@ def ported_sources(virtual: dict) -> list[Path]:
 
 def hlsl_program(shader) -> str:
     """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
-    spellings glslang takes (cg_spellings)."""
-    return cg_spellings.respelled(shaders.strip_bom(shader.program))
+    spellings glslang takes (cg_spellings), its own functions' arguments truncated where FXC
+    truncates them (argument_truncation)."""
+    return truncated_arguments(cg_spellings.respelled(shaders.strip_bom(shader.program)),
+                               getattr(shader, "srp", False))
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):

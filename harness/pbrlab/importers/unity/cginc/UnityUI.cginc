@@ -2,10 +2,14 @@
 // UI-Lit-*, UI-Unlit-*).
 //
 // Provides: UnityGet2DClipping(position, clipRect), UnityGetUIDiffuseColor(uv, mainTex,
-//   alphaTex, textureSampleAdd).
-// Unity's file: the same two functions (UnityUI.cginc, Unity 2019.4 built-in shaders), read for
-//   their behaviour and written here anew.
-// Differences: none in the maths. In Unity the canvas enables UNITY_UI_CLIP_RECT (a
+//   alphaTex, textureSampleAdd), UIGammaToLinear(value).
+// Unity's file: the first two functions (UnityUI.cginc, Unity 2019.4 built-in shaders), read for
+//   their behaviour and written here anew; UIGammaToLinear is Unity 2020's addition (TextMesh
+//   Pro's shaders of that version call it).
+// Differences: none in the maths of the first two. UIGammaToLinear here is the sRGB decode
+//   itself (IEC 61966-2-1, UnityCG's GammaToLinearSpaceExact per channel), where Unity fits the
+//   same curve with a polynomial of its own (its coefficients are not reproduced here).
+//   In Unity the canvas enables UNITY_UI_CLIP_RECT (a
 //   RectMask2D) and sets _ClipRect; in pbrlab a material enables the keyword itself
 //   ("keywords": ["UNITY_UI_CLIP_RECT"]) and gives _ClipRect as a Vector property
 //   (README, "Unity shaders"). Without the keyword, Unity's default variant, nothing
@@ -32,6 +36,14 @@ fixed4 UnityGetUIDiffuseColor(float2 position, sampler2D mainTexture, sampler2D 
     fixed3 rgb = tex2D(mainTexture, position).rgb + textureSampleAdd.rgb;
     fixed alpha = tex2D(alphaTexture, position).r + textureSampleAdd.a;
     return fixed4(rgb, alpha);
+}
+
+// A UI vertex colour given in gamma space (sRGB-encoded) -> linear: the sRGB decode of each
+// channel (UnityCG.cginc's GammaToLinearSpaceExact).
+half3 UIGammaToLinear(half3 value)
+{
+    return half3(GammaToLinearSpaceExact(value.r), GammaToLinearSpaceExact(value.g),
+                 GammaToLinearSpaceExact(value.b));
 }
 
 #endif
