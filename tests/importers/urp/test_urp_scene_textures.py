@@ -246,3 +246,39 @@ def test_desaturate_and_remap01(tmp_path, language):
     assert (err <= bound).all(), err.max()
     luminance = 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.8
     assert abs(luminance + (0.2 - luminance) * 0.25 - expected[0]) > bound  # control
+
+
+# SampleSceneNormals at the pixel's screen uv (x, y) and LoadSceneNormals at its integer
+# coordinates (z), as rgb = n * 0.25 + 0.5 (the pass's alpha is not the program's: covered pixels).
+NORMALS_SHADER = _URP_PASS % {
+    "name": "urp normals",
+    "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/DeclareNormalsTexture.hlsl"',
+    "body": """float3 n = SampleSceneNormals(GetNormalizedScreenSpaceUV(IN.positionCS));
+                float3 loaded = LoadSceneNormals(uint2(IN.positionCS.xy));
+                return float4(float3(n.xy, loaded.z) * 0.25 + 0.5, 1.0);""",
+}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_scene_normals_are_the_sphere_world_normals(tmp_path, language):
+    """SampleSceneNormals (x, y) and LoadSceneNormals (z) = the unit world normal (signed, URP's
+    DepthNormals encoding) of the float64 ray-sphere hit at the pixel centre: the sphere's own
+    (it is opaque, so in the pre-pass, which traces it). Bound: the texture is half float
+    (camera_textures.py), 10 stored mantissa bits, so a component in [0.5, 1) is within one ulp,
+    2^-11 (GL leaves the float-to-half rounding to the implementation: truncation costs up to a
+    whole ulp), plus the traced normal's float32 error (the hit's t from a quadratic whose
+    discriminant is >= 1 - 0.95^2 inside the margin: a few 2^-24 of |o|^2 = 16 through
+    1 / (2 sqrt(0.0975)), about 2^-17; counted as 2^-14); after * 0.25: (2^-11 + 2^-14) / 4.
+    Control: the built-in deferred path's encoding (n * 0.5 + 0.5, which a built-in program reads
+    under the same name) fails it."""
+    scene = _scene(NORMALS_SHADER, tmp_path)
+    frame = scene_frame(scene)
+    d, t, inside = _sphere_hits(frame)
+    image = render_scene(scene, language=language).linear.astype(np.float64)[..., :3]
+    assert inside.sum() > 1000
+    normal = np.asarray(frame.position, np.float64) + t[..., None] * d  # the unit sphere's hit = its normal
+    bound = (2.0 ** -11 + 2.0 ** -14) / 4
+    err = np.abs(image - (normal * 0.25 + 0.5))[inside]
+    assert (err <= bound).all(), err.max(axis=0) / bound
+    builtin = (normal * 0.5 + 0.5) * 0.25 + 0.5  # control: the built-in pipeline's RT2 encoding
+    assert (np.abs(image - builtin)[inside] > bound).any(axis=-1).mean() > 0.9
