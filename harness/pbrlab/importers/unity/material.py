@@ -201,9 +201,10 @@ class UnitySource:
         for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
             if _skipped(p, self.shader.path):
                 continue
-            if p.kind != "grab" and not any(q.grab == OPAQUE_TEXTURE for q in out) and \
-                    OPAQUE_TEXTURE in _NAMED_TEXTURES.findall(_read_text(p, self.shader.path)):
-                out.append(GrabPass(GrabPassModel(OPAQUE_TEXTURE, p.program_line)))  # URP's opaque copy
+            for name in dict.fromkeys(_NAMED_TEXTURES.findall(_read_text(p, self.shader.path))
+                                      if p.kind != "grab" else ()):
+                if not any(q.grab == name for q in out):  # URP's opaque copy, or its colour target
+                    out.append(GrabPass(GrabPassModel(name, p.program_line)))
             out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
                                                                         self.lightmap, self.dynamic_lightmap))
         return out
@@ -243,10 +244,14 @@ _OPAQUE_QUEUE_LIMIT = 2500
 _QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
 
 
-# URP's opaque texture (DeclareOpaqueTexture.hlsl): a copy of the target as drawn before the
-# object, as a built-in GrabPass makes (the stand-in says what it holds).
+# URP's opaque texture (DeclareOpaqueTexture.hlsl, or the program's own declaration of it): a
+# copy of the target as drawn before the object, as a built-in GrabPass makes (the stand-in says
+# what it holds). The camera's colour target _CameraColorTexture, which a program may declare and
+# sample itself: URP renders the object into that target, so a read of it shows the frame as
+# drawn so far at best (a read of the target being written is undefined on Direct3D and GL), the
+# same copy under its own name.
 OPAQUE_TEXTURE = "_CameraOpaqueTexture"
-_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture)\b")
+_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture|_CameraColorTexture)\b")
 
 
 def _read_text(unity_pass, path: Path) -> str:

@@ -199,6 +199,10 @@ _SRP_TEXTURE_MACROS = {
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_GRAD": lambda a: f"tex2Dgrad({a[0]}, {a[2]}, {a[3]}, {a[4]})",
+    # Core RP's depth reads (texture, sampler, uv): the raw depth, red; the built-in two-argument
+    # forms are not the API's and are left to UnityCG's macros
+    "SAMPLE_DEPTH_TEXTURE": lambda a: f"tex2D({a[0]}, {a[2]}).r",
+    "SAMPLE_DEPTH_TEXTURE_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]})).r",
     "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
                                      else f"texCUBE({a[0]}, {a[2]})"),
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"

@@ -69,6 +69,12 @@
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
 #define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+// Core RP's depth reads take the texture, its sampler and the uv (the built-in pipeline's
+// UnityCG forms, defined by the prelude, take two): the raw depth, red.
+#undef SAMPLE_DEPTH_TEXTURE
+#undef SAMPLE_DEPTH_TEXTURE_LOD
+#define SAMPLE_DEPTH_TEXTURE(t, s, uv) t.Sample(s, uv).r
+#define SAMPLE_DEPTH_TEXTURE_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod).r
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
