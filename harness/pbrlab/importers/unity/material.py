@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, lightmaps
+from . import dynamic_lightmaps, light_space, lightmaps
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -178,8 +178,10 @@ class ProgramPass:
             _set(program, name, unit + i)
             w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab
             _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
-        used = lightmaps.bind(program, self.lightmap, cache, unit + len(grabbed))
-        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + len(grabbed) + used)
+        unit += len(grabbed)
+        unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
+        used = lightmaps.bind(program, self.lightmap, cache, unit)
+        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate

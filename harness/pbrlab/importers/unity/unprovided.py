@@ -31,8 +31,6 @@ UNPROVIDED = {
     **dict.fromkeys(("unity_4LightPosX0", "unity_4LightPosY0", "unity_4LightPosZ0", "unity_4LightAtten0",
                      "Shade4PointLights", "unity_VertexLightParams"),
                     "Unity's four per-vertex lights of the forward path (Shade4PointLights)"),
-    **dict.fromkeys(("_LightTexture0", "_LightTextureB0", "unity_WorldToLight", "_LightMatrix0"),
-                    "light cookies and attenuation textures"),
     **dict.fromkeys(("_ShadowMapTexture", "unity_WorldToShadow", "_ShadowCoord", "V2F_SHADOW_CASTER",
                      "TRANSFER_SHADOW_CASTER", "TRANSFER_SHADOW_CASTER_NORMALOFFSET", "SHADOW_CASTER_FRAGMENT",
                      "UnityApplyLinearShadowBias", "UnityClipSpaceShadowCasterPos", "UnitySampleShadowmap",
