@@ -1,5 +1,6 @@
-"""3D (volume) textures in Unity programs (issue 34): Cg's sampler3D / tex3D / tex3Dlod and Core
-RP's TEXTURE3D / SAMPLE_TEXTURE3D(_LOD), with a 3D property bound to a 1x1x1 volume holding its
+"""3D (volume) textures in Unity programs (issue 34): Cg's sampler3D / tex3D / tex3Dlod,
+HLSLSupport.cginc's UNITY_DECLARE_TEX3D / UNITY_SAMPLE_TEX3D(_LOD) and Core RP's TEXTURE3D /
+SAMPLE_TEXTURE3D(_LOD), with a 3D property bound to a 1x1x1 volume holding its
 default texture (Unity's default-texture names: properties.DEFAULT_TEXELS), in both languages.
 Before, tex3D was no function of GLSL's and glslang's Texture3D met a 2D texture (refused).
 
@@ -67,6 +68,10 @@ Shader "t/volume urp" {
     }
 }
 """
+# HLSLSupport.cginc's macros for the same (the Cg program of BUILTIN_SHADER otherwise)
+MACRO_SHADER = BUILTIN_SHADER.replace("sampler3D _Volume;", "UNITY_DECLARE_TEX3D(_Volume);").replace(
+    "tex3D(_Volume, float3(0.3, 0.6, 0.2))", "UNITY_SAMPLE_TEX3D(_Volume, float3(0.3, 0.6, 0.2))").replace(
+    "tex3Dlod(_Volume, float4(0.9, 0.1, 0.7, 0.0))", "UNITY_SAMPLE_TEX3D_LOD(_Volume, float3(0.9, 0.1, 0.7), 0.0)")
 BOUND = 2.0 ** -24
 
 
@@ -87,7 +92,7 @@ def _covered_rgb(scene, language):
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
-@pytest.mark.parametrize("shader", [BUILTIN_SHADER, URP_SHADER], ids=["cg", "core_rp"])
+@pytest.mark.parametrize("shader", [BUILTIN_SHADER, MACRO_SHADER, URP_SHADER], ids=["cg", "unity_macros", "core_rp"])
 def test_volume_property_default_is_its_texel(tmp_path, shader, language):
     """The default "red" (1, 0, 0, 1) gives (0.75, 0.25, 0.25); the material naming "gray"
     (0.5 each, Unity's gray) gives 0.5. Control: each is outside the other's bound (the property's
