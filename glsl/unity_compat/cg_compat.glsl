@@ -6,7 +6,7 @@
 //           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), fwidth (GLSL's; 0 in a vertex stage: a fragment function the vertex stage compiles but never calls), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
-//           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex2Dlod (uv.w is
+//           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex3D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, tex2Dgrad (and tex2D's form with derivatives), texCUBE,
 //           texCUBElod, texCUBEbias, texCUBEgrad, pbr_unity_load (Texture2D.Load), asuint / asint / asfloat, rcp, mad, log10, and the type names
 //           samplerCUBE (= samplerCube); pbr_unity_pow (pow with HLSL's scalar promotion:
@@ -116,6 +116,9 @@ vec4 tex2Dproj(sampler2D s, vec4 uv) { return textureProj(s, uv); }
 vec4 tex2Dproj(sampler2D s, vec3 uv) { return textureProj(s, uv); }
 vec4 texCUBE(samplerCube s, vec3 dir) { return texture(s, dir); }
 vec4 texCUBElod(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, dir.w); }
+// A 3D (volume) texture: Cg's tex3D, and tex3Dlod (uvw.w the mip level).
+vec4 tex3D(sampler3D s, vec3 uvw) { return texture(s, uvw); }
+vec4 tex3Dlod(sampler3D s, vec4 uvw) { return textureLod(s, uvw.xyz, uvw.w); }
 // Texture2D.Load(int3(x, y, mip)) as the GLSL port spells it (importers/unity/texture_methods.py).
 vec4 pbr_unity_load(sampler2D s, ivec3 p) { return texelFetch(s, p.xy, p.z); }
 // Explicit derivatives (Cg's tex2Dgrad, and tex2D's four-argument form: the same lookup).

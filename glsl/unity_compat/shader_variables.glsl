@@ -195,6 +195,12 @@ vec4 unity_SpotDirection[8];
 #define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) uniform sampler2DArray tex
 vec4 UNITY_SAMPLE_TEX2DARRAY(sampler2DArray tex, vec3 coord) { return texture(tex, coord); }
 vec4 UNITY_SAMPLE_TEX2DARRAY_LOD(sampler2DArray tex, vec3 coord, float lod) { return textureLod(tex, coord, lod); }
+// HLSLSupport.cginc's 3D textures (a material's 3D property: a 1x1x1 volume, unity/program.py).
+#define UNITY_DECLARE_TEX3D(tex) uniform sampler3D tex
+#define UNITY_DECLARE_TEX3D_NOSAMPLER(tex) uniform sampler3D tex
+vec4 UNITY_SAMPLE_TEX3D(sampler3D tex, vec3 coord) { return texture(tex, coord); }
+vec4 UNITY_SAMPLE_TEX3D_LOD(sampler3D tex, vec3 coord, float lod) { return textureLod(tex, coord, lod); }
+#define UNITY_SAMPLE_TEX3D_SAMPLER(tex, samplertex, coord) UNITY_SAMPLE_TEX3D(tex, coord)
 
 vec4 UnityObjectToClipPos(vec3 pos) {
     return unity_MatrixVP * (unity_ObjectToWorld * vec4(pos, 1.0));

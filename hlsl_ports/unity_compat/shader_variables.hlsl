@@ -196,6 +196,12 @@ static float4 unity_SpotDirection[8];
 #define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
 #define UNITY_SAMPLE_TEX2DARRAY(tex, coord) (tex).Sample(pbrlab_unity_sampler, (coord))
 #define UNITY_SAMPLE_TEX2DARRAY_LOD(tex, coord, lod) (tex).SampleLevel(pbrlab_unity_sampler, (coord), (lod))
+// HLSLSupport.cginc's 3D textures (a material's 3D property: a 1x1x1 volume, unity/program.py).
+#define UNITY_DECLARE_TEX3D(tex) Texture3D tex
+#define UNITY_DECLARE_TEX3D_NOSAMPLER(tex) Texture3D tex
+#define UNITY_SAMPLE_TEX3D(tex, coord) (tex).Sample(pbrlab_unity_sampler, (coord))
+#define UNITY_SAMPLE_TEX3D_LOD(tex, coord, lod) (tex).SampleLevel(pbrlab_unity_sampler, (coord), (lod))
+#define UNITY_SAMPLE_TEX3D_SAMPLER(tex, samplertex, coord) UNITY_SAMPLE_TEX3D(tex, coord)
 
 float4 UnityObjectToClipPos(float3 pos) {
     return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0)));

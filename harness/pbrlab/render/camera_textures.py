@@ -17,13 +17,24 @@ keeps its transparent queues out of the depth texture), drawn with a depth test 
 * RT2 world normal * 0.5 + 0.5 rgb, a 1 (GL_RGB10_A2, Unity's ARGB2101010), as Unity's
   fragDeferred (UnityStandardCore.cginc) and UnityStandardDataToGbuffer (UnityGBuffer.cginc)
   write them. RT3 (emission and ambient) is not made: a program reading it is refused
-  (importers/unity/unprovided.py).
+  (importers/unity/unprovided.py);
+* URP's normals texture (its DepthNormals pre-pass, URP 10 and later): the unit world-space
+  normal itself in rgb (signed, not remapped), a 0, cleared to 0, as URP's DepthNormals passes
+  write it without _GBUFFER_NORMALS_OCT (the octahedral packing is its deferred renderer's
+  "accurate G-buffer normals" option alone). URP renders it R8G8B8A8_SNorm where that format
+  is renderable and R16G16B16A16_SFloat where not; GL 3.3 does not require SNorm targets to be
+  renderable, so here it is half float (GL_RGBA16F, Unity's fallback).
+
+A program reads the normals the way its pipeline stores them: a material source's
+``camera_normals`` (``GBUFFER_NORMALS``, the built-in pipeline's RT2, by default;
+``WORLD_NORMALS``, URP's) picks the texture bound under ``_CameraNormalsTexture``.
 
 Meshes are rasterised at their mesh positions (a Unity program that moves its vertices is seen
 here where its mesh is); ray-traced spheres are traced per pixel (their exact depth and
 normal). Sampled nearest: Unity's passes read them at pixel centres.
 
-    textures = CameraTextures(ctx, scene, frame)   # by_name: {uniform name: texture}
+    textures = CameraTextures(ctx, scene, frame)
+    textures.bound(source)                          # {uniform name: texture} for a material source
 """
 
 from __future__ import annotations
@@ -36,8 +47,8 @@ from ..foundation.errors import SceneError
 from ..gpu import targets
 from ..gpu.programs import set_uniform as _set
 from ..scene import meshes
-from ..scene.gbuffer_surface import (DEPTH_TEXTURE, GBUFFER_TEXTURES, NORMALS_TEXTURE, GBufferSurface,
-                                     metallic_surface, specular_surface)
+from ..scene.gbuffer_surface import (DEPTH_TEXTURE, GBUFFER_NORMALS, GBUFFER_TEXTURES, NORMALS_TEXTURE,
+                                     WORLD_NORMALS, GBufferSurface, metallic_surface, specular_surface)
 from ..scene.standard_material import BLENDED_ALPHA_MODES, source_of
 
 GL_SRGB8_ALPHA8 = 0x8C43   # OpenGL 3.3 core, table 3.12
@@ -70,6 +81,7 @@ layout(location = 0) out vec4 out_gbuffer0;
 layout(location = 1) out vec4 out_gbuffer1;
 layout(location = 2) out vec4 out_gbuffer2;
 layout(location = 3) out float out_depth;
+layout(location = 4) out vec4 out_world_normal;
 #ifdef PBRLAB_TRACED_SPHERE
 uniform vec4 u_sphere;          // centre, radius
 uniform mat4 u_view_proj;
@@ -105,6 +117,7 @@ void main() {
     out_gbuffer0 = vec4(u_diffuse, u_occlusion);
     out_gbuffer1 = vec4(u_specular, u_smoothness);
     out_gbuffer2 = vec4(n * 0.5 + 0.5, 1.0);
+    out_world_normal = vec4(n, 0.0);
 }
 """
 
@@ -145,17 +158,25 @@ class CameraTextures:
                         ctx.texture(size, 4, dtype="f1", internal_format=GL_SRGB8_ALPHA8),
                         ctx.texture(size, 4, dtype="f1", internal_format=GL_RGB10_A2)]
         self.depth = ctx.texture(size, 1, dtype="f4")
-        for texture in (*self.gbuffer, self.depth):
+        self.world_normals = ctx.texture(size, 4, dtype="f2")  # GL_RGBA16F
+        for texture in (*self.gbuffer, self.depth, self.world_normals):
             texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
             texture.repeat_x = texture.repeat_y = False
         self._depth_buffer = ctx.depth_renderbuffer(size)
-        fbo = ctx.framebuffer([*self.gbuffer, self.depth], self._depth_buffer)
+        fbo = ctx.framebuffer([*self.gbuffer, self.depth, self.world_normals], self._depth_buffer)
         self.by_name = {DEPTH_TEXTURE: self.depth, NORMALS_TEXTURE: self.gbuffer[2],
                         **dict(zip(GBUFFER_TEXTURES, self.gbuffer))}
+        self._normals = {GBUFFER_NORMALS: self.gbuffer[2], WORLD_NORMALS: self.world_normals}
         try:
             self._draw(ctx, scene, frame, fbo, size)
         finally:
             fbo.release()
+
+    def bound(self, source) -> dict:
+        """{uniform name: texture} for a program of material source ``source``: its
+        _CameraNormalsTexture as its pipeline stores it (module doc)."""
+        normals = self._normals[getattr(source, "camera_normals", GBUFFER_NORMALS)]
+        return {**self.by_name, NORMALS_TEXTURE: normals}
 
     def _draw(self, ctx, scene, frame, fbo, size) -> None:
         fbo.use()
@@ -171,11 +192,13 @@ layout(location = 0) out vec4 out_gbuffer0;
 layout(location = 1) out vec4 out_gbuffer1;
 layout(location = 2) out vec4 out_gbuffer2;
 layout(location = 3) out float out_depth;
+layout(location = 4) out vec4 out_world_normal;
 void main() {
     out_gbuffer0 = vec4(0.0);
     out_gbuffer1 = vec4(0.0);
     out_gbuffer2 = vec4(0.0);
     out_depth = 1.0;
+    out_world_normal = vec4(0.0);
 }
 """)
         empty = ctx.vertex_array(depth_clear, [])
@@ -222,5 +245,5 @@ void main() {
                 resource.release()
 
     def release(self) -> None:
-        for resource in (*self.gbuffer, self.depth, self._depth_buffer):
+        for resource in (*self.gbuffer, self.depth, self.world_normals, self._depth_buffer):
             resource.release()

@@ -449,7 +449,7 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
         source = source_of(material)
         defines = {**draw.plan.defines[obj.material], **source.defines(material)}
         # the camera's textures (camera_textures.py) are bound as a grab's, by name
-        grabbed = dict(draw.resources.camera_textures.by_name) if draw.resources.camera_textures else {}
+        grabbed = draw.resources.camera_textures.bound(source) if draw.resources.camera_textures else {}
         for material_pass in source.passes(material):
             if material_pass.grab is not None:  # what is drawn so far, for the passes after it
                 grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder)

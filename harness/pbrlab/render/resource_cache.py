@@ -151,6 +151,12 @@ class ContextCache:
         return self._textures.get(("constant", texel), lambda: self.ctx.texture(
             (1, 1), 4, np.array(texel, np.float32).tobytes(), dtype="f4"))
 
+    def constant_volume(self, texel) -> moderngl.Texture:
+        """A 1x1x1 RGBA32F 3D texture holding ``texel`` (a 3D property's default texture)."""
+        texel = tuple(float(x) for x in texel)
+        return self._textures.get(("constant volume", texel), lambda: self.ctx.texture3d(
+            (1, 1, 1), 4, np.array(texel, np.float32).tobytes(), dtype="f4"))
+
 
 def _file_texture(ctx, path: Path, srgb: bool) -> moderngl.Texture:
     """Upload an image file; non-finite texels and oversize images are refused by name

@@ -26,6 +26,11 @@ DEPTH_TEXTURE = "_CameraDepthTexture"
 GBUFFER_TEXTURES = ("_CameraGBufferTexture0", "_CameraGBufferTexture1", "_CameraGBufferTexture2")
 NORMALS_TEXTURE = "_CameraNormalsTexture"
 CAMERA_TEXTURES = (DEPTH_TEXTURE, *GBUFFER_TEXTURES, NORMALS_TEXTURE)
+# What _CameraNormalsTexture holds for a program, by its material source's ``camera_normals``
+# (render/camera_textures.py binds the one named): the built-in deferred path's RT2 (the world
+# normal * 0.5 + 0.5, the default) or URP's DepthNormals texture (the world normal itself).
+GBUFFER_NORMALS = "gbuffer"
+WORLD_NORMALS = "world"
 _NAMES = re.compile(r"\b(" + "|".join(CAMERA_TEXTURES) + r")\b")
 # UnityStandardConfig / UnityCG.cginc: unity_ColorSpaceDielectricSpec in linear colour space
 # (rgb 0.04: the F0 of a dielectric of index 1.5; a = 1 - 0.04).

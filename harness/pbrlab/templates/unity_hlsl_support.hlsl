@@ -1,6 +1,6 @@
 // pbrlab harness, HLSL only: Unity's Direct3D 9-style sampler names (HLSLSupport.cginc) for
-// glslang's HLSL front end, included before a surface shader's CGPROGRAM. A `sampler2D`
-// or `samplerCUBE` is a texture object; tex2D/texCUBE sample it with one shared sampler state,
+// glslang's HLSL front end, included before a surface shader's CGPROGRAM. A `sampler2D`,
+// `sampler3D` or `samplerCUBE` is a texture object; tex2D/texCUBE sample it with one shared sampler state,
 // which glslang's --auto-sampled-textures combines into each texture (the GL texture's own
 // filtering applies). Inside Unity its own definitions stand.
 #ifndef PBRLAB_UNITY_HLSL_SUPPORT
@@ -14,6 +14,9 @@ SamplerState pbrlab_unity_sampler;
 #define tex2Dproj(t, uv) (t).Sample(pbrlab_unity_sampler, (uv).xy / (uv).w)
 #define texCUBE(t, d) (t).Sample(pbrlab_unity_sampler, (d))
 #define texCUBElod(t, d) (t).SampleLevel(pbrlab_unity_sampler, (d).xyz, (d).w)
+#define sampler3D Texture3D
+#define tex3D(t, uvw) (t).Sample(pbrlab_unity_sampler, (uvw))
+#define tex3Dlod(t, uvw) (t).SampleLevel(pbrlab_unity_sampler, (uvw).xyz, (uvw).w)
 // HLSL's fmod truncates (x - y trunc(x / y), the sign of x: Direct3D's definition); glslang
 // 11.x lowers it to GLSL's floored mod, so -5.5 fmod 2 gave 0.5 instead of -1.5. The Cg
 // programs call this one instead (float `%` keeps glslang's lowering: a known difference).

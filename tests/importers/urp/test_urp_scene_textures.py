@@ -94,6 +94,14 @@ def _sphere_hits(frame):
     return d, np.where(closest2 <= 1.0, t, np.nan), closest2 <= SILHOUETTE_MARGIN ** 2
 
 
+K_DEPTH_ULPS = 6.0
+
+
+def _depth_bound(eye, frame):
+    """test_scene_depth_is_ray_sphere_depth's bound on an eye depth read from the depth texture."""
+    return eye ** 2 * (1 / frame.near - 1 / frame.far) * K_DEPTH_ULPS * 2.0 ** -24 + 8 * 2.0 ** -24 * eye
+
+
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
     """Linear01Depth(SampleSceneDepth(uv), _ZBufferParams) = eye depth / far of the float64
@@ -110,8 +118,7 @@ def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
     covered = inside & (image[..., 3] > 0)
     assert covered.sum() > 1000
     eye = t * (d @ frame.forward)
-    k_depth_ulps = 6.0
-    bound = eye ** 2 * (1 / frame.near - 1 / frame.far) * k_depth_ulps * 2.0 ** -24 + 8 * 2.0 ** -24 * eye
+    bound = _depth_bound(eye, frame)
     err01 = np.abs(image[..., 0] - eye / frame.far)
     assert (err01[covered] <= (bound / frame.far)[covered]).all(), (err01 / bound * frame.far)[covered].max()
     for channel in (1, 2):  # SampleSceneDepth, LoadSceneDepth
@@ -155,9 +162,9 @@ SCREEN_DISTANCE = 3.0
 SCREEN_FOV_DEG = 40.0
 
 
-def _opaque_scene(tmp_path, with_plane: bool):
+def _opaque_scene(tmp_path, with_plane: bool, plane_shader: str = OPAQUE_SHADER):
     shader = tmp_path / "opaque.shader"
-    shader.write_text(textwrap.dedent(OPAQUE_SHADER))
+    shader.write_text(textwrap.dedent(plane_shader))
     side = 2 * SCREEN_DISTANCE * np.tan(np.radians(SCREEN_FOV_DEG / 2))
     objects = [{"sphere": {"center": [0.0, 0.0, 0.0], "radius": 0.6}, "material": "s"}]  # drawn first
     if with_plane:
@@ -246,3 +253,110 @@ def test_desaturate_and_remap01(tmp_path, language):
     assert (err <= bound).all(), err.max()
     luminance = 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.8
     assert abs(luminance + (0.2 - luminance) * 0.25 - expected[0]) > bound  # control
+
+
+# SampleSceneNormals at the pixel's screen uv (x, y) and LoadSceneNormals at its integer
+# coordinates (z), as rgb = n * 0.25 + 0.5 (the pass's alpha is not the program's: covered pixels).
+NORMALS_SHADER = _URP_PASS % {
+    "name": "urp normals",
+    "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/DeclareNormalsTexture.hlsl"',
+    "body": """float3 n = SampleSceneNormals(GetNormalizedScreenSpaceUV(IN.positionCS));
+                float3 loaded = LoadSceneNormals(uint2(IN.positionCS.xy));
+                return float4(float3(n.xy, loaded.z) * 0.25 + 0.5, 1.0);""",
+}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_scene_normals_are_the_sphere_world_normals(tmp_path, language):
+    """SampleSceneNormals (x, y) and LoadSceneNormals (z) = the unit world normal (signed, URP's
+    DepthNormals encoding) of the float64 ray-sphere hit at the pixel centre: the sphere's own
+    (it is opaque, so in the pre-pass, which traces it). Bound: the texture is half float
+    (camera_textures.py), 10 stored mantissa bits, so a component in [0.5, 1) is within one ulp,
+    2^-11 (GL leaves the float-to-half rounding to the implementation: truncation costs up to a
+    whole ulp), plus the traced normal's float32 error (the hit's t from a quadratic whose
+    discriminant is >= 1 - 0.95^2 inside the margin: a few 2^-24 of |o|^2 = 16 through
+    1 / (2 sqrt(0.0975)), about 2^-17; counted as 2^-14); after * 0.25: (2^-11 + 2^-14) / 4.
+    Control: the built-in deferred path's encoding (n * 0.5 + 0.5, which a built-in program reads
+    under the same name) fails it."""
+    scene = _scene(NORMALS_SHADER, tmp_path)
+    frame = scene_frame(scene)
+    d, t, inside = _sphere_hits(frame)
+    image = render_scene(scene, language=language).linear.astype(np.float64)[..., :3]
+    assert inside.sum() > 1000
+    normal = np.asarray(frame.position, np.float64) + t[..., None] * d  # the unit sphere's hit = its normal
+    bound = (2.0 ** -11 + 2.0 ** -14) / 4
+    err = np.abs(image - (normal * 0.25 + 0.5))[inside]
+    assert (err <= bound).all(), err.max(axis=0) / bound
+    builtin = (normal * 0.5 + 0.5) * 0.25 + 0.5  # control: the built-in pipeline's RT2 encoding
+    assert (np.abs(image - builtin)[inside] > bound).any(axis=-1).mean() > 0.9
+
+
+# The program declares the depth texture itself (no DeclareDepthTexture.hlsl) and reads it with
+# Core RP's three- and four-argument depth macros.
+OWN_DEPTH_SHADER = _URP_PASS % {
+    "name": "urp own depth",
+    "include": "TEXTURE2D(_CameraDepthTexture); SAMPLER(sampler_CameraDepthTexture);",
+    "body": """float2 uv = GetNormalizedScreenSpaceUV(IN.positionCS);
+                float raw = SAMPLE_DEPTH_TEXTURE(_CameraDepthTexture, sampler_CameraDepthTexture, uv);
+                float lod = SAMPLE_DEPTH_TEXTURE_LOD(_CameraDepthTexture, sampler_CameraDepthTexture, uv, 0.0);
+                return float4(Linear01Depth(raw, _ZBufferParams), LinearEyeDepth(raw, _ZBufferParams),
+                              LinearEyeDepth(lod, _ZBufferParams), 1.0);""",
+}
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_own_depth_texture_declaration_reads_the_pre_pass(tmp_path, language):
+    """A program's own TEXTURE2D(_CameraDepthTexture) read by SAMPLE_DEPTH_TEXTURE(t, s, uv) and
+    SAMPLE_DEPTH_TEXTURE_LOD(t, s, uv, 0) (Core RP's forms; UnityCG's take two arguments, which
+    the built-in prelude's macros refused as too many) is bound to the same depth pre-pass:
+    Linear01Depth and LinearEyeDepth of it = the float64 ray-sphere eye depth (/ far), within
+    test_scene_depth_is_ray_sphere_depth's bound (the same texture and float32 chain). Control:
+    the neighbouring pixel's depth fails it."""
+    scene = _scene(OWN_DEPTH_SHADER, tmp_path)
+    frame = scene_frame(scene)
+    d, t, inside = _sphere_hits(frame)
+    image = render_scene(scene, language=language).linear.astype(np.float64)
+    covered = inside & (image[..., 3] > 0)
+    assert covered.sum() > 1000
+    eye = t * (d @ frame.forward)
+    bound = _depth_bound(eye, frame)
+    expected = np.stack([eye / frame.far, eye, eye], axis=-1)
+    err = np.abs(image[..., :3] - expected)[covered]
+    limit = np.stack([bound / frame.far, bound, bound], axis=-1)[covered]
+    assert (err <= limit).all(), (err / limit).max(axis=0)
+    shifted = np.abs(np.roll(image[..., 2], 1, axis=0) - eye)  # control: the neighbouring pixel's depth
+    assert (shifted[covered] > bound[covered]).mean() > 0.9
+
+
+# The camera's colour target declared by the program as a Core RP sampler state and sampled with
+# Cg's tex2D (a combined sampler, as FXC's compatibility mode takes it: combined_samplers.py),
+# with the _TexelSize Unity sets beside it: the plane shows 2 C + 0.25 in r and g, and in b the
+# texel size's x times the target's width (1).
+COLOR_TARGET_SHADER = (_URP_PASS % {
+    "name": "urp own colour target",
+    "include": "SAMPLER(_CameraColorTexture); float4 _CameraColorTexture_TexelSize;",
+    "body": """float3 c = tex2D(_CameraColorTexture, GetNormalizedScreenSpaceUV(IN.positionCS)).rgb;
+                return float4(2.0 * c.rg + 0.25, _CameraColorTexture_TexelSize.x * _ScreenParams.x, 1.0);""",
+}).replace('Tags { "LightMode" = "UniversalForward" }', 'Tags { "LightMode" = "UniversalForward" }\n            ZTest Always')
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_own_color_target_sampler_reads_the_frame_so_far(tmp_path, language):
+    """A program's own SAMPLER(_CameraColorTexture) read by tex2D is bound to the copy of the
+    target drawn before the plane (as test_scene_color_is_the_opaque_copy: weights exactly (1, 0)
+    at a pixel centre, so 1 ulp of 2 L + 0.25), and its _TexelSize.x is 1 / width (b = 1 within
+    1 ulp). Control: the sphere image one pixel down fails that bound on its lit pixels; before
+    combined_samplers the declaration was a sampler state, which tex2D refused in both
+    languages (the sample's MirrorShader)."""
+    alone = render_scene(_opaque_scene(tmp_path, False), language=language).linear.astype(np.float64)
+    image = render_scene(_opaque_scene(tmp_path, True, COLOR_TARGET_SHADER), language=language)
+    image = image.linear.astype(np.float64)
+    expected = np.concatenate([2 * alone[..., :2] + 0.25, np.ones_like(alone[..., :1])], axis=-1)
+    bound = 2.0 ** -23 * np.maximum(np.abs(expected), 2.0 ** -10)
+    assert (image[..., 3] > 0).all()
+    err = np.abs(image[..., :3] - expected)
+    assert (err <= bound).all(), (err / bound).max()
+    lit = (alone[..., 3] > 0) & (alone[..., :3].max(axis=-1) > 0.01)
+    assert lit.sum() > 150
+    shifted = 2 * np.roll(alone, 1, axis=0)[..., :2] + 0.25
+    assert (np.abs(image[..., :2] - shifted) > bound[..., :2])[lit].any(axis=-1).mean() > 0.9

@@ -38,6 +38,7 @@ from __future__ import annotations
 import functools
 import re
 
+from . import combined_samplers
 from .source_text import matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
@@ -110,11 +111,13 @@ def _rename_own_library_functions(text: str) -> str:
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
-    Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed."""
+    Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
+    a sampler state that tex2D samples declared as a sampler2D (combined_samplers)."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
+    text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

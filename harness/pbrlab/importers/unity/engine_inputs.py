@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from . import multisampled_textures
+from . import light_space, multisampled_textures
 from .source_text import UnityShaderError, line_of
 
 _MOTION = ("motion vectors: the previous frame's camera and object matrices, which pbrlab fills (a still "
@@ -114,6 +114,9 @@ FILLED = {
     "_NonJitteredVP": ("float4x4", None, "unity_MatrixVP (the harness's camera has no jitter)"),
     "_PreviousVP": ("float4x4", None, "unity_MatrixVP (a still camera)"),
     "_PreviousM": ("float4x4", None, "unity_ObjectToWorld (a still object)"),
+    # the forward pass's light (AutoLight.cginc declares it; Unity 5.3's name the program's own)
+    "unity_WorldToLight": ("float4x4", None, "the pass's light: world to light space (light_space.py)"),
+    "_LightMatrix0": ("float4x4", None, "the pass's light: world to light space (light_space.py)"),
 }
 # a global's declaration: its `uniform` (1), base (2: float|half|fixed), dimensions (3), name (4), length (5)
 _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(float|half|fixed)([34](?:x4)?)[ \t]+(\w+)[ \t]*"
@@ -181,6 +184,9 @@ def fill_statements(filled, language: str) -> str:
         if colour:
             out.append(f"        _TerrainTreeLightColors[pbrlab_d] = {vec4}(u_directional_radiance[pbrlab_d], 1.0);")
         out += ["    }", "#endif"]
+    for name in ("unity_WorldToLight", "_LightMatrix0"):
+        if name in filled:
+            out += light_space.statements(name, language)
     for name, source in (("_NonJitteredVP", "unity_MatrixVP"), ("_PreviousVP", "unity_MatrixVP"),
                          ("_PreviousM", "unity_ObjectToWorld")):
         if name in filled:

@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, lightmaps, user_definitions
+from . import dynamic_lightmaps, light_space, lightmaps, user_definitions
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -179,8 +179,10 @@ class ProgramPass:
             _set(program, name, unit + i)
             w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab
             _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
-        used = lightmaps.bind(program, self.lightmap, cache, unit + len(grabbed))
-        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + len(grabbed) + used)
+        unit += len(grabbed)
+        unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
+        used = lightmaps.bind(program, self.lightmap, cache, unit)
+        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate
@@ -202,9 +204,10 @@ class UnitySource:
         for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
             if _skipped(p, self.shader.path):
                 continue
-            if p.kind != "grab" and not any(q.grab == OPAQUE_TEXTURE for q in out) and \
-                    OPAQUE_TEXTURE in _NAMED_TEXTURES.findall(_read_text(p, self.shader.path)):
-                out.append(GrabPass(GrabPassModel(OPAQUE_TEXTURE, p.program_line)))  # URP's opaque copy
+            for name in dict.fromkeys(_NAMED_TEXTURES.findall(_read_text(p, self.shader.path))
+                                      if p.kind != "grab" else ()):
+                if not any(q.grab == name for q in out):  # URP's opaque copy, or its colour target
+                    out.append(GrabPass(GrabPassModel(name, p.program_line)))
             out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
                                                                         self.lightmap, self.dynamic_lightmap))
         return out
@@ -244,10 +247,14 @@ _OPAQUE_QUEUE_LIMIT = 2500
 _QUEUE_TAG = re.compile(r'"Queue"\s*=\s*"(\w+)\s*([+-]\s*\d+)?"', re.I)
 
 
-# URP's opaque texture (DeclareOpaqueTexture.hlsl): a copy of the target as drawn before the
-# object, as a built-in GrabPass makes (the stand-in says what it holds).
+# URP's opaque texture (DeclareOpaqueTexture.hlsl, or the program's own declaration of it): a
+# copy of the target as drawn before the object, as a built-in GrabPass makes (the stand-in says
+# what it holds). The camera's colour target _CameraColorTexture, which a program may declare and
+# sample itself: URP renders the object into that target, so a read of it shows the frame as
+# drawn so far at best (a read of the target being written is undefined on Direct3D and GL), the
+# same copy under its own name.
 OPAQUE_TEXTURE = "_CameraOpaqueTexture"
-_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture)\b")
+_NAMED_TEXTURES = re.compile(r"\b(_CameraOpaqueTexture|_CameraColorTexture)\b")
 
 
 def _read_text(unity_pass, path: Path) -> str:

@@ -191,6 +191,11 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURECUBE_PARAM": lambda a: f"samplerCUBE {a[0]}, int {a[1]}",
     "TEXTURE2D_ARGS": lambda a: f"{a[0]}, {a[1]}",
     "TEXTURECUBE_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "TEXTURE3D": lambda a: f"sampler3D {a[0]}",
+    "TEXTURE3D_PARAM": lambda a: f"sampler3D {a[0]}, int {a[1]}",
+    "TEXTURE3D_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURE3D": lambda a: f"tex3D({a[0]}, {a[2]})",
+    "SAMPLE_TEXTURE3D_LOD": lambda a: f"tex3Dlod({a[0]}, float4({a[2]}, {a[3]}))",
     # the _X forms: an XR eye's texture array in URP, one 2D texture without XR (as here)
     "TEXTURE2D_X": lambda a: f"sampler2D {a[0]}",
     "TEXTURE2D_X_FLOAT": lambda a: f"sampler2D {a[0]}",
@@ -235,7 +240,7 @@ def _expand_srp_texture_macros(code: str) -> str:
         if found is None:
             continue
         args, end = found
-        need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1,
+        need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1, "TEXTURE3D": 1,
                 "SAMPLER": 1}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3

@@ -306,7 +306,8 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
             sized = not arrayed and bool(programs.uniforms_named(program, f"{name}_TexelSize"))
             if bound or sized:
                 texture = (environment_cube() if value.cube else cache.texture(value.path, value.srgb)
-                           if value.path is not None else cache.constant_texture(value.texel))
+                           if value.path is not None else cache.constant_volume(value.texel)
+                           if _volume_sampled(program, name) else cache.constant_texture(value.texel))
                 if bound:
                     texture.use(unit)
                     unit += 1
@@ -361,6 +362,12 @@ def _bind_number(program, name: str, kind: str, value: float) -> None:
         gl_type = programs.uniform_type(uniforms[0])
         _set(program, name, value if gl_type == "float" else
              bool(value) if gl_type == "bool" else int(value))
+
+
+def _volume_sampled(program, name: str) -> bool:
+    """Whether the program samples texture ``name`` as a 3D texture (a 3D property's sampler3D:
+    its default is a 1x1x1 volume, properties.py)."""
+    return any(programs.uniform_type(u) == "sampler3D" for u in programs.uniforms_named(program, name))
 
 
 def _bind_texture(program, name: str, kind: str, unit: int) -> bool:

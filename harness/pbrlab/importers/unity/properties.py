@@ -74,6 +74,9 @@ def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
     unknown = set(value) - {"path", "srgb", "tiling", "offset"}
     if unknown:
         raise SceneError(f"{where}.{sorted(unknown)[0]}: unknown field; use path, srgb, tiling, offset")
+    if "path" in value and prop.kind == "3D":
+        raise SceneError(f"{where}.path: a 3D (volume) texture property takes one of Unity's default "
+                         "textures here (give a name: white, black, gray, ...): pbrlab reads no volume file format")
     if "path" in value:
         if not isinstance(value["path"], str):
             raise SceneError(f"{where}.path: expected a file name")

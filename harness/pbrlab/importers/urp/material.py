@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ...scene.gbuffer_surface import WORLD_NORMALS
 from ..unity import URP
 from ..unity import material as unity_material
 from ..unity.source_text import blank_comments
@@ -29,7 +30,9 @@ _URP_INCLUDE = re.compile(r'#\s*include\s+"Packages/com\.unity\.render-pipelines
 class URPSource(unity_material.UnitySource):
     """The Unity source, drawn as URP draws: its forward passes once each (its passes'
     LightMode is UniversalForward, UniversalForwardOnly or SRPDefaultUnlit, which
-    unity_material.light_programs draws once), with URP's pipeline keywords."""
+    unity_material.light_programs draws once), with URP's pipeline keywords. Its programs'
+    _CameraNormalsTexture is URP's DepthNormals texture (world normals, DeclareNormalsTexture.hlsl)."""
+    camera_normals = WORLD_NORMALS
 
     def defines(self, material) -> dict:
         declared = self.shader.keywords

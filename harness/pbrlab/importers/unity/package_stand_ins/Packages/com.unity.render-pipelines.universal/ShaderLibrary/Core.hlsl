@@ -91,6 +91,11 @@
 #define SAMPLE_TEXTURE2D_GRAD(t, s, uv, dpdx, dpdy) t.SampleGrad(s, uv, dpdx, dpdy)
 #define SAMPLE_TEXTURECUBE(t, s, d) t.Sample(s, d)
 #define SAMPLE_TEXTURECUBE_LOD(t, s, d, lod) t.SampleLevel(s, d, lod)
+#define TEXTURE3D(t) Texture3D t
+#define TEXTURE3D_PARAM(t, s) Texture3D t, SamplerState s
+#define TEXTURE3D_ARGS(t, s) t, s
+#define SAMPLE_TEXTURE3D(t, s, uvw) t.Sample(s, uvw)
+#define SAMPLE_TEXTURE3D_LOD(t, s, uvw, lod) t.SampleLevel(s, uvw, lod)
 // The _X forms (a texture array per eye in XR; one 2D texture without XR, as here).
 #define TEXTURE2D_X(t) Texture2D t
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
