@@ -181,3 +181,12 @@ def test_fidelity_names_a_missing_scenarios_file_or_references_folder(tmp_path):
     mine.write_text('{"lightings": ["forest"], "scenarios": [{"name": "x", "model": "m.glb"}]}')
     result = _fidelity_cli("--scenarios", str(mine), "--out", str(tmp_path / "out"))
     assert result.returncode == 2 and str(mine) in result.stderr and "mine_references" in result.stderr, result.stderr
+
+
+def test_every_held_out_row_has_its_committed_references():
+    from pbrlab.checking.fidelity import benchmark, renderers
+
+    folder = benchmark.references_for(HELDOUT_FILE)
+    for row in staging.read_scenarios(HELDOUT_FILE):
+        for name in ("cycles", benchmark.NOISE, *renderers.PEERS):
+            assert benchmark.reference_path(row.key, name, folder).is_file(), (row.key, name)
