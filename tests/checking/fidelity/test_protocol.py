@@ -143,3 +143,50 @@ def test_a_bad_scenarios_file_is_named_with_the_fault(tmp_path, text, message):
     with pytest.raises(PbrlabError, match=message) as info:
         staging.read_scenarios(path)
     assert str(path) in str(info.value)
+
+
+def test_a_scenarios_files_references_lie_beside_it_named_for_it(tmp_path):
+    from pbrlab.checking.fidelity import benchmark
+
+    assert benchmark.references_for(staging.SCENARIOS_FILE) == benchmark.REFERENCES_DIR
+    assert benchmark.references_for(tmp_path / "heldout_scenarios.json") == tmp_path / "heldout_references"
+    assert benchmark.references_for(tmp_path / "mine.json") == tmp_path / "mine_references"
+
+
+HELDOUT_FILE = staging.BENCHMARK_DIR / "heldout_scenarios.json"
+
+
+def test_the_held_out_set_shares_no_model_and_no_lighting_with_the_benchmark():
+    """docs/fidelity.md, "A held-out set": scenes pbrlab was not developed on."""
+    benchmark_rows, heldout = staging.read_scenarios(), staging.read_scenarios(HELDOUT_FILE)
+    assert len({r.name for r in heldout}) >= 8 and all(r.model.is_file() for r in heldout)
+    assert not {r.model for r in heldout} & {r.model for r in benchmark_rows}
+    assert not {r.lighting for r in heldout} & {r.lighting for r in benchmark_rows}
+
+
+def _fidelity_cli(*argv):
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "pbrlab.commands.cli", "fidelity", *argv],
+                          capture_output=True, text=True)
+
+
+def test_fidelity_names_a_missing_scenarios_file_or_references_folder(tmp_path):
+    missing = tmp_path / "nope.json"
+    result = _fidelity_cli("--scenarios", str(missing), "--out", str(tmp_path / "out"))
+    assert result.returncode == 2 and str(missing) in result.stderr and "Traceback" not in result.stderr
+    (tmp_path / "m.glb").write_bytes(b"glTF")
+    mine = tmp_path / "mine.json"
+    mine.write_text('{"lightings": ["forest"], "scenarios": [{"name": "x", "model": "m.glb"}]}')
+    result = _fidelity_cli("--scenarios", str(mine), "--out", str(tmp_path / "out"))
+    assert result.returncode == 2 and str(mine) in result.stderr and "mine_references" in result.stderr, result.stderr
+
+
+def test_every_held_out_row_has_its_committed_references():
+    from pbrlab.checking.fidelity import benchmark, renderers
+
+    folder = benchmark.references_for(HELDOUT_FILE)
+    for row in staging.read_scenarios(HELDOUT_FILE):
+        for name in ("cycles", benchmark.NOISE, *renderers.PEERS):
+            assert benchmark.reference_path(row.key, name, folder).is_file(), (row.key, name)

@@ -74,6 +74,18 @@ class Row:
         return min(candidates, key=candidates.get) if candidates else None
 
 
+def references_for(scenarios_file: Path) -> Path:
+    """The references folder of a scenarios file: beside it, named for it (scenarios.json ->
+    references, heldout_scenarios.json -> heldout_references, other.json -> other_references)."""
+    scenarios_file = Path(scenarios_file)
+    stem = scenarios_file.stem
+    if stem.endswith("scenarios"):
+        name = stem[: -len("scenarios")] + "references"
+    else:
+        name = stem + "_references"
+    return scenarios_file.parent / name
+
+
 def reference_path(key: str, renderer: str, folder: Path = REFERENCES_DIR) -> Path:
     return Path(folder) / key / f"{renderer}.png"
 
