@@ -359,6 +359,9 @@ _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "c
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
             "==": "equal", "!=": "notEqual"}
 _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
+# HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
+_PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
+_MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
@@ -395,6 +398,11 @@ class E:
     swizzle: tuple | None = None     # (start, end, letters) of a trailing vector swizzle
     row_index: tuple = ()            # edit ids of a matrix row read (dropped if written)
     literal: bool = False
+    # a matrix row read through ``transpose`` (M[i]): (M, its '[', its ']'), how it is written
+    # (_Parser.row_written); an element of one (M[i][j], M[i].y): (that row, the span of its
+    # column's '[j]' or '.y', the column's index text)
+    row: tuple = ()
+    element: tuple = ()
 
 
 class _Parser:
@@ -887,6 +895,10 @@ class _Parser:
                     self.coerce(it, t.element())
         elif t.base in self.sym.structs:
             self.edits.replace(open_.s, open_.e, f"{t.base}(")
+        elif t.matrix:  # HLSL fills a matrix's initialiser list row by row; GLSL's constructor by columns
+            self.edits.replace(open_.s, open_.e, f"transpose({Type(t.base, t.cols, t.dim).cg()}(")
+            self.edits.replace(close.s, close.e, "))")
+            return
         elif t.numeric:
             self.edits.replace(open_.s, open_.e, f"{t.cg()}(")
         else:
@@ -1056,7 +1068,6 @@ class _Parser:
         t = self.peek()
         if t.kind == "op" and t.text in ("=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="):
             self.next()
-            self.edits.drop(lhs.row_index)  # a matrix row written: left as is (known gap)
             rhs = self.assignment()
             if lhs.t is not None and rhs.t is not None:
                 if t.text == "=":
@@ -1066,6 +1077,12 @@ class _Parser:
                         self.truncate(rhs, lhs.t.dim)
                     elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
                         self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+            if lhs.element:
+                self.edits.drop(lhs.row_index)
+                self.element_written(lhs.element)
+            elif lhs.row and self.row_written(lhs.row, t, rhs):
+                self.edits.drop(lhs.row_index)
+            # else a matrix row written another way: the transposed read stays (GLSL refuses it)
             return E(lhs.s, rhs.e, lhs.t, False)
         return lhs
 
@@ -1252,10 +1269,10 @@ class _Parser:
                     self.fail("member")
                 e = self.member(e, m)
             elif t.text == "[" and t.kind == "op":
-                self.next()
+                bracket = self.next()
                 idx = self.expression()
                 close = self.expect("]")
-                e = self.index(e, idx, close)
+                e = self.index(e, idx, close, bracket)
             elif t.text in ("++", "--") and t.kind == "op":
                 self.next()
                 e = E(e.s, t.e, e.t, False)
@@ -1272,6 +1289,8 @@ class _Parser:
             fields = self.sym.structs.get(self.resolve_alias(ot.base), {})
             return E(obj.s, m.e, fields.get(m.text))
         self.next()
+        if ot is not None and ot.matrix and _MATRIX_ELEMENTS.fullmatch(m.text):
+            return self.matrix_elements(obj, m, ot)
         if ot is not None and ot.numeric and not ot.cols and _SWIZZLE.fullmatch(m.text) and \
                 all(_swizzle_index(ch) < ot.dim for ch in m.text):
             n = len(m.text)
@@ -1283,10 +1302,36 @@ class _Parser:
                 self.edits.open(obj.s, Type(ot.base, n).cg() + "(")
                 self.edits.replace(dot.s, m.e, ")")
                 return E(obj.s, m.e, Type(ot.base, n), True)
+            if obj.row and n == 1:  # M[i].y: an element, written as GLSL's M[1][i]
+                dot = self.toks[self.i - 2]
+                return E(obj.s, m.e, Type(ot.base), row_index=obj.row_index,
+                         element=(obj, (dot.s, m.e), str(_swizzle_index(m.text))))
             return E(obj.s, m.e, Type(ot.base, n), True, (m.s, m.e, m.text))
         return E(obj.s, m.e, None)
 
-    def index(self, obj: E, idx: E, close: Tok) -> E:
+    def matrix_elements(self, obj: E, m: Tok, ot: Type) -> E:
+        """HLSL's matrix swizzle: ``M._m12`` (row 1, column 2, from 0) or ``M._23`` (from 1),
+        several in a row for a vector (``M._m03_m13_m23``). GLSL names columns first: one
+        element is ``M[C][R]``; several, a constructor of those elements, ``M``'s text
+        repeated in it (only where that text is a name or a member, which reads the same twice)."""
+        picks = [(int(z[-2]), int(z[-1])) if "m" in z else (int(z[-2]) - 1, int(z[-1]) - 1)
+                 for z in re.findall(r"_m?\d\d", m.text)]
+        if any(r >= ot.dim or c >= ot.cols or r < 0 or c < 0 for r, c in picks):
+            self.fail("matrix element out of range")
+        dot = self.toks[self.i - 2]
+        base = Type(ot.base)
+        if len(picks) == 1:
+            r, c = picks[0]
+            self.edits.replace(dot.s, m.e, f"[{c}][{r}]")
+            return E(obj.s, m.e, base, True)
+        held = self.text[obj.s:obj.e]
+        if not _PLAIN.fullmatch(held):
+            return E(obj.s, m.e, None)  # an expression: left for the compiler to name
+        elements = ", ".join(f"{held}[{c}][{r}]" for r, c in picks)
+        self.edits.replace(obj.s, m.e, f"{Type(ot.base, len(picks)).cg()}({elements})")
+        return E(obj.s, m.e, Type(ot.base, len(picks)), True)
+
+    def index(self, obj: E, idx: E, close: Tok, bracket: Tok) -> E:
         if idx.t is not None and idx.t.scalar and idx.t.base == "float":
             self.wrap(idx, "int")
         ot = obj.t
@@ -1296,10 +1341,41 @@ class _Parser:
             return E(obj.s, close.e, ot.element())
         if ot.cols:  # HLSL m[i] is row i; GLSL's is column i
             ids = (self.edits.open(obj.s, "transpose("), self.edits.close(obj.e, ")"))
-            return E(obj.s, close.e, Type(ot.base, ot.cols), True, row_index=ids)
+            return E(obj.s, close.e, Type(ot.base, ot.cols), True, row_index=ids, row=(obj, bracket, close))
         if ot.vector:
+            if obj.row:  # M[i][j]: HLSL's row i, column j
+                return E(obj.s, close.e, Type(ot.base), row_index=obj.row_index,
+                         element=(obj, (bracket.s, close.e), self.text[bracket.e:close.s]))
             return E(obj.s, close.e, Type(ot.base))
         return E(obj.s, close.e, None)
+
+    def row_written(self, row, op: Tok, rhs: E) -> bool:
+        """``M[i] = v`` (HLSL's row i) as ``pbr_unity_set_row(M, i, v)`` (cg_compat.glsl); a
+        compound ``M[i] += v`` as ``pbr_unity_set_row(M, i, transpose(M)[i] + (v))``, where
+        ``M`` and ``i`` are names or literals (their text read twice reads the same). False:
+        not written here (the transposed read stays, which GLSL refuses as an l-value)."""
+        obj, bracket, close = row
+        matrix, index = self.text[obj.s:obj.e], self.text[bracket.e:close.s]
+        if op.text == "=":
+            middle = ", "
+        elif op.text in ("+=", "-=", "*=", "/=") and _PLAIN.fullmatch(matrix) and _PLAIN.fullmatch(index.strip()):
+            middle = f", transpose({matrix})[{index}] {op.text[0]} ("
+        else:
+            return False
+        self.edits.open(obj.s, "pbr_unity_set_row(")
+        self.edits.replace(bracket.s, bracket.e, ", ")
+        self.edits.replace(close.s, op.e, middle)
+        self.edits.close(rhs.e, ")" if op.text == "=" else "))")
+        return True
+
+    def element_written(self, element) -> bool:
+        """``M[i][j] = x`` (HLSL: row i, column j) as GLSL's ``M[j][i] = x``; ``M[i].y = x``
+        likewise (``element``: E.element)."""
+        row, (start, end), column = element
+        _, bracket, close = row.row
+        self.edits.replace(bracket.s, close.e, f"[{column}]")
+        self.edits.replace(start, end, f"[{self.text[bracket.e:close.s]}]")
+        return True
 
     def primary(self) -> E:
         t = self.next()
@@ -1364,7 +1440,13 @@ class _Parser:
         if fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
         if fname == "mul" and len(args) == 2:
+            self.mul_vector_truncated(*args)
             return E(*span, _mul_type(args[0].t, args[1].t), True)
+        if fname == "transpose" and len(args) == 1 and args[0].t is not None and args[0].t.matrix:
+            m = args[0].t
+            return E(*span, Type(m.base, m.cols, m.dim), True)
+        if fname == "determinant" and len(args) == 1 and args[0].t is not None and args[0].t.matrix:
+            return E(*span, Type("float"), True)
         sigs = self.sym.functions.get(fname) or self.sym.functions.get(self.resolve_alias(fname))
         if not sigs:
             return E(*span, None, True)
@@ -1376,6 +1458,20 @@ class _Parser:
             if p.qual == "in":
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
+
+    def mul_vector_truncated(self, a: E, b: E):
+        """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,
+        ``mul(m3x3, v4)``): FXC takes the vector's first components (warning X3206, implicit
+        truncation of a vector type; glslang's HLSL front end does the same with a warning,
+        "mul() matrix size mismatch"); GLSL has no such overload, so the cut is written out."""
+        if a.t is None or b.t is None:
+            return
+        if a.t.vector and b.t.matrix and a.t.dim > b.t.dim:
+            self.truncate(a, b.t.dim)
+            a.t = Type(a.t.base, b.t.dim)
+        elif a.t.matrix and b.t.vector and b.t.dim > a.t.cols:
+            self.truncate(b, a.t.cols)
+            b.t = Type(b.t.base, a.t.cols)
 
     def overload(self, sigs, args):
         sigs = [s for s in sigs if len(s.params) == len(args)]
@@ -1407,6 +1503,11 @@ class _Parser:
             n = args[0].t.dim
         base = "float" if any(a.t.base == "float" for a in args) or fname not in ("abs", "min", "max", "clamp", "sign") \
             else args[0].t.base
+        # GLSL's scalar overloads take scalars at all those positions or at none (clamp(vec3,
+        # float, float), smoothstep(float, float, vec3)): with a vector at one, HLSL's promoted
+        # scalar at another is written out (clamp(v, 0, hi) -> clamp(v, float3(0), hi))
+        if any(args[i].t.dim > 1 for i in scalar_ok if i < len(args)):
+            scalar_ok = ()
         for i, a in enumerate(args):
             if kind == "first" and i in scalar_ok:
                 continue
