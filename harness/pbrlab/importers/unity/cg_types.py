@@ -1503,6 +1503,12 @@ class _Parser:
             n = args[0].t.dim
         base = "float" if any(a.t.base == "float" for a in args) or fname not in ("abs", "min", "max", "clamp", "sign") \
             else args[0].t.base
+        if base == "bool":  # HLSL's arithmetic promotes a bool to int (abs(c < 0.5) is 0 or 1)
+            base = "int"
+        for a in args:  # GLSL's numeric built-ins take no bool: converted as HLSL does
+            if a.t.base == "bool":
+                self.wrap(a, Type(base, a.t.dim).cg())
+                a.t = Type(base, a.t.dim)
         # GLSL's scalar overloads take scalars at all those positions or at none (clamp(vec3,
         # float, float), smoothstep(float, float, vec3)): with a vector at one, HLSL's promoted
         # scalar at another is written out (clamp(v, 0, hi) -> clamp(v, float3(0), hi))
