@@ -21,6 +21,8 @@ program (offsets and lines kept):
   renamed them ``unity_ObjectToWorld`` / ``unity_WorldToObject`` and its shader upgrader rewrites
   a program that still spells them so (Unity 5.4 release notes, "Shaders: ... automatically
   upgraded"); the same rewrite here;
+- HLSL's multi-element matrix swizzle ``M._m03_m13_m23``: glslang reads one component; spelled
+  ``float3(M._m03, M._m13, M._m23)`` (``_MATRIX_SWIZZLE``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
 - a function the program defines under the name of one of UnityCG.cginc's (or another include's
@@ -107,14 +109,31 @@ def _rename_own_library_functions(text: str) -> str:
     return re.sub(r"\b(" + "|".join(sorted(own)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
 
 
+# HLSL's multi-element matrix swizzle on a name or member (``M._m03_m13_m23``, ``M._11_22``):
+# glslang's HLSL front end reads it wrong (one component: measured, session 41), GLSL has none.
+# Spelled as a constructor of the single elements (``float3(M._m03, M._m13, M._m23)``), which
+# both take (the type pass names GLSL's element); the object's text is read again per element,
+# so only where it is a name or a member chain.
+_MATRIX_SWIZZLE = re.compile(r"(?<![\w.])([A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*)\.((?:_m[0-3][0-3]){2,4}|(?:_[1-4][1-4]){2,4})\b")
+
+
+def _matrix_swizzles(text: str) -> str:
+    def spelled(m):
+        elements = re.findall(r"_m?\d\d", m.group(2))
+        return f"float{len(elements)}({', '.join(f'{m.group(1)}.{e}' for e in elements)})"
+    return _MATRIX_SWIZZLE.sub(spelled, text)
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
-    Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed."""
+    Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
+    a multi-element matrix swizzle as a constructor of its elements."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
+    text = _matrix_swizzles(text)
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

@@ -1310,26 +1310,20 @@ class _Parser:
         return E(obj.s, m.e, None)
 
     def matrix_elements(self, obj: E, m: Tok, ot: Type) -> E:
-        """HLSL's matrix swizzle: ``M._m12`` (row 1, column 2, from 0) or ``M._23`` (from 1),
-        several in a row for a vector (``M._m03_m13_m23``). GLSL names columns first: one
-        element is ``M[C][R]``; several, a constructor of those elements, ``M``'s text
-        repeated in it (only where that text is a name or a member, which reads the same twice)."""
+        """HLSL's matrix element ``M._m12`` (row 1, column 2, from 0) or ``M._23`` (from 1):
+        GLSL's ``M[C][R]`` (columns first). Several in a row (``M._m03_m13_m23``) were spelled
+        as a constructor of single ones before (cg_spellings._matrix_swizzles); one left (the
+        object an expression): no type, for the compiler to name."""
         picks = [(int(z[-2]), int(z[-1])) if "m" in z else (int(z[-2]) - 1, int(z[-1]) - 1)
                  for z in re.findall(r"_m?\d\d", m.text)]
-        if any(r >= ot.dim or c >= ot.cols or r < 0 or c < 0 for r, c in picks):
+        if len(picks) > 1:
+            return E(obj.s, m.e, None)
+        (r, c), = picks
+        if r >= ot.dim or c >= ot.cols:
             self.fail("matrix element out of range")
         dot = self.toks[self.i - 2]
-        base = Type(ot.base)
-        if len(picks) == 1:
-            r, c = picks[0]
-            self.edits.replace(dot.s, m.e, f"[{c}][{r}]")
-            return E(obj.s, m.e, base, True)
-        held = self.text[obj.s:obj.e]
-        if not _PLAIN.fullmatch(held):
-            return E(obj.s, m.e, None)  # an expression: left for the compiler to name
-        elements = ", ".join(f"{held}[{c}][{r}]" for r, c in picks)
-        self.edits.replace(obj.s, m.e, f"{Type(ot.base, len(picks)).cg()}({elements})")
-        return E(obj.s, m.e, Type(ot.base, len(picks)), True)
+        self.edits.replace(dot.s, m.e, f"[{c}][{r}]")
+        return E(obj.s, m.e, Type(ot.base), True)
 
     def index(self, obj: E, idx: E, close: Tok, bracket: Tok) -> E:
         if idx.t is not None and idx.t.scalar and idx.t.base == "float":
