@@ -23,6 +23,7 @@ program (offsets and lines kept):
   upgraded"); the same rewrite here;
 - HLSL's multi-element matrix swizzle ``M._m03_m13_m23``: glslang reads one component; spelled
   ``float3(M._m03, M._m13, M._m23)`` (``_MATRIX_SWIZZLE``);
+- Cg's four-argument ``tex2D(s, uv, dx, dy)``: ``tex2Dgrad``, the same lookup (``_TEX2D``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
 - a function the program defines under the name of one of UnityCG.cginc's (or another include's
@@ -40,7 +41,7 @@ from __future__ import annotations
 import functools
 import re
 
-from .source_text import matching_paren
+from .source_text import call_arguments, matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
 _SWITCH = re.compile(r"\bswitch\s*\(")
@@ -124,16 +125,33 @@ def _matrix_swizzles(text: str) -> str:
     return _MATRIX_SWIZZLE.sub(spelled, text)
 
 
+# Cg's tex2D(s, uv, dx, dy), the lookup with explicit derivatives, is tex2Dgrad(s, uv, dx, dy)
+# (Microsoft's HLSL reference, tex2D(s, t, ddx, ddy)); the harness's HLSL tex2D is a macro of two
+# arguments (unity_hlsl_support.hlsl), so the four-argument form is spelled tex2Dgrad in both.
+_TEX2D = re.compile(r"\btex2D\s*\(")
+
+
+def _tex2d_with_derivatives(text: str) -> str:
+    out, pos = [], 0
+    for m in _TEX2D.finditer(text):
+        found = call_arguments(text, m.end() - 1)
+        if m.start() < pos or found is None or len(found[0]) != 4:
+            continue
+        out += [text[pos:m.start()], "tex2Dgrad", text[m.start() + len("tex2D"):m.end()]]
+        pos = m.end()
+    return "".join(out) + text[pos:]
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
-    a multi-element matrix swizzle as a constructor of its elements."""
+    a multi-element matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
-    text = _matrix_swizzles(text)
+    text = _matrix_swizzles(_tex2d_with_derivatives(text))
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0
