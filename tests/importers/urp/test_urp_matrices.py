@@ -123,3 +123,54 @@ def test_hlsl_matrix_form_renders_its_float64_value(tmp_path, language, name, bo
     # control: the other reading (columns for rows, the vector uncut, the uniform unwritten)
     assert np.abs(expected - transposed).max() > 100 * BOUND
     assert (np.abs(image[covered][:, :3] - transposed).max(axis=1) > BOUND).all()
+
+
+_INCLUDING_PASS = """
+Shader "t/written in include" {
+    Properties { _Offset ("offset", Vector) = (0.1, 0.2, 0.3, 0.4) }
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            #include "written_pass.hlsl"
+            ENDHLSL
+        }
+    }
+}
+"""
+
+# the pass's functions in the shader's own include, which declares _Offset and writes it in the
+# vertex function (VKev's StylizeGrass_ForwardLit_Pass.hlsl does so with _WindTexture_ST)
+_WRITTEN_PASS_HLSL = """
+float4 _Offset;
+struct Attributes { float4 positionOS : POSITION; };
+struct Varyings { float4 positionCS : SV_POSITION; float4 offset : TEXCOORD0; };
+Varyings vert(Attributes IN) {
+    Varyings OUT;
+    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+    _Offset.zw += 0.25;
+    OUT.offset = _Offset;
+    return OUT;
+}
+float4 frag(Varyings IN) : SV_Target { return float4(IN.offset.zw, _Offset.z, 1); }
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_uniform_written_in_an_included_pass_file(tmp_path, language):
+    """The vertex stage's copy: z + 0.25, w + 0.25; the fragment's own: the property's z.
+    Control: the unwritten uniform (0.3, 0.4) is rejected."""
+    (tmp_path / "written_pass.hlsl").write_text(textwrap.dedent(_WRITTEN_PASS_HLSL))
+    shader = tmp_path / "included.shader"
+    shader.write_text(textwrap.dedent(_INCLUDING_PASS))
+    image = render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language).linear
+    covered = image[..., 3] == 1.0
+    assert covered.mean() > 0.3
+    expected, unwritten = np.array([0.55, 0.65, 0.3]), np.array([0.3, 0.4, 0.3])
+    got = image[covered][:, :3].astype(np.float64)
+    assert (np.abs(got - expected).max(axis=1) <= BOUND).all(), got[0]
+    assert (np.abs(got - unwritten).max(axis=1) > BOUND).all()

@@ -193,6 +193,7 @@ class VertexFragmentPass:
     srp: bool = False
     engine_filled: tuple = ()       # engine-set globals the scene fills (engine_inputs.FILLED)
     written_globals: tuple = ()     # ((name, type), ...) globals the program writes (written_globals.py)
+    rewritten_includes: dict = field(default_factory=dict)  # {path: text}: its own includes so rewritten
     output_fields = {}              # (a surface program's output struct; none here)
     kind = "vertex-fragment"
 

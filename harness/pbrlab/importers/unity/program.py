@@ -128,6 +128,8 @@ def program_include(shader) -> tuple[str, dict]:
         others = [p for other, protos in prototypes.items() if other != key for p in protos]
         return context + "\n" + "\n".join(dict.fromkeys(others))
 
+    rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
+
     def relinked(text: str, where: Path) -> str:
         def relink(m):
             target = resolve_included(m.group(2), where)
@@ -136,7 +138,7 @@ def program_include(shader) -> tuple[str, dict]:
             key = target.resolve()
             if key not in names:
                 names[key] = _port_include(key)
-                body = shaders.strip_bom(target.read_text(encoding="utf-8"))
+                body = shaders.strip_bom(rewritten.get(key) or target.read_text(encoding="utf-8"))
                 virtual[names[key]] = shaders.VirtualFile(
                     relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
                     str(target), 1)
