@@ -9,7 +9,8 @@ pixel holds the same colour; it is compared with its float64 value from HLSL's d
 semantics (Microsoft's HLSL reference: matrices are row-major as written, ``m[i]`` is row ``i``,
 ``_mRC`` / ``_RC`` name row R and column C (from 0 / from 1), an initialiser list fills rows,
 ``mul(v, M)`` is the row vector times M, a conversion to a smaller matrix keeps the upper-left
-block, a vector longer than the matrix side it meets is truncated (FXC warning X3206)).
+block, a vector longer than the matrix side it meets is truncated (FXC warning X3206); arrays of
+arrays as C's).
 Controls: the transposed (GLSL's column) reading of the same program is rejected by the bound.
 """
 
@@ -45,6 +46,7 @@ Shader "t/%(name)s" {
             CBUFFER_START(UnityPerMaterial)
             float4 _Offset;
             CBUFFER_END
+            static const float W[2][3] = {{1, 2, 3}, {4, 5, 6}};
             float4x4 Big() { float4x4 b = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}; return b; }
             float3 RowOne(float3x3 a) { return a[1]; }
             float3x3 UpperLeft() { return Big(); }
@@ -97,6 +99,10 @@ CASES = [
     ("mixed_intrinsic_arguments", "return float4(clamp(float3(-1, 0.5, 2), 0, float3(1, 1, 1.5))"
      " + abs(0.3 < 0.5) * float3(0, 0, 0.25), 1);",
      np.array([0.0, 0.5, 1.75]), np.array([-1.0, 0.5, 2.25])),
+    # HLSL's arrays of arrays (C's: W[i][j] is row i, element j), a global and a local
+    ("arrays_of_arrays", "float a[2][2]; a[0][0] = 1; a[0][1] = 2; a[1][0] = 3; a[1][1] = 4;"
+     " return float4(W[1][2] + a[1][0], W[0][1] * a[0][1], W[1][0], 1);",
+     np.array([6.0 + 3.0, 2.0 * 2.0, 4.0]), np.array([3.0 + 2.0, 4.0 * 3.0, 2.0])),
     # _Offset written in the vertex stage (zw + 0.25), passed on, written again in the fragment
     # stage from the uniform's own value (xy * 2): each stage's copy starts from the material's
     ("written_material_uniform", "_Offset.xy *= 2.0; return float4(_Offset.x + IN.offset.x, _Offset.y + IN.offset.w, IN.offset.z, 1);",

@@ -59,6 +59,7 @@ class Type:
     dim: int = 1
     cols: int = 0
     array: int = 0
+    inner: tuple = ()  # an array of arrays' inner lengths (``float w[2][3]``: array 2, inner (3,))
 
     @property
     def numeric(self):
@@ -77,10 +78,15 @@ class Type:
         return self.numeric and self.cols > 0
 
     def element(self):
+        if self.inner:
+            return Type(self.base, self.dim, self.cols, self.inner[0], self.inner[1:])
         return Type(self.base, self.dim, self.cols)
 
     def cg(self) -> str:
-        """The Cg spelling (port.py renames it)."""
+        """The Cg spelling (port.py renames it); an array's, GLSL's ``float[3]``."""
+        if self.array:
+            element = Type(self.base, self.dim, self.cols)
+            return element.cg() + "".join(f"[{n}]" for n in (self.array, *self.inner))
         if self.cols:
             return f"{self.base}{self.dim}x{self.cols}"
         if self.base in _BASES:
@@ -698,6 +704,15 @@ class _Parser:
                 self.skip_balanced("(", ")")
 
     def array_suffix(self, t):
+        """``t`` with the array lengths that follow a declared name (``[3]``, ``[]``, ``[2][3]``:
+        an array of arrays, which GLSL takes with GL_ARB_arrays_of_arrays, generate.prelude)."""
+        t = self.one_array_suffix(t)
+        inner = []
+        while t.array and self.at("["):
+            inner.append(self.one_array_suffix(Type(t.base, t.dim, t.cols)).array)
+        return Type(t.base, t.dim, t.cols, t.array, tuple(inner)) if inner else t
+
+    def one_array_suffix(self, t):
         if self.accept("["):
             if self.accept("]"):
                 return Type(t.base, t.dim, t.cols, -1)
@@ -889,7 +904,8 @@ class _Parser:
         close = self.expect("}")
         if t.array:
             size = str(t.array) if t.array > 0 else str(len(items))
-            self.edits.replace(open_.s, open_.e, f"{t.element().cg()}[{size}](")
+            self.edits.replace(open_.s, open_.e, f"{Type(t.base, t.dim, t.cols).cg()}[{size}]"
+                                                 + "".join(f"[{n}]" for n in t.inner) + "(")
             for it in items:
                 if it is not None:
                     self.coerce(it, t.element())
@@ -1247,7 +1263,7 @@ class _Parser:
         for a struct (in declaration order), each element's for an array."""
         if ty.array > 0:
             element = self.zero_value(ty.element())
-            return f"{ty.element().cg()}[{ty.array}]({', '.join([element] * ty.array)})"
+            return f"{ty.cg()}({', '.join([element] * ty.array)})"
         if ty.base in self.sym.conditional:
             return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:

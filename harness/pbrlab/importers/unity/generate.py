@@ -269,11 +269,16 @@ def _defines(defines: dict) -> str:
     return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
 
 
+# HLSL's arrays of arrays (``float w[2][3]``; the type pass keeps them, cg_types.array_suffix):
+# GLSL 4.30's, which GLSL 3.30 takes with this extension (every Mesa driver has it).
+ARRAYS_OF_ARRAYS = "#extension GL_ARB_arrays_of_arrays : enable"
+
+
 def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     """What comes before a Unity program in either stage: the harness's defines and scene
     shading, Unity's generated-code names, the Cg intrinsics (GLSL) and the pbr/unity/ library."""
     suffix = SUFFIX[language]
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     stage = {"PBRLAB_UNITY_VERTEX_STAGE": 1, "PBR_UNITY_VERTEX_STAGE": 1} if vertex_stage else {}
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage})]
     if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
@@ -289,7 +294,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     """The whole fragment program; ``program`` is the shader's text in ``language``
     (the CGPROGRAM for HLSL, its port for GLSL), ``display`` its file name in messages."""
     suffix = SUFFIX[language]
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1}),
              f'#include "scene_shading{suffix}"',
              '#include "unity_surface.inc"']
@@ -404,7 +409,7 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     Input members it wrote, as the mesh fragment program reads them."""
     suffix = SUFFIX[language]
     v = shader.vertex
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, "PBRLAB_UNITY_VERTEX_STAGE": 1,
                        "PBR_UNITY_VERTEX_STAGE": 1}),
              f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
