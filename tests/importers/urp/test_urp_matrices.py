@@ -32,7 +32,8 @@ LANGUAGES = ("glsl", "hlsl")
 # barycentric weight a float32 plane equation at window coordinates up to corpus.SIZE, 64).
 BOUND = 4 * 64 * 2.0 ** -24
 
-_PASS = """
+# a URP pass around %(program)s, with the property _Offset
+_SHADER = """
 Shader "t/%(name)s" {
     Properties { _Offset ("offset", Vector) = (0.1, 0.2, 0.3, 0.4) }
     SubShader {
@@ -43,12 +44,21 @@ Shader "t/%(name)s" {
             #pragma vertex vert
             #pragma fragment frag
             #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+%(program)s
+            ENDHLSL
+        }
+    }
+}
+"""
+
+_PROGRAM = """
             CBUFFER_START(UnityPerMaterial)
             float4 _Offset;
             CBUFFER_END
             static const float W[2][3] = {{1, 2, 3}, {4, 5, 6}};
             float4x4 Big() { float4x4 b = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}; return b; }
             float3 RowOne(float3x3 a) { return a[1]; }
+            float Half(float x) { return x * 0.5; }
             float3x3 UpperLeft() { return Big(); }
             struct Attributes { float4 positionOS : POSITION; };
             struct Varyings { float4 positionCS : SV_POSITION; float3x3 tbn : TEXCOORD1; float4 offset : TEXCOORD5; };
@@ -69,12 +79,7 @@ Shader "t/%(name)s" {
             float4 frag(Varyings IN) : SV_Target {
                 float4x4 B = Big();
                 %(body)s
-            }
-            ENDHLSL
-        }
-    }
-}
-"""
+            }"""
 
 BIG = np.arange(1.0, 17.0).reshape(4, 4)           # the rows as the initialiser list lists them
 V = np.array([1.0, 0.1, 0.01])
@@ -103,6 +108,9 @@ CASES = [
     ("arrays_of_arrays", "float a[2][2]; a[0][0] = 1; a[0][1] = 2; a[1][0] = 3; a[1][1] = 4;"
      " return float4(W[1][2] + a[1][0], W[0][1] * a[0][1], W[1][0], 1);",
      np.array([6.0 + 3.0, 2.0 * 2.0, 4.0]), np.array([3.0 + 2.0, 4.0 * 3.0, 2.0])),
+    # a float2 passed to a float parameter: FXC takes its x (warning X3206; glslang refuses it)
+    ("vector_argument_truncated", "return float4(Half(float2(0.5, 7)), 0, 0, 1);",
+     np.array([0.25, 0.0, 0.0]), np.array([3.5, 0.0, 0.0])),
     # _Offset written in the vertex stage (zw + 0.25), passed on, written again in the fragment
     # stage from the uniform's own value (xy * 2): each stage's copy starts from the material's
     ("written_material_uniform", "_Offset.xy *= 2.0; return float4(_Offset.x + IN.offset.x, _Offset.y + IN.offset.w, IN.offset.z, 1);",
@@ -113,7 +121,8 @@ CASES = [
 def _render(tmp_path, name, body, language):
     shader = tmp_path / f"{name}.shader"
     vertex = "_Offset.zw += 0.25;" if "written" in name else ""
-    shader.write_text(textwrap.dedent(_PASS % {"name": name, "body": body, "vertex": vertex}))
+    program = _PROGRAM % {"body": body, "vertex": vertex}
+    shader.write_text(textwrap.dedent(_SHADER % {"name": name, "program": program}))
     data = corpus.scene_for(shader)
     return render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
 
@@ -130,24 +139,6 @@ def test_hlsl_matrix_form_renders_its_float64_value(tmp_path, language, name, bo
     assert np.abs(expected - transposed).max() > 100 * BOUND
     assert (np.abs(image[covered][:, :3] - transposed).max(axis=1) > BOUND).all()
 
-
-_INCLUDING_PASS = """
-Shader "t/written in include" {
-    Properties { _Offset ("offset", Vector) = (0.1, 0.2, 0.3, 0.4) }
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-            #include "written_pass.hlsl"
-            ENDHLSL
-        }
-    }
-}
-"""
 
 # the pass's functions in the shader's own include, which declares _Offset and writes it in the
 # vertex function (VKev's StylizeGrass_ForwardLit_Pass.hlsl does so with _WindTexture_ST)
@@ -172,7 +163,8 @@ def test_uniform_written_in_an_included_pass_file(tmp_path, language):
     Control: the unwritten uniform (0.3, 0.4) is rejected."""
     (tmp_path / "written_pass.hlsl").write_text(textwrap.dedent(_WRITTEN_PASS_HLSL))
     shader = tmp_path / "included.shader"
-    shader.write_text(textwrap.dedent(_INCLUDING_PASS))
+    shader.write_text(textwrap.dedent(_SHADER % {"name": "written in include",
+                                                 "program": '            #include "written_pass.hlsl"'}))
     image = render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language).linear
     covered = image[..., 3] == 1.0
     assert covered.mean() > 0.3

@@ -413,6 +413,7 @@ class E:
 
 class _Parser:
     def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
+        self.fxc_edits = Edits()  # what the HLSL as written needs too (fxc_conversions)
         self.text = text
         self.toks, self.directives = tokenize(text)
         self.i = 0
@@ -1466,8 +1467,26 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
+                self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
+
+    def fxc_argument(self, a: E, param: Type):
+        """A vector argument longer than the parameter it meets (``UnpackUV(v.texcoord1)``, a
+        float2 to a float): FXC passes its first components (warning X3206, implicit truncation
+        of a vector type); glslang's HLSL front end finds no overload. Recorded for the HLSL
+        text as written (``fxc_conversions``); the GLSL port's coerce truncates it the same."""
+        if a.t is None or not (a.t.numeric and param.numeric) or a.t.cols or param.cols \
+                or a.t.dim <= param.dim or a.t.dim == 1:
+            return
+        if a.swizzle is not None:
+            s, end, letters = a.swizzle
+            self.fxc_edits.replace(s, end, letters[:param.dim])
+        elif a.postfix:
+            self.fxc_edits.close(a.e, "." + "xyzw"[:param.dim])
+        else:
+            self.fxc_edits.open(a.s, "(")
+            self.fxc_edits.close(a.e, ")." + "xyzw"[:param.dim])
 
     def mul_vector_truncated(self, a: E, b: E):
         """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,
@@ -1654,6 +1673,18 @@ def convert_detail(text: str, symbols: Symbols | None = None, srp: bool = False)
 
 def convert(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
     return convert_detail(text, symbols, srp).text
+
+
+def fxc_conversions(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
+    """``text`` (HLSL) with the implicit conversions FXC makes and glslang's HLSL front end
+    refuses spelled out (_Parser.fxc_argument), nothing else changed; lines kept."""
+    symbols = (symbols or library()).copy()
+    try:
+        parser = _Parser(text, symbols, srp=srp)
+    except CgSyntaxError:
+        return text
+    parser.program()
+    return parser.fxc_edits.apply(text)
 
 
 def with_declarations(text: str, srp: bool = False) -> Symbols:

@@ -19,6 +19,7 @@ Programs are kept in the context's scene-program cache (``programs.program_cache
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import re
 from pathlib import Path
@@ -30,7 +31,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import cg_spellings, generate, port, texture_arrays
+from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
@@ -158,8 +159,19 @@ def ported_sources(virtual: dict) -> list[Path]:
 
 def hlsl_program(shader) -> str:
     """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
-    spellings glslang takes (cg_spellings)."""
-    return cg_spellings.respelled(shaders.strip_bom(shader.program))
+    spellings glslang takes (cg_spellings) and with the implicit conversions FXC makes where
+    glslang refuses them spelled out (cg_types.fxc_conversions: the functions of the files it
+    includes known too)."""
+    return _fxc_spelled(cg_spellings.respelled(shaders.strip_bom(shader.program)),
+                        included_text(shader.program, shader.path.parent), getattr(shader, "srp", False))
+
+
+@functools.lru_cache(maxsize=64)
+def _fxc_spelled(text: str, included: str, srp: bool) -> str:
+    """hlsl_program's type pass, once per text (each stage of a pass compiles the same program;
+    the key holds the included files' text, so an edit to one is seen)."""
+    symbols = cg_types.with_declarations(cg_spellings.respelled(included), srp) if included.strip() else None
+    return cg_types.fxc_conversions(text, symbols, srp)
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):
