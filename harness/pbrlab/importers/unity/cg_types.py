@@ -31,9 +31,17 @@ Conversions (HLSL semantics -> GLSL spelling), inserted in Cg spelling (``float3
   * float ``%`` -> ``fmod`` (cg_compat.glsl); a float index -> ``int(i)``;
   * swizzles of scalars: ``x.xxx`` -> ``float3(x)``, ``x.x`` -> ``x``;
   * casts ``(float3)x`` -> ``float3(x)``; array initialisers ``{1, 2, 3}`` -> ``float[3](1, 2, 3)``;
-  * matrices: ``floatRxC(rows...)`` -> ``transpose(floatCxR(rows...))`` (HLSL's constructor
-    takes rows, GLSL's columns; port.py names floatRxC matCxR), ``m[i]`` read as a row ->
-    ``transpose(m)[i]`` (a row written, ``m[i] = v``, is left: a known gap);
+  * matrices: ``floatRxC(rows...)`` and an initialiser list ``{rows...}`` ->
+    ``transpose(floatCxR(rows...))`` (HLSL's constructor takes rows, GLSL's columns; port.py
+    names floatRxC matCxR), ``m[i]`` read as a row -> ``transpose(m)[i]``, written ->
+    ``pbr_unity_set_row(m, i, v)`` (cg_compat.glsl), an element ``m[i][j]`` / ``m[i].y``
+    written -> ``m[j][i]``, ``m._mRC`` / ``m._RC`` -> ``m[C][R]``; a larger matrix to a smaller
+    (assignment, argument, return: FXC keeps the upper-left block) -> ``floatRxC(m)``;
+    ``transpose`` / ``determinant`` typed; ``mul`` of a vector longer than the matrix side it
+    meets -> the vector's first components (FXC's truncation);
+  * arrays of arrays (``float w[2][3]``) kept, with GLSL's nested constructors;
+  * for the HLSL as written too (``fxc_conversions``): a vector argument longer than its
+    function's parameter -> its first components, as FXC passes it;
   * literal suffixes GLSL lacks (``0.5h``) dropped; ``[unroll]``-style attributes dropped;
   * ``static`` dropped, ``uniform`` added to the other global variables, ``inline`` dropped;
   * identifiers that are GLSL reserved words or the names cg_compat.glsl's macros expand to
