@@ -514,11 +514,12 @@ class _Parser:
     # --- top level
     def program(self):
         while self.peek().kind != "eof":
-            start, mark = self.i, self.edits.mark()
+            start, mark, fxc_mark = self.i, self.edits.mark(), self.fxc_edits.mark()
             try:
                 self.external()
             except CgSyntaxError:
                 self.edits.drop_after(mark)
+                self.fxc_edits.drop_after(fxc_mark)
                 self.scopes, self.ret = [], None
                 self.i = start
                 self.skip_declaration()
@@ -1475,7 +1476,8 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
-                self.fxc_argument(a, p.type)
+                if fname not in library().functions:  # the program's own (or an include's)
+                    self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
 
