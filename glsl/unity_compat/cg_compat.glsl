@@ -3,7 +3,7 @@
 // Provides: saturate (float, vec2-4), lerp (= mix), frac (= fract), rsqrt (= inversesqrt),
 //           fmod (C's truncating remainder: x - y * trunc(x / y), NOT GLSL's mod), atan2(y, x),
 //           sincos(x, s, c), lit(NdotL, NdotH, m) (HLSL's lighting coefficients), pbr_unity_select(bvecN c, vecN a, vecN b) (HLSL's componentwise
-//           c ? a : b, written by port-unity), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), fwidth (GLSL's; 0 in a vertex stage: a fragment function the vertex stage compiles but never calls), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
+//           c ? a : b, written by port-unity), pbr_unity_set_row(inout M, i, v) (HLSL's row write M[i] = v), ddx / ddy (= dFdx / dFdy; 0 in a vertex stage, which has no derivatives), fwidth (GLSL's; 0 in a vertex stage: a fragment function the vertex stage compiles but never calls), mul(M, v) / mul(v, M) / mul(M, N) for mat2, mat3 and mat4,
 //           clip(x) (discards when any component < 0; a no-op in a vertex stage, where GLSL
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
 //           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex3D, tex2Dlod (uv.w is
@@ -64,6 +64,15 @@ vec4 fmod(vec4 x, float y) { return fmod(x, vec4(y)); }
 vec2 pbr_unity_select(bvec2 c, vec2 a, vec2 b) { return mix(b, a, c); }
 vec3 pbr_unity_select(bvec3 c, vec3 a, vec3 b) { return mix(b, a, c); }
 vec4 pbr_unity_select(bvec4 c, vec4 a, vec4 b) { return mix(b, a, c); }
+
+// HLSL's row write M[i] = v (HLSL indexes a matrix by rows, GLSL by columns): the type pass of
+// port-unity writes pbr_unity_set_row(M, i, v), which returns v as the assignment does. GLSL's
+// matCxR is HLSL's floatRxC: a row has C components.
+vec2 pbr_unity_set_row(inout mat2 m, int i, vec2 v) { m[0][i] = v.x; m[1][i] = v.y; return v; }
+vec3 pbr_unity_set_row(inout mat3 m, int i, vec3 v) { m[0][i] = v.x; m[1][i] = v.y; m[2][i] = v.z; return v; }
+vec4 pbr_unity_set_row(inout mat4 m, int i, vec4 v) { m[0][i] = v.x; m[1][i] = v.y; m[2][i] = v.z; m[3][i] = v.w; return v; }
+vec3 pbr_unity_set_row(inout mat3x4 m, int i, vec3 v) { m[0][i] = v.x; m[1][i] = v.y; m[2][i] = v.z; return v; }
+vec4 pbr_unity_set_row(inout mat4x3 m, int i, vec4 v) { m[0][i] = v.x; m[1][i] = v.y; m[2][i] = v.z; m[3][i] = v.w; return v; }
 
 // HLSL's sincos(x, out s, out c): both at once.
 #define sincos(x, s, c) { s = sin(x); c = cos(x); }

@@ -111,17 +111,19 @@ def map_messages(log: str, name: str, include_dirs=()) -> str:
     return "\n".join(out)
 
 
-def _bom_free_search(text: str, include_dirs, tmp: Path) -> list[Path]:
+def _bom_free_search(text: str, include_dirs, tmp: Path, replaced=None) -> list[Path]:
     """The -I directories for glslang, which reads includes itself and fails on a UTF-8
     byte-order mark ("unexpected HASH_TOKEN"). When a file the text includes (recursively,
     from ``include_dirs``) starts with one, every included file is copied, without BOMs, into
     a mirror of the file system under ``tmp`` (at its absolute path), and each directory is
     preceded by its mirror: every include resolves to the same file as before, minus the mark,
     including one that climbs out of its directory (``../Include/x.hlsl``) and one resolved
-    from the including file's folder (a copy's folder holds its siblings' copies too)."""
+    from the including file's folder (a copy's folder holds its siblings' copies too).
+    ``replaced``: {resolved path: text} compiled in those files' place (the same mirror)."""
     dirs = [Path(d).resolve() for d in include_dirs]
     closure = include_closure(text, dirs)
-    if not any(path.read_bytes().startswith(_BOM) for path in closure):
+    replaced = {Path(p).resolve(): t for p, t in (replaced or {}).items()}
+    if not replaced and not any(path.read_bytes().startswith(_BOM) for path in closure):
         return dirs
     mirror = tmp / "bom-free"
 
@@ -131,7 +133,7 @@ def _bom_free_search(text: str, include_dirs, tmp: Path) -> list[Path]:
     for path in closure:
         copy = mirrored(path)
         copy.parent.mkdir(parents=True, exist_ok=True)
-        data = path.read_bytes()
+        data = replaced[path.resolve()].encode("utf-8") if path.resolve() in replaced else path.read_bytes()
         copy.write_bytes(data[len(_BOM):] if data.startswith(_BOM) else data)
     search = []
     for directory in dirs:
@@ -218,12 +220,13 @@ def _run_tool(cmd: list, name: str, **kwargs) -> subprocess.CompletedProcess:
 
 
 def compile_spirv(text: str, name: str = "<hlsl>", include_dirs=(), *, optimize: bool = False,
-                  extra_args=(), stage: str = "frag", entry: str = "main") -> bytes:
-    """HLSL source -> SPIR-V bytes; ShaderCompileError (mapped messages) if it fails."""
+                  extra_args=(), stage: str = "frag", entry: str = "main", replaced=None) -> bytes:
+    """HLSL source -> SPIR-V bytes; ShaderCompileError (mapped messages) if it fails.
+    ``replaced``: {path: text} read in place of those included files (_bom_free_search)."""
     glslang = tool(GLSLANG)
     check_limits(text, name, include_dirs)
     with tempfile.TemporaryDirectory(prefix="pbrlab-hlsl-") as tmp:
-        search = _bom_free_search(text, include_dirs, Path(tmp))
+        search = _bom_free_search(text, include_dirs, Path(tmp), replaced)
         include_args = [f"-I{d}" for d in search] + [f"-I{HLSL_ROOT.resolve()}"]
         src = Path(tmp) / _ENTRY_NAME
         out = Path(tmp) / "out.spv"

@@ -12,6 +12,7 @@ SamplerState pbrlab_unity_sampler;
 #define tex2Dlod(t, uv) (t).SampleLevel(pbrlab_unity_sampler, (uv).xy, (uv).w)
 #define tex2Dbias(t, uv) (t).SampleBias(pbrlab_unity_sampler, (uv).xy, (uv).w)
 #define tex2Dproj(t, uv) (t).Sample(pbrlab_unity_sampler, (uv).xy / (uv).w)
+#define tex2Dgrad(t, uv, dx, dy) (t).SampleGrad(pbrlab_unity_sampler, (uv), (dx), (dy))
 #define texCUBE(t, d) (t).Sample(pbrlab_unity_sampler, (d))
 #define texCUBElod(t, d) (t).SampleLevel(pbrlab_unity_sampler, (d).xyz, (d).w)
 #define sampler3D Texture3D

@@ -36,7 +36,7 @@ def test_an_include_outside_its_search_dir_compiles_with_or_without_a_bom(tmp_pa
 def test_the_mark_is_what_glslang_refuses(tmp_path, monkeypatch):
     """Control: handing glslang the original directories fails on the mark."""
     shader_dir = _project(tmp_path, bom=True)
-    monkeypatch.setattr(hlsl, "_bom_free_search", lambda text, dirs, tmp: [shader_dir])
+    monkeypatch.setattr(hlsl, "_bom_free_search", lambda text, dirs, tmp, replaced=None: [shader_dir])
     with pytest.raises(ShaderCompileError):
         hlsl.compile_spirv('#include "../Include/tint.hlsl"\n' + ENTRY, "<bom>", [shader_dir])
 

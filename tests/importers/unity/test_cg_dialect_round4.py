@@ -93,6 +93,9 @@ DX11 = "        Texture2D _MainTex; SamplerState sampler_MainTex;"
     # (explicit derivatives: llvmpipe's implicit LOD differs from textureGrad's by up to 3e-3 here)
     ("return _MainTex.SampleGrad(sampler_MainTex, i.uv, ddx(i.uv), ddy(i.uv));",
      "return tex2Dgrad(_MainTex, i.uv, ddx(i.uv), ddy(i.uv));"),
+    # Cg's four-argument tex2D is the same lookup (cg_spellings: spelled tex2Dgrad in both)
+    ("return _MainTex.SampleGrad(sampler_MainTex, i.uv, ddx(i.uv), ddy(i.uv));",
+     "return tex2D(_MainTex, i.uv, ddx(i.uv), ddy(i.uv));"),
     ("return _MainTex.Load(int3(3, 5, 0));", "return tex2Dlod(_MainTex, float4(3.5 / 8, 5.5 / 8, 0, 0));"),
 ])
 def test_direct3d11_texture_objects_read_what_the_cg_lookup_reads(tmp_path, checker, language, dx11, cg):

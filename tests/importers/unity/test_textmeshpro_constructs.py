@@ -12,7 +12,7 @@ is under the Unity Companion License: none of its text is here):
   the model's reader took as true, so the entry points passed a member the variant lacks
   (conditionals.py);
 - ``UnpackUV(float)`` given a ``float2``: FXC truncates, glslang's HLSL finds no overload
-  (argument_truncation.py);
+  (cg_types.fxc_conversions);
 - a material's keyword that adds a varying under its ``#if`` (``UNDERLAY_ON``): the model of the
   pass is read with the material's keywords (material.py), so the entry points pass it;
 - Unity 2020's ``UIGammaToLinear`` (UnityUI.cginc), which TMP of that version calls.
@@ -35,7 +35,6 @@ from pbrlab.checking import unity_corpus as corpus
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.unity import cg_types, program
 from pbrlab.importers.loader import parse_scene
-from pbrlab.importers.unity.argument_truncation import truncated_arguments
 from pbrlab.importers.unity.conditionals import _evaluate
 from pbrlab.maths.reference.color import srgb_to_linear
 from pbrlab.render.renderer import render_scene
@@ -220,7 +219,7 @@ def test_textmeshpro_constructs_change_the_pixel_as_unity_does(tmp_path, languag
     (cg_types._Parser, "bool_of_unknown", lambda self, e, target: None, "glsl",
      "cannot be assigned to variable of type bool"),
     (cg_types._Parser, "comma_after_directive", lambda self, comma: None, "glsl", "syntax error"),
-    (program, "truncated_arguments", lambda text, srp=False: text, "hlsl", "'UnpackUV' : no matching overloaded"),
+    (program, "_fxc_spelled", lambda text, included, srp: text, "hlsl", "'UnpackUV' : no matching overloaded"),
 ])
 def test_without_each_mend_the_compiler_refuses_as_before(tmp_path, monkeypatch, owner, name, replacement,
                                                          language, refusal):
@@ -252,7 +251,7 @@ def test_argument_truncation_edits_only_wider_arguments_of_the_programs_function
             return float4(f(p), g(q).xy, f(p.y)) + f(unknown) + UnityFunction(p);
         }
     """)
-    out = truncated_arguments(program)
+    out = cg_types.fxc_conversions(program)
     assert "f(p.x)" in out and "g(q)" in out and "f(p.y)" in out and "f(unknown)" in out
     assert out.replace("f(p.x)", "f(p)", 1) == program
 

@@ -21,6 +21,9 @@ program (offsets and lines kept):
   renamed them ``unity_ObjectToWorld`` / ``unity_WorldToObject`` and its shader upgrader rewrites
   a program that still spells them so (Unity 5.4 release notes, "Shaders: ... automatically
   upgraded"); the same rewrite here;
+- HLSL's multi-element matrix swizzle ``M._m03_m13_m23``: glslang reads one component; spelled
+  ``float3(M._m03, M._m13, M._m23)`` (``_MATRIX_SWIZZLE``);
+- Cg's four-argument ``tex2D(s, uv, dx, dy)``: ``tex2Dgrad``, the same lookup (``_TEX2D``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
 - a function the program defines under the name of one of UnityCG.cginc's (or another include's
@@ -39,7 +42,7 @@ import functools
 import re
 
 from . import combined_samplers
-from .source_text import matching_paren
+from .source_text import call_arguments, matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
 _SWITCH = re.compile(r"\bswitch\s*\(")
@@ -108,16 +111,50 @@ def _rename_own_library_functions(text: str) -> str:
     return re.sub(r"\b(" + "|".join(sorted(own)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
 
 
+# HLSL's multi-element matrix swizzle on a name or member (``M._m03_m13_m23``, ``M._11_22``):
+# glslang's HLSL front end reads it wrong (one component: measured, session 41), GLSL has none.
+# Spelled as a constructor of the single elements (``float3(M._m03, M._m13, M._m23)``), which
+# both take (the type pass names GLSL's element); the object's text is read again per element,
+# so only where it is a name or a member chain.
+_MATRIX_SWIZZLE = re.compile(r"(?<![\w.])([A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*)\.((?:_m[0-3][0-3]){2,4}|(?:_[1-4][1-4]){2,4})\b")
+
+
+def _matrix_swizzles(text: str) -> str:
+    def spelled(m):
+        elements = re.findall(r"_m?\d\d", m.group(2))
+        return f"float{len(elements)}({', '.join(f'{m.group(1)}.{e}' for e in elements)})"
+    return _MATRIX_SWIZZLE.sub(spelled, text)
+
+
+# Cg's tex2D(s, uv, dx, dy), the lookup with explicit derivatives, is tex2Dgrad(s, uv, dx, dy)
+# (Microsoft's HLSL reference, tex2D(s, t, ddx, ddy)); the harness's HLSL tex2D is a macro of two
+# arguments (unity_hlsl_support.hlsl), so the four-argument form is spelled tex2Dgrad in both.
+_TEX2D = re.compile(r"\btex2D\s*\(")
+
+
+def _tex2d_with_derivatives(text: str) -> str:
+    out, pos = [], 0
+    for m in _TEX2D.finditer(text):
+        found = call_arguments(text, m.end() - 1)
+        if m.start() < pos or found is None or len(found[0]) != 4:
+            continue
+        out += [text[pos:m.start()], "tex2Dgrad", text[m.start() + len("tex2D"):m.end()]]
+        pos = m.end()
+    return "".join(out) + text[pos:]
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
-    a sampler state that tex2D samples declared as a sampler2D (combined_samplers)."""
+    a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
+    matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
+    text = _matrix_swizzles(_tex2d_with_derivatives(text))
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

@@ -31,9 +31,17 @@ Conversions (HLSL semantics -> GLSL spelling), inserted in Cg spelling (``float3
   * float ``%`` -> ``fmod`` (cg_compat.glsl); a float index -> ``int(i)``;
   * swizzles of scalars: ``x.xxx`` -> ``float3(x)``, ``x.x`` -> ``x``;
   * casts ``(float3)x`` -> ``float3(x)``; array initialisers ``{1, 2, 3}`` -> ``float[3](1, 2, 3)``;
-  * matrices: ``floatRxC(rows...)`` -> ``transpose(floatCxR(rows...))`` (HLSL's constructor
-    takes rows, GLSL's columns; port.py names floatRxC matCxR), ``m[i]`` read as a row ->
-    ``transpose(m)[i]`` (a row written, ``m[i] = v``, is left: a known gap);
+  * matrices: ``floatRxC(rows...)`` and an initialiser list ``{rows...}`` ->
+    ``transpose(floatCxR(rows...))`` (HLSL's constructor takes rows, GLSL's columns; port.py
+    names floatRxC matCxR), ``m[i]`` read as a row -> ``transpose(m)[i]``, written ->
+    ``pbr_unity_set_row(m, i, v)`` (cg_compat.glsl), an element ``m[i][j]`` / ``m[i].y``
+    written -> ``m[j][i]``, ``m._mRC`` / ``m._RC`` -> ``m[C][R]``; a larger matrix to a smaller
+    (assignment, argument, return: FXC keeps the upper-left block) -> ``floatRxC(m)``;
+    ``transpose`` / ``determinant`` typed; ``mul`` of a vector longer than the matrix side it
+    meets -> the vector's first components (FXC's truncation);
+  * arrays of arrays (``float w[2][3]``) kept, with GLSL's nested constructors;
+  * for the HLSL as written too (``fxc_conversions``): a vector argument longer than its
+    function's parameter -> its first components, as FXC passes it;
   * literal suffixes GLSL lacks (``0.5h``) dropped; ``[unroll]``-style attributes dropped;
   * ``static`` dropped, ``uniform`` added to the other global variables, ``inline`` dropped;
   * identifiers that are GLSL reserved words or the names cg_compat.glsl's macros expand to
@@ -59,6 +67,7 @@ class Type:
     dim: int = 1
     cols: int = 0
     array: int = 0
+    inner: tuple = ()  # an array of arrays' inner lengths (``float w[2][3]``: array 2, inner (3,))
 
     @property
     def numeric(self):
@@ -77,10 +86,15 @@ class Type:
         return self.numeric and self.cols > 0
 
     def element(self):
+        if self.inner:
+            return Type(self.base, self.dim, self.cols, self.inner[0], self.inner[1:])
         return Type(self.base, self.dim, self.cols)
 
     def cg(self) -> str:
-        """The Cg spelling (port.py renames it)."""
+        """The Cg spelling (port.py renames it); an array's, GLSL's ``float[3]``."""
+        if self.array:
+            element = Type(self.base, self.dim, self.cols)
+            return element.cg() + "".join(f"[{n}]" for n in (self.array, *self.inner))
         if self.cols:
             return f"{self.base}{self.dim}x{self.cols}"
         if self.base in _BASES:
@@ -359,6 +373,9 @@ _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "c
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
             "==": "equal", "!=": "notEqual"}
 _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
+# HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
+_PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
+_MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
@@ -395,10 +412,16 @@ class E:
     swizzle: tuple | None = None     # (start, end, letters) of a trailing vector swizzle
     row_index: tuple = ()            # edit ids of a matrix row read (dropped if written)
     literal: bool = False
+    # a matrix row read through ``transpose`` (M[i]): (M, its '[', its ']'), how it is written
+    # (_Parser.row_written); an element of one (M[i][j], M[i].y): (that row, the span of its
+    # column's '[j]' or '.y', the column's index text)
+    row: tuple = ()
+    element: tuple = ()
 
 
 class _Parser:
     def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
+        self.fxc_edits = Edits()  # what the HLSL as written needs too (fxc_conversions)
         self.text = text
         self.toks, self.directives = tokenize(text)
         self.i = 0
@@ -491,11 +514,12 @@ class _Parser:
     # --- top level
     def program(self):
         while self.peek().kind != "eof":
-            start, mark = self.i, self.edits.mark()
+            start, mark, fxc_mark = self.i, self.edits.mark(), self.fxc_edits.mark()
             try:
                 self.external()
             except CgSyntaxError:
                 self.edits.drop_after(mark)
+                self.fxc_edits.drop_after(fxc_mark)
                 self.scopes, self.ret = [], None
                 self.i = start
                 self.skip_declaration()
@@ -690,6 +714,15 @@ class _Parser:
                 self.skip_balanced("(", ")")
 
     def array_suffix(self, t):
+        """``t`` with the array lengths that follow a declared name (``[3]``, ``[]``, ``[2][3]``:
+        an array of arrays, which GLSL takes with GL_ARB_arrays_of_arrays, generate.prelude)."""
+        t = self.one_array_suffix(t)
+        inner = []
+        while t.array and self.at("["):
+            inner.append(self.one_array_suffix(Type(t.base, t.dim, t.cols)).array)
+        return Type(t.base, t.dim, t.cols, t.array, tuple(inner)) if inner else t
+
+    def one_array_suffix(self, t):
         if self.accept("["):
             if self.accept("]"):
                 return Type(t.base, t.dim, t.cols, -1)
@@ -884,12 +917,17 @@ class _Parser:
         close = self.expect("}")
         if t.array:
             size = str(t.array) if t.array > 0 else str(len(items))
-            self.edits.replace(open_.s, open_.e, f"{t.element().cg()}[{size}](")
+            self.edits.replace(open_.s, open_.e, f"{Type(t.base, t.dim, t.cols).cg()}[{size}]"
+                                                 + "".join(f"[{n}]" for n in t.inner) + "(")
             for it in items:
                 if it is not None:
                     self.coerce(it, t.element())
         elif t.base in self.sym.structs:
             self.edits.replace(open_.s, open_.e, f"{t.base}(")
+        elif t.matrix:  # HLSL fills a matrix's initialiser list row by row; GLSL's constructor by columns
+            self.edits.replace(open_.s, open_.e, f"transpose({Type(t.base, t.cols, t.dim).cg()}(")
+            self.edits.replace(close.s, close.e, "))")
+            return
         elif t.numeric:
             self.edits.replace(open_.s, open_.e, f"{t.cg()}(")
         else:
@@ -1069,7 +1107,6 @@ class _Parser:
         t = self.peek()
         if t.kind == "op" and t.text in ("=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="):
             self.next()
-            self.edits.drop(lhs.row_index)  # a matrix row written: left as is (known gap)
             rhs = self.assignment()
             if t.text == "=":
                 self.bool_of_unknown(rhs, lhs.t)
@@ -1081,6 +1118,12 @@ class _Parser:
                         self.truncate(rhs, lhs.t.dim)
                     elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
                         self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+            if lhs.element:
+                self.edits.drop(lhs.row_index)
+                self.element_written(lhs.element)
+            elif lhs.row and self.row_written(lhs.row, t, rhs):
+                self.edits.drop(lhs.row_index)
+            # else a matrix row written another way: the transposed read stays (GLSL refuses it)
             return E(lhs.s, rhs.e, lhs.t, False)
         return lhs
 
@@ -1245,7 +1288,7 @@ class _Parser:
         for a struct (in declaration order), each element's for an array."""
         if ty.array > 0:
             element = self.zero_value(ty.element())
-            return f"{ty.element().cg()}[{ty.array}]({', '.join([element] * ty.array)})"
+            return f"{ty.cg()}({', '.join([element] * ty.array)})"
         if ty.base in self.sym.conditional:
             return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:
@@ -1267,10 +1310,10 @@ class _Parser:
                     self.fail("member")
                 e = self.member(e, m)
             elif t.text == "[" and t.kind == "op":
-                self.next()
+                bracket = self.next()
                 idx = self.expression()
                 close = self.expect("]")
-                e = self.index(e, idx, close)
+                e = self.index(e, idx, close, bracket)
             elif t.text in ("++", "--") and t.kind == "op":
                 self.next()
                 e = E(e.s, t.e, e.t, False)
@@ -1287,6 +1330,8 @@ class _Parser:
             fields = self.sym.structs.get(self.resolve_alias(ot.base), {})
             return E(obj.s, m.e, fields.get(m.text))
         self.next()
+        if ot is not None and ot.matrix and _MATRIX_ELEMENTS.fullmatch(m.text):
+            return self.matrix_elements(obj, m, ot)
         if ot is not None and ot.numeric and not ot.cols and _SWIZZLE.fullmatch(m.text) and \
                 all(_swizzle_index(ch) < ot.dim for ch in m.text):
             n = len(m.text)
@@ -1298,10 +1343,30 @@ class _Parser:
                 self.edits.open(obj.s, Type(ot.base, n).cg() + "(")
                 self.edits.replace(dot.s, m.e, ")")
                 return E(obj.s, m.e, Type(ot.base, n), True)
+            if obj.row and n == 1:  # M[i].y: an element, written as GLSL's M[1][i]
+                dot = self.toks[self.i - 2]
+                return E(obj.s, m.e, Type(ot.base), row_index=obj.row_index,
+                         element=(obj, (dot.s, m.e), str(_swizzle_index(m.text))))
             return E(obj.s, m.e, Type(ot.base, n), True, (m.s, m.e, m.text))
         return E(obj.s, m.e, None)
 
-    def index(self, obj: E, idx: E, close: Tok) -> E:
+    def matrix_elements(self, obj: E, m: Tok, ot: Type) -> E:
+        """HLSL's matrix element ``M._m12`` (row 1, column 2, from 0) or ``M._23`` (from 1):
+        GLSL's ``M[C][R]`` (columns first). Several in a row (``M._m03_m13_m23``) were spelled
+        as a constructor of single ones before (cg_spellings._matrix_swizzles); one left (the
+        object an expression): no type, for the compiler to name."""
+        picks = [(int(z[-2]), int(z[-1])) if "m" in z else (int(z[-2]) - 1, int(z[-1]) - 1)
+                 for z in re.findall(r"_m?\d\d", m.text)]
+        if len(picks) > 1:
+            return E(obj.s, m.e, None)
+        (r, c), = picks
+        if r >= ot.dim or c >= ot.cols:
+            self.fail("matrix element out of range")
+        dot = self.toks[self.i - 2]
+        self.edits.replace(dot.s, m.e, f"[{c}][{r}]")
+        return E(obj.s, m.e, Type(ot.base), True)
+
+    def index(self, obj: E, idx: E, close: Tok, bracket: Tok) -> E:
         if idx.t is not None and idx.t.scalar and idx.t.base == "float":
             self.wrap(idx, "int")
         ot = obj.t
@@ -1311,10 +1376,41 @@ class _Parser:
             return E(obj.s, close.e, ot.element())
         if ot.cols:  # HLSL m[i] is row i; GLSL's is column i
             ids = (self.edits.open(obj.s, "transpose("), self.edits.close(obj.e, ")"))
-            return E(obj.s, close.e, Type(ot.base, ot.cols), True, row_index=ids)
+            return E(obj.s, close.e, Type(ot.base, ot.cols), True, row_index=ids, row=(obj, bracket, close))
         if ot.vector:
+            if obj.row:  # M[i][j]: HLSL's row i, column j
+                return E(obj.s, close.e, Type(ot.base), row_index=obj.row_index,
+                         element=(obj, (bracket.s, close.e), self.text[bracket.e:close.s]))
             return E(obj.s, close.e, Type(ot.base))
         return E(obj.s, close.e, None)
+
+    def row_written(self, row, op: Tok, rhs: E) -> bool:
+        """``M[i] = v`` (HLSL's row i) as ``pbr_unity_set_row(M, i, v)`` (cg_compat.glsl); a
+        compound ``M[i] += v`` as ``pbr_unity_set_row(M, i, transpose(M)[i] + (v))``, where
+        ``M`` and ``i`` are names or literals (their text read twice reads the same). False:
+        not written here (the transposed read stays, which GLSL refuses as an l-value)."""
+        obj, bracket, close = row
+        matrix, index = self.text[obj.s:obj.e], self.text[bracket.e:close.s]
+        if op.text == "=":
+            middle = ", "
+        elif op.text in ("+=", "-=", "*=", "/=") and _PLAIN.fullmatch(matrix) and _PLAIN.fullmatch(index.strip()):
+            middle = f", transpose({matrix})[{index}] {op.text[0]} ("
+        else:
+            return False
+        self.edits.open(obj.s, "pbr_unity_set_row(")
+        self.edits.replace(bracket.s, bracket.e, ", ")
+        self.edits.replace(close.s, op.e, middle)
+        self.edits.close(rhs.e, ")" if op.text == "=" else "))")
+        return True
+
+    def element_written(self, element) -> bool:
+        """``M[i][j] = x`` (HLSL: row i, column j) as GLSL's ``M[j][i] = x``; ``M[i].y = x``
+        likewise (``element``: E.element)."""
+        row, (start, end), column = element
+        _, bracket, close = row.row
+        self.edits.replace(bracket.s, close.e, f"[{column}]")
+        self.edits.replace(start, end, f"[{self.text[bracket.e:close.s]}]")
+        return True
 
     def primary(self) -> E:
         t = self.next()
@@ -1379,7 +1475,13 @@ class _Parser:
         if fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
         if fname == "mul" and len(args) == 2:
+            self.mul_vector_truncated(*args)
             return E(*span, _mul_type(args[0].t, args[1].t), True)
+        if fname == "transpose" and len(args) == 1 and args[0].t is not None and args[0].t.matrix:
+            m = args[0].t
+            return E(*span, Type(m.base, m.cols, m.dim), True)
+        if fname == "determinant" and len(args) == 1 and args[0].t is not None and args[0].t.matrix:
+            return E(*span, Type("float"), True)
         sigs = self.sym.functions.get(fname) or self.sym.functions.get(self.resolve_alias(fname))
         if not sigs:
             return E(*span, None, True)
@@ -1389,8 +1491,41 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
+                if fname not in library().functions:  # the program's own (or an include's)
+                    self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
+
+    def fxc_argument(self, a: E, param: Type):
+        """A vector argument longer than the parameter it meets (``UnpackUV(v.texcoord1)``, a
+        float2 to a float): FXC passes its first components (warning X3206, implicit truncation
+        of a vector type); glslang's HLSL front end finds no overload. Recorded for the HLSL
+        text as written (``fxc_conversions``); the GLSL port's coerce truncates it the same."""
+        if a.t is None or not (a.t.numeric and param.numeric) or a.t.cols or param.cols \
+                or a.t.dim <= param.dim or a.t.dim == 1:
+            return
+        if a.swizzle is not None:
+            s, end, letters = a.swizzle
+            self.fxc_edits.replace(s, end, letters[:param.dim])
+        elif a.postfix:
+            self.fxc_edits.close(a.e, "." + "xyzw"[:param.dim])
+        else:
+            self.fxc_edits.open(a.s, "(")
+            self.fxc_edits.close(a.e, ")." + "xyzw"[:param.dim])
+
+    def mul_vector_truncated(self, a: E, b: E):
+        """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,
+        ``mul(m3x3, v4)``): FXC takes the vector's first components (warning X3206, implicit
+        truncation of a vector type; glslang's HLSL front end does the same with a warning,
+        "mul() matrix size mismatch"); GLSL has no such overload, so the cut is written out."""
+        if a.t is None or b.t is None:
+            return
+        if a.t.vector and b.t.matrix and a.t.dim > b.t.dim:
+            self.truncate(a, b.t.dim)
+            a.t = Type(a.t.base, b.t.dim)
+        elif a.t.matrix and b.t.vector and b.t.dim > a.t.cols:
+            self.truncate(b, a.t.cols)
+            b.t = Type(b.t.base, a.t.cols)
 
     def overload(self, sigs, args):
         sigs = [s for s in sigs if len(s.params) == len(args)]
@@ -1422,6 +1557,17 @@ class _Parser:
             n = args[0].t.dim
         base = "float" if any(a.t.base == "float" for a in args) or fname not in ("abs", "min", "max", "clamp", "sign") \
             else args[0].t.base
+        if base == "bool":  # HLSL's arithmetic promotes a bool to int (abs(c < 0.5) is 0 or 1)
+            base = "int"
+        for a in args:  # GLSL's numeric built-ins take no bool: converted as HLSL does
+            if a.t.base == "bool":
+                self.wrap(a, Type(base, a.t.dim).cg())
+                a.t = Type(base, a.t.dim)
+        # GLSL's scalar overloads take scalars at all those positions or at none (clamp(vec3,
+        # float, float), smoothstep(float, float, vec3)): with a vector at one, HLSL's promoted
+        # scalar at another is written out (clamp(v, 0, hi) -> clamp(v, float3(0), hi))
+        if any(args[i].t.dim > 1 for i in scalar_ok if i < len(args)):
+            scalar_ok = ()
         for i, a in enumerate(args):
             if kind == "first" and i in scalar_ok:
                 continue
@@ -1562,6 +1708,18 @@ def convert_detail(text: str, symbols: Symbols | None = None, srp: bool = False)
 
 def convert(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
     return convert_detail(text, symbols, srp).text
+
+
+def fxc_conversions(text: str, symbols: Symbols | None = None, srp: bool = False) -> str:
+    """``text`` (HLSL) with the implicit conversions FXC makes and glslang's HLSL front end
+    refuses spelled out (_Parser.fxc_argument), nothing else changed; lines kept."""
+    symbols = (symbols or library()).copy()
+    try:
+        parser = _Parser(text, symbols, srp=srp)
+    except CgSyntaxError:
+        return text
+    parser.program()
+    return parser.fxc_edits.apply(text)
 
 
 def with_declarations(text: str, srp: bool = False) -> Symbols:

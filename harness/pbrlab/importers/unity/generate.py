@@ -25,6 +25,7 @@ from .generate_pass import _ATTRIBUTES, UNITY_STRUCTS, _attribute, _zero, canoni
 from .output_struct import layered_struct, vector_type
 from .port import port_code_types
 from .source_text import component_count
+from .written_globals import copy_statements
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
                     "pbr/unity/global_illumination")
@@ -150,8 +151,10 @@ def glue(shader: M.SurfaceShader, language: str) -> str:
         if "Emission" in shader.output_fields:
             out.append("#define PBRLAB_UNITY_EMISSION")
         out.append('#include "unity_shading.inc"')
-    body = ["vec4 pbrlab_unity_pixel(PbrlabFragment f) {",
-            "    Input IN = pbrlab_unity_input(f);"]
+    body = ["vec4 pbrlab_unity_pixel(PbrlabFragment f) {"]
+    if shader.written_globals:  # each copy from its uniform, before the program runs
+        body.append(copy_statements(shader.written_globals).rstrip("\n"))
+    body.append("    Input IN = pbrlab_unity_input(f);")
     body += _zero_output(shader, language)
     body.append("    o.Normal = vec3(0.0, 0.0, 1.0);" if shader.writes_normal else "    o.Normal = f.normal;")
     body.append(f"    {shader.pragma.function}(IN, o);")
@@ -266,11 +269,16 @@ def _defines(defines: dict) -> str:
     return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
 
 
+# HLSL's arrays of arrays (``float w[2][3]``; the type pass keeps them, cg_types.array_suffix):
+# GLSL 4.30's, which GLSL 3.30 takes with this extension (every Mesa driver has it).
+ARRAYS_OF_ARRAYS = "#extension GL_ARB_arrays_of_arrays : enable"
+
+
 def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     """What comes before a Unity program in either stage: the harness's defines and scene
     shading, Unity's generated-code names, the Cg intrinsics (GLSL) and the pbr/unity/ library."""
     suffix = SUFFIX[language]
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     stage = {"PBRLAB_UNITY_VERTEX_STAGE": 1, "PBR_UNITY_VERTEX_STAGE": 1} if vertex_stage else {}
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage})]
     if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
@@ -286,7 +294,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     """The whole fragment program; ``program`` is the shader's text in ``language``
     (the CGPROGRAM for HLSL, its port for GLSL), ``display`` its file name in messages."""
     suffix = SUFFIX[language]
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1}),
              f'#include "scene_shading{suffix}"',
              '#include "unity_surface.inc"']
@@ -401,7 +409,7 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     Input members it wrote, as the mesh fragment program reads them."""
     suffix = SUFFIX[language]
     v = shader.vertex
-    head = ["#version 330 core"] if language == "glsl" else []
+    head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, "PBRLAB_UNITY_VERTEX_STAGE": 1,
                        "PBR_UNITY_VERTEX_STAGE": 1}),
              f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
@@ -421,7 +429,7 @@ void main(float3 in_position : POSITION, float3 in_normal : NORMAL, float2 in_uv
           float4 in_tangent : TANGENT, float2 in_uv1 : TEXCOORD1, out float4 position : SV_Position, out float3 v_position : TEXCOORD0,
           out float3 v_normal : TEXCOORD1, out float2 v_uv : TEXCOORD2, out float4 v_tangent : TEXCOORD3{outs}) {{
 {fill}
-    Input o = (Input)0;
+{copy_statements(shader.written_globals)}    Input o = (Input)0;
     {call}
     float4 world = mul(unity_ObjectToWorld, {read["position"]});
     v_position = world.xyz;
@@ -447,7 +455,7 @@ out vec4 v_tangent;
 {decls}
 void main() {{
 {fill}
-    Input o;
+{copy_statements(shader.written_globals)}    Input o;
 {_zero_input_lines(shader)}
     {call}
     vec4 world = unity_ObjectToWorld * {read["position"]};

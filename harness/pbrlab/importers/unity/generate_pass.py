@@ -271,6 +271,35 @@ def varyings(vf, where: str) -> list[tuple]:
     return [(s, t) for s, t, _ in _outputs(vf, where) if s not in _POSITION]
 
 
+_MATRIX = re.compile(r"(?:float|half|fixed|min16float)([234])x([234])")
+
+
+def _slots(vf, where: str, language: str) -> list[tuple]:
+    """[(semantic, slot name, slot type, part)]: the varyings as the stages pass them, one
+    location each. A matrix (``float3x3 tbn : TEXCOORD4``) passes as its vectors, as Unity's
+    compilers do (a floatRxC takes R registers): in HLSL its R rows, in GLSL (which indexes
+    columns: the port's matCxR) its C columns; ``part`` is the vector's index, None for a
+    scalar or vector varying, which passes whole. Interpolating each vector interpolates each
+    element, so either split gives the fragment the same matrix."""
+    out = []
+    for s, kind in varyings(vf, where):
+        m = _MATRIX.fullmatch(kind)
+        if m is None:
+            out.append((s, f"pbrlab_vary_{s}", kind, None))
+            continue
+        rows, cols = int(m.group(1)), int(m.group(2))
+        count, size = (rows, cols) if language == "hlsl" else (cols, rows)
+        out += [(s, f"pbrlab_vary_{s}_{k}", f"float{size}", k) for k in range(count)]
+    return out
+
+
+def _matrix_varying(slots, semantic: str, kind: str, language: str) -> str:
+    """The fragment's matrix rebuilt from its vectors (_slots): HLSL's constructor takes rows,
+    GLSL's columns, as each language passed them."""
+    parts = ", ".join(name for s, name, _, part in slots if s == semantic)
+    return f"{_type(kind, language)}({parts})"
+
+
 def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     outs = _outputs(vf, where)
     vec3 = "float3" if language == "hlsl" else "vec3"
@@ -304,6 +333,7 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     pos_kind, pos_expr = next((access[s] for s in _POSITION if s in access), ("float4", None))
     position = fit(pos_expr, _size(pos_kind, where), 4, language, 1.0) if pos_expr else f"{_vec(4, language)}(0.0, 0.0, 0.0, 1.0)"
     lines = []
+    slots = _slots(vf, where, language)
     if language == "hlsl":
         params = ["float3 in_position : POSITION", "float3 in_normal : NORMAL", "float2 in_uv : TEXCOORD0",
                   "float4 in_tangent : TANGENT", "float2 in_uv1 : TEXCOORD1", "float4 in_color : COLOR0",
@@ -311,20 +341,20 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
                   "out float4 pbrlab_clip : SV_Position"]
         # an integer varying is flat on both sides (HLSL's nointerpolation; the fragment side's
         # integer input is flat already, and a linker refuses a mismatch)
-        params += [f"{'nointerpolation ' if _flat(kind, s, vf) else ''}out {kind} pbrlab_vary_{s} : TEXCOORD{i}"
-                   for i, (s, kind) in enumerate(varyings(vf, where))]
+        params += [f"{'nointerpolation ' if _flat(kind, s, vf) else ''}out {kind} {name} : TEXCOORD{i}"
+                   for i, (s, name, kind, _) in enumerate(slots)]
         lines += _realtime_lightmap_uv(language)
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
-                  f", out float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
+                  f", out float3 pbrlab_vary_world_position : TEXCOORD{len(slots)}", "#endif", ") {"]
         body.append(f"    pbrlab_clip = {position};")
     else:
         lines += ["in vec3 in_position;", "in vec3 in_normal;", "in vec2 in_uv;", "in vec4 in_tangent;",
                   "in vec2 in_uv1;", "in vec4 in_color;"] + _realtime_lightmap_uv(language)
-        lines += [f"{_flat(kind, s, vf)}out {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += [f"{_flat(kind, s, vf)}out {_type(kind, language)} {name};" for s, name, kind, _ in slots]
         lines += [_POSITIONAL_ADD, "out vec3 pbrlab_vary_world_position;", "#endif", "void main() {"]
         body.append(f"    gl_Position = {position};")
-    for s, kind in varyings(vf, where):
-        body.append(f"    pbrlab_vary_{s} = {access[s][1]};")
+    for s, name, kind, part in slots:
+        body.append(f"    {name} = {access[s][1]}{'' if part is None else f'[{part}]'};")
     return "\n".join(lines + body + ["}"]) + "\n" if language == "hlsl" else _members_as_ported(
         "\n".join(lines + body + ["}"]) + "\n")
 
@@ -343,12 +373,18 @@ def _flat(kind: str, semantic: str = "", vf=None) -> str:
 
 def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended: bool) -> str:
     have = {s: t for s, t in varyings(vf, where)}
+    slots = _slots(vf, where, language)
 
     def value(semantic: str, n: int, kind: str):
         if semantic in _POSITION or semantic == "VPOS":
             return fit("pbrlab_frag_position", 4, n, language)
         if semantic in ("VFACE", "SV_ISFRONTFACE"):
             return "pbrlab_front_facing" if kind.startswith("bool") else "(pbrlab_front_facing ? 1.0 : -1.0)"
+        if semantic in have and _MATRIX.fullmatch(have[semantic]):
+            if _MATRIX.fullmatch(kind) is None or _MATRIX.fullmatch(kind).groups() != _MATRIX.fullmatch(have[semantic]).groups():
+                raise UnityShaderError(f"{where}: the fragment reads {semantic} as {kind}, the vertex stage "
+                                       f"writes it as {have[semantic]}")
+            return _matrix_varying(slots, semantic, kind, language)
         if semantic in have:
             return fit(f"pbrlab_vary_{semantic}", _size(have[semantic], where), n, language)
         return None
@@ -395,14 +431,14 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
     lines = []
     if language == "hlsl":
         params = ["float4 pbrlab_frag_position : SV_Position", "bool pbrlab_front_facing : SV_IsFrontFace"]
-        params += [f"{'nointerpolation ' if _flat(kind, s, vf) and not _flat(kind) else ''}{kind} pbrlab_vary_{s} : TEXCOORD{i}"
-                   for i, (s, kind) in enumerate(varyings(vf, where))]
+        params += [f"{'nointerpolation ' if _flat(kind, s, vf) and not _flat(kind) else ''}{kind} {name} : TEXCOORD{i}"
+                   for i, (s, name, kind, _) in enumerate(slots)]
         params.append("out float4 pbrlab_radiance : SV_Target0")
         lines += _realtime_lightmap_uv(language)
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
-                  f", float3 pbrlab_vary_world_position : TEXCOORD{len(varyings(vf, where))}", "#endif", ") {"]
+                  f", float3 pbrlab_vary_world_position : TEXCOORD{len(slots)}", "#endif", ") {"]
     else:
-        lines += [f"{_flat(kind, s, vf)}in {_type(kind, language)} pbrlab_vary_{s};" for s, kind in varyings(vf, where)]
+        lines += [f"{_flat(kind, s, vf)}in {_type(kind, language)} {name};" for s, name, kind, _ in slots]
         lines += [_POSITIONAL_ADD, "in vec3 pbrlab_vary_world_position;", "#endif"]
         lines += ["out vec4 pbrlab_radiance;", "void main() {",
                   "    vec4 pbrlab_frag_position = gl_FragCoord;", "    bool pbrlab_front_facing = gl_FrontFacing;"]

@@ -112,8 +112,8 @@ class VertexFunction:
 class SurfaceShader:
     path: Path
     name: str
-    program: str                    # the CGPROGRAM text, unchanged
-    program_line: int               # its first line in the file (1-based)
+    program: str                    # the CGPROGRAM text (the globals it writes read through copies:
+    program_line: int               # written_globals.py); its first line in the file (1-based)
     pragma: Pragma
     properties: dict = field(default_factory=dict)       # name -> Property
     input_members: list = field(default_factory=list)    # [(type, name)]
@@ -130,6 +130,7 @@ class SurfaceShader:
     state: RenderState = field(default_factory=RenderState)
     warnings: list = field(default_factory=list)
     light_keywords: bool = False    # tests USING_DIRECTIONAL_LIGHT, POINT, SPOT...: a program per light type
+    written_globals: tuple = ()     # ((name, type), ...) globals the program writes (written_globals.py)
     language: str = "hlsl"          # the program's language: "hlsl" (Cg/HLSL, as in Unity) or
                                     # "glsl" (a port-unity port)
 
@@ -193,6 +194,7 @@ class VertexFragmentPass:
     srp: bool = False
     engine_filled: tuple = ()       # engine-set globals the scene fills (engine_inputs.FILLED)
     written_globals: tuple = ()     # ((name, type), ...) globals the program writes (written_globals.py)
+    rewritten_includes: dict = field(default_factory=dict)  # {path: text}: its own includes so rewritten
     output_fields = {}              # (a surface program's output struct; none here)
     kind = "vertex-fragment"
 

@@ -26,6 +26,7 @@ from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
+from .written_globals import copied_written_globals
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, top_level)
 
@@ -379,7 +380,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     check_refusals(program, path, first_line, path.parent)
     # what the program includes may define its parts (struct Input, vertex: functions, ...)
     everything = masked + "\n" + included_text(program, path.parent)
-    everything = active_text(everything, defines_of(everything))  # the default variant's branches
+    defines = defines_of(everything)
+    everything = active_text(everything, defines)  # the default variant's branches
     check_engine_inputs(everything[:len(masked)], path, first_line)  # a global only Unity's engine sets
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
 
@@ -390,6 +392,8 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
     if shader is None:
         shader = M.SurfaceShader(path=path, name=name or path.stem, program=program,
                                  program_line=first_line, pragma=pragma)
+    if shader.language == "hlsl":  # globals the program writes (FXC's compatibility mode): static copies
+        program, shader.written_globals = copied_written_globals(program, active_text(masked, defines))
     shader.program, shader.program_line, shader.pragma = program, first_line, pragma
     for option in pragma.unsupported:
         shader.warnings.append(f"{where(pragma_at)}: #pragma surface option {option!r} is not supported "

@@ -18,7 +18,7 @@ from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
-from .written_globals import copied_written_globals
+from .written_globals import copied_in_includes, copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -171,9 +171,11 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         filled = ()
     check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
-    written = ()
+    written, rewritten = (), {}
     if not staged & set(_APART):  # globals the program writes
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
+        rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
+        written += in_includes
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -218,7 +220,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         fragment_params=found["fragment"][1], fragment_return=found["fragment"][0],
         fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, tessellation=tessellation,
         engine_filled=filled,
-        written_globals=written)
+        written_globals=written, rewritten_includes=rewritten)
     vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
                                        r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
     return vf

@@ -19,6 +19,7 @@ Programs are kept in the context's scene-program cache (``programs.program_cache
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import re
 from pathlib import Path
@@ -30,10 +31,9 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import cg_spellings, generate, port, texture_arrays
+from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
-from .argument_truncation import truncated_arguments
 from .properties import TextureValue
 from .source_text import CGINC, blank_comments, included_files, included_text, resolve_included, top_level
 
@@ -129,6 +129,8 @@ def program_include(shader) -> tuple[str, dict]:
         others = [p for other, protos in prototypes.items() if other != key for p in protos]
         return context + "\n" + "\n".join(dict.fromkeys(others))
 
+    rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
+
     def relinked(text: str, where: Path) -> str:
         def relink(m):
             target = resolve_included(m.group(2), where)
@@ -137,7 +139,7 @@ def program_include(shader) -> tuple[str, dict]:
             key = target.resolve()
             if key not in names:
                 names[key] = _port_include(key)
-                body = shaders.strip_bom(target.read_text(encoding="utf-8"))
+                body = shaders.strip_bom(rewritten.get(key) or target.read_text(encoding="utf-8"))
                 virtual[names[key]] = shaders.VirtualFile(
                     relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
                     str(target), 1)
@@ -157,10 +159,19 @@ def ported_sources(virtual: dict) -> list[Path]:
 
 def hlsl_program(shader) -> str:
     """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
-    spellings glslang takes (cg_spellings), its own functions' arguments truncated where FXC
-    truncates them (argument_truncation)."""
-    return truncated_arguments(cg_spellings.respelled(shaders.strip_bom(shader.program)),
-                               getattr(shader, "srp", False))
+    spellings glslang takes (cg_spellings) and with the implicit conversions FXC makes where
+    glslang refuses them spelled out (cg_types.fxc_conversions: the functions of the files it
+    includes known too)."""
+    return _fxc_spelled(cg_spellings.respelled(shaders.strip_bom(shader.program)),
+                        included_text(shader.program, shader.path.parent), getattr(shader, "srp", False))
+
+
+@functools.lru_cache(maxsize=64)
+def _fxc_spelled(text: str, included: str, srp: bool) -> str:
+    """hlsl_program's type pass, once per text (each stage of a pass compiles the same program;
+    the key holds the included files' text, so an edit to one is seen)."""
+    symbols = cg_types.with_declarations(cg_spellings.respelled(included), srp) if included.strip() else None
+    return cg_types.fxc_conversions(text, symbols, srp)
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):

@@ -94,7 +94,8 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             stage_vf = behind(vf) if geometry and stage == "fragment" else vf
             if language == "hlsl":
                 text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
-                glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage]),
+                glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],
+                                                             replaced=vf.rewritten_includes),
                                           plain_uniforms=True)
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)

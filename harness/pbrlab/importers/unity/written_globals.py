@@ -8,13 +8,23 @@ uniform before calling the program (generate_pass: the same in both stages). Lin
 
     program, written = copied_written_globals(program, active_program)
     statements = copy_statements(written)     # an entry point's, before the program runs
+
+A global declared and written in one of the shader's own include files (``float4 _Wind_ST;``
+in a pass's .hlsl, ``_Wind_ST.zw += ...`` in its vertex function) is copied the same way in that
+file's text (``copied_in_includes``); both languages compile the rewritten text in the file's
+place (program.program_include for the GLSL port, hlsl.compile_spirv's ``replaced`` for glslang).
+A global an include declares and another file writes is not found: the compiler names the write.
 """
 
 from __future__ import annotations
 
 import re
 
+from pathlib import Path
+
+from .conditionals import active_text
 from .engine_inputs import _outside_braces
+from .source_text import CGINC, PACKAGE_STAND_INS, _read_include, blank_comments, included_files
 
 PREFIX = "pbrlab_written"
 
@@ -90,3 +100,21 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
 def copy_statements(written) -> str:
     """An entry point's statements that give each copy its uniform's value."""
     return "".join(f"    {copy_name(name)} = {name};\n" for name, _ in written)
+
+
+def copied_in_includes(program: str, folder: Path, defines) -> tuple[dict, tuple]:
+    """({resolved path: its text rewritten by copied_written_globals}, ((name, type), ...)) of
+    the shader's own files ``program`` includes (pbrlab's stand-ins write no global) that
+    declare a global and write it; ``defines``: the drawn variant's (conditionals.defines_of)."""
+    rewritten, written = {}, ()
+    stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
+    for path in included_files(program, folder):
+        if any(path.is_relative_to(root) for root in stand_ins):
+            continue
+        text = _read_include(path)
+        if text is None:
+            continue
+        copied, found = copied_written_globals(text, active_text(blank_comments(text), defines))
+        if found:
+            rewritten[path], written = copied, written + found
+    return rewritten, written
