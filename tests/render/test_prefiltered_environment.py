@@ -10,8 +10,8 @@ Per direction n, the lookup may differ from the brute force P(n) by at most the 
   4 x 4 sub-cells per texel, O(h^2): Richardson);
 * E_texel: the error of the level's texels, estimated the same way from the level's own
   algorithm: the CPU levels' texel sum at the box-averaged width W against the width 2W
-  ((4/3) |T_W - T_2W|, O(h^2)); where W is the image's own width (the sum reads the image
-  itself: level 1), the sum's texels at their centres against the bilinear image, derived:
+  ((4/3) |T_W - T_2W|, O(h^2)); where the sum reads the image itself (W at least the image's
+  width: level 1 here), the sum's texels at their centres against the bilinear image, derived:
   with a_i the integral of texel i's bilinear tent times the lobe weight w and b_i = Omega_i w_i,
   P - T = sum (L_i - T) (a_i - b_i) / sum a_i exactly (the tents sum to one), and the tent's
   second moment h^2 / 6 per axis gives a_i - b_i = Omega_i (d_uu w + d_tt w) / 12 (its second
@@ -21,6 +21,10 @@ Per direction n, the lookup may differ from the brute force P(n) by at most the 
   (L_f - T) Omega_f (w(n.c_B) - w(n.c_f)) / sum w Omega over the partition (exact: the block's
   average carries its texels' sum L Omega), bounded with |L_f - T|;
   for the mirror (the same bilinear image at the texel centres), the error of the direction's
+  (u, t) in the prefilter pass: pbr_equirect_uv's atan and acos may err by 4096 ULP of their
+  result (the Vulkan specification's "Precision and Operation of SPIR-V Instructions" table,
+  the bound GL drivers are held to in practice; GLSL 4.60 sets none), 4096 * 2^-22 rad for
+  results up to pi, times the image's slope in u and t (central differences over a texel);
 * E_bright: the bright texels' sum puts each texel's excess at its centre, the brute force
   spreads it over the bilinear tent of +-1 texel, whose second moment per axis is h^2 / 6, so
   the midpoint error is sum over texels of excess * solid angle * (h_u^2 |w_uu| + h_t^2 |w_tt|) / 12
