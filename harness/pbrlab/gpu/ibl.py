@@ -12,8 +12,8 @@
   box averages outside it: PREFILTER_WINDOW; before, filtered importance sampling on the GPU,
   Krivanek & Colbert 2008, which had no error bound), the brightest texels summed exactly at
   every rough level (split_bright); sampled with seamless cube filtering
-  (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam (issue 38: the former equirectangular chain, 8x4 at roughness 1, clamped the rows next to
-  the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
+  (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam (issue 38: the former
+  equirectangular chain, 8x4 at roughness 1, clamped the rows next to the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
   brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
 * ``irradiance_environment(ctx, image)``: a cube of the environment's irradiance over pi,
@@ -79,7 +79,7 @@ IRRADIANCE_SOURCE_WIDTH = 128
 # x half that, in float64 on the CPU: FIS's mip blur read the equirect mips' pole rows and
 # smeared the horizon (up to 38 % at roughness 1 after the bright split), and at roughness 0.25
 # it had no error bound (issue 38: 16 and 47 of 242 directions over the test's bound, up to
-# 0.6 %); the sum is the brute force itself at a cell size inside the lobe. Roughness 0.25
+# 2.8x it); the sum is the brute force itself at a cell size inside the lobe. Roughness 0.25
 # (its lobe's half maximum 4.6 degrees from n) reads a source of 128 x 64 (2.8 degrees a texel
 # at the equator; 256 x 128 cost 2x to 9x the time, and the level's error on sunrise and studio
 # stays that of the bright texels' sum, 2 %), and only inside a window (PREFILTER_WINDOW):
