@@ -13,8 +13,9 @@
   Krivanek & Colbert 2008, which had no error bound), the brightest texels summed exactly at
   every rough level (split_bright); sampled with seamless cube filtering
   (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam (issue 38: the former
-  equirectangular chain, 8x4 at roughness 1, clamped the rows next to the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
-  brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
+  equirectangular chain, 8x4 at roughness 1, clamped the rows next to the poles and made a star
+  at the zenith and nadir, up to 5x the radiance of the float64 brute force,
+  maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
 * ``irradiance_environment(ctx, image)``: a cube of the environment's irradiance over pi,
   E(n) / pi = sum L (n.w)+ dOmega / sum (n.w)+ dOmega over its texels (the image box-averaged
