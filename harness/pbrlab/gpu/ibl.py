@@ -7,14 +7,15 @@
   its listing "IntegrateBRDF".
 * ``prefiltered_environment(ctx, image)``: a cube map mip chain whose level i is the
   environment convolved with the GGX lobe of perceptual roughness i / (levels - 1), under
-  Karis's n = v = r assumption: the mirror resampled on the GPU, level 1 by GGX importance
-  sampling with filtered importance sampling (Krivanek & Colbert 2008, "Real-time Shading with
-  Filtered Importance Sampling", eq. 10), the rougher levels by the exact texel sum on the CPU,
-  the brightest texels summed exactly at every rough level (split_bright); sampled with
-  seamless cube filtering (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam
-  (issue 38: the former equirectangular chain, 8x4 at roughness 1, clamped the rows next to
-  the poles and made a star at the zenith and nadir, up to 5x the radiance of the float64
-  brute force, maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
+  Karis's n = v = r assumption: the mirror resampled on the GPU, the rough levels by the
+  exact texel sum on the CPU (roughness 0.25 within a window around each tile of directions,
+  box averages outside it: PREFILTER_WINDOW; before, filtered importance sampling on the GPU,
+  Krivanek & Colbert 2008, which had no error bound), the brightest texels summed exactly at
+  every rough level (split_bright); sampled with seamless cube filtering
+  (ARB_seamless_cubemap_per_texture), so no level has a pole or a seam (issue 38: the former
+  equirectangular chain, 8x4 at roughness 1, clamped the rows next to the poles and made a star
+  at the zenith and nadir, up to 5x the radiance of the float64 brute force,
+  maths/reference/prefilter.py). Accuracy and cost: docs/shading.md.
 
 * ``irradiance_environment(ctx, image)``: a cube of the environment's irradiance over pi,
   E(n) / pi = sum L (n.w)+ dOmega / sum (n.w)+ dOmega over its texels (the image box-averaged
@@ -59,14 +60,13 @@ from ..maths.reference import shading as ref_shading
 # at this base would be 8^2 at roughness 1, and a base of 512 would hold 6.3 M float texels.
 PREFILTER_FACE_SIZE = 256  # texels per face edge of level 0 (the mirror)
 PREFILTER_LEVELS = 5       # faces 256^2 ... 16^2: perceptual roughness 0, 0.25, ..., 1
-PREFILTER_SAMPLES = 256    # GGX samples per texel (filtered importance sampling)
 # Bright texels (a sun, lamps): their radiance above PREFILTER_BRIGHT_FACTOR times the image's
-# mean luminance is taken out of the image the GPU samples and summed exactly, texel by texel
-# (prefilter_bright_sum), at most PREFILTER_BRIGHT_TEXELS of them (the threshold rises to keep
-# to that). Filtered importance sampling blurs each sample over a mip texel as large as its
-# share of the lobe: a sun 10^4 times the sky then leaks into directions several lobe widths
-# away (issue 38: up to 2x the float64 brute force at roughness 1, 37 % at 0.2, 256 samples;
-# 4096 samples still 16 %). The clipped image keeps a dynamic range FIS handles.
+# mean luminance is taken out of the image the rough levels box-average and summed exactly,
+# texel by texel at the image's own resolution (prefilter_bright_sum), at most
+# PREFILTER_BRIGHT_TEXELS of them (the threshold rises to keep to that): a sun 10^4 times the
+# sky averaged into a 2.8 to 5.6-degree cell would move its light by up to half a cell. (The
+# split began with filtered importance sampling, whose mip blur leaked such a sun several lobe
+# widths away: issue 38, up to 2x the float64 brute force at roughness 1, 37 % at 0.2.)
 PREFILTER_BRIGHT_FACTOR = 16.0
 # The irradiance cube: faces 32^2 (2.8 degrees a texel at a face's centre: bilinear
 # reconstruction of a cosine-convolved function, whose curvature is at most that of cos, errs
@@ -75,13 +75,33 @@ PREFILTER_BRIGHT_FACTOR = 16.0
 # most, on the terminator only).
 IRRADIANCE_FACE_SIZE = 32
 IRRADIANCE_SOURCE_WIDTH = 128
-# Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.5, lobes wider than 30
-# degrees) are the exact texel sum of the clipped image box-averaged (solid-angle weighted)
-# to PREFILTER_CPU_SOURCE_WIDTH[level] x half that, in float64 on the CPU: FIS's mip blur
-# read the equirect mips' pole rows and smeared the horizon (up to 38 % at roughness 1 after
-# the bright split); the sum is the brute force itself at a cell size well inside the lobe.
-PREFILTER_CPU_FIRST_LEVEL = 2
-PREFILTER_CPU_SOURCE_WIDTH = {2: 64, 3: 64, 4: 64}
+# Levels from PREFILTER_CPU_FIRST_LEVEL on (perceptual roughness >= 0.25) are the exact texel
+# sum of the clipped image box-averaged (solid-angle weighted) to PREFILTER_CPU_SOURCE_WIDTH[level]
+# x half that, in float64 on the CPU: FIS's mip blur read the equirect mips' pole rows and
+# smeared the horizon (up to 38 % at roughness 1 after the bright split), and at roughness 0.25
+# it had no error bound (issue 38: 16 and 47 of 242 directions over the test's bound, up to
+# 2.8x it); the sum is the brute force itself at a cell size inside the lobe. Roughness 0.25
+# (its lobe's half maximum 4.6 degrees from n) reads a source of 128 x 64 (2.8 degrees a texel
+# at the equator; 256 x 128 cost 2x to 9x the time, and the level's error on sunrise and studio
+# stays that of the bright texels' sum, 2 %), and only inside a window (PREFILTER_WINDOW):
+# every direction against every texel would be 8e8 products for 128^2 faces.
+PREFILTER_CPU_FIRST_LEVEL = 1
+PREFILTER_CPU_SOURCE_WIDTH = {1: 128, 2: 64, 3: 64, 4: 64}
+# The windowed sum (_windowed_texel_sum), for the levels named here: the level's faces in tiles
+# of tile x tile texels; for each tile, the source texels within radius degrees of every
+# direction of the tile are summed at the level's source width, all others at the outer
+# width's box averages (one cell per block of source texels). That is a texel sum over another
+# partition of the sphere, exact where the lobe's weight is constant over each outer cell; the
+# difference from the full sum is
+#   sum over outer blocks B, their texels f: (L_f - T) Omega_f (w(n.c_B) - w(n.c_f)) / sum w Omega
+# (T the full sum), which the test bounds with |L_f - T| (tests/render/test_prefiltered_environment.py,
+# E_window). Beyond 15 degrees from n the GGX lobe of alpha 1/16 holds 16 % of its mass (3.4 %
+# beyond 30, maths/reference/prefilter.py's lobe_weight integrated) and falls as angle^-4, so
+# w(n.c_B) - w(n.c_f) is first order in the block's 5.6 degrees and changes sign across the
+# block: measured, the window moves level 1 by at most 1.1e-3 (sunrise) and 2.0e-3 (studio) of
+# the local mean, against the full sum (256 x 128, poles, seam, sun, random directions).
+# Radius 10 degrees: 3e-3 on sunrise; 30 degrees: 1.5e-4 at about 6x the time.
+PREFILTER_WINDOW = {1: {"radius": 15.0, "outer_width": 64, "tile": 8}}
 PREFILTER_BRIGHT_TEXELS = 4096
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # ITU-R BT.709 (the library's pbr_luminance)
 
@@ -308,7 +328,7 @@ def _prefilter_cache_key(ctx: moderngl.Context, image: np.ndarray) -> str:
     driver = [ctx.info["GL_VENDOR"], ctx.info["GL_RENDERER"], ctx.info["GL_VERSION"],
               sorted((k, v) for k, v in os.environ.items() if k.startswith(("LP_", "GALLIUM_", "MESA_")))]
     return disk_cache.key("prefiltered-environment", pixels.shape, pixels.tobytes(), *programs, driver,
-                          PREFILTER_FACE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES, Path(__file__).read_bytes())
+                          PREFILTER_FACE_SIZE, PREFILTER_LEVELS, Path(__file__).read_bytes())
 
 
 def prefilter_level_roughness(level: int) -> float:
@@ -382,21 +402,21 @@ def _blocks(directions: int, texels: int):
 
 def _prefilter_levels(ctx: moderngl.Context, image: np.ndarray) -> list[np.ndarray]:
     """The PREFILTER_LEVELS levels, each 6 x n x n x 4 float32 (faces +X .. -Z, GL row
-    order): the mirror resamples the whole image; level 1 is the clipped image filtered on the
-    GPU; the rougher levels the clipped image's exact texel sum on the CPU; every rough level
-    adds the bright texels' exact sum (split_bright)."""
+    order): the mirror resamples the whole image on the GPU; the rough levels are the clipped
+    image's exact texel sum on the CPU (windowed for the levels in PREFILTER_WINDOW), plus the
+    bright texels' exact sum (split_bright)."""
     clipped, bright = split_bright(image)
-    levels = [_prefilter_gpu_level(ctx, image, 0)]
-    for level in range(1, PREFILTER_LEVELS):
+    levels = [_mirror_level(ctx, image)]
+    for level in range(PREFILTER_CPU_FIRST_LEVEL, PREFILTER_LEVELS):
         edge = prefilter_level_size(level)
         directions = ref_prefilter.cube_face_directions(edge).reshape(-1, 3)
         roughness = prefilter_level_roughness(level)
-        if level < PREFILTER_CPU_FIRST_LEVEL:
-            faces = _prefilter_gpu_level(ctx, clipped, level)
+        source = box_average(clipped, PREFILTER_CPU_SOURCE_WIDTH[level])
+        faces = np.ones((6, edge, edge, 4), np.float32)
+        if level in PREFILTER_WINDOW:
+            faces[..., :3] = _windowed_texel_sum(edge, source, roughness, PREFILTER_WINDOW[level])
         else:
-            faces = np.ones((6, edge, edge, 4), np.float32)
-            faces[..., :3] = _texel_sum(directions, box_average(clipped, PREFILTER_CPU_SOURCE_WIDTH[level]),
-                                        roughness).reshape(6, edge, edge, 3)
+            faces[..., :3] = _texel_sum(directions, source, roughness).reshape(6, edge, edge, 3)
         faces[..., :3] += prefilter_bright_sum(directions, bright, roughness).reshape(6, edge, edge, 3)
         levels.append(faces)
     return levels
@@ -422,12 +442,82 @@ def _texel_sum(directions: np.ndarray, image: np.ndarray, perceptual_roughness: 
     constant over each texel."""
     d, solid = ref_prefilter.equirect_texels(*image.shape[:2])
     d, solid, radiance = d.reshape(-1, 3), solid.reshape(-1), image.reshape(-1, 3)
-    alpha = perceptual_roughness ** 2
     out = np.empty((directions.shape[0], 3))
     for start, stop in _blocks(directions.shape[0], len(d)):
-        w = _lobe_weight_unscaled(directions[start:stop] @ d.T, alpha)
-        w *= solid
-        out[start:stop] = (w @ radiance) / w.sum(axis=1, keepdims=True)
+        out[start:stop] = _weighted_mean(directions[start:stop], (d, solid, radiance), perceptual_roughness)
+    return out
+
+
+def _weighted_mean(directions: np.ndarray, texels, perceptual_roughness: float) -> np.ndarray:
+    """The lobe-weighted mean of texels (directions (K, 3), solid angles (K,), radiance (K, 3))
+    at each of the directions (M, 3): sum L w dOmega / sum w dOmega, w = D(h) (n.l)+."""
+    d, solid, radiance = texels
+    w = _lobe_weight_unscaled(directions @ d.T, perceptual_roughness ** 2)
+    w *= solid
+    return (w @ radiance) / w.sum(axis=1, keepdims=True)
+
+
+class WindowedSource:
+    """The source of a windowed texel sum (PREFILTER_WINDOW): an equirect image's texels
+    grouped in the blocks that box_average merges into one texel of outer_width x half that,
+    and those blocks' averages (the image itself, blocks of one texel, when it is not a whole
+    multiple of that size)."""
+
+    def __init__(self, image: np.ndarray, outer_width: int):
+        h, w = image.shape[:2]
+        outer = box_average(image, outer_width)
+        rows, cols = outer.shape[:2]
+        fy, fx = h // rows, w // cols
+        d, solid = ref_prefilter.equirect_texels(h, w)
+
+        def by_block(values):  # (h, w, c) -> (blocks, fy * fx, c), blocks in the outer image's order
+            return values.reshape(rows, fy, cols, fx, -1).transpose(0, 2, 1, 3, 4).reshape(rows * cols, fy * fx, -1)
+        self.texel_d, self.texel_solid = by_block(d), by_block(solid[..., None])[..., 0]
+        self.texel_radiance = by_block(np.asarray(image, np.float64)[..., :3])
+        outer_d, outer_solid = ref_prefilter.equirect_texels(rows, cols)
+        self.outer = (outer_d.reshape(-1, 3), outer_solid.reshape(-1), outer.reshape(-1, 3))
+        # Each block's radius: the largest angle between its centre and its texels' centres.
+        cos_radius = np.einsum("bkc,bc->bk", self.texel_d, self.outer[0]).min(axis=1)
+        self.block_radius = np.arccos(np.clip(cos_radius, -1.0, 1.0))
+
+    def inside(self, directions: np.ndarray, radius_degrees: float) -> np.ndarray:
+        """The blocks (bool per block) that may hold a texel within radius_degrees of one of
+        the directions (M, 3), found from their centre c: every block left out lies wholly
+        farther than the radius from every direction (angle(c, m) - block radius > radius
+        + the directions' spread around their mean m)."""
+        m = directions.sum(axis=0)
+        m /= np.linalg.norm(m)
+        spread = np.arccos(np.clip(directions @ m, -1.0, 1.0)).max()
+        angle = np.arccos(np.clip(self.outer[0] @ m, -1.0, 1.0))
+        return angle - self.block_radius <= np.radians(radius_degrees) + spread
+
+    def texels(self, inside: np.ndarray):
+        """(directions, solid angles, radiance) of the partition: the texels of the blocks
+        inside, the averages of the blocks outside."""
+        d, solid, radiance = self.outer
+        return (np.concatenate([self.texel_d[inside].reshape(-1, 3), d[~inside]]),
+                np.concatenate([self.texel_solid[inside].reshape(-1), solid[~inside]]),
+                np.concatenate([self.texel_radiance[inside].reshape(-1, 3), radiance[~inside]]))
+
+
+def window_tiles(edge: int, tile: int):
+    """The tiles of a level's faces: (face, row slice, column slice) of tile x tile texels
+    (the last tile of a row or column narrower when tile does not divide edge)."""
+    spans = [slice(start, min(start + tile, edge)) for start in range(0, edge, tile)]
+    return [(face, rows, cols) for face in range(6) for rows in spans for cols in spans]
+
+
+def _windowed_texel_sum(edge: int, image: np.ndarray, perceptual_roughness: float, window) -> np.ndarray:
+    """6 x edge x edge x 3: _texel_sum at the level's texel centres over the partition
+    WindowedSource.texels makes per tile (PREFILTER_WINDOW)."""
+    source = WindowedSource(image, window["outer_width"])
+    directions = ref_prefilter.cube_face_directions(edge)
+    out = np.empty((6, edge, edge, 3))
+    for face, rows, cols in window_tiles(edge, window["tile"]):
+        n = directions[face, rows, cols].reshape(-1, 3)
+        texels = source.texels(source.inside(n, window["radius"]))
+        out[face, rows, cols] = _weighted_mean(n, texels, perceptual_roughness).reshape(
+            rows.stop - rows.start, cols.stop - cols.start, 3)
     return out
 
 
@@ -443,17 +533,16 @@ def _lobe_weight_unscaled(NdotL: np.ndarray, alpha: float) -> np.ndarray:
     return NdotL
 
 
-def _prefilter_gpu_level(ctx: moderngl.Context, image: np.ndarray, level: int) -> np.ndarray:
-    """One level (6 x n x n x 4, faces +X .. -Z, GL row order) of the image filtered on the
-    GPU (prefilter.frag) for the level's roughness."""
+def _mirror_level(ctx: moderngl.Context, image: np.ndarray) -> np.ndarray:
+    """Level 0 (6 x n x n x 4, faces +X .. -Z, GL row order): the image resampled (bilinear)
+    at the texel directions on the GPU (prefilter.frag)."""
     source = targets.upload_texture(ctx, np.concatenate(
         [image[..., :3], np.ones(image.shape[:2] + (1,), image.dtype)], axis=2).astype(np.float32),
         srgb=False)
     source.repeat_x, source.repeat_y = True, False
     program = program_from_templates(ctx, "fullscreen.vert", "prefilter.frag", {})
     vao = ctx.vertex_array(program, [])
-    source_levels = 1 + int(np.floor(np.log2(max(image.shape[0], image.shape[1]))))
-    edge = prefilter_level_size(level)
+    edge = prefilter_level_size(0)
     faces = []
     try:
         with targets.Target(ctx, (edge, edge), "f32", depth=False) as target:
@@ -461,10 +550,6 @@ def _prefilter_gpu_level(ctx: moderngl.Context, image: np.ndarray, level: int) -
                 target.use()
                 source.use(0)
                 program["u_source"].value = 0
-                program["u_source_size"].value = (float(image.shape[1]), float(image.shape[0]))
-                program["u_source_max_lod"].value = float(source_levels - 1)
-                program["u_perceptual_roughness"].value = prefilter_level_roughness(level)
-                program["u_sample_count"].value = PREFILTER_SAMPLES
                 program["u_face"].value = face
                 program["u_face_size"].value = float(edge)
                 vao.render(moderngl.TRIANGLES, vertices=3)
