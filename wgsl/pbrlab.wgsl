@@ -3622,11 +3622,127 @@ fn pbr_refraction_direction(n_30: vec3<f32>, v_34: vec3<f32>, eta_12: f32) -> ve
     return refract(-(_e6), _e8, (1f / _e10));
 }
 
+fn pbr_valid_reflection_normal(n_32: vec3<f32>, ng: vec3<f32>, v_36: vec3<f32>) -> vec3<f32> {
+    var n_33: vec3<f32>;
+    var ng_1: vec3<f32>;
+    var v_37: vec3<f32>;
+    var vz: f32;
+    var t_9: f32;
+    var r_9: vec3<f32>;
+    var across: vec3<f32>;
+    var local_27: vec3<f32>;
+    var x_25: vec3<f32>;
+    var vx: f32;
+    var a_7: f32;
+    var b_12: f32;
+    var c_23: f32;
+    var root: f32;
+    var bigB: f32;
+    var w_2: f32;
+    var u: f32;
+
+    n_33 = n_32;
+    ng_1 = ng;
+    v_37 = v_36;
+    let _e6 = v_37;
+    let _e7 = ng_1;
+    vz = max(dot(_e6, _e7), 0f);
+    let _e13 = vz;
+    t_9 = min((0.9f * _e13), 0.01f);
+    let _e19 = n_33;
+    let _e20 = v_37;
+    let _e23 = n_33;
+    let _e25 = v_37;
+    r_9 = (((2f * dot(_e19, _e20)) * _e23) - _e25);
+    let _e28 = r_9;
+    let _e29 = ng_1;
+    let _e31 = t_9;
+    if (dot(_e28, _e29) >= _e31) {
+        {
+            let _e33 = n_33;
+            return _e33;
+        }
+    }
+    let _e34 = n_33;
+    let _e35 = n_33;
+    let _e36 = ng_1;
+    let _e38 = ng_1;
+    let _e41 = pbr_safe_normalize((_e34 - (dot(_e35, _e36) * _e38)));
+    across = _e41;
+    let _e43 = across;
+    let _e44 = across;
+    if (dot(_e43, _e44) > 0f) {
+        let _e48 = across;
+        local_27 = _e48;
+    } else {
+        let _e49 = n_33;
+        local_27 = _e49;
+    }
+    let _e51 = local_27;
+    x_25 = _e51;
+    let _e53 = v_37;
+    let _e54 = x_25;
+    vx = dot(_e53, _e54);
+    let _e57 = vx;
+    let _e58 = vx;
+    let _e60 = vz;
+    let _e61 = vz;
+    a_7 = ((_e57 * _e58) + (_e60 * _e61));
+    let _e66 = a_7;
+    let _e67 = vz;
+    let _e68 = t_9;
+    b_12 = (2f * (_e66 + (_e67 * _e68)));
+    let _e73 = vz;
+    let _e74 = t_9;
+    let _e76 = pbr_sq((_e73 + _e74));
+    c_23 = _e76;
+    let _e78 = b_12;
+    let _e79 = b_12;
+    let _e82 = a_7;
+    let _e84 = c_23;
+    root = sqrt(max(((_e78 * _e79) - ((4f * _e82) * _e84)), 0f));
+    let _e92 = a_7;
+    let _e93 = vz;
+    let _e94 = t_9;
+    bigB = (2f * (_e92 - (_e93 * _e94)));
+    let _e101 = vx;
+    if (_e101 < 0f) {
+        {
+            let _e104 = b_12;
+            let _e105 = root;
+            let _e108 = a_7;
+            w_2 = ((_e104 + _e105) / max((4f * _e108), 0.000000000000000000000000000000000000011754944f));
+            let _e113 = vz;
+            let _e114 = t_9;
+            let _e116 = pbr_sq((_e113 - _e114));
+            let _e117 = bigB;
+            let _e118 = root;
+            u = (_e116 / max((_e117 + _e118), 0.000000000000000000000000000000000000011754944f));
+        }
+    } else {
+        {
+            let _e123 = c_23;
+            let _e124 = b_12;
+            let _e125 = root;
+            w_2 = (_e123 / max((_e124 + _e125), 0.000000000000000000000000000000000000011754944f));
+            let _e130 = bigB;
+            let _e131 = root;
+            let _e134 = a_7;
+            u = ((_e130 + _e131) / max((4f * _e134), 0.000000000000000000000000000000000000011754944f));
+        }
+    }
+    let _e139 = u;
+    let _e144 = x_25;
+    let _e146 = w_2;
+    let _e151 = ng_1;
+    return ((sqrt(clamp(_e139, 0f, 1f)) * _e144) + (sqrt(clamp(_e146, 0f, 1f)) * _e151));
+}
+
 fn pbr_range_window(distance2_: f32, range: f32) -> f32 {
     var distance2_1: f32;
     var range_1: f32;
     var ratio2_: f32;
-    var w_2: f32;
+    var w_3: f32;
 
     distance2_1 = distance2_;
     range_1 = range;
@@ -3636,9 +3752,9 @@ fn pbr_range_window(distance2_: f32, range: f32) -> f32 {
     ratio2_ = (_e4 / (_e5 * _e6));
     let _e11 = ratio2_;
     let _e12 = ratio2_;
-    w_2 = clamp((1f - (_e11 * _e12)), 0f, 1f);
-    let _e19 = w_2;
-    let _e20 = w_2;
+    w_3 = clamp((1f - (_e11 * _e12)), 0f, 1f);
+    let _e19 = w_3;
+    let _e20 = w_3;
     return (_e19 * _e20);
 }
 
@@ -3660,7 +3776,7 @@ fn pbr_spot_attenuation(l_28: vec3<f32>, spotDirection: vec3<f32>, cosOuter: f32
     var spotDirection_1: vec3<f32>;
     var cosOuter_1: f32;
     var invCosRange_1: f32;
-    var t_9: f32;
+    var t_10: f32;
 
     l_29 = l_28;
     spotDirection_1 = spotDirection;
@@ -3670,43 +3786,43 @@ fn pbr_spot_attenuation(l_28: vec3<f32>, spotDirection: vec3<f32>, cosOuter: f32
     let _e10 = spotDirection_1;
     let _e12 = cosOuter_1;
     let _e14 = invCosRange_1;
-    t_9 = clamp(((dot(-(_e8), _e10) - _e12) * _e14), 0f, 1f);
-    let _e20 = t_9;
-    let _e21 = t_9;
+    t_10 = clamp(((dot(-(_e8), _e10) - _e12) * _e14), 0f, 1f);
+    let _e20 = t_10;
+    let _e21 = t_10;
     return (_e20 * _e21);
 }
 
-fn pbr_sh9_irradiance(sh: array<vec3<f32>, 9>, n_32: vec3<f32>) -> vec3<f32> {
+fn pbr_sh9_irradiance(sh: array<vec3<f32>, 9>, n_34: vec3<f32>) -> vec3<f32> {
     var sh_1: array<vec3<f32>, 9>;
-    var n_33: vec3<f32>;
+    var n_35: vec3<f32>;
 
     sh_1 = sh;
-    n_33 = n_32;
+    n_35 = n_34;
     let _e7 = sh_1[8];
-    let _e9 = n_33;
-    let _e11 = n_33;
-    let _e14 = n_33;
-    let _e16 = n_33;
+    let _e9 = n_35;
+    let _e11 = n_35;
+    let _e14 = n_35;
+    let _e16 = n_35;
     let _e24 = sh_1[6];
-    let _e26 = n_33;
-    let _e29 = n_33;
+    let _e26 = n_35;
+    let _e29 = n_35;
     let _e36 = sh_1[0];
     let _e42 = sh_1[6];
     let _e50 = sh_1[4];
-    let _e51 = n_33;
-    let _e54 = n_33;
+    let _e51 = n_35;
+    let _e54 = n_35;
     let _e59 = sh_1[7];
-    let _e60 = n_33;
-    let _e63 = n_33;
+    let _e60 = n_35;
+    let _e63 = n_35;
     let _e69 = sh_1[5];
-    let _e70 = n_33;
-    let _e73 = n_33;
+    let _e70 = n_35;
+    let _e73 = n_35;
     let _e84 = sh_1[3];
-    let _e85 = n_33;
+    let _e85 = n_35;
     let _e90 = sh_1[1];
-    let _e91 = n_33;
+    let _e91 = n_35;
     let _e97 = sh_1[2];
-    let _e98 = n_33;
+    let _e98 = n_35;
     return (((((((0.429043f * _e7) * ((_e9.x * _e11.x) - (_e14.y * _e16.y))) + (((0.743125f * _e24) * _e26.z) * _e29.z)) + (0.886227f * _e36)) - (0.247708f * _e42)) + (0.858086f * ((((_e50 * _e51.x) * _e54.y) + ((_e59 * _e60.x) * _e63.z)) + ((_e69 * _e70.y) * _e73.z)))) + (1.023328f * (((_e84 * _e85.x) + (_e90 * _e91.y)) + (_e97 * _e98.z))));
 }
 
@@ -3838,52 +3954,52 @@ fn pbr_pdf_GGX_half_vector(NdotH_32: f32, alpha_70: f32) -> f32 {
     return (_e6 * _e7);
 }
 
-fn pbr_tangent_to_world(v_36: vec3<f32>, n_34: vec3<f32>) -> vec3<f32> {
-    var v_37: vec3<f32>;
-    var n_35: vec3<f32>;
-    var local_27: vec3<f32>;
+fn pbr_tangent_to_world(v_38: vec3<f32>, n_36: vec3<f32>) -> vec3<f32> {
+    var v_39: vec3<f32>;
+    var n_37: vec3<f32>;
+    var local_28: vec3<f32>;
     var up: vec3<f32>;
-    var t_10: vec3<f32>;
-    var b_12: vec3<f32>;
+    var t_11: vec3<f32>;
+    var b_13: vec3<f32>;
 
-    v_37 = v_36;
-    n_35 = n_34;
-    let _e4 = n_35;
+    v_39 = v_38;
+    n_37 = n_36;
+    let _e4 = n_37;
     if (abs(_e4.z) < 0.999f) {
-        local_27 = vec3<f32>(0f, 0f, 1f);
+        local_28 = vec3<f32>(0f, 0f, 1f);
     } else {
-        local_27 = vec3<f32>(1f, 0f, 0f);
+        local_28 = vec3<f32>(1f, 0f, 0f);
     }
-    let _e18 = local_27;
+    let _e18 = local_28;
     up = _e18;
     let _e20 = up;
-    let _e21 = n_35;
-    t_10 = normalize(cross(_e20, _e21));
-    let _e25 = n_35;
-    let _e26 = t_10;
-    b_12 = cross(_e25, _e26);
-    let _e29 = t_10;
-    let _e30 = v_37;
-    let _e33 = b_12;
-    let _e34 = v_37;
-    let _e38 = n_35;
-    let _e39 = v_37;
+    let _e21 = n_37;
+    t_11 = normalize(cross(_e20, _e21));
+    let _e25 = n_37;
+    let _e26 = t_11;
+    b_13 = cross(_e25, _e26);
+    let _e29 = t_11;
+    let _e30 = v_39;
+    let _e33 = b_13;
+    let _e34 = v_39;
+    let _e38 = n_37;
+    let _e39 = v_39;
     return (((_e29 * _e30.x) + (_e33 * _e34.y)) + (_e38 * _e39.z));
 }
 
 fn pbr_equirect_uv(dir: vec3<f32>) -> vec2<f32> {
     var dir_1: vec3<f32>;
-    var u: f32;
-    var t_11: f32;
+    var u_1: f32;
+    var t_12: f32;
 
     dir_1 = dir;
     let _e2 = dir_1;
     let _e4 = dir_1;
-    u = fract((atan2(_e2.x, -(_e4.z)) * 0.15915494f));
+    u_1 = fract((atan2(_e2.x, -(_e4.z)) * 0.15915494f));
     let _e15 = dir_1;
-    t_11 = (1f - (acos(clamp(_e15.y, -1f, 1f)) * 0.31830987f));
-    let _e26 = u;
-    let _e27 = t_11;
+    t_12 = (1f - (acos(clamp(_e15.y, -1f, 1f)) * 0.31830987f));
+    let _e26 = u_1;
+    let _e27 = t_12;
     return vec2<f32>(_e26, _e27);
 }
 
@@ -3905,17 +4021,17 @@ fn pbr_equirect_direction(uv: vec2<f32>) -> vec3<f32> {
     return vec3<f32>((sin(_e16) * sin(_e18)), cos(_e21), (-(sin(_e23)) * cos(_e26)));
 }
 
-fn pbr_lobe_share_above(c_23: f32, alpha_72: f32) -> f32 {
-    var c_24: f32;
+fn pbr_lobe_share_above(c_24: f32, alpha_72: f32) -> f32 {
+    var c_25: f32;
     var alpha_73: f32;
 
-    c_24 = c_23;
+    c_25 = c_24;
     alpha_73 = alpha_72;
-    let _e6 = c_24;
+    let _e6 = c_25;
     let _e9 = alpha_73;
     let _e11 = alpha_73;
-    let _e13 = c_24;
-    let _e14 = c_24;
+    let _e13 = c_25;
+    let _e14 = c_25;
     return (0.5f + ((0.5f * _e6) * inverseSqrt(max((((4f * _e9) * _e11) + (_e13 * _e14)), 0.000000000000000000000000000001f))));
 }
 
@@ -3944,19 +4060,19 @@ fn pbr_diffuse_horizon_occlusion(NdotNg: f32) -> f32 {
     return clamp((0.5f + (0.5f * _e4)), 0f, 1f);
 }
 
-fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f32) -> vec3<f32> {
-    var n_37: vec3<f32>;
-    var r_10: vec3<f32>;
+fn pbr_specular_dominant_direction(n_38: vec3<f32>, r_10: vec3<f32>, alpha_76: f32) -> vec3<f32> {
+    var n_39: vec3<f32>;
+    var r_11: vec3<f32>;
     var alpha_77: f32;
     var d_1: vec3<f32>;
     var len2_: f32;
-    var local_28: vec3<f32>;
+    var local_29: vec3<f32>;
 
-    n_37 = n_36;
-    r_10 = r_9;
+    n_39 = n_38;
+    r_11 = r_10;
     alpha_77 = alpha_76;
-    let _e6 = r_10;
-    let _e7 = n_37;
+    let _e6 = r_11;
+    let _e7 = n_39;
     let _e8 = alpha_77;
     d_1 = mix(_e6, _e7, vec3(_e8));
     let _e12 = d_1;
@@ -3966,12 +4082,12 @@ fn pbr_specular_dominant_direction(n_36: vec3<f32>, r_9: vec3<f32>, alpha_76: f3
     if (_e16 > 0.000000000001f) {
         let _e19 = d_1;
         let _e20 = len2_;
-        local_28 = (_e19 * inverseSqrt(_e20));
+        local_29 = (_e19 * inverseSqrt(_e20));
     } else {
-        let _e23 = n_37;
-        local_28 = _e23;
+        let _e23 = n_39;
+        local_29 = _e23;
     }
-    let _e25 = local_28;
+    let _e25 = local_29;
     return _e25;
 }
 
@@ -4110,7 +4226,7 @@ fn pbr_indirect_diffuse_color(diffuseColor_14: vec3<f32>, coatF0_6: vec3<f32>, d
     return _e11;
 }
 
-fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90_22: f32, coatF0_8: vec3<f32>, coatF90_2: f32, perceptualRoughness_40: f32, occlusion_6: f32, n_38: vec3<f32>, v_38: vec3<f32>, dfg_22: vec2<f32>) -> pbr_PreparedSurface {
+fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90_22: f32, coatF0_8: vec3<f32>, coatF90_2: f32, perceptualRoughness_40: f32, occlusion_6: f32, n_40: vec3<f32>, v_40: vec3<f32>, dfg_22: vec2<f32>) -> pbr_PreparedSurface {
     var diffuseColor_17: vec3<f32>;
     var f0_54: vec3<f32>;
     var f90_23: f32;
@@ -4118,8 +4234,8 @@ fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90
     var coatF90_3: f32;
     var perceptualRoughness_41: f32;
     var occlusion_7: f32;
-    var n_39: vec3<f32>;
-    var v_39: vec3<f32>;
+    var n_41: vec3<f32>;
+    var v_41: vec3<f32>;
     var dfg_23: vec2<f32>;
     var s_7: pbr_PreparedSurface;
 
@@ -4130,12 +4246,12 @@ fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90
     coatF90_3 = coatF90_2;
     perceptualRoughness_41 = perceptualRoughness_40;
     occlusion_7 = occlusion_6;
-    n_39 = n_38;
-    v_39 = v_38;
+    n_41 = n_40;
+    v_41 = v_40;
     dfg_23 = dfg_22;
-    let _e22 = n_39;
+    let _e22 = n_41;
     s_7.n = _e22;
-    let _e24 = v_39;
+    let _e24 = v_41;
     s_7.v = _e24;
     let _e26 = f0_54;
     s_7.f0_ = _e26;
@@ -4165,8 +4281,8 @@ fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90
     let _e51 = dfg_23;
     let _e52 = pbr_indirect_specular_albedo_f90_(_e49, _e50, _e51);
     s_7.indirectSpecularAlbedo = _e52;
-    let _e54 = n_39;
-    let _e55 = v_39;
+    let _e54 = n_41;
+    let _e55 = v_41;
     let _e59 = occlusion_7;
     let _e60 = s_7;
     let _e62 = s_7;
@@ -4176,14 +4292,14 @@ fn pbr_prepare_surface_f90_dfg(diffuseColor_16: vec3<f32>, f0_53: vec3<f32>, f90
     return _e66;
 }
 
-fn pbr_prepare_surface_dfg(diffuseColor_18: vec3<f32>, f0_55: vec3<f32>, coatF0_10: vec3<f32>, perceptualRoughness_42: f32, occlusion_8: f32, n_40: vec3<f32>, v_40: vec3<f32>, dfg_24: vec2<f32>) -> pbr_PreparedSurface {
+fn pbr_prepare_surface_dfg(diffuseColor_18: vec3<f32>, f0_55: vec3<f32>, coatF0_10: vec3<f32>, perceptualRoughness_42: f32, occlusion_8: f32, n_42: vec3<f32>, v_42: vec3<f32>, dfg_24: vec2<f32>) -> pbr_PreparedSurface {
     var diffuseColor_19: vec3<f32>;
     var f0_56: vec3<f32>;
     var coatF0_11: vec3<f32>;
     var perceptualRoughness_43: f32;
     var occlusion_9: f32;
-    var n_41: vec3<f32>;
-    var v_41: vec3<f32>;
+    var n_43: vec3<f32>;
+    var v_43: vec3<f32>;
     var dfg_25: vec2<f32>;
     var s_8: pbr_PreparedSurface;
 
@@ -4192,12 +4308,12 @@ fn pbr_prepare_surface_dfg(diffuseColor_18: vec3<f32>, f0_55: vec3<f32>, coatF0_
     coatF0_11 = coatF0_10;
     perceptualRoughness_43 = perceptualRoughness_42;
     occlusion_9 = occlusion_8;
-    n_41 = n_40;
-    v_41 = v_40;
+    n_43 = n_42;
+    v_43 = v_42;
     dfg_25 = dfg_24;
-    let _e18 = n_41;
+    let _e18 = n_43;
     s_8.n = _e18;
-    let _e20 = v_41;
+    let _e20 = v_43;
     s_8.v = _e20;
     let _e22 = f0_56;
     s_8.f0_ = _e22;
@@ -4222,8 +4338,8 @@ fn pbr_prepare_surface_dfg(diffuseColor_18: vec3<f32>, f0_55: vec3<f32>, coatF0_
     let _e42 = dfg_25;
     let _e43 = pbr_indirect_specular_albedo(_e41, _e42);
     s_8.indirectSpecularAlbedo = _e43;
-    let _e45 = n_41;
-    let _e46 = v_41;
+    let _e45 = n_43;
+    let _e46 = v_43;
     let _e50 = occlusion_9;
     let _e51 = s_8;
     let _e53 = s_8;
@@ -4236,7 +4352,7 @@ fn pbr_prepare_surface_dfg(diffuseColor_18: vec3<f32>, f0_55: vec3<f32>, coatF0_
     return _e60;
 }
 
-fn pbr_prepare_surface_f90_(diffuseColor_20: vec3<f32>, f0_57: vec3<f32>, f90_24: f32, coatF0_12: vec3<f32>, coatF90_4: f32, perceptualRoughness_44: f32, occlusion_10: f32, n_42: vec3<f32>, v_42: vec3<f32>) -> pbr_PreparedSurface {
+fn pbr_prepare_surface_f90_(diffuseColor_20: vec3<f32>, f0_57: vec3<f32>, f90_24: f32, coatF0_12: vec3<f32>, coatF90_4: f32, perceptualRoughness_44: f32, occlusion_10: f32, n_44: vec3<f32>, v_44: vec3<f32>) -> pbr_PreparedSurface {
     var diffuseColor_21: vec3<f32>;
     var f0_58: vec3<f32>;
     var f90_25: f32;
@@ -4244,8 +4360,8 @@ fn pbr_prepare_surface_f90_(diffuseColor_20: vec3<f32>, f0_57: vec3<f32>, f90_24
     var coatF90_5: f32;
     var perceptualRoughness_45: f32;
     var occlusion_11: f32;
-    var n_43: vec3<f32>;
-    var v_43: vec3<f32>;
+    var n_45: vec3<f32>;
+    var v_45: vec3<f32>;
     var roughness_6: f32;
     var dfg_26: vec2<f32>;
 
@@ -4256,13 +4372,13 @@ fn pbr_prepare_surface_f90_(diffuseColor_20: vec3<f32>, f0_57: vec3<f32>, f90_24
     coatF90_5 = coatF90_4;
     perceptualRoughness_45 = perceptualRoughness_44;
     occlusion_11 = occlusion_10;
-    n_43 = n_42;
-    v_43 = v_42;
+    n_45 = n_44;
+    v_45 = v_44;
     let _e18 = perceptualRoughness_45;
     let _e19 = pbr_clamp_perceptual_roughness(_e18);
     roughness_6 = _e19;
-    let _e21 = n_43;
-    let _e22 = v_43;
+    let _e21 = n_45;
+    let _e22 = v_45;
     let _e26 = roughness_6;
     let _e27 = pbr_env_brdf(max(dot(_e21, _e22), 0.0001f), _e26);
     dfg_26 = _e27;
@@ -4273,21 +4389,21 @@ fn pbr_prepare_surface_f90_(diffuseColor_20: vec3<f32>, f0_57: vec3<f32>, f90_24
     let _e33 = coatF90_5;
     let _e34 = roughness_6;
     let _e35 = occlusion_11;
-    let _e36 = n_43;
-    let _e37 = v_43;
+    let _e36 = n_45;
+    let _e37 = v_45;
     let _e38 = dfg_26;
     let _e39 = pbr_prepare_surface_f90_dfg(_e29, _e30, _e31, _e32, _e33, _e34, _e35, _e36, _e37, _e38);
     return _e39;
 }
 
-fn pbr_prepare_surface(diffuseColor_22: vec3<f32>, f0_59: vec3<f32>, coatF0_14: vec3<f32>, perceptualRoughness_46: f32, occlusion_12: f32, n_44: vec3<f32>, v_44: vec3<f32>) -> pbr_PreparedSurface {
+fn pbr_prepare_surface(diffuseColor_22: vec3<f32>, f0_59: vec3<f32>, coatF0_14: vec3<f32>, perceptualRoughness_46: f32, occlusion_12: f32, n_46: vec3<f32>, v_46: vec3<f32>) -> pbr_PreparedSurface {
     var diffuseColor_23: vec3<f32>;
     var f0_60: vec3<f32>;
     var coatF0_15: vec3<f32>;
     var perceptualRoughness_47: f32;
     var occlusion_13: f32;
-    var n_45: vec3<f32>;
-    var v_45: vec3<f32>;
+    var n_47: vec3<f32>;
+    var v_47: vec3<f32>;
     var roughness_7: f32;
     var dfg_27: vec2<f32>;
 
@@ -4296,13 +4412,13 @@ fn pbr_prepare_surface(diffuseColor_22: vec3<f32>, f0_59: vec3<f32>, coatF0_14: 
     coatF0_15 = coatF0_14;
     perceptualRoughness_47 = perceptualRoughness_46;
     occlusion_13 = occlusion_12;
-    n_45 = n_44;
-    v_45 = v_44;
+    n_47 = n_46;
+    v_47 = v_46;
     let _e14 = perceptualRoughness_47;
     let _e15 = pbr_clamp_perceptual_roughness(_e14);
     roughness_7 = _e15;
-    let _e17 = n_45;
-    let _e18 = v_45;
+    let _e17 = n_47;
+    let _e18 = v_47;
     let _e22 = roughness_7;
     let _e23 = pbr_env_brdf(max(dot(_e17, _e18), 0.0001f), _e22);
     dfg_27 = _e23;
@@ -4311,8 +4427,8 @@ fn pbr_prepare_surface(diffuseColor_22: vec3<f32>, f0_59: vec3<f32>, coatF0_14: 
     let _e27 = coatF0_15;
     let _e28 = roughness_7;
     let _e29 = occlusion_13;
-    let _e30 = n_45;
-    let _e31 = v_45;
+    let _e30 = n_47;
+    let _e31 = v_47;
     let _e32 = dfg_27;
     let _e33 = pbr_prepare_surface_dfg(_e25, _e26, _e27, _e28, _e29, _e30, _e31, _e32);
     return _e33;
@@ -4354,14 +4470,14 @@ fn pbr_lighting_standard_add_environment(s_11: pbr_PreparedSurface, indirect: pb
     return ((_e6 + ((_e7.indirectDiffuseColor * _e9.diffuse) * _e12.occlusion)) + ((_e16.specular * _e18.indirectSpecularAlbedo) * _e21.specularOcclusion));
 }
 
-fn pbr_lighting_standard_dfg(diffuseColor_24: vec3<f32>, f0_61: vec3<f32>, coatF0_16: vec3<f32>, perceptualRoughness_48: f32, occlusion_14: f32, n_46: vec3<f32>, v_46: vec3<f32>, gi: pbr_GI, dfg_28: vec2<f32>) -> vec3<f32> {
+fn pbr_lighting_standard_dfg(diffuseColor_24: vec3<f32>, f0_61: vec3<f32>, coatF0_16: vec3<f32>, perceptualRoughness_48: f32, occlusion_14: f32, n_48: vec3<f32>, v_48: vec3<f32>, gi: pbr_GI, dfg_28: vec2<f32>) -> vec3<f32> {
     var diffuseColor_25: vec3<f32>;
     var f0_62: vec3<f32>;
     var coatF0_17: vec3<f32>;
     var perceptualRoughness_49: f32;
     var occlusion_15: f32;
-    var n_47: vec3<f32>;
-    var v_47: vec3<f32>;
+    var n_49: vec3<f32>;
+    var v_49: vec3<f32>;
     var gi_1: pbr_GI;
     var dfg_29: vec2<f32>;
     var s_13: pbr_PreparedSurface;
@@ -4371,8 +4487,8 @@ fn pbr_lighting_standard_dfg(diffuseColor_24: vec3<f32>, f0_61: vec3<f32>, coatF
     coatF0_17 = coatF0_16;
     perceptualRoughness_49 = perceptualRoughness_48;
     occlusion_15 = occlusion_14;
-    n_47 = n_46;
-    v_47 = v_46;
+    n_49 = n_48;
+    v_49 = v_48;
     gi_1 = gi;
     dfg_29 = dfg_28;
     let _e18 = diffuseColor_25;
@@ -4380,8 +4496,8 @@ fn pbr_lighting_standard_dfg(diffuseColor_24: vec3<f32>, f0_61: vec3<f32>, coatF
     let _e20 = coatF0_17;
     let _e21 = perceptualRoughness_49;
     let _e22 = occlusion_15;
-    let _e23 = n_47;
-    let _e24 = v_47;
+    let _e23 = n_49;
+    let _e24 = v_49;
     let _e25 = dfg_29;
     let _e26 = pbr_prepare_surface_dfg(_e18, _e19, _e20, _e21, _e22, _e23, _e24, _e25);
     s_13 = _e26;
@@ -4394,14 +4510,14 @@ fn pbr_lighting_standard_dfg(diffuseColor_24: vec3<f32>, f0_61: vec3<f32>, coatF
     return _e35;
 }
 
-fn pbr_lighting_standard(diffuseColor_26: vec3<f32>, f0_63: vec3<f32>, coatF0_18: vec3<f32>, perceptualRoughness_50: f32, occlusion_16: f32, n_48: vec3<f32>, v_48: vec3<f32>, gi_2: pbr_GI) -> vec3<f32> {
+fn pbr_lighting_standard(diffuseColor_26: vec3<f32>, f0_63: vec3<f32>, coatF0_18: vec3<f32>, perceptualRoughness_50: f32, occlusion_16: f32, n_50: vec3<f32>, v_50: vec3<f32>, gi_2: pbr_GI) -> vec3<f32> {
     var diffuseColor_27: vec3<f32>;
     var f0_64: vec3<f32>;
     var coatF0_19: vec3<f32>;
     var perceptualRoughness_51: f32;
     var occlusion_17: f32;
-    var n_49: vec3<f32>;
-    var v_49: vec3<f32>;
+    var n_51: vec3<f32>;
+    var v_51: vec3<f32>;
     var gi_3: pbr_GI;
     var s_14: pbr_PreparedSurface;
 
@@ -4410,16 +4526,16 @@ fn pbr_lighting_standard(diffuseColor_26: vec3<f32>, f0_63: vec3<f32>, coatF0_18
     coatF0_19 = coatF0_18;
     perceptualRoughness_51 = perceptualRoughness_50;
     occlusion_17 = occlusion_16;
-    n_49 = n_48;
-    v_49 = v_48;
+    n_51 = n_50;
+    v_51 = v_50;
     gi_3 = gi_2;
     let _e16 = diffuseColor_27;
     let _e17 = f0_64;
     let _e18 = coatF0_19;
     let _e19 = perceptualRoughness_51;
     let _e20 = occlusion_17;
-    let _e21 = n_49;
-    let _e22 = v_49;
+    let _e21 = n_51;
+    let _e22 = v_51;
     let _e23 = pbr_prepare_surface(_e16, _e17, _e18, _e19, _e20, _e21, _e22);
     s_14 = _e23;
     let _e25 = s_14;
@@ -4431,7 +4547,7 @@ fn pbr_lighting_standard(diffuseColor_26: vec3<f32>, f0_63: vec3<f32>, coatF0_18
     return _e32;
 }
 
-fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f90_26: f32, coatF0_20: vec3<f32>, coatF90_6: f32, perceptualRoughness_52: f32, occlusion_18: f32, n_50: vec3<f32>, v_50: vec3<f32>, gi_4: pbr_GI, dfg_30: vec2<f32>) -> vec3<f32> {
+fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f90_26: f32, coatF0_20: vec3<f32>, coatF90_6: f32, perceptualRoughness_52: f32, occlusion_18: f32, n_52: vec3<f32>, v_52: vec3<f32>, gi_4: pbr_GI, dfg_30: vec2<f32>) -> vec3<f32> {
     var diffuseColor_29: vec3<f32>;
     var f0_66: vec3<f32>;
     var f90_27: f32;
@@ -4439,8 +4555,8 @@ fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f
     var coatF90_7: f32;
     var perceptualRoughness_53: f32;
     var occlusion_19: f32;
-    var n_51: vec3<f32>;
-    var v_51: vec3<f32>;
+    var n_53: vec3<f32>;
+    var v_53: vec3<f32>;
     var gi_5: pbr_GI;
     var dfg_31: vec2<f32>;
     var s_15: pbr_PreparedSurface;
@@ -4452,8 +4568,8 @@ fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f
     coatF90_7 = coatF90_6;
     perceptualRoughness_53 = perceptualRoughness_52;
     occlusion_19 = occlusion_18;
-    n_51 = n_50;
-    v_51 = v_50;
+    n_53 = n_52;
+    v_53 = v_52;
     gi_5 = gi_4;
     dfg_31 = dfg_30;
     let _e22 = diffuseColor_29;
@@ -4463,8 +4579,8 @@ fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f
     let _e26 = coatF90_7;
     let _e27 = perceptualRoughness_53;
     let _e28 = occlusion_19;
-    let _e29 = n_51;
-    let _e30 = v_51;
+    let _e29 = n_53;
+    let _e30 = v_53;
     let _e31 = dfg_31;
     let _e32 = pbr_prepare_surface_f90_dfg(_e22, _e23, _e24, _e25, _e26, _e27, _e28, _e29, _e30, _e31);
     s_15 = _e32;
@@ -4477,7 +4593,7 @@ fn pbr_lighting_standard_f90_dfg(diffuseColor_28: vec3<f32>, f0_65: vec3<f32>, f
     return _e41;
 }
 
-fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_28: f32, coatF0_22: vec3<f32>, coatF90_8: f32, perceptualRoughness_54: f32, occlusion_20: f32, n_52: vec3<f32>, v_52: vec3<f32>, gi_6: pbr_GI) -> vec3<f32> {
+fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_28: f32, coatF0_22: vec3<f32>, coatF90_8: f32, perceptualRoughness_54: f32, occlusion_20: f32, n_54: vec3<f32>, v_54: vec3<f32>, gi_6: pbr_GI) -> vec3<f32> {
     var diffuseColor_31: vec3<f32>;
     var f0_68: vec3<f32>;
     var f90_29: f32;
@@ -4485,8 +4601,8 @@ fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_
     var coatF90_9: f32;
     var perceptualRoughness_55: f32;
     var occlusion_21: f32;
-    var n_53: vec3<f32>;
-    var v_53: vec3<f32>;
+    var n_55: vec3<f32>;
+    var v_55: vec3<f32>;
     var gi_7: pbr_GI;
     var s_16: pbr_PreparedSurface;
 
@@ -4497,8 +4613,8 @@ fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_
     coatF90_9 = coatF90_8;
     perceptualRoughness_55 = perceptualRoughness_54;
     occlusion_21 = occlusion_20;
-    n_53 = n_52;
-    v_53 = v_52;
+    n_55 = n_54;
+    v_55 = v_54;
     gi_7 = gi_6;
     let _e20 = diffuseColor_31;
     let _e21 = f0_68;
@@ -4507,8 +4623,8 @@ fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_
     let _e24 = coatF90_9;
     let _e25 = perceptualRoughness_55;
     let _e26 = occlusion_21;
-    let _e27 = n_53;
-    let _e28 = v_53;
+    let _e27 = n_55;
+    let _e28 = v_55;
     let _e29 = pbr_prepare_surface_f90_(_e20, _e21, _e22, _e23, _e24, _e25, _e26, _e27, _e28);
     s_16 = _e29;
     let _e31 = s_16;
@@ -4520,10 +4636,10 @@ fn pbr_lighting_standard_f90_(diffuseColor_30: vec3<f32>, f0_67: vec3<f32>, f90_
     return _e38;
 }
 
-fn pbr_lighting_clearcoat(base: vec3<f32>, coat: pbr_ClearCoat, v_54: vec3<f32>, gi_8: pbr_GI, coatPrefiltered: vec3<f32>, occlusion_22: f32) -> vec3<f32> {
+fn pbr_lighting_clearcoat(base: vec3<f32>, coat: pbr_ClearCoat, v_56: vec3<f32>, gi_8: pbr_GI, coatPrefiltered: vec3<f32>, occlusion_22: f32) -> vec3<f32> {
     var base_1: vec3<f32>;
     var coat_1: pbr_ClearCoat;
-    var v_55: vec3<f32>;
+    var v_57: vec3<f32>;
     var gi_9: pbr_GI;
     var coatPrefiltered_1: vec3<f32>;
     var occlusion_23: f32;
@@ -4535,7 +4651,7 @@ fn pbr_lighting_clearcoat(base: vec3<f32>, coat: pbr_ClearCoat, v_54: vec3<f32>,
 
     base_1 = base;
     coat_1 = coat;
-    v_55 = v_54;
+    v_57 = v_56;
     gi_9 = gi_8;
     coatPrefiltered_1 = coatPrefiltered;
     occlusion_23 = occlusion_22;
@@ -4543,14 +4659,14 @@ fn pbr_lighting_clearcoat(base: vec3<f32>, coat: pbr_ClearCoat, v_54: vec3<f32>,
     let _e14 = pbr_clamp_perceptual_roughness(_e12.perceptualRoughness);
     roughness_8 = _e14;
     let _e16 = coat_1;
-    let _e18 = v_55;
+    let _e18 = v_57;
     NcdotV_2 = max(dot(_e16.normal, _e18), 0.0001f);
     let _e23 = NcdotV_2;
     let _e24 = roughness_8;
     let _e25 = pbr_env_brdf(_e23, _e24);
     dfg_32 = _e25;
     let _e27 = coat_1;
-    let _e29 = v_55;
+    let _e29 = v_57;
     let _e30 = gi_9;
     let _e33 = gi_9;
     let _e36 = roughness_8;
@@ -4592,11 +4708,11 @@ fn pbr_sheen_effective_albedo(E_4: f32) -> f32 {
     return min(_e2, 1f);
 }
 
-fn pbr_lighting_sheen(base_2: vec3<f32>, sheen: pbr_Sheen, n_54: vec3<f32>, v_56: vec3<f32>, gi_10: pbr_GI, sheenPrefiltered: vec3<f32>, occlusion_24: f32) -> vec3<f32> {
+fn pbr_lighting_sheen(base_2: vec3<f32>, sheen: pbr_Sheen, n_56: vec3<f32>, v_58: vec3<f32>, gi_10: pbr_GI, sheenPrefiltered: vec3<f32>, occlusion_24: f32) -> vec3<f32> {
     var base_3: vec3<f32>;
     var sheen_1: pbr_Sheen;
-    var n_55: vec3<f32>;
-    var v_57: vec3<f32>;
+    var n_57: vec3<f32>;
+    var v_59: vec3<f32>;
     var gi_11: pbr_GI;
     var sheenPrefiltered_1: vec3<f32>;
     var occlusion_25: f32;
@@ -4612,13 +4728,13 @@ fn pbr_lighting_sheen(base_2: vec3<f32>, sheen: pbr_Sheen, n_54: vec3<f32>, v_56
 
     base_3 = base_2;
     sheen_1 = sheen;
-    n_55 = n_54;
-    v_57 = v_56;
+    n_57 = n_56;
+    v_59 = v_58;
     gi_11 = gi_10;
     sheenPrefiltered_1 = sheenPrefiltered;
     occlusion_25 = occlusion_24;
-    let _e14 = n_55;
-    let _e15 = v_57;
+    let _e14 = n_57;
+    let _e15 = v_59;
     NdotV_74 = max(dot(_e14, _e15), 0.0001f);
     let _e20 = NdotV_74;
     let _e21 = sheen_1;
@@ -4629,14 +4745,14 @@ fn pbr_lighting_sheen(base_2: vec3<f32>, sheen: pbr_Sheen, n_54: vec3<f32>, v_56
     albedo_14 = _e26;
     let _e28 = gi_11;
     l_30 = _e28.light.dir;
-    let _e32 = n_55;
+    let _e32 = n_57;
     let _e33 = l_30;
     NdotL_57 = clamp(dot(_e32, _e33), 0f, 1f);
     let _e39 = l_30;
-    let _e40 = v_57;
+    let _e40 = v_59;
     let _e42 = pbr_safe_normalize((_e39 + _e40));
     h_4 = _e42;
-    let _e44 = n_55;
+    let _e44 = n_57;
     let _e45 = h_4;
     NdotH_34 = clamp(dot(_e44, _e45), 0f, 1f);
     let _e51 = NdotL_57;
@@ -4664,66 +4780,66 @@ fn pbr_lighting_sheen(base_2: vec3<f32>, sheen: pbr_Sheen, n_54: vec3<f32>, v_56
     return (((_e80 * _e84) + _e86) + _e88);
 }
 
-fn pbr_anisotropic_tangent(n_56: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
-    var n_57: vec3<f32>;
+fn pbr_anisotropic_tangent(n_58: vec3<f32>, direction: vec3<f32>) -> vec3<f32> {
+    var n_59: vec3<f32>;
     var direction_1: vec3<f32>;
     var d_2: vec3<f32>;
-    var t_12: vec3<f32>;
+    var t_13: vec3<f32>;
     var t2_: f32;
     var projected: vec3<f32>;
     var fallback: vec3<f32>;
-    var local_29: vec3<f32>;
+    var local_30: vec3<f32>;
 
-    n_57 = n_56;
+    n_59 = n_58;
     direction_1 = direction;
     let _e4 = direction_1;
     let _e5 = pbr_safe_normalize(_e4);
     d_2 = _e5;
     let _e7 = d_2;
-    let _e8 = n_57;
-    let _e9 = n_57;
+    let _e8 = n_59;
+    let _e9 = n_59;
     let _e10 = d_2;
-    t_12 = (_e7 - (_e8 * dot(_e9, _e10)));
-    let _e15 = t_12;
-    let _e16 = t_12;
+    t_13 = (_e7 - (_e8 * dot(_e9, _e10)));
+    let _e15 = t_13;
+    let _e16 = t_13;
     t2_ = dot(_e15, _e16);
-    let _e19 = t_12;
+    let _e19 = t_13;
     let _e20 = t2_;
     projected = (_e19 * inverseSqrt(max(_e20, 0.000000000000000000000000000000000000011754944f)));
-    let _e30 = n_57;
+    let _e30 = n_59;
     let _e31 = pbr_tangent_to_world(vec3<f32>(1f, 0f, 0f), _e30);
     fallback = _e31;
     let _e33 = t2_;
     if (_e33 > 0.0000010000001f) {
         let _e38 = projected;
-        local_29 = _e38;
+        local_30 = _e38;
     } else {
         let _e39 = fallback;
-        local_29 = _e39;
+        local_30 = _e39;
     }
-    let _e41 = local_29;
+    let _e41 = local_30;
     return _e41;
 }
 
-fn pbr_anisotropic_reflection_normal(n_58: vec3<f32>, v_58: vec3<f32>, anisotropy: pbr_Anisotropy, perceptualRoughness_56: f32) -> vec3<f32> {
-    var n_59: vec3<f32>;
-    var v_59: vec3<f32>;
+fn pbr_anisotropic_reflection_normal(n_60: vec3<f32>, v_60: vec3<f32>, anisotropy: pbr_Anisotropy, perceptualRoughness_56: f32) -> vec3<f32> {
+    var n_61: vec3<f32>;
+    var v_61: vec3<f32>;
     var anisotropy_1: pbr_Anisotropy;
     var perceptualRoughness_57: f32;
-    var b_13: vec3<f32>;
+    var b_14: vec3<f32>;
 
-    n_59 = n_58;
-    v_59 = v_58;
+    n_61 = n_60;
+    v_61 = v_60;
     anisotropy_1 = anisotropy;
     perceptualRoughness_57 = perceptualRoughness_56;
-    let _e8 = n_59;
-    let _e9 = n_59;
+    let _e8 = n_61;
+    let _e9 = n_61;
     let _e10 = anisotropy_1;
     let _e12 = pbr_anisotropic_tangent(_e9, _e10.direction);
-    b_13 = cross(_e8, _e12);
-    let _e15 = n_59;
-    let _e16 = v_59;
-    let _e17 = b_13;
+    b_14 = cross(_e8, _e12);
+    let _e15 = n_61;
+    let _e16 = v_61;
+    let _e17 = b_14;
     let _e18 = anisotropy_1;
     let _e20 = perceptualRoughness_57;
     let _e21 = pbr_clamp_perceptual_roughness(_e20);
@@ -4731,18 +4847,18 @@ fn pbr_anisotropic_reflection_normal(n_58: vec3<f32>, v_58: vec3<f32>, anisotrop
     return _e22;
 }
 
-fn pbr_anisotropic_frame(n_60: vec3<f32>, anisotropy_2: pbr_Anisotropy) -> pbr_AnisotropicFrame {
-    var n_61: vec3<f32>;
+fn pbr_anisotropic_frame(n_62: vec3<f32>, anisotropy_2: pbr_Anisotropy) -> pbr_AnisotropicFrame {
+    var n_63: vec3<f32>;
     var anisotropy_3: pbr_Anisotropy;
     var frame: pbr_AnisotropicFrame;
 
-    n_61 = n_60;
+    n_63 = n_62;
     anisotropy_3 = anisotropy_2;
-    let _e6 = n_61;
+    let _e6 = n_63;
     let _e7 = anisotropy_3;
     let _e9 = pbr_anisotropic_tangent(_e6, _e7.direction);
     frame.t = _e9;
-    let _e11 = n_61;
+    let _e11 = n_63;
     let _e12 = frame;
     frame.b = cross(_e11, _e12.t);
     let _e16 = anisotropy_3;
@@ -4760,7 +4876,7 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     var halfSum_2: vec3<f32>;
     var LdotH_13: f32;
     var Fd: f32;
-    var local_30: f32;
+    var local_31: f32;
     var brdf: vec3<f32>;
 
     s_18 = s_17;
@@ -4787,11 +4903,11 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     let _e40 = nDotL;
     if (_e40 > 0f) {
         let _e43 = Fd;
-        local_30 = _e43;
+        local_31 = _e43;
     } else {
-        local_30 = 0f;
+        local_31 = 0f;
     }
-    let _e46 = local_30;
+    let _e46 = local_31;
     Fd = _e46;
     let _e47 = s_18;
     let _e49 = Fd;
@@ -4812,14 +4928,14 @@ fn pbr_lighting_anisotropic_light(s_17: pbr_PreparedSurface, frame_1: pbr_Anisot
     return ((_e71.color * _e73) * (3.1415927f * clamp(_e76, 0f, 1f)));
 }
 
-fn pbr_lighting_anisotropic_dfg(diffuseColor_32: vec3<f32>, f0_69: vec3<f32>, coatF0_24: vec3<f32>, perceptualRoughness_58: f32, occlusion_26: f32, n_62: vec3<f32>, v_60: vec3<f32>, gi_12: pbr_GI, anisotropy_4: pbr_Anisotropy, dfg_33: vec2<f32>) -> vec3<f32> {
+fn pbr_lighting_anisotropic_dfg(diffuseColor_32: vec3<f32>, f0_69: vec3<f32>, coatF0_24: vec3<f32>, perceptualRoughness_58: f32, occlusion_26: f32, n_64: vec3<f32>, v_62: vec3<f32>, gi_12: pbr_GI, anisotropy_4: pbr_Anisotropy, dfg_33: vec2<f32>) -> vec3<f32> {
     var diffuseColor_33: vec3<f32>;
     var f0_70: vec3<f32>;
     var coatF0_25: vec3<f32>;
     var perceptualRoughness_59: f32;
     var occlusion_27: f32;
-    var n_63: vec3<f32>;
-    var v_61: vec3<f32>;
+    var n_65: vec3<f32>;
+    var v_63: vec3<f32>;
     var gi_13: pbr_GI;
     var anisotropy_5: pbr_Anisotropy;
     var dfg_34: vec2<f32>;
@@ -4830,8 +4946,8 @@ fn pbr_lighting_anisotropic_dfg(diffuseColor_32: vec3<f32>, f0_69: vec3<f32>, co
     coatF0_25 = coatF0_24;
     perceptualRoughness_59 = perceptualRoughness_58;
     occlusion_27 = occlusion_26;
-    n_63 = n_62;
-    v_61 = v_60;
+    n_65 = n_64;
+    v_63 = v_62;
     gi_13 = gi_12;
     anisotropy_5 = anisotropy_4;
     dfg_34 = dfg_33;
@@ -4840,15 +4956,15 @@ fn pbr_lighting_anisotropic_dfg(diffuseColor_32: vec3<f32>, f0_69: vec3<f32>, co
     let _e22 = coatF0_25;
     let _e23 = perceptualRoughness_59;
     let _e24 = occlusion_27;
-    let _e25 = n_63;
-    let _e26 = v_61;
+    let _e25 = n_65;
+    let _e26 = v_63;
     let _e27 = dfg_34;
     let _e28 = pbr_prepare_surface_dfg(_e20, _e21, _e22, _e23, _e24, _e25, _e26, _e27);
     s_19 = _e28;
     let _e30 = s_19;
     let _e31 = gi_13;
     let _e33 = s_19;
-    let _e34 = n_63;
+    let _e34 = n_65;
     let _e35 = anisotropy_5;
     let _e36 = pbr_anisotropic_frame(_e34, _e35);
     let _e37 = gi_13;
@@ -4857,7 +4973,7 @@ fn pbr_lighting_anisotropic_dfg(diffuseColor_32: vec3<f32>, f0_69: vec3<f32>, co
     return _e40;
 }
 
-fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f90_30: f32, coatF0_26: vec3<f32>, coatF90_10: f32, perceptualRoughness_60: f32, occlusion_28: f32, n_64: vec3<f32>, v_62: vec3<f32>, gi_14: pbr_GI, anisotropy_6: pbr_Anisotropy) -> vec3<f32> {
+fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f90_30: f32, coatF0_26: vec3<f32>, coatF90_10: f32, perceptualRoughness_60: f32, occlusion_28: f32, n_66: vec3<f32>, v_64: vec3<f32>, gi_14: pbr_GI, anisotropy_6: pbr_Anisotropy) -> vec3<f32> {
     var diffuseColor_35: vec3<f32>;
     var f0_72: vec3<f32>;
     var f90_31: f32;
@@ -4865,8 +4981,8 @@ fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f
     var coatF90_11: f32;
     var perceptualRoughness_61: f32;
     var occlusion_29: f32;
-    var n_65: vec3<f32>;
-    var v_63: vec3<f32>;
+    var n_67: vec3<f32>;
+    var v_65: vec3<f32>;
     var gi_15: pbr_GI;
     var anisotropy_7: pbr_Anisotropy;
     var s_20: pbr_PreparedSurface;
@@ -4878,8 +4994,8 @@ fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f
     coatF90_11 = coatF90_10;
     perceptualRoughness_61 = perceptualRoughness_60;
     occlusion_29 = occlusion_28;
-    n_65 = n_64;
-    v_63 = v_62;
+    n_67 = n_66;
+    v_65 = v_64;
     gi_15 = gi_14;
     anisotropy_7 = anisotropy_6;
     let _e22 = diffuseColor_35;
@@ -4889,14 +5005,14 @@ fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f
     let _e26 = coatF90_11;
     let _e27 = perceptualRoughness_61;
     let _e28 = occlusion_29;
-    let _e29 = n_65;
-    let _e30 = v_63;
+    let _e29 = n_67;
+    let _e30 = v_65;
     let _e31 = pbr_prepare_surface_f90_(_e22, _e23, _e24, _e25, _e26, _e27, _e28, _e29, _e30);
     s_20 = _e31;
     let _e33 = s_20;
     let _e34 = gi_15;
     let _e36 = s_20;
-    let _e37 = n_65;
+    let _e37 = n_67;
     let _e38 = anisotropy_7;
     let _e39 = pbr_anisotropic_frame(_e37, _e38);
     let _e40 = gi_15;
@@ -4905,14 +5021,14 @@ fn pbr_lighting_anisotropic_f90_(diffuseColor_34: vec3<f32>, f0_71: vec3<f32>, f
     return _e43;
 }
 
-fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0_28: vec3<f32>, perceptualRoughness_62: f32, occlusion_30: f32, n_66: vec3<f32>, v_64: vec3<f32>, gi_16: pbr_GI, anisotropy_8: pbr_Anisotropy) -> vec3<f32> {
+fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0_28: vec3<f32>, perceptualRoughness_62: f32, occlusion_30: f32, n_68: vec3<f32>, v_66: vec3<f32>, gi_16: pbr_GI, anisotropy_8: pbr_Anisotropy) -> vec3<f32> {
     var diffuseColor_37: vec3<f32>;
     var f0_74: vec3<f32>;
     var coatF0_29: vec3<f32>;
     var perceptualRoughness_63: f32;
     var occlusion_31: f32;
-    var n_67: vec3<f32>;
-    var v_65: vec3<f32>;
+    var n_69: vec3<f32>;
+    var v_67: vec3<f32>;
     var gi_17: pbr_GI;
     var anisotropy_9: pbr_Anisotropy;
     var s_21: pbr_PreparedSurface;
@@ -4922,8 +5038,8 @@ fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0
     coatF0_29 = coatF0_28;
     perceptualRoughness_63 = perceptualRoughness_62;
     occlusion_31 = occlusion_30;
-    n_67 = n_66;
-    v_65 = v_64;
+    n_69 = n_68;
+    v_67 = v_66;
     gi_17 = gi_16;
     anisotropy_9 = anisotropy_8;
     let _e18 = diffuseColor_37;
@@ -4931,14 +5047,14 @@ fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0
     let _e20 = coatF0_29;
     let _e21 = perceptualRoughness_63;
     let _e22 = occlusion_31;
-    let _e23 = n_67;
-    let _e24 = v_65;
+    let _e23 = n_69;
+    let _e24 = v_67;
     let _e25 = pbr_prepare_surface(_e18, _e19, _e20, _e21, _e22, _e23, _e24);
     s_21 = _e25;
     let _e27 = s_21;
     let _e28 = gi_17;
     let _e30 = s_21;
-    let _e31 = n_67;
+    let _e31 = n_69;
     let _e32 = anisotropy_9;
     let _e33 = pbr_anisotropic_frame(_e31, _e32);
     let _e34 = gi_17;
@@ -4950,17 +5066,17 @@ fn pbr_lighting_anisotropic(diffuseColor_36: vec3<f32>, f0_73: vec3<f32>, coatF0
 fn pbr_f0_from_schlick(F_3: vec3<f32>, cosTheta_7: f32) -> vec3<f32> {
     var F_4: vec3<f32>;
     var cosTheta_8: f32;
-    var x_25: f32;
+    var x_26: f32;
 
     F_4 = F_3;
     cosTheta_8 = cosTheta_7;
     let _e5 = cosTheta_8;
     let _e6 = pbr_saturate(_e5);
     let _e8 = pbr_pow5_((1f - _e6));
-    x_25 = min(_e8, 0.9999f);
+    x_26 = min(_e8, 0.9999f);
     let _e12 = F_4;
-    let _e13 = x_25;
-    let _e17 = x_25;
+    let _e13 = x_26;
+    let _e17 = x_26;
     let _e21 = pbr_saturate_1(((_e12 - vec3(_e13)) / vec3((1f - _e17))));
     return _e21;
 }
@@ -4995,7 +5111,7 @@ fn pbr_iridescent_f0_with_coat(f0_77: vec3<f32>, coatF0_30: vec3<f32>, NdotV_77:
     var NdotV_78: f32;
     var film_3: pbr_Iridescence;
     var thin: pbr_ThinFilm;
-    var r_11: pbr_IridescentF0_;
+    var r_12: pbr_IridescentF0_;
     var coatI: vec3<f32>;
     var I_2: vec3<f32>;
     var F_5: vec3<f32>;
@@ -5034,15 +5150,15 @@ fn pbr_iridescent_f0_with_coat(f0_77: vec3<f32>, coatF0_30: vec3<f32>, NdotV_77:
     let _e39 = pbr_f0_from_schlick(_e37, _e38);
     let _e40 = film_3;
     let _e42 = pbr_iridescence_mix(_e36, _e39, _e40.factor);
-    r_11.coatF0_ = _e42;
+    r_12.coatF0_ = _e42;
     let _e44 = f0_78;
     let _e45 = F_5;
     let _e46 = NdotV_78;
     let _e47 = pbr_f0_from_schlick(_e45, _e46);
     let _e48 = film_3;
     let _e50 = pbr_iridescence_mix(_e44, _e47, _e48.factor);
-    r_11.f0_ = _e50;
-    let _e51 = r_11;
+    r_12.f0_ = _e50;
+    let _e51 = r_12;
     return _e51;
 }
 
@@ -5083,7 +5199,7 @@ fn pbr_iridescent_f0_f90_with_coat(f0_81: vec3<f32>, f90_34: f32, coatF0_32: vec
     var I_3: vec3<f32>;
     var F_6: vec3<f32>;
     var coatF_1: vec3<f32>;
-    var r_12: pbr_IridescentF0_;
+    var r_13: pbr_IridescentF0_;
 
     f0_82 = f0_81;
     f90_35 = f90_34;
@@ -5129,7 +5245,7 @@ fn pbr_iridescent_f0_f90_with_coat(f0_81: vec3<f32>, f90_34: f32, coatF0_32: vec
     let _e60 = pbr_f0_from_schlick(_e58, _e59);
     let _e61 = film_7;
     let _e63 = pbr_iridescence_mix(_e57, _e60, _e61.factor);
-    r_12.coatF0_ = (_e56 * _e63);
+    r_13.coatF0_ = (_e56 * _e63);
     let _e66 = f90_35;
     let _e67 = unitF0_1;
     let _e68 = F_6;
@@ -5137,8 +5253,8 @@ fn pbr_iridescent_f0_f90_with_coat(f0_81: vec3<f32>, f90_34: f32, coatF0_32: vec
     let _e70 = pbr_f0_from_schlick(_e68, _e69);
     let _e71 = film_7;
     let _e73 = pbr_iridescence_mix(_e67, _e70, _e71.factor);
-    r_12.f0_ = (_e66 * _e73);
-    let _e75 = r_12;
+    r_13.f0_ = (_e66 * _e73);
+    let _e75 = r_13;
     return _e75;
 }
 
@@ -5170,27 +5286,27 @@ fn pbr_transmission_diffuse_color(diffuseColor_40: vec3<f32>, transmission: f32)
     return (_e4 * (1f - _e7));
 }
 
-fn pbr_transmitted_direction(n_68: vec3<f32>, v_66: vec3<f32>, tr: pbr_Transmission) -> vec3<f32> {
-    var n_69: vec3<f32>;
-    var v_67: vec3<f32>;
+fn pbr_transmitted_direction(n_70: vec3<f32>, v_68: vec3<f32>, tr: pbr_Transmission) -> vec3<f32> {
+    var n_71: vec3<f32>;
+    var v_69: vec3<f32>;
     var tr_1: pbr_Transmission;
-    var local_31: vec3<f32>;
+    var local_32: vec3<f32>;
 
-    n_69 = n_68;
-    v_67 = v_66;
+    n_71 = n_70;
+    v_69 = v_68;
     tr_1 = tr;
     let _e6 = tr_1;
     if (_e6.thickness > 0f) {
-        let _e10 = n_69;
-        let _e11 = v_67;
+        let _e10 = n_71;
+        let _e11 = v_69;
         let _e12 = tr_1;
         let _e14 = pbr_refraction_direction(_e10, _e11, _e12.ior);
-        local_31 = _e14;
+        local_32 = _e14;
     } else {
-        let _e15 = v_67;
-        local_31 = -(_e15);
+        let _e15 = v_69;
+        local_32 = -(_e15);
     }
-    let _e18 = local_31;
+    let _e18 = local_32;
     return _e18;
 }
 
@@ -5199,8 +5315,8 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
     var diffuseColor_43: vec3<f32>;
     var coatF0_37: vec3<f32>;
     var tr_3: pbr_Transmission;
-    var t_13: pbr_PreparedTransmission;
-    var local_32: vec3<f32>;
+    var t_14: pbr_PreparedTransmission;
+    var local_33: vec3<f32>;
     var attenuation: vec3<f32>;
 
     s_23 = s_22;
@@ -5208,42 +5324,42 @@ fn pbr_prepare_transmission_from_surface(s_22: pbr_PreparedSurface, diffuseColor
     coatF0_37 = coatF0_36;
     tr_3 = tr_2;
     let _e10 = s_23;
-    t_13.s = _e10;
+    t_14.s = _e10;
     let _e12 = diffuseColor_43;
     let _e13 = coatF0_37;
     let _e14 = pbr_diffuse_albedo_from_diffuse_color(_e12, _e13);
-    t_13.rho = _e14;
+    t_14.rho = _e14;
     let _e16 = tr_3;
-    t_13.volume = (_e16.thickness > 0f);
-    let _e20 = t_13;
+    t_14.volume = (_e16.thickness > 0f);
+    let _e20 = t_14;
     if _e20.volume {
         let _e22 = tr_3;
         let _e24 = tr_3;
         let _e26 = tr_3;
         let _e28 = pbr_volume_attenuation(_e22.thickness, _e24.attenuationColor, _e26.attenuationDistance);
-        local_32 = _e28;
+        local_33 = _e28;
     } else {
-        local_32 = vec3(1f);
+        local_33 = vec3(1f);
     }
-    let _e32 = local_32;
+    let _e32 = local_33;
     attenuation = _e32;
     let _e35 = tr_3;
     let _e37 = pbr_saturate(_e35.factor);
     let _e38 = attenuation;
-    t_13.weight = (_e37 * _e38);
+    t_14.weight = (_e37 * _e38);
     let _e41 = tr_3;
-    t_13.ior = _e41.ior;
-    let _e43 = t_13;
+    t_14.ior = _e41.ior;
+    let _e43 = t_14;
     return _e43;
 }
 
-fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>, perceptualRoughness_64: f32, occlusion_32: f32, n_70: vec3<f32>, v_68: vec3<f32>, tr_4: pbr_Transmission, dfg_35: vec2<f32>) -> pbr_PreparedTransmission {
+fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>, perceptualRoughness_64: f32, occlusion_32: f32, n_72: vec3<f32>, v_70: vec3<f32>, tr_4: pbr_Transmission, dfg_35: vec2<f32>) -> pbr_PreparedTransmission {
     var diffuseColor_45: vec3<f32>;
     var coatF0_39: vec3<f32>;
     var perceptualRoughness_65: f32;
     var occlusion_33: f32;
-    var n_71: vec3<f32>;
-    var v_69: vec3<f32>;
+    var n_73: vec3<f32>;
+    var v_71: vec3<f32>;
     var tr_5: pbr_Transmission;
     var dfg_36: vec2<f32>;
 
@@ -5251,8 +5367,8 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>
     coatF0_39 = coatF0_38;
     perceptualRoughness_65 = perceptualRoughness_64;
     occlusion_33 = occlusion_32;
-    n_71 = n_70;
-    v_69 = v_68;
+    n_73 = n_72;
+    v_71 = v_70;
     tr_5 = tr_4;
     dfg_36 = dfg_35;
     let _e16 = diffuseColor_45;
@@ -5260,8 +5376,8 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>
     let _e18 = coatF0_39;
     let _e19 = perceptualRoughness_65;
     let _e20 = occlusion_33;
-    let _e21 = n_71;
-    let _e22 = v_69;
+    let _e21 = n_73;
+    let _e22 = v_71;
     let _e23 = dfg_36;
     let _e24 = pbr_prepare_surface_dfg(_e16, _e17, _e18, _e19, _e20, _e21, _e22, _e23);
     let _e25 = diffuseColor_45;
@@ -5271,14 +5387,14 @@ fn pbr_prepare_transmission_dfg(diffuseColor_44: vec3<f32>, coatF0_38: vec3<f32>
     return _e28;
 }
 
-fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<f32>, coatF90_14: f32, perceptualRoughness_66: f32, occlusion_34: f32, n_72: vec3<f32>, v_70: vec3<f32>, tr_6: pbr_Transmission, dfg_37: vec2<f32>) -> pbr_PreparedTransmission {
+fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<f32>, coatF90_14: f32, perceptualRoughness_66: f32, occlusion_34: f32, n_74: vec3<f32>, v_72: vec3<f32>, tr_6: pbr_Transmission, dfg_37: vec2<f32>) -> pbr_PreparedTransmission {
     var diffuseColor_47: vec3<f32>;
     var coatF0_41: vec3<f32>;
     var coatF90_15: f32;
     var perceptualRoughness_67: f32;
     var occlusion_35: f32;
-    var n_73: vec3<f32>;
-    var v_71: vec3<f32>;
+    var n_75: vec3<f32>;
+    var v_73: vec3<f32>;
     var tr_7: pbr_Transmission;
     var dfg_38: vec2<f32>;
 
@@ -5287,8 +5403,8 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<
     coatF90_15 = coatF90_14;
     perceptualRoughness_67 = perceptualRoughness_66;
     occlusion_35 = occlusion_34;
-    n_73 = n_72;
-    v_71 = v_70;
+    n_75 = n_74;
+    v_73 = v_72;
     tr_7 = tr_6;
     dfg_38 = dfg_37;
     let _e18 = diffuseColor_47;
@@ -5298,8 +5414,8 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<
     let _e22 = coatF90_15;
     let _e23 = perceptualRoughness_67;
     let _e24 = occlusion_35;
-    let _e25 = n_73;
-    let _e26 = v_71;
+    let _e25 = n_75;
+    let _e26 = v_73;
     let _e27 = dfg_38;
     let _e28 = pbr_prepare_surface_f90_dfg(_e18, _e19, _e20, _e21, _e22, _e23, _e24, _e25, _e26, _e27);
     let _e29 = diffuseColor_47;
@@ -5309,34 +5425,34 @@ fn pbr_prepare_transmission_f90_dfg(diffuseColor_46: vec3<f32>, coatF0_40: vec3<
     return _e32;
 }
 
-fn pbr_transmission_direct(t_14: pbr_PreparedTransmission, light_4: pbr_Light) -> vec3<f32> {
-    var t_15: pbr_PreparedTransmission;
+fn pbr_transmission_direct(t_15: pbr_PreparedTransmission, light_4: pbr_Light) -> vec3<f32> {
+    var t_16: pbr_PreparedTransmission;
     var light_5: pbr_Light;
     var direct_2: vec3<f32>;
 
-    t_15 = t_14;
+    t_16 = t_15;
     light_5 = light_4;
-    let _e5 = t_15;
+    let _e5 = t_16;
     if _e5.volume {
         {
-            let _e7 = t_15;
-            let _e10 = t_15;
+            let _e7 = t_16;
+            let _e10 = t_16;
             let _e13 = light_5;
             let _e15 = light_5;
-            let _e17 = t_15;
-            let _e19 = t_15;
-            let _e22 = t_15;
+            let _e17 = t_16;
+            let _e19 = t_16;
+            let _e22 = t_16;
             let _e24 = pbr_transmission_punctual(_e7.s.n, _e10.s.v, _e13.dir, _e15.color, _e17.rho, _e19.s.perceptualRoughness, _e22.ior);
             direct_2 = _e24;
         }
     } else {
         {
-            let _e25 = t_15;
-            let _e28 = t_15;
+            let _e25 = t_16;
+            let _e28 = t_16;
             let _e31 = light_5;
             let _e33 = light_5;
-            let _e35 = t_15;
-            let _e38 = t_15;
+            let _e35 = t_16;
+            let _e38 = t_16;
             let _e41 = pbr_transmission_thin_punctual(_e25.s.n, _e28.s.v, _e31.dir, _e33.color, _e35.s.directDiffuseColor, _e38.s.perceptualRoughness);
             direct_2 = _e41;
         }
@@ -5345,57 +5461,57 @@ fn pbr_transmission_direct(t_14: pbr_PreparedTransmission, light_4: pbr_Light) -
     return _e42;
 }
 
-fn pbr_lighting_transmission_light(t_16: pbr_PreparedTransmission, light_6: pbr_Light) -> vec3<f32> {
-    var t_17: pbr_PreparedTransmission;
+fn pbr_lighting_transmission_light(t_17: pbr_PreparedTransmission, light_6: pbr_Light) -> vec3<f32> {
+    var t_18: pbr_PreparedTransmission;
     var light_7: pbr_Light;
 
-    t_17 = t_16;
+    t_18 = t_17;
     light_7 = light_6;
-    let _e4 = t_17;
-    let _e6 = t_17;
+    let _e4 = t_18;
+    let _e6 = t_18;
     let _e7 = light_7;
     let _e8 = pbr_transmission_direct(_e6, _e7);
     return (_e4.weight * _e8);
 }
 
-fn pbr_lighting_transmission_environment(t_18: pbr_PreparedTransmission, transmittedIndirect: vec3<f32>) -> vec3<f32> {
-    var t_19: pbr_PreparedTransmission;
+fn pbr_lighting_transmission_environment(t_19: pbr_PreparedTransmission, transmittedIndirect: vec3<f32>) -> vec3<f32> {
+    var t_20: pbr_PreparedTransmission;
     var transmittedIndirect_1: vec3<f32>;
 
-    t_19 = t_18;
+    t_20 = t_19;
     transmittedIndirect_1 = transmittedIndirect;
-    let _e4 = t_19;
-    let _e6 = t_19;
+    let _e4 = t_20;
+    let _e6 = t_20;
     let _e9 = transmittedIndirect_1;
-    let _e11 = t_19;
+    let _e11 = t_20;
     return (_e4.weight * ((_e6.s.indirectDiffuseColor * _e9) * _e11.s.occlusion));
 }
 
-fn pbr_lighting_transmission_prepared(t_20: pbr_PreparedTransmission, light_8: pbr_Light, transmittedIndirect_2: vec3<f32>) -> vec3<f32> {
-    var t_21: pbr_PreparedTransmission;
+fn pbr_lighting_transmission_prepared(t_21: pbr_PreparedTransmission, light_8: pbr_Light, transmittedIndirect_2: vec3<f32>) -> vec3<f32> {
+    var t_22: pbr_PreparedTransmission;
     var light_9: pbr_Light;
     var transmittedIndirect_3: vec3<f32>;
 
-    t_21 = t_20;
+    t_22 = t_21;
     light_9 = light_8;
     transmittedIndirect_3 = transmittedIndirect_2;
-    let _e6 = t_21;
-    let _e8 = t_21;
+    let _e6 = t_22;
+    let _e8 = t_22;
     let _e9 = light_9;
     let _e10 = pbr_transmission_direct(_e8, _e9);
-    let _e11 = t_21;
+    let _e11 = t_22;
     let _e14 = transmittedIndirect_3;
-    let _e16 = t_21;
+    let _e16 = t_22;
     return (_e6.weight * (_e10 + ((_e11.s.indirectDiffuseColor * _e14) * _e16.s.occlusion)));
 }
 
-fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, perceptualRoughness_68: f32, occlusion_36: f32, n_74: vec3<f32>, v_72: vec3<f32>, gi_18: pbr_GI, transmittedIndirect_4: vec3<f32>, tr_8: pbr_Transmission) -> vec3<f32> {
+fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, perceptualRoughness_68: f32, occlusion_36: f32, n_76: vec3<f32>, v_74: vec3<f32>, gi_18: pbr_GI, transmittedIndirect_4: vec3<f32>, tr_8: pbr_Transmission) -> vec3<f32> {
     var diffuseColor_49: vec3<f32>;
     var coatF0_43: vec3<f32>;
     var perceptualRoughness_69: f32;
     var occlusion_37: f32;
-    var n_75: vec3<f32>;
-    var v_73: vec3<f32>;
+    var n_77: vec3<f32>;
+    var v_75: vec3<f32>;
     var gi_19: pbr_GI;
     var transmittedIndirect_5: vec3<f32>;
     var tr_9: pbr_Transmission;
@@ -5406,16 +5522,16 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, p
     coatF0_43 = coatF0_42;
     perceptualRoughness_69 = perceptualRoughness_68;
     occlusion_37 = occlusion_36;
-    n_75 = n_74;
-    v_73 = v_72;
+    n_77 = n_76;
+    v_75 = v_74;
     gi_19 = gi_18;
     transmittedIndirect_5 = transmittedIndirect_4;
     tr_9 = tr_8;
     let _e18 = perceptualRoughness_69;
     let _e19 = pbr_clamp_perceptual_roughness(_e18);
     roughness_9 = _e19;
-    let _e21 = n_75;
-    let _e22 = v_73;
+    let _e21 = n_77;
+    let _e22 = v_75;
     let _e26 = roughness_9;
     let _e27 = pbr_env_brdf(max(dot(_e21, _e22), 0.0001f), _e26);
     dfg_39 = _e27;
@@ -5423,8 +5539,8 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, p
     let _e30 = coatF0_43;
     let _e31 = roughness_9;
     let _e32 = occlusion_37;
-    let _e33 = n_75;
-    let _e34 = v_73;
+    let _e33 = n_77;
+    let _e34 = v_75;
     let _e35 = tr_9;
     let _e36 = dfg_39;
     let _e37 = pbr_prepare_transmission_dfg(_e29, _e30, _e31, _e32, _e33, _e34, _e35, _e36);
@@ -5434,14 +5550,14 @@ fn pbr_lighting_transmission(diffuseColor_48: vec3<f32>, coatF0_42: vec3<f32>, p
     return _e41;
 }
 
-fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_44: vec3<f32>, coatF90_16: f32, perceptualRoughness_70: f32, occlusion_38: f32, n_76: vec3<f32>, v_74: vec3<f32>, gi_20: pbr_GI, transmittedIndirect_6: vec3<f32>, tr_10: pbr_Transmission) -> vec3<f32> {
+fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_44: vec3<f32>, coatF90_16: f32, perceptualRoughness_70: f32, occlusion_38: f32, n_78: vec3<f32>, v_76: vec3<f32>, gi_20: pbr_GI, transmittedIndirect_6: vec3<f32>, tr_10: pbr_Transmission) -> vec3<f32> {
     var diffuseColor_51: vec3<f32>;
     var coatF0_45: vec3<f32>;
     var coatF90_17: f32;
     var perceptualRoughness_71: f32;
     var occlusion_39: f32;
-    var n_77: vec3<f32>;
-    var v_75: vec3<f32>;
+    var n_79: vec3<f32>;
+    var v_77: vec3<f32>;
     var gi_21: pbr_GI;
     var transmittedIndirect_7: vec3<f32>;
     var tr_11: pbr_Transmission;
@@ -5453,16 +5569,16 @@ fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_44: vec3<f3
     coatF90_17 = coatF90_16;
     perceptualRoughness_71 = perceptualRoughness_70;
     occlusion_39 = occlusion_38;
-    n_77 = n_76;
-    v_75 = v_74;
+    n_79 = n_78;
+    v_77 = v_76;
     gi_21 = gi_20;
     transmittedIndirect_7 = transmittedIndirect_6;
     tr_11 = tr_10;
     let _e20 = perceptualRoughness_71;
     let _e21 = pbr_clamp_perceptual_roughness(_e20);
     roughness_10 = _e21;
-    let _e23 = n_77;
-    let _e24 = v_75;
+    let _e23 = n_79;
+    let _e24 = v_77;
     let _e28 = roughness_10;
     let _e29 = pbr_env_brdf(max(dot(_e23, _e24), 0.0001f), _e28);
     dfg_40 = _e29;
@@ -5471,8 +5587,8 @@ fn pbr_lighting_transmission_f90_(diffuseColor_50: vec3<f32>, coatF0_44: vec3<f3
     let _e33 = coatF90_17;
     let _e34 = roughness_10;
     let _e35 = occlusion_39;
-    let _e36 = n_77;
-    let _e37 = v_75;
+    let _e36 = n_79;
+    let _e37 = v_77;
     let _e38 = tr_11;
     let _e39 = dfg_40;
     let _e40 = pbr_prepare_transmission_f90_dfg(_e31, _e32, _e33, _e34, _e35, _e36, _e37, _e38, _e39);
@@ -5524,14 +5640,14 @@ fn pbr_tonemap_reinhard_extended(color_4: vec3<f32>, whitePoint: f32) -> vec3<f3
     return _e25;
 }
 
-fn pbr_hable_curve(x_26: f32) -> f32 {
-    var x_27: f32;
+fn pbr_hable_curve(x_27: f32) -> f32 {
+    var x_28: f32;
 
-    x_27 = x_26;
-    let _e2 = x_27;
-    let _e4 = x_27;
-    let _e11 = x_27;
-    let _e13 = x_27;
+    x_28 = x_27;
+    let _e2 = x_28;
+    let _e4 = x_28;
+    let _e11 = x_28;
+    let _e13 = x_28;
     return ((((_e2 * ((0.15f * _e4) + 0.05f)) + 0.004f) / ((_e11 * ((0.15f * _e13) + 0.5f)) + 0.06f)) - 0.06666667f);
 }
 
@@ -5556,20 +5672,20 @@ fn pbr_tonemap_hable(color_6: vec3<f32>) -> vec3<f32> {
     return _e21;
 }
 
-fn pbr_aces_rrt_odt_fit(v_76: vec3<f32>) -> vec3<f32> {
-    var v_77: vec3<f32>;
-    var a_7: vec3<f32>;
-    var b_14: vec3<f32>;
+fn pbr_aces_rrt_odt_fit(v_78: vec3<f32>) -> vec3<f32> {
+    var v_79: vec3<f32>;
+    var a_8: vec3<f32>;
+    var b_15: vec3<f32>;
 
-    v_77 = v_76;
-    let _e2 = v_77;
-    let _e3 = v_77;
-    a_7 = ((_e2 * (_e3 + vec3(0.0245786f))) - vec3(0.000090537f));
-    let _e12 = v_77;
-    let _e14 = v_77;
-    b_14 = ((_e12 * ((0.983729f * _e14) + vec3(0.432951f))) + vec3(0.238081f));
-    let _e24 = a_7;
-    let _e25 = b_14;
+    v_79 = v_78;
+    let _e2 = v_79;
+    let _e3 = v_79;
+    a_8 = ((_e2 * (_e3 + vec3(0.0245786f))) - vec3(0.000090537f));
+    let _e12 = v_79;
+    let _e14 = v_79;
+    b_15 = ((_e12 * ((0.983729f * _e14) + vec3(0.432951f))) + vec3(0.238081f));
+    let _e24 = a_8;
+    let _e25 = b_15;
     return (_e24 / _e25);
 }
 
@@ -5599,25 +5715,25 @@ fn pbr_tonemap_aces_fitted(color_8: vec3<f32>) -> vec3<f32> {
     return _e55;
 }
 
-fn pbr_tonemap_aces_narkowicz(x_28: vec3<f32>) -> vec3<f32> {
-    var x_29: vec3<f32>;
+fn pbr_tonemap_aces_narkowicz(x_29: vec3<f32>) -> vec3<f32> {
+    var x_30: vec3<f32>;
 
-    x_29 = x_28;
-    let _e2 = x_29;
+    x_30 = x_29;
+    let _e2 = x_30;
     let _e4 = pbr_sanitize_1(_e2, 16f);
-    x_29 = _e4;
-    let _e5 = x_29;
-    let _e7 = x_29;
-    let _e13 = x_29;
-    let _e15 = x_29;
+    x_30 = _e4;
+    let _e5 = x_30;
+    let _e7 = x_30;
+    let _e13 = x_30;
+    let _e15 = x_30;
     let _e25 = pbr_saturate_1(((_e5 * ((2.51f * _e7) + vec3(0.03f))) / ((_e13 * ((2.43f * _e15) + vec3(0.59f))) + vec3(0.14f))));
     return _e25;
 }
 
 fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
     var color_11: vec3<f32>;
-    var x_30: f32;
-    var local_33: f32;
+    var x_31: f32;
+    var local_34: f32;
     var offset: f32;
     var peak: f32;
     var d_3: f32 = 0.24f;
@@ -5630,17 +5746,17 @@ fn pbr_tonemap_khronos_neutral(color_10: vec3<f32>) -> vec3<f32> {
     color_11 = _e4;
     let _e5 = color_11;
     let _e6 = pbr_min3_(_e5);
-    x_30 = _e6;
-    let _e8 = x_30;
+    x_31 = _e6;
+    let _e8 = x_31;
     if (_e8 <= 0.08f) {
-        let _e13 = x_30;
-        let _e14 = x_30;
-        let _e15 = x_30;
-        local_33 = (_e13 - ((_e14 * _e15) / 0.16f));
+        let _e13 = x_31;
+        let _e14 = x_31;
+        let _e15 = x_31;
+        local_34 = (_e13 - ((_e14 * _e15) / 0.16f));
     } else {
-        local_33 = 0.04f;
+        local_34 = 0.04f;
     }
-    let _e24 = local_33;
+    let _e24 = local_34;
     offset = _e24;
     let _e26 = color_11;
     let _e27 = offset;

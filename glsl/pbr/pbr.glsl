@@ -66,6 +66,7 @@
 #include "pbr/shading/anisotropy.glsl"
 #include "pbr/shading/sheen.glsl"
 #include "pbr/shading/transmission.glsl"
+#include "pbr/shading/valid_reflection_normal.glsl"
 
 // light integration
 #include "pbr/lighting/punctual.glsl"

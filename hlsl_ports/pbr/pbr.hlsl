@@ -67,6 +67,7 @@
 #include "pbr/shading/anisotropy.hlsl"
 #include "pbr/shading/sheen.hlsl"
 #include "pbr/shading/transmission.hlsl"
+#include "pbr/shading/valid_reflection_normal.hlsl"
 
 // light integration
 #include "pbr/lighting/punctual.hlsl"

@@ -88,6 +88,7 @@ class SceneFeatures:
     environment: bool          # indirect diffuse (SH9) and specular (prefiltered + DFG)
     energy_compensation: bool
     horizon_occlusion: bool    # render.horizon_occlusion (compiled where a material's normal can tilt)
+    valid_reflection_normal: bool  # render.valid_reflection_normal (likewise)
     quality: str
     brdf_model: str            # "pbrlab" or "unity" (PBR_BRDF_MODEL)
     tonemap: str
@@ -140,6 +141,7 @@ def scene_features(scene) -> SceneFeatures:
         environment=scene.environment is not None,
         energy_compensation=scene.render.energy_compensation,
         horizon_occlusion=scene.render.horizon_occlusion,
+        valid_reflection_normal=scene.render.valid_reflection_normal,
         sun_shadow=scene.render.environment_sun,
         sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
         sky_visibility_diffuse=scene.render.environment_visibility_diffuse,
@@ -181,7 +183,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
                      ("ANISOTROPY", m.anisotropy), ("IRIDESCENCE", m.iridescence),
                      ("TRANSMISSION", m.transmission), ("SPECULAR_F90", m.specular_f90),
                      ("DIELECTRIC_SPECULAR", m.dielectric_specular),
-                     ("HORIZON_OCCLUSION", m.shading_normal and s.horizon_occlusion)):
+                     ("HORIZON_OCCLUSION", m.shading_normal and s.horizon_occlusion),
+                     ("VALID_REFLECTION_NORMAL", m.shading_normal and s.valid_reflection_normal)):
         if on:
             defines[f"PBRLAB_{flag}"] = 1
     # A map without an exactly neutral texel (1 - (1 - s) * 1 need not equal s in float32)

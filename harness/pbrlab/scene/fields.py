@@ -239,6 +239,10 @@ RENDER = {
     "horizon_occlusion": Flag("Take out the share of a normal-mapped surface's environment light that would "
                               "come through the object (below its geometric normal's horizon: "
                               "pbr/ibl/horizon_occlusion.glsl).", default=True),
+    "valid_reflection_normal": Flag("Bend a normal-mapped shading normal towards the geometric normal until "
+                                    "the view's mirror reflection stays just above the geometric surface "
+                                    "(Keller et al. 2017, as Cycles does: "
+                                    "pbr/shading/valid_reflection_normal.glsl).", default=False),
     "environment_sun": Flag("Split the environment image's sun (a compact source holding at least a fifth of its "
                             "light: scene/environment_sun.py) off as a directional light that casts shadows "
                             "(render/shadow_map.py); the rest stays the environment. Nothing changes for an "

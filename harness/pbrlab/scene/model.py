@@ -220,6 +220,10 @@ class RenderSettings:
     # a normal-mapped surface's environment light below its geometric horizon taken out
     # (PBRLAB_HORIZON_OCCLUSION: pbr/ibl/horizon_occlusion.glsl)
     horizon_occlusion: bool = True
+    # a normal-mapped shading normal bent towards the geometric one until the view's mirror
+    # reflection stays above the geometric surface (PBRLAB_VALID_REFLECTION_NORMAL:
+    # pbr/shading/valid_reflection_normal.glsl, as Cycles does)
+    valid_reflection_normal: bool = False
     # the environment's sun (a compact source holding a large share of its light: scene/environment_sun.py)
     # drawn as a directional light with a shadow map (render/shadow_map.py) and taken out of the environment
     environment_sun: bool = False

@@ -272,6 +272,10 @@ TERMS: tuple[Function, ...] = (
     _f("pbr_anisotropic_bent_normal", "v:coordinate3 d:coordinate3 strength:signed roughness:roughness", UNIT_OR_ZERO,
        "pbr_anisotropic_bent_normal(vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v), pbr_safe_normalize(d), strength, "
        "roughness)"),
+    # shading/valid_reflection_normal.glsl: the geometric normal fixed (+z), n and v any coordinates
+    # normalised by the library's guard (v below the plane and n = 0 included)
+    _f("pbr_valid_reflection_normal", "n:coordinate3 v:coordinate3", UNIT_OR_ZERO,
+       "pbr_valid_reflection_normal(pbr_safe_normalize(n), vec3(0.0, 0.0, 1.0), pbr_safe_normalize(v))"),
     # brdf/d_charlie.glsl, brdf/v_charlie.glsl, shading/sheen.glsl (KHR_materials_sheen)
     _f("pbr_D_Charlie", "NdotH:cosine alpha:alpha", D),
     _f("pbr_disc_light_alpha", "alpha:alpha angularRadius:angle", _unit("widened alpha")),
@@ -720,6 +724,12 @@ DECIDED = {
         ("strength 0", "no anisotropy: bend = 1, the normal itself", {"v": (0.6, 0.0, 0.8), "d": (0.0, 1.0, 0.0),
                                                                       "strength": 0.0, "roughness": 0.3},
          "vec3(0.0, 0.0, 1.0)")],
+    "pbr_valid_reflection_normal": [
+        ("n = Ng", "no normal map: the reflection is the view's mirror about Ng, v.Ng above the threshold; "
+         "decided n itself", {"n": (0.0, 0.0, 1.0), "v": (0.6, 0.0, 0.8)}, "vec3(0.0, 0.0, 1.0)"),
+        ("view on the plane, n tilted away", "v.Ng = 0: threshold 0, c = 0 and a = vx^2; the reflection "
+         "brought to the plane: n' = Ng exactly (w = (b + root) / 4a = 1, u = 0)",
+         {"n": (-0.6, 0.0, 0.8), "v": (1.0, 0.0, 0.0)}, "vec3(0.0, 0.0, 1.0)")],
     "pbr_disc_light_alpha": [("radius 0", "a point source: sqrt(alpha²) is alpha exactly for float32 alpha in "
                               "[2^-63, 1], so the lobe is the light's own", {"alpha": 0.25, "angularRadius": 0.0}, 0.25)],
     "pbr_D_Beckmann": [("NdotH = 0", "0/0 (exp(-inf) / 0); decided: 0, the limit", {"NdotH": 0.0, "alpha": 0.5}, 0.0)],
