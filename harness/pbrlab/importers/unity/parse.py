@@ -28,7 +28,8 @@ from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
 from .written_globals import copied_written_globals
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
-                          check_refusals, component_count, included_text, line_of, matching_brace, top_level)
+                          check_refusals, component_count, included_text, line_of, matching_brace, read_source,
+                          top_level)
 
 FLOAT32_MAX = 3.4028234663852886e38
 
@@ -811,7 +812,7 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
                                ".shader file in this shader's folder or its Unity project's Assets, or name "
                                "its folder in $PBRLAB_UNITY_SHADERS)")
     try:
-        layout = shaderlab.read_layout(found.read_text(encoding="utf-8").removeprefix("\ufeff"), found)
+        layout = shaderlab.read_layout(read_source(found), found)
     except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:
         raise UnityShaderError(f'{path}:{line}: UsePass "{name}": {exc}') from None
     for sub in layout.subshaders:
@@ -828,8 +829,8 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
 
 def read_shader(path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
+        text = read_source(Path(path))
+    except OSError as exc:
         raise UnityShaderError(f"{path}: cannot read: {exc}") from None
     return read_text(text, Path(path), pipeline)
 

@@ -35,7 +35,8 @@ from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
-from .source_text import CGINC, blank_comments, included_files, included_text, resolve_included, top_level
+from .source_text import (CGINC, blank_comments, included_files, included_text, read_source, resolve_included,
+                          top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
@@ -139,7 +140,7 @@ def program_include(shader) -> tuple[str, dict]:
             key = target.resolve()
             if key not in names:
                 names[key] = _port_include(key)
-                body = shaders.strip_bom(rewritten.get(key) or target.read_text(encoding="utf-8"))
+                body = shaders.strip_bom(rewritten.get(key) or read_source(target))
                 virtual[names[key]] = shaders.VirtualFile(
                     relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
                     str(target), 1)

@@ -189,10 +189,30 @@ def own_package_root(name: str, folder: Path):
     return None
 
 
+def read_source(path: Path) -> str:
+    """A Unity source file's text (a .shader, .cginc, .hlsl), without its byte-order mark.
+    Unity's editor writes UTF-8, but files saved in a legacy code page (comments in Korean
+    CP949, Chinese GBK, Windows-1252...) compile in Unity: its compilers read bytes, and such
+    bytes sit in comments. A file that is not UTF-8 is read byte for byte (Latin-1: one
+    character a byte, so lines and columns keep their numbers), with a note naming the file and
+    the line of its first such byte. OSError is the caller's."""
+    data = Path(path).read_bytes()
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        import warnings
+        from . import UnityShaderNote
+        line = data.count(b"\n", 0, exc.start) + 1
+        warnings.warn(f"{path}:{line}: not UTF-8 (byte 0x{data[exc.start]:02x}, a legacy code page's); "
+                      "read byte for byte, as Unity's compilers read it", UnityShaderNote, stacklevel=2)
+        text = data.decode("latin-1")
+    return text.removeprefix("\ufeff")
+
+
 def _read_include(path: Path):
     try:
-        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
-    except (OSError, UnicodeDecodeError):
+        return read_source(path)
+    except OSError:
         return None
 
 
