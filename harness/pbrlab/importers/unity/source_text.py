@@ -106,7 +106,7 @@ _SIZE = {"": 1, "2": 2, "3": 3, "4": 4}
 
 
 def component_count(kind: str) -> int:
-    m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float)([234]?)", kind)
+    m = re.fullmatch(r"(?:float|half|fixed|int|uint|bool|min16float|real)([234]?)", kind)
     if m:
         return _SIZE[m.group(1)]
     m = re.fullmatch(r"[iub]?vec([234])", kind)  # a port-unity port's GLSL types
