@@ -36,12 +36,13 @@ from pbrlab.render.depth_range import scene_frame
 from pbrlab.render.renderer import render_scene
 from pbrlab.scene.gbuffer_surface import DEFAULT_STANDARD_SURFACE
 
+from sphere_depth import SILHOUETTE_MARGIN, depth_bound, rendered_sphere, sphere_hits
+
 LANGUAGES = ("glsl", "hlsl")
 ROOT = Path(__file__).resolve().parents[3] / "corpus" / "unity" / "builtin-2019.4" / "DefaultResourcesExtra"
 DEFERRED_SHADING = ROOT / "Internal-DeferredShading.shader"
 SUN = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0}
 # the ray's closest approach to the centre at most this share of the radius
-SILHOUETTE_MARGIN = 0.95
 
 
 def _scene(shader: Path, lights: list) -> dict:
@@ -54,18 +55,6 @@ def _scene(shader: Path, lights: list) -> dict:
 
 def _parsed(shader: Path, lights: list):
     return parse_scene(_scene(shader, lights), origin="deferred test scene", base=shader.parent)
-
-
-def _sphere_hits(frame):
-    """(unit ray directions HxWx3, float64 distance to the unit sphere at the origin or NaN,
-    mask of rays well inside the rim), top row first."""
-    d = camera_rays(frame)
-    o = np.asarray(frame.position, np.float64)
-    b = d @ o
-    closest2 = o @ o - b * b
-    t = -b - np.sqrt(np.maximum(1.0 - closest2, 0.0))
-    inside = closest2 <= SILHOUETTE_MARGIN ** 2
-    return d, np.where(closest2 <= 1.0, t, np.nan), inside
 
 
 def _srgb_decode(c):
@@ -140,7 +129,7 @@ def test_gbuffer_holds_unity_default_material_in_unity_layout():
     surface (metallic 1) is out of those bounds."""
     scene = _parsed(DEFERRED_SHADING, [SUN])
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
+    d, t, inside = sphere_hits(frame)
     g = _gbuffer(scene, stored=True)
     surface = DEFAULT_STANDARD_SURFACE
     assert surface.diffuse == pytest.approx((0.96, 0.96, 0.96)) and surface.specular == pytest.approx((0.04,) * 3)
@@ -201,13 +190,8 @@ def test_depth_prepass_linear01_depth_is_ray_sphere_depth(tmp_path, language):
     shader.write_text(textwrap.dedent(DEPTH_SHADER))
     scene = _parsed(shader, [SUN])
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
-    image = render_scene(scene, language=language).linear.astype(np.float64)
-    covered = inside & (image[..., 3] > 0)
-    assert covered.sum() > 1000
-    eye = t * (d @ frame.forward)
-    k_depth_ulps = 6.0
-    bound = eye ** 2 * (1 / frame.near - 1 / frame.far) * k_depth_ulps * 2.0 ** -24 + 8 * 2.0 ** -24 * eye
+    image, covered, eye = rendered_sphere(scene, frame, language)
+    bound = depth_bound(eye, frame)
     err01 = np.abs(image[..., 0] - eye / frame.far)
     err_eye = np.abs(image[..., 1] - eye)
     assert (err01[covered] <= (bound / frame.far)[covered]).all(), (err01 / bound * frame.far)[covered].max()
@@ -221,7 +205,7 @@ def _deferred_expected(scene, gbuffer, light):
     each pixel, at the float64 ray-sphere point, under ``light`` (no indirect light: the pass
     passes 0)."""
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
+    d, t, inside = sphere_hits(frame)
     g0, g1, g2 = gbuffer["gbuffer0"], gbuffer["gbuffer1"], gbuffer["gbuffer2"]
     normal = g2[..., :3] * 2 - 1
     normal = normal / np.linalg.norm(normal, axis=-1, keepdims=True)
@@ -413,7 +397,7 @@ def test_deferred_reflections_is_brdf1_indirect_specular_of_the_gbuffer(language
     data["environment"] = {"color": CONSTANT_SKY}
     scene = parse_scene(data, origin="deferred test scene", base=DEFERRED_REFLECTIONS.parent)
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
+    d, t, inside = sphere_hits(frame)
     g = _gbuffer(scene)
     normal = g["gbuffer2"][..., :3] * 2 - 1
     normal = normal / np.linalg.norm(normal, axis=-1, keepdims=True)

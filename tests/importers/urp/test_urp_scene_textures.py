@@ -11,20 +11,23 @@ SILHOUETTE_MARGIN inside its rim.
 from __future__ import annotations
 
 import math
+import sys
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pbrlab.checking import unity_corpus as corpus
 from pbrlab.importers.loader import parse_scene
-from pbrlab.maths.camera import camera_rays
 from pbrlab.render.depth_range import scene_frame
 from pbrlab.render.renderer import render_scene
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "unity"))
+from sphere_depth import SILHOUETTE_MARGIN, depth_bound, rendered_sphere, sphere_hits  # noqa: E402
+
 LANGUAGES = ("glsl", "hlsl")
 SUN = {"type": "directional", "direction": [-0.4, -0.6, -0.7], "color": [1, 1, 1], "intensity": 1.0}
-SILHOUETTE_MARGIN = 0.95
 
 _URP_PASS = """
 Shader "t/%(name)s" {
@@ -84,24 +87,6 @@ def _scene(shader_text: str, tmp_path):
     return parse_scene(data, origin="urp scene-texture test scene", base=shader.parent)
 
 
-def _sphere_hits(frame):
-    """(unit ray directions, float64 distance to the unit sphere or NaN, rays well inside the rim)."""
-    d = camera_rays(frame)
-    o = np.asarray(frame.position, np.float64)
-    b = d @ o
-    closest2 = o @ o - b * b
-    t = -b - np.sqrt(np.maximum(1.0 - closest2, 0.0))
-    return d, np.where(closest2 <= 1.0, t, np.nan), closest2 <= SILHOUETTE_MARGIN ** 2
-
-
-K_DEPTH_ULPS = 6.0
-
-
-def _depth_bound(eye, frame):
-    """test_scene_depth_is_ray_sphere_depth's bound on an eye depth read from the depth texture."""
-    return eye ** 2 * (1 / frame.near - 1 / frame.far) * K_DEPTH_ULPS * 2.0 ** -24 + 8 * 2.0 ** -24 * eye
-
-
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
     """Linear01Depth(SampleSceneDepth(uv), _ZBufferParams) = eye depth / far of the float64
@@ -113,12 +98,8 @@ def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
     LinearEyeDepth's own float32 arithmetic. Control: the neighbouring pixel's depth fails it."""
     scene = _scene(DEPTH_SHADER, tmp_path)
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
-    image = render_scene(scene, language=language).linear.astype(np.float64)
-    covered = inside & (image[..., 3] > 0)
-    assert covered.sum() > 1000
-    eye = t * (d @ frame.forward)
-    bound = _depth_bound(eye, frame)
+    image, covered, eye = rendered_sphere(scene, frame, language)
+    bound = depth_bound(eye, frame)
     err01 = np.abs(image[..., 0] - eye / frame.far)
     assert (err01[covered] <= (bound / frame.far)[covered]).all(), (err01 / bound * frame.far)[covered].max()
     for channel in (1, 2):  # SampleSceneDepth, LoadSceneDepth
@@ -280,7 +261,7 @@ def test_scene_normals_are_the_sphere_world_normals(tmp_path, language):
     under the same name) fails it."""
     scene = _scene(NORMALS_SHADER, tmp_path)
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
+    d, t, inside = sphere_hits(frame)
     image = render_scene(scene, language=language).linear.astype(np.float64)[..., :3]
     assert inside.sum() > 1000
     normal = np.asarray(frame.position, np.float64) + t[..., None] * d  # the unit sphere's hit = its normal
@@ -314,12 +295,8 @@ def test_own_depth_texture_declaration_reads_the_pre_pass(tmp_path, language):
     the neighbouring pixel's depth fails it."""
     scene = _scene(OWN_DEPTH_SHADER, tmp_path)
     frame = scene_frame(scene)
-    d, t, inside = _sphere_hits(frame)
-    image = render_scene(scene, language=language).linear.astype(np.float64)
-    covered = inside & (image[..., 3] > 0)
-    assert covered.sum() > 1000
-    eye = t * (d @ frame.forward)
-    bound = _depth_bound(eye, frame)
+    image, covered, eye = rendered_sphere(scene, frame, language)
+    bound = depth_bound(eye, frame)
     expected = np.stack([eye / frame.far, eye, eye], axis=-1)
     err = np.abs(image[..., :3] - expected)[covered]
     limit = np.stack([bound / frame.far, bound, bound], axis=-1)[covered]
