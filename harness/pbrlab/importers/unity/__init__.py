@@ -38,18 +38,10 @@ from pathlib import Path
 from .model import SurfaceShader, UnityShader
 from .parse import BUILTIN, URP, Pipeline, is_unity_surface, parse_file, read_shader
 from .properties import resolve as resolve_properties
-from .source_text import UnityShaderError
+from .source_text import UnityShaderError, UnityShaderNote, UnityShaderWarning
 
 __all__ = ["BUILTIN", "URP", "Pipeline", "SurfaceShader", "UnityShader", "UnityShaderError", "UnityShaderWarning",
            "is_unity_surface", "load_shader", "resolve_properties"]
-
-
-class UnityShaderWarning(UserWarning):
-    """Something a surface shader asks for that the harness does not do (named in the text)."""
-
-
-class UnityShaderNote(UnityShaderWarning):
-    """What the harness chose for a shader: the SubShader that runs, a pass it skips, a Fallback."""
 
 
 def load_shader(path: Path, pipeline: Pipeline = BUILTIN) -> UnityShader:

@@ -120,6 +120,14 @@ _ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
 _CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
 
 
+class UnityShaderWarning(UserWarning):
+    """Something a surface shader asks for that the harness does not do (named in the text)."""
+
+
+class UnityShaderNote(UnityShaderWarning):
+    """What the harness chose for a shader: the SubShader that runs, a pass it skips, a Fallback."""
+
+
 class UnityIncludeRefusal(UnityShaderError):
     """A shader includes one of pbrlab's stand-ins that refuses (Unity data the harness lacks):
     no SubShader or Fallback can help, so it is raised as it stands."""
@@ -201,7 +209,6 @@ def read_source(path: Path) -> str:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         import warnings
-        from . import UnityShaderNote
         line = data.count(b"\n", 0, exc.start) + 1
         warnings.warn(f"{path}:{line}: not UTF-8 (byte 0x{data[exc.start]:02x}, a legacy code page's); "
                       "read byte for byte, as Unity's compilers read it", UnityShaderNote, stacklevel=2)
