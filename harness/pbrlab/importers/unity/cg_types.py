@@ -293,6 +293,8 @@ class Signature:
 # `#define one half3(1., 1., 1.)`: a constant of the constructor's type (its whole body one call)
 _CONSTRUCTOR_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+([A-Za-z_]\w*)[ \t]*\(([^()\n]*)\)[ \t]*(?://[^\n]*)?$",
                                  re.M)
+# `#define real3 float3`, `#define UNITY_MATRIX_M unity_ObjectToWorld`: an object-like alias
+_ALIAS_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", re.M)
 _NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
                             r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
 
@@ -338,16 +340,33 @@ def library() -> Symbols:
         path = library_file(rel)
         if path.is_file():
             text = path.read_text(encoding="utf-8")
-            _Parser(text, symbols, declarations_only=True).program()
-            for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", text, re.M):
-                symbols.aliases.setdefault(m.group(1), m.group(2))
-            # `#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()`: a value of the
-            # function's type (a call without arguments, its one overload)
-            for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)\(\)[ \t]*$", text, re.M):
-                overloads = [f for f in symbols.functions.get(m.group(2), []) if not f.params]
-                if len(overloads) == 1:
-                    symbols.globals.setdefault(m.group(1), overloads[0].ret)
+            _Parser(text, symbols, declarations_only=True).program()  # its aliases too (_ALIAS_DEFINE)
+            defined_values(text, symbols)
     return symbols
+
+
+# An object-like #define whose body is one expression on its line (``#define UNITY_MATRIX_IT_MV
+# transpose(unity_WorldToObject * unity_MatrixInvV)``, ``#define UNITY_LIGHTMODEL_AMBIENT
+# Unity_LightmodelAmbient()``); a body ending in ``\`` (continued) or ``;`` (statements) is none.
+_EXPRESSION_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+([^\s\\][^\n]*?)[ \t]*(?://[^\n]*)?$", re.M)
+
+
+def defined_values(text: str, symbols: Symbols) -> None:
+    """The names ``text``'s object-like #defines give an expression of a known numeric type,
+    declared in ``symbols`` as globals of that type (a use of the name is a use of the
+    expression: ``float3 n = mul(UNITY_MATRIX_IT_MV, v)`` is truncated as the matrix's product
+    is); a name already known keeps its type."""
+    for m in _EXPRESSION_DEFINE.finditer(text):
+        name, body = m.groups()
+        if name in symbols.globals or name in symbols.aliases or body.endswith((";", "\\")):
+            continue
+        try:
+            parser = _Parser(body, symbols.copy(), declarations_only=True)
+            value = parser.expression()
+        except CgSyntaxError:
+            continue
+        if parser.peek().kind == "eof" and value.t is not None and value.t.numeric:
+            symbols.globals[name] = value.t
 
 
 # --- the Cg intrinsics -------------------------------------------------------------------
@@ -392,6 +411,11 @@ RESERVED = frozenset("""
     lessThanEqual greaterThanEqual equal notEqual
 """.split())
 RENAME_PREFIX = "pbr_unity_"
+# Names glslang's HLSL front end reserves (C++ words) that an HLSL program of Unity's may use as
+# its own: ``float char = ...`` compiles in Unity (a shader of the hidden URP sample draws so)
+# and glslang answers "'char' : Reserved word"; renamed pbr_unity_<name> in the HLSL as
+# written (fxc_conversions), as the GLSL port renames GLSL's reserved words.
+GLSLANG_HLSL_RESERVED = frozenset({"char"})
 
 
 def is_reserved(name: str) -> bool:
@@ -434,6 +458,8 @@ class _Parser:
             constructed = builtin_type(m.group(2))
             if constructed is not None and constructed.numeric:
                 symbols.globals.setdefault(m.group(1), constructed)
+        for m in _ALIAS_DEFINE.finditer(text):  # `#define real3 float3` (Core RP): a type's or a name's alias
+            symbols.aliases.setdefault(m.group(1), m.group(2))
         self.edits = Edits()
         self.scopes = []
         self.ret = None
@@ -473,9 +499,19 @@ class _Parser:
         t = self.next()
         if t.kind != "id":
             raise CgSyntaxError(f"expected a name, found {t.text!r}", t.s)
-        if is_reserved(t.text) and not self.decl_only:
-            self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
+        self.rename_reserved_name(t)
         return t
+
+    def rename_reserved_name(self, t: Tok):
+        """A name of the program's that a compiler reserves, renamed pbr_unity_<name>: in the
+        GLSL port where GLSL reserves it (is_reserved), in the HLSL as written where glslang's
+        HLSL front end does and Unity's compiler takes it (GLSLANG_HLSL_RESERVED)."""
+        if self.decl_only:
+            return
+        if is_reserved(t.text):
+            self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
+        if t.text in GLSLANG_HLSL_RESERVED:
+            self.fxc_edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
 
     # symbols
     def resolve_alias(self, name):
@@ -524,7 +560,16 @@ class _Parser:
                 self.i = start
                 self.skip_declaration()
                 self.skipped.append(self.line(self.toks[start].s))
+                self.rename_reserved(start, self.i)
         return self
+
+    def rename_reserved(self, first: int, end: int):
+        """A declaration left as written still has its names GLSL reserves renamed (``Attributes
+        input`` -> ``pbr_unity_input``, as name() renames them where the pass reads it), but for
+        a word followed by a name: a qualifier (HLSL's ``sample``, ``centroid``), not a name."""
+        for k in range(first, end):
+            if self.toks[k].kind == "id" and self.peek(k + 1 - self.i).kind != "id":
+                self.rename_reserved_name(self.toks[k])
 
     def line(self, pos):
         return self.text.count("\n", 0, pos) + 1
@@ -1082,10 +1127,14 @@ class _Parser:
         self.expect(";")
 
     def macro_statement(self, first: Tok) -> bool:
-        """The statement began with a name the pass does not know and ends its line."""
+        """The statement began with a name the pass does not know and ends its line or is
+        followed by another statement."""
         known = self.lookup(first.text) is not None or first.text in self.sym.functions or first.text in _INTRINSICS
         last = self.toks[self.i - 1]
-        return first.kind == "id" and not known and "\n" in self.text[last.e:self.peek().s]
+        # what follows the call: its line's end, or a name or '}' (``M(a) M(b)``: no expression
+        # goes on with one)
+        ends = "\n" in self.text[last.e:self.peek().s] or self.peek().kind == "id" or self.at("}")
+        return first.kind == "id" and not known and ends
 
     def delete_span(self, s, e):
         self.edits.replace(s, e, "")
@@ -1467,8 +1516,7 @@ class _Parser:
                     self.edits.replace(name.s, name.e, Type(ctor.base, ctor.cols, ctor.dim).cg())
                 self.edits.close(close.e, ")")
             return E(name.s, close.e, ctor if ctor.numeric else None, True)
-        if is_reserved(name.text) and not self.decl_only:
-            self.edits.replace(name.s, name.e, RENAME_PREFIX + name.text)
+        self.rename_reserved_name(name)
         args, close = self.arguments()
         span = (name.s, close.e)
         fname = name.text
@@ -1601,6 +1649,14 @@ class _Parser:
         src = e.t
         if src is None or target is None or not src.numeric or not target.numeric:
             return
+        if target.cols and src.scalar and target.base == "float":
+            # HLSL's scalar-to-matrix promotion fills every element with the scalar (Microsoft's
+            # HLSL reference, "Type conversion": "Scalar-to-matrix: replicate the scalar to fill
+            # the matrix"); GLSL's matN(x) puts x on the diagonal only, but adds a scalar to every
+            # element of a matrix (GLSL 3.30, 5.9): floatRxC(0.0) + float(x), x read once
+            self.edits.open(e.s, f"({target.cg()}(0.0) + float(")
+            self.edits.close(e.e, "))")
+            return
         if target.cols or src.cols:
             if target.cols and src.cols and (src.dim, src.cols) != (target.dim, target.cols) \
                     and src.dim >= target.dim and src.cols >= target.cols:
@@ -1729,4 +1785,5 @@ def with_declarations(text: str, srp: bool = False) -> Symbols:
         _Parser(text, symbols, declarations_only=True, srp=srp).program()
     except CgSyntaxError:
         pass  # an include the parser cannot read adds nothing
+    defined_values(text, symbols)
     return symbols

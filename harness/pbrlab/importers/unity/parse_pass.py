@@ -72,7 +72,10 @@ def _function_signature(masked: str, name: str, where_of):
     while i < len(masked) and depth:
         depth += {"(": 1, ")": -1}.get(masked[i], 0)
         i += 1
-    params_text = masked[m.end():i - 1]
+    # the list as the drawn variant has it: ``masked`` is preprocessed (active_text blanked the
+    # branches not taken), the #if lines themselves are left (``Interpolators input
+    # #ifdef _DOUBLE_SIDED_NORMALS , FRONT_FACE_TYPE f : FRONT_FACE_SEMANTIC #endif``)
+    params_text = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():i - 1], flags=re.M)
     rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
     if rest is None:
         return None

@@ -16,7 +16,8 @@ sampler objects unused ints, and each method call the Cg function of the same lo
 ``Sample`` / ``SampleLevel`` -> ``texCUBE`` / ``texCUBElod``. The sampler's own state (an inline
 sampler's filter and wrap, by its name) is the texture's here, as for every combined sampler.
 Any other method (``GetDimensions``, ``Gather``) is left as written and the compiler names it.
-Lines are kept.
+A function's parameter of these types is spelled likewise (a texture's, a combined sampler; a
+sampler's, an unused int), so a texture passed to a function with its sampler is. Lines are kept.
 
     text = spelled_texture_methods(cg_text)
 """
@@ -27,8 +28,14 @@ import re
 
 from .source_text import call_arguments
 
-_DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState)(?:\s*<\s*\w+\s*>)?"
+# (``sampler``: HLSL's legacy name of SamplerState; one a Cg intrinsic samples is a sampler2D by now,
+# combined_samplers)
+_DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
                           r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
+# a parameter of one of these types (``float2 Parallax(Texture2D t, SamplerState s, float2 uv)``):
+# after the list's '(' or a ',' (a qualifier between), before the next ',' or ')'
+_PARAMETER = re.compile(r"(?<=[(,])(\s*(?:(?:in|uniform)\s+)?)(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)"
+                        r"(?:\s*<\s*\w+\s*>)?(\s+)(\w+)(?=\s*[,)])")
 _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
 
@@ -92,8 +99,13 @@ def spelled_texture_methods(code: str) -> str:
     for m in _DECLARATION.finditer(code):
         for name in m.group(2).split(","):
             kinds[name.strip()] = m.group(1)
+    for m in _PARAMETER.finditer(code):
+        kinds.setdefault(m.group(4), m.group(2))
     if not kinds:
         return code
+    # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
+    # sampler an unused int (the caller passes the sampler's int: the declarations below)
+    code = _PARAMETER.sub(lambda m: f"{m.group(1)}{_COMBINED.get(m.group(2), 'int')}{m.group(3)}{m.group(4)}", code)
 
     def declaration(m):
         names = [n.strip() for n in m.group(2).split(",")]
