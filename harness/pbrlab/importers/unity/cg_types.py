@@ -1650,12 +1650,9 @@ class _Parser:
         if src is None or target is None or not src.numeric or not target.numeric:
             return
         if target.cols and src.scalar and target.base == "float":
-            # HLSL's scalar-to-matrix promotion fills every element with the scalar (Microsoft's
-            # HLSL reference, "Type conversion": "Scalar-to-matrix: replicate the scalar to fill
-            # the matrix"); GLSL's matN(x) puts x on the diagonal only, but adds a scalar to every
-            # element of a matrix (GLSL 3.30, 5.9): floatRxC(0.0) + float(x), x read once
-            self.edits.open(e.s, f"({target.cg()}(0.0) + float(")
-            self.edits.close(e.e, "))")
+            before, after = matrix_of_scalar(target)
+            self.edits.open(e.s, before)
+            self.edits.close(e.e, after)
             return
         if target.cols or src.cols:
             if target.cols and src.cols and (src.dim, src.cols) != (target.dim, target.cols) \
@@ -1684,6 +1681,15 @@ class _Parser:
         vector alike, so it is right whatever ``e``'s type turns out to be."""
         if e.t is None and target == Type("bool") and not self.decl_only:
             self.wrap(e, "bool")
+
+
+def matrix_of_scalar(target: Type) -> tuple:
+    """(text before, text after) a scalar given to a matrix ``target``: HLSL's scalar-to-matrix
+    promotion fills every element with the scalar (Microsoft's HLSL reference, "Type
+    conversion": scalar-to-matrix replicates the scalar); GLSL's ``matN(x)`` puts x on the
+    diagonal only, but adds a scalar to every element of a matrix (GLSL 3.30, section 5.9):
+    ``(floatRxC(0.0) + float(x))``, x read once."""
+    return f"({target.cg()}(0.0) + float(", "))"
 
 
 def _base(a: Type, b: Type) -> str:

@@ -60,6 +60,13 @@ def _param(text: str, where: str) -> tuple:
     return qual, words[0], words[1], semantic
 
 
+def drawn_parameters(text: str) -> str:
+    """A parameter list as the drawn variant has it: the text is preprocessed (active_text
+    blanked the branches not taken) but keeps its #if lines (``Interpolators input #ifdef
+    _DOUBLE_SIDED_NORMALS , FRONT_FACE_TYPE f : FRONT_FACE_SEMANTIC #endif``), taken out here."""
+    return re.sub(r"^[ \t]*#[^\n]*", "", text, flags=re.M)
+
+
 def _function_signature(masked: str, name: str, where_of):
     m = None
     for cand in re.finditer(r"\b(" + IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked):
@@ -72,10 +79,7 @@ def _function_signature(masked: str, name: str, where_of):
     while i < len(masked) and depth:
         depth += {"(": 1, ")": -1}.get(masked[i], 0)
         i += 1
-    # the list as the drawn variant has it: ``masked`` is preprocessed (active_text blanked the
-    # branches not taken), the #if lines themselves are left (``Interpolators input
-    # #ifdef _DOUBLE_SIDED_NORMALS , FRONT_FACE_TYPE f : FRONT_FACE_SEMANTIC #endif``)
-    params_text = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():i - 1], flags=re.M)
+    params_text = drawn_parameters(masked[m.end():i - 1])
     rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
     if rest is None:
         return None

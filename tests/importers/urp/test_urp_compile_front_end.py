@@ -1,0 +1,337 @@
+"""URP constructs that compiled in Unity and that a compiler of the harness refused (a front-end
+defect each, found in the development sample and the seen hidden sample, docs/unity.md):
+
+* Core RP's type aliases (``#define real3 float3``) and object-like macros of an expression
+  (``#define UNITY_MATRIX_IT_MV transpose(...)``) unknown to the GLSL port's type pass: a
+  ``(Varyings)0`` of ``real`` members was left as HLSL's cast, ``dot(real2, real3)`` and
+  ``float3 n = mul(UNITY_MATRIX_IT_MV, v)`` untruncated;
+* texture and sampler objects as a function's parameters (``Texture2D t, SamplerState s``) and
+  HLSL's legacy ``sampler s;`` declaration, which GLSL has no words for;
+* a scalar given to a matrix (``float2x2 m = 0.25``: HLSL fills every element, GLSL's constructor
+  the diagonal);
+* a name GLSL reserves (``input``) in a function the type pass left as written, there because
+  two statement macros stood on one line (``ADD(a) ADD(b)``);
+* ``char`` as a name, which glslang's HLSL front end reserves;
+* an ``#ifdef`` inside an entry function's parameter list.
+
+Each shader is rendered in both languages and a pixel compared with the value HLSL's rules give,
+with a control that brings the old behaviour back.
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+
+import numpy as np
+import pytest
+
+from pbrlab.checking import unity_corpus as corpus
+from pbrlab.importers.unity import cg_types, parse_pass, program, texture_methods
+
+# Each value below is a sum of products of short binary fractions (exact in float32), written by
+# the fragment stage or passed as the same constant from every vertex: the interpolation of a
+# constant in float32 may move it by a few ulps (2^-24 relative each) of a value below 1.
+BOUND = 8 * 2.0 ** -24
+
+
+def _shader(tmp_path, name: str, program_text: str, properties: str = "") -> str:
+    body = textwrap.indent(textwrap.dedent(program_text).strip("\n"), " " * 16)
+    text = textwrap.dedent("""\
+        Shader "Test/{name}"
+        {{
+            Properties {{ {properties} }}
+            SubShader
+            {{
+                Tags {{ "RenderPipeline" = "UniversalPipeline" }}
+                Pass
+                {{
+                    Tags {{ "LightMode" = "UniversalForward" }}
+                    HLSLPROGRAM
+                    #pragma vertex vert
+                    #pragma fragment frag
+                    #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+        {body}
+                    ENDHLSL
+                }}
+            }}
+        }}
+        """).format(name=name, properties=properties, body=body)
+    path = tmp_path / f"{name}.shader"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _covered_rgb(outcome) -> np.ndarray:
+    assert outcome.status == "rendered", outcome.message
+    covered = outcome.image[..., 3] == 1.0
+    assert covered.mean() > 0.1  # the sphere covers a good part of the image
+    return np.asarray(outcome.image[covered][:, :3], np.float64)
+
+
+def _assert_every_pixel(outcome, expected):
+    """Every fully covered pixel within BOUND of ``expected``: the fraction over it is 0."""
+    rgb = _covered_rgb(outcome)
+    over = np.abs(rgb - np.asarray(expected, np.float64)).max(axis=1) > BOUND
+    assert over.mean() == 0.0, (over.mean(), rgb[over][:3])
+
+
+# --- Core RP's aliases and #define'd expressions --------------------------------------------
+
+ALIASES = """\
+    CBUFFER_START(UnityPerMaterial)
+    half4 _Tint;
+    CBUFFER_END
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { real4 positionCS : SV_POSITION; real2 weights : TEXCOORD0; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o = (Varyings)0;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        o.weights = real2(0.5, 1.0);
+        return o;
+    }
+    half4 frag(Varyings i) : SV_Target
+    {
+        real3 tint = _Tint.rgb;
+        float3 nothing = mul(UNITY_MATRIX_IT_MV, float3(0.0, 0.0, 0.0));
+        return half4(dot(i.weights, tint) + nothing.x, 0.0, 0.0, 1.0);
+    }
+"""
+TINT = '_Tint ("Tint", Color) = (0.75, 0.25, 0.5, 1)'
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_core_aliases_and_defined_expressions(tmp_path, language):
+    """dot(real2, real3): HLSL takes the longer vector's first components (FXC's warning X3206,
+    implicit truncation): 0.5 * 0.75 + 1.0 * 0.25 = 0.625; the product of UNITY_MATRIX_IT_MV
+    and a zero vector adds 0."""
+    outcome = corpus.run_shader(_shader(tmp_path, "CoreAliases", ALIASES, TINT), language)
+    _assert_every_pixel(outcome, [0.625, 0.0, 0.0])
+
+
+def test_without_the_aliases_the_port_is_refused(tmp_path, monkeypatch):
+    """Control: the type pass without the includes' #define aliases leaves ``(Varyings)0`` as
+    HLSL's cast, which GLSL's compiler refuses."""
+    monkeypatch.setattr(cg_types, "_ALIAS_DEFINE", re.compile(r"(?!)"))
+    outcome = corpus.run_shader(_shader(tmp_path, "CoreAliases", ALIASES, TINT), "glsl")
+    assert outcome.status == "refused" and corpus.is_compiler_error(outcome.message), outcome.message
+
+
+def test_a_defined_expression_has_its_type():
+    """The library's ``#define UNITY_MATRIX_IT_MV transpose(...)`` is a float4x4, its
+    ``#define UNITY_LIGHTMODEL_AMBIENT Unity_LightmodelAmbient()`` a float4 (the call's type)."""
+    symbols = cg_types.library()
+    assert symbols.globals["UNITY_MATRIX_IT_MV"] == cg_types.Type("float", 4, 4)
+    assert symbols.globals["UNITY_LIGHTMODEL_AMBIENT"] == cg_types.Type("float", 4)
+
+
+# --- texture and sampler objects as parameters, HLSL's legacy sampler -----------------------
+
+OBJECTS = """\
+    TEXTURE2D(_MainTex);
+    sampler LinearClampSampler;
+    struct Attributes { float4 positionOS : POSITION; float2 uv : TEXCOORD0; };
+    struct Varyings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; };
+    half4 ReadScaled(Texture2D t, SamplerState s, float2 uv, half scale)
+    {
+        return SAMPLE_TEXTURE2D(t, s, uv) * scale;
+    }
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        o.uv = i.uv;
+        return o;
+    }
+    half4 frag(Varyings i) : SV_Target
+    {
+        return half4(ReadScaled(_MainTex, LinearClampSampler, i.uv, 0.25).rgb, 1.0);
+    }
+"""
+WHITE = '_MainTex ("Texture", 2D) = "white" {}'
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_texture_objects_as_parameters(tmp_path, language):
+    """The texture passed with a legacy ``sampler`` to a function taking Texture2D and
+    SamplerState: Unity's default "white" texture (1 in every channel) times 0.25."""
+    outcome = corpus.run_shader(_shader(tmp_path, "TextureParameters", OBJECTS, WHITE), language)
+    _assert_every_pixel(outcome, [0.25, 0.25, 0.25])
+
+
+def test_without_the_parameter_spelling_the_port_is_refused(tmp_path, monkeypatch):
+    """Control: Texture2D and SamplerState parameters left as written: GLSL has no such types."""
+    monkeypatch.setattr(texture_methods, "_PARAMETER", re.compile(r"(?!)"))
+    outcome = corpus.run_shader(_shader(tmp_path, "TextureParameters", OBJECTS, WHITE), "glsl")
+    assert outcome.status == "refused" and corpus.is_compiler_error(outcome.message), outcome.message
+
+
+# --- a scalar given to a matrix ----------------------------------------------------------
+
+MATRIX = """\
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        return o;
+    }
+    half4 frag(Varyings i) : SV_Target
+    {
+        float2x2 m = 0.25;
+        float2 v = mul(m, float2(1.0, 2.0));
+        return half4(v, 0.0, 1.0);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_scalar_fills_every_element_of_a_matrix(tmp_path, language):
+    """HLSL's float2x2 m = 0.25 has 0.25 in all four elements: m times (1, 2) is (0.75, 0.75)."""
+    outcome = corpus.run_shader(_shader(tmp_path, "ScalarMatrix", MATRIX), language)
+    _assert_every_pixel(outcome, [0.75, 0.75, 0.0])
+
+
+def test_glsl_constructor_spelling_gives_the_diagonal(tmp_path, monkeypatch):
+    """Control: spelled as GLSL's constructor (float2x2(x): x on the diagonal) the product is
+    (0.25, 0.5), which the check above rejects."""
+    monkeypatch.setattr(cg_types, "matrix_of_scalar", lambda target: (f"{target.cg()}(", ")"))
+    outcome = corpus.run_shader(_shader(tmp_path, "ScalarMatrix", MATRIX), "glsl")
+    rgb = _covered_rgb(outcome)
+    assert np.abs(rgb - [0.25, 0.5, 0.0]).max() <= BOUND
+    assert np.abs(rgb - [0.75, 0.75, 0.0]).max() > BOUND
+
+
+# --- a reserved name, statement macros side by side ----------------------------------------
+
+MACROS = """\
+    #define ADD(amount) color.r += (amount) * input.scale;
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; float scale : TEXCOORD0; };
+    Varyings vert(Attributes input)
+    {
+        Varyings output;
+        output.positionCS = TransformObjectToHClip(input.positionOS.xyz);
+        output.scale = 0.5;
+        return output;
+    }
+    half4 frag(Varyings input) : SV_Target
+    {
+        half4 color = half4(0.0, 0.25, 0.0, 1.0);
+        ADD(0.5) ADD(1.0)
+        return color;
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_statement_macros_side_by_side_and_a_reserved_name(tmp_path, language):
+    """Two statement macros on one line, each adding amount * 0.5 to red: 0.25 + 0.5 = 0.75."""
+    outcome = corpus.run_shader(_shader(tmp_path, "StatementMacros", MACROS), language)
+    _assert_every_pixel(outcome, [0.75, 0.25, 0.0])
+
+
+def _macro_ends_its_line(self, first):  # the old rule: a statement macro ends its line
+    known = self.lookup(first.text) is not None or first.text in self.sym.functions
+    return first.kind == "id" and not known and "\n" in self.text[self.toks[self.i - 1].e:self.peek().s]
+
+
+def test_macros_side_by_side_are_read():
+    """The type pass reads the fragment function (nothing left as written); the old rule left it."""
+    text = textwrap.dedent(MACROS)
+    assert cg_types.convert_detail(text, srp=True).skipped == []
+    old = cg_types._Parser.macro_statement
+    try:
+        cg_types._Parser.macro_statement = _macro_ends_its_line
+        assert cg_types.convert_detail(text, srp=True).skipped != []
+    finally:
+        cg_types._Parser.macro_statement = old
+
+
+def test_a_declaration_left_as_written_without_renames_is_refused(tmp_path, monkeypatch):
+    """Control: with the old macro rule and no renames in what the type pass leaves, GLSL's
+    compiler meets the reserved word ``input``."""
+    monkeypatch.setattr(cg_types._Parser, "macro_statement", _macro_ends_its_line)
+    monkeypatch.setattr(cg_types._Parser, "rename_reserved", lambda self, first, end: None)
+    outcome = corpus.run_shader(_shader(tmp_path, "StatementMacros", MACROS), "glsl")
+    assert outcome.status == "refused" and "reserved word" in outcome.message, outcome.message
+
+
+# --- char, a name glslang's HLSL front end reserves ----------------------------------------
+
+CHAR = """\
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        return o;
+    }
+    half4 frag(Varyings i) : SV_Target
+    {
+        float char = 0.375;
+        return half4(char, 1.0 - char, 0.0, 1.0);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_char_as_a_name(tmp_path, language):
+    outcome = corpus.run_shader(_shader(tmp_path, "CharName", CHAR), language)
+    _assert_every_pixel(outcome, [0.375, 0.625, 0.0])
+
+
+def test_char_not_renamed_is_refused_by_glslang(tmp_path, monkeypatch):
+    """Control: the HLSL as written with ``char`` kept: glslang's "Reserved word"."""
+    monkeypatch.setattr(cg_types, "GLSLANG_HLSL_RESERVED", frozenset())
+    program._fxc_spelled.cache_clear()
+    try:
+        outcome = corpus.run_shader(_shader(tmp_path, "CharName", CHAR), "hlsl")
+    finally:
+        program._fxc_spelled.cache_clear()
+    assert outcome.status == "refused" and "Reserved word" in outcome.message, outcome.message
+
+
+# --- #ifdef in an entry function's parameter list ------------------------------------------
+
+PARAMETER_CONDITIONAL = """\
+    #pragma shader_feature_local _DOUBLE_SIDED
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; float shade : TEXCOORD0; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        o.shade = 0.625;
+        return o;
+    }
+    half4 frag(Varyings i
+    #ifdef _DOUBLE_SIDED
+        , FRONT_FACE_TYPE face : FRONT_FACE_SEMANTIC
+    #endif
+    ) : SV_Target
+    {
+        half s = i.shade;
+    #ifdef _DOUBLE_SIDED
+        s *= IS_FRONT_VFACE(face, 1.0, 0.5);
+    #endif
+        return half4(s, s * 0.5, 0.0, 1.0);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_conditional_parameter_of_the_entry(tmp_path, language):
+    """The default variant (no keyword): the parameter is not there, the passed 0.625 is drawn."""
+    outcome = corpus.run_shader(_shader(tmp_path, "ParameterConditional", PARAMETER_CONDITIONAL), language)
+    _assert_every_pixel(outcome, [0.625, 0.3125, 0.0])
+
+
+def test_the_parameter_list_read_with_its_directives_is_refused(tmp_path, monkeypatch):
+    """Control: the list read with its #if lines, as before: "cannot read the parameter"."""
+    monkeypatch.setattr(parse_pass, "drawn_parameters", lambda text: text)
+    outcome = corpus.run_shader(_shader(tmp_path, "ParameterConditional", PARAMETER_CONDITIONAL), "glsl")
+    assert outcome.status == "refused" and "cannot read the parameter" in outcome.message, outcome.message
