@@ -335,3 +335,27 @@ def test_the_parameter_list_read_with_its_directives_is_refused(tmp_path, monkey
     monkeypatch.setattr(parse_pass, "drawn_parameters", lambda text: text)
     outcome = corpus.run_shader(_shader(tmp_path, "ParameterConditional", PARAMETER_CONDITIONAL), "glsl")
     assert outcome.status == "refused" and "cannot read the parameter" in outcome.message, outcome.message
+
+
+# --- a directive continued before Windows line ends ----------------------------------------
+
+CRLF = "#define SUM(a, b) \\\r\n    ((a) + \\\r\n    (b))\r\nfloat SumOf(float input) { return SUM(input, 1.0); }\r\n"
+
+
+def test_a_directive_continued_before_windows_line_ends():
+    """A #define continued by a backslash before CR LF (Cyanilux's Tessellation.hlsl) is one
+    directive: the function after it is read and its reserved name renamed (GeoGrass's GLSL
+    tessellation stage, test_urp_corpus.py)."""
+    toks, directives = cg_types.tokenize(CRLF)
+    assert [t.text for t in toks[:3]] == ["float", "SumOf", "("]
+    assert CRLF[slice(*directives[0])].rstrip().endswith("(b))")
+    assert "float pbr_unity_input" in cg_types.convert(CRLF)
+
+
+def test_the_old_directive_token_leaves_the_file_as_written(monkeypatch):
+    """Control: the directive token without CR LF continuations stops at the first one; the
+    stray backslash then stops the type pass, which leaves every name as written."""
+    old = cg_types._TOKEN.pattern.replace(r"\#(?:[^\n\\]|\\\r\n|\\.)*", r"\#(?:[^\n\\]|\\.)*(?:\\\n(?:[^\n\\]|\\.)*)*")
+    assert old != cg_types._TOKEN.pattern
+    monkeypatch.setattr(cg_types, "_TOKEN", re.compile(old, re.S | re.X))
+    assert cg_types.convert(CRLF) == CRLF
