@@ -359,3 +359,47 @@ def test_the_old_directive_token_leaves_the_file_as_written(monkeypatch):
     assert old != cg_types._TOKEN.pattern
     monkeypatch.setattr(cg_types, "_TOKEN", re.compile(old, re.S | re.X))
     assert cg_types.convert(CRLF) == CRLF
+
+
+# --- FXC's implicit truncation inside the shader's own included file -----------------------
+
+INCLUDED = """\
+    float Halved(float v) { return v * 0.5; }
+    float HalfOfFirst(float4 c) { return Halved(c); }
+"""
+INCLUDING = """\
+    #include "halves.hlsl"
+    CBUFFER_START(UnityPerMaterial)
+    half4 _Tint;
+    CBUFFER_END
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        return o;
+    }
+    half4 frag(Varyings i) : SV_Target { return half4(HalfOfFirst(_Tint), 0.0, 0.0, 1.0); }
+"""
+
+
+def _including_shader(tmp_path):
+    (tmp_path / "halves.hlsl").write_text(textwrap.dedent(INCLUDED), encoding="utf-8")
+    return _shader(tmp_path, "IncludedTruncation", INCLUDING, TINT)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_fxc_truncation_in_an_included_file(tmp_path, language):
+    """Halved(float4) in the included file: FXC passes the first component (warning X3206):
+    0.75 * 0.5 = 0.375."""
+    _assert_every_pixel(corpus.run_shader(_including_shader(tmp_path), language), [0.375, 0.0, 0.0])
+
+
+def test_included_file_as_written_is_refused_by_glslang(tmp_path, monkeypatch):
+    """Control: the HLSL path compiling the included file as written (only the written globals'
+    copies in its place, as before): glslang finds no overload."""
+    from pbrlab.importers.unity import program_pass
+    monkeypatch.setattr(program_pass, "hlsl_includes", lambda vf: dict(vf.rewritten_includes))
+    outcome = corpus.run_shader(_including_shader(tmp_path), "hlsl")
+    assert outcome.status == "refused" and "no matching overloaded function" in outcome.message, outcome.message

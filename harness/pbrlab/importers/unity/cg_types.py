@@ -1540,7 +1540,8 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
-                if fname not in library().functions:  # the program's own (or an include's)
+                if sig not in library().functions.get(fname, ()):  # the program's own (or an include's),
+                    # also beside a library function of its name (Core RP's LinearEyeDepth(d, zParams))
                     self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)

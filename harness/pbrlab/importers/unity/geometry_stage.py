@@ -241,7 +241,9 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
         text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
                 + program_text + "\n"
                 + hlsl_entry(vf, _main_light("hlsl"), len(varyings(vf, vf.geometry.where))))
-        spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main")
+        from .program import hlsl_includes  # (program imports the stages' modules)
+        spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main",
+                                   replaced=hlsl_includes(vf))  # the shader's own includes as the other stages
         glsl = hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True))
         if positional_add(defines):
             glsl = hlsl_world_written(glsl)

@@ -35,7 +35,7 @@ from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .properties import TextureValue
-from .source_text import (CGINC, blank_comments, included_files, included_text, read_source, resolve_included,
+from .source_text import (CGINC, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
                           top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
@@ -173,6 +173,25 @@ def _fxc_spelled(text: str, included: str, srp: bool) -> str:
     the key holds the included files' text, so an edit to one is seen)."""
     symbols = cg_types.with_declarations(cg_spellings.respelled(included), srp) if included.strip() else None
     return cg_types.fxc_conversions(text, symbols, srp)
+
+
+def hlsl_includes(shader) -> dict:
+    """{path: text} that the HLSL path compiles in place of files the program includes: the
+    written globals' copies (``rewritten_includes``, written_globals.py) and every included file
+    of the shader's own (not pbrlab's stand-ins) whose HLSL needs FXC's implicit conversions
+    spelled out, as the program's are (``_fxc_spelled``: Core RP's ``LinearEyeDepth(tex2Dproj(t,
+    p), _ZBufferParams)`` passes a float4 to a float, which FXC truncates and glslang refuses)."""
+    out = dict(getattr(shader, "rewritten_includes", {}) or {})
+    included = included_text(shader.program, shader.path.parent)
+    stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
+    for path in included_files(shader.program, shader.path.parent):
+        if any(Path(path).is_relative_to(root) for root in stand_ins):
+            continue
+        text = out.get(path) or shaders.strip_bom(read_source(path))
+        spelled = _fxc_spelled(text, included, getattr(shader, "srp", False))
+        if spelled != text:
+            out[path] = spelled
+    return out
 
 
 def fragment_text(shader: M.SurfaceShader, language: str, stem: str, defines: dict):

@@ -22,7 +22,7 @@ from ...foundation.file_identity import include_closure
 from . import generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
 from . import model as M
 from . import unprovided
-from .program import (TEMPLATES, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
+from .program import (TEMPLATES, hlsl_includes, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
 from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_text,
                           own_package_root, project_root)
 
@@ -95,7 +95,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             if language == "hlsl":
                 text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
                 glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],
-                                                             replaced=vf.rewritten_includes),
+                                                             replaced=hlsl_includes(vf)),
                                           plain_uniforms=True)
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)

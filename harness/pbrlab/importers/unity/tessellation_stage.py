@@ -264,10 +264,13 @@ def build_tessellation_stages(vf, language: str, defines: dict, dirs, program_te
     if language == "hlsl":
         text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
                 + program_text + "\n" + hlsl_entries(vf, _entry_start(vf, "hlsl")))
-        control = hlsl.cross_to_glsl(hlsl.compile_spirv(text, names["hull"], dirs, stage="tesc",
-                                                        entry="pbrlab_hull_main"), version=400, plain_uniforms=True)
+        from .program import hlsl_includes  # (program imports the stages' modules)
+        replaced = hlsl_includes(vf)  # the shader's own includes as the other stages compile them
+        control = hlsl.cross_to_glsl(hlsl.compile_spirv(text, names["hull"], dirs, stage="tesc", entry="pbrlab_hull_main",
+                                                        replaced=replaced), version=400, plain_uniforms=True)
         evaluation = hlsl.cross_to_glsl(hlsl.compile_spirv(text, names["domain"], dirs, stage="tese",
-                                                           entry="pbrlab_domain_main"), version=400, plain_uniforms=True)
+                                                           entry="pbrlab_domain_main", replaced=replaced),
+                                        version=400, plain_uniforms=True)
         control, evaluation = hlsl_renamed(vf, control, evaluation)
         return (shaders.Source(control, [f"{names['hull']} (GLSL from spirv-cross)"]),
                 shaders.Source(evaluation, [f"{names['domain']} (GLSL from spirv-cross)"]),
