@@ -76,6 +76,34 @@ def _assert_every_pixel(outcome, expected):
     assert over.mean() == 0.0, (over.mean(), rgb[over][:3])
 
 
+# the vertex stage of the shaders below that pass the position alone
+PLAIN_VERTEX = """\
+    struct Attributes { float4 positionOS : POSITION; };
+    struct Varyings { float4 positionCS : SV_POSITION; };
+    Varyings vert(Attributes i)
+    {
+        Varyings o;
+        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+        return o;
+    }
+"""
+
+
+def _vertex_passing(member: str, value: str) -> str:
+    """The vertex stage of a shader below that passes one float ``member``, ``value`` at every vertex."""
+    return textwrap.indent(textwrap.dedent(f"""\
+        struct Attributes {{ float4 positionOS : POSITION; }};
+        struct Varyings {{ float4 positionCS : SV_POSITION; float {member} : TEXCOORD0; }};
+        Varyings vert(Attributes i)
+        {{
+            Varyings o;
+            o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
+            o.{member} = {value};
+            return o;
+        }}
+        """), "    ")
+
+
 # --- Core RP's aliases and #define'd expressions --------------------------------------------
 
 ALIASES = """\
@@ -169,15 +197,7 @@ def test_without_the_parameter_spelling_the_port_is_refused(tmp_path, monkeypatc
 
 # --- a scalar given to a matrix ----------------------------------------------------------
 
-MATRIX = """\
-    struct Attributes { float4 positionOS : POSITION; };
-    struct Varyings { float4 positionCS : SV_POSITION; };
-    Varyings vert(Attributes i)
-    {
-        Varyings o;
-        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
-        return o;
-    }
+MATRIX = PLAIN_VERTEX + """\
     half4 frag(Varyings i) : SV_Target
     {
         float2x2 m = 0.25;
@@ -208,15 +228,7 @@ def test_glsl_constructor_spelling_gives_the_diagonal(tmp_path, monkeypatch):
 
 MACROS = """\
     #define ADD(amount) color.r += (amount) * input.scale;
-    struct Attributes { float4 positionOS : POSITION; };
-    struct Varyings { float4 positionCS : SV_POSITION; float scale : TEXCOORD0; };
-    Varyings vert(Attributes input)
-    {
-        Varyings output;
-        output.positionCS = TransformObjectToHClip(input.positionOS.xyz);
-        output.scale = 0.5;
-        return output;
-    }
+""" + _vertex_passing("scale", "0.5") + """\
     half4 frag(Varyings input) : SV_Target
     {
         half4 color = half4(0.0, 0.25, 0.0, 1.0);
@@ -261,15 +273,7 @@ def test_a_declaration_left_as_written_without_renames_is_refused(tmp_path, monk
 
 # --- char, a name glslang's HLSL front end reserves ----------------------------------------
 
-CHAR = """\
-    struct Attributes { float4 positionOS : POSITION; };
-    struct Varyings { float4 positionCS : SV_POSITION; };
-    Varyings vert(Attributes i)
-    {
-        Varyings o;
-        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
-        return o;
-    }
+CHAR = PLAIN_VERTEX + """\
     half4 frag(Varyings i) : SV_Target
     {
         float char = 0.375;
@@ -299,15 +303,7 @@ def test_char_not_renamed_is_refused_by_glslang(tmp_path, monkeypatch):
 
 PARAMETER_CONDITIONAL = """\
     #pragma shader_feature_local _DOUBLE_SIDED
-    struct Attributes { float4 positionOS : POSITION; };
-    struct Varyings { float4 positionCS : SV_POSITION; float shade : TEXCOORD0; };
-    Varyings vert(Attributes i)
-    {
-        Varyings o;
-        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
-        o.shade = 0.625;
-        return o;
-    }
+""" + _vertex_passing("shade", "0.625") + """\
     half4 frag(Varyings i
     #ifdef _DOUBLE_SIDED
         , FRONT_FACE_TYPE face : FRONT_FACE_SEMANTIC
@@ -372,14 +368,7 @@ INCLUDING = """\
     CBUFFER_START(UnityPerMaterial)
     half4 _Tint;
     CBUFFER_END
-    struct Attributes { float4 positionOS : POSITION; };
-    struct Varyings { float4 positionCS : SV_POSITION; };
-    Varyings vert(Attributes i)
-    {
-        Varyings o;
-        o.positionCS = TransformObjectToHClip(i.positionOS.xyz);
-        return o;
-    }
+""" + PLAIN_VERTEX + """\
     half4 frag(Varyings i) : SV_Target { return half4(HalfOfFirst(_Tint), 0.0, 0.0, 1.0); }
 """
 
