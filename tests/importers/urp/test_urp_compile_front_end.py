@@ -3,8 +3,8 @@ defect each, found in the development sample and the seen hidden sample, docs/un
 
 * Core RP's type aliases (``#define real3 float3``) and object-like macros of an expression
   (``#define UNITY_MATRIX_IT_MV transpose(...)``) unknown to the GLSL port's type pass: a
-  ``(Varyings)0`` of ``real`` members was left as HLSL's cast, ``dot(real2, real3)`` and
-  ``float3 n = mul(UNITY_MATRIX_IT_MV, v)`` untruncated;
+  ``(Varyings)0`` of ``real`` members and a ``(real3x3)m`` were left as HLSL's casts,
+  ``dot(real2, real3)`` and ``float3 n = mul(UNITY_MATRIX_IT_MV, v)`` untruncated;
 * texture and sampler objects as a function's parameters (``Texture2D t, SamplerState s``) and
   HLSL's legacy ``sampler s;`` declaration, which GLSL has no words for;
 * a scalar given to a matrix (``float2x2 m = 0.25``: HLSL fills every element, GLSL's constructor
@@ -123,7 +123,8 @@ ALIASES = """\
     {
         real3 tint = _Tint.rgb;
         float3 nothing = mul(UNITY_MATRIX_IT_MV, float3(0.0, 0.0, 0.0));
-        return half4(dot(i.weights, tint) + nothing.x, 0.0, 0.0, 1.0);
+        real3 none = mul((real3x3)UNITY_MATRIX_I_V, float3(0.0, 0.0, 0.0));
+        return half4(dot(i.weights, tint) + nothing.x + none.y, 0.0, 0.0, 1.0);
     }
 """
 TINT = '_Tint ("Tint", Color) = (0.75, 0.25, 0.5, 1)'
@@ -132,8 +133,8 @@ TINT = '_Tint ("Tint", Color) = (0.75, 0.25, 0.5, 1)'
 @pytest.mark.parametrize("language", corpus.LANGUAGES)
 def test_core_aliases_and_defined_expressions(tmp_path, language):
     """dot(real2, real3): HLSL takes the longer vector's first components (FXC's warning X3206,
-    implicit truncation): 0.5 * 0.75 + 1.0 * 0.25 = 0.625; the product of UNITY_MATRIX_IT_MV
-    and a zero vector adds 0."""
+    implicit truncation): 0.5 * 0.75 + 1.0 * 0.25 = 0.625; the products of UNITY_MATRIX_IT_MV
+    and of a (real3x3) cast with a zero vector add 0."""
     outcome = corpus.run_shader(_shader(tmp_path, "CoreAliases", ALIASES, TINT), language)
     _assert_every_pixel(outcome, [0.625, 0.0, 0.0])
 

@@ -1321,12 +1321,14 @@ class _Parser:
             open_, name, _, zero = self.next(), self.next(), self.next(), self.next()
             self.edits.replace(open_.s, zero.e, self.zero_value(Type(name.text)))
             return E(open_.s, zero.e, Type(name.text), False)
-        if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) and builtin_type(self.peek(1).text) is not None \
-                and builtin_type(self.peek(1).text).numeric:
-            # a cast (float3)x -> float3(x)
+        cast = self.type_named(self.peek(1).text) if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) else None
+        if cast is not None and cast.numeric:
+            # a cast (float3)x -> float3(x); of an alias too: (real3x3)m -> float3x3(m)
             open_, name, close = self.next(), self.next(), self.next()
             x = self.unary()
-            ty = builtin_type(name.text)
+            ty = cast
+            if builtin_type(name.text) is None:
+                self.edits.replace(name.s, name.e, ty.cg())
             self.edits.replace(open_.s, open_.e, "")
             self.edits.replace(close.s, close.e, "(")
             self.edits.close(x.e, ")")
