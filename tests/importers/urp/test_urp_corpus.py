@@ -67,12 +67,7 @@ HASHED_ANGLES = {
 
 
 # Known defects, each a strict expected failure so that its fix shows.
-KNOWN_DEFECTS = {
-    "Cyanilux__URP_GrassGeometryShader/GrassGeometry/GeoGrass.shader":
-        "GLSL port: rendered on the tessellation branch; after the session-41 merges the included "
-        "Tessellation.hlsl reaches the GLSL tessellation control stage with its parameter `patch` (a GLSL "
-        "reserved word) not renamed (open; HLSL renders)",
-}
+KNOWN_DEFECTS: dict = {}
 
 
 @pytest.mark.parametrize("shader", [pytest.param(s, marks=pytest.mark.xfail(strict=True, reason=KNOWN_DEFECTS[s]))

@@ -203,7 +203,9 @@ def read_source(path: Path) -> str:
     CP949, Chinese GBK, Windows-1252...) compile in Unity: its compilers read bytes, and such
     bytes sit in comments. A file that is not UTF-8 is read byte for byte (Latin-1: one
     character a byte, so lines and columns keep their numbers), with a note naming the file and
-    the line of its first such byte. OSError is the caller's."""
+    the line of its first such byte. Windows line ends (CR LF) are read as LF: one line each
+    either way, and the Cg type pass reads a line's end as LF only: a macro continued by a backslash
+    before CR LF kept Tessellation.hlsl's ``patch`` from its GLSL rename. OSError is the caller's."""
     data = Path(path).read_bytes()
     try:
         text = data.decode("utf-8")
@@ -213,7 +215,7 @@ def read_source(path: Path) -> str:
         warnings.warn(f"{path}:{line}: not UTF-8 (byte 0x{data[exc.start]:02x}, a legacy code page's); "
                       "read byte for byte, as Unity's compilers read it", UnityShaderNote, stacklevel=2)
         text = data.decode("latin-1")
-    return text.removeprefix("\ufeff")
+    return text.removeprefix("\ufeff").replace("\r\n", "\n")
 
 
 def _read_include(path: Path):
