@@ -36,6 +36,7 @@
 //           vec3 UnityWorldSpaceViewDir(vec3 worldPos), vec3 UnityWorldSpaceLightDir(vec3 worldPos),
 //           vec3 WorldSpaceViewDir(vec4 localPos), vec3 WorldSpaceLightDir(vec4 localPos),
 //           vec3 ObjSpaceViewDir(vec4 localPos), vec3 ObjSpaceLightDir(vec4 localPos),
+//           vec2 / vec3 TransformViewToProjection(v) (the projection's upper-left 2x2 / 3x3),
 //           vec4 ComputeScreenPos(vec4 clipPos), vec4 UnityPixelSnap(vec4 clipPos),
 //           bool IsGammaSpace() (false: linear colour space), float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
@@ -172,6 +173,8 @@ vec4 unity_SpotDirection[8];
 #define SAMPLE_DEPTH_TEXTURE(tex, uv) (texture(tex, (uv).xy).r)
 #define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (textureProj(tex, uv).r)
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (textureLod(tex, (uv).xy, (uv).w).r)
+// a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
+#define UNITY_SAMPLE_DEPTH(value) ((value).r)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -352,6 +355,16 @@ vec3 ObjSpaceViewDir(vec4 localPos) {
 
 vec3 ObjSpaceLightDir(vec4 localPos) {
     return (unity_WorldToObject * _WorldSpaceLightPos0).xyz - localPos.xyz * _WorldSpaceLightPos0.w;
+}
+
+// UnityCG.cginc's TransformViewToProjection: a view-space direction through the projection's
+// upper-left 2x2 or 3x3 (an outline's screen-space offset).
+vec2 TransformViewToProjection(vec2 v) {
+    return mat2(UNITY_MATRIX_P) * v;
+}
+
+vec3 TransformViewToProjection(vec3 v) {
+    return mat3(UNITY_MATRIX_P) * v;
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

@@ -36,6 +36,7 @@
 //           float3 UnityWorldSpaceViewDir(float3 worldPos), float3 UnityWorldSpaceLightDir(float3 worldPos),
 //           float3 WorldSpaceViewDir(float4 localPos), float3 WorldSpaceLightDir(float4 localPos),
 //           float3 ObjSpaceViewDir(float4 localPos), float3 ObjSpaceLightDir(float4 localPos),
+//           float2 / float3 TransformViewToProjection(v) (the projection's upper-left 2x2 / 3x3),
 //           float4 ComputeScreenPos(float4 clipPos), float4 UnityPixelSnap(float4 clipPos),
 //           bool IsGammaSpace() (false: linear colour space), float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
@@ -174,6 +175,8 @@ static float4 unity_SpotDirection[8];
 #define SAMPLE_DEPTH_TEXTURE(tex, uv) (tex2D(tex, (uv).xy).r)
 #define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv).r)
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
+// a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
+#define UNITY_SAMPLE_DEPTH(value) ((value).r)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -353,6 +356,16 @@ float3 ObjSpaceViewDir(float4 localPos) {
 
 float3 ObjSpaceLightDir(float4 localPos) {
     return mul(unity_WorldToObject, _WorldSpaceLightPos0).xyz - localPos.xyz * _WorldSpaceLightPos0.w;
+}
+
+// UnityCG.cginc's TransformViewToProjection: a view-space direction through the projection's
+// upper-left 2x2 or 3x3 (an outline's screen-space offset).
+float2 TransformViewToProjection(float2 v) {
+    return mul((float2x2)UNITY_MATRIX_P, v);
+}
+
+float3 TransformViewToProjection(float3 v) {
+    return mul((float3x3)UNITY_MATRIX_P, v);
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

@@ -99,16 +99,27 @@ def _parameter_types(params: str):
     return tuple(out)
 
 
+def library_overloads_defined(text: str) -> set:
+    """The names of the Unity layer's overloads ``text`` defines again (the same name and
+    parameter types, Cg's half and fixed read as float, as glslang and GLSL read them)."""
+    library = _library_functions()
+    return {m.group(1) for m in _DEFINITION.finditer(text)
+            if m.group(1) in library and _parameter_types(m.group(2)) in library[m.group(1)]}
+
+
+def renamed_calls(text: str, names) -> str:
+    """``text`` with each definition of and call to a function of ``names`` as
+    ``pbrlab_program_<name>``."""
+    if not names:
+        return text
+    return re.sub(r"\b(" + "|".join(sorted(names)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
+
+
 def _rename_own_library_functions(text: str) -> str:
     """A definition of one of the Unity layer's overloads (the same name and parameter types)
     renamed with its calls (a different overload of the name is a legitimate HLSL overload:
     left alone)."""
-    library = _library_functions()
-    own = {m.group(1) for m in _DEFINITION.finditer(text)
-           if m.group(1) in library and _parameter_types(m.group(2)) in library[m.group(1)]}
-    if not own:
-        return text
-    return re.sub(r"\b(" + "|".join(sorted(own)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
+    return renamed_calls(text, library_overloads_defined(text))
 
 
 # HLSL's multi-element matrix swizzle on a name or member (``M._m03_m13_m23``, ``M._11_22``):

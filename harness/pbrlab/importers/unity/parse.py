@@ -160,11 +160,10 @@ def _properties_in(text: str, first_line: int, path: Path, warnings: list) -> di
 # property's value is the enum's index (Unity's scripting reference: CullMode, BlendMode,
 # CompareFunction).
 _CULL_ENUM = ("off", "front", "back")
-BLEND_FACTORS = ("Zero", "One", "DstColor", "SrcColor", "OneMinusDstColor", "SrcAlpha",
-                 "OneMinusSrcColor", "DstAlpha", "OneMinusDstAlpha", "SrcAlphaSaturate", "OneMinusSrcAlpha")
+BLEND_FACTORS = shaderlab.BLEND_FACTORS
 _ZTEST_ENUM = ("always", "never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always")
 ZTESTS = {"less": "less", "greater": "greater", "lequal": "lequal", "gequal": "gequal", "equal": "equal",
-          "notequal": "notequal", "always": "always", "never": "never", "off": "always"}
+          "notequal": "notequal", "always": "always", "never": "never", "off": "always", "on": "lequal"}
 
 
 def _state_words(args: str, props: dict, where: str, enum=None) -> list[str]:
@@ -217,6 +216,8 @@ def apply_state(commands, state: M.RenderState, props: dict, path: Path, warning
             if value not in ZTESTS:
                 raise UnityShaderError(f"{where}: ZTest {c.args}: expected one of Less, Greater, LEqual, "
                                        "GEqual, Equal, NotEqual, Always")
+            if value == "on":  # ShaderLab takes it (tutorial shaders write it); the test is on: the default LEqual
+                warnings.append(f"{where}: ZTest {c.args}: read as ZTest LEqual (the default depth test)")
             state.ztest = ZTESTS[value]
         elif word == "blend":
             words = _state_words(c.args, props, where, BLEND_FACTORS)

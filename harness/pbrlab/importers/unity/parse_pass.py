@@ -18,6 +18,7 @@ from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
+from .own_library_functions import renamed_in_own_files
 from .written_globals import copied_in_includes, copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
@@ -176,6 +177,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
         rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
         written += in_includes
+    program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"

@@ -22,6 +22,7 @@ import dataclasses
 import functools
 
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -368,10 +369,20 @@ def _bind_number(program, name: str, kind: str, value: float) -> None:
     uniforms = programs.uniforms_named(program, name)
     for uniform in uniforms:
         gl_type = programs.uniform_type(uniform)
-        if gl_type not in ("float", "int", "uint", "bool"):
+        if gl_type not in ("float", "int", "uint", "bool", *_FLOAT_VECTORS):
             raise _mismatch(program, f"{kind} property {name} (a number)", name, uniform)
     if uniforms:
         gl_type = programs.uniform_type(uniforms[0])
+        if gl_type in _FLOAT_VECTORS and gl_type != "float":
+            # a Float property over a float4 uniform: a script's SetColor/SetVector fills it in
+            # Unity (image effects declare it so); here the number, promoted as HLSL promotes a
+            # scalar to a vector, with a note
+            from .source_text import UnityShaderNote
+            warnings.warn(f"{_shader_name(program)}: {kind} property {name} is bound to the {gl_type} uniform "
+                          f"'{name}': its value {value:g} in every component (in Unity a script sets such a "
+                          "uniform with SetVector/SetColor)", UnityShaderNote, stacklevel=2)
+            _set(program, name, (float(value),) * _FLOAT_VECTORS[gl_type])
+            return
         _set(program, name, value if gl_type == "float" else
              bool(value) if gl_type == "bool" else int(value))
 
