@@ -15,7 +15,10 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
-//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
+//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_FogColor
+//           (RenderSettings.fogColor: its default, (0.5, 0.5, 0.5, 1); pbrlab draws no fog);
+//           vec2 UnityStereoScreenSpaceUVAdjust(uv, scaleAndOffset), UnityStereoTransformScreenSpaceTex(uv)
+//           (the identity: one eye);
 //           vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight),
 //           vec3 ShadeVertexLights(vec4 vertex, vec3 normal) (UnityCG.cginc's vertex lighting);
 //           vec4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
@@ -100,6 +103,7 @@ uniform vec4 _ZBufferParams;
 uniform vec4 unity_OrthoParams;
 uniform vec4 _SpecColor;
 uniform vec4 unity_SpecCube0_HDR;
+uniform vec4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
 vec4 _LightColor0;
@@ -138,6 +142,12 @@ vec4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
+vec2 UnityStereoScreenSpaceUVAdjust(vec2 uv, vec4 scaleAndOffset) { return uv; }
+vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
+#ifndef UnityStereoTransformScreenSpaceTex
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#endif
 #define UNITY_INITIALIZE_OUTPUT(type, name)
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes on Direct3D, nothing on Unity's GLSL

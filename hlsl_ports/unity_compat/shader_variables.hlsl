@@ -15,7 +15,10 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
-//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
+//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_FogColor
+//           (RenderSettings.fogColor: its default, (0.5, 0.5, 0.5, 1); pbrlab draws no fog);
+//           float2 UnityStereoScreenSpaceUVAdjust(uv, scaleAndOffset), UnityStereoTransformScreenSpaceTex(uv)
+//           (the identity: one eye);
 //           float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight),
 //           float3 ShadeVertexLights(float4 vertex, float3 normal) (UnityCG.cginc's vertex lighting);
 //           float4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
@@ -102,6 +105,7 @@ uniform float4 _ZBufferParams;
 uniform float4 unity_OrthoParams;
 uniform float4 _SpecColor;
 uniform float4 unity_SpecCube0_HDR;
+uniform float4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
 static float4 _LightColor0;
@@ -140,6 +144,12 @@ static float4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
+float2 UnityStereoScreenSpaceUVAdjust(float2 uv, float4 scaleAndOffset) { return uv; }
+float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return uv; }
+#ifndef UnityStereoTransformScreenSpaceTex
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#endif
 #define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes, as Unity defines them for Direct3D

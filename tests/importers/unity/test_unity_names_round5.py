@@ -126,3 +126,26 @@ def test_a_float_property_over_a_float4_uniform_fills_every_component(tmp_path, 
         image = _render(tmp_path, shader, language)
     got = image[_covered(image)][:, :3]
     assert np.array_equal(got, np.broadcast_to([0.25, 0.25, 0.25], got.shape))
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_fog_colour_is_render_settings_default_and_stereo_helpers_are_the_identity(tmp_path, language):
+    """unity_FogColor: RenderSettings.fogColor's default, (0.5, 0.5, 0.5, 1) (pbrlab draws no fog);
+    UnityStereoScreenSpaceUVAdjust (one eye): the coordinates as given, whatever the scale/offset."""
+    body = ("            float2 uv = UnityStereoScreenSpaceUVAdjust(float2(0.25, 0.75), float4(0.5, 0.5, 0.5, 0));\n"
+            "            return float4(unity_FogColor.r * uv.x, unity_FogColor.g * uv.y, unity_FogColor.a * 0.125, 1);")
+    image = _render(tmp_path, _shader(tmp_path, "fog", body), language)
+    got = image[_covered(image)][:, :3]
+    assert np.array_equal(got, np.broadcast_to([0.125, 0.375, 0.125], got.shape))
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_an_array_of_vectors_from_a_flat_list_of_numbers(tmp_path, language):
+    """``float2 taps[2] = { 0.25, 0.5, 0.125, 0.75 };``: HLSL fills the components in order (FXC
+    takes it; glslang and GLSL refused: "array constructor must have exactly 2 parameters");
+    the control is the order: a transposed reading would give (0.75, 0.125, 0.5)."""
+    body = ("            float2 taps[2] =\n            {\n                0.25, 0.5,\n                0.125, 0.75\n            };\n"
+            "            return float4(taps[0].x + taps[1].x, taps[0].y, taps[1].y, 1);")
+    image = _render(tmp_path, _shader(tmp_path, "flat", body), language)
+    got = image[_covered(image)][:, :3]
+    assert np.array_equal(got, np.broadcast_to([0.375, 0.5, 0.75], got.shape))

@@ -307,6 +307,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "unity_OrthoParams", (1.0 / frame.proj[0, 0], 1.0 / frame.proj[1, 1], 0.0, 1.0)
          if orthographic else (0.0, 0.0, 0.0, 0.0))
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
+    _set(program, "unity_FogColor", FOG_COLOR)
     if "_SpecColor" not in material.properties:
         _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
     unit = first_unit
@@ -352,6 +353,11 @@ def _mismatch(program, what: str, name: str, uniform) -> PbrlabError:
 
 def _shader_name(program) -> str:
     return (getattr(program, "extra", None) or {}).get("shader", "surface shader")
+
+
+# RenderSettings.fogColor's default (Unity's Lighting window: Fog Color (0.5, 0.5, 0.5, 1)); pbrlab
+# draws no fog, so a shader that mixes towards it by its own factor sees Unity's default colour.
+FOG_COLOR = (0.5, 0.5, 0.5, 1.0)
 
 
 def _bind_vector(program, name: str, what: str, value) -> None:
