@@ -183,3 +183,40 @@ def test_own_vertex_function_over_the_full_screen_triangle(tmp_path, language):
     assert (err <= bound).all(), err.max()
     top_down = np.abs(image[..., 1] - (1.0 - want[..., 1])) > bound  # control
     assert top_down.mean() > 0.95
+
+
+# Blit.hlsl's quad (VertQuad) and its FragBilinear: a copy of the camera colour.
+QUAD_COPY_SHADER = """
+Shader "t/fullscreen quad copy" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" }
+        Pass {
+            ZTest Always ZWrite Off Cull Off
+            HLSLPROGRAM
+            #pragma vertex VertQuad
+            #pragma fragment FragBilinear
+            #include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_blit_quad_copies_the_camera_colour(tmp_path, language):
+    """VertQuad (the Blitter's quad: 4 ids as triangles (0, 1, 2), (0, 2, 3)) with FragBilinear
+    shows "alone" itself at every pixel. Bound: the quad's coordinate is interpolated in float32
+    from corner values 0 and 1, a few ulp of 1 (2^-21 in uv, 64 * 2^-21 = 2^-15 of a texel), so
+    the bilinear weights move by at most 2^-15 times the texel's largest neighbour difference.
+    Controls: the image one row down fails on the lit sphere's rows; a quad drawn as 3 vertices
+    (one triangle) would leave half the image at the cleared 0 and fail alpha == 1."""
+    alone = _linear(_scene(tmp_path, None), language)[..., :3]
+    image = _linear(_scene(tmp_path, QUAD_COPY_SHADER), language)
+    bound = 2.0 ** -15 * _neighbour_range(alone) + 2.0 ** -24 * np.abs(alone)
+    err = np.abs(image[..., :3] - alone)
+    assert (err <= bound).all(), (err / np.maximum(bound, 1e-30)).max()
+    assert (image[..., 3] == 1.0).all()
+    lit = alone.max(axis=-1) > 0.05
+    rows = np.abs(image[..., :3] - np.roll(alone, 1, axis=0)) > bound  # control
+    assert rows.any(axis=-1)[lit & (np.abs(alone - np.roll(alone, 1, axis=0)).max(axis=-1) > 0.01)].mean() > 0.9

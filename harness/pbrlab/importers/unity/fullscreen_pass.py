@@ -8,7 +8,11 @@ with ``GetFullScreenTriangleVertexPosition(id)`` reads the same). Such a program
 mesh (it has no vertex attribute), and a program that indexes a compute buffer by the vertex id
 is refused before it gets here (compute_buffers.py), so what is left positions its vertices from
 the id alone: Unity draws it procedurally, 3 vertices with no mesh (the Blitter's
-``DrawProcedural(..., MeshTopology.Triangles, 3)``), and so does pbrlab.
+``DrawProcedural(..., MeshTopology.Triangles, 3)``), and so does pbrlab. A pass whose vertex
+function is Blit.hlsl's ``VertQuad`` or ``VertQuadPadding``, or whose program calls Core's
+``GetQuadVertexPosition``, is the Blitter's quad instead (``Blitter.BlitQuad``: 4 vertices, drawn
+as the triangles (0, 1, 2) and (0, 2, 3)): an index buffer of those 6 ids, which GL hands the
+vertex stage as SV_VertexID.
 
 How it is drawn (Unity's documentation of the Blitter and the Full Screen Pass Renderer
 Feature, whose default injection point is after the scene is rendered):
@@ -25,10 +29,12 @@ Feature, whose default injection point is after the scene is rendered):
 * the object is kept out of the camera's depth texture and G-buffer (it has no surface there).
 
     fullscreen_pass.is_fullscreen(unity_pass)     # the rule above
-    fullscreen_pass.vertex_array(ctx, program)    # (vao, []): 3 vertices, no buffers
+    fullscreen_pass.vertex_array(ctx, program, draws_quad(unity_pass))   # (vao, buffers)
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from ...gpu.programs import set_uniform as _set
 from . import model as M
@@ -38,6 +44,9 @@ SOURCE_TEXTURE = "_BlitTexture"
 # The Blitter's procedural triangle (Core RP's GetFullScreenTriangleVertexPosition: vertex ids 0..2).
 VERTICES = 3
 _WHOLE = (1.0, 1.0, 0.0, 0.0)  # scale (1, 1), bias (0, 0)
+# The Blitter's quad: its 4 corners' ids as two triangles (Core RP's GetQuadVertexPosition order).
+QUAD_IDS = (0, 1, 2, 0, 2, 3)
+_QUAD_VERTEX_FUNCTIONS = ("VertQuad", "VertQuadPadding")
 
 
 def _input_semantics(vf: M.VertexFragmentPass) -> set:
@@ -66,6 +75,11 @@ def is_fullscreen(unity_pass) -> bool:
     return "SV_VERTEXID" in semantics and not semantics & {"POSITION", "SV_POSITION"}
 
 
+def draws_quad(unity_pass) -> bool:
+    """Whether a full-screen pass draws the Blitter's quad, not its triangle (module doc)."""
+    return unity_pass.vertex in _QUAD_VERTEX_FUNCTIONS or "GetQuadVertexPosition" in unity_pass.program
+
+
 def not_drawn(unity_pass, drawn: list) -> bool:
     """A full-screen pass after the shader's first one that runs (``drawn``: the material's
     passes so far): the Full Screen Pass Renderer Feature draws its Pass Index alone, 0 by default."""
@@ -89,10 +103,13 @@ def bind(program, frame) -> None:
     _set(program, "_BlitTextureSize", (float(w), float(h)))
 
 
-def vertex_array(ctx, program):
-    """(vertex array, buffers) of the procedural triangle: no buffers, 3 vertices (the vertex
-    stage places them by their id; a mesh attribute the generated entry declares reads GL's
-    default (0, 0, 0, 1), and the program reads none)."""
-    vao = ctx.vertex_array(program, [])
-    vao.vertices = VERTICES
-    return vao, []
+def vertex_array(ctx, program, quad: bool = False):
+    """(vertex array, buffers) of the procedural triangle (no buffers, 3 vertices) or quad (an
+    index buffer of QUAD_IDS): the vertex stage places them by their id; a mesh attribute the
+    generated entry declares reads GL's default (0, 0, 0, 1), and the program reads none."""
+    if not quad:
+        vao = ctx.vertex_array(program, [])
+        vao.vertices = VERTICES
+        return vao, []
+    ids = ctx.buffer(np.asarray(QUAD_IDS, np.int32).tobytes())
+    return ctx.vertex_array(program, [], index_buffer=ids, index_element_size=4), [ids]

@@ -192,7 +192,8 @@ class ProgramPass:
         return tessellate.sphere_vertex_array(ctx, program)
 
     def fullscreen_vertex_array(self, ctx, program):
-        return fullscreen_pass.vertex_array(ctx, program)  # the Blitter's triangle (fullscreen_pass.py)
+        # the Blitter's triangle, or its quad (fullscreen_pass.py)
+        return fullscreen_pass.vertex_array(ctx, program, fullscreen_pass.draws_quad(self.unity_pass))
 
 
 class UnitySource:

@@ -1,5 +1,6 @@
-// pbrlab's body of Core RP's full-screen triangle functions (Core's Common.hlsl:
-// GetFullScreenTriangleVertexPosition, GetFullScreenTriangleTexCoord), written for pbrlab from
+// pbrlab's body of Core RP's full-screen triangle and quad functions (Core's Common.hlsl:
+// GetFullScreenTriangleVertexPosition, GetFullScreenTriangleTexCoord, GetQuadVertexPosition,
+// GetQuadTexCoord) and URP's UnityStereoTransformScreenSpaceTex, written for pbrlab from
 // Unity's documentation of its Blitter (a procedural draw of 3 vertices covering the viewport,
 // positioned from SV_VertexID) and observed behaviour (Core RP's own file is under the Unity
 // Companion License and is not copied). Included by the stand-in Core.hlsl, so a program that
@@ -27,5 +28,26 @@ float2 GetFullScreenTriangleTexCoord(uint vertexID) {
 float4 GetFullScreenTriangleVertexPosition(uint vertexID, float z = UNITY_NEAR_CLIP_VALUE) {
     return float4(PbrlabFullScreenTriangleCorner(vertexID) * 2.0 - 1.0, z, 1.0);
 }
+
+// The Blitter's quad (Blitter.BlitQuad: 4 vertices, triangles (0, 1, 2) and (0, 2, 3)): vertex i's
+// corner (i >> 1, 1 for i = 0 and 3, else 0), y down, which its callers map to clip space by
+// (2 x - 1, 1 - 2 y) (Blit.hlsl's VertQuad); its texture coordinate (i >> 1, 1 for i = 1 and 2,
+// else 0), so each corner reads its own corner of the source, v up on GL (a Direct3D build
+// flips v, UNITY_UV_STARTS_AT_TOP).
+float4 GetQuadVertexPosition(uint vertexID, float z = UNITY_NEAR_CLIP_VALUE) {
+    float y = (vertexID == 0u || vertexID == 3u) ? 1.0 : 0.0;
+    return float4(float(vertexID >> 1u), y, z, 1.0);
+}
+
+float2 GetQuadTexCoord(uint vertexID) {
+    float v = (vertexID == 1u || vertexID == 2u) ? 1.0 : 0.0;
+    return float2(float(vertexID >> 1u), v);
+}
+
+// One view, no XR: a screen-space texture coordinate is the eye's own (URP's
+// ShaderVariablesFunctions.hlsl defines it so without single-pass stereo).
+#ifndef UnityStereoTransformScreenSpaceTex
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#endif
 
 #endif
