@@ -244,7 +244,8 @@ def _reset_draw_state(ctx) -> None:
 
 
 def _draw_order(scene: Scene, frame):
-    """Opaque and cutout objects first, then blended ones from far to near."""
+    """Opaque and cutout objects first, then blended ones from far to near, then the objects
+    whose material draws a full-screen pass (they read what the others drew)."""
     def centre(obj):
         if obj.sphere is not None:
             return obj.sphere[0]
@@ -252,11 +253,11 @@ def _draw_order(scene: Scene, frame):
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in BLENDED_ALPHA_MODES]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
-    # a full-screen pass (Unity's Blitter: importers/unity/fullscreen_pass.py) reads the scene
-    # drawn before it: its objects last
-    last = [getattr(source_of(scene.materials[o.material]), "draws_fullscreen", lambda m: False)(
-        scene.materials[o.material]) for o in opaque + blended]
-    return [o for o, f in zip(opaque + blended, last) if not f] + [o for o, f in zip(opaque + blended, last) if f]
+
+    def fullscreen(o):  # a full-screen pass (Unity's Blitter: importers/unity/fullscreen_pass.py)
+        material = scene.materials[o.material]
+        return getattr(source_of(material), "draws_fullscreen", lambda m: False)(material)
+    return sorted(opaque + blended, key=fullscreen)  # (stable) they read the scene: drawn last
 
 
 def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:

@@ -41,13 +41,18 @@ struct Varyings {
     UNITY_VERTEX_OUTPUT_STEREO
 };
 
-// The triangle's clip position, and its texture coordinate scaled and offset by _BlitScaleBias
-// (xy scale, zw bias).
-Varyings Vert(Attributes input) {
+// A vertex's clip position, and its texture coordinate scaled and offset by _BlitScaleBias (xy
+// scale, zw bias).
+Varyings PbrlabBlitVaryings(float4 positionCS, float2 uv) {
     Varyings output;
-    output.positionCS = GetFullScreenTriangleVertexPosition(input.vertexID);
-    output.texcoord = GetFullScreenTriangleTexCoord(input.vertexID) * _BlitScaleBias.xy + _BlitScaleBias.zw;
+    output.positionCS = positionCS;
+    output.texcoord = uv * _BlitScaleBias.xy + _BlitScaleBias.zw;
     return output;
+}
+
+// The full-screen triangle.
+Varyings Vert(Attributes input) {
+    return PbrlabBlitVaryings(GetFullScreenTriangleVertexPosition(input.vertexID), GetFullScreenTriangleTexCoord(input.vertexID));
 }
 
 // The quad's corner placed in the target by _BlitScaleBiasRt (xy scale, zw offset, in [0, 1],
@@ -59,23 +64,17 @@ float4 PbrlabBlitQuadPosition(uint vertexID) {
 }
 
 Varyings VertQuad(Attributes input) {
-    Varyings output;
-    output.positionCS = PbrlabBlitQuadPosition(input.vertexID);
-    output.texcoord = GetQuadTexCoord(input.vertexID) * _BlitScaleBias.xy + _BlitScaleBias.zw;
-    return output;
+    return PbrlabBlitVaryings(PbrlabBlitQuadPosition(input.vertexID), GetQuadTexCoord(input.vertexID));
 }
 
 // The quad with a border of _BlitPaddingSize texels around a _BlitTextureSize source: its
 // coordinate moved in by half the border and stretched by (size + border) / size, so the
 // source's edge texels reach into the border.
 Varyings VertQuadPadding(Attributes input) {
-    Varyings output;
     float2 padding = float2(float(_BlitPaddingSize), float(_BlitPaddingSize));
     float2 stretch = (_BlitTextureSize + padding) / _BlitTextureSize;
     float2 inset = 0.5 * padding / (_BlitTextureSize + padding);
-    output.positionCS = PbrlabBlitQuadPosition(input.vertexID);
-    output.texcoord = ((GetQuadTexCoord(input.vertexID) - inset) * stretch) * _BlitScaleBias.xy + _BlitScaleBias.zw;
-    return output;
+    return PbrlabBlitVaryings(PbrlabBlitQuadPosition(input.vertexID), (GetQuadTexCoord(input.vertexID) - inset) * stretch);
 }
 
 // The source at the coordinate, at mip _BlitMipLevel (its texture's filtering: GlobalSamplers.hlsl).
