@@ -71,12 +71,16 @@ def scene_for(shader: Path) -> dict:
     vertex function can move) under a directional and a point light and the sky; a lightmapped
     sphere (LIGHTMAP) where the shader's drawn vertex/fragment program reads Unity's lightmap,
     which it cannot run without, and a realtime GI lightmap (DYNAMIC_LIGHTMAP) where it reads
-    Unity's realtime lightmap (every other shader sees the sphere as it always has)."""
+    Unity's realtime lightmap (every other shader sees the sphere as it always has). A
+    full-screen shader (importers/unity/fullscreen_pass.py: drawn over the whole view, reading
+    the camera's colour) is shown over the same sphere in a pbrlab material (BACKDROP), the scene
+    its pass reads."""
     material = {"surface": str(shader)}
     if _reads_lightmap(shader):
         material["lightmap"] = dict(LIGHTMAP)
     if _reads_lightmap(shader, realtime=True):
         material["dynamic_lightmap"] = dict(DYNAMIC_LIGHTMAP)
+    backdrop = _draws_fullscreen(shader)
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
                    "size": list(SIZE)},
@@ -85,10 +89,28 @@ def scene_for(shader: Path) -> dict:
             {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
         ],
         "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
-        "materials": {"m": material},
-        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
+        "materials": {"m": material, **({"backdrop": dict(BACKDROP)} if backdrop else {})},
+        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}]
+                   + ([{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "backdrop"}] if backdrop else []),
         "render": {"quality": "high", "tonemap": "khronos_neutral"},
     }
+
+
+# The sphere a full-screen shader's pass is shown over: a lit pbrlab material.
+BACKDROP = {"albedo": [0.8, 0.5, 0.3], "smoothness": 0.5}
+
+
+def _draws_fullscreen(shader: Path) -> bool:
+    """Whether ``shader`` draws a full-screen pass (False for a shader the reader refuses)."""
+    from ..importers.unity import BUILTIN, URP, read_shader
+    from ..importers.unity.fullscreen_pass import is_fullscreen
+    from ..importers.urp import material as urp
+    if Path(shader).suffix != ".shader":
+        return False
+    try:
+        return any(is_fullscreen(p) for p in read_shader(Path(shader), URP if urp.reads(Path(shader)) else BUILTIN).passes)
+    except PbrlabError:
+        return False
 
 
 def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:

@@ -244,7 +244,8 @@ def _reset_draw_state(ctx) -> None:
 
 
 def _draw_order(scene: Scene, frame):
-    """Opaque and cutout objects first, then blended ones from far to near."""
+    """Opaque and cutout objects first, then blended ones from far to near, then the objects
+    whose material draws a full-screen pass (they read what the others drew)."""
     def centre(obj):
         if obj.sphere is not None:
             return obj.sphere[0]
@@ -252,7 +253,11 @@ def _draw_order(scene: Scene, frame):
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in BLENDED_ALPHA_MODES]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
-    return opaque + blended
+
+    def fullscreen(o):  # a full-screen pass (Unity's Blitter: importers/unity/fullscreen_pass.py)
+        material = scene.materials[o.material]
+        return getattr(source_of(material), "draws_fullscreen", lambda m: False)(material)
+    return sorted(opaque + blended, key=fullscreen)  # (stable) they read the scene: drawn last
 
 
 def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
@@ -452,7 +457,8 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
         grabbed = draw.resources.camera_textures.bound(source) if draw.resources.camera_textures else {}
         for material_pass in source.passes(material):
             if material_pass.grab is not None:  # what is drawn so far, for the passes after it
-                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder)
+                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder,
+                                                    getattr(material_pass, "clamp_to_edge", False))
                 continue
             for keyed, state in material_pass.draws(defines):
                 _apply_state(ctx, hdr, state)
@@ -480,11 +486,13 @@ def _apply_state(ctx, hdr, state) -> None:
     ctx.depth_func = state.depth_func
 
 
-def _grab(ctx, hdr, holder):
+def _grab(ctx, hdr, holder, clamp_to_edge=False):
     """A grab pass: a copy of the float target as drawn so far (released after the render);
-    from a multisampled target the blit resolves (each pixel's samples averaged)."""
+    from a multisampled target the blit resolves (each pixel's samples averaged). Repeating,
+    or ``clamp_to_edge``."""
     texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
     texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    texture.repeat_x = texture.repeat_y = not clamp_to_edge
     copy = ctx.framebuffer([texture])
     ctx.copy_framebuffer(copy, hdr.fbo)  # a framebuffer blit: float to float, exact
     copy.release()
@@ -565,7 +573,9 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
         _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
         _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
     _cull(ctx, material, state.cull)
-    if obj.sphere is not None:  # a sphere whose pass moves vertices: tessellated by the pass
+    if getattr(material_pass, "fullscreen", False):  # a procedural full-screen draw, no mesh
+        vao, buffers = material_pass.fullscreen_vertex_array(ctx, program)
+    elif obj.sphere is not None:  # a sphere whose pass moves vertices: tessellated by the pass
         vao, buffers = material_pass.sphere_vertex_array(ctx, program)
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)

@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, light_space, lightmaps, user_definitions
+from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, user_definitions
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -150,6 +150,7 @@ class ProgramPass:
         self.dynamic_lightmap = dynamic_lightmap  # its realtime GI lightmap (dynamic_lightmaps.py), or None
         # a sphere is ray-traced by a surface program that leaves vertices where they are
         self.traces_spheres = unity_pass.kind == "surface" and not moves_vertices
+        self.fullscreen = fullscreen_pass.is_fullscreen(unity_pass)  # drawn as Unity's Blitter draws
 
     def draws(self, defines: dict) -> list:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
@@ -173,6 +174,8 @@ class ProgramPass:
     def bind(self, program, material, obj, frame, cache, environment_cube, first_unit, grabbed) -> None:
         from . import program as unity_program
         unity_program.bind(program, material, obj, frame, cache, environment_cube, first_unit)
+        if self.fullscreen:
+            fullscreen_pass.bind(program, frame)
         unit = first_unit + len(material.properties)
         for i, (name, texture) in enumerate(sorted(grabbed.items())):
             texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
@@ -188,6 +191,10 @@ class ProgramPass:
         from . import tessellate
         return tessellate.sphere_vertex_array(ctx, program)
 
+    def fullscreen_vertex_array(self, ctx, program):
+        # the Blitter's triangle, or its quad (fullscreen_pass.py)
+        return fullscreen_pass.vertex_array(ctx, program, fullscreen_pass.draws_quad(self.unity_pass))
+
 
 class UnitySource:
     """``MaterialSource`` of a material whose surface is a Unity shader (module doc)."""
@@ -202,12 +209,14 @@ class UnitySource:
     def passes(self, material) -> list:
         out = []
         for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
-            if _skipped(p, self.shader.path):
+            if _skipped(p, self.shader.path) or fullscreen_pass.not_drawn(p, out):
                 continue
             for name in dict.fromkeys(_NAMED_TEXTURES.findall(_read_text(p, self.shader.path))
                                       if p.kind != "grab" else ()):
                 if not any(q.grab == name for q in out):  # URP's opaque copy, or its colour target
                     out.append(GrabPass(GrabPassModel(name, p.program_line)))
+            if fullscreen_pass.is_fullscreen(p):  # its _BlitTexture: the camera's colour so far
+                out.append(fullscreen_pass.SourceGrab())
             out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
                                                                         self.lightmap, self.dynamic_lightmap))
         return out
@@ -225,7 +234,13 @@ class UnitySource:
         white albedo, metallic 0, smoothness 0.5): the harness has no Deferred pass of its own
         to run (render/camera_textures.py)."""
         from ...scene.gbuffer_surface import DEFAULT_STANDARD_SURFACE
+        if self.draws_fullscreen(material):  # no surface of its own there (fullscreen_pass.py)
+            return None
         return DEFAULT_STANDARD_SURFACE if _render_queue(self.shader.path) <= _OPAQUE_QUEUE_LIMIT else None
+
+    def draws_fullscreen(self, material) -> bool:
+        """Whether it draws a full-screen pass, after the rest of the scene (fullscreen_pass.py)."""
+        return any(fullscreen_pass.is_fullscreen(p) for p in self.shader.passes)
 
     def defines(self, material) -> dict:
         return {k: 1 for k in material.keywords}  # the keywords the material enables

@@ -223,6 +223,7 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabFullScreenTriangle.hlsl"
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
