@@ -1,8 +1,11 @@
-"""URP's Shaders/UnlitInput.hlsl stand-in (issue 34): a copy of URP's Unlit shader includes it
-for its material inputs, _BaseMap (white by default) and its _ST, _BaseColor, _Cutoff, _Surface.
+"""Stand-ins for URP / Core RP include files users' shaders include (issue 34): URP's
+Shaders/UnlitInput.hlsl (a copy of URP's Unlit shader includes it for its material inputs,
+_BaseMap (white by default) and its _ST, _BaseColor, _Cutoff, _Surface), and Core RP's
+Filtering.hlsl (Amplify Shader Editor's URP templates include it without calling it; a call of
+one of its filters is refused naming it).
 
-Scene: a unit UV sphere (test_urp_library_round2's) drawn with an unlit pass returning
-base map x _BaseColor at uv (0.5, 0.5), constant over the sphere.
+Scene: a unit UV sphere (test_urp_library_round2's) drawn with an unlit pass returning a
+constant over the sphere.
 """
 
 from __future__ import annotations
@@ -13,7 +16,9 @@ import numpy as np
 import pytest
 
 from pbrlab.importers.loader import parse_scene
+from pbrlab.foundation.errors import PbrlabError
 from pbrlab.render.renderer import render_scene
+from test_urp_library_round2 import render_constant, urp_pass
 
 LANGUAGES = ("glsl", "hlsl")
 
@@ -74,3 +79,21 @@ def test_unlit_input_declares_the_unlit_material_inputs(tmp_path, language):
     assert (np.abs(pixels - [0.25, 0.5, 0.75]).max(axis=1) > BOUND).mean() == 0.0
     overridden = _render(tmp_path, language, {"_BaseColor": [0.5, 0.25, 1.0, 1.0]})
     assert (np.abs(overridden - [0.5, 0.25, 1.0]).max(axis=1) > BOUND).mean() == 0.0
+
+
+FILTERING = '#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Filtering.hlsl"'
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_filtering_include_alone_draws(tmp_path, language):
+    """A program including Filtering.hlsl and calling none of it draws its constant (0.25, 0.5,
+    0.75), exactly. Control: one calling SampleTexture2DBicubic is refused naming the function
+    and Filtering.hlsl, not drawn."""
+    pixels, _ = render_constant(tmp_path, urp_pass("filtering", "return float4(0.25, 0.5, 0.75, 1.0);", FILTERING),
+                                language, environment=False)
+    assert (np.abs(pixels[:, :3] - [0.25, 0.5, 0.75]).max(axis=1) > BOUND).mean() == 0.0
+    body = ("float2 s = float2(1.0, 1.0);\n"
+            "                return SampleTexture2DBicubic(TEXTURE2D_ARGS(_T, sampler_T), float2(0.5, 0.5), float4(s, s), s, 0);")
+    text = urp_pass("bicubic", body, FILTERING + "\n            TEXTURE2D(_T); SAMPLER(sampler_T);")
+    with pytest.raises(PbrlabError, match="uses SampleTexture2DBicubic, part of Core RP's Filtering.hlsl"):
+        render_constant(tmp_path, text, language, environment=False)
