@@ -93,7 +93,8 @@ def test_filtering_include_alone_draws(tmp_path, language):
                                 language, environment=False)
     assert (np.abs(pixels[:, :3] - [0.25, 0.5, 0.75]).max(axis=1) > BOUND).mean() == 0.0
     body = ("float2 s = float2(1.0, 1.0);\n"
-            "                return SampleTexture2DBicubic(TEXTURE2D_ARGS(_T, sampler_T), float2(0.5, 0.5), float4(s, s), s, 0);")
+            "                return SampleTexture2DBicubic(TEXTURE2D_ARGS(_T, sampler_T), float2(0.5, 0.5),"
+            " float4(s, s), s, 0);")
     text = urp_pass("bicubic", body, FILTERING + "\n            TEXTURE2D(_T); SAMPLER(sampler_T);")
     with pytest.raises(PbrlabError, match="uses SampleTexture2DBicubic, part of Core RP's Filtering.hlsl"):
         render_constant(tmp_path, text, language, environment=False)

@@ -110,3 +110,15 @@ def test_lightmap_scale_offsets_of_an_unlightmapped_object_are_the_identity(tmp_
     swapped = np.array([0.25 * 0 + 1, 0.5 * 0 + 1, 11.0])  # scale (0, 0), offset (1, 1)
     for wrong in (np.zeros(3), swapped):
         assert np.abs(wrong - LIGHTMAP_EXPECTED).max() > 1000 * LIGHTMAP_BOUND
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_lightmap_scale_offsets_with_unitycg_after_core(tmp_path, language):
+    """A URP program that also includes UnityCG.cginc (whose lightmap stand-ins declare the two
+    as uniforms) after Core.hlsl reads the same identity: pixel (0.5, 0.5, 0) from
+    unity_LightmapST.xy / 2 and unity_DynamicLightmapST.z. Control: the uniform declaration
+    expanded through Core's definition was a compile error before the stand-ins skipped it."""
+    body = "return float4(unity_LightmapST.xy * 0.5, unity_DynamicLightmapST.z, 1.0);"
+    pixels, _ = render_constant(tmp_path, urp_pass("lightmap st unitycg", body, '#include "UnityCG.cginc"'),
+                                language, environment=False)
+    assert (np.abs(pixels[:, :3] - [0.5, 0.5, 0.0]).max(axis=1) > LIGHTMAP_BOUND).mean() == 0.0

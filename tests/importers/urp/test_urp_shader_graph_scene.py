@@ -13,11 +13,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pbrlab.render.depth_range import scene_frame
 from pbrlab.render.renderer import render_scene
 from test_urp_library_round2 import render_constant, urp_pass
-from test_urp_scene_textures import _URP_PASS, LANGUAGES, OPAQUE_SHADER, _opaque_scene, _scene
-from sphere_depth import depth_bound, rendered_sphere  # noqa: E402 (test_urp_scene_textures puts unity/ on sys.path)
+from test_urp_scene_textures import (_URP_PASS, LANGUAGES, OPAQUE_SHADER, _opaque_scene, _scene,
+                                     check_sphere_depths)
 
 GRAPH_FUNCTIONS = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/ShaderGraphFunctions.hlsl"'
 
@@ -39,17 +38,7 @@ def test_graph_scene_depth_is_ray_sphere_depth(tmp_path, language):
     = the float64 ray-sphere eye depth (/ far), within test_urp_scene_textures' depth bound
     (depth_bound: the stored window depth's float32 roundings through 1/e's slope, and
     LinearEyeDepth's own). Control: the neighbouring pixel's depth fails it."""
-    scene = _scene(GRAPH_DEPTH_SHADER, tmp_path)
-    frame = scene_frame(scene)
-    image, covered, eye = rendered_sphere(scene, frame, language)
-    bound = depth_bound(eye, frame)
-    err01 = np.abs(image[..., 0] - eye / frame.far)
-    assert (err01[covered] <= (bound / frame.far)[covered]).all()
-    for channel in (1, 2):
-        err = np.abs(image[..., channel] - eye)
-        assert (err[covered] <= bound[covered]).all(), (channel, (err / bound)[covered].max())
-    shifted = np.abs(np.roll(image[..., 1], 1, axis=0) - eye)
-    assert (shifted[covered] > bound[covered]).mean() > 0.9
+    check_sphere_depths(_scene(GRAPH_DEPTH_SHADER, tmp_path), language)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -58,7 +47,8 @@ def test_graph_scene_nodes_read_zero_without_require(tmp_path, language):
     shadergraph functions' #else), exactly: the pixel is (0, 0, 0) + 0.5 from the constant.
     Control: with REQUIRE_DEPTH_TEXTURE the same expression is the sphere's depth (the test above)."""
     body = """float2 uv = GetNormalizedScreenSpaceUV(IN.positionCS);
-                return float4(SHADERGRAPH_SAMPLE_SCENE_DEPTH(uv) + 0.5, SHADERGRAPH_SAMPLE_SCENE_COLOR(uv).rg + 0.5, 1.0);"""
+                return float4(SHADERGRAPH_SAMPLE_SCENE_DEPTH(uv) + 0.5,
+                              SHADERGRAPH_SAMPLE_SCENE_COLOR(uv).rg + 0.5, 1.0);"""
     pixels, _ = render_constant(tmp_path, urp_pass("graph nodes off", body, GRAPH_FUNCTIONS), language,
                                 environment=False)
     assert (pixels[:, :3] == 0.5).all()

@@ -258,7 +258,8 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
         target = resolve_included(m.group(1), folder)
         if target is None and m.group(1).startswith("Assets/"):
             line = first_line - 1 + line_of(program, m.start())
-            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {missing_project_file(m.group(1), folder)}')
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": '
+                                      + missing_project_file(m.group(1), folder))
         if target is None or target.resolve() in seen:
             continue
         seen.add(target.resolve())
