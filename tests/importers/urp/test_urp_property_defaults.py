@@ -49,3 +49,19 @@ def test_range_default_outside_its_range_is_used_as_written(tmp_path, language):
         pixels, _ = render_constant(tmp_path, _with_property("0.5"), language, environment=False)
     assert not any("outside its Range" in str(w.message) for w in inside)
     assert (np.abs(pixels[:, 0] - 0.75) > BOUND).mean() == 0.0
+
+
+# A global with an initialiser and no property (WoBok's Color.shader: `float c_r=1;` in its
+# UnityPerMaterial): a uniform in Unity, whose initialiser Unity ignores (a value no property
+# or global sets is 0), as glslang's HLSL reads it; the GLSL port declares the uniform alone.
+INITIALISED = "float _Gain = 2.0;\n            static float _Kept = 0.5;"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_uniform_initialiser_is_not_its_value(tmp_path, language):
+    """The pixel's red is _Gain + 0.25 = 0.25 (the uniform's 0, not its initialiser 2), green
+    the static's 0.5 (a static's initialiser is its value). Control: the initialiser as the value
+    would give 2.25, far outside the exact bound."""
+    text = urp_pass("initialised global", "return float4(_Gain + 0.25, _Kept, 0.0, 1.0);", INITIALISED)
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
+    assert (np.abs(pixels[:, :2] - [0.25, 0.5]).max(axis=1) > BOUND).mean() == 0.0
