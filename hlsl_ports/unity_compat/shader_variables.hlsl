@@ -24,6 +24,8 @@
 //           float4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
 //           unity_AmbientSky, unity_AmbientEquator, unity_AmbientGround (its irradiance from above,
 //           the sides, below);
+//           unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC (its SH
+//           polynomial's coefficients as Unity packs them);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
@@ -75,7 +77,9 @@
 //           generates pbr/ only); the per-light globals are `static` (mutable) here, and
 //           UNITY_INITIALIZE_OUTPUT zero-fills, as Unity's Direct3D 11 definition does.
 // Config macros read: PBR_UNITY_SH_IRRADIANCE(n) (UNITY_LIGHTMODEL_AMBIENT: the caller's ambient
-//           lookup, as pbr/unity/global_illumination reads it; default black).
+//           lookup, as pbr/unity/global_illumination reads it; default black);
+//           PBR_UNITY_SH9 (the caller's nine SH9 radiance coefficients, as pbr_sh9_irradiance
+//           reads them, with pbr/lighting/sh9.glsl's constants: unity_SHAr..unity_SHC; default zero).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
@@ -301,6 +305,49 @@ float4 Unity_AmbientGroundColor() {
 #define unity_AmbientSky Unity_AmbientSkyColor()
 #define unity_AmbientEquator Unity_AmbientEquatorColor()
 #define unity_AmbientGround Unity_AmbientGroundColor()
+#ifdef PBR_UNITY_SH9
+#include "pbr/lighting/sh9.hlsl"
+#endif
+// unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC
+// (UnityShaderVariables.cginc's and URP UnityInput.hlsl's UnityPerDraw globals; Unity's manual,
+// "Built-in shader variables": the ambient probe's spherical-harmonics coefficients): the
+// order-2 polynomial Unity's ShadeSH9 / URP's SampleSH9 evaluates per colour channel from them,
+// SHA.w + dot(SHA.xyz, n) + dot(SHB, n.xyzz * n.yzzx) + SHC * (n.x^2 - n.y^2), here the
+// caller's PBR_UNITY_SH9 irradiance / pi (pbr_sh9_irradiance's five Ramamoorthi-Hanrahan terms
+// per monomial, its constant -C5 L20 part in SHA.w as Unity packs it), so a shader evaluating
+// them by hand gets what PBR_UNITY_SH_IRRADIANCE returns (before its clamp at 0). Zero where
+// the caller defines no PBR_UNITY_SH9. channel: 0 red, 1 green, 2 blue.
+float4 Unity_SHA(int channel) {
+#ifdef PBR_UNITY_SH9
+    return float4(2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[3][channel], 2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[1][channel],
+                2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[2][channel],
+                PBR_SH9_C4 * PBR_UNITY_SH9[0][channel] - PBR_SH9_C5 * PBR_UNITY_SH9[6][channel]) * PBR_INV_PI;
+#else
+    return float4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+float4 Unity_SHB(int channel) {
+#ifdef PBR_UNITY_SH9
+    return float4(2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[4][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[5][channel],
+                PBR_SH9_C3 * PBR_UNITY_SH9[6][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[7][channel]) * PBR_INV_PI;
+#else
+    return float4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+float4 Unity_SHC() {
+#ifdef PBR_UNITY_SH9
+    return float4(PBR_SH9_C1 * PBR_UNITY_SH9[8] * PBR_INV_PI, 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define unity_SHAr Unity_SHA(0)
+#define unity_SHAg Unity_SHA(1)
+#define unity_SHAb Unity_SHA(2)
+#define unity_SHBr Unity_SHB(0)
+#define unity_SHBg Unity_SHB(1)
+#define unity_SHBb Unity_SHB(2)
+#define unity_SHC Unity_SHC()
 
 float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight) {
     float3 viewpos = UnityObjectToViewPos(vertex.xyz);

@@ -107,8 +107,14 @@ def _property(m: re.Match, where: str, warnings: list) -> M.Property:
     if kind in ("Float", "Range", "Int"):
         default = _number(default_text, where)
         if rng is not None and not rng[0] <= default <= rng[1]:
-            raise UnityShaderError(f"{where}: {name}: default {default_text} lies outside its "
-                                   f"Range({rng[0]:g}, {rng[1]:g})")
+            # Unity keeps it: a new material takes the default as written (ScriptReference,
+            # Shader.GetPropertyDefaultFloatValue and GetPropertyRangeLimits give the two
+            # apart), and the Range only bounds the Inspector's slider (MaterialEditor.
+            # RangeProperty "draws a range slider"); nothing in Unity clamps it until a user
+            # drags that slider.
+            warnings.append(f"{where}: {name}: default {default_text} lies outside its Range({rng[0]:g}, "
+                            f"{rng[1]:g}); used as written, as Unity does (its Range bounds the Inspector's "
+                            "slider only)")
     elif kind in ("Color", "Vector"):
         v = re.fullmatch(r"\(\s*([^)]*)\)", default_text)
         parts = [p for p in v.group(1).split(",")] if v else []

@@ -170,6 +170,20 @@ def project_root(name: str, folder: Path) -> Path | None:
     return None
 
 
+def missing_project_file(name: str, folder: Path) -> str:
+    """Why ``#include "Assets/..."`` (``name``) found nothing from ``folder``: Unity reads such a
+    path from the project's root, the folder that holds ``Assets/`` (Unity's ScriptReference,
+    ShaderIncludePathAttribute: shader libraries must lie under the Assets folder or in a
+    package, included by their project paths), which project_root looks for at and above the
+    including file's folder."""
+    root = next((a for a in [folder, *folder.parents] if (a / "Assets").is_dir()), None)
+    if root is None:
+        return (f"Unity reads an Assets/ path from the Unity project's root (the folder that holds Assets/), "
+                f"and no folder at or above {folder} holds an Assets/ folder: the shader lies outside its "
+                "project, whose file this is")
+    return f"Unity reads an Assets/ path from the Unity project's root, here {root}, which has no {name}"
+
+
 def own_package_root(name: str, folder: Path):
     """For ``Packages/<package>/<rest>`` written in a file of that package itself (Unity maps
     ``Packages/<package>/`` to the package's folder, wherever the package lies), (package, the
@@ -244,6 +258,10 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
     seen = set() if seen is None else seen
     for m in INCLUDE.finditer(blank_comments(program)):
         target = resolve_included(m.group(1), folder)
+        if target is None and m.group(1).startswith("Assets/"):
+            line = first_line - 1 + line_of(program, m.start())
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": '
+                                      + missing_project_file(m.group(1), folder))
         if target is None or target.resolve() in seen:
             continue
         seen.add(target.resolve())
