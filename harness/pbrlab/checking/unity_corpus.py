@@ -8,7 +8,10 @@ written) and GLSL (its port), and report what happened to each.
 An outcome is ``rendered`` (every pixel finite), ``non-finite`` (rendered, but a pixel is NaN
 or Inf: a defect), ``refused`` (a ``PbrlabError`` naming what is missing: the documented
 answer to a Unity feature the harness cannot run) or ``traceback`` (any other exception: a
-defect). The report adds GLSL/HLSL agreement for shaders rendered in both.
+defect). The report adds GLSL/HLSL agreement for shaders rendered in both, and counts apart
+those rendered in both that draw black (``draws_black``): each must be black by its own
+defaults, as Unity would draw it, and listed with the reason (corpus/urp/black_by_defaults.md,
+the pinned corpora's BLANK_BY_DEFAULT), or it is a defect.
 """
 
 from __future__ import annotations
@@ -30,6 +33,10 @@ from ..foundation.locations import locate
 
 LANGUAGES = ("glsl", "hlsl")
 SIZE = (64, 64)
+# A render no display tells from black: every RGB value rounds to sRGB code 0, i.e. lies below
+# half of code 1 in linear (1/255 / 12.92 = 3.04e-4 on the sRGB curve's linear segment, IEC
+# 61966-2-1; the corpus scene's tone map is the identity that low).
+BLACK_LEVEL = 0.5 / 255 / 12.92
 
 
 @dataclass
@@ -179,6 +186,12 @@ def agreement(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
 
 
+def draws_black(image) -> bool:
+    """Whether a rendered image shows no colour: every RGB value within BLACK_LEVEL of 0 (alpha
+    alone is no picture; a NaN is not black: the non-finite outcome reports it)."""
+    return bool(np.all(np.abs(np.asarray(image, np.float64)[..., :3]) <= BLACK_LEVEL))
+
+
 def run_corpus(root: Path, progress=None) -> dict:
     rows = []
     for shader in corpus_shaders(root):
@@ -190,6 +203,7 @@ def run_corpus(root: Path, progress=None) -> dict:
             o.pop("language")
         if all(o.status == "rendered" for o in outcomes.values()):
             row["glsl_hlsl_max_rel"] = agreement(outcomes["glsl"].image, outcomes["hlsl"].image)
+            row["black"] = all(draws_black(o.image) for o in outcomes.values())
         rows.append(row)
         if progress:
             progress(row)
@@ -199,7 +213,9 @@ def run_corpus(root: Path, progress=None) -> dict:
             s = row[lang]["status"]
             counts[lang][s] = counts[lang].get(s, 0) + 1
     both = sum(all(row[lang]["status"] == "rendered" for lang in LANGUAGES) for row in rows)
-    return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
+    black = [row["path"] for row in rows if row.get("black")]
+    return {"shaders": len(rows), "rendered_in_both": both, "black_in_both": len(black), "black": black,
+            "counts": counts, "rows": rows}
 
 
 def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = None,
@@ -271,13 +287,16 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
 
     def progress(row):
-        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES)
+        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES) + (" BLACK" if row.get("black") else "")
         first = next((row[lang]["message"] for lang in LANGUAGES if row[lang]["message"]), "")
         print(f"{row['path']}: {marks} {first[:160]}", flush=True)
 
     report = run_corpus(args.root, progress)
-    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']}; "
-          f"{json.dumps(report['counts'])}")
+    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']} "
+          f"({report['black_in_both']} of them black: each black by its own defaults, listed with the reason, "
+          f"or a defect); {json.dumps(report['counts'])}")
+    for path in report["black"]:
+        print(f"  black: {path}")
     from ..foundation import outputs
     if args.out:
         with outputs.transaction([args.out]) as tx:

@@ -31,13 +31,16 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, user_definitions
+from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
 # planes, and one that fades what lies near the near plane faded a whole sphere away).
 UNITY_CAMERA_NEAR = 0.3
+# Unity's default camera far plane (Camera.farClipPlane, 1000): where a program of its own places
+# the vertices, they are drawn up to it, not clipped at the far side of the mesh's own bounds.
+UNITY_CAMERA_FAR = 1000.0
 
 # ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
 _UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
@@ -185,7 +188,8 @@ class ProgramPass:
         unit += len(grabbed)
         unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
         used = lightmaps.bind(program, self.lightmap, cache, unit)
-        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
+        used += dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
+        unset_samplers.bind_unset(program, cache, environment_cube, unit + used)  # last: what no binder set
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate
@@ -199,6 +203,7 @@ class ProgramPass:
 class UnitySource:
     """``MaterialSource`` of a material whose surface is a Unity shader (module doc)."""
     camera_near = UNITY_CAMERA_NEAR
+    camera_far = UNITY_CAMERA_FAR
 
     def __init__(self, shader, lightmap=None):
         self.shader = shader  # model.UnityShader: every pass that runs
