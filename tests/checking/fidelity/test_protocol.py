@@ -128,13 +128,6 @@ def test_the_committed_scenarios_read(tmp_path):
     assert all(r.model.is_file() for r in rows)
 
 
-def test_a_rows_own_samples_apply_to_that_lighting_only(tmp_path):
-    (tmp_path / "m.glb").write_bytes(b"glTF")
-    path = tmp_path / "s.json"
-    path.write_text('{"scenarios": [{"name": "x", "model": "m.glb", "samples": {"a": 1024}}], "lightings": ["a", "b"]}')
-    assert {r.key: r.samples for r in staging.read_scenarios(path)} == {"x@a": 1024, "x@b": None}
-
-
 @pytest.mark.parametrize("text,message", [
     ("{", "invalid JSON"),
     ('{"scenarios": [{"name": "x"}]}', "\"model\""),
@@ -142,8 +135,6 @@ def test_a_rows_own_samples_apply_to_that_lighting_only(tmp_path):
     ('{"scenarios": [{"name": "x", "model": "m.glb", "orbit": {"radius": -1}}], "lightings": ["a"]}', "radius"),
     ('{"scenarios": [{"name": "x", "model": "m.glb"}]}', "no lighting"),
     ('{"scenarios": [{"name": "x", "model": "m.glb", "zoom": 2}], "lightings": ["a"]}', "unknown keys"),
-    ('{"scenarios": [{"name": "x", "model": "m.glb", "samples": {"b": 512}}], "lightings": ["a"]}', "samples"),
-    ('{"scenarios": [{"name": "x", "model": "m.glb", "samples": {"a": 0}}], "lightings": ["a"]}', "samples"),
 ])
 def test_a_bad_scenarios_file_is_named_with_the_fault(tmp_path, text, message):
     (tmp_path / "m.glb").write_bytes(b"glTF")

@@ -140,7 +140,7 @@ def run(scenarios=None, *, keys=None, scale: float = COMMITTED_SCALE, render=("p
         shown, facts = {}, {}
         for name in render:
             seed = 1 if name == NOISE else 0
-            view = staging.view_spec(scenario, scale, environment, bounds, samples=scenario.samples or samples, seed=seed,
+            view = staging.view_spec(scenario, scale, environment, bounds, samples=samples, seed=seed,
                                      denoise=DENOISE)
             renderer = "cycles" if name == NOISE else name
             image, fact, seconds = _render_display(name, renderer, view, render_block,

@@ -56,7 +56,6 @@ class Scenario:
     phi: float
     radius: float
     fov_deg: float
-    samples: int | None = None  # Cycles samples for this row where the run's default is too few (its noise)
 
     @property
     def key(self) -> str:
@@ -99,9 +98,7 @@ def read_scenarios(path: Path = SCENARIOS_FILE) -> list[Scenario]:
     """Every (scenario, lighting) of a scenarios file.
 
     The file: {"lightings": [names], "scenarios": [protocol entries]}; an entry's "lighting"
-    (a name or a list of names) replaces the file's list; "model" is relative to the file; an
-    entry's "samples" ({lighting: n}, pbrlab's own key) renders that row's Cycles references with
-    n samples instead of the run's (a reference whose noise is too close to the scores)."""
+    (a name or a list of names) replaces the file's list; "model" is relative to the file."""
     path = Path(path)
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
@@ -119,7 +116,7 @@ def read_scenarios(path: Path = SCENARIOS_FILE) -> list[Scenario]:
             raise PbrlabError(f"{where}: expected an object with a \"name\"")
         where = f"{path}: scenario {entry['name']!r}"
         unknown = set(entry) - {"name", "model", "lighting", "dimensions", "target", "orbit", "verticalFoV",
-                                "renderSkybox", "exclude", "note", "samples"}
+                                "renderSkybox", "exclude", "note"}
         if unknown:
             raise PbrlabError(f"{where}: unknown keys {sorted(unknown)}")
         if not isinstance(entry.get("model"), str):
@@ -140,18 +137,12 @@ def read_scenarios(path: Path = SCENARIOS_FILE) -> list[Scenario]:
         names = [names] if isinstance(names, str) else names
         if not names or not all(isinstance(n, str) for n in names):
             raise PbrlabError(f"{where}: no lighting (give \"lighting\" or the file's \"lightings\")")
-        samples = entry.get("samples", {})
-        if not isinstance(samples, dict) or not all(
-                isinstance(n, int) and not isinstance(n, bool) and n >= 1 and k in names for k, n in samples.items()):
-            raise PbrlabError(f"{where}: \"samples\" must map some of its lightings to Cycles samples (integers >= 1), "
-                              f"got {samples!r}")
         for lighting in names:
             scenario = Scenario(
                 name=entry["name"], model=model, lighting=lighting, dimensions=(width, height),
                 target=tuple(_number(target, k, None, where) for k in "xyz"),
                 theta=_number(orbit, "theta", None, where), phi=_number(orbit, "phi", None, where),
-                radius=radius, fov_deg=_number(entry, "verticalFoV", DEFAULT_FOV_DEG, where),
-                samples=samples.get(lighting))
+                radius=radius, fov_deg=_number(entry, "verticalFoV", DEFAULT_FOV_DEG, where))
             if scenario.key in seen:
                 raise PbrlabError(f"{where}: {scenario.key} appears twice")
             seen.add(scenario.key)
