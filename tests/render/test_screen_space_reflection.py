@@ -75,14 +75,19 @@ EDGE_PX = 2
 RELATIVE = 2 * 2.0 ** -11 + 1e-5
 
 
+def _checked_pixels(scene):
+    """(the plane's pixels that reflect the box, those that reflect the sky), both EDGE_PX away from
+    the box's reflected outline and from the plane's own outline."""
+    on_plane, reflects, hits_box = _expected(scene)
+    near_edge = ndimage.binary_dilation(hits_box, iterations=EDGE_PX) & ~ndimage.binary_erosion(hits_box, iterations=EDGE_PX)
+    plane_pixels = ndimage.binary_erosion(on_plane, iterations=EDGE_PX)
+    return reflects & plane_pixels & ~near_edge, plane_pixels & ~hits_box & ~near_edge
+
+
 @pytest.mark.parametrize("on", [True, False], ids=["screen_space_reflections", "control: the sky"])
 def test_a_mirror_plane_reflects_the_emissive_box_where_float64_geometry_puts_it(on, gl_context):
     scene = _scene(on)
-    on_plane, reflects, hits_box = _expected(scene)
-    near_edge = ndimage.binary_dilation(hits_box, iterations=EDGE_PX) & ~ndimage.binary_erosion(hits_box, iterations=EDGE_PX)
-    plane_pixels = ndimage.binary_erosion(on_plane, iterations=EDGE_PX)  # the plane's own outline too
-    inside = reflects & plane_pixels & ~near_edge
-    outside = plane_pixels & ~hits_box & ~near_edge
+    inside, outside = _checked_pixels(scene)
     assert inside.sum() > 100 and outside.sum() > 1000
     got = render_scene(scene, gl_context).linear[..., :3].astype(np.float64)
     box = np.asarray(BOX_COLOUR)
@@ -108,3 +113,14 @@ def test_the_search_reach_and_step_are_the_documented_ones(gl_context):
 def test_off_by_default():
     from pbrlab.scene.model import RenderSettings
     assert RenderSettings().screen_space_reflections is False
+
+
+def test_the_hlsl_harness_reflects_as_the_glsl_one(gl_context):
+    """The search and the hit in the HLSL programs (templates shared by both languages): the same
+    image within float32 rounding of the shading (1e-6 relative), the box's reflection in it."""
+    scene = _scene(True)
+    glsl = render_scene(scene, gl_context).linear[..., :3].astype(np.float64)
+    hlsl = render_scene(scene, gl_context, language="hlsl").linear[..., :3].astype(np.float64)
+    assert np.allclose(hlsl, glsl, rtol=1e-6, atol=1e-7)
+    inside, _ = _checked_pixels(scene)
+    assert np.allclose(hlsl[inside], BOX_COLOUR, rtol=RELATIVE)
