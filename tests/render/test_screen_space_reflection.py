@@ -1,6 +1,10 @@
 """render.screen_space_reflections (harness/pbrlab/render/screen_space_reflection.py,
 templates/screen_space_reflection.inc) against a float64 scene: a white mirror-like metal plane
-(y = 0) reflecting an emissive box that floats above it, under a uniform sky E, no lights.
+(y = 0) reflecting an emissive box that stands on it, under a uniform sky E, no lights. Standing,
+the box's faces that the plane reflects towards the camera are faces the camera sees: what a
+screen-space search can find (a floating box's underside, seen only in the mirror, is not in the
+frame: with the box floating 0.65 above the plane, seen from higher up, a quarter of its
+reflection's pixels kept the sky).
 
 In a uniform sky a white metal (F0 = F90 = 1) with the multiple-scattering compensation reflects
 exactly what reaches it (the split sum's E times 1 / E: tests/render/test_white_furnace.py), so

@@ -8,7 +8,7 @@ harness/pbrlab/render/screen_space_reflection.py, templates/screen_space_reflect
   default r.SSR.MaxRoughness 0.6, and ComputeHitVignetteFromScreenPos), written here from its
   formulas.
 * ``mirror_plane_reflection``: the geometry of the tests' scene, a mirror plane y = height
-  (normal +y) reflecting an axis-aligned or rotated box: per camera ray, where it meets the plane,
+  (normal +y) reflecting a box (any affine image of the unit cube): per camera ray, where it meets the plane,
   the direction the environment read takes there (the mirror direction leant towards the normal
   by alpha: dominant_direction.specular_dominant_direction) and where that ray meets the box
   (volume_chord.ray_box_interval, the slab method).
