@@ -31,7 +31,7 @@ from ..scene import meshes, surface_layers
 from ..gpu import targets
 from ..gpu.cancellation import dies_on_signal
 from ..gpu.driver_time_limit import within_time_limit
-from . import transmission_copy, volume_exit
+from . import screen_space_reflection, transmission_copy, volume_exit
 from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from ..foundation.errors import PbrlabError, SceneError
@@ -74,7 +74,8 @@ class _SceneResources:
     SUN_SHADOW_UNIT = 5  # the environment's sun's shadow map (shadow_map.py), when render.environment_sun finds one
     SKY_SHADOW_UNIT = 6  # the environment's visibility maps (environment_visibility.py), render.environment_visibility
     VOLUME_EXIT_UNIT = 7  # the volumes' exit points (volume_exit.py), render.volume_chord
-    FIRST_MATERIAL_UNIT = 8
+    SSR_COLOUR_UNIT, SSR_SURFACE_UNIT = 8, 9  # render.screen_space_reflections (screen_space_reflection.py)
+    FIRST_MATERIAL_UNIT = 10
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -87,6 +88,7 @@ class _SceneResources:
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
         self.volume_exit = None  # set by render_scene once the volumes' back faces are drawn
+        self.reflection = None  # set by render_scene with render.screen_space_reflections
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         # in the tier's layout (PBR_DFG_LUT_LAYOUT, pbr/shading/dispatch.glsl: LOW reads its own)
         layout = ref_shading.QUALITY_DFG_LUT_LAYOUT[scene.render.quality.upper()]
@@ -122,6 +124,8 @@ class _SceneResources:
             self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
         if self.volume_exit is not None:
             self.volume_exit.bind(program, self.VOLUME_EXIT_UNIT, material.name)
+        if self.reflection is not None:
+            self.reflection.bind(program, self.SSR_COLOUR_UNIT, self.SSR_SURFACE_UNIT)
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
@@ -392,6 +396,18 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.target.fbo.depth_mask = True
             copy.finish()
             resources.transmission_copy = copy
+        if scene.render.screen_space_reflections and scene.environment is not None and scene.objects:
+            # the frame drawn once (its programs reading the environment alone), then read where a
+            # reflected ray meets its surfaces (screen_space_reflection.py)
+            resources.reflection = screen_space_reflection.ScreenSpaceReflection(ctx, scene, frame, hdr_format)
+            first = resources.reflection.colour_target
+            first.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+            _reset_draw_state(ctx)
+            draw_calls += _draw_objects(ctx, first, _draw_order(scene, frame), draw)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            first.fbo.depth_mask = True
+            resources.reflection.finish()
         with targets.Target(ctx, (w, h), hdr_format, samples=samples,
                             resolve_filter=scene.render.antialias_filter, downsample=supersample) as hdr:
             hdr.use()
@@ -419,6 +435,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             resources.camera_textures.release()
         if resources.volume_exit is not None:
             resources.volume_exit.release()
+        if resources.reflection is not None:
+            resources.reflection.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
