@@ -23,7 +23,7 @@ from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from .lightmaps import ENGINE_SET_TEXTURES
-from . import fixed_function, shaderlab, texture_objects
+from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
 from .written_globals import copied_written_globals
@@ -551,7 +551,11 @@ class Pipeline:
     keywords: tuple = ()    # keywords it enables where a program declares them (its renderer's)
 
 
-BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG",), ())
+# Its passes run CGPROGRAM and HLSLPROGRAM blocks alike (Unity's manual, "HLSL in Unity": an
+# HLSLPROGRAM only lacks CGPROGRAM's automatic HLSLSupport/UnityShaderVariables includes, which
+# a built-in HLSLPROGRAM brings itself by including UnityCG.cginc; the reader declares Unity's
+# built-in variables for either block).
+BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG", "HLSL"), ())
 # The Universal Render Pipeline (importers/urp/): forward passes drawn once with every light;
 # a pass without a LightMode is SRPDefaultUnlit.
 URP_SKIPPED_LIGHT_MODES = {
@@ -735,6 +739,12 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         elif kind == "grabpass":
             _, name, line = item
             passes.append(M.GrabPass(name, line))
+    if not any(p.kind != "grab" for p in passes) and render_objects.custom_tags(sub, pipeline):
+        # passes of a custom LightMode: drawn as a Render Objects renderer feature would (render_objects.py)
+        tags = render_objects.custom_tags(sub, pipeline)
+        del notes[first_note:]
+        warnings.append(render_objects.warning(path, sub, tags))
+        return _subshader_passes(layout, sub, props, warnings, notes, render_objects.drawing(pipeline, tags))
     if not any(p.kind != "grab" for p in passes):
         skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
@@ -752,7 +762,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {pipeline.skipped[mode.lower()]}")
         return None
     if mode.lower() not in pipeline.drawn:
-        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {render_objects.skip_reason(mode, pipeline)}")
         return None
     if p.fixed_function and p.program is not None:
         # a program draws the pass: Unity ignores its fixed-function commands (docs, "ShaderLab:
@@ -762,10 +772,13 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     if p.program is None:
         state = M.RenderState()
         apply_state(sub.state + p.state, state, props, path, [], surface=False)
-        if not p.fixed_function and state.color_mask == "0":
-            notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
-            return None
-        if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
+        # a depth/stencil mask (ColorMask 0, no fixed-function command): Unity draws it in every
+        # pipeline (an untagged pass is URP's SRPDefaultUnlit); its generated program's colour never
+        # reaches the target, so it draws as written: depth (where ZWrite is on) and no colour
+        writes_no_colour = not p.fixed_function and state.color_mask == "0"
+        if writes_no_colour:
+            notes.append(no_colour_note(path, p, label, state, sub.state + p.state))
+        elif pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
             raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
                                    "runs programmable passes only")
         # Unity generates a program for a fixed-function pass (a pass with no command at all
@@ -798,6 +811,21 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf
+
+
+# What a corpus summary lists a shader by when it renders but writes no colour by its own
+# ColorMask (checking/unity_corpus.no_colour_reason reads it from the note).
+NO_COLOUR_BY_COLOR_MASK = "draws no colour by its ColorMask"
+
+
+def no_colour_note(path: Path, p, label: str, state: M.RenderState, commands: list) -> str:
+    """The note of a program-less ``ColorMask 0`` pass drawn as written: what it writes instead."""
+    words = {c.word.lower(): c for c in commands}
+    writes = ["depth"] if state.zwrite is not False else []
+    stencil = (" (its Stencil block, line " + str(words["stencil"].line)
+               + ", is not applied here: the harness has no stencil buffer)") if "stencil" in words else ""
+    return (f"{path}:{p.line}: {label} {NO_COLOUR_BY_COLOR_MASK} (ColorMask 0): drawn as written, writing "
+            f"{' and '.join(writes) or 'nothing the image shows (ZWrite Off)'}{stencil}")
 
 
 def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list,
