@@ -652,7 +652,11 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
             "shader's folder (or below it) or its Unity project's Assets, or name its folder in "
             "$PBRLAB_UNITY_SHADERS")
-    shader = read_shader(found, pipeline)
+    try:
+        shader = read_shader(found, pipeline)
+    except UnityShaderError as exc:  # the Fallback cannot run either: both reasons, this shader's first
+        raise UnityShaderError(f'{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback '
+                               f'"{layout.fallback}" ({found.name}) cannot run either: {exc}') from None
     shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
                         f'"{layout.fallback}" ({found}) is drawn instead')
     return shader
@@ -675,8 +679,13 @@ def find_shader(name: str, near: Path):
     """The ``.shader`` file whose ``Shader "name"`` is ``name`` (or ``Legacy Shaders/name``,
     Unity's old built-in names), in the folder of ``near`` and below, then anywhere in its Unity
     project (``unity_project_folders``), then the folders of $PBRLAB_UNITY_SHADERS."""
-    import os
     wanted = {name, f"Legacy Shaders/{name}"}
+    return next((candidate for candidate, found in shader_names(near) if found in wanted), None)
+
+
+def shader_names(near: Path):
+    """(file, its Shader "name") of every other ``.shader`` file ``find_shader`` searches, in its order."""
+    import os
     roots = ([near.parent] + unity_project_folders(near)
              + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p])
     seen = set()
@@ -690,9 +699,18 @@ def find_shader(name: str, near: Path):
             except OSError:
                 continue
             m = re.search(r'\bShader\s*"([^"]*)"', blank_comments(head))
-            if m and m.group(1) in wanted and candidate.resolve() != near.resolve():
-                return candidate
-    return None
+            if m and candidate.resolve() != near.resolve():
+                yield candidate, m.group(1)
+
+
+def _named_alike(name: str, near: Path) -> str:
+    """A hint naming the shaders whose name ends as ``name``'s does (a UsePass or Fallback that
+    names a shader by another path: Unity finds a shader by its whole name only)."""
+    last = name.rpartition("/")[2].lower()
+    alike = [f'"{found}" ({candidate.name})' for candidate, found in shader_names(near)
+             if found.rpartition("/")[2].lower() == last]
+    return (f"; the project has {', '.join(alike[:3])}: Unity finds a shader by its whole name, so the "
+            "name written must be that one") if alike else ""
 
 
 def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN) -> list:
@@ -838,7 +856,7 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
     if found is None:
         raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
                                ".shader file in this shader's folder or its Unity project's Assets, or name "
-                               "its folder in $PBRLAB_UNITY_SHADERS)")
+                               f"its folder in $PBRLAB_UNITY_SHADERS){_named_alike(shader_name, path)}")
     try:
         layout = shaderlab.read_layout(read_source(found), found)
     except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:

@@ -72,7 +72,9 @@ def _function_signature(masked: str, name: str, where_of):
     while i < len(masked) and depth:
         depth += {"(": 1, ")": -1}.get(masked[i], 0)
         i += 1
-    params_text = masked[m.end():i - 1]
+    # the #if lines of a parameter list (`, out half4 c : SV_Target0 #ifdef _WRITE_RENDERING_LAYERS
+    # , out float4 layers : SV_Target1 #endif`): the text is the active branch's, the lines go
+    params_text = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():i - 1], flags=re.M)
     rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
     if rest is None:
         return None
