@@ -141,6 +141,22 @@ def _structs(masked: str) -> dict:
     return out
 
 
+# HLSL's and Cg's built-in scalar, vector and matrix types (float, half3, fixed4x4, uint2, ...).
+_BUILTIN_TYPE = re.compile(r"(?:void|bool|int|uint|dword|half|float|double|fixed|min16float|min10float|min16int|"
+                           r"min16uint)(?:[1-4](?:x[1-4])?)?")
+
+
+def _undefined_type(found: dict, structs: dict, functions: dict):
+    """(type, function) of the first type the vertex or fragment signature names that is neither
+    a built-in type nor a struct the program (with its includes) defines; None when all are."""
+    for role in ("vertex", "fragment"):
+        kind, params, _, _ = found[role]
+        for name in [kind] + [p[1] for p in params]:
+            if name not in structs and not _BUILTIN_TYPE.fullmatch(name):
+                return name, functions[role]
+    return None
+
+
 def _unresolved_include(program: str, folder: Path):
     """(name, offset) of the first ``#include`` of ``program`` that neither the shader's folder
     nor pbrlab's stand-ins hold (None when every one resolves)."""
@@ -210,6 +226,12 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
                                    "is defined")
         found[role] = sig
     structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
+    undefined = _undefined_type(found, structs, {"vertex": vertex, "fragment": fragment})
+    unresolved = _unresolved_include(program, path.parent) if undefined else None
+    if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
+        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include files pbrlab "
+                               f"has no stand-in for; pbrlab does not provide it ({undefined[1]}() takes or gives "
+                               f"{undefined[0]}, a type none of the rest defines)")
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
                 if "geometry" in pragmas else None)
     tessellation = (parse_tessellation(everything, pragmas["hull"][0][0], pragmas["domain"][0][0], structs, where,
