@@ -41,8 +41,11 @@ def custom_tags(sub, pipeline) -> tuple:
 
 def skip_reason(mode: str, pipeline) -> str:
     """Why a pass of LightMode ``mode`` that ``pipeline`` does not draw is skipped."""
-    if pipeline.srp or mode.lower() in BUILTIN_LIGHT_MODES:
+    if mode.lower() in BUILTIN_LIGHT_MODES:
         return "not a forward pass"
+    if pipeline.srp:
+        return ("not a forward pass (a custom LightMode: URP draws it only through a Render Objects renderer "
+                "feature, which the harness models where no other pass draws)")
     return ("not a LightMode the built-in pipeline draws (a Scriptable Render Pipeline's own tag: in URP, "
             "a Render Objects renderer feature draws it; tag the SubShader \"RenderPipeline\" = "
             "\"UniversalPipeline\" to have it read as URP)")
