@@ -110,3 +110,46 @@ def test_urp_own_tags_and_a_drawn_pass_keep_custom_passes_skipped(tmp_path):
     assert '"UniversalForward"' in forward
     image = _sphere(tmp_path, "glsl", forward)
     assert image[24, 24, :3].tolist() == [1.0, 0.0, 0.0]
+
+
+# A custom Scriptable Render Pipeline's shader, as Unity's manual's SRP example writes one: no
+# RenderPipeline tag, no URP include, HLSLPROGRAM declaring the matrices it reads, a custom tag.
+SRP_ONLY = """
+Shader "t/srp only" {
+    SubShader {
+        Pass {
+            Tags { "LightMode" = "PbrlabCustomPipeline" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            float4x4 unity_MatrixVP;
+            float4x4 unity_ObjectToWorld;
+            struct Attributes { float4 positionOS : POSITION; };
+            struct Varyings { float4 positionCS : SV_POSITION; };
+            Varyings vert(Attributes IN) {
+                Varyings OUT;
+                OUT.positionCS = mul(unity_MatrixVP, mul(unity_ObjectToWorld, IN.positionOS));
+                return OUT;
+            }
+            float4 frag(Varyings IN) : SV_Target { return float4(0.25, 0.5, 0.75, 1.0); }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_an_srp_shader_naming_no_pipeline_is_read_as_urp(tmp_path, language):
+    """HLSLPROGRAM only, no .cginc, no built-in LightMode: URP reads it, and its custom-tag pass
+    draws as the feature's (the centre pixel its colour). Controls: a CGPROGRAM, or a
+    ForwardBase tag, keeps it the built-in pipeline's."""
+    from pbrlab.importers.urp.material import reads
+    (tmp_path / "srp.shader").write_text(SRP_ONLY)
+    assert reads(tmp_path / "srp.shader")
+    image = _sphere(tmp_path, language, SRP_ONLY)
+    assert image[24, 24, :3].tolist() == list(COLOUR)
+    for builtin in (SRP_ONLY.replace("HLSLPROGRAM", "CGPROGRAM").replace("ENDHLSL", "ENDCG"),
+                    SRP_ONLY.replace("PbrlabCustomPipeline", "ForwardBase")):
+        (tmp_path / "builtin.shader").write_text(builtin)
+        assert not reads(tmp_path / "builtin.shader")

@@ -90,6 +90,8 @@ def _function_signature(masked: str, name: str, where_of):
     return kind, params, rest.group(1) or "", m.start()
 
 
+# HLSLSupport.cginc's clip-space position member, UNITY_POSITION(pos): float4 pos : SV_POSITION.
+_UNITY_POSITION = re.compile(r"\bUNITY_POSITION\s*\(\s*(" + IDENT + r")\s*\)")
 # Upper-case macro words (with their arguments) at the start of a struct member's text.
 _LEADING_MACROS = re.compile(r"^(?:[A-Z][A-Z0-9_]*(?:\s*\([^()]*\))?\s+)+(?=[A-Za-z_])")
 
@@ -110,6 +112,7 @@ def _structs(masked: str) -> dict:
         end = matching_brace(masked, m.end() - 1)
         members, flat = [], set()
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        body = _UNITY_POSITION.sub(r"float4 \1 : SV_POSITION", body)
         for decl in body.split(";"):
             # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
             # lead the member written after them: cut them off so that member is read
