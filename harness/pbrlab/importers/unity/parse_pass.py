@@ -230,7 +230,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         found[role] = sig
     structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
     undefined = _undefined_type(found, structs, {"vertex": vertex, "fragment": fragment})
-    unresolved = _unresolved_include(program, path.parent) if undefined else None
+    # (an include of the drawn variant: one under a branch not taken is not read)
+    unresolved = _unresolved_include(everything[:len(masked)], path.parent) if undefined else None
     if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
         raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include files pbrlab "
                                f"has no stand-in for; pbrlab does not provide it ({undefined[1]}() takes or gives "
