@@ -107,6 +107,17 @@ def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
         return False
 
 
+def _messages(caught) -> list:
+    """The warnings' texts, each cut to 300 characters after its place (``path:line: ``, whose
+    length varies with the folders), so that what it says survives (no_colour_reason reads it)."""
+    out = []
+    for w in caught:
+        text = str(w.message)
+        place = re.match(r"^.*?\.\w+(?::\d+)*: ", text)
+        out.append(text[:(place.end() if place else 0) + 300])
+    return out
+
+
 def run_shader(shader: Path, language: str) -> Outcome:
     from ..render.renderer import render_scene
     from ..importers.loader import parse_scene
@@ -119,13 +130,13 @@ def run_shader(shader: Path, language: str) -> Outcome:
             image = render_scene(scene, language=language).linear
         except PbrlabError as exc:
             return Outcome(str(shader), language, "refused", str(exc)[:3000],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
         except Exception as exc:  # a defect: the report names it
             tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
             return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
     status = "rendered" if np.isfinite(image).all() else "non-finite"
-    return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
+    return Outcome(str(shader), language, status, "", _messages(caught), image)
 
 
 # What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and

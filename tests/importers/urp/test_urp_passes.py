@@ -153,3 +153,16 @@ def test_an_srp_shader_naming_no_pipeline_is_read_as_urp(tmp_path, language):
                     SRP_ONLY.replace("PbrlabCustomPipeline", "ForwardBase")):
         (tmp_path / "builtin.shader").write_text(builtin)
         assert not reads(tmp_path / "builtin.shader")
+
+
+def test_a_long_folder_keeps_the_no_colour_note_readable():
+    """The corpus cuts each warning to 300 characters after its place (path:line:), so a mask
+    deep in a project is still listed by its reason. Control: cut from the start, as before, the
+    note is lost behind a 400-character path."""
+    from types import SimpleNamespace
+    note = "/" + "deep/" * 80 + "MASK_1.shader:5: Pass draws no colour by its ColorMask (ColorMask 0): drawn as written"
+    kept = corpus._messages([SimpleNamespace(message=note)])
+    outcomes = {k: corpus.Outcome("s", k, "rendered", warnings=kept) for k in LANGUAGES}
+    assert corpus.no_colour_reason(outcomes).startswith("Pass draws no colour by its ColorMask")
+    cut = {k: corpus.Outcome("s", k, "rendered", warnings=[note[:300]]) for k in LANGUAGES}
+    assert corpus.no_colour_reason(cut) is None
