@@ -59,7 +59,9 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           Unity defines it for its GLSL targets); UNITY_POSITION(pos) (a struct's clip-space
+//           position member, HLSLSupport.cginc's float4 pos : SV_POSITION; the reader gives it
+//           that semantic, parse_pass._structs); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
 //           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
@@ -153,6 +155,7 @@ vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
 #define UnityStereoTransformScreenSpaceTex(uv) (uv)
 #endif
 #define UNITY_INITIALIZE_OUTPUT(type, name)
+#define UNITY_POSITION(pos) vec4 pos
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes on Direct3D, nothing on Unity's GLSL
 // targets (GLSL has no attributes); a hint, never a change of what is computed.

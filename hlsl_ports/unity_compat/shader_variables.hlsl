@@ -59,7 +59,8 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           Unity defines it for its GLSL targets); UNITY_POSITION(pos) (a struct's clip-space
+//           position member, HLSLSupport.cginc's float4 pos : SV_POSITION); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
 //           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
@@ -155,6 +156,7 @@ float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return
 #define UnityStereoTransformScreenSpaceTex(uv) (uv)
 #endif
 #define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
+#define UNITY_POSITION(pos) float4 pos : SV_POSITION
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes, as Unity defines them for Direct3D
 // (glslang's HLSL front end reads [branch], [flatten], [unroll], [unroll(n)], [loop], [fastopt]).

@@ -136,6 +136,17 @@ def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
         return False
 
 
+def _messages(caught) -> list:
+    """The warnings' texts, each cut to 300 characters after its place (``path:line: ``, whose
+    length varies with the folders), so that what it says survives (no_colour_reason reads it)."""
+    out = []
+    for w in caught:
+        text = str(w.message)
+        place = re.match(r"^.*?\.\w+(?::\d+)*: ", text)
+        out.append(text[:(place.end() if place else 0) + 300])
+    return out
+
+
 def run_shader(shader: Path, language: str) -> Outcome:
     from ..render.renderer import render_scene
     from ..importers.loader import parse_scene
@@ -148,13 +159,13 @@ def run_shader(shader: Path, language: str) -> Outcome:
             image = render_scene(scene, language=language).linear
         except PbrlabError as exc:
             return Outcome(str(shader), language, "refused", str(exc)[:3000],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
         except Exception as exc:  # a defect: the report names it
             tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
             return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
     status = "rendered" if np.isfinite(image).all() else "non-finite"
-    return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
+    return Outcome(str(shader), language, status, "", _messages(caught), image)
 
 
 # What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and
@@ -181,6 +192,17 @@ def refusal_key(message: str) -> str:
     return without_folders(first)[:90]
 
 
+def no_colour_reason(outcomes: dict) -> str | None:
+    """Why a shader rendered in every language draws no colour by its own ColorMask (a
+    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written), read from its
+    note; None for any other shader. The report lists these, not as silently empty images."""
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK
+    notes = [next((w for w in o.warnings if NO_COLOUR_BY_COLOR_MASK in w), None) for o in outcomes.values()]
+    if not outcomes or any(o.status != "rendered" for o in outcomes.values()) or None in notes:
+        return None
+    return without_folders(notes[0]).split(": ", 1)[-1]   # the note, which says it, without its place
+
+
 def agreement(a: np.ndarray, b: np.ndarray) -> float:
     """Largest relative difference of the GLSL and HLSL renders (1e-3 floor)."""
     return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
@@ -204,6 +226,8 @@ def run_corpus(root: Path, progress=None) -> dict:
         if all(o.status == "rendered" for o in outcomes.values()):
             row["glsl_hlsl_max_rel"] = agreement(outcomes["glsl"].image, outcomes["hlsl"].image)
             row["black"] = all(draws_black(o.image) for o in outcomes.values())
+        if no_colour_reason(outcomes):
+            row["no_colour"] = no_colour_reason(outcomes)
         rows.append(row)
         if progress:
             progress(row)
@@ -213,9 +237,10 @@ def run_corpus(root: Path, progress=None) -> dict:
             s = row[lang]["status"]
             counts[lang][s] = counts[lang].get(s, 0) + 1
     both = sum(all(row[lang]["status"] == "rendered" for lang in LANGUAGES) for row in rows)
-    black = [row["path"] for row in rows if row.get("black")]
+    black = [row["path"] for row in rows if row.get("black") and "no_colour" not in row]
+    no_colour = [row["path"] for row in rows if "no_colour" in row]
     return {"shaders": len(rows), "rendered_in_both": both, "black_in_both": len(black), "black": black,
-            "counts": counts, "rows": rows}
+            "draws_no_colour_by_its_color_mask": no_colour, "counts": counts, "rows": rows}
 
 
 def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = None,
@@ -224,9 +249,11 @@ def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = N
     ``expected`` outcome (expected_outcomes' vocabulary); empty when they match. A rendered
     pair must agree to ``agreement_bound`` (the GLSL port against the HLSL as written) and
     draw colour (an RGB value other than 0: alpha alone is no picture), unless ``blank_reason``
-    says why its defaults draw none (then it must be black). A refusal must name what is missing, not be a compiler's error, unless pinned as
-    a defect; a traceback is always wrong."""
+    says why its defaults draw none, or the shader writes no colour by its ColorMask
+    (no_colour_reason): then it must be black. A refusal must name what is missing, not be a
+    compiler's error, unless pinned as a defect; a traceback is always wrong."""
     problems = []
+    blank_reason = blank_reason or no_colour_reason(outcomes)  # a mask: black, listed by its reason
     for lang, o in outcomes.items():
         if o.status not in ("rendered", "refused"):
             problems.append(f"{lang}: {o.status}: {o.message[:300]}")
@@ -292,11 +319,14 @@ def main(argv=None) -> int:
         print(f"{row['path']}: {marks} {first[:160]}", flush=True)
 
     report = run_corpus(args.root, progress)
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK as NO_COLOUR
     print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']} "
-          f"({report['black_in_both']} of them black: each black by its own defaults, listed with the reason, "
-          f"or a defect); {json.dumps(report['counts'])}")
+          f"({report['black_in_both']} of them black besides the ColorMask 0 masks: each black by its own "
+          f"defaults, listed with the reason, or a defect); {json.dumps(report['counts'])}")
     for path in report["black"]:
         print(f"  black: {path}")
+    for path in report["draws_no_colour_by_its_color_mask"]:
+        print(f"rendered, {NO_COLOUR}: {path}")
     from ..foundation import outputs
     if args.out:
         with outputs.transaction([args.out]) as tx:
