@@ -15,12 +15,17 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
-//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
+//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_FogColor
+//           (RenderSettings.fogColor: its default, (0.5, 0.5, 0.5, 1); pbrlab draws no fog);
+//           vec2 UnityStereoScreenSpaceUVAdjust(uv, scaleAndOffset), UnityStereoTransformScreenSpaceTex(uv)
+//           (the identity: one eye);
 //           vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight),
 //           vec3 ShadeVertexLights(vec4 vertex, vec3 normal) (UnityCG.cginc's vertex lighting);
 //           vec4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
 //           unity_AmbientSky, unity_AmbientEquator, unity_AmbientGround (its irradiance from above,
 //           the sides, below);
+//           unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC (its SH
+//           polynomial's coefficients as Unity packs them);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
@@ -36,6 +41,7 @@
 //           vec3 UnityWorldSpaceViewDir(vec3 worldPos), vec3 UnityWorldSpaceLightDir(vec3 worldPos),
 //           vec3 WorldSpaceViewDir(vec4 localPos), vec3 WorldSpaceLightDir(vec4 localPos),
 //           vec3 ObjSpaceViewDir(vec4 localPos), vec3 ObjSpaceLightDir(vec4 localPos),
+//           vec2 / vec3 TransformViewToProjection(v) (the projection's upper-left 2x2 / 3x3),
 //           vec4 ComputeScreenPos(vec4 clipPos), vec4 UnityPixelSnap(vec4 clipPos),
 //           bool IsGammaSpace() (false: linear colour space), float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
@@ -53,7 +59,9 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           Unity defines it for its GLSL targets); UNITY_POSITION(pos) (a struct's clip-space
+//           position member, HLSLSupport.cginc's float4 pos : SV_POSITION; the reader gives it
+//           that semantic, parse_pass._structs); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
 //           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
@@ -69,7 +77,9 @@
 //           hlsl_ports/unity_compat/shader_variables.hlsl is hand-written (matrices: GLSL M * v
 //           is HLSL mul(M, v)); HLSL's instancing macro declares `type var;`.
 // Config macros read: PBR_UNITY_SH_IRRADIANCE(n) (UNITY_LIGHTMODEL_AMBIENT: the caller's ambient
-//           lookup, as pbr/unity/global_illumination reads it; default black).
+//           lookup, as pbr/unity/global_illumination reads it; default black);
+//           PBR_UNITY_SH9 (the caller's nine SH9 radiance coefficients, as pbr_sh9_irradiance
+//           reads them, with pbr/lighting/sh9.glsl's constants: unity_SHAr..unity_SHC; default zero).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_GLSL
@@ -99,6 +109,7 @@ uniform vec4 _ZBufferParams;
 uniform vec4 unity_OrthoParams;
 uniform vec4 _SpecColor;
 uniform vec4 unity_SpecCube0_HDR;
+uniform vec4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
 vec4 _LightColor0;
@@ -137,7 +148,14 @@ vec4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
+vec2 UnityStereoScreenSpaceUVAdjust(vec2 uv, vec4 scaleAndOffset) { return uv; }
+vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
+#ifndef UnityStereoTransformScreenSpaceTex
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#endif
 #define UNITY_INITIALIZE_OUTPUT(type, name)
+#define UNITY_POSITION(pos) vec4 pos
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes on Direct3D, nothing on Unity's GLSL
 // targets (GLSL has no attributes); a hint, never a change of what is computed.
@@ -172,6 +190,8 @@ vec4 unity_SpotDirection[8];
 #define SAMPLE_DEPTH_TEXTURE(tex, uv) (texture(tex, (uv).xy).r)
 #define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (textureProj(tex, uv).r)
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (textureLod(tex, (uv).xy, (uv).w).r)
+// a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
+#define UNITY_SAMPLE_DEPTH(value) ((value).r)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -287,6 +307,49 @@ vec4 Unity_AmbientGroundColor() {
 #define unity_AmbientSky Unity_AmbientSkyColor()
 #define unity_AmbientEquator Unity_AmbientEquatorColor()
 #define unity_AmbientGround Unity_AmbientGroundColor()
+#ifdef PBR_UNITY_SH9
+#include "pbr/lighting/sh9.glsl"
+#endif
+// unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC
+// (UnityShaderVariables.cginc's and URP UnityInput.hlsl's UnityPerDraw globals; Unity's manual,
+// "Built-in shader variables": the ambient probe's spherical-harmonics coefficients): the
+// order-2 polynomial Unity's ShadeSH9 / URP's SampleSH9 evaluates per colour channel from them,
+// SHA.w + dot(SHA.xyz, n) + dot(SHB, n.xyzz * n.yzzx) + SHC * (n.x^2 - n.y^2), here the
+// caller's PBR_UNITY_SH9 irradiance / pi (pbr_sh9_irradiance's five Ramamoorthi-Hanrahan terms
+// per monomial, its constant -C5 L20 part in SHA.w as Unity packs it), so a shader evaluating
+// them by hand gets what PBR_UNITY_SH_IRRADIANCE returns (before its clamp at 0). Zero where
+// the caller defines no PBR_UNITY_SH9. channel: 0 red, 1 green, 2 blue.
+vec4 Unity_SHA(int channel) {
+#ifdef PBR_UNITY_SH9
+    return vec4(2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[3][channel], 2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[1][channel],
+                2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[2][channel],
+                PBR_SH9_C4 * PBR_UNITY_SH9[0][channel] - PBR_SH9_C5 * PBR_UNITY_SH9[6][channel]) * PBR_INV_PI;
+#else
+    return vec4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+vec4 Unity_SHB(int channel) {
+#ifdef PBR_UNITY_SH9
+    return vec4(2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[4][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[5][channel],
+                PBR_SH9_C3 * PBR_UNITY_SH9[6][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[7][channel]) * PBR_INV_PI;
+#else
+    return vec4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+vec4 Unity_SHC() {
+#ifdef PBR_UNITY_SH9
+    return vec4(PBR_SH9_C1 * PBR_UNITY_SH9[8] * PBR_INV_PI, 1.0);
+#else
+    return vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define unity_SHAr Unity_SHA(0)
+#define unity_SHAg Unity_SHA(1)
+#define unity_SHAb Unity_SHA(2)
+#define unity_SHBr Unity_SHB(0)
+#define unity_SHBg Unity_SHB(1)
+#define unity_SHBb Unity_SHB(2)
+#define unity_SHC Unity_SHC()
 
 vec3 ShadeVertexLightsFull(vec4 vertex, vec3 normal, int lightCount, bool spotLight) {
     vec3 viewpos = UnityObjectToViewPos(vertex.xyz);
@@ -352,6 +415,16 @@ vec3 ObjSpaceViewDir(vec4 localPos) {
 
 vec3 ObjSpaceLightDir(vec4 localPos) {
     return (unity_WorldToObject * _WorldSpaceLightPos0).xyz - localPos.xyz * _WorldSpaceLightPos0.w;
+}
+
+// UnityCG.cginc's TransformViewToProjection: a view-space direction through the projection's
+// upper-left 2x2 or 3x3 (an outline's screen-space offset).
+vec2 TransformViewToProjection(vec2 v) {
+    return mat2(UNITY_MATRIX_P) * v;
+}
+
+vec3 TransformViewToProjection(vec3 v) {
+    return mat3(UNITY_MATRIX_P) * v;
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

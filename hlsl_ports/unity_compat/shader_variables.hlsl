@@ -15,12 +15,17 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
-//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment);
+//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_FogColor
+//           (RenderSettings.fogColor: its default, (0.5, 0.5, 0.5, 1); pbrlab draws no fog);
+//           float2 UnityStereoScreenSpaceUVAdjust(uv, scaleAndOffset), UnityStereoTransformScreenSpaceTex(uv)
+//           (the identity: one eye);
 //           float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight),
 //           float3 ShadeVertexLights(float4 vertex, float3 normal) (UnityCG.cginc's vertex lighting);
 //           float4 Unity_LightmodelAmbient(), UNITY_LIGHTMODEL_AMBIENT (the ambient probe's mean);
 //           unity_AmbientSky, unity_AmbientEquator, unity_AmbientGround (its irradiance from above,
 //           the sides, below);
+//           unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC (its SH
+//           polynomial's coefficients as Unity packs them);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
@@ -36,6 +41,7 @@
 //           float3 UnityWorldSpaceViewDir(float3 worldPos), float3 UnityWorldSpaceLightDir(float3 worldPos),
 //           float3 WorldSpaceViewDir(float4 localPos), float3 WorldSpaceLightDir(float4 localPos),
 //           float3 ObjSpaceViewDir(float4 localPos), float3 ObjSpaceLightDir(float4 localPos),
+//           float2 / float3 TransformViewToProjection(v) (the projection's upper-left 2x2 / 3x3),
 //           float4 ComputeScreenPos(float4 clipPos), float4 UnityPixelSnap(float4 clipPos),
 //           bool IsGammaSpace() (false: linear colour space), float Linear01Depth(float z), float LinearEyeDepth(float z) (z: a [0, 1] depth-
 //           buffer value, perspective cameras, as Unity's);
@@ -53,7 +59,8 @@
 //           UNITY_TRANSFER_VERTEX_OUTPUT_STEREO, UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX,
 //           UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX, UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(o): no
 //           instancing, one eye; unity_StereoEyeIndex is 0, the left eye's, as in mono); UNITY_INITIALIZE_OUTPUT(type, name) (a no-op in GLSL, as
-//           Unity defines it for its GLSL targets); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
+//           Unity defines it for its GLSL targets); UNITY_POSITION(pos) (a struct's clip-space
+//           position member, HLSLSupport.cginc's float4 pos : SV_POSITION); UNITY_BRANCH, UNITY_FLATTEN, UNITY_UNROLL,
 //           UNITY_UNROLLX(n), UNITY_LOOP, UNITY_FASTOPT (HLSL attributes; nothing in GLSL);
 //           AutoLight.cginc's macros without shadows (no shadow maps here; a light's falloff
 //           is already in _LightColor0): SHADOW_COORDS(idx), UNITY_SHADOW_COORDS(idx),
@@ -71,7 +78,9 @@
 //           generates pbr/ only); the per-light globals are `static` (mutable) here, and
 //           UNITY_INITIALIZE_OUTPUT zero-fills, as Unity's Direct3D 11 definition does.
 // Config macros read: PBR_UNITY_SH_IRRADIANCE(n) (UNITY_LIGHTMODEL_AMBIENT: the caller's ambient
-//           lookup, as pbr/unity/global_illumination reads it; default black).
+//           lookup, as pbr/unity/global_illumination reads it; default black);
+//           PBR_UNITY_SH9 (the caller's nine SH9 radiance coefficients, as pbr_sh9_irradiance
+//           reads them, with pbr/lighting/sh9.glsl's constants: unity_SHAr..unity_SHC; default zero).
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
 #define PBR_UNITY_COMPAT_SHADER_VARIABLES_HLSL
@@ -101,6 +110,7 @@ uniform float4 _ZBufferParams;
 uniform float4 unity_OrthoParams;
 uniform float4 _SpecColor;
 uniform float4 unity_SpecCube0_HDR;
+uniform float4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
 static float4 _LightColor0;
@@ -139,7 +149,14 @@ static float4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
+float2 UnityStereoScreenSpaceUVAdjust(float2 uv, float4 scaleAndOffset) { return uv; }
+float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return uv; }
+#ifndef UnityStereoTransformScreenSpaceTex
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#endif
 #define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
+#define UNITY_POSITION(pos) float4 pos : SV_POSITION
 
 // HLSLSupport.cginc's flow-control hints: HLSL attributes, as Unity defines them for Direct3D
 // (glslang's HLSL front end reads [branch], [flatten], [unroll], [unroll(n)], [loop], [fastopt]).
@@ -174,6 +191,8 @@ static float4 unity_SpotDirection[8];
 #define SAMPLE_DEPTH_TEXTURE(tex, uv) (tex2D(tex, (uv).xy).r)
 #define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv).r)
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
+// a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
+#define UNITY_SAMPLE_DEPTH(value) ((value).r)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -288,6 +307,49 @@ float4 Unity_AmbientGroundColor() {
 #define unity_AmbientSky Unity_AmbientSkyColor()
 #define unity_AmbientEquator Unity_AmbientEquatorColor()
 #define unity_AmbientGround Unity_AmbientGroundColor()
+#ifdef PBR_UNITY_SH9
+#include "pbr/lighting/sh9.hlsl"
+#endif
+// unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC
+// (UnityShaderVariables.cginc's and URP UnityInput.hlsl's UnityPerDraw globals; Unity's manual,
+// "Built-in shader variables": the ambient probe's spherical-harmonics coefficients): the
+// order-2 polynomial Unity's ShadeSH9 / URP's SampleSH9 evaluates per colour channel from them,
+// SHA.w + dot(SHA.xyz, n) + dot(SHB, n.xyzz * n.yzzx) + SHC * (n.x^2 - n.y^2), here the
+// caller's PBR_UNITY_SH9 irradiance / pi (pbr_sh9_irradiance's five Ramamoorthi-Hanrahan terms
+// per monomial, its constant -C5 L20 part in SHA.w as Unity packs it), so a shader evaluating
+// them by hand gets what PBR_UNITY_SH_IRRADIANCE returns (before its clamp at 0). Zero where
+// the caller defines no PBR_UNITY_SH9. channel: 0 red, 1 green, 2 blue.
+float4 Unity_SHA(int channel) {
+#ifdef PBR_UNITY_SH9
+    return float4(2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[3][channel], 2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[1][channel],
+                2.0 * PBR_SH9_C2 * PBR_UNITY_SH9[2][channel],
+                PBR_SH9_C4 * PBR_UNITY_SH9[0][channel] - PBR_SH9_C5 * PBR_UNITY_SH9[6][channel]) * PBR_INV_PI;
+#else
+    return float4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+float4 Unity_SHB(int channel) {
+#ifdef PBR_UNITY_SH9
+    return float4(2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[4][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[5][channel],
+                PBR_SH9_C3 * PBR_UNITY_SH9[6][channel], 2.0 * PBR_SH9_C1 * PBR_UNITY_SH9[7][channel]) * PBR_INV_PI;
+#else
+    return float4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+float4 Unity_SHC() {
+#ifdef PBR_UNITY_SH9
+    return float4(PBR_SH9_C1 * PBR_UNITY_SH9[8] * PBR_INV_PI, 1.0);
+#else
+    return float4(0.0, 0.0, 0.0, 1.0);
+#endif
+}
+#define unity_SHAr Unity_SHA(0)
+#define unity_SHAg Unity_SHA(1)
+#define unity_SHAb Unity_SHA(2)
+#define unity_SHBr Unity_SHB(0)
+#define unity_SHBg Unity_SHB(1)
+#define unity_SHBb Unity_SHB(2)
+#define unity_SHC Unity_SHC()
 
 float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight) {
     float3 viewpos = UnityObjectToViewPos(vertex.xyz);
@@ -353,6 +415,16 @@ float3 ObjSpaceViewDir(float4 localPos) {
 
 float3 ObjSpaceLightDir(float4 localPos) {
     return mul(unity_WorldToObject, _WorldSpaceLightPos0).xyz - localPos.xyz * _WorldSpaceLightPos0.w;
+}
+
+// UnityCG.cginc's TransformViewToProjection: a view-space direction through the projection's
+// upper-left 2x2 or 3x3 (an outline's screen-space offset).
+float2 TransformViewToProjection(float2 v) {
+    return mul((float2x2)UNITY_MATRIX_P, v);
+}
+
+float3 TransformViewToProjection(float3 v) {
+    return mul((float3x3)UNITY_MATRIX_P, v);
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

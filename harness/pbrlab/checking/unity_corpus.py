@@ -8,7 +8,10 @@ written) and GLSL (its port), and report what happened to each.
 An outcome is ``rendered`` (every pixel finite), ``non-finite`` (rendered, but a pixel is NaN
 or Inf: a defect), ``refused`` (a ``PbrlabError`` naming what is missing: the documented
 answer to a Unity feature the harness cannot run) or ``traceback`` (any other exception: a
-defect). The report adds GLSL/HLSL agreement for shaders rendered in both.
+defect). The report adds GLSL/HLSL agreement for shaders rendered in both, and counts apart
+those rendered in both that draw black (``draws_black``): each must be black by its own
+defaults, as Unity would draw it, and listed with the reason (corpus/urp/black_by_defaults.md,
+the pinned corpora's BLANK_BY_DEFAULT), or it is a defect.
 """
 
 from __future__ import annotations
@@ -30,6 +33,10 @@ from ..foundation.locations import locate
 
 LANGUAGES = ("glsl", "hlsl")
 SIZE = (64, 64)
+# A render no display tells from black: every RGB value rounds to sRGB code 0, i.e. lies below
+# half of code 1 in linear (1/255 / 12.92 = 3.04e-4 on the sRGB curve's linear segment, IEC
+# 61966-2-1; the corpus scene's tone map is the identity that low).
+BLACK_LEVEL = 0.5 / 255 / 12.92
 
 
 @dataclass
@@ -71,12 +78,16 @@ def scene_for(shader: Path) -> dict:
     vertex function can move) under a directional and a point light and the sky; a lightmapped
     sphere (LIGHTMAP) where the shader's drawn vertex/fragment program reads Unity's lightmap,
     which it cannot run without, and a realtime GI lightmap (DYNAMIC_LIGHTMAP) where it reads
-    Unity's realtime lightmap (every other shader sees the sphere as it always has)."""
+    Unity's realtime lightmap (every other shader sees the sphere as it always has). A
+    full-screen shader (importers/unity/fullscreen_pass.py: drawn over the whole view, reading
+    the camera's colour) is shown over the same sphere in a pbrlab material (BACKDROP), the scene
+    its pass reads."""
     material = {"surface": str(shader)}
     if _reads_lightmap(shader):
         material["lightmap"] = dict(LIGHTMAP)
     if _reads_lightmap(shader, realtime=True):
         material["dynamic_lightmap"] = dict(DYNAMIC_LIGHTMAP)
+    backdrop = _draws_fullscreen(shader)
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
                    "size": list(SIZE)},
@@ -85,10 +96,28 @@ def scene_for(shader: Path) -> dict:
             {"type": "point", "position": [1.5, 1.0, 2.0], "color": [1, 1, 1], "intensity": 2.0, "range": 10},
         ],
         "environment": {"path": str(locate("scenes") / "assets" / "sky.exr"), "intensity": 0.5},
-        "materials": {"m": material},
-        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}],
+        "materials": {"m": material, **({"backdrop": dict(BACKDROP)} if backdrop else {})},
+        "objects": [{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "m"}]
+                   + ([{"mesh": {"primitive": "uv_sphere", "radius": 1.0}, "material": "backdrop"}] if backdrop else []),
         "render": {"quality": "high", "tonemap": "khronos_neutral"},
     }
+
+
+# The sphere a full-screen shader's pass is shown over: a lit pbrlab material.
+BACKDROP = {"albedo": [0.8, 0.5, 0.3], "smoothness": 0.5}
+
+
+def _draws_fullscreen(shader: Path) -> bool:
+    """Whether ``shader`` draws a full-screen pass (False for a shader the reader refuses)."""
+    from ..importers.unity import BUILTIN, URP, read_shader
+    from ..importers.unity.fullscreen_pass import is_fullscreen
+    from ..importers.urp import material as urp
+    if Path(shader).suffix != ".shader":
+        return False
+    try:
+        return any(is_fullscreen(p) for p in read_shader(Path(shader), URP if urp.reads(Path(shader)) else BUILTIN).passes)
+    except PbrlabError:
+        return False
 
 
 def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
@@ -107,6 +136,17 @@ def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
         return False
 
 
+def _messages(caught) -> list:
+    """The warnings' texts, each cut to 300 characters after its place (``path:line: ``, whose
+    length varies with the folders), so that what it says survives (no_colour_reason reads it)."""
+    out = []
+    for w in caught:
+        text = str(w.message)
+        place = re.match(r"^.*?\.\w+(?::\d+)*: ", text)
+        out.append(text[:(place.end() if place else 0) + 300])
+    return out
+
+
 def run_shader(shader: Path, language: str) -> Outcome:
     from ..render.renderer import render_scene
     from ..importers.loader import parse_scene
@@ -119,13 +159,13 @@ def run_shader(shader: Path, language: str) -> Outcome:
             image = render_scene(scene, language=language).linear
         except PbrlabError as exc:
             return Outcome(str(shader), language, "refused", str(exc)[:3000],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
         except Exception as exc:  # a defect: the report names it
             tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
             return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
-                           [str(w.message)[:300] for w in caught])
+                           _messages(caught))
     status = "rendered" if np.isfinite(image).all() else "non-finite"
-    return Outcome(str(shader), language, status, "", [str(w.message)[:300] for w in caught], image)
+    return Outcome(str(shader), language, status, "", _messages(caught), image)
 
 
 # What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and
@@ -152,9 +192,26 @@ def refusal_key(message: str) -> str:
     return without_folders(first)[:90]
 
 
+def no_colour_reason(outcomes: dict) -> str | None:
+    """Why a shader rendered in every language draws no colour by its own ColorMask (a
+    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written), read from its
+    note; None for any other shader. The report lists these, not as silently empty images."""
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK
+    notes = [next((w for w in o.warnings if NO_COLOUR_BY_COLOR_MASK in w), None) for o in outcomes.values()]
+    if not outcomes or any(o.status != "rendered" for o in outcomes.values()) or None in notes:
+        return None
+    return without_folders(notes[0]).split(": ", 1)[-1]   # the note, which says it, without its place
+
+
 def agreement(a: np.ndarray, b: np.ndarray) -> float:
     """Largest relative difference of the GLSL and HLSL renders (1e-3 floor)."""
     return float(np.max(np.abs(a - b) / np.maximum(np.maximum(np.abs(a), np.abs(b)), 1e-3)))
+
+
+def draws_black(image) -> bool:
+    """Whether a rendered image shows no colour: every RGB value within BLACK_LEVEL of 0 (alpha
+    alone is no picture; a NaN is not black: the non-finite outcome reports it)."""
+    return bool(np.all(np.abs(np.asarray(image, np.float64)[..., :3]) <= BLACK_LEVEL))
 
 
 def run_corpus(root: Path, progress=None) -> dict:
@@ -168,6 +225,9 @@ def run_corpus(root: Path, progress=None) -> dict:
             o.pop("language")
         if all(o.status == "rendered" for o in outcomes.values()):
             row["glsl_hlsl_max_rel"] = agreement(outcomes["glsl"].image, outcomes["hlsl"].image)
+            row["black"] = all(draws_black(o.image) for o in outcomes.values())
+        if no_colour_reason(outcomes):
+            row["no_colour"] = no_colour_reason(outcomes)
         rows.append(row)
         if progress:
             progress(row)
@@ -177,7 +237,10 @@ def run_corpus(root: Path, progress=None) -> dict:
             s = row[lang]["status"]
             counts[lang][s] = counts[lang].get(s, 0) + 1
     both = sum(all(row[lang]["status"] == "rendered" for lang in LANGUAGES) for row in rows)
-    return {"shaders": len(rows), "rendered_in_both": both, "counts": counts, "rows": rows}
+    black = [row["path"] for row in rows if row.get("black") and "no_colour" not in row]
+    no_colour = [row["path"] for row in rows if "no_colour" in row]
+    return {"shaders": len(rows), "rendered_in_both": both, "black_in_both": len(black), "black": black,
+            "draws_no_colour_by_its_color_mask": no_colour, "counts": counts, "rows": rows}
 
 
 def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = None,
@@ -186,9 +249,11 @@ def outcome_problems(expected: str, outcomes: dict, blank_reason: str | None = N
     ``expected`` outcome (expected_outcomes' vocabulary); empty when they match. A rendered
     pair must agree to ``agreement_bound`` (the GLSL port against the HLSL as written) and
     draw colour (an RGB value other than 0: alpha alone is no picture), unless ``blank_reason``
-    says why its defaults draw none (then it must be black). A refusal must name what is missing, not be a compiler's error, unless pinned as
-    a defect; a traceback is always wrong."""
+    says why its defaults draw none, or the shader writes no colour by its ColorMask
+    (no_colour_reason): then it must be black. A refusal must name what is missing, not be a
+    compiler's error, unless pinned as a defect; a traceback is always wrong."""
     problems = []
+    blank_reason = blank_reason or no_colour_reason(outcomes)  # a mask: black, listed by its reason
     for lang, o in outcomes.items():
         if o.status not in ("rendered", "refused"):
             problems.append(f"{lang}: {o.status}: {o.message[:300]}")
@@ -249,13 +314,19 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
 
     def progress(row):
-        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES)
+        marks = " ".join(f"{lang}:{row[lang]['status']}" for lang in LANGUAGES) + (" BLACK" if row.get("black") else "")
         first = next((row[lang]["message"] for lang in LANGUAGES if row[lang]["message"]), "")
         print(f"{row['path']}: {marks} {first[:160]}", flush=True)
 
     report = run_corpus(args.root, progress)
-    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']}; "
-          f"{json.dumps(report['counts'])}")
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK as NO_COLOUR
+    print(f"rendered in both languages: {report['rendered_in_both']} of {report['shaders']} "
+          f"({report['black_in_both']} of them black besides the ColorMask 0 masks: each black by its own "
+          f"defaults, listed with the reason, or a defect); {json.dumps(report['counts'])}")
+    for path in report["black"]:
+        print(f"  black: {path}")
+    for path in report["draws_no_colour_by_its_color_mask"]:
+        print(f"rendered, {NO_COLOUR}: {path}")
     from ..foundation import outputs
     if args.out:
         with outputs.transaction([args.out]) as tx:

@@ -29,9 +29,9 @@ VECTORS_PER_SKY_DIRECTION = 5
 RESERVED_UNIFORM_VECTORS = 256
 # Texture units the harness takes before a material's own: the DFG table and the
 # prefiltered environment, the sheen table, the transmission copy, the irradiance cube, the
-# sun's shadow map, the environment's visibility maps, the volumes' exits
-# (render._SceneResources.FIRST_MATERIAL_UNIT).
-RESERVED_TEXTURE_UNITS = 8
+# sun's shadow map, the environment's visibility maps, the volumes' exits, the screen-space
+# reflections' first pass and its positions (render._SceneResources.FIRST_MATERIAL_UNIT).
+RESERVED_TEXTURE_UNITS = 10
 
 
 def _limit(ctx, name: str, fallback: int) -> int:

@@ -110,9 +110,14 @@ def scene_frame(scene) -> CameraFrame:
     if scene.camera.ortho_half_height is not None:
         return frame  # linear depth: (far - near) / 2^24 everywhere, precise already
     if any(_moves_vertices(scene.materials.get(obj.material)) for obj in scene.objects):
+        # its geometry is where its program puts it, not where its bounds are: as far as its
+        # engine's camera draws (a billboard its program pushes past the mesh's far side)
+        far = max([frame.far] + _engine_fars(scene))
         if camera_textures.needed(scene):  # a program reads the camera's depth: its engine's near plane
-            return camera_frame(scene.camera, radius, (_engine_near(scene) * NEAR_FAR_MARGIN, frame.far / NEAR_FAR_MARGIN))
-        return frame  # its geometry is where its program puts it, not where its bounds are
+            return camera_frame(scene.camera, radius, (_engine_near(scene) * NEAR_FAR_MARGIN, far / NEAR_FAR_MARGIN))
+        if far > frame.far:
+            return camera_frame(scene.camera, radius, (frame.near * NEAR_FAR_MARGIN, far / NEAR_FAR_MARGIN))
+        return frame
     depths = visible_depths(scene, frame)
     if depths is None:
         return frame
@@ -130,6 +135,14 @@ def _engine_near(scene) -> float:
                                                for obj in scene.objects)
              if source is not None and source.camera_near is not None]
     return min(nears) if nears else scene_radius(scene) * 1e-5
+
+
+def _engine_fars(scene) -> list[float]:
+    """The far planes the material sources of objects whose programs move vertices ask for
+    (Unity's 1000: importers/unity/material.py's UNITY_CAMERA_FAR)."""
+    sources = (getattr(scene.materials.get(obj.material), "source", None) for obj in scene.objects)
+    return [source.camera_far for source in sources
+            if source is not None and source.moves_vertices and getattr(source, "camera_far", None) is not None]
 
 
 def visible_depths(scene, frame: CameraFrame) -> tuple[float, float] | None:

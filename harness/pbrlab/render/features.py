@@ -99,6 +99,7 @@ class SceneFeatures:
     sky_visibility: int = 0    # K shadow maps for the environment's visibility (render.environment_visibility)
     sky_visibility_diffuse: bool = False  # ... applied to the diffuse too (render.environment_visibility_diffuse)
     volume_chord: bool = False  # a volume's path length from its back faces (render.volume_chord)
+    screen_space_reflections: bool = False  # render.screen_space_reflections (screen_space_reflection.py)
 
 
 def material_features(material) -> MaterialFeatures:
@@ -146,6 +147,7 @@ def scene_features(scene) -> SceneFeatures:
         sky_visibility=scene.render.environment_visibility if scene.environment is not None else 0,
         sky_visibility_diffuse=scene.render.environment_visibility_diffuse,
         volume_chord=scene.render.volume_chord,
+        screen_space_reflections=scene.render.screen_space_reflections,
         quality=scene.render.quality,
         brdf_model=scene.render.brdf_model,
         tonemap=scene.render.tonemap,
@@ -176,6 +178,8 @@ def _settings_defines(m: MaterialFeatures, s: SceneFeatures) -> dict:
             defines["PBRLAB_SKY_VISIBILITY_DIFFUSE"] = 1
     if s.volume_chord and m.transmission:  # render/volume_exit.py
         defines["PBRLAB_VOLUME_CHORD"] = 1
+    if s.screen_space_reflections and s.environment and not m.unlit:  # render/screen_space_reflection.py
+        defines["PBRLAB_SCREEN_SPACE_REFLECTION"] = 1
     for flag, on in (("NORMAL_SCALE", m.normal_scale), ("OCCLUSION_STRENGTH", m.occlusion_strength),
                      ("VERTEX_COLOR", m.vertex_color), ("DOUBLE_SIDED", m.double_sided),
                      ("CLEARCOAT", m.clearcoat), ("CLEARCOAT_NORMAL_SCALE", m.clearcoat_normal_scale),

@@ -31,7 +31,7 @@ from ..scene import meshes, surface_layers
 from ..gpu import targets
 from ..gpu.cancellation import dies_on_signal
 from ..gpu.driver_time_limit import within_time_limit
-from . import transmission_copy, volume_exit
+from . import screen_space_reflection, transmission_copy, volume_exit
 from ..maths import srgb8 as srgb8_codes
 from .depth_range import scene_frame, scene_radius  # noqa: F401 (scene_radius: public)
 from ..foundation.errors import PbrlabError, SceneError
@@ -74,7 +74,8 @@ class _SceneResources:
     SUN_SHADOW_UNIT = 5  # the environment's sun's shadow map (shadow_map.py), when render.environment_sun finds one
     SKY_SHADOW_UNIT = 6  # the environment's visibility maps (environment_visibility.py), render.environment_visibility
     VOLUME_EXIT_UNIT = 7  # the volumes' exit points (volume_exit.py), render.volume_chord
-    FIRST_MATERIAL_UNIT = 8
+    SSR_COLOUR_UNIT, SSR_SURFACE_UNIT = 8, 9  # render.screen_space_reflections (screen_space_reflection.py)
+    FIRST_MATERIAL_UNIT = 10
     # 1x1 float textures: multiplying by them, or unpacking the normal, changes nothing.
     NEUTRAL_TEXEL = {"normal": (0.5, 0.5, 1.0, 1.0)}  # UnpackNormal -> (0, 0, 1) exactly
 
@@ -87,6 +88,7 @@ class _SceneResources:
         self.env_sh = None
         self.transmission_copy = None  # set by render_scene once the copy is drawn
         self.volume_exit = None  # set by render_scene once the volumes' back faces are drawn
+        self.reflection = None  # set by render_scene with render.screen_space_reflections
         # the DFG table serves every light (diffuse-specular coupling), not only the environment
         # in the tier's layout (PBR_DFG_LUT_LAYOUT, pbr/shading/dispatch.glsl: LOW reads its own)
         layout = ref_shading.QUALITY_DFG_LUT_LAYOUT[scene.render.quality.upper()]
@@ -122,6 +124,8 @@ class _SceneResources:
             self.transmission_copy.bind(program, self.TRANSMISSION_COPY_UNIT, frame.view_proj)
         if self.volume_exit is not None:
             self.volume_exit.bind(program, self.VOLUME_EXIT_UNIT, material.name)
+        if self.reflection is not None:
+            self.reflection.bind(program, self.SSR_COLOUR_UNIT, self.SSR_SURFACE_UNIT)
         _upload_material(program, material)
         unit = self.FIRST_MATERIAL_UNIT
         for name, path in sorted(material.textures.items()):
@@ -244,7 +248,8 @@ def _reset_draw_state(ctx) -> None:
 
 
 def _draw_order(scene: Scene, frame):
-    """Opaque and cutout objects first, then blended ones from far to near."""
+    """Opaque and cutout objects first, then blended ones from far to near, then the objects
+    whose material draws a full-screen pass (they read what the others drew)."""
     def centre(obj):
         if obj.sphere is not None:
             return obj.sphere[0]
@@ -252,7 +257,11 @@ def _draw_order(scene: Scene, frame):
     opaque = [o for o in scene.objects if scene.materials[o.material].alpha_mode in ("opaque", "cutout")]
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in BLENDED_ALPHA_MODES]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
-    return opaque + blended
+
+    def fullscreen(o):  # a full-screen pass (Unity's Blitter: importers/unity/fullscreen_pass.py)
+        material = scene.materials[o.material]
+        return getattr(source_of(material), "draws_fullscreen", lambda m: False)(material)
+    return sorted(opaque + blended, key=fullscreen)  # (stable) they read the scene: drawn last
 
 
 def input_files(scene: Scene, language: str = "glsl") -> list[tuple[Path, str]]:
@@ -387,6 +396,18 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             copy.target.fbo.depth_mask = True
             copy.finish()
             resources.transmission_copy = copy
+        if scene.render.screen_space_reflections and scene.environment is not None and scene.objects:
+            # the frame drawn once (its programs reading the environment alone), then read where a
+            # reflected ray meets its surfaces (screen_space_reflection.py)
+            resources.reflection = screen_space_reflection.ScreenSpaceReflection(ctx, scene, frame, hdr_format)
+            first = resources.reflection.colour_target
+            first.use()
+            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+            _reset_draw_state(ctx)
+            draw_calls += _draw_objects(ctx, first, _draw_order(scene, frame), draw)
+            ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+            first.fbo.depth_mask = True
+            resources.reflection.finish()
         with targets.Target(ctx, (w, h), hdr_format, samples=samples,
                             resolve_filter=scene.render.antialias_filter, downsample=supersample) as hdr:
             hdr.use()
@@ -414,6 +435,8 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             resources.camera_textures.release()
         if resources.volume_exit is not None:
             resources.volume_exit.release()
+        if resources.reflection is not None:
+            resources.reflection.release()
         for resource in cube_holder + grab_holder:
             resource.release()
     return Rendering(linear=linear, srgb8=srgb8, info=gl.context_info(ctx), programs=plan, draw_calls=draw_calls,
@@ -452,7 +475,8 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
         grabbed = draw.resources.camera_textures.bound(source) if draw.resources.camera_textures else {}
         for material_pass in source.passes(material):
             if material_pass.grab is not None:  # what is drawn so far, for the passes after it
-                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder)
+                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder,
+                                                    getattr(material_pass, "clamp_to_edge", False))
                 continue
             for keyed, state in material_pass.draws(defines):
                 _apply_state(ctx, hdr, state)
@@ -480,11 +504,13 @@ def _apply_state(ctx, hdr, state) -> None:
     ctx.depth_func = state.depth_func
 
 
-def _grab(ctx, hdr, holder):
+def _grab(ctx, hdr, holder, clamp_to_edge=False):
     """A grab pass: a copy of the float target as drawn so far (released after the render);
-    from a multisampled target the blit resolves (each pixel's samples averaged)."""
+    from a multisampled target the blit resolves (each pixel's samples averaged). Repeating,
+    or ``clamp_to_edge``."""
     texture = ctx.texture(hdr.size, 4, dtype=hdr.color.dtype)
     texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    texture.repeat_x = texture.repeat_y = not clamp_to_edge
     copy = ctx.framebuffer([texture])
     ctx.copy_framebuffer(copy, hdr.fbo)  # a framebuffer blit: float to float, exact
     copy.release()
@@ -565,7 +591,9 @@ def _draw_mesh(ctx, obj, material, material_pass, defines, state, draw, grabbed,
         _set(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
         _set(program, "u_normal_matrix", tuple(instanced_draws.normal_matrix(obj.transform)))
     _cull(ctx, material, state.cull)
-    if obj.sphere is not None:  # a sphere whose pass moves vertices: tessellated by the pass
+    if getattr(material_pass, "fullscreen", False):  # a procedural full-screen draw, no mesh
+        vao, buffers = material_pass.fullscreen_vertex_array(ctx, program)
+    elif obj.sphere is not None:  # a sphere whose pass moves vertices: tessellated by the pass
         vao, buffers = material_pass.sphere_vertex_array(ctx, program)
     else:
         vao, buffers = meshes.vertex_array(ctx, program, obj, instances)

@@ -43,10 +43,9 @@ from __future__ import annotations
 import moderngl
 import numpy as np
 
-from . import instanced_draws
-from .depth_range import _moves_vertices, _object_box
+from . import face_positions
+from .depth_range import _object_box
 from ..gpu.programs import set_uniform
-from ..scene import meshes
 
 # The uniforms templates/transmission_scene.inc declares (PBRLAB_VOLUME_CHORD).
 TEXTURE_UNIFORM = "u_volume_exit"
@@ -57,24 +56,6 @@ REACH_UNIFORM = "u_volume_exit_reach"
 CHORD_STEPS = 16
 CHORD_REFINE = 5
 
-_VERTEX = """#version 330 core
-in vec3 in_position;
-uniform mat4 u_model, u_view_proj;
-out vec3 v_world;  // the back face's world position, what the pass stores
-void main() {
-    v_world = (u_model * vec4(in_position, 1.0)).xyz;
-    gl_Position = u_view_proj * vec4(v_world, 1.0);
-}
-"""
-_FRAGMENT = """#version 330 core
-in vec3 v_world;
-uniform float u_id;
-out vec4 out_exit;
-void main() {
-    out_exit = vec4(v_world, u_id);
-}
-"""
-
 
 def volume_materials(scene, plan) -> list[str]:
     """The names of the materials whose program transmits and whose thickness is > 0 (sorted)."""
@@ -84,14 +65,7 @@ def volume_materials(scene, plan) -> list[str]:
 
 def volumes(scene, ids: dict) -> list:
     """The objects whose back faces the pass draws (module doc), of the materials in ``ids``."""
-    out = []
-    for obj in scene.objects:
-        if obj.material not in ids or obj.sphere is not None or _moves_vertices(scene.materials[obj.material]):
-            continue
-        if obj.geometry is not None and obj.geometry.topology != "triangles":
-            continue
-        out.append(obj)
-    return out
+    return [obj for obj in scene.objects if obj.material in ids and face_positions.drawable(scene, obj)]
 
 
 class VolumeExit:
@@ -105,37 +79,8 @@ class VolumeExit:
             box = _object_box(obj)
             diagonal = float(np.linalg.norm(box.max(axis=0) - box.min(axis=0)))
             self.reach[obj.material] = max(self.reach.get(obj.material, 0.0), diagonal)
-        size = tuple(int(s) for s in frame.size)
-        self.texture = ctx.texture(size, 4, dtype="f4")
-        self.texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
-        self.texture.repeat_x = self.texture.repeat_y = False
-        depth = ctx.depth_renderbuffer(size)
-        fbo = ctx.framebuffer([self.texture], depth)
-        program = ctx.program(vertex_shader=_VERTEX, fragment_shader=_FRAGMENT)
-        try:
-            fbo.use()
-            ctx.viewport = (0, 0) + size
-            fbo.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # id 0: no volume
-            ctx.disable(moderngl.BLEND)
-            ctx.enable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
-            ctx.depth_func = "<"
-            ctx.front_face, ctx.cull_face = "ccw", "front"
-            set_uniform(program, "u_view_proj", tuple(np.asarray(frame.view_proj, np.float64).T.reshape(-1)))
-            for obj in drawn:
-                set_uniform(program, "u_id", self.ids[obj.material])
-                set_uniform(program, "u_model", tuple(instanced_draws.model_matrix(obj.transform)))
-                vao, buffers = meshes.vertex_array(ctx, program, obj)
-                try:
-                    vao.render(moderngl.TRIANGLES)
-                finally:  # released if the draw fails too
-                    for resource in (vao, *buffers):
-                        resource.release()
-        finally:
-            ctx.disable(moderngl.CULL_FACE | moderngl.DEPTH_TEST)
-            ctx.cull_face = "back"
-            program.release()
-            fbo.release()
-            depth.release()
+        # the nearest back face per pixel: front faces culled (face_positions.py)
+        self.texture = face_positions.draw_face_positions(ctx, frame, drawn, self.ids, cull="front")
 
     def bind(self, program, unit: int, material_name: str) -> None:
         """The exit texture and the material's id (0 for a material that is no volume: it
@@ -147,8 +92,7 @@ class VolumeExit:
 
     def read(self) -> np.ndarray:
         """The texture, top row first (HxWx4 float32: exit position, id), for the tests."""
-        data = np.frombuffer(self.texture.read(), np.float32).reshape(self.texture.height, self.texture.width, 4)
-        return data[::-1].copy()
+        return face_positions.read_texture(self.texture)
 
     def release(self) -> None:
         self.texture.release()

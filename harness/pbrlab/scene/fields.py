@@ -259,6 +259,11 @@ RENDER = {
                          "leaves it) measured along the view ray through its mesh, from a pass of its back "
                          "faces (render/volume_exit.py), instead of read from its thickness; a thickness of 0 "
                          "stays thin-walled.", default=False),
+    "screen_space_reflections": Flag("Where the reflected ray of a lobe smoother than 0.6 meets the frame's own "
+                                     "surfaces (searched through a first pass's positions), the first pass's "
+                                     "radiance there replaces the environment's specular light, faded with the "
+                                     "roughness and at the screen's border (render/screen_space_reflection.py). "
+                                     "One more draw of the scene.", default=False),
     "supersample": Choice("Draw the image this many times wider and taller and filter it down (antialias_filter) "
                           "in linear: shading, not only coverage, at supersample^2 places a pixel. Pixel-sized "
                           "effects of a Unity shader (_ScreenParams, a 1-texel offset) see the drawn size.",

@@ -63,6 +63,7 @@ class MaterialSource(Protocol):
     """What a material is drawn with (module doc)."""
     moves_vertices: bool         # its programs place vertices: spheres tessellated, bounds do not hold
     camera_near: float | None    # the nearest eye depth its camera planes must keep, or None
+    camera_far: float | None     # the far plane its engine's camera keeps, where its programs move vertices, or None
 
     def passes(self, material) -> list:
         """``material``'s passes (``Pass``), in draw order."""

@@ -235,6 +235,9 @@ class RenderSettings:
     # a volume's path length (KHR_materials_volume) measured along the view ray through its
     # geometry instead of read from its thickness (render/volume_exit.py)
     volume_chord: bool = False
+    # the environment's specular read replaced where its ray meets the frame's own surfaces, from a
+    # first pass of the frame (render/screen_space_reflection.py)
+    screen_space_reflections: bool = False
 
 
 @dataclass

@@ -58,6 +58,7 @@ class StandardSource:
     """``MaterialSource`` of pbrlab's own materials (module doc)."""
     moves_vertices = False
     camera_near = None
+    camera_far = None
 
     def passes(self, material) -> list:
         return [StandardPass(material.alpha_mode)]

@@ -25,6 +25,14 @@ QUOTED_DB = 0.1
 # pbrlab worse than the worst peer (docs/fidelity.md, "Where pbrlab is behind"), measured at
 # PBRLAB_RENDER; each entry says what the path tracer shows there
 OVER_BOUND: dict[str, str] = {}  # none since the horizon occlusion and the dominant direction
+# rows whose reference's noise lies less than 4.6 dB below a score (docs/fidelity.md, "References and
+# their noise"), each a strict xfail with what was measured: the noise adds to a score in squares, so
+# there it can only make a renderer look further from Cycles than it is
+NOISY_REFERENCE: dict[str, str] = {
+    "khronos-DamagedHelmet@sunrise": "with screen-space reflections pbrlab scores -24.1 dB, 1.5 dB from the "
+                                     "reference's noise (-25.6: the sun's glints on normal-mapped metal); at 1024 "
+                                     "samples the two seeds lay further apart (-23.1), not closer",
+}
 
 
 def test_every_scene_has_its_committed_references():
@@ -32,6 +40,7 @@ def test_every_scene_has_its_committed_references():
         for name in ("cycles", benchmark.NOISE, *renderers.PEERS):
             assert benchmark.reference_path(s.key, name).is_file(), (s.key, name)
     assert set(OVER_BOUND) <= {s.key for s in SCENARIOS}
+    assert set(NOISY_REFERENCE) <= {s.key for s in SCENARIOS}
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +63,8 @@ def test_pbrlab_is_within_its_bound(rows, key):
         f"(peers {', '.join(f'{p} {row.scores[p]:.2f}' for p in renderers.PEERS)}, noise {row.noise_db:.2f})")
 
 
-@pytest.mark.parametrize("key", [s.key for s in SCENARIOS])
+@pytest.mark.parametrize("key", [pytest.param(s.key, marks=[pytest.mark.xfail(strict=True, reason=NOISY_REFERENCE[s.key])]
+                                              if s.key in NOISY_REFERENCE else []) for s in SCENARIOS])
 def test_the_references_noise_moves_no_score_by_half_a_decibel(rows, key):
     row = rows[key]
     smallest = min(10 ** (v / 10) for v in row.scores.values())

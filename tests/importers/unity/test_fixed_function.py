@@ -323,8 +323,9 @@ def test_combiner_expressions_are_the_manuals(combine, cg):
 
 def test_a_macro_member_before_a_member_does_not_hide_it():
     """UNITY_FOG_COORDS(1) and UNITY_VERTEX_OUTPUT_STEREO have no ';' of their own: the member
-    written after them is still read (Reflect-VertexLit's COLOR0 after its fog macro); a macro
-    member with its own ';' (UNITY_POSITION(pos);) is no member here, as before."""
+    written after them is still read (Reflect-VertexLit's COLOR0 after its fog macro);
+    UNITY_POSITION(pos); is HLSLSupport's position member, float4 pos : SV_POSITION
+    (tests/importers/unity/test_unity_position.py)."""
     from pbrlab.importers.unity.parse_pass import _structs
     struct = _structs("""struct v2f {
         float2 uv : TEXCOORD0;
@@ -336,7 +337,7 @@ def test_a_macro_member_before_a_member_does_not_hide_it():
         UNITY_POSITION(pos);
     };""")["v2f"]
     assert struct.members == [("float2", "uv", "TEXCOORD0"), ("fixed4", "diff", "COLOR0"),
-                              ("float4", "screenPos", "TEXCOORD2")]
+                              ("float4", "screenPos", "TEXCOORD2"), ("float4", "pos", "SV_POSITION")]
 
 
 @pytest.mark.parametrize("language", LANGUAGES)

@@ -200,7 +200,6 @@ def test_outside_a_unity_project_a_shader_elsewhere_is_not_found(tmp_path, text,
      "combine: 'primary QUIRKY' is not a source"),
     ('Shader "x" { SubShader { Pass { Material { Glow (1, 1, 1, 1) } } } }',
      "Material { Glow }: not a fixed-function material colour"),
-    ('Shader "x" { Properties { _A ("A", Range(0, 1)) = 5 } SubShader { } }', "outside its Range(0, 1)"),
     ('Shader "x" { Properties { _A ("A", Float) = nan } SubShader { } }', "is not a finite float32 number"),
     ('Shader "x" { Properties { _C ("C", Color) = (1e999, 0, 0, 1) } SubShader { } }', "not a finite float32"),
     ('Shader "x" { Properties { _A ("A", Float) = 1 junk } SubShader { } }', "cannot read this Properties text"),
@@ -376,3 +375,36 @@ def test_a_define_naming_another_macro_takes_its_value_in_later_conditions():
             "#if MODE == MODE_HQ\nhq\n#elif MODE == MODE_SIMPLE\nsimple\n#endif\n")
     lines = active_text(text, defines_of(text)).splitlines()
     assert "hq" in lines and "simple" not in lines
+
+
+def test_a_usepass_by_another_path_names_the_project_shader_of_that_name(tmp_path):
+    """A UsePass naming "Other/Plain" where the project has "Lib/Plain" is refused (Unity finds a
+    shader by its whole name only), and the refusal names the project's "Lib/Plain". Control: a
+    last name no project shader has gets no such hint."""
+    _write(tmp_path / "Project" / "Assets" / "Lib", "plain.shader", _PLAIN)
+    path = _write(tmp_path / "Project" / "Assets" / "Game", "uses.shader", _USER.replace("Lib/Plain", "Other/Plain"))
+    with pytest.raises(UnityShaderError, match=r'no shader "Other/Plain" here.*the project has "Lib/Plain" '
+                                               r'\(plain\.shader\)'):
+        parse.read_shader(path)
+    other = _write(tmp_path / "Project" / "Assets" / "Game", "other.shader", _USER.replace("Lib/Plain", "Lib/Nothing"))
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(other)
+    assert "the project has" not in str(info.value)
+
+
+def test_a_fallback_that_cannot_run_either_is_refused_with_this_shaders_reason_first(tmp_path):
+    """Game/Falls' SubShader cannot run (a geometry function it does not define) and its
+    Fallback, a shader whose only pass is fixed-function texture-matrix code, cannot either: the
+    refusal gives Game/Falls' reason, then the Fallback's. Control: the Fallback alone is refused
+    with its own reason only."""
+    _write(tmp_path, "plain.shader", 'Shader "Lib/Plain" { SubShader { Pass { SetTexture [_MainTex] '
+                                     '{ matrix [_M] combine texture } } } }')
+    path = _write(tmp_path, "falls.shader", _FALLS_BACK)
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(path)
+    message = str(info.value)
+    assert message.index("no SubShader can run here (SubShader 1") < message.index(
+        'its Fallback "Lib/Plain" (plain.shader) cannot run either') < message.index("texture matrices")
+    with pytest.raises(UnityShaderError, match="texture matrices") as alone:
+        parse.read_shader(tmp_path / "plain.shader")
+    assert "no SubShader can run" not in str(alone.value)

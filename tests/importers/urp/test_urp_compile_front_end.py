@@ -12,7 +12,7 @@ defect each, found in the development sample and the seen hidden sample, docs/un
 * a name GLSL reserves (``input``) in a function the type pass left as written, there because
   two statement macros stood on one line (``ADD(a) ADD(b)``);
 * ``char`` as a name, which glslang's HLSL front end reserves;
-* an ``#ifdef`` inside an entry function's parameter list.
+* FXC's implicit truncation of an argument inside the shader's own included file.
 
 Each shader is rendered in both languages and a pixel compared with the value HLSL's rules give,
 with a control that brings the old behaviour back.
@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 
 from pbrlab.checking import unity_corpus as corpus
-from pbrlab.importers.unity import cg_types, parse_pass, program, texture_methods
+from pbrlab.importers.unity import cg_types, program, texture_methods
 
 # Each value below is a sum of products of short binary fractions (exact in float32), written by
 # the fragment stage or passed as the same constant from every vertex: the interpolation of a
@@ -298,64 +298,6 @@ def test_char_not_renamed_is_refused_by_glslang(tmp_path, monkeypatch):
     finally:
         program._fxc_spelled.cache_clear()
     assert outcome.status == "refused" and "Reserved word" in outcome.message, outcome.message
-
-
-# --- #ifdef in an entry function's parameter list ------------------------------------------
-
-PARAMETER_CONDITIONAL = """\
-    #pragma shader_feature_local _DOUBLE_SIDED
-""" + _vertex_passing("shade", "0.625") + """\
-    half4 frag(Varyings i
-    #ifdef _DOUBLE_SIDED
-        , FRONT_FACE_TYPE face : FRONT_FACE_SEMANTIC
-    #endif
-    ) : SV_Target
-    {
-        half s = i.shade;
-    #ifdef _DOUBLE_SIDED
-        s *= IS_FRONT_VFACE(face, 1.0, 0.5);
-    #endif
-        return half4(s, s * 0.5, 0.0, 1.0);
-    }
-"""
-
-
-@pytest.mark.parametrize("language", corpus.LANGUAGES)
-def test_a_conditional_parameter_of_the_entry(tmp_path, language):
-    """The default variant (no keyword): the parameter is not there, the passed 0.625 is drawn."""
-    outcome = corpus.run_shader(_shader(tmp_path, "ParameterConditional", PARAMETER_CONDITIONAL), language)
-    _assert_every_pixel(outcome, [0.625, 0.3125, 0.0])
-
-
-def test_the_parameter_list_read_with_its_directives_is_refused(tmp_path, monkeypatch):
-    """Control: the list read with its #if lines, as before: "cannot read the parameter"."""
-    monkeypatch.setattr(parse_pass, "drawn_parameters", lambda text: text)
-    outcome = corpus.run_shader(_shader(tmp_path, "ParameterConditional", PARAMETER_CONDITIONAL), "glsl")
-    assert outcome.status == "refused" and "cannot read the parameter" in outcome.message, outcome.message
-
-
-# --- a directive continued before Windows line ends ----------------------------------------
-
-CRLF = "#define SUM(a, b) \\\r\n    ((a) + \\\r\n    (b))\r\nfloat SumOf(float input) { return SUM(input, 1.0); }\r\n"
-
-
-def test_a_directive_continued_before_windows_line_ends():
-    """A #define continued by a backslash before CR LF (Cyanilux's Tessellation.hlsl) is one
-    directive: the function after it is read and its reserved name renamed (GeoGrass's GLSL
-    tessellation stage, test_urp_corpus.py)."""
-    toks, directives = cg_types.tokenize(CRLF)
-    assert [t.text for t in toks[:3]] == ["float", "SumOf", "("]
-    assert CRLF[slice(*directives[0])].rstrip().endswith("(b))")
-    assert "float pbr_unity_input" in cg_types.convert(CRLF)
-
-
-def test_the_old_directive_token_leaves_the_file_as_written(monkeypatch):
-    """Control: the directive token without CR LF continuations stops at the first one; the
-    stray backslash then stops the type pass, which leaves every name as written."""
-    old = cg_types._TOKEN.pattern.replace(r"\#(?:[^\n\\]|\\\r\n|\\.)*", r"\#(?:[^\n\\]|\\.)*(?:\\\n(?:[^\n\\]|\\.)*)*")
-    assert old != cg_types._TOKEN.pattern
-    monkeypatch.setattr(cg_types, "_TOKEN", re.compile(old, re.S | re.X))
-    assert cg_types.convert(CRLF) == CRLF
 
 
 # --- FXC's implicit truncation inside the shader's own included file -----------------------

@@ -67,11 +67,7 @@ HASHED_ANGLES = {
 
 
 # Known defects, each a strict expected failure so that its fix shows.
-# (GeoGrass's GLSL tessellation stage was one: its Tessellation.hlsl has Windows line ends, and the
-# type pass read a #define continued by a backslash before CR LF as a stray character, so it left
-# the whole file as written, its parameter `patch` (a GLSL reserved word) not renamed:
-# cg_types.tokenize; test_urp_compile_front_end.py.)
-KNOWN_DEFECTS = {}
+KNOWN_DEFECTS: dict = {}
 
 
 @pytest.mark.parametrize("shader", [pytest.param(s, marks=pytest.mark.xfail(strict=True, reason=KNOWN_DEFECTS[s]))
@@ -99,3 +95,27 @@ def test_the_outcome_check_fails_where_it_should():
     compiler = {k: corpus.Outcome("s", k, "refused", "vertex shader failed to compile:\nx.shader:3:1: error: syntax error")
                 for k in good}
     assert corpus.outcome_problems("x", compiler)
+
+
+def test_black_renders_are_counted_apart(tmp_path):
+    """The corpus summary's black count (unity_corpus.draws_black): a render whose RGB rounds to
+    sRGB code 0 everywhere is black, alpha notwithstanding; one code step of colour is not
+    (the control), nor a NaN (the non-finite outcome's)."""
+    import numpy as np
+    image = np.zeros((4, 4, 4))
+    image[..., 3] = 1.0
+    image[0, 0, :3] = corpus.BLACK_LEVEL
+    assert corpus.draws_black(image)
+    image[0, 0, 1] = 1 / 255 / 12.92  # sRGB code 1
+    assert not corpus.draws_black(image)
+    image[0, 0, 1] = np.nan
+    assert not corpus.draws_black(image)
+    # run_corpus reports them apart: a shader of the corpus scene drawing (0, 0, 0, 1)
+    (tmp_path / "black.shader").write_text(
+        'Shader "t/black" { SubShader { Tags { "RenderPipeline" = "UniversalPipeline" } Pass {\n'
+        "HLSLPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n"
+        '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"\n'
+        "float4 vert(float4 p : POSITION) : SV_POSITION { return TransformObjectToHClip(p.xyz); }\n"
+        "float4 frag() : SV_Target { return float4(0.0, 0.0, 0.0, 1.0); }\nENDHLSL } } }\n")
+    report = corpus.run_corpus(tmp_path)
+    assert (report["rendered_in_both"], report["black_in_both"], report["black"]) == (1, 1, ["black.shader"])

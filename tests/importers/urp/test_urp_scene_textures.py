@@ -96,13 +96,19 @@ def test_scene_depth_is_ray_sphere_depth(tmp_path, language):
     divide, * 0.5 + 0.5, store, and the ray's float32 error through the depth), and 1/e is affine
     in z with slope (1/near - 1/far), so e moves by e^2 (1/near - 1/far) dz; plus 8 ulp of e for
     LinearEyeDepth's own float32 arithmetic. Control: the neighbouring pixel's depth fails it."""
-    scene = _scene(DEPTH_SHADER, tmp_path)
+    check_sphere_depths(_scene(DEPTH_SHADER, tmp_path), language)
+
+
+def check_sphere_depths(scene, language: str) -> None:
+    """The pass's red is Linear01Depth (eye depth / far) of the float64 ray-sphere hit, its green
+    and blue two eye depths, within depth_bound on every covered pixel; control: the
+    neighbouring pixel's depth fails it."""
     frame = scene_frame(scene)
     image, covered, eye = rendered_sphere(scene, frame, language)
     bound = depth_bound(eye, frame)
     err01 = np.abs(image[..., 0] - eye / frame.far)
     assert (err01[covered] <= (bound / frame.far)[covered]).all(), (err01 / bound * frame.far)[covered].max()
-    for channel in (1, 2):  # SampleSceneDepth, LoadSceneDepth
+    for channel in (1, 2):
         err = np.abs(image[..., channel] - eye)
         assert (err[covered] <= bound[covered]).all(), (channel, (err / bound)[covered].max())
     shifted = np.abs(np.roll(image[..., 2], 1, axis=0) - eye)  # control: the neighbouring pixel's depth

@@ -42,6 +42,7 @@ import functools
 import re
 
 from . import combined_samplers
+from .flat_array_initialisers import grouped_flat_initialisers
 from .source_text import call_arguments, matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
@@ -99,16 +100,27 @@ def _parameter_types(params: str):
     return tuple(out)
 
 
+def library_overloads_defined(text: str) -> set:
+    """The names of the Unity layer's overloads ``text`` defines again (the same name and
+    parameter types, Cg's half and fixed read as float, as glslang and GLSL read them)."""
+    library = _library_functions()
+    return {m.group(1) for m in _DEFINITION.finditer(text)
+            if m.group(1) in library and _parameter_types(m.group(2)) in library[m.group(1)]}
+
+
+def renamed_calls(text: str, names) -> str:
+    """``text`` with each definition of and call to a function of ``names`` as
+    ``pbrlab_program_<name>``."""
+    if not names:
+        return text
+    return re.sub(r"\b(" + "|".join(sorted(names)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
+
+
 def _rename_own_library_functions(text: str) -> str:
     """A definition of one of the Unity layer's overloads (the same name and parameter types)
     renamed with its calls (a different overload of the name is a legitimate HLSL overload:
     left alone)."""
-    library = _library_functions()
-    own = {m.group(1) for m in _DEFINITION.finditer(text)
-           if m.group(1) in library and _parameter_types(m.group(2)) in library[m.group(1)]}
-    if not own:
-        return text
-    return re.sub(r"\b(" + "|".join(sorted(own)) + r")\b(?=\s*\()", r"pbrlab_program_\1", text)
+    return renamed_calls(text, library_overloads_defined(text))
 
 
 # HLSL's multi-element matrix swizzle on a name or member (``M._m03_m13_m23``, ``M._11_22``):
@@ -148,13 +160,15 @@ def respelled(text: str) -> str:
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
-    matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad."""
+    matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
+    initialiser list of an array of vectors grouped per element."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
     text = _matrix_swizzles(_tex2d_with_derivatives(text))
+    text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

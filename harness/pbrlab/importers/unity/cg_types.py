@@ -151,7 +151,7 @@ class Tok:
 _TOKEN = re.compile(r"""
     (?P<ws>\s+)
   | (?P<comment>//[^\n]*|/\*.*?\*/)
-  | (?P<pp>\#(?:[^\n\\]|\\\r\n|\\.)*)
+  | (?P<pp>\#(?:[^\n\\]|\\.)*(?:\\\n(?:[^\n\\]|\\.)*)*)
   | (?P<num>0[xX][0-9a-fA-F]+[uUlL]*|(?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?[fFhHlLuU]*)
   | (?P<id>[A-Za-z_]\w*)
   | (?P<str>"(?:[^"\\\n]|\\.)*")
@@ -160,8 +160,7 @@ _TOKEN = re.compile(r"""
 
 
 def tokenize(text: str):
-    """(tokens, directive spans): comments and whitespace dropped, preprocessor lines apart (a
-    directive continued by ``\\`` at its line's end, a Windows line end ``\\r\\n`` too)."""
+    """(tokens, directive spans): comments and whitespace dropped, preprocessor lines apart."""
     toks, directives, pos, line_start = [], [], 0, True
     while pos < len(text):
         m = _TOKEN.match(text, pos)

@@ -38,11 +38,16 @@ UNITY_STRUCTS = {
 }
 UNITY_STRUCTS["appdata_base"] = UNITY_STRUCTS["appdata_full"]
 UNITY_STRUCTS["appdata_tan"] = UNITY_STRUCTS["appdata_full"]
-# Mesh attributes by semantic: (expression in both languages, components, pad for w).
+# Mesh attributes by semantic: (expression in both languages, components, pad for w). A vertex
+# input wider than its stream is filled (0, 0, 0, 1) by the input assembler (Direct3D 11's
+# "missing components default to 0, w to 1"; OpenGL 3.3 core 2.8 likewise): a float4 TEXCOORD0
+# of Unity's 2-component UVs reads (u, v, 0, 1), a float4 NORMAL (x, y, z, 1).
+_VERTEX_FETCH_W = 1.0
 _ATTRIBUTES = {
-    "POSITION": ("in_position", 3, 1.0), "SV_POSITION": ("in_position", 3, 1.0),
-    "NORMAL": ("in_normal", 3, 0.0), "TANGENT": ("in_tangent", 4, 0.0),
-    "TEXCOORD0": ("in_uv", 2, 0.0), "TEXCOORD1": ("in_uv1", 2, 0.0), "COLOR0": ("in_color", 4, 0.0),
+    "POSITION": ("in_position", 3, _VERTEX_FETCH_W), "SV_POSITION": ("in_position", 3, _VERTEX_FETCH_W),
+    "NORMAL": ("in_normal", 3, _VERTEX_FETCH_W), "TANGENT": ("in_tangent", 4, 0.0),
+    "TEXCOORD0": ("in_uv", 2, _VERTEX_FETCH_W), "TEXCOORD1": ("in_uv1", 2, _VERTEX_FETCH_W),
+    "COLOR0": ("in_color", 4, 0.0),
 }
 _POSITION = ("SV_POSITION", "POSITION")
 # TEXCOORD2 (Mesh.uv3; no mesh here has one: 0), or for an object given a realtime GI lightmap
@@ -149,7 +154,7 @@ def _attribute(semantic: str, n: int, language: str, kind: str = "uint", realtim
         # the realtime lightmap UVs where a realtime lightmap is supplied (an integer member: 0; a
         # surface program's vertex input, generate.py, keeps 0: a surface shader takes no realtime
         # lightmap, dynamic_lightmaps.check_reads)
-        return fit(_REALTIME_LIGHTMAP_UV, 2, n, language, 0.0)
+        return fit(_REALTIME_LIGHTMAP_UV, 2, n, language, _VERTEX_FETCH_W)
     return None  # TEXCOORD3..7 and others: no such attribute on meshes here: 0
 
 

@@ -31,13 +31,16 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, light_space, lightmaps, user_definitions
+from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
 # sees (render/depth_range.py keeps the scene's near plane no farther: its programs read the
 # planes, and one that fades what lies near the near plane faded a whole sphere away).
 UNITY_CAMERA_NEAR = 0.3
+# Unity's default camera far plane (Camera.farClipPlane, 1000): where a program of its own places
+# the vertices, they are drawn up to it, not clipped at the far side of the mesh's own bounds.
+UNITY_CAMERA_FAR = 1000.0
 
 # ShaderLab's blend factors (Blend SrcFactor DstFactor) and depth tests, as moderngl's.
 _UNITY_FACTORS = {"Zero": moderngl.ZERO, "One": moderngl.ONE, "DstColor": moderngl.DST_COLOR,
@@ -150,6 +153,7 @@ class ProgramPass:
         self.dynamic_lightmap = dynamic_lightmap  # its realtime GI lightmap (dynamic_lightmaps.py), or None
         # a sphere is ray-traced by a surface program that leaves vertices where they are
         self.traces_spheres = unity_pass.kind == "surface" and not moves_vertices
+        self.fullscreen = fullscreen_pass.is_fullscreen(unity_pass)  # drawn as Unity's Blitter draws
 
     def draws(self, defines: dict) -> list:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
@@ -173,6 +177,8 @@ class ProgramPass:
     def bind(self, program, material, obj, frame, cache, environment_cube, first_unit, grabbed) -> None:
         from . import program as unity_program
         unity_program.bind(program, material, obj, frame, cache, environment_cube, first_unit)
+        if self.fullscreen:
+            fullscreen_pass.bind(program, frame)
         unit = first_unit + len(material.properties)
         for i, (name, texture) in enumerate(sorted(grabbed.items())):
             texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
@@ -182,16 +188,22 @@ class ProgramPass:
         unit += len(grabbed)
         unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
         used = lightmaps.bind(program, self.lightmap, cache, unit)
-        dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
+        used += dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
+        unset_samplers.bind_unset(program, cache, environment_cube, unit + used)  # last: what no binder set
 
     def sphere_vertex_array(self, ctx, program):
         from . import tessellate
         return tessellate.sphere_vertex_array(ctx, program)
 
+    def fullscreen_vertex_array(self, ctx, program):
+        # the Blitter's triangle, or its quad (fullscreen_pass.py)
+        return fullscreen_pass.vertex_array(ctx, program, fullscreen_pass.draws_quad(self.unity_pass))
+
 
 class UnitySource:
     """``MaterialSource`` of a material whose surface is a Unity shader (module doc)."""
     camera_near = UNITY_CAMERA_NEAR
+    camera_far = UNITY_CAMERA_FAR
 
     def __init__(self, shader, lightmap=None):
         self.shader = shader  # model.UnityShader: every pass that runs
@@ -202,12 +214,14 @@ class UnitySource:
     def passes(self, material) -> list:
         out = []
         for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
-            if _skipped(p, self.shader.path):
+            if _skipped(p, self.shader.path) or fullscreen_pass.not_drawn(p, out):
                 continue
             for name in dict.fromkeys(_NAMED_TEXTURES.findall(_read_text(p, self.shader.path))
                                       if p.kind != "grab" else ()):
                 if not any(q.grab == name for q in out):  # URP's opaque copy, or its colour target
                     out.append(GrabPass(GrabPassModel(name, p.program_line)))
+            if fullscreen_pass.is_fullscreen(p):  # its _BlitTexture: the camera's colour so far
+                out.append(fullscreen_pass.SourceGrab())
             out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
                                                                         self.lightmap, self.dynamic_lightmap))
         return out
@@ -225,7 +239,13 @@ class UnitySource:
         white albedo, metallic 0, smoothness 0.5): the harness has no Deferred pass of its own
         to run (render/camera_textures.py)."""
         from ...scene.gbuffer_surface import DEFAULT_STANDARD_SURFACE
+        if self.draws_fullscreen(material):  # no surface of its own there (fullscreen_pass.py)
+            return None
         return DEFAULT_STANDARD_SURFACE if _render_queue(self.shader.path) <= _OPAQUE_QUEUE_LIMIT else None
+
+    def draws_fullscreen(self, material) -> bool:
+        """Whether it draws a full-screen pass, after the rest of the scene (fullscreen_pass.py)."""
+        return any(fullscreen_pass.is_fullscreen(p) for p in self.shader.passes)
 
     def defines(self, material) -> dict:
         return {k: 1 for k in material.keywords}  # the keywords the material enables

@@ -23,7 +23,7 @@ from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from .lightmaps import ENGINE_SET_TEXTURES
-from . import fixed_function, shaderlab, texture_objects
+from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
 from .written_globals import copied_written_globals
@@ -107,8 +107,14 @@ def _property(m: re.Match, where: str, warnings: list) -> M.Property:
     if kind in ("Float", "Range", "Int"):
         default = _number(default_text, where)
         if rng is not None and not rng[0] <= default <= rng[1]:
-            raise UnityShaderError(f"{where}: {name}: default {default_text} lies outside its "
-                                   f"Range({rng[0]:g}, {rng[1]:g})")
+            # Unity keeps it: a new material takes the default as written (ScriptReference,
+            # Shader.GetPropertyDefaultFloatValue and GetPropertyRangeLimits give the two
+            # apart), and the Range only bounds the Inspector's slider (MaterialEditor.
+            # RangeProperty "draws a range slider"); nothing in Unity clamps it until a user
+            # drags that slider.
+            warnings.append(f"{where}: {name}: default {default_text} lies outside its Range({rng[0]:g}, "
+                            f"{rng[1]:g}); used as written, as Unity does (its Range bounds the Inspector's "
+                            "slider only)")
     elif kind in ("Color", "Vector"):
         v = re.fullmatch(r"\(\s*([^)]*)\)", default_text)
         parts = [p for p in v.group(1).split(",")] if v else []
@@ -160,11 +166,10 @@ def _properties_in(text: str, first_line: int, path: Path, warnings: list) -> di
 # property's value is the enum's index (Unity's scripting reference: CullMode, BlendMode,
 # CompareFunction).
 _CULL_ENUM = ("off", "front", "back")
-BLEND_FACTORS = ("Zero", "One", "DstColor", "SrcColor", "OneMinusDstColor", "SrcAlpha",
-                 "OneMinusSrcColor", "DstAlpha", "OneMinusDstAlpha", "SrcAlphaSaturate", "OneMinusSrcAlpha")
+BLEND_FACTORS = shaderlab.BLEND_FACTORS
 _ZTEST_ENUM = ("always", "never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always")
 ZTESTS = {"less": "less", "greater": "greater", "lequal": "lequal", "gequal": "gequal", "equal": "equal",
-          "notequal": "notequal", "always": "always", "never": "never", "off": "always"}
+          "notequal": "notequal", "always": "always", "never": "never", "off": "always", "on": "lequal"}
 
 
 def _state_words(args: str, props: dict, where: str, enum=None) -> list[str]:
@@ -217,6 +222,8 @@ def apply_state(commands, state: M.RenderState, props: dict, path: Path, warning
             if value not in ZTESTS:
                 raise UnityShaderError(f"{where}: ZTest {c.args}: expected one of Less, Greater, LEqual, "
                                        "GEqual, Equal, NotEqual, Always")
+            if value == "on":  # ShaderLab takes it (tutorial shaders write it); the test is on: the default LEqual
+                warnings.append(f"{where}: ZTest {c.args}: read as ZTest LEqual (the default depth test)")
             state.ztest = ZTESTS[value]
         elif word == "blend":
             words = _state_words(c.args, props, where, BLEND_FACTORS)
@@ -551,7 +558,11 @@ class Pipeline:
     keywords: tuple = ()    # keywords it enables where a program declares them (its renderer's)
 
 
-BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG",), ())
+# Its passes run CGPROGRAM and HLSLPROGRAM blocks alike (Unity's manual, "HLSL in Unity": an
+# HLSLPROGRAM only lacks CGPROGRAM's automatic HLSLSupport/UnityShaderVariables includes, which
+# a built-in HLSLPROGRAM brings itself by including UnityCG.cginc; the reader declares Unity's
+# built-in variables for either block).
+BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG", "HLSL"), ())
 # The Universal Render Pipeline (importers/urp/): forward passes drawn once with every light;
 # a pass without a LightMode is SRPDefaultUnlit.
 URP_SKIPPED_LIGHT_MODES = {
@@ -648,7 +659,11 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
             "shader's folder (or below it) or its Unity project's Assets, or name its folder in "
             "$PBRLAB_UNITY_SHADERS")
-    shader = read_shader(found, pipeline)
+    try:
+        shader = read_shader(found, pipeline)
+    except UnityShaderError as exc:  # the Fallback cannot run either: both reasons, this shader's first
+        raise UnityShaderError(f'{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback '
+                               f'"{layout.fallback}" ({found.name}) cannot run either: {exc}') from None
     shader.notes.insert(0, f'{path}:{layout.fallback_line}: no SubShader runs ({why}); Fallback '
                         f'"{layout.fallback}" ({found}) is drawn instead')
     return shader
@@ -671,8 +686,13 @@ def find_shader(name: str, near: Path):
     """The ``.shader`` file whose ``Shader "name"`` is ``name`` (or ``Legacy Shaders/name``,
     Unity's old built-in names), in the folder of ``near`` and below, then anywhere in its Unity
     project (``unity_project_folders``), then the folders of $PBRLAB_UNITY_SHADERS."""
-    import os
     wanted = {name, f"Legacy Shaders/{name}"}
+    return next((candidate for candidate, found in shader_names(near) if found in wanted), None)
+
+
+def shader_names(near: Path):
+    """(file, its Shader "name") of every other ``.shader`` file ``find_shader`` searches, in its order."""
+    import os
     roots = ([near.parent] + unity_project_folders(near)
              + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p])
     seen = set()
@@ -686,9 +706,18 @@ def find_shader(name: str, near: Path):
             except OSError:
                 continue
             m = re.search(r'\bShader\s*"([^"]*)"', blank_comments(head))
-            if m and m.group(1) in wanted and candidate.resolve() != near.resolve():
-                return candidate
-    return None
+            if m and candidate.resolve() != near.resolve():
+                yield candidate, m.group(1)
+
+
+def _named_alike(name: str, near: Path) -> str:
+    """A hint naming the shaders whose name ends as ``name``'s does (a UsePass or Fallback that
+    names a shader by another path: Unity finds a shader by its whole name only)."""
+    last = name.rpartition("/")[2].lower()
+    alike = [f'"{found}" ({candidate.name})' for candidate, found in shader_names(near)
+             if found.rpartition("/")[2].lower() == last]
+    return (f"; the project has {', '.join(alike[:3])}: Unity finds a shader by its whole name, so the "
+            "name written must be that one") if alike else ""
 
 
 def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN) -> list:
@@ -735,6 +764,12 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         elif kind == "grabpass":
             _, name, line = item
             passes.append(M.GrabPass(name, line))
+    if not any(p.kind != "grab" for p in passes) and render_objects.custom_tags(sub, pipeline):
+        # passes of a custom LightMode: drawn as a Render Objects renderer feature would (render_objects.py)
+        tags = render_objects.custom_tags(sub, pipeline)
+        del notes[first_note:]
+        warnings.append(render_objects.warning(path, sub, tags))
+        return _subshader_passes(layout, sub, props, warnings, notes, render_objects.drawing(pipeline, tags))
     if not any(p.kind != "grab" for p in passes):
         skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
@@ -752,7 +787,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {pipeline.skipped[mode.lower()]}")
         return None
     if mode.lower() not in pipeline.drawn:
-        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: not a forward pass")
+        notes.append(f"{path}:{p.line}: {label} (LightMode {mode}) skipped: {render_objects.skip_reason(mode, pipeline)}")
         return None
     if p.fixed_function and p.program is not None:
         # a program draws the pass: Unity ignores its fixed-function commands (docs, "ShaderLab:
@@ -762,10 +797,13 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     if p.program is None:
         state = M.RenderState()
         apply_state(sub.state + p.state, state, props, path, [], surface=False)
-        if not p.fixed_function and state.color_mask == "0":
-            notes.append(f"{path}:{p.line}: a depth-only {label} (ColorMask 0) skipped")
-            return None
-        if pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
+        # a depth/stencil mask (ColorMask 0, no fixed-function command): Unity draws it in every
+        # pipeline (an untagged pass is URP's SRPDefaultUnlit); its generated program's colour never
+        # reaches the target, so it draws as written: depth (where ZWrite is on) and no colour
+        writes_no_colour = not p.fixed_function and state.color_mask == "0"
+        if writes_no_colour:
+            notes.append(no_colour_note(path, p, label, state, sub.state + p.state))
+        elif pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
             raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
                                    "runs programmable passes only")
         # Unity generates a program for a fixed-function pass (a pass with no command at all
@@ -800,6 +838,21 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     return vf
 
 
+# What a corpus summary lists a shader by when it renders but writes no colour by its own
+# ColorMask (checking/unity_corpus.no_colour_reason reads it from the note).
+NO_COLOUR_BY_COLOR_MASK = "draws no colour by its ColorMask"
+
+
+def no_colour_note(path: Path, p, label: str, state: M.RenderState, commands: list) -> str:
+    """The note of a program-less ``ColorMask 0`` pass drawn as written: what it writes instead."""
+    words = {c.word.lower(): c for c in commands}
+    writes = ["depth"] if state.zwrite is not False else []
+    stencil = (" (its Stencil block, line " + str(words["stencil"].line)
+               + ", is not applied here: the harness has no stencil buffer)") if "stencil" in words else ""
+    return (f"{path}:{p.line}: {label} {NO_COLOUR_BY_COLOR_MASK} (ColorMask 0): drawn as written, writing "
+            f"{' and '.join(writes) or 'nothing the image shows (ZWrite Off)'}{stencil}")
+
+
 def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list,
               pipeline: Pipeline = BUILTIN):
     """``UsePass "Shader/NAME"``: the pass named NAME (Unity upper-cases pass names) of that
@@ -810,7 +863,7 @@ def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, not
     if found is None:
         raise UnityShaderError(f'{path}:{line}: UsePass "{name}": no shader "{shader_name}" here (put its '
                                ".shader file in this shader's folder or its Unity project's Assets, or name "
-                               "its folder in $PBRLAB_UNITY_SHADERS)")
+                               f"its folder in $PBRLAB_UNITY_SHADERS){_named_alike(shader_name, path)}")
     try:
         layout = shaderlab.read_layout(read_source(found), found)
     except (OSError, UnicodeDecodeError, shaderlab.ShaderLabError) as exc:

@@ -18,6 +18,7 @@ from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
+from .own_library_functions import renamed_in_own_files
 from .written_globals import copied_in_includes, copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
@@ -60,13 +61,6 @@ def _param(text: str, where: str) -> tuple:
     return qual, words[0], words[1], semantic
 
 
-def drawn_parameters(text: str) -> str:
-    """A parameter list as the drawn variant has it: the text is preprocessed (active_text
-    blanked the branches not taken) but keeps its #if lines (``Interpolators input #ifdef
-    _DOUBLE_SIDED_NORMALS , FRONT_FACE_TYPE f : FRONT_FACE_SEMANTIC #endif``), taken out here."""
-    return re.sub(r"^[ \t]*#[^\n]*", "", text, flags=re.M)
-
-
 def _function_signature(masked: str, name: str, where_of):
     m = None
     for cand in re.finditer(r"\b(" + IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked):
@@ -79,7 +73,9 @@ def _function_signature(masked: str, name: str, where_of):
     while i < len(masked) and depth:
         depth += {"(": 1, ")": -1}.get(masked[i], 0)
         i += 1
-    params_text = drawn_parameters(masked[m.end():i - 1])
+    # the #if lines of a parameter list (`, out half4 c : SV_Target0 #ifdef _WRITE_RENDERING_LAYERS
+    # , out float4 layers : SV_Target1 #endif`): the text is the active branch's, the lines go
+    params_text = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():i - 1], flags=re.M)
     rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
     if rest is None:
         return None
@@ -95,6 +91,8 @@ def _function_signature(masked: str, name: str, where_of):
     return kind, params, rest.group(1) or "", m.start()
 
 
+# HLSLSupport.cginc's clip-space position member, UNITY_POSITION(pos): float4 pos : SV_POSITION.
+_UNITY_POSITION = re.compile(r"\bUNITY_POSITION\s*\(\s*(" + IDENT + r")\s*\)")
 # Upper-case macro words (with their arguments) at the start of a struct member's text.
 _LEADING_MACROS = re.compile(r"^(?:[A-Z][A-Z0-9_]*(?:\s*\([^()]*\))?\s+)+(?=[A-Za-z_])")
 
@@ -115,6 +113,7 @@ def _structs(masked: str) -> dict:
         end = matching_brace(masked, m.end() - 1)
         members, flat = [], set()
         body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        body = _UNITY_POSITION.sub(r"float4 \1 : SV_POSITION", body)
         for decl in body.split(";"):
             # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
             # lead the member written after them: cut them off so that member is read
@@ -144,6 +143,22 @@ def _structs(masked: str) -> dict:
                 flat.update(names)
         out[m.group(1)] = M.ShaderStruct(m.group(1), members, frozenset(flat))
     return out
+
+
+# HLSL's and Cg's built-in scalar, vector and matrix types (float, half3, fixed4x4, uint2, ...).
+_BUILTIN_TYPE = re.compile(r"(?:void|bool|int|uint|dword|half|float|double|fixed|min16float|min10float|min16int|"
+                           r"min16uint)(?:[1-4](?:x[1-4])?)?")
+
+
+def _undefined_type(found: dict, structs: dict, functions: dict):
+    """(type, function) of the first type the vertex or fragment signature names that is neither
+    a built-in type nor a struct the program (with its includes) defines; None when all are."""
+    for role in ("vertex", "fragment"):
+        kind, params, _, _ = found[role]
+        for name in [kind] + [p[1] for p in params]:
+            if name not in structs and not _BUILTIN_TYPE.fullmatch(name):
+                return name, functions[role]
+    return None
 
 
 def _unresolved_include(program: str, folder: Path):
@@ -183,6 +198,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
         rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
         written += in_includes
+    program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
@@ -215,6 +231,13 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
                                    "is defined")
         found[role] = sig
     structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
+    undefined = _undefined_type(found, structs, {"vertex": vertex, "fragment": fragment})
+    # (an include of the drawn variant: one under a branch not taken is not read)
+    unresolved = _unresolved_include(everything[:len(masked)], path.parent) if undefined else None
+    if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
+        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include files pbrlab "
+                               f"has no stand-in for; pbrlab does not provide it ({undefined[1]}() takes or gives "
+                               f"{undefined[0]}, a type none of the rest defines)")
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
                 if "geometry" in pragmas else None)
     tessellation = (parse_tessellation(everything, pragmas["hull"][0][0], pragmas["domain"][0][0], structs, where,

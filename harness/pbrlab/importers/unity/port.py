@@ -102,6 +102,15 @@ def _static_global(line: str) -> str:
     return f"{indent}{kind} {name}{size} = {value};{line[m.end():]}"
 
 
+# A global of HLSL's without ``static`` is a uniform, and an initialiser of one is not its value
+# in Unity: the material sets every uniform, to 0 where neither a property nor a global sets it
+# (Unity's manual, "Accessing shader properties in Cg/HLSL": a value defined nowhere is 0; glslang
+# reads such a global as a uniform as well). GLSL would keep the initialiser as a plain global's
+# value, so the port declares the uniform alone.
+_INITIALISED_GLOBAL = re.compile(r"^(\s*)(?:uniform\s+)?((?:[biu]?vec[234]|mat[234](?:x[234])?|float|int|uint)"
+                                 r"\s+\w+)\s*=[^;{}]*;")
+
+
 def _globals_uniform(code: str) -> str:
     """``uniform`` before global variable declarations (brace depth 0, not functions/structs);
     ``static`` dropped before one (_STATIC_GLOBAL)."""
@@ -110,8 +119,11 @@ def _globals_uniform(code: str) -> str:
     for line in lines:
         if depth == 0 and not line.lstrip().startswith("#"):
             m = decl.match(line)
+            initialised = _INITIALISED_GLOBAL.match(line)
             if m:
                 line = f"{m.group(1)}uniform {m.group(2)}{line[m.end():]}"
+            elif initialised:  # a uniform's initialiser Unity ignores (_INITIALISED_GLOBAL)
+                line = f"{initialised.group(1)}uniform {initialised.group(2)};{line[initialised.end():]}"
             else:
                 line = _static_global(line)
         depth += line.count("{") - line.count("}")

@@ -22,6 +22,7 @@ import dataclasses
 import functools
 
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -325,6 +326,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "unity_OrthoParams", (1.0 / frame.proj[0, 0], 1.0 / frame.proj[1, 1], 0.0, 1.0)
          if orthographic else (0.0, 0.0, 0.0, 0.0))
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
+    _set(program, "unity_FogColor", FOG_COLOR)
     if "_SpecColor" not in material.properties:
         _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
     unit = first_unit
@@ -372,6 +374,11 @@ def _shader_name(program) -> str:
     return (getattr(program, "extra", None) or {}).get("shader", "surface shader")
 
 
+# RenderSettings.fogColor's default (Unity's Lighting window: Fog Color (0.5, 0.5, 0.5, 1)); pbrlab
+# draws no fog, so a shader that mixes towards it by its own factor sees Unity's default colour.
+FOG_COLOR = (0.5, 0.5, 0.5, 1.0)
+
+
 def _bind_vector(program, name: str, what: str, value) -> None:
     """A Color/Vector (or a texture's _ST) to a float4/3/2/1 uniform: its leading components."""
     uniforms = programs.uniforms_named(program, name)
@@ -387,10 +394,20 @@ def _bind_number(program, name: str, kind: str, value: float) -> None:
     uniforms = programs.uniforms_named(program, name)
     for uniform in uniforms:
         gl_type = programs.uniform_type(uniform)
-        if gl_type not in ("float", "int", "uint", "bool"):
+        if gl_type not in ("float", "int", "uint", "bool", *_FLOAT_VECTORS):
             raise _mismatch(program, f"{kind} property {name} (a number)", name, uniform)
     if uniforms:
         gl_type = programs.uniform_type(uniforms[0])
+        if gl_type in _FLOAT_VECTORS and gl_type != "float":
+            # a Float property over a float4 uniform: a script's SetColor/SetVector fills it in
+            # Unity (image effects declare it so); here the number, promoted as HLSL promotes a
+            # scalar to a vector, with a note
+            from .source_text import UnityShaderNote
+            warnings.warn(f"{_shader_name(program)}: {kind} property {name} is bound to the {gl_type} uniform "
+                          f"'{name}': its value {value:g} in every component (in Unity a script sets such a "
+                          "uniform with SetVector/SetColor)", UnityShaderNote, stacklevel=2)
+            _set(program, name, (float(value),) * _FLOAT_VECTORS[gl_type])
+            return
         _set(program, name, value if gl_type == "float" else
              bool(value) if gl_type == "bool" else int(value))
 

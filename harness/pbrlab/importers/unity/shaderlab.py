@@ -40,6 +40,11 @@ COMMANDS = frozenset(w.lower() for w in (
     "Fallback", "CustomEditor", "Properties", "Dependency", "Color"))
 
 
+# Blend's factors (ShaderLab's Blend command; BlendMode's names).
+BLEND_FACTORS = ("Zero", "One", "DstColor", "SrcColor", "OneMinusDstColor", "SrcAlpha",
+                 "OneMinusSrcColor", "DstAlpha", "OneMinusDstAlpha", "SrcAlphaSaturate", "OneMinusSrcAlpha")
+
+
 class ShaderLabError(PbrlabError):
     """A ``.shader`` file whose structure ShaderLab would not accept; the message says where."""
 
@@ -211,6 +216,21 @@ class _Tokens:
             words.append(self.next()[0])
         return " ".join(words)
 
+    def command_args(self, word: str, line: int) -> str:
+        """A state command's arguments: the rest of its line, and for a Blend whose factors do
+        not all stand on its line (``Blend SrcAlpha`` with ``OneMinusSrcAlpha`` on the next:
+        ShaderLab's grammar reads tokens, not lines, and Unity takes it) the factors that open
+        the lines after it."""
+        args = self.rest_of_line(line)
+        if word.lower() != "blend":
+            return args
+        factors = {f.lower() for f in BLEND_FACTORS}
+        words = args.split()
+        while (words and len([w for w in words if not w.isdigit()]) in (1, 3) and words[-1].lower() in factors
+               and self.peek()[0] is not None and self.peek()[0].lower() in factors):
+            words += self.rest_of_line(self.peek()[1]).split()
+        return " ".join(words)
+
     def tags(self) -> dict:
         self.expect("{")
         tags = {}
@@ -260,7 +280,7 @@ def _pass(t: _Tokens, line: int) -> PassBlock:
         elif t.peek()[0] == "{":   # Stencil { ... }, Fog { ... }
             p.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
         else:
-            p.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
+            p.state.append(StateCommand(tok, t.command_args(tok, tline), tline))
 
 
 def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
@@ -310,7 +330,7 @@ def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
         elif t.peek()[0] == "{":
             s.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
         else:
-            s.state.append(StateCommand(tok, t.rest_of_line(tline), tline))
+            s.state.append(StateCommand(tok, t.command_args(tok, tline), tline))
 
 
 def read_layout(text: str, path: Path) -> ShaderLabFile:
@@ -375,6 +395,6 @@ def read_layout(text: str, path: Path) -> ShaderLabFile:
         elif t.peek()[0] == "{":   # a Category's Material { ... }, Fog { ... }, BindChannels { ... }
             layout.category_state.append(StateCommand(tok, "{...}", tline, t.block_body()))
         elif word in COMMANDS:     # a Category's Blend, Cull, Lighting, ...
-            layout.category_state.append(StateCommand(tok, t.rest_of_line(tline), tline))
+            layout.category_state.append(StateCommand(tok, t.command_args(tok, tline), tline))
         else:
             t.rest_of_line(tline)

@@ -170,6 +170,20 @@ def project_root(name: str, folder: Path) -> Path | None:
     return None
 
 
+def missing_project_file(name: str, folder: Path) -> str:
+    """Why ``#include "Assets/..."`` (``name``) found nothing from ``folder``: Unity reads such a
+    path from the project's root, the folder that holds ``Assets/`` (Unity's ScriptReference,
+    ShaderIncludePathAttribute: shader libraries must lie under the Assets folder or in a
+    package, included by their project paths), which project_root looks for at and above the
+    including file's folder."""
+    root = next((a for a in [folder, *folder.parents] if (a / "Assets").is_dir()), None)
+    if root is None:
+        return (f"Unity reads an Assets/ path from the Unity project's root (the folder that holds Assets/), "
+                f"and no folder at or above {folder} holds an Assets/ folder: the shader lies outside its "
+                "project, whose file this is")
+    return f"Unity reads an Assets/ path from the Unity project's root, here {root}, which has no {name}"
+
+
 def own_package_root(name: str, folder: Path):
     """For ``Packages/<package>/<rest>`` written in a file of that package itself (Unity maps
     ``Packages/<package>/`` to the package's folder, wherever the package lies), (package, the
@@ -203,7 +217,9 @@ def read_source(path: Path) -> str:
     CP949, Chinese GBK, Windows-1252...) compile in Unity: its compilers read bytes, and such
     bytes sit in comments. A file that is not UTF-8 is read byte for byte (Latin-1: one
     character a byte, so lines and columns keep their numbers), with a note naming the file and
-    the line of its first such byte. OSError is the caller's."""
+    the line of its first such byte. Windows line ends (CR LF) are read as LF: one line each
+    either way, and the Cg type pass reads a line's end as LF only: a macro continued by a backslash
+    before CR LF kept Tessellation.hlsl's ``patch`` from its GLSL rename. OSError is the caller's."""
     data = Path(path).read_bytes()
     try:
         text = data.decode("utf-8")
@@ -213,7 +229,7 @@ def read_source(path: Path) -> str:
         warnings.warn(f"{path}:{line}: not UTF-8 (byte 0x{data[exc.start]:02x}, a legacy code page's); "
                       "read byte for byte, as Unity's compilers read it", UnityShaderNote, stacklevel=2)
         text = data.decode("latin-1")
-    return text.removeprefix("\ufeff")
+    return text.removeprefix("\ufeff").replace("\r\n", "\n")
 
 
 def _read_include(path: Path):
@@ -242,6 +258,10 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
     seen = set() if seen is None else seen
     for m in INCLUDE.finditer(blank_comments(program)):
         target = resolve_included(m.group(1), folder)
+        if target is None and m.group(1).startswith("Assets/"):
+            line = first_line - 1 + line_of(program, m.start())
+            raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": '
+                                      + missing_project_file(m.group(1), folder))
         if target is None or target.resolve() in seen:
             continue
         seen.add(target.resolve())

@@ -50,6 +50,12 @@ UNPROVIDED = {
     # the G-buffer's RT0..RT2 and the depth texture are rendered (render/camera_textures.py); RT3
     # (emission and ambient, the light buffer the lights add onto) is not
     "_CameraGBufferTexture3": "the G-buffer's emission and ambient target (RT3), which the harness's G-buffer pre-pass does not make",
+    **dict.fromkeys(("BSpline2Left", "BSpline2Middle", "BSpline2Right", "BSpline3Leftmost", "BSpline3MiddleLeft",
+                     "BSpline3MiddleRight", "BSpline3Rightmost", "BiquadraticFilter", "BicubicFilter",
+                     "SampleTexture2DBicubic", "SampleTexture2DBiquadratic", "SampleTexture2DArrayBicubic",
+                     "SampleTexture2DArrayBicubicLOD"),
+                    "Core RP's Filtering.hlsl (B-spline bicubic and biquadratic texture filters), whose stand-in "
+                    "declares none of them"),
     "unity_LightmapFade": "baked lightmaps, which the harness does not bake (the fade of realtime light into dual lightmaps)",
 }
 _NAME = re.compile(r"\b(" + "|".join(sorted(UNPROVIDED, key=len, reverse=True)) + r")\b")

@@ -18,6 +18,7 @@ from pathlib import Path
 from ...scene.gbuffer_surface import WORLD_NORMALS
 from ..unity import URP
 from ..unity import material as unity_material
+from ..unity.render_objects import BUILTIN_LIGHT_MODES
 from ..unity.source_text import blank_comments
 
 # The keywords URP's default renderer enables globally, where a shader declares them (the
@@ -39,14 +40,29 @@ class URPSource(unity_material.UnitySource):
         return {**{k: 1 for k in PIPELINE_KEYWORDS if k in declared}, **super().defines(material)}
 
 
+# A Scriptable Render Pipeline's shader that names no pipeline: HLSLPROGRAM blocks only, no
+# built-in .cginc included, no pass of the built-in pipeline's LightModes (render_objects'
+# BUILTIN_LIGHT_MODES), as Unity's manual's custom-SRP example ("LightMode" = "ExampleLightModeTag").
+_CG_BLOCK = re.compile(r"\bCG(?:PROGRAM|INCLUDE)\b")
+_HLSL_BLOCK = re.compile(r"\bHLSLPROGRAM\b")
+_CGINC = re.compile(r'#\s*include\s*[<"][^>"]*\.cginc[>"]')
+_LIGHT_MODE = re.compile(r'"LightMode"\s*=\s*"(\w*)"', re.I)
+
+
+def _srp_only(text: str) -> bool:
+    return bool(_HLSL_BLOCK.search(text) and not _CG_BLOCK.search(text) and not _CGINC.search(text)
+                and not any(m.lower() in BUILTIN_LIGHT_MODES for m in _LIGHT_MODE.findall(text)))
+
+
 def reads(path: Path) -> bool:
-    """Whether ``path`` is a URP shader: a SubShader tagged for URP, or a program that
-    includes URP's ShaderLibrary."""
+    """Whether ``path`` is a URP shader: a SubShader tagged for URP, a program that includes
+    URP's ShaderLibrary, or a Scriptable Render Pipeline's shader naming no pipeline (_srp_only:
+    URP is the SRP pbrlab draws)."""
     try:
         text = blank_comments(Path(path).read_text(encoding="utf-8", errors="replace"))
     except OSError:
         return False
-    return bool(_URP_TAG.search(text) or _URP_INCLUDE.search(text))
+    return bool(_URP_TAG.search(text) or _URP_INCLUDE.search(text) or _srp_only(text))
 
 
 def read_material(r, m, base: Path) -> None:

@@ -18,7 +18,9 @@
 // Unity declares it with UNITY_DECLARE_TEX2D (a texture and its sampler on Direct3D 11), which its
 // shaders read with UNITY_SAMPLE_TEX2D.
 UNITY_DECLARE_TEX2D(unity_Lightmap);
+#ifndef unity_LightmapST  // (URP's Core.hlsl stand-in, included first, defines it: an unlightmapped object's)
 float4 unity_LightmapST;
+#endif
 half4 unity_Lightmap_HDR;
 
 // RGBM in linear colour space: (x * a^y) * rgb, x = 5^2.2, y = 2.2 (unity_Lightmap_HDR).

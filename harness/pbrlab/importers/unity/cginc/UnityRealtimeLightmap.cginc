@@ -13,7 +13,9 @@
 
 // Unity declares it with UNITY_DECLARE_TEX2D (a texture and its sampler on Direct3D 11).
 UNITY_DECLARE_TEX2D(unity_DynamicLightmap);
+#ifndef unity_DynamicLightmapST  // (URP's Core.hlsl stand-in, included first, defines it: an unlightmapped object's)
 float4 unity_DynamicLightmapST;
+#endif
 half4 unity_DynamicLightmap_HDR;
 
 // Enlighten's output in linear colour space: pow((x a) rgb, y) (unity_DynamicLightmap_HDR).

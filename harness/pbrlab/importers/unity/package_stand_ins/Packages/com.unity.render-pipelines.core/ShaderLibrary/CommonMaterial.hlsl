@@ -1,5 +1,6 @@
-// pbrlab stand-in for Core RP's ShaderLibrary/CommonMaterial.hlsl: the roughness vocabulary's
-// converters (smoothness = 1 - perceptual roughness, roughness = its square; docs/conventions.md)
+// pbrlab stand-in for Core RP's ShaderLibrary/CommonMaterial.hlsl (which URP's Lighting.hlsl brings,
+// through its BRDF.hlsl): the roughness vocabulary's converters (smoothness = 1 - perceptual
+// roughness, roughness = its square; docs/conventions.md) and BlendNormal
 // (PerceptualRoughnessToRoughness and RoughnessToPerceptualRoughness are the built-in
 // prelude's, the same functions), written for pbrlab from Unity's documentation of the names
 // (Core RP's own file is under the Unity Companion License).
@@ -10,6 +11,13 @@ float PerceptualSmoothnessToPerceptualRoughness(float perceptualSmoothness) { re
 float PerceptualRoughnessToPerceptualSmoothness(float perceptualRoughness) { return 1.0 - perceptualRoughness; }
 float PerceptualSmoothnessToRoughness(float perceptualSmoothness) {
     return (1.0 - perceptualSmoothness) * (1.0 - perceptualSmoothness);
+}
+
+// Two tangent-space normals blended (Core RP's BlendNormal): the "whiteout" blend of
+// Barre-Brisebois and Hill, "Blending in Detail" (2012): xy summed, each weighted by the other's
+// z, z the product of the z's, normalized.
+float3 BlendNormal(float3 n1, float3 n2) {
+    return normalize(float3(n1.xy * n2.z + n2.xy * n1.z, n1.z * n2.z));
 }
 
 #endif

@@ -223,6 +223,7 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabFullScreenTriangle.hlsl"
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
@@ -293,5 +294,15 @@ float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _S
 // Shadows: none here (no shadow map): a coordinate of 0, full light; no shadow mask.
 #define SAMPLE_SHADOWMASK(uv) float4(1.0, 1.0, 1.0, 1.0)
 float4 TransformWorldToShadowCoord(float3 positionWS) { return float4(0.0, 0.0, 0.0, 0.0); }
+
+// UnityPerDraw's lightmap scale-offsets (URP's UnityInput.hlsl), for an object that is not
+// lightmapped, as every object drawn with a URP shader is here (a supplied lightmap is refused
+// for URP: importers/unity/material.py): Unity sets them from the renderer's
+// lightmapScaleOffset / realtimeLightmapScaleOffset (ScriptReference: "The UV scale & offset
+// used for a lightmap", xy scale, zw offset), which keep their default, the identity (scale 1,
+// offset 0), while no lightmapper has assigned a lightmap (lightmapIndex -1, 0xFFFF: "no
+// lightmap has been assigned, which is the default", ScriptReference Renderer.lightmapIndex).
+#define unity_LightmapST float4(1.0, 1.0, 0.0, 0.0)
+#define unity_DynamicLightmapST float4(1.0, 1.0, 0.0, 0.0)
 
 #endif
