@@ -1541,7 +1541,7 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
-                if sig not in library().functions.get(fname, ()):  # the program's own (or an include's),
+                if not self.decl_only and sig not in library().functions.get(fname, ()):  # the program's own (or an include's),
                     # also beside a library function of its name (Core RP's LinearEyeDepth(d, zParams))
                     self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
