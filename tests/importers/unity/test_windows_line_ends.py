@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab.checking import unity_corpus as corpus
-from pbrlab.importers.unity import port
+from pbrlab.importers.unity import cg_types, port
 from pbrlab.importers.unity.source_text import read_source
 
 SHADER = textwrap.dedent("""\
@@ -70,9 +70,10 @@ def test_the_reader_gives_lf_and_keeps_the_line_count(tmp_path):
 
 
 def test_the_port_needs_the_lf_text():
-    """Control: the port given the CR LF text as it was read before leaves the reserved
-    parameters unrenamed after the continued macro (the defect), and renames them in LF text."""
-    crlf = port.port_text(INCLUDE.replace("\n", "\r\n"))
+    """Control: the type pass given the CR LF text as it was read before cannot read the function
+    after the continued macro (the defect: it is left as written; since session 42 its reserved
+    names are renamed even so, cg_types._Parser.rename_reserved), and reads it in LF text."""
+    crlf = cg_types.convert_detail(INCLUDE.replace("\n", "\r\n"))
     lf = port.port_text(INCLUDE)
     assert "pbr_unity_patch" in lf and "pbr_unity_input" in lf
-    assert "pbr_unity_patch" not in crlf and "pbr_unity_input" not in crlf
+    assert cg_types.convert_detail(INCLUDE).skipped == [] and crlf.skipped != []
