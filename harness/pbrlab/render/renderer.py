@@ -258,7 +258,7 @@ def _draw_order(scene: Scene, frame):
     blended = [o for o in scene.objects if scene.materials[o.material].alpha_mode in BLENDED_ALPHA_MODES]
     blended.sort(key=lambda o: -float(np.linalg.norm(centre(o) - frame.position)))
 
-    def fullscreen(o):  # a full-screen pass (Unity's Blitter: importers/unity/fullscreen_pass.py)
+    def fullscreen(o):  # a full-screen pass (its material source says so: draws_fullscreen)
         material = scene.materials[o.material]
         return getattr(source_of(material), "draws_fullscreen", lambda m: False)(material)
     return sorted(opaque + blended, key=fullscreen)  # (stable) they read the scene: drawn last

@@ -335,3 +335,27 @@ def test_included_file_as_written_is_refused_by_glslang(tmp_path, monkeypatch):
     monkeypatch.setattr(program_pass, "hlsl_includes", lambda vf: dict(vf.rewritten_includes))
     outcome = corpus.run_shader(_including_shader(tmp_path), "hlsl")
     assert outcome.status == "refused" and "no matching overloaded function" in outcome.message, outcome.message
+
+
+# --- Core RP's texel loads -------------------------------------------------------------------
+
+LOADS = PLAIN_VERTEX + """\
+    TEXTURE2D(_Ramp); SAMPLER(sampler_Ramp);
+    half4 frag(Varyings i) : SV_Target
+    {
+        half4 a = LOAD_TEXTURE2D(_Ramp, int2(0, 0));
+        half4 b = LOAD_TEXTURE2D_X_LOD(_Ramp, uint2(0, 0), 0);
+        return half4(a.r * 0.5, b.g, a.b + b.b * 0.25, 1);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_core_texel_loads_read_the_texel(tmp_path, language):
+    """LOAD_TEXTURE2D(_X)(_LOD): Texture2D.Load of the integer texel (refused before: no such
+    macro). The 1x1 default "red" texture's texel is (1, 0, 0, 1); the control, "white", moves
+    every channel."""
+    red = corpus.run_shader(_shader(tmp_path, "LoadRed", LOADS, '_Ramp ("Ramp", 2D) = "red" {}'), language)
+    _assert_every_pixel(red, (0.5, 0.0, 0.0))
+    white = corpus.run_shader(_shader(tmp_path, "LoadWhite", LOADS, '_Ramp ("Ramp", 2D) = "white" {}'), language)
+    _assert_every_pixel(white, (0.5, 1.0, 1.25))

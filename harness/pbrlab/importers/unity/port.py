@@ -213,6 +213,11 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURE2D_X_FLOAT": lambda a: f"sampler2D {a[0]}",
     "SAMPLE_TEXTURE2D_X": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_X_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    # Core RP's texel loads (Texture2D.Load(int3(coord, mip))): the port's Load (texture_methods)
+    "LOAD_TEXTURE2D": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, 0))",
+    "LOAD_TEXTURE2D_LOD": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, {a[2]}))",
+    "LOAD_TEXTURE2D_X": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, 0))",
+    "LOAD_TEXTURE2D_X_LOD": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, {a[2]}))",
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
@@ -256,6 +261,8 @@ def _expand_srp_texture_macros(code: str) -> str:
                 "SAMPLER": 1}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3
+        if m.group(1).startswith("LOAD_"):
+            need = 3 if m.group(1).endswith("_LOD") else 2
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
         spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)

@@ -101,6 +101,11 @@
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
 #define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+// Core RP's texel loads: integer texel coordinates, mip 0 unless given (Texture2D.Load)
+#define LOAD_TEXTURE2D(t, coord) t.Load(int3(coord, 0))
+#define LOAD_TEXTURE2D_LOD(t, coord, lod) t.Load(int3(coord, lod))
+#define LOAD_TEXTURE2D_X(t, coord) t.Load(int3(coord, 0))
+#define LOAD_TEXTURE2D_X_LOD(t, coord, lod) t.Load(int3(coord, lod))
 // Core RP's depth reads take a sampler (three arguments; the built-in pipeline's, which the
 // Unity prelude defines, take two): in a program that includes Core.hlsl, Core's win, as in
 // Unity where URP programs never see UnityCG.cginc's. The red channel of the texture's sample.
