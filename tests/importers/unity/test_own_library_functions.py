@@ -6,34 +6,14 @@ unseen built-in sample: one project's shared Tools.cginc) and the GLSL port call
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 import pytest
 
+from colour_pass import colour_pass
+
 from pbrlab.checking import unity_corpus as corpus
 
-SHADER = textwrap.dedent("""\
-    Shader "Test/OwnLuminance"
-    {
-        Properties { _Color ("Color", Color) = (0.75, 0.25, 0.5, 1) }
-        SubShader
-        {
-            Pass
-            {
-                CGPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "UnityCG.cginc"
-                #include "Tools.cginc"
-                fixed4 _Color;
-                float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
-                fixed4 frag() : SV_Target { return fixed4(Luminance(_Color.rgb).xxx, 1); }
-                ENDCG
-            }
-        }
-    }
-    """)
+SHADER = colour_pass("OwnLuminance", "Tools.cginc", "fixed4(Luminance(_Color.rgb).xxx, 1)")
 # the project's own Luminance: its green channel (not Unity's weighted sum)
 TOOLS = "float Luminance(in float3 c)\n{\n    return c.g;\n}\n"
 

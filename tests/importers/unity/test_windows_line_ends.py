@@ -6,36 +6,16 @@ CR LF as LF (one line either way, so every file and line a message names is unch
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 import pytest
+
+from colour_pass import colour_pass
 
 from pbrlab.checking import unity_corpus as corpus
 from pbrlab.importers.unity import cg_types, port
 from pbrlab.importers.unity.source_text import read_source
 
-SHADER = textwrap.dedent("""\
-    Shader "Test/WindowsLineEnds"
-    {
-        Properties { _Color ("Color", Color) = (0.75, 0.25, 0.5, 1) }
-        SubShader
-        {
-            Pass
-            {
-                CGPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "UnityCG.cginc"
-                #include "tint.cginc"
-                fixed4 _Color;
-                float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
-                fixed4 frag() : SV_Target { return Tinted(_Color, 0.5); }
-                ENDCG
-            }
-        }
-    }
-    """)
+SHADER = colour_pass("WindowsLineEnds", "tint.cginc", "Tinted(_Color, 0.5)")
 # a macro continued over a line end (with CR LF a backslash before CR: what the type pass misread)
 # and parameters named as GLSL reserves them (cg_types.RESERVED): the port must rename both
 INCLUDE = ("#define HALVED(x) \\\n    ((x) * 0.5)\n"
