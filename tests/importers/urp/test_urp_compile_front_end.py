@@ -359,3 +359,57 @@ def test_core_texel_loads_read_the_texel(tmp_path, language):
     _assert_every_pixel(red, (0.5, 0.0, 0.0))
     white = corpus.run_shader(_shader(tmp_path, "LoadWhite", LOADS, '_Ramp ("Ramp", 2D) = "white" {}'), language)
     _assert_every_pixel(white, (0.5, 1.0, 1.25))
+
+
+# --- Core RP and URP names the second hidden sample used (session 42) -------------------------
+
+LIGHTING = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"\n'
+
+CORE_NAMES = LIGHTING + PLAIN_VERTEX + """\
+    half4 frag(Varyings i) : SV_Target
+    {
+        // a position taken as clip space already (the identity transform): (x/w, y/w) to [0, 1]
+        float3 ndc = ComputeNormalizedDeviceCoordinatesWithZ(float3(0.5, -0.5, 0.25));
+        float3 forward = GetViewForwardDir();  // the corpus camera looks along -z
+        float3 lightmap = SampleLightmap(float2(0.5, 0.5), float3(0, 1, 0));  // no lightmap: black
+        return half4(ndc.x * 0.5 + lightmap.r, ndc.y + UNITY_RAW_FAR_CLIP_VALUE * 0.25 + forward.x,
+                     ndc.z - forward.z * 0.125 + forward.y, 1);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_core_names_of_the_second_hidden_sample(tmp_path, language):
+    """ComputeNormalizedDeviceCoordinatesWithZ((0.5, -0.5, 0.25)) = (0.75, 0.25, 0.25) (GL: no
+    flip of y); GetViewForwardDir() = (0, 0, -1) for the corpus camera at +z looking at the
+    origin; UNITY_RAW_FAR_CLIP_VALUE = 1 (depth not reversed); SampleLightmap without a lightmap
+    0. The fragment's sums: (0.375, 0.5, 0.375)."""
+    out = corpus.run_shader(_shader(tmp_path, "CoreNames", CORE_NAMES), language)
+    _assert_every_pixel(out, (0.375, 0.5, 0.375))
+
+
+SAMPLE_SH9 = LIGHTING + _vertex_passing("unused", "0.0") + """\
+    half4 frag(Varyings i) : SV_Target
+    {
+        float4 c[7];
+        c[0] = unity_SHAr; c[1] = unity_SHAg; c[2] = unity_SHAb;
+        c[3] = unity_SHBr; c[4] = unity_SHBg; c[5] = unity_SHBb; c[6] = unity_SHC;
+        float3 n = normalize(float3(0.3, 0.8, 0.5));
+        return half4(abs(SampleSH9(c, n) - SampleSH(n)) * 4096.0 + 0.25, 1);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_sample_sh9_of_unitys_packed_coefficients_is_sample_sh(tmp_path, language):
+    """Core's SampleSH9 over the coefficients gathered from unity_SHAr..unity_SHC gives what
+    SampleSH gives (the corpus sky's irradiance / pi, about 0.1-0.5 here): their difference times
+    4096 is within float32 rounding of the two evaluations' sums (a few ulps of 0.5: 1e-7,
+    4e-4 after the scale), so every pixel reads 0.25 within 1e-3; a transposed packing moves it
+    by the SH's L1 terms times 4096 (the control: SampleSH9 of c[1], c[0], ...)."""
+    out = corpus.run_shader(_shader(tmp_path, "SampleSH9", SAMPLE_SH9), language)
+    rgb = _covered_rgb(out)
+    assert np.abs(rgb - 0.25).max() < 1e-3, np.abs(rgb - 0.25).max()
+    swapped = SAMPLE_SH9.replace("c[0] = unity_SHAr; c[1] = unity_SHAg;", "c[0] = unity_SHAg; c[1] = unity_SHAr;")
+    control = _covered_rgb(corpus.run_shader(_shader(tmp_path, "SampleSH9Swapped", swapped), language))
+    assert np.abs(control - 0.25).max() > 1e-2

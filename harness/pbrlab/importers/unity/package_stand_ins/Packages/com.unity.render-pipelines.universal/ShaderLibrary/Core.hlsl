@@ -186,6 +186,8 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 #define UNITY_MATRIX_I_VP mul(UNITY_MATRIX_I_V, UNITY_MATRIX_I_P)
 // GL's clip-space near plane: z = -w (Unity's UNITY_NEAR_CLIP_VALUE on OpenGL, not reversed-Z).
 #define UNITY_NEAR_CLIP_VALUE (-1.0)
+// the far plane's raw depth (Core RP's API files: 1 where depth is not reversed, as on GL)
+#define UNITY_RAW_FAR_CLIP_VALUE (1.0)
 // The screen's size at URP's render scale, which is 1 here: _ScreenParams.
 #define _ScaledScreenParams _ScreenParams
 // URP's main light globals (Input.hlsl): the direction towards the scene's first directional
@@ -235,6 +237,25 @@ float3 GetWorldSpaceViewDir(float3 positionWS) {
     return _WorldSpaceCameraPos - positionWS;
 }
 float3 GetWorldSpaceNormalizeViewDir(float3 positionWS) { return normalize(GetWorldSpaceViewDir(positionWS)); }
+// The camera's forward direction in world space (the view matrix's -z row: Core RP's
+// GetViewForwardDir).
+float3 GetViewForwardDir() { return -UNITY_MATRIX_V[2].xyz; }
+// Core RP's Common.hlsl: a position through a clip-space transform (the identity when none is
+// given: the position is taken as clip space already), divided by w, x and y mapped from
+// [-1, 1] to [0, 1] (no flip of y: UNITY_UV_STARTS_AT_TOP is undefined on GL), z kept.
+float3 ComputeNormalizedDeviceCoordinatesWithZ(float3 position, float4x4 clipSpaceTransform) {
+    float4 positionCS = mul(clipSpaceTransform, float4(position, 1.0));
+    positionCS = positionCS / positionCS.w;
+    return float3(positionCS.xy * 0.5 + 0.5, positionCS.z);
+}
+float3 ComputeNormalizedDeviceCoordinatesWithZ(float3 position) {
+    return ComputeNormalizedDeviceCoordinatesWithZ(position, float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                                                                      0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0));
+}
+float2 ComputeNormalizedDeviceCoordinates(float3 position, float4x4 clipSpaceTransform) {
+    return ComputeNormalizedDeviceCoordinatesWithZ(position, clipSpaceTransform).xy;
+}
+float2 ComputeNormalizedDeviceCoordinates(float3 position) { return ComputeNormalizedDeviceCoordinatesWithZ(position).xy; }
 
 struct VertexPositionInputs {
     float3 positionWS;

@@ -160,6 +160,25 @@ float3 SampleSH(float3 normalWS) {
 }
 float3 SampleSHVertex(float3 normalWS) { return SampleSH(normalWS); }
 float3 SampleSHPixel(float3 L2Term, float3 normalWS) { return SampleSH(normalWS); }
+// Core RP's EntityLighting.hlsl: the order-2 SH polynomial of Unity's packed coefficients (the
+// layout of unity_SHAr..unity_SHC: per channel dot(SHA, (n, 1)) + dot(SHB, n.xyzz * n.yzzx) +
+// SHC (n.x^2 - n.y^2)), from coefficients a shader gathers itself (SampleSH9(c[7], n)).
+float3 SHEvalLinearL0L1(float3 N, float4 shAr, float4 shAg, float4 shAb) {
+    float4 vA = float4(N, 1.0);
+    return float3(dot(shAr, vA), dot(shAg, vA), dot(shAb, vA));
+}
+float3 SHEvalLinearL2(float3 N, float4 shBr, float4 shBg, float4 shBb, float4 shC) {
+    float4 vB = N.xyzz * N.yzzx;
+    return float3(dot(shBr, vB), dot(shBg, vB), dot(shBb, vB)) + shC.rgb * (N.x * N.x - N.y * N.y);
+}
+float3 SampleSH9(float4 SHCoefficients[7], float3 N) {
+    return SHEvalLinearL0L1(N, SHCoefficients[0], SHCoefficients[1], SHCoefficients[2])
+         + SHEvalLinearL2(N, SHCoefficients[3], SHCoefficients[4], SHCoefficients[5], SHCoefficients[6]);
+}
+// URP's SampleLightmap: the static (and dynamic) lightmap's light where LIGHTMAP_ON
+// (DYNAMICLIGHTMAP_ON) is set; a URP object here has no lightmap, so black, as URP gives then.
+float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
+float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
 // A varyings member for per-vertex SH: declared without its semantic, since SAMPLE_GI evaluates
 // the SH per pixel here (URP's default) and never reads it.
 #define DECLARE_LIGHTMAP_OR_SH(lmName, shName, index) float3 shName
