@@ -148,6 +148,12 @@ vec4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// the fixed-function pipeline's texture matrices (UnityShaderVariables.cginc's glstate_matrix_texture0..3):
+// the identity unless a legacy SetTexture's Matrix sets one, which no program-drawn pass does
+#define UNITY_MATRIX_TEXTURE0 mat4(1.0)
+#define UNITY_MATRIX_TEXTURE1 mat4(1.0)
+#define UNITY_MATRIX_TEXTURE2 mat4(1.0)
+#define UNITY_MATRIX_TEXTURE3 mat4(1.0)
 // UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
 vec2 UnityStereoScreenSpaceUVAdjust(vec2 uv, vec4 scaleAndOffset) { return uv; }
 vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
@@ -425,6 +431,11 @@ vec2 TransformViewToProjection(vec2 v) {
 
 vec3 TransformViewToProjection(vec3 v) {
     return mat3(UNITY_MATRIX_P) * v;
+}
+
+// UnityCG.cginc's MultiplyUV: a texture coordinate through a texture matrix, as (u, v, 0, 0)
+vec2 MultiplyUV(mat4 mat, vec2 inUV) {
+    return (mat * vec4(inUV, 0.0, 0.0)).xy;
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

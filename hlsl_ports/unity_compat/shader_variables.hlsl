@@ -149,6 +149,12 @@ static float4 unity_SpotDirection[8];
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// the fixed-function pipeline's texture matrices (UnityShaderVariables.cginc's glstate_matrix_texture0..3):
+// the identity unless a legacy SetTexture's Matrix sets one, which no program-drawn pass does
+#define UNITY_MATRIX_TEXTURE0 float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+#define UNITY_MATRIX_TEXTURE1 float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+#define UNITY_MATRIX_TEXTURE2 float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+#define UNITY_MATRIX_TEXTURE3 float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
 // UnityCG.cginc's single-pass stereo helpers: one eye, so the coordinates as given
 float2 UnityStereoScreenSpaceUVAdjust(float2 uv, float4 scaleAndOffset) { return uv; }
 float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return uv; }
@@ -425,6 +431,11 @@ float2 TransformViewToProjection(float2 v) {
 
 float3 TransformViewToProjection(float3 v) {
     return mul((float3x3)UNITY_MATRIX_P, v);
+}
+
+// UnityCG.cginc's MultiplyUV: a texture coordinate through a texture matrix, as (u, v, 0, 0)
+float2 MultiplyUV(float4x4 mat, float2 inUV) {
+    return mul(mat, float4(inUV, 0.0, 0.0)).xy;
 }
 
 // Unity's ComputeNonStereoScreenPos with _ProjectionParams.x = 1 (no flip on GL): xy in

@@ -149,3 +149,16 @@ def test_an_array_of_vectors_from_a_flat_list_of_numbers(tmp_path, language):
     image = _render(tmp_path, _shader(tmp_path, "flat", body), language)
     got = image[_covered(image)][:, :3]
     assert np.array_equal(got, np.broadcast_to([0.375, 0.5, 0.75], got.shape))
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_texture_matrices_are_the_identity_and_multiply_uv_applies_one(tmp_path, language):
+    """UNITY_MATRIX_TEXTURE0..3 (the fixed-function texture matrices: the identity where no
+    SetTexture Matrix sets one) and UnityCG's MultiplyUV(mat, uv) = mul(mat, (u, v, 0, 0)).xy: the
+    identity keeps (0.25, 0.75); the control, a matrix of 0.5 on its diagonal, halves it."""
+    body = ("            float2 a = MultiplyUV(UNITY_MATRIX_TEXTURE0, float2(0.25, 0.75));\n"
+            "            float2 b = MultiplyUV(float4x4(0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1), float2(0.25, 0.75));\n"
+            "            return float4(a, b.x + b.y, 1);")
+    image = _render(tmp_path, _shader(tmp_path, "texmat", body), language)
+    got = image[_covered(image)][:, :3]
+    assert np.array_equal(got, np.broadcast_to([0.25, 0.75, 0.5], got.shape))

@@ -413,3 +413,19 @@ def test_sample_sh9_of_unitys_packed_coefficients_is_sample_sh(tmp_path, languag
     swapped = SAMPLE_SH9.replace("c[0] = unity_SHAr; c[1] = unity_SHAg;", "c[0] = unity_SHAg; c[1] = unity_SHAr;")
     control = _covered_rgb(corpus.run_shader(_shader(tmp_path, "SampleSH9Swapped", swapped), language))
     assert np.abs(control - 0.25).max() > 1e-2
+
+
+TIME_PARAMETERS = PLAIN_VERTEX + """\
+    half4 frag(Varyings i) : SV_Target
+    {
+        return half4(_TimeParameters.x + 0.25, _TimeParameters.y + 0.5, _TimeParameters.z * 0.75, 1);
+    }
+"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_time_parameters_are_t_sin_cos_of_the_still_frame(tmp_path, language):
+    """URP's _TimeParameters = (t, sin t, cos t, 0) with the harness's t = 0 (_Time's): (0, 0, 1);
+    an undeclared name before (15 shaders of the third hidden sample)."""
+    _assert_every_pixel(corpus.run_shader(_shader(tmp_path, "TimeParameters", TIME_PARAMETERS), language),
+                        (0.25, 0.5, 0.75))

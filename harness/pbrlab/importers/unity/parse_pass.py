@@ -18,6 +18,7 @@ from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
+from .unprovided import missing_include
 from .own_library_functions import renamed_in_own_files
 from .written_globals import copied_in_includes, copied_written_globals
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -224,8 +225,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         if sig is None:
             unresolved = _unresolved_include(program, path.parent)
             if unresolved:  # most likely where the function lives: name the file, not the function
-                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include "
-                                       "files pbrlab has no stand-in for; pbrlab does not provide it "
+                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+                                       "pbrlab does not provide it "
                                        f"(#pragma {role} {name} names a function none of the rest defines)")
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
                                    "is defined")
@@ -235,8 +236,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     # (an include of the drawn variant: one under a branch not taken is not read)
     unresolved = _unresolved_include(everything[:len(masked)], path.parent) if undefined else None
     if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
-        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, one of Unity's include files pbrlab "
-                               f"has no stand-in for; pbrlab does not provide it ({undefined[1]}() takes or gives "
+        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+                               f"pbrlab does not provide it ({undefined[1]}() takes or gives "
                                f"{undefined[0]}, a type none of the rest defines)")
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
                 if "geometry" in pragmas else None)

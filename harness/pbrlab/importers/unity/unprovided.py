@@ -69,6 +69,21 @@ _UNITY_SPELLING = re.compile(r"\b(unity_\w+|UNITY_\w+|Unity[A-Z]\w+|_Camera\w*Te
 # Unity's packages (Packages/com.unity.*/...: the render pipelines' ShaderLibrary, Shader Graph).
 _MISSING_INCLUDE = re.compile(r'(?:header name: |cannot find include ")([\w./-]+\.cginc|Packages/com\.unity\.[\w./-]+)')
 _AT_LINE = re.compile(r"([^\s:]+\.(?:shader|cginc)):(\d+)")
+# Unity's own include files by name: its packages' and the built-in pipeline's CGIncludes (their
+# names begin with Unity, or are these); any other missing include is the project's own.
+_UNITY_INCLUDES = {"Lighting.cginc", "AutoLight.cginc", "HLSLSupport.cginc", "Tessellation.cginc",
+                   "TerrainEngine.cginc", "TerrainSplatmapCommon.cginc", "TerrainPreview.cginc",
+                   "TerrainTool.cginc", "GLSLSupport.glslinc"}
+
+
+def missing_include(name: str) -> str:
+    """What an unresolved ``#include "name"`` is, in a refusal's words: one of Unity's include
+    files pbrlab has no stand-in for, or (any other name) the project's own file that no folder
+    holds, which Unity would not find either."""
+    base = name.rsplit("/", 1)[-1]
+    if name.startswith("Packages/com.unity.") or base.startswith(("Unity", "SpeedTree")) or base in _UNITY_INCLUDES:
+        return "one of Unity's include files pbrlab has no stand-in for"
+    return "an include file of the project's that no folder beside the shader or above it holds (Unity would not find it either)"
 
 
 @functools.lru_cache(maxsize=1)
@@ -109,7 +124,7 @@ def named_missing(message: str, shader=None):
             return m.group(1), UNPROVIDED[m.group(1)]
         m = _MISSING_INCLUDE.search(line)
         if m:
-            return m.group(1), "one of Unity's include files pbrlab has no stand-in for"
+            return m.group(1), missing_include(m.group(1))
         source = _source_line(line, shader)
         m = _NAME.search(source)  # a syntax error at a line that uses one (a declaring macro)
         if m:

@@ -188,6 +188,9 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 #define UNITY_NEAR_CLIP_VALUE (-1.0)
 // the far plane's raw depth (Core RP's API files: 1 where depth is not reversed, as on GL)
 #define UNITY_RAW_FAR_CLIP_VALUE (1.0)
+// URP's time globals (UnityInput.hlsl: _TimeParameters = (t, sin t, cos t, 0)) from the built-in
+// _Time the harness sets (t = _Time.y: 0 in a still frame)
+#define _TimeParameters float4(_Time.y, sin(_Time.y), cos(_Time.y), 0.0)
 // The screen's size at URP's render scale, which is 1 here: _ScreenParams.
 #define _ScaledScreenParams _ScreenParams
 // URP's main light globals (Input.hlsl): the direction towards the scene's first directional
