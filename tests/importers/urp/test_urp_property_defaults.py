@@ -65,3 +65,14 @@ def test_a_uniform_initialiser_is_not_its_value(tmp_path, language):
     text = urp_pass("initialised global", "return float4(_Gain + 0.25, _Kept, 0.0, 1.0);", INITIALISED)
     pixels, _ = render_constant(tmp_path, text, language, environment=False)
     assert (np.abs(pixels[:, :2] - [0.25, 0.5]).max(axis=1) > BOUND).mean() == 0.0
+
+
+def test_a_macros_body_keeps_its_initialised_locals():
+    """A line of a multi-line #define at brace depth 0 (UnityStandardParticles.cginc's
+    fragColorMode(i): ``half3 particleHSV = RGBtoHSV(...); \\``) is the macro's text, not a global:
+    its initialiser stays; a global's after it is still taken out (the control)."""
+    from pbrlab.importers.unity import port
+    text = "#define TINT(i) \\\n    float hsv = i.x; \\\n    i.y = hsv;\nfloat g = 2.0;\n"
+    ported = port.port_text(text)
+    assert "float hsv = i.x;" in ported and "uniform float hsv" not in ported
+    assert "uniform float g;" in ported

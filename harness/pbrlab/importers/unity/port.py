@@ -112,12 +112,15 @@ _INITIALISED_GLOBAL = re.compile(r"^(\s*)(?:uniform\s+)?((?:[biu]?vec[234]|mat[2
 
 
 def _globals_uniform(code: str) -> str:
-    """``uniform`` before global variable declarations (brace depth 0, not functions/structs);
-    ``static`` dropped before one (_STATIC_GLOBAL)."""
+    """``uniform`` before global variable declarations (brace depth 0, not functions/structs, not
+    a line of a multi-line #define); ``static`` dropped before one (_STATIC_GLOBAL)."""
     lines, depth, out = code.split("\n"), 0, []
     decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
+    continued = False  # the line continues a preprocessor directive (a macro's body, after a backslash)
     for line in lines:
-        if depth == 0 and not line.lstrip().startswith("#"):
+        directive = continued or line.lstrip().startswith("#")
+        continued = directive and line.rstrip().endswith("\\")
+        if depth == 0 and not directive:
             m = decl.match(line)
             initialised = _INITIALISED_GLOBAL.match(line)
             if m:
