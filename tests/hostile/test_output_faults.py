@@ -141,7 +141,9 @@ _SLOW_WRITER = textwrap.dedent("""
     def slow(tmp, spec, pixels, target):
         real(tmp, spec, pixels, target)
         print("WRITING", flush=True)
-        time.sleep(120)
+        for _ in range(1200):  # 0.1 s steps: a process-directed signal may land on one of
+            time.sleep(0.1)    # llvmpipe's threads, and Python runs its handler only when the
+                               # main thread returns to the interpreter (one 120 s sleep: a CI timeout)
     images._encode = slow
     sys.exit(cli.main(sys.argv[1:]))
 """)
