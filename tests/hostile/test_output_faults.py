@@ -133,8 +133,12 @@ def test_a_full_disk_keeps_the_good_file(scene_file, tmp_path, capsys, census):
         subprocess.run(["umount", str(disk)], check=False)
 
 
+# The child handles SIGINT as a process started from a terminal does (KeyboardInterrupt): one
+# started by a runner that ignores SIGINT (a non-interactive shell's background job) inherits
+# SIG_IGN, and Python then installs no handler (the test waited 60 s on a clean-clone CI run).
 _SLOW_WRITER = textwrap.dedent("""
-    import sys, time
+    import signal, sys, time
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     from pbrlab.commands import cli
     from pbrlab.foundation import images
     real = images._encode
