@@ -1,8 +1,7 @@
 """URP draws one pass of each LightMode of a SubShader: its DrawObjectsPass draws the first pass
 tagged SRPDefaultUnlit, UniversalForward and UniversalForwardOnly (an untagged pass is
-SRPDefaultUnlit), so a second untagged pass is not drawn (URP's ShaderLab Pass tags page: an
-untagged pass "behaves as if SRPDefaultUnlit was declared"; the one-pass-per-tag rule as Unity's
-Frame Debugger shows it, importers/unity/parse.first_of_light_mode's docstring). pbrlab drew
+SRPDefaultUnlit: URP's ShaderLab Pass tags page), so a second untagged pass is not drawn (the
+sources: importers/unity/parse.first_of_light_mode's docstring). pbrlab drew
 every untagged pass, so an image-effect shader of three untagged passes (a bloom's threshold,
 blur and combine steps, which a C# script chains) showed its last pass, black by its unset
 script inputs, instead of its first (issue 34).

@@ -791,10 +791,12 @@ def _srp_light_mode(mode: str) -> str:
 
 
 def first_of_light_mode(p, drawn: list, pipeline: Pipeline) -> bool:
-    """Whether Pass ``p`` is drawn by a pipeline that draws one pass per LightMode (URP: its
-    DrawObjectsPass draws the SubShader's first pass tagged SRPDefaultUnlit, UniversalForward and
-    UniversalForwardOnly, an untagged pass counting as SRPDefaultUnlit; a second untagged pass
-    is not drawn, as Unity's Frame Debugger shows), given the passes ``drawn`` before it."""
+    """Whether Pass ``p`` is drawn by a pipeline that draws one pass per LightMode, given the
+    passes ``drawn`` before it. URP's DrawObjectsPass asks DrawRenderers for its ShaderTagId list
+    (SRPDefaultUnlit, UniversalForward, UniversalForwardOnly; an untagged pass counts as
+    SRPDefaultUnlit, URP's ShaderLab Pass tags page), and DrawRenderers draws an object's first
+    pass of each tag: a second untagged pass is not drawn (Unity's Frame Debugger shows it;
+    public write-ups of URP multi-pass shaders report it)."""
     if not pipeline.first_pass_per_light_mode:
         return True
     mode = _srp_light_mode(p.light_mode)
