@@ -198,6 +198,14 @@ vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (textureLod(tex, (uv).xy, (uv).w).r)
 // a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
 #define UNITY_SAMPLE_DEPTH(value) ((value).r)
+// HLSLSupport.cginc's single-channel read, shipped in Unity 4.0 and kept: the texel's alpha
+#define UNITY_SAMPLE_1CHANNEL(tex, uv) (texture(tex, uv).a)
+#define UNITY_ALPHA_CHANNEL a
+// HLSLSupport.cginc's clip-space depths of the near and far planes, per graphics API: pbrlab
+// draws in OpenGL's clip space (no reversed Z, z from -w to w: render/depth_range.py), where
+// Unity defines the near plane's as -1 and the raw far plane's as 1.
+#define UNITY_NEAR_CLIP_VALUE (-1.0)
+#define UNITY_RAW_FAR_CLIP_VALUE (1.0)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).

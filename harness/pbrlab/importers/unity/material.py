@@ -354,6 +354,7 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
         if refused:
             r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
+    m.keywords += tuple(k for k in shader.first_keywords(m.keywords) if k not in shader.refused_keywords)
     if m.keywords:  # the variant the material draws: the struct members and functions its
         # keywords' #if branches hold (parse_pass reads a program's conditionals for its model)
         try:
