@@ -272,7 +272,7 @@ def _vertex_lights(language: str) -> str:
 # has no cone), in the scene's order (Unity's ranks them by their brightness at the object).
 # Colour: the light's colour times intensity (pbrlab's radiance), as Unity's unity_LightColor;
 # attenuation: Unity's 25 / range^2 (the quadratic term of its vertex-light falloff, so that a
-# light at its range is 1/26 of its colour), and 1 for a light without a range (1 / (1 + d^2):
+# light at its range is 1/26 of its colour), and 1 for a light without a range (range +inf) (1 / (1 + d^2):
 # the inverse square of pbrlab's unbounded lights, kept finite at the light).
 FOUR_LIGHTS = 4
 
@@ -295,7 +295,7 @@ def _four_lights(language: str) -> str:
                   "        unity_4LightPosX0[pbrlab_f] = pbrlab_at.x;",
                   "        unity_4LightPosY0[pbrlab_f] = pbrlab_at.y;",
                   "        unity_4LightPosZ0[pbrlab_f] = pbrlab_at.z;",
-                  "        unity_4LightAtten0[pbrlab_f] = pbrlab_r > 0.0 ? 25.0 / (pbrlab_r * pbrlab_r) : 1.0;",
+                  "        unity_4LightAtten0[pbrlab_f] = pbrlab_r > 0.0 && pbrlab_r < 3.0e38 ? 25.0 / (pbrlab_r * pbrlab_r) : 1.0;",
                   f"        unity_LightColor[pbrlab_f] = vec4(u_{kind}_radiance[pbrlab_q], 1.0);",
                   "    }", "#endif"]
     lines.append("#endif")
