@@ -224,3 +224,70 @@ def test_four_vertex_point_lights_of_a_base_pass(tmp_path, language):
     assert np.all(got == 0.0)
     got = _colour(_render(tmp_path, shader, language, lights=LIGHTS[:1]))
     assert np.all(got == 0.0)
+
+
+# -- refusals that name the shader's own missing piece ---------------------------------------------
+
+_OWN_INCLUDE = """Shader "t/own" {
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        #include "Noise.cginc"
+        ENDCG
+    } }
+FALLBACK
+}
+"""
+
+
+def test_a_missing_include_names_a_copy_elsewhere_in_the_repository(tmp_path):
+    """An include no folder Unity searches holds, of which the repository keeps a copy outside the
+    Unity project (an author's copy of a Unity install's CGIncludes): still refused (Unity would
+    not find it), naming the copy. Control: without the copy, no such hint."""
+    from pbrlab.importers.unity import parse
+    from pbrlab.importers.unity.source_text import UnityShaderError
+    shader_dir = tmp_path / "Repo" / "Project" / "Assets" / "Shaders"
+    shader_dir.mkdir(parents=True)
+    path = shader_dir / "own.shader"
+    path.write_text(_OWN_INCLUDE.replace("FALLBACK", ""))
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(path)
+    assert f"{path}:7: uses Noise.cginc" in str(info.value) and "lies at" not in str(info.value)
+    (tmp_path / "Repo" / "includes").mkdir()
+    (tmp_path / "Repo" / "includes" / "Noise.cginc").write_text("float noise(float x) { return x; }\n")
+    with pytest.raises(UnityShaderError, match=r"a file of that name lies at \S*Repo/includes/Noise\.cginc"):
+        parse.read_shader(path)
+
+
+def test_a_shader_with_one_subshader_and_no_fallback_gives_its_own_reason_first(tmp_path):
+    """One SubShader that cannot run (a missing include) and a Fallback pbrlab does not have: the
+    refusal begins with this shader's file, line and reason, then says the Fallback is missing.
+    Control: two SubShaders that cannot run keep "no SubShader can run here" first."""
+    from pbrlab.importers.unity import parse
+    from pbrlab.importers.unity.source_text import UnityShaderError
+    path = tmp_path / "one.shader"
+    path.write_text(_OWN_INCLUDE.replace("FALLBACK", 'Fallback "Nowhere/Else"'))
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(path)
+    message = str(info.value)
+    assert message.startswith(f"{path}:7: uses Noise.cginc")
+    assert message.index("uses Noise.cginc") < message.index('Fallback "Nowhere/Else" is a shader pbrlab does not have')
+    two = tmp_path / "two.shader"
+    sub = _OWN_INCLUDE.split("    SubShader", 1)[1].split("FALLBACK")[0]
+    two.write_text('Shader "t/two" {\n    SubShader' + sub + "    SubShader" + sub + 'Fallback "Nowhere/Else"\n}\n')
+    with pytest.raises(UnityShaderError, match=r"no SubShader can run here \(SubShader 1"):
+        parse.read_shader(two)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_void_vertex_function_is_refused_as_drawing_nothing(tmp_path, language):
+    """``void vert() {}`` (a tutorial's empty pass): Unity compiles it, but no vertex is placed,
+    so nothing is drawn; refused naming the file and the pragma's line and saying so. Control:
+    a vertex function returning its position renders (the other tests here)."""
+    path = tmp_path / "empty.shader"
+    path.write_text('Shader "t/empty" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n'
+                    "void vert() {}\nvoid frag() {}\nENDCG\n} } }\n")
+    with pytest.raises(PbrlabError, match=r"vert\(\) writes no SV_POSITION.*returns void and has no out parameter"):
+        _render(tmp_path, path, language)

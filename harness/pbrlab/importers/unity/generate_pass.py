@@ -178,8 +178,11 @@ def _outputs(vf, where: str) -> list[tuple]:
             out.append((canonical(semantic), kind, name))
     if not any(s in _POSITION for s, _, _ in out) and vf.geometry is None and vf.tessellation is None:
         # (a geometry or domain stage may place them)
+        empty = "" if out or vf.vertex_return != "void" or any(q != "in" for q, *_ in vf.vertex_params) else (
+            f" ({vf.vertex}() returns void and has no out parameter: it writes nothing, so no vertex is "
+            "placed and the pass draws nothing)")
         raise UnityShaderError(f"{where}: {vf.vertex}() writes no SV_POSITION: the vertex stage must "
-                               "give the clip-space position")
+                               "give the clip-space position" + empty)
     return out
 
 

@@ -653,6 +653,12 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
+        raise UnityShaderError(
+            f"{reasons[0].split(': ', 1)[1]} (its one SubShader cannot run, and its Fallback "
+            f'"{layout.fallback}" is a shader pbrlab does not have (line {layout.fallback_line}): put its .shader '
+            "file in this shader's folder (or below it) or its Unity project's Assets, or name its folder in "
+            "$PBRLAB_UNITY_SHADERS)")
     if found is None:
         raise UnityShaderError(
             f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "

@@ -225,7 +225,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         if sig is None:
             unresolved = _unresolved_include(program, path.parent)
             if unresolved:  # most likely where the function lives: name the file, not the function
-                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0], path.parent)}; "
                                        "pbrlab does not provide it "
                                        f"(#pragma {role} {name} names a function none of the rest defines)")
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
@@ -236,7 +236,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     # (an include of the drawn variant: one under a branch not taken is not read)
     unresolved = _unresolved_include(everything[:len(masked)], path.parent) if undefined else None
     if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
-        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0], path.parent)}; "
                                f"pbrlab does not provide it ({undefined[1]}() takes or gives "
                                f"{undefined[0]}, a type none of the rest defines)")
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])
