@@ -291,3 +291,37 @@ def test_a_void_vertex_function_is_refused_as_drawing_nothing(tmp_path, language
                     "void vert() {}\nvoid frag() {}\nENDCG\n} } }\n")
     with pytest.raises(PbrlabError, match=r"vert\(\) writes no SV_POSITION.*returns void and has no out parameter"):
         _render(tmp_path, path, language)
+
+
+# -- a variable assigned in its own initialiser; a compute buffer of the program's include -------
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_variable_assigned_in_its_own_initialiser(tmp_path, language):
+    """``float4 c = cond ? c = a : b;`` (a tutorial's): FXC's C scope makes ``c`` the variable
+    being declared, so it is a, or b (self_initialisers.py); glslang and GLSL refused ``c`` as
+    undeclared. Control: the property flipping the condition draws the other operand."""
+    body = ("            float4 c = (_Flag > 0.5) ? c = float4(0.25, 0.5, 0.125, 1) * 2 : float4(0.75, 0.75, 0.75, 1);\n"
+            "            return c;")
+    shader = _shader(tmp_path, "selfinit", body, properties='        _Flag ("f", Float) = 1',
+                     pragmas="        float _Flag;")
+    got = _colour(_render(tmp_path, shader, language))
+    assert np.array_equal(got, np.broadcast_to([0.5, 1.0, 0.25], got.shape))
+    scene = corpus.scene_for(shader)
+    scene["materials"]["m"]["properties"] = {"_Flag": 0.0}
+    got = _colour(render_scene(parse_scene(scene, "t", tmp_path), language=language).linear)
+    assert np.array_equal(got, np.broadcast_to([0.75, 0.75, 0.75], got.shape))
+
+
+def test_a_compute_buffer_an_include_declares_is_refused_at_its_line(tmp_path):
+    """A procedural draw's buffer declared in the program's own include and read by the pass:
+    refused naming the include file and the declaration's line (the program's own declaration
+    was already). Control: the include's buffer that the drawn pass does not read is no refusal."""
+    from pbrlab.importers.unity import parse
+    from pbrlab.importers.unity.source_text import UnityShaderError
+    (tmp_path / "Buf.hlsl").write_text("#include \"UnityCG.cginc\"\n// the generated triangles\n"
+                                       "StructuredBuffer<float4> _Data;\n")
+    read = _shader(tmp_path, "reads", "            return _Data[0];", include="Buf.hlsl")
+    with pytest.raises(UnityShaderError, match=rf"{tmp_path}/Buf\.hlsl:3: reads StructuredBuffer _Data, a compute buffer"):
+        parse.read_shader(read)
+    unread = _shader(tmp_path, "unread", "            return 1;", include="Buf.hlsl")
+    assert parse.read_shader(unread).passes

@@ -14,7 +14,7 @@ from . import model as M
 from .geometry_syntax import parse_geometry
 from .tessellation_syntax import parse_tessellation
 from .conditionals import active_text, defines_of
-from .compute_buffers import check_compute_buffers
+from .compute_buffers import check_compute_buffers, check_included_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
@@ -194,6 +194,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         filled = ()
     check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
+    check_included_compute_buffers(everything[:len(masked)], everything[len(masked):], program, path.parent)
     written, rewritten = (), {}
     if not staged & set(_APART):  # globals the program writes
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
