@@ -325,3 +325,23 @@ def test_a_compute_buffer_an_include_declares_is_refused_at_its_line(tmp_path):
         parse.read_shader(read)
     unread = _shader(tmp_path, "unread", "            return 1;", include="Buf.hlsl")
     assert parse.read_shader(unread).passes
+
+
+def test_a_shadow_caster_only_shader_is_refused_as_invisible_in_unity(tmp_path):
+    """A shader whose one pass is a ShadowCaster: Unity draws the object only into the shadow
+    map, so it shows as its shadow on other objects; the refusal says so. Control: a skipped
+    editor pass (not a shadow) gets no such words."""
+    from pbrlab.importers.unity import parse
+    from pbrlab.importers.unity.source_text import UnityShaderError
+    caster = tmp_path / "caster.shader"
+    caster.write_text('Shader "t/caster" { SubShader { Pass { Tags { "LightMode" = "ShadowCaster" }\nCGPROGRAM\n'
+                      "#pragma vertex vert\n#pragma fragment frag\n#include \"UnityCG.cginc\"\n"
+                      "float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }\n"
+                      "float4 frag() : SV_Target { return 0; }\nENDCG\n} } }\n")
+    with pytest.raises(UnityShaderError, match=r"nothing here draws .*ShadowCaster.*the object itself is invisible"):
+        parse.read_shader(caster)
+    picking = tmp_path / "picking.shader"
+    picking.write_text(caster.read_text().replace('"ShadowCaster"', '"Picking"'))
+    with pytest.raises(UnityShaderError) as info:
+        parse.read_shader(picking)
+    assert "nothing here draws" in str(info.value) and "invisible" not in str(info.value)

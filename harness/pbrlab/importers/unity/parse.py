@@ -778,8 +778,12 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         return _subshader_passes(layout, sub, props, warnings, notes, render_objects.drawing(pipeline, tags))
     if not any(p.kind != "grab" for p in passes):
         skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
+        shadow_only = notes[first_note:] and all("no shadow maps" in n for n in notes[first_note:])
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
-                               + (f": {skipped})" if skipped else ")"))
+                               + (f": {skipped})" if skipped else ")")
+                               + ("; its passes only cast shadows: in Unity the object itself is invisible and shows "
+                                  "only as the shadow it casts on other objects, which pbrlab does not draw"
+                                  if shadow_only else ""))
     return passes
 
 
