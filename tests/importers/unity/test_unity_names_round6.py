@@ -345,3 +345,27 @@ def test_a_shadow_caster_only_shader_is_refused_as_invisible_in_unity(tmp_path):
     with pytest.raises(UnityShaderError) as info:
         parse.read_shader(picking)
     assert "nothing here draws" in str(info.value) and "invisible" not in str(info.value)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_property_drawers_enable_their_keywords(tmp_path, language):
+    """Unity's material inspector enables a drawer's keyword from the property's value
+    (MaterialPropertyDrawer): ``[KeywordEnum(Red, Green)] _Tint = 1`` enables _TINT_GREEN, not the
+    set's first; ``[Toggle(_HALF)] _Half = 1`` enables _HALF. Controls: the value 0 given in the
+    material draws _TINT_RED and no _HALF; a keyword the material names itself wins."""
+    body = KEYWORD_BODY.replace("return float4(1, 0, 0, 1);", "return float4(1, 0, 0, 1) * (_HALF_ON_SCALE);") \
+        .replace("return float4(0, 1, 0, 1);", "return float4(0, 1, 0, 1) * (_HALF_ON_SCALE);")
+    pragmas = ("        #pragma shader_feature _TINT_RED _TINT_GREEN\n        #pragma shader_feature _HALF\n"
+               "        #if defined(_HALF)\n        #define _HALF_ON_SCALE 0.5\n        #else\n"
+               "        #define _HALF_ON_SCALE 1.0\n        #endif")
+    shader = _shader(tmp_path, "drawers", body, pragmas=pragmas,
+                     properties='        [KeywordEnum(Red, Green)] _Tint ("t", Float) = 1\n'
+                                '        [Toggle(_HALF)] _Half ("h", Float) = 1')
+    got = _colour(_render(tmp_path, shader, language))
+    assert np.array_equal(got, np.broadcast_to([0.0, 0.5, 0.0], got.shape))
+    scene = corpus.scene_for(shader)
+    scene["materials"]["m"]["properties"] = {"_Tint": 0, "_Half": 0}
+    got = _colour(render_scene(parse_scene(scene, "t", tmp_path), language=language).linear)
+    assert np.array_equal(got, np.broadcast_to([1.0, 0.0, 0.0], got.shape))
+    got = _colour(_render(tmp_path, shader, language, keywords=["_TINT_RED"]))
+    assert np.array_equal(got, np.broadcast_to([0.5, 0.0, 0.0], got.shape))

@@ -32,6 +32,7 @@ from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
 from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
+from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -361,6 +362,9 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
         if refused:
             r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
+    # the keywords Unity's material inspector enables from its property drawers ([Toggle],
+    # [KeywordEnum]...: keyword_drawers.py), then each remaining set's first (a set without _)
+    m.keywords += shader.unset_keywords(drawer_keywords(shader.properties, m.properties), m.keywords)
     m.keywords += tuple(k for k in shader.first_keywords(m.keywords) if k not in shader.refused_keywords)
     if m.keywords:  # the variant the material draws: the struct members and functions its
         # keywords' #if branches hold (parse_pass reads a program's conditionals for its model)

@@ -397,6 +397,13 @@ _ENGINE_KEYWORD = re.compile(r"(?:DIRECTIONAL|POINT|SPOT|POINT_COOKIE|DIRECTIONA
                              r"DBUFFER|FORWARD_PLUS|CLUSTERED|GBUFFER|RENDER_PASS|WRITE_RENDERING_LAYERS)\w*)")
 
 
+def keyword_sets(program: str) -> list:
+    """The keyword sets of ``program``'s ``#pragma multi_compile`` / ``shader_feature`` lines, each
+    a tuple of its words (``_`` and ``__`` included: Unity's "none")."""
+    return [tuple(m.group(1).split()) for m in _KEYWORD_PRAGMA.finditer(blank_comments(program))
+            if m.group(1).split()]
+
+
 def first_keywords(program: str, enabled=()) -> tuple:
     """The keyword Unity draws for each keyword set of ``program`` none of whose keywords is
     ``enabled``: the set's first. Unity's manual ("Shader variants and keywords", "Declare
@@ -406,8 +413,7 @@ def first_keywords(program: str, enabled=()) -> tuple:
     ``multi_compile`` keyword, or one holding a keyword the engine sets (_ENGINE_KEYWORD), is
     left as it is."""
     out = []
-    for m in _KEYWORD_PRAGMA.finditer(blank_comments(program)):
-        words = m.group(1).split()
+    for words in keyword_sets(program):
         if (len(words) < 2 or any(set(w) == {"_"} or not re.fullmatch(IDENT, w) for w in words)
                 or any(_ENGINE_KEYWORD.fullmatch(w) for w in words) or set(words) & set(enabled)):
             continue
