@@ -4,8 +4,8 @@ a keyword set without ``_`` drawing its first keyword, HLSLSupport.cginc's UNITY
 and clip-plane values, and the forward base pass's four vertex point lights (Shade4PointLights).
 Each against a float64 value, with a control.
 
-Readback: the corpus scene (a UV sphere, rgba32f target), the fragment's colour on the pixels
-the sphere covers whole.
+Each pass is drawn on the corpus scene's sphere into its rgba32f target; a check reads the
+colour at every pixel the sphere covers whole (alpha 1), where the fragment's constant shows.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.loader import parse_scene
 from pbrlab.render.renderer import render_scene
 
-LANGUAGES = ("glsl", "hlsl")
+LANGUAGES = ("hlsl", "glsl")  # HLSL as written, then the GLSL port
 
 PASS = """
 Shader "t/{name}" {{

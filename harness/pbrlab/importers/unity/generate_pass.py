@@ -257,10 +257,7 @@ def _vertex_lights(language: str) -> str:
                   f"        unity_LightPosition[pbrlab_n] = vec4({view(f'vec4(u_{kind}_position[pbrlab_p], 1.0)')}, 1.0);",
                   "    }", "#endif"]
     lines.append("#endif")
-    text = "\n".join(lines) + "\n"
-    if language == "hlsl":
-        text = re.sub(r"\bvec([234])\b", r"float\1", text)
-    return text
+    return _statements(lines, language)
 
 
 # The forward path's four per-vertex point lights (UnityShaderVariables.cginc's unity_4LightPosX0 /
@@ -275,8 +272,8 @@ def _vertex_lights(language: str) -> str:
 # has no cone), in the scene's order (Unity's ranks them by their brightness at the object).
 # Colour: the light's colour times intensity (pbrlab's radiance), as Unity's unity_LightColor;
 # attenuation: Unity's 25 / range^2 (the quadratic term of its vertex-light falloff, so that a
-# light at its range is 1/26 of its colour), and 1 for a light without a range (range +inf) (1 / (1 + d^2):
-# the inverse square of pbrlab's unbounded lights, kept finite at the light).
+# light at its range is 1/26 of its colour); a light without a range (range +inf) gets 1, so
+# 1 / (1 + d^2): the inverse square of pbrlab's unbounded lights, kept finite at the light.
 FOUR_LIGHTS = 4
 
 
@@ -286,13 +283,13 @@ def _four_lights(language: str) -> str:
              "    unity_4LightPosZ0 = vec4(0.0, 0.0, 0.0, 0.0);",
              "    unity_4LightAtten0 = vec4(0.0, 0.0, 0.0, 0.0);",
              "#if !defined(PBRLAB_UNITY_VERTEX_LIGHTS)",  # (a Vertex pass's vertex stage has set its own)
-             "    for (int pbrlab_c = 0; pbrlab_c < 4; pbrlab_c++) { unity_LightColor[pbrlab_c] = vec4(0.0, 0.0, 0.0, 0.0); }",
+             f"    for (int pbrlab_c = 0; pbrlab_c < {FOUR_LIGHTS}; pbrlab_c++) {{ unity_LightColor[pbrlab_c] = vec4(0.0, 0.0, 0.0, 0.0); }}",
              "#endif",
              "#if defined(PBRLAB_UNITY_FOUR_LIGHTS)",
              "    int pbrlab_f = 0;"]
     for kind in ("point", "spot"):
         lines += [f"#if PBRLAB_{kind.upper()}_COUNT > 0",
-                  f"    for (int pbrlab_q = 0; pbrlab_q < PBRLAB_{kind.upper()}_COUNT && pbrlab_f < 4; pbrlab_q++, pbrlab_f++) {{",
+                  f"    for (int pbrlab_q = 0; pbrlab_q < PBRLAB_{kind.upper()}_COUNT && pbrlab_f < {FOUR_LIGHTS}; pbrlab_q++, pbrlab_f++) {{",
                   f"        vec3 pbrlab_at = u_{kind}_position[pbrlab_q];",
                   f"        float pbrlab_r = u_{kind}_range[pbrlab_q];",
                   "        unity_4LightPosX0[pbrlab_f] = pbrlab_at.x;",
@@ -302,10 +299,13 @@ def _four_lights(language: str) -> str:
                   f"        unity_LightColor[pbrlab_f] = vec4(u_{kind}_radiance[pbrlab_q], 1.0);",
                   "    }", "#endif"]
     lines.append("#endif")
+    return _statements(lines, language)
+
+
+def _statements(lines: list, language: str) -> str:
+    """Lines written with GLSL's vector names, in ``language``."""
     text = "\n".join(lines) + "\n"
-    if language == "hlsl":
-        text = re.sub(r"\bvec([234])\b", r"float\1", text)
-    return text
+    return re.sub(r"\bvec([234])\b", r"float\1", text) if language == "hlsl" else text
 
 
 # A positional ForwardAdd light is evaluated at the surface point: the vertex stage hands the
