@@ -482,6 +482,12 @@ vec4 ComputeScreenPos(vec4 pos) {
     return o;
 }
 
+// UnityCG.cginc's ComputeNonStereoScreenPos itself: ComputeScreenPos without the stereo eye's
+// offset, which one eye (pbrlab's camera) does not have, so the same position.
+vec4 ComputeNonStereoScreenPos(vec4 pos) {
+    return ComputeScreenPos(pos);
+}
+
 // Unity's UnityPixelSnap (UnityCG.cginc): a clip position moved to the nearest pixel corner
 // of the viewport (NDC xy times half the size in pixels, rounded, undone). roundEven is the
 // rounding of HLSL's round (SPIR-V RoundEven; GLSL's round may go either way at 1/2).

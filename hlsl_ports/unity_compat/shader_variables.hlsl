@@ -482,6 +482,12 @@ float4 ComputeScreenPos(float4 pos) {
     return o;
 }
 
+// UnityCG.cginc's ComputeNonStereoScreenPos itself: ComputeScreenPos without the stereo eye's
+// offset, which one eye (pbrlab's camera) does not have, so the same position.
+float4 ComputeNonStereoScreenPos(float4 pos) {
+    return ComputeScreenPos(pos);
+}
+
 // Unity's UnityPixelSnap (UnityCG.cginc): a clip position moved to the nearest pixel corner
 // of the viewport (NDC xy times half the size in pixels, rounded, undone). roundEven is the
 // rounding of HLSL's round (SPIR-V RoundEven), roundEven in the GLSL twin.

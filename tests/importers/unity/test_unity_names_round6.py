@@ -152,6 +152,19 @@ def test_sample_1channel_reads_the_texels_alpha(tmp_path, language):
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
+def test_non_stereo_screen_position_is_unitys_formula(tmp_path, language):
+    """UnityCG.cginc's ComputeNonStereoScreenPos(pos): xy = (pos.x, pos.y * _ProjectionParams.x) / 2
+    + pos.w / 2, zw = pos.zw (one eye: the same as ComputeScreenPos). float64 at pos = (0.2, -0.4,
+    0.5, 1) with _ProjectionParams.x = 1 (GL: no flip): (0.6, 0.3, 0.5); the third channel is the
+    flip sign itself, a control that the formula read it. Exact: halves and sums of dyadic values."""
+    body = ("            float4 s = ComputeNonStereoScreenPos(float4(0.2, -0.4, 0.5, 1));\n"
+            "            return float4(s.xy, s.z * _ProjectionParams.x, 1);")
+    got = _colour(_render(tmp_path, _shader(tmp_path, "nonstereo", body), language))
+    want = np.array([0.5 * 0.2 + 0.5, 0.5 * -0.4 * 1.0 + 0.5, 0.5], np.float64)
+    assert np.all(np.abs(got - want) <= 2 ** -23)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
 def test_clip_values_are_where_the_projection_puts_the_planes(tmp_path, language):
     """UNITY_NEAR_CLIP_VALUE and UNITY_RAW_FAR_CLIP_VALUE are the clip-space z / w of the camera's
     near and far planes (HLSLSupport.cginc, per graphics API): pbrlab's projection
