@@ -28,6 +28,8 @@
 //           polynomial's coefficients as Unity packs them);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
+//           unity_4LightPosX0/Y0/Z0, unity_4LightAtten0 (the forward base pass's four vertex point
+//           lights, NOT uniforms: the pass's stages set them) and Shade4PointLights;
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
 //           globals the caller's light loop sets before each Lighting<Name> call, since one
 //           program here shades every light; w = 0 directional, 1 positional);
@@ -120,6 +122,15 @@ vec4 unity_LightColor[8];
 vec4 unity_LightPosition[8];
 vec4 unity_LightAtten[8];
 vec4 unity_SpotDirection[8];
+// The forward path's four per-vertex point lights of a ForwardBase pass (UnityShaderVariables.cginc,
+// read by Shade4PointLights): world-space positions by component (x of lights 0..3 in
+// unity_4LightPosX0, ...), their quadratic attenuation in unity_4LightAtten0, their colours in
+// unity_LightColor[0..3]. Plain globals the pass's stages set (generate_pass._four_lights), zero
+// where the pass has none.
+vec4 unity_4LightPosX0;
+vec4 unity_4LightPosY0;
+vec4 unity_4LightPosZ0;
+vec4 unity_4LightAtten0;
 
 #define UNITY_MATRIX_M unity_ObjectToWorld
 #define UNITY_MATRIX_V unity_MatrixV
@@ -198,6 +209,14 @@ vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (textureLod(tex, (uv).xy, (uv).w).r)
 // a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
 #define UNITY_SAMPLE_DEPTH(value) ((value).r)
+// HLSLSupport.cginc's single-channel read, shipped in Unity 4.0 and kept: the texel's alpha
+#define UNITY_SAMPLE_1CHANNEL(tex, uv) (texture(tex, uv).a)
+#define UNITY_ALPHA_CHANNEL a
+// HLSLSupport.cginc's clip-space depths of the near and far planes, per graphics API: pbrlab
+// draws in OpenGL's clip space (no reversed Z, z from -w to w: render/depth_range.py), where
+// Unity defines the near plane's as -1 and the raw far plane's as 1.
+#define UNITY_NEAR_CLIP_VALUE (-1.0)
+#define UNITY_RAW_FAR_CLIP_VALUE (1.0)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -380,6 +399,22 @@ vec3 ShadeVertexLights(vec4 vertex, vec3 normal) {
     return ShadeVertexLightsFull(vertex, normal, 4, false);
 }
 
+// UnityCG.cginc's Shade4PointLights: the diffuse light of four point lights at world position pos
+// with world normal normal, each light's colour times max(0, n.l) / (1 + d^2 * attenSq), its
+// squared distance d^2 kept from 0 (at least 1e-6, as Unity's): the formula as Unity states it,
+// evaluated four lights at a time.
+vec3 Shade4PointLights(vec4 lightPosX, vec4 lightPosY, vec4 lightPosZ, vec3 lightColor0,
+                         vec3 lightColor1, vec3 lightColor2, vec3 lightColor3, vec4 lightAttenSq,
+                         vec3 pos, vec3 normal) {
+    vec4 toX = lightPosX - pos.x;
+    vec4 toY = lightPosY - pos.y;
+    vec4 toZ = lightPosZ - pos.z;
+    vec4 distanceSq = max(toX * toX + toY * toY + toZ * toZ, vec4(0.000001, 0.000001, 0.000001, 0.000001));
+    vec4 cosine = max(vec4(0.0, 0.0, 0.0, 0.0), (toX * normal.x + toY * normal.y + toZ * normal.z) * inversesqrt(distanceSq));
+    vec4 diffuse = cosine / (1.0 + distanceSq * lightAttenSq);
+    return lightColor0 * diffuse.x + lightColor1 * diffuse.y + lightColor2 * diffuse.z + lightColor3 * diffuse.w;
+}
+
 vec3 UnityWorldToViewPos(vec3 pos) {
     return (unity_MatrixV * vec4(pos, 1.0)).xyz;
 }
@@ -445,6 +480,12 @@ vec4 ComputeScreenPos(vec4 pos) {
     o.xy = vec2(o.x, o.y * _ProjectionParams.x) + o.w;
     o.zw = pos.zw;
     return o;
+}
+
+// UnityCG.cginc's ComputeNonStereoScreenPos itself: ComputeScreenPos without the stereo eye's
+// offset, which one eye (pbrlab's camera) does not have, so the same position.
+vec4 ComputeNonStereoScreenPos(vec4 pos) {
+    return ComputeScreenPos(pos);
 }
 
 // Unity's UnityPixelSnap (UnityCG.cginc): a clip position moved to the nearest pixel corner

@@ -28,6 +28,8 @@
 //           polynomial's coefficients as Unity packs them);
 //           vertex-light globals unity_LightColor[8], unity_LightPosition[8] (view space),
 //           unity_LightAtten[8], unity_SpotDirection[8] (NOT uniforms: the caller's vertex stage sets them);
+//           unity_4LightPosX0/Y0/Z0, unity_4LightAtten0 (the forward base pass's four vertex point
+//           lights, NOT uniforms: the pass's stages set them) and Shade4PointLights;
 //           per-light globals _LightColor0 and _WorldSpaceLightPos0 (NOT uniforms: plain
 //           globals the caller's light loop sets before each Lighting<Name> call, since one
 //           program here shades every light; w = 0 directional, 1 positional);
@@ -121,6 +123,15 @@ static float4 unity_LightColor[8];
 static float4 unity_LightPosition[8];
 static float4 unity_LightAtten[8];
 static float4 unity_SpotDirection[8];
+// The forward path's four per-vertex point lights of a ForwardBase pass (UnityShaderVariables.cginc,
+// read by Shade4PointLights): world-space positions by component (x of lights 0..3 in
+// unity_4LightPosX0, ...), their quadratic attenuation in unity_4LightAtten0, their colours in
+// unity_LightColor[0..3]. Plain globals the pass's stages set (generate_pass._four_lights), zero
+// where the pass has none.
+static float4 unity_4LightPosX0;
+static float4 unity_4LightPosY0;
+static float4 unity_4LightPosZ0;
+static float4 unity_4LightAtten0;
 
 #define UNITY_MATRIX_M unity_ObjectToWorld
 #define UNITY_MATRIX_V unity_MatrixV
@@ -199,6 +210,14 @@ float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return
 #define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
 // a depth read from a depth texture's texel (UnityCG.cginc; its red channel outside GLES 2)
 #define UNITY_SAMPLE_DEPTH(value) ((value).r)
+// HLSLSupport.cginc's single-channel read, shipped in Unity 4.0 and kept: the texel's alpha
+#define UNITY_SAMPLE_1CHANNEL(tex, uv) (tex2D(tex, uv).a)
+#define UNITY_ALPHA_CHANNEL a
+// HLSLSupport.cginc's clip-space depths of the near and far planes, per graphics API: pbrlab
+// draws in OpenGL's clip space (no reversed Z, z from -w to w: render/depth_range.py), where
+// Unity defines the near plane's as -1 and the raw far plane's as 1.
+#define UNITY_NEAR_CLIP_VALUE (-1.0)
+#define UNITY_RAW_FAR_CLIP_VALUE (1.0)
 
 // HLSLSupport.cginc's texture macros, as its sampler2D path declares them (one sampler per
 // texture: the GL texture's own filtering applies).
@@ -380,6 +399,22 @@ float3 ShadeVertexLights(float4 vertex, float3 normal) {
     return ShadeVertexLightsFull(vertex, normal, 4, false);
 }
 
+// UnityCG.cginc's Shade4PointLights: the diffuse light of four point lights at world position pos
+// with world normal normal, each light's colour times max(0, n.l) / (1 + d^2 * attenSq), its
+// squared distance d^2 kept from 0 (at least 1e-6, as Unity's): the formula as Unity states it,
+// evaluated four lights at a time.
+float3 Shade4PointLights(float4 lightPosX, float4 lightPosY, float4 lightPosZ, float3 lightColor0,
+                         float3 lightColor1, float3 lightColor2, float3 lightColor3, float4 lightAttenSq,
+                         float3 pos, float3 normal) {
+    float4 toX = lightPosX - pos.x;
+    float4 toY = lightPosY - pos.y;
+    float4 toZ = lightPosZ - pos.z;
+    float4 distanceSq = max(toX * toX + toY * toY + toZ * toZ, float4(0.000001, 0.000001, 0.000001, 0.000001));
+    float4 cosine = max(float4(0.0, 0.0, 0.0, 0.0), (toX * normal.x + toY * normal.y + toZ * normal.z) * rsqrt(distanceSq));
+    float4 diffuse = cosine / (1.0 + distanceSq * lightAttenSq);
+    return lightColor0 * diffuse.x + lightColor1 * diffuse.y + lightColor2 * diffuse.z + lightColor3 * diffuse.w;
+}
+
 float3 UnityWorldToViewPos(float3 pos) {
     return mul(unity_MatrixV, float4(pos, 1.0)).xyz;
 }
@@ -445,6 +480,12 @@ float4 ComputeScreenPos(float4 pos) {
     o.xy = float2(o.x, o.y * _ProjectionParams.x) + o.w;
     o.zw = pos.zw;
     return o;
+}
+
+// UnityCG.cginc's ComputeNonStereoScreenPos itself: ComputeScreenPos without the stereo eye's
+// offset, which one eye (pbrlab's camera) does not have, so the same position.
+float4 ComputeNonStereoScreenPos(float4 pos) {
+    return ComputeScreenPos(pos);
 }
 
 // Unity's UnityPixelSnap (UnityCG.cginc): a clip position moved to the nearest pixel corner

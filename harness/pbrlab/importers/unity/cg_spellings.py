@@ -43,6 +43,7 @@ import re
 
 from . import combined_samplers
 from .flat_array_initialisers import grouped_flat_initialisers
+from .self_initialisers import declared_before_initialised
 from .source_text import call_arguments, matching_paren
 
 _CONST_STATIC = re.compile(r"\bconst(\s+)static\b")
@@ -169,6 +170,7 @@ def respelled(text: str) -> str:
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
     text = _matrix_swizzles(_tex2d_with_derivatives(text))
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
+    text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

@@ -178,8 +178,11 @@ def _outputs(vf, where: str) -> list[tuple]:
             out.append((canonical(semantic), kind, name))
     if not any(s in _POSITION for s, _, _ in out) and vf.geometry is None and vf.tessellation is None:
         # (a geometry or domain stage may place them)
+        empty = "" if out or vf.vertex_return != "void" or any(q != "in" for q, *_ in vf.vertex_params) else (
+            f" ({vf.vertex}() returns void and has no out parameter: it writes nothing, so no vertex is "
+            "placed and the pass draws nothing)")
         raise UnityShaderError(f"{where}: {vf.vertex}() writes no SV_POSITION: the vertex stage must "
-                               "give the clip-space position")
+                               "give the clip-space position" + empty)
     return out
 
 
@@ -254,10 +257,55 @@ def _vertex_lights(language: str) -> str:
                   f"        unity_LightPosition[pbrlab_n] = vec4({view(f'vec4(u_{kind}_position[pbrlab_p], 1.0)')}, 1.0);",
                   "    }", "#endif"]
     lines.append("#endif")
+    return _statements(lines, language)
+
+
+# The forward path's four per-vertex point lights (UnityShaderVariables.cginc's unity_4LightPosX0 /
+# Y0 / Z0, unity_4LightAtten0 and unity_LightColor[0..3], read by Shade4PointLights), set in both
+# stages of a ForwardBase program. Unity's forward path ("Per-pixel and per-vertex lights"): the
+# brightest directional light is the base pass's pixel light; other lights are per-pixel, drawn
+# by the ForwardAdd pass, up to the Pixel Light Count, and the next four point lights are vertex
+# lights. pbrlab draws a ForwardAdd pass once for every other light (material.light_programs), so
+# where the shader has one no point light is left to the vertex lights (all zero); where it has
+# none (PBRLAB_UNITY_FOUR_LIGHTS), Unity cannot draw its point lights per pixel and gives the base
+# pass the first four: pbrlab's point lights, then its spot lights (as points: Shade4PointLights
+# has no cone), in the scene's order (Unity's ranks them by their brightness at the object).
+# Colour: the light's colour times intensity (pbrlab's radiance), as Unity's unity_LightColor;
+# attenuation: Unity's 25 / range^2 (the quadratic term of its vertex-light falloff, so that a
+# light at its range is 1/26 of its colour); a light without a range (range +inf) gets 1, so
+# 1 / (1 + d^2): the inverse square of pbrlab's unbounded lights, kept finite at the light.
+FOUR_LIGHTS = 4
+
+
+def _four_lights(language: str) -> str:
+    lines = ["    unity_4LightPosX0 = vec4(0.0, 0.0, 0.0, 0.0);",
+             "    unity_4LightPosY0 = vec4(0.0, 0.0, 0.0, 0.0);",
+             "    unity_4LightPosZ0 = vec4(0.0, 0.0, 0.0, 0.0);",
+             "    unity_4LightAtten0 = vec4(0.0, 0.0, 0.0, 0.0);",
+             "#if !defined(PBRLAB_UNITY_VERTEX_LIGHTS)",  # (a Vertex pass's vertex stage has set its own)
+             f"    for (int pbrlab_c = 0; pbrlab_c < {FOUR_LIGHTS}; pbrlab_c++) {{ unity_LightColor[pbrlab_c] = vec4(0.0, 0.0, 0.0, 0.0); }}",
+             "#endif",
+             "#if defined(PBRLAB_UNITY_FOUR_LIGHTS)",
+             "    int pbrlab_f = 0;"]
+    for kind in ("point", "spot"):
+        lines += [f"#if PBRLAB_{kind.upper()}_COUNT > 0",
+                  f"    for (int pbrlab_q = 0; pbrlab_q < PBRLAB_{kind.upper()}_COUNT && pbrlab_f < {FOUR_LIGHTS}; pbrlab_q++, pbrlab_f++) {{",
+                  f"        vec3 pbrlab_at = u_{kind}_position[pbrlab_q];",
+                  f"        float pbrlab_r = u_{kind}_range[pbrlab_q];",
+                  "        unity_4LightPosX0[pbrlab_f] = pbrlab_at.x;",
+                  "        unity_4LightPosY0[pbrlab_f] = pbrlab_at.y;",
+                  "        unity_4LightPosZ0[pbrlab_f] = pbrlab_at.z;",
+                  "        unity_4LightAtten0[pbrlab_f] = pbrlab_r > 0.0 && pbrlab_r < 3.0e38 ? 25.0 / (pbrlab_r * pbrlab_r) : 1.0;",
+                  f"        unity_LightColor[pbrlab_f] = vec4(u_{kind}_radiance[pbrlab_q], 1.0);",
+                  "    }", "#endif"]
+    lines.append("#endif")
+    return _statements(lines, language)
+
+
+def _statements(lines: list, language: str) -> str:
+    """Lines written with GLSL's vector names, in ``language``."""
     text = "\n".join(lines) + "\n"
-    if language == "hlsl":
-        text = re.sub(r"\bvec([234])\b", r"float\1", text)
-    return text
+    return re.sub(r"\bvec([234])\b", r"float\1", text) if language == "hlsl" else text
 
 
 # A positional ForwardAdd light is evaluated at the surface point: the vertex stage hands the
@@ -310,7 +358,7 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = {_world_position(language)};",
             "    pbrlab_vary_world_position = pbrlab_world_position;", "#endif", _main_light(language),
-            _vertex_lights(language), fill_statements(vf.engine_filled, language),
+            _vertex_lights(language), _four_lights(language), fill_statements(vf.engine_filled, language),
             copy_statements(vf.written_globals)]
     args = []
     for qual, kind, name, semantic in vf.vertex_params:
@@ -396,7 +444,8 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
 
     vec3 = "float3" if language == "hlsl" else "vec3"
     body = [_POSITIONAL_ADD, f"    {vec3} pbrlab_world_position = pbrlab_vary_world_position;", "#endif",
-            _main_light(language), deferred.light_assignments(language), fill_statements(vf.engine_filled, language),
+            _main_light(language), _four_lights(language), deferred.light_assignments(language),
+            fill_statements(vf.engine_filled, language),
             copy_statements(vf.written_globals)]
     args = []
     for qual, kind, name, semantic in vf.fragment_params:

@@ -1,10 +1,13 @@
-"""``#include "Packages/..."`` written in another letter case than the package file's
-(``.../ShaderLibrary/lighting.hlsl`` for ``Lighting.hlsl``): Unity on Windows and macOS, whose
-file systems ignore case, reads the file; a case-sensitive one (Linux, where pbrlab runs) would
-not. A pass program's include of a Unity package path that no file matches exactly but exactly one
-of pbrlab's stand-ins matches ignoring case is respelled as the stand-in (the line keeps its
-length and place) with a warning naming the file and line; two or more matches are refused
-naming them. The program's own include files are read as written.
+"""An ``#include`` written in another letter case than the file's (``"unityCG.cginc"`` for
+``UnityCG.cginc``, ``.../ShaderLibrary/lighting.hlsl`` for ``Lighting.hlsl``, ``"noise.CGINC"``
+for the project's ``Noise.cginc``): Unity on Windows and macOS, whose file systems ignore case,
+reads the file; a case-sensitive one (Linux, where pbrlab runs) would not. A pass program's
+include that no file matches exactly but exactly one file matches ignoring case -- one of
+pbrlab's stand-ins for Unity's include files (``cginc/``, by the name's last part, as
+``resolve_included`` reads them), for Unity's packages' files (``Packages/...``), or the
+project's own file beside the shader -- is respelled as that file (the line keeps its place)
+with a warning naming the file and line; two or more matches are refused naming them. The
+includes inside the project's include files are read as written.
 
     program = respell_package_includes(program, path, first_line, warnings)
 """
@@ -14,7 +17,8 @@ from __future__ import annotations
 import functools
 from pathlib import Path
 
-from .source_text import INCLUDE, PACKAGE_STAND_INS, UnityShaderError, blank_comments, line_of, resolve_included
+from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, UnityShaderError, blank_comments, line_of,
+                          resolve_included)
 
 
 @functools.lru_cache(maxsize=1)
@@ -28,16 +32,58 @@ def _stand_ins_by_lower_case() -> dict:
     return out
 
 
+@functools.lru_cache(maxsize=1)
+def _unity_includes_by_lower_case() -> dict:
+    """{file name in lower case: [pbrlab's stand-ins for Unity's include files spelled so]}."""
+    out: dict = {}
+    for path in sorted(CGINC.iterdir()):
+        if path.is_file():
+            out.setdefault(path.name.lower(), []).append(path.name)
+    return out
+
+
+def _project_spellings(name: str, folder: Path) -> list:
+    """The spellings of ``name`` (a path relative to ``folder``) that name a file there when
+    each part is compared ignoring case; [] for a path that climbs (``..``) or is absolute."""
+    parts = name.split("/")
+    if name.startswith("/") or any(part in ("", ".", "..") for part in parts):
+        return []
+    found = [("", folder)]
+    for i, part in enumerate(parts):
+        last, step = i == len(parts) - 1, []
+        for spelled, here in found:
+            try:
+                entries = sorted(here.iterdir())
+            except OSError:
+                continue
+            for entry in entries:
+                if entry.name.lower() == part.lower() and (entry.is_file() if last else entry.is_dir()):
+                    step.append((f"{spelled}/{entry.name}" if spelled else entry.name, entry))
+        found = step
+    return [spelled for spelled, _ in found]
+
+
+def _spellings(name: str, folder: Path) -> list:
+    """The files ``#include "name"`` names ignoring case (module docstring), as include names."""
+    if name.startswith("Packages/"):
+        return _stand_ins_by_lower_case().get(name.lower(), [])
+    own = _project_spellings(name, folder)
+    if own:
+        return own
+    head, _, base = name.rpartition("/")
+    return [f"{head}/{b}" if head else b for b in _unity_includes_by_lower_case().get(base.lower(), [])]
+
+
 def respell_package_includes(program: str, path: Path, first_line: int, warnings: list) -> str:
-    """``program`` with each unresolved ``Packages/`` include that one stand-in matches ignoring
-    case spelled as that stand-in (module docstring); ``warnings`` gets one line each."""
+    """``program`` with each unresolved include that one file matches ignoring case spelled as
+    that file (module docstring); ``warnings`` gets one line each."""
     masked = blank_comments(program)
     out, pos = [], 0
     for m in INCLUDE.finditer(masked):
         name = m.group(1)
-        if not name.startswith("Packages/") or resolve_included(name, path.parent) is not None:
+        if resolve_included(name, path.parent) is not None:
             continue
-        matches = _stand_ins_by_lower_case().get(name.lower(), [])
+        matches = _spellings(name, path.parent)
         where = f"{path}:{first_line - 1 + line_of(program, m.start(1))}"
         if len(matches) > 1:
             raise UnityShaderError(f'{where}: #include "{name}" matches {" and ".join(matches)} ignoring case; '

@@ -32,6 +32,7 @@ from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
 from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
+from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
 # Unity's Camera.nearClipPlane default (0.3 units): the farthest near plane a Unity program
@@ -58,20 +59,23 @@ _NOT_FOR_UNITY = ("textures", "albedo", "metallic", "specular", "smoothness", "e
                   "iridescence_thickness_max", "specular_f90", "dielectric_specular")
 
 
-def light_programs(unity_pass, defines: dict) -> list[tuple[dict, bool]]:
+def light_programs(unity_pass, defines: dict, four_lights: bool = False) -> list[tuple[dict, bool]]:
     """[(defines, additive)]: the programs one pass of a Unity shader draws with. One, unless a
     surface program tests Unity's per-light keywords: then, as Unity's forward path, a base
     program with DIRECTIONAL and USING_DIRECTIONAL_LIGHT (directional lights, ambient,
     emission) and a ForwardAdd program with POINT, or SPOT, for each other light type the
     scene has, added on top. A vertex/fragment ForwardBase pass sees DIRECTIONAL; its
     ForwardAdd pass draws once per other light (DIRECTIONAL, POINT or SPOT, as Unity's forward
-    path), blended by its own Blend line (the target's alpha, the coverage, kept)."""
+    path), blended by its own Blend line (the target's alpha, the coverage, kept); ``four_lights``
+    (a shader without a ForwardAdd pass) gives its ForwardBase pass the point lights as Unity's
+    four vertex lights (generate_pass._four_lights)."""
     if unity_pass.kind != "surface":
         if deferred.is_light_pass(unity_pass):  # the deferred path's: once per light (deferred.py)
             return [(keyed, False) for keyed in deferred.light_draws(defines)]
         mode = unity_pass.light_mode.lower()
         if mode == "forwardbase":
-            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1}, False)]
+            four = {"PBRLAB_UNITY_FOUR_LIGHTS": 1} if four_lights else {}
+            return [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, **four}, False)]
         if mode == "forwardadd":  # one draw per light after the main one, blended by the pass's lines
             out = [({**defines, "DIRECTIONAL": 1, "USING_DIRECTIONAL_LIGHT": 1, "PBRLAB_UNITY_ADD_DIRECTIONAL": i}, False)
                    for i in range(1, defines.get("PBRLAB_DIRECTIONAL_COUNT", 0))]
@@ -145,6 +149,7 @@ class GrabPass:
 class ProgramPass:
     """A surface program or a vertex/fragment pass of a Unity shader."""
     grab = None
+    four_lights = False  # a ForwardBase pass of a shader without a ForwardAdd pass (light_programs)
 
     def __init__(self, unity_pass, alpha_mode: str, moves_vertices: bool, lightmap=None, dynamic_lightmap=None):
         self.unity_pass = unity_pass
@@ -160,7 +165,7 @@ class ProgramPass:
                    **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap),
                    **user_definitions.program_defines(self.unity_pass)}
         out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
-               for keyed, additive in light_programs(self.unity_pass, defines)]
+               for keyed, additive in light_programs(self.unity_pass, defines, self.four_lights)]
         if deferred.is_light_pass(self.unity_pass):  # lights after the first: the coverage stays
             out[1:] = [(keyed, dataclasses.replace(state, blend=(*state.blend[:2], moderngl.ZERO, moderngl.ONE))
                         if state.blend is not None else state) for keyed, state in out[1:]]
@@ -213,6 +218,8 @@ class UnitySource:
 
     def passes(self, material) -> list:
         out = []
+        adds = any(p.kind != "grab" and p.kind != "surface" and p.light_mode.lower() == "forwardadd"
+                   for p in self.shader.passes)
         for p in lightmaps.vertex_lit_passes(self.shader.passes, self.lightmap):
             if _skipped(p, self.shader.path) or fullscreen_pass.not_drawn(p, out):
                 continue
@@ -224,6 +231,7 @@ class UnitySource:
                 out.append(fullscreen_pass.SourceGrab())
             out.append(GrabPass(p) if p.kind == "grab" else ProgramPass(p, material.alpha_mode, self.moves_vertices,
                                                                         self.lightmap, self.dynamic_lightmap))
+            out[-1].four_lights = not adds
         return out
 
     def camera_textures(self, material) -> frozenset:
@@ -354,6 +362,10 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
         if refused:
             r.fail(f"{k!r}: {refused}", "keywords")
     m.keywords = tuple(dict.fromkeys(keywords))
+    # the keywords Unity's material inspector enables from its property drawers ([Toggle],
+    # [KeywordEnum]...: keyword_drawers.py), then each remaining set's first (a set without _)
+    m.keywords += shader.unset_keywords(drawer_keywords(shader.properties, m.properties), m.keywords)
+    m.keywords += tuple(k for k in shader.first_keywords(m.keywords) if k not in shader.refused_keywords)
     if m.keywords:  # the variant the material draws: the struct members and functions its
         # keywords' #if branches hold (parse_pass reads a program's conditionals for its model)
         try:

@@ -243,5 +243,22 @@ class UnityShader:
     @property
     def keywords(self) -> frozenset:
         """The keywords its passes' ``#pragma multi_compile`` / ``shader_feature`` lines declare
-        (a material's ``keywords`` enables some; Unity's default variant has none)."""
+        (a material's ``keywords`` enables some; with none of a set enabled, see first_keywords)."""
         return frozenset().union(*(source_text.declared_keywords(p.program) for p in self.passes if p.kind != "grab"))
+
+    def unset_keywords(self, wanted, enabled=()) -> tuple:
+        """Those of ``wanted`` (a property drawer's keywords) that a pass declares in a set none of
+        whose keywords is ``enabled`` (the material's own choice stands)."""
+        out = []
+        for p in self.passes:
+            if p.kind == "grab":
+                continue
+            for words in source_text.keyword_sets(p.program):
+                out += [k for k in wanted if k in words and not set(words) & set(enabled)]
+        return tuple(dict.fromkeys(out))
+
+    def first_keywords(self, enabled=()) -> tuple:
+        """The keywords Unity draws its passes with where ``enabled`` holds none of a keyword
+        set without ``_``: each such set's first (source_text.first_keywords)."""
+        out = [k for p in self.passes if p.kind != "grab" for k in source_text.first_keywords(p.program, enabled)]
+        return tuple(dict.fromkeys(out))

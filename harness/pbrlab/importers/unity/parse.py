@@ -657,6 +657,12 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
+        raise UnityShaderError(
+            f"{reasons[0].split(': ', 1)[1]} (its one SubShader cannot run, and its Fallback "
+            f'"{layout.fallback}" is a shader pbrlab does not have (line {layout.fallback_line}): put its .shader '
+            "file in this shader's folder (or below it) or its Unity project's Assets, or name its folder in "
+            "$PBRLAB_UNITY_SHADERS)")
     if found is None:
         raise UnityShaderError(
             f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
@@ -780,8 +786,12 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         return _subshader_passes(layout, sub, props, warnings, notes, render_objects.drawing(pipeline, tags))
     if not any(p.kind != "grab" for p in passes):
         skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
+        shadow_only = notes[first_note:] and all("no shadow maps" in n for n in notes[first_note:])
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
-                               + (f": {skipped})" if skipped else ")"))
+                               + (f": {skipped})" if skipped else ")")
+                               + ("; its passes only cast shadows: in Unity the object itself is invisible and shows "
+                                  "only as the shadow it casts on other objects, which pbrlab does not draw"
+                                  if shadow_only else ""))
     return passes
 
 

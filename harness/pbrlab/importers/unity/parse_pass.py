@@ -14,7 +14,7 @@ from . import model as M
 from .geometry_syntax import parse_geometry
 from .tessellation_syntax import parse_tessellation
 from .conditionals import active_text, defines_of
-from .compute_buffers import check_compute_buffers
+from .compute_buffers import check_compute_buffers, check_included_compute_buffers
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
@@ -194,6 +194,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         filled = ()
     check_engine_inputs(everything[:len(masked)], path, first_line, filled)
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
+    check_included_compute_buffers(everything[:len(masked)], everything[len(masked):], program, path.parent)
     written, rewritten = (), {}
     if not staged & set(_APART):  # globals the program writes
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
@@ -225,7 +226,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         if sig is None:
             unresolved = _unresolved_include(program, path.parent)
             if unresolved:  # most likely where the function lives: name the file, not the function
-                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+                raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0], path.parent)}; "
                                        "pbrlab does not provide it "
                                        f"(#pragma {role} {name} names a function none of the rest defines)")
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
@@ -236,7 +237,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     # (an include of the drawn variant: one under a branch not taken is not read)
     unresolved = _unresolved_include(everything[:len(masked)], path.parent) if undefined else None
     if unresolved:  # a struct the signatures name that an include pbrlab lacks defines (URP's 2D shadows')
-        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0])}; "
+        raise UnityShaderError(f"{where(unresolved[1])}: uses {unresolved[0]}, {missing_include(unresolved[0], path.parent)}; "
                                f"pbrlab does not provide it ({undefined[1]}() takes or gives "
                                f"{undefined[0]}, a type none of the rest defines)")
     geometry = (parse_geometry(everything, pragmas["geometry"][0][0], where, pragmas["geometry"][1])

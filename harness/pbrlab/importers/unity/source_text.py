@@ -386,3 +386,36 @@ def declared_keywords(program: str) -> frozenset:
     for m in _KEYWORD_PRAGMA.finditer(blank_comments(program)):
         words.update(w for w in m.group(1).split() if re.fullmatch(IDENT, w) and set(w) != {"_"})
     return frozenset(words)
+
+
+# Keywords Unity's engine sets (per light, lightmap, shadow, fog, pipeline feature), never a
+# material: a set holding one is the engine's to choose, not first_keywords'.
+_ENGINE_KEYWORD = re.compile(r"(?:DIRECTIONAL|POINT|SPOT|POINT_COOKIE|DIRECTIONAL_COOKIE|LIGHTPROBE_SH|VERTEXLIGHT_ON|"
+                             r"INSTANCING_ON|LOD_FADE_CROSSFADE|EDITOR_VISUALIZATION|DEBUG_DISPLAY|"
+                             r"(?:(?:DYNAMIC)?LIGHTMAP|DIRLIGHTMAP|SHADOWS|FOG|UNITY|STEREO)_\w+|"
+                             r"_(?:MAIN_LIGHT|ADDITIONAL|SHADOWS|MIXED_LIGHTING|SCREEN_SPACE|LIGHT_|REFLECTION_PROBE|"
+                             r"DBUFFER|FORWARD_PLUS|CLUSTERED|GBUFFER|RENDER_PASS|WRITE_RENDERING_LAYERS)\w*)")
+
+
+def keyword_sets(program: str) -> list:
+    """The keyword sets of ``program``'s ``#pragma multi_compile`` / ``shader_feature`` lines, each
+    a tuple of its words (``_`` and ``__`` included: Unity's "none")."""
+    return [tuple(m.group(1).split()) for m in _KEYWORD_PRAGMA.finditer(blank_comments(program))
+            if m.group(1).split()]
+
+
+def first_keywords(program: str, enabled=()) -> tuple:
+    """The keyword Unity draws for each keyword set of ``program`` none of whose keywords is
+    ``enabled``: the set's first. Unity's manual ("Shader variants and keywords", "Declare
+    shader keywords"): a set without ``_`` has no variant with all its keywords off, and where
+    none is enabled Unity uses the first keyword's variant. A set with ``_`` (or ``__``) has that
+    variant, and a one-keyword ``shader_feature`` line is short for ``_ KEYWORD``; a set of one
+    ``multi_compile`` keyword, or one holding a keyword the engine sets (_ENGINE_KEYWORD), is
+    left as it is."""
+    out = []
+    for words in keyword_sets(program):
+        if (len(words) < 2 or any(set(w) == {"_"} or not re.fullmatch(IDENT, w) for w in words)
+                or any(_ENGINE_KEYWORD.fullmatch(w) for w in words) or set(words) & set(enabled)):
+            continue
+        out.append(words[0])
+    return tuple(dict.fromkeys(out))

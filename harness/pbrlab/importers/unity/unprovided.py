@@ -28,9 +28,7 @@ UNPROVIDED = {
     **dict.fromkeys(("UnityMetaVertexPosition", "UnityMetaFragment", "UnityMetaInput",
                      "unity_MetaVertexControl", "unity_MetaFragmentControl"),
                     "the lightmap-baking meta pass"),
-    **dict.fromkeys(("unity_4LightPosX0", "unity_4LightPosY0", "unity_4LightPosZ0", "unity_4LightAtten0",
-                     "Shade4PointLights", "unity_VertexLightParams"),
-                    "Unity's four per-vertex lights of the forward path (Shade4PointLights)"),
+    "unity_VertexLightParams": "Unity's vertex-light parameters of its legacy vertex-lit path (the light count)",
     **dict.fromkeys(("_ShadowMapTexture", "unity_WorldToShadow", "_ShadowCoord", "V2F_SHADOW_CASTER",
                      "TRANSFER_SHADOW_CASTER", "TRANSFER_SHADOW_CASTER_NORMALOFFSET", "SHADOW_CASTER_FRAGMENT",
                      "UnityApplyLinearShadowBias", "UnityClipSpaceShadowCasterPos", "UnitySampleShadowmap",
@@ -76,14 +74,48 @@ _UNITY_INCLUDES = {"Lighting.cginc", "AutoLight.cginc", "HLSLSupport.cginc", "Te
                    "TerrainTool.cginc", "GLSLSupport.glslinc"}
 
 
-def missing_include(name: str) -> str:
+def missing_include(name: str, folder=None) -> str:
     """What an unresolved ``#include "name"`` is, in a refusal's words: one of Unity's include
     files pbrlab has no stand-in for, or (any other name) the project's own file that no folder
-    holds, which Unity would not find either."""
+    holds, which Unity would not find either. With the including file's ``folder``, a file of
+    that name elsewhere in its repository is named (elsewhere_in_repository)."""
     base = name.rsplit("/", 1)[-1]
     if name.startswith("Packages/com.unity.") or base.startswith(("Unity", "SpeedTree")) or base in _UNITY_INCLUDES:
         return "one of Unity's include files pbrlab has no stand-in for"
-    return "an include file of the project's that no folder beside the shader or above it holds (Unity would not find it either)"
+    text = "an include file of the project's that no folder beside the shader or above it holds (Unity would not find it either)"
+    elsewhere = elsewhere_in_repository(base, folder) if folder is not None else None
+    if elsewhere is not None:
+        text += (f"; a file of that name lies at {elsewhere}, where Unity does not look (it reads an include from "
+                 "the including file's folder, a project path, or its own CGIncludes folder): copy it beside the shader")
+    return text
+
+
+def elsewhere_in_repository(base: str, folder) -> "Path | None":
+    """A file named ``base`` beside the Unity project ``folder`` lies in (the nearest folder above
+    it that holds ``Assets/``): in the project's parent folder or two folders below it, other
+    Unity projects left out -- where an author keeps a copy of an include Unity found elsewhere
+    (a Unity install's own CGIncludes folder, copied into the repository). None outside a Unity
+    project, or where none is."""
+    from pathlib import Path
+    folder = Path(folder).resolve()
+    project = next((a for a in [folder, *folder.parents] if (a / "Assets").is_dir()), None)
+    if project is None:
+        return None
+    level = [project.parent]
+    for _ in range(3):  # the parent, its folders, theirs
+        for here in level:
+            if (here / base).is_file():
+                return here / base
+        level = [sub for here in level for sub in sorted(_folders(here))
+                 if sub != project and not (sub / "Assets").is_dir()]
+    return None
+
+
+def _folders(here):
+    try:
+        return [entry for entry in here.iterdir() if entry.is_dir()]
+    except OSError:
+        return []
 
 
 @functools.lru_cache(maxsize=1)
