@@ -236,3 +236,38 @@ def test_a_stencil_block_keeps_its_line():
     layout = shaderlab.read_layout(text, __import__("pathlib").Path("x.shader"))
     command = layout.subshaders[0].state[0]
     assert (command.word, command.line, command.body_line) == ("Stencil", 3, 4)
+
+
+@pytest.mark.parametrize("pipeline", sorted(PIPELINES))
+def test_a_reader_alone_draws_nothing_and_the_corpus_lists_why(tmp_path, pipeline):
+    """A shader whose only pass tests Equal 2 draws nothing on its own (the frame's stencil is 0),
+    as in Unity: rendered black in both languages, noted, and the corpus lists it by that note
+    instead of "drew nothing". Control: Ref 0 passes on the cleared buffer: the sphere shows
+    COLOUR and there is no note."""
+    from pbrlab.checking import unity_corpus as corpus
+    path = tmp_path / "reader.shader"
+    path.write_text(shader(pipeline, [("Stencil { Ref 2 Comp Equal ZFail DecrWrap }", COLOUR)]))
+    outcomes = {lang: corpus.run_shader(path, lang) for lang in corpus.LANGUAGES}
+    assert all(o.status == "rendered" and not np.asarray(o.image)[..., :3].any() for o in outcomes.values())
+    assert corpus.no_colour_reason(outcomes).startswith("SubShader draws nothing alone by its Stencil test")
+    assert corpus.outcome_problems("rendered", outcomes) == []
+    path.write_text(shader(pipeline, [("Stencil { Ref 0 Comp Equal }", COLOUR)]))
+    control = {lang: corpus.run_shader(path, lang) for lang in corpus.LANGUAGES}
+    assert corpus.no_colour_reason(control) is None
+    assert all(np.asarray(o.image)[..., :3].max() == 0.75 for o in control.values())
+
+
+def test_a_pass_that_writes_first_or_fails_into_a_write_is_not_called_empty():
+    """draws_nothing_alone's rule: a pass before the reader that writes the stencil, or a failing
+    test whose Fail operation writes, may make it draw: no claim then."""
+    from pbrlab.importers.unity import model as M
+    from pbrlab.importers.unity.stencil_block import draws_nothing_alone
+    reads = M.RenderState(stencil=StencilState(2, front=StencilFace("equal"), back=StencilFace("equal")))
+    writes = M.RenderState(color_mask="0", stencil=StencilState(2, front=StencilFace(pass_op="replace"),
+                                                                back=StencilFace(pass_op="replace")))
+    fails_into_write = M.RenderState(color_mask="0", stencil=StencilState(
+        2, front=StencilFace("never", fail_op="replace"), back=StencilFace("never", fail_op="replace")))
+    assert draws_nothing_alone([reads])
+    assert not draws_nothing_alone([writes, reads])
+    assert not draws_nothing_alone([fails_into_write, reads])
+    assert not draws_nothing_alone([M.RenderState(), reads])  # a pass without a block draws colour

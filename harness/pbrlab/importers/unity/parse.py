@@ -26,7 +26,7 @@ from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
-from .stencil_block import read_stencil
+from .stencil_block import draws_nothing_alone, read_stencil
 from .written_globals import copied_written_globals
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, read_source,
@@ -636,6 +636,10 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
         except UnityShaderError as exc:
             reasons.append(f"SubShader {index + 1} (line {sub.line}): {exc}")
             continue
+        if draws_nothing_alone([p.state for p in passes if p.kind != "grab"]):
+            notes.append(f"{path}:{sub.line}: SubShader {NO_COLOUR_BY_STENCIL}: every pass that writes colour "
+                         "tests for a stencil value that another object's mask writes (the frame's stencil is "
+                         "cleared to 0), drawn as Unity draws it")
         if len(layout.subshaders) > 1:
             notes.insert(0, f"{path}:{sub.line}: SubShader {index + 1} of {len(layout.subshaders)} runs"
                          + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
@@ -843,6 +847,8 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
 # What a corpus summary lists a shader by when it renders but writes no colour by its own
 # ColorMask (checking/unity_corpus.no_colour_reason reads it from the note).
 NO_COLOUR_BY_COLOR_MASK = "draws no colour by its ColorMask"
+# ... or draws nothing when its object is drawn alone, by its Stencil test (stencil_block.draws_nothing_alone).
+NO_COLOUR_BY_STENCIL = "draws nothing alone by its Stencil test"
 
 
 def no_colour_note(path: Path, p, label: str, state: M.RenderState, commands: list) -> str:

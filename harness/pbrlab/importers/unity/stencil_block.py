@@ -126,3 +126,34 @@ def read_stencil(command, props: dict, path: Path, warnings: list) -> StencilSta
         return None
     return StencilState(ref=numbers["ref"], read_mask=numbers["read_mask"], write_mask=numbers["write_mask"],
                         front=sides[0], back=sides[1])
+
+
+# What a pass's test gives where the stencil holds 0 (the frame's clear): (ref & read_mask) c 0.
+_PASSES_ON_ZERO = {"never": lambda r: False, "less": lambda r: False, "equal": lambda r: r == 0,
+                   "lequal": lambda r: r == 0, "greater": lambda r: r > 0, "notequal": lambda r: r != 0,
+                   "gequal": lambda r: True, "always": lambda r: True}
+
+
+def draws_nothing_alone(states: list) -> bool:
+    """Whether passes of these render states (``model.RenderState``, in draw order), drawing one
+    object on a stencil buffer cleared to 0, leave no colour because of their Stencil blocks: every
+    pass that writes colour has a test that fails on 0 (for both facings), and no pass changes
+    the stencil first (a failing test's Fail operation keeps it; a pass without a block writes
+    none). Such a shader draws where a mask of another object's writes its Ref: alone, Unity's
+    image of it is empty too."""
+    tested = False
+    for state in states:
+        colour = state.color_mask.strip() != "0"
+        stencil = state.stencil
+        if stencil is None:
+            if colour:
+                return False
+            continue
+        reference = stencil.ref & stencil.read_mask
+        for face in (stencil.front, stencil.back):
+            if _PASSES_ON_ZERO[face.compare](reference):
+                return False  # it draws, or writes the stencil for the passes after it
+            if face.fail_op != "keep" and stencil.write_mask:
+                return False
+        tested = tested or colour
+    return tested
