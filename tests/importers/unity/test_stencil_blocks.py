@@ -271,3 +271,47 @@ def test_a_pass_that_writes_first_or_fails_into_a_write_is_not_called_empty():
     assert not draws_nothing_alone([writes, reads])
     assert not draws_nothing_alone([fails_into_write, reads])
     assert not draws_nothing_alone([M.RenderState(), reads])  # a pass without a block draws colour
+
+
+SURFACE = """
+Shader "pbrlab tests/stencil surface" {
+    SubShader {
+        %s
+        CGPROGRAM
+        #pragma surface surf Lambert
+        struct Input { float3 worldPos; };
+        void surf(Input IN, inout SurfaceOutput o) { o.Albedo = float3(0.5, 0.5, 0.5); }
+        ENDCG
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_surface_program_on_a_traced_sphere_takes_its_subshaders_front_facing_state(tmp_path, language):
+    """A surface program's SubShader block applies to it; on a ray-traced sphere (drawn through
+    its bounding box's back faces) the front facing's state is the one tested: CompFront Equal 1
+    over the mask covers exactly the mask's pixels of the sphere. Control: with the back facing's
+    Never on the drawn triangles, as GL alone would test them, nothing would show; CompBack
+    Equal / CompFront Never shows nothing here."""
+    def scene(stencil: str, with_mask: bool = True) -> np.ndarray:
+        (tmp_path / "surface.shader").write_text(SURFACE % stencil)
+        (tmp_path / "mask.shader").write_text(shader("builtin", [(MASK, COLOUR)]))
+        objects = [{"sphere": {"center": [0, 0, 0], "radius": 1}, "material": "surface"}]
+        if with_mask:
+            objects.insert(0, {"mesh": {"primitive": "uv_sphere", "radius": 0.5}, "material": "mask",
+                               "transform": {"translate": [0.0, 0.0, 1.2]}})
+        data = {"camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
+                           "size": [48, 48]},
+                "lights": [{"type": "directional", "direction": [0, 0, -1], "color": [1, 1, 1], "intensity": 1}],
+                "materials": {"surface": {"surface": str(tmp_path / "surface.shader")},
+                              "mask": {"surface": str(tmp_path / "mask.shader")}},
+                "objects": objects}
+        return render_scene(parse_scene(data, origin="stencil surface scene", base=tmp_path),
+                            language=language).linear.astype(np.float64)
+    image = scene("Stencil { Ref 1 CompFront Equal CompBack Never }")
+    mask = covered(render(tmp_path, language, [(shader("builtin", [("", COLOUR)]), 0.5, 1.2, 0.0)]))
+    sphere = covered(scene("", with_mask=False))
+    assert (mask & sphere).sum() > 400 and np.array_equal(covered(image), mask & sphere)
+    assert image[covered(image)][:, :3].min() > 0  # lit, not black
+    assert covered(scene("Stencil { Ref 1 CompFront Never CompBack Equal }")).sum() == 0
