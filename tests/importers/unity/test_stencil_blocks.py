@@ -46,7 +46,7 @@ BUILTIN_PASS = """
         }"""
 URP_PASS = """
         Pass {
-            Tags { "LightMode" = "UniversalForward" }
+            Tags { "LightMode" = "%(light_mode)s" }
             %(state)s
             HLSLPROGRAM
             #pragma vertex vert
@@ -60,6 +60,7 @@ URP_PASS = """
             ENDHLSL
         }"""
 PIPELINES = {"builtin": BUILTIN_PASS, "urp": URP_PASS}
+URP_LIGHT_MODES = ("UniversalForward", "SRPDefaultUnlit")
 
 
 def shader(pipeline: str, passes: list, sub_state: str = "", properties: str = "") -> str:
@@ -67,9 +68,11 @@ def shader(pipeline: str, passes: list, sub_state: str = "", properties: str = "
     level; a pass that grows (the default) moves vertices along the normal by ``_Grow`` (0: the
     mesh as it is; an outline's shell), one with grows False keeps them."""
     tags = 'Tags { "RenderPipeline" = "UniversalPipeline" }' if pipeline == "urp" else ""
+    # URP draws an object's first pass of each LightMode: a second pass is SRPDefaultUnlit
     body = "".join(PIPELINES[pipeline] % {"state": p[0], "colour": ", ".join(map(str, p[1])),
-                                          "grow": "_Grow" if len(p) < 3 or p[2] else "0.0"}
-                   for p in passes)
+                                          "grow": "_Grow" if len(p) < 3 or p[2] else "0.0",
+                                          "light_mode": URP_LIGHT_MODES[index]}
+                   for index, p in enumerate(passes))
     return textwrap.dedent(f"""\
         Shader "pbrlab tests/stencil" {{
             Properties {{ _Grow ("Grow", Float) = 0 {properties} }}
