@@ -558,6 +558,8 @@ class Pipeline:
                             # code (model.VertexFragmentPass.srp)
     rewrites: tuple = ()    # functions text -> text applied to its programs after the spellings
     keywords: tuple = ()    # keywords it enables where a program declares them (its renderer's)
+    first_pass_per_light_mode: bool = False  # it draws a SubShader's first pass of each LightMode
+                                             # alone (first_of_light_mode)
 
 
 # Its passes run CGPROGRAM and HLSLPROGRAM blocks alike (Unity's manual, "HLSL in Unity": an
@@ -588,7 +590,9 @@ URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalf
                # Shader Graph's texture objects (UnityTexture2D locals) spelled out
                rewrites=(texture_objects.spelled_out,),
                # URP's default renderer: per-pixel additional lights
-               keywords=("_ADDITIONAL_LIGHTS",))
+               keywords=("_ADDITIONAL_LIGHTS",),
+               # URP's DrawObjectsPass: one pass of each LightMode it draws (first_of_light_mode)
+               first_pass_per_light_mode=True)
 
 
 def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
@@ -753,6 +757,10 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
                 and item[1].light_mode.lower() in pipeline.drawn:  # a lightmapped object's VertexLM too (lightmaps.py)
             notes.append(f"{path}:{item[1].line}: Pass (LightMode {item[1].light_mode}) skipped: its SubShader has "
                          "ForwardBase passes, which Unity's forward path draws instead")
+        elif kind == "pass" and not first_of_light_mode(item[1], passes, pipeline):
+            notes.append(f"{path}:{item[1].line}: Pass{' ' + repr(item[1].name) if item[1].name else ''} "
+                         f"(LightMode {item[1].light_mode or 'none: SRPDefaultUnlit'}) skipped: {pipeline.name} "
+                         "draws the first pass of each LightMode of a SubShader, and an earlier pass has this one's")
         elif kind == "pass":
             vf = _pass(layout, sub, item[1], props, warnings, notes, pipeline)
             if vf is not None:
@@ -781,6 +789,25 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
                                + (f": {skipped})" if skipped else ")"))
     return passes
+
+
+def _srp_light_mode(mode: str) -> str:
+    """A LightMode as an SRP draws it: an untagged pass is SRPDefaultUnlit."""
+    return mode.lower() if mode.lower() not in ("", "always") else "srpdefaultunlit"
+
+
+def first_of_light_mode(p, drawn: list, pipeline: Pipeline) -> bool:
+    """Whether Pass ``p`` is drawn by a pipeline that draws one pass per LightMode, given the
+    passes ``drawn`` before it. URP's DrawObjectsPass asks DrawRenderers for its ShaderTagId list
+    (SRPDefaultUnlit, UniversalForward, UniversalForwardOnly; an untagged pass counts as
+    SRPDefaultUnlit, URP's ShaderLab Pass tags page), and DrawRenderers draws an object's first
+    pass of each tag: a second untagged pass is not drawn (Unity's Frame Debugger shows it;
+    public write-ups of URP multi-pass shaders report it)."""
+    if not pipeline.first_pass_per_light_mode:
+        return True
+    mode = _srp_light_mode(p.light_mode)
+    return not any(getattr(q, "light_mode", None) is not None and _srp_light_mode(q.light_mode) == mode
+                   for q in drawn if q.kind != "grab")
 
 
 def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pipeline = BUILTIN):
