@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 from . import gl
 from ..foundation.errors import PbrlabError
 
-# OpenGL 3.3 core enums (tables 4.x "stencil function", "stencil operation"; section 4.4.2)
+# OpenGL 3.3 core enum values (glcorearb.h): StencilFunc and StencilOp (section 4.1.5), renderbuffers (4.4.2)
 _COMPARE = {"never": 0x0200, "less": 0x0201, "equal": 0x0202, "lequal": 0x0203, "greater": 0x0204,
             "notequal": 0x0205, "gequal": 0x0206, "always": 0x0207}
 _OPERATIONS = {"keep": 0x1E00, "zero": 0x0000, "replace": 0x1E01, "incr": 0x1E02, "decr": 0x1E03,
