@@ -194,10 +194,12 @@ def refusal_key(message: str) -> str:
 
 def no_colour_reason(outcomes: dict) -> str | None:
     """Why a shader rendered in every language draws no colour by its own ColorMask (a
-    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written), read from its
-    note; None for any other shader. The report lists these, not as silently empty images."""
-    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK
-    notes = [next((w for w in o.warnings if NO_COLOUR_BY_COLOR_MASK in w), None) for o in outcomes.values()]
+    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written) or, drawn alone, by
+    its Stencil test (it draws over another object's mask), read from its note; None for any other
+    shader. The report lists these, not as silently empty images."""
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK, NO_COLOUR_BY_STENCIL
+    notes = [next((w for w in o.warnings if NO_COLOUR_BY_COLOR_MASK in w or NO_COLOUR_BY_STENCIL in w), None)
+             for o in outcomes.values()]
     if not outcomes or any(o.status != "rendered" for o in outcomes.values()) or None in notes:
         return None
     return without_folders(notes[0]).split(": ", 1)[-1]   # the note, which says it, without its place

@@ -25,7 +25,7 @@ import ctypes
 import moderngl
 import numpy as np
 
-from . import gl
+from . import gl, stencil_state
 from ..maths import mipmaps
 from ..foundation.errors import PbrlabError
 
@@ -39,7 +39,8 @@ BLACKMAN_HARRIS_RADIUS = 1.5  # px either side of the centre: Cycles' default fi
 
 
 class Target:
-    """A framebuffer with one colour attachment (and optionally depth) of a given size;
+    """A framebuffer with one colour attachment (and optionally depth, with an 8-bit stencil:
+    ``stencil_state.DepthStencilBuffer``) of a given size;
     with ``samples`` > 1 (float kinds only) a multisampled one, resolved into ``color`` by
     ``resolve()``."""
 
@@ -82,19 +83,19 @@ class Target:
                 self._multisampled = ctx.texture(self.size, 4, samples=many, dtype=HDR_DTYPES[kind])
                 if not many:  # texelFetch reads level 0: complete without mipmaps (no mipmap filter)
                     self._multisampled.filter = (moderngl.NEAREST, moderngl.NEAREST)
-                self.depth = ctx.depth_renderbuffer(self.size, samples=many) if depth else None
-                self.fbo = ctx.framebuffer([self._multisampled], self.depth)
+                self.fbo = ctx.framebuffer([self._multisampled])
                 self._resolved = ctx.framebuffer([self.color])
             elif self.samples > 1:
                 self._multisampled = ctx.renderbuffer(self.size, 4, samples=self.samples, dtype=HDR_DTYPES[kind])
-                self.depth = ctx.depth_renderbuffer(self.size, samples=self.samples) if depth else None
-                self.fbo = ctx.framebuffer([self._multisampled], self.depth)
+                self.fbo = ctx.framebuffer([self._multisampled])
                 self._resolved = ctx.framebuffer([self.color])
             else:
-                self.depth = ctx.depth_renderbuffer(self.size) if depth else None
-                self.fbo = ctx.framebuffer([self.color], self.depth)
-        except moderngl.Error as exc:  # e.g. "framebuffer is incomplete": out of memory
-            for resource in (self._resolved, self._multisampled, self.color, self.depth):
+                self.fbo = ctx.framebuffer([self.color])
+            if depth:  # depth and an 8-bit stencil (stencil_state.py); moderngl's fbo writes depth
+                self.fbo.depth_mask = True  # as it does for a depth attachment of its own
+                self.depth = stencil_state.DepthStencilBuffer(ctx, self.fbo, self.size, self.samples)
+        except (moderngl.Error, PbrlabError) as exc:  # e.g. "framebuffer is incomplete": out of memory
+            for resource in (self.depth, getattr(self, "fbo", None), self._resolved, self._multisampled, self.color):
                 if resource is not None:
                     resource.release()
             mib = w * h * (_BYTES_PER_PIXEL[kind] + (4 if depth else 0)) * self.samples / 2**20

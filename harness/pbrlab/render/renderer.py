@@ -26,7 +26,7 @@ import moderngl
 import numpy as np
 
 from . import camera_textures, environment_visibility, features, instanced_draws, resource_cache, shadow_map, tangent_frames
-from ..gpu import gl, gl_limits, ibl, surface_bindings
+from ..gpu import gl, gl_limits, ibl, stencil_state, surface_bindings
 from ..scene import meshes, surface_layers
 from ..gpu import targets
 from ..gpu.cancellation import dies_on_signal
@@ -236,10 +236,14 @@ def _upload_material(program, material):
 COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 
 
-def _reset_draw_state(ctx) -> None:
-    """The state every render starts from, whatever an earlier render in this context left
-    (a pass's own ZTest once leaked into the next scene: "<=" moved 7 depth-tie pixels of
-    the lit scene, so a golden depended on which test ran before it in the process)."""
+def _clear_and_reset(ctx) -> None:
+    """The bound target cleared (colour 0: alpha is coverage, the background 0; depth 1; stencil
+    0, cleared with depth as Unity does), and the state every render starts from, whatever an
+    earlier render in this context left (a pass's own ZTest once leaked into the next scene:
+    "<=" moved 7 depth-tie pixels of the lit scene, so a golden depended on which test ran
+    before it in the process)."""
+    ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+    stencil_state.clear(ctx)  # and the stencil test off
     ctx.enable(moderngl.DEPTH_TEST)
     ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)
     ctx.depth_func = "<"
@@ -388,8 +392,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         if behind is not None:  # a transmissive material: first the scene it sees (transmission_copy.py)
             copy = transmission_copy.TransmissionCopy(ctx, (w, h), hdr_format, samples)
             copy.target.use()
-            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-            _reset_draw_state(ctx)
+            _clear_and_reset(ctx)
             seen = _draw_order(dataclasses.replace(scene, objects=behind), frame)
             draw_calls += _draw_objects(ctx, copy.target, seen, draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
@@ -402,8 +405,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
             resources.reflection = screen_space_reflection.ScreenSpaceReflection(ctx, scene, frame, hdr_format)
             first = resources.reflection.colour_target
             first.use()
-            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-            _reset_draw_state(ctx)
+            _clear_and_reset(ctx)
             draw_calls += _draw_objects(ctx, first, _draw_order(scene, frame), draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             first.fbo.depth_mask = True
@@ -411,8 +413,7 @@ def render_scene(scene: Scene, ctx: moderngl.Context | None = None, size=None,
         with targets.Target(ctx, (w, h), hdr_format, samples=samples,
                             resolve_filter=scene.render.antialias_filter, downsample=supersample) as hdr:
             hdr.use()
-            ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)  # alpha = coverage: background is 0
-            _reset_draw_state(ctx)
+            _clear_and_reset(ctx)
             draw_calls += _draw_objects(ctx, hdr, _draw_order(scene, frame), draw)
             ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
             hdr.fbo.depth_mask = True
@@ -479,17 +480,21 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
                                                     getattr(material_pass, "clamp_to_edge", False))
                 continue
             for keyed, state in material_pass.draws(defines):
-                _apply_state(ctx, hdr, state)
+                traced = obj.sphere is not None and material_pass.traces_spheres
+                _apply_state(ctx, hdr, state, traced)
                 draw_calls += 1
-                if obj.sphere is not None and material_pass.traces_spheres:
+                if traced:
                     _draw_sphere(ctx, hdr, obj, material, material_pass, keyed, draw, grabbed)
                 else:  # meshes, and spheres whose pass moves vertices (tessellated)
                     _draw_mesh(ctx, obj, material, material_pass, keyed, state, draw, grabbed, batch)
+    stencil_state.apply(ctx, None)  # the test off again: what follows (grabs, the resolve) is not a pass's
     return draw_calls
 
 
-def _apply_state(ctx, hdr, state) -> None:
-    """Blending, depth and colour writes and the depth test of a pass's draw (its culling: ``_cull``)."""
+def _apply_state(ctx, hdr, state, traced: bool = False) -> None:
+    """Blending, depth and colour writes, the depth and stencil tests of a pass's draw (its
+    culling: ``_cull``). ``traced``: a ray-traced sphere, drawn through its bounding box's back
+    faces, takes the stencil state of front faces (the surface it shows)."""
     if state.blend is not None:
         ctx.enable(moderngl.BLEND)
         ctx.blend_func = state.blend
@@ -502,6 +507,8 @@ def _apply_state(ctx, hdr, state) -> None:
         hdr.fbo.color_mask = state.color_mask
         hdr.fbo.use()
     ctx.depth_func = state.depth_func
+    stencil = state.stencil
+    stencil_state.apply(ctx, stencil.front_on_both_faces() if traced and stencil is not None else stencil)
 
 
 def _grab(ctx, hdr, holder, clamp_to_edge=False):

@@ -23,18 +23,23 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
+from ..gpu.stencil_state import StencilState
+
 @dataclass(frozen=True)
 class RenderState:
     """How one draw writes the target: ``blend`` the (source, destination, source alpha,
     destination alpha) GL factors or None (no blending); ``depth_write``; ``depth_func``
     (moderngl's spelling: "<", "<=", ..., "1" always, "0" never); ``cull`` "front", "back",
     "off", or None for the material's own sidedness (double-sided or blended: none culled);
-    ``color_mask`` the (r, g, b, a) channels it writes (alpha: the target's coverage)."""
+    ``color_mask`` the (r, g, b, a) channels it writes (alpha: the target's coverage);
+    ``stencil`` its stencil test and writes (``gpu.stencil_state.StencilState``), or None for
+    the test off."""
     blend: tuple | None
     depth_write: bool
     depth_func: str
     cull: str | None = None
     color_mask: tuple = (True, True, True, True)
+    stencil: StencilState | None = None
 
 
 class Pass(Protocol):

@@ -69,13 +69,14 @@ def test_a_color_mask_0_pass_writes_depth_and_no_colour(tmp_path, language):
 
 def test_a_mask_alone_renders_black_and_is_listed_as_drawing_no_colour():
     """The corpus outcome: rendered in both languages, black, and listed by its reason (the
-    note says it draws no colour by its ColorMask and that its Stencil block is not applied);
+    note says it draws no colour by its ColorMask and what it writes: depth and, by its Stencil
+    block, stencil);
     the check then wants it black. Control: a rendered black image without the note is
     "drew nothing"."""
     outcomes = {lang: corpus.run_shader(MASK, lang) for lang in corpus.LANGUAGES}
     assert all(o.status == "rendered" for o in outcomes.values())
     reason = corpus.no_colour_reason(outcomes)
-    assert reason is not None and "draws no colour by its ColorMask" in reason and "Stencil" in reason
+    assert reason is not None and "draws no colour by its ColorMask" in reason and "depth and stencil" in reason
     assert corpus.outcome_problems("rendered", outcomes) == []
     silent = {k: corpus.Outcome("s", k, "rendered", image=o.image) for k, o in outcomes.items()}
     assert corpus.no_colour_reason(silent) is None

@@ -117,25 +117,28 @@ def color_mask(words: str) -> tuple:
 def pass_state(alpha_mode: str, unity_pass, additive: bool = False) -> RenderState:
     """Blending, depth writes, depth test and culling of one pass of a Unity shader: a surface
     program's from its #pragma surface alpha option (and ZWrite line), a vertex/fragment
-    pass's from its Blend, ZWrite and ZTest lines; its Cull line for meshes; its ColorMask. ``additive``: a
+    pass's from its Blend, ZWrite and ZTest lines; its Cull line for meshes; its ColorMask and Stencil
+    block (a surface program's, its SubShader's, in its ForwardAdd draws too). ``additive``: a
     ForwardAdd program, added to what the base program drew (Unity: Blend One One, or SrcAlpha
     One when the surface blends; ZWrite Off), the target's alpha kept."""
     state = unity_pass.state
     if additive:
         source = moderngl.SRC_ALPHA if alpha_mode in BLENDED_ALPHA_MODES else moderngl.ONE
         return RenderState(blend=(source, moderngl.ONE, moderngl.ZERO, moderngl.ONE), depth_write=False,
-                           depth_func="<=", cull=state.cull, color_mask=color_mask(state.color_mask))
+                           depth_func="<=", cull=state.cull, color_mask=color_mask(state.color_mask),
+                           stencil=state.stencil)
     if unity_pass.kind == "surface":
         blended = alpha_mode_state(alpha_mode, "<=", None if state.zwrite is None else state.zwrite)
         return RenderState(blend=blended.blend, depth_write=blended.depth_write, depth_func="<=", cull=state.cull,
-                           color_mask=color_mask(state.color_mask))
+                           color_mask=color_mask(state.color_mask), stencil=state.stencil)
     blend = None
     if state.blend_factors:
         blend = tuple(_UNITY_FACTORS[f] for f in state.blend_factors)
         if unity_pass.light_mode.lower() == "forwardadd":  # light added: the coverage stays
             blend = (*blend[:2], moderngl.ZERO, moderngl.ONE)
     return RenderState(blend=blend, depth_write=True if state.zwrite is None else state.zwrite,
-                       depth_func=_UNITY_DEPTH[state.ztest], cull=state.cull, color_mask=color_mask(state.color_mask))
+                       depth_func=_UNITY_DEPTH[state.ztest], cull=state.cull, color_mask=color_mask(state.color_mask),
+                       stencil=state.stencil)
 
 
 class GrabPass:

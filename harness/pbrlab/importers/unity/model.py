@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ...gpu.stencil_state import StencilState
 from ...scene.surface_layers import FIELD_SIZES
 from . import source_text
 
@@ -88,6 +89,7 @@ class RenderState:
     blend_factors: tuple | None = None  # (src, dst[, src alpha, dst alpha]): ShaderLab factor names
     ztest: str = "lequal"           # less, greater, lequal, gequal, equal, notequal, always
     color_mask: str = "rgba"        # "0" draws depth only
+    stencil: StencilState | None = None  # its Stencil block's (stencil_block.py); None: the test off
 
 
 @dataclass

@@ -26,6 +26,7 @@ from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .parse_pass import _structs, parse_pass
+from .stencil_block import draws_nothing_alone, read_stencil
 from .written_globals import copied_written_globals
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, read_source,
@@ -43,9 +44,8 @@ NO_EFFECT_OPTIONS = frozenset("""
 NO_EFFECT_PREFIXES = ("exclude_path:", "interpolateview", "halfasview", "approxview")
 ALPHA_OPTIONS = {"alpha": "fade", "alpha:auto": "fade", "alpha:blend": "fade",
                  "alpha:fade": "fade", "alpha:premul": "transparent"}
-PASS_STATE_HONOURED = ("Cull", "ZWrite", "Blend")
-PASS_STATE_IGNORED = ("ZTest", "ColorMask", "Offset", "Stencil", "AlphaToMask", "BlendOp",
-                      "Conservative", "ZClip")
+PASS_STATE_HONOURED = ("Cull", "ZWrite", "Blend", "Stencil")
+PASS_STATE_IGNORED = ("ZTest", "ColorMask", "Offset", "AlphaToMask", "BlendOp", "Conservative", "ZClip")
 
 
 class _Lines:
@@ -244,10 +244,12 @@ def apply_state(commands, state: M.RenderState, props: dict, path: Path, warning
             state.blend_factors = tuple(known[w.lower()] for w in words)
         elif word == "colormask":
             state.color_mask = " ".join(_state_words(c.args, props, where)).lower()
+        elif word == "stencil":  # a block: its [_Property] values are read by read_stencil
+            state.stencil = read_stencil(c, props, path, warnings)
         elif word in ("lod", "name", "tags"):
             continue
-        elif c.word in PASS_STATE_IGNORED or word in ("offset", "stencil", "alphatomask", "blendop",
-                                                      "fog", "conservative", "zclip"):
+        elif c.word in PASS_STATE_IGNORED or word in ("offset", "alphatomask", "blendop", "fog", "conservative",
+                                                      "zclip"):
             warnings.append(f"{where}: {c.word} {c.args}: not supported by the harness, ignored")
         else:
             warnings.append(f"{where}: {c.word} {c.args}: not a ShaderLab command pbrlab knows, ignored")
@@ -638,6 +640,10 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
         except UnityShaderError as exc:
             reasons.append(f"SubShader {index + 1} (line {sub.line}): {exc}")
             continue
+        if draws_nothing_alone([p.state for p in passes if p.kind != "grab"]):
+            notes.append(f"{path}:{sub.line}: SubShader {NO_COLOUR_BY_STENCIL}: every pass that writes colour "
+                         "tests for a stencil value that another object's mask writes (the frame's stencil is "
+                         "cleared to 0), drawn as Unity draws it")
         if len(layout.subshaders) > 1:
             notes.insert(0, f"{path}:{sub.line}: SubShader {index + 1} of {len(layout.subshaders)} runs"
                          + (f" (earlier: {'; '.join(reasons)})" if reasons else ""))
@@ -878,16 +884,19 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
 # What a corpus summary lists a shader by when it renders but writes no colour by its own
 # ColorMask (checking/unity_corpus.no_colour_reason reads it from the note).
 NO_COLOUR_BY_COLOR_MASK = "draws no colour by its ColorMask"
+# ... or draws nothing when its object is drawn alone, by its Stencil test (stencil_block.draws_nothing_alone).
+NO_COLOUR_BY_STENCIL = "draws nothing alone by its Stencil test"
 
 
 def no_colour_note(path: Path, p, label: str, state: M.RenderState, commands: list) -> str:
     """The note of a program-less ``ColorMask 0`` pass drawn as written: what it writes instead."""
-    words = {c.word.lower(): c for c in commands}
     writes = ["depth"] if state.zwrite is not False else []
-    stencil = (" (its Stencil block, line " + str(words["stencil"].line)
-               + ", is not applied here: the harness has no stencil buffer)") if "stencil" in words else ""
+    if state.stencil is not None and state.stencil.write_mask and any(
+            op != "keep" for face in (state.stencil.front, state.stencil.back)
+            for op in (face.pass_op, face.fail_op, face.depth_fail_op)):
+        writes.append("stencil")
     return (f"{path}:{p.line}: {label} {NO_COLOUR_BY_COLOR_MASK} (ColorMask 0): drawn as written, writing "
-            f"{' and '.join(writes) or 'nothing the image shows (ZWrite Off)'}{stencil}")
+            f"{' and '.join(writes) or 'nothing the image shows (ZWrite Off)'}")
 
 
 def _use_pass(name: str, line: int, path: Path, props: dict, warnings: list, notes: list,

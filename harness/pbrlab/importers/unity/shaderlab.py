@@ -79,6 +79,7 @@ class StateCommand:
     args: str             # the rest of its line ("{...}" for a block)
     line: int
     body: str = ""        # a block's text between its braces (Material { ... }, SetTexture [_T] { ... })
+    body_line: int = 0    # the line of its '{' (where ``body`` starts)
 
 
 @dataclass
@@ -209,6 +210,11 @@ class _Tokens:
         open_at = self.peek()[2]
         return self.masked[open_at + 1:self.skip_braces()]
 
+    def state_block(self, word: str, line: int) -> StateCommand:
+        """A state command with a block (``Stencil { ... }``, ``Fog { ... }``), at its '{'."""
+        body_line = self.peek()[1]
+        return StateCommand(word, "{...}", line, self.block_body(), body_line)
+
     def rest_of_line(self, line: int) -> str:
         words = []
         while (self.peek()[0] is not None and self.peek()[1] == line and self.peek()[0] not in ("{", "}")
@@ -278,7 +284,7 @@ def _pass(t: _Tokens, line: int) -> PassBlock:
             body = t.block_body() if t.peek()[0] == "{" else ""
             p.fixed_commands.append(StateCommand(tok, args, tline, body))
         elif t.peek()[0] == "{":   # Stencil { ... }, Fog { ... }
-            p.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
+            p.state.append(t.state_block(tok, tline))
         else:
             p.state.append(StateCommand(tok, t.command_args(tok, tline), tline))
 
@@ -328,7 +334,7 @@ def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
             t.expect("}")
             s.items.append(("grabpass", name or "_GrabTexture", tline))
         elif t.peek()[0] == "{":
-            s.state.append(StateCommand(tok, "{...}", tline, t.block_body()))
+            s.state.append(t.state_block(tok, tline))
         else:
             s.state.append(StateCommand(tok, t.command_args(tok, tline), tline))
 
@@ -393,7 +399,7 @@ def read_layout(text: str, path: Path) -> ShaderLabFile:
         elif word == "tags" and t.peek()[0] == "{":   # a Category's tags: not the passes' state
             t.skip_braces()
         elif t.peek()[0] == "{":   # a Category's Material { ... }, Fog { ... }, BindChannels { ... }
-            layout.category_state.append(StateCommand(tok, "{...}", tline, t.block_body()))
+            layout.category_state.append(t.state_block(tok, tline))
         elif word in COMMANDS:     # a Category's Blend, Cull, Lighting, ...
             layout.category_state.append(StateCommand(tok, t.command_args(tok, tline), tline))
         else:
