@@ -164,8 +164,14 @@ def run_shader(shader: Path, language: str) -> Outcome:
             tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
             return Outcome(str(shader), language, "traceback", "".join(tb[-3:])[-600:],
                            _messages(caught))
-    status = "rendered" if np.isfinite(image).all() else "non-finite"
-    return Outcome(str(shader), language, status, "", _messages(caught), image)
+    finite = np.isfinite(image).all(axis=-1)
+    if finite.all():
+        return Outcome(str(shader), language, "rendered", "", _messages(caught), image)
+    # which pixels, so a report says where the shader's own arithmetic (or pbrlab's) broke down
+    rows, cols = np.nonzero(~finite)
+    where = (f"{int((~finite).sum())} of {finite.size} pixels are NaN or infinite (rows "
+             f"{rows.min()}..{rows.max()}, columns {cols.min()}..{cols.max()})")
+    return Outcome(str(shader), language, "non-finite", where, _messages(caught), image)
 
 
 # What a compiler says (glslang, Mesa's GLSL compiler): a shader the front end let through and
