@@ -239,9 +239,9 @@ COLOR_TRANSFERS = ("EXACT", "HARDWARE", "SRGB", "GAMMA22", "FAST")
 def _clear_and_reset(ctx) -> None:
     """The bound target cleared (colour 0: alpha is coverage, the background 0; depth 1; stencil
     0, cleared with depth, as engines clear it each frame), and the state every render starts
-    from, whatever an earlier render in this context left (a pass's own ZTest once leaked into the next scene:
-    "<=" moved 7 depth-tie pixels of the lit scene, so a golden depended on which test ran
-    before it in the process)."""
+    from, whatever an earlier render in this context left (a pass's own ZTest once leaked into
+    the next scene: "<=" moved 7 depth-tie pixels of the lit scene, so a golden depended on
+    which test ran before it in the process)."""
     ctx.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
     stencil_state.clear(ctx)  # and the stencil test off
     ctx.enable(moderngl.DEPTH_TEST)
