@@ -48,9 +48,11 @@ _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
 # HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry
 # (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
-# list whose last parameters are under an #if).
+# list whose last parameters are under an #if). In a macro's body the index may be pasted from a
+# parameter (``#define MY_COORDS(i) float3 v : TEXCOORD##i;``): the port strips semantics from the
+# macro's text, so its expansion carries none.
 _SEMANTIC = re.compile(r"([\w\]])\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*(?:\s*##\s*\w+)*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
