@@ -50,15 +50,17 @@ _INT = re.compile(r"\b(int|bool|uint)([234])\b")
 # (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
 # list whose last parameters are under an #if). In a macro's body the index may be pasted from a
 # parameter (``#define MY_COORDS(i) float3 v : TEXCOORD##i;``): the port strips semantics from the
-# macro's text, so its expansion carries none.
+# macro's text, so its expansion carries none. A comment between the semantic and what ends the
+# declaration (``float4 p : SV_POSITION // clip space`` before ``)``) is a placeholder here
+# (port_text: _placeholder).
 _SEMANTIC = re.compile(r"([\w\]])\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*(?:\s*##\s*\w+)*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*(?:\s*##\s*\w+)*\s*(?=(?:__PBRLAB_KEEP_\d+__\s*)*[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
 # ``case X : return;`` is not a declaration); an array member too (``float3 v[4] : TANUCORNER;``).
 _DECLARED_SEMANTIC = re.compile(r"\b((?!case\b)[A-Za-z_]\w*\s+[A-Za-z_]\w*(?:\s*\[\s*\w+\s*\])?)\s*:\s*"
-                                r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=[;,)])")
+                                r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=(?:__PBRLAB_KEEP_\d+__\s*)*[;,)])")
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 

@@ -65,7 +65,7 @@ def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
     return [TEMPLATES, CGINC, shader.path.parent]
 
 
-_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
+_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]*")([^"]+)(")', re.M)
 
 
 _STRUCT = re.compile(r"\bstruct\s+\w+\s*\{[^{}]*\}\s*;")

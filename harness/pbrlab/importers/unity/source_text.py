@@ -114,7 +114,8 @@ def component_count(kind: str) -> int:
 
 
 
-INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+# (``#include"x.hlsl"``, no blank before the name: the C preprocessor and FXC take it)
+INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.M)
 # A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
 _ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
 _CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
