@@ -189,7 +189,8 @@ def hlsl_includes(shader) -> dict:
         if any(Path(path).is_relative_to(root) for root in stand_ins):
             continue
         text = out.get(path) or shaders.strip_bom(read_source(path))
-        spelled = _fxc_spelled(text, included, getattr(shader, "srp", False))
+        # (in the spellings glslang takes, as the program's: cg_spellings)
+        spelled = _fxc_spelled(cg_spellings.respelled(text), included, getattr(shader, "srp", False))
         if spelled != text:
             out[path] = spelled
     return out
