@@ -295,6 +295,11 @@ _CONSTRUCTOR_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+([A-Za-z
                                  re.M)
 # `#define real3 float3`, `#define UNITY_MATRIX_M unity_ObjectToWorld`: an object-like alias
 _ALIAS_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", re.M)
+# `#define SHADERGRAPH_SAMPLE_SCENE_DEPTH(uv) pbrlab_shadergraph_scene_depth(uv)`: a macro that
+# forwards its parameters, in order, to a function is that function's alias (a use has its type:
+# FXC's conversions of the value, a scalar's swizzle or splat, are then spelled as for a call)
+_FORWARDING_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\(([\w \t,]*)\)[ \t]+([A-Za-z_]\w*)[ \t]*\(([\w \t,]*)\)"
+                                r"[ \t]*(?://[^\n]*)?$", re.M)
 _NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
                             r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
 
@@ -460,6 +465,10 @@ class _Parser:
                 symbols.globals.setdefault(m.group(1), constructed)
         for m in _ALIAS_DEFINE.finditer(text):  # `#define real3 float3` (Core RP): a type's or a name's alias
             symbols.aliases.setdefault(m.group(1), m.group(2))
+        for m in _FORWARDING_DEFINE.finditer(text):  # a macro that calls a function with its parameters
+            params, args = ([w.strip() for w in g.split(",")] for g in (m.group(2), m.group(4)))
+            if params == args and m.group(1) != m.group(3):
+                symbols.aliases.setdefault(m.group(1), m.group(3))
         self.edits = Edits()
         self.scopes = []
         self.ret = None
