@@ -1176,6 +1176,10 @@ class _Parser:
                         self.truncate(rhs, lhs.t.dim)
                     elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
                         self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+                if t.text != "=" and lhs.t.base == "uint" and rhs.t.base == "int" and rhs.t.numeric:
+                    # ``u %= 8`` (a uint2 and an int): HLSL converts the int operand to uint, as
+                    # in ``u % 8`` (combine); GLSL 330 takes one signedness only
+                    self.wrap(rhs, Type("uint", rhs.t.dim, rhs.t.cols).cg())
             if lhs.element:
                 self.edits.drop(lhs.row_index)
                 self.element_written(lhs.element)
