@@ -681,6 +681,8 @@ class _Parser:
         if ty is None:
             return None
         self.next()
+        if ty.base == t.text and t.text in self.sym.structs:
+            self.rename_reserved_name(t)  # a struct of a name GLSL reserves (``struct output``)
         if ty.base in ("Texture2D",) and self.at("<"):
             self.skip_balanced("<", ">")
         return ty
