@@ -186,27 +186,28 @@ _CONDITION = re.compile(r"#\s*(if|ifdef|ifndef|elif|else|endif)\b")
 
 def _enclosing_conditions(text: str, directives, pos: int) -> list:
     """The preprocessor lines that put ``pos`` where it is: each open #if (its #elif and
-    #else up to the branch ``pos`` lies in), outermost first; a file's include guard
-    (``#ifndef X`` then ``#define X`` first) is not one, nor is anything closed before."""
+    #else up to the branch ``pos`` lies in), outermost first; an include guard (``#ifndef X``
+    then ``#define X``: a file's, or one a program writes around a part of its own, as URP's
+    files do) is not one (false where the zero's body goes, at the end), nor is anything closed
+    before."""
     stack = []   # per open #if: its lines so far
     spans = [(s, e) for s, e in directives if s < pos]
-    guard = None
-    if len(directives) >= 2:
-        first, second = (text[s:e] for s, e in directives[:2])
-        m = re.match(r"#\s*ifndef\s+(\w+)", first)
-        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", second):
-            guard = directives[0][0]
+    guards = set()
+    for (s, e), (s2, e2) in zip(directives, directives[1:]):
+        m = re.match(r"#\s*ifndef\s+(\w+)", text[s:e])
+        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", text[s2:e2]):
+            guards.add(s)
     for s, e in spans:
         m = _CONDITION.match(text, s)
-        if not m or s == guard:
+        if not m:
             continue
         line = text[s:e].strip()
         if m.group(1).startswith("if"):
-            stack.append([line])
+            stack.append([] if s in guards else [line])  # (a guard's #endif closes it)
         elif m.group(1) == "endif":
             if stack:
                 stack.pop()
-        elif stack:
+        elif stack and stack[-1]:
             stack[-1].append(line)
     return [line for block in stack for line in block]
 
