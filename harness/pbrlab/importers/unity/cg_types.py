@@ -393,6 +393,18 @@ _INTRINSICS = {
     "cross": ("cross", ()), "reflect": ("first", ()), "refract": ("first", (2,)),
     "faceforward": ("first", ()),
 }
+# The intrinsics GLSL has as built-in functions of the same name. A program's own function of
+# such a name (``float cross(float2 p, float2 c, float r, float w, float e)``) overloads the
+# intrinsic in HLSL, where a call picks by its arguments; in GLSL a function of the shader's
+# hides every built-in of its name (GLSL 3.30 section 6.1.1: "a function declared in a shader
+# hides all built-in functions of the same name"), so the port names the program's own
+# pbr_own_<name>, with each call that resolves to it; the other calls keep the built-in.
+_GLSL_BUILT_IN_INTRINSICS = frozenset({
+    "abs", "sign", "floor", "ceil", "round", "trunc", "exp", "exp2", "log", "log2", "sqrt", "sin", "cos",
+    "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "normalize", "radians", "degrees", "fwidth",
+    "min", "max", "clamp", "step", "smoothstep", "dot", "distance", "length", "any", "all", "cross",
+    "reflect", "refract", "faceforward"})
+OWN_PREFIX = "pbr_own_"
 _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "continue", "if", "for",
              "while", "do", "switch", "struct", "typedef", "true", "false"}
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
@@ -802,7 +814,12 @@ class _Parser:
             for q in quals:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
-        name = self.name().text
+        name_tok = self.name()
+        name = name_tok.text
+        if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
+            if not self.decl_only:
+                self.edits.replace(name_tok.s, name_tok.e, OWN_PREFIX + name)
+            name = OWN_PREFIX + name
         self.expect("(")
         params, scope = [], {}
         spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
@@ -1538,7 +1555,12 @@ class _Parser:
         args, close = self.arguments()
         span = (name.s, close.e)
         fname = name.text
-        if fname in _INTRINSICS:
+        own = self.sym.functions.get(OWN_PREFIX + fname) if fname in _GLSL_BUILT_IN_INTRINSICS else None
+        if own and self.overload(own, args) is not None:  # the program's own of a built-in's name
+            if not self.decl_only:
+                self.edits.replace(name.s, name.e, OWN_PREFIX + fname)
+            fname = OWN_PREFIX + fname
+        elif fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
         if fname == "mul" and len(args) == 2:
             self.mul_vector_truncated(*args)
