@@ -244,3 +244,37 @@ def test_the_port_strips_a_pasted_semantic_and_semantics_before_comments():
     assert "TEXCOORD" not in ported and "SV_" not in ported and "POSITION" not in ported
     assert "/* x */" in ported and "// z" in ported
     assert ported.count("\n") == source.count("\n")
+
+
+SAMPLER_LOCAL = """
+Shader "t/sampler_local" {{
+    Properties {{ _RampMap ("ramp", 2D) = "{default}" {{}} }}
+    SubShader {{ Pass {{
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        sampler2D _RampMap;
+        struct v2f {{ float4 pos : SV_POSITION; }};
+        v2f vert(float4 vertex : POSITION) {{ v2f o; o.pos = UnityObjectToClipPos(vertex); return o; }}
+        float3 tinted(sampler2D ramp, float3 tint) {{ return tex2D(ramp, float2(0.5, 0.5)).rgb * tint; }}
+        float4 frag(v2f i) : SV_Target {{
+            sampler2D ramp = _RampMap;
+            return float4(tinted(ramp, float3(0.25, 0.5, 0.75)) + 0.125, 1);
+        }}
+        ENDCG
+    }} }}
+}}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_sampler_local_reads_the_global_it_names(tmp_path, language):
+    """``sampler2D ramp = _RampMap;`` in a function (Amplify Shader Editor's code): HLSL takes
+    it, GLSL declares samplers only as uniforms and parameters (the port refused it). The white
+    default's texel times the tint, plus 0.125; control: the black default gives 0.125 alone
+    (the local reads the texture)."""
+    for default, texel in (("white", 1.0), ("black", 0.0)):
+        path = tmp_path / f"sampler_local_{default}.shader"
+        path.write_text(textwrap.dedent(SAMPLER_LOCAL.format(default=default)))
+        _assert_colour(tmp_path, path, language, texel * np.array([0.25, 0.5, 0.75]) + 0.125)

@@ -1136,6 +1136,31 @@ class _Parser:
                 return
         self.simple_statement()
 
+    def local_sampler(self, ty, start) -> bool:
+        """``sampler2D ramp = _RampMap;`` in a function: HLSL takes a sampler local that names a
+        global one (Amplify Shader Editor's generated code writes them); GLSL declares samplers
+        only as uniforms and parameters ("image/sampler variables may only be declared as
+        function parameters or uniform-qualified global variables"). The declaration is blanked
+        and the local's uses in its scope read the global (sampler_alias)."""
+        if ty is None or not ty.base.startswith(("sampler", "Texture")) or ty.numeric:
+            return False
+        if not (self.peek().kind == "id" and self.at("=", 1) and self.peek(2).kind == "id" and self.at(";", 3)):
+            return False
+        name, _, value, end = self.next(), self.next(), self.next(), self.next()
+        target = self.sampler_alias(value.text) or value.text
+        self.scopes[-1][name.text] = ty
+        self.scopes[-1][("sampler alias", name.text)] = target
+        if not self.decl_only:
+            self.edits.replace(start, end.e, "")
+        return True
+
+    def sampler_alias(self, name):
+        """The global sampler a local sampler names (local_sampler), or None."""
+        for scope in reversed(self.scopes):
+            if name in scope:
+                return scope.get(("sampler alias", name))
+        return None
+
     def simple_statement(self):
         """A declaration or an expression, then ';'."""
         if self.is_declaration():
@@ -1145,7 +1170,10 @@ class _Parser:
                     self.delete_word(q)
             if self.at("struct"):
                 self.next()
+            start = self.peek().s
             ty = self.type_spec()
+            if self.local_sampler(ty, start):
+                return
             const = next((q for q in quals if q.text == "const"), None)
             self.declarators(ty, is_global=False, const=False, const_word=const)
         else:
@@ -1522,6 +1550,9 @@ class _Parser:
             return self.call(t)
         self.i -= 1
         self.name()
+        alias = self.sampler_alias(t.text) if self.scopes else None
+        if alias is not None and not self.decl_only:
+            self.edits.replace(t.s, t.e, alias)  # a sampler local: the global it names (local_sampler)
         return E(t.s, t.e, self.lookup(t.text), True)
 
     def arguments(self):
