@@ -278,3 +278,43 @@ def test_a_sampler_local_reads_the_global_it_names(tmp_path, language):
         path = tmp_path / f"sampler_local_{default}.shader"
         path.write_text(textwrap.dedent(SAMPLER_LOCAL.format(default=default)))
         _assert_colour(tmp_path, path, language, texel * np.array([0.25, 0.5, 0.75]) + 0.125)
+
+
+WRITTEN_ACROSS = """
+Shader "t/written_across" {
+    Properties { _Angle ("angle", Range(0, 360)) = 90 }
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        float _Angle;
+        #include "shapes.cginc"
+        struct v2f { float4 pos : SV_POSITION; };
+        v2f vert(float4 vertex : POSITION) { v2f o; o.pos = UnityObjectToClipPos(vertex); return o; }
+        float4 frag(v2f i) : SV_Target { float a = remapped_angle(); return float4(a, _Angle, 0.125, 1); }
+        ENDCG
+    } }
+}
+"""
+SHAPES = "float remapped_angle() { _Angle = _Angle / 360.0; return _Angle * 0.5; }\n"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_global_the_program_declares_and_its_include_writes(tmp_path, language, monkeypatch):
+    """Unity compiles with FXC's backwards-compatibility mode, which lets a program write a
+    global (written_globals.py): the value written lives in the invocation. Here the program
+    declares ``_Angle`` (90) and its own include writes it: red 90 / 360 / 2, green the value
+    written (90 / 360) read back in the program. Control: without the copy across files both
+    languages refused the write ("assignment to read-only variable", "can't modify a
+    uniform")."""
+    (tmp_path / "shapes.cginc").write_text(SHAPES)
+    path = tmp_path / "written_across.shader"
+    path.write_text(textwrap.dedent(WRITTEN_ACROSS))
+    _assert_colour(tmp_path, path, language, [0.125, 0.25, 0.125])
+    monkeypatch.setattr(parse_pass, "copied_across_includes", lambda program, folder, defines, rewritten, known:
+                        (program, rewritten, ()))
+    old = tmp_path / "written_across_old.shader"
+    old.write_text(textwrap.dedent(WRITTEN_ACROSS))
+    with pytest.raises(PbrlabError, match="read-only|uniform"):
+        _render(tmp_path, old, language)

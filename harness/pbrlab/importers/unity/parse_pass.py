@@ -20,7 +20,7 @@ from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
 from .unprovided import missing_include
 from .own_library_functions import renamed_in_own_files
-from .written_globals import copied_in_includes, copied_written_globals
+from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
@@ -201,6 +201,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
         rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
         written += in_includes
+        # (a global of the program's that one of its own includes writes)
+        program, rewritten, across = copied_across_includes(program, path.parent, defines, rewritten, written)
+        written += across
     program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
 
     def where(index: int) -> str:
