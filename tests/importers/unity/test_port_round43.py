@@ -14,12 +14,10 @@ import textwrap
 import numpy as np
 import pytest
 
-from pbrlab.checking import unity_corpus as corpus
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.loader import parse_scene
 from pbrlab.importers.unity import conditionals, parse_pass, program
 from pbrlab.importers.unity.port import port_text
-from pbrlab.render.renderer import render_scene
+from test_unity_names_round5 import _covered, _render  # pytest puts this folder on sys.path
 
 LANGUAGES = ("glsl", "hlsl")
 # float32 rounding of the few operations the constants below go through (each exact in binary
@@ -54,14 +52,8 @@ def _shader(tmp_path, name, body, head="", members="", vertex="", fragment_retur
     return path
 
 
-def _render(tmp_path, shader, language):
-    return render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language).linear
-
-
 def _covered_rgb(image):
-    covered = image[..., 3] == 1.0
-    assert covered.mean() > 0.3
-    return image[covered, :3].astype(np.float64)
+    return image[_covered(image), :3].astype(np.float64)
 
 
 def _assert_colour(tmp_path, shader, language, want):

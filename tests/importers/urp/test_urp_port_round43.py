@@ -26,10 +26,11 @@ GUARDED = textwrap.dedent("""
             Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
             Pass {
                 Tags { "LightMode" = "UniversalForward" }
+                Cull Back
                 HLSLPROGRAM
                 #pragma vertex vert
-                #pragma fragment frag
                 #pragma shader_feature _MY_TINT
+                #pragma fragment frag
                 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
                 #ifndef MY_FORWARD_PASS_INCLUDED
                     #define MY_FORWARD_PASS_INCLUDED
