@@ -42,7 +42,7 @@ LINE_BLOCK = 100000  # lines per file in the #line numbering; files are far shor
 # Files whose lines were classified (_scan), by content: a scene's dozen programs read the
 # same thirty library files, and classifying their lines again cost 0.3 s of a render.
 _SCANS_KEPT = 512
-_INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*(//.*)?$')
+_INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"\s*(//.*)?$')
 _VERSION = re.compile(r"^\s*#\s*version\b")
 _IF = re.compile(r"^\s*#\s*if(n?def)?\b")
 _ENDIF = re.compile(r"^\s*#\s*endif\b")

@@ -6,6 +6,10 @@
 #ifndef PBRLAB_UNITY_HLSL_SUPPORT
 #define PBRLAB_UNITY_HLSL_SUPPORT
 SamplerState pbrlab_unity_sampler;
+// An argument that expands to nothing: a one-parameter macro called with empty parentheses
+// (``TRANSFER_SHADOW()``, one empty argument in C and for FXC) is given it for glslang, which
+// counts no argument there (importers/unity/empty_arguments.py).
+#define PBRLAB_EMPTY_ARGUMENT
 #define sampler2D Texture2D
 #define samplerCUBE TextureCube
 #define tex2D(t, uv) (t).Sample(pbrlab_unity_sampler, (uv))

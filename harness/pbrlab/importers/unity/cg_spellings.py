@@ -132,7 +132,22 @@ def _rename_own_library_functions(text: str) -> str:
 _MATRIX_SWIZZLE = re.compile(r"(?<![\w.])([A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*)\.((?:_m[0-3][0-3]){2,4}|(?:_[1-4][1-4]){2,4})\b")
 
 
+# The same swizzle assigned to, in a statement of its own (``M._m00_m10_m20 = v;``; glslang
+# refuses it: "';' : Expected"): one assignment an element, on the statement's line
+# (``{ float3 pbrlab_swizzled = v; M._m00 = pbrlab_swizzled[0]; ... }``).
+_ASSIGNED_MATRIX_SWIZZLE = re.compile(r"(^|[;{}]|\n)([ \t]*)([A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*)\."
+                                      r"((?:_m[0-3][0-3]){2,4}|(?:_[1-4][1-4]){2,4})\s*=(?!=)([^;{}]*);")
+
+
 def _matrix_swizzles(text: str) -> str:
+    def assigned(m):
+        lead, indent, target, swizzle, value = m.groups()
+        elements = re.findall(r"_m?\d\d", swizzle)
+        stores = " ".join(f"{target}.{e} = pbrlab_swizzled[{k}];" for k, e in enumerate(elements))
+        return (f"{lead}{indent}{{ float{len(elements)} pbrlab_swizzled = {value.strip()}; {stores} }}"
+                + "\n" * value.count("\n"))  # the lines kept
+    text = _ASSIGNED_MATRIX_SWIZZLE.sub(assigned, text)
+
     def spelled(m):
         elements = re.findall(r"_m?\d\d", m.group(2))
         return f"float{len(elements)}({', '.join(f'{m.group(1)}.{e}' for e in elements)})"

@@ -186,27 +186,28 @@ _CONDITION = re.compile(r"#\s*(if|ifdef|ifndef|elif|else|endif)\b")
 
 def _enclosing_conditions(text: str, directives, pos: int) -> list:
     """The preprocessor lines that put ``pos`` where it is: each open #if (its #elif and
-    #else up to the branch ``pos`` lies in), outermost first; a file's include guard
-    (``#ifndef X`` then ``#define X`` first) is not one, nor is anything closed before."""
+    #else up to the branch ``pos`` lies in), outermost first; an include guard (``#ifndef X``
+    then ``#define X``: a file's, or one a program writes around a part of its own, as URP's
+    files do) is not one (false where the zero's body goes, at the end), nor is anything closed
+    before."""
     stack = []   # per open #if: its lines so far
     spans = [(s, e) for s, e in directives if s < pos]
-    guard = None
-    if len(directives) >= 2:
-        first, second = (text[s:e] for s, e in directives[:2])
-        m = re.match(r"#\s*ifndef\s+(\w+)", first)
-        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", second):
-            guard = directives[0][0]
+    guards = set()
+    for (s, e), (s2, e2) in zip(directives, directives[1:]):
+        m = re.match(r"#\s*ifndef\s+(\w+)", text[s:e])
+        if m and re.match(r"#\s*define\s+" + m.group(1) + r"\b", text[s2:e2]):
+            guards.add(s)
     for s, e in spans:
         m = _CONDITION.match(text, s)
-        if not m or s == guard:
+        if not m:
             continue
         line = text[s:e].strip()
         if m.group(1).startswith("if"):
-            stack.append([line])
+            stack.append([] if s in guards else [line])  # (a guard's #endif closes it)
         elif m.group(1) == "endif":
             if stack:
                 stack.pop()
-        elif stack:
+        elif stack and stack[-1]:
             stack[-1].append(line)
     return [line for block in stack for line in block]
 
@@ -295,6 +296,11 @@ _CONSTRUCTOR_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+([A-Za-z
                                  re.M)
 # `#define real3 float3`, `#define UNITY_MATRIX_M unity_ObjectToWorld`: an object-like alias
 _ALIAS_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$", re.M)
+# `#define SHADERGRAPH_SAMPLE_SCENE_DEPTH(uv) pbrlab_shadergraph_scene_depth(uv)`: a macro that
+# forwards its parameters, in order, to a function is that function's alias (a use has its type:
+# FXC's conversions of the value, a scalar's swizzle or splat, are then spelled as for a call)
+_FORWARDING_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\(([\w \t,]*)\)[ \t]+([A-Za-z_]\w*)[ \t]*\(([\w \t,]*)\)"
+                                r"[ \t]*(?://[^\n]*)?$", re.M)
 _NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
                             r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
 
@@ -387,6 +393,18 @@ _INTRINSICS = {
     "cross": ("cross", ()), "reflect": ("first", ()), "refract": ("first", (2,)),
     "faceforward": ("first", ()),
 }
+# The intrinsics GLSL has as built-in functions of the same name. A program's own function of
+# such a name (``float cross(float2 p, float2 c, float r, float w, float e)``) overloads the
+# intrinsic in HLSL, where a call picks by its arguments; in GLSL a function of the shader's
+# hides every built-in of its name (GLSL 3.30 section 6.1.1: "a function declared in a shader
+# hides all built-in functions of the same name"), so the port names the program's own
+# pbr_own_<name>, with each call that resolves to it; the other calls keep the built-in.
+_GLSL_BUILT_IN_INTRINSICS = frozenset({
+    "abs", "sign", "floor", "ceil", "round", "trunc", "exp", "exp2", "log", "log2", "sqrt", "sin", "cos",
+    "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "normalize", "radians", "degrees", "fwidth",
+    "min", "max", "clamp", "step", "smoothstep", "dot", "distance", "length", "any", "all", "cross",
+    "reflect", "refract", "faceforward"})
+OWN_PREFIX = "pbr_own_"
 _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "continue", "if", "for",
              "while", "do", "switch", "struct", "typedef", "true", "false"}
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
@@ -460,6 +478,10 @@ class _Parser:
                 symbols.globals.setdefault(m.group(1), constructed)
         for m in _ALIAS_DEFINE.finditer(text):  # `#define real3 float3` (Core RP): a type's or a name's alias
             symbols.aliases.setdefault(m.group(1), m.group(2))
+        for m in _FORWARDING_DEFINE.finditer(text):  # a macro that calls a function with its parameters
+            params, args = ([w.strip() for w in g.split(",")] for g in (m.group(2), m.group(4)))
+            if params == args and m.group(1) != m.group(3):
+                symbols.aliases.setdefault(m.group(1), m.group(3))
         self.edits = Edits()
         self.scopes = []
         self.ret = None
@@ -672,6 +694,8 @@ class _Parser:
         if ty is None:
             return None
         self.next()
+        if ty.base == t.text and t.text in self.sym.structs:
+            self.rename_reserved_name(t)  # a struct of a name GLSL reserves (``struct output``)
         if ty.base in ("Texture2D",) and self.at("<"):
             self.skip_balanced("<", ">")
         return ty
@@ -790,7 +814,12 @@ class _Parser:
             for q in quals:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
-        name = self.name().text
+        name_tok = self.name()
+        name = name_tok.text
+        if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
+            if not self.decl_only:
+                self.edits.replace(name_tok.s, name_tok.e, OWN_PREFIX + name)
+            name = OWN_PREFIX + name
         self.expect("(")
         params, scope = [], {}
         spelled, defaults = [], []   # each parameter's text, and its default's (HLSL only)
@@ -1107,6 +1136,31 @@ class _Parser:
                 return
         self.simple_statement()
 
+    def local_sampler(self, ty, start) -> bool:
+        """``sampler2D ramp = _RampMap;`` in a function: HLSL takes a sampler local that names a
+        global one (Amplify Shader Editor's generated code writes them); GLSL declares samplers
+        only as uniforms and parameters ("image/sampler variables may only be declared as
+        function parameters or uniform-qualified global variables"). The declaration is blanked
+        and the local's uses in its scope read the global (sampler_alias)."""
+        if ty is None or not ty.base.startswith(("sampler", "Texture")) or ty.numeric:
+            return False
+        if not (self.peek().kind == "id" and self.at("=", 1) and self.peek(2).kind == "id" and self.at(";", 3)):
+            return False
+        name, _, value, end = self.next(), self.next(), self.next(), self.next()
+        target = self.sampler_alias(value.text) or value.text
+        self.scopes[-1][name.text] = ty
+        self.scopes[-1][("sampler alias", name.text)] = target
+        if not self.decl_only:
+            self.edits.replace(start, end.e, "")
+        return True
+
+    def sampler_alias(self, name):
+        """The global sampler a local sampler names (local_sampler), or None."""
+        for scope in reversed(self.scopes):
+            if name in scope:
+                return scope.get(("sampler alias", name))
+        return None
+
     def simple_statement(self):
         """A declaration or an expression, then ';'."""
         if self.is_declaration():
@@ -1116,7 +1170,10 @@ class _Parser:
                     self.delete_word(q)
             if self.at("struct"):
                 self.next()
+            start = self.peek().s
             ty = self.type_spec()
+            if self.local_sampler(ty, start):
+                return
             const = next((q for q in quals if q.text == "const"), None)
             self.declarators(ty, is_global=False, const=False, const_word=const)
         else:
@@ -1167,6 +1224,10 @@ class _Parser:
                         self.truncate(rhs, lhs.t.dim)
                     elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
                         self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+                if t.text != "=" and lhs.t.base == "uint" and rhs.t.base == "int" and rhs.t.numeric:
+                    # ``u %= 8`` (a uint2 and an int): HLSL converts the int operand to uint, as
+                    # in ``u % 8`` (combine); GLSL 330 takes one signedness only
+                    self.wrap(rhs, Type("uint", rhs.t.dim, rhs.t.cols).cg())
             if lhs.element:
                 self.edits.drop(lhs.row_index)
                 self.element_written(lhs.element)
@@ -1489,6 +1550,9 @@ class _Parser:
             return self.call(t)
         self.i -= 1
         self.name()
+        alias = self.sampler_alias(t.text) if self.scopes else None
+        if alias is not None and not self.decl_only:
+            self.edits.replace(t.s, t.e, alias)  # a sampler local: the global it names (local_sampler)
         return E(t.s, t.e, self.lookup(t.text), True)
 
     def arguments(self):
@@ -1522,7 +1586,12 @@ class _Parser:
         args, close = self.arguments()
         span = (name.s, close.e)
         fname = name.text
-        if fname in _INTRINSICS:
+        own = self.sym.functions.get(OWN_PREFIX + fname) if fname in _GLSL_BUILT_IN_INTRINSICS else None
+        if own and self.overload(own, args) is not None:  # the program's own of a built-in's name
+            if not self.decl_only:
+                self.edits.replace(name.s, name.e, OWN_PREFIX + fname)
+            fname = OWN_PREFIX + fname
+        elif fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
         if fname == "mul" and len(args) == 2:
             self.mul_vector_truncated(*args)

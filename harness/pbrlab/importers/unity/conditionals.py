@@ -69,7 +69,7 @@ def _define_value(value: str, defines: dict) -> int:
 
 
 def active_text(text: str, defines: dict) -> str:
-    """``text`` with the lines of branches not taken blanked."""
+    """``text`` with the lines of branches not taken blanked (their #define and #undef lines too)."""
     out, pos = [], 0
     defines = dict(defines)
     stack = []   # [(this branch taken, some branch taken, parent active)]
@@ -108,7 +108,9 @@ def active_text(text: str, defines: dict) -> str:
         elif kind == "endif" and stack:
             _, _, parent = stack.pop()
             active = parent
-        out.append(m.group(0))
+        # a #define or #undef in a branch not taken is blanked too (a macro defined in each
+        # branch: a reader of the text sees the drawn variant's definition alone)
+        out.append(re.sub(r"[^\n]", " ", m.group(0)) if kind in ("define", "undef") and not active else m.group(0))
         pos = m.end()
     tail = text[pos:]
     out.append(tail if active else re.sub(r"[^\n]", " ", tail))

@@ -117,7 +117,11 @@ def _zero(kind: str, language: str) -> str:
 
 
 def _type(kind: str, language: str) -> str:
-    return kind if language == "hlsl" else port_code_types(kind)
+    """``kind`` as the language names it: the port's GLSL type, a struct of a name GLSL reserves
+    renamed as the port renames it (``struct output``: cg_types.is_reserved)."""
+    if language == "hlsl":
+        return kind
+    return RENAME_PREFIX + kind if is_reserved(kind) else port_code_types(kind)
 
 
 def _declare(kind: str, name: str, language: str) -> list[str]:

@@ -20,7 +20,8 @@ from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
 from .unprovided import missing_include
 from .own_library_functions import renamed_in_own_files
-from .written_globals import copied_in_includes, copied_written_globals
+from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
+from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
                           matching_brace, resolve_included, respelled, top_level)
@@ -113,7 +114,8 @@ def _structs(masked: str) -> dict:
     for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
         end = matching_brace(masked, m.end() - 1)
         members, flat = [], set()
-        body = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():end], flags=re.M)  # every #if branch
+        body = expanded_member_macros(masked[m.end():end], masked)  # the project's member macros
+        body = re.sub(r"^[ \t]*#[^\n]*", "", body, flags=re.M)  # every #if branch
         body = _UNITY_POSITION.sub(r"float4 \1 : SV_POSITION", body)
         for decl in body.split(";"):
             # macro members without a ';' of their own (UNITY_FOG_COORDS(1), UNITY_VERTEX_OUTPUT_STEREO)
@@ -200,6 +202,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
         rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
         written += in_includes
+        # (a global of the program's that one of its own includes writes)
+        program, rewritten, across = copied_across_includes(program, path.parent, defines, rewritten, written)
+        written += across
     program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
 
     def where(index: int) -> str:

@@ -46,17 +46,24 @@ from .texture_methods import spelled_texture_methods
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
 _INT = re.compile(r"\b(int|bool|uint)([234])\b")
+# Comments and strings are placeholders (_placeholder) while the rules run: those between a
+# semantic and what ends its declaration, or between a signature and its body.
+_KEPT = r"(?:\x01\d+\x02\s*)*"
 # HLSL semantics (rule 5): the D3D9/10 names a surface shader's structs and parameters carry
 # (before the ; , or ) that ends the declaration, or before a preprocessor line: a parameter
-# list whose last parameters are under an #if).
+# list whose last parameters are under an #if). In a macro's body the index may be pasted from a
+# parameter (``#define MY_COORDS(i) float3 v : TEXCOORD##i;``): the port strips semantics from the
+# macro's text, so its expansion carries none. A comment between the semantic and what ends the
+# declaration (``float4 p : SV_POSITION // clip space`` before ``)``) is a placeholder here
+# (port_text: _placeholder).
 _SEMANTIC = re.compile(r"([\w\]])\s*:\s*(?:POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|"
-                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*\s*(?=[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
+                       r"BLENDINDICES|PSIZE|FOG|DEPTH|VFACE|VPOS|SV_\w+?|FRONT_FACE_SEMANTIC)\d*(?:\s*##\s*\w+)*\s*(?=" + _KEPT + r"[;,)]|\n[ \t]*#)", re.I)  # Unity: any case
 # Any other identifier is a semantic too in HLSL (a custom varying: ``float fog : FOG_FACTOR;``):
 # dropped where it follows a declaration, a type and a name (``type name : SEMANTIC`` before
 # ``;``, ``,`` or ``)``), which no expression spells (a ternary's ``:`` follows an operand;
 # ``case X : return;`` is not a declaration); an array member too (``float3 v[4] : TANUCORNER;``).
 _DECLARED_SEMANTIC = re.compile(r"\b((?!case\b)[A-Za-z_]\w*\s+[A-Za-z_]\w*(?:\s*\[\s*\w+\s*\])?)\s*:\s*"
-                                r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=[;,)])")
+                                r"(?!(?:return|break|continue|discard)\b)[A-Za-z_]\w*\s*(?=" + _KEPT + r"[;,)])")
 _COMMENT_OR_STRING = re.compile(r'//[^\n]*|/\*.*?\*/|"[^"\n]*"', re.S)
 
 
@@ -144,7 +151,8 @@ def port_code(code: str) -> str:
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
     code = _DECLARED_SEMANTIC.sub(r"\1", code)
-    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=\{)", r")\1\2", code)  # a function's return semantic
+    # a function's return semantic (comments between it and the body: placeholders here)
+    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=" + _KEPT + r"\{)", r")\1\2", code)
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)
@@ -356,4 +364,4 @@ def port_file(shader: M.SurfaceShader) -> str:
 
 
 def _placeholder(i: int) -> str:
-    return f"__PBRLAB_KEEP_{i}__"
+    return f"\x01{i}\x02"  # (no word characters: a name after a comment still starts a word)

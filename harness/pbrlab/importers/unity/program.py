@@ -35,6 +35,7 @@ from ...gpu.programs import set_uniform as _set
 from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
+from .empty_arguments import empty_arguments_spelled
 from .properties import TextureValue
 from .source_text import (CGINC, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
                           top_level)
@@ -65,7 +66,7 @@ def _include_dirs(shader: M.SurfaceShader) -> list[Path]:
     return [TEMPLATES, CGINC, shader.path.parent]
 
 
-_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]+")([^"]+)(")', re.M)
+_INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]*")([^"]+)(")', re.M)
 
 
 _STRUCT = re.compile(r"\bstruct\s+\w+\s*\{[^{}]*\}\s*;")
@@ -163,9 +164,10 @@ def hlsl_program(shader) -> str:
     """The CGPROGRAM as written, less a byte-order mark opening a bare program file, in the
     spellings glslang takes (cg_spellings) and with the implicit conversions FXC makes where
     glslang refuses them spelled out (cg_types.fxc_conversions: the functions of the files it
-    includes known too)."""
-    return _fxc_spelled(cg_spellings.respelled(shaders.strip_bom(shader.program)),
-                        included_text(shader.program, shader.path.parent), getattr(shader, "srp", False))
+    includes known too), a one-parameter macro's empty argument given (empty_arguments)."""
+    included = included_text(shader.program, shader.path.parent)
+    return _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(shaders.strip_bom(shader.program)), included),
+                        included, getattr(shader, "srp", False))
 
 
 @functools.lru_cache(maxsize=64)
@@ -189,7 +191,9 @@ def hlsl_includes(shader) -> dict:
         if any(Path(path).is_relative_to(root) for root in stand_ins):
             continue
         text = out.get(path) or shaders.strip_bom(read_source(path))
-        spelled = _fxc_spelled(text, included, getattr(shader, "srp", False))
+        # (in the spellings glslang takes, as the program's: cg_spellings)
+        spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(text), included), included,
+                               getattr(shader, "srp", False))
         if spelled != text:
             out[path] = spelled
     return out

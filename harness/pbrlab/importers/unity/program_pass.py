@@ -55,6 +55,19 @@ def package_links(package: str, root: Path) -> Path:
     return _PACKAGE_LINKS[key]
 
 
+def with_package_copies(replaced: dict) -> dict:
+    """``replaced`` ({path: text} compiled in place of a shader's own includes: hlsl_includes),
+    with the same text for each package copy of such a file (package_links): glslang reaches a
+    file the program names by ``Packages/<package>/...`` through the copy."""
+    out = dict(replaced)
+    for (package, root), folder in _PACKAGE_LINKS.items():
+        for path, text in replaced.items():
+            resolved = Path(path).resolve()
+            if resolved.is_relative_to(root):
+                out[folder / "Packages" / package / resolved.relative_to(root)] = text
+    return out
+
+
 def _stage_text(vf, language: str, stage: str, defines: dict, blended: bool, program_text: str,
                 display: str, before_program: str = "") -> str:
     where = f"{vf.path}:{vf.program_line}"
@@ -95,7 +108,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             if language == "hlsl":
                 text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
                 glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],
-                                                             replaced=hlsl_includes(vf)),
+                                                             replaced=with_package_copies(hlsl_includes(vf))),
                                           plain_uniforms=True)
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)

@@ -114,7 +114,8 @@ def component_count(kind: str) -> int:
 
 
 
-INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+# (``#include"x.hlsl"``, no blank before the name: the C preprocessor and FXC take it)
+INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.M)
 # A stand-in's refusal: an unconditional `#error "..."` line (cginc/SpeedTree*.cginc).
 _ERROR = re.compile(r'^[ \t]*#[ \t]*error[ \t]+"?([^"\n]*)"?[ \t]*$', re.M)
 _CONDITIONAL = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|endif)\b", re.M)
@@ -228,7 +229,11 @@ def read_source(path: Path) -> str:
         line = data.count(b"\n", 0, exc.start) + 1
         warnings.warn(f"{path}:{line}: not UTF-8 (byte 0x{data[exc.start]:02x}, a legacy code page's); "
                       "read byte for byte, as Unity's compilers read it", UnityShaderNote, stacklevel=2)
-        text = data.decode("latin-1")
+        # byte 0x85 (a Shift-JIS trail byte: "ュ" is 83 85) is Latin-1's NEL, which Python's
+        # str.splitlines takes for a line break where a compiler reads a byte: a comment split
+        # there put the rest of its line into the code. Read as "?" (a byte only a comment
+        # holds: FXC refuses it in code as it refuses "?" there), one character still.
+        text = data.decode("latin-1").replace("\x85", "?")
     return text.removeprefix("\ufeff").replace("\r\n", "\n")
 
 

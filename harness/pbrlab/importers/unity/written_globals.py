@@ -13,7 +13,11 @@ A global declared and written in one of the shader's own include files (``float4
 in a pass's .hlsl, ``_Wind_ST.zw += ...`` in its vertex function) is copied the same way in that
 file's text (``copied_in_includes``); both languages compile the rewritten text in the file's
 place (program.program_include for the GLSL port, hlsl.compile_spirv's ``replaced`` for glslang).
-A global an include declares and another file writes is not found: the compiler names the write.
+A global the program declares and one of its own include files writes (``float _CircleAngle;`` in
+the pass's CBUFFER, ``_CircleAngle = Remap(_CircleAngle, ...)`` in a Shapes.hlsl it includes after)
+is copied in the program, and read and written through the copy in the include's functions
+(``copied_across_includes``). A global one include declares and another writes is not found:
+the compiler names the write.
 """
 
 from __future__ import annotations
@@ -81,6 +85,12 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
                 found.append((m, name, m.group(2)))
     if not found:
         return program, ()
+    return _copied(program, active_program, found, bodies), tuple((name, kind) for _, name, kind in found)
+
+
+def _copied(program: str, active_program: str, found: list, bodies: list, declare: bool = True) -> str:
+    """``program`` with each found global's uses in ``bodies`` read through its copy, and (with
+    ``declare``) the copies declared before the globals (copied_written_globals)."""
     text = program
     edits = []  # (start, end, replacement), applied from the end
     for s, e in bodies:
@@ -88,13 +98,13 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
             for use in re.finditer(rf"(?<![\w.])\b{re.escape(name)}\b", active_program[s:e]):
                 edits.append((s + use.start(), s + use.end(), copy_name(name)))
     by_declaration = {}
-    for m, name, kind in found:
+    for m, name, kind in found if declare else ():
         by_declaration.setdefault((m.start(), kind), []).append(copy_name(name))
     for (start, kind), copies in by_declaration.items():  # at the line's start, one declaration:
         edits.append((start, start, f"static {kind} {', '.join(copies)}; "))  # the GLSL port reads it there
     for start, end, replacement in sorted(edits, key=lambda x: (x[0], x[1]), reverse=True):
         text = text[:start] + replacement + text[end:]
-    return text, tuple((name, kind) for _, name, kind in found)
+    return text
 
 
 def copy_statements(written) -> str:
@@ -118,3 +128,36 @@ def copied_in_includes(program: str, folder: Path, defines) -> tuple[dict, tuple
         if found:
             rewritten[path], written = copied, written + found
     return rewritten, written
+
+
+def copied_across_includes(program: str, folder: Path, defines, rewritten: dict, known=()) -> tuple:
+    """(``program`` with a copy of each global it declares that one of its own include files
+    writes, ``rewritten`` with those files' functions reading and writing the copy, ((name,
+    type), ...)); ``known``: the globals copied already (copied_written_globals and
+    copied_in_includes)."""
+    active_program = active_text(blank_comments(program), defines)
+    top = _outside_braces(active_program)
+    declared = []
+    for m in _DECLARED.finditer(top):
+        if re.match(r"\s*(?:static|const)\b", m.group(0)):
+            continue
+        declared += [(m, name, m.group(2)) for name in (n.split("=")[0].strip() for n in m.group(3).split(","))
+                     if name not in {k for k, _ in known}]
+    stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
+    files = []  # (path, text, its active text, its function bodies)
+    for path in included_files(program, folder) if declared else ():
+        if any(path.is_relative_to(root) for root in stand_ins):
+            continue
+        text = rewritten.get(path) or _read_include(path)
+        if text is not None:
+            active = active_text(blank_comments(text), defines)
+            files.append((path, text, active, _function_bodies(active)))
+    found = [d for d in declared if any(_written(d[1], active[s:e]) for _, _, active, bodies in files for s, e in bodies)]
+    if not found:
+        return program, rewritten, ()
+    out = dict(rewritten)
+    for path, text, active, bodies in files:
+        if any(re.search(rf"(?<![\w.])\b{re.escape(name)}\b", active[s:e]) for _, name, _ in found for s, e in bodies):
+            out[path] = _copied(text, active, [(None, name, kind) for _, name, kind in found], bodies, declare=False)
+    return _copied(program, active_program, found, _function_bodies(active_program)), out, \
+        tuple((name, kind) for _, name, kind in found)
