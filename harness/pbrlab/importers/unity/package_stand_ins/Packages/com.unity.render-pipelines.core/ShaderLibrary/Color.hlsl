@@ -14,4 +14,12 @@ float4 LinearToSRGB(float4 c) { return float4(LinearToSRGB(c.rgb), c.a); }
 float3 Gamma22ToLinear(float3 c) { return pow(max(c, float3(0.0, 0.0, 0.0)), float3(2.2, 2.2, 2.2)); }
 float3 LinearToGamma22(float3 c) { return pow(max(c, float3(0.0, 0.0, 0.0)), float3(1.0 / 2.2, 1.0 / 2.2, 1.0 / 2.2)); }
 
+// The fast approximations Unity offers beside them (Core RP's FastSRGBToLinear /
+// FastLinearToSRGB; Ian Taylor's polynomial and power fits, chilliant.blogspot.com 2012/08):
+// c (c (0.305306011 c + 0.682171111) + 0.012522878), and saturate(1.055 c^(1/2.4) - 0.055).
+float3 FastSRGBToLinear(float3 c) { return c * (c * (c * 0.305306011 + 0.682171111) + 0.012522878); }
+float4 FastSRGBToLinear(float4 c) { return float4(FastSRGBToLinear(c.rgb), c.a); }
+float3 FastLinearToSRGB(float3 c) { return saturate(1.055 * pow(abs(c), float3(0.416666667, 0.416666667, 0.416666667)) - 0.055); }
+float4 FastLinearToSRGB(float4 c) { return float4(FastLinearToSRGB(c.rgb), c.a); }
+
 #endif
