@@ -316,6 +316,14 @@ float3 UnpackNormalRGB(float4 packedNormal, float scale) {
     n.xy *= scale;
     return n;
 }
+// Core RP's two-argument UnpackNormalmapRGorAG is that same unpacking; and URP's UnpackNormal is
+// it with scale 1 (Packing.hlsl on desktop, where Unity stores normal maps as DXT5nm or BC5),
+// not the built-in UnityCG's RGB form (xyz * 2 - 1) the Unity prelude defines: a grey (0.5)
+// texel is the flat normal (0, 0, 1) here, as in URP, where the RGB form gives (0, 0, 0). A
+// macro, as the prelude's function has the same signature (a shader's own UnpackNormal(float4)
+// is renamed before this is read: cg_spellings).
+float3 UnpackNormalmapRGorAG(float4 packedNormal, float scale) { return UnpackNormalScale(packedNormal, scale); }
+#define UnpackNormal(packedNormal) UnpackNormalScale(packedNormal, 1.0)
 
 // The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).
 float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _ScreenParams.xy; }

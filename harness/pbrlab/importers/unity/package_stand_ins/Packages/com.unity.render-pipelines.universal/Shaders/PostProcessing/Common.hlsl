@@ -11,8 +11,8 @@
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Color.hlsl"
 #include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"
 
-// Rec. 709 luminance of a linear colour (Luminance: pbrlab's Unity prelude)
-float GetLuminance(float3 colorLinear) { return Luminance(colorLinear); }
+// Rec. 709 luminance of a linear colour (Core RP Color.hlsl's Luminance weights, BT.709 / sRGB primaries)
+float GetLuminance(float3 colorLinear) { return dot(colorLinear, float3(0.2126729, 0.7151522, 0.0721750)); }
 
 // The exact sRGB curves (Color.hlsl), or their fast approximations under
 // _USE_FAST_SRGB_LINEAR_CONVERSION, as URP's
