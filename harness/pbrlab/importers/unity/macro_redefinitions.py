@@ -71,9 +71,7 @@ def _with_undefs(text: str, starts: list) -> str:
     kept as the module docstring says."""
     lines = text.split("\n")
     blank = [not lines[i].strip() and not _continued(lines, i) for i in range(len(lines))]
-    shift = 0
-    for index, name in sorted(starts):
-        i = index + shift
+    for i, name in sorted(starts, reverse=True):  # from the last: an edit moves no earlier line
         if i > 0 and blank[i - 1]:
             lines[i - 1] = f"#undef {name}"
             blank[i - 1] = False
@@ -81,9 +79,7 @@ def _with_undefs(text: str, starts: list) -> str:
         lines.insert(i, f"#undef {name}")
         blank.insert(i, False)
         below = next((j for j in range(i + 2, len(lines)) if blank[j]), None)
-        if below is None:
-            shift += 1
-        else:
+        if below is not None:
             del lines[below]
             del blank[below]
     return "\n".join(lines)
