@@ -319,3 +319,72 @@ def test_parallax_offset_and_tangent_view(tmp_path, language):
     err = np.abs(pixels[:, :3] - expected).max(axis=1)
     assert (err > bound).mean() == 0.0, (err.max() / bound, pixels[0, :3], expected)
     assert abs(expected[2] - (expected[2] + 2 * 10.0 * 0.4)) > 1000 * bound  # control: sign(w) dropped
+
+
+# ---------------------------------------------------------------------------------------------
+# Core RP's GeometricTools.hlsl and Tessellation.hlsl
+
+GEOMETRY_INCLUDE = '#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Tessellation.hlsl"'
+GEOMETRY_CASES = {
+    "rotation": """float3 r = Rotate(float3(1.0, 0.0, 0.0), float3(2.0, 1.0, 0.5), float3(0.0, 0.0, 2.0), 0.7);
+                float3 m = mul(RotationFromAxisAngle(float3(0.6, 0.0, 0.8), sin(1.1), cos(1.1)), float3(0.2, 0.9, -0.4));
+                return float4(r.x + 10.0 * m.x, r.y + 10.0 * m.y, r.z + 10.0 * m.z, 1.0);""",
+    "intersections": """float2 roots; bool hit = IntersectRaySphere(float3(0.0, 0.0, -3.0), float3(0.1, 0.0, 1.0), 1.5, roots);
+                float t; bool ahead = IntersectRayPlane(float3(0.0, 1.0, 0.0), float3(0.0, -0.5, 0.5), float3(0.0, 0.2, 0.0), float3(0.0, 1.0, 0.0), t);
+                float3 q = ProjectPointOnPlane(float3(1.0, 2.0, 3.0), float3(0.0, 0.5, 0.0), float3(0.0, 0.6, 0.8));
+                return float4(roots.x + 10.0 * roots.y, t + (hit && ahead ? 100.0 : 0.0),
+                              q.y + 10.0 * DistanceFromPlane(float3(1.0, 2.0, 3.0), float4(0.0, 0.6, 0.8, -0.3)), 1.0);""",
+    "tessellation": """float3 p0 = float3(0.0, 0.0, 0.0), p1 = float3(1.0, 0.0, 0.0), p2 = float3(0.0, 1.0, 0.0);
+                float4 f = CalcTriTessFactorsFromEdgeTessFactors(GetDistanceBasedTessFactor(p0, p1, p2, float3(0.2, 0.3, 2.0), 1.5, 3.0));
+                float3 ph = PhongTessellation(float3(0.3, 0.3, 0.0), p0, p1, p2, normalize(float3(-1.0, -1.0, 1.0)),
+                                              normalize(float3(1.0, 0.0, 1.0)), normalize(float3(0.0, 1.0, 1.0)), float3(0.4, 0.3, 0.3), 0.75);
+                return float4(f.x + 10.0 * f.y, f.z + 10.0 * f.w, ph.z + 10.0 * ph.x, 1.0);""",
+}
+
+
+def _geometry_expected(case: str) -> np.ndarray:
+    from pbrlab.maths.reference import geometric_tools as g
+    if case == "rotation":
+        r = g.rotate_about([1.0, 0.0, 0.0], [2.0, 1.0, 0.5], [0.0, 0.0, 2.0], 0.7)
+        m = g.rotation_matrix([0.6, 0.0, 0.8], 1.1) @ np.array([0.2, 0.9, -0.4])
+        return r + 10.0 * m
+    if case == "intersections":
+        roots = g.quadratic_roots(1.01, 2.0 * -3.0, 9.0 - 1.5 ** 2)
+        t = (0.2 - 1.0) / -0.5  # (plane y - origin y) / direction y
+        q = g.project_on_plane([1.0, 2.0, 3.0], [0.0, 0.5, 0.0], [0.0, 0.6, 0.8])
+        return np.array([roots[0] + 10.0 * roots[1], t + 100.0, q[1] + 10.0 * (0.6 * 2.0 + 0.8 * 3.0 - 0.3)])
+    p = [np.zeros(3), np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])]
+    e = g.distance_tess_factors(*p, [0.2, 0.3, 2.0], 1.5, 3.0)
+    n = [v / np.linalg.norm(v) for v in (np.array([-1.0, -1.0, 1.0]), np.array([1.0, 0.0, 1.0]), np.array([0.0, 1.0, 1.0]))]
+    ph = g.phong_tessellation([0.3, 0.3, 0.0], p, n, [0.4, 0.3, 0.3], 0.75)
+    return np.array([e[0] + 10.0 * e[1], e[2] + 10.0 * e.mean(), ph[2] + 10.0 * ph[0]])
+
+
+# float32: each term is a few operations (sqrt, normalize, divides: within 3 ulps each by GLSL
+# 4.60's precision table; sin and cos of the angles 0.7 and 1.1, which the table leaves to the
+# implementation, are llvmpipe's float32 library calls, a few ulps), weighted by up to 10 and
+# summed: 64 ulps of the largest channel bounds each case. The "intersections" case carries the
+# exact 100 of two true tests.
+GEOMETRY_BOUND = 64 * ULP
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("case", sorted(GEOMETRY_CASES))
+def test_geometric_tools_and_tessellation_factors(tmp_path, language, case):
+    """Rotate (about an axis through a pivot) and RotationFromAxisAngle (Rodrigues),
+    IntersectRaySphere's two roots (the quadratic formula), IntersectRayPlane's t and hit,
+    ProjectPointOnPlane, DistanceFromPlane, GetDistanceBasedTessFactor (linear between 1.5 and 3)
+    with CalcTriTessFactorsFromEdgeTessFactors (the inside factor the edges' mean) and
+    PhongTessellation (Boubekeur and Alexa 2008) against float64 (maths/reference/
+    geometric_tools.py) within GEOMETRY_BOUND of the largest channel. Control: the rotation by
+    the opposite angle (a transposed matrix) moves the first case's channels by far more."""
+    pixels, _ = render_constant(tmp_path, urp_pass("geometry " + case, GEOMETRY_CASES[case], GEOMETRY_INCLUDE),
+                                language, environment=False)
+    expected = _geometry_expected(case)
+    bound = GEOMETRY_BOUND * np.abs(expected).max()
+    err = np.abs(pixels[:, :3] - expected).max(axis=1)
+    assert (err > bound).mean() == 0.0, (err.max() / bound, pixels[0, :3], expected)
+    from pbrlab.maths.reference import geometric_tools as g
+    v = np.array([0.2, 0.9, -0.4])
+    transposed = g.rotation_matrix([0.6, 0.0, 0.8], 1.1).T @ v  # control: the opposite rotation
+    assert np.abs(10.0 * (transposed - g.rotation_matrix([0.6, 0.0, 0.8], 1.1) @ v)).max() > 1000 * bound
