@@ -388,3 +388,95 @@ def test_geometric_tools_and_tessellation_factors(tmp_path, language, case):
     v = np.array([0.2, 0.9, -0.4])
     transposed = g.rotation_matrix([0.6, 0.0, 0.8], 1.1).T @ v  # control: the opposite rotation
     assert np.abs(10.0 * (transposed - g.rotation_matrix([0.6, 0.0, 0.8], 1.1) @ v)).max() > 1000 * bound
+
+
+# ---------------------------------------------------------------------------------------------
+# Core RP's RgbToHsv / HsvToRgb (Color.hlsl), BlendNormalRNM (CommonMaterial.hlsl), SharpenAlpha
+
+NAMES_INCLUDE = """#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Color.hlsl"
+            #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/CommonMaterial.hlsl\""""
+N1, N2 = np.array([0.3, -0.2, 0.9]), np.array([-0.4, 0.1, 0.8])
+NAMES_CASES = {
+    "rgb_to_hsv": "return float4(RgbToHsv(float3(0.2, 0.9, 0.5)), 1.0);",
+    "hsv_to_rgb": "return float4(HsvToRgb(float3(0.3, 0.6, 0.8)), 1.0);",
+    "rnm_sharpen": """float3 n = BlendNormalRNM(normalize(float3(0.3, -0.2, 0.9)), normalize(float3(-0.4, 0.1, 0.8)));
+                return float4(n.x, n.y + 10.0 * n.z, SharpenAlpha(0.5 + 1.0 / 32768.0, 0.5), 1.0);""",
+}
+
+
+def _rnm(n1, n2):
+    """Barre-Brisebois and Hill 2012: n2 rotated by the shortest-arc rotation taking (0, 0, 1)
+    to n1 (Rodrigues about (0, 0, 1) x n1), in float64."""
+    from pbrlab.maths.reference.geometric_tools import rotation_matrix
+    z = np.array([0.0, 0.0, 1.0])
+    axis = np.cross(z, n1)
+    return rotation_matrix(axis, np.arccos(n1 @ z)) @ n2
+
+
+def _names_expected(case: str) -> np.ndarray:
+    import colorsys
+    if case == "rgb_to_hsv":  # the hexcone with Unity's 1e-4 in both divisors (colorsys: the control)
+        r, g, b = 0.2, 0.9, 0.5
+        chroma = 0.9 - 0.2
+        return np.array([1.0 / 3.0 + (b - r) / (6.0 * chroma + 1e-4), chroma / (0.9 + 1e-4), 0.9])
+    if case == "hsv_to_rgb":
+        return np.array(colorsys.hsv_to_rgb(0.3, 0.6, 0.8))
+    n = _rnm(N1 / np.linalg.norm(N1), N2 / np.linalg.norm(N2))
+    # SharpenAlpha of a constant alpha (fwidth 0, floored at 1e-4): 2^-15 / 1e-4 + 1/2
+    return np.array([n[0], n[1] + 10.0 * n[2], 2.0 ** -15 / 1e-4 + 0.5])
+
+
+# float32: a few operations per channel, each within 3 ulps (GLSL 4.60 precision table), the
+# RNM channel weighted by 10: 32 ulps of the largest channel.
+NAMES_BOUND = 32 * ULP
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("case", sorted(NAMES_CASES))
+def test_core_hsv_rnm_and_sharpen_alpha(tmp_path, language, case):
+    """RgbToHsv (the hexcone, Smith 1978, with Unity's 1e-4 in the divisors), HsvToRgb (Python's
+    colorsys), BlendNormalRNM (the rotation of n2 by the one taking (0, 0, 1) to n1, computed by
+    Rodrigues' formula) and SharpenAlpha of a constant alpha against float64 within NAMES_BOUND
+    of the largest channel. Control: the whiteout blend (BlendNormal) differs from RNM by far
+    more; colorsys' HSV without the 1e-4 agrees with RgbToHsv to 1e-4 only."""
+    import colorsys
+    pixels, _ = render_constant(tmp_path, urp_pass("names " + case, NAMES_CASES[case], NAMES_INCLUDE), language,
+                                environment=False)
+    expected = _names_expected(case)
+    bound = NAMES_BOUND * np.abs(expected).max()
+    err = np.abs(pixels[:, :3] - expected).max(axis=1)
+    assert (err > bound).mean() == 0.0, (err.max() / bound, pixels[0, :3], expected)
+    n1, n2 = N1 / np.linalg.norm(N1), N2 / np.linalg.norm(N2)
+    whiteout = np.array([*(n1[:2] * n2[2] + n2[:2] * n1[2]), n1[2] * n2[2]])
+    whiteout /= np.linalg.norm(whiteout)
+    assert np.abs(whiteout - _rnm(n1, n2)).max() > 1000 * NAMES_BOUND  # control: another blend
+    plain = np.array(colorsys.rgb_to_hsv(0.2, 0.9, 0.5))
+    assert 10 * NAMES_BOUND < np.abs(plain - _names_expected("rgb_to_hsv")).max() < 1e-4
+
+
+# ---------------------------------------------------------------------------------------------
+# URP's AlphaDiscard's return value (URP 12 and later) and AlphaModulate
+
+ALPHA_BODY = "return float4(AlphaDiscard(0.3, 0.5), AlphaModulate(float3(0.2, 0.4, 0.6), 0.5).g, 0.25, 1.0);"
+CORE_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"'
+
+
+def keyword_pass(name: str, body: str, keyword: str) -> str:
+    """urp_pass with ``keyword`` defined before Core.hlsl, as a keyword the material enables is."""
+    return urp_pass(name, body).replace(CORE_INCLUDE, f"#define {keyword} 1\n{CORE_INCLUDE}", 1)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_alpha_discard_returns_alpha_and_alpha_modulate(tmp_path, language):
+    """AlphaDiscard(a, cutoff) is a value, a (URP 12+; without _ALPHATEST_ON nothing is clipped),
+    AlphaModulate(albedo, a) is the albedo without _ALPHAMODULATE_ON and lerp(1, albedo, a) with
+    it (0.4 -> 0.7), within 2 ulps. Control: under _ALPHATEST_ON the 0.3 < 0.5 alpha discards
+    every pixel (the sphere is not drawn)."""
+    pixels, _ = render_constant(tmp_path, urp_pass("alpha", ALPHA_BODY), language, environment=False)
+    assert (np.abs(pixels[:, :3] - np.array([0.3, 0.4, 0.25])) <= 2 * ULP).all(), pixels[0]
+    modulated, _ = render_constant(tmp_path, keyword_pass("alpha modulate", ALPHA_BODY, "_ALPHAMODULATE_ON"),
+                                   language, environment=False)
+    assert (np.abs(modulated[:, 1] - 0.7) <= 2 * ULP).all(), modulated[0]
+    with pytest.raises(AssertionError):  # control: render_constant finds no covered pixel
+        render_constant(tmp_path, keyword_pass("alpha test", ALPHA_BODY, "_ALPHATEST_ON"), language,
+                        environment=False)

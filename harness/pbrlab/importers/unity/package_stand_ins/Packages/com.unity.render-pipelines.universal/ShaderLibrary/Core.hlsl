@@ -163,11 +163,23 @@ float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return colo
 
 // URP's ShaderVariablesFunctions: the alpha a pass writes, the surface's own for a transparent
 // surface (surfaceType 1) and 1 for an opaque one (0, the default); AlphaDiscard clips
-// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere).
+// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere)
+// and returns the alpha (URP 12 and later return it, for alpha to coverage, which needs MSAA:
+// without it the kept alpha is the input; URP 10's returned nothing, and a call that ignores
+// the value is the same); AlphaModulate fakes a multiply blend's alpha under _ALPHAMODULATE_ON,
+// the albedo lerped from white by alpha, and leaves it elsewhere.
 float OutputAlpha(float outputAlpha, float surfaceType = 0.0) { return surfaceType == 1.0 ? outputAlpha : 1.0; }
-void AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
+float AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
 #ifdef _ALPHATEST_ON
     clip(alpha - cutoff + offset);
+#endif
+    return alpha;
+}
+float3 AlphaModulate(float3 albedo, float alpha) {
+#if defined(_ALPHAMODULATE_ON)
+    return lerp(float3(1.0, 1.0, 1.0), albedo, alpha);
+#else
+    return albedo;
 #endif
 }
 
@@ -324,6 +336,12 @@ float3 UnpackNormalRGB(float4 packedNormal, float scale) {
 // is renamed before this is read: cg_spellings).
 float3 UnpackNormalmapRGorAG(float4 packedNormal, float scale) { return UnpackNormalScale(packedNormal, scale); }
 #define UnpackNormal(packedNormal) UnpackNormalScale(packedNormal, 1.0)
+
+// Core RP's SharpenAlpha: an alpha-tested edge anti-aliased over one pixel for alpha to
+// coverage, (alpha - cutoff) / fwidth(alpha) + 1/2 clamped to [0, 1] (fwidth floored at 1e-4)
+float SharpenAlpha(float alpha, float alphaClipTreshold) {
+    return saturate((alpha - alphaClipTreshold) / max(fwidth(alpha), 0.0001) + 0.5);
+}
 
 // The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).
 float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _ScreenParams.xy; }
