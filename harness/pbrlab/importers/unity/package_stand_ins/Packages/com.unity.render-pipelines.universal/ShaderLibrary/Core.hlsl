@@ -160,6 +160,12 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
+// URP 12+'s per-pixel fog factor: the vertex stage's where fog is not computed per pixel
+// (no _FOG_FRAGMENT fog here), so with no fog the vertex stage's 0
+float InitializeInputDataFog(float4 positionWS, float vertFogFactor) { return vertFogFactor; }
+// URP's rendering debugger's texture data (Debugging3D.hlsl): nothing without the debugger
+#define SETUP_DEBUG_TEXTURE_DATA(inputData, uv, texture)
+#define SETUP_DEBUG_TEXTURE_DATA_2D(inputData, positionWS, texture)
 
 // URP's ShaderVariablesFunctions: the alpha a pass writes, the surface's own for a transparent
 // surface (surfaceType 1) and 1 for an opaque one (0, the default); AlphaDiscard clips
@@ -169,6 +175,8 @@ float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return colo
 // the value is the same); AlphaModulate fakes a multiply blend's alpha under _ALPHAMODULATE_ON,
 // the albedo lerped from white by alpha, and leaves it elsewhere.
 float OutputAlpha(float outputAlpha, float surfaceType = 0.0) { return surfaceType == 1.0 ? outputAlpha : 1.0; }
+// surfaceType 1: transparent (URP's SurfaceType enum, Opaque 0)
+bool IsSurfaceTypeTransparent(float surfaceType) { return surfaceType == 1.0; }
 float AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
 #ifdef _ALPHATEST_ON
     clip(alpha - cutoff + offset);
