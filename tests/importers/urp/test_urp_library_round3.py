@@ -240,7 +240,7 @@ def test_shaders_own_macro_body_wins_from_its_line(tmp_path, language):
     assert abs(layer[0, 0] - 3.25) > 1.0  # control: the layer's bodies
     from pbrlab.importers.unity import macro_redefinitions
     from unittest import mock
-    with mock.patch.object(macro_redefinitions, "provided_macros", return_value=frozenset()), \
+    with mock.patch.object(macro_redefinitions, "provided_macros", return_value={}), \
             pytest.raises(PbrlabError, match=r"(?i)redefin"):  # control: no #undef, the compilers refuse
         render_constant(tmp_path, urp_pass("refused", REDEFINE_BODY, REDEFINE_INCLUDE), language, environment=False)
 
@@ -480,3 +480,29 @@ def test_alpha_discard_returns_alpha_and_alpha_modulate(tmp_path, language):
     with pytest.raises(AssertionError):  # control: render_constant finds no covered pixel
         render_constant(tmp_path, keyword_pass("alpha test", ALPHA_BODY, "_ALPHATEST_ON"), language,
                         environment=False)
+
+
+# URP 12+'s InitializeInputDataFog, IsSurfaceTypeTransparent, and URP 14's world-position varying
+LIT_NAMES_INCLUDE = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"'
+LIT_NAMES_BODY = """float p = 0.0;
+                #if defined(REQUIRES_WORLD_SPACE_POS_INTERPOLATOR)
+                p = 0.125;
+                #endif
+                SETUP_DEBUG_TEXTURE_DATA(p, IN.positionCS.xy, _NoSuchTexture);
+                return float4(InitializeInputDataFog(float4(1.0, 2.0, 3.0, 1.0), 0.375),
+                              (IsSurfaceTypeTransparent(1.0) ? 0.5 : 0.25) + (IsSurfaceTypeTransparent(0.0) ? 4.0 : 2.0), p, 1.0);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_urp_lit_pass_names(tmp_path, language):
+    """A pass copied from URP 14's Lit: InitializeInputDataFog gives the vertex stage's factor
+    (no per-pixel fog here), IsSurfaceTypeTransparent is true for 1 only, SETUP_DEBUG_TEXTURE_DATA
+    is nothing (no rendering debugger: its texture argument is not read), and Lighting.hlsl
+    defines REQUIRES_WORLD_SPACE_POS_INTERPOLATOR as URP 14's Shadows.hlsl does: (0.375, 2.5,
+    0.125), exact. Control: a program that does not include Lighting.hlsl does not get the
+    define (blue 0)."""
+    pixels, _ = render_constant(tmp_path, urp_pass("lit names", LIT_NAMES_BODY, LIT_NAMES_INCLUDE), language,
+                                environment=False)
+    assert (pixels[:, :3] == np.array([0.375, 2.5, 0.125])).all(), pixels[0]
+    bare, _ = render_constant(tmp_path, urp_pass("lit names bare", LIT_NAMES_BODY), language, environment=False)
+    assert (bare[:, 2] == 0.0).all()

@@ -32,22 +32,23 @@ _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)", re.M)
 
 
 @functools.lru_cache(maxsize=1)
-def provided_macros() -> frozenset:
-    """The names pbrlab's Unity layer ``#define``s: the built-in stand-ins (cginc/), the URP and
-    Core RP stand-ins (package_stand_ins/), the Unity prelude of each language (unity_compat/,
-    pbr/unity/)."""
+def provided_macros() -> dict:
+    """{name: the bodies it is given} of the macros pbrlab's Unity layer ``#define``s: the
+    built-in stand-ins (cginc/), the URP and Core RP stand-ins (package_stand_ins/), the Unity
+    prelude of each language (unity_compat/, pbr/unity/)."""
     files = [*CGINC.rglob("*.cginc"), *CGINC.rglob("*.hlsl"), *PACKAGE_STAND_INS.rglob("*.hlsl"),
              *(GLSL_ROOT / "unity_compat").glob("*.glsl"), *(HLSL_ROOT / "unity_compat").glob("*.hlsl"),
              *(GLSL_ROOT / "pbr" / "unity").glob("*.glsl"), *(HLSL_ROOT / "pbr" / "unity").glob("*.hlsl")]
-    names = set()
+    names: dict = {}
     for path in files:
-        names.update(_DEFINE.findall(blank_comments(path.read_text(encoding="utf-8", errors="replace"))))
-    return frozenset(names)
+        for name, _, body in _bodies(path.read_text(encoding="utf-8", errors="replace")):
+            names.setdefault(name, set()).add(body)
+    return names
 
 
 def _bodies(text: str) -> list:
-    """(name, line index, the define's text with its continuation lines) of each #define line
-    of ``text`` (comments blanked)."""
+    """(name, line index, the body with its continuation lines, white space collapsed) of each
+    #define line of ``text`` (comments blanked)."""
     lines = blank_comments(text).split("\n")
     out, i = [], 0
     while i < len(lines):
@@ -56,8 +57,8 @@ def _bodies(text: str) -> list:
         while lines[i].rstrip().endswith("\\") and i + 1 < len(lines):
             i += 1
         if m:
-            body = " ".join(line.rstrip().rstrip("\\") for line in lines[start:i + 1])
-            out.append((m.group(1), start, " ".join(body.split()[2:])))
+            body = " ".join(line.rstrip().rstrip("\\") for line in [lines[start][m.end():], *lines[start + 1:i + 1]])
+            out.append((m.group(1), start, " ".join(body.split())))
         i += 1
     return out
 
@@ -100,7 +101,8 @@ def undefined_before_redefinition(program: str, path: Path, first_line: int, rew
         for name, _, body in defines:
             bodies.setdefault(name, set()).add(body)
     provided = provided_macros()
-    again = {name for name, seen in bodies.items() if name in provided or len(seen) > 1}
+    # a body the layer gives the name too is no redefinition (FXC says nothing for an equal body)
+    again = {name for name, seen in bodies.items() if len(seen) > 1 or (name in provided and seen - provided[name])}
     if not again:
         return program, rewritten, []
     out, notes = dict(rewritten), []
@@ -110,7 +112,8 @@ def undefined_before_redefinition(program: str, path: Path, first_line: int, rew
             continue
         shown, base = (path, first_line) if key is None else (key, 1)
         for i, name in starts:
-            whose = "pbrlab's Unity layer defines too" if name in provided else "defined before with another body"
+            whose = ("pbrlab's Unity layer defines with another body" if name in provided
+                     else "defined before with another body")
             notes.append(f"{shown}:{base + i}: #define {name} defines a macro {whose}: the shader's body is used "
                          "from this line on (FXC and DXC warn, X1519, and take the later one)")
         changed = _with_undefs(texts[key], starts)
