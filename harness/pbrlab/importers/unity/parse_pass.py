@@ -20,6 +20,7 @@ from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
 from .unprovided import missing_include
 from .own_library_functions import renamed_in_own_files
+from .macro_redefinitions import undefined_before_redefinition
 from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -173,11 +174,13 @@ def _unresolved_include(program: str, folder: Path):
     return None
 
 
-def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), keywords=()) -> M.VertexFragmentPass:
+def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), keywords=(),
+               notes: list | None = None) -> M.VertexFragmentPass:
     """``spellings``: the pipeline's (parse.Pipeline.spellings), already applied to ``program``
     and applied here to the files it includes (the functions and structs they define);
     ``keywords``: the pipeline's (parse.Pipeline.keywords), on where the program declares them,
-    as when it is drawn (a varying under ``#ifdef _ADDITIONAL_LIGHTS`` is one of its stages')."""
+    as when it is drawn (a varying under ``#ifdef _ADDITIONAL_LIGHTS`` is one of its stages');
+    ``notes``: gets a line for each macro the shader defines again (macro_redefinitions.py)."""
     masked = blank_comments(program)
     check_refusals(program, path, first_line, path.parent)
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
@@ -206,6 +209,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         program, rewritten, across = copied_across_includes(program, path.parent, defines, rewritten, written)
         written += across
     program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
+    program, rewritten, redefined = undefined_before_redefinition(program, path, first_line, rewritten)  # FXC's warning
+    if notes is not None:
+        notes.extend(redefined)
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"

@@ -132,6 +132,10 @@ def _provided() -> frozenset:
             names.update(re.findall(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", text, re.M))
             names.update(re.findall(r"^\s*(?:uniform\s+|static\s+)?\w+\s+(\w+)\s*[;(]", text, re.M))
             names.update(re.findall(r"\bstruct\s+(\w+)", text))
+    # the camera's textures the harness renders and binds to a program that declares them
+    # (render/camera_textures.py): _CameraDepthTexture in the built-in pipeline too
+    from ...scene.gbuffer_surface import CAMERA_TEXTURES
+    names.update(CAMERA_TEXTURES)
     return frozenset(names)
 
 

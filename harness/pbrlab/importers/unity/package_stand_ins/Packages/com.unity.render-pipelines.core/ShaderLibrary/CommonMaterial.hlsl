@@ -20,4 +20,13 @@ float3 BlendNormal(float3 n1, float3 n2) {
     return normalize(float3(n1.xy * n2.z + n2.xy * n1.z, n1.z * n2.z));
 }
 
+// Reoriented normal mapping (Core RP's BlendNormalRNM; Barre-Brisebois and Hill, "Blending in
+// Detail", 2012): n2 rotated by the rotation that takes (0, 0, 1) to n1, both unit:
+// t = n1 + (0, 0, 1), u = n2 * (-1, -1, 1), t dot(t, u) / t.z - u, normalized.
+float3 BlendNormalRNM(float3 n1, float3 n2) {
+    float3 t = n1 + float3(0.0, 0.0, 1.0);
+    float3 u = n2 * float3(-1.0, -1.0, 1.0);
+    return normalize(t * dot(t, u) / t.z - u);
+}
+
 #endif

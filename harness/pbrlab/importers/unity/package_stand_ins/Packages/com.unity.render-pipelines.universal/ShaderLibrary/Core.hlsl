@@ -160,14 +160,34 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 float ComputeFogFactor(float z) { return 0.0; }
 float3 MixFog(float3 color, float fogFactor) { return color; }
 float3 MixFogColor(float3 color, float3 fogColor, float fogFactor) { return color; }
+// URP 12+'s per-pixel fog factor: the vertex stage's where fog is not computed per pixel
+// (no _FOG_FRAGMENT fog here), so with no fog the vertex stage's 0
+float InitializeInputDataFog(float4 positionWS, float vertFogFactor) { return vertFogFactor; }
+// URP's rendering debugger's texture data (Debugging3D.hlsl): nothing without the debugger
+#define SETUP_DEBUG_TEXTURE_DATA(inputData, uv, texture)
+#define SETUP_DEBUG_TEXTURE_DATA_2D(inputData, positionWS, texture)
 
 // URP's ShaderVariablesFunctions: the alpha a pass writes, the surface's own for a transparent
 // surface (surfaceType 1) and 1 for an opaque one (0, the default); AlphaDiscard clips
-// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere).
+// alpha - cutoff + offset below 0 where _ALPHATEST_ON is defined (and does nothing elsewhere)
+// and returns the alpha (URP 12 and later return it, for alpha to coverage, which needs MSAA:
+// without it the kept alpha is the input; URP 10's returned nothing, and a call that ignores
+// the value is the same); AlphaModulate fakes a multiply blend's alpha under _ALPHAMODULATE_ON,
+// the albedo lerped from white by alpha, and leaves it elsewhere.
 float OutputAlpha(float outputAlpha, float surfaceType = 0.0) { return surfaceType == 1.0 ? outputAlpha : 1.0; }
-void AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
+// surfaceType 1: transparent (URP's SurfaceType enum, Opaque 0)
+bool IsSurfaceTypeTransparent(float surfaceType) { return surfaceType == 1.0; }
+float AlphaDiscard(float alpha, float cutoff, float offset = 0.0) {
 #ifdef _ALPHATEST_ON
     clip(alpha - cutoff + offset);
+#endif
+    return alpha;
+}
+float3 AlphaModulate(float3 albedo, float alpha) {
+#if defined(_ALPHAMODULATE_ON)
+    return lerp(float3(1.0, 1.0, 1.0), albedo, alpha);
+#else
+    return albedo;
 #endif
 }
 
@@ -315,6 +335,20 @@ float3 UnpackNormalRGB(float4 packedNormal, float scale) {
     float3 n = packedNormal.rgb * 2.0 - 1.0;
     n.xy *= scale;
     return n;
+}
+// Core RP's two-argument UnpackNormalmapRGorAG is that same unpacking; and URP's UnpackNormal is
+// it with scale 1 (Packing.hlsl on desktop, where Unity stores normal maps as DXT5nm or BC5),
+// not the built-in UnityCG's RGB form (xyz * 2 - 1) the Unity prelude defines: a grey (0.5)
+// texel is the flat normal (0, 0, 1) here, as in URP, where the RGB form gives (0, 0, 0). A
+// macro, as the prelude's function has the same signature (a shader's own UnpackNormal(float4)
+// is renamed before this is read: cg_spellings).
+float3 UnpackNormalmapRGorAG(float4 packedNormal, float scale) { return UnpackNormalScale(packedNormal, scale); }
+#define UnpackNormal(packedNormal) UnpackNormalScale(packedNormal, 1.0)
+
+// Core RP's SharpenAlpha: an alpha-tested edge anti-aliased over one pixel for alpha to
+// coverage, (alpha - cutoff) / fwidth(alpha) + 1/2 clamped to [0, 1] (fwidth floored at 1e-4)
+float SharpenAlpha(float alpha, float alphaClipTreshold) {
+    return saturate((alpha - alphaClipTreshold) / max(fwidth(alpha), 0.0001) + 0.5);
 }
 
 // The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).

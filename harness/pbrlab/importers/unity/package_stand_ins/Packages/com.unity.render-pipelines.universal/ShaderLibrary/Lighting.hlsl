@@ -16,6 +16,12 @@
 #ifndef PBRLAB_URP_LIGHTING_HLSL
 #define PBRLAB_URP_LIGHTING_HLSL
 
+// URP 14's Shadows.hlsl (which its Lighting.hlsl brings) asks every lit pass for the world
+// position varying: a pass copied from URP's Lit reads input.positionWS under this name.
+#ifndef REQUIRES_WORLD_SPACE_POS_INTERPOLATOR
+#define REQUIRES_WORLD_SPACE_POS_INTERPOLATOR 1
+#endif
+
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceData.hlsl"

@@ -50,6 +50,12 @@ float3 pbrlab_shadergraph_scene_normal(float2 uv) {
     return float3(0.0, 0.0, 0.0);
 #endif
 }
+// The same given a float4 position (Amplify Shader Editor's graphs pass the normalized grab
+// screen position, a float4): Unity's functions take a float2, which FXC reads as the float4's
+// xy (implicit truncation, warning X3206); glslang's HLSL does the same, GLSL refuses the call.
+float pbrlab_shadergraph_scene_depth(float4 uv) { return pbrlab_shadergraph_scene_depth(uv.xy); }
+float3 pbrlab_shadergraph_scene_color(float4 uv) { return pbrlab_shadergraph_scene_color(uv.xy); }
+float3 pbrlab_shadergraph_scene_normal(float4 uv) { return pbrlab_shadergraph_scene_normal(uv.xy); }
 #define SHADERGRAPH_SAMPLE_SCENE_DEPTH(uv) pbrlab_shadergraph_scene_depth(uv)
 #define SHADERGRAPH_SAMPLE_SCENE_COLOR(uv) pbrlab_shadergraph_scene_color(uv)
 #define SHADERGRAPH_SAMPLE_SCENE_NORMAL(uv) pbrlab_shadergraph_scene_normal(uv)
