@@ -232,6 +232,12 @@ float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferPar
 // Core RP's Common.hlsl: x remapped so that start -> 0 and start + length -> 1, clamped, from
 // 1 / length and start / length: saturate(x rcpLength - startTimesRcpLength).
 float Remap01(float x, float rcpLength, float startTimesRcpLength) { return saturate(x * rcpLength - startTimesRcpLength); }
+// Core RP's Color.hlsl Luminance: Rec. 709 relative luminance of a linear colour (ITU-R BT.709,
+// the sRGB primaries; weights sum to 1). The Unity prelude's Luminance is the built-in pipeline's
+// (unity_ColorSpaceLuminance, linear weights summing to 0.504): URP programs never see it, so
+// from here on a call of Luminance in a URP program is Core RP's.
+float PbrlabCoreLuminance(float3 linearRgb) { return dot(linearRgb, float3(0.2126729, 0.7151522, 0.0721750)); }
+#define Luminance(linearRgb) PbrlabCoreLuminance(linearRgb)
 // Core RP's Color.hlsl: the colour's deviation from the mean of its channels scaled by
 // saturation (0: grey at the mean, 1: unchanged).
 float3 Desaturate(float3 value, float saturation) {
