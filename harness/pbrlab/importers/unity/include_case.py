@@ -21,25 +21,26 @@ from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, UnityShaderError, b
                           resolve_included)
 
 
-@functools.lru_cache(maxsize=1)
-def _stand_ins_by_lower_case() -> dict:
-    """{package path in lower case: [the stand-ins' package paths spelled so]}."""
+@functools.lru_cache(maxsize=2)
+def _files_by_lower_case(root: Path, below: bool) -> dict:
+    """{path relative to ``root`` in lower case: [the files' paths spelled so]}, of the files in
+    ``root`` (and in its folders below, when ``below``)."""
     out: dict = {}
-    for path in sorted(PACKAGE_STAND_INS.rglob("*")):
+    for path in sorted(root.rglob("*") if below else root.iterdir()):
         if path.is_file():
-            rel = path.relative_to(PACKAGE_STAND_INS).as_posix()
+            rel = path.relative_to(root).as_posix()
             out.setdefault(rel.lower(), []).append(rel)
     return out
 
 
-@functools.lru_cache(maxsize=1)
+def _stand_ins_by_lower_case() -> dict:
+    """{package path in lower case: [the stand-ins' package paths spelled so]}."""
+    return _files_by_lower_case(PACKAGE_STAND_INS, True)
+
+
 def _unity_includes_by_lower_case() -> dict:
     """{file name in lower case: [pbrlab's stand-ins for Unity's include files spelled so]}."""
-    out: dict = {}
-    for path in sorted(CGINC.iterdir()):
-        if path.is_file():
-            out.setdefault(path.name.lower(), []).append(path.name)
-    return out
+    return _files_by_lower_case(CGINC, False)
 
 
 def _project_spellings(name: str, folder: Path) -> list:
