@@ -110,7 +110,10 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
     """The geometry function ``name`` of ``masked`` (the program and its includes, comments
     blanked, the drawn variant's branches); ``where_of(offset)`` names a place in the program."""
     where = where_of(pragma_offset)
-    m = re.search(r"(" + _MAX_VERTEX_COUNT.pattern + r")?\s*\bvoid\s+" + re.escape(name) + r"\s*\(", masked)
+    # (the attribute may be chosen by #if lines: `#ifdef _SUBDIVIDE [maxvertexcount(12)] #else
+    # [maxvertexcount(3)] #endif void geom(...)`, the inactive branch already blanked)
+    m = re.search(r"(" + _MAX_VERTEX_COUNT.pattern + r")?(?:\s|#[^\n]*)*+\bvoid\s+" + re.escape(name) + r"\s*\(",
+                  masked)
     if m is None:
         raise UnityShaderError(f"{where}: #pragma geometry {name}: no function void {name}(...) is defined")
     if m.group(1) is None:

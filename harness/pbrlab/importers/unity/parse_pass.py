@@ -28,6 +28,7 @@ from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, chec
                           matching_brace, resolve_included, respelled, top_level)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
+_STAGES = ("vertex", "fragment", "geometry", "hull", "domain")
 # A stage whose text is built apart from the vertex and fragment stages' (geometry_stage.py):
 # the program's engine-filled and written globals are not set there (tessellation_stage.py's
 # entries set them as the vertex and fragment entries do).
@@ -79,7 +80,9 @@ def _function_signature(masked: str, name: str, where_of):
     # the #if lines of a parameter list (`, out half4 c : SV_Target0 #ifdef _WRITE_RENDERING_LAYERS
     # , out float4 layers : SV_Target1 #endif`): the text is the active branch's, the lines go
     params_text = re.sub(r"^[ \t]*#[^\n]*", "", masked[m.end():i - 1], flags=re.M)
-    rest = re.match(r"\s*(?::\s*(\w+))?\s*\{", masked[i:])
+    # (and the #if lines between it and the body: `fragOut frag(g2f i) #else half4 frag(g2f i) :
+    # SV_Target #endif {`, the inactive branch already blanked)
+    rest = re.match(r"(?:\s|#[^\n]*)*+(?::\s*(\w+))?(?:\s|#[^\n]*)*+\{", masked[i:])
     if rest is None:
         return None
     where = where_of(m.start())
@@ -219,6 +222,14 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     pragmas = {}
     for m in _PRAGMA.finditer(masked):
         pragmas.setdefault(m.group(1), (m.group(2).split(), m.start()))
+    # A stage's #pragma in a file the program includes (SRLS's `#pragma fragment frag` in its
+    # Core.hlsl): Unity's shader compiler reads #pragma directives in include files since its
+    # caching preprocessor (Unity 2020.1 on, the only one from 2021.2; manual, "HLSL pragma
+    # directives reference"). Only the stage names are taken from there, placed at the
+    # program's first line; the program's own pragma wins.
+    for m in _PRAGMA.finditer(everything[len(masked):]):
+        if m.group(1) in _STAGES and m.group(1) not in pragmas and m.group(2).split():
+            pragmas[m.group(1)] = (m.group(2).split(), 0)
     if "surface" in pragmas:
         raise UnityShaderError(f"{where(pragmas['surface'][1])}: #pragma surface inside a Pass: Unity "
                                "allows surface programs only directly in a SubShader")

@@ -151,8 +151,10 @@ def port_code(code: str) -> str:
     code = _rename_types(code)
     code = _SEMANTIC.sub(r"\1", code)
     code = _DECLARED_SEMANTIC.sub(r"\1", code)
-    # a function's return semantic (comments between it and the body: placeholders here)
-    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=" + _KEPT + r"\{)", r")\1\2", code)
+    # a function's return semantic (comments between it and the body: placeholders here; #if
+    # lines there too: `half4 frag(g2f i) : SV_Target` / `#endif` / `{`, the other branch's
+    # signature above)
+    code = re.sub(r"\)(\s*):\s*[A-Za-z_]\w*(\s*)(?=(?:" + _KEPT + r"#[^\n]*\n\s*)*" + _KEPT + r"\{)", r")\1\2", code)
     code = re.sub(r"\binline\s+", "", code)
     code = re.sub(r"\bpow\s*\(", "pbr_unity_pow(", code)
     code = re.sub(r"\bstatic\s+(?=const\b)", "", code)

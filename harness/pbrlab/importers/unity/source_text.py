@@ -385,10 +385,18 @@ _KEYWORD_PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(?:multi_compile|shader
                              r"(?:_vertex|_fragment)?[ \t]+([^\n]*)$", re.M)
 
 
+def spliced_lines(text: str) -> str:
+    """``text`` with each backslash-newline removed, as the C preprocessor splices lines before
+    it reads a directive (C99 5.1.1.2 phase 2; HLSL's preprocessor is C's): a ``#pragma
+    multi_compile A \\`` line goes on with the next line's keywords. White space between the
+    backslash and the line's end is taken as GCC and Clang take it (a warning, still a splice)."""
+    return re.sub(r"\\[ \t]*\r?\n", "", text)
+
+
 def declared_keywords(program: str) -> frozenset:
     """The keywords ``#pragma multi_compile`` / ``shader_feature`` lines of ``program`` declare."""
     words = set()
-    for m in _KEYWORD_PRAGMA.finditer(blank_comments(program)):
+    for m in _KEYWORD_PRAGMA.finditer(spliced_lines(blank_comments(program))):
         words.update(w for w in m.group(1).split() if re.fullmatch(IDENT, w) and set(w) != {"_"})
     return frozenset(words)
 
@@ -405,7 +413,7 @@ _ENGINE_KEYWORD = re.compile(r"(?:DIRECTIONAL|POINT|SPOT|POINT_COOKIE|DIRECTIONA
 def keyword_sets(program: str) -> list:
     """The keyword sets of ``program``'s ``#pragma multi_compile`` / ``shader_feature`` lines, each
     a tuple of its words (``_`` and ``__`` included: Unity's "none")."""
-    return [tuple(m.group(1).split()) for m in _KEYWORD_PRAGMA.finditer(blank_comments(program))
+    return [tuple(m.group(1).split()) for m in _KEYWORD_PRAGMA.finditer(spliced_lines(blank_comments(program)))
             if m.group(1).split()]
 
 
