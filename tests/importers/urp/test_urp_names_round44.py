@@ -298,3 +298,30 @@ def test_a_backslashed_project_include_is_read_from_the_project_root(tmp_path, l
 def test_a_backslashed_include_of_a_missing_file_is_refused(tmp_path):
     with pytest.raises(PbrlabError, match=r"Assets/ShaderLibs/Missing\.hlsl"):
         render_scene(_project(tmp_path, r"Assets\ShaderLibs\Missing.hlsl"), language="glsl")
+
+
+# --- URP's DepthNormalsPass.hlsl, included by a forward pass ----------------------------------------
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_forward_pass_may_include_and_call_the_depth_normals_pass(tmp_path, language):
+    """Shaders/DepthNormalsPass.hlsl (DepthNormalsVertex / DepthNormalsFragment: the world-space
+    normal, w 0), included by a forward pass that calls its fragment function: the unit sphere's
+    normal. Each pixel's value is a unit vector (the normalized interpolated normal: |n| within
+    4 float32 roundings of 1) whose z faces the camera (> 0 on the camera's side). Control: the
+    un-normalized mapping n * 0.5 + 0.5 of the same pixels is no unit vector."""
+    body = ("Varyings v; v.positionCS = IN.positionCS; v.uv = IN.uv;"
+            " v.normalWS = TransformObjectToWorldNormal(normalize(IN.objectPos));"
+            " float4 n; DepthNormalsFragment(v, n); return float4(n.xyz * 0.5 + 0.5, 1.0 - n.w);")
+    text = (_SHADER % {"body": body, "globals": "", "properties": "",
+                       "includes": '#include "Packages/com.unity.render-pipelines.universal/Shaders/DepthNormalsPass.hlsl"'})
+    text = (text.replace("struct Attributes { float4 positionOS : POSITION; float2 uv : TEXCOORD0; };", "")
+                .replace("struct Varyings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; };",
+                         "struct Out { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; float3 objectPos : TEXCOORD3; };")
+                .replace("Varyings vert(Attributes IN) {\n                Varyings OUT;",
+                         "Out vert(Attributes IN) {\n                Out OUT; OUT.objectPos = IN.positionOS.xyz;")
+                .replace("OUT.uv = IN.uv;", "OUT.uv = IN.texcoord;")
+                .replace("float4 frag(Varyings IN)", "float4 frag(Out IN)"))
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
+    n = pixels[:, :3] * 2.0 - 1.0
+    assert np.all(np.abs(np.linalg.norm(n, axis=1) - 1.0) <= 4 * 4 * EPS * 2)
+    assert np.all(pixels[:, 3] == 1.0) and (n[:, 2] > 0.0).mean() > 0.99
+    assert np.abs(np.linalg.norm(pixels[:, :3], axis=1) - 1.0).max() > 0.1
