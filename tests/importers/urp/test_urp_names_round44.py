@@ -325,3 +325,54 @@ def test_a_forward_pass_may_include_and_call_the_depth_normals_pass(tmp_path, la
     assert np.all(np.abs(np.linalg.norm(n, axis=1) - 1.0) <= 4 * 4 * EPS * 2)
     assert np.all(pixels[:, 3] == 1.0) and (n[:, 2] > 0.0).mean() > 0.99
     assert np.abs(np.linalg.norm(pixels[:, :3], axis=1) - 1.0).max() > 0.1
+
+
+# --- UNITY_VERSION in a URP program -------------------------------------------------------------
+_VERSIONED_CALL = """#if UNITY_VERSION >= %s
+                return UniversalFragmentBlinnPhong(inputData, surfaceData);
+                #else
+                return UniversalFragmentBlinnPhong(inputData, float4(surfaceData.specular, 1), surfaceData.smoothness, 0, surfaceData.alpha);
+                #endif"""
+
+
+def _versioned_grid(tmp_path, threshold: int):
+    import test_urp_shaders as simple_lit
+    text = (simple_lit.SHADERS / "urp_blinn_phong_grid.shader").read_text()
+    call = "return UniversalFragmentBlinnPhong(inputData, surfaceData);"
+    assert call in text
+    shader = tmp_path / "versioned_grid.shader"
+    shader.write_text(text.replace(call, _VERSIONED_CALL % threshold))
+    return simple_lit, shader
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_urp_program_sees_the_unity_version_of_its_urp(tmp_path, language):
+    """``#if UNITY_VERSION >= 202120`` (simon-ramirez-afk's ShaderForwardLit.hlsl; Cyanilux's
+    templates): a URP program is compiled with the UNITY_VERSION of URP 12 (2021.3: 202130), the
+    version the stand-ins follow, so it takes the branch written for URP 12's
+    UniversalFragmentBlinnPhong(InputData, SurfaceData); the #else branch's five-argument call is
+    no URP version's (URP 7-10 take six), never compiled by the Unity it was written for. The
+    pixel is SimpleLit's float64 Blinn-Phong (test_urp_shaders' transcription and bound, on the
+    same grid). Control: a URP 14 threshold (202220) takes the #else branch, which is refused."""
+    simple_lit, shader = _versioned_grid(tmp_path, 202120)
+    uv = render_scene(parse_scene(simple_lit._grid_scene(simple_lit.SHADERS / "urp_uv.shader"), "t", simple_lit.SHADERS),
+                      language=language).linear
+    lit = render_scene(parse_scene(simple_lit._grid_scene(shader), "t", tmp_path), language=language).linear
+    u, s = uv[..., 0].astype(np.float64), uv[..., 1].astype(np.float64)
+    angle = (u * 2.0 - 1.0) * 1.4
+    v = np.stack([np.sin(angle), np.zeros_like(angle), np.cos(angle)], axis=-1)
+    n = np.broadcast_to([0.0, 0.0, 1.0], v.shape)
+    l = np.broadcast_to(-simple_lit.LIGHT_TO / np.linalg.norm(simple_lit.LIGHT_TO), v.shape)
+    albedo = np.broadcast_to([0.8, 0.3, 0.2], v.shape)
+    specular = np.broadcast_to([0.5, 0.5, 0.5], v.shape)
+    want = simple_lit.urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, simple_lit.LIGHT_RADIANCE)
+    diffuse_only = simple_lit.urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, simple_lit.LIGHT_RADIANCE,
+                                                         highlights=False)
+    share = 1.0 - diffuse_only / np.maximum(want, 1e-30)
+    bound = 64 * EPS * 2 + (np.exp2(10.0 * s + 1.0) * 8 * 2 * EPS)[..., None] * share  # (F32_EPS = 2 * 2^-24)
+    rel = np.abs(lit[..., :3].astype(np.float64) - want) / np.maximum(np.abs(want), 1e-6)
+    assert not (rel > bound).any(), f"{int((rel > bound).sum())} values over the bound; worst {rel.max():.3g}"
+    assert (share > 0.5).any()
+    _, later = _versioned_grid(tmp_path / "later", 202220) if (tmp_path / "later").mkdir() is None else None
+    with pytest.raises(PbrlabError, match="UniversalFragmentBlinnPhong"):
+        render_scene(parse_scene(simple_lit._grid_scene(later), "t", tmp_path), language=language)

@@ -876,7 +876,7 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     for rewrite in pipeline.rewrites:
         program = rewrite(program)
     program = respell_package_includes(forward_slashed_includes(program), path, first, warnings)
-    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords, warnings)
+    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords, warnings, srp=pipeline.srp)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf
