@@ -352,27 +352,13 @@ def test_a_urp_program_sees_the_unity_version_of_its_urp(tmp_path, language):
     version the stand-ins follow, so it takes the branch written for URP 12's
     UniversalFragmentBlinnPhong(InputData, SurfaceData); the #else branch's five-argument call is
     no URP version's (URP 7-10 take six), never compiled by the Unity it was written for. The
-    pixel is SimpleLit's float64 Blinn-Phong (test_urp_shaders' transcription and bound, on the
-    same grid). Control: a URP 14 threshold (202220) takes the #else branch, which is refused."""
+    pixel is SimpleLit's float64 Blinn-Phong (test_urp_shaders.assert_blinn_phong_grid: its
+    transcription and bound, on the same grid). Control: a URP 14 threshold (202220) takes the
+    #else branch, which is refused."""
     simple_lit, shader = _versioned_grid(tmp_path, 202120)
-    uv = render_scene(parse_scene(simple_lit._grid_scene(simple_lit.SHADERS / "urp_uv.shader"), "t", simple_lit.SHADERS),
-                      language=language).linear
     lit = render_scene(parse_scene(simple_lit._grid_scene(shader), "t", tmp_path), language=language).linear
-    u, s = uv[..., 0].astype(np.float64), uv[..., 1].astype(np.float64)
-    angle = (u * 2.0 - 1.0) * 1.4
-    v = np.stack([np.sin(angle), np.zeros_like(angle), np.cos(angle)], axis=-1)
-    n = np.broadcast_to([0.0, 0.0, 1.0], v.shape)
-    l = np.broadcast_to(-simple_lit.LIGHT_TO / np.linalg.norm(simple_lit.LIGHT_TO), v.shape)
-    albedo = np.broadcast_to([0.8, 0.3, 0.2], v.shape)
-    specular = np.broadcast_to([0.5, 0.5, 0.5], v.shape)
-    want = simple_lit.urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, simple_lit.LIGHT_RADIANCE)
-    diffuse_only = simple_lit.urp_brdf.blinn_phong_light(albedo, specular, s, n, l, v, simple_lit.LIGHT_RADIANCE,
-                                                         highlights=False)
-    share = 1.0 - diffuse_only / np.maximum(want, 1e-30)
-    bound = 64 * EPS * 2 + (np.exp2(10.0 * s + 1.0) * 8 * 2 * EPS)[..., None] * share  # (F32_EPS = 2 * 2^-24)
-    rel = np.abs(lit[..., :3].astype(np.float64) - want) / np.maximum(np.abs(want), 1e-6)
-    assert not (rel > bound).any(), f"{int((rel > bound).sum())} values over the bound; worst {rel.max():.3g}"
-    assert (share > 0.5).any()
-    _, later = _versioned_grid(tmp_path / "later", 202220) if (tmp_path / "later").mkdir() is None else None
+    simple_lit.assert_blinn_phong_grid(lit, language)
+    (tmp_path / "later").mkdir()
+    _, later = _versioned_grid(tmp_path / "later", 202220)
     with pytest.raises(PbrlabError, match="UniversalFragmentBlinnPhong"):
         render_scene(parse_scene(simple_lit._grid_scene(later), "t", tmp_path), language=language)
