@@ -15,7 +15,9 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
-//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_FogColor
+//           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_SpecCube0_ProbePosition,
+//           unity_SpecCube0_BoxMin, unity_SpecCube0_BoxMax (constants: the sky's probe, not box-projected),
+//           unity_FogColor
 //           (RenderSettings.fogColor: its default, (0.5, 0.5, 0.5, 1); pbrlab draws no fog);
 //           vec2 UnityStereoScreenSpaceUVAdjust(uv, scaleAndOffset), UnityStereoTransformScreenSpaceTex(uv)
 //           (the identity: one eye);
@@ -111,6 +113,14 @@ uniform vec4 _ZBufferParams;
 uniform vec4 unity_OrthoParams;
 uniform vec4 _SpecColor;
 uniform vec4 unity_SpecCube0_HDR;
+// The reflection probe's box (UnityShaderVariables.cginc / URP's UnityInput.hlsl): the scene's
+// one reflection source is its environment, Unity's default reflection (the sky's probe), which
+// is not box-projected: ProbePosition.w = 0 (box projection off: BoxProjectedCubemapDirection
+// returns the direction as given), its box unbounded (the environment at infinity, here +-1e30,
+// float32-safe) and BoxMin.w, the weight of probe 0 against probe 1, 1 (no blending).
+const vec4 unity_SpecCube0_ProbePosition = vec4(0.0, 0.0, 0.0, 0.0);
+const vec4 unity_SpecCube0_BoxMin = vec4(-1e30, -1e30, -1e30, 1.0);
+const vec4 unity_SpecCube0_BoxMax = vec4(1e30, 1e30, 1e30, 0.0);
 uniform vec4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor

@@ -137,9 +137,15 @@ def test_universal_fragment_blinn_phong_matches_its_float64_transcription(langua
     shader read. Bound per value, relative: 64 float32 ulp for the chain, plus the exponent's
     amplification of NdotH's error (NdotH^e moves by e * dNdotH / NdotH, dNdotH within 8 ulp:
     a normalize and a dot) on the highlight's share of the value."""
-    uv = render_scene(parse_scene(_grid_scene(SHADERS / "urp_uv.shader"), "t", SHADERS), language=language).linear
     lit = render_scene(parse_scene(_grid_scene(SHADERS / "urp_blinn_phong_grid.shader"), "t", SHADERS),
                        language=language).linear
+    assert_blinn_phong_grid(lit, language)
+
+
+def assert_blinn_phong_grid(lit, language):
+    """``lit`` (urp_blinn_phong_grid.shader's picture, or a variant's) is SimpleLit's float64
+    Blinn-Phong at each pixel's inputs (the bound: the test above's)."""
+    uv = render_scene(parse_scene(_grid_scene(SHADERS / "urp_uv.shader"), "t", SHADERS), language=language).linear
     u, s = uv[..., 0].astype(np.float64), uv[..., 1].astype(np.float64)
     angle = (u * 2.0 - 1.0) * 1.4
     v = np.stack([np.sin(angle), np.zeros_like(angle), np.cos(angle)], axis=-1)

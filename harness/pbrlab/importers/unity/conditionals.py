@@ -16,12 +16,22 @@ import re
 
 _DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif|define|undef)\b([^\n]*)$", re.M)
 UNITY_PREDEFINED = {"UNITY_VERSION": 201940, "SHADER_TARGET": 25}
+# The UNITY_VERSION a Universal Render Pipeline program is compiled with (Unity defines it for
+# every program, the version's digits: 2021.3 -> 202130, as 2019.4 -> 201940; Unity's manual,
+# "Built-in shader macros"): the Unity of URP 12.1,
+# the version pbrlab's URP stand-ins follow (Core.hlsl's SHADER_LIBRARY_VERSION), so a program's
+# ``#if UNITY_VERSION >= 202120`` takes the branch written for URP 12's functions, as in that
+# Unity. (The built-in pipeline's programs are read with UNITY_PREDEFINED's 2019.4.)
+URP_UNITY_VERSION = 202130
 
 
-def defines_of(text: str, keywords=()) -> dict:
-    """Unity's predefined macros for ``text`` (its #pragma target) and ``keywords``; the
-    text's own #defines take effect where ``active_text`` meets them, in order."""
+def defines_of(text: str, keywords=(), srp: bool = False) -> dict:
+    """Unity's predefined macros for ``text`` (its #pragma target) and ``keywords``, with
+    URP_UNITY_VERSION for a Scriptable Render Pipeline program (``srp``); the text's own
+    #defines take effect where ``active_text`` meets them, in order."""
     out = dict(UNITY_PREDEFINED)
+    if srp:
+        out["UNITY_VERSION"] = URP_UNITY_VERSION
     m = re.search(r"^[ \t]*#[ \t]*pragma[ \t]+target[ \t]+(\d+)(?:\.(\d))?", text, re.M)
     if m:
         out["SHADER_TARGET"] = int(m.group(1)) * 10 + int(m.group(2) or 0)

@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
+from . import conditionals, dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
 from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
@@ -167,6 +167,8 @@ class ProgramPass:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
                    **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap),
                    **user_definitions.program_defines(self.unity_pass)}
+        if getattr(self.unity_pass, "srp", False):  # the Unity of the URP the stand-ins follow (conditionals)
+            defines["UNITY_VERSION"] = conditionals.URP_UNITY_VERSION
         out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))
                for keyed, additive in light_programs(self.unity_pass, defines, self.four_lights)]
         if deferred.is_light_pass(self.unity_pass):  # lights after the first: the coverage stays

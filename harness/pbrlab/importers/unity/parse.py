@@ -25,6 +25,7 @@ from .engine_inputs import check_engine_inputs
 from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
+from .include_separators import forward_slashed_includes
 from .parse_pass import _structs, parse_pass
 from .stencil_block import draws_nothing_alone, read_stencil
 from .written_globals import copied_written_globals
@@ -874,8 +875,8 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         program = pattern.sub(replacement, program)
     for rewrite in pipeline.rewrites:
         program = rewrite(program)
-    program = respell_package_includes(program, path, first, warnings)
-    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords, warnings)
+    program = respell_package_includes(forward_slashed_includes(program), path, first, warnings)
+    vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords, warnings, srp=pipeline.srp)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
     return vf

@@ -178,7 +178,7 @@ def _unresolved_include(program: str, folder: Path):
 
 
 def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), keywords=(),
-               notes: list | None = None) -> M.VertexFragmentPass:
+               notes: list | None = None, srp: bool = False) -> M.VertexFragmentPass:
     """``spellings``: the pipeline's (parse.Pipeline.spellings), already applied to ``program``
     and applied here to the files it includes (the functions and structs they define);
     ``keywords``: the pipeline's (parse.Pipeline.keywords), on where the program declares them,
@@ -190,7 +190,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     on = [k for k in keywords if k in declared_keywords(program)
           or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))  # a lightmapped object's (lightmaps.py)
           or (k == "DYNAMICLIGHTMAP_ON" and declares_dynamic_lightmap_on(program))]  # (dynamic_lightmaps.py)
-    defines = defines_of(everything, on)
+    defines = defines_of(everything, on, srp)  # (srp: a Scriptable Render Pipeline's program)
     everything = active_text(everything, defines)  # the drawn variant's branches
     # a global only Unity's engine sets: filled from the scene where the program declares it
     # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused

@@ -122,7 +122,7 @@ def _globals_uniform(code: str) -> str:
     """``uniform`` before global variable declarations (brace depth 0, not functions/structs, not
     a line of a multi-line #define); ``static`` dropped before one (_STATIC_GLOBAL)."""
     lines, depth, out = code.split("\n"), 0, []
-    decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
+    decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
     continued = False  # the line continues a preprocessor directive (a macro's body, after a backslash)
     for line in lines:
         directive = continued or line.lstrip().startswith("#")
@@ -226,6 +226,18 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURE2D_X_FLOAT": lambda a: f"sampler2D {a[0]}",
     "SAMPLE_TEXTURE2D_X": lambda a: f"tex2D({a[0]}, {a[2]})",
     "SAMPLE_TEXTURE2D_X_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    # 2D texture arrays (the Unity prelude's UNITY_ .._TEX2DARRAY forms: the layer index as the
+    # coordinate's z; texture_arrays binds the array) and shadow-map textures passed on with their
+    # comparison sampler (a GL texture's own sampler: an unused int, as SAMPLER's)
+    "TEXTURE2D_ARRAY": lambda a: f"sampler2DArray {a[0]}",
+    "TEXTURE2D_ARRAY_PARAM": lambda a: f"sampler2DArray {a[0]}, int {a[1]}",
+    "TEXTURE2D_ARRAY_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURE2D_ARRAY": lambda a: f"UNITY_SAMPLE_TEX2DARRAY({a[0]}, float3({a[2]}, {a[3]}))",
+    "SAMPLE_TEXTURE2D_ARRAY_LOD": lambda a: f"UNITY_SAMPLE_TEX2DARRAY_LOD({a[0]}, float3({a[2]}, {a[3]}), {a[4]})",
+    "TEXTURE2D_SHADOW": lambda a: f"sampler2D {a[0]}",
+    "SAMPLER_CMP": lambda a: f"static const int {a[0]} = 0",
+    "TEXTURE2D_SHADOW_PARAM": lambda a: f"sampler2D {a[0]}, int {a[1]}",
+    "TEXTURE2D_SHADOW_ARGS": lambda a: f"{a[0]}, {a[1]}",
     # Core RP's texel loads (Texture2D.Load(int3(coord, mip))): the port's Load (texture_methods)
     "LOAD_TEXTURE2D": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, 0))",
     "LOAD_TEXTURE2D_LOD": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, {a[2]}))",
@@ -271,9 +283,10 @@ def _expand_srp_texture_macros(code: str) -> str:
             continue
         args, end = found
         need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1, "TEXTURE3D": 1,
-                "SAMPLER": 1}.get(m.group(1), 2)
+                "TEXTURE2D_ARRAY": 1, "TEXTURE2D_SHADOW": 1, "SAMPLER": 1, "SAMPLER_CMP": 1}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3
+            need += m.group(1).startswith("SAMPLE_TEXTURE2D_ARRAY")  # the layer index
         if m.group(1).startswith("LOAD_"):
             need = 3 if m.group(1).endswith("_LOD") else 2
         if len(args) != need:

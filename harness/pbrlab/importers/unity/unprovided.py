@@ -38,8 +38,9 @@ UNPROVIDED = {
                     "shadow maps and shadow-caster passes"),
     **dict.fromkeys(("UNITY_DECLARE_TEXCUBEARRAY", "UNITY_SAMPLE_TEXCUBEARRAY"),
                     "cube-map arrays as Unity declares them"),
-    **dict.fromkeys(("unity_SpecCube1", "unity_SpecCube0_BoxMax", "unity_SpecCube0_BoxMin",
-                     "unity_SpecCube0_ProbePosition", "BoxProjectedCubemapDirection"),
+    # (probe 0's box, unity_SpecCube0_ProbePosition/_BoxMin/_BoxMax, is the sky's, not box-projected:
+    # unity_compat/shader_variables)
+    **dict.fromkeys(("unity_SpecCube1", "BoxProjectedCubemapDirection"),
                     "box-projected and blended reflection probes"),
     **dict.fromkeys(("unity_ProbeVolumeSH", "unity_ProbeVolumeWorldToObject", "SHEvalLinearL0L1_SampleProbeVolume"),
                     "light probe proxy volumes"),

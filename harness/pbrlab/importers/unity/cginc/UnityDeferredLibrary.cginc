@@ -51,9 +51,7 @@ UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
 // infinity), here +-1e30 (float32-safe), so Internal-DeferredReflections' distance to the box is
 // 0 and its falloff saturate(1 - 0 / blend distance) is 1 for any positive blend distance
 // (unity_SpecCube1_ProbePosition.w, "set to the blend distance for this probe": 1 here).
-static const float4 unity_SpecCube0_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
-static const float4 unity_SpecCube0_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
-static const float4 unity_SpecCube0_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);  // w 0: no box projection
+// (unity_SpecCube0_BoxMin, _BoxMax, _ProbePosition: the Unity prelude's, unity_compat/shader_variables)
 static const float4 unity_SpecCube1_ProbePosition = float4(0.0, 0.0, 0.0, 1.0);
 
 // UnityGIInput as the deferred reflection pass fills it (UnityGlobalIllumination.cginc's, with

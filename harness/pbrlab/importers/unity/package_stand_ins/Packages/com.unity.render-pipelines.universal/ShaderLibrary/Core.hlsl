@@ -101,6 +101,19 @@
 #define TEXTURE2D_X_FLOAT(t) Texture2D t
 #define SAMPLE_TEXTURE2D_X(t, s, uv) t.Sample(s, uv)
 #define SAMPLE_TEXTURE2D_X_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod)
+// 2D texture arrays (Core RP's API: the layer index after the uv) and shadow-map textures with
+// their comparison samplers (SAMPLE_TEXTURE2D_SHADOW: the comparison of coord.z with the texel,
+// Texture2D.SampleCmpLevelZero).
+#define TEXTURE2D_ARRAY(t) Texture2DArray t
+#define TEXTURE2D_ARRAY_PARAM(t, s) Texture2DArray t, SamplerState s
+#define TEXTURE2D_ARRAY_ARGS(t, s) t, s
+#define SAMPLE_TEXTURE2D_ARRAY(t, s, uv, index) t.Sample(s, float3(uv, index))
+#define SAMPLE_TEXTURE2D_ARRAY_LOD(t, s, uv, index, lod) t.SampleLevel(s, float3(uv, index), lod)
+#define TEXTURE2D_SHADOW(t) Texture2D t
+#define SAMPLER_CMP(s) SamplerComparisonState s
+#define TEXTURE2D_SHADOW_PARAM(t, s) Texture2D t, SamplerComparisonState s
+#define TEXTURE2D_SHADOW_ARGS(t, s) t, s
+#define SAMPLE_TEXTURE2D_SHADOW(t, s, coord3) t.SampleCmpLevelZero(s, (coord3).xy, (coord3).z)
 // Core RP's texel loads: integer texel coordinates, mip 0 unless given (Texture2D.Load)
 #define LOAD_TEXTURE2D(t, coord) t.Load(int3(coord, 0))
 #define LOAD_TEXTURE2D_LOD(t, coord, lod) t.Load(int3(coord, lod))
@@ -202,8 +215,24 @@ float3 SafeNormalize(float3 v) { return v * rsqrt(max(FLT_MIN, dot(v, v))); }
 #define UNITY_MATRIX_I_M unity_WorldToObject
 #define UNITY_PREV_MATRIX_M unity_ObjectToWorld
 #define UNITY_PREV_MATRIX_I_M unity_WorldToObject
-#define UNITY_MATRIX_I_P unity_CameraInvProjection
-#define UNITY_MATRIX_I_VP mul(UNITY_MATRIX_I_V, UNITY_MATRIX_I_P)
+// URP's inverse camera matrices (UnityInput.hlsl: unity_MatrixInvV, unity_MatrixInvP and
+// unity_MatrixInvVP, and their UNITY_MATRIX_I_ names), all from the one camera the harness
+// sets: the inverse projection is unity_CameraInvProjection (the GL projection's inverse: URP's
+// GPU projection on GL is the camera's own), and the inverse view-projection is
+// (P V)^-1 = V^-1 P^-1.
+#define unity_MatrixInvP unity_CameraInvProjection
+#define unity_MatrixInvVP mul(unity_MatrixInvV, unity_CameraInvProjection)
+#define UNITY_MATRIX_I_P unity_MatrixInvP
+#define UNITY_MATRIX_I_VP unity_MatrixInvVP
+// UnityPerDraw's LOD cross-fade (UnityInput.hlsl's unity_LODFade: x the fade, y x quantized to
+// 16 levels): pbrlab's scenes have no LOD Group, every object is its only level, fully shown,
+// the value Unity gives a renderer that is not fading: (1, 1, 0, 0) (LODCrossFade.hlsl reads it).
+static const float4 unity_LODFade = float4(1.0, 1.0, 0.0, 0.0);
+// Core RP's camera-relative rendering (SpaceTransforms.hlsl): a world position relative to the
+// camera and back. URP renders with camera-relative rendering off (Core's ShaderConfig
+// SHADEROPTIONS_CAMERA_RELATIVE_RENDERING is 0 for URP; HDRP's is 1), so both are the identity.
+float3 GetAbsolutePositionWS(float3 positionRWS) { return positionRWS; }
+float3 GetCameraRelativePositionWS(float3 positionWS) { return positionWS; }
 // GL's clip-space near plane: z = -w (Unity's UNITY_NEAR_CLIP_VALUE on OpenGL, not reversed-Z).
 #define UNITY_NEAR_CLIP_VALUE (-1.0)
 // the far plane's raw depth (Core RP's API files: 1 where depth is not reversed, as on GL)

@@ -15,8 +15,7 @@
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
 
-// x: the fade (1: fully shown, no LOD Group here), y: x quantized to 16 levels, as Unity's.
-static const float4 unity_LODFade = float4(1.0, 1.0, 0.0, 0.0);
+// unity_LODFade: Core.hlsl's (1, 1, 0, 0), no LOD Group here.
 
 // |x| with the sign of s (s = 0 counts as positive)
 float CopySign(float x, float s) { return s >= 0.0 ? abs(x) : -abs(x); }

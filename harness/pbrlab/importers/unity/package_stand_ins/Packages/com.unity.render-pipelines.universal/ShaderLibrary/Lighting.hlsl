@@ -222,6 +222,22 @@ struct PbrlabURPReflectionProbe {
 static PbrlabURPReflectionProbe unity_SpecCube0;
 SamplerState samplerunity_SpecCube0;
 #endif
+// A reflection direction corrected for a box-projected probe (URP's GlobalIllumination.hlsl,
+// after Lagarde and Zanuttini, "Local Image-based Lighting With Parallax-corrected Cubemap",
+// SIGGRAPH 2012): where the probe's position has w > 0, the ray from positionWS along the
+// direction meets the box [boxMin, boxMax] at the nearest of its three exit planes' distances,
+// and the direction from the probe's centre to that point is returned; where w is 0 (box
+// projection off, as for the sky's probe here: unity_compat/shader_variables) the direction as given.
+float3 BoxProjectedCubemapDirection(float3 reflectionWS, float3 positionWS, float4 cubemapPositionWS,
+                                    float4 boxMin, float4 boxMax) {
+    if (cubemapPositionWS.w > 0.0) {
+        // the max plane along a positive component, the min plane along a negative one
+        float3 exits = (lerp(boxMin.xyz, boxMax.xyz, step(0.0, reflectionWS)) - positionWS) / reflectionWS;
+        float distance = min(min(exits.x, exits.y), exits.z);
+        return positionWS - cubemapPositionWS.xyz + reflectionWS * distance;
+    }
+    return reflectionWS;
+}
 // Unity's HDR decode of a probe texel: instructions.x * alpha^instructions.y * rgb, alpha
 // the texel's when instructions.w is 1 (else 1).
 float3 DecodeHDREnvironment(float4 encodedIrradiance, float4 decodeInstructions) {
