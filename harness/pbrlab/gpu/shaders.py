@@ -53,8 +53,9 @@ _GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*ifndef\s+(\w+)\s*\n\s*#\s
 def _is_guarded(text: str) -> bool:
     """True when the whole file sits inside its own #ifndef/#define/#endif guard."""
     return _GUARD.match(text) is not None
-# Mesa: "0:12(5): error: ...";  glslang: "ERROR: 0:12: ..."
-_MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(error|warning)?:?\s*(.*)$")
+# Mesa: "0:12(5): error: ...", its preprocessor's "0:2(9): preprocessor warning: ..." (a
+# warning, as ``#define A__B`` draws: the program still compiles);  glslang: "ERROR: 0:12: ..."
+_MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(?:preprocessor\s+)?(error|warning)?:?\s*(.*)$")
 
 
 @dataclass(frozen=True)

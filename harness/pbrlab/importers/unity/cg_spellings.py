@@ -26,6 +26,10 @@ program (offsets and lines kept):
 - Cg's four-argument ``tex2D(s, uv, dx, dy)``: ``tex2Dgrad``, the same lookup (``_TEX2D``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
+- UnityCG.cginc's legacy depth macros on a code line: ``UNITY_OUTPUT_DEPTH(i)`` as ``return 0``
+  and ``UNITY_TRANSFER_DEPTH(o)`` as nothing, Unity's definitions (UnityCGPacking.cginc's
+  stand-in defines them so too), written out before the GLSL port's type pass so that it
+  converts the 0 to the fragment's return type (``return vec4(0)``), as HLSL converts a scalar;
 - a function the program defines under the name of one of UnityCG.cginc's (or another include's
   pbrlab always compiles: ``ComputeScreenPos`` written out in a program that includes nothing):
   Unity compiles only the includes a program names, so there it is the program's own function;
@@ -51,6 +55,8 @@ _SWITCH = re.compile(r"\bswitch\s*\(")
 _UPGRADED_NAMES = {"_Object2World": "unity_ObjectToWorld", "_World2Object": "unity_WorldToObject"}
 _UPGRADED = re.compile(r"\b(" + "|".join(_UPGRADED_NAMES) + r")\b")
 _TEMPLATE_TYPE = re.compile(r"\b(?:vector\s*<\s*(\w+)\s*,\s*([1-4])\s*>|matrix\s*<\s*(\w+)\s*,\s*([1-4])\s*,\s*([1-4])\s*>)")
+# (a code line's use, not the stand-in's #define of the name)
+_LEGACY_DEPTH = re.compile(r"^(?![ \t]*#)([^\n]*?)\b(UNITY_OUTPUT_DEPTH|UNITY_TRANSFER_DEPTH)\s*\((?:[^()\n]|\([^()\n]*\))*\)", re.M)
 _FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
 
 
@@ -174,12 +180,14 @@ def _tex2d_with_derivatives(text: str) -> str:
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
+    UnityCG's legacy depth macros written out,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
     initialiser list of an array of vectors grouped per element."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
+    text = _LEGACY_DEPTH.sub(lambda m: m.group(1) + ("return 0" if m.group(2) == "UNITY_OUTPUT_DEPTH" else ""), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
