@@ -26,6 +26,8 @@ program (offsets and lines kept):
 - Cg's four-argument ``tex2D(s, uv, dx, dy)``: ``tex2Dgrad``, the same lookup (``_TEX2D``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
+- a variable a for statement declares, used after the loop: FXC's scope, the enclosing block
+  (loop_scope);
 - UnityCG.cginc's legacy depth macros on a code line: ``UNITY_OUTPUT_DEPTH(i)`` as ``return 0``
   and ``UNITY_TRANSFER_DEPTH(o)`` as nothing, Unity's definitions (UnityCGPacking.cginc's
   stand-in defines them so too), written out before the GLSL port's type pass so that it
@@ -47,6 +49,7 @@ import re
 
 from . import combined_samplers
 from .flat_array_initialisers import grouped_flat_initialisers
+from .loop_scope import loop_variables_in_enclosing_scope
 from .self_initialisers import declared_before_initialised
 from .source_text import call_arguments, matching_paren
 
@@ -184,7 +187,8 @@ def respelled(text: str) -> str:
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
-    initialiser list of an array of vectors grouped per element."""
+    initialiser list of an array of vectors grouped per element, a for-loop variable used after its
+    loop declared before it (loop_scope)."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
     text = _LEGACY_DEPTH.sub(lambda m: m.group(1) + ("return 0" if m.group(2) == "UNITY_OUTPUT_DEPTH" else ""), text)
@@ -194,6 +198,7 @@ def respelled(text: str) -> str:
     text = _matrix_swizzles(_tex2d_with_derivatives(text))
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
+    text = loop_variables_in_enclosing_scope(text)  # for (int k ...) {} ... k: FXC's scope
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0
