@@ -18,14 +18,12 @@ import textwrap
 import numpy as np
 import pytest
 
-from pbrlab.checking import unity_corpus as corpus
+from corpus_sphere import covered_pixels, render_on_corpus_sphere
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.gpu.shaders import Source
-from pbrlab.importers.loader import parse_scene
 from pbrlab.importers.unity import parse
 from pbrlab.importers.unity.loop_scope import loop_variables_in_enclosing_scope
 from pbrlab.importers.unity.source_text import UnityShaderError
-from pbrlab.render.renderer import render_scene
 
 LANGUAGES = ("hlsl", "glsl")  # HLSL as written, then the GLSL port
 
@@ -63,19 +61,9 @@ def _shader(tmp_path, name, body, *, includes="", fragment_params="", light_mode
     return path
 
 
-def _render(tmp_path, shader, language):
-    return render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language).linear
-
-
-def _covered(image):
-    covered = image[..., 3] == 1.0
-    assert covered.mean() > 0.3
-    return covered
-
-
 def _colour(image):
     """The rgb of every pixel the sphere covers, float64."""
-    return image[_covered(image)][:, :3].astype(np.float64)
+    return image[covered_pixels(image)][:, :3].astype(np.float64)
 
 
 def _assert_colour(image, expected, bound=FLOAT32_FEW_OPS):
@@ -91,10 +79,10 @@ def test_speccube_lod_steps_is_unitys_six(tmp_path, language):
     through UnityStandardBRDF.cginc as Unity's include chain does. Control: without that include
     the name is undeclared (a refusal naming it)."""
     body = "            return float4(UNITY_SPECCUBE_LOD_STEPS / 8.0, 0, 0, 1);"
-    image = _render(tmp_path, _shader(tmp_path, "steps", body, includes='#include "UnityStandardBRDF.cginc"'), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "steps", body, includes='#include "UnityStandardBRDF.cginc"'), language)
     _assert_colour(image, [6.0 / 8.0, 0.0, 0.0], 0.0)
     with pytest.raises(PbrlabError, match="UNITY_SPECCUBE_LOD_STEPS"):
-        _render(tmp_path, _shader(tmp_path, "no_steps", body), language)
+        render_on_corpus_sphere(tmp_path, _shader(tmp_path, "no_steps", body), language)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -105,7 +93,7 @@ def test_dot_clamped_through_unity_pbs_lighting(tmp_path, language):
     a, b = np.array([0.6, 0.8, 0.0]), np.array([0.8, 0.6, 0.0])
     body = ("            return float4(DotClamped(float3(0.6, 0.8, 0), float3(0.8, 0.6, 0)),\n"
             "                          DotClamped(float3(0.6, 0.8, 0), float3(-0.8, -0.6, 0)), 0, 1);")
-    image = _render(tmp_path, _shader(tmp_path, "dot", body, includes='#include "UnityPBSLighting.cginc"'), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "dot", body, includes='#include "UnityPBSLighting.cginc"'), language)
     _assert_colour(image, [max(0.0, a @ b), max(0.0, a @ -b), 0.0])
     assert a @ -b < -0.9  # the control's unclamped value
 
@@ -118,9 +106,9 @@ def test_vpos_type_gives_the_pixel_position(tmp_path, language):
     centre's window position, column + 0.5. Control: the red channel differs from column to
     column (a constant would not)."""
     body = "            return float4(screenPos.x / 64.0, 0, 0, 1);"
-    image = _render(tmp_path, _shader(tmp_path, "vpos", body, fragment_params=", UNITY_VPOS_TYPE screenPos : VPOS"),
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "vpos", body, fragment_params=", UNITY_VPOS_TYPE screenPos : VPOS"),
                     language)
-    covered = _covered(image)
+    covered = covered_pixels(image)
     columns = np.broadcast_to(np.arange(image.shape[1], dtype=np.float64), covered.shape)
     expected = (columns[covered] + 0.5) / 64.0
     assert np.max(np.abs(image[covered][:, 0] - expected)) <= FLOAT32_FEW_OPS
@@ -136,9 +124,9 @@ def test_fog_factor_is_unitys_no_fog_value(tmp_path, language):
     for macro in ("UNITY_CALC_FOG_FACTOR_RAW", "UNITY_CALC_FOG_FACTOR"):
         body = (f"            {macro}(10.0);\n"
                 "            return lerp(unity_FogColor, float4(1, 0.25, 0, 1), unityFogFactor);")
-        _assert_colour(_render(tmp_path, _shader(tmp_path, macro.lower(), body), language), [0.5, 0.5, 0.5], 0.0)
+        _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, macro.lower(), body), language), [0.5, 0.5, 0.5], 0.0)
     body = "            float unityFogFactor = 1.0;\n            return lerp(unity_FogColor, float4(1, 0.25, 0, 1), unityFogFactor);"
-    _assert_colour(_render(tmp_path, _shader(tmp_path, "fog_one", body), language), [1.0, 0.25, 0.0], 0.0)
+    _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, "fog_one", body), language), [1.0, 0.25, 0.0], 0.0)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -166,11 +154,11 @@ def test_legacy_depth_macros_are_unitys(tmp_path, language):
             ENDCG
         }} }} }}
         """)
-    control = _render(tmp_path, _shader(tmp_path, "no_depth", "", text=text.replace("UNITY_OUTPUT_DEPTH(i.depth);", "")),
+    control = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "no_depth", "", text=text.replace("UNITY_OUTPUT_DEPTH(i.depth);", "")),
                       language)
-    covered = _covered(control)
+    covered = covered_pixels(control)
     assert np.array_equal(control[covered][:, :3], np.broadcast_to([0.25, 0.5, 0.75], (covered.sum(), 3)))
-    image = _render(tmp_path, _shader(tmp_path, "depth", "", text=text), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "depth", "", text=text), language)
     assert np.array_equal(image[covered][:, :3], np.zeros((covered.sum(), 3)))
 
 
@@ -183,7 +171,7 @@ def test_encode_view_normal_stereo_is_a_float2(tmp_path, language):
         v = np.asarray(n, np.float64) / np.linalg.norm(n)
         expected = v[:2] / (v[2] + 1.0) / 1.7777 * 0.5 + 0.5
         body = f"            return float4(EncodeViewNormalStereo(normalize(float3{n})), 0, 1);"
-        _assert_colour(_render(tmp_path, _shader(tmp_path, f"enc_{name}", body), language), [*expected, 0.0])
+        _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, f"enc_{name}", body), language), [*expected, 0.0])
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -202,7 +190,7 @@ def test_camera_world_clip_planes_are_the_frustums(tmp_path, language):
             "            float4 r = unity_CameraWorldClipPlanes[1];\n"
             "            float4 n = unity_CameraWorldClipPlanes[4];\n"
             "            return float4(l.x * 0.5 + 0.5 + n.z * 0.25, l.w / 4.0, r.x * 0.5 + 0.5, 1);")
-    image = _render(tmp_path, _shader(tmp_path, "planes", body), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "planes", body), language)
     _assert_colour(image, [left[0] * 0.5 + 0.5 - 0.25, -(left @ eye) / 4.0, -left[0] * 0.5 + 0.5])
 
 
@@ -212,10 +200,10 @@ def test_deferred_library_declares_the_falloff_texture(tmp_path, language):
     ``.UNITY_ATTEN_CHANNEL``); pbrlab's is white, the falloff being in the light's colour (as
     AutoLight.cginc's stand-in). Control: without that include it is undeclared."""
     body = "            return float4(tex2D(_LightTextureB0, float2(0.5, 0.5)).UNITY_ATTEN_CHANNEL * 0.5, 0, 0, 1);"
-    image = _render(tmp_path, _shader(tmp_path, "b0", body, includes='#include "UnityDeferredLibrary.cginc"'), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "b0", body, includes='#include "UnityDeferredLibrary.cginc"'), language)
     _assert_colour(image, [0.5, 0.0, 0.0], 0.0)
     with pytest.raises(PbrlabError, match="_LightTextureB0"):
-        _render(tmp_path, _shader(tmp_path, "no_b0", body), language)
+        render_on_corpus_sphere(tmp_path, _shader(tmp_path, "no_b0", body), language)
 
 
 # -- semantics, includes, scopes ----------------------------------------------------------------
@@ -243,10 +231,10 @@ def test_position0_in_a_v2f_is_the_clip_position(tmp_path, language):
     position FXC takes from a vertex output; ``POSITION1`` beside it an interpolator whose value
     reaches the fragment. Control: with no index-0 position (POSITION2 instead) the pass is still
     refused for writing no SV_POSITION."""
-    image = _render(tmp_path, _shader(tmp_path, "pos0", "", text=POSITION0.format(position="POSITION0")), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "pos0", "", text=POSITION0.format(position="POSITION0")), language)
     _assert_colour(image, [0.125, 0.375, 0.625], 0.0)
     with pytest.raises(PbrlabError, match="writes no SV_POSITION"):
-        _render(tmp_path, _shader(tmp_path, "pos2", "", text=POSITION0.format(position="POSITION2")), language)
+        render_on_corpus_sphere(tmp_path, _shader(tmp_path, "pos2", "", text=POSITION0.format(position="POSITION2")), language)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -259,11 +247,11 @@ def test_a_guarded_file_that_includes_itself(tmp_path, language, guard):
     inc.write_text(f"{guard}\n#define MY_INC\n#include \"mine.cginc\"\n"
                    "float4 MyColour() { return float4(0.625, 0.125, 0.25, 1); }\n#endif\n")
     body = "            return MyColour();"
-    image = _render(tmp_path, _shader(tmp_path, "guarded", body, includes='#include "mine.cginc"'), language)
+    image = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "guarded", body, includes='#include "mine.cginc"'), language)
     _assert_colour(image, [0.625, 0.125, 0.25], 0.0)
     inc.write_text("#include \"mine.cginc\"\nfloat4 MyColour() { return float4(0.625, 0.125, 0.25, 1); }\n")
     with pytest.raises(PbrlabError, match=r"mine\.cginc:1: include cycle"):
-        _render(tmp_path, _shader(tmp_path, "unguarded", body, includes='#include "mine.cginc"'), language)
+        render_on_corpus_sphere(tmp_path, _shader(tmp_path, "unguarded", body, includes='#include "mine.cginc"'), language)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -278,10 +266,10 @@ def test_a_guard_macro_with_a_double_underscore(tmp_path, language):
                    "float4 Shade() { return float4(0.375, 0.75, 0.125, 1); }\n#endif\n")
     body = "            return Shade();"
     twice = '#include "common.cginc"\n#include "common.cginc"'
-    _assert_colour(_render(tmp_path, _shader(tmp_path, "twice", body, includes=twice), language), [0.375, 0.75, 0.125], 0.0)
+    _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, "twice", body, includes=twice), language), [0.375, 0.75, 0.125], 0.0)
     inc.write_text("float4 _Tint;\nfloat4 Shade() { return float4(0.375, 0.75, 0.125, 1); }\n")
     with pytest.raises(PbrlabError, match=r"common\.cginc:[12]"):
-        _render(tmp_path, _shader(tmp_path, "twice_unguarded", body, includes=twice), language)
+        render_on_corpus_sphere(tmp_path, _shader(tmp_path, "twice_unguarded", body, includes=twice), language)
 
 
 def test_mesa_preprocessor_warnings_are_warnings():
@@ -312,7 +300,7 @@ def test_a_for_loop_variable_used_after_its_loop(tmp_path, language):
             "            for (int k = 0; k < 3; ++k) { s += 0.125; }\n"
             "            for (k = 0; k < 2; ++k) s += 0.25;\n"
             "            return float4(s, k * 0.125, 0, 1);")
-    _assert_colour(_render(tmp_path, _shader(tmp_path, "loop", body), language), [s, k * 0.125, 0.0], 0.0)
+    _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, "loop", body), language), [s, k * 0.125, 0.0], 0.0)
     own = "void f() {\n for (int k = 0; k < 3; ++k) { a(k); }\n for (int k = 0; k < 2; ++k) b(k);\n}\n"
     assert loop_variables_in_enclosing_scope(own) == own
 
@@ -351,14 +339,14 @@ def test_a_fragment_of_its_own_over_the_standard_add_pass(tmp_path, language):
     StandardExt dissolve) draws what fragAdd draws. Differential: the same shader with
     ``#pragma fragment fragAdd``, pixel for pixel. Control: the point light's add pass changes
     the image (the base pass alone is darker somewhere)."""
-    own = _render(tmp_path, _shader(tmp_path, "own", "", text=STANDARD_ADD.format(name="own", fragment="fragOwn")),
+    own = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "own", "", text=STANDARD_ADD.format(name="own", fragment="fragOwn")),
                   language)
-    stock = _render(tmp_path, _shader(tmp_path, "stock", "", text=STANDARD_ADD.format(name="stock", fragment="fragAdd")),
+    stock = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "stock", "", text=STANDARD_ADD.format(name="stock", fragment="fragAdd")),
                     language)
     assert np.array_equal(own, stock)
     base_only = STANDARD_ADD.format(name="base", fragment="fragAdd").replace('"ForwardAdd"', '"ShadowCaster"')
-    base = _render(tmp_path, _shader(tmp_path, "base", "", text=base_only), language)
-    covered = _covered(stock)
+    base = render_on_corpus_sphere(tmp_path, _shader(tmp_path, "base", "", text=base_only), language)
+    covered = covered_pixels(stock)
     assert np.max(stock[covered][:, :3] - base[covered][:, :3]) > 0.05
 
 
