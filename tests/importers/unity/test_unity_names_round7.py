@@ -375,3 +375,19 @@ def test_a_shader_of_skipped_passes_says_what_unity_shows(tmp_path, light_mode, 
     with pytest.raises(UnityShaderError) as info:
         parse.read_shader(_only_pass(tmp_path, "picking", "Picking"))
     assert "camera's" not in str(info.value)
+
+
+# -- OpenGL extension macros in a Cg program --------------------------------------------------------
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_gl_extension_macros_are_undefined_in_cg(tmp_path, language):
+    """Unity preprocesses a Cg program as HLSL, where no GL_ macro is defined (NVIDIA's FXAA 3.11
+    tests GL_ARB_gpu_shader5 to pick its gather path); Mesa and glslang predefine the extensions
+    they support. ``#ifdef GL_ARB_gpu_shader5`` / ``#if defined(GL_NV_gpu_shader5)`` take their
+    #else here as in Unity. Control: a code line's name that starts with GL_ is left as written."""
+    from pbrlab.importers.unity.cg_spellings import respelled
+    body = ("            #ifdef GL_ARB_gpu_shader5\n            return float4(1, 0, 0, 1);\n"
+            "            #elif defined(GL_NV_gpu_shader5)\n            return float4(0, 0, 1, 1);\n"
+            "            #else\n            return float4(0, 0.5, 0, 1);\n            #endif")
+    _assert_colour(render_on_corpus_sphere(tmp_path, _shader(tmp_path, "gl_macros", body), language), [0.0, 0.5, 0.0], 0.0)
+    assert respelled("float GL_count = 1;\n") == "float GL_count = 1;\n"
