@@ -9,16 +9,16 @@
 //   for their behaviour and written here anew. Differences: none; Unity's shader-model-2 path
 //   (saturate of the dot product) differs from this one (max(0, dot)) only above 1, which
 //   a dot of unit vectors does not reach.
-// Cg text in the plain subset harness/pbrlab/importers/unity/port.py ports to GLSL.
+// Text that is HLSL and GLSL alike (preprocessor lines only).
 #ifndef PBRLAB_UNITY_STANDARD_BRDF_CGINC
 #define PBRLAB_UNITY_STANDARD_BRDF_CGINC
 
 #include "UnityStandardConfig.cginc"
 
-// max(0, a . b): a cosine that light behind the surface does not make negative.
-half DotClamped(half3 a, half3 b)
-{
-    return max(0.0, dot(a, b));
-}
+// max(0, a . b): a cosine that light behind the surface does not make negative. A macro, not
+// Unity's inline function: its text is both HLSL and GLSL, so this file (which the
+// UnityPBSLighting.cginc stand-in includes) also reads as GLSL where a `pbrlab port-unity`
+// output includes it unported.
+#define DotClamped(a, b) max(0.0, dot(a, b))
 
 #endif
