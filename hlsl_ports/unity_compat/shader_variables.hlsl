@@ -15,6 +15,7 @@
 //           not reversed: 1 - far/near, far/near, x/far, y/far), unity_OrthoParams (half
 //           width, half height, 0, 1 orthographic / 0 perspective; 0, 0, 0, 0 perspective
 //           here), _SpecColor (Lighting.cginc's BlinnPhong specular colour),
+//           unity_CameraWorldClipPlanes (the frustum's six world-space planes),
 //           unity_SpecCube0_HDR (DecodeHDR instructions of the environment), unity_SpecCube0_ProbePosition,
 //           unity_SpecCube0_BoxMin, unity_SpecCube0_BoxMax (constants: the sky's probe, not box-projected),
 //           unity_FogColor
@@ -112,6 +113,10 @@ uniform float4x4 unity_WorldToCamera;
 uniform float4x4 unity_CameraToWorld;
 uniform float4 _ZBufferParams;
 uniform float4 unity_OrthoParams;
+// the camera's frustum planes in world space, left, right, bottom, top, near, far: xyz the unit
+// normal pointing into the frustum, w the offset (dot(float4(p, 1), plane) is p's distance
+// inside), as UnityShaderVariables.cginc's; pbrlab sets them (importers/unity/program.py)
+uniform float4 unity_CameraWorldClipPlanes[6];
 uniform float4 _SpecColor;
 uniform float4 unity_SpecCube0_HDR;
 // The reflection probe's box (UnityShaderVariables.cginc / URP's UnityInput.hlsl): the scene's

@@ -46,15 +46,19 @@ _INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"\s*(//.*)?$')
 _VERSION = re.compile(r"^\s*#\s*version\b")
 _IF = re.compile(r"^\s*#\s*if(n?def)?\b")
 _ENDIF = re.compile(r"^\s*#\s*endif\b")
-_GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*ifndef\s+(\w+)\s*\n\s*#\s*define\s+\1\b.*#\s*endif[^\n]*\s*\Z", re.S)
+# A guard opens with ``#ifndef X`` or its long form ``#if !defined X`` / ``#if !defined(X)``
+# (the C preprocessor's, which Unity's shaders also write: hyunxiGit's incDeferLight.cginc).
+_GUARD = re.compile(r"\A(?:\s*//[^\n]*\n|\s*\n)*\s*#\s*(?:ifndef\s+(\w+)|if\s*!\s*defined\s*(?:\(\s*(\w+)\s*\)|\s(\w+)))"
+                    r"\s*\n\s*#\s*define\s+(?:\1|\2|\3)\b.*#\s*endif[^\n]*\s*\Z", re.S)
 
 
 @functools.lru_cache(maxsize=_SCANS_KEPT)
 def _is_guarded(text: str) -> bool:
     """True when the whole file sits inside its own #ifndef/#define/#endif guard."""
     return _GUARD.match(text) is not None
-# Mesa: "0:12(5): error: ...";  glslang: "ERROR: 0:12: ..."
-_MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(error|warning)?:?\s*(.*)$")
+# Mesa: "0:12(5): error: ...", its preprocessor's "0:2(9): preprocessor warning: ..." (a
+# warning, as ``#define A__B`` draws: the program still compiles);  glslang: "ERROR: 0:12: ..."
+_MESA_MESSAGE = re.compile(r"^(\d+):(\d+)\((\d+)\):\s*(?:preprocessor\s+)?(error|warning)?:?\s*(.*)$")
 
 
 @dataclass(frozen=True)
@@ -230,6 +234,9 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 made = virtual[included]
                 marker = Path(f"<virtual {included}>")
                 if marker in stack:
+                    if _is_guarded(made.text):  # its guard is defined by now: this copy is empty
+                        lines_out.append(f"// ---- {included}: already open above (include guard)")
+                        continue
                     raise PbrlabError(f"{display}:{number}: include cycle through {made.display}")
                 walk(made.text, made.display, stack + (marker,), conditional or depth > 0, made.first_line)
                 emit_line_marker(file_index, number + 1)
@@ -247,6 +254,9 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                     f"{display}:{number}: cannot find include \"{included}\" "
                     f"(searched: {', '.join(str(d) for d in search)}); {INCLUDE_DIRS_HINT}")
             if target in stack:
+                if _is_guarded(texts[target]):  # its guard is defined by now: this copy is empty
+                    lines_out.append(f"// ---- {included}: already open above (include guard)")
+                    continue
                 chain = " -> ".join(_display_name(p) for p in stack[1:] + (target,))
                 raise PbrlabError(f"{display}:{number}: include cycle: {chain}")
             source.paths.append(target)

@@ -26,6 +26,17 @@ program (offsets and lines kept):
 - Cg's four-argument ``tex2D(s, uv, dx, dy)``: ``tex2Dgrad``, the same lookup (``_TEX2D``);
 - HLSL's template spellings of the vector and matrix types, ``vector<bool, 3>`` and
   ``matrix<float, 4, 4>``: the short names, ``bool3`` and ``float4x4`` (the same types);
+- an OpenGL extension's macro tested by a conditional (``#ifdef GL_ARB_gpu_shader5``, NVIDIA's
+  FXAA 3.11 in Unity's PostProcessing): Unity preprocesses a Cg program as HLSL, where no GL_
+  macro is defined, whatever the target; Mesa and glslang predefine the extensions they
+  support, which turned FXAA's gather path on (a function only its GLSL 1.30 and HLSL 5
+  branches define). Spelled ``PBRLAB_UNITY_NO_GL_...``, a name nothing defines (``_GL_TESTED``);
+- a variable a for statement declares, used after the loop: FXC's scope, the enclosing block
+  (loop_scope);
+- UnityCG.cginc's legacy depth macros on a code line: ``UNITY_OUTPUT_DEPTH(i)`` as ``return 0``
+  and ``UNITY_TRANSFER_DEPTH(o)`` as nothing, Unity's definitions (UnityCGPacking.cginc's
+  stand-in defines them so too), written out before the GLSL port's type pass so that it
+  converts the 0 to the fragment's return type (``return vec4(0)``), as HLSL converts a scalar;
 - a function the program defines under the name of one of UnityCG.cginc's (or another include's
   pbrlab always compiles: ``ComputeScreenPos`` written out in a program that includes nothing):
   Unity compiles only the includes a program names, so there it is the program's own function;
@@ -43,6 +54,7 @@ import re
 
 from . import combined_samplers
 from .flat_array_initialisers import grouped_flat_initialisers
+from .loop_scope import loop_variables_in_enclosing_scope
 from .self_initialisers import declared_before_initialised
 from .source_text import call_arguments, matching_paren
 
@@ -51,6 +63,10 @@ _SWITCH = re.compile(r"\bswitch\s*\(")
 _UPGRADED_NAMES = {"_Object2World": "unity_ObjectToWorld", "_World2Object": "unity_WorldToObject"}
 _UPGRADED = re.compile(r"\b(" + "|".join(_UPGRADED_NAMES) + r")\b")
 _TEMPLATE_TYPE = re.compile(r"\b(?:vector\s*<\s*(\w+)\s*,\s*([1-4])\s*>|matrix\s*<\s*(\w+)\s*,\s*([1-4])\s*,\s*([1-4])\s*>)")
+# a conditional's test of an OpenGL macro (GL_ES, GL_ARB_..., GL_NV_...), not its #define
+_GL_TESTED = re.compile(r"^([ \t]*#[ \t]*(?:if|ifdef|ifndef|elif)\b[^\n]*)", re.M)
+# (a code line's use, not the stand-in's #define of the name)
+_LEGACY_DEPTH = re.compile(r"^(?![ \t]*#)([^\n]*?)\b(UNITY_OUTPUT_DEPTH|UNITY_TRANSFER_DEPTH)\s*\((?:[^()\n]|\([^()\n]*\))*\)", re.M)
 _FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
 
 
@@ -174,18 +190,23 @@ def _tex2d_with_derivatives(text: str) -> str:
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
+    UnityCG's legacy depth macros written out, a conditional's OpenGL macros undefined,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
-    initialiser list of an array of vectors grouped per element."""
+    initialiser list of an array of vectors grouped per element, a for-loop variable used after its
+    loop declared before it (loop_scope)."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
+    text = _GL_TESTED.sub(lambda m: re.sub(r"\bGL_(?=\w)", "PBRLAB_UNITY_NO_GL_", m.group(1)), text)
+    text = _LEGACY_DEPTH.sub(lambda m: m.group(1) + ("return 0" if m.group(2) == "UNITY_OUTPUT_DEPTH" else ""), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
     text = _matrix_swizzles(_tex2d_with_derivatives(text))
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
+    text = loop_variables_in_enclosing_scope(text)  # for (int k ...) {} ... k: FXC's scope
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

@@ -1812,16 +1812,28 @@ class Result:
     skipped: list       # first lines of top-level declarations left as written
 
 
+# The directives that name macros or the program's names: a #define's name and replacement
+# text, and the macro a conditional tests or #undef drops. A macro the port renames at its
+# #define (``#define __COMMON__``, a double underscore GLSL reserves) is renamed where an include
+# guard tests it too (``#ifndef __COMMON__``), else the guard never closes and the file's
+# declarations come in twice (yangxuan0261's PostProcessing Common.cginc).
+_NAMING_DIRECTIVE = re.compile(r"#\s*(?:define|undef|ifdef|ifndef|if|elif)\s+")
+# The preprocessor's own names, which a conditional may test and no program defines (GLSL 3.30
+# section 3.3 and HLSL's): never renamed.
+_PREDEFINED_MACROS = frozenset({"__LINE__", "__FILE__", "__VERSION__", "__HLSL_VERSION", "defined"})
+
+
 def _rename_in_directives(text: str, directives) -> list:
-    """Edits renaming reserved names in #define lines (the program's macros use its names)."""
+    """Edits renaming reserved names in #define lines (the program's macros use its names) and
+    in the conditionals and #undef lines that name a macro."""
     out = []
     for s, e in directives:
         line = text[s:e]
-        m = re.match(r"#\s*define\s+", line)
+        m = _NAMING_DIRECTIVE.match(line)
         if not m:
             continue
         for w in re.finditer(r"\b[A-Za-z_]\w*\b", line[m.end():]):
-            if is_reserved(w.group(0)):
+            if is_reserved(w.group(0)) and w.group(0) not in _PREDEFINED_MACROS:
                 out.append((s + m.end() + w.start(), s + m.end() + w.end(), RENAME_PREFIX + w.group(0)))
     return out
 

@@ -67,10 +67,15 @@ _SYSTEM_VALUES = {"SV_VERTEXID": ("pbrlab_vertex_id", "gl_VertexID"),
 
 
 def canonical(semantic: str) -> str:
-    """TEXCOORD -> TEXCOORD0, COLOR -> COLOR0, upper case (Unity's semantics are)."""
+    """TEXCOORD -> TEXCOORD0, COLOR -> COLOR0, upper case (Unity's semantics are); POSITION0 ->
+    POSITION and SV_POSITION0 -> SV_POSITION: a semantic without an index is index 0 (HLSL's
+    semantics documentation), so ``float4 vertex : POSITION0;`` in a v2f is the clip-space
+    position, as FXC takes it, and POSITION1 beside it an ordinary interpolator."""
     s = semantic.upper()
     if s in ("TEXCOORD", "COLOR", "SV_TARGET"):
         return s + "0"
+    if s in ("POSITION0", "SV_POSITION0"):
+        return s[:-1]
     return s
 
 

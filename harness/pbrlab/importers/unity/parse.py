@@ -793,13 +793,32 @@ def _subshader_passes(layout, sub, props: dict, warnings: list, notes: list, pip
         return _subshader_passes(layout, sub, props, warnings, notes, render_objects.drawing(pipeline, tags))
     if not any(p.kind != "grab" for p in passes):
         skipped = "; ".join(n.split(": ", 1)[1] if n.startswith(f"{path}:") else n for n in notes[first_note:])
-        shadow_only = notes[first_note:] and all("no shadow maps" in n for n in notes[first_note:])
         raise UnityShaderError(f"{path}:{sub.line}: nothing here draws (every pass skipped"
-                               + (f": {skipped})" if skipped else ")")
-                               + ("; its passes only cast shadows: in Unity the object itself is invisible and shows "
-                                  "only as the shadow it casts on other objects, which pbrlab does not draw"
-                                  if shadow_only else ""))
+                               + (f": {skipped})" if skipped else ")") + _camera_colour(notes[first_note:]))
     return passes
+
+
+# What Unity's forward path shows in the camera's colour for an object whose passes are all of
+# one skipped kind (the reason SKIPPED_LIGHT_MODES gives them): said beside the refusal, so that
+# it says what the shader looks like in Unity, not only which passes were skipped.
+_CAMERA_COLOUR_WHEN_SKIPPED = (
+    ("no shadow maps", "its passes only cast shadows: in Unity the object itself is invisible and shows only "
+                       "as the shadow it casts on other objects, which pbrlab does not draw"),
+    ("no motion vectors", "its passes only write motion vectors: Unity draws them into the camera's "
+                          "motion-vector texture (where a camera asks for one), never into its colour, so in "
+                          "Unity the object is invisible in the camera's image"),
+    ("forward rendering only", "its passes are the deferred path's (the G-buffer's): they draw the object only "
+                               "in a camera that renders deferred; in the forward path, which pbrlab draws, "
+                               "Unity draws no pass of this SubShader into the camera's colour"),
+)
+
+
+def _camera_colour(notes: list) -> str:
+    """``; <what Unity shows>`` where every skipped pass is of one kind above, else ''."""
+    for reason, shown in _CAMERA_COLOUR_WHEN_SKIPPED:
+        if notes and all(reason in n for n in notes):
+            return "; " + shown
+    return ""
 
 
 def _srp_light_mode(mode: str) -> str:

@@ -32,6 +32,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
+from ...gpu.programs import set_uniform_array
 from . import cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
@@ -294,6 +295,19 @@ def object_matrix(obj) -> np.ndarray:
     return obj.transform
 
 
+def camera_world_clip_planes(view_proj: np.ndarray) -> np.ndarray:
+    """The frustum's six planes in world space, in unity_CameraWorldClipPlanes' order (left,
+    right, bottom, top, near, far), each (unit inward normal, offset): a point p is inside
+    where dot((p, 1), plane) >= 0. Gribb & Hartmann 2001, "Fast Extraction of Viewing Frustum
+    Planes from the World-View-Projection Matrix": with r_i the rows of the view-projection
+    matrix, a GL clip space (-w <= x, y, z <= w) gives the planes r3 + r0, r3 - r0, r3 + r1,
+    r3 - r1, r3 + r2, r3 - r2; each is divided by its normal's length (Unity's planes are
+    normalised, GeometryUtility.CalculateFrustumPlanes)."""
+    m = np.asarray(view_proj, np.float64)
+    planes = np.array([m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] + m[2], m[3] - m[2]])
+    return planes / np.linalg.norm(planes[:, :3], axis=1, keepdims=True)
+
+
 def _column_major(m: np.ndarray) -> tuple:
     return tuple(np.asarray(m, np.float64).T.reshape(-1))
 
@@ -329,6 +343,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     orthographic = frame.proj[3, 3] == 1.0
     _set(program, "unity_OrthoParams", (1.0 / frame.proj[0, 0], 1.0 / frame.proj[1, 1], 0.0, 1.0)
          if orthographic else (0.0, 0.0, 0.0, 0.0))
+    set_uniform_array(program, "unity_CameraWorldClipPlanes", camera_world_clip_planes(frame.view_proj))
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
     _set(program, "unity_FogColor", FOG_COLOR)
     if "_SpecColor" not in material.properties:

@@ -3,5 +3,6 @@
 // "Unity shaders", lists them), so this file is empty.
 
 #include "UnityCGPacking.cginc"
+#include "UnityCGFog.cginc"
 #include "UnityLightmapDecoding.cginc"
 #include "UnityRealtimeLightmap.cginc"

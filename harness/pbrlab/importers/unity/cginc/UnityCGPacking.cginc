@@ -9,7 +9,10 @@
 //   EncodeDepthNormal(depth01, viewNormal), DecodeDepthNormal(enc, out depth, out normal);
 //   UnpackHeightmap(texel), PackHeightmap(height); UnityObjectToClipPosODS(pos);
 //   CBUFFER_START(name) / CBUFFER_END (empty: plain globals, as Unity's GL targets);
-//   UNITY_DECLARE_DEPTH_TEXTURE_MS(tex) (a plain depth texture, as on Unity's GL targets).
+//   UNITY_DECLARE_DEPTH_TEXTURE_MS(tex) (a plain depth texture, as on Unity's GL targets);
+//   UNITY_VPOS_TYPE (float4: the type of a fragment input with the VPOS semantic);
+//   UNITY_TRANSFER_DEPTH(o) (nothing) and UNITY_OUTPUT_DEPTH(i) (return 0), UnityCG's legacy
+//   depth macros as Unity defines them now that every platform has native depth textures.
 // Unity's file: the same names (UnityCG.cginc and HLSLSupport.cginc, Unity 2019.4 built-in
 //   shaders; the encodings are the ones Unity's manual describes for _CameraDepthNormalsTexture:
 //   "depth and view space normals packed into one texture", normals stereographically
@@ -36,6 +39,17 @@
 // where the declaration is a plain depth texture (and Unity's own shaders that declare one
 // read it only under SHADER_API_D3D11).
 #define UNITY_DECLARE_DEPTH_TEXTURE_MS(tex) uniform sampler2D tex
+
+// HLSLSupport.cginc: VPOS's type, float4 (x, y the pixel's window position, as SV_POSITION in a
+// fragment) on every target but Direct3D 9, where it was float2.
+#define UNITY_VPOS_TYPE float4
+
+// UnityCG.cginc's legacy depth macros, kept by Unity for old shaders: they once wrote depth into
+// a colour target on platforms without depth textures. Unity now defines the first as nothing
+// and the second as ``return 0`` (the fragment returns 0, which a shader that renders its own
+// depth texture draws as black with alpha 0).
+#define UNITY_TRANSFER_DEPTH(o)
+#define UNITY_OUTPUT_DEPTH(i) return 0
 
 // A depth texture read whole: the raw texel (a blit copies every channel it stores). Functions,
 // not Unity's macros, so that the GLSL port's type pass sees a float4 (a shader that assigns it
@@ -86,14 +100,15 @@ float DecodeFloatRGBA(float4 enc)
 
 // A unit view-space normal facing the camera (z > -1) as two [0, 1] numbers: its stereographic
 // projection from (0, 0, -1), n.xy / (1 + n.z), scaled by 1 / 1.7777 (the span that the normals
-// a camera sees reach) and mapped from [-1, 1] to [0, 1]; z and w are 0.
-float4 EncodeViewNormalStereo(float3 n)
+// a camera sees reach) and mapped from [-1, 1] to [0, 1]. A float2, as Unity's (a program
+// writes float4(EncodeViewNormalStereo(n), 0, 0)).
+float2 EncodeViewNormalStereo(float3 n)
 {
     const float kScale = 1.7777;
     float2 enc = n.xy / (n.z + 1.0);
     enc /= kScale;
     enc = enc * 0.5 + 0.5;
-    return float4(enc, 0.0, 0.0);
+    return enc;
 }
 
 // The inverse projection: p = the scaled point back in [-kScale, kScale]^2 with z = 1 (as
@@ -115,7 +130,7 @@ float3 DecodeViewNormalStereo(float4 enc4)
 float4 EncodeDepthNormal(float depth, float3 normal)
 {
     float4 enc;
-    enc.xy = EncodeViewNormalStereo(normal).xy;
+    enc.xy = EncodeViewNormalStereo(normal);
     enc.zw = EncodeFloatRG(depth);
     return enc;
 }

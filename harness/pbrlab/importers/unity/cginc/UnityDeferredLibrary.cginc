@@ -28,6 +28,11 @@
 #ifndef PBRLAB_UNITY_DEFERRED_LIBRARY_CGINC
 #define PBRLAB_UNITY_DEFERRED_LIBRARY_CGINC
 
+// The light's falloff and cookie textures and unity_WorldToLight, which Unity's file declares
+// too (a light pass that samples _LightTextureB0 itself, as a ray-marched volume light does):
+// AutoLight.cginc's stand-in declares them (white: the falloff is the harness's, see above).
+#include "AutoLight.cginc"
+
 // The light of this draw, set per draw by the harness (importers/unity/deferred.py) as Unity
 // sets them: _LightPos xyz the light's position, w 1 / range^2; _LightColor its colour times
 // intensity (pbrlab's radiance units, which are Unity's); _LightDir xyz the direction the

@@ -6,8 +6,10 @@
 //   UnityStandardCore.cginc does the work.
 // Unity's file: the same names (UnityStandardCoreForward.cginc, Unity 2019.4 built-in
 //   shaders), read for their behaviour and written here anew.
-// Differences: vertAdd hands fragAdd the base pass's vertex output (Unity's has its own,
-//   VertexOutputForwardAdd, with a per-vertex light direction; here it is per pixel).
+// Differences: the add pass's vertex output, VertexOutputForwardAdd, holds the base pass's
+//   members (Unity's has a per-vertex light direction; here it is per pixel); it is its own
+//   struct, as Unity's, so that a program's fragment function that takes one and calls fragAdd
+//   (a dissolve effect over the Standard passes) reads its tex as in Unity.
 #ifndef PBRLAB_UNITY_STANDARD_CORE_FORWARD_CGINC
 #define PBRLAB_UNITY_STANDARD_CORE_FORWARD_CGINC
 
@@ -23,14 +25,36 @@ half4 fragBase(VertexOutputForwardBase i) : SV_Target
     return fragForwardBaseInternal(i);
 }
 
-VertexOutputForwardBase vertAdd(VertexInput v)
+struct VertexOutputForwardAdd
 {
-    return vertForwardBase(v);
+    float4 pos : SV_POSITION;
+    float4 tex : TEXCOORD0;          // xy: main UV, zw: detail UV
+    float3 posWorld : TEXCOORD1;
+    float3 normalWorld : TEXCOORD2;
+    float4 tangentWorld : TEXCOORD3; // w: the bitangent's sign
+};
+
+VertexOutputForwardAdd vertAdd(VertexInput v)
+{
+    VertexOutputForwardBase b = vertForwardBase(v);
+    VertexOutputForwardAdd o;
+    o.pos = b.pos;
+    o.tex = b.tex;
+    o.posWorld = b.posWorld;
+    o.normalWorld = b.normalWorld;
+    o.tangentWorld = b.tangentWorld;
+    return o;
 }
 
-half4 fragAdd(VertexOutputForwardBase i) : SV_Target
+half4 fragAdd(VertexOutputForwardAdd i) : SV_Target
 {
-    return fragForwardAddInternal(i);
+    VertexOutputForwardBase b;
+    b.pos = i.pos;
+    b.tex = i.tex;
+    b.posWorld = i.posWorld;
+    b.normalWorld = i.normalWorld;
+    b.tangentWorld = i.tangentWorld;
+    return fragForwardAddInternal(b);
 }
 
 #endif
