@@ -31,13 +31,18 @@ BOUND = 2.0 ** -11
 # partly covered, is left out by requiring every channel to match: >= 2000 pixels remain
 INTERIOR_PIXELS = 2000
 
-BUILT_IN = """\
-Shader "Test/FiniteCoordinate" {
+# both pipelines' shaders: a white texture, _Color, and a 0 to divide by
+PROPERTIES = """\
     Properties {
         _MainTex ("Texture", 2D) = "white" {}
         _Color ("Color", Color) = (0.75, 0.25, 0.5, 1)
         _Zero ("Zero", Float) = 0
     }
+"""
+
+BUILT_IN = """\
+Shader "Test/FiniteCoordinate" {
+""" + PROPERTIES + """\
     SubShader { Pass {
         CGPROGRAM
         #pragma vertex vert
@@ -56,11 +61,7 @@ Shader "Test/FiniteCoordinate" {
 
 URP = """\
 Shader "Test/FiniteCoordinateURP" {
-    Properties {
-        _MainTex ("Texture", 2D) = "white" {}
-        _Color ("Color", Color) = (0.75, 0.25, 0.5, 1)
-        _Zero ("Zero", Float) = 0
-    }
+""" + PROPERTIES + """\
     SubShader {
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
         Pass {
