@@ -8,7 +8,8 @@
 //           has no discard: define PBR_UNITY_VERTEX_STAGE there), PBR_UNITY_DISCARD (a
 //           program's own `discard`, as port-unity writes it: the same rule), tex2D, tex3D, tex2Dlod (uv.w is
 //           the LOD), tex2Dbias, tex2Dproj, tex2Dgrad (and tex2D's form with derivatives), texCUBE,
-//           texCUBElod, texCUBEbias, texCUBEgrad, pbr_unity_load (Texture2D.Load), asuint / asint / asfloat, rcp, mad, log10, and the type names
+//           texCUBElod, texCUBEbias, texCUBEgrad (each coordinate through
+//           pbr_unity_finite_coordinate: finite_texture_coordinate.glsl; tex2Dproj divides first, as HLSL's), pbr_unity_load (Texture2D.Load), asuint / asint / asfloat, rcp, mad, log10, and the type names
 //           samplerCUBE (= samplerCube); pbr_unity_pow (pow with HLSL's scalar promotion:
 //           port-unity renames pow to it), fmod(vecN, float).
 // Include:  "unity_compat/cg_compat.glsl" (path relative to glsl/), GLSL ONLY: HLSL has every
@@ -20,6 +21,7 @@
 // SPDX-License-Identifier: MIT. Part of pbrlab (https://spdx.org/licenses/MIT); full text in its LICENSE file.
 #ifndef PBR_UNITY_COMPAT_CG_COMPAT_GLSL
 #define PBR_UNITY_COMPAT_CG_COMPAT_GLSL
+#include "unity_compat/finite_texture_coordinate.glsl"  // the tex* lookups' coordinates, as Direct3D addresses them
 
 float saturate(float x) { return clamp(x, 0.0, 1.0); }
 vec2 saturate(vec2 x) { return clamp(x, 0.0, 1.0); }
@@ -114,30 +116,30 @@ bool pbr_unity_clip_below_zero(vec4 x) { return any(lessThan(x, vec4(0.0))); }
 #define PBR_UNITY_DISCARD discard
 #endif
 
-vec4 tex2D(sampler2D s, vec2 uv) { return texture(s, uv); }
-vec4 tex2Dlod(sampler2D s, vec4 uv) { return textureLod(s, uv.xy, uv.w); }
+vec4 tex2D(sampler2D s, vec2 uv) { return texture(s, pbr_unity_finite_coordinate(uv)); }
+vec4 tex2Dlod(sampler2D s, vec4 uv) { return textureLod(s, pbr_unity_finite_coordinate(uv.xy), uv.w); }
 #ifdef PBR_UNITY_VERTEX_STAGE
-vec4 tex2Dbias(sampler2D s, vec4 uv) { return textureLod(s, uv.xy, 0.0); }  // no LOD to bias
+vec4 tex2Dbias(sampler2D s, vec4 uv) { return textureLod(s, pbr_unity_finite_coordinate(uv.xy), 0.0); }  // no LOD to bias
 #else
-vec4 tex2Dbias(sampler2D s, vec4 uv) { return texture(s, uv.xy, uv.w); }
+vec4 tex2Dbias(sampler2D s, vec4 uv) { return texture(s, pbr_unity_finite_coordinate(uv.xy), uv.w); }
 #endif
-vec4 tex2Dproj(sampler2D s, vec4 uv) { return textureProj(s, uv); }
-vec4 tex2Dproj(sampler2D s, vec3 uv) { return textureProj(s, uv); }
-vec4 texCUBE(samplerCube s, vec3 dir) { return texture(s, dir); }
-vec4 texCUBElod(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, dir.w); }
+vec4 tex2Dproj(sampler2D s, vec4 uv) { return texture(s, pbr_unity_finite_coordinate(uv.xy / uv.w)); }
+vec4 tex2Dproj(sampler2D s, vec3 uv) { return texture(s, pbr_unity_finite_coordinate(uv.xy / uv.z)); }
+vec4 texCUBE(samplerCube s, vec3 dir) { return texture(s, pbr_unity_finite_coordinate(dir)); }
+vec4 texCUBElod(samplerCube s, vec4 dir) { return textureLod(s, pbr_unity_finite_coordinate(dir.xyz), dir.w); }
 // A 3D (volume) texture: Cg's tex3D, and tex3Dlod (uvw.w the mip level).
-vec4 tex3D(sampler3D s, vec3 uvw) { return texture(s, uvw); }
-vec4 tex3Dlod(sampler3D s, vec4 uvw) { return textureLod(s, uvw.xyz, uvw.w); }
+vec4 tex3D(sampler3D s, vec3 uvw) { return texture(s, pbr_unity_finite_coordinate(uvw)); }
+vec4 tex3Dlod(sampler3D s, vec4 uvw) { return textureLod(s, pbr_unity_finite_coordinate(uvw.xyz), uvw.w); }
 // Texture2D.Load(int3(x, y, mip)) as the GLSL port spells it (importers/unity/texture_methods.py).
 vec4 pbr_unity_load(sampler2D s, ivec3 p) { return texelFetch(s, p.xy, p.z); }
 // Explicit derivatives (Cg's tex2Dgrad, and tex2D's four-argument form: the same lookup).
-vec4 tex2Dgrad(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, uv, dx, dy); }
-vec4 tex2D(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, uv, dx, dy); }
-vec4 texCUBEgrad(samplerCube s, vec3 dir, vec3 dx, vec3 dy) { return textureGrad(s, dir, dx, dy); }
+vec4 tex2Dgrad(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, pbr_unity_finite_coordinate(uv), dx, dy); }
+vec4 tex2D(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, pbr_unity_finite_coordinate(uv), dx, dy); }
+vec4 texCUBEgrad(samplerCube s, vec3 dir, vec3 dx, vec3 dy) { return textureGrad(s, pbr_unity_finite_coordinate(dir), dx, dy); }
 #ifdef PBR_UNITY_VERTEX_STAGE
-vec4 texCUBEbias(samplerCube s, vec4 dir) { return textureLod(s, dir.xyz, 0.0); }  // no LOD to bias
+vec4 texCUBEbias(samplerCube s, vec4 dir) { return textureLod(s, pbr_unity_finite_coordinate(dir.xyz), 0.0); }  // no LOD to bias
 #else
-vec4 texCUBEbias(samplerCube s, vec4 dir) { return texture(s, dir.xyz, dir.w); }
+vec4 texCUBEbias(samplerCube s, vec4 dir) { return texture(s, pbr_unity_finite_coordinate(dir.xyz), dir.w); }
 #endif
 
 // HLSL's bit casts (Microsoft's HLSL intrinsic reference): asuint / asint /

@@ -433,6 +433,14 @@ def _flat(kind: str, semantic: str = "", vf=None) -> str:
     return ""
 
 
+# A pixel shader's SV_Position.w is the clip-space w (the eye depth, in a perspective view) in
+# Direct3D, Unity's default API; GLSL's gl_FragCoord.w, and glslang's SV_Position taken from it,
+# is 1 / w (GLSL 4.60 7.1.2; DXC's -fvk-use-dx-position-w and glslang's --hlsl-dx-position-w
+# exist for this difference). A program that reads i.pos.w in its fragment (ComputeScreenPos(i.pos),
+# a depth fade's eye depth) reads w, as in Unity; x, y (the pixel centre) and z (window depth) as were.
+_CLIP_W = "1.0 / pbrlab_frag_position.w"
+
+
 def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended: bool) -> str:
     have = {s: t for s, t in varyings(vf, where)}
     slots = _slots(vf, where, language)
@@ -499,12 +507,14 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         params.append("out float4 pbrlab_radiance : SV_Target0")
         lines += _realtime_lightmap_uv(language)
         lines += ["void main(" + ", ".join(params), _POSITIONAL_ADD,
-                  f", float3 pbrlab_vary_world_position : TEXCOORD{len(slots)}", "#endif", ") {"]
+                  f", float3 pbrlab_vary_world_position : TEXCOORD{len(slots)}", "#endif", ") {",
+                  f"    pbrlab_frag_position.w = {_CLIP_W};"]
     else:
         lines += [f"{_flat(kind, s, vf)}in {_type(kind, language)} {name};" for s, name, kind, _ in slots]
         lines += [_POSITIONAL_ADD, "in vec3 pbrlab_vary_world_position;", "#endif"]
         lines += ["out vec4 pbrlab_radiance;", "void main() {",
-                  "    vec4 pbrlab_frag_position = gl_FragCoord;", "    bool pbrlab_front_facing = gl_FrontFacing;"]
+                  f"    vec4 pbrlab_frag_position = vec4(gl_FragCoord.xyz, {_CLIP_W.replace('pbrlab_frag_position', 'gl_FragCoord')});",
+                  "    bool pbrlab_front_facing = gl_FrontFacing;"]
         return _members_as_ported("\n".join(lines + body + ["}"]) + "\n")
     return "\n".join(lines + body + ["}"]) + "\n"
 

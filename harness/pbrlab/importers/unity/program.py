@@ -33,7 +33,7 @@ from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
 from ...gpu.programs import set_uniform_array
-from . import cg_spellings, cg_types, generate, port, texture_arrays
+from . import cg_spellings, cg_types, finite_texture_coordinates, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
@@ -266,6 +266,7 @@ def build_program(ctx, shader: M.SurfaceShader, language: str, stem: str, define
         if language == "hlsl":
             glsl = hlsl.hlsl_to_glsl(text, display, dirs, plain_uniforms=True,
                                      version=programs.cross_version(defines))
+            glsl = finite_texture_coordinates.applied(glsl)  # lookups at NaN / inf: as Direct3D's
             fragment = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
             paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
         else:

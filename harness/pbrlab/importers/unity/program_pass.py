@@ -19,7 +19,7 @@ from pathlib import Path
 from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
-from . import generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
+from . import finite_texture_coordinates, generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_includes, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -110,6 +110,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],
                                                              replaced=with_package_copies(hlsl_includes(vf))),
                                           plain_uniforms=True)
+                glsl = finite_texture_coordinates.applied(glsl)  # lookups at NaN / inf: as Direct3D's
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)
                 elif geometry:
