@@ -32,7 +32,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
-from . import cg_spellings, cg_types, generate, port, texture_arrays
+from . import body_includes, cg_spellings, cg_types, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
@@ -134,6 +134,19 @@ def program_include(shader) -> tuple[str, dict]:
 
     rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
 
+    def read(target: Path) -> str:
+        return shaders.strip_bom(rewritten.get(target.resolve()) or read_source(target))
+
+    def ported(text: str, where: Path, port_of) -> str:
+        """``text`` ported by ``port_of``, an include inside a function body spliced in
+        (body_includes), each include line relinked to its port."""
+        text, splices = body_includes.spliced(text, lambda n: resolve_included(n, where), read)
+        text, files = body_includes.cut(relinked(port_of(text), where), splices,
+                                        lambda i, target: _port_include(f"{target.resolve()}@{len(virtual) + i}"))
+        for spliced_name, (body, target) in files.items():
+            virtual[spliced_name] = shaders.VirtualFile(relinked(body, target.parent), str(target), 1)
+        return text
+
     def relinked(text: str, where: Path) -> str:
         def relink(m):
             target = resolve_included(m.group(2), where)
@@ -142,15 +155,15 @@ def program_include(shader) -> tuple[str, dict]:
             key = target.resolve()
             if key not in names:
                 names[key] = _port_include(key)
-                body = shaders.strip_bom(rewritten.get(key) or read_source(target))
                 virtual[names[key]] = shaders.VirtualFile(
-                    relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
+                    ported(read(target), target.parent,
+                           lambda body: port.port_text(body, target.parent, context_of(key), srp=srp)),
                     str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 
     name = _port_include(shader.path.name)
-    text = relinked(shaders.strip_bom(port.port_program(shader)), shader.path.parent)
+    text = ported(shader.program, shader.path.parent, lambda program: shaders.strip_bom(port.port_program(shader, program)))
     virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
     return f'#include "{name}"', virtual
 
