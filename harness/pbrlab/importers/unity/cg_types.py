@@ -815,7 +815,7 @@ class _Parser:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
         name_tok = self.name()
-        name = name_tok.text
+        name = written = name_tok.text
         if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
             if not self.decl_only:
                 self.edits.replace(name_tok.s, name_tok.e, OWN_PREFIX + name)
@@ -877,6 +877,11 @@ class _Parser:
                 known.append(Signature(ret, params[:k]))
         if self.accept(";"):
             return
+        if self.another_head_follows(written):
+            # #if lines choosing the signature (``#if X`` ``fragOut frag(g2f i)`` ``#else``
+            # ``half4 frag(g2f i) : SV_Target`` ``#endif`` ``{``): this head is known as a
+            # prototype; the next one reads the body
+            return self.external()
         if self.decl_only:
             self.skip_balanced("{", "}")
             return
@@ -896,6 +901,17 @@ class _Parser:
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
             self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
+
+    def another_head_follows(self, name: str) -> bool:
+        """A preprocessor line before the next token, then another head of the function
+        ``name`` (qualifiers, a return type, ``name (``) instead of its body."""
+        before = self.toks[self.i - 1].e
+        if not any(before <= s and e <= self.peek().s for s, e in self.directives):
+            return False
+        for k in range(4):
+            if self.peek(k).kind == "id" and self.peek(k).text == name and self.peek(k + 1).text == "(":
+                return k > 0
+        return False
 
     def _macro_default_overloads(self, ret, name, spelled, defaults, first_default, param_macros):
         """Default arguments of a parameter list that also holds parameter macros
