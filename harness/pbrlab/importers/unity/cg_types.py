@@ -413,6 +413,10 @@ _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
 # HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
 _PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
 _MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
+# Unity's macros that declare a local of their first argument's name (AutoLight.cginc's
+# UNITY_LIGHT_ATTENUATION(destName, input, worldPos): ``fixed destName = ...``; the port's
+# unity_compat declares it float): the local's type, known to the statements after it.
+_DECLARING_MACROS = {"UNITY_LIGHT_ATTENUATION": "float"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
@@ -1150,6 +1154,8 @@ class _Parser:
             if t.text == "struct":
                 self.struct()
                 return
+            if t.text in _DECLARING_MACROS and self.at("(", 1) and self.peek(2).kind == "id" and self.scopes:
+                self.declare(self.peek(2).text, self.type_named(_DECLARING_MACROS[t.text]))
         self.simple_statement()
 
     def local_sampler(self, ty, start) -> bool:
