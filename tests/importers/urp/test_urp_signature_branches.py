@@ -16,47 +16,30 @@ trunc((x + 0.5) / _Cell).
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 import pytest
 
 from pbrlab.importers.loader import parse_scene
 from pbrlab.importers.unity import cg_types
 from pbrlab.render.renderer import render_scene
+from test_urp_library_round2 import urp_pass  # pytest puts this folder on sys.path
 
 LANGUAGES = ("glsl", "hlsl")
 SIZE = 48
 
-SHADER = """
-Shader "t/signature branches" {
-    Properties { _Cell ("cell", Float) = %(cell)s }
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-            CBUFFER_START(UnityPerMaterial)
-            float _Cell;
-            CBUFFER_END
-            struct Attributes { float4 positionOS : POSITION; };
-            struct Varyings { float4 positionCS : SV_POSITION; };
-            struct fragOut { half4 colour : SV_Target0; };
-            Varyings vert(Attributes IN) {
-                Varyings OUT;
-                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                return OUT;
-            }
-            #if defined(_MRT)
+# test_urp_scene_textures' URP pass, its fragment head replaced by two chosen by #if lines
+HEAD = "float4 frag(Varyings IN) : SV_Target {"
+BRANCHED_HEAD = """#if defined(_MRT)
             fragOut frag(Varyings IN)
             #else
             half4 frag(Varyings IN) : SV_Target
             #endif
-            {
-                int2 cell = (int2)(IN.positionCS.xy / max(1.0, _Cell));
+            {"""
+DECLARATIONS = """CBUFFER_START(UnityPerMaterial)
+            float _Cell;
+            CBUFFER_END
+            struct fragOut { half4 colour : SV_Target0; };"""
+BODY = """int2 cell = (int2)(IN.positionCS.xy / max(1.0, _Cell));
                 float4 colour = float4(cell.x / 16.0, 0.0, 0.0, 1.0);
             #if defined(_MRT)
                 fragOut o;
@@ -64,20 +47,23 @@ Shader "t/signature branches" {
                 return o;
             #else
                 return colour;
-            #endif
-            }
-            ENDHLSL
-        }
-    }
-}
-"""
+            #endif"""
+
+
+def shader_text(cell) -> str:
+    text = urp_pass("signature branches", BODY, DECLARATIONS)
+    assert HEAD in text
+    text = text.replace(HEAD, BRANCHED_HEAD)
+    return text.replace("SubShader {", f'Properties {{ _Cell ("cell", Float) = {cell} }}\n    SubShader {{', 1)
+
+
 # The colour is a multiple of 1/16 below 1: exact in float32 and in the float target.
 EXACT = 0.0
 
 
 def _render(tmp_path, language, cell):
     shader = tmp_path / "t.shader"
-    shader.write_text(textwrap.dedent(SHADER % {"cell": cell}))
+    shader.write_text(shader_text(cell))
     data = {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40, "size": [SIZE, SIZE]},
         "lights": [],
@@ -107,8 +93,10 @@ def test_a_signature_chosen_by_if_lines_ports_its_body(tmp_path, language):
 
 def test_the_type_pass_reads_both_heads():
     """The type pass no longer skips the function (main skipped it: its cast stayed HLSL's)."""
-    text = textwrap.dedent(SHADER[SHADER.index("struct Varyings"):SHADER.index("ENDHLSL")])
+    text = shader_text(4)
+    text = text[text.index("struct fragOut"):text.index("ENDHLSL")]
     text = text.replace("TransformObjectToHClip(IN.positionOS.xyz)", "IN.positionOS")
-    result = cg_types.convert_detail("float _Cell;\n" + text)
+    result = cg_types.convert_detail("float _Cell;\nstruct Attributes { float4 positionOS : POSITION; };\n"
+                                     "struct Varyings { float4 positionCS : SV_POSITION; };\n" + text)
     assert result.skipped == []
     assert "int2((IN.positionCS.xy" in result.text
