@@ -108,11 +108,6 @@ def program_include(shader) -> tuple[str, dict]:
     includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
     does), each include line relinked to its port, so an include's Cg goes through the same
     type pass and renames as the program's, and errors name the original file and line."""
-    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written (as a
-        # virtual file: its own name may be one an #include line cannot carry)
-        name = _port_include(shader.path)
-        return f'#include "{name}"', {name: shaders.VirtualFile(shaders.read_source(shader.path),
-                                                                str(shader.path), 1)}
     virtual: dict = {}
     names: dict = {}   # resolved include -> its virtual name
     # the structs and global variables the program and its includes declare, known to the type
@@ -162,6 +157,13 @@ def program_include(shader) -> tuple[str, dict]:
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 
+    if shader.language == "glsl":  # a port-unity port: GLSL, included as written (as a virtual
+        # file: its own name may be one an #include line cannot carry), the Cg files it includes
+        # (pbrlab's stand-ins among them) ported as the in-memory port's are
+        name = _port_include(shader.path)
+        virtual[name] = shaders.VirtualFile(relinked(shaders.read_source(shader.path), shader.path.parent),
+                                            str(shader.path), 1)
+        return f'#include "{name}"', virtual
     name = _port_include(shader.path.name)
     text = ported(shader.program, shader.path.parent, lambda program: shaders.strip_bom(port.port_program(shader, program)))
     virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
