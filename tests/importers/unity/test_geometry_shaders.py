@@ -320,3 +320,46 @@ def test_maxvertexcount_may_be_an_expression_of_the_programs_macros(tmp_path, la
     data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
     image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
     assert copies_problems(image) == []
+
+
+# A bare value per vertex (FXC reads ``triangle float4 IN[3] : SV_POSITION`` as one member that
+# carries the array's semantic): the vertex stage returns the clip position alone, and the
+# geometry function colours each copy from it, (u, v) = (a/2 + 1/2, 1/2 - b/2) with a = x / 0.3,
+# b = -y / 0.5 (the clip position's x and y, module docstring), the expectation above.
+BARE = {
+    "        v2g vert(appdata_base v) {{": "        float4 vert(appdata_base v) : SV_POSITION {{",
+    "            v2g o;\n": "",
+    "            o.pos = float4(": "            return float4(",
+    "            o.uv = v.texcoord.xy;\n            return o;\n": "",
+    "triangle v2g IN[3]": "triangle float4 IN[3] : SV_POSITION",
+    "o.pos = IN[k].pos;": "o.pos = IN[k];",
+}
+
+
+def _bare(tmp_path, language, colour="float2(IN[k].x / 0.6 + 0.5, 0.5 + IN[k].y)", semantic=True):
+    text = COPIES
+    for old, new in BARE.items():
+        assert old in text
+        text = text.replace(old, new)
+    if not semantic:
+        text = text.replace(" : SV_POSITION, inout", ", inout")
+    shader = tmp_path / "bare.shader"
+    shader.write_text(textwrap.dedent(text.format(name="bare", pragma="#pragma geometry geom", left=-0.45,
+                                                  right=0.45, colour=colour, primitive_id="")))
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    return render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_bare_value_per_vertex_is_the_geometry_input(tmp_path, language):
+    image = _bare(tmp_path, language)
+    assert image[..., 3].mean() > 0.3
+    assert copies_problems(image) == []
+    # control: u from the clip position's y instead of x: the float64 check rejects it
+    assert copies_problems(_bare(tmp_path, language, colour="float2(IN[k].y / 0.6 + 0.5, 0.5 + IN[k].y)")) != []
+
+
+def test_a_bare_geometry_input_without_a_semantic_is_named(tmp_path):
+    with pytest.raises(PbrlabError, match=r"bare\.shader:\d+: .*array of float4 without a semantic"):
+        _bare(tmp_path, "glsl", semantic=False)

@@ -413,6 +413,10 @@ _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
 # HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
 _PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
 _MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
+# Unity's macros that declare a local of their first argument's name (AutoLight.cginc's
+# UNITY_LIGHT_ATTENUATION(destName, input, worldPos): ``fixed destName = ...``; the port's
+# unity_compat declares it float): the local's type, known to the statements after it.
+_DECLARING_MACROS = {"UNITY_LIGHT_ATTENUATION": "float"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
@@ -815,7 +819,7 @@ class _Parser:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
         name_tok = self.name()
-        name = name_tok.text
+        name = written = name_tok.text
         if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
             if not self.decl_only:
                 self.edits.replace(name_tok.s, name_tok.e, OWN_PREFIX + name)
@@ -877,6 +881,11 @@ class _Parser:
                 known.append(Signature(ret, params[:k]))
         if self.accept(";"):
             return
+        if self.another_head_follows(written):
+            # #if lines choosing the signature (``#if X`` ``fragOut frag(g2f i)`` ``#else``
+            # ``half4 frag(g2f i) : SV_Target`` ``#endif`` ``{``): this head is known as a
+            # prototype; the next one reads the body
+            return self.external()
         if self.decl_only:
             self.skip_balanced("{", "}")
             return
@@ -896,6 +905,17 @@ class _Parser:
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
             self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
+
+    def another_head_follows(self, name: str) -> bool:
+        """A preprocessor line before the next token, then another head of the function
+        ``name`` (qualifiers, a return type, ``name (``) instead of its body."""
+        before = self.toks[self.i - 1].e
+        if not any(before <= s and e <= self.peek().s for s, e in self.directives):
+            return False
+        for k in range(4):
+            if self.peek(k).kind == "id" and self.peek(k).text == name and self.peek(k + 1).text == "(":
+                return k > 0
+        return False
 
     def _macro_default_overloads(self, ret, name, spelled, defaults, first_default, param_macros):
         """Default arguments of a parameter list that also holds parameter macros
@@ -1134,6 +1154,8 @@ class _Parser:
             if t.text == "struct":
                 self.struct()
                 return
+            if t.text in _DECLARING_MACROS and self.at("(", 1) and self.peek(2).kind == "id" and self.scopes:
+                self.declare(self.peek(2).text, self.type_named(_DECLARING_MACROS[t.text]))
         self.simple_statement()
 
     def local_sampler(self, ty, start) -> bool:

@@ -47,12 +47,17 @@ def port_code_types(kind: str) -> str:
     return rename(kind)
 
 
-def _members(vf, kind: str, where: str) -> list:
+def _members(vf, kind: str, where: str, semantic: str = "") -> list:
+    """[(type, member, semantic)] of the struct ``kind``; a bare value per vertex (``triangle
+    float4 IN[3] : SV_POSITION``, ``semantic`` the array's) is one member, named "" (the value
+    itself), carrying the array's semantic, as FXC reads it (HLSL's semantics apply to a
+    parameter as to a struct member: Microsoft's "Semantics" page, geometry-shader inputs)."""
     members = vf.structs.get(kind)
     if members is None and component_count(kind):
-        raise UnityShaderError(f"{where}: the geometry stage takes an array of {kind} (a bare value per vertex, "
-                               "not a struct): pbrlab runs a geometry function whose vertices come as one array of "
-                               "the vertex stage's output struct (triangle v2g IN[3])")
+        if not semantic:
+            raise UnityShaderError(f"{where}: the geometry stage takes an array of {kind} without a semantic "
+                                   "(HLSL needs one on a bare value per vertex: triangle float4 IN[3] : SV_POSITION)")
+        return [(kind, "", semantic)]
     if members is None:
         raise UnityShaderError(f"{where}: the geometry stage's struct {kind} is not defined")
     return members.members
@@ -139,11 +144,12 @@ def hlsl_renamed(vf, glsl: str) -> str:
     """spirv-cross's names for the geometry stage's inputs and outputs -> the other stages'
     (module docstring); its ``_Global`` struct and instance renamed as the vertex stage's."""
     g = vf.geometry
-    for kind, param, prefix in ((g.input_type, g.input_name, "pbrlab_vary_"),
-                                (g.output_type, g.stream_name, "pbrlab_gvary_")):
-        for _, member, semantic in _members(vf, kind, g.where):
+    for kind, param, prefix, own in ((g.input_type, g.input_name, "pbrlab_vary_", g.input_semantic),
+                                     (g.output_type, g.stream_name, "pbrlab_gvary_", "")):
+        for _, member, semantic in _members(vf, kind, g.where, own):
             if semantic and _canonical(semantic) not in _POSITION:
-                glsl = re.sub(r"\b" + re.escape(f"{param}_{member}") + r"\b", prefix + _canonical(semantic), glsl)
+                spirv_name = f"{param}_{member}" if member else param  # a bare value: the parameter's name
+                glsl = re.sub(r"\b" + re.escape(spirv_name) + r"\b", prefix + _canonical(semantic), glsl)
     unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
                 if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))
                 and m.group(1) != "pbrlab_vary_world_position"]
@@ -200,11 +206,11 @@ def glsl_entry(vf, main_light: str, vertex_outputs: dict) -> str:
     g = vf.geometry
     count = PRIMITIVES[g.primitive][1]
     body = [f"#if {POSITIONAL_ADD}", "    vec3 pbrlab_world_position = pbrlab_vary_world_position[0];", "#endif",
-            main_light, f"    {g.input_type} pbrlab_in[{count}];"]
+            main_light, f"    {port_code_types(g.input_type)} pbrlab_in[{count}];"]
     for k in range(count):
-        for mtype, member, semantic in _members(vf, g.input_type, g.where):
+        for mtype, member, semantic in _members(vf, g.input_type, g.where, g.input_semantic):
             s = _canonical(semantic) if semantic else ""
-            target = f"    pbrlab_in[{k}].{_glsl_name(member)} = "
+            target = f"    pbrlab_in[{k}]{'.' + _glsl_name(member) if member else ''} = "
             n = component_count(mtype)
             if s in _POSITION:
                 body.append(target + _fit(f"gl_in[{k}].gl_Position", 4, n) + ";")

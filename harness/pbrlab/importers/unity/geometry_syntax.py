@@ -42,6 +42,7 @@ class GeometryFunction:
     stream_name: str
     params: list                 # [(role, text as written, name)]: role input, stream, primitive_id
     where: str
+    input_semantic: str = ""     # the input array's own semantic (a bare value per vertex: float4 IN[3] : SV_POSITION)
 
 
 def _blank(text: str) -> str:
@@ -126,7 +127,7 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
     params, found = [], {}
     for text in _split_params(masked[m.end():i - 1]):
         stream = _STREAM_PARAM.search(text)
-        array = re.match(r"(?:(" + "|".join(PRIMITIVES) + r")\s+)(" + IDENT + r")\s+(" + IDENT + r")\s*\[\s*(\w+)\s*\]", text)
+        array = re.match(r"(?:(" + "|".join(PRIMITIVES) + r")\s+)(" + IDENT + r")\s+(" + IDENT + r")\s*\[\s*(\w+)\s*\](?:\s*:\s*(\w+))?", text)
         primitive_id = re.match(r"(?:in\s+)?(uint|int)\s+(" + IDENT + r")\s*:\s*SV_PrimitiveID\s*$", text, re.I)
         if stream:
             found["stream"] = stream.groups()
@@ -136,7 +137,8 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
                 raise UnityShaderError(f"{where}: {name}() takes its vertices as several arrays ({found['input'][2]}[], "
                                        f"{array.group(3)}[]): pbrlab runs a geometry function whose vertices come "
                                        "as one array of the vertex stage's output struct (triangle v2g IN[3])")
-            found["input"] = array.groups()
+            found["input"] = array.groups()[:4]
+            found["semantic"] = array.group(5) or ""
             params.append(("input", text, array.group(3)))
         elif primitive_id:
             params.append(("primitive_id", text, primitive_id.group(2)))
@@ -155,4 +157,4 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
     return GeometryFunction(name=name, max_vertices=m.group(2).strip(), primitive=primitive,
                             input_type=input_type, input_name=input_name, output_type=found["stream"][1],
                             stream=found["stream"][0], stream_name=found["stream"][2], params=params,
-                            where=where)
+                            where=where, input_semantic=found["semantic"])

@@ -196,10 +196,11 @@ def _drop_unity_redeclarations(code: str) -> str:
     return _GLOBAL_DECLARATION.sub(drop, code)
 
 
-def port_program(shader: M.SurfaceShader) -> str:
-    """The shader's CGPROGRAM ported, line for line (comments kept); a layered model's output
-    struct (generated before the program: output_struct.layered_struct) is known to the type pass."""
-    return port_text(shader.program, shader.path.parent, "\n".join(layered_struct(shader)),
+def port_program(shader: M.SurfaceShader, program: str | None = None) -> str:
+    """The shader's CGPROGRAM (or ``program``, its text with edits) ported, line for line
+    (comments kept); a layered model's output struct (generated before the program:
+    output_struct.layered_struct) is known to the type pass."""
+    return port_text(shader.program if program is None else program, shader.path.parent, "\n".join(layered_struct(shader)),
                      srp=getattr(shader, "srp", False))
 
 

@@ -33,7 +33,7 @@ from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
 from ...gpu.programs import set_uniform_array
-from . import cg_spellings, cg_types, finite_texture_coordinates, generate, port, texture_arrays
+from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates, generate, port, texture_arrays
 from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
@@ -109,11 +109,6 @@ def program_include(shader) -> tuple[str, dict]:
     includes (the shader's own .cginc files and pbrlab's stand-ins, resolved as the parser
     does), each include line relinked to its port, so an include's Cg goes through the same
     type pass and renames as the program's, and errors name the original file and line."""
-    if shader.language == "glsl":  # a port-unity port: GLSL only, included as written (as a
-        # virtual file: its own name may be one an #include line cannot carry)
-        name = _port_include(shader.path)
-        return f'#include "{name}"', {name: shaders.VirtualFile(shaders.read_source(shader.path),
-                                                                str(shader.path), 1)}
     virtual: dict = {}
     names: dict = {}   # resolved include -> its virtual name
     # the structs and global variables the program and its includes declare, known to the type
@@ -135,6 +130,19 @@ def program_include(shader) -> tuple[str, dict]:
 
     rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
 
+    def read(target: Path) -> str:
+        return shaders.strip_bom(rewritten.get(target.resolve()) or read_source(target))
+
+    def ported(text: str, where: Path, port_of) -> str:
+        """``text`` ported by ``port_of``, an include inside a function body spliced in
+        (body_includes), each include line relinked to its port."""
+        text, splices = body_includes.spliced(text, lambda n: resolve_included(n, where), read)
+        text, files = body_includes.cut(relinked(port_of(text), where), splices,
+                                        lambda i, target: _port_include(f"{target.resolve()}@{len(virtual) + i}"))
+        for spliced_name, (body, target) in files.items():
+            virtual[spliced_name] = shaders.VirtualFile(relinked(body, target.parent), str(target), 1)
+        return text
+
     def relinked(text: str, where: Path) -> str:
         def relink(m):
             target = resolve_included(m.group(2), where)
@@ -143,15 +151,22 @@ def program_include(shader) -> tuple[str, dict]:
             key = target.resolve()
             if key not in names:
                 names[key] = _port_include(key)
-                body = shaders.strip_bom(rewritten.get(key) or read_source(target))
                 virtual[names[key]] = shaders.VirtualFile(
-                    relinked(port.port_text(body, target.parent, context_of(key), srp=srp), target.parent),
+                    ported(read(target), target.parent,
+                           lambda body: port.port_text(body, target.parent, context_of(key), srp=srp)),
                     str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
 
+    if shader.language == "glsl":  # a port-unity port: GLSL, included as written (as a virtual
+        # file: its own name may be one an #include line cannot carry), the Cg files it includes
+        # (pbrlab's stand-ins among them) ported as the in-memory port's are
+        name = _port_include(shader.path)
+        virtual[name] = shaders.VirtualFile(relinked(shaders.read_source(shader.path), shader.path.parent),
+                                            str(shader.path), 1)
+        return f'#include "{name}"', virtual
     name = _port_include(shader.path.name)
-    text = relinked(shaders.strip_bom(port.port_program(shader)), shader.path.parent)
+    text = ported(shader.program, shader.path.parent, lambda program: shaders.strip_bom(port.port_program(shader, program)))
     virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
     return f'#include "{name}"', virtual
 

@@ -93,7 +93,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         roots = {project_root(n, vf.path.parent) for n in names}
         # a package's own paths (Packages/<it>/...) from a folder that links Packages/<it> to it
         roots |= {package_links(*own) for own in (own_package_root(n, vf.path.parent) for n in names) if own}
-        dirs = [TEMPLATES, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS, vf.path.parent]
+        dirs = [TEMPLATES, vf.path.parent, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS]
         if vf.language == glslprogram.LANGUAGE:  # a GLSLPROGRAM: its GLSL as written, in either language
             program, paths = glslprogram.build_glsl_program(ctx, vf, defines, blended, dirs)
             return indexed(program, vf.path), paths

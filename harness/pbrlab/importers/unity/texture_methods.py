@@ -64,10 +64,17 @@ def _call(kind: str, method: str, texture: str, args: list):
 _PROBE_READ = re.compile(r"\b(UNITY_SAMPLE_TEXCUBE_LOD|UNITY_SAMPLE_TEXCUBE|texCUBElod|texCUBE)\s*\(\s*unity_SpecCube0\s*,")
 
 
+# Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE(unity_SpecCube0), hdr, glossIn): the stand-in
+# UnityImageBasedLighting.cginc's pbrlab_unity_glossy_probe(hdr, glossIn) (line breaks kept)
+_GLOSSY_PROBE = re.compile(r"\bUnity_GlossyEnvironment\s*\(\s*UNITY_PASS_TEXCUBE\s*\(\s*unity_SpecCube0\s*\)\s*,")
+
+
 def spelled_probe_reads(code: str) -> str:
     """Each read of the reflection probe ``unity_SpecCube0`` (UNITY_SAMPLE_TEXCUBE(_LOD),
     texCUBE(lod)) as a call of the Unity layer's pbrlab_unity_reflection_probe(direction, mip)
-    (templates/unity_surface.inc): GLSL has no object to stand for the probe."""
+    (templates/unity_surface.inc), and Unity_GlossyEnvironment on it (_GLOSSY_PROBE): GLSL has
+    no object to stand for the probe."""
+    code = _GLOSSY_PROBE.sub(lambda m: "pbrlab_unity_glossy_probe(" + "\n" * m.group(0).count("\n"), code)
     out, pos = [], 0
     for m in _PROBE_READ.finditer(code):
         if m.start() < pos:

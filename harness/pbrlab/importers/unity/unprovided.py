@@ -39,9 +39,8 @@ UNPROVIDED = {
     **dict.fromkeys(("UNITY_DECLARE_TEXCUBEARRAY", "UNITY_SAMPLE_TEXCUBEARRAY"),
                     "cube-map arrays as Unity declares them"),
     # (probe 0's box, unity_SpecCube0_ProbePosition/_BoxMin/_BoxMax, is the sky's, not box-projected:
-    # unity_compat/shader_variables)
-    **dict.fromkeys(("unity_SpecCube1", "BoxProjectedCubemapDirection"),
-                    "box-projected and blended reflection probes"),
+    # unity_compat/shader_variables; BoxProjectedCubemapDirection is UnityStandardUtils.cginc's stand-in's)
+    "unity_SpecCube1": "blended reflection probes (a second probe)",
     **dict.fromkeys(("unity_ProbeVolumeSH", "unity_ProbeVolumeWorldToObject", "SHEvalLinearL0L1_SampleProbeVolume"),
                     "light probe proxy volumes"),
     **dict.fromkeys(("_CameraDepthNormalsTexture", "DecodeDepthNormal", "_CameraMotionVectorsTexture"),
