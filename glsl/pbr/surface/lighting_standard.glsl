@@ -98,6 +98,10 @@
 struct pbr_Light {
     vec3 color;
     vec3 dir;
+    // Read by nothing here: Unity's UnityLight (pbr/unity/brdf_unity.glsl aliases it to this
+    // struct) declares a third member, ndotl, deprecated and unread by Unity's own functions
+    // since 5.x (UnityLightingCommon.cginc), which older shaders still assign and read.
+    float ndotl;
 };
 
 struct pbr_Indirect {

@@ -8,7 +8,7 @@
 //           float SmithJointGGXVisibilityTerm(float NdotL, float NdotV, float roughness),
 //           float GGXTerm(float NdotH, float roughness),
 //           float PerceptualRoughnessToSpecPower(float perceptualRoughness),
-//           vec3 Unity_SafeNormalize(vec3 inVec);
+//           vec3 Unity_SafeNormalize(vec3 inVec), float DotClamped(vec3 a, vec3 b);
 //           Unity's BRDFs: vec4 BRDF1_Unity_PBS, BRDF2_Unity_PBS, BRDF3_Unity_PBS(vec3 diffColor,
 //           vec3 specColor, float oneMinusReflectivity, float smoothness, vec3 normal,
 //           vec3 viewDir, UnityLight light, UnityIndirect gi), vec3 BRDF3_Direct, BRDF3_Indirect;
@@ -140,6 +140,12 @@ float PerceptualRoughnessToSpecPower(float perceptualRoughness) {
 float3 Unity_SafeNormalize(float3 inVec) {
     float dp3 = max(PBR_UNITY_SAFE_NORMALIZE_MIN_LENGTH2, dot(inVec, inVec));
     return inVec * rsqrt(dp3);
+}
+
+// max(0, a·b): UnityStandardBRDF.cginc's form for shader target 3.0 and above (below it,
+// saturate; the two agree for unit vectors).
+float DotClamped(float3 a, float3 b) {
+    return max(0.0, dot(a, b));
 }
 
 // What BRDF3 reads from Unity's lookup texture unity_NHxRoughness (.r * LUT_RANGE), as the

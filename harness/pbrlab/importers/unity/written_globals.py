@@ -44,6 +44,12 @@ _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(" + _TYPE + r")[ \t]+(\w+(?:[ \
 _BODY_OPEN = re.compile(r"\)\s*(?::\s*\w+\s*)?\{")
 
 
+def _declared_names(names: str) -> list:
+    """The names of _DECLARED's third group: ``a, b`` or one ``name = initialiser`` (whose
+    commas, ``float3(0, 0, 0)``, are the initialiser's)."""
+    return [names.split("=")[0].strip()] if "=" in names else [n.strip() for n in names.split(",")]
+
+
 def _function_bodies(active: str) -> list:
     out, depth, start = [], 0, None
     for i, ch in enumerate(active):
@@ -64,10 +70,15 @@ def _function_bodies(active: str) -> list:
 
 
 def _written(name: str, body: str) -> bool:
-    """Whether ``body`` assigns to ``name`` (=, op=, ++, --; a member or element of it too)."""
+    """Whether ``body`` assigns to ``name`` (=, op=, ++, --; a member or element of it too), or
+    may: ``name`` passed whole as an argument (``DiffuseAndSpecularFromMetallic(a, m, spec,
+    oneMinusReflectivity)``), which an ``out`` or ``inout`` parameter writes. Telling an ``out``
+    parameter from an ``in`` one takes the callee's signature; a copy the call only reads
+    holds the uniform's value, so copying it changes nothing."""
     target = rf"(?<![\w.])\b{re.escape(name)}\b(?:\s*\.\s*\w+|\s*\[[^\]]*\])*"
     return re.search(target + r"\s*(?:[-+*/%&|^]|<<|>>)?=(?!=)", body) is not None or \
-        re.search(rf"(?:\+\+|--)\s*{target}|{target}\s*(?:\+\+|--)", body) is not None
+        re.search(rf"(?:\+\+|--)\s*{target}|{target}\s*(?:\+\+|--)", body) is not None or \
+        re.search(rf"\w\s*\((?:[^()]*,)?\s*{target}\s*[,)]", body) is not None
 
 
 def copied_written_globals(program: str, active_program: str) -> tuple[str, tuple]:
@@ -80,7 +91,7 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
     for m in _DECLARED.finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
-        for name in (n.split("=")[0].strip() for n in m.group(3).split(",")):
+        for name in _declared_names(m.group(3)):
             if any(_written(name, active_program[s:e]) for s, e in bodies):
                 found.append((m, name, m.group(2)))
     if not found:
@@ -141,7 +152,7 @@ def copied_across_includes(program: str, folder: Path, defines, rewritten: dict,
     for m in _DECLARED.finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
-        declared += [(m, name, m.group(2)) for name in (n.split("=")[0].strip() for n in m.group(3).split(","))
+        declared += [(m, name, m.group(2)) for name in _declared_names(m.group(3))
                      if name not in {k for k, _ in known}]
     stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
     files = []  # (path, text, its active text, its function bodies)
