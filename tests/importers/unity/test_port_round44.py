@@ -63,12 +63,12 @@ def test_a_global_written_through_an_out_parameter(tmp_path, language, monkeypat
     """A global (a uniform to the compilers) passed to an out parameter (hyunxiGit's
     ``DiffuseAndSpecularFromMetallic(..., oneMinusReflectivity)``): FXC's backwards-compatibility
     mode lets the program write it, the value living in that invocation (written_globals); a
-    global with an initialiser's commas beside it (``float3 COLOR_BLACK = float3(0, 0, 0)``) and
-    a literal argument (``max(g, 0)``) are not read as globals. Control: the write through the
+    global with an initialiser's commas beside it (``float3 COLOR_BLACK = float3(0, 0, 0)``) is
+    not read as globals named ``0``, and ``max(g, 0)`` (in parameters) writes nothing. Control: the write through the
     call not seen (the old reading) is refused in both languages (a read-only variable)."""
     body = "            setIt(g); return float4(max(g, 0), COLOR_BLACK.x + 0.25, 0, 1);"
     _assert_colour(tmp_path, _shader(tmp_path, "out_global", body, GLOBAL_BY_OUT_HEAD), language, [0.375, 0.25, 0])
-    monkeypatch.setattr(written_globals, "_written", lambda name, b: False)  # the body has no assignment to g
+    monkeypatch.setattr(written_globals, "_written", lambda name, b, program="": False)  # the body has no assignment to g
     with pytest.raises(PbrlabError):
         _render(tmp_path, _shader(tmp_path, "out_global_old", body, GLOBAL_BY_OUT_HEAD), language)
 
@@ -188,3 +188,68 @@ def test_sample_level_of_a_longer_location(tmp_path, language):
     assert np.all(np.isfinite(longer))
     assert np.abs(longer - drawn("cube_float3", "float3(0, 1, 0)")).max() <= EXACT
     assert np.abs(longer - drawn("cube_down", "float3(0, -1, 0)")).max() > 0.01
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_library_function_given_a_longer_vector(tmp_path, language, monkeypatch):
+    """``Linear01Depth(tex2D(_CameraDepthTexture, uv))`` (seyedmoeinsaadati's ShowDepth): a
+    float4 to UnityCG's float parameter, which FXC cuts to its first component (warning X3206);
+    glslang's HLSL found no overload. Drawn as the ``.r`` form draws it; control: without the
+    cut in the HLSL as written (the old reading of a library function), HLSL is refused."""
+    head = """
+        sampler2D _CameraDepthTexture;"""
+
+    def drawn(name, read, green=0.25):
+        body = f"""
+            return float4(Linear01Depth({read}), {green}, 0.5, 1);"""
+        return _covered_rgb(_render(tmp_path, _shader(tmp_path, name, body, head), language))
+
+    whole = drawn("depth_float4", "tex2D(_CameraDepthTexture, i.uv)")
+    assert np.all(np.isfinite(whole))
+    assert np.abs(whole - drawn("depth_r", "tex2D(_CameraDepthTexture, i.uv).r")).max() <= EXACT
+    if language == "hlsl":
+        monkeypatch.setattr(cg_types._Parser, "fxc_argument", lambda self, a, param: None)
+        with pytest.raises(PbrlabError):
+            drawn("depth_float4_old", "tex2D(_CameraDepthTexture, i.uv)", 0.125)  # another program: none reused
+
+
+GEOMETRY_UINT = """
+Shader "t/geometry_uint" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma geometry geom
+    #pragma fragment frag
+    #include "UnityCG.cginc"
+    struct v2g { float4 pos : SV_POSITION; };
+    struct g2f { float4 pos : SV_POSITION; uint layer : TEXCOORD1; };
+    v2g vert(float4 vertex : POSITION) { v2g o; o.pos = UnityObjectToClipPos(vertex); return o; }
+    [maxvertexcount(3)]
+    void geom(triangle v2g IN[3], inout TriangleStream<g2f> stream) {
+        g2f o;
+        for (int k = 0; k < 3; k++) { o.pos = IN[k].pos; o.layer = uint(3); stream.Append(o); }
+    }
+    float4 frag(g2f i) : SV_Target { return float4(i.layer / 4.0, 0.5, 0.25, 1); }
+    ENDCG
+} } }
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_geometry_stage_passes_a_uint(tmp_path, language, monkeypatch):
+    """A geometry stage's uint output (frettini's shell layers, ``uint layerNum : TEXCOORD1``):
+    flat in both stages (an integer varying is flat in GLSL; the HLSL path's spirv-cross
+    geometry output was plain, and GLSL 3.30 refused to link it to the flat fragment input).
+    The layer, 3, reaches the fragment: 3 / 4. Control: the HLSL path's output left plain is
+    refused (the link error)."""
+    path = tmp_path / "geometry_uint.shader"
+    path.write_text(GEOMETRY_UINT)
+    rgb = _covered_rgb(_render(tmp_path, path, language))
+    assert np.abs(rgb - [0.75, 0.5, 0.25]).max() <= EXACT
+    if language == "hlsl":
+        from pbrlab.importers.unity import geometry_stage
+        renamed = geometry_stage.hlsl_renamed
+        monkeypatch.setattr(geometry_stage, "hlsl_renamed", lambda vf, glsl: renamed(vf, glsl).replace("flat out", "out"))
+        path = tmp_path / "geometry_uint_old.shader"
+        path.write_text(GEOMETRY_UINT.replace("uint(3)", "uint(2)"))  # another program: no compiled one reused
+        with pytest.raises(PbrlabError):
+            _render(tmp_path, path, language)

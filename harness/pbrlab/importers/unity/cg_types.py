@@ -1661,8 +1661,8 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
-                if not self.decl_only and sig not in library().functions.get(fname, ()):  # the program's own (or an include's),
-                    # also beside a library function of its name (Core RP's LinearEyeDepth(d, zParams))
+                if not self.decl_only:  # the program's own, an include's, or the library's
+                    # (Linear01Depth(tex2D(_CameraDepthTexture, uv)): its HLSL twin takes a float too)
                     self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
