@@ -60,7 +60,6 @@ struct pbr_ThinFilm {
 struct pbr_Light {
     color: vec3<f32>,
     dir: vec3<f32>,
-    ndotl: f32,
 }
 
 struct pbr_Indirect {
