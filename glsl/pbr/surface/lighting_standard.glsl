@@ -34,7 +34,8 @@
 // Include:  "pbr/surface/lighting_standard.glsl" (path relative to glsl/)
 // Config macros read: PBR_ENERGY_COMPENSATION (1, the HIGH and MEDIUM tiers' default: compensate
 //           multiple scattering in the environment specular; 0, LOW's: single scattering only);
-//           those of pbr/shading/dispatch.glsl and pbr/ibl/environment_brdf.glsl.
+//           those of pbr/shading/dispatch.glsl and pbr/ibl/environment_brdf.glsl;
+//           PBR_LIGHT_NDOTL (0 default; 1: pbr_Light has Unity's unread ndotl member).
 //           (Unity's own BRDFs, its environment term included, are a model of their own:
 //           PBR_BRDF_MODEL_UNITY, pbr/unity/brdf_unity.glsl.)
 //
@@ -95,9 +96,24 @@
 #define PBR_ENERGY_COMPENSATION 1
 #endif
 
+// PBR_LIGHT_NDOTL 1 gives pbr_Light a third member, float ndotl, which nothing here reads: Unity's
+// UnityLight (pbr/unity/brdf_unity.glsl aliases it to this struct) declares it, deprecated and
+// unread by Unity's own functions (UnityLightingCommon.cginc), and older shaders still assign and
+// read it. The harness sets it for Unity programs; by default the struct keeps two members, so
+// pbr_Light(color, dir) constructs it.
+#ifndef PBR_LIGHT_NDOTL
+#define PBR_LIGHT_NDOTL 0
+#endif
+#if PBR_LIGHT_NDOTL != 0 && PBR_LIGHT_NDOTL != 1
+#error PBR_LIGHT_NDOTL: unknown value (0 or 1)
+#endif
+
 struct pbr_Light {
     vec3 color;
     vec3 dir;
+#if PBR_LIGHT_NDOTL != 0
+    float ndotl;
+#endif
 };
 
 struct pbr_Indirect {

@@ -37,6 +37,15 @@ float4 pbrlab_lit(float n_dot_l, float n_dot_h, float m) {
     return float4(1.0, max(n_dot_l, 0.0), (n_dot_l < 0.0 || n_dot_h < 0.0) ? 0.0 : pow(n_dot_h, m), 1.0);
 }
 #define lit pbrlab_lit
+// HLSL's `*` of two matrices multiplies component by component (Microsoft's HLSL reference,
+// "Per-component math"); glslang 11.x lowers it to the linear-algebra product, so the type pass
+// (cg_types.fxc_conversions) writes a matrix `a * b` as this call, one per size.
+#define PBRLAB_MATRIX_COMP_MULT(R, C) \
+    float##R##x##C pbrlab_matrix_comp_mult(float##R##x##C a, float##R##x##C b) { \
+        float##R##x##C m; [unroll] for (int i = 0; i < R; i++) { m[i] = a[i] * b[i]; } return m; }
+PBRLAB_MATRIX_COMP_MULT(2, 2) PBRLAB_MATRIX_COMP_MULT(2, 3) PBRLAB_MATRIX_COMP_MULT(2, 4)
+PBRLAB_MATRIX_COMP_MULT(3, 2) PBRLAB_MATRIX_COMP_MULT(3, 3) PBRLAB_MATRIX_COMP_MULT(3, 4)
+PBRLAB_MATRIX_COMP_MULT(4, 2) PBRLAB_MATRIX_COMP_MULT(4, 3) PBRLAB_MATRIX_COMP_MULT(4, 4)
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,

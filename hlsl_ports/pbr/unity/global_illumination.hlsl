@@ -1,7 +1,7 @@
 // pbr/unity/global_illumination.hlsl: Unity's global-illumination inputs and the _GI half of
 // its lighting models (UnityGlobalIllumination.cginc, UnityPBSLighting.cginc, Lighting.cginc).
 //
-// Provides: struct UnityGIInput { light, worldPos, worldViewDir, atten, ambient };
+// Provides: struct UnityGIInput { light, worldPos, worldViewDir, atten, ambient, probeHDR[2] };
 //           struct Unity_GlossyEnvironmentData { roughness (perceptual), reflUVW };
 //           Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(float smoothness,
 //               vec3 worldViewDir, vec3 normal, vec3 fresnel0)
@@ -50,6 +50,9 @@ struct UnityGIInput {
     float3 worldViewDir;  // unit, towards the camera
     float atten;        // the light's shadow and falloff factor
     float3 ambient;       // vertex ambient (added to ShadeSH9)
+    float4 probeHDR[2];   // the reflection probes' HDR decode (unity_SpecCube0_HDR, ..1_HDR):
+                        // UnityGlobalIllumination.cginc's member, which shaders fill; unread
+                        // here (the environment is the caller's PBR_UNITY_GLOSSY_ENVIRONMENT)
 };
 
 struct Unity_GlossyEnvironmentData {

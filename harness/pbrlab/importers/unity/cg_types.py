@@ -1246,6 +1246,17 @@ class _Parser:
                         self.truncate(rhs, lhs.t.dim)
                     elif rhs.t.base == "bool" and lhs.t.base != "bool":  # x *= a < b: HLSL takes 0 or 1
                         self.coerce(rhs, Type(lhs.t.base, rhs.t.dim))
+                if t.text in ("+=", "-=", "*=", "/=") and lhs.t.base in ("int", "uint") and rhs.t.base == "float" \
+                        and lhs.t.numeric and not lhs.t.cols and rhs.t.numeric and not rhs.t.cols \
+                        and _PLAIN.fullmatch(self.text[lhs.s:lhs.e]) and not self.decl_only:
+                    # ``steps *= scale`` (an int and a float): HLSL computes in float and
+                    # converts the result back to int (FXC's warning X3205, conversion from a
+                    # larger type, truncating toward 0); GLSL refuses the float operand, and
+                    # glslang's HLSL converts the operand to int first (5 *= 0.75 gives 0)
+                    for edits in (self.edits, self.fxc_edits):
+                        edits.replace(t.s, t.e, f"= {lhs.t.cg()}({self.text[lhs.s:lhs.e]} {t.text[0]} (")
+                        edits.close(rhs.e, "))")
+                    return E(lhs.s, rhs.e, lhs.t, False)
                 if t.text != "=" and lhs.t.base == "uint" and rhs.t.base == "int" and rhs.t.numeric:
                     # ``u %= 8`` (a uint2 and an int): HLSL converts the int operand to uint, as
                     # in ``u % 8`` (combine); GLSL 330 takes one signedness only
@@ -1304,6 +1315,11 @@ class _Parser:
                 return Type(_base(a, b), b.dim, b.cols)
             if b.scalar:
                 return Type(_base(a, b), a.dim, a.cols)
+            if a.cols and b.cols:
+                # FXC cuts the larger matrix to the smaller's rows and columns (warning X3206:
+                # Microsoft's HLSL reference, "Operators", binary casts: "the size of the
+                # result is the smaller of the two")
+                return Type(_base(a, b), min(a.dim, b.dim), min(a.cols, b.cols))
             return None
         n = b.dim if a.dim == 1 else a.dim if b.dim == 1 else min(a.dim, b.dim)
         return Type(_base(a, b), n)
@@ -1341,6 +1357,8 @@ class _Parser:
         t = self.common(a.t, b.t)
         if t is None:
             return E(*span, None, False)
+        if a.t.cols and b.t.cols and o in ("*", "+", "-", "/"):
+            return self.matrix_componentwise(a, op, b, t)
         if not t.cols and t.dim > 1:
             for x in (a, b):
                 if x.t.dim > t.dim:
@@ -1375,6 +1393,28 @@ class _Parser:
                 return E(*span, t, True)
             return E(*span, None, False)
         return E(*span, t, False)
+
+    def matrix_componentwise(self, a: E, op: Tok, b: E, t: Type) -> E:
+        """HLSL's arithmetic of two matrices, component by component, each first cut to ``t``
+        (the smaller's size, as FXC does: common); GLSL's ``*`` of matrices is their linear
+        algebra product, its ``matrixCompMult`` HLSL's ``*`` (GLSL 3.30, section 5.9)."""
+        if self.decl_only:
+            return E(a.s, b.e, t, False)
+        for x in (a, b):
+            if (x.t.dim, x.t.cols) != (t.dim, t.cols):
+                self.wrap(x, t.cg())       # GLSL's matrix-from-matrix: the upper-left block
+                self.fxc_edits.open(x.s, f"(({t.cg()})(")   # glslang's HLSL needs the cast too
+                self.fxc_edits.close(x.e, "))")
+        if op.text != "*":
+            return E(a.s, b.e, t, False)
+        # glslang 11's HLSL front end also multiplies two matrices as linear algebra (a 3x3 pair
+        # drew the product): the HLSL as written calls unity_hlsl_support.hlsl's componentwise one
+        for edits, name in ((self.edits, "matrixCompMult("), (self.fxc_edits, "pbrlab_matrix_comp_mult(")):
+            edits.open(a.s, name)
+            gap = self.text[a.e:op.s]
+            edits.replace(op.s if "\n" in gap else a.e, op.e, ",")
+            edits.close(b.e, ")")
+        return E(a.s, b.e, t, True)
 
     def operator_to_comma(self, a: E, op: Tok):
         """``a < b`` -> ``a, b`` inside the call that replaces the operator."""
@@ -1615,6 +1655,17 @@ class _Parser:
             fname = OWN_PREFIX + fname
         elif fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
+        if fname == "mul" and len(args) == 2 and all(a.t is not None and a.t.vector for a in args):
+            # HLSL's mul of two vectors is their inner product (Microsoft's HLSL reference,
+            # "mul": vector x vector -> scalar, "x and y must be the same size"; FXC cuts the
+            # longer with warning X3206, as in any binary operation); GLSL's dot spells it
+            n = min(a.t.dim for a in args)
+            if not self.decl_only:
+                self.edits.replace(name.s, name.e, "dot")
+                for a in args:
+                    if a.t.dim > n:
+                        self.truncate(a, n)
+            return E(*span, Type("float"), True)
         if fname == "mul" and len(args) == 2:
             self.mul_vector_truncated(*args)
             return E(*span, _mul_type(args[0].t, args[1].t), True)
@@ -1632,8 +1683,8 @@ class _Parser:
             return E(*span, rets.pop() if len(rets) == 1 else None, True)
         for a, p in zip(args, sig.params):
             if p.qual == "in":
-                if not self.decl_only and sig not in library().functions.get(fname, ()):  # the program's own (or an include's),
-                    # also beside a library function of its name (Core RP's LinearEyeDepth(d, zParams))
+                if not self.decl_only:  # the program's own, an include's, or the library's
+                    # (Linear01Depth(tex2D(_CameraDepthTexture, uv)): its HLSL twin takes a float too)
                     self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
@@ -1747,6 +1798,13 @@ class _Parser:
             before, after = matrix_of_scalar(target)
             self.edits.open(e.s, before)
             self.edits.close(e.e, after)
+            return
+        if target.cols and src.vector and src.dim == target.dim * target.cols and not self.decl_only:
+            # a vector to a matrix of as many components fills it row by row (Microsoft's HLSL
+            # reference, "Casting and conversions": vector-to-matrix, "the vector must be the
+            # same size as the matrix"); GLSL's constructor fills columns: transposed
+            self.edits.open(e.s, f"transpose({Type(target.base, target.cols, target.dim).cg()}(")
+            self.edits.close(e.e, "))")
             return
         if target.cols or src.cols:
             if target.cols and src.cols and (src.dim, src.cols) != (target.dim, target.cols) \

@@ -269,6 +269,10 @@ def _defines(defines: dict) -> str:
     return "\n".join(f"#define {k} {v}".rstrip() for k, v in sorted(defines.items()))
 
 
+# The library's configuration for a Unity program: UnityLight (pbr_Light) with Unity's deprecated
+# member ndotl, which older shaders assign and read (pbr/surface/lighting_standard.glsl).
+UNITY_LIBRARY_DEFINES = {"PBR_LIGHT_NDOTL": 1}
+
 # HLSL's arrays of arrays (``float w[2][3]``; the type pass keeps them, cg_types.array_suffix):
 # GLSL 4.30's, which GLSL 3.30 takes with this extension (every Mesa driver has it).
 ARRAYS_OF_ARRAYS = "#extension GL_ARB_arrays_of_arrays : enable"
@@ -280,7 +284,7 @@ def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     suffix = SUFFIX[language]
     head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
     stage = {"PBRLAB_UNITY_VERTEX_STAGE": 1, "PBR_UNITY_VERTEX_STAGE": 1} if vertex_stage else {}
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **stage})]
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES, **stage})]
     if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
         head.append("#extension GL_ARB_sample_shading : require")
     head += [f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
@@ -295,7 +299,7 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     (the CGPROGRAM for HLSL, its port for GLSL), ``display`` its file name in messages."""
     suffix = SUFFIX[language]
     head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1}),
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES}),
              f'#include "scene_shading{suffix}"',
              '#include "unity_surface.inc"']
     if language == "glsl":
@@ -410,7 +414,7 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     suffix = SUFFIX[language]
     v = shader.vertex
     head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, "PBRLAB_UNITY_VERTEX_STAGE": 1,
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES, "PBRLAB_UNITY_VERTEX_STAGE": 1,
                        "PBR_UNITY_VERTEX_STAGE": 1}),
              f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')

@@ -450,6 +450,8 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
             return fit("pbrlab_frag_position", 4, n, language)
         if semantic in ("VFACE", "SV_ISFRONTFACE"):
             return "pbrlab_front_facing" if kind.startswith("bool") else "(pbrlab_front_facing ? 1.0 : -1.0)"
+        if semantic == "SV_PRIMITIVEID":  # the triangle's index in the draw (GLSL's gl_PrimitiveID)
+            return f"{'int' if kind.startswith('int') else 'uint'}(pbrlab_primitive_id)"
         if semantic in have and _MATRIX.fullmatch(have[semantic]):
             if _MATRIX.fullmatch(kind) is None or _MATRIX.fullmatch(kind).groups() != _MATRIX.fullmatch(have[semantic]).groups():
                 raise UnityShaderError(f"{where}: the fragment reads {semantic} as {kind}, the vertex stage "
@@ -500,8 +502,10 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
     body += [f"    {vec4} pbrlab_c = {c};",
              f"    pbrlab_radiance = {vec4}(pbrlab_target_radiance(pbrlab_c.rgb), {alpha});"]
     lines = []
+    reads_primitive_id = any(canonical(semantic) == "SV_PRIMITIVEID" for _, _, _, semantic in vf.fragment_params)
     if language == "hlsl":
         params = ["float4 pbrlab_frag_position : SV_Position", "bool pbrlab_front_facing : SV_IsFrontFace"]
+        params += ["uint pbrlab_primitive_id : SV_PrimitiveID"] * reads_primitive_id
         params += [f"{'nointerpolation ' if _flat(kind, s, vf) and not _flat(kind) else ''}{kind} {name} : TEXCOORD{i}"
                    for i, (s, name, kind, _) in enumerate(slots)]
         params.append("out float4 pbrlab_radiance : SV_Target0")
@@ -515,6 +519,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         lines += ["out vec4 pbrlab_radiance;", "void main() {",
                   f"    vec4 pbrlab_frag_position = vec4(gl_FragCoord.xyz, {_CLIP_W.replace('pbrlab_frag_position', 'gl_FragCoord')});",
                   "    bool pbrlab_front_facing = gl_FrontFacing;"]
+        lines += ["    int pbrlab_primitive_id = gl_PrimitiveID;"] * reads_primitive_id
         return _members_as_ported("\n".join(lines + body + ["}"]) + "\n")
     return "\n".join(lines + body + ["}"]) + "\n"
 

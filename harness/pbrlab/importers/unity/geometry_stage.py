@@ -156,6 +156,11 @@ def hlsl_renamed(vf, glsl: str) -> str:
     if unlinked:  # spirv-cross named a varying otherwise than <param>_<member>: say so, not a link error
         raise UnityShaderError(f"{g.where}: {g.name}(): pbrlab cannot link the geometry stage's "
                                f"{', '.join(unlinked)} to the vertex or fragment stage")
+    # an integer output flat, as the fragment stage reads it (generate_pass._flat): SPIR-V asks Flat
+    # of a fragment input only, so spirv-cross writes the geometry output plain, and GLSL 3.30
+    # links a stage pair only with the same interpolation qualifiers (section 4.3.4)
+    glsl = re.sub(r"^((?:layout\([^)]*\)\s*)?)(out\s+(?:u?int|[iu]vec[234])\s+pbrlab_gvary_)", r"\1flat \2", glsl,
+                  flags=re.M)
     instance = re.search(r"uniform _Global (\w+);", glsl)
     if instance:
         glsl = re.sub(r"\b_Global\b", "_GlobalGeometry", glsl)

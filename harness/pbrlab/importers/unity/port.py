@@ -221,12 +221,14 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURE3D_PARAM": lambda a: f"sampler3D {a[0]}, int {a[1]}",
     "TEXTURE3D_ARGS": lambda a: f"{a[0]}, {a[1]}",
     "SAMPLE_TEXTURE3D": lambda a: f"tex3D({a[0]}, {a[2]})",
-    "SAMPLE_TEXTURE3D_LOD": lambda a: f"tex3Dlod({a[0]}, float4({a[2]}, {a[3]}))",
+    "SAMPLE_TEXTURE3D_LOD": lambda a: f"tex3Dlod({a[0]}, float4(({a[2]}).xyz, {a[3]}))",
+    # (a *_LOD / *_BIAS location packed with its level is cut to the texture's dimension
+    # first: FXC's SampleLevel passes a longer location's first components, warning X3206)
     # the _X forms: an XR eye's texture array in URP, one 2D texture without XR (as here)
     "TEXTURE2D_X": lambda a: f"sampler2D {a[0]}",
     "TEXTURE2D_X_FLOAT": lambda a: f"sampler2D {a[0]}",
     "SAMPLE_TEXTURE2D_X": lambda a: f"tex2D({a[0]}, {a[2]})",
-    "SAMPLE_TEXTURE2D_X_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_X_LOD": lambda a: f"tex2Dlod({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]}))",
     # 2D texture arrays (the Unity prelude's UNITY_ .._TEX2DARRAY forms: the layer index as the
     # coordinate's z; texture_arrays binds the array) and shadow-map textures passed on with their
     # comparison sampler (a GL texture's own sampler: an unused int, as SAMPLER's)
@@ -245,17 +247,17 @@ _SRP_TEXTURE_MACROS = {
     "LOAD_TEXTURE2D_X": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, 0))",
     "LOAD_TEXTURE2D_X_LOD": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, {a[2]}))",
     "SAMPLE_TEXTURE2D": lambda a: f"tex2D({a[0]}, {a[2]})",
-    "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
-    "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4({a[2]}, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_LOD": lambda a: f"tex2Dlod({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]}))",
+    "SAMPLE_TEXTURE2D_BIAS": lambda a: f"tex2Dbias({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]}))",
     "SAMPLE_TEXTURE2D_GRAD": lambda a: f"tex2Dgrad({a[0]}, {a[2]}, {a[3]}, {a[4]})",
     # Core RP's depth reads (three and four arguments; the built-in's two-argument forms are
     # not these, and are left to the Unity prelude's macros by the argument count below)
     "SAMPLE_DEPTH_TEXTURE": lambda a: f"tex2D({a[0]}, {a[2]}).r",
-    "SAMPLE_DEPTH_TEXTURE_LOD": lambda a: f"tex2Dlod({a[0]}, float4({a[2]}, 0.0, {a[3]})).r",
+    "SAMPLE_DEPTH_TEXTURE_LOD": lambda a: f"tex2Dlod({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]})).r",
     "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
                                      else f"texCUBE({a[0]}, {a[2]})"),
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
-                                         else f"texCUBElod({a[0]}, float4({a[2]}, {a[3]}))"),
+                                         else f"texCUBElod({a[0]}, float4(({a[2]}).xyz, {a[3]}))"),
 }
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 

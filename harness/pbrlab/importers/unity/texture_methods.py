@@ -47,17 +47,19 @@ def _call(kind: str, method: str, texture: str, args: list):
             return f"pbr_unity_load({texture}, {args[0]})"
         if method == "Sample" and len(args) == 2:
             return f"tex2D({texture}, {args[1]})"
-        if method == "SampleLevel" and len(args) == 3:
-            return f"tex2Dlod({texture}, float4({args[1]}, 0.0, {args[2]}))"
+        if method == "SampleLevel" and len(args) == 3:  # a longer location cut to its first
+            # two, as FXC passes it (warning X3206, implicit truncation of a vector type)
+            return f"tex2Dlod({texture}, float4(({args[1]}).xy, 0.0, {args[2]}))"
         if method == "SampleBias" and len(args) == 3:
-            return f"tex2Dbias({texture}, float4({args[1]}, 0.0, {args[2]}))"
+            return f"tex2Dbias({texture}, float4(({args[1]}).xy, 0.0, {args[2]}))"
         if method == "SampleGrad" and len(args) == 4:
             return f"tex2Dgrad({texture}, {args[1]}, {args[2]}, {args[3]})"
     if kind == "TextureCube":
         if method == "Sample" and len(args) == 2:
             return f"texCUBE({texture}, {args[1]})"
-        if method == "SampleLevel" and len(args) == 3:
-            return f"texCUBElod({texture}, float4({args[1]}, {args[2]}))"
+        if method == "SampleLevel" and len(args) == 3:  # a longer location cut to its first
+            # three, as FXC passes it (warning X3206, implicit truncation of a vector type)
+            return f"texCUBElod({texture}, float4(({args[1]}).xyz, {args[2]}))"
     return None  # another method or form: left for the compiler to name
 
 

@@ -28,7 +28,8 @@ from pathlib import Path
 
 from .conditionals import active_text
 from .engine_inputs import _outside_braces
-from .source_text import CGINC, PACKAGE_STAND_INS, _read_include, blank_comments, included_files
+from .cg_types import library
+from .source_text import CGINC, PACKAGE_STAND_INS, _read_include, blank_comments, call_arguments, included_files
 
 PREFIX = "pbrlab_written"
 
@@ -42,6 +43,12 @@ _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(" + _TYPE + r")[ \t]+(\w+(?:[ \
                        re.M)
 # a function body: the brace after a parameter list (and an optional ": SEMANTIC")
 _BODY_OPEN = re.compile(r"\)\s*(?::\s*\w+\s*)?\{")
+
+
+def _declared_names(names: str) -> list:
+    """The names of _DECLARED's third group: ``a, b`` or one ``name = initialiser`` (whose
+    commas, ``float3(0, 0, 0)``, are the initialiser's)."""
+    return [names.split("=")[0].strip()] if "=" in names else [n.strip() for n in names.split(",")]
 
 
 def _function_bodies(active: str) -> list:
@@ -63,11 +70,35 @@ def _function_bodies(active: str) -> list:
     return out
 
 
-def _written(name: str, body: str) -> bool:
-    """Whether ``body`` assigns to ``name`` (=, op=, ++, --; a member or element of it too)."""
+def _written(name: str, body: str, program: str = "") -> bool:
+    """Whether ``body`` assigns to ``name`` (=, op=, ++, --; a member or element of it too), or
+    passes it to an ``out`` or ``inout`` parameter (``DiffuseAndSpecularFromMetallic(a, m, spec,
+    oneMinusReflectivity)``) of a function of ``program`` (the active text holding ``body``) or
+    of the library the port includes (cg_types.library)."""
     target = rf"(?<![\w.])\b{re.escape(name)}\b(?:\s*\.\s*\w+|\s*\[[^\]]*\])*"
-    return re.search(target + r"\s*(?:[-+*/%&|^]|<<|>>)?=(?!=)", body) is not None or \
-        re.search(rf"(?:\+\+|--)\s*{target}|{target}\s*(?:\+\+|--)", body) is not None
+    if re.search(target + r"\s*(?:[-+*/%&|^]|<<|>>)?=(?!=)", body) is not None or \
+            re.search(rf"(?:\+\+|--)\s*{target}|{target}\s*(?:\+\+|--)", body) is not None:
+        return True
+    for call in re.finditer(rf"\b([A-Za-z_]\w*)\s*\((?=(?:[^()]*,)?\s*{target}\s*[,)])", body):
+        found = call_arguments(body, call.end() - 1)
+        if found is None:
+            continue
+        whole = [i for i, a in enumerate(found[0]) if re.fullmatch(r"\s*" + target + r"\s*", a)]
+        if set(whole) & _out_positions(call.group(1), len(found[0]), program):
+            return True
+    return False
+
+
+def _out_positions(function: str, count: int, program: str) -> set:
+    """The argument positions an ``out`` or ``inout`` parameter takes in any ``count``-parameter
+    definition of ``function`` in ``program`` or the port's library."""
+    out = {i for sig in library().functions.get(function, ()) if len(sig.params) == count
+           for i, p in enumerate(sig.params) if p.qual in ("out", "inout")}
+    for m in re.finditer(rf"\b{re.escape(function)}\s*\(([^()]*)\)\s*(?::\s*\w+\s*)?\{{", program):
+        params = m.group(1).split(",")
+        if len(params) == count:
+            out |= {i for i, p in enumerate(params) if re.match(r"\s*(?:out|inout)\b", p)}
+    return out
 
 
 def copied_written_globals(program: str, active_program: str) -> tuple[str, tuple]:
@@ -80,8 +111,8 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
     for m in _DECLARED.finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
-        for name in (n.split("=")[0].strip() for n in m.group(3).split(",")):
-            if any(_written(name, active_program[s:e]) for s, e in bodies):
+        for name in _declared_names(m.group(3)):
+            if any(_written(name, active_program[s:e], active_program) for s, e in bodies):
                 found.append((m, name, m.group(2)))
     if not found:
         return program, ()
@@ -141,7 +172,7 @@ def copied_across_includes(program: str, folder: Path, defines, rewritten: dict,
     for m in _DECLARED.finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
-        declared += [(m, name, m.group(2)) for name in (n.split("=")[0].strip() for n in m.group(3).split(","))
+        declared += [(m, name, m.group(2)) for name in _declared_names(m.group(3))
                      if name not in {k for k, _ in known}]
     stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
     files = []  # (path, text, its active text, its function bodies)
@@ -152,7 +183,8 @@ def copied_across_includes(program: str, folder: Path, defines, rewritten: dict,
         if text is not None:
             active = active_text(blank_comments(text), defines)
             files.append((path, text, active, _function_bodies(active)))
-    found = [d for d in declared if any(_written(d[1], active[s:e]) for _, _, active, bodies in files for s, e in bodies)]
+    found = [d for d in declared
+             if any(_written(d[1], active[s:e], active) for _, _, active, bodies in files for s, e in bodies)]
     if not found:
         return program, rewritten, ()
     out = dict(rewritten)
