@@ -88,6 +88,19 @@ def matching_paren(text: str, open_index: int) -> int:
     return matching_brace(text, open_index, "(", ")")
 
 
+# A global declaration's name. A line's leading blanks are [^\S\n]*, not \s*: under re.M, \s* at
+# each of K empty lines in a row (a function body top_level blanked, the ShaderLab between a
+# pass and its file's CGINCLUDE) runs over all the rest of them, O(K^2) a text; the names found
+# are the same (a match starting lines earlier starts again at its first word's line).
+_GLOBAL_DECLARATION = re.compile(r"^[^\S\n]*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT
+                                 + r")\s*(?:=[^;]*)?;", re.M)
+
+
+def declared_globals(masked: str) -> frozenset:
+    """The names of the global variables ``masked`` (comments blanked) declares."""
+    return frozenset(_GLOBAL_DECLARATION.findall(top_level(masked)))
+
+
 def top_level(masked: str) -> str:
     """Only the text at brace depth 0 (global declarations)."""
     out, depth = [], 0
