@@ -25,7 +25,7 @@ from .written_globals import copied_across_includes, copied_in_includes, copied_
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
-                          matching_brace, resolve_included, respelled, top_level, declared_globals)
+                          matching_brace, resolve_included, respelled, declared_globals)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 # A stage whose text is built apart from the vertex and fragment stages' (geometry_stage.py):
