@@ -83,11 +83,12 @@ def scene_for(shader: Path) -> dict:
     the camera's colour) is shown over the same sphere in a pbrlab material (BACKDROP), the scene
     its pass reads."""
     material = {"surface": str(shader)}
-    if _reads_lightmap(shader):
+    read = _read(shader)
+    if _reads_lightmap(read):
         material["lightmap"] = dict(LIGHTMAP)
-    if _reads_lightmap(shader, realtime=True):
+    if _reads_lightmap(read, realtime=True):
         material["dynamic_lightmap"] = dict(DYNAMIC_LIGHTMAP)
-    backdrop = _draws_fullscreen(shader)
+    backdrop = _draws_fullscreen(read)
     return {
         "camera": {"position": [0.0, 0.0, 3.2], "target": [0.0, 0.0, 0.0], "fov_y_deg": 40,
                    "size": list(SIZE)},
@@ -107,33 +108,37 @@ def scene_for(shader: Path) -> dict:
 BACKDROP = {"albedo": [0.8, 0.5, 0.3], "smoothness": 0.5}
 
 
-def _draws_fullscreen(shader: Path) -> bool:
-    """Whether ``shader`` draws a full-screen pass (False for a shader the reader refuses)."""
+def _read(shader: Path):
+    """(``shader`` as the reader reads it in its pipeline, whether that is URP), or None for
+    a file that is no ``.shader`` or one the reader refuses (its render says why). Read once
+    for the questions scene_for asks: a read parses every pass, seconds for hundreds of them."""
     from ..importers.unity import BUILTIN, URP, read_shader
-    from ..importers.unity.fullscreen_pass import is_fullscreen
     from ..importers.urp import material as urp
     if Path(shader).suffix != ".shader":
-        return False
+        return None
+    srp = urp.reads(Path(shader))
     try:
-        return any(is_fullscreen(p) for p in read_shader(Path(shader), URP if urp.reads(Path(shader)) else BUILTIN).passes)
+        return read_shader(Path(shader), URP if srp else BUILTIN), srp
     except PbrlabError:
-        return False
+        return None
 
 
-def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
-    """Whether ``shader`` (a Unity .shader read without a lightmap) draws a vertex/fragment
-    program that reads the object's lightmap (with ``realtime``, its realtime GI lightmap); False
-    for anything else, and for a shader the reader refuses (its render says why)."""
-    from ..importers.unity import BUILTIN, read_shader
+def _draws_fullscreen(read) -> bool:
+    """Whether a shader (``_read``'s answer) draws a full-screen pass."""
+    from ..importers.unity.fullscreen_pass import is_fullscreen
+    return read is not None and any(is_fullscreen(p) for p in read[0].passes)
+
+
+def _reads_lightmap(read, realtime: bool = False) -> bool:
+    """Whether a shader (``_read``'s answer: a Unity .shader read without a lightmap) draws a
+    vertex/fragment program that reads the object's lightmap (with ``realtime``, its realtime
+    GI lightmap); False for anything else: a URP shader gets no supplied lightmap, and a shader
+    the reader refuses none (its render says why)."""
     from ..importers.unity.dynamic_lightmaps import needs_dynamic_lightmap
     from ..importers.unity.lightmaps import needs_lightmap
-    from ..importers.urp import material as urp
-    if Path(shader).suffix != ".shader" or urp.reads(Path(shader)):  # a URP shader: no supplied lightmap
+    if read is None or read[1]:
         return False
-    try:
-        return (needs_dynamic_lightmap if realtime else needs_lightmap)(read_shader(Path(shader), BUILTIN))
-    except PbrlabError:
-        return False
+    return (needs_dynamic_lightmap if realtime else needs_lightmap)(read[0])
 
 
 def _messages(caught) -> list:

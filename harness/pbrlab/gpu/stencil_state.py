@@ -16,7 +16,16 @@ of the operations are GL's, lower case (``lequal``, ``incr_wrap``).
 
 ``apply`` keeps the state it last set on each context and calls GL only when it changes: a
 render without a stencil state (every scene but a Unity pass's Stencil block) makes no
-stencil call at all, and its image is what it was before the buffer existed.
+stencil call at all, and its image is what it was before the buffer existed. The kept state
+holds because this module is the only writer of a context's stencil state: moderngl (5.x) has
+no stencil call, and no other pbrlab module makes one (grep glStencil, 0x0B90); the key is the
+moderngl Context object, one per GL context (gl.create_context), so a context reused across
+renders keeps its true state and a released one drops out. Code outside pbrlab that changes
+the stencil state of pbrlab's context behind it must call ``forget(ctx)``. The state is kept
+only once every call is made: a call that raises leaves it unknown, set in full next time.
+The renderer turns the test off after its draws even when one raises (renderer._draw_objects),
+so a refused pass does not leave a Stencil block's test on for the next user of the context
+(the pyrender cross-check draws into a depth-stencil target without clearing the state).
 """
 
 from __future__ import annotations
@@ -96,6 +105,7 @@ class _ContextStencil:
 
 
 _per_context: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_UNKNOWN = object()  # a state no StencilState equals: the next apply sets every value
 
 
 def _of(ctx) -> _ContextStencil:
@@ -110,18 +120,24 @@ def apply(ctx, state: StencilState | None) -> None:
     current = _of(ctx)
     if state == current.state:
         return
+    current.state = _UNKNOWN  # until every call below is made (a driver without one raises)
     if state is None:
         ctx.disable_direct(_GL_STENCIL_TEST)
-        state = StencilState()  # GL's initial values (section 4.1.5, last paragraphs)
-        current.state = None
     else:
         ctx.enable_direct(_GL_STENCIL_TEST)
-        current.state = state
-    for face, side in ((_GL_FRONT, state.front), (_GL_BACK, state.back)):
-        current.glStencilFuncSeparate(face, _COMPARE[side.compare], state.ref, state.read_mask)
+    values = state or StencilState()  # GL's initial values (section 4.1.5, last paragraphs)
+    for face, side in ((_GL_FRONT, values.front), (_GL_BACK, values.back)):
+        current.glStencilFuncSeparate(face, _COMPARE[side.compare], values.ref, values.read_mask)
         current.glStencilOpSeparate(face, _OPERATIONS[side.fail_op], _OPERATIONS[side.depth_fail_op],
                                     _OPERATIONS[side.pass_op])
-    current.glStencilMask(state.write_mask)
+    current.glStencilMask(values.write_mask)
+    current.state = state
+
+
+def forget(ctx) -> None:
+    """Drop the state kept for ``ctx``: the next ``apply`` sets every value (for code that
+    changed the context's stencil state without ``apply``)."""
+    _of(ctx).state = _UNKNOWN
 
 
 def clear(ctx) -> None:

@@ -467,27 +467,31 @@ def _draw_objects(ctx, hdr, objects, draw) -> int:
     call: instanced_draws.py)."""
     scene = draw.scene
     draw_calls = 0
-    for batch in instanced_draws.batches(objects, lambda o: _instanceable(scene.materials[o.material])):
-        obj = batch[0]
-        material = scene.materials[obj.material]
-        source = source_of(material)
-        defines = {**draw.plan.defines[obj.material], **source.defines(material)}
-        # the camera's textures (camera_textures.py) are bound as a grab's, by name
-        grabbed = draw.resources.camera_textures.bound(source) if draw.resources.camera_textures else {}
-        for material_pass in source.passes(material):
-            if material_pass.grab is not None:  # what is drawn so far, for the passes after it
-                grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder,
-                                                    getattr(material_pass, "clamp_to_edge", False))
-                continue
-            for keyed, state in material_pass.draws(defines):
-                traced = obj.sphere is not None and material_pass.traces_spheres
-                _apply_state(ctx, hdr, state, traced)
-                draw_calls += 1
-                if traced:
-                    _draw_sphere(ctx, hdr, obj, material, material_pass, keyed, draw, grabbed)
-                else:  # meshes, and spheres whose pass moves vertices (tessellated)
-                    _draw_mesh(ctx, obj, material, material_pass, keyed, state, draw, grabbed, batch)
-    stencil_state.apply(ctx, None)  # the test off again: what follows (grabs, the resolve) is not a pass's
+    try:
+        for batch in instanced_draws.batches(objects, lambda o: _instanceable(scene.materials[o.material])):
+            obj = batch[0]
+            material = scene.materials[obj.material]
+            source = source_of(material)
+            defines = {**draw.plan.defines[obj.material], **source.defines(material)}
+            # the camera's textures (camera_textures.py) are bound as a grab's, by name
+            grabbed = draw.resources.camera_textures.bound(source) if draw.resources.camera_textures else {}
+            for material_pass in source.passes(material):
+                if material_pass.grab is not None:  # what is drawn so far, for the passes after it
+                    grabbed[material_pass.grab] = _grab(ctx, hdr, draw.grab_holder,
+                                                        getattr(material_pass, "clamp_to_edge", False))
+                    continue
+                for keyed, state in material_pass.draws(defines):
+                    traced = obj.sphere is not None and material_pass.traces_spheres
+                    _apply_state(ctx, hdr, state, traced)
+                    draw_calls += 1
+                    if traced:
+                        _draw_sphere(ctx, hdr, obj, material, material_pass, keyed, draw, grabbed)
+                    else:  # meshes, and spheres whose pass moves vertices (tessellated)
+                        _draw_mesh(ctx, obj, material, material_pass, keyed, state, draw, grabbed, batch)
+    finally:
+        # the test off again: what follows (grabs, the resolve) is not a pass's; and after a
+        # draw that raised (a refused program), nothing else that uses the context gets it
+        stencil_state.apply(ctx, None)
     return draw_calls
 
 

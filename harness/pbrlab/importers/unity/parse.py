@@ -31,7 +31,7 @@ from .stencil_block import draws_nothing_alone, read_stencil
 from .written_globals import copied_written_globals
 from .source_text import (IDENT, PORT_MARKER, UnityIncludeRefusal, UnityShaderError, blank_comments,
                           check_refusals, component_count, included_text, line_of, matching_brace, read_source,
-                          top_level)
+                          top_level, declared_globals)
 
 FLOAT32_MAX = 3.4028234663852886e38
 
@@ -478,8 +478,7 @@ def parse_program(program: str, path: Path, first_line: int = 1, shader: M.Surfa
                 f"{where(im.start())}: Input.{member} is not a name Unity fills (uv_<Texture>, "
                 f"uv2_<Texture>, {', '.join(M.FILLED_INPUTS)}, INTERNAL_DATA) and no vertex: "
                 "function writes it")
-    shader.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
-                                           r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
+    shader.declared = declared_globals(everything)
     shader.light_keywords = tests_light_keywords(everything)
     if pragma.model in M.LAYERED_MODELS:
         # the layers whose fields it writes are compiled in (surface_layers.py)

@@ -25,7 +25,7 @@ from .written_globals import copied_across_includes, copied_in_includes, copied_
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
                           included_text, line_of,
-                          matching_brace, resolve_included, respelled, top_level)
+                          matching_brace, resolve_included, respelled, declared_globals)
 
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 _STAGES = ("vertex", "fragment", "geometry", "hull", "domain")
@@ -275,6 +275,5 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
         fragment_return_semantic=found["fragment"][2], structs=structs, geometry=geometry, tessellation=tessellation,
         engine_filled=filled,
         written_globals=written, rewritten_includes=rewritten)
-    vf.declared = frozenset(re.findall(r"^\s*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT +
-                                       r")\s*(?:=[^;]*)?;", top_level(everything), re.M))
+    vf.declared = declared_globals(everything)
     return vf

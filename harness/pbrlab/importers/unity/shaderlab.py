@@ -54,6 +54,15 @@ def blank(text: str) -> str:
     return re.sub(r"[^\n]", " ", text)
 
 
+def blank_gap(text: str) -> str:
+    """The ShaderLab between two program blocks, as a program sees it: its newlines, then its
+    last line's characters as spaces (the next block's lines and columns survive, its offsets
+    do not). Not ``blank``: that keeps every character, and a pass's program starts at the
+    file's first CGINCLUDE, so a file of N passes would hand its last pass the blanked text of
+    the N - 1 before it (programs O(N) long, parsed N times: O(N^2))."""
+    return "\n" * text.count("\n") + " " * (len(text) - 1 - text.rfind("\n"))
+
+
 @dataclass
 class Block:
     """A ``CGPROGRAM ... ENDCG`` (or CGINCLUDE, HLSL..., GLSL...) block."""
@@ -135,7 +144,7 @@ class ShaderLabFile:
         first = min([b.body_start for b in before] + [block.body_start])
         pieces, pos = [], first
         for b in sorted(before, key=lambda b: b.body_start) + [block]:
-            pieces.append(blank(self.text[pos:b.body_start]))
+            pieces.append(blank_gap(self.text[pos:b.body_start]))
             pieces.append(self.text[b.body_start:b.body_end])
             pos = b.body_end
         text = "".join(pieces)

@@ -14,6 +14,7 @@ end's one error.
 
 from __future__ import annotations
 
+import functools
 import json
 import re
 from pathlib import Path
@@ -39,8 +40,11 @@ _COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 IDENT = r"[A-Za-z_]\w*"
 
 
+@functools.lru_cache(maxsize=256)
 def blank_comments(text: str) -> str:
-    """Comments replaced by spaces, newlines kept (offsets and line numbers survive)."""
+    """Comments replaced by spaces, newlines kept (offsets and line numbers survive). Kept for
+    the texts seen last: every pass of a shader blanks its includes' texts again (a 256-pass
+    shader: 69 calls a pass, a quarter of reading it); a text is a str, never changed."""
     return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
 
 
@@ -86,6 +90,19 @@ def call_arguments(code: str, start: int):
 def matching_paren(text: str, open_index: int) -> int:
     """The offset of the ``)`` that closes the ``(`` at ``open_index``; -1 when none does."""
     return matching_brace(text, open_index, "(", ")")
+
+
+# A global declaration's name. A line's leading blanks are [^\S\n]*, not \s*: under re.M, \s* at
+# each of K empty lines in a row (a function body top_level blanked, the ShaderLab between a
+# pass and its file's CGINCLUDE) runs over all the rest of them, O(K^2) a text; the names found
+# are the same (a match starting lines earlier starts again at its first word's line).
+_GLOBAL_DECLARATION = re.compile(r"^[^\S\n]*(?:uniform\s+)?(?:static\s+)?(?:const\s+)?\w+\s+(" + IDENT
+                                 + r")\s*(?:=[^;]*)?;", re.M)
+
+
+def declared_globals(masked: str) -> frozenset:
+    """The names of the global variables ``masked`` (comments blanked) declares."""
+    return frozenset(_GLOBAL_DECLARATION.findall(top_level(masked)))
 
 
 def top_level(masked: str) -> str:
