@@ -37,6 +37,13 @@ _DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerCompari
 _PARAMETER = re.compile(r"(?<=[(,])(\s*(?:(?:in|uniform)\s+)?)(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)"
                         r"(?:\s*<\s*\w+\s*>)?(\s+)(\w+)(?=\s*[,)])")
 _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
+# Core RP's declaration macros (a URP program's ``TEXTURE2D(_Tex); SAMPLER(sampler_Tex);``, a
+# function's ``TEXTURE2D_PARAM(t, s)``): the same objects (Core RP's API/D3D11.hlsl declares
+# ``Texture2D t`` by them), whose methods are spelled here too; the macros themselves are left
+# for port.py's SRP pass, which spells them as combined samplers after this one.
+_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE)(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
+_MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
+               "TEXTURECUBE": "TextureCube"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
 
 
@@ -101,6 +108,8 @@ def spelled_texture_methods(code: str) -> str:
             kinds[name.strip()] = m.group(1)
     for m in _PARAMETER.finditer(code):
         kinds.setdefault(m.group(4), m.group(2))
+    for m in _MACRO_DECLARATION.finditer(code):
+        kinds.setdefault(m.group(2), _MACRO_KIND[m.group(1)])
     if not kinds:
         return code
     # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
