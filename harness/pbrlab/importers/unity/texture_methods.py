@@ -30,7 +30,9 @@ from .source_text import call_arguments
 
 # (``sampler``: HLSL's legacy name of SamplerState; one a Cg intrinsic samples is a sampler2D by now,
 # combined_samplers)
-_DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
+# (a ``uniform`` before it: HLSL's default for a global, GLSL's for a sampler; a sampler object's
+# int is a static const, which takes none)
+_DECLARATION = re.compile(r"(?:\buniform\s+)?\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
                           r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
 # a parameter of one of these types (``float2 Parallax(Texture2D t, SamplerState s, float2 uv)``):
 # after the list's '(' or a ',' (a qualifier between), before the next ',' or ')'
@@ -119,7 +121,7 @@ def spelled_texture_methods(code: str) -> str:
     def declaration(m):
         names = [n.strip() for n in m.group(2).split(",")]
         if m.group(1) in _COMBINED:
-            return f"{_COMBINED[m.group(1)]} {', '.join(names)};"
+            return f"{'uniform ' if m.group(0).startswith('uniform') else ''}{_COMBINED[m.group(1)]} {', '.join(names)};"
         return "static const int " + ", ".join(f"{n} = 0" for n in names) + ";"
     code = _DECLARATION.sub(declaration, code)
     out, pos = [], 0
