@@ -115,6 +115,8 @@ def _size(kind: str, where: str) -> int:
 def _zero(kind: str, language: str) -> str:
     n = component_count(kind)
     if n == 1:
+        if kind == "bool":
+            return "false"  # (GLSL converts no number to a bool)
         return "0" if kind.startswith(("int", "uint")) else "0.0"
     if n:
         return f"{_vec(n, language)}(0.0)" if language == "glsl" else f"({kind})0"
