@@ -115,6 +115,8 @@ def _size(kind: str, where: str) -> int:
 def _zero(kind: str, language: str) -> str:
     n = component_count(kind)
     if n == 1:
+        if kind == "bool":
+            return "false"  # (GLSL converts no number to a bool)
         return "0" if kind.startswith(("int", "uint")) else "0.0"
     if n:
         return f"{_vec(n, language)}(0.0)" if language == "glsl" else f"({kind})0"
@@ -475,8 +477,11 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         elif qual == "out":
             body.append(f"    {_type(kind, language)} {local};")
         else:
-            body.append(f"    {_type(kind, language)} {local} = "
-                        f"{value(canonical(semantic), component_count(kind) or 4, kind) or _zero(kind, language)};")
+            filled = value(canonical(semantic), component_count(kind) or 4, kind) or _zero(kind, language)
+            if filled is None:  # neither a struct nor a vector (a type no signature resolved): never "None"
+                raise UnityShaderError(f"{where}: {vf.fragment}() takes {name} of type {kind}, which is neither "
+                                       "a struct the program defines nor a scalar, vector or matrix")
+            body.append(f"    {_type(kind, language)} {local} = {filled};")
         args.append(local)
     call = f"{vf.fragment}({', '.join(args)})"
     colour = None

@@ -157,6 +157,26 @@ _BUILTIN_TYPE = re.compile(r"(?:void|bool|int|uint|dword|half|float|double|fixed
                            r"min16uint)(?:[1-4](?:x[1-4])?)?")
 
 
+# `#define MY_V2F v2f_full`: an object-like #define naming one word, a type's alias a signature may use
+_TYPE_ALIAS = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(" + IDENT + r")[ \t]+(" + IDENT + r")[ \t]*$", re.M)
+
+
+def _dealiased(found: dict, text: str) -> dict:
+    """``found``'s signatures with each type that is a #define alias (``float4 frag(MY_V2F i)``
+    after ``#define MY_V2F v2f_full``) the type it names, as the preprocessor reads it (a chain
+    followed to its end, a cycle left as written)."""
+    aliases = dict(_TYPE_ALIAS.findall(text))
+
+    def kind(name: str) -> str:
+        seen = {name}
+        while name in aliases and aliases[name] not in seen:
+            name = aliases[name]
+            seen.add(name)
+        return name
+    return {role: (kind(ret), [(q, kind(t), n, s) for q, t, n, s in params], semantic, start)
+            for role, (ret, params, semantic, start) in found.items()}
+
+
 def _undefined_type(found: dict, structs: dict, functions: dict):
     """(type, function) of the first type the vertex or fragment signature names that is neither
     a built-in type nor a struct the program (with its includes) defines; None when all are."""
@@ -254,6 +274,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
             raise UnityShaderError(f"{where(pragmas[role][1])}: #pragma {role} {name}: no function {name}(...) "
                                    "is defined")
         found[role] = sig
+    found = _dealiased(found, everything)
     structs = _structs(UNITY_CG_FUNCTIONS + "\n" + everything)  # the program's own struct of a name wins
     undefined = _undefined_type(found, structs, {"vertex": vertex, "fragment": fragment})
     # (an include of the drawn variant: one under a branch not taken is not read)

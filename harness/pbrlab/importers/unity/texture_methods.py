@@ -30,13 +30,22 @@ from .source_text import call_arguments
 
 # (``sampler``: HLSL's legacy name of SamplerState; one a Cg intrinsic samples is a sampler2D by now,
 # combined_samplers)
-_DECLARATION = re.compile(r"\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
+# (a ``uniform`` before it: HLSL's default for a global, GLSL's for a sampler; a sampler object's
+# int is a static const, which takes none)
+_DECLARATION = re.compile(r"(?:\buniform\s+)?\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
                           r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
 # a parameter of one of these types (``float2 Parallax(Texture2D t, SamplerState s, float2 uv)``):
 # after the list's '(' or a ',' (a qualifier between), before the next ',' or ')'
 _PARAMETER = re.compile(r"(?<=[(,])(\s*(?:(?:in|uniform)\s+)?)(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)"
                         r"(?:\s*<\s*\w+\s*>)?(\s+)(\w+)(?=\s*[,)])")
 _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
+# Core RP's declaration macros (a URP program's ``TEXTURE2D(_Tex); SAMPLER(sampler_Tex);``, a
+# function's ``TEXTURE2D_PARAM(t, s)``): the same objects (Core RP's API/D3D11.hlsl declares
+# ``Texture2D t`` by them), whose methods are spelled here too; the macros themselves are left
+# for port.py's SRP pass, which spells them as combined samplers after this one.
+_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE)(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
+_MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
+               "TEXTURECUBE": "TextureCube"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
 
 
@@ -110,6 +119,8 @@ def spelled_texture_methods(code: str) -> str:
             kinds[name.strip()] = m.group(1)
     for m in _PARAMETER.finditer(code):
         kinds.setdefault(m.group(4), m.group(2))
+    for m in _MACRO_DECLARATION.finditer(code):
+        kinds.setdefault(m.group(2), _MACRO_KIND[m.group(1)])
     if not kinds:
         return code
     # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
@@ -119,7 +130,7 @@ def spelled_texture_methods(code: str) -> str:
     def declaration(m):
         names = [n.strip() for n in m.group(2).split(",")]
         if m.group(1) in _COMBINED:
-            return f"{_COMBINED[m.group(1)]} {', '.join(names)};"
+            return f"{'uniform ' if m.group(0).startswith('uniform') else ''}{_COMBINED[m.group(1)]} {', '.join(names)};"
         return "static const int " + ", ".join(f"{n} = 0" for n in names) + ";"
     code = _DECLARATION.sub(declaration, code)
     out, pos = [], 0
