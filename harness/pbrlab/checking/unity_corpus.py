@@ -124,14 +124,17 @@ def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
     """Whether ``shader`` (a Unity .shader read without a lightmap) draws a vertex/fragment
     program that reads the object's lightmap (with ``realtime``, its realtime GI lightmap); False
     for anything else, and for a shader the reader refuses (its render says why)."""
-    from ..importers.unity import BUILTIN, read_shader
+    from ..importers.unity import BUILTIN, URP, read_shader
     from ..importers.unity.dynamic_lightmaps import needs_dynamic_lightmap
     from ..importers.unity.lightmaps import needs_lightmap
     from ..importers.urp import material as urp
-    if Path(shader).suffix != ".shader" or urp.reads(Path(shader)):  # a URP shader: no supplied lightmap
+    if Path(shader).suffix != ".shader":
+        return False
+    is_urp = urp.reads(Path(shader))
+    if is_urp and realtime:  # a URP shader: no supplied realtime GI lightmap
         return False
     try:
-        return (needs_dynamic_lightmap if realtime else needs_lightmap)(read_shader(Path(shader), BUILTIN))
+        return (needs_dynamic_lightmap if realtime else needs_lightmap)(read_shader(Path(shader), URP if is_urp else BUILTIN))
     except PbrlabError:
         return False
 

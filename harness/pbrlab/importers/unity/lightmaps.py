@@ -107,7 +107,10 @@ def read_lightmap(r, base: Path) -> Lightmap | None:
 def lightmapped(pipeline, lightmap: Lightmap):
     """``pipeline`` (parse.Pipeline) as it reads a shader for an object with ``lightmap``: its
     VertexLM/VertexLMRGBM passes drawn instead of its Vertex pass (``vertex_lit_passes`` keeps the
-    encoding's where a SubShader has both), LIGHTMAP_ON on where a program declares it."""
+    encoding's where a SubShader has both), LIGHTMAP_ON on where a program declares it. A pipeline
+    without a Vertex pass (URP) keeps its passes: LIGHTMAP_ON only."""
+    if "vertex" not in pipeline.drawn:
+        return dataclasses.replace(pipeline, keywords=pipeline.keywords + ("LIGHTMAP_ON",))
     skipped = {k: v for k, v in pipeline.skipped.items() if k not in _LIGHTMAP_PASSES}
     skipped["vertex"] = "for objects without a lightmap (this one has one: its VertexLM pass draws)"
     drawn = tuple(m for m in pipeline.drawn if m != "vertex") + _LIGHTMAP_PASSES
