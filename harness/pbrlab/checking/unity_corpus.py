@@ -123,7 +123,8 @@ def _draws_fullscreen(shader: Path) -> bool:
 def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
     """Whether ``shader`` (a Unity .shader read without a lightmap) draws a vertex/fragment
     program that reads the object's lightmap (with ``realtime``, its realtime GI lightmap); False
-    for anything else, and for a shader the reader refuses (its render says why)."""
+    for anything else, and for a shader the reader refuses (its render says why). A URP shader's
+    lightmap is read the same way (lightmaps.first_read with urp); it has no realtime one here."""
     from ..importers.unity import BUILTIN, URP, read_shader
     from ..importers.unity.dynamic_lightmaps import needs_dynamic_lightmap
     from ..importers.unity.lightmaps import needs_lightmap
@@ -134,7 +135,9 @@ def _reads_lightmap(shader: Path, realtime: bool = False) -> bool:
     if is_urp and realtime:  # a URP shader: no supplied realtime GI lightmap
         return False
     try:
-        return (needs_dynamic_lightmap if realtime else needs_lightmap)(read_shader(Path(shader), URP if is_urp else BUILTIN))
+        if realtime:
+            return needs_dynamic_lightmap(read_shader(Path(shader), BUILTIN))
+        return needs_lightmap(read_shader(Path(shader), URP if is_urp else BUILTIN), urp=is_urp)
     except PbrlabError:
         return False
 

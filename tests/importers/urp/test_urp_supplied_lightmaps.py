@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "unity"))
+from pbrlab.checking import unity_corpus as corpus  # noqa: E402
 from test_supplied_lightmaps import SCALE_OFFSET, _lightmap, _render, expected, over_bound  # noqa: E402
 
 pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnityShaderNote")
@@ -101,3 +102,15 @@ def test_without_a_lightmap_sample_gi_is_the_sh_as_before(tmp_path, language):
     assert (np.abs(gi - sh)[covered] <= 4 * 2.0 ** -24 * 4).all()
     expectation, compared = expected(gi.shape[:2], texels, "rgbm")
     assert over_bound(gi, expectation, compared) > 0.9
+
+
+def test_the_corpus_lightmaps_a_urp_shader_that_reads_the_lightmap_unconditionally(tmp_path):
+    """unity_corpus gives the sphere a lightmap for a URP pass that reads unity_Lightmap outside
+    LIGHTMAP_ON (URP's stand-ins declare it only there); not for one that reads only
+    unity_LightmapST (defined for every object: the identity) or SAMPLE_GI (control)."""
+    reading = _shader(tmp_path, "sample_gi").read_text().replace(
+        "return float4(SAMPLE_GI", "return SAMPLE_TEXTURE2D(unity_Lightmap, samplerunity_Lightmap, 0.5) + float4(SAMPLE_GI")
+    path = tmp_path / "reads.shader"
+    path.write_text(reading.replace('"t/urp lightmap sample_gi"', '"t/reads"'))
+    assert corpus._reads_lightmap(path)
+    assert not corpus._reads_lightmap(_shader(tmp_path, "sample_gi"))

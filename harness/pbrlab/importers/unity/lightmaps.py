@@ -138,6 +138,9 @@ ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap", "unity_DynamicLightmap"})
 SUPPLIED = ("unity_Lightmap", "unity_LightmapST", "unity_Lightmap_HDR", "DecodeLightmap", "DecodeLightmapRGBM",
             "DecodeLightmapDoubleLDR")
 _READ = re.compile(r"\b(" + "|".join(sorted(SUPPLIED, key=len, reverse=True)) + r")\b")
+# URP's Core.hlsl stand-in defines unity_LightmapST for every object (the identity without a
+# lightmap, as URP's UnityPerDraw holds it): a URP program reading it needs no lightmap.
+_READ_URP = re.compile(r"\b(" + "|".join(sorted(set(SUPPLIED) - {"unity_LightmapST"}, key=len, reverse=True)) + r")\b")
 _FWDBASE = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+multi_compile_fwdbase\b", re.M)
 
 
@@ -148,11 +151,12 @@ def declares_lightmap_on(program: str) -> bool:
     return "LIGHTMAP_ON" in declared_keywords(program) or bool(_FWDBASE.search(blank_comments(program)))
 
 
-def first_read(program: str, keywords=()):
+def first_read(program: str, keywords=(), urp: bool = False):
     """(name, offset) of the first lightmap name ``program`` reads in the variant with
-    ``keywords`` (comments and branches not taken blanked); None when it reads none."""
+    ``keywords`` (comments and branches not taken blanked); None when it reads none. With
+    ``urp``, the names URP's stand-ins leave undefined without a lightmap."""
     masked = blank_comments(program)
-    m = _READ.search(active_text(masked, defines_of(masked, keywords)))
+    m = (_READ_URP if urp else _READ).search(active_text(masked, defines_of(masked, keywords)))
     return (m.group(1), m.start()) if m else None
 
 
@@ -184,10 +188,11 @@ def check_reads(shader, lightmap: Lightmap | None, r, keywords=()) -> None:
                    "surface")
 
 
-def needs_lightmap(shader) -> bool:
-    """Whether a drawn vertex/fragment pass of ``shader`` (read without a lightmap) reads one."""
+def needs_lightmap(shader, urp: bool = False) -> bool:
+    """Whether a drawn vertex/fragment pass of ``shader`` (read without a lightmap; ``urp``: for
+    URP, first_read) reads one."""
     return any(getattr(p, "kind", "") == "vertex-fragment" and getattr(p, "language", "") != "unity-glsl"
-               and first_read(p.program) for p in shader.passes)
+               and first_read(p.program, urp=urp) for p in shader.passes)
 
 
 def program_defines(unity_pass, lightmap: Lightmap | None) -> dict:
