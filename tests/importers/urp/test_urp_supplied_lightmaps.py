@@ -29,11 +29,14 @@ pytestmark = pytest.mark.filterwarnings("ignore::pbrlab.importers.unity.UnitySha
 LANGUAGES = ("glsl", "hlsl")
 
 # SAMPLE_GI as URP's Lit/SimpleLit forward passes call it, or SampleLightmap directly (Unlit's
-# baked GI), or SampleSH itself (the control's expectation).
+# baked GI), Core's DecodeLightmap, or SampleSH itself (the control's expectation).
 GI = {
     "sample_gi": "SAMPLE_GI(IN.staticLightmapUV, IN.vertexSH, normalize(IN.normalWS))",
     "sample_lightmap": "SampleLightmap(IN.staticLightmapUV, normalize(IN.normalWS))",
     "sample_sh": "SampleSH(normalize(IN.normalWS))",
+    # Core's DecodeLightmap with URP's decode instructions, as a project's unlit pass reads it
+    "decode_lightmap": "DecodeLightmap(SAMPLE_TEXTURE2D(unity_Lightmap, samplerunity_Lightmap, IN.staticLightmapUV), "
+                       "float4(LIGHTMAP_HDR_MULTIPLIER, LIGHTMAP_HDR_EXPONENT, 0.0h, 0.0h))",
 }
 
 
@@ -75,7 +78,7 @@ def _shader(tmp_path, gi: str):
 
 
 @pytest.mark.parametrize("encoding", ["rgbm", "dldr", "full_hdr"])
-@pytest.mark.parametrize("gi", ["sample_gi", "sample_lightmap"])
+@pytest.mark.parametrize("gi", ["sample_gi", "sample_lightmap", "decode_lightmap"])
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_a_urp_pass_decodes_a_supplied_lightmap_per_pixel(tmp_path, language, gi, encoding):
     path, texels = _lightmap(tmp_path, encoding)

@@ -185,25 +185,29 @@ float3 SampleSH9(float4 SHCoefficients[7], float3 N) {
 // object: its material supplies a `lightmap`, importers/unity/lightmaps.py binds unity_Lightmap,
 // unity_Lightmap_HDR and unity_LightmapST and defines the encoding's macro), black otherwise,
 // as URP gives then; no realtime GI lightmap here (DYNAMICLIGHTMAP_ON adds nothing). The decode
-// is Core's DecodeLightmap in linear colour space (EntityLighting.hlsl, as URP's
-// SampleSingleLightmap calls it for an encoded lightmap): RGBM rgb * (x * a^y), dLDR rgb * x,
-// full HDR the texel's rgb; x, y are unity_Lightmap_HDR (34.49 and 2.2 for RGBM, 4.59 for dLDR,
-// URP's LIGHTMAP_HDR_MULTIPLIER / _EXPONENT: lightmaps.ENCODINGS).
+// is Core's DecodeLightmap (EntityLighting.hlsl) in linear colour space, as URP's
+// SampleSingleLightmap calls it for an encoded lightmap with the decode instructions
+// (LIGHTMAP_HDR_MULTIPLIER, LIGHTMAP_HDR_EXPONENT): RGBM rgb * (x * a^y), dLDR rgb * x, full HDR
+// the texel's rgb. Here x, y are unity_Lightmap_HDR's (lightmaps.ENCODINGS: 34.49 and 2.2 for
+// RGBM, 1 and 1 for full HDR as Core's; 2^2.2 = 4.59482 for dLDR, where Core rounds to 4.59).
 #if defined(LIGHTMAP_ON)
 TEXTURE2D(unity_Lightmap);
 SAMPLER(samplerunity_Lightmap);
 float4 unity_Lightmap_HDR;
-float3 PbrlabURPDecodeLightmap(float4 encoded) {
+#define LIGHTMAP_HDR_MULTIPLIER unity_Lightmap_HDR.x
+#define LIGHTMAP_HDR_EXPONENT unity_Lightmap_HDR.y
+float3 DecodeLightmap(float4 encodedIlluminance, float4 decodeInstructions) {
 #if defined(UNITY_LIGHTMAP_RGBM_ENCODING)
-    return encoded.rgb * (unity_Lightmap_HDR.x * pow(max(encoded.a, 0.0), unity_Lightmap_HDR.y));
+    return encodedIlluminance.rgb * (decodeInstructions.x * pow(max(encodedIlluminance.a, 0.0), decodeInstructions.y));
 #elif defined(UNITY_LIGHTMAP_DLDR_ENCODING)
-    return encoded.rgb * unity_Lightmap_HDR.x;
+    return encodedIlluminance.rgb * decodeInstructions.x;
 #else
-    return encoded.rgb;
+    return encodedIlluminance.rgb;
 #endif
 }
 float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) {
-    return PbrlabURPDecodeLightmap(SAMPLE_TEXTURE2D(unity_Lightmap, samplerunity_Lightmap, staticLightmapUV));
+    return DecodeLightmap(SAMPLE_TEXTURE2D(unity_Lightmap, samplerunity_Lightmap, staticLightmapUV),
+                          float4(LIGHTMAP_HDR_MULTIPLIER, LIGHTMAP_HDR_EXPONENT, 0.0, 0.0));
 }
 float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 normalWS) {
     return SampleLightmap(staticLightmapUV, normalWS);
