@@ -132,13 +132,16 @@ def _draws_fullscreen(read) -> bool:
 def _reads_lightmap(read, realtime: bool = False) -> bool:
     """Whether a shader (``_read``'s answer: a Unity .shader read without a lightmap) draws a
     vertex/fragment program that reads the object's lightmap (with ``realtime``, its realtime
-    GI lightmap); False for anything else: a URP shader gets no supplied lightmap, and a shader
-    the reader refuses none (its render says why)."""
+    GI lightmap); False for anything else, and for a shader the reader refuses (its render says
+    why). A URP shader's lightmap is read the same way (lightmaps.first_read with urp); it has
+    no realtime one here."""
     from ..importers.unity.dynamic_lightmaps import needs_dynamic_lightmap
     from ..importers.unity.lightmaps import needs_lightmap
-    if read is None or read[1]:
+    if read is None or (read[1] and realtime):
         return False
-    return (needs_dynamic_lightmap if realtime else needs_lightmap)(read[0])
+    if realtime:
+        return needs_dynamic_lightmap(read[0])
+    return needs_lightmap(read[0], urp=read[1])
 
 
 def _messages(caught) -> list:

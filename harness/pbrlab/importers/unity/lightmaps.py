@@ -107,7 +107,10 @@ def read_lightmap(r, base: Path) -> Lightmap | None:
 def lightmapped(pipeline, lightmap: Lightmap):
     """``pipeline`` (parse.Pipeline) as it reads a shader for an object with ``lightmap``: its
     VertexLM/VertexLMRGBM passes drawn instead of its Vertex pass (``vertex_lit_passes`` keeps the
-    encoding's where a SubShader has both), LIGHTMAP_ON on where a program declares it."""
+    encoding's where a SubShader has both), LIGHTMAP_ON on where a program declares it. A pipeline
+    without a Vertex pass (URP) keeps its passes: LIGHTMAP_ON only."""
+    if "vertex" not in pipeline.drawn:
+        return dataclasses.replace(pipeline, keywords=pipeline.keywords + ("LIGHTMAP_ON",))
     skipped = {k: v for k, v in pipeline.skipped.items() if k not in _LIGHTMAP_PASSES}
     skipped["vertex"] = "for objects without a lightmap (this one has one: its VertexLM pass draws)"
     drawn = tuple(m for m in pipeline.drawn if m != "vertex") + _LIGHTMAP_PASSES
@@ -135,6 +138,9 @@ ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap", "unity_DynamicLightmap"})
 SUPPLIED = ("unity_Lightmap", "unity_LightmapST", "unity_Lightmap_HDR", "DecodeLightmap", "DecodeLightmapRGBM",
             "DecodeLightmapDoubleLDR")
 _READ = re.compile(r"\b(" + "|".join(sorted(SUPPLIED, key=len, reverse=True)) + r")\b")
+# URP's Core.hlsl stand-in defines unity_LightmapST for every object (the identity without a
+# lightmap, as URP's UnityPerDraw holds it): a URP program reading it needs no lightmap.
+_READ_URP = re.compile(r"\b(" + "|".join(sorted(set(SUPPLIED) - {"unity_LightmapST"}, key=len, reverse=True)) + r")\b")
 _FWDBASE = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+multi_compile_fwdbase\b", re.M)
 
 
@@ -145,11 +151,12 @@ def declares_lightmap_on(program: str) -> bool:
     return "LIGHTMAP_ON" in declared_keywords(program) or bool(_FWDBASE.search(blank_comments(program)))
 
 
-def first_read(program: str, keywords=()):
+def first_read(program: str, keywords=(), urp: bool = False):
     """(name, offset) of the first lightmap name ``program`` reads in the variant with
-    ``keywords`` (comments and branches not taken blanked); None when it reads none."""
+    ``keywords`` (comments and branches not taken blanked); None when it reads none. With
+    ``urp``, the names URP's stand-ins leave undefined without a lightmap."""
     masked = blank_comments(program)
-    m = _READ.search(active_text(masked, defines_of(masked, keywords)))
+    m = (_READ_URP if urp else _READ).search(active_text(masked, defines_of(masked, keywords)))
     return (m.group(1), m.start()) if m else None
 
 
@@ -181,10 +188,11 @@ def check_reads(shader, lightmap: Lightmap | None, r, keywords=()) -> None:
                    "surface")
 
 
-def needs_lightmap(shader) -> bool:
-    """Whether a drawn vertex/fragment pass of ``shader`` (read without a lightmap) reads one."""
+def needs_lightmap(shader, urp: bool = False) -> bool:
+    """Whether a drawn vertex/fragment pass of ``shader`` (read without a lightmap; ``urp``: for
+    URP, first_read) reads one."""
     return any(getattr(p, "kind", "") == "vertex-fragment" and getattr(p, "language", "") != "unity-glsl"
-               and first_read(p.program) for p in shader.passes)
+               and first_read(p.program, urp=urp) for p in shader.passes)
 
 
 def program_defines(unity_pass, lightmap: Lightmap | None) -> dict:

@@ -334,15 +334,12 @@ def read_material(r, m, base: Path, pipeline=None, source_type=None) -> None:
     ``source_type`` (UnitySource by default) is the material source made of the shader: the
     Universal Render Pipeline's importer (importers/urp/) passes its own."""
     from . import BUILTIN, UnityShaderError, load_shader, read_shader, resolve_properties
-    lightmap = lightmaps.read_lightmap(r, base)
-    if lightmap is not None and pipeline not in (None, BUILTIN):
-        r.fail(f"a supplied lightmap is read for Unity's built-in render pipeline only, not {pipeline.name}",
-               "lightmap")
+    lightmap = lightmaps.read_lightmap(r, base)  # URP's too (its stand-ins' SampleLightmap reads it)
     dynamic = dynamic_lightmaps.read_dynamic_lightmap(r, base)
     if dynamic is not None and pipeline not in (None, BUILTIN):
         r.fail(f"a supplied realtime GI lightmap is read for Unity's built-in render pipeline only, not "
                f"{pipeline.name}", "dynamic_lightmap")
-    drawn = dynamic_lightmaps.realtime_lit(lightmaps.lightmapped(BUILTIN, lightmap) if lightmap else pipeline or BUILTIN,
+    drawn = dynamic_lightmaps.realtime_lit(lightmaps.lightmapped(pipeline or BUILTIN, lightmap) if lightmap else pipeline or BUILTIN,
                                            dynamic)
     try:
         shader = load_shader(m.surface, drawn)

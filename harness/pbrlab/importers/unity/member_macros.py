@@ -21,8 +21,9 @@ from .source_text import call_arguments
 # ``#define NAME(a, b) replacement`` (continued lines joined by the caller's text: a backslash
 # and the line break are read as one space)
 _FUNCTION_MACRO = re.compile(r"^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)\(([^()]*)\)((?:[^\n\\]|\\\n|\\(?!\n))*)$", re.M)
-# a member with a semantic (the semantic's index may be pasted from a parameter)
-_SEMANTIC_MEMBER = re.compile(r"[A-Za-z_]\w*\s+[A-Za-z_]\w*(?:\s*\[\s*\w+\s*\])?\s*:\s*[A-Za-z_]\w*(?:\s*##\s*\w+)*\s*;")
+# a member with a semantic (the semantic's index may be pasted from a parameter), its ``;`` in
+# the replacement or left to the call (URP's DECLARE_LIGHTMAP_OR_SH(lm, sh, 1); ends at the semantic)
+_SEMANTIC_MEMBER = re.compile(r"[A-Za-z_]\w*\s+[A-Za-z_]\w*(?:\s*\[\s*\w+\s*\])?\s*:\s*[A-Za-z_]\w*(?:\s*##\s*\w+)*\s*(?:;|$)")
 
 
 def _member_macros(text: str) -> dict:

@@ -393,14 +393,18 @@ float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _S
 #define SAMPLE_SHADOWMASK(uv) float4(1.0, 1.0, 1.0, 1.0)
 float4 TransformWorldToShadowCoord(float3 positionWS) { return float4(0.0, 0.0, 0.0, 0.0); }
 
-// UnityPerDraw's lightmap scale-offsets (URP's UnityInput.hlsl), for an object that is not
-// lightmapped, as every object drawn with a URP shader is here (a supplied lightmap is refused
-// for URP: importers/unity/material.py): Unity sets them from the renderer's
+// UnityPerDraw's lightmap scale-offsets (URP's UnityInput.hlsl). A lightmapped object's (its
+// material supplies a `lightmap`: importers/unity/lightmaps.py sets LIGHTMAP_ON and binds
+// unity_LightmapST) is a uniform; an object that is not lightmapped has the default: Unity sets them from the renderer's
 // lightmapScaleOffset / realtimeLightmapScaleOffset (ScriptReference: "The UV scale & offset
 // used for a lightmap", xy scale, zw offset), which keep their default, the identity (scale 1,
 // offset 0), while no lightmapper has assigned a lightmap (lightmapIndex -1, 0xFFFF: "no
 // lightmap has been assigned, which is the default", ScriptReference Renderer.lightmapIndex).
+#if defined(LIGHTMAP_ON)
+float4 unity_LightmapST;
+#else
 #define unity_LightmapST float4(1.0, 1.0, 0.0, 0.0)
+#endif
 #define unity_DynamicLightmapST float4(1.0, 1.0, 0.0, 0.0)
 
 #endif

@@ -181,8 +181,44 @@ float3 SampleSH9(float4 SHCoefficients[7], float3 N) {
     return SHEvalLinearL0L1(N, SHCoefficients[0], SHCoefficients[1], SHCoefficients[2])
          + SHEvalLinearL2(N, SHCoefficients[3], SHCoefficients[4], SHCoefficients[5], SHCoefficients[6]);
 }
-// URP's SampleLightmap: the static (and dynamic) lightmap's light where LIGHTMAP_ON
-// (DYNAMICLIGHTMAP_ON) is set; a URP object here has no lightmap, so black, as URP gives then.
+// URP's SampleLightmap: the static lightmap's light where LIGHTMAP_ON is set (a lightmapped
+// object: its material supplies a `lightmap`, importers/unity/lightmaps.py binds unity_Lightmap,
+// unity_Lightmap_HDR and unity_LightmapST and defines the encoding's macro), black otherwise,
+// as URP gives then; no realtime GI lightmap here (DYNAMICLIGHTMAP_ON adds nothing). The decode
+// is Core's DecodeLightmap (EntityLighting.hlsl) in linear colour space, as URP's
+// SampleSingleLightmap calls it for an encoded lightmap with the decode instructions
+// (LIGHTMAP_HDR_MULTIPLIER, LIGHTMAP_HDR_EXPONENT): RGBM rgb * (x * a^y), dLDR rgb * x, full HDR
+// the texel's rgb. Here x, y are unity_Lightmap_HDR's (lightmaps.ENCODINGS: 34.49 and 2.2 for
+// RGBM, 1 and 1 for full HDR as Core's; 2^2.2 = 4.59482 for dLDR, where Core rounds to 4.59).
+#if defined(LIGHTMAP_ON)
+TEXTURE2D(unity_Lightmap);
+SAMPLER(samplerunity_Lightmap);
+float4 unity_Lightmap_HDR;
+#define LIGHTMAP_HDR_MULTIPLIER unity_Lightmap_HDR.x
+#define LIGHTMAP_HDR_EXPONENT unity_Lightmap_HDR.y
+float3 DecodeLightmap(float4 encodedIlluminance, float4 decodeInstructions) {
+#if defined(UNITY_LIGHTMAP_RGBM_ENCODING)
+    return encodedIlluminance.rgb * (decodeInstructions.x * pow(max(encodedIlluminance.a, 0.0), decodeInstructions.y));
+#elif defined(UNITY_LIGHTMAP_DLDR_ENCODING)
+    return encodedIlluminance.rgb * decodeInstructions.x;
+#else
+    return encodedIlluminance.rgb;
+#endif
+}
+float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) {
+    return DecodeLightmap(SAMPLE_TEXTURE2D(unity_Lightmap, samplerunity_Lightmap, staticLightmapUV),
+                          float4(LIGHTMAP_HDR_MULTIPLIER, LIGHTMAP_HDR_EXPONENT, 0.0, 0.0));
+}
+float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 normalWS) {
+    return SampleLightmap(staticLightmapUV, normalWS);
+}
+// The varyings member holds the lightmap UV (the mesh's TEXCOORD1 scaled and offset by
+// unity_LightmapST in the vertex stage); SAMPLE_GI reads the lightmap instead of the SH.
+#define DECLARE_LIGHTMAP_OR_SH(lmName, shName, index) float2 lmName : TEXCOORD##index
+#define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT) OUT.xy = lightmapUV.xy * lightmapScaleOffset.xy + lightmapScaleOffset.zw
+#define OUTPUT_SH(normalWS, OUT)
+#define SAMPLE_GI(lmName, shName, normalWSName) SampleLightmap(lmName, normalWSName)
+#else
 float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
 float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
 // A varyings member for per-vertex SH: declared without its semantic, since SAMPLE_GI evaluates
@@ -191,6 +227,7 @@ float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 
 #define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT)
 #define OUTPUT_SH(normalWS, OUT) OUT.xyz = SampleSHVertex(normalWS)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
+#endif
 
 // URP's mip for a perceptual roughness: pr (1.7 - 0.7 pr) of its 6 levels, in pbrlab's chain.
 // The same mip as a number: perceptual roughness pr to pr (1.7 - 0.7 pr) times the steps.
