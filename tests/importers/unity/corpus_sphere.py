@@ -8,8 +8,12 @@ from pbrlab.importers.loader import parse_scene
 from pbrlab.render.renderer import render_scene
 
 
-def render_on_corpus_sphere(tmp_path, shader, language):
-    return render_scene(parse_scene(corpus.scene_for(shader), "t", tmp_path), language=language).linear
+def render_on_corpus_sphere(tmp_path, shader, language, keywords=None):
+    """``keywords``: the material's enabled keywords (None: the corpus scene's)."""
+    scene = corpus.scene_for(shader)
+    if keywords is not None:
+        scene["materials"]["m"]["keywords"] = keywords
+    return render_scene(parse_scene(scene, "t", tmp_path), language=language).linear
 
 
 def covered_pixels(image):

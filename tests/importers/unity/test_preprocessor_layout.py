@@ -16,10 +16,9 @@ import textwrap
 import numpy as np
 import pytest
 
-from pbrlab.checking import unity_corpus as corpus
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.loader import parse_scene
-from pbrlab.render.renderer import render_scene
+
+from corpus_sphere import covered_pixels, render_on_corpus_sphere
 
 LANGUAGES = ("hlsl", "glsl")  # HLSL as written, then the GLSL port
 
@@ -48,13 +47,8 @@ def _shader(tmp_path, name, code, pragmas="        #pragma vertex vert\n        
 
 def _colour(tmp_path, shader, language, keywords=None):
     """The one colour of the covered pixels (the fragments return constants)."""
-    scene = corpus.scene_for(shader)
-    if keywords is not None:
-        scene["materials"]["m"]["keywords"] = keywords
-    image = render_scene(parse_scene(scene, "t", tmp_path), language=language).linear
-    covered = image[..., 3] == 1.0
-    assert covered.mean() > 0.3
-    got = image[covered][:, :3].astype(np.float64)
+    image = render_on_corpus_sphere(tmp_path, shader, language, keywords)
+    got = image[covered_pixels(image)][:, :3].astype(np.float64)
     colours = np.unique(got, axis=0)
     assert len(colours) == 1, colours[:4]
     return colours[0].tolist()
