@@ -257,6 +257,9 @@ float3 GetCameraRelativePositionWS(float3 positionWS) { return positionWS; }
 // 1 / (zBufferParam.z z + zBufferParam.w) and 1 / (zBufferParam.x z + zBufferParam.y).
 float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
+// Core RP's other LinearEyeDepth: a world position's distance along the view axis, |view z| of
+// mul(viewMatrix, float4(positionWS, 1)) (a right-handed view looks down -z: the absolute value).
+float LinearEyeDepth(float3 positionWS, float4x4 viewMatrix) { return abs(mul(viewMatrix, float4(positionWS, 1.0)).z); }
 // URP's ShaderVariablesFunctions.hlsl: a depth that is already linear in [0, 1] (an orthographic
 // camera's) to the eye's distance, near + (far - near) depth with _ProjectionParams' y = near and
 // z = far (UNITY_REVERSED_Z is undefined on GL, so 0 is the near plane).
