@@ -15,41 +15,26 @@ import pytest
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.render.renderer import scene_frame
 from test_urp_library_round2 import LANGUAGES, render_constant  # pytest puts this folder on sys.path
+from test_urp_names_round44 import _SHADER as NAMES44_SHADER
 
 EPS = 2.0 ** -24
 
-_SHADER = """
-Shader "t/names44b" {
-    SubShader {
-        Tags { "RenderPipeline" = "%(tag)s" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            %(defines)s
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-            %(includes)s
-            struct Attributes { float4 positionOS : POSITION; };
-            struct Varyings { float4 positionCS : SV_POSITION; %(varyings)s };
-            Varyings vert(Attributes IN) {
-                Varyings OUT;
-                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                %(vertex)s
-                return OUT;
-            }
-            float4 frag(Varyings IN) : SV_Target { %(body)s }
-            ENDHLSL
-        }
-    }
-}
-"""
+def _template() -> str:
+    """Round 44's minimal URP shader (test_urp_names_round44._SHADER) with the SubShader's tag, more
+    Varyings members and more vertex statements as parameters."""
+    text = NAMES44_SHADER.replace("%(properties)s", "").replace('"UniversalPipeline"', '"%(tag)s"')
+    text = text.replace("SV_POSITION; float2 uv : TEXCOORD0; };", "SV_POSITION; float2 uv : TEXCOORD0; %(varyings)s };")
+    text = text.replace("OUT.uv = IN.uv;", "OUT.uv = IN.uv; %(vertex)s")
+    assert text.count("%(tag)s") == text.count("%(varyings)s") == text.count("%(vertex)s") == 1
+    return text
 
 
-def _render(tmp_path, language, body, *, tag="UniversalPipeline", includes="", defines="", varyings="",
-            vertex=""):
-    text = _SHADER % {"tag": tag, "body": body, "includes": includes, "defines": defines,
-                      "varyings": varyings, "vertex": vertex}
+_SHADER = _template()
+
+
+def _render(tmp_path, language, body, *, tag="UniversalPipeline", includes="", varyings="", vertex=""):
+    text = _SHADER % {"tag": tag, "body": body, "includes": includes, "globals": "", "varyings": varyings,
+                      "vertex": vertex}
     return render_constant(tmp_path, text, language, environment=False)
 
 
@@ -207,5 +192,4 @@ def test_debugging3d_include_without_the_rendering_debugger(tmp_path, language):
                         " return float4(0.5, 0.25, 0.75, 1.0);", includes=DEBUGGING_3D)
     assert np.all(pixels[:, :3] == np.array([0.5, 0.25, 0.75], np.float32))
     with pytest.raises(PbrlabError, match="Rendering Debugger"):
-        _render(tmp_path, language, "return float4(0.5, 0.25, 0.75, 1.0);", includes=DEBUGGING_3D,
-                defines="#define DEBUG_DISPLAY 1")
+        _render(tmp_path, language, "return float4(0.5, 0.25, 0.75, 1.0);", includes="#define DEBUG_DISPLAY 1\n" + DEBUGGING_3D)
