@@ -175,6 +175,12 @@ static float4 unity_4LightAtten0;
 #define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
 #define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
 #define unity_StereoEyeIndex 0
+// unity_StereoScaleOffset[eye]: the per-eye scale (xy) and offset (zw) that maps a full-screen uv
+// into that eye's part of the render target (URP UnityInput.hlsl declares float4[2] under
+// USING_STEREO_MATRICES; UnityCG.cginc's TransformStereoScreenSpaceTex applies it as
+// uv * s.xy + s.zw * w). pbrlab draws one eye per target (mono, as single-pass instanced's
+// per-eye slices are), where an eye covers the whole target: (1, 1, 0, 0), the identity map
+static const float4 unity_StereoScaleOffset[2] = { float4(1.0, 1.0, 0.0, 0.0), float4(1.0, 1.0, 0.0, 0.0) };
 // the fixed-function pipeline's texture matrices (UnityShaderVariables.cginc's glstate_matrix_texture0..3):
 // the identity unless a legacy SetTexture's Matrix sets one, which no program-drawn pass does
 #define UNITY_MATRIX_TEXTURE0 float4x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)

@@ -335,7 +335,7 @@ def varyings(vf, where: str) -> list[tuple]:
     return [(s, t) for s, t, _ in _outputs(vf, where) if s not in _POSITION]
 
 
-_MATRIX = re.compile(r"(?:float|half|fixed|min16float)([234])x([234])")
+_MATRIX = re.compile(r"(?:float|half|fixed|min16float|real)([234])x([234])")
 
 
 def _slots(vf, where: str, language: str) -> list[tuple]:

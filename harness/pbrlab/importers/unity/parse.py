@@ -577,8 +577,12 @@ URP_SKIPPED_LIGHT_MODES = {
     "xrmotionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
     "scenepickingpass": "an editor pass", "picking": "an editor pass", "selection": "an editor pass",
 }
+# Its RenderPipeline tags: URP sets Shader.globalRenderPipeline to "UniversalPipeline,LightweightPipeline"
+# (UniversalRenderPipeline.cs: "for compatibility reasons" with LWRP's old tag), so a SubShader
+# tagged LightweightPipeline runs under URP.
 URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalforwardonly", "srpdefaultunlit", ""),
-               URP_SKIPPED_LIGHT_MODES, ("CG", "HLSL"), ("UniversalPipeline", "UniversalRenderPipeline"),
+               URP_SKIPPED_LIGHT_MODES, ("CG", "HLSL"),
+               ("UniversalPipeline", "UniversalRenderPipeline", "LightweightPipeline"),
                spellings=(
                    # Core RP's facing macros (a fragment parameter's type and semantic)
                    (re.compile(r"\bFRONT_FACE_TYPE\b"), "bool"),

@@ -257,10 +257,26 @@ float3 GetCameraRelativePositionWS(float3 positionWS) { return positionWS; }
 // 1 / (zBufferParam.z z + zBufferParam.w) and 1 / (zBufferParam.x z + zBufferParam.y).
 float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
+// Core RP's other LinearEyeDepth: a world position's distance along the view axis, |view z| of
+// mul(viewMatrix, float4(positionWS, 1)) (a right-handed view looks down -z: the absolute value).
+float LinearEyeDepth(float3 positionWS, float4x4 viewMatrix) { return abs(mul(viewMatrix, float4(positionWS, 1.0)).z); }
+// URP's ShaderVariablesFunctions.hlsl: a depth that is already linear in [0, 1] (an orthographic
+// camera's) to the eye's distance, near + (far - near) depth with _ProjectionParams' y = near and
+// z = far (UNITY_REVERSED_Z is undefined on GL, so 0 is the near plane).
+float LinearDepthToEyeDepth(float rawDepth) { return _ProjectionParams.y + (_ProjectionParams.z - _ProjectionParams.y) * rawDepth; }
 
 // Core RP's Common.hlsl: x remapped so that start -> 0 and start + length -> 1, clamped, from
 // 1 / length and start / length: saturate(x rcpLength - startTimesRcpLength).
 float Remap01(float x, float rcpLength, float startTimesRcpLength) { return saturate(x * rcpLength - startTimesRcpLength); }
+// Core RP's Common.hlsl: the smallest and the largest of three values, per component.
+float Min3(float a, float b, float c) { return min(min(a, b), c); }
+float2 Min3(float2 a, float2 b, float2 c) { return min(min(a, b), c); }
+float3 Min3(float3 a, float3 b, float3 c) { return min(min(a, b), c); }
+float4 Min3(float4 a, float4 b, float4 c) { return min(min(a, b), c); }
+float Max3(float a, float b, float c) { return max(max(a, b), c); }
+float2 Max3(float2 a, float2 b, float2 c) { return max(max(a, b), c); }
+float3 Max3(float3 a, float3 b, float3 c) { return max(max(a, b), c); }
+float4 Max3(float4 a, float4 b, float4 c) { return max(max(a, b), c); }
 // Core RP's Color.hlsl Luminance: Rec. 709 relative luminance of a linear colour (ITU-R BT.709,
 // the sRGB primaries; weights sum to 1). The Unity prelude's Luminance is the built-in pipeline's
 // (unity_ColorSpaceLuminance, linear weights summing to 0.504): URP programs never see it, so
@@ -281,6 +297,15 @@ float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
 float4 ComputeClipSpacePosition(float2 positionNDC, float deviceDepth) {
     return float4(positionNDC * 2.0 - 1.0, deviceDepth, 1.0);
 }
+// Core RP's Common.hlsl's other overload: a position (clip space already, or view or world
+// space with UNITY_MATRIX_P or UNITY_MATRIX_VP) through the transform, w = 1:
+// mul(clipSpaceTransform, float4(position, 1)). Unity declares only the float3 position; FXC
+// truncates a float4 argument to its xyz (warning X3206, implicit truncation of vector type),
+// which the float4 overload does explicitly.
+float4 ComputeClipSpacePosition(float3 position, float4x4 clipSpaceTransform) { return mul(clipSpaceTransform, float4(position, 1.0)); }
+float4 ComputeClipSpacePosition(float3 position) { return float4(position, 1.0); }
+float4 ComputeClipSpacePosition(float4 position) { return float4(position.xyz, 1.0); }
+float4 ComputeClipSpacePosition(float4 position, float4x4 clipSpaceTransform) { return mul(clipSpaceTransform, float4(position.xyz, 1.0)); }
 float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4 invViewProjMatrix) {
     float4 positionHWS = mul(invViewProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
     return positionHWS.xyz / positionHWS.w;
