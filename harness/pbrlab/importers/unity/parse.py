@@ -74,7 +74,10 @@ _PROPERTY = re.compile(
 # ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
 PROPERTY_KINDS = {"float": "Float", "range": "Range", "int": "Int", "integer": "Int", "color": "Color",
                   "vector": "Vector", "2d": "2D", "3d": "3D", "cube": "Cube", "2darray": "2DArray",
-                  "cubearray": "CubeArray", "any": "2D"}
+                  "cubearray": "CubeArray", "any": "2D",
+                  # RECT: the legacy name of a 2D texture property (non-power-of-two "rectangle"
+                  # textures of Unity's early versions; Unity's own editor shaders still write it)
+                  "rect": "2D"}
 TEXTURE_DEFAULTS = ("white", "black", "gray", "grey", "bump", "red", "linearGrey", "")
 
 
