@@ -17,25 +17,22 @@ SHADER = textwrap.dedent("""\
     Shader "Test/FrontFaceAsInteger"
     {
         Properties { _Color ("Color", Color) = (0.75, 0.25, 0.5, 1) }
-        SubShader
-        {
-            Pass
+        SubShader { Pass {
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "UnityCG.cginc"
+            fixed4 _Color;
+            float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
+            fixed4 frag(float4 pos : SV_POSITION, KIND face : SV_IsFrontFace) : SV_Target
             {
-                CGPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "UnityCG.cginc"
-                fixed4 _Color;
-                float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
-                fixed4 frag(float4 pos : SV_POSITION, KIND face : SV_IsFrontFace) : SV_Target
-                {
-                    return _Color * 0.5 * (face + 1);
-                }
-                ENDCG
+                return _Color * 0.5 * (face + 1);
             }
-        }
+            ENDCG
+        } }
     }
     """)
+
 
 
 def _run(tmp_path, kind, language):
