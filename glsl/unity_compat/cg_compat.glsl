@@ -42,6 +42,13 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define samplerCUBE samplerCube
 #define sampler2D_float sampler2D
 #define sampler2D_half sampler2D
+// HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
+// a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
+// program that includes nothing)
+#ifndef CBUFFER_START
+#define CBUFFER_START(name)
+#define CBUFFER_END
+#endif
 
 float fmod(float x, float y) { return x - y * trunc(x / y); }
 vec2 fmod(vec2 x, vec2 y) { return x - y * trunc(x / y); }

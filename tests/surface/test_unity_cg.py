@@ -85,6 +85,14 @@ def test_decode_hdr(language):
     got = _eval("vec4(DecodeHDR(d, i), 0.0)", language, d=vec4(data), i=vec4(instr))
     want = R.decode_hdr(data, instr)
     assert np.abs(got[:, :3] - want).max() <= BOUND * max(1.0, np.abs(want).max())
+    # the three-argument form (Unity 2018+): 0 is the two-argument (linear) decode, 1 drops the
+    # exponent; control: the gamma decode differs from the linear one where alpha is used
+    linear = _eval("vec4(DecodeHDR(d, i, 0), 0.0)", language, d=vec4(data), i=vec4(instr))
+    gamma = _eval("vec4(DecodeHDR(d, i, 1), 0.0)", language, d=vec4(data), i=vec4(instr))
+    want_gamma = R.decode_hdr(data, instr, colorspace_is_gamma=True)
+    assert np.array_equal(linear, got)
+    assert np.abs(gamma[:, :3] - want_gamma).max() <= BOUND * max(1.0, np.abs(want_gamma).max())
+    assert np.abs(want_gamma - want).max() > 0.1
 
 
 @pytest.mark.parametrize("language", LANGUAGES)

@@ -48,6 +48,13 @@ PBRLAB_MATRIX_COMP_MULT(3, 2) PBRLAB_MATRIX_COMP_MULT(3, 3) PBRLAB_MATRIX_COMP_M
 PBRLAB_MATRIX_COMP_MULT(4, 2) PBRLAB_MATRIX_COMP_MULT(4, 3) PBRLAB_MATRIX_COMP_MULT(4, 4)
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
+// HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
+// a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
+// program that includes nothing)
+#ifndef CBUFFER_START
+#define CBUFFER_START(name)
+#define CBUFFER_END
+#endif
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,
 // from the fragment's facing); glslang would take the semantic as its own built-in and drop
 // the member from the struct, so the semantic is renamed to a plain one.

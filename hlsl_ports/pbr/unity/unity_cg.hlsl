@@ -125,9 +125,18 @@ float LinearToGammaSpaceExact(float value) {
 // Unity's DecodeHDR (linear colour space, not UNITY_USE_NATIVE_HDR): RGBM-style
 // decode, decodeInstructions = (multiplier, exponent, 0, use alpha). The harness's
 // environment is float, so unity_SpecCube0_HDR = (1, 1, 0, 0) makes it the identity.
-float3 DecodeHDR(float4 data, float4 decodeInstructions) {
+// Unity 2018+'s three-argument form (UnityCG.cginc) names the colour space: colorspaceIsGamma
+// != 0 skips the exponent (a gamma-space project's RGBM is multiplier * alpha * rgb).
+float3 DecodeHDR(float4 data, float4 decodeInstructions, int colorspaceIsGamma) {
     float alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;
+    if (colorspaceIsGamma != 0) {
+        return (decodeInstructions.x * alpha) * data.rgb;
+    }
     return (decodeInstructions.x * pow(alpha, decodeInstructions.y)) * data.rgb;
+}
+
+float3 DecodeHDR(float4 data, float4 decodeInstructions) {
+    return DecodeHDR(data, decodeInstructions, 0);
 }
 
 // Unity's DXT5nm-only unpack (UnityCG.cginc UnpackNormalDXT5nm): x from alpha, y from green;

@@ -451,7 +451,12 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         if semantic in _POSITION or semantic == "VPOS":
             return fit("pbrlab_frag_position", 4, n, language)
         if semantic in ("VFACE", "SV_ISFRONTFACE"):
-            return "pbrlab_front_facing" if kind.startswith("bool") else "(pbrlab_front_facing ? 1.0 : -1.0)"
+            if kind.startswith("bool"):
+                return "pbrlab_front_facing"
+            if kind.startswith(("uint", "int")):  # ``uint f : SV_IsFrontFace``: the bool converted
+                # (HLSL's bool -> uint is 1 or 0, as glslang's HLSL path gives it)
+                return f"{'int' if kind.startswith('int') else 'uint'}(pbrlab_front_facing)"
+            return "(pbrlab_front_facing ? 1.0 : -1.0)"
         if semantic == "SV_PRIMITIVEID":  # the triangle's index in the draw (GLSL's gl_PrimitiveID)
             return f"{'int' if kind.startswith('int') else 'uint'}(pbrlab_primitive_id)"
         if semantic in have and _MATRIX.fullmatch(have[semantic]):

@@ -74,7 +74,10 @@ _PROPERTY = re.compile(
 # ShaderLab's type names, case-insensitive as ShaderLab reads them -> the model's spelling.
 PROPERTY_KINDS = {"float": "Float", "range": "Range", "int": "Int", "integer": "Int", "color": "Color",
                   "vector": "Vector", "2d": "2D", "3d": "3D", "cube": "Cube", "2darray": "2DArray",
-                  "cubearray": "CubeArray", "any": "2D"}
+                  "cubearray": "CubeArray", "any": "2D",
+                  # RECT: the legacy name of a 2D texture property (non-power-of-two "rectangle"
+                  # textures of Unity's early versions; Unity's own editor shaders still write it)
+                  "rect": "2D"}
 TEXTURE_DEFAULTS = ("white", "black", "gray", "grey", "bump", "red", "linearGrey", "")
 
 
@@ -603,7 +606,8 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
     """A whole shader: a ShaderLab file, bare CGPROGRAM text, or a port-unity port."""
     text = text.removeprefix("\ufeff")
     masked = blank_comments(text)
-    if not re.search(r"^\s*Shader\s*\"", masked, re.M):
+    # ShaderLab's keywords are case-insensitive: Unity reads ``shader "name" {`` too
+    if not re.search(r"^\s*Shader\s*\"", masked, re.M | re.I):
         if not masked.strip():
             raise UnityShaderError(f"{path}:1: the file is empty (no Shader \"name\" {{ ... }} block, no program)")
         shader = parse_program(text, path, 1)
@@ -725,7 +729,7 @@ def shader_names(near: Path):
                 head = candidate.read_text(encoding="utf-8", errors="replace")[:4000]
             except OSError:
                 continue
-            m = re.search(r'\bShader\s*"([^"]*)"', blank_comments(head))
+            m = re.search(r'\bShader\s*"([^"]*)"', blank_comments(head), re.I)
             if m and candidate.resolve() != near.resolve():
                 yield candidate, m.group(1)
 

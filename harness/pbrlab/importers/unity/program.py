@@ -115,8 +115,10 @@ def program_include(shader) -> tuple[str, dict]:
     # pass of each included file too (a struct an earlier include declares, a property the
     # program declares before an include uses it: (Struct)0, a scalar's .rrr); their functions
     # are not (a file's own function, seen twice, would take part in overload resolution)
+    # (built-in programs too: a global one include declares and a sibling include reads, as
+    # ``float _MaskGlow;`` then ``if (_MaskGlow)``, needs its type for FXC's conversions)
     srp = getattr(shader, "srp", False)
-    context = _structs_and_globals(shader.program + "\n" + included_text(shader.program, shader.path.parent)) if srp else ""
+    context = _structs_and_globals(shader.program + "\n" + included_text(shader.program, shader.path.parent))
     # and the functions the other included files define, as prototypes (the type of a call to
     # a function of another include: int GetAdditionalLightsCount() read into a uint)
     files = included_files(shader.program, shader.path.parent) if srp else {}

@@ -24,6 +24,7 @@ from .source_text import blank_comments, line_of
 _BLOCK = re.compile(r"\b(CGPROGRAM|CGINCLUDE|HLSLPROGRAM|HLSLINCLUDE|GLSLPROGRAM|GLSLINCLUDE)\b")
 _BLOCK_END = {"CG": re.compile(r"\bENDCG\b"), "HLSL": re.compile(r"\bENDHLSL\b"),
               "GLSL": re.compile(r"\bENDGLSL\b")}
+_UPGRADE_WARNING = re.compile(r"^[ \t]*#warning\b[^\n]*", re.M)
 _TOKEN = re.compile(r'"[^"\n]*"|[A-Za-z_][\w.]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|\S')
 # Commands of a Pass that belong to the fixed-function pipeline (no program runs them).
 FIXED_FUNCTION = frozenset(w.lower() for w in (
@@ -356,6 +357,9 @@ def read_layout(text: str, path: Path) -> ShaderLabFile:
     structure = masked
     for b in blocks:  # the code is not ShaderLab: keep only the keyword's first letter as a token
         structure = structure[:b.start] + "P" + blank(structure[b.start + 1:b.end]) + structure[b.end:]
+    # Unity's shader upgrader writes ``#warning Upgrade NOTE: ...`` lines above ``Shader``
+    # (observed in upgraded files, Unity imports them): a note, not structure
+    structure = _UPGRADE_WARNING.sub(lambda m: blank(m.group(0)), structure)
     t = _Tokens(structure, path, blocks)
     tok, line, _ = t.next()
     if tok is None or tok.lower() != "shader":

@@ -56,10 +56,12 @@ def linear_to_gamma_space(lin):
     return np.maximum(1.055 * c ** 0.416666667 - 0.055, 0.0)
 
 
-def decode_hdr(data, instructions):
+def decode_hdr(data, instructions, colorspace_is_gamma=False):
+    """UnityCG.cginc's DecodeHDR: multiplier * alpha^exponent * rgb, alpha = 1 + use_alpha *
+    (a - 1); in a gamma colour space (its three-argument form's flag) the exponent is skipped."""
     d, i = np.asarray(data, np.float64), np.asarray(instructions, np.float64)
     alpha = i[..., 3] * (d[..., 3] - 1.0) + 1.0
-    return (i[..., 0] * alpha ** i[..., 1])[..., None] * d[..., :3]
+    return (i[..., 0] * (alpha if colorspace_is_gamma else alpha ** i[..., 1]))[..., None] * d[..., :3]
 
 
 def unpack_normal_dxt5nm(packed):
