@@ -88,3 +88,80 @@ def test_sincos_without_the_splat_is_refused_by_the_glsl_port(tmp_path, monkeypa
     monkeypatch.setattr(cg_types._Parser, "sincos_splat", lambda self, x, s, c: None)
     with pytest.raises(PbrlabError, match="cannot be assigned"):
         _sincos(tmp_path, "glsl", "sincos_old", 0.5)
+
+
+# hadashiA's ScreenSpaceFluid: ``uniform`` before the SRP texture macros (FXC: a global is
+# uniform anyway); wrc1028's WaterPass: a ternary whose operand's name reads as a semantic.
+UNIFORM_MACROS = """
+    uniform TEXTURE2D(_NoiseTex);
+    uniform SAMPLER(sampler_NoiseTex);
+"""
+
+
+def _ternary(tmp_path, language, name, depth):
+    body = f"""float4 color01 = float4(0.2, 0.4, 0.6, 1);
+              float4 color02 = float4(0.9, 0.1, 0.3, 1);
+              float depth = {depth};
+              float4 result = depth < 0.5 ? color01 : color02;
+              return result * result;"""
+    pixels, _ = render_constant(tmp_path, urp_pass(name, body, UNIFORM_MACROS), language, environment=False)
+    return pixels[:, :3]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_uniform_texture_macros_and_a_ternary_of_color_named_operands(tmp_path, language):
+    """``d < 0.5 ? color01 : color02`` picks color01 (squared: 0.04, 0.16, 0.36), its operand
+    ``color02`` no longer dropped as a COLOR semantic; control: depth 0.75 picks color02."""
+    near = _ternary(tmp_path, language, "ternary", 0.25)
+    assert np.abs(near - np.array([0.2, 0.4, 0.6]) ** 2).max() <= ARITHMETIC
+    far = _ternary(tmp_path, language, "ternary_far", 0.75)
+    assert np.abs(far - np.array([0.9, 0.1, 0.3]) ** 2).max() <= ARITHMETIC
+
+
+def test_the_old_semantic_reading_of_a_ternary_is_refused(tmp_path, monkeypatch):
+    """Control: ``: color02`` read as a semantic again leaves ``?`` without its ``:``."""
+    from pbrlab.importers.unity import port
+    monkeypatch.setattr(port, "_in_ternary", lambda code, pos: False)
+    with pytest.raises(PbrlabError, match="syntax error"):
+        _ternary(tmp_path, "glsl", "ternary_old", 0.25)
+
+
+def test_uniform_before_sampler_kept_is_refused(tmp_path, monkeypatch):
+    """Control: ``uniform`` kept before the sampler's constant stand-in."""
+    import re
+    from pbrlab.importers.unity import port
+    monkeypatch.setattr(port, "_TRAILING_UNIFORM", re.compile(r"(?!)"))
+    with pytest.raises(PbrlabError, match="duplicate storage qualifier"):
+        _ternary(tmp_path, "glsl", "uniform_old", 0.25)
+
+
+# RyouTomokin's KIIFPBR: a Varyings member float4 under #if, float3 under #else.
+TWO_TYPED_MEMBER = """
+    #define WIDE_NORMAL 1
+    struct Packed {
+    #if defined(WIDE_NORMAL)
+        float4 normalWS;
+    #else
+        float3 normalWS;
+    #endif
+    };
+"""
+TWO_TYPED_BODY = """Packed p;
+              p.normalWS = float4(float3(0.1, 0.2, 0.3), 0.4);
+              return float4(p.normalWS.w, p.normalWS.x, 0.5, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_member_of_two_types_under_if_keeps_the_compiled_ones(tmp_path, language):
+    """The #if branch compiled declares a float4: all four components are stored (0.4, 0.1)."""
+    pixels, _ = render_constant(tmp_path, urp_pass("two_typed", TWO_TYPED_BODY, TWO_TYPED_MEMBER), language,
+                                environment=False)
+    assert np.abs(pixels[:, :3] - np.array([0.4, 0.1, 0.5])).max() <= ARITHMETIC
+
+
+def test_a_member_typed_by_its_last_declaration_is_refused(tmp_path, monkeypatch):
+    """Control: the pass's old reading (the #else's float3) truncates the float4 stored."""
+    monkeypatch.setattr(cg_types._Parser, "member_type", staticmethod(lambda fields, name, t: t))
+    with pytest.raises(PbrlabError, match="cannot be assigned"):
+        render_constant(tmp_path, urp_pass("two_typed_old", TWO_TYPED_BODY, TWO_TYPED_MEMBER), "glsl",
+                        environment=False)

@@ -759,11 +759,7 @@ class _Parser:
                 n = name_tok.text
                 ft = self.array_suffix(t)
                 self.semantic()
-                # a member declared again of another type (``#if defined(_NORMALMAP) float4
-                # normalWS; #else float3 normalWS;``, RyouTomokin's KIIFPBR): the variant
-                # compiled holds one of them, which this pass cannot know; of unknown type, its
-                # uses are left as written (FXC converts each variant against its own member)
-                fields[n] = None if n in fields and fields[n] != ft else ft
+                fields[n] = self.member_type(fields, n, ft)
                 members.append((name_tok.s, n, ft))
                 if not self.accept(","):
                     break
@@ -777,6 +773,14 @@ class _Parser:
             self.sym.conditional.add(name)
             if not self.decl_only and not self.scopes:
                 self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    @staticmethod
+    def member_type(fields, name, t):
+        """A member declared again of another type (``#if defined(_NORMALMAP) float4 normalWS;
+        #else float3 normalWS;``, RyouTomokin's KIIFPBR): the variant compiled holds one of them,
+        which this pass cannot know; of unknown type (None), its uses are left as written (FXC
+        converts each variant against its own member)."""
+        return None if name in fields and fields[name] != t else t
 
     def _macro_member_ahead(self) -> bool:
         """Whether the struct member ahead is a bare macro (UNITY_VERTEX_INPUT_INSTANCE_ID
