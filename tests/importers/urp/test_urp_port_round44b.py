@@ -165,3 +165,28 @@ def test_a_member_typed_by_its_last_declaration_is_refused(tmp_path, monkeypatch
     with pytest.raises(PbrlabError, match="cannot be assigned"):
         render_constant(tmp_path, urp_pass("two_typed_old", TWO_TYPED_BODY, TWO_TYPED_MEMBER), "glsl",
                         environment=False)
+
+
+# wrc1028's WaterSG: Shader Graph's ``struct Bindings_X { };`` for a subgraph that binds nothing.
+EMPTY_STRUCT = """
+    struct Bindings_Nothing { };
+    float Shade(float x, Bindings_Nothing IN) { return x * 0.5; }
+"""
+EMPTY_BODY = """Bindings_Nothing b = (Bindings_Nothing)0;
+              return float4(Shade(0.25, b), 0.25, 0.5, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_an_empty_struct_is_declared_and_passed(tmp_path, language):
+    """FXC takes an empty struct; the GLSL port gives it an unused int (GLSL 3.30 section 4.1.8
+    needs a member): the function called through it returns 0.125."""
+    pixels, _ = render_constant(tmp_path, urp_pass("empty_struct", EMPTY_BODY, EMPTY_STRUCT), language,
+                                environment=False)
+    assert np.abs(pixels[:, :3] - np.array([0.125, 0.25, 0.5])).max() <= ARITHMETIC
+
+
+def test_an_empty_struct_as_written_is_refused_by_the_glsl_port(tmp_path, monkeypatch):
+    """Control: without the stand-in member GLSL's grammar refuses the struct."""
+    monkeypatch.setattr(cg_types._Parser, "EMPTY_MEMBER", "")
+    with pytest.raises(PbrlabError, match="syntax error"):
+        render_constant(tmp_path, urp_pass("empty_struct_old", EMPTY_BODY, EMPTY_STRUCT), "glsl", environment=False)

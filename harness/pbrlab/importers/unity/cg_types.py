@@ -466,6 +466,8 @@ class E:
 
 
 class _Parser:
+    EMPTY_MEMBER = "int pbr_unity_empty; "  # an empty struct's stand-in member (struct())
+
     def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
         self.fxc_edits = Edits()  # what the HLSL as written needs too (fxc_conversions)
         self.text = text
@@ -766,6 +768,12 @@ class _Parser:
             self.expect(";")
         close = self.toks[self.i - 1]
         inside = [(s, e) for s, e in self.directives if open_.s < s < close.s]
+        if not members and not macro_member and not inside and not self.decl_only and self.EMPTY_MEMBER:
+            # ``struct Bindings_X { };`` (Shader Graph's subgraph bindings of nothing): FXC takes
+            # an empty struct, GLSL's grammar needs a member (GLSL 3.30 section 4.1.8, "a
+            # structure must have at least one member declaration"): an unused int stands in
+            self.edits.open(close.s, self.EMPTY_MEMBER)
+            fields["pbr_unity_empty"] = Type("int")
         if self.peek().kind == "id":
             self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
         end = self.expect(";")
@@ -1502,6 +1510,8 @@ class _Parser:
             return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:
             members = self.sym.structs[ty.base].values()
+            if None in members:  # a member of two types under #if (member_type): left as written
+                self.fail("a zero of a member of unknown type")
             return f"{ty.base}({', '.join(self.zero_value(m) for m in members)})"
         zero = {"float": "0.0", "int": "0", "uint": "0u", "bool": "false"}.get(ty.base)
         if zero is None:
