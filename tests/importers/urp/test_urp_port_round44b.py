@@ -190,3 +190,55 @@ def test_an_empty_struct_as_written_is_refused_by_the_glsl_port(tmp_path, monkey
     monkeypatch.setattr(cg_types._Parser, "EMPTY_MEMBER", "")
     with pytest.raises(PbrlabError, match="syntax error"):
         render_constant(tmp_path, urp_pass("empty_struct_old", EMPTY_BODY, EMPTY_STRUCT), "glsl", environment=False)
+
+
+# FractalAsim's DepthVisualizer: ``if (_KEYWORD)`` of a keyword of the variant (the harness
+# defines it 1); cociorbaandrei's Toon: ``uint isFrontFace : SV_IsFrontFace``.
+KEYWORD_CONDITION = """
+    #pragma shader_feature_local _SELECT_NEAR _SELECT_FAR
+"""
+KEYWORD_BODY = """if (_SELECT_NEAR)
+                  return float4(0.25, 0.5, 0.75, 1);
+              return float4(0.75, 0.5, 0.25, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_keyword_as_an_if_condition_is_converted_to_bool(tmp_path, language):
+    """The variant's first keyword is defined 1: FXC converts the int condition to bool (true)."""
+    pixels, _ = render_constant(tmp_path, urp_pass("keyword_if", KEYWORD_BODY, KEYWORD_CONDITION), language,
+                                environment=False)
+    assert np.abs(pixels[:, :3] - np.array([0.25, 0.5, 0.75])).max() <= ARITHMETIC
+
+
+def test_a_keyword_condition_left_as_written_is_refused(tmp_path, monkeypatch):
+    """Control: the pass's old reading (an unknown name's condition untouched)."""
+    monkeypatch.setattr(cg_types, "_NAME", __import__("re").compile(r"(?!)"))
+    with pytest.raises(PbrlabError, match="scalar boolean"):
+        render_constant(tmp_path, urp_pass("keyword_if_old", KEYWORD_BODY, KEYWORD_CONDITION), "glsl",
+                        environment=False)
+
+
+FRONT_FACE = urp_pass("front_face_uint", "").replace(
+    "float4 frag(Varyings IN) : SV_Target {",
+    "float4 frag(Varyings IN, uint isFrontFace : SV_IsFrontFace) : SV_Target {\n"
+    "    return isFrontFace ? float4(0.25, 0.5, 0.75, 1) : float4(0.75, 0.5, 0.25, 1);")
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_uint_front_face_is_nonzero_on_the_spheres_outside(tmp_path, language):
+    """The sphere's visible faces are front faces: isFrontFace is nonzero (the first colour);
+    the GLSL port used to initialise the uint with the float VFACE value, and was refused."""
+    assert "uint isFrontFace" in FRONT_FACE
+    pixels, _ = render_constant(tmp_path, FRONT_FACE, language, environment=False)
+    assert np.abs(pixels[:, :3] - np.array([0.25, 0.5, 0.75])).max() <= ARITHMETIC
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_uint_front_face_is_zero_on_back_faces(tmp_path, language):
+    """Control: culling the front faces shows the sphere's inside, whose faces are back faces:
+    isFrontFace is 0 (the second colour)."""
+    culled = FRONT_FACE.replace('Tags { "LightMode" = "UniversalForward" }',
+                                'Tags { "LightMode" = "UniversalForward" }\n            Cull Front', 1)
+    assert "Cull Front" in culled
+    pixels, _ = render_constant(tmp_path, culled, language, environment=False)
+    assert np.abs(pixels[:, :3] - np.array([0.75, 0.5, 0.25])).max() <= ARITHMETIC

@@ -409,6 +409,7 @@ _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "c
              "while", "do", "switch", "struct", "typedef", "true", "false"}
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
             "==": "equal", "!=": "notEqual"}
+_NAME = re.compile(r"[A-Za-z_]\w*")
 _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
 # HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
 _PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
@@ -1263,6 +1264,13 @@ class _Parser:
 
     def condition(self, e: E):
         if e.t is not None and e.t.scalar and e.t.base != "bool":
+            self.wrap(e, "bool")
+        elif e.t is None and not self.decl_only and _NAME.fullmatch(self.text[e.s:e.e]):
+            # a bare name of a type this pass cannot know: a keyword the harness defines 1 for
+            # the variant (``if (_DEPTHSELECT_RAW)`` under ``#pragma shader_feature_local
+            # _DEPTHSELECT_RAW ...``, FractalAsim's DepthVisualizer) or a global of an include
+            # not read (a [Toggle] float): FXC converts a scalar condition to bool (nonzero is
+            # true; Microsoft's HLSL reference, "if statement"), which bool() spells in GLSL
             self.wrap(e, "bool")
 
     # --- expressions

@@ -451,6 +451,9 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
         if semantic in _POSITION or semantic == "VPOS":
             return fit("pbrlab_frag_position", 4, n, language)
         if semantic in ("VFACE", "SV_ISFRONTFACE"):
+            if kind.startswith(("int", "uint")):  # ``uint isFrontFace : SV_IsFrontFace``: 1 on a
+                # front face, 0 on a back one (glslang's HLSL path converts the bool so too)
+                return f"{kind.rstrip('1')}(pbrlab_front_facing)"
             return "pbrlab_front_facing" if kind.startswith("bool") else "(pbrlab_front_facing ? 1.0 : -1.0)"
         if semantic == "SV_PRIMITIVEID":  # the triangle's index in the draw (GLSL's gl_PrimitiveID)
             return f"{'int' if kind.startswith('int') else 'uint'}(pbrlab_primitive_id)"
