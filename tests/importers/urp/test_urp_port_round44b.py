@@ -30,6 +30,20 @@ ARITHMETIC = 4 * 2.0 ** -24
 # 0.1 moves sin(h) by about 0.09, 10^5 times the bound (the perturbed control).
 TRIG = 16 * 2.0 ** -24
 
+
+
+def _rgb(tmp_path, language, name, body, include=""):
+    """The covered pixels' RGB of the URP pass ``body`` (after ``include``) on the unit sphere."""
+    pixels, _ = render_constant(tmp_path, urp_pass(name, body, include), language, environment=False)
+    return pixels[:, :3]
+
+
+def _refused(tmp_path, match, name, body, include=""):
+    """The GLSL port refuses the pass (a control: the conversion taken out)."""
+    with pytest.raises(PbrlabError, match=match):
+        _rgb(tmp_path, "glsl", name, body, include)
+
+
 DEFINED = """
     static const half2 _Params = half2(0.1, 0.3);
     static const float4 _Tint = float4(0.1, 0.2, 0.3, 0.4);
@@ -48,18 +62,17 @@ def test_a_define_of_a_globals_member_is_splatted_as_fxc_does(tmp_path, language
     body = """float4 s = _BlurRadius * 0.5;
               float3 c = TINT_TWICE;
               return float4(s.x + s.w, s.y * c.x, c.z - s.z, 1);"""
-    pixels, _ = render_constant(tmp_path, urp_pass("defined", body, DEFINED), language, environment=False)
+    pixels = _rgb(tmp_path, language, "defined", body, DEFINED)
     s, c = 0.3 * 0.5, np.array([0.1, 0.2, 0.3]) * 2.0
     expected = np.array([s + s, s * c[0], c[2] - s])
-    assert np.abs(pixels[:, :3] - expected).max() <= ARITHMETIC
+    assert np.abs(pixels - expected).max() <= ARITHMETIC
 
 
 def test_a_define_left_untyped_is_refused_by_the_glsl_port(tmp_path, monkeypatch):
     """Control: the pass's old reading (the define of unknown type, nothing spelled out)."""
     monkeypatch.setattr(cg_types._Parser, "defined_value", lambda self, name: None)
     body = "float4 s = _BlurRadius * 0.5; return float4(s.xyz, 1);"
-    with pytest.raises(PbrlabError, match="cannot be assigned"):
-        render_constant(tmp_path, urp_pass("defined_old", body, DEFINED), "glsl", environment=False)
+    _refused(tmp_path, "cannot be assigned", "defined_old", body, DEFINED)
 
 
 def _sincos(tmp_path, language, name, angle):
@@ -67,8 +80,7 @@ def _sincos(tmp_path, language, name, angle):
               float3 s, c;
               sincos(h, s, c);
               return float4(s.x, c.y, s.z * c.z, 1);"""
-    pixels, _ = render_constant(tmp_path, urp_pass(name, body), language, environment=False)
-    return pixels[:, :3]
+    return _rgb(tmp_path, language, name, body)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -104,8 +116,7 @@ def _ternary(tmp_path, language, name, depth):
               float depth = {depth};
               float4 result = depth < 0.5 ? color01 : color02;
               return result * result;"""
-    pixels, _ = render_constant(tmp_path, urp_pass(name, body, UNIFORM_MACROS), language, environment=False)
-    return pixels[:, :3]
+    return _rgb(tmp_path, language, name, body, UNIFORM_MACROS)
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
@@ -154,17 +165,13 @@ TWO_TYPED_BODY = """Packed p;
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_a_member_of_two_types_under_if_keeps_the_compiled_ones(tmp_path, language):
     """The #if branch compiled declares a float4: all four components are stored (0.4, 0.1)."""
-    pixels, _ = render_constant(tmp_path, urp_pass("two_typed", TWO_TYPED_BODY, TWO_TYPED_MEMBER), language,
-                                environment=False)
-    assert np.abs(pixels[:, :3] - np.array([0.4, 0.1, 0.5])).max() <= ARITHMETIC
+    assert np.abs(_rgb(tmp_path, language, "two_typed", TWO_TYPED_BODY, TWO_TYPED_MEMBER) - np.array([0.4, 0.1, 0.5])).max() <= ARITHMETIC
 
 
 def test_a_member_typed_by_its_last_declaration_is_refused(tmp_path, monkeypatch):
     """Control: the pass's old reading (the #else's float3) truncates the float4 stored."""
     monkeypatch.setattr(cg_types._Parser, "member_type", staticmethod(lambda fields, name, t: t))
-    with pytest.raises(PbrlabError, match="cannot be assigned"):
-        render_constant(tmp_path, urp_pass("two_typed_old", TWO_TYPED_BODY, TWO_TYPED_MEMBER), "glsl",
-                        environment=False)
+    _refused(tmp_path, "cannot be assigned", "two_typed_old", TWO_TYPED_BODY, TWO_TYPED_MEMBER)
 
 
 # wrc1028's WaterSG: Shader Graph's ``struct Bindings_X { };`` for a subgraph that binds nothing.
@@ -180,16 +187,13 @@ EMPTY_BODY = """Bindings_Nothing b = (Bindings_Nothing)0;
 def test_an_empty_struct_is_declared_and_passed(tmp_path, language):
     """FXC takes an empty struct; the GLSL port gives it an unused int (GLSL 3.30 section 4.1.8
     needs a member): the function called through it returns 0.125."""
-    pixels, _ = render_constant(tmp_path, urp_pass("empty_struct", EMPTY_BODY, EMPTY_STRUCT), language,
-                                environment=False)
-    assert np.abs(pixels[:, :3] - np.array([0.125, 0.25, 0.5])).max() <= ARITHMETIC
+    assert np.abs(_rgb(tmp_path, language, "empty_struct", EMPTY_BODY, EMPTY_STRUCT) - np.array([0.125, 0.25, 0.5])).max() <= ARITHMETIC
 
 
 def test_an_empty_struct_as_written_is_refused_by_the_glsl_port(tmp_path, monkeypatch):
     """Control: without the stand-in member GLSL's grammar refuses the struct."""
     monkeypatch.setattr(cg_types._Parser, "EMPTY_MEMBER", "")
-    with pytest.raises(PbrlabError, match="syntax error"):
-        render_constant(tmp_path, urp_pass("empty_struct_old", EMPTY_BODY, EMPTY_STRUCT), "glsl", environment=False)
+    _refused(tmp_path, "syntax error", "empty_struct_old", EMPTY_BODY, EMPTY_STRUCT)
 
 
 # FractalAsim's DepthVisualizer: ``if (_KEYWORD)`` of a keyword of the variant (the harness
@@ -205,17 +209,13 @@ KEYWORD_BODY = """if (_SELECT_NEAR)
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_a_keyword_as_an_if_condition_is_converted_to_bool(tmp_path, language):
     """The variant's first keyword is defined 1: FXC converts the int condition to bool (true)."""
-    pixels, _ = render_constant(tmp_path, urp_pass("keyword_if", KEYWORD_BODY, KEYWORD_CONDITION), language,
-                                environment=False)
-    assert np.abs(pixels[:, :3] - np.array([0.25, 0.5, 0.75])).max() <= ARITHMETIC
+    assert np.abs(_rgb(tmp_path, language, "keyword_if", KEYWORD_BODY, KEYWORD_CONDITION) - np.array([0.25, 0.5, 0.75])).max() <= ARITHMETIC
 
 
 def test_a_keyword_condition_left_as_written_is_refused(tmp_path, monkeypatch):
     """Control: the pass's old reading (an unknown name's condition untouched)."""
     monkeypatch.setattr(cg_types, "_NAME", __import__("re").compile(r"(?!)"))
-    with pytest.raises(PbrlabError, match="scalar boolean"):
-        render_constant(tmp_path, urp_pass("keyword_if_old", KEYWORD_BODY, KEYWORD_CONDITION), "glsl",
-                        environment=False)
+    _refused(tmp_path, "scalar boolean", "keyword_if_old", KEYWORD_BODY, KEYWORD_CONDITION)
 
 
 FRONT_FACE = urp_pass("front_face_uint", "").replace(
