@@ -409,6 +409,7 @@ _KEYWORDS = {"return", "else", "case", "default", "goto", "discard", "break", "c
              "while", "do", "switch", "struct", "typedef", "true", "false"}
 _COMPARE = {"<": "lessThan", ">": "greaterThan", "<=": "lessThanEqual", ">=": "greaterThanEqual",
             "==": "equal", "!=": "notEqual"}
+_NAME = re.compile(r"[A-Za-z_]\w*")
 _SWIZZLE = re.compile(r"[xyzw]{1,4}|[rgba]{1,4}")
 # HLSL's matrix swizzles: zero-based ``_mRC`` or one-based ``_RC``, up to four in a row
 _PLAIN = re.compile(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*|\d+")  # a name, a member or a literal
@@ -466,6 +467,8 @@ class E:
 
 
 class _Parser:
+    EMPTY_MEMBER = "int pbr_unity_empty; "  # an empty struct's stand-in member (struct())
+
     def __init__(self, text, symbols: Symbols, declarations_only=False, srp=False):
         self.fxc_edits = Edits()  # what the HLSL as written needs too (fxc_conversions)
         self.text = text
@@ -492,6 +495,12 @@ class _Parser:
         self.decl_only = declarations_only
         self.srp = srp  # a Scriptable Render Pipeline's program (conditional structs' zeros)
         self.skipped = []
+        # the program's own object-like #defines of one expression (``#define _BlurRadius
+        # _Params.y``): typed where a use meets them (defined_value), when the globals they
+        # name are declared; defined_values types an include's after it is read
+        self.own_defines = {m.group(1): m.group(2) for m in _EXPRESSION_DEFINE.finditer(text)
+                            if not m.group(2).endswith((";", "\\"))}
+        self.define_types = {}
 
     # token helpers
     def peek(self, k=0):
@@ -565,7 +574,28 @@ class _Parser:
         if name in self.sym.globals:
             return self.sym.globals[name]
         alias = self.resolve_alias(name)
-        return self.sym.globals.get(alias)
+        if alias in self.sym.globals:
+            return self.sym.globals[alias]
+        return self.defined_value(name)
+
+    def defined_value(self, name):
+        """The type of the expression a #define of the program's own names (``#define
+        _BlurRadius _Params.y`` after ``half2 _Params;``: half), read against the globals
+        declared so far; None where it names a local or is no expression. Ashlining's blurs:
+        ``float4 poissonScale = (_BlurRadius * 30) * mask;`` is then splatted as FXC does."""
+        body = self.own_defines.get(name)
+        if body is None or name in self.define_types:
+            return self.define_types.get(name)
+        self.define_types[name] = None  # a define naming itself reads as unknown
+        sub = _Parser(body, self.sym.copy(), declarations_only=True)
+        sub.own_defines, sub.define_types = self.own_defines, self.define_types
+        try:
+            value = sub.expression()
+        except CgSyntaxError:
+            return None
+        if sub.peek().kind == "eof" and value.t is not None and value.t.numeric:
+            self.define_types[name] = value.t
+        return self.define_types[name]
 
     def declare(self, name, t):
         if self.scopes:
@@ -732,13 +762,19 @@ class _Parser:
                 n = name_tok.text
                 ft = self.array_suffix(t)
                 self.semantic()
-                fields[n] = ft
+                fields[n] = self.member_type(fields, n, ft)
                 members.append((name_tok.s, n, ft))
                 if not self.accept(","):
                     break
             self.expect(";")
         close = self.toks[self.i - 1]
         inside = [(s, e) for s, e in self.directives if open_.s < s < close.s]
+        if not members and not macro_member and not inside and not self.decl_only and self.EMPTY_MEMBER:
+            # ``struct Bindings_X { };`` (Shader Graph's subgraph bindings of nothing): FXC takes
+            # an empty struct, GLSL's grammar needs a member (GLSL 3.30 section 4.1.8, "a
+            # structure must have at least one member declaration"): an unused int stands in
+            self.edits.open(close.s, self.EMPTY_MEMBER)
+            fields["pbr_unity_empty"] = Type("int")
         if self.peek().kind == "id":
             self.declarators(Type(name, 0), is_global=not self.scopes, const=False)
         end = self.expect(";")
@@ -746,6 +782,14 @@ class _Parser:
             self.sym.conditional.add(name)
             if not self.decl_only and not self.scopes:
                 self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    @staticmethod
+    def member_type(fields, name, t):
+        """A member declared again of another type (``#if defined(_NORMALMAP) float4 normalWS;
+        #else float3 normalWS;``, RyouTomokin's KIIFPBR): the variant compiled holds one of them,
+        which this pass cannot know; of unknown type (None), its uses are left as written (FXC
+        converts each variant against its own member)."""
+        return None if name in fields and fields[name] != t else t
 
     def _macro_member_ahead(self) -> bool:
         """Whether the struct member ahead is a bare macro (UNITY_VERTEX_INPUT_INSTANCE_ID
@@ -1221,6 +1265,13 @@ class _Parser:
     def condition(self, e: E):
         if e.t is not None and e.t.scalar and e.t.base != "bool":
             self.wrap(e, "bool")
+        elif e.t is None and not self.decl_only and _NAME.fullmatch(self.text[e.s:e.e]):
+            # a bare name of a type this pass cannot know: a keyword the harness defines 1 for
+            # the variant (``if (_DEPTHSELECT_RAW)`` under ``#pragma shader_feature_local
+            # _DEPTHSELECT_RAW ...``, FractalAsim's DepthVisualizer) or a global of an include
+            # not read (a [Toggle] float): FXC converts a scalar condition to bool (nonzero is
+            # true; Microsoft's HLSL reference, "if statement"), which bool() spells in GLSL
+            self.wrap(e, "bool")
 
     # --- expressions
     def expression(self):
@@ -1467,6 +1518,8 @@ class _Parser:
             return f"pbr_unity_zero_{ty.base}()"
         if ty.base in self.sym.structs:
             members = self.sym.structs[ty.base].values()
+            if None in members:  # a member of two types under #if (member_type): left as written
+                self.fail("a zero of a member of unknown type")
             return f"{ty.base}({', '.join(self.zero_value(m) for m in members)})"
         zero = {"float": "0.0", "int": "0", "uint": "0u", "bool": "false"}.get(ty.base)
         if zero is None:
@@ -1615,7 +1668,10 @@ class _Parser:
         alias = self.sampler_alias(t.text) if self.scopes else None
         if alias is not None and not self.decl_only:
             self.edits.replace(t.s, t.e, alias)  # a sampler local: the global it names (local_sampler)
-        return E(t.s, t.e, self.lookup(t.text), True)
+        ty = self.lookup(t.text)
+        # a #define's expression (defined_value) takes a swizzle unparenthesised only if plain
+        postfix = t.text not in self.define_types or bool(_PLAIN.fullmatch(self.own_defines[t.text].strip()))
+        return E(t.s, t.e, ty, postfix)
 
     def arguments(self):
         self.expect("(")
@@ -1655,6 +1711,9 @@ class _Parser:
             fname = OWN_PREFIX + fname
         elif fname in _INTRINSICS:
             return E(*span, self.intrinsic(fname, args), True)
+        if fname == "sincos" and len(args) == 3:
+            self.sincos_splat(*args)
+            return E(*span, VOID, True)
         if fname == "mul" and len(args) == 2 and all(a.t is not None and a.t.vector for a in args):
             # HLSL's mul of two vectors is their inner product (Microsoft's HLSL reference,
             # "mul": vector x vector -> scalar, "x and y must be the same size"; FXC cuts the
@@ -1705,6 +1764,21 @@ class _Parser:
         else:
             self.fxc_edits.open(a.s, "(")
             self.fxc_edits.close(a.e, ")." + "xyzw"[:param.dim])
+
+    def sincos_splat(self, x: E, s: E, c: E):
+        """``sincos(h, s3, c3)`` of a scalar angle and vector outputs (FractalAsim's HueShift):
+        HLSL's sincos is a template whose three arguments share one type (Microsoft's HLSL
+        reference, "sincos": s and c "the same type as" x), and FXC promotes the scalar
+        argument to the outputs' vector, as any intrinsic's scalar is promoted (the reference's
+        "Intrinsic Functions" template types); GLSL's cg_compat sincos assigns sin(x) to the
+        vector and glslang's HLSL front end finds the overload ambiguous: both spell the splat."""
+        if any(a.t is None or not a.t.numeric or a.t.cols for a in (x, s, c)) or self.decl_only:
+            return
+        if x.t.dim == 1 and s.t.dim == c.t.dim > 1:
+            ctor = Type("float", s.t.dim).cg()
+            for edits in (self.edits, self.fxc_edits):
+                edits.open(x.s, ctor + "(")
+                edits.close(x.e, ")")
 
     def mul_vector_truncated(self, a: E, b: E):
         """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,

@@ -146,10 +146,19 @@ def port_code_types(code: str) -> str:
     return _rename_types(code)
 
 
+def _in_ternary(code: str, pos: int) -> bool:
+    """Whether the ``:`` after ``pos`` closes a ``?`` of the statement it stands in (``d < v ?
+    color01 : color02;``, wrc1028's WaterPass: an operand whose name reads as a semantic, COLOR
+    in any case and a number, is no semantic: a declaration has no ``?``)."""
+    start = max(code.rfind(c, 0, pos) for c in ";{}") + 1
+    head = code[start:pos + 1]
+    return head.count("?") > head.count(":")
+
+
 def port_code(code: str) -> str:
     """Pass B on code without comments or strings."""
     code = _rename_types(code)
-    code = _SEMANTIC.sub(r"\1", code)
+    code = _SEMANTIC.sub(lambda m: m.group(0) if _in_ternary(code, m.start()) else m.group(1), code)
     code = _DECLARED_SEMANTIC.sub(r"\1", code)
     # a function's return semantic (comments between it and the body: placeholders here; #if
     # lines there too: `half4 frag(g2f i) : SV_Target` / `#endif` / `{`, the other branch's
@@ -262,6 +271,8 @@ _SRP_TEXTURE_MACROS = {
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 
 
+_TRAILING_UNIFORM = re.compile(r"\buniform(?=[ \t]+$)")
+
 # The start of a #define line up to its replacement text (``#define NAME(a, b) ``): a use of
 # the texture API after it is the shader's own macro's (``#define SAMPLE_MASK(uv)
 # SAMPLE_TEXTURE2D(_Mask, sampler_Mask, uv)``), spelled in Cg like any other.
@@ -297,7 +308,14 @@ def _expand_srp_texture_macros(code: str) -> str:
         spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)
         # the lines a call spans are kept (an argument dropped takes its line breaks with it)
         spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
-        out += [code[pos:m.start()], spelled]
+        before = code[pos:m.start()]
+        if spelled.startswith("static const"):
+            # ``uniform SAMPLER(s);`` (hadashiA's ScreenSpaceFluid): FXC takes the storage class
+            # a global has anyway (Microsoft's HLSL reference, "Variable syntax": a global is
+            # uniform by default); the GL sampler's stand-in is a constant, and GLSL refuses
+            # ``uniform const`` (duplicate storage qualifier): the word goes, blanks keep columns
+            before = _TRAILING_UNIFORM.sub(lambda u: " " * len(u.group(0)), before)
+        out += [before, spelled]
         pos = end
     return "".join(out) + code[pos:]
 
