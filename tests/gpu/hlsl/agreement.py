@@ -288,6 +288,8 @@ def _expand(ptype: str, pname: str) -> tuple[str, list[tuple[str, str]]]:
         return "vec4({}, {})", [("vec3", pname), ("float", pname + ".w")]
     if ptype == "uint":
         return "uint({})", [("float", pname)]
+    if ptype == "int":  # a flag (DecodeHDR's colorspaceIsGamma): inputs in [0, 1.1) give 0 and 1
+        return "int({})", [("float", pname)]
     return "{}", [(ptype, pname)]
 
 

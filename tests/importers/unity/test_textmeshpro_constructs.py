@@ -215,17 +215,19 @@ def test_textmeshpro_constructs_change_the_pixel_as_unity_does(tmp_path, languag
         assert np.abs(got - base).max() > 0.05, case
 
 
-@pytest.mark.parametrize("owner, name, replacement, language, refusal", [
-    (cg_types._Parser, "bool_of_unknown", lambda self, e, target: None, "glsl",
-     "cannot be assigned to variable of type bool"),
-    (cg_types._Parser, "comma_after_directive", lambda self, comma: None, "glsl", "syntax error"),
-    (program, "_fxc_spelled", lambda text, included, srp: text, "hlsl", "'UnpackUV' : no matching overloaded"),
+@pytest.mark.parametrize("patches, language, refusal", [
+    # bool_of_unknown, and (since session 44) the sibling includes' globals, which now type
+    # _ShaderFlags for TMPro.cginc's port: either types the bool's initialiser
+    ([(cg_types._Parser, "bool_of_unknown", lambda self, e, target: None),
+      (program, "_structs_and_globals", lambda text: "")], "glsl", "cannot be assigned to variable of type bool"),
+    ([(cg_types._Parser, "comma_after_directive", lambda self, comma: None)], "glsl", "syntax error"),
+    ([(program, "_fxc_spelled", lambda text, included, srp: text)], "hlsl", "'UnpackUV' : no matching overloaded"),
 ])
-def test_without_each_mend_the_compiler_refuses_as_before(tmp_path, monkeypatch, owner, name, replacement,
-                                                         language, refusal):
+def test_without_each_mend_the_compiler_refuses_as_before(tmp_path, monkeypatch, patches, language, refusal):
     """Control: each mend undone, the shader is refused with the compiler's error the TextMesh
     Pro shaders met (so the renders above are the mends' doing)."""
-    monkeypatch.setattr(owner, name, replacement)
+    for owner, name, replacement in patches:
+        monkeypatch.setattr(owner, name, replacement)
     with pytest.raises(PbrlabError, match=refusal):
         _render(tmp_path, language)
 
