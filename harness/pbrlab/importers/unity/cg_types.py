@@ -1725,6 +1725,10 @@ class _Parser:
                     if a.t.dim > n:
                         self.truncate(a, n)
             return E(*span, Type("float"), True)
+        if fname == "mul" and len(args) == 2 and all(a.t is not None and a.t.numeric for a in args) \
+                and any(a.t.scalar for a in args):
+            self.mul_by_scalar(name, *args)
+            return E(*span, _mul_type(args[0].t, args[1].t), True)
         if fname == "mul" and len(args) == 2:
             self.mul_vector_truncated(*args)
             return E(*span, _mul_type(args[0].t, args[1].t), True)
@@ -1779,6 +1783,22 @@ class _Parser:
             for edits in (self.edits, self.fxc_edits):
                 edits.open(x.s, ctor + "(")
                 edits.close(x.e, ")")
+
+    def mul_by_scalar(self, name: Tok, a: E, b: E):
+        """HLSL's mul with a scalar operand (``mul(rayDir, distance)``): the componentwise
+        product, x * y (Microsoft's HLSL reference, "mul": the first row of its table, "x
+        scalar, y vector/matrix: out = x * y", and the scalar-y rows alike); GLSL has no mul,
+        and cg_compat.glsl's overloads take matrices only, so the call is spelled as the product
+        of its two parenthesised arguments, ``((a) * (b))``."""
+        if self.decl_only:
+            return
+        comma = next(t for t in self.toks if t.s >= a.e and t.e <= b.s and t.text == ",")
+        self.edits.replace(name.s, name.e, "")
+        self.edits.open(a.s, "(")
+        self.edits.close(a.e, ")")
+        self.edits.replace(comma.s, comma.e, " *")
+        self.edits.open(b.s, "(")
+        self.edits.close(b.e, ")")
 
     def mul_vector_truncated(self, a: E, b: E):
         """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,
