@@ -17,6 +17,7 @@ import pytest
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.unity import cg_types, port
 from test_port_round43 import EXACT, LANGUAGES, _assert_colour, _covered_rgb, _shader
+from test_geometry_shaders import UV_BOUND
 from test_unity_names_round5 import _render  # pytest puts this folder on sys.path
 
 MUL_BY_SCALAR = """
@@ -105,3 +106,56 @@ def test_uniform_before_a_declaring_macro(tmp_path, language, monkeypatch):
         with pytest.raises(PbrlabError, match="storage qualifier"):
             _render(tmp_path, _shader(tmp_path, "uniform_declare_old", UNIFORM_DECLARE_BODY,
                                       UNIFORM_DECLARE_HEAD), language)
+
+
+GEOMETRY_ARGUMENT = """
+Shader "t/geometry_argument" {
+    SubShader { Pass {
+        Cull Off
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma geometry geom
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        struct v2g { float4 pos : SV_POSITION; };
+        struct g2f { float4 pos : SV_POSITION; float3 colour : TEXCOORD0; };
+        float Half(float angle) { return 0.5 * angle; }
+        v2g vert(float4 vertex : POSITION) { v2g o; o.pos = UnityObjectToClipPos(vertex); return o; }
+        [maxvertexcount(3)]
+        void geom(triangle v2g IN[3], inout TriangleStream<g2f> stream) {
+            float2 wind = float2(0.75, 0.25);
+            g2f o;
+            for (int k = 0; k < 3; k++) {
+                o.pos = IN[k].pos;
+                o.colour = float3(Half(wind), 0.25, 0.5);
+                stream.Append(o);
+            }
+            stream.RestartStrip();
+        }
+        float4 frag(g2f i) : SV_Target { return float4(i.colour, 1); }
+        ENDCG
+    } }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_geometry_functions_calls_are_converted_as_fxc_does(tmp_path, language, monkeypatch):
+    """``AngleAxis3x3(UNITY_PI * windSample, wind)`` in a geometry function (eangulee's Grass,
+    a float2 to a float parameter): FXC passes the vector's first component (warning X3206,
+    implicit truncation); the type pass skipped the whole function (its ``triangle v2g IN[3]``
+    and ``inout TriangleStream<g2f>`` parameters and ``stream.Append``), so the HLSL as written
+    kept the call glslang refuses. Expected (0.375, 0.25, 0.5): Half(0.75). Control: the
+    parameters unread as before, the HLSL path is refused ("no matching overloaded function");
+    the GLSL port (its geometry syntax respelled first) took it already."""
+    shader = tmp_path / "geometry_argument.shader"
+    shader.write_text(GEOMETRY_ARGUMENT)
+    # the colour is a varying, interpolated perspective-correctly: test_geometry_shaders' bound
+    rgb = _covered_rgb(_render(tmp_path, shader, language))
+    assert np.abs(rgb - [0.375, 0.25, 0.5]).max() <= UV_BOUND
+    if language == "hlsl":
+        monkeypatch.setattr(cg_types._Parser, "geometry_parameter_type", lambda self: None)
+        old = tmp_path / "geometry_argument_old.shader"  # another text: the type pass is cached per text
+        old.write_text(GEOMETRY_ARGUMENT.replace("float2 wind", "float2  wind"))
+        with pytest.raises(PbrlabError, match="Half"):
+            _render(tmp_path, old, language)
