@@ -1814,9 +1814,9 @@ class _Parser:
         scalar, y vector/matrix: out = x * y", and the scalar-y rows alike); GLSL has no mul,
         and cg_compat.glsl's overloads take matrices only, so the call is spelled as the product
         of its two parenthesised arguments, ``((a) * (b))``."""
-        if self.decl_only:
+        comma = next((t for t in self.toks if t.s >= a.e and t.e <= b.s and t.text == ","), None)
+        if self.decl_only or comma is None:
             return
-        comma = next(t for t in self.toks if t.s >= a.e and t.e <= b.s and t.text == ",")
         self.edits.replace(name.s, name.e, "")
         self.edits.open(a.s, "(")
         self.edits.close(a.e, ")")
