@@ -1,8 +1,9 @@
 // pbr/common/shim.hlsl: the HLSL the generated ports need beyond HLSL's own intrinsics.
 //
 // Provides: pbr_mod(x, y) (GLSL's mod: x - y * floor(x / y), NOT fmod) for float..float4
-//           and (floatN, float); and, for Unity users, fixed, fixed2..4 (= half, as Unity's
-//           HLSLSupport.cginc defines them, left alone where the engine already did).
+//           and (floatN, float); and, for Unity users, fixed, fixed2..4 and fixed2x2..4x4
+//           (= half, as Unity's HLSLSupport.cginc defines them, left alone where the engine
+//           already did).
 // Include:  "pbr/common/shim.hlsl" (path relative to hlsl_ports/). Every generated file
 //           includes it; you do not need to.
 // Config macros read: PBR_HLSL_NO_FIXED_TYPES (define it to keep fixed* undefined).
@@ -36,6 +37,9 @@
 #define fixed2 half2
 #define fixed3 half3
 #define fixed4 half4
+#define fixed2x2 half2x2
+#define fixed3x3 half3x3
+#define fixed4x4 half4x4
 #endif
 
 float  pbr_mod(float x,  float y)  { return x - y * floor(x / y); }

@@ -418,6 +418,8 @@ _MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
 # UNITY_LIGHT_ATTENUATION(destName, input, worldPos): ``fixed destName = ...``; the port's
 # unity_compat declares it float): the local's type, known to the statements after it.
 _DECLARING_MACROS = {"UNITY_LIGHT_ATTENUATION": "float"}
+_GEOMETRY_PRIMITIVES = {"point", "line", "triangle", "lineadj", "triangleadj"}
+_GEOMETRY_STREAMS = {"PointStream", "LineStream", "TriangleStream"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
@@ -644,6 +646,22 @@ class _Parser:
                     return
             elif t.text == ";" and depth <= 0:
                 return
+
+    def geometry_parameter_type(self):
+        """A geometry-stage function's parameters (``triangle v2g IN[3]``, ``inout
+        TriangleStream<g2f> stream``: Microsoft's HLSL reference, "Geometry-Shader Object"): the
+        input primitive's word is consumed, leaving the element type to type_spec (None); a
+        stream object's type is read whole, opaque (``Type("stream", 0)``), so that the body is
+        read too (its calls converted as FXC does) and not skipped."""
+        if self.peek().text in _GEOMETRY_PRIMITIVES and self.peek(1).kind == "id" \
+                and self.peek(2).text not in (",", ")", "[", ":"):
+            self.next()
+            return None
+        if self.peek().text in _GEOMETRY_STREAMS and self.peek(1).text == "<":
+            self.next()
+            self.skip_balanced("<", ">")
+            return Type("stream", 0)
+        return None
 
     def qualifiers(self):
         quals = []
@@ -885,7 +903,8 @@ class _Parser:
                     direction = next(q for q in pq if q.text in ("in", "out", "inout"))
                     self.delete_word(pq[words.index("const")])
                     self.edits.open(direction.s, "const ")
-                pt = self.type_spec()
+                pt = self.geometry_parameter_type()
+                pt = pt if pt is not None else self.type_spec()
                 if pt is None:
                     self.fail("parameter type")
                 name_tok = self.name()
@@ -1535,6 +1554,11 @@ class _Parser:
                 m = self.peek()
                 if m.kind != "id":
                     self.fail("member")
+                if e.t is not None and e.t.base == "stream" and self.peek(1).text == "(":
+                    self.next()  # a stream's method: Append(v), RestartStrip()
+                    close = self.arguments()[1]
+                    e = E(e.s, close.e, VOID, True)
+                    continue
                 e = self.member(e, m)
             elif t.text == "[" and t.kind == "op":
                 bracket = self.next()
@@ -1725,6 +1749,10 @@ class _Parser:
                     if a.t.dim > n:
                         self.truncate(a, n)
             return E(*span, Type("float"), True)
+        if fname == "mul" and len(args) == 2 and all(a.t is not None and a.t.numeric for a in args) \
+                and any(a.t.scalar for a in args):
+            self.mul_by_scalar(name, *args)
+            return E(*span, _mul_type(args[0].t, args[1].t), True)
         if fname == "mul" and len(args) == 2:
             self.mul_vector_truncated(*args)
             return E(*span, _mul_type(args[0].t, args[1].t), True)
@@ -1779,6 +1807,22 @@ class _Parser:
             for edits in (self.edits, self.fxc_edits):
                 edits.open(x.s, ctor + "(")
                 edits.close(x.e, ")")
+
+    def mul_by_scalar(self, name: Tok, a: E, b: E):
+        """HLSL's mul with a scalar operand (``mul(rayDir, distance)``): the componentwise
+        product, x * y (Microsoft's HLSL reference, "mul": the first row of its table, "x
+        scalar, y vector/matrix: out = x * y", and the scalar-y rows alike); GLSL has no mul,
+        and cg_compat.glsl's overloads take matrices only, so the call is spelled as the product
+        of its two parenthesised arguments, ``((a) * (b))``."""
+        comma = next((t for t in self.toks if t.s >= a.e and t.e <= b.s and t.text == ","), None)
+        if self.decl_only or comma is None:
+            return
+        self.edits.replace(name.s, name.e, "")
+        self.edits.open(a.s, "(")
+        self.edits.close(a.e, ")")
+        self.edits.replace(comma.s, comma.e, " *")
+        self.edits.open(b.s, "(")
+        self.edits.close(b.e, ")")
 
     def mul_vector_truncated(self, a: E, b: E):
         """HLSL's mul of a vector longer than the matrix's side it meets (``mul(v4, m3x3)``,

@@ -32,6 +32,7 @@ port stays line for line with the original and compile errors map back by line):
 
 from __future__ import annotations
 
+import functools
 import re
 from pathlib import Path
 
@@ -179,6 +180,25 @@ def _unity_globals() -> frozenset:
     UnityLightingCommon names: _LightColor0, _Time, ...)."""
     text = cg_types.library_file("glsl/unity_compat/shader_variables.glsl").read_text(encoding="utf-8")
     return frozenset(re.findall(r"^(?:uniform\s+)?(?:vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M))
+
+
+@functools.cache
+def _uniform_declaring_macros() -> frozenset:
+    """The Unity prelude's macros whose GLSL spelling declares a uniform itself
+    (``#define UNITY_DECLARE_TEX2DARRAY(tex) uniform sampler2DArray tex``)."""
+    text = cg_types.library_file("glsl/unity_compat/shader_variables.glsl").read_text(encoding="utf-8")
+    return frozenset(re.findall(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\([^()]*\)[ \t]*uniform\b", text, re.M))
+
+
+def _drop_uniform_before_declaring_macro(code: str) -> str:
+    """``uniform UNITY_DECLARE_TEX2DARRAY(_MainTex);`` (Amplify Shader Editor's previews): FXC
+    takes the storage class a global has anyway (Microsoft's HLSL reference, "Variable syntax":
+    a global is uniform by default), so ``uniform Texture2DArray _MainTex`` compiles; the GLSL
+    macro writes its own ``uniform`` and GLSL refuses two (duplicate storage qualifier): the
+    written word is blanked (columns kept), as for ``uniform SAMPLER(s)``."""
+    names = _uniform_declaring_macros()
+    return re.sub(r"\buniform(?=\s+(\w+)\s*\()",
+                  lambda m: " " * len("uniform") if m.group(1) in names else m.group(0), code)
 
 
 _GLOBAL_DECLARATION = re.compile(r"^([ \t]*)(uniform\s+(vec[234]|mat[234]|float)\s+(\w+(?:\s*,\s*\w+)*)\s*;)", re.M)
@@ -365,7 +385,7 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
-    code = _drop_unity_redeclarations(port_code(code))
+    code = _drop_unity_redeclarations(port_code(_drop_uniform_before_declaring_macro(code)))
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)
