@@ -49,6 +49,12 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define CBUFFER_START(name)
 #define CBUFFER_END
 #endif
+// HLSLSupport.cginc's type of a fragment input with the VPOS semantic, float4 (x, y the pixel's
+// window position, as SV_POSITION in a fragment) on every target but Direct3D 9's float2; a
+// program that includes nothing declares ``UNITY_VPOS_TYPE screenPos : VPOS``.
+#ifndef UNITY_VPOS_TYPE
+#define UNITY_VPOS_TYPE vec4
+#endif
 
 float fmod(float x, float y) { return x - y * trunc(x / y); }
 vec2 fmod(vec2 x, vec2 y) { return x - y * trunc(x / y); }

@@ -127,6 +127,14 @@ uniform float4 unity_SpecCube0_HDR;
 static const float4 unity_SpecCube0_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);
 static const float4 unity_SpecCube0_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
 static const float4 unity_SpecCube0_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
+// The second probe (UnityShaderVariables.cginc's unity_SpecCube1*, the probe an object blends
+// toward): with one reflection source Unity's weight of probe 0 is 1 (BoxMin.w above), so a
+// shader that blends reads probe 0 alone; probe 1 is the same sky with the same box and decode
+// (its reads are the sky's: importers/unity/texture_methods.py).
+#define unity_SpecCube1_HDR unity_SpecCube0_HDR
+static const float4 unity_SpecCube1_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);
+static const float4 unity_SpecCube1_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
+static const float4 unity_SpecCube1_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
 uniform float4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
@@ -138,6 +146,13 @@ static float4 unity_LightColor[8];
 static float4 unity_LightPosition[8];
 static float4 unity_LightAtten[8];
 static float4 unity_SpotDirection[8];
+// UnityShaderVariables.cginc's older names of the first four vertex lights' colours (its
+// UnityLightingOld buffer, "kept for existing shaders"; Unity 3's Shade4PointLights took them as
+// arguments): the colours unity_LightColor[0..3] carries, rgb.
+#define unity_LightColor0 unity_LightColor[0].rgb
+#define unity_LightColor1 unity_LightColor[1].rgb
+#define unity_LightColor2 unity_LightColor[2].rgb
+#define unity_LightColor3 unity_LightColor[3].rgb
 // The forward path's four per-vertex point lights of a ForwardBase pass (UnityShaderVariables.cginc,
 // read by Shade4PointLights): world-space positions by component (x of lights 0..3 in
 // unity_4LightPosX0, ...), their quadratic attenuation in unity_4LightAtten0, their colours in

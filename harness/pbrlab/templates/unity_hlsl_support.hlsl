@@ -55,6 +55,12 @@ PBRLAB_MATRIX_COMP_MULT(4, 2) PBRLAB_MATRIX_COMP_MULT(4, 3) PBRLAB_MATRIX_COMP_M
 #define CBUFFER_START(name)
 #define CBUFFER_END
 #endif
+// HLSLSupport.cginc's type of a fragment input with the VPOS semantic, float4 (x, y the pixel's
+// window position, as SV_POSITION in a fragment) on every target but Direct3D 9's float2; a
+// program that includes nothing declares ``UNITY_VPOS_TYPE screenPos : VPOS``.
+#ifndef UNITY_VPOS_TYPE
+#define UNITY_VPOS_TYPE float4
+#endif
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,
 // from the fragment's facing); glslang would take the semantic as its own built-in and drop
 // the member from the struct, so the semantic is renamed to a plain one.
@@ -70,4 +76,7 @@ struct PbrlabUnityReflectionProbe {
 };
 static PbrlabUnityReflectionProbe unity_SpecCube0;
 SamplerState samplerunity_SpecCube0;
+// The second probe reads the same sky (Unity with one probe: weight 1 toward probe 0,
+// unity_compat/shader_variables's unity_SpecCube0_BoxMin.w).
+static PbrlabUnityReflectionProbe unity_SpecCube1;
 #endif
