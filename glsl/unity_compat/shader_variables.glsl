@@ -260,8 +260,10 @@ vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
 #define UNITY_DECLARE_TEX2D(tex) uniform sampler2D tex
 #endif
 #define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) uniform sampler2D tex
+// UNITY_SAMPLE_TEX2D: a function, so that the port's type pass knows the float4 it returns (a
+// program that assigns it to a float3 is ported with FXC's truncation, as HLSL compiles it).
 #ifndef UNITY_SAMPLE_TEX2D
-#define UNITY_SAMPLE_TEX2D(tex, uv) texture(tex, uv)
+vec4 UNITY_SAMPLE_TEX2D(sampler2D tex, vec2 uv) { return texture(tex, uv); }
 #endif
 #define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, uv) texture(tex, uv)
 #define UNITY_DECLARE_TEXCUBE(tex) uniform samplerCube tex

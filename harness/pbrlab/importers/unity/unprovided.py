@@ -15,12 +15,7 @@ from .source_text import UnityShaderError
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
     # (the baked lightmap itself, unity_Lightmap/unity_LightmapST/DecodeLightmap, is the one a
-    # material supplies: lightmaps.py)
-    **dict.fromkeys(("unity_LightmapInd", "DecodeDirectionalLightmap", "UNITY_SAMPLE_TEX2D_SAMPLER"),
-                    "directional lightmaps (the dominant-direction texture beside a lightmap), which a supplied "
-                    "lightmap does not include"),
-    **dict.fromkeys(("unity_ShadowMask", "UNITY_SAMPLE_SHADOWMASK"),
-                    "baked shadow masks, which a supplied lightmap does not include"),
+    # material supplies, with its direction texture and a white shadow mask: lightmaps.py)
     # (the realtime GI lightmap itself, unity_DynamicLightmap/unity_DynamicLightmapST/
     # DecodeRealtimeLightmap, is the one a material supplies: dynamic_lightmaps.py)
     "unity_DynamicDirectionality": "directional realtime GI lightmaps (the dominant-direction texture beside "
