@@ -173,3 +173,42 @@ def test_control_probe_one_read_elsewhere_differs_and_a_third_probe_is_refused(t
     assert not np.array_equal(flipped, zero)
     third = _run(tmp_path, _shader(PROBE % "texCUBE(unity_SpecCube2, i.dir).rgb"), language)
     assert third.status == "refused" and "unity_SpecCube2" in third.message, third.message
+
+
+# -- UnityGlobalIllumination.cginc's ResetUnityGI --------------------------------------------------
+RESET = """float4 frag(v2f i) : SV_Target
+                {
+                    UnityGI gi;
+                    gi.light.color = 0.5; gi.light.dir = 0.5; gi.light.ndotl = 0.5;
+                    gi.indirect.diffuse = 0.5; gi.indirect.specular = 0.5;
+                    %s
+                    return float4(gi.light.color.x + gi.light.dir.y + gi.light.ndotl + 0.25, gi.indirect.diffuse.x + gi.indirect.specular.x + 0.125, 0, 1);
+                }"""
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_reset_unity_gi_zeroes_every_member(tmp_path, language):
+    """After ResetUnityGI every member is 0: red 0.25 and green 0.125 exactly; the control (the
+    reset left out) keeps the 0.5s: 1.75 and 1.125."""
+    include = '#include "Lighting.cginc"'
+    reset = _covered(_run(tmp_path, _shader(RESET % "ResetUnityGI(gi);", include=include), language))
+    assert np.array_equal(reset, np.broadcast_to([0.25, 0.125, 0.0], reset.shape))
+    kept = _covered(_run(tmp_path, _shader(RESET % "", include=include), language))
+    assert np.array_equal(kept, np.broadcast_to([1.75, 1.125, 0.0], kept.shape))
+
+
+# -- a Unity name the shader declares again ---------------------------------------------------------
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_unity_name_declared_again_is_refused_naming_it_and_its_line(tmp_path, language):
+    """A Unity 4 shader's own ``sampler2D unity_Lightmap;`` after UnityCG.cginc (which declares it
+    since Unity 5, a Texture2D and its sampler: a second declaration of another type, which
+    Unity's compiler refuses as well); the control: a name of the shader's own declared twice
+    gets the compiler's words, not this reading."""
+    include = '#include "UnityCG.cginc"\n                sampler2D unity_Lightmap;'
+    result = _run(tmp_path, _shader("float4 frag(v2f i) : SV_Target { return tex2D(unity_Lightmap, float2(0.5, 0.5)); }",
+                                    include=include), language)
+    assert result.status == "refused", result.message
+    assert "n.shader:12: declares unity_Lightmap itself, which Unity's includes declare already" in result.message
+    own = _run(tmp_path, _shader("float4 frag(v2f i) : SV_Target { return _Mine; }",
+                                 include="float4 _Mine;\n                sampler2D _Mine;"), language)
+    assert own.status == "refused" and "declares _Mine itself" not in own.message, own.message
