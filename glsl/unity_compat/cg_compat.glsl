@@ -42,6 +42,10 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define samplerCUBE samplerCube
 #define sampler2D_float sampler2D
 #define sampler2D_half sampler2D
+#define samplerCUBE_float samplerCube
+#define samplerCUBE_half samplerCube
+#define sampler3D_float sampler3D
+#define sampler3D_half sampler3D
 // HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
 // a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
 // program that includes nothing)

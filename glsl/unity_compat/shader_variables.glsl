@@ -269,6 +269,25 @@ vec4 UNITY_SAMPLE_TEX2D(sampler2D tex, vec2 uv) { return texture(tex, uv); }
 #define UNITY_DECLARE_TEXCUBE(tex) uniform samplerCube tex
 #define UNITY_SAMPLE_TEXCUBE(tex, dir) texture(tex, dir)
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+// HLSLSupport.cginc's further 2D and cube forms: a level of detail; another texture's sampler (the
+// GL texture's own sampler serves, as for UNITY_SAMPLE_TEX2D_SAMPLER); half and float precision
+// declarations (one texture type here); a cube passed to a function (UNITY_ARGS_TEXCUBE in its
+// parameter list, UNITY_PASS_TEXCUBE at the call).
+#define UNITY_DECLARE_TEX2D_HALF(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+vec4 UNITY_SAMPLE_TEX2D_LOD(sampler2D tex, vec2 uv, float lod) { return textureLod(tex, uv, lod); }
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, uv, lod) UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod)
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) uniform samplerCube tex
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, dir) texture(tex, dir)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, dir, lod) textureLod(tex, dir, lod)
+#define UNITY_ARGS_TEXCUBE(tex) samplerCube tex
+#define UNITY_ARGS_TEXCUBE_NOSAMPLER(tex) samplerCube tex
+#ifndef UNITY_PASS_TEXCUBE
+#define UNITY_PASS_TEXCUBE(tex) tex
+#endif
+#define UNITY_PASS_TEXCUBE_NOSAMPLER(tex) tex
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) uniform sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) texture(tex, (uv).xy)
 // HLSLSupport.cginc's 2D texture arrays: coord.z is the layer (rounded to the nearest, clamped

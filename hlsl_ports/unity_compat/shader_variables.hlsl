@@ -268,6 +268,25 @@ float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return
 #define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
 #define UNITY_SAMPLE_TEXCUBE(tex, dir) texCUBE(tex, dir)
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) texCUBElod(tex, float4(dir, lod))
+// HLSLSupport.cginc's further 2D and cube forms: a level of detail; another texture's sampler (the
+// shared sampler state serves, as for UNITY_SAMPLE_TEX2D_SAMPLER); half and float precision
+// declarations (one texture type here); a cube passed to a function (UNITY_ARGS_TEXCUBE in its
+// parameter list, UNITY_PASS_TEXCUBE at the call).
+#define UNITY_DECLARE_TEX2D_HALF(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod) tex2Dlod(tex, float4((uv).xy, 0.0, (lod)))
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, uv, lod) UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod)
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, dir) texCUBE(tex, dir)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, dir, lod) texCUBElod(tex, float4(dir, lod))
+#define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
+#define UNITY_ARGS_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#ifndef UNITY_PASS_TEXCUBE
+#define UNITY_PASS_TEXCUBE(tex) tex
+#endif
+#define UNITY_PASS_TEXCUBE_NOSAMPLER(tex) tex
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, (uv).xy)
 // HLSLSupport.cginc's 2D texture arrays (coord.z the layer), sampled with the one shared sampler

@@ -48,6 +48,10 @@ PBRLAB_MATRIX_COMP_MULT(3, 2) PBRLAB_MATRIX_COMP_MULT(3, 3) PBRLAB_MATRIX_COMP_M
 PBRLAB_MATRIX_COMP_MULT(4, 2) PBRLAB_MATRIX_COMP_MULT(4, 3) PBRLAB_MATRIX_COMP_MULT(4, 4)
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
+#define samplerCUBE_float TextureCube
+#define samplerCUBE_half TextureCube
+#define sampler3D_float Texture3D
+#define sampler3D_half Texture3D
 // HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
 // a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
 // program that includes nothing)

@@ -212,3 +212,66 @@ def test_a_unity_name_declared_again_is_refused_naming_it_and_its_line(tmp_path,
     own = _run(tmp_path, _shader("float4 frag(v2f i) : SV_Target { return _Mine; }",
                                  include="float4 _Mine;\n                sampler2D _Mine;"), language)
     assert own.status == "refused" and "declares _Mine itself" not in own.message, own.message
+
+
+# -- HLSLSupport.cginc's further texture forms, no include -----------------------------------------
+FORMS = {
+    "lod": ("UNITY_DECLARE_TEX2D(_MainTex);", "UNITY_SAMPLE_TEX2D_LOD(_MainTex, float2(0.5, 0.5), 0)"),
+    "sampler_lod": ("UNITY_DECLARE_TEX2D(_Other); UNITY_DECLARE_TEX2D_NOSAMPLER(_MainTex);",
+                    "UNITY_SAMPLE_TEX2D_SAMPLER_LOD(_MainTex, _Other, float2(0.5, 0.5), 0)"),
+    "half": ("UNITY_DECLARE_TEX2D_HALF(_MainTex);", "UNITY_SAMPLE_TEX2D(_MainTex, float2(0.5, 0.5))"),
+    "float": ("UNITY_DECLARE_TEX2D_FLOAT(_MainTex);", "UNITY_SAMPLE_TEX2D(_MainTex, float2(0.5, 0.5))"),
+}
+TEXTURED = textwrap.dedent("""\
+    Shader "Test/Round45Forms"
+    {
+        Properties { _MainTex ("T", 2D) = "%(default)s" {} _Other ("O", 2D) = "black" {} }
+        SubShader
+        {
+            Pass
+            {
+                CGPROGRAM
+                #pragma vertex vert
+                #pragma fragment frag
+                %(declare)s
+                float4 vert(float4 p : POSITION) : SV_POSITION { return mul(UNITY_MATRIX_VP, mul(unity_ObjectToWorld, p)); }
+                float4 frag() : SV_Target { return float4(%(read)s.rgb * float3(0.75, 0.25, 0.5), 1); }
+                ENDCG
+            }
+        }
+    }
+    """)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("form", sorted(FORMS))
+def test_further_texture_forms_need_no_include(tmp_path, language, form):
+    """The texture the form names is read: "white" times the constant is (0.75, 0.25, 0.5)
+    exactly; the control, "black", is black (and _Other, black, is not what the sampler form reads)."""
+    declare, read = FORMS[form]
+    for default, want in (("white", [0.75, 0.25, 0.5]), ("black", [0.0, 0.0, 0.0])):
+        rgb = _covered(_run(tmp_path, TEXTURED % {"default": default, "declare": declare, "read": read}, language))
+        assert np.array_equal(rgb, np.broadcast_to(want, rgb.shape)), (default, rgb[:2])
+
+
+# (form, the plain read it equals: a level-0 read against the level-0 read, the others against the
+# implicit level's)
+CUBE_FORMS = (("UNITY_SAMPLE_TEXCUBE_SAMPLER(_D, _C, i.dir)", "UNITY_SAMPLE_TEXCUBE(_D, i.dir)"),
+              ("UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(_D, _C, i.dir, 0)", "UNITY_SAMPLE_TEXCUBE_LOD(_D, i.dir, 0)"),
+              ("f(UNITY_PASS_TEXCUBE(_D), i.dir)", "UNITY_SAMPLE_TEXCUBE(_D, i.dir)"))
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_cube_forms_read_the_cube_they_name(tmp_path, language):
+    """A cube declared without a sampler and read with another's, or passed to a function
+    (UNITY_ARGS_TEXCUBE): the same texels as texCUBE of that cube (both the scene's sky here, the
+    unset cube's default), and not black."""
+    declare = ("UNITY_DECLARE_TEXCUBE(_C); UNITY_DECLARE_TEXCUBE_NOSAMPLER(_D);\n"
+               "                float4 f(UNITY_ARGS_TEXCUBE(c), float3 d) { return UNITY_SAMPLE_TEXCUBE(c, d); }")
+    for form, reference in CUBE_FORMS:
+        plain = _covered(_run(tmp_path, _shader(PROBE % f"{reference}.rgb", include=declare), language))
+        assert plain.max() > 0.0
+        rgb = _covered(_run(tmp_path, _shader(PROBE % f"{form}.rgb", include=declare), language))
+        assert np.array_equal(rgb, plain), form
+    flipped = _covered(_run(tmp_path, _shader(PROBE % "f(UNITY_PASS_TEXCUBE(_D), -i.dir).rgb", include=declare), language))
+    assert not np.array_equal(flipped, plain)
