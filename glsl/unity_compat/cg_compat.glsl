@@ -42,12 +42,22 @@ vec4 saturate(vec4 x) { return clamp(x, 0.0, 1.0); }
 #define samplerCUBE samplerCube
 #define sampler2D_float sampler2D
 #define sampler2D_half sampler2D
+#define samplerCUBE_float samplerCube
+#define samplerCUBE_half samplerCube
+#define sampler3D_float sampler3D
+#define sampler3D_half sampler3D
 // HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
 // a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
 // program that includes nothing)
 #ifndef CBUFFER_START
 #define CBUFFER_START(name)
 #define CBUFFER_END
+#endif
+// HLSLSupport.cginc's type of a fragment input with the VPOS semantic, float4 (x, y the pixel's
+// window position, as SV_POSITION in a fragment) on every target but Direct3D 9's float2; a
+// program that includes nothing declares ``UNITY_VPOS_TYPE screenPos : VPOS``.
+#ifndef UNITY_VPOS_TYPE
+#define UNITY_VPOS_TYPE vec4
 #endif
 
 float fmod(float x, float y) { return x - y * trunc(x / y); }

@@ -126,6 +126,14 @@ uniform vec4 unity_SpecCube0_HDR;
 const vec4 unity_SpecCube0_ProbePosition = vec4(0.0, 0.0, 0.0, 0.0);
 const vec4 unity_SpecCube0_BoxMin = vec4(-1e30, -1e30, -1e30, 1.0);
 const vec4 unity_SpecCube0_BoxMax = vec4(1e30, 1e30, 1e30, 0.0);
+// The second probe (UnityShaderVariables.cginc's unity_SpecCube1*, the probe an object blends
+// toward): with one reflection source Unity's weight of probe 0 is 1 (BoxMin.w above), so a
+// shader that blends reads probe 0 alone; probe 1 is the same sky with the same box and decode
+// (its reads are the sky's: importers/unity/texture_methods.py).
+#define unity_SpecCube1_HDR unity_SpecCube0_HDR
+const vec4 unity_SpecCube1_ProbePosition = vec4(0.0, 0.0, 0.0, 0.0);
+const vec4 unity_SpecCube1_BoxMin = vec4(-1e30, -1e30, -1e30, 1.0);
+const vec4 unity_SpecCube1_BoxMax = vec4(1e30, 1e30, 1e30, 0.0);
 uniform vec4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
@@ -137,6 +145,13 @@ vec4 unity_LightColor[8];
 vec4 unity_LightPosition[8];
 vec4 unity_LightAtten[8];
 vec4 unity_SpotDirection[8];
+// UnityShaderVariables.cginc's older names of the first four vertex lights' colours (its
+// UnityLightingOld buffer, "kept for existing shaders"; Unity 3's Shade4PointLights took them as
+// arguments): the colours unity_LightColor[0..3] carries, rgb.
+#define unity_LightColor0 unity_LightColor[0].rgb
+#define unity_LightColor1 unity_LightColor[1].rgb
+#define unity_LightColor2 unity_LightColor[2].rgb
+#define unity_LightColor3 unity_LightColor[3].rgb
 // The forward path's four per-vertex point lights of a ForwardBase pass (UnityShaderVariables.cginc,
 // read by Shade4PointLights): world-space positions by component (x of lights 0..3 in
 // unity_4LightPosX0, ...), their quadratic attenuation in unity_4LightAtten0, their colours in
@@ -245,13 +260,34 @@ vec4 UnityStereoScreenSpaceUVAdjust(vec4 uv, vec4 scaleAndOffset) { return uv; }
 #define UNITY_DECLARE_TEX2D(tex) uniform sampler2D tex
 #endif
 #define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) uniform sampler2D tex
+// UNITY_SAMPLE_TEX2D: a function, so that the port's type pass knows the float4 it returns (a
+// program that assigns it to a float3 is ported with FXC's truncation, as HLSL compiles it).
 #ifndef UNITY_SAMPLE_TEX2D
-#define UNITY_SAMPLE_TEX2D(tex, uv) texture(tex, uv)
+vec4 UNITY_SAMPLE_TEX2D(sampler2D tex, vec2 uv) { return texture(tex, uv); }
 #endif
 #define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, uv) texture(tex, uv)
 #define UNITY_DECLARE_TEXCUBE(tex) uniform samplerCube tex
 #define UNITY_SAMPLE_TEXCUBE(tex, dir) texture(tex, dir)
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+// HLSLSupport.cginc's further 2D and cube forms: a level of detail; another texture's sampler (the
+// GL texture's own sampler serves, as for UNITY_SAMPLE_TEX2D_SAMPLER); half and float precision
+// declarations (one texture type here); a cube passed to a function (UNITY_ARGS_TEXCUBE in its
+// parameter list, UNITY_PASS_TEXCUBE at the call).
+#define UNITY_DECLARE_TEX2D_HALF(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+vec4 UNITY_SAMPLE_TEX2D_LOD(sampler2D tex, vec2 uv, float lod) { return textureLod(tex, uv, lod); }
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, uv, lod) UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod)
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) uniform samplerCube tex
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, dir) texture(tex, dir)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, dir, lod) textureLod(tex, dir, lod)
+#define UNITY_ARGS_TEXCUBE(tex) samplerCube tex
+#define UNITY_ARGS_TEXCUBE_NOSAMPLER(tex) samplerCube tex
+#ifndef UNITY_PASS_TEXCUBE
+#define UNITY_PASS_TEXCUBE(tex) tex
+#endif
+#define UNITY_PASS_TEXCUBE_NOSAMPLER(tex) tex
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) uniform sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) texture(tex, (uv).xy)
 // HLSLSupport.cginc's 2D texture arrays: coord.z is the layer (rounded to the nearest, clamped

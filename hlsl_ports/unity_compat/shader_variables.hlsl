@@ -127,6 +127,14 @@ uniform float4 unity_SpecCube0_HDR;
 static const float4 unity_SpecCube0_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);
 static const float4 unity_SpecCube0_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
 static const float4 unity_SpecCube0_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
+// The second probe (UnityShaderVariables.cginc's unity_SpecCube1*, the probe an object blends
+// toward): with one reflection source Unity's weight of probe 0 is 1 (BoxMin.w above), so a
+// shader that blends reads probe 0 alone; probe 1 is the same sky with the same box and decode
+// (its reads are the sky's: importers/unity/texture_methods.py).
+#define unity_SpecCube1_HDR unity_SpecCube0_HDR
+static const float4 unity_SpecCube1_ProbePosition = float4(0.0, 0.0, 0.0, 0.0);
+static const float4 unity_SpecCube1_BoxMin = float4(-1e30, -1e30, -1e30, 1.0);
+static const float4 unity_SpecCube1_BoxMax = float4(1e30, 1e30, 1e30, 0.0);
 uniform float4 unity_FogColor;
 // pbr/unity/lighting_legacy reads the BlinnPhong specular colour through this hook.
 #define PBR_UNITY_SPEC_COLOR _SpecColor
@@ -138,6 +146,13 @@ static float4 unity_LightColor[8];
 static float4 unity_LightPosition[8];
 static float4 unity_LightAtten[8];
 static float4 unity_SpotDirection[8];
+// UnityShaderVariables.cginc's older names of the first four vertex lights' colours (its
+// UnityLightingOld buffer, "kept for existing shaders"; Unity 3's Shade4PointLights took them as
+// arguments): the colours unity_LightColor[0..3] carries, rgb.
+#define unity_LightColor0 unity_LightColor[0].rgb
+#define unity_LightColor1 unity_LightColor[1].rgb
+#define unity_LightColor2 unity_LightColor[2].rgb
+#define unity_LightColor3 unity_LightColor[3].rgb
 // The forward path's four per-vertex point lights of a ForwardBase pass (UnityShaderVariables.cginc,
 // read by Shade4PointLights): world-space positions by component (x of lights 0..3 in
 // unity_4LightPosX0, ...), their quadratic attenuation in unity_4LightAtten0, their colours in
@@ -253,6 +268,25 @@ float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return
 #define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
 #define UNITY_SAMPLE_TEXCUBE(tex, dir) texCUBE(tex, dir)
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, dir, lod) texCUBElod(tex, float4(dir, lod))
+// HLSLSupport.cginc's further 2D and cube forms: a level of detail; another texture's sampler (the
+// shared sampler state serves, as for UNITY_SAMPLE_TEX2D_SAMPLER); half and float precision
+// declarations (one texture type here); a cube passed to a function (UNITY_ARGS_TEXCUBE in its
+// parameter list, UNITY_PASS_TEXCUBE at the call).
+#define UNITY_DECLARE_TEX2D_HALF(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) UNITY_DECLARE_TEX2D(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) UNITY_DECLARE_TEX2D_NOSAMPLER(tex)
+#define UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod) tex2Dlod(tex, float4((uv).xy, 0.0, (lod)))
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, uv, lod) UNITY_SAMPLE_TEX2D_LOD(tex, uv, lod)
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, dir) texCUBE(tex, dir)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, dir, lod) texCUBElod(tex, float4(dir, lod))
+#define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
+#define UNITY_ARGS_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#ifndef UNITY_PASS_TEXCUBE
+#define UNITY_PASS_TEXCUBE(tex) tex
+#endif
+#define UNITY_PASS_TEXCUBE_NOSAMPLER(tex) tex
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, (uv).xy)
 // HLSLSupport.cginc's 2D texture arrays (coord.z the layer), sampled with the one shared sampler

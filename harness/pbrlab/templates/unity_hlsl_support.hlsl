@@ -48,12 +48,22 @@ PBRLAB_MATRIX_COMP_MULT(3, 2) PBRLAB_MATRIX_COMP_MULT(3, 3) PBRLAB_MATRIX_COMP_M
 PBRLAB_MATRIX_COMP_MULT(4, 2) PBRLAB_MATRIX_COMP_MULT(4, 3) PBRLAB_MATRIX_COMP_MULT(4, 4)
 #define sampler2D_float Texture2D
 #define sampler2D_half Texture2D
+#define samplerCUBE_float TextureCube
+#define samplerCUBE_half TextureCube
+#define sampler3D_float Texture3D
+#define sampler3D_half Texture3D
 // HLSLSupport.cginc's constant-buffer brackets, which Unity includes in every CGPROGRAM: on GL
 // a named buffer is plain globals (CBUFFER_START(UnitySceneViewColor) ... CBUFFER_END in a
 // program that includes nothing)
 #ifndef CBUFFER_START
 #define CBUFFER_START(name)
 #define CBUFFER_END
+#endif
+// HLSLSupport.cginc's type of a fragment input with the VPOS semantic, float4 (x, y the pixel's
+// window position, as SV_POSITION in a fragment) on every target but Direct3D 9's float2; a
+// program that includes nothing declares ``UNITY_VPOS_TYPE screenPos : VPOS``.
+#ifndef UNITY_VPOS_TYPE
+#define UNITY_VPOS_TYPE float4
 #endif
 // A surface shader's Input member `float face : VFACE`: the harness fills it (generate.py,
 // from the fragment's facing); glslang would take the semantic as its own built-in and drop
@@ -70,4 +80,7 @@ struct PbrlabUnityReflectionProbe {
 };
 static PbrlabUnityReflectionProbe unity_SpecCube0;
 SamplerState samplerunity_SpecCube0;
+// The second probe reads the same sky (Unity with one probe: weight 1 toward probe 0,
+// unity_compat/shader_variables's unity_SpecCube0_BoxMin.w).
+static PbrlabUnityReflectionProbe unity_SpecCube1;
 #endif

@@ -1,7 +1,9 @@
 // pbr/unity/unity_cg.hlsl: the colour and normal helpers of Unity's UnityCG.cginc that
 // surface shaders call, by Unity's names.
 //
-// Provides: UNITY_PI, UNITY_TWO_PI, UNITY_INV_PI (macros);
+// Provides: UNITY_PI, UNITY_TWO_PI, UNITY_FOUR_PI, UNITY_HALF_PI, UNITY_INV_PI, UNITY_INV_TWO_PI,
+//           UNITY_INV_FOUR_PI, UNITY_INV_HALF_PI (macros: UnityCG.cginc's whole family of pi's
+//           multiples and reciprocals, to Unity's 12 significant digits);
 //           vec3 UnpackNormalmapRGorAG(vec4 packednormal)   DXT5nm (x in a, y in g) or BC5 (x, y)
 //           vec3 UnpackNormalWithScale(vec4 packednormal, float scale)
 //           vec3 BlendNormals(vec3 n1, vec3 n2)                   (UnityStandardUtils.cginc)
@@ -40,9 +42,16 @@
 #include "pbr/common/shim.hlsl"  // generated from glsl/pbr/unity/unity_cg.glsl by harness/pbrlab/gpu/port_hlsl.py: edit the GLSL, then regenerate
 #include "pbr/color/srgb.hlsl"
 
+// pi, 2 pi, 4 pi, pi / 2 and their reciprocals (UnityCG.cginc names the same eight; the digits
+// are pi's own, to 12 significant figures; tests/importers/unity/test_unity_builtin_names.py).
 #define UNITY_PI 3.14159265359
 #define UNITY_TWO_PI 6.28318530718
+#define UNITY_FOUR_PI 12.5663706144
+#define UNITY_HALF_PI 1.57079632679
 #define UNITY_INV_PI 0.31830988618
+#define UNITY_INV_TWO_PI 0.159154943092
+#define UNITY_INV_FOUR_PI 0.0795774715459
+#define UNITY_INV_HALF_PI 0.636619772368
 
 // Unity's unity_ColorSpaceLuminance in linear colour space (UnityCG.cginc, "Linear values";
 // Unity marks it legacy: the gamma-space weights (0.22, 0.707, 0.071) run through its decode).

@@ -29,11 +29,17 @@ The harness bakes nothing; it draws what Unity draws for an object with that lig
   double-LDR ones on mobile); a SubShader with only one of them draws that one (its program
   reads the lightmap through DecodeLightmap, which decodes any encoding).
 
+- ``unity_LightmapInd``, a directional lightmap's direction texture: the lightmap's ``direction``
+  image (``"direction": "Lightmap-0_comp_dir.png"``, linear data), or a grey texel (0.5, 0.5, 0.5,
+  0.5) of no dominant direction, under which ``DecodeDirectionalLightmap`` returns the lightmap;
+- ``unity_ShadowMask``, the baked shadow mask: white (no baked shadow; the harness bakes none),
+  its ``unity_OcclusionMaskSelector`` the first channel.
+
 Refused by name: a program that reads ``unity_Lightmap``, ``unity_LightmapST``, ``unity_Lightmap_HDR``
 or ``DecodeLightmap`` in the variant drawn when the material supplies no lightmap (at the line
 that reads it), and a surface shader with one (pbrlab's surface programs do not draw Unity's
-lightmapped surface variant). Directional lightmaps (``unity_LightmapInd``), shadow masks and
-realtime GI lightmaps (``unity_DynamicLightmap*``) are not supplied (unprovided.py names them).
+lightmapped surface variant). Realtime GI lightmaps (``unity_DynamicLightmap*``) are
+dynamic_lightmaps.py's.
 
     lightmap = read_lightmap(r, base)                    # material.read_material
     pipeline = lightmapped(BUILTIN, lightmap)            # the passes a lightmapped object draws
@@ -89,6 +95,7 @@ class Lightmap:
     path: Path
     scale_offset: tuple = (1.0, 1.0, 0.0, 0.0)   # unity_LightmapST: scale xy, offset zw
     encoding: str = "full_hdr"
+    direction: Path | None = None                # unity_LightmapInd: a directional lightmap's direction image
 
 
 def read_lightmap(r, base: Path) -> Lightmap | None:
@@ -100,8 +107,9 @@ def read_lightmap(r, base: Path) -> Lightmap | None:
     default = "full_hdr" if path.suffix.lower() in _FLOAT_IMAGES else "rgbm"
     encoding = child.choice("encoding", tuple(ENCODINGS), default)
     scale_offset = tuple(float(v) for v in child.vector("scale_offset", 4, [1.0, 1.0, 0.0, 0.0]))
+    direction = child.file("direction", base) if child.has("direction") else None
     child.finish()
-    return Lightmap(path, scale_offset, encoding)
+    return Lightmap(path, scale_offset, encoding, direction)
 
 
 def lightmapped(pipeline, lightmap: Lightmap):
@@ -133,7 +141,13 @@ def vertex_lit_passes(passes: list, lightmap: Lightmap | None) -> list:
 # Textures Unity's engine binds per renderer, which no material property sets (parse's implicit
 # texture properties leave them out): the supplied lightmap's, and the realtime GI lightmap's
 # (dynamic_lightmaps.py).
-ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap", "unity_DynamicLightmap"})
+# The directional lightmap's direction texture and the shadow mask are engine-set as well
+# (cginc/UnityLightmapDecoding.cginc): the first bound here, the mask left to the unset-sampler
+# default, white (unset_samplers.py).
+ENGINE_SET_TEXTURES = frozenset({"unity_Lightmap", "unity_DynamicLightmap", "unity_LightmapInd", "unity_ShadowMask"})
+# A direction texel of no dominant direction: DecodeDirectionalLightmap's half-Lambert term is
+# 0.5 for every normal and the rebalancing factor w 0.5, so the lightmap's colour comes back as it is.
+NO_DIRECTION = (0.5, 0.5, 0.5, 0.5)
 # What a supplied lightmap provides (cginc/UnityLightmapDecoding.cginc).
 SUPPLIED = ("unity_Lightmap", "unity_LightmapST", "unity_Lightmap_HDR", "DecodeLightmap", "DecodeLightmapRGBM",
             "DecodeLightmapDoubleLDR")
@@ -212,14 +226,23 @@ _SAMPLER = (False, False, moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
 
 
 def bind(program, lightmap: Lightmap | None, cache, unit: int) -> int:
-    """Bind the lightmap's texture (at ``unit``) and uniforms; the units used (0 or 1)."""
+    """Bind the lightmap's texture (at ``unit``), its direction texture (the material's
+    ``direction`` image, linear data as Unity imports it, or NO_DIRECTION) and uniforms; the
+    units used (0 to 2)."""
     if lightmap is None:
         return 0
     encoding = ENCODINGS[lightmap.encoding]
     _set(program, "unity_LightmapST", lightmap.scale_offset)
     _set(program, "unity_Lightmap_HDR", encoding.decode)
-    if not programs.uniforms_named(program, "unity_Lightmap"):
-        return 0
-    cache.texture(lightmap.path, encoding.srgb, _SAMPLER).use(unit)
-    _set(program, "unity_Lightmap", unit)
-    return 1
+    used = 0
+    if programs.uniforms_named(program, "unity_Lightmap"):
+        cache.texture(lightmap.path, encoding.srgb, _SAMPLER).use(unit)
+        _set(program, "unity_Lightmap", unit)
+        used += 1
+    if programs.uniforms_named(program, "unity_LightmapInd"):
+        direction = (cache.texture(lightmap.direction, False, _SAMPLER) if lightmap.direction is not None
+                     else cache.constant_texture(NO_DIRECTION))
+        direction.use(unit + used)
+        _set(program, "unity_LightmapInd", unit + used)
+        used += 1
+    return used

@@ -46,9 +46,10 @@ def skip_reason(mode: str, pipeline) -> str:
     if pipeline.srp:
         return ("not a forward pass (a custom LightMode: URP draws it only through a Render Objects renderer "
                 "feature, which the harness models where no other pass draws)")
-    return ("not a LightMode the built-in pipeline draws (a Scriptable Render Pipeline's own tag: in URP, "
-            "a Render Objects renderer feature draws it; tag the SubShader \"RenderPipeline\" = "
-            "\"UniversalPipeline\" to have it read as URP)")
+    return ("not a LightMode the built-in pipeline draws: a tag of a Scriptable Render Pipeline's or of a "
+            "script's own, drawn only where a renderer or script asks for it by name (a CommandBuffer's draw of "
+            "the pass, or in URP a Render Objects renderer feature with that tag); to have pbrlab draw it as "
+            "such a URP feature would, tag the SubShader \"RenderPipeline\" = \"UniversalPipeline\"")
 
 
 def drawing(pipeline, tags: tuple):

@@ -72,12 +72,18 @@ def _call(kind: str, method: str, texture: str, args: list):
     return None  # another method or form: left for the compiler to name
 
 
-_PROBE_READ = re.compile(r"\b(UNITY_SAMPLE_TEXCUBE_LOD|UNITY_SAMPLE_TEXCUBE|texCUBElod|texCUBE)\s*\(\s*unity_SpecCube0\s*,")
+# The second probe unity_SpecCube1 reads the same sky: the scene has one reflection source, and
+# Unity binds its one probe to both slots with blend weight unity_SpecCube0_BoxMin.w = 1
+# (unity_compat/shader_variables.glsl).
+_PROBE_READ = re.compile(r"\b(UNITY_SAMPLE_TEXCUBE_LOD|UNITY_SAMPLE_TEXCUBE|texCUBElod|texCUBE)\s*\(\s*unity_SpecCube[01]\s*,")
 
 
-# Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE(unity_SpecCube0), hdr, glossIn): the stand-in
-# UnityImageBasedLighting.cginc's pbrlab_unity_glossy_probe(hdr, glossIn) (line breaks kept)
-_GLOSSY_PROBE = re.compile(r"\bUnity_GlossyEnvironment\s*\(\s*UNITY_PASS_TEXCUBE\s*\(\s*unity_SpecCube0\s*\)\s*,")
+# Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE(unity_SpecCube0), hdr, glossIn), or on the second
+# probe with the first one's sampler, UNITY_PASS_TEXCUBE_SAMPLER(unity_SpecCube1, unity_SpecCube0):
+# the stand-in UnityImageBasedLighting.cginc's pbrlab_unity_glossy_probe(hdr, glossIn) (line
+# breaks kept)
+_GLOSSY_PROBE = re.compile(r"\bUnity_GlossyEnvironment\s*\(\s*(?:UNITY_PASS_TEXCUBE\s*\(\s*unity_SpecCube[01]|"
+                           r"UNITY_PASS_TEXCUBE_SAMPLER\s*\(\s*unity_SpecCube[01]\s*,\s*unity_SpecCube[01])\s*\)\s*,")
 
 
 def spelled_probe_reads(code: str) -> str:

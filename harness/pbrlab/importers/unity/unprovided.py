@@ -15,12 +15,7 @@ from .source_text import UnityShaderError
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
     # (the baked lightmap itself, unity_Lightmap/unity_LightmapST/DecodeLightmap, is the one a
-    # material supplies: lightmaps.py)
-    **dict.fromkeys(("unity_LightmapInd", "DecodeDirectionalLightmap", "UNITY_SAMPLE_TEX2D_SAMPLER"),
-                    "directional lightmaps (the dominant-direction texture beside a lightmap), which a supplied "
-                    "lightmap does not include"),
-    **dict.fromkeys(("unity_ShadowMask", "UNITY_SAMPLE_SHADOWMASK"),
-                    "baked shadow masks, which a supplied lightmap does not include"),
+    # material supplies, with its direction texture and a white shadow mask: lightmaps.py)
     # (the realtime GI lightmap itself, unity_DynamicLightmap/unity_DynamicLightmapST/
     # DecodeRealtimeLightmap, is the one a material supplies: dynamic_lightmaps.py)
     "unity_DynamicDirectionality": "directional realtime GI lightmaps (the dominant-direction texture beside "
@@ -34,7 +29,10 @@ UNPROVIDED = {
                      "UnityApplyLinearShadowBias", "UnityClipSpaceShadowCasterPos", "UnitySampleShadowmap",
                      "UnitySampleShadowmap_PCF3x3", "UnitySampleShadowmap_PCF5x5", "UnitySampleShadowmap_PCF7x7",
                      "UnityComputeShadowFade", "UnityComputeShadowFadeDistance", "UnityGetRawBakedOcclusions",
-                     "UnitySampleBakedOcclusion", "UnityMixRealtimeAndBakedShadows", "_ShadowMapTexture_TexelSize"),
+                     "UnitySampleBakedOcclusion", "UnityMixRealtimeAndBakedShadows", "_ShadowMapTexture_TexelSize",
+                     "UNITY_DECLARE_SHADOWMAP", "UNITY_SAMPLE_SHADOW", "UNITY_SAMPLE_SHADOW_PROJ",
+                     "UNITY_DECLARE_SCREENSPACE_SHADOWMAP", "UNITY_SAMPLE_SCREEN_SHADOW",
+                     "UNITY_DECLARE_TEXCUBE_SHADOWMAP", "UNITY_SAMPLE_TEXCUBE_SHADOW"),
                     "shadow maps and shadow-caster passes"),
     **dict.fromkeys(("UNITY_DECLARE_TEXCUBEARRAY", "UNITY_SAMPLE_TEXCUBEARRAY"),
                     "cube-map arrays as Unity declares them"),
@@ -194,8 +192,35 @@ def _source_line(error_line: str, shader=None) -> str:
     return ""
 
 
+# The first error, a Unity-spelled name declared twice (glslang's HLSL "'x' : redefinition", the
+# GLSL compiler's "`x' redeclared"): the shader declares a name Unity's includes declare already.
+_REDECLARED = re.compile(r"error: (?:'(\w+)' : redefinition|`(\w+)' redeclared)")
+
+
+def redeclared(message: str):
+    """(name, "file:line" or "") of the Unity name the first error says is declared again, or None."""
+    for line in message.splitlines():
+        if "error" in line.lower():
+            m = _REDECLARED.search(line)
+            name = m and (m.group(1) or m.group(2))
+            if not name or not _UNITY_SPELLING.fullmatch(name):
+                return None
+            at = _AT_LINE.search(line)
+            return name, (f"{at.group(1).rsplit('/', 1)[-1]}:{at.group(2)}" if at else "")
+    return None
+
+
 def raise_named(exc: Exception, path) -> None:
-    """Re-raise ``exc`` as a refusal naming the missing Unity feature when its message names one."""
+    """Re-raise ``exc`` as a refusal naming the missing Unity feature when its message names one,
+    or the Unity name the shader declares again (redeclared)."""
+    again = redeclared(str(exc))
+    if again is not None:
+        name, at = again
+        raise UnityShaderError(
+            f"{path}: {at + ': ' if at else ''}declares {name} itself, which Unity's includes declare already (UnityShaderVariables.cginc "
+            f"since Unity 5, unity_Lightmap as a Texture2D with its sampler); a shader written for Unity 4, "
+            f"which declared it itself: remove the declaration "
+            f"(the compiler's words follow)\n{exc}") from None
     found = named_missing(str(exc), path)
     if found is None:
         raise exc

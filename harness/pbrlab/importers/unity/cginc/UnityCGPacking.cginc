@@ -42,7 +42,9 @@
 
 // HLSLSupport.cginc: VPOS's type, float4 (x, y the pixel's window position, as SV_POSITION in a
 // fragment) on every target but Direct3D 9, where it was float2.
+#ifndef UNITY_VPOS_TYPE
 #define UNITY_VPOS_TYPE float4
+#endif
 
 // UnityCG.cginc's legacy depth macros, kept by Unity for old shaders: they once wrote depth into
 // a colour target on platforms without depth textures. Unity now defines the first as nothing

@@ -56,8 +56,11 @@ UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
 // infinity), here +-1e30 (float32-safe), so Internal-DeferredReflections' distance to the box is
 // 0 and its falloff saturate(1 - 0 / blend distance) is 1 for any positive blend distance
 // (unity_SpecCube1_ProbePosition.w, "set to the blend distance for this probe": 1 here).
-// (unity_SpecCube0_BoxMin, _BoxMax, _ProbePosition: the Unity prelude's, unity_compat/shader_variables)
-static const float4 unity_SpecCube1_ProbePosition = float4(0.0, 0.0, 0.0, 1.0);
+// (unity_SpecCube0_BoxMin, _BoxMax, _ProbePosition: the Unity prelude's, unity_compat/shader_variables;
+// the prelude's unity_SpecCube1_ProbePosition is the forward path's second probe, w its box
+// projection, 0: the deferred pass reads this one instead)
+static const float4 pbrlab_unity_deferred_probe_position = float4(0.0, 0.0, 0.0, 1.0);
+#define unity_SpecCube1_ProbePosition pbrlab_unity_deferred_probe_position
 
 // UnityGIInput as the deferred reflection pass fills it (UnityGlobalIllumination.cginc's, with
 // the per-probe arrays the forward GI input of pbrlab's library leaves out), and

@@ -27,7 +27,12 @@ half3 pbrlab_unity_glossy_probe(half4 hdr, Unity_GlossyEnvironmentData glossIn)
 }
 
 #ifdef PBRLAB_UNITY_SPECCUBE0
+#ifndef UNITY_PASS_TEXCUBE
 #define UNITY_PASS_TEXCUBE(tex) tex
+#endif
+// HLSLSupport.cginc's pass of a cube with another's sampler (unity_SpecCube1 with unity_SpecCube0's):
+// the probe object carries its own.
+#define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex
 half3 Unity_GlossyEnvironment(PbrlabUnityReflectionProbe probe, half4 hdr, Unity_GlossyEnvironmentData glossIn)
 {
     return pbrlab_unity_glossy_probe(hdr, glossIn);

@@ -52,4 +52,31 @@ half3 DecodeLightmap(fixed4 color)
     return DecodeLightmap(color, unity_Lightmap_HDR);
 }
 
+// A directional lightmap's second texture (UnityShaderVariables.cginc's unity_LightmapInd; Unity
+// manual, "Directional Mode"): per texel the dominant direction of the baked light, xyz in [0, 1]
+// (a world-space direction times 0.5 plus 0.5), and in w the rebalancing factor. The material's
+// lightmap `direction` image where it has one; otherwise a grey texel (0.5, 0.5, 0.5, 0.5), the
+// direction texture of a lightmap with no dominant direction, under which
+// DecodeDirectionalLightmap returns the lightmap as it is (lightmaps.py binds either).
+UNITY_DECLARE_TEX2D_NOSAMPLER(unity_LightmapInd);
+
+// The directional decode (Unity's UnityCG.cginc, "Directional Mode": a half-Lambert term of the
+// normal against the dominant direction, divided by the rebalancing factor so that the average
+// over directions is the lightmap's colour): color (dot(n, d.xyz - 0.5) + 0.5) / max(d.w, 1e-4).
+half3 DecodeDirectionalLightmap(half3 color, fixed4 dirTex, half3 normalWorld)
+{
+    half halfLambert = dot(normalWorld, dirTex.xyz - 0.5) + 0.5;
+    return color * halfLambert / max(1e-4, dirTex.w);
+}
+
+// The baked shadow mask (UnityShaderVariables.cginc's unity_ShadowMask, read at the lightmap UV;
+// Unity manual, "Shadowmask"): per texel the baked occlusion of up to four mixed lights, one per
+// channel, which unity_OcclusionMaskSelector picks for the light being drawn. pbrlab bakes no
+// shadows and a supplied lightmap brings no mask: the mask is white (lightmaps.py leaves it to the
+// default of an unset texture, white, as Unity binds for a lightmap without a shadow mask) and the
+// selector picks its first channel, so a shader's baked occlusion is 1: the light unshadowed.
+UNITY_DECLARE_TEX2D(unity_ShadowMask);
+static const fixed4 unity_OcclusionMaskSelector = fixed4(1.0, 0.0, 0.0, 0.0);
+#define UNITY_SAMPLE_SHADOWMASK(uv) UNITY_SAMPLE_TEX2D(unity_ShadowMask, uv)
+
 #endif
