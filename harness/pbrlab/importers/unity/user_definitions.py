@@ -16,6 +16,12 @@ Two cases in real shaders:
   leaves out the struct and the functions that take it (they are URP 12's, which that shader
   does not call), as the URP version the shader was written for had none.
 
+- a global a later Core RP version declares that shaders written for an earlier one declare
+  themselves (``float4 _BlitTexture_TexelSize;``: Blit.hlsl's since Unity 6; a Unity 2022 shader
+  declares it beside its include). Where the shader's own text declares the global, the stand-in
+  leaves its declaration out (two would be a redefinition, an error in FXC as in glslang), as the
+  version the shader was written for had none.
+
 Each name is a ``PBRLAB_USER_DEFINES_<name>`` define of the program; the stand-ins test it
 (``#ifndef PBRLAB_USER_DEFINES_PI``).
 
@@ -35,9 +41,14 @@ MACROS = ("PI", "TWO_PI", "FOUR_PI", "INV_PI", "INV_TWO_PI", "INV_FOUR_PI", "HAL
 # Structs URP 12 added that shaders written for earlier versions declare themselves.
 STRUCTS = ("LightingData",)
 PREFIX = "PBRLAB_USER_DEFINES_"
+# Globals Unity 6's Core RP declares that earlier shaders declare themselves.
+GLOBALS = ("_BlitTexture_TexelSize",)
 
 _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", re.M)
 _STRUCT = re.compile(r"\bstruct[ \t\r\n]+(\w+)[ \t\r\n]*\{")
+# A global's declaration: a type (uniform, or precision qualifiers before it) then the name, ending
+# the declaration or followed by another of a list.
+_GLOBAL = re.compile(r"\b(?:float|half|fixed|real|min16float)4[ \t]+(\w+)[ \t]*[;,]")
 
 
 def user_text(program: str, folder) -> str:
@@ -50,11 +61,12 @@ def user_text(program: str, folder) -> str:
 
 def program_defines(unity_pass) -> dict:
     """{PBRLAB_USER_DEFINES_<name>: 1} for each name of MACROS the pass's own text #defines and
-    each of STRUCTS it declares (module docstring); {} for a pass without a program."""
+    each of STRUCTS and GLOBALS it declares (module docstring); {} for a pass without a program."""
     program = getattr(unity_pass, "program", None)
     path = getattr(unity_pass, "path", None)
     if not program or path is None:
         return {}
     text = user_text(program, path.parent)
-    names = {n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
+    names = ({n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
+             | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
     return {PREFIX + n: 1 for n in sorted(names)}
