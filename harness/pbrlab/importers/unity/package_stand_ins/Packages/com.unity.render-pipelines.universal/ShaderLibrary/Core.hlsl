@@ -331,6 +331,13 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
     float4 positionHWS = mul(invViewProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
     return positionHWS.xyz / positionHWS.w;
 }
+// The same position in view space through the inverse projection, its z negated (Core RP's
+// ComputeViewSpacePosition: Unity's view space looks down -z, the position's z is the eye depth,
+// positive in front of the camera).
+float3 ComputeViewSpacePosition(float2 positionNDC, float deviceDepth, float4x4 invProjMatrix) {
+    float4 positionHVS = mul(invProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
+    return float3(positionHVS.x, positionHVS.y, -positionHVS.z) / positionHVS.w;
+}
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"

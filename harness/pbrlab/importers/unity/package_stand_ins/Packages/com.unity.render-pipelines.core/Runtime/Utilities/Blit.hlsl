@@ -20,6 +20,11 @@
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Color.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/GlobalSamplers.hlsl"
 
+// Not in a program written for URP 12's post-processing layout, whose Common.hlsl brings
+// Utils/Fullscreen.hlsl's Attributes and Varyings instead (and whose Unity has the two never
+// together: each defines Attributes and Varyings).
+#ifndef PBRLAB_USER_READS_FullscreenVert
+
 TEXTURE2D_X(_BlitTexture);
 TEXTURECUBE(_BlitCubeTexture);
 float4 _BlitScaleBias;
@@ -134,5 +139,7 @@ float4 FragOctahedralProjectLuminance(Varyings input) : SV_Target {
 }
 float4 FragOctahedralProjectRedToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).rrrr; }
 float4 FragOctahedralProjectAlphaToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).aaaa; }
+
+#endif  // PBRLAB_USER_READS_FullscreenVert
 
 #endif
