@@ -1,6 +1,7 @@
 // pbrlab stand-in for Core RP's ShaderLibrary/Texture.hlsl: Shader Graph's texture objects
 // (UnityTexture2D: a texture, its sampler, its texel size and its tiling and offset; built by
-// UnityBuildTexture2DStruct from a Texture2D property, or ...NoScale with tiling 1, offset 0)
+// UnityBuildTexture2DStruct from a Texture2D property, or ...NoScale with tiling 1, offset 0;
+// UnityTextureCube, UnityTexture2DArray, UnityTexture3D: a texture and its sampler)
 // and the SRP texture macros (pbrlab's stand-in Core.hlsl), written for pbrlab from Shader
 // Graph's documentation of its Texture 2D Asset and Sample Texture 2D nodes (Core RP's own
 // file is under the Unity Companion License and is not copied). In HLSL the struct is
@@ -39,6 +40,41 @@ UnityTexture2D UnityBuildTexture2DStructInternal(Texture2D tex, SamplerState sam
 
 #define UnityBuildTexture2DStruct(n) UnityBuildTexture2DStructInternal(n, sampler##n, n##_TexelSize, n##_ST)
 #define UnityBuildTexture2DStructNoScale(n) UnityBuildTexture2DStructInternal(n, sampler##n, n##_TexelSize, float4(1.0, 1.0, 0.0, 0.0))
+// The cube, 2D-array and 3D texture objects (Shader Graph's Cubemap, Texture 2D Array and
+// Texture 3D Asset nodes): the texture and its sampler, no texel size or tiling.
+struct UnityTextureCube {
+    TextureCube tex;
+    SamplerState samplerstate;
+};
+struct UnityTexture2DArray {
+    Texture2DArray tex;
+    SamplerState samplerstate;
+};
+struct UnityTexture3D {
+    Texture3D tex;
+    SamplerState samplerstate;
+};
+UnityTextureCube UnityBuildTextureCubeStructInternal(TextureCube tex, SamplerState samplerstate) {
+    UnityTextureCube result;
+    result.tex = tex;
+    result.samplerstate = samplerstate;
+    return result;
+}
+UnityTexture2DArray UnityBuildTexture2DArrayStructInternal(Texture2DArray tex, SamplerState samplerstate) {
+    UnityTexture2DArray result;
+    result.tex = tex;
+    result.samplerstate = samplerstate;
+    return result;
+}
+UnityTexture3D UnityBuildTexture3DStructInternal(Texture3D tex, SamplerState samplerstate) {
+    UnityTexture3D result;
+    result.tex = tex;
+    result.samplerstate = samplerstate;
+    return result;
+}
+#define UnityBuildTextureCubeStruct(n) UnityBuildTextureCubeStructInternal(n, sampler##n)
+#define UnityBuildTexture2DArrayStruct(n) UnityBuildTexture2DArrayStructInternal(n, sampler##n)
+#define UnityBuildTexture3DStruct(n) UnityBuildTexture3DStructInternal(n, sampler##n)
 #define UnityBuildSamplerStateStruct(n) UnityBuildSamplerStateStructInternal(n)
 UnitySamplerState UnityBuildSamplerStateStructInternal(SamplerState samplerstate) {
     UnitySamplerState result;

@@ -441,6 +441,14 @@ float SharpenAlpha(float alpha, float alphaClipTreshold) {
 }
 
 // The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).
+// Shader Graph's (URP 10-12 generated code) with the projection's sign given, _ProjectionParams.x
+// where its Screen Position node calls it: xy = (clip xy (1, sign) + w) / 2, zw the clip zw.
+float4 ComputeScreenPos(float4 positionCS, float projectionSign) {
+    float4 o = positionCS * 0.5;
+    o.xy = float2(o.x, o.y * projectionSign) + o.w;
+    o.zw = positionCS.zw;
+    return o;
+}
 float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _ScreenParams.xy; }
 
 // Shadows: none here (no shadow map): a coordinate of 0, full light; no shadow mask.
