@@ -27,7 +27,7 @@ Two cases in real shaders:
   on has Blit.hlsl's Vert). That is the layout the shader was written for: a
   ``PBRLAB_USER_READS_<name>`` define, which the stand-in tests to give that version's.
 
-Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define of the program; the stand-ins test it
+Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading underscores dropped) of the program; the stand-ins test it
 (``#ifndef PBRLAB_USER_DEFINES_PI``).
 
     defines = program_defines(unity_pass)     # {"PBRLAB_USER_DEFINES_PI": 1, ...}
@@ -88,4 +88,5 @@ def text_defines(program: str, folder) -> dict:
              | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
     reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
              and not re.search(rf"\b\w+\s+{n}\s*\([^()]*\)\s*\{{", text)}
-    return {**{PREFIX + n: 1 for n in sorted(names)}, **{READS_PREFIX + n: 1 for n in sorted(reads)}}
+    # (a name's leading underscores dropped: GLSL reserves the macro names with two in a row)
+    return {**{PREFIX + n.lstrip("_"): 1 for n in sorted(names)}, **{READS_PREFIX + n: 1 for n in sorted(reads)}}

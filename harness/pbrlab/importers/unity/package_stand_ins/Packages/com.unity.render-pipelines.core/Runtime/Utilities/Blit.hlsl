@@ -33,7 +33,7 @@ float4 _BlitScaleBiasRt;
 // Core RP's Blit.hlsl declares it since Unity 6, where earlier shaders declare it themselves:
 // where the shader's own text does, the stand-in leaves it to the shader's declaration
 // (importers/unity/user_definitions.py).
-#ifndef PBRLAB_USER_DEFINES__BlitTexture_TexelSize
+#ifndef PBRLAB_USER_DEFINES_BlitTexture_TexelSize
 float4 _BlitTexture_TexelSize;
 #endif
 float _BlitMipLevel;
