@@ -240,8 +240,10 @@ float PerceptualRoughnessToMipmapLevel(float perceptualRoughness) {
 // pbrlab's chain (u_env_lod_count levels: level i holds perceptual roughness i / (count - 1));
 // black without an environment. unity_SpecCube0_HDR's decode is the identity here (the
 // environment is float radiance: multiplier 1, exponent 1). HLSL reads the probe through a
-// struct's SampleLevel, GLSL through the port's spelling of SAMPLE_TEXTURECUBE_LOD
-// (importers/unity/port.py); unity_SpecCube1 (probe blending) is not provided.
+// struct's SampleLevel (the harness's own where it stands), GLSL through the port's spelling of
+// SAMPLE_TEXTURECUBE_LOD as the same read, templates/unity_surface.inc's
+// pbrlab_unity_reflection_probe (importers/unity/port.py); unity_SpecCube1 (probe blending) is
+// not provided.
 float4 pbrlab_urp_reflection_probe(float3 direction, float mip) {
 #ifdef PBRLAB_ENV
     float lod = mip / PBRLAB_URP_SPECCUBE_LOD_STEPS * (u_env_lod_count - 1.0);
