@@ -136,6 +136,25 @@ def test_gbuffer_material_flags_pack_into_a_byte(tmp_path, language):
     assert abs(2.0 ** 9 / 255.0 - expected[0]) > 1.0
 
 
+# --- _MainLightOcclusionProbes ---------------------------------------------------------------------
+LIGHTING = '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"'
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_main_light_occlusion_probes_mask_no_channel(tmp_path, language):
+    """URP's _MainLightOcclusionProbes, the main light's one-hot channel of the baked shadow mask:
+    no channel for a realtime light (0, 0, 0, 0), passed to MainLightShadow, which is 1 without
+    shadow maps. Exact constants. Control: a light baked into the shadow mask's red channel,
+    (1, 0, 0, 0)."""
+    pixels, _ = _render(tmp_path, language, "float4 m = _MainLightOcclusionProbes;"
+                        " float s = MainLightShadow(float4(0.0, 0.0, 0.0, 0.0), float3(0.0, 0.0, 0.0),"
+                        " float4(1.0, 1.0, 1.0, 1.0), _MainLightOcclusionProbes);"
+                        " return float4(m.x + m.y + 0.25, m.z + m.w + 0.5, s * 0.75, 1.0);", includes=LIGHTING)
+    expected = np.array([0.25, 0.5, 0.75], np.float32)
+    assert np.all(pixels[:, :3] == expected), pixels[0, :3]
+    assert abs((1.0 + 0.25) - expected[0]) > 0.5
+
+
 # --- _GlossyEnvironmentCubeMap ----------------------------------------------------------------------
 def _sky_read(cube: str, sampler: str, hdr: str) -> str:
     return (f"float3 a = SAMPLE_TEXTURECUBE_LOD({cube}, {sampler}, float3(0.3, 0.8, 0.5), 1.0).rgb;"

@@ -142,6 +142,9 @@ float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shad
     return 1.0;
 }
 float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
+// The main light's channel of the baked shadow mask (URP's _MainLightOcclusionProbes, a one-hot
+// mask URP sets for a light with baked occlusion): none here, a realtime light's (0, 0, 0, 0).
+#define _MainLightOcclusionProbes float4(0.0, 0.0, 0.0, 0.0)
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
 float AdditionalLightShadow(int lightIndex, float3 positionWS, float3 lightDirection, float4 shadowMask,
