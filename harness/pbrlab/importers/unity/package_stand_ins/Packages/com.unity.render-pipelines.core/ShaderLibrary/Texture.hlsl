@@ -41,40 +41,18 @@ UnityTexture2D UnityBuildTexture2DStructInternal(Texture2D tex, SamplerState sam
 #define UnityBuildTexture2DStruct(n) UnityBuildTexture2DStructInternal(n, sampler##n, n##_TexelSize, n##_ST)
 #define UnityBuildTexture2DStructNoScale(n) UnityBuildTexture2DStructInternal(n, sampler##n, n##_TexelSize, float4(1.0, 1.0, 0.0, 0.0))
 // The cube, 2D-array and 3D texture objects (Shader Graph's Cubemap, Texture 2D Array and
-// Texture 3D Asset nodes): the texture and its sampler, no texel size or tiling.
-struct UnityTextureCube {
-    TextureCube tex;
-    SamplerState samplerstate;
-};
-struct UnityTexture2DArray {
-    Texture2DArray tex;
-    SamplerState samplerstate;
-};
-struct UnityTexture3D {
-    Texture3D tex;
-    SamplerState samplerstate;
-};
-UnityTextureCube UnityBuildTextureCubeStructInternal(TextureCube tex, SamplerState samplerstate) {
-    UnityTextureCube result;
-    result.tex = tex;
-    result.samplerstate = samplerstate;
-    return result;
-}
-UnityTexture2DArray UnityBuildTexture2DArrayStructInternal(Texture2DArray tex, SamplerState samplerstate) {
-    UnityTexture2DArray result;
-    result.tex = tex;
-    result.samplerstate = samplerstate;
-    return result;
-}
-UnityTexture3D UnityBuildTexture3DStructInternal(Texture3D tex, SamplerState samplerstate) {
-    UnityTexture3D result;
-    result.tex = tex;
-    result.samplerstate = samplerstate;
-    return result;
-}
-#define UnityBuildTextureCubeStruct(n) UnityBuildTextureCubeStructInternal(n, sampler##n)
-#define UnityBuildTexture2DArrayStruct(n) UnityBuildTexture2DArrayStructInternal(n, sampler##n)
-#define UnityBuildTexture3DStruct(n) UnityBuildTexture3DStructInternal(n, sampler##n)
+// Texture 3D Asset nodes): the texture and its sampler, no texel size or tiling; each struct and
+// its builder made by one macro, as the harness's prelude makes its per-size functions.
+#define PBRLAB_TEXTURE_OBJECT(Object, Texture) \
+    struct Object { Texture tex; SamplerState samplerstate; }; \
+    Object PbrlabBuild##Object(Texture tex, SamplerState samplerstate) { \
+        Object result; result.tex = tex; result.samplerstate = samplerstate; return result; }
+PBRLAB_TEXTURE_OBJECT(UnityTextureCube, TextureCube)
+PBRLAB_TEXTURE_OBJECT(UnityTexture2DArray, Texture2DArray)
+PBRLAB_TEXTURE_OBJECT(UnityTexture3D, Texture3D)
+#define UnityBuildTextureCubeStruct(n) PbrlabBuildUnityTextureCube(n, sampler##n)
+#define UnityBuildTexture2DArrayStruct(n) PbrlabBuildUnityTexture2DArray(n, sampler##n)
+#define UnityBuildTexture3DStruct(n) PbrlabBuildUnityTexture3D(n, sampler##n)
 #define UnityBuildSamplerStateStruct(n) UnityBuildSamplerStateStructInternal(n)
 UnitySamplerState UnityBuildSamplerStateStructInternal(SamplerState samplerstate) {
     UnitySamplerState result;
