@@ -19,6 +19,7 @@ from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
 from .unprovided import missing_include
+from .user_definitions import text_defines
 from .own_library_functions import renamed_in_own_files
 from .macro_redefinitions import undefined_before_redefinition
 from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
@@ -211,6 +212,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
           or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))  # a lightmapped object's (lightmaps.py)
           or (k == "DYNAMICLIGHTMAP_ON" and declares_dynamic_lightmap_on(program))]  # (dynamic_lightmaps.py)
     defines = defines_of(everything, on, srp)  # (srp: a Scriptable Render Pipeline's program)
+    if srp:  # the stand-ins' branches for the names the shader defines or reads (user_definitions.py)
+        defines.update(text_defines(program, path.parent))
     everything = active_text(everything, defines)  # the drawn variant's branches
     # a global only Unity's engine sets: filled from the scene where the program declares it
     # (engine_inputs.FILLED; a geometry stage's text is built apart and gets none), else refused

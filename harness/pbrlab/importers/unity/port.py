@@ -236,8 +236,11 @@ def port_program(shader: M.SurfaceShader, program: str | None = None) -> str:
 # The Scriptable Render Pipelines' texture API (Core RP's ShaderLibrary macros, which the
 # Universal Render Pipeline's shaders use): in HLSL the stand-ins define them as Unity does;
 # for GLSL each use is spelled in Cg's forms before the two passes, which port those (URP's
-# reflection probe unity_SpecCube0, read by its mip in Unity's steps, through the stand-in
-# Lighting.hlsl's pbrlab_urp_reflection_probe).
+# reflection probe unity_SpecCube0, read by its mip in Unity's steps: _SKY_CUBES).
+# The reflection probe, and URP's sky reflection cube (Input.hlsl), the same probe (the stand-in
+# Core.hlsl): read through the harness's pbrlab_unity_reflection_probe (templates/unity_surface.inc,
+# in every Unity program; the stand-in Lighting.hlsl's pbrlab_urp_reflection_probe is the same read).
+_SKY_CUBES = ("unity_SpecCube0", "_GlossyEnvironmentCubeMap")
 _SRP_TEXTURE_MACROS = {
     "TEXTURE2D": lambda a: f"sampler2D {a[0]}",
     "TEXTURECUBE": lambda a: f"samplerCUBE {a[0]}",
@@ -283,9 +286,9 @@ _SRP_TEXTURE_MACROS = {
     # not these, and are left to the Unity prelude's macros by the argument count below)
     "SAMPLE_DEPTH_TEXTURE": lambda a: f"tex2D({a[0]}, {a[2]}).r",
     "SAMPLE_DEPTH_TEXTURE_LOD": lambda a: f"tex2Dlod({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]})).r",
-    "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, 0.0)" if a[0] == "unity_SpecCube0"
+    "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_unity_reflection_probe({a[2]}, 0.0)" if a[0] in _SKY_CUBES
                                      else f"texCUBE({a[0]}, {a[2]})"),
-    "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_urp_reflection_probe({a[2]}, {a[3]})" if a[0] == "unity_SpecCube0"
+    "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_unity_reflection_probe({a[2]}, {a[3]})" if a[0] in _SKY_CUBES
                                          else f"texCUBElod({a[0]}, float4(({a[2]}).xyz, {a[3]}))"),
 }
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")

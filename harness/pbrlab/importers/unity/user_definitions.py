@@ -16,10 +16,22 @@ Two cases in real shaders:
   leaves out the struct and the functions that take it (they are URP 12's, which that shader
   does not call), as the URP version the shader was written for had none.
 
-Each name is a ``PBRLAB_USER_DEFINES_<name>`` define of the program; the stand-ins test it
+- a global a later Core RP version declares that shaders written for an earlier one declare
+  themselves (``float4 _BlitTexture_TexelSize;``: Blit.hlsl's since Unity 6; a Unity 2022 shader
+  declares it beside its include). Where the shader's own text declares the global, the stand-in
+  leaves its declaration out (two would be a redefinition, an error in FXC as in glslang), as the
+  version the shader was written for had none.
+
+- a function of an earlier URP that a shader names without defining it (``#pragma vertex
+  FullscreenVert``: URP 12's PostProcessing/Common.hlsl's, from Utils/Fullscreen.hlsl, where URP 13
+  on has Blit.hlsl's Vert). That is the layout the shader was written for: a
+  ``PBRLAB_USER_READS_<name>`` define, which the stand-in tests to give that version's.
+
+Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading underscores dropped) of the program; the stand-ins test it
 (``#ifndef PBRLAB_USER_DEFINES_PI``).
 
     defines = program_defines(unity_pass)     # {"PBRLAB_USER_DEFINES_PI": 1, ...}
+    defines = text_defines(program, folder)   # the same, of a program's text (parse_pass.py)
 """
 
 from __future__ import annotations
@@ -35,9 +47,17 @@ MACROS = ("PI", "TWO_PI", "FOUR_PI", "INV_PI", "INV_TWO_PI", "INV_FOUR_PI", "HAL
 # Structs URP 12 added that shaders written for earlier versions declare themselves.
 STRUCTS = ("LightingData",)
 PREFIX = "PBRLAB_USER_DEFINES_"
+# Functions of an earlier URP that tell the layout a shader was written for.
+EARLIER_FUNCTIONS = ("FullscreenVert",)
+READS_PREFIX = "PBRLAB_USER_READS_"
+# Globals Unity 6's Core RP declares that earlier shaders declare themselves.
+GLOBALS = ("_BlitTexture_TexelSize",)
 
 _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", re.M)
 _STRUCT = re.compile(r"\bstruct[ \t\r\n]+(\w+)[ \t\r\n]*\{")
+# A global's declaration: a type (uniform, or precision qualifiers before it) then the name, ending
+# the declaration or followed by another of a list.
+_GLOBAL = re.compile(r"\b(?:float|half|fixed|real|min16float)4[ \t]+(\w+)[ \t]*[;,]")
 
 
 def user_text(program: str, folder) -> str:
@@ -50,11 +70,23 @@ def user_text(program: str, folder) -> str:
 
 def program_defines(unity_pass) -> dict:
     """{PBRLAB_USER_DEFINES_<name>: 1} for each name of MACROS the pass's own text #defines and
-    each of STRUCTS it declares (module docstring); {} for a pass without a program."""
+    each of STRUCTS and GLOBALS it declares, {PBRLAB_USER_READS_<name>: 1} for each of
+    EARLIER_FUNCTIONS it names and does not define (module docstring); {} for a pass without a
+    program."""
     program = getattr(unity_pass, "program", None)
     path = getattr(unity_pass, "path", None)
     if not program or path is None:
         return {}
-    text = user_text(program, path.parent)
-    names = {n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
-    return {PREFIX + n: 1 for n in sorted(names)}
+    return text_defines(program, path.parent)
+
+
+def text_defines(program: str, folder) -> dict:
+    """program_defines of a program's text and the folder its includes are found from (the
+    parser's branches are the drawn program's: parse_pass.py)."""
+    text = user_text(program, folder)
+    names = ({n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
+             | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
+    reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
+             and not re.search(rf"\b\w+\s+{n}\s*\([^()]*\)\s*\{{", text)}
+    # (a name's leading underscores dropped: GLSL reserves the macro names with two in a row)
+    return {**{PREFIX + n.lstrip("_"): 1 for n in sorted(names)}, **{READS_PREFIX + n: 1 for n in sorted(reads)}}

@@ -141,6 +141,9 @@ vec4 rcp(vec4 x) { return 1.0 / x; }
 #endif
 
 // Instancing and stereo: one instance, one eye (the built-in prelude's names, where it has them).
+// UNITY_INSTANCING_INCLUDED: Core RP's UnityInstancing.hlsl's include guard, which URP's Core.hlsl
+// includes; shaders test it to learn that the instancing macros exist.
+#define UNITY_INSTANCING_INCLUDED
 #define UNITY_ANY_INSTANCING_ENABLED 0
 // A local set to its type's zero (Core RP's ZERO_INITIALIZE; the GLSL port spells it out first).
 #define ZERO_INITIALIZE(type, name) name = (type)0
@@ -251,6 +254,18 @@ float3 GetCameraRelativePositionWS(float3 positionWS) { return positionWS; }
 #define _MainLightPosition float4(0.0, 0.0, 1.0, 0.0)
 #define _MainLightColor float4(0.0, 0.0, 0.0, 0.0)
 #endif
+// URP's sky reflection cube (Input.hlsl: _GlossyEnvironmentCubeMap, its sampler and its HDR
+// decode _GlossyEnvironmentCubeMap_HDR), which URP sets to the sky's reflection probe, the one
+// unity_SpecCube0 holds where no other probe covers the object: here the scene environment's
+// prefiltered chain, read by its mip in Unity's steps, as unity_SpecCube0 is
+// (templates/unity_surface.inc: pbrlab_unity_reflection_probe); its decode is the identity, as
+// unity_SpecCube0_HDR's. HLSL reads it through the probe's object (unity_hlsl_support.hlsl), GLSL
+// through the port's spelling of SAMPLE_TEXTURECUBE(_LOD) (importers/unity/port.py).
+#define _GlossyEnvironmentCubeMap_HDR unity_SpecCube0_HDR
+#ifndef __VERSION__
+static PbrlabUnityReflectionProbe _GlossyEnvironmentCubeMap;
+SamplerState sampler_GlossyEnvironmentCubeMap;
+#endif
 
 // A [0, 1] depth to the eye's distance and to [0, 1] of the far plane, with the
 // _ZBufferParams the caller passes (Core RP's signatures; the built-in ones take z alone):
@@ -290,6 +305,12 @@ float3 Desaturate(float3 value, float saturation) {
     return mean + (value - mean) * saturation;
 }
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+// Core RP's SpaceTransforms.hlsl: the position of the view being drawn, in world space. Unity
+// returns the primary camera's (URP: _WorldSpaceCameraPos) in a camera's pass, or the view
+// matrix's inverse's translation in a shadow-caster pass, where the view is the light's; every
+// pass here is drawn from the camera, so both are the camera's position.
+float3 GetPrimaryCameraPosition() { return _WorldSpaceCameraPos; }
+float3 GetCurrentViewPosition() { return _WorldSpaceCameraPos; }
 // A screen position ([0, 1], y up as on GL, where UNITY_UV_STARTS_AT_TOP is undefined) and a
 // device depth (GL clip z / w, [-1, 1]) to world space through the inverse view-projection:
 // clip (ndc * 2 - 1, depth, 1), then the homogeneous divide (Core RP's ComputeClipSpacePosition
@@ -310,10 +331,18 @@ float3 ComputeWorldSpacePosition(float2 positionNDC, float deviceDepth, float4x4
     float4 positionHWS = mul(invViewProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
     return positionHWS.xyz / positionHWS.w;
 }
+// The same position in view space through the inverse projection, its z negated (Core RP's
+// ComputeViewSpacePosition: Unity's view space looks down -z, the position's z is the eye depth,
+// positive in front of the camera).
+float3 ComputeViewSpacePosition(float2 positionNDC, float deviceDepth, float4x4 invProjMatrix) {
+    float4 positionHVS = mul(invProjMatrix, ComputeClipSpacePosition(positionNDC, deviceDepth));
+    return float3(positionHVS.x, positionHVS.y, -positionHVS.z) / positionHVS.w;
+}
 // The screen's size and 1 + 1 / size at URP's render scale, which is 1 here: _ScreenParams.
 float4 GetScaledScreenParams() { return _ScreenParams; }
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabFullScreenTriangle.hlsl"
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabPacking.hlsl"
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
@@ -412,6 +441,14 @@ float SharpenAlpha(float alpha, float alphaClipTreshold) {
 }
 
 // The screen position a fragment program reads (ComputeScreenPos: the built-in's, already in the prelude).
+// Shader Graph's (URP 10-12 generated code) with the projection's sign given, _ProjectionParams.x
+// where its Screen Position node calls it: xy = (clip xy (1, sign) + w) / 2, zw the clip zw.
+float4 ComputeScreenPos(float4 positionCS, float projectionSign) {
+    float4 o = positionCS * 0.5;
+    o.xy = float2(o.x, o.y * projectionSign) + o.w;
+    o.zw = positionCS.zw;
+    return o;
+}
 float2 GetNormalizedScreenSpaceUV(float4 positionCS) { return positionCS.xy / _ScreenParams.xy; }
 
 // Shadows: none here (no shadow map): a coordinate of 0, full light; no shadow mask.

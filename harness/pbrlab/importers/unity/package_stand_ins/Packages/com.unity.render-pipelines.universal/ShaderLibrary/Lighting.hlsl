@@ -142,6 +142,9 @@ float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shad
     return 1.0;
 }
 float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
+// The main light's channel of the baked shadow mask (URP's _MainLightOcclusionProbes, a one-hot
+// mask URP sets for a light with baked occlusion): none here, a realtime light's (0, 0, 0, 0).
+#define _MainLightOcclusionProbes float4(0.0, 0.0, 0.0, 0.0)
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 1.0; }
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
 float AdditionalLightShadow(int lightIndex, float3 positionWS, float3 lightDirection, float4 shadowMask,
@@ -240,8 +243,10 @@ float PerceptualRoughnessToMipmapLevel(float perceptualRoughness) {
 // pbrlab's chain (u_env_lod_count levels: level i holds perceptual roughness i / (count - 1));
 // black without an environment. unity_SpecCube0_HDR's decode is the identity here (the
 // environment is float radiance: multiplier 1, exponent 1). HLSL reads the probe through a
-// struct's SampleLevel, GLSL through the port's spelling of SAMPLE_TEXTURECUBE_LOD
-// (importers/unity/port.py); unity_SpecCube1 (probe blending) is not provided.
+// struct's SampleLevel (the harness's own where it stands), GLSL through the port's spelling of
+// SAMPLE_TEXTURECUBE_LOD as the same read, templates/unity_surface.inc's
+// pbrlab_unity_reflection_probe (importers/unity/port.py); unity_SpecCube1 (probe blending) is
+// not provided.
 float4 pbrlab_urp_reflection_probe(float3 direction, float mip) {
 #ifdef PBRLAB_ENV
     float lod = mip / PBRLAB_URP_SPECCUBE_LOD_STEPS * (u_env_lod_count - 1.0);

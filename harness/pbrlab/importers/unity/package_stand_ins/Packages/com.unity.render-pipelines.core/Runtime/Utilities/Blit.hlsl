@@ -20,10 +20,22 @@
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Color.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/GlobalSamplers.hlsl"
 
+// Not in a program written for URP 12's post-processing layout, whose Common.hlsl brings
+// Utils/Fullscreen.hlsl's Attributes and Varyings instead (and whose Unity has the two never
+// together: each defines Attributes and Varyings).
+#ifndef PBRLAB_USER_READS_FullscreenVert
+
 TEXTURE2D_X(_BlitTexture);
 TEXTURECUBE(_BlitCubeTexture);
 float4 _BlitScaleBias;
 float4 _BlitScaleBiasRt;
+// _BlitTexture's texel size (1 / w, 1 / h, w, h), which Unity sets for every texture it binds;
+// Core RP's Blit.hlsl declares it since Unity 6, where earlier shaders declare it themselves:
+// where the shader's own text does, the stand-in leaves it to the shader's declaration
+// (importers/unity/user_definitions.py).
+#ifndef PBRLAB_USER_DEFINES_BlitTexture_TexelSize
+float4 _BlitTexture_TexelSize;
+#endif
 float _BlitMipLevel;
 float2 _BlitTextureSize;
 uint _BlitPaddingSize;
@@ -107,20 +119,8 @@ float2 PbrlabRepeatOctahedralUV(float2 uv) {
     return uv;
 }
 
-// The unit direction of an octahedral coordinate f in [-1, 1]^2 (Cigolle et al. 2014, "A Survey
-// of Efficient Representations for Independent Unit Vectors": z = 1 - |x| - |y|; the lower
-// hemisphere folded back, xy = (1 - |yx|) with xy's signs, 0 counted positive).
-float3 PbrlabOctahedralDirection(float2 f) {
-    float3 n = float3(f.x, f.y, 1.0 - abs(f.x) - abs(f.y));
-    if (n.z < 0.0) {
-        float2 folded = float2(1.0 - abs(f.y), 1.0 - abs(f.x));
-        n.xy = float2(f.x >= 0.0 ? folded.x : -folded.x, f.y >= 0.0 ? folded.y : -folded.y);
-    }
-    return normalize(n);
-}
-
 float4 PbrlabBlitCube(float2 uv) {
-    return SAMPLE_TEXTURECUBE_LOD(_BlitCubeTexture, sampler_LinearRepeat, PbrlabOctahedralDirection(2.0 * uv - 1.0), _BlitMipLevel);
+    return SAMPLE_TEXTURECUBE_LOD(_BlitCubeTexture, sampler_LinearRepeat, UnpackNormalOctQuadEncode(2.0 * uv - 1.0), _BlitMipLevel);
 }
 
 float4 FragOctahedralBilinearRepeat(Varyings input) : SV_Target {
@@ -139,5 +139,7 @@ float4 FragOctahedralProjectLuminance(Varyings input) : SV_Target {
 }
 float4 FragOctahedralProjectRedToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).rrrr; }
 float4 FragOctahedralProjectAlphaToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).aaaa; }
+
+#endif  // PBRLAB_USER_READS_FullscreenVert
 
 #endif

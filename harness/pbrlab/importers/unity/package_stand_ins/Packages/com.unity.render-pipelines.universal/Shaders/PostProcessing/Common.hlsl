@@ -1,7 +1,10 @@
 // pbrlab stand-in for URP's Shaders/PostProcessing/Common.hlsl: the utility functions of URP's
 // post-processing shaders (written for pbrlab from Unity's documentation of URP's
 // post-processing effects and the sRGB standard; URP's own file is under the Unity Companion
-// License and is not copied). As URP's, it includes Core RP's Color.hlsl and Blit.hlsl.
+// License and is not copied). As URP's, it includes Core RP's Color.hlsl and Blit.hlsl (URP 13
+// on: Vert, Varyings.texcoord); a shader written for URP 12, whose Common.hlsl included
+// Utils/Fullscreen.hlsl (FullscreenVert, Varyings.uv) instead, is told by its use of
+// FullscreenVert (importers/unity/user_definitions.py) and gets URP 12's.
 // Provided: GetLuminance, GetSRGBToLinear / GetLinearToSRGB, ApplyVignette, ApplyTonemap
 // without a tonemapping keyword. Not provided: the colour-grading LUT, grain, dithering and
 // FXAA functions, and ApplyTonemap's ACES and Neutral branches (refused with #error).
@@ -9,7 +12,12 @@
 #define PBRLAB_URP_POST_PROCESSING_COMMON_HLSL
 
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Color.hlsl"
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/GlobalSamplers.hlsl"
+#ifdef PBRLAB_USER_READS_FullscreenVert
+#include "Packages/com.unity.render-pipelines.universal/Shaders/Utils/Fullscreen.hlsl"
+#else
 #include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"
+#endif
 
 // Rec. 709 luminance of a linear colour (Core RP Color.hlsl's Luminance weights, BT.709 / sRGB primaries)
 float GetLuminance(float3 colorLinear) { return dot(colorLinear, float3(0.2126729, 0.7151522, 0.0721750)); }
