@@ -12,6 +12,7 @@ function, an Input member nothing fills) is a ``UnityShaderError`` naming file a
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 from dataclasses import dataclass
@@ -639,7 +640,8 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
         notes: list = []
         tagged = sub.tags.get("RenderPipeline", "")
         if pipeline.tags and tagged and tagged not in pipeline.tags:
-            reasons.append(f"SubShader {index + 1} (line {sub.line}): it is for RenderPipeline {tagged!r}")
+            reasons.append(f"SubShader {index + 1} (line {sub.line}): "
+                           + _other_pipelines(path, index, sub, tagged, pipeline))
             continue
         try:
             passes = _subshader_passes(layout, sub, props, warnings, notes, pipeline)
@@ -662,6 +664,22 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
                 p.properties = props
         return M.UnityShader(path, layout.name, passes, props, warnings, notes)
     return _fallback(layout, reasons, path, pipeline)
+
+
+def _other_pipelines(path: Path, index: int, sub, tagged: str, pipeline: Pipeline) -> str:
+    """Why SubShader ``index`` (tagged RenderPipeline = ``tagged``) does not run under ``pipeline``:
+    Unity runs a SubShader whose RenderPipeline tag is set only where the value matches the active
+    pipeline's name (Shader.globalRenderPipeline, "matches the value completely": Unity's scripting
+    reference), so a misspelt value ("UniversalPipelien") skips it in Unity too; the hint names the
+    value it was likely meant to be."""
+    line = sub.tag_lines.get("RenderPipeline", sub.line)
+    names = " or ".join(f'"{name}"' for name in pipeline.tags)
+    close = difflib.get_close_matches(tagged, pipeline.tags, n=1, cutoff=0.75)
+    hint = (f'; "{tagged}" looks like a misspelling of "{close[0]}", which Unity would not correct either'
+            if close else "")
+    return (f'{path}:{line}: SubShader {index + 1} is tagged "RenderPipeline" = "{tagged}", and {pipeline.name} '
+            f"runs only a SubShader tagged {names} or untagged (Unity matches the tag against the active "
+            f"pipeline's name exactly, so it skips this SubShader too){hint}")
 
 
 def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
