@@ -682,6 +682,30 @@ def _other_pipelines(path: Path, index: int, sub, tagged: str, pipeline: Pipelin
             f"pipeline's name exactly, so it skips this SubShader too){hint}")
 
 
+# The shaders Unity ships with the editor, not with a project (the manual's "Built-in shaders" and
+# its legacy shader families; the error shader): a Fallback names one by its name, and no folder of
+# the project holds it.
+_SHIPPED_WITH_UNITY = re.compile(
+    r"(?:Legacy Shaders|Mobile|Unlit|Particles|Skybox|Sprites|UI|GUI|Nature|FX|Transparent|Self-Illumin|Reflective"
+    r"|Autodesk Interactive|Universal Render Pipeline|HDRP)/.*"
+    r"|(?:Bumped )?(?:Diffuse|Specular)(?: Detail| Fast)?|VertexLit|Parallax (?:Diffuse|Specular)|Decal"
+    r"|Standard(?: \(Specular setup\))?", re.I)
+_ERROR_SHADER = "hidden/internalerrorshader"
+
+
+def _missing_fallback(name: str) -> tuple:
+    """(what, what to do) of a Fallback pbrlab did not find: a shader the project should hold, one
+    of the shaders Unity ships (which no project holds), or Unity's error shader."""
+    if name.lower() == _ERROR_SHADER:
+        return "is Unity's error shader", (": Unity draws the object in its flat magenta, which pbrlab does "
+                                           "not imitate")
+    if _SHIPPED_WITH_UNITY.fullmatch(name):
+        return ("is one of the shaders Unity ships with the editor (no file of the project)",
+                ": pbrlab has no stand-in for it, and Unity would draw the object with it")
+    return ("is a shader pbrlab does not have", ": put its .shader file in this shader's folder (or below it) or "
+            "its Unity project's Assets, or name its folder in $PBRLAB_UNITY_SHADERS")
+
+
 def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     why = "; ".join(reasons) if reasons else "it has no SubShader"
     if layout.fallback in (None, "off"):
@@ -689,18 +713,14 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    what, how = _missing_fallback(layout.fallback)
     if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
         raise UnityShaderError(
             f"{reasons[0].split(': ', 1)[1]} (its one SubShader cannot run, and its Fallback "
-            f'"{layout.fallback}" is a shader pbrlab does not have (line {layout.fallback_line}): put its .shader '
-            "file in this shader's folder (or below it) or its Unity project's Assets, or name its folder in "
-            "$PBRLAB_UNITY_SHADERS)")
+            f'"{layout.fallback}" {what} (line {layout.fallback_line}){how})')
     if found is None:
-        raise UnityShaderError(
-            f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
-            f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
-            "shader's folder (or below it) or its Unity project's Assets, or name its folder in "
-            "$PBRLAB_UNITY_SHADERS")
+        raise UnityShaderError(f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
+                               f'"{layout.fallback}" {what}{how}')
     try:
         shader = read_shader(found, pipeline)
     except UnityShaderError as exc:  # the Fallback cannot run either: both reasons, this shader's first
