@@ -79,14 +79,16 @@ def _refusal(tmp_path, language, fallback) -> str:
 @pytest.mark.parametrize("fallback", ["Diffuse", "VertexLit", "Legacy Shaders/Bumped Specular", "Mobile/Diffuse"])
 def test_a_fallback_unity_ships_is_named_as_such(tmp_path, language, fallback):
     """The Fallback named, its line, and that Unity ships it; no advice to put its file in the project.
-    Control: a project's own missing Fallback ("Game/Plain") keeps that advice."""
+    Control: a project's own missing Fallback keeps that advice, also under a first name Unity's
+    shaders use ("Unlit/NewUnlitShader", the name Unity's own new-shader template gives)."""
     message = _refusal(tmp_path, language, fallback)
     assert (f'its Fallback "{fallback}" is one of the shaders Unity ships with the editor (no file of the '
             f"project) (line {FALLBACK_LINE}): pbrlab has no stand-in for it") in message
     assert "put its .shader file" not in message
-    control = _refusal(tmp_path, language, "Game/Plain")
-    assert f'its Fallback "Game/Plain" is a shader pbrlab does not have (line {FALLBACK_LINE}): put its .shader file' \
-        in control
+    for own in ("Game/Plain", "Unlit/NewUnlitShader"):
+        control = _refusal(tmp_path, language, own)
+        assert (f'its Fallback "{own}" is a shader pbrlab does not have (line {FALLBACK_LINE}): put its .shader '
+                "file") in control
 
 
 @pytest.mark.parametrize("language", LANGUAGES)

@@ -682,14 +682,20 @@ def _other_pipelines(path: Path, index: int, sub, tagged: str, pipeline: Pipelin
             f"pipeline's name exactly, so it skips this SubShader too){hint}")
 
 
-# The shaders Unity ships with the editor, not with a project (the manual's "Built-in shaders" and
-# its legacy shader families; the error shader): a Fallback names one by its name, and no folder of
-# the project holds it.
+# The shaders Unity ships with the editor, not with a project (its built-in shaders: the legacy
+# families by their short and "Legacy Shaders/" names, Standard, and the Unlit, Mobile, Particles,
+# Skybox, Sprites, UI, GUI and Nature shaders by their whole names, since a project's own shaders
+# often take those first names, "Unlit/NewUnlitShader"; the SRPs' packages): a Fallback names one by
+# its name, and no folder of the project holds it.
 _SHIPPED_WITH_UNITY = re.compile(
-    r"(?:Legacy Shaders|Mobile|Unlit|Particles|Skybox|Sprites|UI|GUI|Nature|FX|Transparent|Self-Illumin|Reflective"
-    r"|Autodesk Interactive|Universal Render Pipeline|HDRP)/.*"
+    r"(?:Legacy Shaders|Universal Render Pipeline|HDRP)/.*"
     r"|(?:Bumped )?(?:Diffuse|Specular)(?: Detail| Fast)?|VertexLit|Parallax (?:Diffuse|Specular)|Decal"
-    r"|Standard(?: \(Specular setup\))?", re.I)
+    r"|(?:Transparent|Self-Illumin|Reflective)/.*|Standard(?: \(Specular setup\))?|Autodesk Interactive"
+    r"|Unlit/(?:Color|Texture|Transparent|Transparent Cutout)"
+    r"|Mobile/(?:Diffuse|Bumped Diffuse|Bumped Specular.*|VertexLit.*|Unlit \(Supports Lightmap\)|Skybox|Particles/.*)"
+    r"|Particles/Standard (?:Surface|Unlit)|Skybox/(?:6 Sided|Cubemap|Panoramic|Procedural)"
+    r"|Sprites/(?:Default|Diffuse|Mask)|UI/(?:Default|Default Font|Unlit/.*|Lit/.*)|GUI/Text Shader"
+    r"|Nature/(?:Terrain/.*|Tree Soft Occlusion.*|SpeedTree.*|Tree Creator.*)", re.I)
 _ERROR_SHADER = "hidden/internalerrorshader"
 
 
