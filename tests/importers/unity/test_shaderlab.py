@@ -193,7 +193,7 @@ def test_outside_a_unity_project_a_shader_elsewhere_is_not_found(tmp_path, text,
 
 @pytest.mark.parametrize("text, message", [
     ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { matrix [_M] combine texture } } } FallBack "VertexLit" }',
-     'Fallback "VertexLit" is a shader pbrlab does not have'),
+     'Fallback "VertexLit" is one of the shaders Unity ships with the editor'),
     ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { matrix [_M] combine texture } } } }',
      "SetTexture [_MainTex] { matrix }: texture matrices are not supported"),
     ('Shader "x" { SubShader { Pass { SetTexture [_MainTex] { combine texture * primary QUIRKY } } } }',

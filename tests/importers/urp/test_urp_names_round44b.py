@@ -154,7 +154,7 @@ def test_the_lightweight_pipeline_tag_runs_under_urp(tmp_path, language):
     naming the tag."""
     pixels, _ = _render(tmp_path, language, "return float4(0.25, 0.5, 0.125, 1.0);", tag="LightweightPipeline")
     assert np.all(pixels[:, :3] == np.array([0.25, 0.5, 0.125], np.float32))
-    with pytest.raises(PbrlabError, match="'LightweightPipe'"):
+    with pytest.raises(PbrlabError, match='"RenderPipeline" = "LightweightPipe"'):
         _render(tmp_path, language, "return float4(0.25, 0.5, 0.125, 1.0);", tag="LightweightPipe")
 
 

@@ -12,6 +12,7 @@ function, an Input member nothing fills) is a ``UnityShaderError`` naming file a
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 from dataclasses import dataclass
@@ -639,7 +640,8 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
         notes: list = []
         tagged = sub.tags.get("RenderPipeline", "")
         if pipeline.tags and tagged and tagged not in pipeline.tags:
-            reasons.append(f"SubShader {index + 1} (line {sub.line}): it is for RenderPipeline {tagged!r}")
+            reasons.append(f"SubShader {index + 1} (line {sub.line}): "
+                           + _other_pipelines(path, index, sub, tagged, pipeline))
             continue
         try:
             passes = _subshader_passes(layout, sub, props, warnings, notes, pipeline)
@@ -664,6 +666,52 @@ def read_text(text: str, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnitySha
     return _fallback(layout, reasons, path, pipeline)
 
 
+def _other_pipelines(path: Path, index: int, sub, tagged: str, pipeline: Pipeline) -> str:
+    """Why SubShader ``index`` (tagged RenderPipeline = ``tagged``) does not run under ``pipeline``:
+    Unity runs a SubShader whose RenderPipeline tag is set only where the value matches the active
+    pipeline's name (Shader.globalRenderPipeline, "matches the value completely": Unity's scripting
+    reference), so a misspelt value ("UniversalPipelien") skips it in Unity too; the hint names the
+    value it was likely meant to be."""
+    line = sub.tag_lines.get("RenderPipeline", sub.line)
+    names = " or ".join(f'"{name}"' for name in pipeline.tags)
+    close = difflib.get_close_matches(tagged, pipeline.tags, n=1, cutoff=0.75)
+    hint = (f'; "{tagged}" looks like a misspelling of "{close[0]}", which Unity would not correct either'
+            if close else "")
+    return (f'{path}:{line}: SubShader {index + 1} is tagged "RenderPipeline" = "{tagged}", and {pipeline.name} '
+            f"runs only a SubShader tagged {names} or untagged (Unity matches the tag against the active "
+            f"pipeline's name exactly, so it skips this SubShader too){hint}")
+
+
+# The shaders Unity ships with the editor, not with a project (its built-in shaders: the legacy
+# families by their short and "Legacy Shaders/" names, Standard, and the Unlit, Mobile, Particles,
+# Skybox, Sprites, UI, GUI and Nature shaders by their whole names, since a project's own shaders
+# often take those first names, "Unlit/NewUnlitShader"; the SRPs' packages): a Fallback names one by
+# its name, and no folder of the project holds it.
+_SHIPPED_WITH_UNITY = re.compile(
+    r"(?:Legacy Shaders|Universal Render Pipeline|HDRP)/.*"
+    r"|(?:Bumped )?(?:Diffuse|Specular)(?: Detail| Fast)?|VertexLit|Parallax (?:Diffuse|Specular)|Decal"
+    r"|(?:Transparent|Self-Illumin|Reflective)/.*|Standard(?: \(Specular setup\))?|Autodesk Interactive"
+    r"|Unlit/(?:Color|Texture|Transparent|Transparent Cutout)"
+    r"|Mobile/(?:Diffuse|Bumped Diffuse|Bumped Specular.*|VertexLit.*|Unlit \(Supports Lightmap\)|Skybox|Particles/.*)"
+    r"|Particles/Standard (?:Surface|Unlit)|Skybox/(?:6 Sided|Cubemap|Panoramic|Procedural)"
+    r"|Sprites/(?:Default|Diffuse|Mask)|UI/(?:Default|Default Font|Unlit/.*|Lit/.*)|GUI/Text Shader"
+    r"|Nature/(?:Terrain/.*|Tree Soft Occlusion.*|SpeedTree.*|Tree Creator.*)", re.I)
+_ERROR_SHADER = "hidden/internalerrorshader"
+
+
+def _missing_fallback(name: str) -> tuple:
+    """(what, what to do) of a Fallback pbrlab did not find: a shader the project should hold, one
+    of the shaders Unity ships (which no project holds), or Unity's error shader."""
+    if name.lower() == _ERROR_SHADER:
+        return "is Unity's error shader", (": Unity draws the object in its flat magenta, which pbrlab does "
+                                           "not imitate")
+    if _SHIPPED_WITH_UNITY.fullmatch(name):
+        return ("is one of the shaders Unity ships with the editor (no file of the project)",
+                ": pbrlab has no stand-in for it, and Unity would draw the object with it")
+    return ("is a shader pbrlab does not have", ": put its .shader file in this shader's folder (or below it) or "
+            "its Unity project's Assets, or name its folder in $PBRLAB_UNITY_SHADERS")
+
+
 def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -> M.UnityShader:
     why = "; ".join(reasons) if reasons else "it has no SubShader"
     if layout.fallback in (None, "off"):
@@ -671,18 +719,14 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    what, how = _missing_fallback(layout.fallback)
     if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
         raise UnityShaderError(
             f"{reasons[0].split(': ', 1)[1]} (its one SubShader cannot run, and its Fallback "
-            f'"{layout.fallback}" is a shader pbrlab does not have (line {layout.fallback_line}): put its .shader '
-            "file in this shader's folder (or below it) or its Unity project's Assets, or name its folder in "
-            "$PBRLAB_UNITY_SHADERS)")
+            f'"{layout.fallback}" {what} (line {layout.fallback_line}){how})')
     if found is None:
-        raise UnityShaderError(
-            f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
-            f'"{layout.fallback}" is a shader pbrlab does not have: put its .shader file in this '
-            "shader's folder (or below it) or its Unity project's Assets, or name its folder in "
-            "$PBRLAB_UNITY_SHADERS")
+        raise UnityShaderError(f"{path}:{layout.fallback_line}: no SubShader can run here ({why}); its Fallback "
+                               f'"{layout.fallback}" {what}{how}')
     try:
         shader = read_shader(found, pipeline)
     except UnityShaderError as exc:  # the Fallback cannot run either: both reasons, this shader's first

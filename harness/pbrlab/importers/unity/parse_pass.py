@@ -198,6 +198,18 @@ def _unresolved_include(program: str, folder: Path):
     return None
 
 
+def _arguments(pragma: str, text: str) -> list:
+    """A ``#pragma``'s arguments, as words; a stage's function name is the identifier that opens
+    them, so ``#pragma fragment frag;`` (a semicolon after the name, as a C statement ends) names
+    frag: Unity's preprocessor reads a pragma's arguments as preprocessing tokens, of which the
+    identifier and ';' are two (C99 6.4; HLSL's preprocessor is C's), and two sampled projects
+    (a URP port of a shader book's edge detection, a course's sun shader) write it so and draw."""
+    words = text.split()
+    if pragma in _STAGES and words:
+        words[0] = re.match(r"\w*", words[0]).group(0) or words[0]
+    return words
+
+
 def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), keywords=(),
                notes: list | None = None, srp: bool = False) -> M.VertexFragmentPass:
     """``spellings``: the pipeline's (parse.Pipeline.spellings), already applied to ``program``
@@ -244,7 +256,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
 
     pragmas = {}
     for m in _PRAGMA.finditer(masked):
-        pragmas.setdefault(m.group(1), (m.group(2).split(), m.start()))
+        pragmas.setdefault(m.group(1), (_arguments(m.group(1), m.group(2)), m.start()))
     # A stage's #pragma in a file the program includes (SRLS's `#pragma fragment frag` in its
     # Core.hlsl): Unity's shader compiler reads #pragma directives in include files since its
     # caching preprocessor (Unity 2020.1 on, the only one from 2021.2; manual, "HLSL pragma
@@ -252,7 +264,7 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     # program's first line; the program's own pragma wins.
     for m in _PRAGMA.finditer(everything[len(masked):]):
         if m.group(1) in _STAGES and m.group(1) not in pragmas and m.group(2).split():
-            pragmas[m.group(1)] = (m.group(2).split(), 0)
+            pragmas[m.group(1)] = (_arguments(m.group(1), m.group(2)), 0)
     if "surface" in pragmas:
         raise UnityShaderError(f"{where(pragmas['surface'][1])}: #pragma surface inside a Pass: Unity "
                                "allows surface programs only directly in a SubShader")

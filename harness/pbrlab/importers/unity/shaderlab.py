@@ -113,6 +113,7 @@ class PassBlock:
 class SubShaderBlock:
     line: int
     tags: dict = field(default_factory=dict)
+    tag_lines: dict = field(default_factory=dict)   # tag name -> the line it is written on
     lod: int | None = None
     state: list = field(default_factory=list)
     items: list = field(default_factory=list)       # in file order: ("surface", Block),
@@ -248,16 +249,21 @@ class _Tokens:
         return " ".join(words)
 
     def tags(self) -> dict:
+        return self.tags_and_lines()[0]
+
+    def tags_and_lines(self) -> tuple:
+        """A Tags block: ({name: value}, {name: the line its name stands on})."""
         self.expect("{")
-        tags = {}
+        tags, lines = {}, {}
         while self.peek()[0] not in ("}", None):
-            key = self.next()[0]
+            key, line, _ = self.next()
             if self.peek()[0] == "=":
                 self.next()
             value = self.next()[0]
             tags[key.strip('"')] = (value or "").strip('"')
+            lines[key.strip('"')] = line
         self.expect("}")
-        return tags
+        return tags, lines
 
 
 def _string(tok: str | None) -> str | None:
@@ -317,7 +323,7 @@ def _subshader(t: _Tokens, line: int) -> SubShaderBlock:
         word = tok.lower()
         t.next()
         if word == "tags":
-            s.tags = t.tags()
+            s.tags, s.tag_lines = t.tags_and_lines()
         elif word == "lod":
             value, vline, _ = t.next()
             try:
