@@ -37,6 +37,7 @@ from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates,
 from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
+from .include_separators import forward_slashed_includes
 from .properties import TextureValue
 from .source_text import (CGINC, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
                           top_level)
@@ -210,8 +211,9 @@ def hlsl_includes(shader) -> dict:
             continue
         text = out.get(path) or shaders.strip_bom(read_source(path))
         # (in the spellings glslang takes, as the program's: cg_spellings)
-        spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(text), included), included,
-                               getattr(shader, "srp", False))
+        # (its include names as Unity reads them: include_separators)
+        spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(forward_slashed_includes(text)), included),
+                               included, getattr(shader, "srp", False))
         if spelled != text:
             out[path] = spelled
     return out

@@ -154,7 +154,9 @@ class UnityIncludeRefusal(UnityShaderError):
 def resolve_included(name: str, folder: Path):
     """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
     folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``) and, for a
-    package path (``Packages/...``), for Unity's packages' files; else None."""
+    package path (``Packages/...``), for Unity's packages' files; else None. A name that starts
+    with ``/`` is read from the including file's folder, as Unity reads it (include_separators)."""
+    name = name.lstrip("/")
     candidates = [(folder, folder / name)]  # (the user's folder it lies in, or None: pbrlab's own)
     root = project_root(name, folder)
     if root is not None:

@@ -1,0 +1,201 @@
+"""The graphics API a Unity program is compiled for (issue 34, session 45): Unity defines exactly
+one platform macro per compile (``SHADER_API_D3D11``, ``SHADER_API_GLCORE``, ...; Unity manual,
+"Built-in shader macros"), and a project that vendors Core RP's ShaderLibrary under ``Assets/``
+picks its ``API/<platform>.hlsl`` header by it (Common.hlsl's ``#error unsupported shader api``
+without one). pbrlab draws with OpenGL and follows its conventions (UNITY_UV_STARTS_AT_TOP and
+UNITY_REVERSED_Z undefined), so the macro is ``SHADER_API_GLCORE`` (graphics_api.py), in both
+languages and both pipelines.
+
+Also: an include written ``#include "/API/X.hlsl"`` (a vendored Common.hlsl's spelling) is read
+from the including file's folder, as Unity reads it (include_separators.py).
+
+Each shader returns short binary fractions, exact in float32 and in the half-float target, so
+the covered pixels must equal the float64 expectation exactly.
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+import pytest
+
+from pbrlab.checking import unity_corpus as corpus
+from pbrlab.importers.unity import graphics_api
+
+# Each branch its own colour: Direct3D's, OpenGL core's, no platform (what pbrlab compiled
+# before: the control), and another API's.
+PLATFORM_BRANCHES = """
+#if defined(SHADER_API_D3D11)
+    #define PLATFORM_COLOUR float3(1.0, 0.0, 0.0)
+#elif defined(SHADER_API_GLCORE)
+    #define PLATFORM_COLOUR float3(0.25, 0.5, 0.75)
+#elif defined(SHADER_API_VULKAN) || defined(SHADER_API_METAL) || defined(SHADER_API_GLES3)
+    #define PLATFORM_COLOUR float3(0.0, 1.0, 0.0)
+#else
+    #define PLATFORM_COLOUR float3(0.0, 0.0, 1.0)
+#endif
+"""
+GLCORE = np.array([0.25, 0.5, 0.75])
+NO_PLATFORM = np.array([0.0, 0.0, 1.0])
+
+URP_SHADER = textwrap.dedent("""\
+    Shader "t/urp platform" {
+        SubShader {
+            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+            Pass {
+                Tags { "LightMode" = "UniversalForward" }
+                HLSLPROGRAM
+                #pragma vertex vert
+                #pragma fragment frag
+                #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+                %(platform)s
+                struct Attributes { float4 positionOS : POSITION; };
+                struct Varyings { float4 positionCS : SV_POSITION; };
+                Varyings vert(Attributes IN) {
+                    Varyings OUT;
+                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                    return OUT;
+                }
+                float4 frag(Varyings IN) : SV_Target { return float4(PLATFORM_COLOUR, 1.0); }
+                ENDHLSL
+            }
+        }
+    }
+    """)
+
+BUILTIN_SHADER = textwrap.dedent("""\
+    Shader "t/builtin platform" {
+        SubShader {
+            Pass {
+                CGPROGRAM
+                #pragma vertex vert
+                #pragma fragment frag
+                #include "UnityCG.cginc"
+                %(platform)s
+                float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p.xyz); }
+                fixed4 frag() : SV_Target { return fixed4(PLATFORM_COLOUR, 1.0); }
+                ENDCG
+            }
+        }
+    }
+    """)
+
+# A project's own copy of Core's Common.hlsl pattern: the platform header by macro, from its own
+# API/ folder, named with a leading "/"; the header defines a texture macro of Core's API family
+# and the clip-space constant GLCore's header gives OpenGL.
+VENDORED_COMMON = """\
+#ifndef MY_COMMON_INCLUDED
+#define MY_COMMON_INCLUDED
+#if defined(SHADER_API_D3D11)
+#include "/API/MyD3D11.hlsl"
+#elif defined(SHADER_API_GLCORE)
+#include "/API/MyGLCore.hlsl"
+#else
+#error unsupported shader api
+#endif
+#endif
+"""
+VENDORED_D3D11 = """\
+#define MY_TEXTURE2D(name) Texture2D name
+#define MY_NEAR_CLIP_VALUE (1.0)
+"""
+VENDORED_GLCORE = """\
+#define MY_TEXTURE2D(name) Texture2D name
+#define MY_NEAR_CLIP_VALUE (-1.0)
+"""
+VENDORED_SHADER = textwrap.dedent("""\
+    Shader "t/vendored common" {
+        SubShader {
+            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+            Pass {
+                Tags { "LightMode" = "UniversalForward" }
+                HLSLPROGRAM
+                #pragma vertex vert
+                #pragma fragment frag
+                #include "../ShaderLibrary/MyCommon.hlsl"
+                #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+                struct Attributes { float4 positionOS : POSITION; };
+                struct Varyings { float4 positionCS : SV_POSITION; };
+                Varyings vert(Attributes IN) {
+                    Varyings OUT;
+                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                    return OUT;
+                }
+                float4 frag(Varyings IN) : SV_Target {
+                    // GL's near clip value -1: (0.25, 0.5, 0.75); Direct3D's +1 would give (0.75, 1.0, 1.25)
+                    return float4(float3(0.5, 0.75, 1.0) + 0.25 * MY_NEAR_CLIP_VALUE, 1.0);
+                }
+                ENDHLSL
+            }
+        }
+    }
+    """)
+
+
+def _run(path, text, language):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return corpus.run_shader(path, language)
+
+
+def _assert_exactly(result, expected):
+    assert result.status == "rendered", result.message
+    covered = result.image[..., 3] == 1.0
+    assert covered.mean() > 0.1
+    assert np.array_equal(result.image[covered][:, :3].astype(np.float64),
+                          np.broadcast_to(expected, (covered.sum(), 3)))
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("pipeline", ["urp", "builtin"])
+def test_the_platform_is_opengl_core_in_both_pipelines(tmp_path, language, pipeline):
+    """SHADER_API_GLCORE, and no other platform's macro, in a URP and a built-in program."""
+    shader = URP_SHADER if pipeline == "urp" else BUILTIN_SHADER
+    _assert_exactly(_run(tmp_path / "p.shader", shader % {"platform": PLATFORM_BRANCHES}, language), GLCORE)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_control_without_the_platform_macro_the_last_branch_is_drawn(tmp_path, language, monkeypatch):
+    """The old behaviour (no platform macro) draws the #else branch's blue: the check above
+    tells the two apart."""
+    monkeypatch.setattr(graphics_api, "program_defines", lambda unity_pass: {})
+    result = _run(tmp_path / "p.shader", URP_SHADER % {"platform": PLATFORM_BRANCHES}, language)
+    _assert_exactly(result, NO_PLATFORM)
+
+
+def _vendored_project(tmp_path, common=VENDORED_COMMON):
+    library = tmp_path / "Assets" / "URP" / "ShaderLibrary"
+    (library / "API").mkdir(parents=True)
+    (library / "MyCommon.hlsl").write_text(common)
+    (library / "API" / "MyD3D11.hlsl").write_text(VENDORED_D3D11)
+    (library / "API" / "MyGLCore.hlsl").write_text(VENDORED_GLCORE)
+    return tmp_path / "Assets" / "URP" / "Shaders" / "v.shader"
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_vendored_common_takes_its_own_glcore_header(tmp_path, language):
+    """The vendored Common's ``#include "/API/MyGLCore.hlsl"`` is its own folder's API/ file (a
+    leading "/" read from the including file's folder), chosen by SHADER_API_GLCORE: GL's near
+    clip value -1 gives (0.25, 0.5, 0.75) exactly."""
+    _assert_exactly(_run(_vendored_project(tmp_path), VENDORED_SHADER, language), GLCORE)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_control_a_vendored_common_without_a_platform_stops_at_its_error(tmp_path, language, monkeypatch):
+    """Without the macro (the old behaviour) the vendored Common stops at its own #error, and
+    the refusal names the file and line."""
+    monkeypatch.setattr(graphics_api, "program_defines", lambda unity_pass: {})
+    result = _run(_vendored_project(tmp_path), VENDORED_SHADER, language)
+    assert result.status != "rendered"
+    assert "MyCommon.hlsl:8" in result.message and "unsupported shader api" in result.message
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_control_a_missing_platform_header_is_refused_by_name(tmp_path, language):
+    """A leading-"/" include that names no file beside the including one is refused naming
+    the include and its file (not looked up from the file system's root)."""
+    common = VENDORED_COMMON.replace("/API/MyGLCore.hlsl", "/API/Missing.hlsl")
+    result = _run(_vendored_project(tmp_path, common), VENDORED_SHADER, language)
+    assert result.status != "rendered"
+    assert "Missing.hlsl" in result.message and "MyCommon.hlsl" in result.message
