@@ -199,3 +199,51 @@ def test_control_a_missing_platform_header_is_refused_by_name(tmp_path, language
     result = _run(_vendored_project(tmp_path, common), VENDORED_SHADER, language)
     assert result.status != "rendered"
     assert "Missing.hlsl" in result.message and "MyCommon.hlsl" in result.message
+
+
+# A project's copy of URP's ShaderLibrary/Core.hlsl under Assets/ (Unity's include guard): it
+# declares the engine's per-draw inputs, as URP's own file does, and a Max3 of its own that no
+# stand-in has (red). pbrlab reads its stand-in for URP's Core.hlsl in the copy's place
+# (vendored_library.py): the stand-in's Core RP Max3 / Min3 answer.
+VENDORED_CORE = """\
+#ifndef %(guard)s
+#define %(guard)s
+CBUFFER_START(UnityPerDraw)
+float4x4 unity_ObjectToWorld;
+real4 unity_SHAr;
+CBUFFER_END
+float3 Max3(float3 a, float3 b, float3 c) { return float3(1.0, 0.0, 0.0); }
+#endif
+"""
+VENDORED_CORE_SHADER = VENDORED_SHADER.replace(
+    '#include "../ShaderLibrary/MyCommon.hlsl"\n', "").replace(
+    "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl", "../%(folder)s/Core.hlsl").replace(
+    "return float4(float3(0.5, 0.75, 1.0) + 0.25 * MY_NEAR_CLIP_VALUE, 1.0);",
+    "return float4(Max3(0.25, 0.5, 0.125), Min3(0.25, 0.5, 0.125), 0.75, 1.0);")
+STAND_IN_MAX_MIN = np.array([0.5, 0.125, 0.75])
+
+
+def _vendored_core(tmp_path, folder="ShaderLibrary", guard="UNIVERSAL_PIPELINE_CORE_INCLUDED"):
+    library = tmp_path / "Assets" / "URP" / folder
+    library.mkdir(parents=True)
+    (library / "Core.hlsl").write_text(VENDORED_CORE % {"guard": guard})
+    return tmp_path / "Assets" / "URP" / "Shaders" / "v.shader", VENDORED_CORE_SHADER % {"folder": folder}
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_vendored_copy_of_urp_core_reads_the_stand_in(tmp_path, language):
+    """Core RP's Max3 / Min3 of (0.25, 0.5, 0.125): (0.5, 0.125), exactly, and the object drawn by
+    the stand-in's TransformObjectToHClip."""
+    _assert_exactly(_run(*_vendored_core(tmp_path), language), STAND_IN_MAX_MIN)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("case", ["own guard", "not below ShaderLibrary"])
+def test_control_a_file_of_the_projects_own_is_compiled_as_written(tmp_path, language, case):
+    """A Core.hlsl with a guard of the project's own, or outside a ShaderLibrary folder, is the
+    project's file: compiled as written, its redeclaration of the engine's inputs (and no
+    TransformObjectToHClip) is refused, naming the file."""
+    kwargs = {"guard": "MY_OWN_CORE_INCLUDED"} if case == "own guard" else {"folder": "Library"}
+    result = _run(*_vendored_core(tmp_path, **kwargs), language)
+    assert result.status != "rendered"
+    assert "Core.hlsl" in result.message or "TransformObjectToHClip" in result.message
