@@ -247,3 +247,17 @@ def test_control_a_file_of_the_projects_own_is_compiled_as_written(tmp_path, lan
     result = _run(*_vendored_core(tmp_path, **kwargs), language)
     assert result.status != "rendered"
     assert "Core.hlsl" in result.message or "TransformObjectToHClip" in result.message
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_2d_renderer_light_pass_is_refused_naming_the_2d_lights(tmp_path, language):
+    """URP's 2D Renderer's light passes include Shaders/2D/Include/LightingUtility.hlsl: refused at
+    that #include line, naming the 2D lights' lookup textures (pbrlab's scenes have no 2D
+    lights); the same program without it renders (the control: the refusal is the include's)."""
+    include = '#include "Packages/com.unity.render-pipelines.universal/Shaders/2D/Include/LightingUtility.hlsl"'
+    text = URP_SHADER % {"platform": include + "\n" + PLATFORM_BRANCHES}
+    result = _run(tmp_path / "l.shader", text, language)
+    assert result.status == "refused"
+    line = 1 + text.splitlines().index(next(x for x in text.splitlines() if "LightingUtility" in x))
+    assert f"l.shader:{line}:" in result.message and "_LightLookup" in result.message
+    _assert_exactly(_run(tmp_path / "c.shader", URP_SHADER % {"platform": PLATFORM_BRANCHES}, language), GLCORE)

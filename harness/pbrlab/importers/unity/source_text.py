@@ -298,7 +298,8 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
         if text is None:
             continue
         line = first_line - 1 + line_of(program, m.start())
-        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
+        ours = target.parent.resolve() == CGINC.resolve() or target.resolve().is_relative_to(PACKAGE_STAND_INS.resolve())
+        message = stand_in_refusal(text) if ours else None
         if message:
             raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
         try:
