@@ -261,3 +261,53 @@ def test_a_2d_renderer_light_pass_is_refused_naming_the_2d_lights(tmp_path, lang
     line = 1 + text.splitlines().index(next(x for x in text.splitlines() if "LightingUtility" in x))
     assert f"l.shader:{line}:" in result.message and "_LightLookup" in result.message
     _assert_exactly(_run(tmp_path / "c.shader", URP_SHADER % {"platform": PLATFORM_BRANCHES}, language), GLCORE)
+
+
+# A copy of URP's Shaders/UnlitInput.hlsl (Unity's guard) whose text would stop the compile: the
+# stand-in's UnlitInput answers (its _BaseColor, the material's property).
+VENDORED_UNLIT_INPUT = """\
+#ifndef %(guard)s
+#define %(guard)s
+#error "the project's copy was compiled"
+#endif
+"""
+UNLIT_INPUT_SHADER = textwrap.dedent("""\
+    Shader "t/vendored unlit input" {
+        Properties { _BaseColor ("Colour", Color) = (0.25, 0.5, 0.75, 1) }
+        SubShader {
+            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+            Pass {
+                Tags { "LightMode" = "UniversalForward" }
+                HLSLPROGRAM
+                #pragma vertex vert
+                #pragma fragment frag
+                #include "UnlitInput.hlsl"
+                struct Attributes { float4 positionOS : POSITION; };
+                struct Varyings { float4 positionCS : SV_POSITION; };
+                Varyings vert(Attributes IN) {
+                    Varyings OUT;
+                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                    return OUT;
+                }
+                float4 frag(Varyings IN) : SV_Target { return float4(_BaseColor.rgb, 1.0); }
+                ENDHLSL
+            }
+        }
+    }
+    """)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("guard", ["UNIVERSAL_UNLIT_INPUT_INCLUDED", "MY_UNLIT_INPUT_INCLUDED"])
+def test_a_vendored_copy_of_a_urp_shaders_include_reads_the_stand_in(tmp_path, language, guard):
+    """A copy below a Shaders/ folder with Unity's guard: the stand-in's _BaseColor, the material's
+    (0.25, 0.5, 0.75), exactly; with a guard of the project's own (the control) its own text, whose
+    #error refuses it."""
+    folder = tmp_path / "Assets" / "URP" / "Shaders"
+    folder.mkdir(parents=True)
+    (folder / "UnlitInput.hlsl").write_text(VENDORED_UNLIT_INPUT % {"guard": guard})
+    result = _run(folder / "u.shader", UNLIT_INPUT_SHADER, language)
+    if guard.startswith("UNIVERSAL"):
+        _assert_exactly(result, GLCORE)
+    else:
+        assert result.status == "refused" and "the project's copy was compiled" in result.message
