@@ -21,12 +21,13 @@ compiled with ``SHADER_API_GLES3`` as on that renderer.)
 from __future__ import annotations
 
 API_MACRO = "SHADER_API_GLCORE"
+# The model's language of a GLSLPROGRAM pass (glslprogram.LANGUAGE): it defines its own macro.
+GLSLPROGRAM_LANGUAGE = "unity-glsl"
 
 
 def program_defines(unity_pass) -> dict:
     """The platform macro of a CGPROGRAM / HLSLPROGRAM pass or a surface program; none for a
     GLSLPROGRAM, whose own renderer macro glslprogram.stage_text defines."""
-    from .glslprogram import LANGUAGE as GLSLPROGRAM
-    if getattr(unity_pass, "language", None) == GLSLPROGRAM:
+    if getattr(unity_pass, "language", None) == GLSLPROGRAM_LANGUAGE:
         return {}
     return {API_MACRO: 1}
