@@ -22,6 +22,7 @@ import pytest
 
 from pbrlab.checking import unity_corpus as corpus
 from pbrlab.importers.unity import graphics_api
+from test_urp_scene_textures import _URP_PASS as URP_PASS  # pytest puts this folder on sys.path
 
 # Each branch its own colour: Direct3D's, OpenGL core's, no platform (what pbrlab compiled
 # before: the control), and another API's.
@@ -39,30 +40,9 @@ PLATFORM_BRANCHES = """
 GLCORE = np.array([0.25, 0.5, 0.75])
 NO_PLATFORM = np.array([0.0, 0.0, 1.0])
 
-URP_SHADER = textwrap.dedent("""\
-    Shader "t/urp platform" {
-        SubShader {
-            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-            Pass {
-                Tags { "LightMode" = "UniversalForward" }
-                HLSLPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-                %(platform)s
-                struct Attributes { float4 positionOS : POSITION; };
-                struct Varyings { float4 positionCS : SV_POSITION; };
-                Varyings vert(Attributes IN) {
-                    Varyings OUT;
-                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                    return OUT;
-                }
-                float4 frag(Varyings IN) : SV_Target { return float4(PLATFORM_COLOUR, 1.0); }
-                ENDHLSL
-            }
-        }
-    }
-    """)
+# The scene-texture tests' URP pass (%(include)s after Core.hlsl, %(body)s the fragment's)
+URP_SHADER = URP_PASS % {"name": "urp platform", "include": "%(platform)s",
+                         "body": "return float4(PLATFORM_COLOUR, 1.0);"}
 
 BUILTIN_SHADER = textwrap.dedent("""\
     Shader "t/builtin platform" {
@@ -104,33 +84,9 @@ VENDORED_GLCORE = """\
 #define MY_TEXTURE2D(name) Texture2D name
 #define MY_NEAR_CLIP_VALUE (-1.0)
 """
-VENDORED_SHADER = textwrap.dedent("""\
-    Shader "t/vendored common" {
-        SubShader {
-            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-            Pass {
-                Tags { "LightMode" = "UniversalForward" }
-                HLSLPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "../ShaderLibrary/MyCommon.hlsl"
-                #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-                struct Attributes { float4 positionOS : POSITION; };
-                struct Varyings { float4 positionCS : SV_POSITION; };
-                Varyings vert(Attributes IN) {
-                    Varyings OUT;
-                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                    return OUT;
-                }
-                float4 frag(Varyings IN) : SV_Target {
-                    // GL's near clip value -1: (0.25, 0.5, 0.75); Direct3D's +1 would give (0.75, 1.0, 1.25)
-                    return float4(float3(0.5, 0.75, 1.0) + 0.25 * MY_NEAR_CLIP_VALUE, 1.0);
-                }
-                ENDHLSL
-            }
-        }
-    }
-    """)
+# GL's near clip value -1: (0.25, 0.5, 0.75); Direct3D's +1 would give (0.75, 1.0, 1.25)
+VENDORED_SHADER = URP_PASS % {"name": "vendored common", "include": '#include "../ShaderLibrary/MyCommon.hlsl"',
+                              "body": "return float4(float3(0.5, 0.75, 1.0) + 0.25 * MY_NEAR_CLIP_VALUE, 1.0);"}
 
 
 def _run(path, text, language):
@@ -215,11 +171,10 @@ CBUFFER_END
 float3 Max3(float3 a, float3 b, float3 c) { return float3(1.0, 0.0, 0.0); }
 #endif
 """
-VENDORED_CORE_SHADER = VENDORED_SHADER.replace(
-    '#include "../ShaderLibrary/MyCommon.hlsl"\n', "").replace(
-    "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl", "../%(folder)s/Core.hlsl").replace(
-    "return float4(float3(0.5, 0.75, 1.0) + 0.25 * MY_NEAR_CLIP_VALUE, 1.0);",
-    "return float4(Max3(0.25, 0.5, 0.125), Min3(0.25, 0.5, 0.125), 0.75, 1.0);")
+VENDORED_CORE_SHADER = URP_PASS.replace(
+    "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl", "../%%(folder)s/Core.hlsl") % {
+    "name": "vendored core", "include": "",
+    "body": "return float4(Max3(0.25, 0.5, 0.125), Min3(0.25, 0.5, 0.125), 0.75, 1.0);"}
 STAND_IN_MAX_MIN = np.array([0.5, 0.125, 0.75])
 
 
@@ -271,30 +226,9 @@ VENDORED_UNLIT_INPUT = """\
 #error "the project's copy was compiled"
 #endif
 """
-UNLIT_INPUT_SHADER = textwrap.dedent("""\
-    Shader "t/vendored unlit input" {
-        Properties { _BaseColor ("Colour", Color) = (0.25, 0.5, 0.75, 1) }
-        SubShader {
-            Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-            Pass {
-                Tags { "LightMode" = "UniversalForward" }
-                HLSLPROGRAM
-                #pragma vertex vert
-                #pragma fragment frag
-                #include "UnlitInput.hlsl"
-                struct Attributes { float4 positionOS : POSITION; };
-                struct Varyings { float4 positionCS : SV_POSITION; };
-                Varyings vert(Attributes IN) {
-                    Varyings OUT;
-                    OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                    return OUT;
-                }
-                float4 frag(Varyings IN) : SV_Target { return float4(_BaseColor.rgb, 1.0); }
-                ENDHLSL
-            }
-        }
-    }
-    """)
+UNLIT_INPUT_SHADER = (URP_PASS % {"name": "vendored unlit input", "include": '#include "UnlitInput.hlsl"',
+                                  "body": "return float4(_BaseColor.rgb, 1.0);"}).replace(
+    "    SubShader {", '    Properties { _BaseColor ("Colour", Color) = (0.25, 0.5, 0.75, 1) }\n    SubShader {', 1)
 
 
 @pytest.mark.parametrize("language", corpus.LANGUAGES)
