@@ -245,3 +245,23 @@ def test_a_vendored_copy_of_a_urp_shaders_include_reads_the_stand_in(tmp_path, l
         _assert_exactly(result, GLCORE)
     else:
         assert result.status == "refused" and "the project's copy was compiled" in result.message
+
+
+# Core RP's API header's precision forms of a texture declaration (API/GLCore.hlsl's
+# TEXTURE2D_FLOAT / TEXTURE2D_HALF, a project's copy of URP's CopyDepthPass declares its depth so)
+PRECISION_FORMS_SHADER = (URP_PASS % {
+    "name": "texture precision forms",
+    "include": "TEXTURE2D_FLOAT(_FloatTex); TEXTURE2D_HALF(_HalfTex); SAMPLER(sampler_FloatTex);",
+    "body": "return float4(SAMPLE_TEXTURE2D(_FloatTex, sampler_FloatTex, float2(0.5, 0.5)).rgb * float3(0.25, 0.5, 0.75)"
+            " + SAMPLE_TEXTURE2D(_HalfTex, sampler_FloatTex, float2(0.5, 0.5)).rgb, 1.0);"}).replace(
+    "    SubShader {", '    Properties { _FloatTex ("F", 2D) = "%(float)s" {} _HalfTex ("H", 2D) = "black" {} }\n'
+    "    SubShader {", 1)
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("default", ["white", "black"])
+def test_the_api_headers_precision_forms_declare_textures(tmp_path, language, default):
+    """TEXTURE2D_FLOAT / TEXTURE2D_HALF declare the material's 2D textures: the "white" default
+    times (0.25, 0.5, 0.75) plus the "black" one, exactly; the "black" default (the control) gives 0."""
+    expected = GLCORE if default == "white" else np.zeros(3)
+    _assert_exactly(_run(tmp_path / "t.shader", PRECISION_FORMS_SHADER % {"float": default}, language), expected)
