@@ -123,6 +123,14 @@ def _bom_free_search(text: str, include_dirs, tmp: Path, replaced=None) -> list[
     dirs = [Path(d).resolve() for d in include_dirs]
     closure = include_closure(text, dirs)
     replaced = {Path(p).resolve(): t for p, t in (replaced or {}).items()}
+    # a replaced file's own includes, which its text may name otherwise than the file on disk
+    pending = [path for path in closure if path.resolve() in replaced]
+    while pending:
+        path = pending.pop()
+        for found in include_closure(replaced[path.resolve()], dirs, here=path.parent):
+            if found not in closure:
+                closure.append(found)
+                pending += [found] if found.resolve() in replaced else []
     if not replaced and not any(path.read_bytes().startswith(_BOM) for path in closure):
         return dirs
     mirror = tmp / "bom-free"

@@ -185,6 +185,9 @@ def _scan(body: str) -> tuple[_Line, ...]:
     return tuple(lines)
 
 
+_BRANCH_END = re.compile(r"[ \t]*#[ \t]*(elif|else|endif)\b")
+
+
 def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: bool = True,
            virtual: dict | None = None) -> Source:
     """Expand the includes of ``text`` (named ``name`` in messages).
@@ -213,6 +216,10 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
         source.files.append(display)
         emit_line_marker(file_index, first_line)
         depth = -1 if _is_guarded(body) else 0  # the file's own guard is not a condition
+        # an include expanded in a branch the compiler skips has its #line markers skipped too
+        # (a skipped group's directives are not read, C99 6.10.1), so its lines count as this
+        # file's: after an include, each later #elif / #else / #endif marks this file's line again
+        resync = False
         for number, scanned in enumerate(_scan(body), start=first_line):
             if scanned.in_comment:  # commentary, whatever it looks like (an #include, an #if)
                 lines_out.append(scanned.out)
@@ -228,8 +235,11 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 # moderngl resolves '#include' wherever it appears, comments included;
                 # what is left after expansion is commentary, so it is neutralised.
                 lines_out.append(scanned.out)
+                if resync and _BRANCH_END.match(scanned.out):
+                    emit_line_marker(file_index, number + 1)
                 continue
             included = scanned.include
+            resync = True
             if included in virtual:
                 made = virtual[included]
                 marker = Path(f"<virtual {included}>")

@@ -94,6 +94,10 @@ def _blank_procedural_setup(text: str) -> str:
 _DEFINITION = re.compile(r"^[ \t]*(?:inline[ \t]+)?[A-Za-z_]\w*[ \t]+([A-Za-z_]\w*)[ \t]*\(([^;{}()]*)\)"
                          r"(?:\s*:\s*\w+)?\s*\{", re.M)
 _PARAM_WORDS = {"in", "out", "inout", "uniform", "const"}
+# Core RP's precision type ``real`` (real2..real4, real3x3...): its Common.hlsl defines it as
+# float unless REAL_IS_HALF, which only a mobile platform's half-precision hint sets (not GLCore:
+# graphics_api), so a project's own copy of Common.hlsl defines Unity's functions on floats
+_REAL = re.compile(r"^real(?=\d|$)")
 
 
 @functools.lru_cache(maxsize=1)
@@ -110,7 +114,7 @@ def _parameter_types(params: str):
     out = []
     for param in filter(None, (p.strip() for p in params.split(","))):
         words = [w for w in re.findall(r"[A-Za-z_]\w*", param.split(":")[0]) if w not in _PARAM_WORDS]
-        t = builtin_type(words[0]) if len(words) == 2 else None
+        t = builtin_type(_REAL.sub("float", words[0])) if len(words) == 2 else None
         if t is None:
             return None
         out.append(t)
@@ -187,6 +191,17 @@ def _tex2d_with_derivatives(text: str) -> str:
     return "".join(out) + text[pos:]
 
 
+# A directive that names a hint itself (a project's copy of Core's API/GLCore.hlsl defines them,
+# its Validate.hlsl tests them: ``#ifndef UNITY_BRANCH``): the name is kept there.
+_NAMING_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(?:define|undef|ifdef|ifndef)[ \t]+$|\bdefined[ \t]*\(?[ \t]*$", re.M)
+
+
+def _blank_flow_hint(m) -> str:
+    """A flow-control hint blanked, unless a directive names it (_NAMING_DIRECTIVE)."""
+    line = m.string[m.string.rfind("\n", 0, m.start()) + 1:m.start()]
+    return m.group(0) if _NAMING_DIRECTIVE.search(line) else " " * len(m.group(0))
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
@@ -197,7 +212,7 @@ def respelled(text: str) -> str:
     initialiser list of an array of vectors grouped per element, a for-loop variable used after its
     loop declared before it (loop_scope)."""
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
-    text = _FLOW_HINT.sub(lambda m: " " * len(m.group(0)), text)
+    text = _FLOW_HINT.sub(_blank_flow_hint, text)
     text = _GL_TESTED.sub(lambda m: re.sub(r"\bGL_(?=\w)", "PBRLAB_UNITY_NO_GL_", m.group(1)), text)
     text = _LEGACY_DEPTH.sub(lambda m: m.group(1) + ("return 0" if m.group(2) == "UNITY_OUTPUT_DEPTH" else ""), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)

@@ -5,7 +5,8 @@ program: which struct members, which function bodies exist in the variant that r
 
 Lines in a branch not taken are blanked (offsets and line numbers kept). Conditions are
 evaluated with the program's own object-like ``#define``s, Unity's predefined macros
-(``UNITY_VERSION`` 2019.4, ``SHADER_TARGET`` from ``#pragma target``) and no keyword (Unity's
+(``UNITY_VERSION`` 2019.4, ``SHADER_TARGET`` from ``#pragma target``, the platform's
+``SHADER_API_GLCORE``: graphics_api.py) and no keyword (Unity's
 default variant; the material's keywords are added by the caller). A condition this reader
 cannot evaluate counts as true, as the reader did before it knew conditionals.
 """
@@ -14,8 +15,10 @@ from __future__ import annotations
 
 import re
 
+from .graphics_api import API_MACRO
+
 _DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif|define|undef)\b([^\n]*)$", re.M)
-UNITY_PREDEFINED = {"UNITY_VERSION": 201940, "SHADER_TARGET": 25}
+UNITY_PREDEFINED = {"UNITY_VERSION": 201940, "SHADER_TARGET": 25, API_MACRO: 1}
 # The UNITY_VERSION a Universal Render Pipeline program is compiled with (Unity defines it for
 # every program, the version's digits: 2021.3 -> 202130, as 2019.4 -> 201940; Unity's manual,
 # "Built-in shader macros"): the Unity of URP 12.1,

@@ -54,6 +54,7 @@ import re
 from pathlib import Path
 
 from . import external_images
+from .graphics_api import GLSLPROGRAM_LANGUAGE
 from . import model as M
 from .source_text import UnityShaderError, blank_comments, line_of
 
@@ -151,7 +152,7 @@ def note(path: Path, first_line: int, program: str = "") -> str:
 
 
 # VertexFragmentPass.language of a GLSLPROGRAM pass (program_pass builds it here).
-LANGUAGE = "unity-glsl"
+LANGUAGE = GLSLPROGRAM_LANGUAGE  # (graphics_api: the language whose pass defines its own API macro)
 
 
 def implicit_samplers(program: str) -> list[tuple]:

@@ -31,7 +31,7 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import conditionals, dynamic_lightmaps, fullscreen_pass, light_space, lightmaps, unset_samplers, user_definitions
+from . import conditionals, dynamic_lightmaps, fullscreen_pass, graphics_api, light_space, lightmaps, unset_samplers, user_definitions
 from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
@@ -166,7 +166,8 @@ class ProgramPass:
     def draws(self, defines: dict) -> list:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
                    **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap),
-                   **user_definitions.program_defines(self.unity_pass)}
+                   **user_definitions.program_defines(self.unity_pass),
+                   **graphics_api.program_defines(self.unity_pass)}  # SHADER_API_GLCORE
         if getattr(self.unity_pass, "srp", False):  # the Unity of the URP the stand-ins follow (conditionals)
             defines["UNITY_VERSION"] = conditionals.URP_UNITY_VERSION
         out = [(keyed, pass_state(self.alpha_mode, self.unity_pass, additive))

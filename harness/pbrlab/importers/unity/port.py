@@ -291,6 +291,11 @@ _SRP_TEXTURE_MACROS = {
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_unity_reflection_probe({a[2]}, {a[3]})" if a[0] in _SKY_CUBES
                                          else f"texCUBElod({a[0]}, float4(({a[2]}).xyz, {a[3]}))"),
 }
+# Core RP's API headers' precision forms of the declarations (API/GLCore.hlsl's TEXTURE2D_FLOAT,
+# TEXTURE2D_HALF, ...): the same texture types (float32 throughout here)
+_PRECISION_FORMS = {base + precision: base for base in ("TEXTURE2D", "TEXTURECUBE", "TEXTURE3D", "TEXTURE2D_ARRAY")
+                    for precision in ("_FLOAT", "_HALF")}
+_SRP_TEXTURE_MACROS.update({form: _SRP_TEXTURE_MACROS[base] for form, base in _PRECISION_FORMS.items()})
 _SRP_MACRO = re.compile(r"\b(" + "|".join(sorted(_SRP_TEXTURE_MACROS, key=len, reverse=True)) + r")\s*\(")
 
 
@@ -320,7 +325,8 @@ def _expand_srp_texture_macros(code: str) -> str:
             continue
         args, end = found
         need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1, "TEXTURE3D": 1,
-                "TEXTURE2D_ARRAY": 1, "TEXTURE2D_SHADOW": 1, "SAMPLER": 1, "SAMPLER_CMP": 1}.get(m.group(1), 2)
+                "TEXTURE2D_ARRAY": 1, "TEXTURE2D_SHADOW": 1, "SAMPLER": 1, "SAMPLER_CMP": 1,
+                **dict.fromkeys(_PRECISION_FORMS, 1)}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3
             need += m.group(1).startswith("SAMPLE_TEXTURE2D_ARRAY")  # the layer index

@@ -34,11 +34,13 @@ from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
 from ...gpu.programs import set_uniform_array
 from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates, generate, port, texture_arrays
+from . import vendored_library
 from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
+from .include_separators import forward_slashed_includes
 from .properties import TextureValue
-from .source_text import (CGINC, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
+from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
                           top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
@@ -196,6 +198,28 @@ def _fxc_spelled(text: str, included: str, srp: bool) -> str:
     return cg_types.fxc_conversions(text, symbols, srp)
 
 
+def _vendored_copies(program: str, folder: Path) -> dict:
+    """{path: text} for each project's copy of a file of Unity's ShaderLibrary the program reaches
+    (vendored_library): an include of pbrlab's stand-in for it, which glslang, resolving the
+    program's includes itself, reads in the copy's place (the port reads the stand-in through
+    resolve_included)."""
+    out, seen, pending = {}, set(), [(program, folder)]
+    stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
+    while pending:
+        text, where = pending.pop()
+        for m in INCLUDE.finditer(blank_comments(text)):
+            path = resolve_included(m.group(1), where, copies=False)
+            if path is None or path in seen or any(path.resolve().is_relative_to(r) for r in stand_ins):
+                continue
+            seen.add(path)
+            stand_in = vendored_library.stand_in_for(path, PACKAGE_STAND_INS)
+            if stand_in is not None:
+                out[path] = f'#include "{vendored_library.package_path(stand_in, PACKAGE_STAND_INS)}"\n'
+            else:
+                pending.append((read_source(path), path.parent))
+    return out
+
+
 def hlsl_includes(shader) -> dict:
     """{path: text} that the HLSL path compiles in place of files the program includes: the
     written globals' copies (``rewritten_includes``, written_globals.py) and every included file
@@ -203,6 +227,7 @@ def hlsl_includes(shader) -> dict:
     spelled out, as the program's are (``_fxc_spelled``: Core RP's ``LinearEyeDepth(tex2Dproj(t,
     p), _ZBufferParams)`` passes a float4 to a float, which FXC truncates and glslang refuses)."""
     out = dict(getattr(shader, "rewritten_includes", {}) or {})
+    out.update(_vendored_copies(shader.program, shader.path.parent))
     included = included_text(shader.program, shader.path.parent)
     stand_ins = (CGINC.resolve(), PACKAGE_STAND_INS.resolve())
     for path in included_files(shader.program, shader.path.parent):
@@ -210,8 +235,9 @@ def hlsl_includes(shader) -> dict:
             continue
         text = out.get(path) or shaders.strip_bom(read_source(path))
         # (in the spellings glslang takes, as the program's: cg_spellings)
-        spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(text), included), included,
-                               getattr(shader, "srp", False))
+        # (its include names as Unity reads them: include_separators)
+        spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(forward_slashed_includes(text)), included),
+                               included, getattr(shader, "srp", False))
         if spelled != text:
             out[path] = spelled
     return out

@@ -1,5 +1,5 @@
 """The shader's text as the Unity front end reads it, before any model: the bottom of the
-pipeline (the package's docstring), importing no other Unity module.
+pipeline (the package's docstring), importing no other Unity module (but vendored_library, a leaf).
 
 Comments blanked with offsets and line numbers kept (``blank_comments``, ``line_of``), braces
 matched (``matching_brace``), the text at brace depth 0 (``top_level``), an identifier
@@ -21,6 +21,7 @@ from pathlib import Path
 
 from ...foundation import safe_paths
 from ...foundation.errors import PbrlabError
+from . import vendored_library  # (a leaf: it imports no Unity module)
 
 # pbrlab's stand-ins for Unity's include files (UnityCG.cginc, Lighting.cginc, ...).
 CGINC = Path(__file__).parent / "cginc"
@@ -151,10 +152,14 @@ class UnityIncludeRefusal(UnityShaderError):
     no SubShader or Fallback can help, so it is raised as it stands."""
 
 
-def resolve_included(name: str, folder: Path):
+def resolve_included(name: str, folder: Path, copies: bool = True):
     """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
     folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``) and, for a
-    package path (``Packages/...``), for Unity's packages' files; else None."""
+    package path (``Packages/...``), for Unity's packages' files; else None. A name that starts
+    with ``/`` is read from the including file's folder, as Unity reads it (include_separators).
+    A project's copy of a file of Unity's render-pipeline ShaderLibrary resolves to pbrlab's
+    stand-in for it (vendored_library), unless ``copies`` is False (the file itself)."""
+    name = name.lstrip("/")
     candidates = [(folder, folder / name)]  # (the user's folder it lies in, or None: pbrlab's own)
     root = project_root(name, folder)
     if root is not None:
@@ -169,6 +174,8 @@ def resolve_included(name: str, folder: Path):
         if candidate.is_file():
             if user_folder is not None:  # read only through links that stay in the folder (safe_paths)
                 safe_paths.inside(user_folder, name, f'#include "{name}" in {folder}', climb=True)
+                if copies:
+                    return vendored_library.stand_in_for(candidate, PACKAGE_STAND_INS) or candidate
             return candidate
     return None
 
@@ -291,7 +298,8 @@ def check_refusals(program: str, path: Path, first_line: int, folder: Path, seen
         if text is None:
             continue
         line = first_line - 1 + line_of(program, m.start())
-        message = stand_in_refusal(text) if target.parent.resolve() == CGINC.resolve() else None
+        ours = target.parent.resolve() == CGINC.resolve() or target.resolve().is_relative_to(PACKAGE_STAND_INS.resolve())
+        message = stand_in_refusal(text) if ours else None
         if message:
             raise UnityIncludeRefusal(f'{path}:{line}: #include "{m.group(1)}": {message}')
         try:

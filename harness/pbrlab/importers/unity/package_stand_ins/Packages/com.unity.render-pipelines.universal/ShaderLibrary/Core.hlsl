@@ -126,6 +126,8 @@
 #undef SAMPLE_DEPTH_TEXTURE_LOD
 #define SAMPLE_DEPTH_TEXTURE(t, s, uv) t.Sample(s, uv).r
 #define SAMPLE_DEPTH_TEXTURE_LOD(t, s, uv, lod) t.SampleLevel(s, uv, lod).r
+// the platform's header: the declarations' precision forms (TEXTURE2D_FLOAT, ...)
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/API/GLCore.hlsl"
 #endif
 
 // HLSL intrinsics GLSL lacks, for the GLSL port (HLSL has them built in): rcp(x) = 1 / x;
