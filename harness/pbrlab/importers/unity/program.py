@@ -38,8 +38,8 @@ from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
 from .properties import TextureValue
-from .source_text import (CGINC, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
-                          top_level)
+from .source_text import (CGINC, INCLUDE_WITH_PRAGMAS, PACKAGE_STAND_INS, blank_comments, included_files, included_text,
+                          read_source, resolve_included, top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
@@ -212,7 +212,8 @@ def hlsl_includes(shader) -> dict:
         # (in the spellings glslang takes, as the program's: cg_spellings)
         spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(text), included), included,
                                getattr(shader, "srp", False))
-        if spelled != text:
+        # (read_source spelled an #include_with_pragmas as #include; glslang reads the file raw)
+        if spelled != text or INCLUDE_WITH_PRAGMAS.encode() in Path(path).read_bytes():
             out[path] = spelled
     return out
 
