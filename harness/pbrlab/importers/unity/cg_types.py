@@ -1804,7 +1804,9 @@ class _Parser:
         for params, body in self.sym.macros.get(name, ()):
             if len(params) != len(args):
                 return self.macro_types[key]
-            sub = _Parser(body, self.sym.copy(), declarations_only=True)
+            # (the symbols shared: a body holds no ``#``, so no #define of it adds any, and an
+            # expression read for its type declares nothing)
+            sub = _Parser(body, self.sym, declarations_only=True)
             sub.own_defines, sub.define_types, sub.macro_types = self.own_defines, self.define_types, self.macro_types
             sub.scopes = [dict(scope) for scope in self.scopes] + [{p: a.t for p, a in zip(params, args)}]
             try:
