@@ -55,12 +55,15 @@ def test_a_function_like_macro_has_its_bodys_type(tmp_path, language, monkeypatc
 
 def test_macro_definitions_that_disagree_leave_the_use_untyped():
     """One definition under #if, another under #else with another type: the pass cannot tell
-    which the preprocessor keeps, so the use stays untyped (no conversion spelled); control: one
+    which the preprocessor keeps, so the use stays untyped (no conversion spelled), as a body
+    continued on the next line (its first line read alone is no body); control: one
     definition is typed (the float splatted to the vec3 it initialises)."""
     one = "#define F(a) 1.0\nvoid f() { float3 x = F(0); }\n"
     both = "#if A\n#define F(a) 1.0\n#else\n#define F(a) float3(a, a, a)\n#endif\nvoid f() { float3 x = F(0); }\n"
     assert "float3 x = float3(F(0));" in cg_types.convert(one)
     assert "float3 x = F(0);" in cg_types.convert(both)
+    continued = "#define F(a) (a) \\\n  * 2\nvoid f() { float3 x = F(0); }\n"  # its first line no whole body
+    assert "float3 x = F(0);" in cg_types.convert(continued)
 
 
 # a non-symmetric matrix: a row read as a column, or an element's indices swapped, shows

@@ -500,7 +500,7 @@ class _Parser:
             if params == args and m.group(1) != m.group(3):
                 symbols.aliases.setdefault(m.group(1), m.group(3))
         for m in _FUNCTION_DEFINE.finditer(text):
-            if not m.group(3).endswith(";"):
+            if not m.group(3).endswith((";", "\\")):  # statements, or continued on the next line
                 params = tuple(w.strip() for w in m.group(2).split(",") if w.strip())
                 symbols.macros.setdefault(m.group(1), set()).add((params, m.group(3)))
         self.edits = Edits()
