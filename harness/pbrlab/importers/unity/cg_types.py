@@ -301,6 +301,10 @@ _ALIAS_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+(\w+)[ \t]*$",
 # FXC's conversions of the value, a scalar's swizzle or splat, are then spelled as for a call)
 _FORWARDING_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\(([\w \t,]*)\)[ \t]+([A-Za-z_]\w*)[ \t]*\(([\w \t,]*)\)"
                                 r"[ \t]*(?://[^\n]*)?$", re.M)
+# A function-like #define of one expression on its line (``#define SHADOW_ATTENUATION(a) 1.0``):
+# a use has the body's type with the arguments' types for its parameters (_Parser.macro_value)
+_FUNCTION_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\(([\w \t,]*)\)[ \t]+([^\s\\#][^\n#]*?)[ \t]*(?://[^\n]*)?$",
+                              re.M)
 _NUMBER_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+\(?[ \t]*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFhHuU]?)"
                             r"[ \t]*\)?[ \t]*(?://[^\n]*)?$", re.M)
 
@@ -314,11 +318,15 @@ class Symbols:
     # structs whose members depend on the preprocessor (an #if among them, or a macro member):
     # their zero is the function pbr_unity_zero_<name>() the port defines (_Parser.struct)
     conditional: set = field(default_factory=set)
+    # function-like #defines of one expression: name -> {(parameters, body)}, every definition
+    # seen (one under #if, another under #else: typed only where all agree)
+    macros: dict = field(default_factory=dict)
 
     def copy(self):
         return Symbols({k: dict(v) for k, v in self.structs.items()},
                        {k: list(v) for k, v in self.functions.items()},
-                       dict(self.globals), dict(self.aliases), set(self.conditional))
+                       dict(self.globals), dict(self.aliases), set(self.conditional),
+                       {k: set(v) for k, v in self.macros.items()})
 
 
 LIBRARY_FILES = (  # what the harness's GLSL path includes before a port (generate.py)
@@ -491,6 +499,10 @@ class _Parser:
             params, args = ([w.strip() for w in g.split(",")] for g in (m.group(2), m.group(4)))
             if params == args and m.group(1) != m.group(3):
                 symbols.aliases.setdefault(m.group(1), m.group(3))
+        for m in _FUNCTION_DEFINE.finditer(text):
+            if not m.group(3).endswith((";", "\\")):  # statements, or continued on the next line
+                params = tuple(w.strip() for w in m.group(2).split(",") if w.strip())
+                symbols.macros.setdefault(m.group(1), set()).add((params, m.group(3)))
         self.edits = Edits()
         self.scopes = []
         self.ret = None
@@ -503,6 +515,7 @@ class _Parser:
         self.own_defines = {m.group(1): m.group(2) for m in _EXPRESSION_DEFINE.finditer(text)
                             if not m.group(2).endswith((";", "\\"))}
         self.define_types = {}
+        self.macro_types = {}  # (macro, its arguments' types) -> (type, postfix) (macro_value)
 
     # token helpers
     def peek(self, k=0):
@@ -1763,7 +1776,7 @@ class _Parser:
             return E(*span, Type("float"), True)
         sigs = self.sym.functions.get(fname) or self.sym.functions.get(self.resolve_alias(fname))
         if not sigs:
-            return E(*span, None, True)
+            return E(*span, *self.macro_value(fname, args))
         sig = self.overload(sigs, args)
         if sig is None:
             rets = {s.ret for s in sigs}
@@ -1775,6 +1788,38 @@ class _Parser:
                     self.fxc_argument(a, p.type)
                 self.coerce(a, p.type)
         return E(*span, sig.ret if sig.ret != VOID else VOID, True)
+
+    def macro_value(self, name: str, args: list) -> tuple:
+        """(type, postfix) of a use of a function-like macro of one expression (``float3 shadow
+        = SHADOW_ATTENUATION(i);`` with shader_variables.glsl's ``#define SHADOW_ATTENUATION(a)
+        1.0``: float, which FXC splats to the float3 it initialises): its body read with each
+        parameter of its argument's type and the locals in scope (the text the preprocessor puts
+        there); (None, True) where the name is no such macro, its definitions disagree, or a
+        body is no expression the pass reads."""
+        key = (name, tuple(a.t for a in args))
+        if key in self.macro_types:
+            return self.macro_types[key]
+        self.macro_types[key] = (None, True)  # a macro naming itself reads as unknown
+        found, postfix = set(), True
+        for params, body in self.sym.macros.get(name, ()):
+            if len(params) != len(args):
+                return self.macro_types[key]
+            # (the symbols shared: a body holds no ``#``, so no #define of it adds any, and an
+            # expression read for its type declares nothing)
+            sub = _Parser(body, self.sym, declarations_only=True)
+            sub.own_defines, sub.define_types, sub.macro_types = self.own_defines, self.define_types, self.macro_types
+            sub.scopes = [dict(scope) for scope in self.scopes] + [{p: a.t for p, a in zip(params, args)}]
+            try:
+                value = sub.expression()
+            except CgSyntaxError:
+                return self.macro_types[key]
+            if sub.peek().kind != "eof" or value.t is None or not value.t.numeric:
+                return self.macro_types[key]
+            found.add(value.t)
+            postfix = postfix and value.postfix
+        if len(found) == 1:
+            self.macro_types[key] = (found.pop(), postfix)
+        return self.macro_types[key]
 
     def fxc_argument(self, a: E, param: Type):
         """A vector argument longer than the parameter it meets (``UnpackUV(v.texcoord1)``, a

@@ -379,6 +379,25 @@ def _drop_member_interpolation(text: str) -> str:
     return "".join(out) + text[pos:]
 
 
+# HLSL's matrix element (``M._m12``, zero-based row and column; ``M._23``, one-based) in a
+# #define's body (its continued lines too), after a name, ``)`` or ``]``: the type pass reads
+# code, not a macro's text, so it is spelled here as GLSL's ``M[column][row]`` (the port's
+# matrices are GLSL's, columns first: _Parser.matrix_elements spells code's the same).
+# Several in a row were a constructor of single ones before (cg_spellings._matrix_swizzles).
+_DEFINE_LINES = re.compile(r"^[ \t]*#[ \t]*define\b(?:[^\n]*\\\n)*[^\n]*", re.M)
+_DEFINE_MATRIX_ELEMENT = re.compile(r"(?<=[\w)\]])([ \t]*\.[ \t]*)_(m?)([0-4])([0-4])\b")
+
+
+def _matrix_elements_in_defines(text: str) -> str:
+    def element(m):
+        first = 0 if m.group(2) else 1
+        row, column = int(m.group(3)) - first, int(m.group(4)) - first
+        if not (0 <= row < 4 and 0 <= column < 4):
+            return m.group(0)  # not an element's name: left for the compiler to name
+        return f"[{column}][{row}]"
+    return _DEFINE_LINES.sub(lambda d: _DEFINE_MATRIX_ELEMENT.sub(element, d.group(0)), text)
+
+
 def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
     """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
     declarations of the files it includes are known to the type pass too, as are
@@ -386,7 +405,8 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     Pipeline's program, whose texture API macros are spelled in Cg first."""
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
         text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
-        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(cg_spellings.respelled(text)))))
+        text = _matrix_elements_in_defines(cg_spellings.respelled(text))
+        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text))))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations
     if folder is not None:

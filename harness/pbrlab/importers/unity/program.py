@@ -40,8 +40,8 @@ from . import unprovided
 from .empty_arguments import empty_arguments_spelled
 from .include_separators import forward_slashed_includes
 from .properties import TextureValue
-from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_files, included_text, read_source, resolve_included,
-                          top_level)
+from .source_text import (CGINC, INCLUDE, INCLUDE_WITH_PRAGMAS, PACKAGE_STAND_INS, blank_comments, included_files,
+                          included_text, read_source, resolve_included, top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
 # The include name under which the GLSL path's generated text pulls in the in-memory port
@@ -238,7 +238,8 @@ def hlsl_includes(shader) -> dict:
         # (its include names as Unity reads them: include_separators)
         spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(forward_slashed_includes(text)), included),
                                included, getattr(shader, "srp", False))
-        if spelled != text:
+        # (read_source spelled an #include_with_pragmas as #include; glslang reads the file raw)
+        if spelled != text or INCLUDE_WITH_PRAGMAS.encode() in Path(path).read_bytes():
             out[path] = spelled
     return out
 

@@ -258,7 +258,21 @@ def read_source(path: Path) -> str:
         # there put the rest of its line into the code. Read as "?" (a byte only a comment
         # holds: FXC refuses it in code as it refuses "?" there), one character still.
         text = data.decode("latin-1").replace("\x85", "?")
-    return text.removeprefix("\ufeff").replace("\r\n", "\n")
+    return plain_includes(text.removeprefix("\ufeff").replace("\r\n", "\n"))
+
+
+# Unity 2022's ``#include_with_pragmas "file"``: an #include whose file's #pragma lines count as
+# the pass's (Unity's manual, "Declaring and using shader keywords": include_with_pragmas); the
+# compilers know only #include. Every file read is spelled so, blanks keeping its columns
+# (a ``#pragma`` of the file is read where the pass's are, or is the compiler's to ignore).
+_INCLUDE_WITH_PRAGMAS = re.compile(r"^([ \t]*#[ \t]*)include_with_pragmas\b", re.M)
+INCLUDE_WITH_PRAGMAS = "include_with_pragmas"
+
+
+def plain_includes(text: str) -> str:
+    """``text`` with each ``#include_with_pragmas`` line an ``#include`` line (offsets kept)."""
+    pad = " " * (len(INCLUDE_WITH_PRAGMAS) - len("include"))
+    return _INCLUDE_WITH_PRAGMAS.sub(lambda m: m.group(1) + "include" + pad, text)
 
 
 def _read_include(path: Path):
