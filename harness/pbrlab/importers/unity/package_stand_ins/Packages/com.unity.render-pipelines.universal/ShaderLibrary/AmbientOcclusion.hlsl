@@ -1,21 +1,11 @@
-// pbrlab stand-in for URP's ShaderLibrary/AmbientOcclusion.hlsl: no screen-space ambient
-// occlusion here (both factors 1), written for pbrlab from Unity's documentation of the names
-// (URP's own file is under the Unity Companion License).
+// pbrlab stand-in for URP's ShaderLibrary/AmbientOcclusion.hlsl: the AmbientOcclusionFactor,
+// CreateAmbientOcclusionFactor, GetScreenSpaceAmbientOcclusion and SampleAmbientOcclusion (no SSAO
+// here: URP 14's values with _SCREEN_SPACE_OCCLUSION off), which pbrlab's stand-in Lighting.hlsl
+// defines beside the InputData they take (written for pbrlab from the names and behaviour of URP
+// 14; Unity's own file is under the Unity Companion License and is not copied).
 #ifndef PBRLAB_URP_AMBIENT_OCCLUSION_HLSL
 #define PBRLAB_URP_AMBIENT_OCCLUSION_HLSL
 
-struct AmbientOcclusionFactor {
-    float indirectAmbientOcclusion;
-    float directAmbientOcclusion;
-};
-
-float SampleAmbientOcclusion(float2 normalizedScreenSpaceUV) { return 1.0; }
-
-AmbientOcclusionFactor GetScreenSpaceAmbientOcclusion(float2 normalizedScreenSpaceUV) {
-    AmbientOcclusionFactor aoFactor;
-    aoFactor.indirectAmbientOcclusion = 1.0;
-    aoFactor.directAmbientOcclusion = 1.0;
-    return aoFactor;
-}
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
 
 #endif

@@ -450,6 +450,55 @@ float3 VertexLighting(float3 positionWS, float3 normalWS) {
 void MixRealtimeAndBakedGI(inout Light light, float3 normalWS, inout float3 bakedGI) {}
 void MixRealtimeAndBakedGI(inout Light light, float3 normalWS, inout float3 bakedGI, float4 shadowMask) {}
 
+// AmbientOcclusion.hlsl's names (URP 14's Lighting.hlsl brings that file): the factor a pixel's
+// lights and baked light are darkened by. Screen-space ambient occlusion is off here (no
+// _SCREEN_SPACE_OCCLUSION keyword, no SSAO texture), so URP 14's screen-space factor is 1 for
+// both the direct and the indirect light, and CreateAmbientOcclusionFactor's indirect factor is
+// min(1, the material's occlusion).
+struct AmbientOcclusionFactor {
+    float indirectAmbientOcclusion;   // multiplies the baked (ambient) light
+    float directAmbientOcclusion;     // multiplies the realtime lights (with SSAO on only)
+};
+
+// The SSAO texture's value at a screen position: no SSAO pass here, so unoccluded (1).
+float SampleAmbientOcclusion(float2 normalizedScreenSpaceUV) { return 1.0; }
+
+// SSAO's factors at a screen position; without _SCREEN_SPACE_OCCLUSION both are 1 in URP 14.
+AmbientOcclusionFactor GetScreenSpaceAmbientOcclusion(float2 normalizedScreenSpaceUV) {
+    AmbientOcclusionFactor aoFactor;
+    aoFactor.indirectAmbientOcclusion = 1.0;
+    aoFactor.directAmbientOcclusion = 1.0;
+    return aoFactor;
+}
+
+// The screen-space factors with the material's occlusion folded into the indirect one (the
+// smaller of the two wins, as in URP 14).
+AmbientOcclusionFactor CreateAmbientOcclusionFactor(float2 normalizedScreenSpaceUV, float occlusion) {
+    AmbientOcclusionFactor aoFactor = GetScreenSpaceAmbientOcclusion(normalizedScreenSpaceUV);
+    aoFactor.indirectAmbientOcclusion = min(aoFactor.indirectAmbientOcclusion, occlusion);
+    return aoFactor;
+}
+
+AmbientOcclusionFactor CreateAmbientOcclusionFactor(InputData inputData, SurfaceData surfaceData) {
+    return CreateAmbientOcclusionFactor(inputData.normalizedScreenSpaceUV, surfaceData.occlusion);
+}
+
+// URP 14's RealtimeLights.hlsl overloads that take the factor: the light as without it (the
+// direct factor darkens a light only with SSAO on).
+Light GetMainLight(InputData inputData, float4 shadowMask, AmbientOcclusionFactor aoFactor) {
+    return GetMainLight(inputData.shadowCoord, inputData.positionWS, shadowMask);
+}
+Light GetAdditionalLight(uint i, InputData inputData, float4 shadowMask, AmbientOcclusionFactor aoFactor) {
+    return GetAdditionalLight(i, inputData.positionWS, shadowMask);
+}
+
+// URP 14's GlobalIllumination.hlsl overload: the baked light darkened by the indirect factor
+// (then mixed with the realtime main light, which needs lightmaps: nothing more here).
+void MixRealtimeAndBakedGI(inout Light light, float3 normalWS, inout float3 bakedGI, AmbientOcclusionFactor aoFactor) {
+    bakedGI *= aoFactor.indirectAmbientOcclusion;
+    MixRealtimeAndBakedGI(light, normalWS, bakedGI);
+}
+
 // Blinn-Phong's highlight: colour * specular * NdotH^smoothness (smoothness here the exponent).
 float3 LightingSpecular(float3 lightColor, float3 lightDir, float3 normal, float3 viewDir, float4 specular, float smoothness) {
     float3 halfVec = SafeNormalize(lightDir + viewDir);
