@@ -58,6 +58,13 @@ from pathlib import Path
 # --- types -------------------------------------------------------------------------------
 
 
+def written_parameter(text: str, start: int, name_end: int, end: int) -> str:
+    """A parameter as written, through its array lengths (``float4 tangentToWorld[3]``): the
+    port's shorter overload for a default argument declares it again (end: after the lengths;
+    name_end: after its name)."""
+    return text[start:end]
+
+
 @dataclass(frozen=True)
 class Type:
     """base: float, int, uint, bool (numeric), a struct name, a sampler name or void; dim:
@@ -439,15 +446,20 @@ RENAME_PREFIX = "pbr_unity_"
 # Names glslang's HLSL front end reserves (C++ words) that an HLSL program of Unity's may use as
 # its own: ``float char = ...`` compiles in Unity (a shader of the hidden URP sample draws so)
 # and glslang answers "'char' : Reserved word"; renamed pbr_unity_<name> in the HLSL as
-# written (fxc_conversions), as the GLSL port renames GLSL's reserved words.
-GLSLANG_HLSL_RESERVED = frozenset({"char"})
+# written (fxc_conversions), as the GLSL port renames GLSL's reserved words. And ``main``: the
+# HLSL as written has pbrlab's entry point of that name (generate.py), and glslang takes a
+# program's ``float4 main(float2)`` for it ("No function definition (body) found: main(vf2;").
+GLSLANG_HLSL_RESERVED = frozenset({"char", "main"})
 
 
 def is_reserved(name: str) -> bool:
     """Whether GLSL refuses ``name`` as a program's own: a reserved word above, or a name with
     the gl_ prefix or a double underscore (GLSL 3.30 section 3.7, "Identifiers"; HLSL takes
-    both, ``float4 gl_Position : SV_POSITION;``)."""
-    return name in RESERVED or name.startswith("gl_") or "__" in name
+    both, ``float4 gl_Position : SV_POSITION;``), or ``main``: GLSL's entry point, which must
+    return void and take nothing (GLSL 3.30 section 6.1), and the port's own stage entry; HLSL
+    names its entry points by the pragmas, so ``float4 main(float2 fragCoord)`` is a function
+    like any other there (a ShaderToy port's, yunyufeiwei's fog.shader)."""
+    return name in RESERVED or name == "main" or name.startswith("gl_") or "__" in name
 
 
 @dataclass
@@ -910,8 +922,9 @@ class _Parser:
                 name_tok = self.name()
                 pn = name_tok.text
                 pt = self.array_suffix(pt)
+                written_param = written_parameter(self.text, first, name_tok.e, self.toks[self.i - 1].e)
                 self.semantic()
-                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", self.text[first:name_tok.e]), pn))
+                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", written_param), pn))
                 default = None
                 if self.at("="):
                     eq = self.next()
