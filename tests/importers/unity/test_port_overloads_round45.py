@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.unity import cg_types, written_globals
+from pbrlab.importers.unity import cg_types, generate_pass, written_globals
 from test_port_round43 import LANGUAGES, _assert_colour, _shader
 from test_unity_names_round5 import _render  # pytest puts this folder on sys.path
 
@@ -121,3 +121,36 @@ def test_a_function_named_main_writing_a_global_of_a_defined_type(tmp_path, lang
     monkeypatch.setattr(cg_types, *patched_reserved)
     with pytest.raises(PbrlabError, match="main"):
         _render(tmp_path, _shadertoy(tmp_path, "shadertoy_main_old"), language)
+
+
+MAIN_ENTRY = """
+Shader "t/{name}" {{
+    SubShader {{ Pass {{
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment main
+        #include "UnityCG.cginc"
+        #define PROGRAM_OF_{name}
+        struct v2f {{ float4 pos : SV_POSITION; }};
+        v2f vert(float4 vertex : POSITION) {{ v2f o; o.pos = UnityObjectToClipPos(vertex); return o; }}
+        float4 main(v2f i) : SV_Target {{ return float4(0.5, 0.25, 0.125, 1); }}
+        ENDCG
+    }} }}
+}}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_fragment_entry_named_main(tmp_path, language, monkeypatch):
+    """``#pragma fragment main``: the entry's call uses the name the port gives the program's
+    ``main`` (cg_types.ported_function_name), so its constant (0.5, 0.25, 0.125) is drawn.
+    Control: the call by the name as written finds no such function in either language."""
+    def shader(name):
+        path = tmp_path / f"{name}.shader"
+        path.write_text(MAIN_ENTRY.format(name=name))
+        return path
+
+    _assert_colour(tmp_path, shader("main_entry"), language, [0.5, 0.25, 0.125])
+    monkeypatch.setattr(generate_pass, "ported_function_name", lambda name, language: name)
+    with pytest.raises(PbrlabError, match="main"):
+        _render(tmp_path, shader("main_entry_old"), language)

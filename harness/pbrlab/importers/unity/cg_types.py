@@ -462,6 +462,14 @@ def is_reserved(name: str) -> bool:
     return name in RESERVED or name == "main" or name.startswith("gl_") or "__" in name
 
 
+def ported_function_name(name: str, language: str) -> str:
+    """A program's function as the type pass renames it in ``language`` (rename_reserved_name):
+    the name an entry point's call uses (``#pragma fragment main``)."""
+    if (language == "glsl" and is_reserved(name)) or (language == "hlsl" and name in GLSLANG_HLSL_RESERVED):
+        return RENAME_PREFIX + name
+    return name
+
+
 @dataclass
 class E:
     """A typed expression: its text span, type (None: unknown), whether a swizzle can be
