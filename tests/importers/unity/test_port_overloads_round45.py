@@ -117,7 +117,7 @@ def test_a_function_named_main_writing_a_global_of_a_defined_type(tmp_path, lang
             _render(tmp_path, _shadertoy(tmp_path, "shadertoy_alias_old"), language)
     old_reserved = cg_types.is_reserved
     patched_reserved = {"glsl": ("is_reserved", lambda name: name != "main" and old_reserved(name)),
-                        "hlsl": ("GLSLANG_HLSL_RESERVED", frozenset({"char"}))}[language]
+                        "hlsl": ("GLSLANG_HLSL_FUNCTION_NAMES", frozenset())}[language]
     monkeypatch.setattr(cg_types, *patched_reserved)
     with pytest.raises(PbrlabError, match="main"):
         _render(tmp_path, _shadertoy(tmp_path, "shadertoy_main_old"), language)
@@ -154,3 +154,40 @@ def test_a_fragment_entry_named_main(tmp_path, language, monkeypatch):
     monkeypatch.setattr(generate_pass, "ported_function_name", lambda name, language: name)
     with pytest.raises(PbrlabError, match="main"):
         _render(tmp_path, shader("main_entry_old"), language)
+
+
+MAIN_MEMBER = """
+Shader "t/{name}" {{
+    SubShader {{ Pass {{
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        #define PROGRAM_OF_{name}
+        struct v2f {{ float4 pos : SV_POSITION; float2 main : TEXCOORD0; }};
+        v2f vert(float4 vertex : POSITION) {{
+            v2f o; o.pos = UnityObjectToClipPos(vertex); o.main = float2(0.5, 0.25); return o; }}
+        float4 frag(v2f i) : SV_Target {{ float main = 0.125; return float4(i.main, main, 1); }}
+        ENDCG
+    }} }}
+}}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_member_and_a_local_named_main(tmp_path, language, monkeypatch):
+    """A varying and a local named ``main`` are names like any other in HLSL: (0.5, 0.25, 0.125)
+    in both languages (the GLSL port renames them with every GLSL-reserved name; the HLSL as
+    written renames ``main`` only as a function's name). Control: ``main`` renamed as every
+    name in the HLSL as written, and glslang finds no field ``main`` in the pass's struct (the
+    entry point reads it by its name)."""
+    def shader(name):
+        path = tmp_path / f"{name}.shader"
+        path.write_text(MAIN_MEMBER.format(name=name))
+        return path
+
+    _assert_colour(tmp_path, shader("main_member"), language, [0.5, 0.25, 0.125])
+    if language == "hlsl":
+        monkeypatch.setattr(cg_types, "GLSLANG_HLSL_RESERVED", frozenset({"char", "main"}))
+        with pytest.raises(PbrlabError, match="main"):
+            _render(tmp_path, shader("main_member_old"), language)

@@ -446,10 +446,13 @@ RENAME_PREFIX = "pbr_unity_"
 # Names glslang's HLSL front end reserves (C++ words) that an HLSL program of Unity's may use as
 # its own: ``float char = ...`` compiles in Unity (a shader of the hidden URP sample draws so)
 # and glslang answers "'char' : Reserved word"; renamed pbr_unity_<name> in the HLSL as
-# written (fxc_conversions), as the GLSL port renames GLSL's reserved words. And ``main``: the
-# HLSL as written has pbrlab's entry point of that name (generate.py), and glslang takes a
-# program's ``float4 main(float2)`` for it ("No function definition (body) found: main(vf2;").
-GLSLANG_HLSL_RESERVED = frozenset({"char", "main"})
+# written (fxc_conversions), as the GLSL port renames GLSL's reserved words.
+GLSLANG_HLSL_RESERVED = frozenset({"char"})
+# A program's function names renamed so in the HLSL as written (only as functions: a member or
+# variable ``main`` is left alone): ``main``, the name of pbrlab's HLSL entry point
+# (generate.py), for which glslang takes a program's ``float4 main(float2)`` ("No function
+# definition (body) found: main(vf2;").
+GLSLANG_HLSL_FUNCTION_NAMES = frozenset({"main"})
 
 
 def is_reserved(name: str) -> bool:
@@ -465,7 +468,8 @@ def is_reserved(name: str) -> bool:
 def ported_function_name(name: str, language: str) -> str:
     """A program's function as the type pass renames it in ``language`` (rename_reserved_name):
     the name an entry point's call uses (``#pragma fragment main``)."""
-    if (language == "glsl" and is_reserved(name)) or (language == "hlsl" and name in GLSLANG_HLSL_RESERVED):
+    if (language == "glsl" and is_reserved(name)) or \
+            (language == "hlsl" and (name in GLSLANG_HLSL_RESERVED or name in GLSLANG_HLSL_FUNCTION_NAMES)):
         return RENAME_PREFIX + name
     return name
 
@@ -568,6 +572,12 @@ class _Parser:
         if is_reserved(t.text):
             self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
         if t.text in GLSLANG_HLSL_RESERVED:
+            self.fxc_edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
+
+    def rename_function_name(self, t: Tok):
+        """A function's name where it is declared or called: renamed in the HLSL as written when
+        glslang takes it for pbrlab's entry point (GLSLANG_HLSL_FUNCTION_NAMES)."""
+        if not self.decl_only and t.text in GLSLANG_HLSL_FUNCTION_NAMES:
             self.fxc_edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
 
     # symbols
@@ -901,6 +911,7 @@ class _Parser:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
         name_tok = self.name()
+        self.rename_function_name(name_tok)
         name = written = name_tok.text
         if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
             if not self.decl_only:
@@ -1746,6 +1757,7 @@ class _Parser:
                 self.edits.close(close.e, ")")
             return E(name.s, close.e, ctor if ctor.numeric else None, True)
         self.rename_reserved_name(name)
+        self.rename_function_name(name)
         args, close = self.arguments()
         span = (name.s, close.e)
         fname = name.text
