@@ -58,6 +58,13 @@ from pathlib import Path
 # --- types -------------------------------------------------------------------------------
 
 
+def written_parameter(text: str, start: int, name_end: int, end: int) -> str:
+    """A parameter as written, through its array lengths (``float4 tangentToWorld[3]``): the
+    port's shorter overload for a default argument declares it again (end: after the lengths;
+    name_end: after its name)."""
+    return text[start:end]
+
+
 @dataclass(frozen=True)
 class Type:
     """base: float, int, uint, bool (numeric), a struct name, a sampler name or void; dim:
@@ -449,13 +456,30 @@ RENAME_PREFIX = "pbr_unity_"
 # and glslang answers "'char' : Reserved word"; renamed pbr_unity_<name> in the HLSL as
 # written (fxc_conversions), as the GLSL port renames GLSL's reserved words.
 GLSLANG_HLSL_RESERVED = frozenset({"char"})
+# A program's function names renamed so in the HLSL as written (only as functions: a member or
+# variable ``main`` is left alone): ``main``, the name of pbrlab's HLSL entry point
+# (generate.py), for which glslang takes a program's ``float4 main(float2)`` ("No function
+# definition (body) found: main(vf2;").
+GLSLANG_HLSL_FUNCTION_NAMES = frozenset({"main"})
 
 
 def is_reserved(name: str) -> bool:
     """Whether GLSL refuses ``name`` as a program's own: a reserved word above, or a name with
     the gl_ prefix or a double underscore (GLSL 3.30 section 3.7, "Identifiers"; HLSL takes
-    both, ``float4 gl_Position : SV_POSITION;``)."""
-    return name in RESERVED or name.startswith("gl_") or "__" in name
+    both, ``float4 gl_Position : SV_POSITION;``), or ``main``: GLSL's entry point, which must
+    return void and take nothing (GLSL 3.30 section 6.1), and the port's own stage entry; HLSL
+    names its entry points by the pragmas, so ``float4 main(float2 fragCoord)`` is a function
+    like any other there (a ShaderToy port's, yunyufeiwei's fog.shader)."""
+    return name in RESERVED or name == "main" or name.startswith("gl_") or "__" in name
+
+
+def ported_function_name(name: str, language: str) -> str:
+    """A program's function as the type pass renames it in ``language`` (rename_reserved_name):
+    the name an entry point's call uses (``#pragma fragment main``)."""
+    if (language == "glsl" and is_reserved(name)) or \
+            (language == "hlsl" and (name in GLSLANG_HLSL_RESERVED or name in GLSLANG_HLSL_FUNCTION_NAMES)):
+        return RENAME_PREFIX + name
+    return name
 
 
 @dataclass
@@ -561,6 +585,12 @@ class _Parser:
         if is_reserved(t.text):
             self.edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
         if t.text in GLSLANG_HLSL_RESERVED:
+            self.fxc_edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
+
+    def rename_function_name(self, t: Tok):
+        """A function's name where it is declared or called: renamed in the HLSL as written when
+        glslang takes it for pbrlab's entry point (GLSLANG_HLSL_FUNCTION_NAMES)."""
+        if not self.decl_only and t.text in GLSLANG_HLSL_FUNCTION_NAMES:
             self.fxc_edits.replace(t.s, t.e, RENAME_PREFIX + t.text)
 
     # symbols
@@ -894,6 +924,7 @@ class _Parser:
                 if q.text in ("static", "inline"):
                     self.delete_word(q)
         name_tok = self.name()
+        self.rename_function_name(name_tok)
         name = written = name_tok.text
         if name in _GLSL_BUILT_IN_INTRINSICS:  # the program's own overload of a built-in's name
             if not self.decl_only:
@@ -923,8 +954,9 @@ class _Parser:
                 name_tok = self.name()
                 pn = name_tok.text
                 pt = self.array_suffix(pt)
+                written_param = written_parameter(self.text, first, name_tok.e, self.toks[self.i - 1].e)
                 self.semantic()
-                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", self.text[first:name_tok.e]), pn))
+                spelled.append((re.sub(r"\b(in|out|inout)(\s+)const\b", r"const\2\1", written_param), pn))
                 default = None
                 if self.at("="):
                     eq = self.next()
@@ -1738,6 +1770,7 @@ class _Parser:
                 self.edits.close(close.e, ")")
             return E(name.s, close.e, ctor if ctor.numeric else None, True)
         self.rename_reserved_name(name)
+        self.rename_function_name(name)
         args, close = self.arguments()
         span = (name.s, close.e)
         fname = name.text

@@ -22,7 +22,7 @@ import re
 
 from . import deferred
 from . import model as M
-from .cg_types import RENAME_PREFIX, is_reserved
+from .cg_types import RENAME_PREFIX, is_reserved, ported_function_name
 from .engine_inputs import fill_statements
 from .written_globals import copy_statements
 from .port import port_code_types
@@ -383,7 +383,7 @@ def vertex_entry(vf: M.VertexFragmentPass, language: str, where: str) -> str:
             body.append(f"    {_type(kind, language)} {local} = "
                         f"{(_attribute(canonical(semantic), n, language, kind, True) if qual != 'out' else None) or _zero(kind, language)};")
         args.append(local)
-    call = f"{vf.vertex}({', '.join(args)})"
+    call = f"{ported_function_name(vf.vertex, language)}({', '.join(args)})"
     if vf.vertex_return != "void":
         body.append(f"    {_type(vf.vertex_return, language)} pbrlab_out = {call};")
     else:
@@ -488,7 +488,7 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
                                        "a struct the program defines nor a scalar, vector or matrix")
             body.append(f"    {_type(kind, language)} {local} = {filled};")
         args.append(local)
-    call = f"{vf.fragment}({', '.join(args)})"
+    call = f"{ported_function_name(vf.fragment, language)}({', '.join(args)})"
     colour = None
     if vf.fragment_return != "void":
         if _struct(vf, vf.fragment_return) is not None:

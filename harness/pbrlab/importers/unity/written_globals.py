@@ -39,8 +39,18 @@ def copy_name(name: str) -> str:
     return PREFIX + ("" if name.startswith("_") else "_") + name
 _TYPE = r"(?:float|half|fixed|int|uint|bool|min16float)(?:[1-4](?:x[1-4])?)?"
 # a global's declaration at brace depth 0: qualifier (1), type (2), names (3); not static, const
-_DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(" + _TYPE + r")[ \t]+(\w+(?:[ \t]*,[ \t]*\w+)*|\w+[ \t]*=[^;{}]*)[ \t]*;",
-                       re.M)
+_DECLARATION = r"^[ \t]*(uniform[ \t]+)?({type})[ \t]+(\w+(?:[ \t]*,[ \t]*\w+)*|\w+[ \t]*=[^;{{}}]*)[ \t]*;"
+_DECLARED = re.compile(_DECLARATION.format(type=_TYPE), re.M)
+# a program's own name for a type (``#define vec2 float2``: a ShaderToy port's, yunyufeiwei's fog.shader)
+_TYPE_ALIAS = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)[ \t]+" + _TYPE + r"[ \t]*$", re.M)
+
+
+def _declarations(active_program: str) -> re.Pattern:
+    """_DECLARED, with the type names ``active_program`` #defines to a numeric type besides."""
+    aliases = sorted(set(_TYPE_ALIAS.findall(active_program)))
+    if not aliases:
+        return _DECLARED
+    return re.compile(_DECLARATION.format(type="|".join([_TYPE, *map(re.escape, aliases)])), re.M)
 # a function body: the brace after a parameter list (and an optional ": SEMANTIC")
 _BODY_OPEN = re.compile(r"\)\s*(?::\s*\w+\s*)?\{")
 
@@ -108,7 +118,7 @@ def copied_written_globals(program: str, active_program: str) -> tuple[str, tupl
     top = _outside_braces(active_program)
     bodies = _function_bodies(active_program)
     found = []
-    for m in _DECLARED.finditer(top):
+    for m in _declarations(active_program).finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
         for name in _declared_names(m.group(3)):
@@ -169,7 +179,7 @@ def copied_across_includes(program: str, folder: Path, defines, rewritten: dict,
     active_program = active_text(blank_comments(program), defines)
     top = _outside_braces(active_program)
     declared = []
-    for m in _DECLARED.finditer(top):
+    for m in _declarations(active_program).finditer(top):
         if re.match(r"\s*(?:static|const)\b", m.group(0)):
             continue
         declared += [(m, name, m.group(2)) for name in _declared_names(m.group(3))
