@@ -54,3 +54,49 @@ def test_urp10_additional_light_shadow_is_unshadowed(tmp_path, language):
     assert (pixels[:, :2] == np.array([0.75, 0.5])).all(), pixels[0, :2]
     shadowed = 0.5 * 0.0 + 0.25
     assert shadowed != 0.75
+
+
+# --- URP 10's PostProcessing/Common.hlsl layout ----------------------------------------------------
+_URP10_POST = """
+Shader "t/urp10 post" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex %(vertex)s
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/PostProcessing/Common.hlsl"
+            struct OwnVaryings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; };
+            OwnVaryings OwnVert(Attributes input) {
+                OwnVaryings output;
+                output.positionCS = TransformObjectToHClip(input.positionOS.xyz);
+                output.uv = input.uv;
+                return output;
+            }
+            float4 frag(%(varyings)s input) : SV_Target { return float4(input.uv * 0.5 + 0.25, 0.5, 1.0); }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_urp10_post_processing_layout_is_the_mesh_with_its_uv(tmp_path, language):
+    """A shader written for URP 10's PostProcessing/Common.hlsl, which declared a mesh's Attributes
+    { positionOS: POSITION, uv: TEXCOORD0 }, Varyings { positionCS, uv } and Vert (the object
+    position through TransformObjectToHClip, uv passed on), told by its reading
+    Attributes.positionOS: Vert draws the object's mesh with its uv, the pixels of the same
+    computation spelled in the shader's own function (identical float32 operations: bound 0).
+    Control: URP 13's Blit.hlsl layout would draw the full-screen triangle, covering all 48 x 48
+    pixels, where the sphere covers about 64 %."""
+    library, _ = render_constant(tmp_path, _URP10_POST % {"vertex": "Vert", "varyings": "Varyings"}, language,
+                                 environment=False)
+    own, _ = render_constant(tmp_path, _URP10_POST % {"vertex": "OwnVert", "varyings": "OwnVaryings"}, language,
+                             environment=False)
+    assert library.shape == own.shape
+    assert (library == own).all()
+    assert len(library) < 0.9 * SIZE * SIZE
+    assert np.ptp(library[:, 0]) > 0.1  # the uv varies over the mesh
