@@ -26,6 +26,10 @@ Two cases in real shaders:
   FullscreenVert``: URP 12's PostProcessing/Common.hlsl's, from Utils/Fullscreen.hlsl, where URP 13
   on has Blit.hlsl's Vert). That is the layout the shader was written for: a
   ``PBRLAB_USER_READS_<name>`` define, which the stand-in tests to give that version's.
+- the mesh-drawn layout of URP 10's PostProcessing/Common.hlsl (Attributes { positionOS: POSITION,
+  uv: TEXCOORD0 }, Varyings { positionCS, uv }, Vert), told by the shader reading
+  ``<param>.positionOS`` of an ``Attributes`` parameter while declaring no ``struct Attributes``
+  of its own (Blit.hlsl's, URP 13 on, has only a vertex id): ``PBRLAB_USER_READS_Attributes_positionOS``.
 
 Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading underscores dropped) of the program; the stand-ins test it
 (``#ifndef PBRLAB_USER_DEFINES_PI``).
@@ -50,6 +54,9 @@ PREFIX = "PBRLAB_USER_DEFINES_"
 # Functions of an earlier URP that tell the layout a shader was written for.
 EARLIER_FUNCTIONS = ("FullscreenVert",)
 READS_PREFIX = "PBRLAB_USER_READS_"
+# URP 10's PostProcessing/Common.hlsl layout (module docstring): a parameter of type Attributes.
+EARLIER_ATTRIBUTES = "Attributes_positionOS"
+_ATTRIBUTES_PARAMETER = re.compile(r"\bAttributes\s+(\w+)\s*[,)]")
 # Globals Unity 6's Core RP declares that earlier shaders declare themselves.
 GLOBALS = ("_BlitTexture_TexelSize",)
 
@@ -88,5 +95,8 @@ def text_defines(program: str, folder) -> dict:
              | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
     reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
              and not re.search(rf"\b\w+\s+{n}\s*\([^()]*\)\s*\{{", text)}
+    if not re.search(r"\bstruct\s+Attributes\b", text) and any(
+            re.search(rf"\b{p}\s*\.\s*positionOS\b", text) for p in _ATTRIBUTES_PARAMETER.findall(text)):
+        reads.add(EARLIER_ATTRIBUTES)
     # (a name's leading underscores dropped: GLSL reserves the macro names with two in a row)
     return {**{PREFIX + n.lstrip("_"): 1 for n in sorted(names)}, **{READS_PREFIX + n: 1 for n in sorted(reads)}}

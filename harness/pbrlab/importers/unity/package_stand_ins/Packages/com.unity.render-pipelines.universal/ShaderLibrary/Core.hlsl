@@ -247,6 +247,9 @@ float3 GetCameraRelativePositionWS(float3 positionWS) { return positionWS; }
 #define _TimeParameters float4(_Time.y, sin(_Time.y), cos(_Time.y), 0.0)
 // The screen's size at URP's render scale, which is 1 here: _ScreenParams.
 #define _ScaledScreenParams _ScreenParams
+// URP's _ScreenSize (UnityInput.hlsl: width, height, 1 / width, 1 / height of the camera's target),
+// the same screen: the size from _ScreenParams.xy and its reciprocal.
+#define _ScreenSize float4(_ScreenParams.xy, 1.0 / _ScreenParams.xy)
 // URP's main light globals (Input.hlsl): the direction towards the scene's first directional
 // light (w 0) and its radiance; with none, URP's defaults: (0, 0, 1, 0) and black.
 #if defined(PBRLAB_DIRECTIONAL_COUNT) && PBRLAB_DIRECTIONAL_COUNT > 0

@@ -149,6 +149,10 @@ float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS) { return 
 float AdditionalLightRealtimeShadow(int lightIndex, float3 positionWS, float3 lightDirection) { return 1.0; }
 float AdditionalLightShadow(int lightIndex, float3 positionWS, float3 lightDirection, float4 shadowMask,
                             float4 occlusionProbeChannels) { return 1.0; }
+// URP 10's form, before the light's direction was a parameter.
+float AdditionalLightShadow(int lightIndex, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) {
+    return 1.0;
+}
 float4 GetShadowCoord(VertexPositionInputs vertexInput) { return float4(0.0, 0.0, 0.0, 0.0); }
 float3 ApplyShadowBias(float3 positionWS, float3 normalWS, float3 lightDirection) { return positionWS; }
 

@@ -22,8 +22,9 @@
 
 // Not in a program written for URP 12's post-processing layout, whose Common.hlsl brings
 // Utils/Fullscreen.hlsl's Attributes and Varyings instead (and whose Unity has the two never
-// together: each defines Attributes and Varyings).
-#ifndef PBRLAB_USER_READS_FullscreenVert
+// together: each defines Attributes and Varyings), nor in one written for URP 10's, whose
+// Common.hlsl declared a mesh's (importers/unity/user_definitions.py).
+#if !defined(PBRLAB_USER_READS_FullscreenVert) && !defined(PBRLAB_USER_READS_Attributes_positionOS)
 
 TEXTURE2D_X(_BlitTexture);
 TEXTURECUBE(_BlitCubeTexture);
@@ -140,6 +141,6 @@ float4 FragOctahedralProjectLuminance(Varyings input) : SV_Target {
 float4 FragOctahedralProjectRedToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).rrrr; }
 float4 FragOctahedralProjectAlphaToRGBA(Varyings input) : SV_Target { return PbrlabBlitCube(saturate(input.texcoord)).aaaa; }
 
-#endif  // PBRLAB_USER_READS_FullscreenVert
+#endif  // PBRLAB_USER_READS_FullscreenVert, PBRLAB_USER_READS_Attributes_positionOS
 
 #endif

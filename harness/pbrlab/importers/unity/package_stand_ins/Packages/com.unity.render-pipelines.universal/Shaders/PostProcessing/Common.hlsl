@@ -4,7 +4,9 @@
 // License and is not copied). As URP's, it includes Core RP's Color.hlsl and Blit.hlsl (URP 13
 // on: Vert, Varyings.texcoord); a shader written for URP 12, whose Common.hlsl included
 // Utils/Fullscreen.hlsl (FullscreenVert, Varyings.uv) instead, is told by its use of
-// FullscreenVert (importers/unity/user_definitions.py) and gets URP 12's.
+// FullscreenVert (importers/unity/user_definitions.py) and gets URP 12's; one written for URP 10,
+// whose Common.hlsl declared a mesh's Attributes { positionOS, uv } and Vert, by its reading
+// Attributes.positionOS, and gets URP 10's.
 // Provided: GetLuminance, GetSRGBToLinear / GetLinearToSRGB, ApplyVignette, ApplyTonemap
 // without a tonemapping keyword. Not provided: the colour-grading LUT, grain, dithering and
 // FXAA functions, and ApplyTonemap's ACES and Neutral branches (refused with #error).
@@ -15,8 +17,32 @@
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/GlobalSamplers.hlsl"
 #ifdef PBRLAB_USER_READS_FullscreenVert
 #include "Packages/com.unity.render-pipelines.universal/Shaders/Utils/Fullscreen.hlsl"
-#else
+#elif !defined(PBRLAB_USER_READS_Attributes_positionOS)
 #include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"
+#endif
+
+// URP 10's layout, which a shader reading Attributes.positionOS (importers/unity/
+// user_definitions.py) was written for: a mesh (URP 10 drew its post-processing over a
+// full-screen mesh; pbrlab draws the object's), the vertex's object position through the
+// object's transform and its first uv set passed on as Varyings.uv.
+#if defined(PBRLAB_USER_READS_Attributes_positionOS) && !defined(PBRLAB_USER_READS_FullscreenVert)
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+struct Attributes {
+    float4 positionOS : POSITION;
+    float2 uv : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+};
+struct Varyings {
+    float4 positionCS : SV_POSITION;
+    float2 uv : TEXCOORD0;
+    UNITY_VERTEX_OUTPUT_STEREO
+};
+Varyings Vert(Attributes input) {
+    Varyings output;
+    output.positionCS = TransformObjectToHClip(input.positionOS.xyz);
+    output.uv = input.uv;
+    return output;
+}
 #endif
 
 // Rec. 709 luminance of a linear colour (Core RP Color.hlsl's Luminance weights, BT.709 / sRGB primaries)
