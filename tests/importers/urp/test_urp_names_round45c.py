@@ -46,3 +46,25 @@ def test_mipmap_streaming_debug_vars_keep_the_material_constants(tmp_path, langu
     bound = 2 * EPS
     assert (np.abs(pixels[:, :3] - expected) <= bound).all(), (pixels[0, :3], expected)
     assert (np.abs(tint - expected) > 100 * bound).all()
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_output_sh4_is_the_ambient_probe_at_the_normal(tmp_path, language):
+    """URP's five-argument OUTPUT_SH4 (Unity 6.1: position, normal, view direction, the SH
+    output, the probe occlusion output) with no probe volumes writes the ambient probe's SH at the
+    normal (URP's SampleProbeSHVertex without APV) and leaves the occlusion argument unread: here a
+    member no struct has, as the terrain shaders pass o.probeOcclusion without declaring it.
+    Normal +y: the float64 SH9 irradiance along +y over pi (unity_AmbientSky's value, the same
+    lookup), within AMBIENT_BOUND. Control: the SH along -y (unity_AmbientGround), which differs by
+    far more than the bound."""
+    from test_urp_library_round2 import AMBIENT_BOUND, AMBIENT_INCLUDE, _expected_ambient
+    text = NAMES44_SHADER % {
+        "properties": "", "includes": AMBIENT_INCLUDE, "globals": "struct ShOut { float3 sh; };",
+        "body": "ShOut o; o.sh = float3(0, 0, 0); float3 p = float3(0.3, 0.2, 0.1);"
+                " OUTPUT_SH4(p, float3(0, 1, 0), GetWorldSpaceNormalizeViewDir(p), o.sh, o.probeOcclusion);"
+                " return float4(o.sh, 1.0);"}
+    pixels, scene = render_constant(tmp_path, text, language)
+    expected = _expected_ambient(scene, "unity_AmbientSky")
+    err = np.abs(pixels[:, :3] - expected).max(axis=1)
+    assert (err > AMBIENT_BOUND).mean() == 0.0, (err.max(), pixels[0], expected)
+    assert np.abs(_expected_ambient(scene, "unity_AmbientGround") - expected).max() > 100 * AMBIENT_BOUND
