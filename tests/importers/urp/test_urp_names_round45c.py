@@ -68,3 +68,33 @@ def test_output_sh4_is_the_ambient_probe_at_the_normal(tmp_path, language):
     err = np.abs(pixels[:, :3] - expected).max(axis=1)
     assert (err > AMBIENT_BOUND).mean() == 0.0, (err.max(), pixels[0], expected)
     assert np.abs(_expected_ambient(scene, "unity_AmbientGround") - expected).max() > 100 * AMBIENT_BOUND
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_linear_eye_depth_of_a_vector_reads_its_first_component(tmp_path, language):
+    """Core's LinearEyeDepth(depth, _ZBufferParams) and Linear01Depth given a depth texture's whole
+    sample (a float4, or a float2): FXC truncates the vector to its first component (warning X3206)
+    to match the (float, float4) form. With GL's _ZBufferParams (x = 1 - far/near, y = far/near,
+    z = x / far, w = y / far): 1 / (z d + w) and 1 / (x d + y) of d = 0.5. Bound: the parameters are
+    float32 (two roundings each), the product, sum and divide round once each, and the sum cancels
+    at most a factor 3 at d = 0.5 (|z d| + |w| < 3 |z d + w|): 3 * 8 * 2^-24 relative. Control:
+    the sample's second component (0.9) read instead."""
+    body = ("return float4(LinearEyeDepth(float4(0.5, 0.9, 0.1, 0.3), _ZBufferParams) * 0.1,"
+            " Linear01Depth(float2(0.5, 0.9), _ZBufferParams), LinearEyeDepth(float2(0.5, 0.9), _ZBufferParams) * 0.1, 1.0);")
+    text = NAMES44_SHADER % {"properties": "", "includes": "", "globals": "", "body": body}
+    pixels, scene = render_constant(tmp_path, text, language, environment=False)
+    from pbrlab.render.renderer import scene_frame
+    frame = scene_frame(scene)
+    near, far = float(frame.near), float(frame.far)
+    x, y = 1.0 - far / near, far / near
+
+    def eye(d):
+        return 1.0 / (x / far * d + y / far)
+
+    def linear01(d):
+        return 1.0 / (x * d + y)
+
+    expected = np.array([eye(0.5) * 0.1, linear01(0.5), eye(0.5) * 0.1])
+    bound = 3 * 8 * EPS * expected
+    assert (np.abs(pixels[:, :3] - expected) <= bound).all(), (pixels[0, :3], expected)
+    assert (np.abs(np.array([eye(0.9) * 0.1, linear01(0.9)]) - expected[:2]) > 100 * bound[:2]).all()
