@@ -98,3 +98,22 @@ def test_linear_eye_depth_of_a_vector_reads_its_first_component(tmp_path, langua
     bound = 3 * 8 * EPS * expected
     assert (np.abs(pixels[:, :3] - expected) <= bound).all(), (pixels[0, :3], expected)
     assert (np.abs(np.array([eye(0.9) * 0.1, linear01(0.9)]) - expected[:2]) > 100 * bound[:2]).all()
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_main_light_with_a_scalar_shadow_mask(tmp_path, language):
+    """GetMainLight(shadowCoord, positionWS, 1): the int literal for URP's half4 shadowMask, which
+    FXC splats (scalar-to-vector promotion). The light is the scene's first directional light:
+    colour its radiance (0.25, 0.5, 1), direction towards it (0, 0, 1) (the light travels along
+    -z), exact in float32 (0.5 d + 0.5 rounds nothing). Control: the light with no light in the
+    scene, black."""
+    from test_urp_library_round2 import AMBIENT_INCLUDE
+    sun = {"type": "directional", "direction": [0.0, 0.0, -1.0], "color": [0.25, 0.5, 1.0], "intensity": 1.0}
+    text = NAMES44_SHADER % {
+        "properties": "", "includes": AMBIENT_INCLUDE, "globals": "",
+        "body": "Light l = GetMainLight(float4(0, 0, 0, 1), float3(0.1, 0.2, 0.3), 1);"
+                " return float4(l.color * (l.direction.z * 0.5 + 0.5), 1.0);"}
+    pixels, _ = render_constant(tmp_path, text, language, environment=False, lights=[sun])
+    assert (pixels[:, :3] == np.array([0.25, 0.5, 1.0])).all(), pixels[0]
+    dark, _ = render_constant(tmp_path, text, language, environment=False)
+    assert np.abs(dark[:, :3]).max() == 0.0

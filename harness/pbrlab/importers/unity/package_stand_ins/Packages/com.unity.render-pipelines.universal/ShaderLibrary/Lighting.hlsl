@@ -64,6 +64,10 @@ Light GetMainLight() {
 }
 Light GetMainLight(float4 shadowCoord) { return GetMainLight(); }
 Light GetMainLight(float4 shadowCoord, float3 positionWS, float4 shadowMask) { return GetMainLight(); }
+// A scalar shadow mask (GetMainLight(coord, positionWS, 1)): FXC splats a scalar to the half4
+// parameter (HLSL's scalar-to-vector promotion); GLSL converts no scalar to a vector, so this
+// overload takes it (the mask is unread here, as above).
+Light GetMainLight(float4 shadowCoord, float3 positionWS, float shadowMask) { return GetMainLight(); }
 
 int GetAdditionalLightsCount() {
     int count = PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT;
