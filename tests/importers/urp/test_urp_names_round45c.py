@@ -117,3 +117,19 @@ def test_main_light_with_a_scalar_shadow_mask(tmp_path, language):
     assert (pixels[:, :3] == np.array([0.25, 0.5, 1.0])).all(), pixels[0]
     dark, _ = render_constant(tmp_path, text, language, environment=False)
     assert np.abs(dark[:, :3]).max() == 0.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_normal_reconstruction_raw_depth_is_ray_sphere_depth(tmp_path, language):
+    """URP's NormalReconstruction.hlsl GetRawDepth(uv): the camera depth texture's raw depth at
+    the screen position, so LinearEyeDepth / Linear01Depth of it are the float64 ray-sphere hit's
+    eye depth and eye depth / far (test_urp_scene_textures' check and bound, the same texture and
+    float32 chain). Control (in the check): the neighbouring pixel's depth fails it."""
+    from test_urp_scene_textures import _URP_PASS, _scene, check_sphere_depths
+    text = _URP_PASS % {
+        "name": "urp normal reconstruction depth",
+        "include": '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/NormalReconstruction.hlsl"',
+        "body": """float raw = GetRawDepth(GetNormalizedScreenSpaceUV(IN.positionCS));
+                return float4(Linear01Depth(raw, _ZBufferParams), LinearEyeDepth(raw, _ZBufferParams),
+                              LinearEyeDepth(raw, _ZBufferParams), 1.0);"""}
+    check_sphere_depths(_scene(text, tmp_path), language)
