@@ -133,3 +133,37 @@ def test_normal_reconstruction_raw_depth_is_ray_sphere_depth(tmp_path, language)
                 return float4(Linear01Depth(raw, _ZBufferParams), LinearEyeDepth(raw, _ZBufferParams),
                               LinearEyeDepth(raw, _ZBufferParams), 1.0);"""}
     check_sphere_depths(_scene(text, tmp_path), language)
+
+
+DECAL_SHADER = """
+Shader "t/decal" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" }
+        Pass {
+            Name "DBufferProjector"
+            Tags { "LightMode" = "%(mode)s" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            struct Attributes { float4 positionOS : POSITION; };
+            float4 vert(Attributes IN) : SV_POSITION { return TransformObjectToHClip(IN.positionOS.xyz); }
+            float4 frag() : SV_Target { return float4(0.25, 0.5, 0.75, 1.0); }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_urp_decal_pass_is_refused_naming_the_decal_feature(tmp_path, language):
+    """A shader whose passes are URP decal passes (LightMode DBufferProjector, drawn only by URP's
+    Decal renderer feature) is refused naming that, not read as a custom Render Objects pass.
+    Control: the same pass tagged UniversalForward draws its colour (0.25, 0.5, 0.75), exact."""
+    from pbrlab.foundation.errors import PbrlabError
+    with pytest.raises(PbrlabError, match=r"t\.shader:\d+: nothing here draws .*LightMode DBufferProjector.*"
+                                          r"URP decal pass, drawn only by URP's Decal renderer feature"):
+        render_constant(tmp_path, DECAL_SHADER % {"mode": "DBufferProjector"}, language, environment=False)
+    pixels, _ = render_constant(tmp_path, DECAL_SHADER % {"mode": "UniversalForward"}, language, environment=False)
+    assert (pixels[:, :3] == np.array([0.25, 0.5, 0.75])).all()
