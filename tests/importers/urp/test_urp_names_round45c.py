@@ -167,3 +167,19 @@ def test_a_urp_decal_pass_is_refused_naming_the_decal_feature(tmp_path, language
         render_constant(tmp_path, DECAL_SHADER % {"mode": "DBufferProjector"}, language, environment=False)
     pixels, _ = render_constant(tmp_path, DECAL_SHADER % {"mode": "UniversalForward"}, language, environment=False)
     assert (pixels[:, :3] == np.array([0.25, 0.5, 0.75])).all()
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("default, value", [("white", 1.0), ("black", 0.0)])
+def test_texture_object_declared_in_an_included_file_is_sampled(tmp_path, language, default, value):
+    """A Texture2D and SamplerState declared in the project's own include file and sampled by the
+    program with the object's method (_MainTex.Sample(sampler_MainTex, uv)): the GLSL port spells
+    the lookup as it does the file's own. The texture's default, 'white' (1, 1, 1) or 'black' (0, 0,
+    0), times 0.5: 0.5 or 0, exact in float32. Control: the two defaults give different pixels (a
+    lookup that read no texture would give one value)."""
+    (tmp_path / "objects.hlsl").write_text("Texture2D _MainTex;\nSamplerState sampler_MainTex;\n")
+    text = NAMES44_SHADER % {
+        "properties": f'_MainTex ("t", 2D) = "{default}" {{}}', "includes": '#include "objects.hlsl"', "globals": "",
+        "body": "half4 c = _MainTex.Sample(sampler_MainTex, IN.uv) * 0.5; return float4(c.rgb, 1.0);"}
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
+    assert (pixels[:, :3] == 0.5 * value).all(), pixels[0]
