@@ -183,3 +183,25 @@ def test_texture_object_declared_in_an_included_file_is_sampled(tmp_path, langua
         "body": "half4 c = _MainTex.Sample(sampler_MainTex, IN.uv) * 0.5; return float4(c.rgb, 1.0);"}
     pixels, _ = render_constant(tmp_path, text, language, environment=False)
     assert (pixels[:, :3] == 0.5 * value).all(), pixels[0]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_core_2d_sprite_inputs_are_an_unflipped_white_sprite(tmp_path, language):
+    """URP's Core2D.hlsl (with SurfaceData2D.hlsl and Debugging2D.hlsl, which the 2D passes include
+    beside it): a mesh drawn as a SpriteRenderer with no flip, white colour and no bones draws
+    its sprite: unity_SpriteColor (1, 1, 1, 1), unity_SpriteProps (flip 1, 1; bone offset -1);
+    UnityFlipSprite(p, flip) scales p.xy by flip. Pixel: (0.25 colour.r, 0.5 flip.x, -0.75 offset)
+    plus the flipped point's x + 0.2 and y - 0.3 (both 0 for flip (-1, 1) of (0.2, 0.3, 0.4)):
+    (0.25, 0.5, 0.75); bound: two float32 roundings, 2 * 2^-24. Control: a flip of (1, 1)
+    leaves x 0.2, which moves red by 0.4."""
+    body = ("float3 f = UnityFlipSprite(float3(0.2, 0.3, 0.4), float2(-1.0, 1.0));"
+            " return float4(0.25 * unity_SpriteColor.r + (f.x + 0.2), unity_SpriteProps.x * 0.5 + (f.y - 0.3),"
+            " -unity_SpriteProps.z * 0.75, unity_SpriteColor.a);")
+    includes = "\n".join(f'#include "Packages/com.unity.render-pipelines.universal/{p}"' for p in (
+        "Shaders/2D/Include/Core2D.hlsl", "Shaders/2D/Include/SurfaceData2D.hlsl", "ShaderLibrary/Debug/Debugging2D.hlsl"))
+    text = NAMES44_SHADER % {"properties": "", "includes": includes, "globals": "", "body": body}
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
+    assert (np.abs(pixels[:, :3] - np.array([0.25, 0.5, 0.75])) <= 2 * EPS).all(), pixels[0]
+    control, _ = render_constant(tmp_path, text.replace("float2(-1.0, 1.0)", "float2(1.0, 1.0)"), language,
+                                 environment=False)
+    assert (np.abs(control[:, 0] - 0.65) <= 2 * EPS).all(), control[0]
