@@ -580,6 +580,14 @@ URP_SKIPPED_LIGHT_MODES = {
     "universal2d": "the 2D renderer is not drawn", "motionvectors": "no motion vectors here",
     "xrmotionvectors": "no motion vectors here", "sceneselectionpass": "an editor pass",
     "scenepickingpass": "an editor pass", "picking": "an editor pass", "selection": "an editor pass",
+    # URP's decal passes (the names of URP's DecalShaderPassNames): drawn only by the Decal
+    # renderer feature, for a Decal Projector's box or a decal mesh, into the DBuffer, the
+    # G-buffer or over the screen; pbrlab runs no decal feature
+    **dict.fromkeys(("dbufferprojector", "decalprojectorforwardemissive", "decalscreenspaceprojector",
+                     "decalgbufferprojector", "dbuffermesh", "decalmeshforwardemissive", "decalscreenspacemesh",
+                     "decalgbuffermesh"),
+                    "a URP decal pass, drawn only by URP's Decal renderer feature (for a Decal Projector or a "
+                    "decal mesh), which pbrlab does not run"),
 }
 # Its RenderPipeline tags: URP sets Shader.globalRenderPipeline to "UniversalPipeline,LightweightPipeline"
 # (UniversalRenderPipeline.cs: "for compatibility reasons" with LWRP's old tag), so a SubShader

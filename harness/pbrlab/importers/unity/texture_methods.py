@@ -115,11 +115,20 @@ def spelled_probe_reads(code: str) -> str:
     return "".join(out) + code[pos:]
 
 
-def spelled_texture_methods(code: str) -> str:
+def declared_texture_objects(code: str) -> dict:
+    """The texture objects ``code`` declares at its top level (``Texture2D _MainTex;``, name ->
+    kind), for a program that includes the file declaring them (spelled_texture_methods' known)."""
+    return {name.strip(): m.group(1) for m in _DECLARATION.finditer(code)
+            for name in m.group(2).split(",") if m.group(1) in _COMBINED}
+
+
+def spelled_texture_methods(code: str, known: dict | None = None) -> str:
     """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg,
-    and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads)."""
+    and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads).
+    ``known``: texture objects the files it includes declare (declared_texture_objects), whose
+    methods it calls too."""
     code = spelled_probe_reads(code)
-    kinds = {}
+    kinds = dict(known or {})
     for m in _DECLARATION.finditer(code):
         for name in m.group(2).split(","):
             kinds[name.strip()] = m.group(1)

@@ -277,6 +277,14 @@ SamplerState sampler_GlossyEnvironmentCubeMap;
 // 1 / (zBufferParam.z z + zBufferParam.w) and 1 / (zBufferParam.x z + zBufferParam.y).
 float LinearEyeDepth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.z * depth + zBufferParam.w); }
 float Linear01Depth(float depth, float4 zBufferParam) { return 1.0 / (zBufferParam.x * depth + zBufferParam.y); }
+// A vector depth (a depth texture's whole sample, SAMPLE_TEXTURE2D(...)): FXC has no exact
+// overload and truncates it to its first component (implicit truncation, warning X3206), the
+// (float, float4) form's, since no vector converts to float4x4; glslang would refuse, so the
+// truncation is spelled out here.
+float LinearEyeDepth(float2 depth, float4 zBufferParam) { return LinearEyeDepth(depth.x, zBufferParam); }
+float LinearEyeDepth(float4 depth, float4 zBufferParam) { return LinearEyeDepth(depth.x, zBufferParam); }
+float Linear01Depth(float2 depth, float4 zBufferParam) { return Linear01Depth(depth.x, zBufferParam); }
+float Linear01Depth(float4 depth, float4 zBufferParam) { return Linear01Depth(depth.x, zBufferParam); }
 // Core RP's other LinearEyeDepth: a world position's distance along the view axis, |view z| of
 // mul(viewMatrix, float4(positionWS, 1)) (a right-handed view looks down -z: the absolute value).
 float LinearEyeDepth(float3 positionWS, float4x4 viewMatrix) { return abs(mul(viewMatrix, float4(positionWS, 1.0)).z); }

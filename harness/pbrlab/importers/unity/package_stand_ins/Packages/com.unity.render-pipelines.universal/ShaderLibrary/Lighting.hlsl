@@ -64,6 +64,10 @@ Light GetMainLight() {
 }
 Light GetMainLight(float4 shadowCoord) { return GetMainLight(); }
 Light GetMainLight(float4 shadowCoord, float3 positionWS, float4 shadowMask) { return GetMainLight(); }
+// A scalar shadow mask (GetMainLight(coord, positionWS, 1)): FXC splats a scalar to the half4
+// parameter (HLSL's scalar-to-vector promotion); GLSL converts no scalar to a vector, so this
+// overload takes it (the mask is unread here, as above).
+Light GetMainLight(float4 shadowCoord, float3 positionWS, float shadowMask) { return GetMainLight(); }
 
 int GetAdditionalLightsCount() {
     int count = PBRLAB_POINT_COUNT + PBRLAB_SPOT_COUNT;
@@ -224,6 +228,7 @@ float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 
 #define DECLARE_LIGHTMAP_OR_SH(lmName, shName, index) float2 lmName : TEXCOORD##index
 #define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT) OUT.xy = lightmapUV.xy * lightmapScaleOffset.xy + lightmapScaleOffset.zw
 #define OUTPUT_SH(normalWS, OUT)
+#define OUTPUT_SH4(absolutePositionWS, normalWS, viewDir, OUT, OUT_OCCLUSION)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleLightmap(lmName, normalWSName)
 #else
 float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
@@ -233,6 +238,12 @@ float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 
 #define DECLARE_LIGHTMAP_OR_SH(lmName, shName, index) float3 shName
 #define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT)
 #define OUTPUT_SH(normalWS, OUT) OUT.xyz = SampleSHVertex(normalWS)
+// Unity 6.1's form, with the position and view direction adaptive probe volumes read and the
+// probe occlusion they write: pbrlab has no probe volumes, so the ambient probe's SH at the
+// normal, as OUTPUT_SH, and the occlusion argument unread (URP writes it only under
+// USE_APV_PROBE_OCCLUSION). Unity 6.0's four-argument form cannot share the name (no variadic
+// macros in glslang's preprocessor).
+#define OUTPUT_SH4(absolutePositionWS, normalWS, viewDir, OUT, OUT_OCCLUSION) OUT.xyz = SampleSHVertex(normalWS)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
 #endif
 
