@@ -54,6 +54,44 @@ Shader "t/declaring macro" {
 """
 
 
+# MasonJohnHawver42's GrassPass.hlsl: a file of the project's, included after URP's
+# SurfaceInput.hlsl, samples _BaseMap (which SurfaceInput declares) through its method, and adds
+# a float4 property to a float3.
+SIBLING_INCLUDE = """
+float4 _Tint;
+half4 frag(Varyings IN) : SV_Target {
+    float4 s = _BaseMap.Sample(sampler_BaseMap, float2(0.5, 0.5));
+    half3 color = _Tint + s.rgb * 0.25;
+    return half4(color, 1);
+}
+"""
+SIBLING_SHADER = """
+Shader "t/sibling texture" {
+    Properties { _BaseMap ("b", 2D) = "white" {} _Tint ("t", Color) = (0.25, 0.5, 0.75, 1) }
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
+        Pass {
+            Tags { "LightMode" = "UniversalForward" }
+            HLSLPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceInput.hlsl"
+            struct Attributes { float4 positionOS : POSITION; };
+            struct Varyings { float4 positionCS : SV_POSITION; };
+            Varyings vert(Attributes IN) {
+                Varyings OUT;
+                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
+                return OUT;
+            }
+            #include "sibling_pass.hlsl"
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
 def _pixels(tmp_path, language, text):
     pixels, _ = render_constant(tmp_path, text, language, environment=False)
     return pixels[:, :3]
@@ -79,3 +117,20 @@ def test_a_macro_whose_texture_is_a_parameter_is_left_alone():
     """A body that names a texture as a parameter (no ``;`` after it) declares no global."""
     text = "#define MY_PARAM(T) sampler2D T, vec4 T##_ST\nvec4 f(MY_PARAM(t)) { return T##_ST; }"
     assert port._uniforms_in_declaring_defines(text) == text
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_texture_another_include_declares_is_sampled_by_its_method(tmp_path, language, monkeypatch):
+    """``_BaseMap.Sample(sampler_BaseMap, uv)`` in a file that does not declare _BaseMap: the
+    object SurfaceInput.hlsl declares (Microsoft's HLSL reference, "Sample (DirectX HLSL Texture
+    Object)"), the white texel 1; ``half3 color = _Tint + s.rgb * 0.25`` truncates the float4
+    (FXC warning X3206, "Implicit conversions"): (0.5, 0.75, 1.0). Control: the includes'
+    textures unknown (the old reading), the GLSL port is refused ("unknown method" / "vector
+    size mismatch")."""
+    (tmp_path / "sibling_pass.hlsl").write_text(SIBLING_INCLUDE)
+    pixels = _pixels(tmp_path, language, SIBLING_SHADER)
+    assert np.abs(pixels - np.array([0.5, 0.75, 1.0])).max() <= EXACT
+    if language == "glsl":
+        monkeypatch.setattr(port, "texture_kinds", lambda text: {})
+        with pytest.raises(PbrlabError, match="unknown method|size mismatch"):
+            _pixels(tmp_path, language, SIBLING_SHADER)

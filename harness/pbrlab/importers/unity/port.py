@@ -42,7 +42,7 @@ from .geometry_syntax import spell_for_glsl
 from .tessellation_syntax import spell_for_glsl as spell_tessellation
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, call_arguments, included_text
-from .texture_methods import spelled_texture_methods
+from .texture_methods import spelled_texture_methods, texture_kinds
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
@@ -433,14 +433,16 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
     Pipeline's program, whose texture API macros are spelled in Cg first."""
-    def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
-        text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
-        text = _matrix_elements_in_defines(cg_spellings.respelled(text))
-        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text))))
-    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
+    textures = texture_kinds(included)  # the includes' (and sibling includes') texture objects
+
+    def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
+        text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
+        text = _matrix_elements_in_defines(cg_spellings.respelled(text))
+        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures))
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
