@@ -433,6 +433,11 @@ _MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
 # UNITY_LIGHT_ATTENUATION(destName, input, worldPos): ``fixed destName = ...``; the port's
 # unity_compat declares it float): the local's type, known to the statements after it.
 _DECLARING_MACROS = {"UNITY_LIGHT_ATTENUATION": "float"}
+# Unity's statement macros of no arguments that declare locals of fixed names (UnityCG.cginc's
+# TANGENT_SPACE_ROTATION: ``float3 binormal = ...; float3x3 rotation = ...``, the port's
+# unity_compat the same): their types, known to the statements after it (``mul(rotation,
+# v.vertex)`` is cut as FXC does, _Parser.mul_vector_truncated).
+_DECLARING_STATEMENTS = {"TANGENT_SPACE_ROTATION": (("binormal", "float3"), ("rotation", "float3x3"))}
 _GEOMETRY_PRIMITIVES = {"point", "line", "triangle", "lineadj", "triangleadj"}
 _GEOMETRY_STREAMS = {"PointStream", "LineStream", "TriangleStream"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
@@ -1264,6 +1269,9 @@ class _Parser:
                 return
             if t.text in _DECLARING_MACROS and self.at("(", 1) and self.peek(2).kind == "id" and self.scopes:
                 self.declare(self.peek(2).text, self.type_named(_DECLARING_MACROS[t.text]))
+            if t.text in _DECLARING_STATEMENTS and self.scopes:
+                for name, type_name in _DECLARING_STATEMENTS[t.text]:
+                    self.declare(name, self.type_named(type_name))
         self.simple_statement()
 
     def local_sampler(self, ty, start) -> bool:

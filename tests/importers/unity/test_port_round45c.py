@@ -1,0 +1,81 @@
+"""Constructs of real built-in-pipeline shaders (issue 34's hidden7 sample, session 45, third
+round: measured, not committed) that FXC accepts and the GLSL port refused, each in a minimal
+shader of ours drawn in both languages; the fragment returns values computed from the construct,
+checked on every covered pixel against float64 (Microsoft's HLSL reference, Unity's UnityCG),
+with a control (the old behaviour restored) that the check rejects. Readback and tolerance as
+test_port_round43.py (EXACT: 2 ulp of 1; every value is a sum of products of dyadic fractions)."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.unity import cg_spellings, cg_types
+from test_port_round43 import LANGUAGES, _assert_colour, _shader
+from test_unity_names_round5 import _render  # pytest puts this folder on sys.path
+
+# prprprprprppr's ParallaxHeight2: ``TANGENT_SPACE_ROTATION; float3 p = mul(rotation, v.vertex);``
+ROTATION_HEAD = """
+        struct my_in { float3 normal; float4 tangent; };
+        float3 my_rotated(my_in v) {
+            TANGENT_SPACE_ROTATION;
+            return mul(rotation, float4(0.25, 0.5, 0.125, 8.0)) + binormal * 0.0;
+        }"""
+ROTATION = """
+            my_in v;
+            v.normal = float3(0, 0, 1);
+            v.tangent = float4(0, 1, 0, 1);
+            return float4(my_rotated(v) + 0.5, 1);"""
+
+
+def _rotation_expected():
+    """UnityCG.cginc's TANGENT_SPACE_ROTATION: binormal = cross(normalize(n), normalize(t.xyz)) *
+    t.w, rotation's rows (t.xyz, binormal, n); mul(float3x3, float4) takes the vector's first three
+    components (FXC warning X3206, "Implicit conversions")."""
+    n, t = np.array([0.0, 0.0, 1.0]), np.array([0.0, 1.0, 0.0, 1.0])
+    binormal = np.cross(n, t[:3]) * t[3]
+    rotation = np.array([t[:3], binormal, n])
+    return rotation @ np.array([0.25, 0.5, 0.125]) + 0.5
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_tangent_space_rotation_declares_its_locals(tmp_path, language, monkeypatch):
+    """The locals TANGENT_SPACE_ROTATION declares (binormal, rotation) are typed for the
+    statements after it, so ``mul(rotation, float4)`` is cut to the float3 as FXC does:
+    (1.0, 0.25, 0.625). Control: the macro's locals unknown (the old reading), the GLSL port is
+    refused ("no matching function for call to `mul(mat3, vec4)'")."""
+    shader = _shader(tmp_path, "rotation", ROTATION, ROTATION_HEAD)
+    _assert_colour(tmp_path, shader, language, _rotation_expected())
+    if language == "glsl":
+        monkeypatch.setattr(cg_types, "_DECLARING_STATEMENTS", {})
+        with pytest.raises(PbrlabError, match="mul"):
+            _render(tmp_path, _shader(tmp_path, "rotation_old", ROTATION, ROTATION_HEAD), language)
+
+
+# prprprprprppr's ParallaxHeightWithSoftShadow: ``void ParallaxFunc(in out float2 uv, float3 view)``
+IN_OUT_HEAD = """
+        void my_step(in out float2 uv, float k) { uv = uv * k + 0.25; }"""
+IN_OUT = """
+            float2 uv = float2(0.5, 0.125);
+            my_step(uv, 0.5);
+            my_step(uv, 0.5);
+            return float4(uv, 0.75, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_in_out_is_inout(tmp_path, language, monkeypatch):
+    """HLSL reads ``in out`` as ``inout`` (Microsoft's HLSL reference, "Function parameters"): the
+    argument is written back, twice: uv = (uv * 0.5 + 0.25) * 0.5 + 0.25. Control: the two words
+    left, the GLSL port is refused ("duplicate in/out/inout qualifier")."""
+    uv = np.array([0.5, 0.125])
+    for _ in range(2):
+        uv = uv * 0.5 + 0.25
+    shader = _shader(tmp_path, "in_out", IN_OUT, IN_OUT_HEAD)
+    _assert_colour(tmp_path, shader, language, [uv[0], uv[1], 0.75])
+    if language == "glsl":
+        monkeypatch.setattr(cg_spellings, "_IN_OUT", re.compile(r"(?!x)x"))
+        with pytest.raises(PbrlabError, match="duplicate in/out/inout"):
+            _render(tmp_path, _shader(tmp_path, "in_out_old", IN_OUT, IN_OUT_HEAD), language)
