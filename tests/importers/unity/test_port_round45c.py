@@ -79,3 +79,42 @@ def test_in_out_is_inout(tmp_path, language, monkeypatch):
         monkeypatch.setattr(cg_spellings, "_IN_OUT", re.compile(r"(?!x)x"))
         with pytest.raises(PbrlabError, match="duplicate in/out/inout"):
             _render(tmp_path, _shader(tmp_path, "in_out_old", IN_OUT, IN_OUT_HEAD), language)
+
+
+# Amplify's Preview_NandNode: ``(!tex2D(_A, uv) && !tex2D(_B, uv)) ? 1.xxxx : 0.xxxx``;
+# abcwangxiaoqi's DepthTroughtWall02: ``if (player < 1.0 & depth < 1.0 & depth > 0 & player > depth)``.
+LOGIC = """
+            float4 a = float4({a});
+            float4 b = float4(0, 0, 1, 1);
+            float p = {p};
+            float d = 0.25;
+            float4 n = (!a && !b) ? 0.75 : 0.25;
+            float4 o = (a || b) ? 0.75 : 0.25;
+            float k = ((p < 1.0 & d < 1.0 & d > 0) | (p > 2.0)) ^ (d > 1.0) ? 1.0 : 0.0;
+            return float4(n.x, n.y, o.y * k, 1);"""
+
+
+def _logic_expected(a, p):
+    """HLSL's && and || of vectors are componentwise (Microsoft's HLSL reference, "Operators":
+    Boolean math operators work per component), ``!v`` is v == 0 per component, and the ternary
+    of a bool vector selects per component; & | ^ of bools are FXC's integer 0/1 operations,
+    the logical and, or, xor."""
+    a, b, d = np.array(a, np.float64), np.array([0.0, 0.0, 1.0, 1.0]), 0.25
+    n = np.where((a == 0) & (b == 0), 0.75, 0.25)
+    o = np.where((a != 0) | (b != 0), 0.75, 0.25)
+    k = 1.0 if ((p < 1.0 and d < 1.0 and d > 0) or p > 2.0) != (d > 1.0) else 0.0
+    return [n[0], n[1], o[1] * k]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_vector_logic_is_componentwise_and_bitwise_bools_are_logical(tmp_path, language):
+    """The pixel follows HLSL's rules for two inputs: (0.75, 0.25, 0.75) and, perturbed (a's x
+    set, p past 1), (0.25, 0.25, 0): the control, which the first expectation rejects. (The GLSL
+    port refused both constructs before: "LHS of `&&' must be scalar boolean", "LHS of `&' must
+    be an integer".)"""
+    cases = (("0, 1, 0, 1", 0.5), ("1, 1, 0, 1", 1.5))
+    wants = [_logic_expected([float(c) for c in a.split(",")], p) for a, p in cases]
+    assert np.abs(np.subtract(wants[0], wants[1])).max() >= 0.5  # the control moves the pixel
+    for i, ((a, p), want) in enumerate(zip(cases, wants)):
+        shader = _shader(tmp_path, f"logic{i}", LOGIC.format(a=a, p=p))
+        _assert_colour(tmp_path, shader, language, want)

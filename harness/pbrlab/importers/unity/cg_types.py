@@ -1466,9 +1466,34 @@ class _Parser:
         if a.t is None or b.t is None:
             return E(*span, None, False)
         if o in ("&&", "||"):
+            n = max(a.t.dim, b.t.dim)
+            if n > 1 and not a.t.cols and not b.t.cols and a.t.numeric and b.t.numeric and not self.decl_only:
+                # HLSL's && and || of vectors are componentwise (Microsoft's HLSL reference,
+                # "Operators": "Boolean math operators ... operate on a per-component basis";
+                # a scalar operand is replicated): GLSL's take scalars only, so each operand's
+                # components as 0 or 1 meet in & or | and the result is compared with 0
+                # (Amplify's Preview_NandNode: ``!tex2D(_A, uv) && !tex2D(_B, uv)``)
+                for x in (a, b):
+                    self.edits.open(x.s, f"uvec{n}(bvec{n}(")
+                    self.edits.close(x.e, "))")
+                self.edits.open(a.s, "notEqual(")
+                self.edits.replace(op.s, op.e, o[0])
+                self.edits.close(b.e, f", uvec{n}(0u))")
+                return E(*span, Type("bool", n), True)
             for x in (a, b):
                 self.condition(x)
             return E(*span, Type("bool"), False)
+        if o in ("|", "^", "&") and a.t.base == b.t.base == "bool" and a.t.dim == b.t.dim == 1 \
+                and not self.decl_only:
+            # HLSL's bitwise operators on bools (abcwangxiaoqi's DepthTroughtWall02: ``if (a < 1.0
+            # & b < 1.0)``): FXC takes a bool as an integer 0 or 1 (Microsoft's HLSL reference,
+            # "Scalar types"), so a & b, a | b and a ^ b are the logical and, or and xor; GLSL
+            # takes integers only, and its &&, || and ^^ are those (both operands evaluated
+            # first: a comparison has no side effects to skip)
+            self.edits.open(a.s, "(")
+            self.edits.replace(op.s, op.e, {"&": "&&", "|": "||", "^": "^^"}[o])
+            self.edits.close(b.e, ")")
+            return E(*span, Type("bool"), True)
         if o in ("|", "^", "&", "<<", ">>"):
             if o in ("|", "^", "&") and {a.t.base, b.t.base} == {"int", "uint"} and a.t.numeric and b.t.numeric:
                 # HLSL converts the int operand to uint; GLSL 330 takes one signedness only
