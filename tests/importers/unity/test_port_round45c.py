@@ -8,14 +8,15 @@ test_port_round43.py (EXACT: 2 ulp of 1; every value is a sum of products of dya
 from __future__ import annotations
 
 import re
+import textwrap
 
 import numpy as np
 import pytest
 
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.unity import cg_spellings, cg_types
-from test_port_round43 import LANGUAGES, _assert_colour, _shader
-from test_unity_names_round5 import _render  # pytest puts this folder on sys.path
+from pbrlab.importers.unity import cg_spellings, cg_types, written_globals
+from test_port_round43 import EXACT, LANGUAGES, _assert_colour, _shader
+from test_unity_names_round5 import _covered, _render  # pytest puts this folder on sys.path
 
 # prprprprprppr's ParallaxHeight2: ``TANGENT_SPACE_ROTATION; float3 p = mul(rotation, v.vertex);``
 ROTATION_HEAD = """
@@ -118,3 +119,59 @@ def test_vector_logic_is_componentwise_and_bitwise_bools_are_logical(tmp_path, l
     for i, ((a, p), want) in enumerate(zip(cases, wants)):
         shader = _shader(tmp_path, f"logic{i}", LOGIC.format(a=a, p=p))
         _assert_colour(tmp_path, shader, language, want)
+
+
+# anohis's Blocking and Ghost: a geometry function writes a global of the material
+# (``_Alpha = _Alpha * (1 - _Step);``). The geometry function emits the triangle only where the
+# value it wrote is the one expected, so the check reads no interpolated value.
+WRITTEN_IN_GEOMETRY = """
+Shader "t/{name}" {{
+    Properties {{ _Amount ("a", Float) = 0.5 }}
+    SubShader {{ Pass {{
+        Cull Off
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma geometry geom
+        #pragma fragment frag
+        #include "UnityCG.cginc"
+        float _Amount;
+        struct v2g {{ float4 pos : SV_POSITION; }};
+        struct g2f {{ float4 pos : SV_POSITION; }};
+        v2g vert(appdata_base v) {{ v2g o; o.pos = UnityObjectToClipPos(v.vertex); return o; }}
+        [maxvertexcount(3)]
+        void geom(triangle v2g IN[3], inout TriangleStream<g2f> stream) {{
+            _Amount = _Amount * 0.5;
+            if (_Amount == 0.25) {{
+                g2f o;
+                for (int k = 0; k < 3; k++) {{
+                    o.pos = IN[k].pos;
+                    stream.Append(o);
+                }}
+            }}
+        }}
+        float4 frag(g2f i) : SV_Target {{ return float4(0.25, _Amount, 0.75, 1); }}
+        ENDCG
+    }} }}
+}}
+"""
+
+
+def _written_in_geometry(tmp_path, language, name):
+    shader = tmp_path / f"{name}.shader"
+    shader.write_text(textwrap.dedent(WRITTEN_IN_GEOMETRY.format(name=name)))
+    return _render(tmp_path, shader, language)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_global_the_geometry_function_writes(tmp_path, language, monkeypatch):
+    """FXC's backwards-compatibility mode lets a program write a global, the value living in that
+    invocation (written_globals.py): the geometry function halves its copy of _Amount (0.5 ->
+    0.25, so it emits the triangles) and the fragment reads the material's 0.5: every covered
+    pixel (0.25, 0.5, 0.75). Control: the geometry entry without the copy's statement (the copy
+    left at 0): nothing is emitted. (Before, the GLSL port was refused: "assignment to read-only
+    variable '_Amount'".)"""
+    image = _written_in_geometry(tmp_path, language, "written")
+    rgb = image[_covered(image), :3].astype(np.float64)
+    assert np.abs(rgb - np.array([0.5 * 0.5, 0.5, 0.75])).max() <= EXACT
+    monkeypatch.setattr(written_globals, "copy_statements", lambda written: "")
+    assert (_written_in_geometry(tmp_path, language, "written_old")[..., 3] > 0).sum() == 0
