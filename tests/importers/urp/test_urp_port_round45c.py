@@ -11,85 +11,44 @@ import pytest
 
 from pbrlab.foundation.errors import PbrlabError
 from pbrlab.importers.unity import port
-from test_urp_library_round2 import render_constant  # pytest puts this folder on sys.path
+from test_urp_library_round2 import render_constant, urp_pass  # pytest puts this folder on sys.path
 
 LANGUAGES = ("glsl", "hlsl")
 # Sums and products of dyadic fractions (a white texel, 1, 0.5, 0.25) are exact in float32; the
 # framebuffer's float32 readback is exact too: 2 ulps of 1 bound it.
 EXACT = 2 * 2.0 ** -24
 
+def _with_properties(properties: str, name: str, body: str, include: str) -> str:
+    """urp_pass's shader with a Properties block (the material's values the checks read)."""
+    return urp_pass(name, body, include).replace("    SubShader {", f"    Properties {{ {properties} }}\n    SubShader {{", 1)
+
+
 # ylvgn's MY_TEXTURE2D: a macro of the shader's own that declares a texture, its tiling and its
 # sampler, used at file scope.
-DECLARING_MACRO = """
-Shader "t/declaring macro" {
-    Properties { _MainTex ("t", 2D) = "white" {} }
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+DECLARING_MACRO = _with_properties('_MainTex ("t", 2D) = "white" {}', "declaring macro", """
+                float4 c = SAMPLE_TEXTURE2D(_MainTex, sampler_MainTex, float2(0.5, 0.5));
+                return float4(c.r * 0.5, _MainTex_ST.x * 0.25, _MainTex_ST.z + 0.5, 1);""", """
             #define MY_TEXTURE(T) \\
                 TEXTURE2D(T); \\
                 float4 T##_ST; \\
                 SAMPLER(sampler##T);
-            MY_TEXTURE(_MainTex);
-            struct Attributes { float4 positionOS : POSITION; };
-            struct Varyings { float4 positionCS : SV_POSITION; };
-            Varyings vert(Attributes IN) {
-                Varyings OUT;
-                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                return OUT;
-            }
-            float4 frag(Varyings IN) : SV_Target {
-                float4 c = SAMPLE_TEXTURE2D(_MainTex, sampler_MainTex, float2(0.5, 0.5));
-                return float4(c.r * 0.5, _MainTex_ST.x * 0.25, _MainTex_ST.z + 0.5, 1);
-            }
-            ENDHLSL
-        }
-    }
-}
-"""
-
+            MY_TEXTURE(_MainTex);""")
 
 # MasonJohnHawver42's GrassPass.hlsl: a file of the project's, included after URP's
 # SurfaceInput.hlsl, samples _BaseMap (which SurfaceInput declares) through its method, and adds
 # a float4 property to a float3.
 SIBLING_INCLUDE = """
 float4 _Tint;
-half4 frag(Varyings IN) : SV_Target {
+half3 sibling_colour() {
     float4 s = _BaseMap.Sample(sampler_BaseMap, float2(0.5, 0.5));
     half3 color = _Tint + s.rgb * 0.25;
-    return half4(color, 1);
+    return color;
 }
 """
-SIBLING_SHADER = """
-Shader "t/sibling texture" {
-    Properties { _BaseMap ("b", 2D) = "white" {} _Tint ("t", Color) = (0.25, 0.5, 0.75, 1) }
-    SubShader {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" }
-        Pass {
-            Tags { "LightMode" = "UniversalForward" }
-            HLSLPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
-            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceInput.hlsl"
-            struct Attributes { float4 positionOS : POSITION; };
-            struct Varyings { float4 positionCS : SV_POSITION; };
-            Varyings vert(Attributes IN) {
-                Varyings OUT;
-                OUT.positionCS = TransformObjectToHClip(IN.positionOS.xyz);
-                return OUT;
-            }
-            #include "sibling_pass.hlsl"
-            ENDHLSL
-        }
-    }
-}
-"""
+SIBLING_SHADER = _with_properties('_BaseMap ("b", 2D) = "white" {} _Tint ("t", Color) = (0.25, 0.5, 0.75, 1)',
+                                  "sibling texture", "return half4(sibling_colour(), 1);",
+                                  '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceInput.hlsl"\n'
+                                  '#include "sibling_pass.hlsl"')
 
 
 def _pixels(tmp_path, language, text):
