@@ -202,6 +202,13 @@ def _blank_flow_hint(m) -> str:
     return m.group(0) if _NAMING_DIRECTIVE.search(line) else " " * len(m.group(0))
 
 
+# A parameter's ``in out`` (prprprprprppr's ParallaxHeightWithSoftShadow: ``void
+# ParallaxFunc(in out float2 uv, ...)``): HLSL takes both words as ``inout`` (Microsoft's HLSL
+# reference, "Function parameters": "inout ... same as in out"); GLSL refuses two ("duplicate
+# in/out/inout qualifier"): one word, blanks keep the columns.
+_IN_OUT = re.compile(r"\bin([ \t]+)out\b")
+
+
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
     a procedural-instancing setup function's body and Unity's flow-control hints blanked,
@@ -210,7 +217,8 @@ def respelled(text: str) -> str:
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
     initialiser list of an array of vectors grouped per element, a for-loop variable used after its
-    loop declared before it (loop_scope)."""
+    loop declared before it (loop_scope), a parameter's ``in out`` as ``inout``."""
+    text = _IN_OUT.sub(lambda m: "inout" + m.group(1), text)
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(_blank_flow_hint, text)
     text = _GL_TESTED.sub(lambda m: re.sub(r"\bGL_(?=\w)", "PBRLAB_UNITY_NO_GL_", m.group(1)), text)

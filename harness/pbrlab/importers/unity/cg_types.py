@@ -433,6 +433,11 @@ _MATRIX_ELEMENTS = re.compile(r"(?:_m[0-3][0-3]){1,4}|(?:_[1-4][1-4]){1,4}")
 # UNITY_LIGHT_ATTENUATION(destName, input, worldPos): ``fixed destName = ...``; the port's
 # unity_compat declares it float): the local's type, known to the statements after it.
 _DECLARING_MACROS = {"UNITY_LIGHT_ATTENUATION": "float"}
+# Unity's statement macros of no arguments that declare locals of fixed names (UnityCG.cginc's
+# TANGENT_SPACE_ROTATION: ``float3 binormal = ...; float3x3 rotation = ...``, the port's
+# unity_compat the same): their types, known to the statements after it (``mul(rotation,
+# v.vertex)`` is cut as FXC does, _Parser.mul_vector_truncated).
+_DECLARING_STATEMENTS = {"TANGENT_SPACE_ROTATION": (("binormal", "float3"), ("rotation", "float3x3"))}
 _GEOMETRY_PRIMITIVES = {"point", "line", "triangle", "lineadj", "triangleadj"}
 _GEOMETRY_STREAMS = {"PointStream", "LineStream", "TriangleStream"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
@@ -1264,6 +1269,9 @@ class _Parser:
                 return
             if t.text in _DECLARING_MACROS and self.at("(", 1) and self.peek(2).kind == "id" and self.scopes:
                 self.declare(self.peek(2).text, self.type_named(_DECLARING_MACROS[t.text]))
+            if t.text in _DECLARING_STATEMENTS and self.scopes:
+                for name, type_name in _DECLARING_STATEMENTS[t.text]:
+                    self.declare(name, self.type_named(type_name))
         self.simple_statement()
 
     def local_sampler(self, ty, start) -> bool:
@@ -1458,9 +1466,34 @@ class _Parser:
         if a.t is None or b.t is None:
             return E(*span, None, False)
         if o in ("&&", "||"):
+            n = max(a.t.dim, b.t.dim)
+            if n > 1 and not a.t.cols and not b.t.cols and a.t.numeric and b.t.numeric and not self.decl_only:
+                # HLSL's && and || of vectors are componentwise (Microsoft's HLSL reference,
+                # "Operators": "Boolean math operators ... operate on a per-component basis";
+                # a scalar operand is replicated): GLSL's take scalars only, so each operand's
+                # components as 0 or 1 meet in & or | and the result is compared with 0
+                # (Amplify's Preview_NandNode: ``!tex2D(_A, uv) && !tex2D(_B, uv)``)
+                for x in (a, b):
+                    self.edits.open(x.s, f"uvec{n}(bvec{n}(")
+                    self.edits.close(x.e, "))")
+                self.edits.open(a.s, "notEqual(")
+                self.edits.replace(op.s, op.e, o[0])
+                self.edits.close(b.e, f", uvec{n}(0u))")
+                return E(*span, Type("bool", n), True)
             for x in (a, b):
                 self.condition(x)
             return E(*span, Type("bool"), False)
+        if o in ("|", "^", "&") and a.t.base == b.t.base == "bool" and a.t.dim == b.t.dim == 1 \
+                and not self.decl_only:
+            # HLSL's bitwise operators on bools (abcwangxiaoqi's DepthTroughtWall02: ``if (a < 1.0
+            # & b < 1.0)``): FXC takes a bool as an integer 0 or 1 (Microsoft's HLSL reference,
+            # "Scalar types"), so a & b, a | b and a ^ b are the logical and, or and xor; GLSL
+            # takes integers only, and its &&, || and ^^ are those (both operands evaluated
+            # first: a comparison has no side effects to skip)
+            self.edits.open(a.s, "(")
+            self.edits.replace(op.s, op.e, {"&": "&&", "|": "||", "^": "^^"}[o])
+            self.edits.close(b.e, ")")
+            return E(*span, Type("bool"), True)
         if o in ("|", "^", "&", "<<", ">>"):
             if o in ("|", "^", "&") and {a.t.base, b.t.base} == {"int", "uint"} and a.t.numeric and b.t.numeric:
                 # HLSL converts the int operand to uint; GLSL 330 takes one signedness only

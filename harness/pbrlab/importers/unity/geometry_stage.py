@@ -244,6 +244,10 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
     from ...gpu import hlsl, shaders
     from . import generate
     from .generate_pass import _main_light, varyings
+    from .written_globals import copy_statements
+    # the copies of the globals the program writes, from their uniforms, as the other stages'
+    # entries set them (written_globals.py: FXC's backwards-compatible writable globals)
+    copies = copy_statements(vf.written_globals)
     head = "\n".join(generate.prelude(language, defines, vertex_stage=True))
     name = f"{vf.path.name} (generated {language} geometry stage)"
     if language == "hlsl":
@@ -251,7 +255,7 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
         # glslang's geometry stage only SV_Position is gl_in[k].gl_Position / gl_Position
         text = (head + "\n#define POSITION SV_Position\n" + hlsl.line_directive(vf.program_line, display) + "\n"
                 + program_text + "\n"
-                + hlsl_entry(vf, _main_light("hlsl"), len(varyings(vf, vf.geometry.where))))
+                + hlsl_entry(vf, _main_light("hlsl") + copies, len(varyings(vf, vf.geometry.where))))
         from .program import hlsl_includes  # (program imports the stages' modules)
         spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main",
                                    replaced=hlsl_includes(vf))  # the shader's own includes as the other stages
@@ -264,7 +268,7 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
     if not re.fullmatch(r"\d+", vf.geometry.max_vertices):
         head = head.replace("#version 330 core", "#version 330 core\n#extension GL_ARB_enhanced_layouts : require", 1)
     text = (head + "\n" + glsl_declarations(vf, outputs) + glsl_stage_macros(vf, True) + "#line 1\n" + program_text + "\n"
-            + glsl_entry(vf, _main_light("glsl"), outputs))
+            + glsl_entry(vf, _main_light("glsl") + copies, outputs))
     source = shaders.expand(text, name, include_dirs=dirs, virtual=virtual or {})
     return source, list(source.paths)
 

@@ -31,8 +31,8 @@ from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, chec
 _PRAGMA = re.compile(r"^[ \t]*#[ \t]*pragma[ \t]+(\w+)[ \t]*([^\n]*)$", re.M)
 _STAGES = ("vertex", "fragment", "geometry", "hull", "domain")
 # A stage whose text is built apart from the vertex and fragment stages' (geometry_stage.py):
-# the program's engine-filled and written globals are not set there (tessellation_stage.py's
-# entries set them as the vertex and fragment entries do).
+# the program's engine-filled globals are not set there (tessellation_stage.py's entries set them
+# as the vertex and fragment entries do); its written globals' copies are (geometry_stage's entries).
 _APART = ("geometry",)
 
 
@@ -239,13 +239,13 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     check_compute_buffers(everything[:len(masked)], path, first_line)  # data only the application has
     check_included_compute_buffers(everything[:len(masked)], everything[len(masked):], program, path.parent)
     written, rewritten = (), {}
-    if not staged & set(_APART):  # globals the program writes
-        program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
-        rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
-        written += in_includes
-        # (a global of the program's that one of its own includes writes)
-        program, rewritten, across = copied_across_includes(program, path.parent, defines, rewritten, written)
-        written += across
+    # globals the program writes (a geometry function's too: anohis's Blocking; geometry_stage sets the copies)
+    program, written = copied_written_globals(program, active_text(blank_comments(program), defines))
+    rewritten, in_includes = copied_in_includes(program, path.parent, defines)  # or its own includes
+    written += in_includes
+    # (a global of the program's that one of its own includes writes)
+    program, rewritten, across = copied_across_includes(program, path.parent, defines, rewritten, written)
+    written += across
     program, rewritten = renamed_in_own_files(program, path.parent, rewritten)  # Unity's functions defined again
     program, rewritten, redefined = undefined_before_redefinition(program, path, first_line, rewritten)  # FXC's warning
     if notes is not None:

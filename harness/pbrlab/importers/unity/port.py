@@ -42,7 +42,7 @@ from .geometry_syntax import spell_for_glsl
 from .tessellation_syntax import spell_for_glsl as spell_tessellation
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, call_arguments, included_text
-from .texture_methods import declared_texture_objects, spelled_texture_methods
+from .texture_methods import spelled_texture_methods, texture_kinds
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
 _SCALAR = re.compile(r"\b(?:half|fixed|min16float)\b")
@@ -119,9 +119,39 @@ _INITIALISED_GLOBAL = re.compile(r"^(\s*)(?:uniform\s+)?((?:[biu]?vec[234]|mat[2
                                  r"\s+\w+)\s*=[^;{}]*;")
 
 
+# A #define whose body declares a texture (ylvgn's ``#define MY_TEXTURE2D(T) TEXTURE2D(T); float4
+# T##_ST; SAMPLER(sampler##T);``, used at file scope): FXC compiles the expansion where it is used,
+# a global's declaration, and a global without ``static`` is a uniform (Microsoft's HLSL reference,
+# "Variable syntax"); GLSL takes a sampler only as a uniform or a parameter, and a plain global
+# there would not be the material's value. A texture declared by a statement of the body (ending
+# in ``;``: no parameter) makes the macro a globals' declaration: each declaration statement of
+# its body (names may be pasted, ``T##_ST``) gets ``uniform``, as _globals_uniform gives code's.
+_GLOBAL_TYPES = r"(?:[biu]?vec[234]|mat[234]|float|int|uint|sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)"
+_DEFINE_HEAD = re.compile(r"#[ \t]*define[ \t]+\w+(?:\([^()]*\))?")
+_BODY_DECLARATION = r"(^|;|\\\n)(\s*)(%s\s+[\w#]+\s*(?:\[\s*\w+\s*\])?\s*;)"
+_BODY_SAMPLER = re.compile(_BODY_DECLARATION % r"sampler\w+")
+_BODY_GLOBAL = re.compile(_BODY_DECLARATION % _GLOBAL_TYPES)
+
+
+def _uniforms_in_declaring_defines(code: str) -> str:
+    def define(d):
+        text = d.group(0)
+        head = _DEFINE_HEAD.match(text.lstrip())
+        if head is None:
+            return text
+        cut = len(text) - len(text.lstrip()) + head.end()
+        body = text[cut:]
+        if not _BODY_SAMPLER.search(body):
+            return text
+        return text[:cut] + _BODY_GLOBAL.sub(lambda m: f"{m.group(1)}{m.group(2)}uniform {m.group(3)}", body)
+    return _DEFINE_LINES.sub(define, code)
+
+
 def _globals_uniform(code: str) -> str:
     """``uniform`` before global variable declarations (brace depth 0, not functions/structs, not
-    a line of a multi-line #define); ``static`` dropped before one (_STATIC_GLOBAL)."""
+    a line of a multi-line #define: a texture-declaring #define's in _uniforms_in_declaring_defines);
+    ``static`` dropped before one (_STATIC_GLOBAL)."""
+    code = _uniforms_in_declaring_defines(code)
     lines, depth, out = code.split("\n"), 0, []
     decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
     continued = False  # the line continues a preprocessor directive (a macro's body, after a backslash)
@@ -406,14 +436,12 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
-    # texture objects an included file declares (Texture2D _MainTex;), whose methods the program
-    # calls (_MainTex.Sample(...)): their lookups are spelled as the file's own are
-    known = declared_texture_objects(included)
+    textures = texture_kinds(included)  # the includes' (and sibling includes') texture objects
 
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
         text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
         text = _matrix_elements_in_defines(cg_spellings.respelled(text))
-        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), known))
+        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
     symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))

@@ -75,13 +75,18 @@ _INCLUDE_LINE = re.compile(r'^([ \t]*#[ \t]*include[ \t]*")([^"]+)(")', re.M)
 _STRUCT = re.compile(r"\bstruct\s+\w+\s*\{[^{}]*\}\s*;")
 _GLOBAL_VARIABLE = re.compile(r"^[ \t]*(?:uniform\s+)?(?:float|half|fixed|int|uint|bool)(?:[1-4](?:x[1-4])?)?"
                               r"\s+\w+\s*;", re.M)
+# a texture object's declaration (``TEXTURE2D(_BaseMap);``, ``Texture2D _Mask;``): a sibling
+# include's lookup through its method is spelled for GLSL by it (texture_methods.texture_kinds)
+_TEXTURE_OBJECT = re.compile(r"^[ \t]*(?:uniform\s+)?(?:(?:TEXTURE2D|TEXTURE2D_X|TEXTURECUBE)\s*\(\s*\w+\s*\)|"
+                             r"(?:Texture2D|TextureCube)(?:\s*<\s*\w+\s*>)?\s+\w+)\s*;", re.M)
 
 
 def _structs_and_globals(text: str) -> str:
-    """The struct definitions (as written: their #if lines kept on lines of their own) and the
-    global numeric variables of Cg ``text``."""
+    """The struct definitions (as written: their #if lines kept on lines of their own), the
+    global numeric variables and the texture objects of Cg ``text``."""
     masked = blank_comments(text)
-    return "\n".join(_STRUCT.findall(masked) + _GLOBAL_VARIABLE.findall(top_level(masked)))
+    outer = top_level(masked)
+    return "\n".join(_STRUCT.findall(masked) + _GLOBAL_VARIABLE.findall(outer) + _TEXTURE_OBJECT.findall(outer))
 
 
 # A function definition's head at brace depth 0 (source_text.top_level blanks the body): its

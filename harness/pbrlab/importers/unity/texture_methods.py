@@ -115,18 +115,24 @@ def spelled_probe_reads(code: str) -> str:
     return "".join(out) + code[pos:]
 
 
-def declared_texture_objects(code: str) -> dict:
-    """The texture objects ``code`` declares at its top level (``Texture2D _MainTex;``, name ->
-    kind), for a program that includes the file declaring them (spelled_texture_methods' known)."""
-    return {name.strip(): m.group(1) for m in _DECLARATION.finditer(code)
-            for name in m.group(2).split(",") if m.group(1) in _COMBINED}
+def texture_kinds(text: str) -> dict:
+    """The texture objects ``text`` declares (``Texture2D t;``, ``TEXTURE2D(t);``), by name: their
+    kinds, for a file that samples a texture another include declares (MasonJohnHawver42's
+    GrassPass.hlsl: ``_BaseMap.Sample(...)``, _BaseMap declared by URP's SurfaceInput.hlsl)."""
+    kinds = {}
+    for m in _DECLARATION.finditer(text):
+        for name in m.group(2).split(","):
+            kinds[name.strip()] = m.group(1)
+    for m in _MACRO_DECLARATION.finditer(text):
+        kinds.setdefault(m.group(2), _MACRO_KIND[m.group(1)])
+    return {name: kind for name, kind in kinds.items() if kind in _COMBINED}
 
 
 def spelled_texture_methods(code: str, known: dict | None = None) -> str:
     """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg,
-    and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads).
-    ``known``: texture objects the files it includes declare (declared_texture_objects), whose
-    methods it calls too."""
+    and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads);
+    ``known``: textures the files it includes or sits beside declare (texture_kinds), whose
+    lookups are spelled too (its own declarations take precedence)."""
     code = spelled_probe_reads(code)
     kinds = dict(known or {})
     for m in _DECLARATION.finditer(code):
