@@ -208,11 +208,13 @@ def refusal_key(message: str) -> str:
 
 def no_colour_reason(outcomes: dict) -> str | None:
     """Why a shader rendered in every language draws no colour by its own ColorMask (a
-    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written) or, drawn alone, by
+    program-less ``ColorMask 0`` pass: a depth/stencil mask, drawn as written), by a fragment
+    function that writes no SV_Target (a depth-only pass), or, drawn alone, by
     its Stencil test (it draws over another object's mask), read from its note; None for any other
     shader. The report lists these, not as silently empty images."""
-    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK, NO_COLOUR_BY_STENCIL
-    notes = [next((w for w in o.warnings if NO_COLOUR_BY_COLOR_MASK in w or NO_COLOUR_BY_STENCIL in w), None)
+    from ..importers.unity.parse import NO_COLOUR_BY_COLOR_MASK, NO_COLOUR_BY_FRAGMENT, NO_COLOUR_BY_STENCIL
+    reasons = (NO_COLOUR_BY_COLOR_MASK, NO_COLOUR_BY_FRAGMENT, NO_COLOUR_BY_STENCIL)
+    notes = [next((w for w in o.warnings if any(r in w for r in reasons)), None)
              for o in outcomes.values()]
     if not outcomes or any(o.status != "rendered" for o in outcomes.values()) or None in notes:
         return None

@@ -104,6 +104,23 @@ def _struct(vf: M.VertexFragmentPass, name: str):
     return UNITY_STRUCTS.get(name)
 
 
+def colour_output(vf: M.VertexFragmentPass, where: str):
+    """The fragment function's SV_Target0 (COLOR0) colour as (its expression in fragment_entry's
+    main, its component count): the value it returns, the SV_Target0 member of the struct it
+    returns, or its ``out`` SV_Target0 parameter; None where it gives none (a fragment that writes
+    only SV_Depth: D3D leaves a render target the pixel shader does not write unchanged)."""
+    if vf.fragment_return != "void":
+        members = _struct(vf, vf.fragment_return)
+        if members is None:
+            return ("pbrlab_result", _size(vf.fragment_return, where))
+        target = [(t, n) for t, n, s in members if canonical(s) in ("SV_TARGET0", "COLOR0")]
+        return (f"pbrlab_result.{target[0][1]}", _size(target[0][0], where)) if target else None
+    for qual, kind, name, semantic in vf.fragment_params:
+        if qual == "out" and canonical(semantic) in ("SV_TARGET0", "COLOR0"):
+            return (f"pbrlab_arg_{name}", _size(kind, where))
+    return None
+
+
 def _size(kind: str, where: str) -> int:
     n = component_count(kind)
     if not n:
@@ -489,21 +506,13 @@ def fragment_entry(vf: M.VertexFragmentPass, language: str, where: str, blended:
             body.append(f"    {_type(kind, language)} {local} = {filled};")
         args.append(local)
     call = f"{ported_function_name(vf.fragment, language)}({', '.join(args)})"
-    colour = None
     if vf.fragment_return != "void":
-        if _struct(vf, vf.fragment_return) is not None:
-            body.append(f"    {_type(vf.fragment_return, language)} pbrlab_result = {call};")
-            target = [(t, n) for t, n, s in _struct(vf, vf.fragment_return) if canonical(s) in ("SV_TARGET0", "COLOR0")]
-            if target:
-                colour = (f"pbrlab_result.{target[0][1]}", _size(target[0][0], where))
-        else:
-            body.append(f"    {_type(vf.fragment_return, language)} pbrlab_result = {call};")
-            colour = ("pbrlab_result", _size(vf.fragment_return, where))
+        body.append(f"    {_type(vf.fragment_return, language)} pbrlab_result = {call};")
     else:
         body.append(f"    {call};")
-        for qual, kind, name, semantic in vf.fragment_params:
-            if qual == "out" and canonical(semantic) in ("SV_TARGET0", "COLOR0"):
-                colour = (f"pbrlab_arg_{name}", _size(kind, where))
+    colour = colour_output(vf, where)
+    if colour is None and vf.state.color_mask.strip() == "0":
+        colour = (_zero("float4", language), 4)   # a depth-only fragment: ColorMask 0 (parse.py) discards it
     if colour is None:
         raise UnityShaderError(f"{where}: {vf.fragment}() gives no SV_Target colour")
     c = fit(colour[0], colour[1], 4, language, 1.0)

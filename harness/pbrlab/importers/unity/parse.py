@@ -27,6 +27,7 @@ from .lightmaps import ENGINE_SET_TEXTURES
 from . import fixed_function, render_objects, shaderlab, texture_objects
 from .include_case import respell_package_includes
 from .include_separators import forward_slashed_includes
+from .generate_pass import colour_output
 from .parse_pass import _structs, parse_pass
 from .stencil_block import draws_nothing_alone, read_stencil
 from .written_globals import copied_written_globals
@@ -957,12 +958,20 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
     vf = parse_pass(program, path, first, p, pipeline.spellings, pipeline.keywords, warnings, srp=pipeline.srp)
     vf.srp = pipeline.srp
     apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
+    if vf.geometry is None and colour_output(vf, f"{path}:{p.line}") is None:
+        # a fragment that writes SV_Depth and no SV_Target (Unity's Internal-DebugPattern's depth-only
+        # pass): D3D leaves the colour target unwritten, so it draws as ColorMask 0 does
+        vf.state.color_mask = "0"
+        notes.append(f"{path}:{p.line}: {label} {NO_COLOUR_BY_FRAGMENT} ({vf.fragment}() returns no SV_Target): "
+                     "drawn for its depth, rasterised (pbrlab does not write a fragment's SV_Depth)")
     return vf
 
 
 # What a corpus summary lists a shader by when it renders but writes no colour by its own
 # ColorMask (checking/unity_corpus.no_colour_reason reads it from the note).
 NO_COLOUR_BY_COLOR_MASK = "draws no colour by its ColorMask"
+# ... or by its fragment function, which writes no SV_Target (a depth-only pass).
+NO_COLOUR_BY_FRAGMENT = "draws no colour by its fragment function"
 # ... or draws nothing when its object is drawn alone, by its Stencil test (stencil_block.draws_nothing_alone).
 NO_COLOUR_BY_STENCIL = "draws nothing alone by its Stencil test"
 
