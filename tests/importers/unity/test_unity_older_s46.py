@@ -18,6 +18,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from pbrlab.foundation.errors import PbrlabError
+
 from corpus_sphere import covered_pixels, render_on_corpus_sphere
 
 LANGUAGES = ("glsl", "hlsl")
@@ -72,3 +74,33 @@ def test_depth_only_pass_writes_depth_and_no_colour(gl_context, tmp_path, langua
     no_depth = _render(tmp_path, language, [COLOUR_PASS % "Equal"])
     assert _off(no_depth, covered) == 1.0  # without it, the cleared depth fails ZTest Equal
 
+
+
+# An include that climbs a folder and is spelled in another case than the project's file
+# (``#include "../custom.hlsl"`` for ``Custom.hlsl``, two shaders of a hidden5 project): Unity on
+# Windows and macOS, whose file systems ignore case, reads it (include_case.py).
+CLIMBING_INCLUDE = """Shader "t/Climb" { SubShader { Pass { CGPROGRAM""" + _VERT + """
+    #include "../custom.cginc"
+    float4 frag() : SV_Target { return float4(custom_colour(), 1); }
+    ENDCG } } }
+"""
+
+
+def _climbing(tmp_path, included_name):
+    (tmp_path / "fx").mkdir(exist_ok=True)
+    (tmp_path / included_name).write_text("float3 custom_colour() { return float3(0.25, 0.5, 0.75); }\n")
+    shader = tmp_path / "fx" / "climb.shader"
+    shader.write_text(CLIMBING_INCLUDE, encoding="utf-8")
+    return shader
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_climbing_include_in_another_case(gl_context, tmp_path, language):
+    shader = _climbing(tmp_path, "Custom.cginc")
+    with pytest.warns(UserWarning, match=r'climb.shader:\d+: #include "../custom.cginc" read as ../Custom.cginc'):
+        image = render_on_corpus_sphere(tmp_path, shader, language)
+    assert _off(image, covered_pixels(image)) == 0.0
+    # control: no file of that name in any case: refused naming the shader's file and the include
+    (tmp_path / "Custom.cginc").rename(tmp_path / "Other.cginc")
+    with pytest.raises(PbrlabError, match=r"fx/climb\.shader.*\.\./custom\.cginc"):
+        render_on_corpus_sphere(tmp_path, shader, language)

@@ -5,9 +5,9 @@ reads the file; a case-sensitive one (Linux, where pbrlab runs) would not. A pas
 include that no file matches exactly but exactly one file matches ignoring case -- one of
 pbrlab's stand-ins for Unity's include files (``cginc/``, by the name's last part, as
 ``resolve_included`` reads them), for Unity's packages' files (``Packages/...``), or the
-project's own file beside the shader -- is respelled as that file (the line keeps its place)
-with a warning naming the file and line; two or more matches are refused naming them. The
-includes inside the project's include files are read as written.
+project's own file beside the shader or reached by ``..`` -- is respelled as that file (the
+line keeps its place) with a warning naming the file and line; two or more matches are refused
+naming them. The includes inside the project's include files are read as written.
 
     program = respell_package_includes(program, path, first_line, warnings)
 """
@@ -45,13 +45,18 @@ def _unity_includes_by_lower_case() -> dict:
 
 def _project_spellings(name: str, folder: Path) -> list:
     """The spellings of ``name`` (a path relative to ``folder``) that name a file there when
-    each part is compared ignoring case; [] for a path that climbs (``..``) or is absolute."""
+    each part is compared ignoring case; a ``..`` part climbs to the folder above, as written
+    (``#include "../custom.hlsl"`` for the project's ``Custom.hlsl`` one folder up); [] for an
+    absolute path or an empty part."""
     parts = name.split("/")
-    if name.startswith("/") or any(part in ("", ".", "..") for part in parts):
+    if name.startswith("/") or any(part in ("", ".") for part in parts) or parts[-1] == "..":
         return []
     found = [("", folder)]
     for i, part in enumerate(parts):
         last, step = i == len(parts) - 1, []
+        if part == "..":
+            found = [(f"{spelled}/.." if spelled else "..", here.parent) for spelled, here in found]
+            continue
         for spelled, here in found:
             try:
                 entries = sorted(here.iterdir())
