@@ -55,6 +55,7 @@ import re
 from . import combined_samplers
 from .flat_array_initialisers import grouped_flat_initialisers
 from .loop_scope import loop_variables_in_enclosing_scope
+from .sample_offsets import specialised_offsets
 from .self_initialisers import declared_before_initialised
 from .source_text import call_arguments, matching_paren
 
@@ -242,7 +243,8 @@ def respelled(text: str) -> str:
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
     initialiser list of an array of vectors grouped per element, a for-loop variable used after its
     loop declared before it (loop_scope), a parameter's ``in out`` as ``inout``, a half literal
-    ``0.5h`` as ``0.5f``, a hex literal wider than 32 bits as its low 32 bits."""
+    ``0.5h`` as ``0.5f``, a function whose texture lookup's offset is its parameter specialised per
+    constant its calls pass (sample_offsets), a hex literal wider than 32 bits as its low 32 bits."""
     text = _IN_OUT.sub(lambda m: "inout" + m.group(1), text)
     text = _HALF_LITERAL.sub(lambda m: m.group(1) + "f", text)
     text = _WIDE_HEX.sub(_low_32_bits, text)
@@ -257,6 +259,7 @@ def respelled(text: str) -> str:
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
     text = loop_variables_in_enclosing_scope(text)  # for (int k ...) {} ... k: FXC's scope
+    text = specialised_offsets(text)  # t.Sample(s, uv, parameter): FXC inlines, then it is constant
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0
