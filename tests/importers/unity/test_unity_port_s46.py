@@ -12,7 +12,7 @@ import re
 import pytest
 
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.unity import cg_spellings
+from pbrlab.importers.unity import cg_spellings, sample_offsets
 from test_port_round43 import LANGUAGES, _assert_colour, _shader
 from test_unity_names_round5 import _render  # pytest puts this folder on sys.path
 
@@ -62,3 +62,28 @@ def test_a_hex_literal_wider_than_32_bits_keeps_its_low_32_bits(tmp_path, langua
     monkeypatch.setattr(cg_spellings, "_WIDE_HEX", _NEVER)
     with pytest.raises(PbrlabError, match="out of range|too big"):
         _render(tmp_path, _shader(tmp_path, "wide_hex_old", WIDE_HEX), language)
+
+
+# HengyuanLee's BilateralBlur's form (rendered in tests/importers/urp/test_urp_port_s46.py)
+OFFSET_PROGRAM = """float4 Blur(float2 uv, int2 delta, Texture2D t, SamplerState s) : SV_Target
+{
+    float3 a = t.Sample(s, uv, delta * -1); // a comment
+    return float4(a, 1);
+}
+float4 across(float2 uv) { return Blur(uv, int2(1, 0), _T, sampler_T); }
+float4 up(float2 uv) { return Blur(uv,
+    int2(0, 1), _T, sampler_T) + Blur(uv, int2(1, 0), _T, sampler_T); }
+"""
+
+
+def test_a_parameter_offset_is_specialised_per_constant_with_lines_kept():
+    """One specialisation per distinct constant (two here, three calls), each declaring the
+    parameter a static const; the lines kept (errors map back). Control: a call that passes a
+    variable leaves the text as written (FXC too needs the offset to fold to an immediate)."""
+    spelled = sample_offsets.specialised_offsets(OFFSET_PROGRAM)
+    assert spelled.count("\n") == OFFSET_PROGRAM.count("\n")
+    assert "static const int2 delta = int2(1,0);" in spelled and "static const int2 delta = int2(0,1);" in spelled
+    assert spelled.count("Blur_pbrlab_offset0(uv,") == 2 and spelled.count("Blur_pbrlab_offset1(uv,") == 1
+    assert "int2 delta," not in spelled
+    variable = OFFSET_PROGRAM.replace("int2(1, 0), _T", "int2(k, 0), _T")
+    assert sample_offsets.specialised_offsets(variable) == variable

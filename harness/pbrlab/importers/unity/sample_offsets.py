@@ -137,10 +137,22 @@ def _specialise(text: str) -> str | None:
     return None
 
 
+def _reads_a_named_offset(text: str) -> bool:
+    """Whether a lookup in ``text`` passes an offset that names something (not literals only):
+    the cheap test before the functions are read (most programs pass none)."""
+    for m in _METHOD.finditer(text):
+        found = call_arguments(text, m.end() - 1)
+        index = _OFFSET_INDEX[m.group(1)]
+        if found is not None and index < len(found[0]) and re.search(r"[A-Za-z_]", re.sub(
+                r"\b(?:u?int[234]?)\s*\(", "(", found[0][index])):
+            return True
+    return False
+
+
 def specialised_offsets(text: str) -> str:
     """``text`` with each function whose lookup offset is a parameter specialised per constant
     its calls pass (module doc)."""
-    if not _METHOD.search(text):
+    if not _reads_a_named_offset(text):
         return text
     for _ in range(32):  # one function a round; a program has few
         spelled = _specialise(text)
