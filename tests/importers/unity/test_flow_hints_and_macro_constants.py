@@ -20,7 +20,7 @@ def test_flow_hints_are_blanked_in_place_and_the_function_is_ported():
     spelled = cg_spellings.respelled(_LOOP)
     assert "UNITY_" not in spelled and len(spelled) == len(_LOOP)  # offsets kept
     glsl = port.port_text(_LOOP)
-    assert "0.5h" not in glsl and "1.0h" not in glsl and "(float(i) + 0.5)" in glsl
+    assert "0.5h" not in glsl and "1.0h" not in glsl and "(float(i) + 0.5f)" in glsl  # (cg_spellings spells 0.5h 0.5f)
 
 
 def test_a_hint_written_as_unrollx_is_blanked_too():

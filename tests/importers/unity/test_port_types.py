@@ -40,7 +40,7 @@ CASES = [  # (rule, Cg body of pbr_test(), its port, return type)
     ('matrix_rows', 'float3x3 m = float3x3(1, 2, 3, 4, 5, 6, 7, 8, 9); float3 r = m[1]; return float4(r, mul(m, float3(1, 0, 0)).y);', 'mat3 m = transpose(mat3(1, 2, 3, 4, 5, 6, 7, 8, 9)); vec3 r = transpose(m)[1]; return vec4(r, mul(m, vec3(1, 0, 0)).y);'),
     ('matrix_row_vectors', 'float3x3 m = float3x3(float3(1, 2, 3), float3(4, 5, 6), float3(7, 8, 9)); return float4(mul(m, float3(0, 1, 0)), m[2].x);', 'mat3 m = transpose(mat3(vec3(1, 2, 3), vec3(4, 5, 6), vec3(7, 8, 9))); return vec4(mul(m, vec3(0, 1, 0)), transpose(m)[2].x);'),
     ('reserved_names', 'float input = 1; float3 filter = 2; float sample = input + filter.y; return float4(filter, sample);', 'float pbr_unity_input = 1; vec3 pbr_unity_filter = vec3(2); float pbr_unity_sample = pbr_unity_input + pbr_unity_filter.y; return vec4(pbr_unity_filter, pbr_unity_sample);'),
-    ('literal_suffix', 'half h = 0.5h; return float4(h, 1.0f, 2.h, 3);', 'float h = 0.5; return vec4(h, 1.0f, 2., 3);'),
+    ('literal_suffix', 'half h = 0.5h; return float4(h, 1.0f, 2.h, 3);', 'float h = 0.5f; return vec4(h, 1.0f, 2.f, 3);'),
     ('compound_truncates', 'float3 c = 1; c += float4(1, 2, 3, 4); c *= float4(2, 2, 2, 2); return float4(c, 0);', 'vec3 c = vec3(1); c += vec4(1, 2, 3, 4).xyz; c *= vec4(2, 2, 2, 2).xyz; return vec4(c, 0);'),
     ('user_function_arguments', 'return float4(pbr_g(float4(1, 2, 3, 4), 2), 0);', 'return vec4(pbr_g(vec4(1, 2, 3, 4).xyz, vec3(2)), 0);'),
     ('static_global', 'return float4(pbr_k, 0);', 'return vec4(pbr_k, 0);'),

@@ -55,6 +55,7 @@ import re
 from . import combined_samplers
 from .flat_array_initialisers import grouped_flat_initialisers
 from .loop_scope import loop_variables_in_enclosing_scope
+from .sample_offsets import specialised_offsets
 from .self_initialisers import declared_before_initialised
 from .source_text import call_arguments, matching_paren
 
@@ -207,6 +208,30 @@ def _blank_flow_hint(m) -> str:
 # reference, "Function parameters": "inout ... same as in out"); GLSL refuses two ("duplicate
 # in/out/inout qualifier"): one word, blanks keep the columns.
 _IN_OUT = re.compile(r"\bin([ \t]+)out\b")
+# A half literal (``0.001h``, URP's terrain passes): Direct3D 10 and later targets map every half
+# to float (Microsoft's HLSL reference, "Scalar Types": "half ... provided only for language
+# compatibility. Direct3D 10 shader targets map all half data types to float data types"), so
+# FXC reads a float. glslang's HLSL front end makes a 16-bit constant, which turns on SPIR-V's
+# Float16 and spirv-cross's GLSL then asks for an extension ("#error No extension available for
+# FP16"): spelled with ``f`` (the same width: columns kept), which both languages read as float.
+# A hexadecimal integer literal wider than 32 bits (``0x1376312589U``, a hash constant in
+# TxN's Kuwahara): Unity's Direct3D targets have no 64-bit integers; DXC, whose literal
+# handling followed FXC's, kept an unsuffixed hex literal's low 32 bits (DirectXShaderCompiler
+# issue 1973, "Unsuffixed 64-bit hex literals get silently truncated to 32-bits"), and in the
+# uint arithmetic such a constant feeds (``n * k + 0x1376312589U`` into a uint) the result is
+# the same modulo 2^32 whether or not the literal is truncated first. glslang and GLSL refuse it
+# ("hexadecimal literal too big", "out of range"): its low 32 bits, zero-padded to the same width.
+_WIDE_HEX = re.compile(r"(?<![\w.])0[xX]([0-9a-fA-F]{9,})(?=[uU]?\b)")
+
+
+def _low_32_bits(m) -> str:
+    digits = m.group(1)
+    if int(digits, 16) < 1 << 32:
+        return m.group(0)  # leading zeros: already 32 bits
+    return m.group(0)[:2] + format(int(digits, 16) & 0xFFFFFFFF, "x").rjust(len(digits), "0")
+
+
+_HALF_LITERAL = re.compile(r"(?<![\w.])((?:\d+\.\d*|\.\d+)(?:[eE][-+]?\d+)?|\d+[eE][-+]?\d+)[hH]\b")
 
 
 def respelled(text: str) -> str:
@@ -217,8 +242,12 @@ def respelled(text: str) -> str:
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
     matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
     initialiser list of an array of vectors grouped per element, a for-loop variable used after its
-    loop declared before it (loop_scope), a parameter's ``in out`` as ``inout``."""
+    loop declared before it (loop_scope), a parameter's ``in out`` as ``inout``, a half literal
+    ``0.5h`` as ``0.5f``, a function whose texture lookup's offset is its parameter specialised per
+    constant its calls pass (sample_offsets), a hex literal wider than 32 bits as its low 32 bits."""
     text = _IN_OUT.sub(lambda m: "inout" + m.group(1), text)
+    text = _HALF_LITERAL.sub(lambda m: m.group(1) + "f", text)
+    text = _WIDE_HEX.sub(_low_32_bits, text)
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(_blank_flow_hint, text)
     text = _GL_TESTED.sub(lambda m: re.sub(r"\bGL_(?=\w)", "PBRLAB_UNITY_NO_GL_", m.group(1)), text)
@@ -230,6 +259,7 @@ def respelled(text: str) -> str:
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
     text = loop_variables_in_enclosing_scope(text)  # for (int k ...) {} ... k: FXC's scope
+    text = specialised_offsets(text)  # t.Sample(s, uv, parameter): FXC inlines, then it is constant
     text = _TEMPLATE_TYPE.sub(lambda m: f"{m.group(1)}{m.group(2)}" if m.group(1) else
                               f"{m.group(3)}{m.group(4)}x{m.group(5)}", text)
     out, pos = [], 0

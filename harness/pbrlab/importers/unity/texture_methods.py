@@ -59,6 +59,15 @@ def _call(kind: str, method: str, texture: str, args: list):
         if method == "SampleLevel" and len(args) == 3:  # a longer location cut to its first
             # two, as FXC passes it (warning X3206, implicit truncation of a vector type)
             return f"tex2Dlod({texture}, float4(({args[1]}).xy, 0.0, {args[2]}))"
+        # The offset forms (an immediate offset in texels: Microsoft's HLSL reference, "Sample"):
+        # GLSL's textureOffset / textureLodOffset, which take a constant offset too
+        # (sample_offsets.py makes one of a parameter); wrapped in a float4 constructor so the
+        # type pass knows the lookup's type (a float3 it initialises is truncated).
+        if method == "Sample" and len(args) == 3:
+            return f"float4(textureOffset({texture}, pbr_unity_finite_coordinate({args[1]}), {args[2]}))"
+        if method == "SampleLevel" and len(args) == 4:
+            return (f"float4(textureLodOffset({texture}, pbr_unity_finite_coordinate(({args[1]}).xy), {args[2]},"
+                    f" {args[3]}))")
         if method == "SampleBias" and len(args) == 3:
             return f"tex2Dbias({texture}, float4(({args[1]}).xy, 0.0, {args[2]}))"
         if method == "SampleGrad" and len(args) == 4:

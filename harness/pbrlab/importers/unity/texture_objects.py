@@ -170,9 +170,33 @@ def _parameters_spelled_out(text: str) -> str:
     return text
 
 
+# A texture object's member read straight off its builder's call, with no local between
+# (``UnityBuildTexture2DStructNoScale(_MainTex).tex``, as Shader Graph's Sample Texture 2D node
+# writes it for a texture its graph does not name): the same members, spelled the same way.
+_BUILT_MEMBER = re.compile(r"\bUnityBuildTexture2DStruct(NoScale)?\s*\(\s*(\w+)\s*\)\s*\.\s*"
+                           r"(?=(?:tex|samplerstate|texelSize|scaleTranslate|GetTransformedUV)\b)")
+
+
+def _built_members_spelled_out(text: str) -> str:
+    """``text`` with each member read off a UnityBuildTexture2DStruct call spelled out."""
+    while True:
+        m = _BUILT_MEMBER.search(blank_comments(text))
+        if m is None:
+            return text
+        texture = m.group(2)
+        scale = _NO_SCALE if m.group(1) else f"{texture}_ST"
+        # The call stands for a local of that name for one member read, which _spell_block spells.
+        name = "pbrlab_built_texture_object"
+        tail = text[m.end():]
+        member = re.match(r"GetTransformedUV\s*\(", tail)
+        end = matching_paren(tail, member.end() - 1) + 1 if member else re.match(r"\w+", tail).end()
+        spelled = _spell_block(f"{name}.{tail[:end]}", name, texture, scale, f"sampler{texture}")
+        text = text[:m.start()] + spelled + tail[end:]
+
+
 def spelled_out(text: str) -> str:
     """``text`` with each Shader Graph texture or sampler object spelled out where it is read."""
-    text = _parameters_spelled_out(text)
+    text = _built_members_spelled_out(_parameters_spelled_out(text))
     while True:
         masked = blank_comments(text)
         found = None

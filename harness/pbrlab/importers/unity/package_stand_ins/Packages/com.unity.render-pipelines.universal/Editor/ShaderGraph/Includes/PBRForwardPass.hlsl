@@ -36,7 +36,12 @@ void InitializeInputData(Varyings input, SurfaceDescription surfaceDescription, 
     inputData.normalWS = input.normalWS;
 #endif
     inputData.normalWS = NormalizeNormalPerPixel(inputData.normalWS);
+#if defined(VARYINGS_NEED_VIEWDIRECTION_WS)
     inputData.viewDirectionWS = SafeNormalize(input.viewDirectionWS);
+#else
+    // URP 12's generated passes carry no view direction: the fragment takes it from positionWS.
+    inputData.viewDirectionWS = GetWorldSpaceNormalizeViewDir(input.positionWS);
+#endif
     inputData.shadowCoord = float4(0.0, 0.0, 0.0, 0.0);
     inputData.fogCoord = 0.0;
     inputData.vertexLighting = input.fogFactorAndVertexLight.yzw;
