@@ -149,6 +149,14 @@ def test_a_deferred_only_subshader_draws_its_diffuse_fallback(tmp_path, language
     with pytest.raises(PbrlabError) as refused:
         _render(other, language)
     assert 'its Fallback "Specular" is one of the shaders Unity ships with the editor' in str(refused.value)
+    # and the stand-in hides no mistake: a SubShader pbrlab cannot read keeps its own refusal
+    broken = tmp_path / "broken_diffuse.shader"
+    broken.write_text(shader.read_text().replace('Tags { "LightMode" = "Deferred" }', "").replace(
+        "float4 frag() : SV_Target { return float4(1.0, 0.0, 0.0, 1.0); }",
+        "float4 frag() : SV_Target { return undeclared_name; }"))
+    with pytest.raises(PbrlabError) as refused:
+        _render(broken, language)
+    assert "undeclared_name" in str(refused.value)
 
 
 # --- 4. an unlit fixed-function pass in URP ----------------------------------------------------

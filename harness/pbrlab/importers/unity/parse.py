@@ -707,6 +707,8 @@ _SHIPPED_WITH_UNITY = re.compile(
 _ERROR_SHADER = "hidden/internalerrorshader"
 # pbrlab's own stand-ins for a few of those (written from Unity's manual), found last
 SHIPPED_STAND_INS = Path(__file__).parent / "shipped_shaders"
+# the reason of a SubShader all of whose passes the pipeline's path skips (_subshader_passes)
+_SKIPPED_ALL = "nothing here draws (every pass skipped"
 
 
 def _missing_fallback(name: str) -> tuple:
@@ -729,6 +731,12 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    if found is not None and found.parent == SHIPPED_STAND_INS and not all(_SKIPPED_ALL in r for r in reasons):
+        # pbrlab's stand-in of a shader Unity ships is drawn only where Unity draws the Fallback:
+        # every SubShader's passes are of another path (a Deferred-only one in the forward path);
+        # a SubShader pbrlab cannot read (a mistake, a feature it lacks) is Unity's to draw or
+        # reject, not the stand-in's, so that reason stays the refusal
+        found = None
     what, how = _missing_fallback(layout.fallback)
     if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
         raise UnityShaderError(
