@@ -99,7 +99,27 @@ def test_a_normal_map_file_is_stored_as_dxt5nm(tmp_path, language):
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
-def test_the_default_bump_reads_flat_through_unity_s_unpack(language):
+def test_a_texture_the_shader_unpacks_is_a_normal_map(tmp_path, language):
+    """Without [Normal] and with a "white" default, a texture the shader's file hands to
+    UnpackNormalDXT5nm(tex2D(...)) is a normal map too: its file is stored as DXT5nm. Control:
+    read through a variable first (no unpack of a tex2D in the file), it stays plain RGBA."""
+    text = (SHADERS / "normal_map_dxt5nm.shader").read_text().replace(
+        '[Normal] _NormalMap ("Normal map", 2D) = "bump" {}', '_NormalMap ("Normal map", 2D) = "white" {}')
+    png = _normal_png(tmp_path, (200, 100, 230))
+    unpacked = tmp_path / "unpacked.shader"
+    unpacked.write_text(text.replace("UnpackNormalDXT5nm(packed)", "UnpackNormalDXT5nm(tex2D(_NormalMap, i.uv))"))
+    image = _render(unpacked, language, {"_NormalMap": {"path": png.name}})
+    stored = np.array([1.0, 100 / 255, 1.0, 200 / 255])
+    assert _fraction_within(image, unity_cg.unpack_normal_dxt5nm(stored) * 0.5 + 0.5, UNPACK_BOUND) == 1.0
+    plain = tmp_path / "plain.shader"
+    plain.write_text(text)
+    image = _render(plain, language, {"_NormalMap": {"path": png.name, "srgb": False}})
+    rgba = np.array([200 / 255, 100 / 255, 230 / 255, 1.0])
+    assert _fraction_within(image, unity_cg.unpack_normal_dxt5nm(rgba) * 0.5 + 0.5, UNPACK_BOUND) == 1.0
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_the_default_bump_binds_as_its_rgba(language):
     """The default "bump" (0.5, 0.5, 1, 1) binds as its RGBA (a global texture, not an imported
     normal map): UnpackNormalDXT5nm reads its alpha 1 as x = 1, as Unity's .wy does."""
     image = _render(SHADERS / "normal_map_dxt5nm.shader", language)

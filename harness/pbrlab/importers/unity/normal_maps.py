@@ -16,12 +16,16 @@ DXT5nm drops, is rebuilt by the unpack).
 
 A property is a normal map where Unity's material inspector treats it as one: the ``[Normal]``
 attribute (Unity's manual, "Properties": "indicates that a texture property expects a
-normal-map") or the default texture "bump". A default texture is Unity's global one, not an
+normal-map") or the default texture "bump"; or where the shader's own file unpacks it,
+``UnpackNormal*(tex2D(_X, ...))`` (or ``UnpackScaleNormal``, ``UNITY_SAMPLE_TEX2D``,
+``SAMPLE_TEXTURE2D``), a map its author imported as a normal map for that unpack to read it
+(an unpack in an include file is not seen). A default texture is Unity's global one, not an
 imported normal map, and binds as its RGBA (properties.DEFAULT_TEXELS).
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -33,9 +37,23 @@ from ...foundation.images import read_image
 from . import model as M
 
 
-def normal_map_property(prop: M.Property) -> bool:
-    """Whether Unity's inspector takes ``prop`` for a normal map (module doc)."""
-    return prop.default == "bump" or "Normal" in prop.attributes
+# an unpack of a texture read in its argument: the texture's name
+_UNPACKED = re.compile(r"\bUnpack(?:Scale)?Normal\w*\s*\(\s*(?:tex2D\w*|UNITY_SAMPLE_TEX2D\w*|SAMPLE_TEXTURE2D\w*)"
+                       r"\s*\(\s*(\w+)")
+
+
+def normal_map_property(prop: M.Property, unpacked: frozenset = frozenset()) -> bool:
+    """Whether ``prop`` is a normal map (module doc); ``unpacked``: unpacked_textures' names."""
+    return prop.default == "bump" or "Normal" in prop.attributes or prop.name in unpacked
+
+
+def unpacked_textures(path) -> frozenset:
+    """The textures the shader file at ``path`` hands to an UnpackNormal* read (module doc)."""
+    try:
+        text = Path(path).read_text(encoding="utf-8", errors="replace")
+    except (OSError, TypeError):
+        return frozenset()
+    return frozenset(_UNPACKED.findall(text))
 
 
 def dxt5nm_layout(image: np.ndarray, where: str) -> np.ndarray:
