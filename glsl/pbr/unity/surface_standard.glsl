@@ -40,7 +40,12 @@
 //           and the layered lighting normalise s.Normal, as UnityPBSLighting.cginc does, since a
 //           surface function may write any length | 1: the caller guarantees a unit s.Normal and
 //           the second normalisation is left out; pbrlab's scene programs, which normalise the
-//           normal they build from the tangent frame, define it: 8 to 12 RDNA3 instructions a pixel).
+//           normal they build from the tangent frame, define it: 8 to 12 RDNA3 instructions a pixel);
+//           PBR_UNITY_NORMAL_MAP_ENCODING (how UnpackNormal / UnpackScaleNormal read a normal-map
+//           texel: PBR_UNITY_NORMAL_MAP_RGB default, xyz = rgb * 2 - 1, Unity's UNITY_NO_DXT5nm
+//           branch, the glTF-style maps of pbrlab's own materials | PBR_UNITY_NORMAL_MAP_DXT5NM:
+//           Unity's desktop branch, UnpackNormalmapRGorAG: x = r * a, y = g, scaled, z rebuilt,
+//           which reads DXT5nm (1, y, 1, x) and BC5 (x, y, 0, 1) alike; the Unity importer's).
 //
 // Semantics are Unity's (docs.unity3d.com, "Writing Surface Shaders"; UnityPBSLighting.cginc
 // and UnityStandardUtils.cginc of Unity 5-2019). Two models (PBR_BRDF_MODEL):
@@ -82,6 +87,16 @@
 #error PBR_ALPHA_MODE: unknown value
 #endif
 
+#define PBR_UNITY_NORMAL_MAP_RGB 1
+#define PBR_UNITY_NORMAL_MAP_DXT5NM 2
+#ifndef PBR_UNITY_NORMAL_MAP_ENCODING
+// PBR_UNITY_NORMAL_MAP_RGB as a number (glsl/README.md, one-level preprocessors)
+#define PBR_UNITY_NORMAL_MAP_ENCODING 1
+#endif
+#if PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_RGB && PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_DXT5NM
+#error PBR_UNITY_NORMAL_MAP_ENCODING: unknown value
+#endif
+
 // Unity: half4(0.04, 0.04, 0.04, 1.0 - 0.04) in linear colour space.
 #define unity_ColorSpaceDielectricSpec vec4(vec3(PBR_DIELECTRIC_F0), 1.0 - PBR_DIELECTRIC_F0)
 
@@ -105,17 +120,26 @@ struct SurfaceOutputStandardSpecular {
     float Alpha;
 };
 
-// Unity's UnpackNormal for RGB normal maps (UnityCG.cginc without UNITY_NO_DXT5nm
-// swizzling): tangent-space xyz = rgb * 2 - 1. Maps stored as BC5/DXT5nm (x in a, y in g)
-// need Unity's UnpackNormalmapRGorAG, which is not provided.
-vec3 UnpackNormal(vec4 packednormal) {
-    return packednormal.xyz * 2.0 - 1.0;
-}
-
+// Unity's UnpackScaleNormal (UnityStandardUtils.cginc's UnpackScaleNormalRGorAG), by
+// PBR_UNITY_NORMAL_MAP_ENCODING: RGB (Unity's UNITY_NO_DXT5nm branch) xyz = rgb * 2 - 1, xy
+// scaled; DXT5nm (Unity's desktop branch, where the editor stores a normal map as DXT5nm
+// (1, y, 1, x) or BC5 (x, y, 0, 1)): x = r * a, y = g, both * 2 - 1 and scaled, z rebuilt as
+// sqrt(1 - saturate(x^2 + y^2)), so the scale tilts the rebuilt normal.
 vec3 UnpackScaleNormal(vec4 packednormal, float bumpScale) {
+#if PBR_UNITY_NORMAL_MAP_ENCODING == PBR_UNITY_NORMAL_MAP_DXT5NM
+    vec2 xy = (vec2(packednormal.x * packednormal.w, packednormal.y) * 2.0 - 1.0) * bumpScale;
+    return vec3(xy, sqrt(1.0 - clamp(dot(xy, xy), 0.0, 1.0)));
+#else
     vec3 n = packednormal.xyz * 2.0 - 1.0;
     n.xy *= bumpScale;
     return n;
+#endif
+}
+
+// Unity's UnpackNormal (UnityCG.cginc): UnpackScaleNormal at scale 1, in either encoding (RGB:
+// rgb * 2 - 1; DXT5nm: UnpackNormalmapRGorAG).
+vec3 UnpackNormal(vec4 packednormal) {
+    return UnpackScaleNormal(packednormal, 1.0);
 }
 
 float SmoothnessToPerceptualRoughness(float smoothness) {

@@ -24,8 +24,8 @@
 //           member), UNITY_APPLY_FOG(coord, col) and UNITY_APPLY_FOG_COLOR(coord, col, fogCol)
 //           leave col unchanged and never read coord.
 // Include:  "pbr/unity/unity_cg.glsl" (path relative to glsl/). Not part of pbr/pbr.glsl: the
-//           names are Unity's. UnpackNormal / UnpackScaleNormal (RGB maps, Unity's
-//           UNITY_NO_DXT5nm branch) are in pbr/unity/surface_standard.glsl.
+//           names are Unity's. UnpackNormal / UnpackScaleNormal (RGB or DXT5nm maps by
+//           PBR_UNITY_NORMAL_MAP_ENCODING) are in pbr/unity/surface_standard.glsl.
 // Config macros read: UNITY_UV_STARTS_AT_TOP (ComputeGrabScreenPos: defined, the grab
 //           texture's v runs downwards, Direct3D-like; the pbrlab harness renders with GL
 //           conventions and leaves it undefined, as Unity does for its OpenGL targets, so a

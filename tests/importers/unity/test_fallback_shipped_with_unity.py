@@ -1,5 +1,5 @@
 """A Fallback pbrlab does not find (issue 34, session 45's long tail): when it names one of the
-shaders Unity ships with the editor ("Diffuse", "VertexLit", "Legacy Shaders/...") or Unity's error
+shaders Unity ships with the editor ("Specular", "VertexLit", "Legacy Shaders/...") or Unity's error
 shader, the refusal says so instead of asking for the shader's file in the project (no project
 holds it); a project's own Fallback keeps that hint, and a project that does hold a shader of a
 shipped name gets it drawn. Both languages; the refusals name the shader's file and the Fallback's
@@ -76,7 +76,7 @@ def _refusal(tmp_path, language, fallback) -> str:
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
-@pytest.mark.parametrize("fallback", ["Diffuse", "VertexLit", "Legacy Shaders/Bumped Specular", "Mobile/Diffuse"])
+@pytest.mark.parametrize("fallback", ["Specular", "VertexLit", "Legacy Shaders/Bumped Specular", "Mobile/Diffuse"])
 def test_a_fallback_unity_ships_is_named_as_such(tmp_path, language, fallback):
     """The Fallback named, its line, and that Unity ships it; no advice to put its file in the project.
     Control: a project's own missing Fallback keeps that advice, also under a first name Unity's

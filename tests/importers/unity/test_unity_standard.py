@@ -124,7 +124,9 @@ CASES = {
         ["_NORMALMAP"],
         "_MainTex (\"a\", 2D) = \"white\" {}", "SurfaceOutputStandard",
         "o.Albedo = fixed3(1, 1, 1); o.Smoothness = 0.8; "
-        "float3 n = float3(0.8, 0.4, 1.0) * 2.0 - 1.0; n.xy *= 0.6; o.Normal = n;"),
+        # Unity's desktop unpack of the map as the editor stores it (DXT5nm: x = r, y = g, z rebuilt
+        # from the scaled xy; docs/unity.md, "Normal maps as Unity stores them")
+        "float2 xy = (float2(0.8, 0.4) * 2.0 - 1.0) * 0.6; o.Normal = float3(xy, sqrt(1.0 - saturate(dot(xy, xy))));"),
     "detail x2": (
         "Standard.shader", {"_Color": [0.5, 0.5, 0.5, 1], "_DetailAlbedoMap": ("detail", [0.2, 0.2, 0.4, 1]),
                             "_DetailMask": ("mask", [1, 1, 1, 0.6])},

@@ -15,6 +15,7 @@ from pbrlab.foundation import images
 from pbrlab.render import renderer as render
 from pbrlab import scene
 from pbrlab.maths.camera import camera_frame, camera_rays
+from pbrlab.maths.reference import unity_cg
 from pbrlab.maths.reference import unity_lighting as U
 from pbrlab.importers.unity import UnityShaderError, UnityShaderWarning, parse
 
@@ -270,13 +271,16 @@ def _sphere_tangent_frame(n):
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_normal_map_tilts_the_lambert_normal(language, tmp_path):
     """A constant tangent-space normal (0.6, 0, 0.8), stored 8-bit linear: world normal
-    t * x + b * y + n * z (Unity's tangent frame), lit by Lambert."""
+    t * x + b * y + n * z (Unity's tangent frame), lit by Lambert. A [Normal]/"bump" property's
+    file is stored as Unity's DXT5nm (1, y, 1, x) and unpacked as Unity's desktop UnpackNormal
+    (x, y from the file's red and green, z rebuilt: docs/unity.md, "Normal maps as Unity stores
+    them"; the file's 8-bit blue is not read)."""
     code = np.round((np.array([0.6, 0.0, 0.8]) * 0.5 + 0.5) * 255).astype(np.uint8)
     path = _png(tmp_path / "bump.png", code)
     s = _scene("normal_mapping.shader", properties={"_BumpMap": {"path": path}})
     hit, n, v = _geometry(s)
     got = _render("normal_mapping.shader", language, properties={"_BumpMap": {"path": path}})
-    tn = code / 255.0 * 2 - 1
+    tn = unity_cg.unpack_normalmap_rg_or_ag(np.array([1.0, code[1] / 255.0, 1.0, code[0] / 255.0]))
     t, b, _ = _sphere_tangent_frame(n)
     w = t * tn[0] + b * tn[1] + n * tn[2]
     w /= np.linalg.norm(w, axis=-1, keepdims=True)

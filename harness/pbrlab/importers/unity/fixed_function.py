@@ -236,6 +236,16 @@ def stage_code(combine: str, where: str) -> str:
     return "\n".join(lines)
 
 
+def lit_command(commands):
+    """The ``Lighting On`` command that is in force at the end of ``commands`` (ShaderLab order: a
+    later one wins), or None where the pass is unlit (Lighting Off, or no Lighting command)."""
+    last = None
+    for c in commands:
+        if c.word.lower() == "lighting":
+            last = c if c.args.strip().lower() == "on" else None
+    return last
+
+
 def translate(commands, properties: dict, path) -> str:
     """The Cg program (vertex function ``pbrlab_ff_vert``, fragment ``pbrlab_ff_frag``) of a
     fixed-function pass (module doc)."""

@@ -270,8 +270,12 @@ def _defines(defines: dict) -> str:
 
 
 # The library's configuration for a Unity program: UnityLight (pbr_Light) with Unity's deprecated
-# member ndotl, which older shaders assign and read (pbr/surface/lighting_standard.glsl).
-UNITY_LIBRARY_DEFINES = {"PBR_LIGHT_NDOTL": 1}
+# member ndotl, which older shaders assign and read (pbr/surface/lighting_standard.glsl); and
+# UnpackNormal / UnpackScaleNormal as Unity compiles them for desktop, where UNITY_NO_DXT5nm is
+# undefined (UnityCG.cginc's UnpackNormalmapRGorAG: x = r * a, y = g, z rebuilt), the branch that
+# reads a normal map as the editor stores it there (pbr/unity/surface_standard.glsl,
+# PBR_UNITY_NORMAL_MAP_DXT5NM; importers/unity/normal_maps.py uploads a map in that layout).
+UNITY_LIBRARY_DEFINES = {"PBR_LIGHT_NDOTL": 1, "PBR_UNITY_NORMAL_MAP_ENCODING": 2}
 
 # HLSL's arrays of arrays (``float w[2][3]``; the type pass keeps them, cg_types.array_suffix):
 # GLSL 4.30's, which GLSL 3.30 takes with this extension (every Mesa driver has it).

@@ -68,6 +68,15 @@ def _canonical(semantic: str) -> str:
     return canonical(semantic)
 
 
+def _flat(vf, mtype: str, semantic: str) -> str:
+    """"flat " where the vertex stage's output and the fragment stage's input of this semantic are
+    flat (generate_pass._flat: an integer, or a member some struct declares ``nointerpolation``):
+    GLSL links a stage pair only where both sides qualify a varying alike (GLSL 4.30 section 4.3.4),
+    so the geometry stage's input and output of that semantic are flat too."""
+    from .generate_pass import _flat as stage_flat
+    return stage_flat(mtype, semantic, vf)
+
+
 def _fit(expr: str, have: int, want: int, w: float = 0.0) -> str:
     from .generate_pass import fit
     return fit(expr, have, want, "glsl", w)
@@ -156,11 +165,16 @@ def hlsl_renamed(vf, glsl: str) -> str:
     if unlinked:  # spirv-cross named a varying otherwise than <param>_<member>: say so, not a link error
         raise UnityShaderError(f"{g.where}: {g.name}(): pbrlab cannot link the geometry stage's "
                                f"{', '.join(unlinked)} to the vertex or fragment stage")
-    # an integer output flat, as the fragment stage reads it (generate_pass._flat): SPIR-V asks Flat
-    # of a fragment input only, so spirv-cross writes the geometry output plain, and GLSL 3.30
-    # links a stage pair only with the same interpolation qualifiers (section 4.3.4)
-    glsl = re.sub(r"^((?:layout\([^)]*\)\s*)?)(out\s+(?:u?int|[iu]vec[234])\s+pbrlab_gvary_)", r"\1flat \2", glsl,
-                  flags=re.M)
+    # an input or output flat where the vertex and fragment stages' varying of its semantic is
+    # (_flat: an integer, or a member declared ``nointerpolation``): SPIR-V asks Flat of a fragment
+    # input only, so spirv-cross writes the geometry stage's varyings plain, and GLSL 3.30 links a
+    # stage pair only with the same interpolation qualifiers (section 4.3.4)
+    flat_semantics = {_canonical(semantic) for kind, own in ((g.input_type, g.input_semantic), (g.output_type, ""))
+                      for mtype, _, semantic in _members(vf, kind, g.where, own)
+                      if semantic and _flat(vf, mtype, _canonical(semantic))}
+    for s in sorted(flat_semantics):
+        glsl = re.sub(r"^((?:layout\([^)]*\)\s*)?)((?:in|out)\s+\w+\s+pbrlab_g?vary_" + re.escape(s) + r"\b)",
+                      r"\1flat \2", glsl, flags=re.M)
     instance = re.search(r"uniform _Global (\w+);", glsl)
     if instance:
         glsl = re.sub(r"\b_Global\b", "_GlobalGeometry", glsl)
@@ -198,11 +212,11 @@ def glsl_declarations(vf, vertex_outputs: dict) -> str:
     g = vf.geometry
     layout, count = PRIMITIVES[g.primitive]
     lines = [f"layout({layout}) in;"]
-    flat = lambda t: "flat " if t.startswith(("int", "uint", "bool")) else ""
-    lines += [f"{flat(t)}in {port_code_types(t)} pbrlab_vary_{s}[];" for s, t in vertex_outputs.items()]
+    lines += [f"{_flat(vf, t, s)}in {port_code_types(t)} pbrlab_vary_{s}[];" for s, t in vertex_outputs.items()]
     for mtype, member, semantic in _members(vf, g.output_type, g.where):
         if semantic and _canonical(semantic) not in _POSITION:
-            lines.append(f"{flat(mtype)}out {port_code_types(mtype)} pbrlab_gvary_{_canonical(semantic)};")
+            s = _canonical(semantic)
+            lines.append(f"{_flat(vf, mtype, s)}out {port_code_types(mtype)} pbrlab_gvary_{s};")
     return "\n".join(lines) + "\n"
 
 

@@ -706,6 +706,10 @@ _SHIPPED_WITH_UNITY = re.compile(
     r"|Sprites/(?:Default|Diffuse|Mask)|UI/(?:Default|Default Font|Unlit/.*|Lit/.*)|GUI/Text Shader"
     r"|Nature/(?:Terrain/.*|Tree Soft Occlusion.*|SpeedTree.*|Tree Creator.*)", re.I)
 _ERROR_SHADER = "hidden/internalerrorshader"
+# pbrlab's own stand-ins for a few of those (written from Unity's manual), found last
+SHIPPED_STAND_INS = Path(__file__).parent / "shipped_shaders"
+# the reason of a SubShader all of whose passes the pipeline's path skips (_subshader_passes)
+_SKIPPED_ALL = "nothing here draws (every pass skipped"
 
 
 def _missing_fallback(name: str) -> tuple:
@@ -728,6 +732,12 @@ def _fallback(layout, reasons: list, path: Path, pipeline: Pipeline = BUILTIN) -
             raise UnityShaderError(reasons[0].split(": ", 1)[1])
         raise UnityShaderError(f"{path}: no SubShader can run here ({why}), and there is no Fallback")
     found = find_shader(layout.fallback, path)
+    if found is not None and found.parent == SHIPPED_STAND_INS and not all(_SKIPPED_ALL in r for r in reasons):
+        # pbrlab's stand-in of a shader Unity ships is drawn only where Unity draws the Fallback:
+        # every SubShader's passes are of another path (a Deferred-only one in the forward path);
+        # a SubShader pbrlab cannot read (a mistake, a feature it lacks) is Unity's to draw or
+        # reject, not the stand-in's, so that reason stays the refusal
+        found = None
     what, how = _missing_fallback(layout.fallback)
     if found is None and len(reasons) == 1:  # this shader's one SubShader's reason first
         raise UnityShaderError(
@@ -771,7 +781,8 @@ def shader_names(near: Path):
     """(file, its Shader "name") of every other ``.shader`` file ``find_shader`` searches, in its order."""
     import os
     roots = ([near.parent] + unity_project_folders(near)
-             + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p])
+             + [Path(p) for p in os.environ.get("PBRLAB_UNITY_SHADERS", "").split(os.pathsep) if p]
+             + [SHIPPED_STAND_INS])
     seen = set()
     for root in roots:
         for candidate in sorted(root.rglob("*.shader")):
@@ -926,12 +937,19 @@ def _pass(layout, sub, p, props: dict, warnings: list, notes: list, pipeline: Pi
         writes_no_colour = not p.fixed_function and state.color_mask == "0"
         if writes_no_colour:
             notes.append(no_colour_note(path, p, label, state, sub.state + p.state))
-        elif pipeline.name != BUILTIN.name:  # (a lightmapped reading of it is BUILTIN too: lightmaps.py)
-            raise UnityShaderError(f"{path}:{p.line}: a fixed-function Pass (no program): {pipeline.name} "
-                                   "runs programmable passes only")
         # Unity generates a program for a fixed-function pass (a pass with no command at all
         # draws white); so does pbrlab (fixed_function.py), which the front end then reads
         outer = [c for c in sub.state if c.word.lower() in shaderlab.FIXED_FUNCTION]
+        lit = fixed_function.lit_command(outer + p.fixed_commands)
+        if pipeline.name != BUILTIN.name and lit is not None:  # (a lightmapped reading is BUILTIN too)
+            # Unity's manual ("Writing shaders", "ShaderLab: legacy fixed-function"): a fixed-function
+            # pass is converted to a vertex and fragment program at import, so URP draws an untagged
+            # one as it does any program (SRPDefaultUnlit); but its Lighting On reads the built-in
+            # pipeline's per-vertex lights (unity_LightPosition[i] ...), which URP does not fill
+            raise UnityShaderError(f"{path}:{lit.line}: a fixed-function Pass with Lighting On: its per-vertex "
+                                   "lighting reads the built-in pipeline's vertex lights (unity_LightPosition, "
+                                   "unity_LightColor), which pbrlab sets for the built-in pipeline's passes only, "
+                                   f"not in {pipeline.name}; an unlit (Lighting Off) fixed-function pass is drawn")
         vf = parse_pass(fixed_function.translate(outer + p.fixed_commands, props, path), path, p.line, p)
         apply_state(sub.state + p.state, vf.state, props, path, warnings, surface=False)
         return vf

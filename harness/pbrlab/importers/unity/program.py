@@ -39,6 +39,7 @@ from . import model as M
 from . import unprovided
 from .empty_arguments import empty_arguments_spelled
 from .include_separators import forward_slashed_includes
+from .normal_maps import stored_normal_map
 from .properties import TextureValue
 from .source_text import (CGINC, INCLUDE, INCLUDE_WITH_PRAGMAS, PACKAGE_STAND_INS, blank_comments, included_files,
                           included_text, read_source, resolve_included, top_level)
@@ -407,7 +408,8 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
             bound = not arrayed and _bind_texture(program, name, kind, unit)  # False: the compiler dropped it
             sized = not arrayed and bool(programs.uniforms_named(program, f"{name}_TexelSize"))
             if bound or sized:
-                texture = (environment_cube() if value.cube else cache.texture(value.path, value.srgb)
+                file = stored_normal_map(value.path) if value.normal_map else value.path
+                texture = (environment_cube() if value.cube else cache.texture(file, value.srgb)
                            if value.path is not None else cache.constant_volume(value.texel)
                            if _volume_sampled(program, name) else cache.constant_texture(value.texel))
                 if bound:

@@ -19,6 +19,7 @@ from pathlib import Path
 from ...foundation import safe_paths
 from ...foundation.errors import SceneError
 from . import model as M
+from .normal_maps import normal_map_property, unpacked_textures
 
 # Unity's built-in default textures (the Properties block's "white" {}, ...) as linear
 # RGBA texels; "bump" unpacks to the flat normal (0, 0, 1).
@@ -34,6 +35,7 @@ class TextureValue:
     srgb: bool
     st: tuple                  # (tiling x, tiling y, offset x, offset y): Unity's _ST
     cube: bool = False
+    normal_map: bool = False   # a file stored as Unity stores a normal map (normal_maps.py)
 
 
 def _finite(x) -> bool:
@@ -54,9 +56,9 @@ def _pair(value, where: str, default) -> tuple:
     return tuple(float(v) for v in value)
 
 
-def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
+def _texture(prop: M.Property, value, where: str, base: Path, unpacked: frozenset = frozenset()) -> TextureValue:
     cube = prop.kind == "Cube"
-    linear_by_default = prop.default == "bump" or "Normal" in prop.attributes
+    linear_by_default = normal_map_property(prop, unpacked)
     if value is None and cube:  # every Cube samples the scene's environment
         return TextureValue(None, DEFAULT_TEXELS["white"], False, (1.0, 1.0, 0.0, 0.0), cube)
     if value is None or isinstance(value, str):
@@ -99,7 +101,8 @@ def _texture(prop: M.Property, value, where: str, base: Path) -> TextureValue:
     tiling = _pair(value.get("tiling"), f"{where}.tiling", (1.0, 1.0))
     offset = _pair(value.get("offset"), f"{where}.offset", (0.0, 0.0))
     texel = None if path is not None else DEFAULT_TEXELS[prop.default]
-    return TextureValue(path, texel, srgb and path is not None, tiling + offset)
+    return TextureValue(path, texel, srgb and path is not None, tiling + offset,
+                        normal_map=path is not None and normal_map_property(prop, unpacked))
 
 
 def resolve(shader: M.SurfaceShader, overrides: dict, base: Path, where: str) -> dict:
@@ -116,11 +119,12 @@ def resolve(shader: M.SurfaceShader, overrides: dict, base: Path, where: str) ->
             raise SceneError(f"{where}.{name}: null is not a value; give one, or leave the property out "
                              f"to use the shader's default")
     values = {}
+    unpacked = unpacked_textures(getattr(shader, "path", None))
     for name, prop in shader.properties.items():
         value = overrides.get(name)
         field = f"{where}.{name}"
         if prop.is_texture:
-            values[name] = _texture(prop, value, field, base)
+            values[name] = _texture(prop, value, field, base, unpacked)
         elif prop.kind in ("Color", "Vector"):
             values[name] = prop.default if value is None else _vector(value, where, name)
         else:
