@@ -1,0 +1,56 @@
+"""A call of a function that nothing defines: the shader's file, the files it includes (its own
+and pbrlab's stand-ins for Unity's) and pbrlab's Unity layer hold no function or macro of that
+name (``Remap(1, 10, 0, 1, y)`` in a URP shader that defines none, as Unity's URP and Core
+ShaderLibrary define none; ``ShadeGI(...)`` after the project renamed its lighting functions).
+Unity's compiler refuses such a shader too ("undeclared identifier"), so the refusal says that
+the project's own code calls an undefined function, naming the file and line of the call.
+
+    found = undefined_call(message, shader_path)   # (file:line, name) or None
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from .source_text import blank_comments, included_files, read_source
+
+# The first error of either compiler when a call's name has no function at all: Mesa's GLSL
+# ("FILE:LINE:COL: error: no function with name 'X'") and glslang's HLSL front end
+# ("FILE:LINE: error: 'X' : no matching overloaded function found", which it also says for a
+# call whose arguments match none of a name's overloads: the definitions are looked for below).
+_NO_FUNCTION = re.compile(r"^(?P<file>\S+?):(?P<line>\d+):(?:\d+:)? error: (?:no function with name '(?P<glsl>\w+)'|"
+                          r"'(?P<hlsl>\w+)' : no matching overloaded function found)")
+
+
+def _defines(text: str, name: str) -> bool:
+    """Whether ``text`` (comments blanked) defines or declares a function ``name`` or a macro of it."""
+    return re.search(rf"(?:\b\w+\s+{name}\s*\(|^[ \t]*#[ \t]*define[ \t]+{name}\b)", text, re.M) is not None
+
+
+def _layer_defines(name: str) -> bool:
+    """Whether pbrlab's Unity layer (its library files, the package stand-ins) names ``name``."""
+    from .unprovided import provided_names
+    return name in provided_names()
+
+
+def undefined_call(message: str, shader) -> tuple[str, str] | None:
+    """(``file:line`` of the call, the function's name) when the first error of ``message`` is a
+    call of a function that no file the shader reads defines (module docstring), else None."""
+    first = next((line for line in message.splitlines() if "error" in line.lower()), "")
+    m = _NO_FUNCTION.match(first.strip())
+    if m is None:
+        return None
+    name = m.group("glsl") or m.group("hlsl")
+    shader = Path(shader)
+    try:
+        own = blank_comments(read_source(shader))
+    except OSError:
+        return None
+    files = {shader.resolve(): own, **included_files(own, shader.parent)}
+    if _layer_defines(name) or any(_defines(text, name) for text in files.values()):
+        return None
+    written = Path(m.group("file"))
+    # glslang names a file by its base name: the shader's or one of the files it includes
+    where = next((p for p in files if Path(p).name == written.name), written) if not written.is_absolute() else written
+    return f"{where}:{m.group('line')}", name
