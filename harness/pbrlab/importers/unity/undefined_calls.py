@@ -6,6 +6,7 @@ Unity's compiler refuses such a shader too ("undeclared identifier"), so the ref
 the project's own code calls an undefined function, naming the file and line of the call.
 
     found = undefined_call(message, shader_path)   # (file:line, name) or None
+    name = unity_library_function(message)          # a Unity ShaderLibrary function pbrlab lacks, or None
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ import re
 from pathlib import Path
 
 from .source_text import blank_comments, included_files, read_source
+from .unity_library_names import UNITY_LIBRARY_NAMES
 
 # The first error of either compiler when a call's name has no function at all: Mesa's GLSL
 # ("FILE:LINE:COL: error: no function with name 'X'") and glslang's HLSL front end
@@ -21,6 +23,15 @@ from .source_text import blank_comments, included_files, read_source
 # call whose arguments match none of a name's overloads: the definitions are looked for below).
 _NO_FUNCTION = re.compile(r"^(?P<file>\S+?):(?P<line>\d+):(?:\d+:)? error: (?:no function with name '(?P<glsl>\w+)'|"
                           r"'(?P<hlsl>\w+)' : no matching overloaded function found)")
+
+
+def unity_library_function(message: str) -> str | None:
+    """The name of the first error's call when it is a function of Unity's URP or Core
+    ShaderLibrary (unity_library_names) that pbrlab's layer does not define, else None."""
+    first = next((line for line in message.splitlines() if "error" in line.lower()), "")
+    m = _NO_FUNCTION.match(first.strip())
+    name = m and (m.group("glsl") or m.group("hlsl"))
+    return name if name and name in UNITY_LIBRARY_NAMES and not _layer_defines(name) else None
 
 
 def _defines(text: str, name: str) -> bool:
@@ -48,9 +59,18 @@ def undefined_call(message: str, shader) -> tuple[str, str] | None:
     except OSError:
         return None
     files = {shader.resolve(): own, **included_files(own, shader.parent)}
-    if _layer_defines(name) or any(_defines(text, name) for text in files.values()):
-        return None
-    written = Path(m.group("file"))
-    # glslang names a file by its base name: the shader's or one of the files it includes
-    where = next((p for p in files if Path(p).name == written.name), written) if not written.is_absolute() else written
-    return f"{where}:{m.group('line')}", name
+    if _layer_defines(name) or name in UNITY_LIBRARY_NAMES or any(_defines(text, name) for text in files.values()):
+        return None  # (a name of Unity's library pbrlab lacks: unity_library_function)
+    return f"{_calling_file(m.group('file'), int(m.group('line')), name, files)}:{m.group('line')}", name
+
+
+def _calling_file(written: str, line: int, name: str, files: dict):
+    """The file an error names: as written when absolute (the GLSL compiler's), else (glslang names
+    a file by its base name) the one of ``files`` of that name whose line ``line`` calls ``name``."""
+    if Path(written).is_absolute():
+        return written
+    for path, text in files.items():
+        rows = text.splitlines()
+        if Path(path).name == Path(written).name and 0 < line <= len(rows) and name in rows[line - 1]:
+            return path
+    return written

@@ -227,7 +227,12 @@ def raise_named(exc: Exception, path) -> None:
             f"(the compiler's words follow)\n{exc}") from None
     found = named_missing(str(exc), path)
     if found is None:
-        from .undefined_calls import undefined_call
+        from .undefined_calls import undefined_call, unity_library_function
+        name = unity_library_function(str(exc))
+        if name is not None:
+            raise UnityShaderError(f"{path}: uses {name}, a Unity name pbrlab does not provide (a function of Unity's "
+                                   f"URP or Core RP ShaderLibrary); pbrlab does not provide it "
+                                   f"(the compiler's words follow)\n{exc}") from None
         call = undefined_call(str(exc), path)
         if call is not None:
             at, name = call
