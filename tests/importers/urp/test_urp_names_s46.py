@@ -61,20 +61,17 @@ def test_a_missing_include_in_angle_brackets_is_refused_by_name(tmp_path, langua
 def test_four_argument_output_sh4_is_the_ambient_probe_at_the_normal(tmp_path, language):
     """Unity 6.0's OUTPUT_SH4 (position, normal, view direction, the SH output; Unity 6.1 added
     the probe occlusion output, test_urp_unity6_names) writes the ambient probe's SH at the normal
-    as the five-argument form does without probe volumes. Normal +y: the float64 SH9 irradiance
-    along +y over pi (unity_AmbientSky's value), within AMBIENT_BOUND. Control: the SH along -y
-    (unity_AmbientGround), which differs by far more than the bound; and the spelling renames the
+    as the five-argument form does without probe volumes. Normal -y: the float64 SH9 irradiance
+    along -y over pi (unity_AmbientGround's value), within AMBIENT_BOUND. Control: the SH along +y
+    (unity_AmbientSky), which differs by far more than the bound; and the spelling renames the
     four-argument call only (a five-argument call keeps its name)."""
-    text = NAMES44_SHADER % {
-        "properties": "", "includes": AMBIENT_INCLUDE, "globals": "struct ShOut { float3 sh; };",
-        "body": "ShOut o; o.sh = float3(0, 0, 0); float3 p = float3(0.3, 0.2, 0.1);"
-                " OUTPUT_SH4(p, float3(0, 1, 0), GetWorldSpaceNormalizeViewDir(p), o.sh);"
-                " return float4(o.sh, 1.0);"}
-    pixels, scene = render_constant(tmp_path, text, language)
-    expected = _expected_ambient(scene, "unity_AmbientSky")
-    err = np.abs(pixels[:, :3] - expected).max(axis=1)
-    assert (err > AMBIENT_BOUND).mean() == 0.0, (err.max(), pixels[0], expected)
-    assert np.abs(_expected_ambient(scene, "unity_AmbientGround") - expected).max() > 100 * AMBIENT_BOUND
+    body = ("float3 sh = float3(0, 0, 0); float3 p = float3(0.3, 0.2, 0.1);"
+            " OUTPUT_SH4(p, float3(0, -1, 0), GetWorldSpaceNormalizeViewDir(p), sh); return float4(sh, 1.0);")
+    pixels, scene = render_constant(
+        tmp_path, NAMES44_SHADER % {"properties": "", "includes": AMBIENT_INCLUDE, "globals": "", "body": body}, language)
+    ground, sky = (_expected_ambient(scene, n) for n in ("unity_AmbientGround", "unity_AmbientSky"))
+    assert (np.abs(pixels[:, :3] - ground).max(axis=1) > AMBIENT_BOUND).mean() == 0.0, (pixels[0], ground)
+    assert np.abs(sky - ground).max() > 100 * AMBIENT_BOUND
     assert respelled("OUTPUT_SH4(a, f(b, c), d, o.sh);") == "OUTPUT_SH4_FOUR_ARGUMENTS(a, f(b, c), d, o.sh);"
     assert respelled("OUTPUT_SH4(a, b, d, o.sh, o.occ);") == "OUTPUT_SH4(a, b, d, o.sh, o.occ);"
 
