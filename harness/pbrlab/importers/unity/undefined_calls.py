@@ -5,8 +5,8 @@ ShaderLibrary define none; ``ShadeGI(...)`` after the project renamed its lighti
 Unity's compiler refuses such a shader too ("undeclared identifier"), so the refusal says that
 the project's own code calls an undefined function, naming the file and line of the call.
 
-    found = undefined_call(message, shader_path)   # (file:line, name) or None
-    name = unity_library_function(message)          # a Unity ShaderLibrary function pbrlab lacks, or None
+    found = undefined_call(message, shader_path, provided)   # (file:line, name) or None
+    name = unity_library_function(message, provided)          # a Unity ShaderLibrary function pbrlab lacks, or None
 """
 
 from __future__ import annotations
@@ -25,13 +25,14 @@ _NO_FUNCTION = re.compile(r"^(?P<file>\S+?):(?P<line>\d+):(?:\d+:)? error: (?:no
                           r"'(?P<hlsl>\w+)' : no matching overloaded function found)")
 
 
-def unity_library_function(message: str) -> str | None:
+def unity_library_function(message: str, provided) -> str | None:
     """The name of the first error's call when it is a function of Unity's URP or Core
-    ShaderLibrary (unity_library_names) that pbrlab's layer does not define, else None."""
+    ShaderLibrary (unity_library_names) that pbrlab's layer does not define (not in ``provided``,
+    unprovided.provided_names), else None."""
     first = next((line for line in message.splitlines() if "error" in line.lower()), "")
     m = _NO_FUNCTION.match(first.strip())
     name = m and (m.group("glsl") or m.group("hlsl"))
-    return name if name and name in UNITY_LIBRARY_NAMES and not _layer_defines(name) else None
+    return name if name and name in UNITY_LIBRARY_NAMES and name not in provided else None
 
 
 def _defines(text: str, name: str) -> bool:
@@ -39,15 +40,10 @@ def _defines(text: str, name: str) -> bool:
     return re.search(rf"(?:\b\w+\s+{name}\s*\(|^[ \t]*#[ \t]*define[ \t]+{name}\b)", text, re.M) is not None
 
 
-def _layer_defines(name: str) -> bool:
-    """Whether pbrlab's Unity layer (its library files, the package stand-ins) names ``name``."""
-    from .unprovided import provided_names
-    return name in provided_names()
-
-
-def undefined_call(message: str, shader) -> tuple[str, str] | None:
+def undefined_call(message: str, shader, provided) -> tuple[str, str] | None:
     """(``file:line`` of the call, the function's name) when the first error of ``message`` is a
-    call of a function that no file the shader reads defines (module docstring), else None."""
+    call of a function that no file the shader reads nor pbrlab's layer (``provided``) defines
+    (module docstring), else None."""
     first = next((line for line in message.splitlines() if "error" in line.lower()), "")
     m = _NO_FUNCTION.match(first.strip())
     if m is None:
@@ -59,7 +55,7 @@ def undefined_call(message: str, shader) -> tuple[str, str] | None:
     except OSError:
         return None
     files = {shader.resolve(): own, **included_files(own, shader.parent)}
-    if _layer_defines(name) or name in UNITY_LIBRARY_NAMES or any(_defines(text, name) for text in files.values()):
+    if name in provided or name in UNITY_LIBRARY_NAMES or any(_defines(text, name) for text in files.values()):
         return None  # (a name of Unity's library pbrlab lacks: unity_library_function)
     return f"{_calling_file(m.group('file'), int(m.group('line')), name, files)}:{m.group('line')}", name
 

@@ -11,6 +11,7 @@ import functools
 import re
 
 from .source_text import UnityShaderError
+from .undefined_calls import undefined_call, unity_library_function
 
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
@@ -227,13 +228,12 @@ def raise_named(exc: Exception, path) -> None:
             f"(the compiler's words follow)\n{exc}") from None
     found = named_missing(str(exc), path)
     if found is None:
-        from .undefined_calls import undefined_call, unity_library_function
-        name = unity_library_function(str(exc))
+        name = unity_library_function(str(exc), _provided())
         if name is not None:
             raise UnityShaderError(f"{path}: uses {name}, a Unity name pbrlab does not provide (a function of Unity's "
                                    f"URP or Core RP ShaderLibrary); pbrlab does not provide it "
                                    f"(the compiler's words follow)\n{exc}") from None
-        call = undefined_call(str(exc), path)
+        call = undefined_call(str(exc), path, _provided())
         if call is not None:
             at, name = call
             raise UnityShaderError(
