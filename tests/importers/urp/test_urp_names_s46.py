@@ -114,3 +114,63 @@ def test_a_unity_library_function_pbrlab_lacks_is_named_as_unitys(tmp_path, lang
     text = NAMES44_SHADER % {"properties": "", "includes": "", "globals": "", "body": body}
     with pytest.raises(PbrlabError, match=rf"uses {name}, a Unity name pbrlab does not provide"):
         render_constant(tmp_path, text, language, environment=False)
+
+
+# --- Core RP's FastSign and ApplyLut2D (a project's copy of URP's post-processing Common.hlsl) ----
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_fast_sign_counts_zero_as_positive(tmp_path, language):
+    """Core's FastSign: -1 for -0.3, +1 for 0 (ignoreNegZero, the default: -0 is +0), -1 for -0 with
+    ignoreNegZero false (its sign bit). The pixel maps each to 0.5 + 0.25 s: exact. Control: HLSL's
+    sign(0) is 0 (0.5), which differs from FastSign's 1 (0.75)."""
+    body = ("float z = -0.3 * 0.0;"  # -0 at run time (a literal -0.0 may be folded to +0)
+            " return float4(0.5 + 0.25 * FastSign(-0.3), 0.5 + 0.25 * FastSign(0.0),"
+            " 0.5 + 0.25 * FastSign(z, false), 1.0);")
+    text = NAMES44_SHADER % {"properties": "", "includes": "", "globals": "", "body": body}
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
+    assert (pixels[:, :3] == [0.25, 0.75, 0.25]).all(), pixels[0]
+    assert 0.5 + 0.25 * np.sign(0.0) != 0.75
+
+
+LUT_PASS = NAMES44_SHADER.replace('Shader "t/names44" {', 'Shader "t/lut" {')
+
+
+def _render_lut(tmp_path, language, body):
+    """The pixels of a pass that grades through _Lut, a 2-slice identity table (4 x 2 texels)."""
+    from pbrlab.checking import unity_corpus as corpus
+    from pbrlab.foundation.images import write_png
+    from pbrlab.importers.loader import parse_scene
+    from pbrlab.render.renderer import render_scene
+    # texel (x = 2 b + r, row from the top = 1 - g) holds (r, g, b), each 0 or 1: the same value
+    # in sRGB and linear, so the table is the identity whatever the texture's colour space
+    lut = np.zeros((2, 4, 4), np.uint8)
+    for x in range(4):
+        for row in range(2):
+            lut[row, x] = [255 * (x % 2), 255 * (1 - row), 255 * (x // 2), 255]
+    write_png(tmp_path / "lut.png", lut)
+    shader = tmp_path / "t.shader"
+    shader.write_text(LUT_PASS % {"properties": '_Lut ("lut", 2D) = "white" {}', "includes": AMBIENT_INCLUDE.replace(
+        "universal/ShaderLibrary/Lighting.hlsl", "core/ShaderLibrary/Color.hlsl"),
+        "globals": "TEXTURE2D(_Lut); SAMPLER(sampler_Lut);", "body": body})
+    data = corpus.scene_for(shader)
+    data["materials"]["m"]["properties"] = {"_Lut": {"path": str(tmp_path / "lut.png")}}
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    return image[image[..., 3] == 1.0, :3]
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_apply_lut_2d_of_an_identity_table_returns_its_input(tmp_path, language):
+    """Core's ApplyLut2D of a colour through a strip table with scaleOffset (1 / width, 1 / height,
+    N - 1): trilinear interpolation of the table, so an identity table (N = 2, corners 0 and 1)
+    returns the colour, (0.25, 0.75, 0.5) here. Bound: bilinear filtering's weights, which GL lets
+    an implementation hold to 8 fractional bits (llvmpipe does): 2^-8 per lookup, two lookups
+    blended (the weights here, 1/4 and 3/4, are exact in 8 bits). Control: a wrong scaleOffset (1 /
+    height 0.75 for 0.5, a table of another size) moves the lookup off the texel centres and onto
+    another slice: it differs by more than the bound."""
+    body = ("float3 c = ApplyLut2D(TEXTURE2D_ARGS(_Lut, sampler_Lut), float3(0.25, 0.75, 0.5),"
+            " float3(0.25, 0.5, 1.0)); return float4(c, 1.0);")
+    got = _render_lut(tmp_path, language, body)
+    bound = 2 * 2.0 ** -8
+    assert got.shape[0] > 200
+    assert (np.abs(got - [0.25, 0.75, 0.5]).max(axis=1) > bound).mean() == 0.0, got[0]
+    edges = _render_lut(tmp_path, language, body.replace("float3(0.25, 0.5, 1.0)", "float3(0.25, 0.75, 1.0)"))
+    assert (np.abs(edges - [0.25, 0.75, 0.5]).max(axis=1) > bound).mean() > 0.9

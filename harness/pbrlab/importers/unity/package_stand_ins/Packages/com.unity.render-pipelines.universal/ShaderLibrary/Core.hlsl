@@ -305,6 +305,11 @@ float Max3(float a, float b, float c) { return max(max(a, b), c); }
 float2 Max3(float2 a, float2 b, float2 c) { return max(max(a, b), c); }
 float3 Max3(float3 a, float3 b, float3 c) { return max(max(a, b), c); }
 float4 Max3(float4 a, float4 b, float4 c) { return max(max(a, b), c); }
+// Core RP's Common.hlsl FastSign: -1 for a negative value, 1 for a positive one; zero, +0 or -0,
+// is 1 (Core's default, ignoreNegZero true: -0 counted as +0, as mathematics treats 0);
+// with ignoreNegZero false, -0 is -1 (its sign bit).
+float FastSign(float s) { return s >= 0.0 ? 1.0 : -1.0; }
+float FastSign(float s, bool ignoreNegZero) { return ignoreNegZero ? FastSign(s) : ((asuint(s) >> 31) != 0u ? -1.0 : 1.0); }
 // Core RP's Color.hlsl Luminance: Rec. 709 relative luminance of a linear colour (ITU-R BT.709,
 // the sRGB primaries; weights sum to 1). The Unity prelude's Luminance is the built-in pipeline's
 // (unity_ColorSpaceLuminance, linear weights summing to 0.504): URP programs never see it, so
