@@ -102,13 +102,13 @@ def test_an_undefined_function_is_refused_as_the_projects_mistake(tmp_path, lang
 
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_a_unity_library_function_pbrlab_lacks_is_named_as_unitys(tmp_path, language):
-    """A call of a function Core RP's ShaderLibrary defines (Color.hlsl's ApplyLut2D) that pbrlab's
+    """A call of a function Core RP's ShaderLibrary defines (Color.hlsl's ApplyLut3D) that pbrlab's
     stand-ins do not: the refusal names it as one of Unity's names pbrlab does not provide, not as
     the project's mistake (unity_library_names). Control: Remap, which Unity's library does not
     define, is the project's (test above)."""
     from pbrlab.importers.unity.unity_library_names import UNITY_LIBRARY_NAMES
     from pbrlab.importers.unity.unprovided import provided_names
-    name = next(n for n in ("ApplyLut2D", "ApplyLut3D", "GetLutStripValue") if n not in provided_names())
+    name = next(n for n in ("ApplyLut3D", "GetLutStripValue", "RangeRemap") if n not in provided_names())
     assert name in UNITY_LIBRARY_NAMES and "Remap" not in UNITY_LIBRARY_NAMES
     body = f"float3 c = {name}(float3(0.5, 0.5, 0.5), float3(1.0, 1.0, 1.0));\n return float4(c, 1.0);"
     text = NAMES44_SHADER % {"properties": "", "includes": "", "globals": "", "body": body}
