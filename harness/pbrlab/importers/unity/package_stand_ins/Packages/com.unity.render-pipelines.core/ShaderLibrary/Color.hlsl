@@ -39,20 +39,4 @@ float3 HsvToRgb(float3 c) {
     return c.z * lerp(float3(1.0, 1.0, 1.0), saturate(p - 1.0), c.y);
 }
 
-// Core RP's ApplyLut2D: a colour graded through a 3D lookup table stored as a 2D strip, N slices
-// of N x N side by side (width N^2, height N), scaleOffset = (1 / width, 1 / height, N - 1).
-// The blue channel picks two neighbouring slices (its scaled value's floor and the next one),
-// red and green address a texel inside each, mapped onto the texel centres (half a texel in from
-// each side: x N-1 / N + 1 / (2 N) of a slice's width); the two bilinear samples are blended by
-// the blue's fraction: trilinear interpolation of the table.
-float3 ApplyLut2D(TEXTURE2D_PARAM(tex, samplerTex), float3 uvw, float3 scaleOffset) {
-    float slice = uvw.z * scaleOffset.z;
-    float shift = floor(slice);
-    float2 uv = uvw.xy * scaleOffset.z * scaleOffset.xy + scaleOffset.xy * 0.5;
-    uv.x += shift * scaleOffset.y;
-    float3 lower = SAMPLE_TEXTURE2D_LOD(tex, samplerTex, uv, 0.0).rgb;
-    float3 upper = SAMPLE_TEXTURE2D_LOD(tex, samplerTex, uv + float2(scaleOffset.y, 0.0), 0.0).rgb;
-    return lerp(lower, upper, slice - shift);
-}
-
 #endif
