@@ -192,6 +192,30 @@ def _tex2d_with_derivatives(text: str) -> str:
     return "".join(out) + text[pos:]
 
 
+# URP's OUTPUT_SH4 by its arity: Unity 6.0 (URP 17.0) introduced it with four arguments (position,
+# normal, view direction, the SH output), Unity 6.1 (URP 17.1) added a fifth (the probe occlusion
+# output); a shader is written for one. Neither glslang's preprocessor nor GLSL's has variadic or
+# overloaded macros, so the stand-in Lighting.hlsl defines the five-argument name and
+# OUTPUT_SH4_FOUR_ARGUMENTS; a four-argument call is spelled so (not where the text defines a
+# function-like OUTPUT_SH4 itself: its own macro, read as written).
+_OUTPUT_SH4 = re.compile(r"\bOUTPUT_SH4\s*\(")
+_OWN_OUTPUT_SH4 = re.compile(r"^[ \t]*#[ \t]*define[ \t]+OUTPUT_SH4\(", re.M)
+OUTPUT_SH4_FOUR = "OUTPUT_SH4_FOUR_ARGUMENTS"
+
+
+def _output_sh4_by_arity(text: str) -> str:
+    if "OUTPUT_SH4" not in text or _OWN_OUTPUT_SH4.search(text):
+        return text
+    out, pos = [], 0
+    for m in _OUTPUT_SH4.finditer(text):
+        found = call_arguments(text, m.end() - 1)
+        if m.start() < pos or found is None or len(found[0]) != 4:
+            continue
+        out += [text[pos:m.start()], OUTPUT_SH4_FOUR, text[m.start() + len("OUTPUT_SH4"):m.end()]]
+        pos = m.end()
+    return "".join(out) + text[pos:]
+
+
 # A directive that names a hint itself (a project's copy of Core's API/GLCore.hlsl defines them,
 # its Validate.hlsl tests them: ``#ifndef UNITY_BRANCH``): the name is kept there.
 _NAMING_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(?:define|undef|ifdef|ifndef)[ \t]+$|\bdefined[ \t]*\(?[ \t]*$", re.M)
@@ -240,7 +264,8 @@ def respelled(text: str) -> str:
     UnityCG's legacy depth macros written out, a conditional's OpenGL macros undefined,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
-    matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a flat
+    matrix swizzle as a constructor of its elements, a four-argument tex2D as tex2Dgrad, a four-argument
+    OUTPUT_SH4 (Unity 6.0's) as OUTPUT_SH4_FOUR_ARGUMENTS, a flat
     initialiser list of an array of vectors grouped per element, a for-loop variable used after its
     loop declared before it (loop_scope), a parameter's ``in out`` as ``inout``, a half literal
     ``0.5h`` as ``0.5f``, a function whose texture lookup's offset is its parameter specialised per
@@ -255,7 +280,7 @@ def respelled(text: str) -> str:
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
     text = _rename_own_library_functions(text)
     text = combined_samplers.spelled(text)  # SAMPLER(x) read by tex2D(x, uv): a sampler2D
-    text = _matrix_swizzles(_tex2d_with_derivatives(text))
+    text = _matrix_swizzles(_tex2d_with_derivatives(_output_sh4_by_arity(text)))
     text = grouped_flat_initialisers(text)  # float2 a[4] = { 8 numbers }: one constructor per element
     text = declared_before_initialised(text)  # float4 c = ... c ...: C's scope, as FXC reads it
     text = loop_variables_in_enclosing_scope(text)  # for (int k ...) {} ... k: FXC's scope

@@ -41,7 +41,7 @@ from .empty_arguments import empty_arguments_spelled
 from .include_separators import forward_slashed_includes
 from .normal_maps import stored_normal_map
 from .properties import TextureValue
-from .source_text import (CGINC, INCLUDE, INCLUDE_WITH_PRAGMAS, PACKAGE_STAND_INS, blank_comments, included_files,
+from .source_text import (CGINC, INCLUDE, PACKAGE_STAND_INS, includes_respelled, blank_comments, included_files,
                           included_text, read_source, resolve_included, top_level)
 
 VERTEX = {"sphere": "sphere.vert", "mesh": "mesh.vert"}
@@ -244,8 +244,8 @@ def hlsl_includes(shader) -> dict:
         # (its include names as Unity reads them: include_separators)
         spelled = _fxc_spelled(empty_arguments_spelled(cg_spellings.respelled(forward_slashed_includes(text)), included),
                                included, getattr(shader, "srp", False))
-        # (read_source spelled an #include_with_pragmas as #include; glslang reads the file raw)
-        if spelled != text or INCLUDE_WITH_PRAGMAS.encode() in Path(path).read_bytes():
+        # (read_source spelled an #include_with_pragmas as #include, <name> as "name"; glslang reads the file raw)
+        if spelled != text or includes_respelled(Path(path)):
             out[path] = spelled
     return out
 

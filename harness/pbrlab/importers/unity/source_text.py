@@ -269,10 +269,26 @@ _INCLUDE_WITH_PRAGMAS = re.compile(r"^([ \t]*#[ \t]*)include_with_pragmas\b", re
 INCLUDE_WITH_PRAGMAS = "include_with_pragmas"
 
 
+# ``#include <UnityInstancing.cginc>``: Unity's compiler reads an include named in angle brackets
+# as it reads a quoted one (the including file's folder, then Unity's CGIncludes: the built-in
+# shaders' own UnityCG.cginc includes its siblings either way); pbrlab's expander and glslang's
+# -I search take quoted names only. Every file read is spelled with quotes (offsets kept).
+_ANGLE_INCLUDE = re.compile(r'^([ \t]*#[ \t]*include[ \t]*)<([^<>"\n]+)>', re.M)
+
+
 def plain_includes(text: str) -> str:
-    """``text`` with each ``#include_with_pragmas`` line an ``#include`` line (offsets kept)."""
+    """``text`` with each ``#include_with_pragmas`` line an ``#include`` line and each include's
+    name in angle brackets quoted (offsets kept)."""
     pad = " " * (len(INCLUDE_WITH_PRAGMAS) - len("include"))
-    return _INCLUDE_WITH_PRAGMAS.sub(lambda m: m.group(1) + "include" + pad, text)
+    text = _INCLUDE_WITH_PRAGMAS.sub(lambda m: m.group(1) + "include" + pad, text)
+    return _ANGLE_INCLUDE.sub(lambda m: f'{m.group(1)}"{m.group(2)}"', text)
+
+
+def includes_respelled(path: Path) -> bool:
+    """Whether ``read_source`` spells an include line of the file otherwise than written
+    (``plain_includes``): glslang, reading the file itself, needs the spelled copy."""
+    raw = Path(path).read_bytes().decode("latin-1")
+    return plain_includes(raw) != raw
 
 
 def _read_include(path: Path):

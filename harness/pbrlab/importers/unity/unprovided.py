@@ -11,6 +11,7 @@ import functools
 import re
 
 from .source_text import UnityShaderError
+from .undefined_calls import undefined_call, unity_library_function
 
 # name -> the Unity feature it belongs to (docs/unity.md, "Unity shaders": what is refused and why).
 UNPROVIDED = {
@@ -52,7 +53,6 @@ UNPROVIDED = {
                      "SampleTexture2DArrayBicubicLOD"),
                     "Core RP's Filtering.hlsl (B-spline bicubic and biquadratic texture filters), whose stand-in "
                     "declares none of them"),
-    "unity_LightmapFade": "baked lightmaps, which the harness does not bake (the fade of realtime light into dual lightmaps)",
 }
 _NAME = re.compile(r"\b(" + "|".join(sorted(UNPROVIDED, key=len, reverse=True)) + r")\b")
 
@@ -135,6 +135,11 @@ def _provided() -> frozenset:
     from ...scene.gbuffer_surface import CAMERA_TEXTURES
     names.update(CAMERA_TEXTURES)
     return frozenset(names)
+
+
+def provided_names() -> frozenset:
+    """The names pbrlab's Unity layer defines (_provided)."""
+    return _provided()
 
 
 def _unprovided_spelled(text: str):
@@ -223,6 +228,18 @@ def raise_named(exc: Exception, path) -> None:
             f"(the compiler's words follow)\n{exc}") from None
     found = named_missing(str(exc), path)
     if found is None:
+        name = unity_library_function(str(exc), _provided())
+        if name is not None:
+            raise UnityShaderError(f"{path}: uses {name}, a Unity name pbrlab does not provide (a function of Unity's "
+                                   f"URP or Core RP ShaderLibrary); pbrlab does not provide it "
+                                   f"(the compiler's words follow)\n{exc}") from None
+        call = undefined_call(str(exc), path, _provided())
+        if call is not None:
+            at, name = call
+            raise UnityShaderError(
+                f"{at}: calls {name}, a function that neither the shader, the files it includes nor Unity's "
+                f"libraries define: the project's own code calls an undefined function, which Unity's compiler "
+                f"refuses too (the compiler's words follow)\n{exc}") from None
         raise exc
     name, feature = found
     what = feature if feature.startswith(("a Unity name", "one of Unity's")) else f"part of {feature}"

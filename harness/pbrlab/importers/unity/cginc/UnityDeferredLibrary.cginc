@@ -47,6 +47,12 @@ static float4 _LightDir = float4(0.0, 0.0, 0.0, 0.0);
 static float4 pbrlab_LightCone = float4(0.0, 0.0, 0.0, 0.0);  // a spot's (cos outer, 1 / (cos inner - cos outer)): pbrlab's cone
 static float pbrlab_LightRange = 0.0;    // the light's range (pbrlab's falloff reaches 0 there)
 static const float _LightAsQuad = 0.0;
+// The legacy lighting pre-pass's fade of realtime light into Unity 4's dual lightmaps (near
+// lightmap + realtime light close by, far lightmap beyond: fade = distance * z + w, the light
+// scaled by 1 - fade). Unity 5 removed dual lightmaps (Unity 5.0 upgrade guide: "Dual lightmaps
+// ... removed"); with no fade active the term is zero, Unity's value of a global nothing sets, and
+// the light is drawn unfaded: (0, 0, 0, 0).
+static const float4 unity_LightmapFade = float4(0.0, 0.0, 0.0, 0.0);
 
 UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
 

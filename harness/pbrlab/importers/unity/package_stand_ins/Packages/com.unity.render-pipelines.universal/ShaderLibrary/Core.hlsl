@@ -305,6 +305,11 @@ float Max3(float a, float b, float c) { return max(max(a, b), c); }
 float2 Max3(float2 a, float2 b, float2 c) { return max(max(a, b), c); }
 float3 Max3(float3 a, float3 b, float3 c) { return max(max(a, b), c); }
 float4 Max3(float4 a, float4 b, float4 c) { return max(max(a, b), c); }
+// Core RP's Common.hlsl FastSign: -1 for a negative value, 1 for a positive one; zero, +0 or -0,
+// is 1 (Core's default, ignoreNegZero true: -0 counted as +0, as mathematics treats 0);
+// with ignoreNegZero false, -0 is -1 (its sign bit).
+float FastSign(float s) { return s >= 0.0 ? 1.0 : -1.0; }
+float FastSign(float s, bool ignoreNegZero) { return ignoreNegZero ? FastSign(s) : ((asuint(s) >> 31) != 0u ? -1.0 : 1.0); }
 // Core RP's Color.hlsl Luminance: Rec. 709 relative luminance of a linear colour (ITU-R BT.709,
 // the sRGB primaries; weights sum to 1). The Unity prelude's Luminance is the built-in pipeline's
 // (unity_ColorSpaceLuminance, linear weights summing to 0.504): URP programs never see it, so
@@ -317,6 +322,23 @@ float3 Desaturate(float3 value, float saturation) {
     float mean = (value.r + value.g + value.b) / 3.0;
     return mean + (value - mean) * saturation;
 }
+// Core RP's Color.hlsl ApplyLut2D (here, where the texture macros are: pbrlab's Color.hlsl stand-in
+// is read without them): a colour graded through a 3D lookup table stored as a 2D strip, N slices
+// of N x N side by side (width N^2, height N), scaleOffset = (1 / width, 1 / height, N - 1).
+// The blue channel picks two neighbouring slices (its scaled value's floor and the next one),
+// red and green address a texel inside each, mapped onto the texel centres (half a texel in from
+// each side: x N-1 / N + 1 / (2 N) of a slice's width); the two bilinear samples are blended by
+// the blue's fraction: trilinear interpolation of the table.
+float3 ApplyLut2D(TEXTURE2D_PARAM(tex, samplerTex), float3 uvw, float3 scaleOffset) {
+    float slice = uvw.z * scaleOffset.z;
+    float shift = floor(slice);
+    float2 uv = uvw.xy * scaleOffset.z * scaleOffset.xy + scaleOffset.xy * 0.5;
+    uv.x += shift * scaleOffset.y;
+    float3 lower = SAMPLE_TEXTURE2D_LOD(tex, samplerTex, uv, 0.0).rgb;
+    float3 upper = SAMPLE_TEXTURE2D_LOD(tex, samplerTex, uv + float2(scaleOffset.y, 0.0), 0.0).rgb;
+    return lerp(lower, upper, slice - shift);
+}
+
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
 // Core RP's SpaceTransforms.hlsl: the position of the view being drawn, in world space. Unity
 // returns the primary camera's (URP: _WorldSpaceCameraPos) in a camera's pass, or the view

@@ -229,6 +229,7 @@ float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 
 #define OUTPUT_LIGHTMAP_UV(lightmapUV, lightmapScaleOffset, OUT) OUT.xy = lightmapUV.xy * lightmapScaleOffset.xy + lightmapScaleOffset.zw
 #define OUTPUT_SH(normalWS, OUT)
 #define OUTPUT_SH4(absolutePositionWS, normalWS, viewDir, OUT, OUT_OCCLUSION)
+#define OUTPUT_SH4_FOUR_ARGUMENTS(absolutePositionWS, normalWS, viewDir, OUT)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleLightmap(lmName, normalWSName)
 #else
 float3 SampleLightmap(float2 staticLightmapUV, float3 normalWS) { return float3(0.0, 0.0, 0.0); }
@@ -241,9 +242,11 @@ float3 SampleLightmap(float2 staticLightmapUV, float2 dynamicLightmapUV, float3 
 // Unity 6.1's form, with the position and view direction adaptive probe volumes read and the
 // probe occlusion they write: pbrlab has no probe volumes, so the ambient probe's SH at the
 // normal, as OUTPUT_SH, and the occlusion argument unread (URP writes it only under
-// USE_APV_PROBE_OCCLUSION). Unity 6.0's four-argument form cannot share the name (no variadic
-// macros in glslang's preprocessor).
+// USE_APV_PROBE_OCCLUSION). Unity 6.0's four-argument form, the same SH without the occlusion,
+// cannot share the name (no variadic macros in glslang's preprocessor): a four-argument call is
+// spelled OUTPUT_SH4_FOUR_ARGUMENTS (cg_spellings).
 #define OUTPUT_SH4(absolutePositionWS, normalWS, viewDir, OUT, OUT_OCCLUSION) OUT.xyz = SampleSHVertex(normalWS)
+#define OUTPUT_SH4_FOUR_ARGUMENTS(absolutePositionWS, normalWS, viewDir, OUT) OUT.xyz = SampleSHVertex(normalWS)
 #define SAMPLE_GI(lmName, shName, normalWSName) SampleSHPixel(shName, normalWSName)
 #endif
 
