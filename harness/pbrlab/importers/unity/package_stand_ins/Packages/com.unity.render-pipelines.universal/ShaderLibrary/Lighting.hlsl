@@ -122,6 +122,11 @@ float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
 // strength, soft flag, fade scale and bias). No shadow map here: every texel of it would read
 // lit (1), so SampleShadowmap's attenuation, lerp(1, map, strength), is 1 for any strength (the
 // main light's is 0, as URP's with shadows off), and the texture is never sampled.
+// The maps are declared as URP's Shadows.hlsl declares them, depth textures with comparison
+// samplers (TEXTURE2D_SHADOW, SAMPLER_CMP), so a program's own SAMPLE_TEXTURE2D_SHADOW of them
+// compiles; pbrlab binds each to URP's empty shadow map (importers/unity/shadow_maps.py: one
+// texel at the far plane's depth, which every comparison passes: 1, lit), what URP binds while
+// no light casts shadows.
 struct ShadowSamplingData {
     float4 shadowOffset0;
     float4 shadowOffset1;
@@ -129,8 +134,10 @@ struct ShadowSamplingData {
     float4 shadowOffset3;
     float4 shadowmapSize;
 };
-TEXTURE2D(_MainLightShadowmapTexture);
-SAMPLER(sampler_MainLightShadowmapTexture);
+TEXTURE2D_SHADOW(_MainLightShadowmapTexture);
+SAMPLER_CMP(sampler_MainLightShadowmapTexture);
+TEXTURE2D_SHADOW(_AdditionalLightsShadowmapTexture);
+SAMPLER_CMP(sampler_AdditionalLightsShadowmapTexture);
 ShadowSamplingData GetMainLightShadowSamplingData() {
     ShadowSamplingData data;
     data.shadowOffset0 = float4(0.0, 0.0, 0.0, 0.0);
@@ -141,7 +148,7 @@ ShadowSamplingData GetMainLightShadowSamplingData() {
     return data;
 }
 float4 GetMainLightShadowParams() { return float4(0.0, 0.0, 0.0, 0.0); }
-float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
+float SampleShadowmap(TEXTURE2D_SHADOW_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
                       float4 shadowParams, bool isPerspectiveProjection) {
     return 1.0;
 }
