@@ -1,6 +1,6 @@
 // pbrlab test shader (written for pbrlab): URP's comparison-sampler family. Red: a shadow map of
 // the material's (its red channel the stored depths) compared with _Reference at the pixel's
-// screen uv through SAMPLE_TEXTURE2D_SHADOW; green: the same through Direct3D 11's
+// screen uv through SAMPLE_TEXTURE2D_SHADOW in a function it is passed to; green: the same through Direct3D 11's
 // SampleCmpLevelZero on a SamplerComparisonState the shader declares; blue: the fraction of
 // _Steps references spread over the depth range that URP's main light shadow map
 // (_MainLightShadowmapTexture) finds lit, times its reads at the point's shadow coordinate
@@ -53,9 +53,14 @@ Shader "pbrlab/test/urp shadow compare" {
                 return lit / _Steps;
             }
 
+            // a map passed on to a function that compares (the program reads _Depths only so)
+            float Compare(TEXTURE2D_SHADOW_PARAM(map, sampler_map), float2 uv, float z) {
+                return SAMPLE_TEXTURE2D_SHADOW(map, sampler_map, float3(uv, z));
+            }
+
             float4 frag(Varyings IN) : SV_Target {
                 float2 uv = GetNormalizedScreenSpaceUV(IN.positionCS);
-                float compared = SAMPLE_TEXTURE2D_SHADOW(_Depths, sampler_Depths, float3(uv, _Reference));
+                float compared = Compare(TEXTURE2D_SHADOW_ARGS(_Depths, sampler_Depths), uv, _Reference);
                 float again = _DepthsAgain.SampleCmpLevelZero(sampler_DepthsAgain, uv, _Reference);
                 // URP's main light: its shadow map over the whole depth range, and at the point's
                 // own shadow coordinate, as a god-ray shader's ray march reads it
