@@ -36,7 +36,6 @@ from ..foundation.file_identity import FileCache, include_closure
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
 from . import source_limits
-from .shadow_sampler_globals import typed_shadow_globals
 from .shaders import GLSL_ROOT, _is_guarded, strip_bom
 
 HLSL_ROOT = locate("hlsl_ports")  # $PBRLAB_HLSL_ROOT, the wheel's package data, or the checkout
@@ -261,7 +260,7 @@ def cross_to_glsl(spirv: bytes, version: int = 330, *, plain_uniforms: bool = Fa
         proc = _run_tool([cross, "--version", str(version), "--no-es", *flags, str(path)], "<SPIR-V>")
     if proc.returncode != 0:
         raise ShaderCompileError(f"spirv-cross failed:\n{(proc.stdout + proc.stderr).strip()}")
-    return typed_shadow_globals(proc.stdout)  # a comparison-sampled global passed to a function
+    return proc.stdout
 
 
 # Cross-compiled shaders kept per process; each entry is rebuilt when a file the HLSL

@@ -185,19 +185,13 @@ def test_a_map_passed_on_to_a_comparing_function_is_a_comparison_sampler():
     """A global Texture2D that HLSL compares only inside a function it passes it to: glslang
     (--auto-sampled-textures) declares the global a plain sampler2D and the parameter a
     sampler2DShadow, so the call has no GLSL overload; the cross-compiled GLSL declares the
-    global sampler2DShadow (gpu/shadow_sampler_globals.py), and a stage that only declares it
+    global sampler2DShadow (importers/unity/shadow_sampler_globals.py), and a stage that only declares it
     takes the same type. Control: spirv-cross's own text, the plain sampler2D."""
     from pbrlab.gpu import hlsl
-    from pbrlab.gpu.shadow_sampler_globals import same_shadow_globals
-    spirv = hlsl.compile_spirv(_PASSED_ON, "passed_on.hlsl")
-    glsl = hlsl.cross_to_glsl(spirv)
-    assert "uniform sampler2DShadow _M;" in glsl
-    import subprocess
-    import tempfile
-    with tempfile.TemporaryDirectory() as tmp:
-        (Path(tmp) / "in.spv").write_bytes(spirv)
-        plain = subprocess.run([hlsl.SPIRV_CROSS, "--version", "330", "--no-es", str(Path(tmp) / "in.spv")],
-                               capture_output=True, text=True, check=True).stdout
+    from pbrlab.importers.unity.shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
+    plain = hlsl.cross_to_glsl(hlsl.compile_spirv(_PASSED_ON, "passed_on.hlsl"))
     assert "uniform sampler2D _M;" in plain  # control: spirv-cross alone
+    glsl = typed_shadow_globals(plain)
+    assert "uniform sampler2DShadow _M;" in glsl
     vertex = "layout(binding = 0) uniform sampler2D _M;\nvoid main() {}\n"
     assert "uniform sampler2DShadow _M;" in same_shadow_globals({"vertex": vertex, "fragment": glsl})["vertex"]

@@ -17,10 +17,10 @@ import tempfile
 from pathlib import Path
 
 from ...gpu import hlsl, programs, shaders
-from ...gpu.shadow_sampler_globals import same_shadow_globals
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from . import finite_texture_coordinates, generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
+from .shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_includes, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -127,7 +127,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
                 paths += stages[stage].paths + ported_sources(virtual)
         if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py)
-            retyped = same_shadow_globals({stage: glsl for stage, (glsl, _) in crossed.items()})
+            retyped = same_shadow_globals({stage: typed_shadow_globals(glsl) for stage, (glsl, _) in crossed.items()})
             stages.update({stage: shaders.Source(retyped[stage], names) for stage, (_, names) in crossed.items()})
         if geometry:
             include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)

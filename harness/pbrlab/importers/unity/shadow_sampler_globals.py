@@ -10,8 +10,7 @@ there with a SamplerComparisonState). Such a global is declared here with the pa
 comparison type, as if the global were read directly: a texture also read without comparison
 then fails to compile in GLSL, naming the read.
 
-    glsl = typed_shadow_globals(glsl)
-    stages = same_shadow_globals(stages)   # {stage: glsl}: one type per global across the stages
+    stages = same_shadow_globals({stage: typed_shadow_globals(glsl) ...})   # one type per global
 
 A stage that does not read such a global still declares it (glslang keeps every global at -Od),
 as a plain sampler: GLSL's linker refuses one uniform of two types, so each stage's declaration
@@ -22,28 +21,12 @@ from __future__ import annotations
 
 import re
 
+from .source_text import call_arguments
+
 _SHADOW = {"sampler2D": "sampler2DShadow", "sampler2DArray": "sampler2DArrayShadow", "samplerCube": "samplerCubeShadow"}
 _GLOBAL = re.compile(r"^(.*\buniform\s+)(sampler2D|sampler2DArray|samplerCube)(\s+)(\w+)(\s*;)", re.M)
 _DEFINITION = re.compile(r"^\w+\s+(\w+)\s*\(([^()]*)\)\s*$", re.M)
 _SHADOW_PARAMETER = re.compile(r"^\s*(?:(?:in|const|highp|mediump|lowp)\s+)*(sampler2DShadow|sampler2DArrayShadow|samplerCubeShadow)\s+\w+\s*$")
-
-
-def _arguments(text: str, open_paren: int) -> list[str] | None:
-    """The top-level comma-separated arguments of the call whose '(' is at ``open_paren``."""
-    depth, start, out = 0, open_paren + 1, []
-    for i in range(open_paren, len(text)):
-        c = text[i]
-        if c in "([":
-            depth += 1
-        elif c in ")]":
-            depth -= 1
-            if depth == 0:
-                out.append(text[start:i].strip())
-                return out
-        elif c == "," and depth == 1:
-            out.append(text[start:i].strip())
-            start = i + 1
-    return None
 
 
 def typed_shadow_globals(glsl: str) -> str:
@@ -61,7 +44,8 @@ def typed_shadow_globals(glsl: str) -> str:
     compared = {}
     calls = re.compile(r"\b(" + "|".join(map(re.escape, shadow_parameters)) + r")\s*\(")
     for m in calls.finditer(glsl):
-        args = _arguments(glsl, m.end() - 1)
+        found = call_arguments(glsl, m.end() - 1)
+        args = found[0] if found else None
         for index, kind in shadow_parameters[m.group(1)].items():
             if args is not None and index < len(args) and plain.get(args[index]) and _SHADOW[plain[args[index]]] == kind:
                 compared[args[index]] = kind
