@@ -149,6 +149,14 @@ vec4 tex3D(sampler3D s, vec3 uvw) { return texture(s, pbr_unity_finite_coordinat
 vec4 tex3Dlod(sampler3D s, vec4 uvw) { return textureLod(s, pbr_unity_finite_coordinate(uvw.xyz), uvw.w); }
 // Texture2D.Load(int3(x, y, mip)) as the GLSL port spells it (importers/unity/texture_methods.py).
 vec4 pbr_unity_load(sampler2D s, ivec3 p) { return texelFetch(s, p.xy, p.z); }
+// A comparison sampler's read (Texture2D.SampleCmp / SampleCmpLevelZero, Core RP's
+// SAMPLE_TEXTURE2D_SHADOW and its array and cube forms, as the GLSL port spells them): the
+// reference (the last component) against each texel the filter reads, by the depth texture's
+// comparison (importers/unity/shadow_maps.py: LEQUAL, 1 where it passes), the results filtered;
+// a depth texture's one level, so SampleCmpLevelZero's level 0 is this read in every stage.
+float pbr_unity_sample_cmp(sampler2DShadow s, vec3 uv_reference) { return texture(s, uv_reference); }
+float pbr_unity_sample_cmp(sampler2DArrayShadow s, vec4 uv_layer_reference) { return texture(s, uv_layer_reference); }
+float pbr_unity_sample_cmp(samplerCubeShadow s, vec4 direction_reference) { return texture(s, direction_reference); }
 // Explicit derivatives (Cg's tex2Dgrad, and tex2D's four-argument form: the same lookup).
 vec4 tex2Dgrad(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, pbr_unity_finite_coordinate(uv), dx, dy); }
 vec4 tex2D(sampler2D s, vec2 uv, vec2 dx, vec2 dy) { return textureGrad(s, pbr_unity_finite_coordinate(uv), dx, dy); }

@@ -71,7 +71,7 @@ GL_UNIFORM_TYPES = {
     0x8B65: "mat2x3", 0x8B66: "mat2x4", 0x8B67: "mat3x2", 0x8B68: "mat3x4", 0x8B69: "mat4x2", 0x8B6A: "mat4x3",
     0x8B5D: "sampler1D", 0x8B5E: "sampler2D", 0x8B5F: "sampler3D", 0x8B60: "samplerCube",
     0x8B61: "sampler1DShadow", 0x8B62: "sampler2DShadow", 0x8DC1: "sampler2DArray",
-    0x8DC4: "samplerCubeShadow", 0x8DC9: "isampler2D", 0x8DD2: "usampler2D",
+    0x8DC4: "sampler2DArrayShadow", 0x8DC5: "samplerCubeShadow", 0x8DC9: "isampler2D", 0x8DD2: "usampler2D",
 }
 # Programs kept per GL context (in ctx.extra, so they go with it), least recently used
 # dropped and released beyond this: about 0.5 MB of llvmpipe code each (issue 14 measured

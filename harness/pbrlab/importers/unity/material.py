@@ -31,7 +31,8 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import conditionals, dynamic_lightmaps, fullscreen_pass, graphics_api, light_space, lightmaps, unset_samplers, user_definitions
+from . import (conditionals, dynamic_lightmaps, fullscreen_pass, graphics_api, light_space, lightmaps, shadow_maps,
+               unset_samplers, user_definitions)
 from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
@@ -200,6 +201,7 @@ class ProgramPass:
         unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
         used = lightmaps.bind(program, self.lightmap, cache, unit)
         used += dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
+        used += shadow_maps.bind_unset_compared(program, cache, unit + used)  # URP's empty shadow map
         unset_samplers.bind_unset(program, cache, environment_cube, unit + used)  # last: what no binder set
 
     def sphere_vertex_array(self, ctx, program):

@@ -126,7 +126,8 @@ _INITIALISED_GLOBAL = re.compile(r"^(\s*)(?:uniform\s+)?((?:[biu]?vec[234]|mat[2
 # there would not be the material's value. A texture declared by a statement of the body (ending
 # in ``;``: no parameter) makes the macro a globals' declaration: each declaration statement of
 # its body (names may be pasted, ``T##_ST``) gets ``uniform``, as _globals_uniform gives code's.
-_GLOBAL_TYPES = r"(?:[biu]?vec[234]|mat[234]|float|int|uint|sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)"
+_GLOBAL_TYPES = (r"(?:[biu]?vec[234]|mat[234]|float|int|uint|sampler2DArrayShadow|sampler2DShadow|samplerCubeShadow|"
+                 r"sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)")
 _DEFINE_HEAD = re.compile(r"#[ \t]*define[ \t]+\w+(?:\([^()]*\))?")
 _BODY_DECLARATION = r"(^|;|\\\n)(\s*)(%s\s+[\w#]+\s*(?:\[\s*\w+\s*\])?\s*;)"
 _BODY_SAMPLER = re.compile(_BODY_DECLARATION % r"sampler\w+")
@@ -153,7 +154,8 @@ def _globals_uniform(code: str) -> str:
     ``static`` dropped before one (_STATIC_GLOBAL)."""
     code = _uniforms_in_declaring_defines(code)
     lines, depth, out = code.split("\n"), 0, []
-    decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
+    decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2DArrayShadow|sampler2DShadow|samplerCubeShadow|"
+                      r"sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
     continued = False  # the line continues a preprocessor directive (a macro's body, after a backslash)
     for line in lines:
         directive = continued or line.lstrip().startswith("#")
@@ -299,10 +301,24 @@ _SRP_TEXTURE_MACROS = {
     "TEXTURE2D_ARRAY_ARGS": lambda a: f"{a[0]}, {a[1]}",
     "SAMPLE_TEXTURE2D_ARRAY": lambda a: f"UNITY_SAMPLE_TEX2DARRAY({a[0]}, float3({a[2]}, {a[3]}))",
     "SAMPLE_TEXTURE2D_ARRAY_LOD": lambda a: f"UNITY_SAMPLE_TEX2DARRAY_LOD({a[0]}, float3({a[2]}, {a[3]}), {a[4]})",
-    "TEXTURE2D_SHADOW": lambda a: f"sampler2D {a[0]}",
+    # shadow maps: GLSL's comparison samplers (a depth texture with its comparison on:
+    # shadow_maps.py binds it), read by cg_compat's pbr_unity_sample_cmp, Core RP's
+    # SAMPLE_TEXTURE2D_SHADOW (coord3.xy the location, coord3.z the reference; a longer coordinate's
+    # first three, as D3D11.hlsl's (coord3).xy / (coord3).z take them), its array's (the layer
+    # after the coordinate) and cube's (coord4.xyz the direction, coord4.w the reference)
+    "TEXTURE2D_SHADOW": lambda a: f"sampler2DShadow {a[0]}",
     "SAMPLER_CMP": lambda a: f"static const int {a[0]} = 0",
-    "TEXTURE2D_SHADOW_PARAM": lambda a: f"sampler2D {a[0]}, int {a[1]}",
+    "TEXTURE2D_SHADOW_PARAM": lambda a: f"sampler2DShadow {a[0]}, int {a[1]}",
     "TEXTURE2D_SHADOW_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURE2D_SHADOW": lambda a: f"pbr_unity_sample_cmp({a[0]}, ({a[2]}).xyz)",
+    "TEXTURE2D_ARRAY_SHADOW": lambda a: f"sampler2DArrayShadow {a[0]}",
+    "TEXTURE2D_ARRAY_SHADOW_PARAM": lambda a: f"sampler2DArrayShadow {a[0]}, int {a[1]}",
+    "TEXTURE2D_ARRAY_SHADOW_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURE2D_ARRAY_SHADOW": lambda a: f"pbr_unity_sample_cmp({a[0]}, float4(({a[2]}).xy, {a[3]}, ({a[2]}).z))",
+    "TEXTURECUBE_SHADOW": lambda a: f"samplerCubeShadow {a[0]}",
+    "TEXTURECUBE_SHADOW_PARAM": lambda a: f"samplerCubeShadow {a[0]}, int {a[1]}",
+    "TEXTURECUBE_SHADOW_ARGS": lambda a: f"{a[0]}, {a[1]}",
+    "SAMPLE_TEXTURECUBE_SHADOW": lambda a: f"pbr_unity_sample_cmp({a[0]}, float4(({a[2]}).xyz, ({a[2]}).w))",
     # Core RP's texel loads (Texture2D.Load(int3(coord, mip))): the port's Load (texture_methods)
     "LOAD_TEXTURE2D": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, 0))",
     "LOAD_TEXTURE2D_LOD": lambda a: f"pbr_unity_load({a[0]}, int3({a[1]}, {a[2]}))",
@@ -356,6 +372,7 @@ def _expand_srp_texture_macros(code: str) -> str:
         args, end = found
         need = {"TEXTURE2D": 1, "TEXTURE2D_X": 1, "TEXTURE2D_X_FLOAT": 1, "TEXTURECUBE": 1, "TEXTURE3D": 1,
                 "TEXTURE2D_ARRAY": 1, "TEXTURE2D_SHADOW": 1, "SAMPLER": 1, "SAMPLER_CMP": 1,
+                "TEXTURE2D_ARRAY_SHADOW": 1, "TEXTURECUBE_SHADOW": 1,
                 **dict.fromkeys(_PRECISION_FORMS, 1)}.get(m.group(1), 2)
         if m.group(1).startswith("SAMPLE_"):
             need = 4 if m.group(1).endswith(("_LOD", "_BIAS")) else 5 if m.group(1).endswith("_GRAD") else 3

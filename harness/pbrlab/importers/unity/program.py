@@ -33,7 +33,7 @@ from ...foundation.file_identity import include_closure
 from ...gpu.programs import TEMPLATES, template_source
 from ...gpu.programs import set_uniform as _set
 from ...gpu.programs import set_uniform_array
-from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates, generate, port, texture_arrays
+from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates, generate, port, shadow_maps, texture_arrays
 from . import vendored_library
 from . import model as M
 from . import unprovided
@@ -403,7 +403,8 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
         if isinstance(value, TextureValue):
-            arrayed = texture_arrays.bind_array(program, name, value, cache, unit)  # a one-layer array
+            arrayed = (texture_arrays.bind_array(program, name, value, cache, unit)  # a one-layer array
+                       or shadow_maps.bind_compared(program, name, value, cache, unit))  # a depth texture
             unit += arrayed
             bound = not arrayed and _bind_texture(program, name, kind, unit)  # False: the compiler dropped it
             sized = not arrayed and bool(programs.uniforms_named(program, f"{name}_TexelSize"))

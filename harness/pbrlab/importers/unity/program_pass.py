@@ -20,6 +20,7 @@ from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from . import finite_texture_coordinates, generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
+from .shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_includes, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -97,7 +98,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         if vf.language == glslprogram.LANGUAGE:  # a GLSLPROGRAM: its GLSL as written, in either language
             program, paths = glslprogram.build_glsl_program(ctx, vf, defines, blended, dirs)
             return indexed(program, vf.path), paths
-        stages, paths = {}, [vf.path]
+        stages, paths, crossed = {}, [vf.path], {}
         tessellated = vf.tessellation is not None  # #pragma hull / domain: tessellation_stage.py
         geometry = vf.geometry is not None or tessellated  # a #pragma geometry: geometry_stage.py
         behind = geometry_stage.fragment_pass if vf.geometry is not None else tessellation_stage.fragment_pass
@@ -115,7 +116,7 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                     glsl = rename_vertex_globals(glsl)
                 elif geometry:
                     glsl = geometry_stage.fragment_inputs_renamed(glsl)
-                stages[stage] = shaders.Source(glsl, [f"{display} (GLSL from spirv-cross)"])
+                crossed[stage] = (glsl, [f"{display} (GLSL from spirv-cross)"])
                 paths += include_closure(text, [*dirs, hlsl.HLSL_ROOT])
             else:
                 include, virtual = program_include(vf)
@@ -125,6 +126,9 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                     text = geometry_stage.fragment_inputs_renamed(text)
                 stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
                 paths += stages[stage].paths + ported_sources(virtual)
+        if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py)
+            retyped = same_shadow_globals({stage: typed_shadow_globals(glsl) for stage, (glsl, _) in crossed.items()})
+            stages.update({stage: shaders.Source(retyped[stage], names) for stage, (_, names) in crossed.items()})
         if geometry:
             include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)
             shown = str(vf.path) if language == "hlsl" else vf.path.name

@@ -43,14 +43,27 @@ _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
 # function's ``TEXTURE2D_PARAM(t, s)``): the same objects (Core RP's API/D3D11.hlsl declares
 # ``Texture2D t`` by them), whose methods are spelled here too; the macros themselves are left
 # for port.py's SRP pass, which spells them as combined samplers after this one.
-_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE)(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
+_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE|TEXTURE2D_SHADOW|TEXTURECUBE_SHADOW)"
+                                r"(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
 _MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
-               "TEXTURECUBE": "TextureCube"}
-_METHOD = re.compile(r"\b(\w+)\s*\.\s*(Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
+               "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube"}
+_METHOD = re.compile(r"\b(\w+)\s*\.\s*(SampleCmpLevelZero|SampleCmp|Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
+# A texture some method compares (``t.SampleCmp(s, uv, z)`` with a SamplerComparisonState s): a
+# GLSL comparison sampler, a depth texture with its comparison on (shadow_maps.py); its reads are
+# cg_compat's pbr_unity_sample_cmp (Microsoft's HLSL reference, "SampleCmp": the reference z against
+# each texel read, the 0/1 results filtered; SampleCmpLevelZero: the same on mip 0, a depth
+# texture's one level). A texture both compared and sampled is refused by GLSL (no tex2D of a
+# sampler2DShadow), naming the line.
+_COMPARED_READ = re.compile(r"\b(\w+)\s*\.\s*SampleCmp(?:LevelZero)?\s*\(")
+_COMPARED = {"Texture2D": "sampler2DShadow", "TextureCube": "samplerCubeShadow"}
 
 
 def _call(kind: str, method: str, texture: str, args: list):
     """The Cg spelling of ``texture.method(args)`` (args with the sampler first, except Load)."""
+    if method in ("SampleCmp", "SampleCmpLevelZero") and len(args) == 3:
+        # (a location longer than the texture's cut to its first components, as FXC passes it)
+        location = f"({args[1]}).xy" if kind == "Texture2D" else f"({args[1]}).xyz"
+        return f"pbr_unity_sample_cmp({texture}, float{3 if kind == 'Texture2D' else 4}({location}, {args[2]}))"
     if kind == "Texture2D":
         if method == "Load" and len(args) == 1:
             return f"pbr_unity_load({texture}, {args[0]})"
@@ -153,14 +166,22 @@ def spelled_texture_methods(code: str, known: dict | None = None) -> str:
         kinds.setdefault(m.group(2), _MACRO_KIND[m.group(1)])
     if not kinds:
         return code
+    compared = set(_COMPARED_READ.findall(code))
+
+    def combined(kind: str, name: str) -> str:
+        return (_COMPARED if name in compared else _COMBINED)[kind]
     # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
     # sampler an unused int (the caller passes the sampler's int: the declarations below)
-    code = _PARAMETER.sub(lambda m: f"{m.group(1)}{_COMBINED.get(m.group(2), 'int')}{m.group(3)}{m.group(4)}", code)
+    code = _PARAMETER.sub(lambda m: f"{m.group(1)}{combined(m.group(2), m.group(4)) if m.group(2) in _COMBINED else 'int'}"
+                                    f"{m.group(3)}{m.group(4)}", code)
 
     def declaration(m):
         names = [n.strip() for n in m.group(2).split(",")]
         if m.group(1) in _COMBINED:
-            return f"{'uniform ' if m.group(0).startswith('uniform') else ''}{_COMBINED[m.group(1)]} {', '.join(names)};"
+            keep = "uniform " if m.group(0).startswith("uniform") else ""
+            if not compared.intersection(names):
+                return f"{keep}{_COMBINED[m.group(1)]} {', '.join(names)};"
+            return " ".join(f"{keep}{combined(m.group(1), n)} {n};" for n in names)
         return "static const int " + ", ".join(f"{n} = 0" for n in names) + ";"
     code = _DECLARATION.sub(declaration, code)
     out, pos = [], 0

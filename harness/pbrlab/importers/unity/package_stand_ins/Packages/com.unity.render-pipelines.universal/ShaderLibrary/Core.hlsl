@@ -114,6 +114,16 @@
 #define TEXTURE2D_SHADOW_PARAM(t, s) Texture2D t, SamplerComparisonState s
 #define TEXTURE2D_SHADOW_ARGS(t, s) t, s
 #define SAMPLE_TEXTURE2D_SHADOW(t, s, coord3) t.SampleCmpLevelZero(s, (coord3).xy, (coord3).z)
+// their array and cube forms (Core RP's API: the array's layer after the coordinate; the
+// cube's coord4.xyz the direction, coord4.w the reference)
+#define TEXTURE2D_ARRAY_SHADOW(t) Texture2DArray t
+#define TEXTURE2D_ARRAY_SHADOW_PARAM(t, s) Texture2DArray t, SamplerComparisonState s
+#define TEXTURE2D_ARRAY_SHADOW_ARGS(t, s) t, s
+#define SAMPLE_TEXTURE2D_ARRAY_SHADOW(t, s, coord3, index) t.SampleCmpLevelZero(s, float3((coord3).xy, index), (coord3).z)
+#define TEXTURECUBE_SHADOW(t) TextureCube t
+#define TEXTURECUBE_SHADOW_PARAM(t, s) TextureCube t, SamplerComparisonState s
+#define TEXTURECUBE_SHADOW_ARGS(t, s) t, s
+#define SAMPLE_TEXTURECUBE_SHADOW(t, s, coord4) t.SampleCmpLevelZero(s, (coord4).xyz, (coord4).w)
 // Core RP's texel loads: integer texel coordinates, mip 0 unless given (Texture2D.Load)
 #define LOAD_TEXTURE2D(t, coord) t.Load(int3(coord, 0))
 #define LOAD_TEXTURE2D_LOD(t, coord, lod) t.Load(int3(coord, lod))

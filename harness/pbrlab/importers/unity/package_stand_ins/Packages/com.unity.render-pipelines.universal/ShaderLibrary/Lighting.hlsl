@@ -121,7 +121,12 @@ float MainLightRealtimeShadow(float4 shadowCoord) { return 1.0; }
 // ShadowSamplingData: the soft-shadow tap offsets and the map's size; _MainLightShadowParams:
 // strength, soft flag, fade scale and bias). No shadow map here: every texel of it would read
 // lit (1), so SampleShadowmap's attenuation, lerp(1, map, strength), is 1 for any strength (the
-// main light's is 0, as URP's with shadows off), and the texture is never sampled.
+// main light's is 0, as URP's with shadows off).
+// The maps are declared as URP's Shadows.hlsl declares them, depth textures with comparison
+// samplers (TEXTURE2D_SHADOW, SAMPLER_CMP), so a program's own SAMPLE_TEXTURE2D_SHADOW of them
+// compiles; pbrlab binds each to URP's empty shadow map (importers/unity/shadow_maps.py: one
+// texel at the far plane's depth, which every comparison passes: 1, lit), what URP binds while
+// no light casts shadows.
 struct ShadowSamplingData {
     float4 shadowOffset0;
     float4 shadowOffset1;
@@ -129,8 +134,10 @@ struct ShadowSamplingData {
     float4 shadowOffset3;
     float4 shadowmapSize;
 };
-TEXTURE2D(_MainLightShadowmapTexture);
-SAMPLER(sampler_MainLightShadowmapTexture);
+TEXTURE2D_SHADOW(_MainLightShadowmapTexture);
+SAMPLER_CMP(sampler_MainLightShadowmapTexture);
+TEXTURE2D_SHADOW(_AdditionalLightsShadowmapTexture);
+SAMPLER_CMP(sampler_AdditionalLightsShadowmapTexture);
 ShadowSamplingData GetMainLightShadowSamplingData() {
     ShadowSamplingData data;
     data.shadowOffset0 = float4(0.0, 0.0, 0.0, 0.0);
@@ -141,9 +148,21 @@ ShadowSamplingData GetMainLightShadowSamplingData() {
     return data;
 }
 float4 GetMainLightShadowParams() { return float4(0.0, 0.0, 0.0, 0.0); }
-float SampleShadowmap(TEXTURE2D_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
+// URP's test for a shadow coordinate outside the shadow map's depth range (beyond the shadow
+// distance: lit), z at or before the near end or at or past the far end of [0, 1].
+// SampleShadowmap reads the map it is given as URP's does: the coordinate divided by w for a
+// perspective (spot) projection, one hardware comparison (URP's soft-shadow taps read the same
+// map around it: the empty map passes them all alike), the result moved towards 1 by 1 - strength
+// (shadowParams.x), and 1 beyond the map's depth range (BEYOND_SHADOW_FAR). It samples the map so
+// that spirv-cross types the texture a caller passes on as a comparison sampler everywhere.
+#define BEYOND_SHADOW_FAR(shadowCoord) ((shadowCoord).z <= 0.0 || (shadowCoord).z >= 1.0)
+float SampleShadowmap(TEXTURE2D_SHADOW_PARAM(ShadowMap, sampler_ShadowMap), float4 shadowCoord, ShadowSamplingData samplingData,
                       float4 shadowParams, bool isPerspectiveProjection) {
-    return 1.0;
+    if (isPerspectiveProjection)
+        shadowCoord.xyz /= shadowCoord.w;
+    float attenuation = SAMPLE_TEXTURE2D_SHADOW(ShadowMap, sampler_ShadowMap, shadowCoord.xyz);
+    attenuation = 1.0 + (attenuation - 1.0) * shadowParams.x;
+    return BEYOND_SHADOW_FAR(shadowCoord) ? 1.0 : attenuation;
 }
 float MainLightShadow(float4 shadowCoord, float3 positionWS, float4 shadowMask, float4 occlusionProbeChannels) { return 1.0; }
 // The main light's channel of the baked shadow mask (URP's _MainLightOcclusionProbes, a one-hot
