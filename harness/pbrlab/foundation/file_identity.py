@@ -99,7 +99,8 @@ def _file_includes(path: Path, search: tuple) -> list[Path]:
 class FileCache:
     """An LRU of at most ``size`` entries, each rebuilt when a file it depends on changed.
 
-    ``get(key, build)``: ``build()`` returns ``(value, paths)``; ``evict(value)`` runs for
+    ``get(key, build)``: ``build()`` returns ``(value, paths)`` (paths None: the value is not
+    kept); ``evict(value)`` runs for
     every entry dropped (by age or because it went stale); ``identity`` tells a path's state
     (file_key, or followed_key).
     """
@@ -122,6 +123,8 @@ class FileCache:
             self._drop(key)
         value, paths = build()
         self.builds += 1
+        if paths is None:  # an answer not to keep
+            return value
         paths = tuple(dict.fromkeys(paths))  # a file included twice is checked once
         self.entries[key] = (value, paths, fingerprint(paths, self.identity))
         while len(self.entries) > self.size:
