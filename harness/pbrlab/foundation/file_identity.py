@@ -81,7 +81,7 @@ def _file_includes(path: Path, search: tuple) -> list[Path]:
     (``_FILE_INCLUDES``) and found again when the file or a folder it was looked for in
     changed: each pass of a many-pass shader reaches the same include files (a 256-pass Amplify
     preview: ~0.27 s a stage to resolve them all again, over two minutes a render)."""
-    key = (str(path), tuple(map(str, search)), safe_paths.outside_allowed(), tuple(safe_paths._OWN_LINK_FOLDERS))
+    key = (str(path), tuple(map(str, search)), safe_paths.reading_rules())
 
     def build():
         try:

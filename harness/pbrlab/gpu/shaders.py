@@ -132,7 +132,7 @@ def _resolve_include_kept(name: str, search: list[Path], probed: list) -> Path |
         looked: list = []
         target = resolve_include(name, search, looked)
         return (target, looked), [*(p.parent for p in looked), *([target] if target else [])]
-    key = (name, tuple(map(str, search)), safe_paths.outside_allowed(), tuple(safe_paths._OWN_LINK_FOLDERS))
+    key = (name, tuple(map(str, search)), safe_paths.reading_rules())
     target, looked = _RESOLVED_INCLUDES.get(key, build)
     probed.extend(looked)
     return target
