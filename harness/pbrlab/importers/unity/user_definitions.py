@@ -106,7 +106,8 @@ def text_defines(program: str, folder) -> dict:
         files = included_files(program, Path(folder))
         # a file read as a legacy code page warns at each read (source_text.read_source): not kept
         kept = all(_is_utf8(path) for path in files)
-        return _defines(_user_text(program, files)), ([*files, *_places(program, Path(folder), files)] if kept else None)
+        places = [*files, *_places(program, Path(folder), files)] if kept else None
+        return _defines(_user_text(program, files)), places
 
     return dict(_TEXT_DEFINES.get(key, build))
 
@@ -130,7 +131,8 @@ def _places(program: str, folder: Path, files: dict) -> list[Path]:
     changed at one could change what the program reads (a superset: the including folder,
     pbrlab's stand-ins, each folder above for a project or package path and its package.json)."""
     out = [CGINC, PACKAGE_STAND_INS]
-    for text, where in [(blank_comments(program), folder), *((text, Path(path).parent) for path, text in files.items())]:
+    texts = [(blank_comments(program), folder), *((text, Path(path).parent) for path, text in files.items())]
+    for text, where in texts:
         for name in INCLUDE.findall(text):
             name = name.lstrip("/")
             out += [where / name, (where / name).parent, (PACKAGE_STAND_INS / name).parent]
