@@ -71,6 +71,12 @@ def trust_links_in(folder: str | Path) -> None:
     _OWN_LINK_FOLDERS.append(os.path.abspath(folder))
 
 
+def reading_rules() -> tuple:
+    """What ``inside`` answers by besides the file system (whether reading outside is allowed,
+    the folders whose links are followed): part of the key of a cached answer of it."""
+    return outside_allowed(), tuple(_OWN_LINK_FOLDERS)
+
+
 def is_within(path: str | Path, folder: str | Path) -> bool:
     """Whether ``path`` is ``folder`` or lies below it (both already resolved)."""
     path, folder = os.fspath(path), os.fspath(folder)

@@ -32,7 +32,7 @@ import urllib.parse
 from pathlib import Path
 
 from ..foundation.errors import PbrlabError, ShaderCompileError
-from ..foundation.file_identity import FileCache, include_closure
+from ..foundation.file_identity import FileCache, followed_key, include_closure
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
 from . import source_limits
@@ -160,17 +160,14 @@ def check_limits(text: str, name: str, include_dirs) -> None:
     MAX_SOURCE_BYTES, or a text (all its files) over the other source_limits. Includes are
     resolved as glslang does: the including file's folder, then ``include_dirs``, then
     HLSL_ROOT; every #include counts, whichever #if holds it."""
-    search = [Path(d) for d in include_dirs] + [HLSL_ROOT]
+    search = tuple(Path(d) for d in include_dirs) + (HLSL_ROOT,)
     texts: dict[Path, str] = {}
     height: dict[Path, int] = {}  # deepest include chain below a file already walked
     pieces = [(name, text)]
 
-    def walk(body: str, display: str, folder: Path | None, stack: tuple) -> int:
+    def walk(includes: list, display: str, stack: tuple) -> int:
         deepest = 0
-        for m in _HLSL_INCLUDE.finditer(body):
-            line = body.count("\n", 0, m.start()) + 1
-            target = next(((d / m.group(1)).resolve() for d in ([folder] if folder else []) + search
-                           if (d / m.group(1)).is_file()), None)
+        for line, target in includes:
             if target is None:
                 continue  # glslang reports it, at this line
             where = f"{display}:{line}"
@@ -181,16 +178,16 @@ def check_limits(text: str, name: str, include_dirs) -> None:
                 raise source_limits.ShaderLimitError(f"{where}: include cycle: {chain}")
             if target not in height:
                 source_limits.check_file_size(target, f"{where}: ")
-                texts[target] = strip_bom(target.read_text(encoding="utf-8", errors="replace"))
+                texts[target], below = _included_file(target, search)
                 pieces.append((str(target), texts[target]))
                 height[target] = 0
                 source_limits.check_include_depth(len(stack), where)
-                height[target] = walk(texts[target], str(target), target.parent, stack + (target,))
+                height[target] = walk(below, str(target), stack + (target,))
             source_limits.check_include_depth(len(stack) + height[target], where)
             deepest = max(deepest, 1 + height[target])
         return deepest
 
-    walk(text, name, None, ("<entry>",))
+    walk(_includes(text, None, search), name, ("<entry>",))
     starts, offset = [], 0
     for display, piece in pieces:
         starts.append((offset, display))
@@ -200,7 +197,37 @@ def check_limits(text: str, name: str, include_dirs) -> None:
         first, display = next((start, shown) for start, shown in reversed(starts) if start < n)
         return f"{display}:{n - first}"
 
-    source_limits.check_text("\n".join(piece for _, piece in pieces), locate)
+    source_limits.check_pieces([piece for _, piece in pieces], locate)
+
+
+def _includes(body: str, folder: Path | None, search: tuple) -> list:
+    """(line, resolved file or None) of each #include of ``body``, as glslang resolves it: the
+    including file's ``folder``, then ``search``."""
+    out = []
+    for m in _HLSL_INCLUDE.finditer(body):
+        line = body.count("\n", 0, m.start()) + 1
+        out.append((line, next(((d / m.group(1)).resolve() for d in ([folder] if folder else []) + list(search)
+                                if (d / m.group(1)).is_file()), None)))
+    return out
+
+
+def _included_file(path: Path, search: tuple) -> tuple:
+    """(the text of the include file ``path``, without a byte-order mark, and _includes of
+    it), kept per process (``_INCLUDED_FILES``) and read again when the file or a folder an
+    include of it was looked for in changed: each pass of a many-pass shader checks the same
+    files (a 256-pass Amplify preview: ~0.2 s a stage to resolve them again)."""
+    def build():
+        body = strip_bom(path.read_text(encoding="utf-8", errors="replace"))
+        names = [m.group(1) for m in _HLSL_INCLUDE.finditer(body)]
+        looked = [(d / name).parent for name in names for d in (path.parent, *search)]
+        return (body, _includes(body, path.parent, search)), [path, *looked]
+
+    return _INCLUDED_FILES.get((str(path), tuple(map(str, search))), build)
+
+
+# _included_file's answers: a file's text and its includes, for the files read last.
+INCLUDED_FILES_CACHED = 512
+_INCLUDED_FILES = FileCache(INCLUDED_FILES_CACHED, identity=followed_key)
 
 
 def _limit_address_space():  # runs in the child, between fork and exec

@@ -28,6 +28,7 @@ import moderngl
 
 from ..foundation import safe_paths
 from ..foundation.errors import LoopLimitWarning, PbrlabError, ShaderCompileError
+from ..foundation.file_identity import FileCache, followed_key
 from ..foundation.locations import locate
 from .compile_messages import compile_failure
 from . import source_limits
@@ -120,6 +121,26 @@ def resolve_include(name: str, search: list[Path], probed: list | None = None) -
         if candidate.is_file():
             return safe_paths.inside(directory, name, f'#include "{name}" (searched in {directory})', climb=True)
     return None
+
+
+def _resolve_include_kept(name: str, search: list[Path], probed: list) -> Path | None:
+    """resolve_include, its answer and the places it looked at kept per process
+    (``_RESOLVED_INCLUDES``) and found again when a folder looked in, or the file found,
+    changed: each pass of a many-pass shader expands the same includes (a 256-pass Amplify
+    preview: ~90 names a stage)."""
+    def build():
+        looked: list = []
+        target = resolve_include(name, search, looked)
+        return (target, looked), [*(p.parent for p in looked), *([target] if target else [])]
+    key = (name, tuple(map(str, search)), safe_paths.reading_rules())
+    target, looked = _RESOLVED_INCLUDES.get(key, build)
+    probed.extend(looked)
+    return target
+
+
+# _resolve_include_kept's answers: a few paths each.
+RESOLVED_INCLUDES_CACHED = 1024
+_RESOLVED_INCLUDES = FileCache(RESOLVED_INCLUDES_CACHED, identity=followed_key)
 
 
 @functools.lru_cache(maxsize=8)
@@ -252,7 +273,7 @@ def expand(text: str, name: str = "<shader>", include_dirs=(), line_directives: 
                 emit_line_marker(file_index, number + 1)
                 continue
             if included not in resolved:  # once per name and expansion: the search path is fixed
-                resolved[included] = resolve_include(included, search, source.probed)
+                resolved[included] = _resolve_include_kept(included, search, source.probed)
             target = resolved[included]
             if target is None and (conditional or depth > 0):
                 # under an #if: the compiler's preprocessor decides whether this line is read, so

@@ -36,10 +36,12 @@ holds it), which only matters for texts near a limit.
 
 from __future__ import annotations
 
+import hashlib
 import re
 from pathlib import Path
 
 from ..foundation.errors import PbrlabError
+from ..foundation.file_identity import FileCache
 
 MAX_SOURCE_BYTES = 16 * 1024 * 1024
 MAX_INCLUDE_DEPTH = 64
@@ -75,10 +77,18 @@ _DEFINE = re.compile(r"^\s*#\s*define\s+([A-Za-z_]\w*)(\(([^)]*)\))?(.*)$")
 _ARRAY = re.compile(r"\[\s*(\d+)[uU]?\s*\]")
 
 
-def _logical_lines(text: str):
+def _logical_lines(text: str, ends: list | None = None):
     """(first physical line number, logical line) with comments blanked (newlines kept, so
-    the numbers hold) and backslash-newlines joined."""
-    stripped = _COMMENT_OR_STRING.sub(lambda m: " " + "\n" * m.group(0).count("\n"), text)
+    the numbers hold) and backslash-newlines joined. ``ends``, when given, gets whether the
+    text ends inside a line that goes on (an unterminated ``/*`` comment, a last line ending in
+    a backslash): the next text joined to it would be read as part of it."""
+    open_comment = []
+
+    def blank(m):
+        if m.group(0).startswith("/*") and (len(m.group(0)) < 4 or not m.group(0).endswith("*/")):
+            open_comment.append(True)  # ran to the end of the text
+        return " " + "\n" * m.group(0).count("\n")
+    stripped = _COMMENT_OR_STRING.sub(blank, text)
     number, pending, start = 0, [], 1
     for number, line in enumerate(stripped.split("\n"), start=1):
         if not pending:
@@ -91,13 +101,73 @@ def _logical_lines(text: str):
         pending = []
     if pending:
         yield start, " ".join(pending)
+    if ends is not None:
+        ends.append(bool(pending or open_comment))
+
+
+def _scanned(text: str) -> tuple:
+    """(the lines of ``text`` the checks read, whether the text ends inside a line that goes
+    on: _logical_lines' ``ends``). Each line: (its number, the name a ``#define`` defines or
+    None for code, the macro's parameters, its tokens (a macro's body), the brackets among
+    them, an array size over MAX_ARRAY_ELEMENTS written on it or None); other directives
+    are not read."""
+    lines, ends = [], []
+    for number, line in _logical_lines(text, ends):
+        definition = _DEFINE.match(line)
+        if definition:
+            params = None if definition.group(2) is None else [p.strip() for p in definition.group(3).split(",") if p.strip()]
+            name, tokens = definition.group(1), _TOKEN.findall(definition.group(4))
+        elif line.lstrip().startswith("#"):
+            continue
+        else:
+            name, params, tokens = None, None, _TOKEN.findall(line)
+        brackets = "".join(t for t in tokens if t in _BRACKETS)
+        over = next((m.group(1) for m in _ARRAY.finditer(line) if int(m.group(1)) > MAX_ARRAY_ELEMENTS), None)
+        lines.append((number, name, params, tokens, brackets, over))
+    return lines, ends[0]
+
+
+_BRACKETS = frozenset("()[]{}")
+# _scanned's answers for the texts seen last (check_pieces: each pass of a many-pass shader
+# checks the same include files again), under a digest of the text: more than the files of a
+# few programs (a built-in program reads ~90 files, a URP one up to ~150), or every pass
+# would push out the files the next one reads.
+SCANNED_CACHED = 1024
+_SCANNED = FileCache(SCANNED_CACHED)
+
+
+def _scanned_kept(text: str) -> tuple:
+    key = hashlib.sha256(text.encode("utf-8", "surrogatepass")).digest()
+    return _SCANNED.get(key, lambda: (_scanned(text), []))
 
 
 def check_text(text: str, locate) -> None:
     """Refuse ``text`` (one program, includes expanded or not) over MAX_SOURCE_BYTES,
     MAX_NESTING, MAX_ARRAY_ELEMENTS or MAX_EXPANDED_TOKENS; ``locate(line)`` names where a
-    line of ``text`` came from ("file:line")."""
-    size = len(text.encode("utf-8", "surrogatepass"))
+    line of ``text`` came from ("file:line"). An expanded text is checked in the pieces its
+    ``#line`` directives start (check_pieces: each file's lines scanned once a process)."""
+    starts = [0, *(m.start() + 1 for m in _LINE_DIRECTIVE.finditer(text))]
+    check_pieces([text[a:b - 1] for a, b in zip(starts, starts[1:])] + [text[starts[-1]:]], locate)
+
+
+_LINE_DIRECTIVE = re.compile(r"\n(?=#line )")
+
+
+def check_pieces(pieces: list[str], locate) -> None:
+    """check_text of ``"\n".join(pieces)`` (a program and the files it includes), each
+    piece's scan kept for the pieces seen last: the same answer, and a file read by many
+    programs is scanned once. Where a piece ends inside a line that goes on into the next,
+    the joined text is scanned as one."""
+    scans = [_scanned_kept(piece) for piece in pieces]
+    if any(ends for _, ends in scans[:-1]):
+        pieces = ["\n".join(pieces)]
+        scans = [_scanned(pieces[0])]
+    _check(pieces, [lines for lines, _ in scans], locate)
+
+
+def _check(pieces: list[str], scans: list, locate) -> None:
+    """check_text's checks on the joined ``pieces``, from each piece's _scanned lines."""
+    size = sum(len(piece.encode("utf-8", "surrogatepass")) for piece in pieces) + len(pieces) - 1
     if size > MAX_SOURCE_BYTES:
         raise ShaderLimitError(f"{locate(1)}: the program is {size} bytes with its includes, over the "
                                f"shader size limit of {MAX_SOURCE_BYTES} (source_limits.MAX_SOURCE_BYTES)")
@@ -105,33 +175,29 @@ def check_text(text: str, locate) -> None:
     defined_at: dict[str, int] = {}
     code: list[str] = []
     depth = 0
-    for number, line in _logical_lines(text):
-        definition = _DEFINE.match(line)
-        if definition:
-            params = None if definition.group(2) is None else [p.strip() for p in definition.group(3).split(",") if p.strip()]
-            body = _TOKEN.findall(definition.group(4))
-            old = macros.get(definition.group(1))
-            if old is None or len(body) >= len(old[1]):  # a redefinition: keep the larger
-                macros[definition.group(1)] = (params, body)
-                defined_at[definition.group(1)] = number
-            tokens = body
-        elif line.lstrip().startswith("#"):
-            continue
-        else:
-            tokens = _TOKEN.findall(line)
-            code.extend(tokens)
-        for token in tokens:
-            if token in "([{":
-                depth += 1
-                if depth > MAX_NESTING:
-                    raise ShaderLimitError(f"{locate(number)}: brackets nested over {MAX_NESTING} deep "
-                                           "(source_limits.MAX_NESTING)")
-            elif token in ")]}":
-                depth = max(depth - 1, 0)
-        for m in _ARRAY.finditer(line):
-            if int(m.group(1)) > MAX_ARRAY_ELEMENTS:
-                raise ShaderLimitError(f"{locate(number)}: an array of {m.group(1)} elements, over the limit "
+    offset = 0  # lines of the pieces before
+    for piece, lines in zip(pieces, scans):
+        for number, name, params, tokens, brackets, over in lines:
+            number += offset
+            if name is not None:
+                old = macros.get(name)
+                if old is None or len(tokens) >= len(old[1]):  # a redefinition: keep the larger
+                    macros[name] = (params, tokens)
+                    defined_at[name] = number
+            else:
+                code.extend(tokens)
+            for token in brackets:
+                if token in "([{":
+                    depth += 1
+                    if depth > MAX_NESTING:
+                        raise ShaderLimitError(f"{locate(number)}: brackets nested over {MAX_NESTING} deep "
+                                               "(source_limits.MAX_NESTING)")
+                else:
+                    depth = max(depth - 1, 0)
+            if over is not None:
+                raise ShaderLimitError(f"{locate(number)}: an array of {over} elements, over the limit "
                                        f"of {MAX_ARRAY_ELEMENTS} (source_limits.MAX_ARRAY_ELEMENTS)")
+        offset += piece.count("\n") + 1
     sizes = _ExpansionSize(macros)
     tokens = sizes.sequence(code, ())[0]
     if tokens > MAX_EXPANDED_TOKENS:

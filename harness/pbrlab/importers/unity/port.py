@@ -33,9 +33,11 @@ port stays line for line with the original and compile errors map back by line):
 from __future__ import annotations
 
 import functools
+import hashlib
 import re
 from pathlib import Path
 
+from ...foundation.file_identity import FileCache
 from . import cg_spellings, cg_types, multisampled_textures
 from . import model as M
 from .geometry_syntax import spell_for_glsl
@@ -453,6 +455,19 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
+    # a port is a function of these texts alone: kept for the texts seen last (each pass of a
+    # shader ports the same include files again: a 256-pass Amplify preview, 6 a pass)
+    key = (hashlib.sha256("\0".join((program, included)).encode("utf-8", "surrogatepass")).digest(), srp)
+    return _PORTED.get(key, lambda: (_ported_text(program, included, srp), []))
+
+
+# port_text's answers (strings of a file's size) under a digest of what they are made from.
+PORTED_CACHED = 256
+_PORTED = FileCache(PORTED_CACHED)
+
+
+def _ported_text(program: str, included: str, srp: bool) -> str:
+    """port_text of ``program`` with the text of the declarations and files it includes."""
     textures = texture_kinds(included)  # the includes' (and sibling includes') texture objects
 
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax

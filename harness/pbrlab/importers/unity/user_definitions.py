@@ -40,9 +40,12 @@ Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading undersco
 
 from __future__ import annotations
 
+import hashlib
 import re
+from pathlib import Path
 
-from .source_text import CGINC, PACKAGE_STAND_INS, blank_comments, included_files
+from ...foundation.file_identity import FileCache, followed_key
+from .source_text import CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_files
 
 # The stand-ins' constants (Core RP Common.hlsl / Macros.hlsl) that step aside: none is read by a
 # stand-in's own code (FLT_MIN, HALF_MIN and HALF_MIN_SQRT are, and are not in this list).
@@ -70,7 +73,11 @@ _GLOBAL = re.compile(r"\b(?:float|half|fixed|real|min16float)4[ \t]+(\w+)[ \t]*[
 def user_text(program: str, folder) -> str:
     """The program and the files it includes that are the shader's own (not pbrlab's stand-ins),
     comments blanked."""
-    own = [text for path, text in included_files(program, folder).items()
+    return _user_text(program, included_files(program, folder))
+
+
+def _user_text(program: str, files: dict) -> str:
+    own = [text for path, text in files.items()
            if not path.is_relative_to(PACKAGE_STAND_INS.resolve()) and not path.is_relative_to(CGINC.resolve())]
     return "\n".join([blank_comments(program), *own])
 
@@ -89,8 +96,56 @@ def program_defines(unity_pass) -> dict:
 
 def text_defines(program: str, folder) -> dict:
     """program_defines of a program's text and the folder its includes are found from (the
-    parser's branches are the drawn program's: parse_pass.py)."""
-    text = user_text(program, folder)
+    parser's branches are the drawn program's: parse_pass.py). Kept per process for the
+    programs seen last (``_TEXT_DEFINES``) and made again when a file it read, or a place an
+    include of it could be found, changed: every pass asks twice (parse_pass, the material),
+    each time reading every file the program includes (a URP program: ~40 ms)."""
+    key = (hashlib.sha256(program.encode("utf-8", "surrogatepass")).digest(), str(folder))
+
+    def build():
+        files = included_files(program, Path(folder))
+        # a file read as a legacy code page warns at each read (source_text.read_source): not kept
+        kept = all(_is_utf8(path) for path in files)
+        places = [*files, *_places(program, Path(folder), files)] if kept else None
+        return _defines(_user_text(program, files)), places
+
+    return dict(_TEXT_DEFINES.get(key, build))
+
+
+# text_defines' answers: a few names each.
+TEXT_DEFINES_CACHED = 256
+_TEXT_DEFINES = FileCache(TEXT_DEFINES_CACHED, identity=followed_key)
+
+
+def _is_utf8(path: Path) -> bool:
+    try:
+        Path(path).read_bytes().decode("utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    return True
+
+
+def _places(program: str, folder: Path, files: dict) -> list[Path]:
+    """Every place source_text.resolve_included may look at for an include of ``program``
+    (from ``folder``) or of the ``files`` it reached (from theirs): a file created, removed or
+    changed at one could change what the program reads (a superset: the including folder,
+    pbrlab's stand-ins, each folder above for a project or package path and its package.json)."""
+    out = [CGINC, PACKAGE_STAND_INS]
+    texts = [(blank_comments(program), folder), *((text, Path(path).parent) for path, text in files.items())]
+    for text, where in texts:
+        for name in INCLUDE.findall(text):
+            name = name.lstrip("/")
+            out += [where / name, (where / name).parent, (PACKAGE_STAND_INS / name).parent]
+            if name.startswith(("Assets/", "Packages/")):
+                rest = name.split("/", 2)[-1]
+                for ancestor in [where, *where.parents]:
+                    out += [ancestor / name, (ancestor / name).parent, ancestor / "package.json",
+                            ancestor / rest, (ancestor / rest).parent]
+    return out
+
+
+def _defines(text: str) -> dict:
+    """text_defines of the program's and its own files' text (comments blanked)."""
     names = ({n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
              | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
     reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
