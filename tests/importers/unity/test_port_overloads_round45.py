@@ -191,3 +191,27 @@ def test_a_member_and_a_local_named_main(tmp_path, language, monkeypatch):
         monkeypatch.setattr(cg_types, "GLSLANG_HLSL_RESERVED", frozenset({"char", "main"}))
         with pytest.raises(PbrlabError, match="main"):
             _render(tmp_path, shader("main_member_old"), language)
+
+
+# A default before a parameter without one (session 46: the port raised a TypeError building the
+# shorter overloads of such a head; a call may leave out only a trailing run of defaulted
+# parameters, so there is no shorter form to build)
+EARLY_DEFAULT_HEAD = """
+        float3 tint(float3 c, half s = 2, float3 add)
+        {
+            return c * s + add;
+        }"""
+EARLY_DEFAULT_BODY = """
+            return float4(tint(float3(0.25, 0.125, 0.5), 0.5, float3(0.125, 0.25, 0)), 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_default_before_a_parameter_without_one(tmp_path, language):
+    """The full call draws c * s + add = (0.25, 0.3125, 0.25) where the compiler takes the head,
+    or the compiler's refusal names the line; never a traceback (the old port's TypeError, which
+    no PbrlabError catches, fails this test)."""
+    shader = _shader(tmp_path, "early_default", EARLY_DEFAULT_BODY, EARLY_DEFAULT_HEAD)
+    try:
+        _assert_colour(tmp_path, shader, language, np.array([0.25, 0.3125, 0.25]))
+    except PbrlabError as error:
+        assert "early_default" in str(error) and "default" in str(error).lower(), str(error)

@@ -988,7 +988,11 @@ class _Parser:
         # known twice) are one function, not an ambiguous pair of overloads
         # (a parameter-list macro's parameters are unknown here: calls to it are left untyped)
         known = self.sym.functions.setdefault(name, []) if not param_macros else []
-        first_default = next((k for k, d in enumerate(defaults) if d is not None), len(defaults))
+        # a call may leave out only a trailing run of defaulted parameters: a default before a
+        # parameter without one (HLSL refuses it: "default parameter missing") makes no shorter form
+        first_default = len(defaults)
+        while first_default > 0 and defaults[first_default - 1] is not None:
+            first_default -= 1
         for k in [len(params), *range(first_default, len(params))]:  # f(a, b = 1) may be called as f(a)
             if Signature(ret, params[:k]) not in known:
                 known.append(Signature(ret, params[:k]))
