@@ -355,11 +355,37 @@ _TRAILING_UNIFORM = re.compile(r"\buniform(?=[ \t]+$)")
 _DEFINE_BODY = re.compile(r"#\s*define\s+\w+(?:\([^()]*\))?\s")
 
 
-def _expand_srp_texture_macros(code: str) -> str:
+# A comparison read of a shadow texture: Core RP's SAMPLE_*_SHADOW, a texture object's
+# SampleCmp(LevelZero), or URP's functions that compare in the map they are given.
+_COMPARES = re.compile(r"\bSAMPLE_(?:TEXTURE2D|TEXTURE2D_ARRAY|TEXTURECUBE)_SHADOW\s*\(|"
+                       r"\.\s*SampleCmp(?:LevelZero)?\s*\(|\bSampleShadowmap(?:Filtered)?\s*\(")
+# the line of a stand-in's own definition of a comparison macro (not a use of it)
+_DEFINES_COMPARISON = re.compile(r"^\s*#\s*define\s+SAMPLE_\w*_SHADOW\b")
+
+# A shadow texture declared (and passed) as a plain texture where nothing compares: GLSL reads a
+# comparison sampler only through a comparison (no texelFetch), and Core RP's TEXTURE2D_SHADOW is
+# a Texture2D on Direct3D 11 that LOAD_TEXTURE2D reads as its depth (test_urp_names_round44).
+_SHADOW_AS_TEXTURE = {"TEXTURE2D_SHADOW": lambda a: f"sampler2D {a[0]}",
+                      "TEXTURE2D_SHADOW_PARAM": lambda a: f"sampler2D {a[0]}, int {a[1]}"}
+
+
+def compares_shadow_textures(text: str) -> bool:
+    """Whether ``text`` (a program with the files it includes) reads a shadow texture through a
+    comparison, also inside a macro of its own (not in the stand-ins' definitions of Core RP's
+    comparison macros)."""
+    for m in _COMPARES.finditer(text):
+        line = text[text.rfind("\n", 0, m.start()) + 1:text.find("\n", m.start()) % (len(text) + 1)]
+        if not _DEFINES_COMPARISON.match(line):
+            return True
+    return False
+
+
+def _expand_srp_texture_macros(code: str, compares: bool = True) -> str:
     """Each use of the SRP texture API on a code line spelled in Cg (``SAMPLE_TEXTURE2D(t, s, uv)``
     -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int), also in a #define's
     replacement text; other preprocessor lines and the name a #define defines (the stand-ins'
-    own definitions) are left alone; lines are kept."""
+    own definitions) are left alone; lines are kept. A program that never ``compares``
+    (compares_shadow_textures) declares its shadow textures as plain ones."""
     out, pos = [], 0
     for m in _SRP_MACRO.finditer(code):
         if m.start() < pos:
@@ -383,7 +409,7 @@ def _expand_srp_texture_macros(code: str) -> str:
             need = 3 if m.group(1).endswith("_LOD") else 2
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
-        spelled = _SRP_TEXTURE_MACROS[m.group(1)](args)
+        spelled = ((not compares and _SHADOW_AS_TEXTURE.get(m.group(1))) or _SRP_TEXTURE_MACROS[m.group(1)])(args)
         # the lines a call spans are kept (an argument dropped takes its line breaks with it)
         spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
         before = code[pos:m.start()]
@@ -474,7 +500,8 @@ def _ported_text(program: str, included: str, srp: bool) -> str:
         text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
         text = _matrix_elements_in_defines(cg_spellings.respelled(text))
         return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures))
-    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)))) if srp else respelled
+    compares = compares_shadow_textures(program + "\n" + included)
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)), compares)) if srp else respelled
     symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
