@@ -42,8 +42,8 @@
 //           the second normalisation is left out; pbrlab's scene programs, which normalise the
 //           normal they build from the tangent frame, define it: 8 to 12 RDNA3 instructions a pixel);
 //           PBR_UNITY_NORMAL_MAP_ENCODING (how UnpackNormal / UnpackScaleNormal read a normal-map
-//           texel: PBR_UNITY_NORMAL_MAP_RGB default, xyz = rgb * 2 - 1, Unity's UNITY_NO_DXT5nm
-//           branch, the glTF-style maps of pbrlab's own materials | PBR_UNITY_NORMAL_MAP_DXT5NM:
+//           texel: PBR_UNITY_NORMAL_MAP_ENCODING_RGB default, xyz = rgb * 2 - 1, Unity's UNITY_NO_DXT5nm
+//           branch, the glTF-style maps of pbrlab's own materials | PBR_UNITY_NORMAL_MAP_ENCODING_DXT5NM:
 //           Unity's desktop branch, UnpackNormalmapRGorAG: x = r * a, y = g, scaled, z rebuilt,
 //           which reads DXT5nm (1, y, 1, x) and BC5 (x, y, 0, 1) alike; the Unity importer's).
 //
@@ -88,13 +88,13 @@
 #error "PBR_ALPHA_MODE: unknown value"
 #endif
 
-#define PBR_UNITY_NORMAL_MAP_RGB 1
-#define PBR_UNITY_NORMAL_MAP_DXT5NM 2
+#define PBR_UNITY_NORMAL_MAP_ENCODING_RGB 1
+#define PBR_UNITY_NORMAL_MAP_ENCODING_DXT5NM 2
 #ifndef PBR_UNITY_NORMAL_MAP_ENCODING
-// PBR_UNITY_NORMAL_MAP_RGB as a number (glsl/README.md, one-level preprocessors)
+// PBR_UNITY_NORMAL_MAP_ENCODING_RGB as a number (glsl/README.md, one-level preprocessors)
 #define PBR_UNITY_NORMAL_MAP_ENCODING 1
 #endif
-#if PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_RGB && PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_DXT5NM
+#if PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_ENCODING_RGB && PBR_UNITY_NORMAL_MAP_ENCODING != PBR_UNITY_NORMAL_MAP_ENCODING_DXT5NM
 #error "PBR_UNITY_NORMAL_MAP_ENCODING: unknown value"
 #endif
 
@@ -127,7 +127,7 @@ struct SurfaceOutputStandardSpecular {
 // (1, y, 1, x) or BC5 (x, y, 0, 1)): x = r * a, y = g, both * 2 - 1 and scaled, z rebuilt as
 // sqrt(1 - saturate(x^2 + y^2)), so the scale tilts the rebuilt normal.
 float3 UnpackScaleNormal(float4 packednormal, float bumpScale) {
-#if PBR_UNITY_NORMAL_MAP_ENCODING == PBR_UNITY_NORMAL_MAP_DXT5NM
+#if PBR_UNITY_NORMAL_MAP_ENCODING == PBR_UNITY_NORMAL_MAP_ENCODING_DXT5NM
     float2 xy = (float2(packednormal.x * packednormal.w, packednormal.y) * 2.0 - 1.0) * bumpScale;
     return float3(xy, sqrt(1.0 - clamp(dot(xy, xy), 0.0, 1.0)));
 #else

@@ -274,7 +274,7 @@ def _defines(defines: dict) -> str:
 # UnpackNormal / UnpackScaleNormal as Unity compiles them for desktop, where UNITY_NO_DXT5nm is
 # undefined (UnityCG.cginc's UnpackNormalmapRGorAG: x = r * a, y = g, z rebuilt), the branch that
 # reads a normal map as the editor stores it there (pbr/unity/surface_standard.glsl,
-# PBR_UNITY_NORMAL_MAP_DXT5NM; importers/unity/normal_maps.py uploads a map in that layout).
+# PBR_UNITY_NORMAL_MAP_ENCODING_DXT5NM; importers/unity/normal_maps.py uploads a map in that layout).
 UNITY_LIBRARY_DEFINES = {"PBR_LIGHT_NDOTL": 1, "PBR_UNITY_NORMAL_MAP_ENCODING": 2}
 
 # HLSL's arrays of arrays (``float w[2][3]``; the type pass keeps them, cg_types.array_suffix):
