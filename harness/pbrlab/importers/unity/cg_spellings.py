@@ -17,6 +17,10 @@ program (offsets and lines kept):
   ``UNITY_UNROLLX(4)``, ...): attributes on Direct3D, nothing on Unity's GLSL targets; blanked
   (a hint, never a change of what is computed), so the Cg type pass reads the statement after
   it (it did not: the literals of such a function kept their ``h`` suffixes in GLSL);
+- a program's own macro whose whole body is such attributes (URP's SMAA include:
+  ``#define SMAA_FLATTEN [flatten]``, then ``SMAA_FLATTEN if (...)``): blanked in the
+  definition, as Unity's own hints are (GLSL has no attribute syntax: the port refused
+  ``unexpected '['`` where the macro was used);
 - Unity 5.3's names of the object matrices, ``_Object2World`` and ``_World2Object``: Unity 5.4
   renamed them ``unity_ObjectToWorld`` / ``unity_WorldToObject`` and its shader upgrader rewrites
   a program that still spells them so (Unity 5.4 release notes, "Shaders: ... automatically
@@ -68,6 +72,11 @@ _TEMPLATE_TYPE = re.compile(r"\b(?:vector\s*<\s*(\w+)\s*,\s*([1-4])\s*>|matrix\s
 _GL_TESTED = re.compile(r"^([ \t]*#[ \t]*(?:if|ifdef|ifndef|elif)\b[^\n]*)", re.M)
 # (a code line's use, not the stand-in's #define of the name)
 _LEGACY_DEPTH = re.compile(r"^(?![ \t]*#)([^\n]*?)\b(UNITY_OUTPUT_DEPTH|UNITY_TRANSFER_DEPTH)\s*\((?:[^()\n]|\([^()\n]*\))*\)", re.M)
+# HLSL's flow-control attributes (Microsoft's HLSL reference, "if Statement", "for Statement",
+# "switch Statement": branch, flatten, unroll(n), loop, fastopt, allow_uav_condition, forcecase,
+# call), as the whole body of an object-like #define: the body (group 1) is blanked.
+_ATTRIBUTE_MACRO = re.compile(r"^[ \t]*#[ \t]*define[ \t]+[A-Za-z_]\w*[ \t]+((?:\[[ \t]*(?:branch|flatten|unroll|loop|fastopt|"
+                              r"allow_uav_condition|forcecase|call)[ \t]*(?:\([^()\n]*\))?[ \t]*\][ \t]*)+)$", re.M | re.I)
 _FLOW_HINT = re.compile(r"\bUNITY_(?:BRANCH|FLATTEN|UNROLL|LOOP|FASTOPT)\b|\bUNITY_UNROLLX\s*\(\s*\w+\s*\)")
 
 
@@ -260,7 +269,8 @@ _HALF_LITERAL = re.compile(r"(?<![\w.])((?:\d+\.\d*|\.\d+)(?:[eE][-+]?\d+)?|\d+[
 
 def respelled(text: str) -> str:
     """``text`` with ``const static`` as ``static const``, each ``switch`` selector cast to int,
-    a procedural-instancing setup function's body and Unity's flow-control hints blanked,
+    a procedural-instancing setup function's body, Unity's flow-control hints and a macro of
+    HLSL flow attributes blanked,
     UnityCG's legacy depth macros written out, a conditional's OpenGL macros undefined,
     Unity 5.3's matrix names upgraded, vector<T, N> as TN, the program's own functions of Unity's names renamed,
     a sampler state that tex2D samples declared as a sampler2D (combined_samplers), a multi-element
@@ -275,6 +285,7 @@ def respelled(text: str) -> str:
     text = _WIDE_HEX.sub(_low_32_bits, text)
     text = _blank_procedural_setup(_CONST_STATIC.sub(lambda m: f"static{m.group(1)}const", text))
     text = _FLOW_HINT.sub(_blank_flow_hint, text)
+    text = _ATTRIBUTE_MACRO.sub(lambda m: m.group(0)[:m.start(1) - m.start()] + " " * len(m.group(1)), text)
     text = _GL_TESTED.sub(lambda m: re.sub(r"\bGL_(?=\w)", "PBRLAB_UNITY_NO_GL_", m.group(1)), text)
     text = _LEGACY_DEPTH.sub(lambda m: m.group(1) + ("return 0" if m.group(2) == "UNITY_OUTPUT_DEPTH" else ""), text)
     text = _UPGRADED.sub(lambda m: _UPGRADED_NAMES[m.group(1)], text)
