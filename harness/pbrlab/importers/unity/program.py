@@ -220,7 +220,7 @@ def _vendored_copies(program: str, folder: Path) -> dict:
             seen.add(path)
             stand_in = vendored_library.stand_in_for(path, PACKAGE_STAND_INS)
             if stand_in is not None:
-                out[path] = f'#include "{vendored_library.package_path(stand_in, PACKAGE_STAND_INS)}"\n'
+                out[path] = f'#include "{vendored_library.own_include(stand_in, PACKAGE_STAND_INS)}"\n'
             else:
                 pending.append((read_source(path), path.parent))
     return out
