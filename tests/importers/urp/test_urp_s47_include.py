@@ -124,3 +124,54 @@ def test_a_builtin_light_mode_beside_keeps_the_builtin_pipeline(tmp_path):
     path = tmp_path / "b.shader"
     path.write_text(text.replace("        Pass {", '        Pass { Tags { "LightMode" = "ForwardBase" } }\n        Pass {', 1))
     assert '"ForwardBase"' in path.read_text() and not urp_material.reads(path)
+
+
+# 3. A program's own declaration of a global pbrlab's prelude declares, with another type.
+RETYPED = SHADERS / "retyped_global"
+SPEC_PROPERTY = np.array([0.25, 0.5, 0.75], dtype=np.float64)  # the Properties' _SpecColor, .rgb
+# pbrlab's _SpecColor without a property (program.DEFAULT_SPEC_COLOR, Unity's legacy shaders'
+# default (0.5, 0.5, 0.5, 1)), .rgb
+SPEC_DEFAULT = np.array([0.5, 0.5, 0.5], dtype=np.float64)
+
+
+def _copied(tmp_path, name) -> Path:
+    """A shader of RETYPED copied to a folder of its own (user_definitions keeps its answers
+    per program text and folder: a control's monkeypatch must not meet a kept answer)."""
+    path = tmp_path / name
+    shutil.copyfile(RETYPED / name, path)
+    return path
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+@pytest.mark.parametrize("name, expected", [("SpecColorGlobal.shader", SPEC_PROPERTY),
+                                            ("SpecColorCbuffer.shader", SPEC_PROPERTY),
+                                            ("SpecColorNoProperty.shader", SPEC_DEFAULT)])
+def test_a_programs_own_half3_spec_color_is_the_only_one(tmp_path, language, name, expected):
+    """``half3 _SpecColor;`` (outside or inside a CBUFFER) over the prelude's float4: the program's
+    declaration is the one read (``half4(_SpecColor, 1.0)`` compiles only with three components),
+    given the property's (or pbrlab's default) colour's rgb, exactly."""
+    _assert_exactly(corpus.run_shader(_copied(tmp_path, name), language), expected)
+
+
+def test_the_retyped_global_is_told_from_a_same_typed_one():
+    """Only a declaration with a type of its own renames the prelude's (a float4 / half4 one is
+    the prelude's type: the prelude's declaration serves, as before)."""
+    from pbrlab.importers.unity import user_definitions as ud
+    assert ud.retyped_prelude_globals("half3 _SpecColor;") == {"_SpecColor"}
+    assert ud.retyped_prelude_globals("CBUFFER_START(UnityPerMaterial) half3 _SpecColor; CBUFFER_END") == {"_SpecColor"}
+    assert ud.retyped_prelude_globals("float4 _SpecColor;\nhalf4 _SpecColor;\nfixed4 unity_FogColor;") == set()
+    assert ud.prelude_renames(ud.text_defines("half3 _SpecColor;", RETYPED)) == {"_SpecColor": "pbrlab_prelude_SpecColor"}
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_control_without_the_rename_the_redeclaration_is_refused_naming_the_shader(tmp_path, language, monkeypatch):
+    """Control: without the rename (the old behaviour) both declarations reach the compiler:
+    glslang crashes (signal 11), reported as a refusal naming the shader and the signal (no
+    traceback); the GLSL compiler refuses the redeclaration naming the file."""
+    from pbrlab.importers.unity import user_definitions as ud
+    monkeypatch.setattr(ud, "retyped_prelude_globals", lambda text: set())
+    result = corpus.run_shader(_copied(tmp_path, "SpecColorGlobal.shader"), language)
+    assert result.status == "refused", result.message
+    assert "SpecColorGlobal.shader" in result.message
+    if language == "hlsl":
+        assert "signal 11 SIGSEGV" in result.message

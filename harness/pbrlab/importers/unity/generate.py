@@ -25,6 +25,7 @@ from .generate_pass import _ATTRIBUTES, UNITY_STRUCTS, _attribute, _zero, canoni
 from .output_struct import layered_struct, vector_type
 from .port import port_code_types
 from .source_text import component_count
+from .user_definitions import prelude_renames
 from .written_globals import copy_statements
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
@@ -291,9 +292,14 @@ def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES, **stage})]
     if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
         head.append("#extension GL_ARB_sample_shading : require")
+    # a prelude global the program declares with a type of its own: the prelude's under its own
+    # name, the program's the only one of the name (user_definitions.prelude_renames)
+    renames = prelude_renames(defines)
+    head += [f"#define {name} {own}" for name, own in sorted(renames.items())]
     head += [f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    head += [f"#undef {name}" for name in sorted(renames)]
     return head
 
 

@@ -398,7 +398,7 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
     _set(program, "unity_FogColor", FOG_COLOR)
     if "_SpecColor" not in material.properties:
-        _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
+        _bind_vector(program, "_SpecColor", "Unity's default _SpecColor", DEFAULT_SPEC_COLOR)  # (a half3's: rgb)
     unit = first_unit
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property
