@@ -51,3 +51,36 @@ def test_control_the_four_numbers_as_they_stand_are_refused_by_a_float2(language
     result = corpus.run_shader(SHADERS / "GrabTexelSize_float2.shader", language)
     assert result.status == "refused"
     assert "'_GrabTexture_TexelSize'" in result.message and "declares it vec2" in result.message
+
+
+# A surface shader's own ``half3 _SpecColor;`` over the prelude's float4 (user_definitions'
+# retyped prelude globals; the URP programs' tests are in tests/importers/urp/test_urp_s47_include.py).
+SPEC_PROPERTY = np.array([0.25, 0.5, 0.75], dtype=np.float64)  # its Properties' _SpecColor, rgb
+
+
+def _copied(tmp_path, name) -> Path:
+    """The shader in a folder of its own (user_definitions keeps answers per text and folder)."""
+    path = tmp_path / name
+    path.write_text((SHADERS / name).read_text())
+    return path
+
+
+@pytest.mark.parametrize("language", corpus.LANGUAGES)
+def test_a_surface_shaders_own_half3_spec_color(tmp_path, language):
+    """Lambert with Albedo 0 and Emission the program's own _SpecColor: the emission, exactly
+    (Unity's LightingLambert adds nothing to an albedo of 0; the sky's ambient times 0 too)."""
+    result = corpus.run_shader(_copied(tmp_path, "SurfaceOwnSpecColor.shader"), language)
+    assert result.status == "rendered", result.message
+    covered = result.image[..., 3] == 1.0
+    assert np.array_equal(result.image[covered][:, :3].astype(np.float64),
+                          np.broadcast_to(SPEC_PROPERTY, (covered.sum(), 3)))
+
+
+def test_control_a_surface_shaders_own_spec_color_crashed_glslang(tmp_path, monkeypatch):
+    """Control: without the rename glslang crashes on the redeclaration (signal 11), refused
+    naming the shader, no traceback."""
+    from pbrlab.importers.unity import user_definitions as ud
+    monkeypatch.setattr(ud, "retyped_prelude_globals", lambda text: set())
+    result = corpus.run_shader(_copied(tmp_path, "SurfaceOwnSpecColor.shader"), "hlsl")
+    assert result.status == "refused" and "SurfaceOwnSpecColor.shader" in result.message
+    assert "signal 11 SIGSEGV" in result.message
