@@ -25,6 +25,7 @@ with the optimising default as well.
 from __future__ import annotations
 
 import re
+import signal
 import shutil
 import subprocess
 import tempfile
@@ -247,8 +248,14 @@ def _run_tool(cmd: list, name: str, **kwargs) -> subprocess.CompletedProcess:
             f"{name}: {Path(cmd[0]).name} ran over the compile time limit of {_TIMEOUT_S} s "
             "(hlsl._TIMEOUT_S) and was stopped") from None
     if proc.returncode < 0 or "std::bad_alloc" in proc.stderr:
+        # (a signal's name where Python knows it: SIGSEGV, a crash of the tool, as glslang 12's on
+        # a uniform redeclared with another type, user_definitions.retyped_prelude_globals)
+        try:
+            signal_name = f" {signal.Signals(-proc.returncode).name}" if proc.returncode < 0 else ""
+        except ValueError:
+            signal_name = ""
         raise source_limits.ShaderLimitError(
-            f"{name}: {Path(cmd[0]).name} ended without a result (signal {-proc.returncode}"
+            f"{name}: {Path(cmd[0]).name} ended without a result (signal {-proc.returncode}{signal_name}"
             f"{', out of memory' if 'bad_alloc' in proc.stderr else ''}) under the memory limit of "
             f"{TOOL_ADDRESS_SPACE_BYTES >> 30} GiB (hlsl.TOOL_ADDRESS_SPACE_BYTES)")
     return proc

@@ -25,6 +25,7 @@ from .generate_pass import _ATTRIBUTES, UNITY_STRUCTS, _attribute, _zero, canoni
 from .output_struct import layered_struct, vector_type
 from .port import port_code_types
 from .source_text import component_count
+from .user_definitions import prelude_renames
 from .written_globals import copy_statements
 
 LIBRARY_INCLUDES = ("unity_compat/shader_variables", "pbr/unity/unity_cg", "pbr/unity/lighting_legacy",
@@ -291,10 +292,21 @@ def prelude(language: str, defines: dict, vertex_stage: bool) -> list[str]:
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES, **stage})]
     if language == "glsl" and SAMPLES_DEFINE in defines:  # an antialiased sphere writes gl_SampleMask
         head.append("#extension GL_ARB_sample_shading : require")
+    renamed, restored = _renamed_globals(defines)
+    head += renamed
     head += [f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
     head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
-    return head
+    return head + restored
+
+
+def _renamed_globals(defines: dict) -> tuple:
+    """(lines before the prelude's includes, lines after them): a prelude global the program
+    declares with a type of its own is the prelude's under its own name there, and the
+    program's is the only one of the name (user_definitions.prelude_renames)."""
+    renames = prelude_renames(defines)
+    return ([f"#define {name} {own}" for name, own in sorted(renames.items())],
+            [f"#undef {name}" for name in sorted(renames)])
 
 
 def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: str,
@@ -303,14 +315,15 @@ def fragment_source(shader: M.SurfaceShader, language: str, stem: str, program: 
     (the CGPROGRAM for HLSL, its port for GLSL), ``display`` its file name in messages."""
     suffix = SUFFIX[language]
     head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
-    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES}),
+    renamed, restored = _renamed_globals(defines)
+    head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES}), *renamed,
              f'#include "scene_shading{suffix}"',
              '#include "unity_surface.inc"']
     if language == "glsl":
         head.append('#include "unity_compat/cg_compat.glsl"')
     else:
         head.append('#include "unity_hlsl_support.hlsl"')
-    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES] + restored
     head += layered_struct(shader)
     first = shader.program_line if language == "hlsl" else 1
     line = line_directive(first, display) if language == "hlsl" else f"#line {first}"
@@ -418,11 +431,12 @@ def vertex_source(shader: M.SurfaceShader, language: str, program: str, display:
     suffix = SUFFIX[language]
     v = shader.vertex
     head = ["#version 330 core", ARRAYS_OF_ARRAYS] if language == "glsl" else []
+    renamed, restored = _renamed_globals(defines)
     head += [_defines({**defines, "PBRLAB_UNITY_SURFACE": 1, **UNITY_LIBRARY_DEFINES, "PBRLAB_UNITY_VERTEX_STAGE": 1,
-                       "PBR_UNITY_VERTEX_STAGE": 1}),
+                       "PBR_UNITY_VERTEX_STAGE": 1}), *renamed,
              f'#include "scene_shading{suffix}"', '#include "unity_surface.inc"']
     head.append('#include "unity_compat/cg_compat.glsl"' if language == "glsl" else '#include "unity_hlsl_support.hlsl"')
-    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES]
+    head += [f'#include "{name}{suffix}"' for name in LIBRARY_INCLUDES] + restored
     head += layered_struct(shader)
     first = shader.program_line if language == "hlsl" else 1
     line = line_directive(first, display) if language == "hlsl" else f"#line {first}"

@@ -195,8 +195,10 @@ class ProgramPass:
         for i, (name, texture) in enumerate(sorted(grabbed.items())):
             texture.use(unit + i)  # a GrabPass's texture, over the white stand-in bound above
             _set(program, name, unit + i)
-            w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab
-            _set(program, f"{name}_TexelSize", (1.0 / w, 1.0 / h, float(w), float(h)))
+            w, h = texture.size  # and its _TexelSize, as Unity sets it for the grab, into the type the
+            # program declares (its leading components: a float2 takes 1/width, 1/height)
+            unity_program._bind_vector(program, f"{name}_TexelSize", f"the GrabPass texture {name}'s _TexelSize",
+                                       (1.0 / w, 1.0 / h, float(w), float(h)))
         unit += len(grabbed)
         unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
         used = lightmaps.bind(program, self.lightmap, cache, unit)

@@ -38,7 +38,7 @@ import re
 from pathlib import Path
 
 from ...foundation.file_identity import FileCache
-from . import cg_spellings, cg_types, multisampled_textures
+from . import cg_spellings, cg_types, multisampled_textures, user_definitions
 from . import model as M
 from .geometry_syntax import spell_for_glsl
 from .tessellation_syntax import spell_for_glsl as spell_tessellation
@@ -209,11 +209,11 @@ def port_code(code: str) -> str:
     return _globals_uniform(code)
 
 
-def _unity_globals() -> frozenset:
-    """The globals unity_compat/shader_variables.glsl declares (Unity's UnityShaderVariables /
-    UnityLightingCommon names: _LightColor0, _Time, ...)."""
+def _unity_globals() -> dict:
+    """{name: GLSL type} of the globals unity_compat/shader_variables.glsl declares (Unity's
+    UnityShaderVariables / UnityLightingCommon names: _LightColor0, _Time, ...)."""
     text = cg_types.library_file("glsl/unity_compat/shader_variables.glsl").read_text(encoding="utf-8")
-    return frozenset(re.findall(r"^(?:uniform\s+)?(?:vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M))
+    return {name: kind for kind, name in re.findall(r"^(?:uniform\s+)?(vec[234]|mat[234]|float)\s+(\w+)\s*;", text, re.M)}
 
 
 @functools.cache
@@ -242,16 +242,19 @@ def _drop_unity_redeclarations(code: str) -> str:
     """A program's own declaration of a global Unity declares for it (``fixed4 _LightColor0;``,
     written where Lighting.cginc is not included) is one GLSL refuses as a redeclaration: it is
     kept as a comment, on its line; from a list (``float4 _LightColor0, _MainTex_ST;``) only
-    Unity's names are taken out."""
-    names = _unity_globals()
+    Unity's names are taken out. One declared with a type of its own (``half3 _SpecColor;``) is
+    kept: it is the only one, the prelude's renamed (user_definitions.prelude_renames)."""
+    types = _unity_globals()
+    names = set(types)
+    renamed = user_definitions.prelude_globals()  # (the uniforms the prelude renames for a program's own type)
 
     def drop(m):
         declared = [n.strip() for n in m.group(4).split(",")]
-        kept = [n for n in declared if n not in names]
+        kept = [n for n in declared if n not in names or (types[n] != m.group(3) and n in renamed)]
         if len(kept) == len(declared):
             return m.group(0)
         newlines = "\n" * m.group(2).count("\n")  # the port stays line for line
-        ours = ", ".join(n for n in declared if n in names)
+        ours = ", ".join(n for n in declared if n not in kept)
         if not kept:
             return f"{m.group(1)}/* uniform {m.group(3)} {ours}; (declared by UnityShaderVariables) */{newlines}"
         return (f"{m.group(1)}uniform {m.group(3)} {', '.join(kept)}; "

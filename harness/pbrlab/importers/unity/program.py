@@ -220,7 +220,7 @@ def _vendored_copies(program: str, folder: Path) -> dict:
             seen.add(path)
             stand_in = vendored_library.stand_in_for(path, PACKAGE_STAND_INS)
             if stand_in is not None:
-                out[path] = f'#include "{vendored_library.package_path(stand_in, PACKAGE_STAND_INS)}"\n'
+                out[path] = f'#include "{vendored_library.own_include(stand_in, PACKAGE_STAND_INS)}"\n'
             else:
                 pending.append((read_source(path), path.parent))
     return out
@@ -397,8 +397,13 @@ def bind(program, material, obj, frame, cache, environment_cube, first_unit: int
     set_uniform_array(program, "unity_CameraWorldClipPlanes", camera_world_clip_planes(frame.view_proj))
     _set(program, "unity_SpecCube0_HDR", SPECCUBE_HDR)
     _set(program, "unity_FogColor", FOG_COLOR)
+    spec_color = material.properties.get("_SpecColor", DEFAULT_SPEC_COLOR)
+    spec_color = tuple(spec_color) if isinstance(spec_color, (tuple, list)) and len(spec_color) == 4 else DEFAULT_SPEC_COLOR
     if "_SpecColor" not in material.properties:
-        _set(program, "_SpecColor", DEFAULT_SPEC_COLOR)
+        _bind_vector(program, "_SpecColor", "Unity's default _SpecColor", DEFAULT_SPEC_COLOR)  # (a half3's: rgb)
+    # the prelude's own _SpecColor where the program declares one of another type (generate.prelude:
+    # Lighting.cginc's BlinnPhong reads it, with the colour the material gives the program's)
+    _set(program, "pbrlab_prelude_SpecColor", spec_color)
     unit = first_unit
     for name, value in sorted(material.properties.items()):
         kind = material.source.shader.properties[name].kind  # properties.resolve: one value per property

@@ -94,7 +94,11 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
         roots = {project_root(n, vf.path.parent) for n in names}
         # a package's own paths (Packages/<it>/...) from a folder that links Packages/<it> to it
         roots |= {package_links(*own) for own in (own_package_root(n, vf.path.parent) for n in names) if own}
-        dirs = [TEMPLATES, vf.path.parent, CGINC, *sorted(r for r in roots if r is not None), PACKAGE_STAND_INS]
+        # (pbrlab's stand-ins before the project's roots: a project's embedded copy of Unity's
+        # render-pipeline packages is read as the stand-ins, as resolve_included reads it for the port)
+        # (the stand-ins' parent last: the name a project's copy is replaced by, vendored_library.own_include)
+        dirs = [TEMPLATES, vf.path.parent, CGINC, PACKAGE_STAND_INS, *sorted(r for r in roots if r is not None),
+                PACKAGE_STAND_INS.parent]
         if vf.language == glslprogram.LANGUAGE:  # a GLSLPROGRAM: its GLSL as written, in either language
             program, paths = glslprogram.build_glsl_program(ctx, vf, defines, blended, dirs)
             return indexed(program, vf.path), paths

@@ -154,13 +154,16 @@ class UnityIncludeRefusal(UnityShaderError):
 
 def resolve_included(name: str, folder: Path, copies: bool = True):
     """The file ``#include "name"`` reads, as Unity resolves it here: the including file's
-    folder first, then pbrlab's stand-ins for Unity's include files (``cginc/``) and, for a
-    package path (``Packages/...``), for Unity's packages' files; else None. A name that starts
+    folder first, then, for a package path (``Packages/...``), pbrlab's stand-ins for Unity's
+    packages' files (before a copy of the package the project embeds: vendored_library), then
+    the project's root and pbrlab's stand-ins for Unity's include files (``cginc/``); else None. A name that starts
     with ``/`` is read from the including file's folder, as Unity reads it (include_separators).
     A project's copy of a file of Unity's render-pipeline ShaderLibrary resolves to pbrlab's
     stand-in for it (vendored_library), unless ``copies`` is False (the file itself)."""
     name = name.lstrip("/")
     candidates = [(folder, folder / name)]  # (the user's folder it lies in, or None: pbrlab's own)
+    if name.startswith("Packages/"):  # (before the project's own Packages/: the HLSL path's order too)
+        candidates.append((None, PACKAGE_STAND_INS / name))
     root = project_root(name, folder)
     if root is not None:
         candidates.append((root, root / name))
@@ -168,8 +171,6 @@ def resolve_included(name: str, folder: Path, copies: bool = True):
     if own is not None:
         candidates.append((own[1], own[1] / name.split("/", 2)[2]))
     candidates.append((None, CGINC / Path(name).name))
-    if name.startswith("Packages/"):
-        candidates.append((None, PACKAGE_STAND_INS / name))
     for user_folder, candidate in candidates:
         if candidate.is_file():
             if user_folder is not None:  # read only through links that stay in the folder (safe_paths)

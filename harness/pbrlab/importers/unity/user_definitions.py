@@ -22,6 +22,15 @@ Two cases in real shaders:
   leaves its declaration out (two would be a redefinition, an error in FXC as in glslang), as the
   version the shader was written for had none.
 
+- a global pbrlab's Unity prelude declares (unity_compat/shader_variables: ``float4 _SpecColor``,
+  Lighting.cginc's BlinnPhong colour, which URP's core does not declare) that the shader's own
+  text declares with another type (``half3 _SpecColor;``, inside a CBUFFER or not). In Unity the
+  shader's declaration is the only one; glslang crashed (signal 11) on the redeclaration and a
+  GLSL compiler refuses it. The prelude declares its own under another name
+  (``pbrlab_prelude_SpecColor``, generate.prelude: ``#define`` before the library, ``#undef``
+  after), so the program's declaration is the only ``_SpecColor``, and pbrlab's value reaches it
+  by name, converted to its type (program._bind_vector: a half3 takes rgb). Same-typed, the
+  prelude's declaration serves (the port drops the program's: port._drop_unity_redeclarations).
 - a function of an earlier URP that a shader names without defining it (``#pragma vertex
   FullscreenVert``: URP 12's PostProcessing/Common.hlsl's, from Utils/Fullscreen.hlsl, where URP 13
   on has Blit.hlsl's Vert). That is the layout the shader was written for: a
@@ -40,11 +49,13 @@ Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading undersco
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import re
 from pathlib import Path
 
 from ...foundation.file_identity import FileCache, followed_key
+from ...foundation.locations import locate
 from .source_text import CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, included_files
 
 # The stand-ins' constants (Core RP Common.hlsl / Macros.hlsl) that step aside: none is read by a
@@ -62,6 +73,42 @@ EARLIER_ATTRIBUTES = "Attributes_positionOS"
 _ATTRIBUTES_PARAMETER = re.compile(r"\bAttributes\s+(\w+)\s*[,)]")
 # Globals Unity 6's Core RP declares that earlier shaders declare themselves.
 GLOBALS = ("_BlitTexture_TexelSize",)
+
+# A numeric global's declaration at a line's start (after a one-line CBUFFER_START(...), uniform
+# or static): its type and its (first) name.
+_NUMERIC_GLOBAL = re.compile(r"^[ \t]*(?:CBUFFER_START[ \t]*\([ \t]*\w+[ \t]*\)[ \t]*)?(?:(?:uniform|static)[ \t]+)?"
+                             r"((?:float|half|fixed|real|min16float|int|uint|bool)(?:[1-4](?:x[1-4])?)?)[ \t]+(\w+)[ \t]*[;,]",
+                             re.M)
+_PRELUDE_UNIFORM = re.compile(r"^uniform[ \t]+(float[1-4]?)[ \t]+(\w+)[ \t]*;", re.M)
+
+
+@functools.cache
+def prelude_globals() -> dict:
+    """{name: type} of the vector and scalar uniforms pbrlab's Unity prelude declares (hlsl_ports/
+    unity_compat/shader_variables.hlsl, the GLSL twin's HLSL spelling; not its matrices, which the
+    generated entry reads, nor its arrays)."""
+    text = (locate("hlsl_ports") / "unity_compat" / "shader_variables.hlsl").read_text(encoding="utf-8")
+    return {name: kind for kind, name in _PRELUDE_UNIFORM.findall(text)}
+
+
+def _same_type(written: str, prelude: str) -> bool:
+    """Whether a program's type names the prelude's (half, fixed, real: float; float1: float)."""
+    written = re.sub(r"^(?:half|fixed|real|min16float)", "float", written)
+    return re.sub(r"^float1$", "float", written) == prelude
+
+
+def retyped_prelude_globals(text: str) -> set:
+    """The prelude's globals (prelude_globals) that ``text`` declares with a type of its own."""
+    known = prelude_globals()
+    return {name for kind, name in _NUMERIC_GLOBAL.findall(text) if name in known and not _same_type(kind, known[name])}
+
+
+def prelude_renames(defines: dict) -> dict:
+    """{name: the prelude's own name for it} of each prelude global ``defines`` say the program
+    declares with another type (generate.prelude declares the prelude's under that name)."""
+    return {name: "pbrlab_prelude_" + name.lstrip("_") for name in prelude_globals()
+            if PREFIX + name.lstrip("_") in defines}
+
 
 _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)", re.M)
 _STRUCT = re.compile(r"\bstruct[ \t\r\n]+(\w+)[ \t\r\n]*\{")
@@ -147,7 +194,7 @@ def _places(program: str, folder: Path, files: dict) -> list[Path]:
 def _defines(text: str) -> dict:
     """text_defines of the program's and its own files' text (comments blanked)."""
     names = ({n for n in _DEFINE.findall(text) if n in MACROS} | {n for n in _STRUCT.findall(text) if n in STRUCTS}
-             | {n for n in _GLOBAL.findall(text) if n in GLOBALS})
+             | {n for n in _GLOBAL.findall(text) if n in GLOBALS} | retyped_prelude_globals(text))
     reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
              and not re.search(rf"\b\w+\s+{n}\s*\([^()]*\)\s*\{{", text)}
     if not re.search(r"\bstruct\s+Attributes\b", text) and any(

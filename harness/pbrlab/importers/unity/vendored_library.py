@@ -19,6 +19,7 @@ Graphics; a file of the project's own that happens to share a name keeps its own
 files that pbrlab has no stand-in for (CommonLighting.hlsl, Sampling/*.hlsl) are compiled as written.
 
     stand_in = stand_in_for(path, package_stand_ins)   # the stand-in's path, or None
+    own_include(stand_in, package_stand_ins)           # the include glslang reads it by
 """
 
 from __future__ import annotations
@@ -85,6 +86,13 @@ def stand_in_for(path: Path, package_stand_ins: Path) -> Path | None:
     return None
 
 
-def package_path(stand_in: Path, package_stand_ins: Path) -> str:
-    """The ``Packages/...`` include name of a stand-in (what a copy's text is replaced by)."""
-    return Path(stand_in).relative_to(package_stand_ins).as_posix()
+def own_include(stand_in: Path, package_stand_ins: Path) -> str:
+    """The include name a copy's text is replaced by for glslang (program._vendored_copies):
+    the stand-in's path from the stand-ins' folder's parent (``package_stand_ins/Packages/...``,
+    read through that parent, the last of the HLSL path's include folders). Not its
+    ``Packages/...`` name: glslang looks an include up in the folders of every file on the
+    include stack before its -I folders, and where one of them is the project's root (a shader
+    or include file beside Assets/ and Packages/) that name is the copy itself, replaced by the
+    same include: glslang followed that loop until its time limit (60 s; ChillyHub's
+    Unity_URP_NPR_Sample, which embeds URP 14's packages, session 47)."""
+    return Path(stand_in).relative_to(Path(package_stand_ins).parent).as_posix()

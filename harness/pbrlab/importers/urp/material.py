@@ -54,15 +54,29 @@ def _srp_only(text: str) -> bool:
                 and not any(m.lower() in BUILTIN_LIGHT_MODES for m in _LIGHT_MODE.findall(text)))
 
 
+# URP's forward renderer's own LightModes (URP's manual, "ShaderLab Pass tags in URP": LightMode
+# UniversalForward, UniversalForwardOnly), which the built-in pipeline never draws
+_URP_FORWARD_LIGHT_MODES = frozenset(("universalforward", "universalforwardonly"))
+
+
+def _urp_forward_passes(text: str) -> bool:
+    """A shader naming no pipeline (or naming it otherwise than _URP_TAG reads) whose passes are
+    tagged for URP's forward renderer, and none for the built-in pipeline: whatever its programs'
+    language (a CGPROGRAM with UnityCG.cginc included), only URP draws it."""
+    modes = {m.lower() for m in _LIGHT_MODE.findall(text)}
+    return bool(modes & _URP_FORWARD_LIGHT_MODES) and not modes & BUILTIN_LIGHT_MODES
+
+
 def reads(path: Path) -> bool:
     """Whether ``path`` is a URP shader: a SubShader tagged for URP, a program that includes
-    URP's ShaderLibrary, or a Scriptable Render Pipeline's shader naming no pipeline (_srp_only:
-    URP is the SRP pbrlab draws)."""
+    URP's ShaderLibrary, a Scriptable Render Pipeline's shader naming no pipeline (_srp_only:
+    URP is the SRP pbrlab draws), or a shader whose passes are tagged for URP's forward renderer
+    (_urp_forward_passes)."""
     try:
         text = blank_comments(Path(path).read_text(encoding="utf-8", errors="replace"))
     except OSError:
         return False
-    return bool(_URP_TAG.search(text) or _URP_INCLUDE.search(text) or _srp_only(text))
+    return bool(_URP_TAG.search(text) or _URP_INCLUDE.search(text) or _srp_only(text) or _urp_forward_passes(text))
 
 
 def read_material(r, m, base: Path) -> None:
