@@ -180,3 +180,63 @@ def test_additional_light_arrays_hold_urps_values_of_the_scene_lights(tmp_path, 
     dark, _ = _render(tmp_path, language, body, _include("RealtimeLights"), lights=[SUN])
     assert (np.abs(dark[:, 2] - expected[2]) > 100 * bound).all(), dark[0]
 
+
+# --- Blit.hlsl's Vert beside a program's own GLES branch that reads positionOS --------------------
+# X-PostProcessing's layout (a URP 14 port): Core.hlsl and Blit.hlsl included, #pragma vertex Vert
+# (Blit.hlsl's), and a vertex function of its own over Blit's Attributes that reads v.positionOS
+# and v.uv under SHADER_API_GLES (the members Core RP 14's Blit.hlsl declares on GLES only).
+BLIT_VERT_SHADER = """
+Shader "t/blit vert beside a gles branch" {
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" }
+        ZTest Always ZWrite Off Cull Off
+        HLSLINCLUDE
+        #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+        #include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"
+        struct VaryingsRay { float4 positionCS : SV_POSITION; float2 texcoord : TEXCOORD0; };
+        VaryingsRay VertRay(Attributes v) {
+            VaryingsRay o;
+        #if SHADER_API_GLES
+            o.positionCS = v.positionOS;
+            o.texcoord = v.uv;
+        #else
+            o.positionCS = GetFullScreenTriangleVertexPosition(v.vertexID);
+            o.texcoord = GetFullScreenTriangleTexCoord(v.vertexID);
+        #endif
+            return o;
+        }
+        ENDHLSL
+        Pass {
+            HLSLPROGRAM
+            #pragma vertex Vert
+            #pragma fragment Frag
+            float4 Frag(Varyings input) : SV_Target { return float4(input.texcoord, 0.5, 1.0); }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_blit_vert_is_defined_beside_a_gles_branch_reading_position_os(tmp_path, language):
+    """The program above draws full-screen through Blit.hlsl's Vert: each pixel shows its viewport
+    position ((x + 0.5) / w, (y + 0.5) / h), y up (GL; as test_urp_fullscreen_pass). Bound: the
+    float32 interpolation of corner values up to 2, a few ulp of 2: 2^-20. Control: before this
+    change the v.positionOS read (in a branch pbrlab never draws, SHADER_API_GLES being undefined)
+    was taken for URP 10's mesh-drawn layout (user_definitions: PBRLAB_USER_READS_Attributes_positionOS),
+    which leaves Blit.hlsl's names out: '#pragma vertex Vert: no function Vert(...) is defined'
+    (7 hidden-sample shaders of X-PostProcessing ports); the text_defines check below is that
+    decision itself, and it still holds for a program that does not include Blit.hlsl."""
+    from test_urp_fullscreen_pass import _linear, _scene
+    from pbrlab.importers.unity.user_definitions import text_defines
+    image = _linear(_scene(tmp_path, BLIT_VERT_SHADER), language)
+    h, w = image.shape[:2]
+    x = (np.arange(w) + 0.5) / w
+    y = (np.arange(h)[::-1] + 0.5) / h
+    want = np.stack(np.broadcast_arrays(x[None, :], y[:, None], np.full((h, w), 0.5)), axis=-1)
+    assert (np.abs(image[..., :3] - want) <= 2.0 ** -20).all()
+    program = BLIT_VERT_SHADER.split("HLSLINCLUDE")[1].split("ENDHLSL")[0]
+    assert "PBRLAB_USER_READS_Attributes_positionOS" not in text_defines(program, tmp_path)
+    urp10 = program.replace('#include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"', "")
+    assert "PBRLAB_USER_READS_Attributes_positionOS" in text_defines(urp10, tmp_path)
