@@ -240,3 +240,57 @@ def test_blit_vert_is_defined_beside_a_gles_branch_reading_position_os(tmp_path,
     assert "PBRLAB_USER_READS_Attributes_positionOS" not in text_defines(program, tmp_path)
     urp10 = program.replace('#include "Packages/com.unity.render-pipelines.core/Runtime/Utilities/Blit.hlsl"', "")
     assert "PBRLAB_USER_READS_Attributes_positionOS" in text_defines(urp10, tmp_path)
+
+
+# --- the 2D renderer's SpriteMaskShared.hlsl and URP 12's DebuggingFullscreen.hlsl -------------------
+SPRITE_MASK_SHADER = """
+Shader "t/sprite mask" {
+    Properties { _MainTex ("Mask", 2D) = "white" {} _Cutoff ("Cutoff", Float) = %(cutoff)s }
+    SubShader {
+        Tags { "RenderPipeline" = "UniversalPipeline" }
+        Pass {
+            HLSLPROGRAM
+            #pragma vertex MaskRenderingVertex
+            #pragma fragment frag
+            #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+            #include "Packages/com.unity.render-pipelines.universal/Shaders/2D/Include/SpriteMaskShared.hlsl"
+            float4 frag(Varyings input) : SV_Target {
+                return MaskRenderingFragment(input) + float4(input.uv * 0.5, 0.25, 1.0);
+            }
+            ENDHLSL
+        }
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_sprite_mask_pass_keeps_texels_at_or_above_the_cutoff(tmp_path, language):
+    """SpriteMaskShared.hlsl's MaskRenderingVertex (the mesh's position to clip space, its uv passed
+    on) and MaskRenderingFragment (clip(alpha - _Cutoff), then 0): with the white mask (alpha 1) and
+    _Cutoff 0.5 nothing is discarded and the pixel is the program's own (uv / 2, 0.25, 1) plus 0:
+    B 0.25 and A 1 exactly, R and G a texture coordinate of the sphere over 2, in [0, 0.5].
+    Control: _Cutoff 2 (above every texel's alpha) discards every pixel, so nothing covers the
+    sphere (render_constant's coverage assertion); before this change the include was refused."""
+    pixels, _ = render_constant(tmp_path, SPRITE_MASK_SHADER % {"cutoff": "0.5"}, language, environment=False)
+    assert (pixels[:, 2] == 0.25).all() and (pixels[:, 3] == 1.0).all(), pixels[0]
+    assert ((pixels[:, :2] >= 0.0) & (pixels[:, :2] <= 0.5)).all()
+    with pytest.raises(AssertionError):
+        render_constant(tmp_path, SPRITE_MASK_SHADER % {"cutoff": "2.0"}, language, environment=False)
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_debugging_fullscreen_declares_nothing_with_debug_display_off(tmp_path, language):
+    """URP 12's Debug/DebuggingFullscreen.hlsl declares its overrides (CanDebugOverrideOutputColor)
+    under DEBUG_DISPLAY only, which pbrlab never defines: a program's call under #if
+    defined(DEBUG_DISPLAY) is not compiled, and the program's own colour (0.25, 0.5, 0.75) is drawn,
+    exactly. A program's own function of that name compiles beside it (the stand-in declares none).
+    Control: before this change the include was refused as a file pbrlab lacks; the program's own
+    CanDebugOverrideOutputColor would be a redefinition were the stand-in to declare one."""
+    own = "bool CanDebugOverrideOutputColor(float4 c, float2 uv, inout float4 d) { d = c; return false; }"
+    body = ("float4 c = float4(0.25, 0.5, 0.75, 1.0);\n#if defined(DEBUG_DISPLAY)\n"
+            " float4 d; if (CanDebugOverrideOutputColor(c, IN.uv, d)) return d;\n#endif\n"
+            " float4 e = c; CanDebugOverrideOutputColor(c, IN.uv, e); return e;")
+    pixels, _ = _render(tmp_path, language, body, '#include "%s/Debug/DebuggingFullscreen.hlsl"' % LIBRARY, own)
+    assert (pixels[:, :3] == [0.25, 0.5, 0.75]).all(), pixels[0]
+
