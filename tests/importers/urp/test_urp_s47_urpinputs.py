@@ -294,3 +294,34 @@ def test_debugging_fullscreen_declares_nothing_with_debug_display_off(tmp_path, 
     pixels, _ = _render(tmp_path, language, body, '#include "%s/Debug/DebuggingFullscreen.hlsl"' % LIBRARY, own)
     assert (pixels[:, :3] == [0.25, 0.5, 0.75]).all(), pixels[0]
 
+
+# --- URP 12's terrain inputs -----------------------------------------------------------------------
+TERRAIN_PROPERTIES = ('_Control ("Control", 2D) = "red" {} _Splat0 ("Layer 0", 2D) = "white" {}'
+                      ' _Splat1 ("Layer 1", 2D) = "black" {} _Metallic0 ("Metallic 0", Float) = 0.25')
+TERRAIN_INPUT = '#include "Packages/com.unity.render-pipelines.universal/Shaders/Terrain/TerrainLitInput.hlsl"'
+TERRAIN_BODY = ("float4 control = SAMPLE_TEXTURE2D(_Control, sampler_Control, IN.uv);"
+                " float4 c = control.r * SAMPLE_TEXTURE2D(_Splat0, sampler_Splat0, IN.uv)"
+                " + control.g * SAMPLE_TEXTURE2D(_Splat1, sampler_Splat0, IN.uv);"
+                " float4 p = float4(1.0, 2.0, 3.0, 1.0); float3 n = float3(0.0, 1.0, 0.0); TerrainInstancing(p, n);"
+                " return float4(c.rgb * 0.5 + _Metallic0, (p.y - 2.0) + (n.y - 1.0) + 1.0);")
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_custom_terrain_shader_reads_urp_12s_terrain_inputs(tmp_path, language):
+    """A terrain shader of its own over TerrainLitInput.hlsl: _Control's texel weighs layer 0
+    (_Splat0) and layer 1 (_Splat1, read with layer 0's sampler as URP's shaders do), _Metallic0 a
+    per-layer scalar; TerrainInstancing leaves a vertex unchanged without instancing (URP 12). With
+    the material's defaults ("red" control: weight 1 on layer 0, white layer 0, black layer 1,
+    metallic 0.25) the pixel is 1 * 0.5 + 0.25 = 0.75 in each channel, alpha 1: exact (texels of 0
+    and 255, sums of binary fractions). Control: URP's own passes (TerrainLitPasses.hlsl) are
+    refused naming them; before this change TerrainLitInput.hlsl itself was a missing include."""
+    pixels, _ = render_constant(
+        tmp_path, NAMES44_SHADER % {"properties": TERRAIN_PROPERTIES, "includes": TERRAIN_INPUT, "globals": "",
+                                    "body": TERRAIN_BODY}, language, environment=False)
+    assert (pixels == [0.75, 0.75, 0.75, 1.0]).all(), pixels[0]
+    passes = TERRAIN_INPUT.replace("TerrainLitInput", "TerrainLitPasses")
+    with pytest.raises(Exception, match=r"URP's Terrain Lit passes \(TerrainLitPasses\.hlsl: SplatmapVert, "
+                                        r"SplatmapFragment, SplatmapMix and the terrain's shadow and depth passes\)"
+                                        r" are not provided by pbrlab's stand-in"):
+        render_constant(tmp_path, NAMES44_SHADER % {"properties": TERRAIN_PROPERTIES, "includes": passes,
+                                                    "globals": "", "body": TERRAIN_BODY}, language, environment=False)
