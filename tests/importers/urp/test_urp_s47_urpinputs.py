@@ -181,6 +181,23 @@ def test_additional_light_arrays_hold_urps_values_of_the_scene_lights(tmp_path, 
     assert (np.abs(dark[:, 2] - expected[2]) > 100 * bound).all(), dark[0]
 
 
+
+def test_additional_light_arrays_are_filled_only_where_read():
+    """Every URP program includes Input.hlsl's arrays (through Core.hlsl); the entry points fill
+    them (4 x 32 entries, each stage) only where the program reads one past its declaration.
+    Control: a program reading _AdditionalLightsColor has it (and only it) filled."""
+    from pbrlab.importers.unity.engine_inputs import fill_declared, fill_statements
+    included = ("static float4 _AdditionalLightsPosition[32];\nstatic float4 _AdditionalLightsColor[32];\n"
+                "float4 pbrlab_urp_additional_light_color(int index) { return float4(0.0, 0.0, 0.0, 0.0); }\n")
+    quiet = "float4 frag() : SV_Target { return float4(1.0, 1.0, 1.0, 1.0); }"
+    _, filled = fill_declared(quiet, quiet, included)
+    assert filled == () and fill_statements(filled, "glsl") == ""
+    reads = "float4 frag() : SV_Target { return _AdditionalLightsColor[0]; }"
+    _, filled = fill_declared(reads, reads, included)
+    assert filled == ("_AdditionalLightsColor",)
+    assert "_AdditionalLightsColor[pbrlab_l] = pbrlab_urp_additional_light_color(pbrlab_l);" in fill_statements(filled, "glsl")
+
+
 # --- Blit.hlsl's Vert beside a program's own GLES branch that reads positionOS --------------------
 # X-PostProcessing's layout (a URP 14 port): Core.hlsl and Blit.hlsl included, #pragma vertex Vert
 # (Blit.hlsl's), and a vertex function of its own over Blit's Attributes that reads v.positionOS

@@ -171,6 +171,11 @@ def fill_declared(program: str, active_program: str, active_included: str = "") 
         start = m.start(1) if m.group(1) else m.start(2)
         text = text[:start] + "static " + text[m.start(2):]
     static = [m for m in _STATIC_DECLARED.finditer(_outside_braces(active_included)) if _unitys(m)]
+    # URP's additional-light arrays (Input.hlsl, in every URP program): filled only where something
+    # reads one, past its declaration (the stand-ins read the functions that give them instead)
+    everything = active_program + "\n" + active_included
+    static = [m for m in static if m.group(4) not in URP_LIGHTS
+              or len(re.findall(rf"\b{m.group(4)}\b", everything)) > 1]
     return text, tuple(dict.fromkeys(m.group(4) for m in taken + static))
 
 
