@@ -105,6 +105,35 @@ def test_a_projects_surface_data_copy_and_the_stand_in_are_one_file(tmp_path, la
     assert (pixels[:, :3] == [0.25, 0.5, 0.75]).all(), pixels[0]
 
 
+
+PROJECT_REALTIME_LIGHTS = """#ifndef UNIVERSAL_REALTIME_LIGHTS_INCLUDED
+#define UNIVERSAL_REALTIME_LIGHTS_INCLUDED
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Input.hlsl"
+struct Light { half3 direction; half3 color; half distanceAttenuation; half shadowAttenuation; uint layerMask; };
+Light GetMainLight() { Light l = (Light)0; return l; }
+#endif
+"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_projects_copy_of_realtime_lights_reads_the_stand_in(tmp_path, language):
+    """A project's copy of URP's ShaderLibrary/RealtimeLights.hlsl (under URP's guard,
+    UNIVERSAL_REALTIME_LIGHTS_INCLUDED) is read as pbrlab's stand-in, as copies of Lighting.hlsl
+    and Shadows.hlsl are (vendored_library.GUARDS): its declarations of what Unity's engine sets
+    would otherwise stand beside the stand-ins'. The program includes the copy, then Lighting.hlsl,
+    and draws GetAdditionalLightsCount() (the stand-in's; the copy has none) over 4 with no light:
+    0, and its own 0.5 in G, exactly. Control: read as written, the copy declares Light before
+    Lighting.hlsl's RealtimeLights.hlsl does (its guard is pbrlab's), a redefinition."""
+    (tmp_path / "ShaderLibrary").mkdir()
+    (tmp_path / "ShaderLibrary" / "RealtimeLights.hlsl").write_text(PROJECT_REALTIME_LIGHTS)
+    includes = '#include "ShaderLibrary/RealtimeLights.hlsl"\n' + _include("Lighting")
+    body = "return float4(float(GetAdditionalLightsCount()) * 0.25, 0.5, GetMainLight().color.r, 1.0);"
+    pixels, _ = _render(tmp_path, language, body, includes)
+    assert (pixels[:, :3] == [0.0, 0.5, 0.0]).all(), pixels[0]
+    from pbrlab.importers.unity.vendored_library import GUARDS
+    assert GUARDS["ShaderLibrary/RealtimeLights.hlsl"] == "UNIVERSAL_REALTIME_LIGHTS_INCLUDED"
+
+
 # --- URP's additional lights ----------------------------------------------------------------------
 POINT = {"type": "point", "position": [1.5, 2.0, 1.0], "color": [1.0, 0.5, 0.25], "intensity": 2.0, "range": 4.0}
 SUN = {"type": "directional", "direction": [0.0, -1.0, 0.0], "color": [1.0, 1.0, 1.0], "intensity": 1.0}
