@@ -177,7 +177,10 @@ def test_a_declaration_of_another_type_is_not_filled():
     assert filled == ("_PreviousVP", "_TerrainTreeLightDirections")
     assert text == "static float4x4 _PreviousVP;\nstatic half3 _TerrainTreeLightDirections[4];\n"
     assert set(FILLED) == {"_TerrainTreeLightDirections", "_TerrainTreeLightColors", "_NonJitteredVP",
-                           "_PreviousVP", "_PreviousM", "unity_WorldToLight", "_LightMatrix0"}
+                           "_PreviousVP", "_PreviousM", "unity_WorldToLight", "_LightMatrix0",
+                           # URP's additional-light arrays (the stand-in Input.hlsl's: test_urp_s47_urpinputs)
+                           "_AdditionalLightsPosition", "_AdditionalLightsColor", "_AdditionalLightsAttenuation",
+                           "_AdditionalLightsSpotDir"}
 
 
 def test_a_stereo_motion_matrix_is_still_refused(tmp_path):

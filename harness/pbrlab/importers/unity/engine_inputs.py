@@ -117,7 +117,19 @@ FILLED = {
     # the forward pass's light (AutoLight.cginc declares it; Unity 5.3's name the program's own)
     "unity_WorldToLight": ("float4x4", None, "the pass's light: world to light space (light_space.py)"),
     "_LightMatrix0": ("float4x4", None, "the pass's light: world to light space (light_space.py)"),
+    # URP's additional lights (its Input.hlsl's arrays, the uniform-array path; URP_LIGHTS entries,
+    # MAX_VISIBLE_LIGHTS on OpenGL Core): the scene's lights after the main one, in the stand-in
+    # Input.hlsl's order, each entry the value of that file's function of the same part
+    "_AdditionalLightsPosition": ("float4", 32, "the additional lights' positions (a directional's direction, w 0)"),
+    "_AdditionalLightsColor": ("float4", 32, "the additional lights' colours"),
+    "_AdditionalLightsAttenuation": ("float4", 32, "the additional lights' range and cone factors"),
+    "_AdditionalLightsSpotDir": ("float4", 32, "the additional lights' spot directions (towards the light)"),
 }
+# each URP additional-light array and the stand-in function (Input.hlsl) that gives its entry i
+URP_LIGHTS = {"_AdditionalLightsPosition": "pbrlab_urp_additional_light_position",
+              "_AdditionalLightsColor": "pbrlab_urp_additional_light_color",
+              "_AdditionalLightsAttenuation": "pbrlab_urp_additional_light_attenuation",
+              "_AdditionalLightsSpotDir": "pbrlab_urp_additional_light_spot_direction"}
 # a global's declaration: its `uniform` (1), base (2: float|half|fixed), dimensions (3), name (4), length (5)
 _DECLARED = re.compile(r"^[ \t]*(uniform[ \t]+)?(float|half|fixed)([34](?:x4)?)[ \t]+(\w+)[ \t]*"
                        r"(?:\[[ \t]*(\d+)[ \t]*\])?[ \t]*;", re.M)
@@ -159,6 +171,11 @@ def fill_declared(program: str, active_program: str, active_included: str = "") 
         start = m.start(1) if m.group(1) else m.start(2)
         text = text[:start] + "static " + text[m.start(2):]
     static = [m for m in _STATIC_DECLARED.finditer(_outside_braces(active_included)) if _unitys(m)]
+    # URP's additional-light arrays (Input.hlsl, in every URP program): filled only where something
+    # reads one, past its declaration (the stand-ins read the functions that give them instead)
+    everything = active_program + "\n" + active_included
+    static = [m for m in static if m.group(4) not in URP_LIGHTS
+              or len(re.findall(rf"\b{m.group(4)}\b", everything)) > 1]
     return text, tuple(dict.fromkeys(m.group(4) for m in taken + static))
 
 
@@ -191,4 +208,9 @@ def fill_statements(filled, language: str) -> str:
                          ("_PreviousM", "unity_ObjectToWorld")):
         if name in filled:
             out.append(f"    {name} = {source};")
+    urp = [name for name in URP_LIGHTS if name in filled]
+    if urp:
+        out.append(f"    for (int pbrlab_l = 0; pbrlab_l < {FILLED[urp[0]][1]}; pbrlab_l++) {{")
+        out += [f"        {name}[pbrlab_l] = {URP_LIGHTS[name]}(pbrlab_l);" for name in urp]
+        out.append("    }")
     return "".join(line + "\n" for line in out)

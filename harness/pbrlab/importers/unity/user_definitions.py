@@ -38,7 +38,8 @@ Two cases in real shaders:
 - the mesh-drawn layout of URP 10's PostProcessing/Common.hlsl (Attributes { positionOS: POSITION,
   uv: TEXCOORD0 }, Varyings { positionCS, uv }, Vert), told by the shader reading
   ``<param>.positionOS`` of an ``Attributes`` parameter while declaring no ``struct Attributes``
-  of its own (Blit.hlsl's, URP 13 on, has only a vertex id): ``PBRLAB_USER_READS_Attributes_positionOS``.
+  of its own (Blit.hlsl's, URP 13 on, has only a vertex id): ``PBRLAB_USER_READS_Attributes_positionOS``;
+  not where the program includes Blit.hlsl itself (whose Attributes has positionOS on GLES only).
 
 Each other name is a ``PBRLAB_USER_DEFINES_<name>`` define (its leading underscores dropped) of the program; the stand-ins test it
 (``#ifndef PBRLAB_USER_DEFINES_PI``).
@@ -71,6 +72,11 @@ READS_PREFIX = "PBRLAB_USER_READS_"
 # URP 10's PostProcessing/Common.hlsl layout (module docstring): a parameter of type Attributes.
 EARLIER_ATTRIBUTES = "Attributes_positionOS"
 _ATTRIBUTES_PARAMETER = re.compile(r"\bAttributes\s+(\w+)\s*[,)]")
+# A program (or its own file) that includes Core RP's Blit.hlsl itself was written for Blit.hlsl's
+# Attributes (URP 13 on; Unity never has it beside URP 10's Common.hlsl, each defines Attributes),
+# whose positionOS and uv exist only under SHADER_API_GLES (Core RP 14 Blit.hlsl): a read of
+# v.positionOS in that branch (X-PostProcessing's VertRay) is Blit's own GLES path, not URP 10's.
+_BLIT_INCLUDE = re.compile(r'#[ \t]*include[ \t]*["<][^">]*Runtime/Utilities/Blit\.hlsl[">]')
 # Globals Unity 6's Core RP declares that earlier shaders declare themselves.
 GLOBALS = ("_BlitTexture_TexelSize",)
 
@@ -197,7 +203,7 @@ def _defines(text: str) -> dict:
              | {n for n in _GLOBAL.findall(text) if n in GLOBALS} | retyped_prelude_globals(text))
     reads = {n for n in EARLIER_FUNCTIONS if re.search(rf"\b{n}\b", text)
              and not re.search(rf"\b\w+\s+{n}\s*\([^()]*\)\s*\{{", text)}
-    if not re.search(r"\bstruct\s+Attributes\b", text) and any(
+    if not re.search(r"\bstruct\s+Attributes\b", text) and not _BLIT_INCLUDE.search(text) and any(
             re.search(rf"\b{p}\s*\.\s*positionOS\b", text) for p in _ATTRIBUTES_PARAMETER.findall(text)):
         reads.add(EARLIER_ATTRIBUTES)
     # (a name's leading underscores dropped: GLSL reserves the macro names with two in a row)

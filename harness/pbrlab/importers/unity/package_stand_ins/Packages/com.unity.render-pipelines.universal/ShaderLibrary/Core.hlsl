@@ -514,4 +514,7 @@ float4 unity_LightmapST;
 #endif
 #define unity_DynamicLightmapST float4(1.0, 1.0, 0.0, 0.0)
 
+// URP's Core.hlsl brings Input.hlsl (InputData, the lights' and camera's globals), as here.
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Input.hlsl"
+
 #endif
