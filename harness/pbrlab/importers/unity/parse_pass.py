@@ -22,6 +22,7 @@ from .unprovided import missing_include
 from .user_definitions import text_defines
 from .own_library_functions import renamed_in_own_files
 from .macro_redefinitions import undefined_before_redefinition
+from .shader_messages import dropped_printf_calls
 from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -250,6 +251,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     program, rewritten, redefined = undefined_before_redefinition(program, path, first_line, rewritten)  # FXC's warning
     if notes is not None:
         notes.extend(redefined)
+    program, dropped = dropped_printf_calls(program, path, first_line)  # HLSL's shader messages
+    if notes is not None:
+        notes.extend(dropped)
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"
