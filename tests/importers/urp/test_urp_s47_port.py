@@ -1,0 +1,35 @@
+"""URP's ``half4 frag(Varyings input) : SV_Target`` (issue 34, session 47): ``input``, ``output``,
+``active`` (a varying), ``filter`` and ``common`` are GLSL reserved words and HLSL's own names; the GLSL port
+renames them, also inside the shorter overload it writes for a default argument (session 46's
+refusal: the overload declared ``Varyings input`` as written). Drawn in both languages from a
+minimal shader of ours (shaders/s47-port/reserved_parameters.shader), checked against float64."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pbrlab.foundation.errors import PbrlabError
+from pbrlab.importers.unity import cg_types
+from test_urp_library_round2 import LANGUAGES, render_constant  # pytest puts this folder on sys.path
+
+SHADER = Path(__file__).parent / "shaders" / "s47-port" / "reserved_parameters.shader"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_reserved_parameter_names_in_an_entry_and_a_default_argument_overload(tmp_path, language, monkeypatch):
+    """Shade(input) with its defaults: the varying ``active`` (0.25, 0.5, 0.75) (a constant, so
+    interpolation keeps it) * 0.5 + 0.125 = (0.25, 0.375, 0.5); half is float on Direct3D 10+
+    targets (Microsoft's HLSL reference, "Scalar Types"), every value a dyadic fraction: bound
+    2^-24, one float32 rounding below 1. Control: the overload written with the names as the
+    program spells them (cg_types.renamed_reserved the identity), GLSL refuses ``input``."""
+    pixels, _ = render_constant(tmp_path, SHADER.read_text(), language, environment=False)
+    want = np.array([0.25, 0.375, 0.5])
+    assert (np.abs(pixels[:, :3] - want) <= 2.0 ** -24).all(), pixels[0, :3]
+    if language == "glsl":
+        monkeypatch.setattr(cg_types, "renamed_reserved", lambda text: text)
+        (tmp_path / "old").mkdir()
+        with pytest.raises(PbrlabError, match="reserved word"):
+            render_constant(tmp_path / "old", SHADER.read_text(), language, environment=False)
