@@ -52,6 +52,26 @@ def test_reserved_words_in_a_default_argument_overload_are_renamed(tmp_path, lan
             _render(tmp_path, _shader(tmp_path, "reserved_old", RESERVED_BODY, head=RESERVED_HEAD), language)
 
 
+# a GLSL built-in function the port writes in the program's own scope (not() for HLSL's !v)
+NOT_BODY = """
+            float not = 0.25;
+            float2 s = float2(0.5, 2.0);
+            bool2 nb = !(s > 1.0);
+            return float4(not, nb.x ? 0.5 : 0.0, nb.y ? 0.5 : 0.125, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_variable_named_as_a_builtin_the_port_writes(tmp_path, language, monkeypatch):
+    """``not`` is no HLSL keyword; the port writes HLSL's componentwise !v as GLSL's not(v), which
+    a local ``not`` would hide: (0.25, !(0.5 > 1) -> 0.5, !(2 > 1) -> 0.125). Control: ``not``
+    taken out of cg_types.RESERVED, GLSL finds no function ``not`` (a float hides it)."""
+    _assert_colour(tmp_path, _shader(tmp_path, "not_name", NOT_BODY), language, [0.25, 0.5, 0.125])
+    if language == "glsl":
+        monkeypatch.setattr(cg_types, "RESERVED", cg_types.RESERVED - {"not"})
+        with pytest.raises(PbrlabError):
+            _render(tmp_path, _shader(tmp_path, "not_name_old", NOT_BODY), language)
+
+
 # --- 2. GLSL's type names as a program's variables ------------------------------------------------
 TYPE_NAMES_BODY = """
             float2 vec2 = float2(0.25, 0.5);

@@ -451,8 +451,10 @@ GLSL_TYPE_NAMES = frozenset(
     [f"{p}vec{n}" for p in ("", "i", "u", "b") for n in (2, 3, 4)]
     + [f"mat{n}" for n in (2, 3, 4)] + [f"mat{r}x{c}" for r in (2, 3, 4) for c in (2, 3, 4)])
 # Names a Cg program may use that GLSL 330 reserves (keywords and reserved words) or that
-# cg_compat.glsl's macros expand to (lerp -> mix, ...): renamed pbr_unity_<name> wherever
-# the program uses them as names.
+# cg_compat.glsl's macros expand to (lerp -> mix, ...) or this pass writes into the program's
+# own scopes (not() of HLSL's !v, lessThan() of v < w, matrixCompMult() of m * n): renamed
+# pbr_unity_<name> wherever the program uses them as names (a local ``bool not`` would hide
+# GLSL's function).
 RESERVED = frozenset("""
     attribute varying layout centroid flat smooth noperspective patch sample subroutine invariant
     precise common partition active asm class union enum typedef template this packed resource
@@ -460,7 +462,7 @@ RESERVED = frozenset("""
     namespace using coherent restrict readonly writeonly buffer shared atomic_uint lowp mediump
     highp precision hvec2 hvec3 hvec4 fvec2 fvec3 fvec4 dvec2 dvec3 dvec4 union image1D image2D
     image3D imageCube mix fract inversesqrt dFdx dFdy samplerCube texture lessThan greaterThan
-    lessThanEqual greaterThanEqual equal notEqual
+    lessThanEqual greaterThanEqual equal notEqual not matrixCompMult
 """.split()) | GLSL_TYPE_NAMES
 RENAME_PREFIX = "pbr_unity_"
 # Names glslang's HLSL front end reserves (C++ words) that an HLSL program of Unity's may use as
