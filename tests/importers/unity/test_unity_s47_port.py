@@ -191,6 +191,35 @@ def test_a_cast_to_a_struct(tmp_path, language, monkeypatch):
             _render(tmp_path, _shader(tmp_path, "struct_cast_old", STRUCT_CAST_BODY, head=STRUCT_CAST_HEAD), language)
 
 
+# the zero of a struct whose members a macro of the program's declares, and a scalar cast to a
+# struct holding a matrix, a nested struct and an array of them
+MACRO_MEMBERS_HEAD = """
+        struct Inner { float2 p; float q[2]; };
+        #define EXTRA_MEMBERS float4 e1; float e2;
+        struct WithMacro { float x; EXTRA_MEMBERS };
+        struct Big { float a, b; Inner arr[2]; float3x3 m; };"""
+MACRO_MEMBERS_BODY = """
+            WithMacro w = (WithMacro)0;
+            Big h = (Big)0.25;
+            return float4(w.x + w.e1.x + w.e2 + 0.5, h.m[1][2], h.arr[1].q[0] + h.b, 1);"""
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_struct_zero_and_scalar_casts_construct_every_member(tmp_path, language, monkeypatch):
+    """(WithMacro)0 zeroes the members EXTRA_MEMBERS declares too; (Big)0.25 puts 0.25 in every
+    element, a matrix's off-diagonal ones included (HLSL's scalar-to-matrix replicates; GLSL's
+    mat3(x) would fill the diagonal only): (0 + 0.5, 0.25, 0.25 + 0.25). Control: the macro's
+    members unknown (cg_types._Parser.own_macro_members None), GLSL refuses the constructor
+    ("insufficient parameters in constructor")."""
+    _assert_colour(tmp_path, _shader(tmp_path, "macro_members", MACRO_MEMBERS_BODY, head=MACRO_MEMBERS_HEAD),
+                   language, [0.5, 0.25, 0.5])
+    if language == "glsl":
+        monkeypatch.setattr(cg_types._Parser, "own_macro_members", lambda self, macro: None)
+        with pytest.raises(PbrlabError, match="insufficient parameters"):
+            _render(tmp_path, _shader(tmp_path, "macro_members_old", MACRO_MEMBERS_BODY, head=MACRO_MEMBERS_HEAD),
+                    language)
+
+
 # --- 7. printf ------------------------------------------------------------------------------------
 PRINTF_BODY = """
             float v = 0.25;

@@ -844,8 +844,15 @@ class _Parser:
                     self.fail("struct member")
                 if self.at("("):
                     self.skip_balanced("(", ")")
+                    macro_member = True
+                else:
+                    declared = self.own_macro_members(tok.text)
+                    if declared is None:
+                        macro_member = True
+                    for n, ft in declared or ():
+                        fields[n] = self.member_type(fields, n, ft)
+                        members.append((tok.s, n, ft))
                 self.accept(";")
-                macro_member = True
                 continue
             while True:
                 name_tok = self.name()
@@ -872,6 +879,38 @@ class _Parser:
             self.sym.conditional.add(name)
             if not self.decl_only and not self.scopes:
                 self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    def own_macro_members(self, macro: str):
+        """[(name, Type)] of the members an object-like macro of the program's own declares
+        (``#define EXTRA float4 e1; float e2;`` written in a struct as ``EXTRA``), in order,
+        so a zero of the struct, ``(S)0``, constructs every member (a constructor without them:
+        GLSL's "insufficient parameters in constructor"); None where the program does not
+        define the macro once, or its body is no list of member declarations."""
+        bodies = set()
+        for s, e in self.directives:
+            m = re.match(r"#\s*define\s+(\w+)(?!\()[ \t]*(.*)", self.text[s:e], re.S)
+            if m and m.group(1) == macro:
+                bodies.add(m.group(2).replace("\\\n", " ").strip())
+        if len(bodies) != 1:
+            return None
+        sub = _Parser(bodies.pop(), self.sym.copy(), declarations_only=True)
+        out = []
+        try:
+            while sub.peek().kind != "eof":
+                sub.qualifiers()
+                t = sub.type_spec()
+                if t is None:
+                    return None
+                while True:
+                    n = sub.name().text
+                    out.append((n, sub.array_suffix(t)))
+                    sub.semantic()
+                    if not sub.accept(","):
+                        break
+                sub.expect(";")
+        except CgSyntaxError:
+            return None
+        return out or None
 
     @staticmethod
     def member_type(fields, name, t):
@@ -1699,6 +1738,9 @@ class _Parser:
             return f"{name}({', '.join(values)})"
         if not ty.numeric or ty.array:
             return None
+        if ty.cols:  # every element, not GLSL's diagonal (matrix_of_scalar)
+            before, after = matrix_of_scalar(ty)
+            return f"{before}{scalar}{after}"
         return f"{ty.cg()}({scalar})"
 
     def zero_value(self, ty: Type) -> str:
