@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.unity import cg_types
+from pbrlab.importers.unity import cg_types, texture_methods
 from test_urp_library_round2 import LANGUAGES, render_constant  # pytest puts this folder on sys.path
 
 SHADER = Path(__file__).parent / "shaders" / "s47-port" / "reserved_parameters.shader"
@@ -33,3 +33,28 @@ def test_reserved_parameter_names_in_an_entry_and_a_default_argument_overload(tm
         (tmp_path / "old").mkdir()
         with pytest.raises(PbrlabError, match="reserved word"):
             render_constant(tmp_path / "old", SHADER.read_text(), language, environment=False)
+
+
+ARRAY_SHADER = Path(__file__).parent / "shaders" / "s47-port" / "texture_array_macro_methods.shader"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_methods_of_a_texture2d_array_declared_by_core_rps_macro(tmp_path, language, monkeypatch):
+    """TEXTURE2D_ARRAY(_Layers) declares a Texture2DArray on Direct3D 11 (Core RP's
+    API/D3D11.hlsl), whose Sample / SampleLevel at (uv, layer) (Microsoft's HLSL reference,
+    "Texture2DArray") read the property's "gray" (0.5 in every channel, a float texel; every layer
+    index reads the one layer, texture_arrays.py), as SAMPLE_TEXTURE2D_ARRAY does:
+    (0.5 * 0.5, 0.5, 0.5 * 0.25), dyadic, bound 2^-24. Control: the macro not known to
+    texture_methods as declaring an array, the GLSL port leaves the methods as written and GLSL
+    refuses them ("unknown method")."""
+    pixels, _ = render_constant(tmp_path, ARRAY_SHADER.read_text(), language, environment=False)
+    want = np.array([0.25, 0.5, 0.125])
+    assert (np.abs(pixels[:, :3] - want) <= 2.0 ** -24).all(), pixels[0, :3]
+    if language == "glsl":
+        monkeypatch.setattr(texture_methods, "_MACRO_KIND", {k: v for k, v in texture_methods._MACRO_KIND.items()
+                                                             if k != "TEXTURE2D_ARRAY"})
+        monkeypatch.setattr(texture_methods, "_MACRO_DECLARATION",
+                            __import__("re").compile(r"\b(TEXTURE2D|TEXTURECUBE)(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]"))
+        (tmp_path / "old").mkdir()
+        with pytest.raises(PbrlabError, match="unknown method"):
+            render_constant(tmp_path / "old", ARRAY_SHADER.read_text(), language, environment=False)

@@ -44,10 +44,11 @@ _COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE", "Texture2DA
 # function's ``TEXTURE2D_PARAM(t, s)``): the same objects (Core RP's API/D3D11.hlsl declares
 # ``Texture2D t`` by them), whose methods are spelled here too; the macros themselves are left
 # for port.py's SRP pass, which spells them as combined samplers after this one.
-_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE|TEXTURE2D_SHADOW|TEXTURECUBE_SHADOW)"
+_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE|TEXTURE2D_SHADOW|TEXTURECUBE_SHADOW|TEXTURE2D_ARRAY)"
                                 r"(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
 _MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
-               "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube"}
+               "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube",
+               "TEXTURE2D_ARRAY": "Texture2DArray"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(SampleCmpLevelZero|SampleCmp|Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
 # A texture some method compares (``t.SampleCmp(s, uv, z)`` with a SamplerComparisonState s): a
 # GLSL comparison sampler, a depth texture with its comparison on (shadow_maps.py); its reads are
