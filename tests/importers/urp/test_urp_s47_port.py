@@ -1,5 +1,5 @@
 """URP's ``half4 frag(Varyings input) : SV_Target`` (issue 34, session 47): ``input``, ``output``,
-``active`` (a varying), ``filter`` and ``common`` are GLSL reserved words and HLSL's own names; the GLSL port
+``sample`` (a varying), ``filter`` and ``common`` are GLSL reserved words and HLSL's own names; the GLSL port
 renames them, also inside the shorter overload it writes for a default argument (session 46's
 refusal: the overload declared ``Varyings input`` as written). Drawn in both languages from a
 minimal shader of ours (shaders/s47-port/reserved_parameters.shader), checked against float64."""
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pbrlab.foundation.errors import PbrlabError
-from pbrlab.importers.unity import cg_types, texture_methods
+from pbrlab.importers.unity import cg_types, parse_pass, texture_methods
 from test_urp_library_round2 import LANGUAGES, render_constant  # pytest puts this folder on sys.path
 
 SHADER = Path(__file__).parent / "shaders" / "s47-port" / "reserved_parameters.shader"
@@ -20,14 +20,22 @@ SHADER = Path(__file__).parent / "shaders" / "s47-port" / "reserved_parameters.s
 
 @pytest.mark.parametrize("language", LANGUAGES)
 def test_reserved_parameter_names_in_an_entry_and_a_default_argument_overload(tmp_path, language, monkeypatch):
-    """Shade(input) with its defaults: the varying ``active`` (0.25, 0.5, 0.75) (a constant, so
+    """Shade(input) with its defaults: the varying ``sample`` (0.25, 0.5, 0.75) (a constant, so
     interpolation keeps it) * 0.5 + 0.125 = (0.25, 0.375, 0.5); half is float on Direct3D 10+
     targets (Microsoft's HLSL reference, "Scalar Types"), every value a dyadic fraction: bound
     2^-24, one float32 rounding below 1. Control: the overload written with the names as the
-    program spells them (cg_types.renamed_reserved the identity), GLSL refuses ``input``."""
+    program spells them (cg_types.renamed_reserved the identity), GLSL refuses ``input``; and the
+    member ``sample`` read as an interpolation modifier wherever it stands (parse_pass._leading
+    counting every such word, as before), the pass carries no such varying and the colour is
+    not the one above (0.125 in HLSL, the member read as zero; undefined in GLSL)."""
     pixels, _ = render_constant(tmp_path, SHADER.read_text(), language, environment=False)
     want = np.array([0.25, 0.375, 0.5])
     assert (np.abs(pixels[:, :3] - want) <= 2.0 ** -24).all(), pixels[0, :3]
+    with monkeypatch.context() as patched:
+        patched.setattr(parse_pass, "_leading", lambda words, qualifiers: sum(w in qualifiers for w in words))
+        (tmp_path / "member").mkdir()
+        pixels, _ = render_constant(tmp_path / "member", SHADER.read_text(), language, environment=False)
+        assert not (np.abs(pixels[:, :3] - want) <= 2.0 ** -24).all()
     if language == "glsl":
         monkeypatch.setattr(cg_types, "renamed_reserved", lambda text: text)
         (tmp_path / "old").mkdir()

@@ -1,4 +1,4 @@
-// s47-port: URP's common spelling `half4 frag(Varyings input) : SV_Target` (input and output are
+// s47-port: URP's common spelling `half4 frag(Varyings input) : SV_Target` (input, output and a varying sample are
 // GLSL reserved words, HLSL's own names), with a helper taking `Varyings input` and a default
 // argument, for which the GLSL port writes a shorter overload of its own.
 Shader "s47port/ReservedParameters" {
@@ -11,16 +11,16 @@ Shader "s47port/ReservedParameters" {
             #pragma fragment frag
             #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
             struct Attributes { float4 positionOS : POSITION; float2 uv : TEXCOORD0; };
-            struct Varyings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; half3 active : TEXCOORD1; };
+            struct Varyings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; half3 sample : TEXCOORD1; };
             Varyings vert(Attributes input) {
                 Varyings output = (Varyings)0;
                 output.positionCS = TransformObjectToHClip(input.positionOS.xyz);
                 output.uv = input.uv;
-                output.active = half3(0.25, 0.5, 0.75);
+                output.sample = half3(0.25, 0.5, 0.75);
                 return output;
             }
             half3 Shade(Varyings input, half filter = 0.5, half common = 0.125) {
-                return input.active * filter + common;
+                return input.sample * filter + common;
             }
             half4 frag(Varyings input) : SV_Target {
                 return half4(Shade(input), 1.0);
