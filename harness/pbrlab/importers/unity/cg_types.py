@@ -443,9 +443,18 @@ _GEOMETRY_STREAMS = {"PointStream", "LineStream", "TriangleStream"}
 _QUALIFIERS = {"const", "static", "uniform", "in", "out", "inout", "inline", "extern", "volatile",
                "precise", "nointerpolation", "linear", "centroid", "noperspective", "row_major",
                "column_major", "highp", "mediump", "lowp", "flat", "smooth", "groupshared"}
+# GLSL 330's vector and matrix type names (GLSL 3.30 section 3.6, "Keywords"), which HLSL does
+# not reserve (Microsoft's HLSL reference, "Keywords" and "Reserved Words"): a program's
+# ``float2 vec2 = ...`` is its own variable, renamed in the port (port.py's float2 -> vec2 would
+# otherwise meet it). Sampler names are left out: Cg spells its own sampler types so.
+GLSL_TYPE_NAMES = frozenset(
+    [f"{p}vec{n}" for p in ("", "i", "u", "b") for n in (2, 3, 4)]
+    + [f"mat{n}" for n in (2, 3, 4)] + [f"mat{r}x{c}" for r in (2, 3, 4) for c in (2, 3, 4)])
 # Names a Cg program may use that GLSL 330 reserves (keywords and reserved words) or that
-# cg_compat.glsl's macros expand to (lerp -> mix, ...): renamed pbr_unity_<name> wherever
-# the program uses them as names.
+# cg_compat.glsl's macros expand to (lerp -> mix, ...) or this pass writes into the program's
+# own scopes (not() of HLSL's !v, lessThan() of v < w, matrixCompMult() of m * n): renamed
+# pbr_unity_<name> wherever the program uses them as names (a local ``bool not`` would hide
+# GLSL's function).
 RESERVED = frozenset("""
     attribute varying layout centroid flat smooth noperspective patch sample subroutine invariant
     precise common partition active asm class union enum typedef template this packed resource
@@ -453,19 +462,34 @@ RESERVED = frozenset("""
     namespace using coherent restrict readonly writeonly buffer shared atomic_uint lowp mediump
     highp precision hvec2 hvec3 hvec4 fvec2 fvec3 fvec4 dvec2 dvec3 dvec4 union image1D image2D
     image3D imageCube mix fract inversesqrt dFdx dFdy samplerCube texture lessThan greaterThan
-    lessThanEqual greaterThanEqual equal notEqual
-""".split())
+    lessThanEqual greaterThanEqual equal notEqual not matrixCompMult
+""".split()) | GLSL_TYPE_NAMES
 RENAME_PREFIX = "pbr_unity_"
 # Names glslang's HLSL front end reserves (C++ words) that an HLSL program of Unity's may use as
 # its own: ``float char = ...`` compiles in Unity (a shader of the hidden URP sample draws so)
 # and glslang answers "'char' : Reserved word"; renamed pbr_unity_<name> in the HLSL as
 # written (fxc_conversions), as the GLSL port renames GLSL's reserved words.
-GLSLANG_HLSL_RESERVED = frozenset({"char"})
+# glslang's HLSL front end also takes GLSL's vec2..vec4 and mat2..mat4 for types (its keyword
+# table holds them: "';' : Expected" after ``float vec2``), which HLSL does not reserve.
+GLSLANG_HLSL_RESERVED = frozenset({"char", "vec2", "vec3", "vec4", "mat2", "mat3", "mat4"})
 # A program's function names renamed so in the HLSL as written (only as functions: a member or
 # variable ``main`` is left alone): ``main``, the name of pbrlab's HLSL entry point
 # (generate.py), for which glslang takes a program's ``float4 main(float2)`` ("No function
 # definition (body) found: main(vf2;").
 GLSLANG_HLSL_FUNCTION_NAMES = frozenset({"main"})
+
+
+def renamed_reserved(text: str) -> str:
+    """``text`` (a parameter list, a call or a head the type pass writes itself: the default
+    argument overloads) with the names GLSL reserves renamed as rename_reserved_name renames them
+    where the program writes them, but for a qualifier (a word of _QUALIFIERS followed by a name:
+    ``centroid float2 uv``)."""
+    def one(m):
+        word, after = m.group(1), text[m.end():]
+        if not is_reserved(word) or (word in _QUALIFIERS and re.match(r"\s*[A-Za-z_]", after)):
+            return word
+        return RENAME_PREFIX + word
+    return re.sub(r"(?<![\w.])([A-Za-z_]\w*)", one, text)
 
 
 def is_reserved(name: str) -> bool:
@@ -820,8 +844,15 @@ class _Parser:
                     self.fail("struct member")
                 if self.at("("):
                     self.skip_balanced("(", ")")
+                    macro_member = True
+                else:
+                    declared = self.own_macro_members(tok.text)
+                    if declared is None:
+                        macro_member = True
+                    for n, ft in declared or ():
+                        fields[n] = self.member_type(fields, n, ft)
+                        members.append((tok.s, n, ft))
                 self.accept(";")
-                macro_member = True
                 continue
             while True:
                 name_tok = self.name()
@@ -848,6 +879,38 @@ class _Parser:
             self.sym.conditional.add(name)
             if not self.decl_only and not self.scopes:
                 self._define_conditional_zero(name, open_.s, end.e, members, inside)
+
+    def own_macro_members(self, macro: str):
+        """[(name, Type)] of the members an object-like macro of the program's own declares
+        (``#define EXTRA float4 e1; float e2;`` written in a struct as ``EXTRA``), in order,
+        so a zero of the struct, ``(S)0``, constructs every member (a constructor without them:
+        GLSL's "insufficient parameters in constructor"); None where the program does not
+        define the macro once, or its body is no list of member declarations."""
+        bodies = set()
+        for s, e in self.directives:
+            m = re.match(r"#\s*define\s+(\w+)(?!\()[ \t]*(.*)", self.text[s:e], re.S)
+            if m and m.group(1) == macro:
+                bodies.add(m.group(2).replace("\\\n", " ").strip())
+        if len(bodies) != 1:
+            return None
+        sub = _Parser(bodies.pop(), self.sym.copy(), declarations_only=True)
+        out = []
+        try:
+            while sub.peek().kind != "eof":
+                sub.qualifiers()
+                t = sub.type_spec()
+                if t is None:
+                    return None
+                while True:
+                    n = sub.name().text
+                    out.append((n, sub.array_suffix(t)))
+                    sub.semantic()
+                    if not sub.accept(","):
+                        break
+                sub.expect(";")
+        except CgSyntaxError:
+            return None
+        return out or None
 
     @staticmethod
     def member_type(fields, name, t):
@@ -1021,7 +1084,9 @@ class _Parser:
                 call = f"{name}({', '.join(args)})"
                 body = f"return {call};" if ret.base != "void" else f"{call};"
                 overloads.append(f" {ret.cg()} {name}({', '.join(t for t, _ in spelled[:k])}) {{ {body} }}")
-            self.edits.close(self.toks[self.i - 1].e, "".join(overloads))
+            # the overloads' names as the program's are renamed (``float3 input``, a function
+            # ``smooth``): written here from the text as written, so renamed here too
+            self.edits.close(self.toks[self.i - 1].e, renamed_reserved("".join(overloads)))
 
     def another_head_follows(self, name: str) -> bool:
         """A preprocessor line before the next token, then another head of the function
@@ -1078,8 +1143,8 @@ class _Parser:
             args += "".join(f", ({_glsl_literals(d)})" for d in defaults[k:])
             prototypes.append(f" {head};")
             bodies.append(f"{head} {{ {'return ' if ret.base != 'void' else ''}{name}({args}); }}")
-        self.edits.close(self.toks[self.i - 1].e, "".join(prototypes))
-        self.edits.close(len(self.text), "\n" + "\n".join(tail + bodies) + "\n")
+        self.edits.close(self.toks[self.i - 1].e, renamed_reserved("".join(prototypes)))
+        self.edits.close(len(self.text), "\n" + "\n".join(tail + [renamed_reserved(b) for b in bodies]) + "\n")
 
     def declarators(self, t, is_global, const, const_word=None):
         """``const_word``: a local's ``const``, dropped where an initialiser is not a constant
@@ -1588,6 +1653,8 @@ class _Parser:
                     return E(t.s, x.e, Type("bool", x.t.dim), False)
                 self.condition(x)
                 return E(t.s, x.e, Type("bool"), False)
+            if t.text in ("-", "+", "~"):
+                return E(t.s, x.e, self.bool_sign(x), False)
             return E(t.s, x.e, x.t, False)
         if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) and self.peek(1).text in self.sym.structs \
                 and self.peek(3).text == "0":
@@ -1596,6 +1663,11 @@ class _Parser:
             self.edits.replace(open_.s, zero.e, self.zero_value(Type(name.text)))
             return E(open_.s, zero.e, Type(name.text), False)
         cast = self.type_named(self.peek(1).text) if t.text == "(" and self.peek(1).kind == "id" and self.at(")", 2) else None
+        if cast is not None and cast.base in self.sym.structs and not cast.dim and not self.decl_only \
+                and (self.peek(3).kind in ("id", "num") or self.at("(", 3)):
+            cast_value = self.struct_cast(cast)
+            if cast_value is not None:
+                return cast_value
         if cast is not None and cast.numeric:
             # a cast (float3)x -> float3(x); of an alias too: (real3x3)m -> float3x3(m)
             open_, name, close = self.next(), self.next(), self.next()
@@ -1608,6 +1680,68 @@ class _Parser:
             self.edits.close(x.e, ")")
             return E(open_.s, x.e, ty, True)
         return self.postfix()
+
+    def bool_sign(self, x: E) -> Type | None:
+        """The type of ``-x``, ``+x`` or ``~x``. Of a bool: HLSL promotes the operand to int
+        first, as C++ does (clang's, DXC's; glslang's HLSL converts a bool operand of arithmetic
+        to int, its Test/hlsl.boolConv.vert): -true is -1. GLSL's and glslang's operators refuse
+        a bool: the conversion spelled out in both languages."""
+        if x.t is None or not x.t.numeric or x.t.base != "bool" or x.t.cols or self.decl_only:
+            return x.t
+        spelled = "int" + (str(x.t.dim) if x.t.dim > 1 else "")
+        for edits in (self.edits, self.fxc_edits):
+            edits.open(x.s, spelled + "(")
+            edits.close(x.e, ")")
+        return Type("int", x.t.dim)
+
+    def struct_cast(self, cast: Type) -> E | None:
+        """A cast to a struct, ``(VertexOutput)x``, at '(' (not ``(S)0``: unary): GLSL has no
+        casts, and ``(S)`` alone reads as a constructor missing its arguments. Of a value of the
+        struct itself, the cast is dropped; of a scalar (a name or a literal), every component
+        of every member is the scalar converted (Microsoft's HLSL reference, "Casting and
+        conversions": scalar-to-structure, as the port's (S)0); None, nothing read, otherwise
+        (left as written)."""
+        mark, fxc_mark, at = self.edits.mark(), self.fxc_edits.mark(), self.i
+        open_, _, close = self.next(), self.next(), self.next()
+        x = self.unary()
+        if x.t == cast:
+            self.edits.replace(open_.s, close.e, "")
+            return E(open_.s, x.e, cast, False)
+        written = self.text[x.s:x.e]
+        if x.t is not None and x.t.scalar and (_PLAIN.fullmatch(written) or x.literal
+                                               or (self.i == at + 4 and self.toks[at + 3].kind == "num")):
+            filled = self.filled_value(cast, _glsl_literals(written))
+            if filled is not None:
+                self.edits.drop_after(mark)
+                self.edits.replace(open_.s, x.e, filled)
+                return E(open_.s, x.e, cast, True)
+        self.edits.drop_after(mark)
+        self.fxc_edits.drop_after(fxc_mark)
+        self.i = at
+        return None
+
+    def filled_value(self, ty: Type, scalar: str) -> str | None:
+        """``ty`` with the scalar expression ``scalar`` (a name or a literal) in every
+        component, converted to each member's base, in Cg spelling; None for a struct whose
+        members depend on #if lines or are of unknown or non-numeric type."""
+        if ty.array > 0:
+            element = self.filled_value(ty.element(), scalar)
+            return None if element is None else f"{ty.cg()}({', '.join([element] * ty.array)})"
+        if ty.base in self.sym.structs:
+            members = list(self.sym.structs[ty.base].values())
+            if ty.base in self.sym.conditional or None in members:
+                return None
+            values = [self.filled_value(m, scalar) for m in members]
+            if None in values:
+                return None
+            name = RENAME_PREFIX + ty.base if is_reserved(ty.base) else ty.base
+            return f"{name}({', '.join(values)})"
+        if not ty.numeric or ty.array:
+            return None
+        if ty.cols:  # every element, not GLSL's diagonal (matrix_of_scalar)
+            before, after = matrix_of_scalar(ty)
+            return f"{before}{scalar}{after}"
+        return f"{ty.cg()}({scalar})"
 
     def zero_value(self, ty: Type) -> str:
         """``ty``'s zero in Cg spelling: 0 of its base in every component, every member's zero
@@ -1962,7 +2096,9 @@ class _Parser:
         exact = [s for s in sigs if all(_same_shape(a.t, p.type) for a, p in zip(args, s.params))]
         if len(exact) == 1:
             return exact[0]
-        return None
+        if exact:
+            return None
+        return _best_converted(sigs, args)
 
     def intrinsic(self, fname, args):
         kind, scalar_ok = _INTRINSICS[fname]
@@ -2086,6 +2222,41 @@ def _base(a: Type, b: Type) -> str:
     if "int" in bases:
         return "int"
     return "bool"
+
+
+def _conversion_rank(arg: Type, param: Param):
+    """What HLSL's implicit conversion of an argument to a parameter costs, for choosing among
+    overloads none of which takes the arguments as they are: 0 the same shape, 1 a scalar
+    splatted to a vector or a base converted, 2 a vector truncated (clang's HLSL ranks a vector
+    splat and truncation as conversions of their own, truncation the costlier: clang's
+    Sema/Overload.h, ICK_HLSL_Vector_Splat / ICK_HLSL_Vector_Truncation); None where HLSL converts no such way (a shorter vector to a
+    longer one, a matrix, a struct, or an out parameter of another shape)."""
+    target = param.type
+    if _same_shape(arg, target):
+        return 0
+    if param.qual != "in" or not (arg.numeric and target.numeric) or arg.cols or target.cols:
+        return None
+    if arg.dim == target.dim:
+        return 1
+    if arg.dim == 1:
+        return 1
+    if arg.dim > target.dim:
+        return 2
+    return None
+
+
+def _best_converted(sigs, args):
+    """The one signature whose every argument's conversion costs no more than any other's
+    (_conversion_rank), as HLSL chooses ``float3 mod(float3, float3)`` for ``mod(v3, 2.0)``
+    over ``float2 mod(float2, float2)``; None where none takes them or two tie."""
+    ranked = []
+    for sig in sigs:
+        ranks = [_conversion_rank(a.t, p) for a, p in zip(args, sig.params)]
+        if None not in ranks:
+            ranked.append((sig, ranks))
+    best = [(sig, ranks) for sig, ranks in ranked
+            if all(all(r <= o for r, o in zip(ranks, other)) for _, other in ranked)]
+    return best[0][0] if len(best) == 1 else None
 
 
 def _same_shape(a: Type, b: Type) -> bool:

@@ -22,6 +22,7 @@ from .unprovided import missing_include
 from .user_definitions import text_defines
 from .own_library_functions import renamed_in_own_files
 from .macro_redefinitions import undefined_before_redefinition
+from .shader_messages import dropped_printf_calls
 from .written_globals import copied_across_includes, copied_in_includes, copied_written_globals
 from .member_macros import expanded_member_macros
 from .source_text import (IDENT, INCLUDE, UnityShaderError, blank_comments, check_refusals, declared_keywords,
@@ -50,6 +51,14 @@ def _split_params(text: str) -> list[str]:
     return [p.strip() for p in out if p.strip()]
 
 
+def _leading(words: list, qualifiers: tuple) -> int:
+    """How many of ``words`` lead as qualifiers, leaving a type and a name after them."""
+    k = 0
+    while k < len(words) - 2 and words[k] in qualifiers:
+        k += 1
+    return k
+
+
 def _param(text: str, where: str) -> tuple:
     """(qualifier, type, name, semantic) of one parameter."""
     semantic = ""
@@ -57,9 +66,11 @@ def _param(text: str, where: str) -> tuple:
     if m:
         semantic, text = m.group(1), text[:m.start()].strip()
     words = text.split()
-    qualifiers = [w for w in words if w in ("in", "out", "inout", "uniform", "nointerpolation",
-                                            "linear", "centroid", "noperspective", "sample", "const")]
-    words = [w for w in words if w not in qualifiers]
+    # the qualifiers lead (a parameter named as one, ``float sample``, is a name: glslang's HLSL
+    # reads ``sample`` as a modifier only before a type, and takes it as a name)
+    lead = _leading(words, ("in", "out", "inout", "uniform", "nointerpolation", "linear", "centroid",
+                            "noperspective", "sample", "const"))
+    qualifiers, words = words[:lead], words[lead:]
     if len(words) != 2:
         raise UnityShaderError(f"{where}: cannot read the parameter {text!r}")
     qual = next((q for q in qualifiers if q in ("out", "inout")), "in")
@@ -133,7 +144,8 @@ def _structs(masked: str) -> dict:
             if sm:
                 semantic, decl = sm.group(1), decl[:sm.start()].strip()
             all_words = decl.replace(",", " , ").split()
-            words = [w for w in all_words if w not in ("nointerpolation", "linear", "centroid", "noperspective", "sample")]
+            # interpolation modifiers lead; a member named as one (``half3 sample``) is a name
+            words = all_words[_leading(all_words, ("nointerpolation", "linear", "centroid", "noperspective", "sample")):]
             if len(words) < 2:
                 continue
             kind, names = words[0], [w for w in words[1:] if w != ","]
@@ -250,6 +262,9 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     program, rewritten, redefined = undefined_before_redefinition(program, path, first_line, rewritten)  # FXC's warning
     if notes is not None:
         notes.extend(redefined)
+    program, dropped = dropped_printf_calls(program, path, first_line)  # HLSL's shader messages
+    if notes is not None:
+        notes.extend(dropped)
 
     def where(index: int) -> str:
         return f"{path}:{first_line - 1 + line_of(program, min(index, len(program)))}"

@@ -13,7 +13,8 @@ sampler objects unused ints, and each method call the Cg function of the same lo
 ``SampleLevel(s, uv, lod)`` -> ``tex2Dlod(t, float4(uv, 0, lod))``, ``SampleBias(s, uv, b)`` ->
 ``tex2Dbias(t, float4(uv, 0, b))``, ``SampleGrad(s, uv, dx, dy)`` -> ``tex2Dgrad(t, uv, dx, dy)``,
 ``Load(int3(x, y, mip))`` -> ``pbr_unity_load(t, int3(...))`` (texelFetch); the cube's
-``Sample`` / ``SampleLevel`` -> ``texCUBE`` / ``texCUBElod``. The sampler's own state (an inline
+``Sample`` / ``SampleLevel`` -> ``texCUBE`` / ``texCUBElod``; a 2D array's (``Texture2DArray``, a ``sampler2DArray``) ``Sample`` / ``SampleLevel``
+-> ``UNITY_SAMPLE_TEX2DARRAY`` / ``_LOD`` (the Unity prelude's). The sampler's own state (an inline
 sampler's filter and wrap, by its name) is the texture's here, as for every combined sampler.
 Any other method (``GetDimensions``, ``Gather``) is left as written and the compiler names it.
 A function's parameter of these types is spelled likewise (a texture's, a combined sampler; a
@@ -32,21 +33,22 @@ from .source_text import call_arguments
 # combined_samplers)
 # (a ``uniform`` before it: HLSL's default for a global, GLSL's for a sampler; a sampler object's
 # int is a static const, which takes none)
-_DECLARATION = re.compile(r"(?:\buniform\s+)?\b(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
+_DECLARATION = re.compile(r"(?:\buniform\s+)?\b(Texture2DArray|Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)(?:\s*<\s*\w+\s*>)?"
                           r"(\s+\w+(?:\s*,\s*\w+)*)\s*;")
 # a parameter of one of these types (``float2 Parallax(Texture2D t, SamplerState s, float2 uv)``):
 # after the list's '(' or a ',' (a qualifier between), before the next ',' or ')'
-_PARAMETER = re.compile(r"(?<=[(,])(\s*(?:(?:in|uniform)\s+)?)(Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)"
+_PARAMETER = re.compile(r"(?<=[(,])(\s*(?:(?:in|uniform)\s+)?)(Texture2DArray|Texture2D|TextureCube|SamplerState|SamplerComparisonState|sampler)"
                         r"(?:\s*<\s*\w+\s*>)?(\s+)(\w+)(?=\s*[,)])")
-_COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE"}
+_COMBINED = {"Texture2D": "sampler2D", "TextureCube": "samplerCUBE", "Texture2DArray": "sampler2DArray"}
 # Core RP's declaration macros (a URP program's ``TEXTURE2D(_Tex); SAMPLER(sampler_Tex);``, a
 # function's ``TEXTURE2D_PARAM(t, s)``): the same objects (Core RP's API/D3D11.hlsl declares
 # ``Texture2D t`` by them), whose methods are spelled here too; the macros themselves are left
 # for port.py's SRP pass, which spells them as combined samplers after this one.
-_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE|TEXTURE2D_SHADOW|TEXTURECUBE_SHADOW)"
+_MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEXTURECUBE|TEXTURE2D_SHADOW|TEXTURECUBE_SHADOW|TEXTURE2D_ARRAY)"
                                 r"(?:_PARAM)?\s*\(\s*(\w+)\s*[,)]")
 _MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
-               "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube"}
+               "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube",
+               "TEXTURE2D_ARRAY": "Texture2DArray"}
 _METHOD = re.compile(r"\b(\w+)\s*\.\s*(SampleCmpLevelZero|SampleCmp|Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
 # A texture some method compares (``t.SampleCmp(s, uv, z)`` with a SamplerComparisonState s): a
 # GLSL comparison sampler, a depth texture with its comparison on (shadow_maps.py); its reads are
@@ -91,6 +93,15 @@ def _call(kind: str, method: str, texture: str, args: list):
         if method == "SampleLevel" and len(args) == 3:  # a longer location cut to its first
             # three, as FXC passes it (warning X3206, implicit truncation of a vector type)
             return f"texCUBElod({texture}, float4(({args[1]}).xyz, {args[2]}))"
+    if kind == "Texture2DArray":
+        # a 2D array's location is (u, v, layer) (Microsoft's HLSL reference, "Texture2DArray"
+        # and "Sample (DirectX HLSL Texture Object)": float3 for Texture2DArray); the Unity
+        # prelude's UNITY_SAMPLE_TEX2DARRAY(_LOD) reads the array as Unity's macros of the same
+        # names do (a longer location cut to three, as FXC passes it)
+        if method == "Sample" and len(args) == 2:
+            return f"UNITY_SAMPLE_TEX2DARRAY({texture}, float3(({args[1]}).xyz))"
+        if method == "SampleLevel" and len(args) == 3:
+            return f"UNITY_SAMPLE_TEX2DARRAY_LOD({texture}, float3(({args[1]}).xyz), {args[2]})"
     return None  # another method or form: left for the compiler to name
 
 
@@ -169,7 +180,7 @@ def spelled_texture_methods(code: str, known: dict | None = None) -> str:
     compared = set(_COMPARED_READ.findall(code))
 
     def combined(kind: str, name: str) -> str:
-        return (_COMPARED if name in compared else _COMBINED)[kind]
+        return (_COMPARED if name in compared and kind in _COMPARED else _COMBINED)[kind]
     # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
     # sampler an unused int (the caller passes the sampler's int: the declarations below)
     code = _PARAMETER.sub(lambda m: f"{m.group(1)}{combined(m.group(2), m.group(4)) if m.group(2) in _COMBINED else 'int'}"
