@@ -16,6 +16,9 @@ Shader "s47-stages/partitioning_macro" {
         #define UNITY_outputcontrolpoints outputcontrolpoints
         #define MY_INTEGER "integer"
         #define PARTITION_METHOD MY_INTEGER
+        #ifndef PARTITION_METHOD  // (a library's default, as Catlike Coding-derived includes write it: not taken)
+        #define PARTITION_METHOD "fractional_odd"
+        #endif
         #define CONTROL_POINTS 3
         #define LEVEL 2.5
         #define HALF_SIDE 0.6
