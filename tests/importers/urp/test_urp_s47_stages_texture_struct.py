@@ -76,3 +76,17 @@ def test_the_spelling_keeps_lines_and_leaves_other_structs():
     assert "info.tex" not in spelled and "info.st.xy" in spelled
     plain = "struct A { float4 x; };\nfloat4 f(A a) { return a.x; }\n"
     assert spelled_out(plain) == plain
+
+
+def test_hlsl_typed_members_and_a_parameter_handed_on():
+    text = ("struct T { Texture2D<float4> map; SamplerState ss; float k; };\n"
+            "float4 F(T t, float2 uv) { return t.map.Sample(t.ss, uv) * t.k; }\n"
+            "float4 G(T t) { return F(t, 0.5); }\n"
+            "float4 H() { T t; t.map = _A; t.ss = sampler_A; t.k = 2; return G(t); }\n")
+    spelled = spelled_out(text)
+    assert spelled.count("\n") == text.count("\n")
+    assert "struct T {" in spelled and "Texture2D" not in spelled.split("\n")[0]
+    assert "float4 F(T t, Texture2D<float4> t_map, SamplerState t_ss, float2 uv)" in spelled
+    assert "return t_map.Sample(t_ss, uv) * t.k;" in spelled
+    assert "return F(t, t_map, t_ss, 0.5);" in spelled          # a parameter handed on
+    assert "return G(t, _A, sampler_A);" in spelled and "t.k = 2;" in spelled
