@@ -30,17 +30,16 @@ and ``SV_PrimitiveID`` from ``gl_PrimitiveIDIn``, and calls the function.
 
 A geometry function taking ``point`` input (``void geom(point v2g IN[1], ...)``: billboards,
 grass) runs once per mesh triangle, given the triangle's first vertex as its point. Unity draws
-a mesh with the mesh's own topology (triangles: MeshTopology.Triangles; it sets no point list for
-a point geometry shader), so D3D11 pairs a point-input geometry shader with a triangle list, a
-mismatch D3D11's runtime leaves to the driver and that "(sort of) works in D3D11 on some
-drivers" (vkd3d-proton pull request 2361, "Validate GS input topology", 2025: the Unity game
-Clanfolk draws its triangles through a point geometry shader). DXVK reproduces what those
-drivers draw by compiling the geometry shader for the draw's topology with the input array's
-element 0 the primitive's first vertex (dxvk commit b41253e1, "Add pass to patch GS input topology
-if necessary", DxvkShader::patchInputTopology): so here, in both languages, the stage declares
-``layout(triangles) in`` and hands the function ``gl_in[0]``'s vertex
-(``POINT_INPUT_LAYOUT``). A vertex shared by several triangles is a point of each triangle
-whose first vertex it is.
+a mesh with its submesh's own topology (MeshTopology; points only for a mesh built with
+MeshTopology.Points), so on D3D11 a point-input geometry shader meets a triangle list, a
+mismatch that "(sort of) works in D3D11 on some drivers" (vkd3d-proton pull request 2361,
+"Validate GS input topology", 2025, on the Unity game Clanfolk, whose point geometry shader is
+drawn with triangles; D3D12 validation and Vulkan reject it). DXVK's workaround for that game
+(dxvk pull request 4716, commit b41253e1, DxvkShader::patchInputTopology) compiles the geometry
+shader for the draw's topology, the input array's element 0 being each primitive's first
+vertex: pbrlab does the same in both languages, the stage declaring ``layout(triangles) in``
+(``POINT_INPUT_LAYOUT``) and handing the function ``gl_in[0]``'s vertex. A vertex is a point of
+each triangle it starts; one that starts none draws nothing.
 
 A function of the program that takes the stream (``void emit(inout TriangleStream<T> s, ...)``)
 loses that parameter too, and a call handing the stream on (``emit(stream, ...)``) that argument.
