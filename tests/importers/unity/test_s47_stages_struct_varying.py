@@ -58,3 +58,48 @@ def test_the_leaves_take_the_members_semantic_or_their_own():
                                     ("int", "i.k", "TEXCOORD3"), ("float2", "d.a.uv", "TEXCOORD7"),
                                     ("int", "d.a.k", "TEXCOORD6"), ("float3", "d.n", "NORMAL")]
     assert structs["V"].flat == {"i.k", "d.a.k"}
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_struct_member_reaches_a_geometry_stage(tmp_path, language):
+    """shaders/s47-stages/struct_varying_geometry.shader: the point-input billboard of
+    test_s47_stages_point_geometry.py with its uv in ``v2g.inner`` (a struct member at TEXCOORD0):
+    the one square, around corner 0 at NDC (-0.6, 0.6), is coloured (corner 0's uv, 0.5) =
+    (0, 1, 0.5) exactly. In HLSL spirv-cross names the leaf ``IN_inner_uv`` (before it was not
+    linked: "cannot link the geometry stage's IN_inner_uv"); control: the pixels beside the
+    square stay empty."""
+    shader = tmp_path / "geometry.shader"
+    shader.write_text((HERE / "shaders/s47-stages/struct_varying_geometry.shader").read_text())
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    h, w = image.shape[:2]
+    X, Y = np.meshgrid((np.arange(w) + 0.5) / w * 2 - 1, 1 - (np.arange(h) + 0.5) / h * 2)
+    d = 0.02 * 2 / w  # (pixel centres this close to the square's edge may fall either way)
+    inner = (np.abs(X + 0.6) <= 0.1 - d) & (np.abs(Y - 0.6) <= 0.1 - d)
+    outer = (np.abs(X + 0.6) <= 0.1 + d) & (np.abs(Y - 0.6) <= 0.1 + d)
+    assert inner.sum() > 20 and not (image[..., 3] > 0)[~outer].any()
+    assert np.array_equal(image[inner][:, :3], np.tile([0.0, 1.0, 0.5], (int(inner.sum()), 1)))
+
+
+@pytest.mark.parametrize("language", ["glsl", "hlsl"])
+def test_a_struct_member_passes_through_tessellation(tmp_path, language):
+    """shaders/s47-stages/struct_varying_tessellation.shader: the control points and the domain
+    output carry ``In inner : TEXCOORD0``; the flat patches (BULGE 0) cover |X|, |Y| <= 0.6 and
+    the interpolated uv is linear there: x = X / 2, z = -Y / 2 (clip = 0.6 (x, -z) / 0.3), so
+    u = (X / 2 + 0.3) / 0.6, v = (Y / 2 + 0.3) / 0.6. In HLSL glslang wrote the leaf of the
+    hull's output at a constant index (GLSL refused it: "outputs can only be indexed by
+    gl_InvocationID"; tessellation_stage.hlsl_renamed). Tolerance: float32 interpolation, 1e-6.
+    Control: the uv varies across the square (a leaf left 0 would not)."""
+    shader = tmp_path / "tessellated.shader"
+    shader.write_text((HERE / "shaders/s47-stages/struct_varying_tessellation.shader").read_text())
+    data = corpus.scene_for(shader)
+    data["objects"] = [{"mesh": {"primitive": "plane", "size": 0.6}, "material": "m"}]
+    image = render_scene(parse_scene(data, "t", tmp_path), language=language).linear.astype(np.float64)
+    h, w = image.shape[:2]
+    X, Y = np.meshgrid((np.arange(w) + 0.5) / w * 2 - 1, 1 - (np.arange(h) + 0.5) / h * 2)
+    inside = (np.abs(X) <= 0.6 - 0.02 * 2 / w) & (np.abs(Y) <= 0.6 - 0.02 * 2 / w)
+    want = np.stack([(X / 2 + 0.3) / 0.6, (Y / 2 + 0.3) / 0.6], axis=-1)
+    assert inside.sum() > 1000 and (image[..., 3] > 0)[inside].all()
+    assert np.abs(image[inside][:, :2] - want[inside]).max() <= 1e-6
+    assert np.ptp(image[inside][:, 0]) > 0.9

@@ -189,7 +189,8 @@ def hlsl_renamed(vf, glsl: str) -> str:
                                      (g.output_type, g.stream_name, "pbrlab_gvary_", "")):
         for _, member, semantic in _members(vf, kind, g.where, own):
             if semantic and _canonical(semantic) not in _POSITION:
-                spirv_name = f"{param}_{member}" if member else param  # a bare value: the parameter's name
+                # (a bare value: the parameter's name; a struct member's leaf, inner.uv: IN_inner_uv)
+                spirv_name = f"{param}_{member.replace('.', '_')}" if member else param
                 glsl = re.sub(r"\b" + re.escape(spirv_name) + r"\b", prefix + _canonical(semantic), glsl)
     unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
                 if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))
