@@ -28,6 +28,19 @@ fragment stages define them as nothing (the geometry function is dead code there
 ``main`` fills the input array from ``gl_in[k].gl_Position`` and the vertex stage's outputs
 and ``SV_PrimitiveID`` from ``gl_PrimitiveIDIn``, and calls the function.
 
+A geometry function taking ``point`` input (``void geom(point v2g IN[1], ...)``: billboards,
+grass) runs once per mesh triangle, given the triangle's first vertex as its point. Unity draws
+a mesh with its submesh's own topology (MeshTopology; points only for a mesh built with
+MeshTopology.Points), so on D3D11 a point-input geometry shader meets a triangle list, a
+mismatch that "(sort of) works in D3D11 on some drivers" (vkd3d-proton pull request 2361,
+"Validate GS input topology", 2025, on the Unity game Clanfolk, whose point geometry shader is
+drawn with triangles; D3D12 validation and Vulkan reject it). DXVK's workaround for that game
+(dxvk pull request 4716, commit b41253e1, DxvkShader::patchInputTopology) compiles the geometry
+shader for the draw's topology, the input array's element 0 being each primitive's first
+vertex: pbrlab does the same in both languages, the stage declaring ``layout(triangles) in``
+(``POINT_INPUT_LAYOUT``) and handing the function ``gl_in[0]``'s vertex. A vertex is a point of
+each triangle it starts; one that starts none draws nothing.
+
 A function of the program that takes the stream (``void emit(inout TriangleStream<T> s, ...)``)
 loses that parameter too, and a call handing the stream on (``emit(stream, ...)``) that argument.
 """
@@ -121,6 +134,25 @@ _WORLD_OF_CLIP = """vec3 pbrlab_world_of_clip(vec4 clip_position) {
 """
 
 
+# the input layout a geometry stage declares for the draw's primitive: the mesh's triangles also
+# for a point-input function (module docstring)
+POINT_INPUT_LAYOUT = "triangles"
+
+
+def _input_layout(g) -> str:
+    return POINT_INPUT_LAYOUT if g.primitive == "point" else PRIMITIVES[g.primitive][0]
+
+
+def point_input_on_triangles(vf, glsl: str) -> str:
+    """spirv-cross's point-input geometry stage reading the draw's triangles (module docstring):
+    ``layout(points) in`` -> ``layout(triangles) in``, its input arrays of 1 unsized (element 0,
+    the triangle's first vertex, is the one read)."""
+    if vf.geometry.primitive != "point":
+        return glsl
+    glsl = re.sub(r"^layout\(points\) in;", f"layout({POINT_INPUT_LAYOUT}) in;", glsl, flags=re.M)
+    return re.sub(r"^((?:layout\([^)]*\)\s*)?(?:flat\s+)?in\s+\w+\s+\w+)\[1\];", r"\1[];", glsl, flags=re.M)
+
+
 def positional_add(defines: dict) -> bool:
     return any(k in defines for k in ("PBRLAB_UNITY_ADD_POINT", "PBRLAB_UNITY_ADD_SPOT"))
 
@@ -157,7 +189,8 @@ def hlsl_renamed(vf, glsl: str) -> str:
                                      (g.output_type, g.stream_name, "pbrlab_gvary_", "")):
         for _, member, semantic in _members(vf, kind, g.where, own):
             if semantic and _canonical(semantic) not in _POSITION:
-                spirv_name = f"{param}_{member}" if member else param  # a bare value: the parameter's name
+                # (a bare value: the parameter's name; a struct member's leaf, inner.uv: IN_inner_uv)
+                spirv_name = f"{param}_{member.replace('.', '_')}" if member else param
                 glsl = re.sub(r"\b" + re.escape(spirv_name) + r"\b", prefix + _canonical(semantic), glsl)
     unlinked = [m.group(1) for m in re.finditer(r"^(?:flat\s+)?(?:in|out)\s+\w+\s+(\w+)", glsl, re.M)
                 if not m.group(1).startswith(("pbrlab_vary_", "pbrlab_gvary_", "gl_"))
@@ -210,8 +243,7 @@ def glsl_declarations(vf, vertex_outputs: dict) -> str:
     macros write the outputs); ``vertex_outputs``: {semantic: type} the vertex stage passes on
     (its pbrlab_vary_<SEMANTIC> outputs)."""
     g = vf.geometry
-    layout, count = PRIMITIVES[g.primitive]
-    lines = [f"layout({layout}) in;"]
+    lines = [f"layout({_input_layout(g)}) in;"]
     lines += [f"{_flat(vf, t, s)}in {port_code_types(t)} pbrlab_vary_{s}[];" for s, t in vertex_outputs.items()]
     for mtype, member, semantic in _members(vf, g.output_type, g.where):
         if semantic and _canonical(semantic) not in _POSITION:
@@ -273,7 +305,7 @@ def build_geometry_stage(vf, language: str, defines: dict, dirs, program_text: s
         from .program import hlsl_includes  # (program imports the stages' modules)
         spirv = hlsl.compile_spirv(text, name, dirs, stage="geom", entry="pbrlab_geometry_main",
                                    replaced=hlsl_includes(vf))  # the shader's own includes as the other stages
-        glsl = hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True))
+        glsl = point_input_on_triangles(vf, hlsl_renamed(vf, hlsl.cross_to_glsl(spirv, plain_uniforms=True)))
         if positional_add(defines):
             glsl = hlsl_world_written(glsl)
         return (shaders.Source(glsl, [f"{name} (GLSL from spirv-cross)"]),

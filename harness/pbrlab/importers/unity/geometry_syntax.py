@@ -150,10 +150,14 @@ def parse_geometry(masked: str, name: str, where_of, pragma_offset: int) -> Geom
         raise UnityShaderError(f"{where}: {name}() needs an input array (triangle v2g IN[3]) and an "
                                "inout stream (TriangleStream<g2f>)")
     primitive, input_type, input_name, count = found["input"]
-    if primitive != "triangle":
-        # the harness draws triangles: a point/line geometry input would never be fed
+    if primitive not in ("triangle", "point"):
+        # the harness draws triangles: a line geometry input would never be fed (a point input is
+        # given each triangle's first vertex, as D3D11 drivers do: geometry_stage.py)
         raise UnityShaderError(f"{where}: {name}() takes {primitive} input: pbrlab draws triangle meshes, "
-                               "so only a triangle geometry input is fed")
+                               "so only a triangle or point geometry input is fed")
+    if primitive == "point" and count != "1":
+        raise UnityShaderError(f"{where}: {name}(): point {input_type} {input_name}[{count}]: a point input "
+                               "array holds 1 vertex")
     return GeometryFunction(name=name, max_vertices=m.group(2).strip(), primitive=primitive,
                             input_type=input_type, input_name=input_name, output_type=found["stream"][1],
                             stream=found["stream"][0], stream_name=found["stream"][2], params=params,

@@ -24,7 +24,7 @@ from .conditionals import active_text, defines_of
 from .compute_buffers import check_compute_buffers
 from .engine_inputs import check_engine_inputs
 from .lightmaps import ENGINE_SET_TEXTURES
-from . import fixed_function, render_objects, shaderlab, texture_objects
+from . import fixed_function, render_objects, shaderlab, texture_objects, texture_structs
 from .include_case import respell_package_includes
 from .include_separators import forward_slashed_includes
 from .generate_pass import colour_output
@@ -605,7 +605,7 @@ URP = Pipeline("the Universal Render Pipeline", ("universalforward", "universalf
                ),
                srp=True,
                # Shader Graph's texture objects (UnityTexture2D locals) spelled out
-               rewrites=(texture_objects.spelled_out,),
+               rewrites=(texture_objects.spelled_out, texture_structs.spelled_out),
                # URP's default renderer: per-pixel additional lights
                keywords=("_ADDITIONAL_LIGHTS",),
                # URP's DrawObjectsPass: one pass of each LightMode it draws (first_of_light_mode)

@@ -125,6 +125,25 @@ v2f_img vert_img(appdata_img v) { }
 """
 
 
+def _leaves(inner, names: list, semantic: str) -> list:
+    """The members ``name.leaf`` of a struct member of the struct ``inner`` (a struct varying:
+    ``struct Inner { float2 uv; float tint; }; struct v2f { ...; Inner inner : TEXCOORD0; }``):
+    each of ``inner``'s (already flattened) members as a member of its own, at each leaf's own
+    semantic, or, where the member carries one (``Inner inner : TEXCOORD0``), at that semantic
+    with consecutive indices (TEXCOORD0, TEXCOORD1, ...), as an array member's elements take
+    theirs here (an assumption for a struct, not checked against FXC: pbrlab's stages are linked
+    by semantic on both sides, so any consistent numbering links). Each leaf is then a varying of
+    its own, as a vector member is (pbrlab writes its stages' entries, which pass each member by
+    its semantic; GLSL 3.30 takes no struct as a vertex output)."""
+    out = []
+    base = re.fullmatch(r"(\D*?)(\d*)", semantic) if semantic else None
+    for name in names:
+        for k, (kind, leaf, own) in enumerate(inner.members):
+            at = f"{base.group(1)}{int(base.group(2) or 0) + k}" if base else own
+            out.append((kind, f"{name}.{leaf}", at))
+    return out
+
+
 def _structs(masked: str) -> dict:
     out = {}
     for m in re.finditer(r"\bstruct\s+(" + IDENT + r")\s*\{", masked):
@@ -157,6 +176,13 @@ def _structs(masked: str) -> dict:
                 first = int(base.group(2) or 0)
                 names = [f"{array.group(1)}[{k}]" for k in range(int(array.group(2)))]
                 members.extend((kind, n, f"{base.group(1)}{first + k}") for k, n in enumerate(names))
+            elif kind in out and not array:
+                # a member of an earlier struct's type: its leaves, flattened
+                leaves = _leaves(out[kind], names, semantic)
+                members.extend(leaves)
+                flat.update(n for _, n, _ in leaves if "nointerpolation" in all_words
+                            or n.split(".", 1)[1] in out[kind].flat)
+                continue
             else:
                 members.extend((kind, n, semantic) for n in names)
             if "nointerpolation" in all_words:

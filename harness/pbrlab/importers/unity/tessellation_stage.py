@@ -142,9 +142,17 @@ def hlsl_renamed(vf, control: str, evaluation: str) -> tuple[str, str]:
     # stage -> pbrlab_patch_<member> (glsl_control / glsl_evaluation spell them so)
     extras = [(f"_patchConstantOutput_{v[len('pbrlab_patch_'):]}", v) for _, _, v in _extras(vf)]
     factors = [(f"pbrlab_factors_{v[len('pbrlab_patch_'):]}", v) for _, _, v in _extras(vf)]
+    # (a struct member's leaf, inner.uv, is spirv-cross's <prefix>inner_uv)
+    cps, outs, finals = ([(k, m.replace(".", "_"), s) for k, m, s in group] for group in (cps, outs, finals))
     control = _renamed(control, [(f"pbrlab_patch_{m}", f"pbrlab_vary_{s}") for _, m, s in cps]
                        + [(f"_entryPointOutput_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs] + extras,
                        "hull", t.where)
+    # glslang writes a control point's nested struct member (CP.inner.uv) at a constant index of
+    # the output array (``pbrlab_tvary_TEXCOORD0[1] = flattenTemp.inner.uv``), which GLSL refuses
+    # ("outputs can only be indexed by gl_InvocationID") and which is not this invocation's
+    # point: each invocation writes its own control point, gl_InvocationID (as for the others)
+    control = re.sub(r"^(\s*pbrlab_tvary_\w+)\[\d+\](\s*=\s*flattenTemp\.\w+\.)", r"\1[gl_InvocationID]\2",
+                     control, flags=re.M)
     evaluation = _renamed(evaluation, [(f"pbrlab_patch_{m}", f"pbrlab_tvary_{s}") for _, m, s in outs]
                           + [(f"_entryPointOutput_{m}", _domain_prefix(vf) + s) for _, m, s in finals] + factors,
                           "domain", t.where)

@@ -87,6 +87,22 @@ def spell_for_glsl(text: str) -> str:
     return _PATCH.sub(lambda m: f"{m.group(2)} {m.group(4)}[{m.group(3)}]", text)
 
 
+def _expanded(value: str, before: str) -> str:
+    """An attribute's argument with the object-like macros the text ``before`` the hull function
+    defines expanded (``#define PARTITION_METHOD "fractional_odd"`` then
+    ``[partitioning(PARTITION_METHOD)]``: FXC and glslang preprocess the attribute's argument as
+    any other tokens, the Catlike Coding tessellation tutorial's spelling); its last definition
+    before the function wins, as the preprocessor's would (its ``#undef`` is not followed)."""
+    for _ in range(8):  # (a macro naming another)
+        if not re.fullmatch(IDENT, value):
+            break
+        found = re.findall(r"^[ \t]*#[ \t]*define[ \t]+" + re.escape(value) + r"[ \t]+([^\n]*?)[ \t]*$", before, re.M)
+        if not found or not found[-1]:
+            break
+        value = found[-1]
+    return value
+
+
 def _function(masked: str, name: str, where: str, pragma: str):
     """(return type, [parameter texts], offset of the attributes' start) of ``name``."""
     m = re.search(r"\b(" + IDENT + r")\s+" + re.escape(name) + r"\s*\(", masked)
@@ -147,7 +163,7 @@ def parse_tessellation(masked: str, hull: str, domain: str, structs: dict, where
     # the attributes written before the function (after the previous declaration's end)
     prefix = head[max(head.rfind(";"), head.rfind("}")) + 1:]
     for m in _ATTRIBUTE.finditer(prefix):
-        attrs[m.group(1)] = m.group(2).strip().strip('"')
+        attrs[m.group(1)] = _expanded(m.group(2).strip(), head).strip('"')
     for needed in ("domain", "outputcontrolpoints", "partitioning", "outputtopology", "patchconstantfunc"):
         if needed not in attrs:
             raise UnityShaderError(f"{where}: #pragma hull {hull}: {hull}() has no [{needed}(...)] attribute "
