@@ -26,6 +26,8 @@
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RenderingLayers.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/SurfaceData.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/CommonMaterial.hlsl"
+// URP 12+'s Lighting.hlsl includes Debug/Debugging3D.hlsl, which includes DebuggingCommon.hlsl
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Debug/DebuggingCommon.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 // URP's dielectric F0 and 1 - F0 (kDielectricSpec: 0.04 in linear space).
@@ -688,5 +690,10 @@ float4 LightweightFragmentPBR(InputData inputData, float3 albedo, float metallic
                               float occlusion, float3 emission, float alpha) {
     return UniversalFragmentPBR(inputData, albedo, metallic, specular, smoothness, occlusion, emission, alpha);
 }
+
+// URP's Lighting.hlsl includes GlobalIllumination.hlsl, which includes Core RP's
+// ImageBasedLighting.hlsl (URP 14.0.9): UNITY_SPECCUBE_LOD_STEPS and the mip <-> roughness
+// converters reach a program that includes Lighting.hlsl (its include of this file is skipped).
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/ImageBasedLighting.hlsl"
 
 #endif
