@@ -400,6 +400,20 @@ float4 GetScaledScreenParams() { return _ScreenParams; }
 #if !defined(MAX_VISIBLE_LIGHTS) && !defined(PBRLAB_USER_DEFINES_MAX_VISIBLE_LIGHTS)
 #define MAX_VISIBLE_LIGHTS 32
 #endif
+// Core RP's gathers (API/D3D11.hlsl and TextureXR.hlsl: Texture2D.Gather and GatherRed ..
+// GatherAlpha, the one channel of the four texels a bilinear read at the location weighs; the _X
+// forms one 2D texture without XR), in HLSL; the GLSL port spells them (port.py).
+#ifndef __VERSION__
+#define GATHER_TEXTURE2D(t, s, uv) t.Gather(s, uv)
+#define GATHER_RED_TEXTURE2D(t, s, uv) t.GatherRed(s, uv)
+#define GATHER_GREEN_TEXTURE2D(t, s, uv) t.GatherGreen(s, uv)
+#define GATHER_BLUE_TEXTURE2D(t, s, uv) t.GatherBlue(s, uv)
+#define GATHER_ALPHA_TEXTURE2D(t, s, uv) t.GatherAlpha(s, uv)
+#define GATHER_TEXTURE2D_X(t, s, uv) t.Gather(s, uv)
+#define GATHER_RED_TEXTURE2D_X(t, s, uv) t.GatherRed(s, uv)
+#define GATHER_GREEN_TEXTURE2D_X(t, s, uv) t.GatherGreen(s, uv)
+#define GATHER_BLUE_TEXTURE2D_X(t, s, uv) t.GatherBlue(s, uv)
+#endif
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;
