@@ -91,7 +91,8 @@ def realtime_lit(pipeline, dynamic: DynamicLightmap | None):
     DYNAMICLIGHTMAP_ON on where a program declares it."""
     if dynamic is None:
         return pipeline
-    return dataclasses.replace(pipeline, keywords=pipeline.keywords + (KEYWORD,))
+    # (not LIGHTPROBE_SH, the variant of an object without a lightmap: light_probes.py)
+    return dataclasses.replace(pipeline, keywords=tuple(k for k in pipeline.keywords if k != "LIGHTPROBE_SH") + (KEYWORD,))
 
 
 # What a supplied realtime lightmap provides (cginc/UnityRealtimeLightmap.cginc).
