@@ -396,7 +396,8 @@ float4 GetScaledScreenParams() { return _ScreenParams; }
 // URP's Input.hlsl (which Core.hlsl includes): the most additional lights a draw sees, by
 // platform (URP 12+, which UNITY_VERSION 2021.3 here means: 16 on mobile GLES 3.0, 32 on
 // mobile, OpenGL Core and GLES, 256 elsewhere). pbrlab compiles for SHADER_API_GLCORE
-// (graphics_api.py): 32. A program that #defines it first keeps its own (user_definitions).
+// (graphics_api.py): 32. A program that #defines it first keeps its own (user_definitions;
+// FXC would warn and take this later body, glslang refuses the redefinition).
 #if !defined(MAX_VISIBLE_LIGHTS) && !defined(PBRLAB_USER_DEFINES_MAX_VISIBLE_LIGHTS)
 #define MAX_VISIBLE_LIGHTS 32
 #endif
