@@ -92,7 +92,8 @@ def realtime_lit(pipeline, dynamic: DynamicLightmap | None):
     if dynamic is None:
         return pipeline
     # (not LIGHTPROBE_SH, the variant of an object without a lightmap: light_probes.py)
-    return dataclasses.replace(pipeline, keywords=tuple(k for k in pipeline.keywords if k != "LIGHTPROBE_SH") + (KEYWORD,))
+    unlit = tuple(k for k in pipeline.keywords if k != "LIGHTPROBE_SH")
+    return dataclasses.replace(pipeline, keywords=unlit + (KEYWORD,))
 
 
 # What a supplied realtime lightmap provides (cginc/UnityRealtimeLightmap.cginc).

@@ -125,7 +125,8 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 if geometry and stage == "fragment":
                     text = geometry_stage.fragment_inputs_renamed(text)
                 # (textureGather, Core RP's gathers: its GLSL 3.30 extensions, texture_gather.py)
-                stages[stage] = with_gather_extensions(shaders.expand(text, display, include_dirs=dirs, virtual=virtual))
+                stages[stage] = with_gather_extensions(
+                    shaders.expand(text, display, include_dirs=dirs, virtual=virtual))
                 paths += stages[stage].paths + ported_sources(virtual)
         if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py)
             retyped = same_shadow_globals({stage: typed_shadow_globals(glsl) for stage, (glsl, _) in crossed.items()})
