@@ -296,3 +296,19 @@ def test_gather_extensions_only_where_a_stage_gathers():
                                                "#extension GL_ARB_gpu_shader5 : enable"]
     plain = "#version 330 core\nvec4 c = texture(t, uv);\n"
     assert texture_gather.with_gather_extensions(Source(plain)).text == plain
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+@pytest.mark.parametrize("method", ["Gather", "GatherRed", "GatherGreen", "GatherBlue", "GatherAlpha"])
+def test_texture_object_gather_methods(tmp_path, language, method):
+    """A Texture2D object's own gather methods (``_Tex.GatherGreen(sampler_Tex, uv)``, Microsoft's
+    HLSL reference, "Texture2D.Gather" / "GatherRed" ..), the same lookups as the macros, kept in a
+    float3 (HLSL truncates the float4; the GLSL port's float4 constructor lets its type pass do the
+    same): (g.x, g.y, g.z) of _gathered, within 2 ulps. Control: before this change the GLSL port
+    left the method for the compiler to refuse; the next channel's texels are outside the bound."""
+    channel = {"Gather": 0, "GatherRed": 0, "GatherGreen": 1, "GatherBlue": 2, "GatherAlpha": 3}[method]
+    body = f"float3 g = _Tex.{method}(sampler_Tex, float2(0.5, 0.5)); return float4(g, 1.0);"
+    px = _render_gather(tmp_path, language, body)
+    expected = _gathered(channel)[:3]
+    assert np.abs(px - expected).max() <= 2 * EPS, (px[0] * 255, expected * 255)
+    assert np.abs(_gathered((channel + 1) % 4)[:3] - expected).max() > 100 * 2 * EPS
