@@ -91,7 +91,9 @@ def realtime_lit(pipeline, dynamic: DynamicLightmap | None):
     DYNAMICLIGHTMAP_ON on where a program declares it."""
     if dynamic is None:
         return pipeline
-    return dataclasses.replace(pipeline, keywords=pipeline.keywords + (KEYWORD,))
+    # (not LIGHTPROBE_SH, the variant of an object without a lightmap: light_probes.py)
+    unlit = tuple(k for k in pipeline.keywords if k != "LIGHTPROBE_SH")
+    return dataclasses.replace(pipeline, keywords=unlit + (KEYWORD,))
 
 
 # What a supplied realtime lightmap provides (cginc/UnityRealtimeLightmap.cginc).

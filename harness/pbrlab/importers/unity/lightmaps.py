@@ -118,11 +118,17 @@ def lightmapped(pipeline, lightmap: Lightmap):
     encoding's where a SubShader has both), LIGHTMAP_ON on where a program declares it. A pipeline
     without a Vertex pass (URP) keeps its passes: LIGHTMAP_ON only."""
     if "vertex" not in pipeline.drawn:
-        return dataclasses.replace(pipeline, keywords=pipeline.keywords + ("LIGHTMAP_ON",))
+        return dataclasses.replace(pipeline, keywords=_no_probe_sh(pipeline.keywords) + ("LIGHTMAP_ON",))
     skipped = {k: v for k, v in pipeline.skipped.items() if k not in _LIGHTMAP_PASSES}
     skipped["vertex"] = "for objects without a lightmap (this one has one: its VertexLM pass draws)"
     drawn = tuple(m for m in pipeline.drawn if m != "vertex") + _LIGHTMAP_PASSES
-    return dataclasses.replace(pipeline, drawn=drawn, skipped=skipped, keywords=pipeline.keywords + ("LIGHTMAP_ON",))
+    return dataclasses.replace(pipeline, drawn=drawn, skipped=skipped,
+                               keywords=_no_probe_sh(pipeline.keywords) + ("LIGHTMAP_ON",))
+
+
+def _no_probe_sh(keywords: tuple) -> tuple:
+    """``keywords`` without LIGHTPROBE_SH, the variant of an object without a lightmap (light_probes.py)."""
+    return tuple(k for k in keywords if k != "LIGHTPROBE_SH")
 
 
 def vertex_lit_passes(passes: list, lightmap: Lightmap | None) -> list:

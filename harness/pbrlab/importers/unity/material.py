@@ -31,8 +31,8 @@ from ...scene.fields import TRANSMISSION_KEYS
 from ...scene.material_passes import RenderState
 from ...scene.standard_material import BLENDED_ALPHA_MODES, alpha_mode_state
 from . import deferred
-from . import (conditionals, dynamic_lightmaps, fullscreen_pass, graphics_api, light_space, lightmaps, shadow_maps,
-               unset_samplers, user_definitions)
+from . import (conditionals, dynamic_lightmaps, fullscreen_pass, graphics_api, light_probes, light_space, lightmaps,
+               shadow_maps, unset_samplers, user_definitions)
 from .keyword_drawers import drawer_keywords
 from .model import GrabPass as GrabPassModel
 
@@ -167,6 +167,7 @@ class ProgramPass:
     def draws(self, defines: dict) -> list:
         defines = {**defines, **lightmaps.program_defines(self.unity_pass, self.lightmap),
                    **dynamic_lightmaps.program_defines(self.unity_pass, self.dynamic_lightmap),
+                   **light_probes.program_defines(self.unity_pass, self.lightmap, self.dynamic_lightmap),
                    **user_definitions.program_defines(self.unity_pass),
                    **graphics_api.program_defines(self.unity_pass)}  # SHADER_API_GLCORE
         if getattr(self.unity_pass, "srp", False):  # the Unity of the URP the stand-ins follow (conditionals)

@@ -571,7 +571,10 @@ class Pipeline:
 # HLSLPROGRAM only lacks CGPROGRAM's automatic HLSLSupport/UnityShaderVariables includes, which
 # a built-in HLSLPROGRAM brings itself by including UnityCG.cginc; the reader declares Unity's
 # built-in variables for either block).
-BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG", "HLSL"), ())
+# (LIGHTPROBE_SH: the engine's keyword for an object without a lightmap, light_probes.py; the
+# lightmapped pipelines turn LIGHTMAP_ON / DYNAMICLIGHTMAP_ON on in its place)
+BUILTIN = Pipeline("Unity's built-in render pipeline", DRAWN_LIGHT_MODES, SKIPPED_LIGHT_MODES, ("CG", "HLSL"), (),
+                   keywords=("LIGHTPROBE_SH",))
 # The Universal Render Pipeline (importers/urp/): forward passes drawn once with every light;
 # a pass without a LightMode is SRPDefaultUnlit.
 URP_SKIPPED_LIGHT_MODES = {

@@ -18,6 +18,7 @@ from .compute_buffers import check_compute_buffers, check_included_compute_buffe
 from .engine_inputs import check_engine_inputs, fill_declared
 from .dynamic_lightmaps import declares_dynamic_lightmap_on
 from .lightmaps import declares_lightmap_on
+from .light_probes import declares_light_probe_sh
 from .unprovided import missing_include
 from .user_definitions import text_defines
 from .own_library_functions import renamed_in_own_files
@@ -260,7 +261,8 @@ def parse_pass(program: str, path: Path, first_line: int, block, spellings=(), k
     everything = masked + "\n" + respelled(included_text(program, path.parent), spellings)
     on = [k for k in keywords if k in declared_keywords(program)
           or (k == "LIGHTMAP_ON" and declares_lightmap_on(program))  # a lightmapped object's (lightmaps.py)
-          or (k == "DYNAMICLIGHTMAP_ON" and declares_dynamic_lightmap_on(program))]  # (dynamic_lightmaps.py)
+          or (k == "DYNAMICLIGHTMAP_ON" and declares_dynamic_lightmap_on(program))  # (dynamic_lightmaps.py)
+          or (k == "LIGHTPROBE_SH" and declares_light_probe_sh(program))]  # no lightmap's (light_probes.py)
     defines = defines_of(everything, on, srp)  # (srp: a Scriptable Render Pipeline's program)
     if srp:  # the stand-ins' branches for the names the shader defines or reads (user_definitions.py)
         defines.update(text_defines(program, path.parent))

@@ -337,6 +337,13 @@ _SRP_TEXTURE_MACROS = {
     # not these, and are left to the Unity prelude's macros by the argument count below)
     "SAMPLE_DEPTH_TEXTURE": lambda a: f"tex2D({a[0]}, {a[2]}).r",
     "SAMPLE_DEPTH_TEXTURE_LOD": lambda a: f"tex2Dlod({a[0]}, float4(({a[2]}).xy, 0.0, {a[3]})).r",
+    # Core RP's gathers (Texture2D.Gather / GatherRed .. GatherAlpha: one channel of the four
+    # texels a bilinear read of the location weighs): GLSL's textureGather with that channel's
+    # index, under the extensions texture_gather.py enables for GLSL 3.30 (in a float4 constructor,
+    # so the type pass knows the lookup's type, as texture_methods' offset reads)
+    **{f"GATHER_{channel}TEXTURE2D{x}": (lambda index: lambda a: f"float4(textureGather({a[0]}, ({a[2]}).xy, {index}))")(index)
+       for channel, index in (("", 0), ("RED_", 0), ("GREEN_", 1), ("BLUE_", 2), ("ALPHA_", 3))
+       for x in ("", "_X") if not (channel == "ALPHA_" and x)},  # (Core RP has no GATHER_ALPHA_TEXTURE2D_X)
     "SAMPLE_TEXTURECUBE": lambda a: (f"pbrlab_unity_reflection_probe({a[2]}, 0.0)" if a[0] in _SKY_CUBES
                                      else f"texCUBE({a[0]}, {a[2]})"),
     "SAMPLE_TEXTURECUBE_LOD": lambda a: (f"pbrlab_unity_reflection_probe({a[2]}, {a[3]})" if a[0] in _SKY_CUBES
@@ -410,6 +417,8 @@ def _expand_srp_texture_macros(code: str, compares: bool = True) -> str:
             need += m.group(1).startswith("SAMPLE_TEXTURE2D_ARRAY")  # the layer index
         if m.group(1).startswith("LOAD_"):
             need = 3 if m.group(1).endswith("_LOD") else 2
+        if m.group(1).startswith("GATHER_"):
+            need = 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
         spelled = ((not compares and _SHADOW_AS_TEXTURE.get(m.group(1))) or _SRP_TEXTURE_MACROS[m.group(1)])(args)

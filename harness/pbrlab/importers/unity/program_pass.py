@@ -21,6 +21,7 @@ from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from . import finite_texture_coordinates, generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
 from .shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
+from .texture_gather import crossed_glsl, with_gather_extensions
 from . import model as M
 from . import unprovided
 from .program import (TEMPLATES, hlsl_includes, hlsl_program, indexed, ported_sources, program_include, rename_vertex_globals)
@@ -112,9 +113,8 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
             stage_vf = behind(vf) if geometry and stage == "fragment" else vf
             if language == "hlsl":
                 text = _stage_text(stage_vf, "hlsl", stage, defines, blended, hlsl_program(vf), str(vf.path))
-                glsl = hlsl.cross_to_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],
-                                                             replaced=with_package_copies(hlsl_includes(vf))),
-                                          plain_uniforms=True)
+                glsl = crossed_glsl(hlsl.compile_spirv(text, display, dirs, stage=_STAGES[stage],  # (texture_gather.py)
+                                                       replaced=with_package_copies(hlsl_includes(vf))))
                 glsl = finite_texture_coordinates.applied(glsl)  # lookups at NaN / inf: as Direct3D's
                 if stage == "vertex":
                     glsl = rename_vertex_globals(glsl)
@@ -128,7 +128,9 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                                    geometry_stage.glsl_stage_macros(vf, False))  # (also for an unused geom)
                 if geometry and stage == "fragment":
                     text = geometry_stage.fragment_inputs_renamed(text)
-                stages[stage] = shaders.expand(text, display, include_dirs=dirs, virtual=virtual)
+                # (textureGather, Core RP's gathers: its GLSL 3.30 extensions, texture_gather.py)
+                stages[stage] = with_gather_extensions(
+                    shaders.expand(text, display, include_dirs=dirs, virtual=virtual))
                 paths += stages[stage].paths + ported_sources(virtual)
         if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py)
             retyped = same_shadow_globals({stage: typed_shadow_globals(glsl) for stage, (glsl, _) in crossed.items()})

@@ -16,7 +16,8 @@ sampler objects unused ints, and each method call the Cg function of the same lo
 ``Sample`` / ``SampleLevel`` -> ``texCUBE`` / ``texCUBElod``; a 2D array's (``Texture2DArray``, a ``sampler2DArray``) ``Sample`` / ``SampleLevel``
 -> ``UNITY_SAMPLE_TEX2DARRAY`` / ``_LOD`` (the Unity prelude's). The sampler's own state (an inline
 sampler's filter and wrap, by its name) is the texture's here, as for every combined sampler.
-Any other method (``GetDimensions``, ``Gather``) is left as written and the compiler names it.
+``Gather`` / ``GatherRed`` .. ``GatherAlpha(s, uv)`` -> ``textureGather(t, uv, channel)``. Any other method
+(``GetDimensions``, a gather's offset forms) is left as written and the compiler names it.
 A function's parameter of these types is spelled likewise (a texture's, a combined sampler; a
 sampler's, an unused int), so a texture passed to a function with its sampler is. Lines are kept.
 
@@ -49,7 +50,12 @@ _MACRO_DECLARATION = re.compile(r"\b(TEXTURE2D|TEXTURE2D_X|TEXTURE2D_X_FLOAT|TEX
 _MACRO_KIND = {"TEXTURE2D": "Texture2D", "TEXTURE2D_X": "Texture2D", "TEXTURE2D_X_FLOAT": "Texture2D",
                "TEXTURECUBE": "TextureCube", "TEXTURE2D_SHADOW": "Texture2D", "TEXTURECUBE_SHADOW": "TextureCube",
                "TEXTURE2D_ARRAY": "Texture2DArray"}
-_METHOD = re.compile(r"\b(\w+)\s*\.\s*(SampleCmpLevelZero|SampleCmp|Sample|SampleLevel|SampleBias|SampleGrad|Load)\s*\(")
+_METHOD = re.compile(r"\b(\w+)\s*\.\s*(SampleCmpLevelZero|SampleCmp|Sample|SampleLevel|SampleBias|SampleGrad|Load|"
+                     r"GatherRed|GatherGreen|GatherBlue|GatherAlpha|Gather)\s*\(")
+# A 2D texture's gathers (Microsoft's HLSL reference, "Texture2D.Gather", "GatherRed" ..: one
+# channel of the four texels a bilinear read weighs): GLSL's textureGather with the channel's
+# index (the extensions it needs in GLSL 3.30: texture_gather.py)
+_GATHER_CHANNELS = {"Gather": 0, "GatherRed": 0, "GatherGreen": 1, "GatherBlue": 2, "GatherAlpha": 3}
 # A texture some method compares (``t.SampleCmp(s, uv, z)`` with a SamplerComparisonState s): a
 # GLSL comparison sampler, a depth texture with its comparison on (shadow_maps.py); its reads are
 # cg_compat's pbr_unity_sample_cmp (Microsoft's HLSL reference, "SampleCmp": the reference z against
@@ -87,6 +93,8 @@ def _call(kind: str, method: str, texture: str, args: list):
             return f"tex2Dbias({texture}, float4(({args[1]}).xy, 0.0, {args[2]}))"
         if method == "SampleGrad" and len(args) == 4:
             return f"tex2Dgrad({texture}, {args[1]}, {args[2]}, {args[3]})"
+        if method in _GATHER_CHANNELS and len(args) == 2:
+            return f"float4(textureGather({texture}, ({args[1]}).xy, {_GATHER_CHANNELS[method]}))"
     if kind == "TextureCube":
         if method == "Sample" and len(args) == 2:
             return f"texCUBE({texture}, {args[1]})"

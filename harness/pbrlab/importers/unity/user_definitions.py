@@ -62,7 +62,7 @@ from .source_text import CGINC, INCLUDE, PACKAGE_STAND_INS, blank_comments, incl
 # The stand-ins' constants (Core RP Common.hlsl / Macros.hlsl) that step aside: none is read by a
 # stand-in's own code (FLT_MIN, HALF_MIN and HALF_MIN_SQRT are, and are not in this list).
 MACROS = ("PI", "TWO_PI", "FOUR_PI", "INV_PI", "INV_TWO_PI", "INV_FOUR_PI", "HALF_PI", "INV_HALF_PI",
-          "LOG2_E", "INV_SQRT2", "FLT_EPS", "FLT_MAX", "HALF_MAX")
+          "LOG2_E", "INV_SQRT2", "FLT_EPS", "FLT_MAX", "HALF_MAX", "MAX_VISIBLE_LIGHTS")
 # Structs URP 12 added that shaders written for earlier versions declare themselves.
 STRUCTS = ("LightingData",)
 PREFIX = "PBRLAB_USER_DEFINES_"

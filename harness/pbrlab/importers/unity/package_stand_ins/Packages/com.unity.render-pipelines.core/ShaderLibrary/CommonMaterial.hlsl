@@ -29,4 +29,10 @@ float3 BlendNormalRNM(float3 n1, float3 n2) {
     return normalize(t * dot(t, u) / t.z - u);
 }
 
+// A detail map's blend toward white (Core RP 14.0.9 CommonMaterial.hlsl, LerpWhiteTo, which URP's
+// Shadows.hlsl applies to the shadow strength): lerp(1, b, t) written as (1 - t) + b t. The
+// float3 form is the harness library's (pbr/unity/unity_cg, UnityStandardUtils.cginc's, the same
+// formula), in every Unity program; Core's scalar form here.
+float LerpWhiteTo(float b, float t) { return (1.0 - t) + b * t; }
+
 #endif

@@ -14,8 +14,9 @@
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
 
+// Core RP's literal (an integer, which a program may test in #if): the last of the 7 mips
 #ifndef UNITY_SPECCUBE_LOD_STEPS
-#define UNITY_SPECCUBE_LOD_STEPS PBRLAB_URP_SPECCUBE_LOD_STEPS
+#define UNITY_SPECCUBE_LOD_STEPS 6
 #endif
 
 float PerceptualRoughnessToMipmapLevel(float perceptualRoughness, uint mipMapCount) {

@@ -388,6 +388,33 @@ float4 GetScaledScreenParams() { return _ScreenParams; }
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabSpaceTransforms.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabFullScreenTriangle.hlsl"
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabPacking.hlsl"
+// Core RP's Common.hlsl includes Random.hlsl (after Macros.hlsl, Core RP 14.0.9), so a URP
+// program that includes only Core.hlsl calls InterleavedGradientNoise, GenerateHashedRandomFloat,
+// Hash, ...; and Common.hlsl's float tests and positive powers (PbrlabCommonMath.hlsl).
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Random.hlsl"
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/PbrlabCommonMath.hlsl"
+// URP's Input.hlsl (which Core.hlsl includes): the most additional lights a draw sees, by
+// platform (URP 12+, which UNITY_VERSION 2021.3 here means: 16 on mobile GLES 3.0, 32 on
+// mobile, OpenGL Core and GLES, 256 elsewhere). pbrlab compiles for SHADER_API_GLCORE
+// (graphics_api.py): 32. A program that #defines it first keeps its own (user_definitions;
+// FXC would warn and take this later body, glslang refuses the redefinition).
+#if !defined(MAX_VISIBLE_LIGHTS) && !defined(PBRLAB_USER_DEFINES_MAX_VISIBLE_LIGHTS)
+#define MAX_VISIBLE_LIGHTS 32
+#endif
+// Core RP's gathers (API/D3D11.hlsl and TextureXR.hlsl: Texture2D.Gather and GatherRed ..
+// GatherAlpha, the one channel of the four texels a bilinear read at the location weighs; the _X
+// forms one 2D texture without XR), in HLSL; the GLSL port spells them (port.py).
+#ifndef __VERSION__
+#define GATHER_TEXTURE2D(t, s, uv) t.Gather(s, uv)
+#define GATHER_RED_TEXTURE2D(t, s, uv) t.GatherRed(s, uv)
+#define GATHER_GREEN_TEXTURE2D(t, s, uv) t.GatherGreen(s, uv)
+#define GATHER_BLUE_TEXTURE2D(t, s, uv) t.GatherBlue(s, uv)
+#define GATHER_ALPHA_TEXTURE2D(t, s, uv) t.GatherAlpha(s, uv)
+#define GATHER_TEXTURE2D_X(t, s, uv) t.Gather(s, uv)
+#define GATHER_RED_TEXTURE2D_X(t, s, uv) t.GatherRed(s, uv)
+#define GATHER_GREEN_TEXTURE2D_X(t, s, uv) t.GatherGreen(s, uv)
+#define GATHER_BLUE_TEXTURE2D_X(t, s, uv) t.GatherBlue(s, uv)
+#endif
 // The view vector to the camera, not normalized (a perspective camera; orthographic: its axis).
 float3 GetWorldSpaceViewDir(float3 positionWS) {
     if (unity_OrthoParams.w == 1.0) return -UNITY_MATRIX_V[2].xyz;

@@ -24,6 +24,8 @@
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/GlobalIllumination.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/RealtimeLights.hlsl"
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/AmbientOcclusion.hlsl"
+// URP 12+'s Lighting.hlsl includes Debug/Debugging3D.hlsl, which includes DebuggingCommon.hlsl
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Debug/DebuggingCommon.hlsl"
 
 #define UNIVERSAL_LIGHTING_INCLUDED
 
@@ -202,6 +204,11 @@ float4 LightweightFragmentPBR(InputData inputData, float3 albedo, float metallic
                               float occlusion, float3 emission, float alpha) {
     return UniversalFragmentPBR(inputData, albedo, metallic, specular, smoothness, occlusion, emission, alpha);
 }
+
+// URP's Lighting.hlsl includes GlobalIllumination.hlsl, which includes Core RP's
+// ImageBasedLighting.hlsl (URP 14.0.9): UNITY_SPECCUBE_LOD_STEPS and the mip <-> roughness
+// converters reach a program that includes Lighting.hlsl (its include of this file is skipped).
+#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/ImageBasedLighting.hlsl"
 
 #endif
 

@@ -7,6 +7,7 @@
 #define PBRLAB_URP_DEBUGGING3D_HLSL
 
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"
+#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Debug/DebuggingCommon.hlsl"
 
 #if defined(DEBUG_DISPLAY)
 #error "URP's Rendering Debugger (DEBUG_DISPLAY, Debugging3D.hlsl's debug views) is not provided by pbrlab's stand-in"
