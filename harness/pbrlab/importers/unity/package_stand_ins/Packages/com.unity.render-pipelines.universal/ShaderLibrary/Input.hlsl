@@ -42,8 +42,9 @@ struct InputData {
 // main light), its point lights, its spot lights; each array is a global the entry points fill
 // from the scene before the program runs (engine_inputs.FILLED), and the functions below give
 // the same values to the stand-ins' own code.
-#ifndef MAX_VISIBLE_LIGHTS  // one defined before (a program's own) stands: glslang refuses a redefinition
-#define MAX_VISIBLE_LIGHTS 32
+// (Core.hlsl defines it, with the same guard, for a program that includes this file through it.)
+#if !defined(MAX_VISIBLE_LIGHTS) && !defined(PBRLAB_USER_DEFINES_MAX_VISIBLE_LIGHTS)
+#define MAX_VISIBLE_LIGHTS 32  // a program's own, defined before or after (user_definitions), stands
 #endif
 #if PBRLAB_DIRECTIONAL_COUNT > 1
 #define PBRLAB_URP_EXTRA_DIRECTIONAL_COUNT (PBRLAB_DIRECTIONAL_COUNT - 1)
