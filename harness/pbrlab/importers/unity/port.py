@@ -483,6 +483,8 @@ def port_text(program: str, folder: Path | None = None, declarations: str = "", 
     if folder is not None:
         included += "\n" + included_text(program, folder)
     reads = reads if reads is not None else texture_reads(program + "\n" + included)
+    names = set(re.findall(r"\w+", program))  # (only the text's own names: one port of an include for every program)
+    reads = TextureReads(reads.compared & names, reads.plain & names)
     # a port is a function of these texts alone: kept for the texts seen last (each pass of a
     # shader ports the same include files again: a 256-pass Amplify preview, 6 a pass)
     key = (hashlib.sha256("\0".join((program, included)).encode("utf-8", "surrogatepass")).digest(), srp, reads)
