@@ -47,7 +47,7 @@ _COMPARED_METHOD = re.compile(r"\b(\w+)\s*\.\s*SampleCmp(?:LevelZero)?\s*\(")
 # methods (the texture first or the object before the dot).
 _PLAIN_MACRO = re.compile(
     r"\b(?:SAMPLE_TEXTURE2D(?:_X)?(?:_LOD|_BIAS|_GRAD)?|SAMPLE_DEPTH_TEXTURE(?:_LOD)?|LOAD_TEXTURE2D(?:_X)?(?:_LOD)?|"
-    r"SAMPLE_TEXTURE2D_ARRAY(?:_LOD)?|tex2D(?:lod|bias|grad|proj)?|UNITY_SAMPLE_TEX2D(?:_LOD)?)\s*\(\s*(\w+)\s*,")
+    r"SAMPLE_TEXTURE2D_ARRAY(?:_LOD)?|tex2D(?:lod|bias|grad|proj)?|UNITY_SAMPLE_TEX2D(?:_SAMPLER)?(?:_LOD)?)\s*\(\s*(\w+)\s*,")
 _PLAIN_METHOD = re.compile(r"\b(\w+)\s*\.\s*(?:Sample|SampleLevel|SampleBias|SampleGrad|Load|Gather(?!Cmp)\w*)\s*\(")
 # The stand-ins' (or a program's copy of Core RP's) definitions of the API's macros: not reads.
 _API_DEFINITION = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(?:SAMPLE_TEXTURE\w*|SAMPLE_DEPTH_TEXTURE\w*|LOAD_TEXTURE\w*|"
