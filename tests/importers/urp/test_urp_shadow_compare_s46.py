@@ -188,10 +188,11 @@ def test_a_map_passed_on_to_a_comparing_function_is_a_comparison_sampler():
     global sampler2DShadow (importers/unity/shadow_sampler_globals.py), and a stage that only declares it
     takes the same type. Control: spirv-cross's own text, the plain sampler2D."""
     from pbrlab.gpu import hlsl
+    from pbrlab.importers.unity.compared_textures import texture_reads
     from pbrlab.importers.unity.shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
     plain = hlsl.cross_to_glsl(hlsl.compile_spirv(_PASSED_ON, "passed_on.hlsl"))
     assert "uniform sampler2D _M;" in plain  # control: spirv-cross alone
-    glsl = typed_shadow_globals(plain)
+    glsl = typed_shadow_globals(plain, texture_reads(_PASSED_ON))
     assert "uniform sampler2DShadow _M;" in glsl
     vertex = "layout(binding = 0) uniform sampler2D _M;\nvoid main() {}\n"
     assert "uniform sampler2DShadow _M;" in same_shadow_globals({"vertex": vertex, "fragment": glsl})["vertex"]

@@ -204,7 +204,8 @@ class ProgramPass:
         unit += light_space.bind(program, cache, unit)  # the light's attenuation and cookie textures
         used = lightmaps.bind(program, self.lightmap, cache, unit)
         used += dynamic_lightmaps.bind(program, self.dynamic_lightmap, cache, unit + used)
-        used += shadow_maps.bind_unset_compared(program, cache, unit + used)  # URP's empty shadow map
+        used += shadow_maps.bind_unset_compared(program, cache, unit + used,  # URP's empty shadow map,
+                                                material.properties)  # or a property's compared view
         unset_samplers.bind_unset(program, cache, environment_cube, unit + used)  # last: what no binder set
 
     def sphere_vertex_array(self, ctx, program):

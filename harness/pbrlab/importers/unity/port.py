@@ -44,6 +44,7 @@ from .geometry_syntax import spell_for_glsl
 from .tessellation_syntax import spell_for_glsl as spell_tessellation
 from .output_struct import layered_struct
 from .source_text import PORT_MARKER, call_arguments, included_text
+from .compared_textures import TextureReads, compared_view, passed_views, texture_reads
 from .texture_methods import spelled_texture_methods, texture_kinds
 
 _TYPE = re.compile(r"\b(?:float|half|fixed|min16float)([234])(?:x([234]))?\b")
@@ -262,12 +263,12 @@ def _drop_unity_redeclarations(code: str) -> str:
     return _GLOBAL_DECLARATION.sub(drop, code)
 
 
-def port_program(shader: M.SurfaceShader, program: str | None = None) -> str:
+def port_program(shader: M.SurfaceShader, program: str | None = None, reads: TextureReads | None = None) -> str:
     """The shader's CGPROGRAM (or ``program``, its text with edits) ported, line for line
     (comments kept); a layered model's output struct (generated before the program:
-    output_struct.layered_struct) is known to the type pass."""
+    output_struct.layered_struct) is known to the type pass. ``reads``: port_text's."""
     return port_text(shader.program if program is None else program, shader.path.parent, "\n".join(layered_struct(shader)),
-                     srp=getattr(shader, "srp", False))
+                     srp=getattr(shader, "srp", False), reads=reads)
 
 
 # The Scriptable Render Pipelines' texture API (Core RP's ShaderLibrary macros, which the
@@ -365,37 +366,33 @@ _TRAILING_UNIFORM = re.compile(r"\buniform(?=[ \t]+$)")
 _DEFINE_BODY = re.compile(r"#\s*define\s+\w+(?:\([^()]*\))?\s")
 
 
-# A comparison read of a shadow texture: Core RP's SAMPLE_*_SHADOW, a texture object's
-# SampleCmp(LevelZero), or URP's functions that compare in the map they are given.
-_COMPARES = re.compile(r"\bSAMPLE_(?:TEXTURE2D|TEXTURE2D_ARRAY|TEXTURECUBE)_SHADOW\s*\(|"
-                       r"\.\s*SampleCmp(?:LevelZero)?\s*\(|\bSampleShadowmap(?:Filtered)?\s*\(")
-# the line of a stand-in's own definition of a comparison macro (not a use of it)
-_DEFINES_COMPARISON = re.compile(r"^\s*#\s*define\s+SAMPLE_\w*_SHADOW\b")
-
-# A shadow texture declared (and passed) as a plain texture where nothing compares: GLSL reads a
-# comparison sampler only through a comparison (no texelFetch), and Core RP's TEXTURE2D_SHADOW is
-# a Texture2D on Direct3D 11 that LOAD_TEXTURE2D reads as its depth (test_urp_names_round44).
-_SHADOW_AS_TEXTURE = {"TEXTURE2D_SHADOW": lambda a: f"sampler2D {a[0]}",
-                      "TEXTURE2D_SHADOW_PARAM": lambda a: f"sampler2D {a[0]}, int {a[1]}"}
+# Core RP's shadow texture declared (and passed) by what the program does with it
+# (compared_textures.texture_reads): a comparison sampler where it is only compared; a plain
+# texture where it is only read plainly (GLSL reads a comparison sampler only through a
+# comparison, no texelFetch; Core RP's TEXTURE2D_SHADOW is a Texture2D on Direct3D 11 that
+# LOAD_TEXTURE2D reads as its depth: test_urp_names_round44); both, where it is read both ways
+# (its comparisons read the comparison view, compared_textures.compared_view).
+def _shadow_declaration(name: str, reads) -> str:
+    if name in reads.both:
+        return f"sampler2D {name}; sampler2DShadow {compared_view(name)}"
+    return f"{'sampler2DShadow' if reads.only_compared(name) else 'sampler2D'} {name}"
 
 
-def compares_shadow_textures(text: str) -> bool:
-    """Whether ``text`` (a program with the files it includes) reads a shadow texture through a
-    comparison, also inside a macro of its own (not in the stand-ins' definitions of Core RP's
-    comparison macros)."""
-    for m in _COMPARES.finditer(text):
-        line = text[text.rfind("\n", 0, m.start()) + 1:text.find("\n", m.start()) % (len(text) + 1)]
-        if not _DEFINES_COMPARISON.match(line):
-            return True
-    return False
+_SHADOW_BY_READS = {
+    "TEXTURE2D_SHADOW": lambda a, reads: _shadow_declaration(a[0], reads),
+    "TEXTURE2D_SHADOW_PARAM": lambda a, reads: f"{'sampler2DShadow' if a[0] in reads.compared else 'sampler2D'} {a[0]}, int {a[1]}",
+    "SAMPLE_TEXTURE2D_SHADOW": lambda a, reads: (f"pbr_unity_sample_cmp({compared_view(a[0]) if a[0] in reads.both else a[0]},"
+                                                 f" ({a[2]}).xyz)"),
+}
 
 
-def _expand_srp_texture_macros(code: str, compares: bool = True) -> str:
+def _expand_srp_texture_macros(code: str, reads: TextureReads | None = None) -> str:
     """Each use of the SRP texture API on a code line spelled in Cg (``SAMPLE_TEXTURE2D(t, s, uv)``
     -> ``tex2D(t, uv)``; the sampler, a GL texture's own, is an unused int), also in a #define's
     replacement text; other preprocessor lines and the name a #define defines (the stand-ins'
-    own definitions) are left alone; lines are kept. A program that never ``compares``
-    (compares_shadow_textures) declares its shadow textures as plain ones."""
+    own definitions) are left alone; lines are kept. Shadow textures are declared and compared
+    by the program's ``reads`` (_SHADOW_BY_READS; by default ``code``'s own)."""
+    reads = reads if reads is not None else texture_reads(code)
     out, pos = [], 0
     for m in _SRP_MACRO.finditer(code):
         if m.start() < pos:
@@ -421,7 +418,8 @@ def _expand_srp_texture_macros(code: str, compares: bool = True) -> str:
             need = 3
         if len(args) != need:
             continue  # not the API's form: left for the compiler to name
-        spelled = ((not compares and _SHADOW_AS_TEXTURE.get(m.group(1))) or _SRP_TEXTURE_MACROS[m.group(1)])(args)
+        by_reads = _SHADOW_BY_READS.get(m.group(1))
+        spelled = by_reads(args, reads) if by_reads else _SRP_TEXTURE_MACROS[m.group(1)](args)
         # the lines a call spans are kept (an argument dropped takes its line breaks with it)
         spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
         before = code[pos:m.start()]
@@ -485,18 +483,24 @@ def _matrix_elements_in_defines(text: str) -> str:
     return _DEFINE_LINES.sub(lambda d: _DEFINE_MATRIX_ELEMENT.sub(element, d.group(0)), text)
 
 
-def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False) -> str:
+def port_text(program: str, folder: Path | None = None, declarations: str = "", srp: bool = False,
+              reads: TextureReads | None = None) -> str:
     """A Cg program's text ported (passes A and B); with ``folder`` (where it lies), the
     declarations of the files it includes are known to the type pass too, as are
     ``declarations`` (what the harness puts before the program). ``srp``: a Scriptable Render
-    Pipeline's program, whose texture API macros are spelled in Cg first."""
+    Pipeline's program, whose texture API macros are spelled in Cg first. ``reads``: which
+    textures the whole program compares and reads plainly (compared_textures.texture_reads), for
+    an included file whose declarations the program's reads type; by default the text's own."""
     included = declarations
     if folder is not None:
         included += "\n" + included_text(program, folder)
+    reads = reads if reads is not None else texture_reads(program + "\n" + included)
+    names = set(re.findall(r"\w+", program))  # (only the text's own names: one port of an include for every program)
+    reads = TextureReads(reads.compared & names, reads.plain & names)
     # a port is a function of these texts alone: kept for the texts seen last (each pass of a
     # shader ports the same include files again: a 256-pass Amplify preview, 6 a pass)
-    key = (hashlib.sha256("\0".join((program, included)).encode("utf-8", "surrogatepass")).digest(), srp)
-    return _PORTED.get(key, lambda: (_ported_text(program, included, srp), []))
+    key = (hashlib.sha256("\0".join((program, included)).encode("utf-8", "surrogatepass")).digest(), srp, reads)
+    return _PORTED.get(key, lambda: (_ported_text(program, included, srp, reads), []))
 
 
 # port_text's answers (strings of a file's size) under a digest of what they are made from.
@@ -504,16 +508,15 @@ PORTED_CACHED = 256
 _PORTED = FileCache(PORTED_CACHED)
 
 
-def _ported_text(program: str, included: str, srp: bool) -> str:
+def _ported_text(program: str, included: str, srp: bool, reads: TextureReads) -> str:
     """port_text of ``program`` with the text of the declarations and files it includes."""
     textures = texture_kinds(included)  # the includes' (and sibling includes') texture objects
 
     def respelled(text):  # Cg spellings glslang and GLSL do not take, then the geometry and tessellation syntax
         text = multisampled_textures.declarations_ported(text)  # Texture2DMS(Array)<T> t: GLSL's sampler
         text = _matrix_elements_in_defines(cg_spellings.respelled(text))
-        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures))
-    compares = compares_shadow_textures(program + "\n" + included)
-    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)), compares)) if srp else respelled
+        return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures, reads))
+    spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)), reads)) if srp else respelled
     symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
@@ -521,7 +524,7 @@ def _ported_text(program: str, included: str, srp: bool) -> str:
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)
-    return code
+    return passed_views(code, reads.both)  # a texture read both ways passed on as its comparison view
 
 
 def _property_line(prop: M.Property) -> str:

@@ -37,6 +37,7 @@ from . import body_includes, cg_spellings, cg_types, finite_texture_coordinates,
 from . import vendored_library
 from . import model as M
 from . import unprovided
+from .compared_textures import texture_reads
 from .empty_arguments import empty_arguments_spelled
 from .include_separators import forward_slashed_includes
 from .normal_maps import stored_normal_map
@@ -139,6 +140,9 @@ def program_include(shader) -> tuple[str, dict]:
         return context + "\n" + "\n".join(dict.fromkeys(others))
 
     rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
+    # which textures the whole program compares and reads plainly: its includes' declarations of
+    # them are typed by the program's reads (compared_textures.py), as the HLSL path's
+    reads = texture_reads(shader.program + "\n" + included_text(shader.program, shader.path.parent))
 
     def read(target: Path) -> str:
         return shaders.strip_bom(rewritten.get(target.resolve()) or read_source(target))
@@ -163,7 +167,7 @@ def program_include(shader) -> tuple[str, dict]:
                 names[key] = _port_include(key)
                 virtual[names[key]] = shaders.VirtualFile(
                     ported(read(target), target.parent,
-                           lambda body: port.port_text(body, target.parent, context_of(key), srp=srp)),
+                           lambda body: port.port_text(body, target.parent, context_of(key), srp=srp, reads=reads)),
                     str(target), 1)
             return m.group(1) + names[key] + m.group(3)
         return _INCLUDE_LINE.sub(relink, text)
@@ -176,7 +180,7 @@ def program_include(shader) -> tuple[str, dict]:
                                             str(shader.path), 1)
         return f'#include "{name}"', virtual
     name = _port_include(shader.path.name)
-    text = ported(shader.program, shader.path.parent, lambda program: shaders.strip_bom(port.port_program(shader, program)))
+    text = ported(shader.program, shader.path.parent, lambda program: shaders.strip_bom(port.port_program(shader, program, reads)))
     virtual[name] = shaders.VirtualFile(text, str(shader.path), shader.program_line)
     return f'#include "{name}"', virtual
 

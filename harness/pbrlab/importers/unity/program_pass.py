@@ -20,6 +20,7 @@ from ...gpu import hlsl, programs, shaders
 from ...foundation.errors import PbrlabError
 from ...foundation.file_identity import include_closure
 from . import finite_texture_coordinates, generate, generate_pass, geometry_stage, glslprogram, tessellation_stage
+from .compared_textures import texture_reads
 from .shadow_sampler_globals import same_shadow_globals, typed_shadow_globals
 from .texture_gather import crossed_glsl, with_gather_extensions
 from . import model as M
@@ -132,8 +133,10 @@ def build_pass_program(ctx, vf: M.VertexFragmentPass, language: str, defines: di
                 stages[stage] = with_gather_extensions(
                     shaders.expand(text, display, include_dirs=dirs, virtual=virtual))
                 paths += stages[stage].paths + ported_sources(virtual)
-        if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py)
-            retyped = same_shadow_globals({stage: typed_shadow_globals(glsl) for stage, (glsl, _) in crossed.items()})
+        if crossed:  # one type per comparison-sampled global in both stages (shadow_sampler_globals.py),
+            # by the program's reads of each texture, as the GLSL port's (compared_textures.py)
+            reads = texture_reads(vf.program + "\n" + included_text(vf.program, vf.path.parent))
+            retyped = same_shadow_globals({stage: typed_shadow_globals(glsl, reads) for stage, (glsl, _) in crossed.items()})
             stages.update({stage: shaders.Source(retyped[stage], names) for stage, (_, names) in crossed.items()})
         if geometry:
             include, virtual = program_include(vf) if language == "glsl" else (hlsl_program(vf), None)

@@ -20,12 +20,14 @@ format; this one is 24-bit fixed point, whose reference GL clamps to [0, 1].
   light casts shadows (pbrlab renders no shadow maps): one texel at the far plane's depth, 1.0,
   which every reference in [0, 1] passes: 1, lit.
 - A texture property sampled so: its red channel as the stored depth (a constant default's
-  texel, or the image file's; clamped to [0, 1], a depth format's range).
+  texel, or the image file's; clamped to [0, 1], a depth format's range). A property also read
+  plainly (compared_textures.py) is two samplers: the plain one takes the property's texture as
+  every texture property's does, its comparison view (``<name>_pbrlab_compared``) these depths.
 - A shadow-map array or cube (``TEXTURE2D_ARRAY_SHADOW``, ``TEXTURECUBE_SHADOW``) is refused
   by name: pbrlab binds depth textures only as 2D textures.
 
     bound = bind_compared(program, name, value, cache, unit)   # False: not a comparison sampler
-    used = bind_unset_compared(program, cache, unit)           # the empty map on the rest
+    used = bind_unset_compared(program, cache, unit, properties)  # the empty map on the rest
 """
 
 from __future__ import annotations
@@ -36,6 +38,8 @@ from ...foundation.errors import PbrlabError
 from ...foundation.images import read_image
 from ...gpu import programs
 from ...gpu.programs import set_uniform as _set
+from .compared_textures import compared_view
+from .properties import TextureValue
 
 # OpenGL 3.3 core, table 2.10: the comparison samplers' types
 GL_SAMPLER_2D_SHADOW, GL_SAMPLER_2D_ARRAY_SHADOW, GL_SAMPLER_CUBE_SHADOW = 0x8B62, 0x8DC4, 0x8DC5
@@ -76,13 +80,8 @@ def empty_shadow_map(cache):
     return depth_texture(cache, np.full((1, 1), FAR_DEPTH))
 
 
-def bind_compared(program, name: str, value, cache, unit: int) -> bool:
-    """Bind texture property ``name`` (properties.TextureValue) at ``unit`` as a depth texture
-    when the program samples it through a comparison sampler; False when it does not."""
-    uniforms = programs.uniforms_named(program, name)
-    if not uniforms or uniforms[0].gl_type not in COMPARED:
-        return False
-    _refuse_unbindable(program, name, uniforms[0].gl_type)
+def property_depth_texture(cache, value):
+    """The depth texture of texture property ``value``: its red channel as the stored depth."""
     if value.path is not None:
         image = read_image(value.path)  # uint8 code values (PNG) or float (EXR): data, not colour
         red = np.asarray(image[..., 0] if image.ndim == 3 else image, np.float64)
@@ -90,7 +89,17 @@ def bind_compared(program, name: str, value, cache, unit: int) -> bool:
         depths = red[::-1]  # the file's top row first; GL's first row is the bottom one
     else:
         depths = np.full((1, 1), float(value.texel[0]))
-    texture = depth_texture(cache, depths)
+    return depth_texture(cache, depths)
+
+
+def bind_compared(program, name: str, value, cache, unit: int) -> bool:
+    """Bind texture property ``name`` (properties.TextureValue) at ``unit`` as a depth texture
+    when the program samples it through a comparison sampler; False when it does not."""
+    uniforms = programs.uniforms_named(program, name)
+    if not uniforms or uniforms[0].gl_type not in COMPARED:
+        return False
+    _refuse_unbindable(program, name, uniforms[0].gl_type)
+    texture = property_depth_texture(cache, value)
     texture.use(unit)
     _set(program, name, unit)
     if programs.uniforms_named(program, f"{name}_TexelSize"):
@@ -99,15 +108,19 @@ def bind_compared(program, name: str, value, cache, unit: int) -> bool:
     return True
 
 
-def bind_unset_compared(program, cache, unit: int) -> int:
+def bind_unset_compared(program, cache, unit: int, properties=None) -> int:
     """The empty shadow map on each comparison sampler still on unit 0 (nothing bound it: URP's
-    own maps, a program's map with no property) from ``unit`` on; returns the units used."""
+    own maps, a program's map with no property) from ``unit`` on, but the comparison view of a
+    texture property also read plainly (compared_textures.compared_view), which takes the
+    property's depths (its plain sampler the property's texture, as any); returns the units
+    used."""
     for name in program:  # no binder of pbrlab's binds an array or a cube of depths
         if not name.startswith("u_") and getattr(program[name], "gl_type", None) in COMPARED:
             _refuse_unbindable(program, name, program[name].gl_type)
     found = [name for name in program if not name.startswith("u_")
              and getattr(program[name], "gl_type", None) == GL_SAMPLER_2D_SHADOW and program[name].value == 0]
+    views = {compared_view(name): value for name, value in (properties or {}).items() if isinstance(value, TextureValue)}
     for i, name in enumerate(found):
-        empty_shadow_map(cache).use(unit + i)
+        (property_depth_texture(cache, views[name]) if name in views else empty_shadow_map(cache)).use(unit + i)
         _set(program, name, unit + i)
     return len(found)

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import re
 
+from .compared_textures import TextureReads, compared_view, texture_reads
 from .source_text import call_arguments
 
 # (``sampler``: HLSL's legacy name of SamplerState; one a Cg intrinsic samples is a sampler2D by now,
@@ -60,15 +61,18 @@ _GATHER_CHANNELS = {"Gather": 0, "GatherRed": 0, "GatherGreen": 1, "GatherBlue":
 # GLSL comparison sampler, a depth texture with its comparison on (shadow_maps.py); its reads are
 # cg_compat's pbr_unity_sample_cmp (Microsoft's HLSL reference, "SampleCmp": the reference z against
 # each texel read, the 0/1 results filtered; SampleCmpLevelZero: the same on mip 0, a depth
-# texture's one level). A texture both compared and sampled is refused by GLSL (no tex2D of a
-# sampler2DShadow), naming the line.
-_COMPARED_READ = re.compile(r"\b(\w+)\s*\.\s*SampleCmp(?:LevelZero)?\s*\(")
+# texture's one level). Which textures are compared is compared_textures.texture_reads' answer
+# for the whole program, also through the functions a texture is passed to; a texture both
+# compared and read plainly is two samplers, the plain one under its name and the comparison
+# view (compared_textures.compared_view) its comparisons read.
 _COMPARED = {"Texture2D": "sampler2DShadow", "TextureCube": "samplerCubeShadow"}
 
 
-def _call(kind: str, method: str, texture: str, args: list):
-    """The Cg spelling of ``texture.method(args)`` (args with the sampler first, except Load)."""
+def _call(kind: str, method: str, texture: str, args: list, both=frozenset()):
+    """The Cg spelling of ``texture.method(args)`` (args with the sampler first, except Load);
+    a comparison of a texture in ``both`` reads its comparison view."""
     if method in ("SampleCmp", "SampleCmpLevelZero") and len(args) == 3:
+        texture = compared_view(texture) if texture in both else texture
         # (a location longer than the texture's cut to its first components, as FXC passes it)
         location = f"({args[1]}).xy" if kind == "Texture2D" else f"({args[1]}).xyz"
         return f"pbr_unity_sample_cmp({texture}, float{3 if kind == 'Texture2D' else 4}({location}, {args[2]}))"
@@ -169,11 +173,12 @@ def texture_kinds(text: str) -> dict:
     return {name: kind for name, kind in kinds.items() if kind in _COMBINED}
 
 
-def spelled_texture_methods(code: str, known: dict | None = None) -> str:
+def spelled_texture_methods(code: str, known: dict | None = None, reads: TextureReads | None = None) -> str:
     """``code`` with its Direct3D 11 texture and sampler objects and their lookups spelled in Cg,
     and its reads of the reflection probe as the Unity layer's calls (spelled_probe_reads);
     ``known``: textures the files it includes or sits beside declare (texture_kinds), whose
-    lookups are spelled too (its own declarations take precedence)."""
+    lookups are spelled too (its own declarations take precedence); ``reads``: the whole
+    program's (compared_textures.texture_reads; by default ``code``'s own)."""
     code = spelled_probe_reads(code)
     kinds = dict(known or {})
     for m in _DECLARATION.finditer(code):
@@ -185,10 +190,16 @@ def spelled_texture_methods(code: str, known: dict | None = None) -> str:
         kinds.setdefault(m.group(2), _MACRO_KIND[m.group(1)])
     if not kinds:
         return code
-    compared = set(_COMPARED_READ.findall(code))
+    reads = reads if reads is not None else texture_reads(code)
+    compared, both = reads.compared, reads.both
 
     def combined(kind: str, name: str) -> str:
         return (_COMPARED if name in compared and kind in _COMPARED else _COMBINED)[kind]
+
+    def declared(kind: str, name: str, keep: str) -> str:  # (both: the plain sampler and the view)
+        if name in both and kind in _COMPARED:
+            return f"{keep}{_COMBINED[kind]} {name}; {keep}{_COMPARED[kind]} {compared_view(name)};"
+        return f"{keep}{combined(kind, name)} {name};"
     # a parameter: the texture a combined sampler (GLSL takes one as an ``in`` parameter), the
     # sampler an unused int (the caller passes the sampler's int: the declarations below)
     code = _PARAMETER.sub(lambda m: f"{m.group(1)}{combined(m.group(2), m.group(4)) if m.group(2) in _COMBINED else 'int'}"
@@ -200,7 +211,7 @@ def spelled_texture_methods(code: str, known: dict | None = None) -> str:
             keep = "uniform " if m.group(0).startswith("uniform") else ""
             if not compared.intersection(names):
                 return f"{keep}{_COMBINED[m.group(1)]} {', '.join(names)};"
-            return " ".join(f"{keep}{combined(m.group(1), n)} {n};" for n in names)
+            return " ".join(declared(m.group(1), n, keep) for n in names)
         return "static const int " + ", ".join(f"{n} = 0" for n in names) + ";"
     code = _DECLARATION.sub(declaration, code)
     out, pos = [], 0
@@ -211,7 +222,7 @@ def spelled_texture_methods(code: str, known: dict | None = None) -> str:
         if found is None:
             continue
         args, end = found
-        spelled = _call(kinds[m.group(1)], m.group(2), m.group(1), args)
+        spelled = _call(kinds[m.group(1)], m.group(2), m.group(1), args, both)
         if spelled is None:
             continue
         spelled += "\n" * (code.count("\n", m.start(), end) - spelled.count("\n"))
