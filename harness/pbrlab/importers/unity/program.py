@@ -112,6 +112,20 @@ def _prototypes(masked: str) -> list[str]:
     return out
 
 
+def included_from(name: str, where: Path, shader_folder: Path):
+    """The file ``#include "name"`` in a file of folder ``where`` reads, for the GLSL port: as
+    resolve_included finds it, else from the shader's own folder, an include folder of both
+    compiles (_include_dirs; glslang's HLSL path finds ``#include "Core/X.hlsl"`` written in
+    ``Sub/Y.hlsl`` there, as lclandrews' URP toon shading's TwoTone passes are written). An
+    include left unresolved here is left as written, and the GLSL expander then found it in that
+    folder and read it unported, with the stand-ins it includes (``float3 albedo;`` of
+    SurfaceData.hlsl: a syntax error)."""
+    target = resolve_included(name, where)
+    if target is None and Path(where).resolve() != Path(shader_folder).resolve():
+        target = resolve_included(name, shader_folder)
+    return target
+
+
 def program_include(shader) -> tuple[str, dict]:
     """(the line that includes the GLSL program, the virtual files it needs): the port of the
     program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
@@ -147,10 +161,13 @@ def program_include(shader) -> tuple[str, dict]:
     def read(target: Path) -> str:
         return shaders.strip_bom(rewritten.get(target.resolve()) or read_source(target))
 
+    def resolved(name: str, where: Path):
+        return included_from(name, where, shader.path.parent)
+
     def ported(text: str, where: Path, port_of) -> str:
         """``text`` ported by ``port_of``, an include inside a function body spliced in
         (body_includes), each include line relinked to its port."""
-        text, splices = body_includes.spliced(text, lambda n: resolve_included(n, where), read)
+        text, splices = body_includes.spliced(text, lambda n: resolved(n, where), read)
         text, files = body_includes.cut(relinked(port_of(text), where), splices,
                                         lambda i, target: _port_include(f"{target.resolve()}@{len(virtual) + i}"))
         for spliced_name, (body, target) in files.items():
@@ -159,7 +176,7 @@ def program_include(shader) -> tuple[str, dict]:
 
     def relinked(text: str, where: Path) -> str:
         def relink(m):
-            target = resolve_included(m.group(2), where)
+            target = resolved(m.group(2), where)
             if target is None:
                 return m.group(0)  # the GLSL expander names what it cannot find
             key = target.resolve()
