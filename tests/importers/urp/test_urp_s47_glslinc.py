@@ -60,3 +60,41 @@ def test_an_include_found_from_the_shaders_folder_is_ported(tmp_path, language, 
         old, text = _folder_copy(tmp_path / "old")
         with pytest.raises(PbrlabError, match=r"SurfaceData\.hlsl:\d+:\d+: error: syntax error"):
             render_constant(old, text, language, environment=False)
+
+
+DEPTH = SHADERS / "depth_texture_macro" / "DepthTextureMacro.shader"
+
+
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_a_global_texture_declared_by_a_programs_macro_is_a_uniform(tmp_path, language, monkeypatch):
+    """_Depth's "gray" default (0.5, a float texel) read by SAMPLE_DEPTH_TEXTURE (its .r) and
+    _Direct's "white" (1.0): (0.5 * 0.5, 1.0 * 0.25, 0.5 * 1.0) = (0.25, 0.25, 0.5), the first
+    keyword of the multi_compile (_DEPTH_NO_MSAA) on; dyadic, exact (bound 0). Control (GLSL):
+    the macro not known as declaring a texture (port._texture_declaring_macros finding none, as
+    before), GLSL refuses the plain global sampler."""
+    pixels, _ = render_constant(tmp_path, DEPTH.read_text(), language, environment=False)
+    want = np.array([0.5 * 0.5, 1.0 * 0.25, 0.5 * 1.0], dtype=np.float64)
+    assert np.array_equal(pixels[:, :3], np.broadcast_to(want, pixels[:, :3].shape)), pixels[0, :3]
+    if language == "glsl":
+        monkeypatch.setattr(port, "_texture_declaring_macros", lambda code: frozenset())
+        (tmp_path / "old").mkdir()
+        with pytest.raises(PbrlabError, match="uniform-qualified global variables"):
+            render_constant(tmp_path / "old", DEPTH.read_text(), language, environment=False)
+
+
+def test_the_macro_use_gets_uniform_only_at_file_scope():
+    """The port's rule itself: a file-scope statement using a macro whose body is one texture
+    declaration of its parameter gets ``uniform``; a use inside a function body (a local GLSL
+    would refuse anyway, left for the compiler to name) and a macro declaring something else are
+    left as written."""
+    code = ("#define DEPTH_TEXTURE(name) sampler2D name\n"
+            "#define SCALAR(name) float name\n"
+            "DEPTH_TEXTURE(_A);\n"
+            "SCALAR(_B);\n"
+            "void f() {\n"
+            "    DEPTH_TEXTURE(_C);\n"
+            "}\n")
+    lines = port._globals_uniform(code).split("\n")
+    assert lines[2] == "uniform DEPTH_TEXTURE(_A);"
+    assert lines[3] == "SCALAR(_B);"
+    assert lines[5] == "    DEPTH_TEXTURE(_C);"

@@ -151,11 +151,31 @@ def _uniforms_in_declaring_defines(code: str) -> str:
     return _DEFINE_LINES.sub(define, code)
 
 
+# A function-like #define whose body is one texture declaration of its parameter, without its
+# ``;`` (URP 14's CopyDepthPass.hlsl: ``#define DEPTH_TEXTURE(name) TEXTURE2D_FLOAT(name)``,
+# spelled ``sampler2D name`` by _expand_srp_texture_macros): a use of it as a statement at file
+# scope (``DEPTH_TEXTURE(_CameraDepthAttachment);``) declares a global, which FXC makes a uniform
+# (Microsoft's HLSL reference, "Variable syntax": a global without ``static`` is uniform) and GLSL
+# takes only as one; the use gets ``uniform``, as a written ``TEXTURE2D_FLOAT(x);`` does (the
+# body is left alone: the macro may declare a parameter too).
+_TEXTURE_DECLARING_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)\([ \t]*(\w+)[ \t]*\)[ \t]*"
+                                       r"(?:sampler2DArrayShadow|sampler2DShadow|samplerCubeShadow|sampler2DArray|"
+                                       r"sampler2D|samplerCUBE|samplerCube|sampler3D)[ \t]+\2[ \t]*$", re.M)
+
+
+def _texture_declaring_macros(code: str) -> frozenset:
+    return frozenset(m.group(1) for m in _TEXTURE_DECLARING_DEFINE.finditer(code))
+
+
 def _globals_uniform(code: str) -> str:
     """``uniform`` before global variable declarations (brace depth 0, not functions/structs, not
-    a line of a multi-line #define: a texture-declaring #define's in _uniforms_in_declaring_defines);
+    a line of a multi-line #define: a texture-declaring #define's in _uniforms_in_declaring_defines),
+    and before a file-scope use of a macro that declares a texture (_TEXTURE_DECLARING_DEFINE);
     ``static`` dropped before one (_STATIC_GLOBAL)."""
     code = _uniforms_in_declaring_defines(code)
+    declaring = _texture_declaring_macros(code)
+    declared_by_macro = (re.compile(r"^(\s*)((?:%s)\s*\(\s*\w+\s*\)\s*;)" % "|".join(sorted(declaring)))
+                         if declaring else None)
     lines, depth, out = code.split("\n"), 0, []
     decl = re.compile(r"^(\s*)((?:vec[234]|mat[234]|float|int|sampler2DArrayShadow|sampler2DShadow|samplerCubeShadow|"
                       r"sampler2DArray|sampler2D|samplerCUBE|samplerCube|sampler3D)\s+\w+\s*(?:\[\s*\d+\s*\])?\s*;)")
@@ -166,8 +186,11 @@ def _globals_uniform(code: str) -> str:
         if depth == 0 and not directive:
             m = decl.match(line)
             initialised = _INITIALISED_GLOBAL.match(line)
+            by_macro = declared_by_macro.match(line) if declared_by_macro else None
             if m:
                 line = f"{m.group(1)}uniform {m.group(2)}{line[m.end():]}"
+            elif by_macro:
+                line = f"{by_macro.group(1)}uniform {by_macro.group(2)}{line[by_macro.end():]}"
             elif initialised:  # a uniform's initialiser Unity ignores (_INITIALISED_GLOBAL)
                 line = f"{initialised.group(1)}uniform {initialised.group(2)};{line[initialised.end():]}"
             else:
