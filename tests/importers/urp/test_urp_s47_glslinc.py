@@ -62,24 +62,29 @@ def test_an_include_found_from_the_shaders_folder_is_ported(tmp_path, language, 
             render_constant(old, text, language, environment=False)
 
 
-DEPTH = SHADERS / "depth_texture_macro" / "DepthTextureMacro.shader"
+DEPTH = SHADERS / "depth_texture_macro"
 
 
 @pytest.mark.parametrize("language", LANGUAGES)
-def test_a_global_texture_declared_by_a_programs_macro_is_a_uniform(tmp_path, language, monkeypatch):
+@pytest.mark.parametrize("shader", ["DepthTextureMacro.shader", "DepthTextureMacroIncluded.shader"])
+def test_a_global_texture_declared_by_a_programs_macro_is_a_uniform(tmp_path, language, shader, monkeypatch):
     """_Depth's "gray" default (0.5, a float texel) read by SAMPLE_DEPTH_TEXTURE (its .r) and
     _Direct's "white" (1.0): (0.5 * 0.5, 1.0 * 0.25, 0.5 * 1.0) = (0.25, 0.25, 0.5), the first
-    keyword of the multi_compile (_DEPTH_NO_MSAA) on; dyadic, exact (bound 0). Control (GLSL):
-    the macro not known as declaring a texture (port._texture_declaring_macros finding none, as
-    before), GLSL refuses the plain global sampler."""
-    pixels, _ = render_constant(tmp_path, DEPTH.read_text(), language, environment=False)
+    keyword of the multi_compile (_DEPTH_NO_MSAA) on; dyadic, exact (bound 0). The macro defined
+    in the program, and in a file it includes (DepthMacros.hlsl). Control (GLSL): the macro not
+    known as declaring a texture (port._texture_declaring_macros finding none, as before), GLSL
+    refuses the plain global sampler."""
+    shutil.copy(DEPTH / "DepthMacros.hlsl", tmp_path)
+    text = (DEPTH / shader).read_text()
+    pixels, _ = render_constant(tmp_path, text, language, environment=False)
     want = np.array([0.5 * 0.5, 1.0 * 0.25, 0.5 * 1.0], dtype=np.float64)
     assert np.array_equal(pixels[:, :3], np.broadcast_to(want, pixels[:, :3].shape)), pixels[0, :3]
     if language == "glsl":
         monkeypatch.setattr(port, "_texture_declaring_macros", lambda code: frozenset())
         (tmp_path / "old").mkdir()
+        shutil.copy(DEPTH / "DepthMacros.hlsl", tmp_path / "old")
         with pytest.raises(PbrlabError, match="uniform-qualified global variables"):
-            render_constant(tmp_path / "old", DEPTH.read_text(), language, environment=False)
+            render_constant(tmp_path / "old", text, language, environment=False)
 
 
 def test_the_macro_use_gets_uniform_only_at_file_scope():

@@ -167,13 +167,14 @@ def _texture_declaring_macros(code: str) -> frozenset:
     return frozenset(m.group(1) for m in _TEXTURE_DECLARING_DEFINE.finditer(code))
 
 
-def _globals_uniform(code: str) -> str:
+def _globals_uniform(code: str, declaring: frozenset = frozenset()) -> str:
     """``uniform`` before global variable declarations (brace depth 0, not functions/structs, not
     a line of a multi-line #define: a texture-declaring #define's in _uniforms_in_declaring_defines),
-    and before a file-scope use of a macro that declares a texture (_TEXTURE_DECLARING_DEFINE);
-    ``static`` dropped before one (_STATIC_GLOBAL)."""
+    and before a file-scope use of a macro that declares a texture (_TEXTURE_DECLARING_DEFINE: the
+    code's own, and ``declaring``, those of the files it includes); ``static`` dropped before one
+    (_STATIC_GLOBAL)."""
     code = _uniforms_in_declaring_defines(code)
-    declaring = _texture_declaring_macros(code)
+    declaring = _texture_declaring_macros(code) | declaring
     declared_by_macro = (re.compile(r"^(\s*)((?:%s)\s*\(\s*\w+\s*\)\s*;)" % "|".join(sorted(declaring)))
                          if declaring else None)
     lines, depth, out = code.split("\n"), 0, []
@@ -214,8 +215,9 @@ def _in_ternary(code: str, pos: int) -> bool:
     return head.count("?") > head.count(":")
 
 
-def port_code(code: str) -> str:
-    """Pass B on code without comments or strings."""
+def port_code(code: str, declaring: frozenset = frozenset()) -> str:
+    """Pass B on code without comments or strings (``declaring``: the texture-declaring macros
+    its includes define, _globals_uniform)."""
     code = _rename_types(code)
     code = _SEMANTIC.sub(lambda m: m.group(0) if _in_ternary(code, m.start()) else m.group(1), code)
     code = _DECLARED_SEMANTIC.sub(r"\1", code)
@@ -230,7 +232,7 @@ def port_code(code: str) -> str:
     # HLSL's matrix element M._mRC (row R, column C, from 0) is GLSL's M[C][R] (columns first)
     code = re.sub(r"\._m([0-3])([0-3])\b", r"[\2][\1]", code)
     code = re.sub(r"\(\s*(vec[234]|float)\s*\)\s*(\w+(?:\.\w+)*)", r"\1(\2)", code)
-    return _globals_uniform(code)
+    return _globals_uniform(code, declaring)
 
 
 def _unity_globals() -> dict:
@@ -540,10 +542,12 @@ def _ported_text(program: str, included: str, srp: bool, reads: TextureReads) ->
         text = _matrix_elements_in_defines(cg_spellings.respelled(text))
         return _drop_member_interpolation(spelled_texture_methods(spell_tessellation(spell_for_glsl(text)), textures, reads))
     spell = (lambda text: _expand_srp_texture_macros(_spell_zero_initialize(respelled(text)), reads)) if srp else respelled
-    symbols = cg_types.with_declarations(spell(included), srp) if included.strip() else None
+    spelled_included = spell(included) if included.strip() else ""
+    symbols = cg_types.with_declarations(spelled_included, srp) if spelled_included else None
     segments = _code_segments(cg_types.convert(spell(program), symbols, srp))
     code = "".join(t if is_code else _placeholder(i) for i, (is_code, t) in enumerate(segments))
-    code = _drop_unity_redeclarations(port_code(_drop_uniform_before_declaring_macro(code)))
+    code = _drop_unity_redeclarations(port_code(_drop_uniform_before_declaring_macro(code),
+                                                 _texture_declaring_macros(spelled_included)))
     for i, (is_code, t) in enumerate(segments):
         if not is_code:
             code = code.replace(_placeholder(i), t, 1)
