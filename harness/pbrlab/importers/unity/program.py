@@ -126,6 +126,29 @@ def included_from(name: str, where: Path, shader_folder: Path):
     return target
 
 
+def _reached_text(program: str, folder: Path) -> str:
+    """source_text.included_text of ``program`` (a shader's, lying in ``folder``), each include
+    resolved as the GLSL port resolves it (included_from): the files reached only from the
+    shader's folder are the program's too (their shadow comparisons type the textures'
+    declarations: compared_textures.texture_reads; their structs and globals the type pass's)."""
+    seen, out = set(), []
+
+    def walk(text: str, where: Path):
+        for name in INCLUDE.findall(blank_comments(text)):
+            target = included_from(name, where, folder)
+            if target is None or target.resolve() in seen:
+                continue
+            seen.add(target.resolve())
+            try:
+                found = read_source(target)
+            except OSError:
+                continue
+            out.append(blank_comments(found))
+            walk(found, target.parent)
+    walk(program, folder)
+    return "\n".join(out)
+
+
 def program_include(shader) -> tuple[str, dict]:
     """(the line that includes the GLSL program, the virtual files it needs): the port of the
     program (a surface program or a vertex/fragment pass) and the ports of the Cg files it
@@ -141,7 +164,8 @@ def program_include(shader) -> tuple[str, dict]:
     # (built-in programs too: a global one include declares and a sibling include reads, as
     # ``float _MaskGlow;`` then ``if (_MaskGlow)``, needs its type for FXC's conversions)
     srp = getattr(shader, "srp", False)
-    context = _structs_and_globals(shader.program + "\n" + included_text(shader.program, shader.path.parent))
+    reached = _reached_text(shader.program, shader.path.parent)
+    context = _structs_and_globals(shader.program + "\n" + reached)
     # and the functions the other included files define, as prototypes (the type of a call to
     # a function of another include: int GetAdditionalLightsCount() read into a uint)
     files = included_files(shader.program, shader.path.parent) if srp else {}
@@ -156,7 +180,7 @@ def program_include(shader) -> tuple[str, dict]:
     rewritten = getattr(shader, "rewritten_includes", {})  # written globals' copies (written_globals.py)
     # which textures the whole program compares and reads plainly: its includes' declarations of
     # them are typed by the program's reads (compared_textures.py), as the HLSL path's
-    reads = texture_reads(shader.program + "\n" + included_text(shader.program, shader.path.parent))
+    reads = texture_reads(shader.program + "\n" + reached)
 
     def read(target: Path) -> str:
         return shaders.strip_bom(rewritten.get(target.resolve()) or read_source(target))
