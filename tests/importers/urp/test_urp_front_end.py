@@ -93,12 +93,15 @@ def test_without_the_spellings_in_includes_the_face_parameter_has_no_value(monke
 
 
 def test_without_other_includes_functions_the_glsl_port_fails(monkeypatch, tmp_path):
-    """Control: without the other includes' prototypes, GetAdditionalLightsCount() has no type
-    and its int reaches a uint unconverted (GLSL 330 refuses)."""
+    """Control: without the other includes' prototypes the port's type pass does not know what
+    their functions return, and the GLSL compile fails: GetAdditionalLightsCount()'s int reaches
+    a uint unconverted (GLSL 330 refuses), or, since session 47's Core.hlsl brings Core RP's
+    vector math (PbrlabCommonMath.hlsl, compiled before the pass), a call there first ("too many
+    parameters to vec2 constructor")."""
     from pbrlab.importers.unity import program
     monkeypatch.setattr(program, "_prototypes", lambda masked: [])
     _copy_include_pass(tmp_path)
-    with pytest.raises(PbrlabError, match="uint"):
+    with pytest.raises(PbrlabError, match="uint|too many parameters to `vec2. constructor"):
         _render(tmp_path / "urp_include_pass.shader", "glsl")
 
 
