@@ -131,22 +131,7 @@ def _reached_text(program: str, folder: Path) -> str:
     resolved as the GLSL port resolves it (included_from): the files reached only from the
     shader's folder are the program's too (their shadow comparisons type the textures'
     declarations: compared_textures.texture_reads; their structs and globals the type pass's)."""
-    seen, out = set(), []
-
-    def walk(text: str, where: Path):
-        for name in INCLUDE.findall(blank_comments(text)):
-            target = included_from(name, where, folder)
-            if target is None or target.resolve() in seen:
-                continue
-            seen.add(target.resolve())
-            try:
-                found = read_source(target)
-            except OSError:
-                continue
-            out.append(blank_comments(found))
-            walk(found, target.parent)
-    walk(program, folder)
-    return "\n".join(out)
+    return included_text(program, folder, resolve=lambda name, where: included_from(name, where, folder))
 
 
 def program_include(shader) -> tuple[str, dict]:

@@ -373,14 +373,17 @@ def included_files(program: str, folder: Path, seen=None) -> dict:
     return seen
 
 
-def included_text(program: str, folder: Path, seen=None) -> str:
+def included_text(program: str, folder: Path, seen=None, resolve=None) -> str:
     """The text of the files ``program`` includes (recursively; the shader's folder first, then
     pbrlab's stand-ins for Unity's includes), comments blanked: where the model looks for a
-    struct Input, a vertex: or Lighting<Name> function defined in an include."""
+    struct Input, a vertex: or Lighting<Name> function defined in an include. ``resolve(name,
+    folder)`` finds each include (resolve_included unless given: the GLSL port's also looks in the
+    shader's own folder, program.included_from)."""
     seen = set() if seen is None else seen
+    resolve = resolve_included if resolve is None else resolve
     out = []
     for name in INCLUDE.findall(blank_comments(program)):
-        candidate = resolve_included(name, folder)
+        candidate = resolve(name, folder)
         if candidate is None or candidate.resolve() in seen:
             continue
         seen.add(candidate.resolve())
@@ -388,7 +391,7 @@ def included_text(program: str, folder: Path, seen=None) -> str:
         if text is None:
             continue
         out.append(blank_comments(text))
-        out.append(included_text(text, candidate.parent, seen))
+        out.append(included_text(text, candidate.parent, seen, resolve))
     return "\n".join(out)
 
 
